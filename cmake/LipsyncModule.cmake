@@ -1,0 +1,50 @@
+# lipsync_core_module(NAME [DEPS target...])
+# Builds core/<NAME>/*.cpp into the static library lipsync_<NAME>. Sources are globbed so that
+# modules can grow without touching shared build files; includes are relative to core/
+# ("dynamics/DpdsModel.h").
+function(lipsync_core_module name)
+  cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
+  file(GLOB_RECURSE sources CONFIGURE_DEPENDS
+       ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp ${CMAKE_CURRENT_SOURCE_DIR}/*.h)
+  list(FILTER sources INCLUDE REGEX "\\.cpp$|\\.h$")
+  set(cpp ${sources})
+  list(FILTER cpp INCLUDE REGEX "\\.cpp$")
+  if(NOT cpp)
+    # A module whose sources have not been written yet is header-only.
+    add_library(lipsync_${name} INTERFACE)
+    target_include_directories(lipsync_${name} INTERFACE ${PROJECT_SOURCE_DIR}/core)
+    target_link_libraries(lipsync_${name} INTERFACE ${ARG_DEPS})
+  else()
+    add_library(lipsync_${name} STATIC ${sources})
+    target_include_directories(lipsync_${name} PUBLIC ${PROJECT_SOURCE_DIR}/core)
+    target_link_libraries(lipsync_${name} PUBLIC ${ARG_DEPS})
+    target_compile_options(lipsync_${name} PRIVATE -Wall -Wextra)
+    set_target_properties(lipsync_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  endif()
+  target_link_libraries(lipsync_core INTERFACE lipsync_${name})
+endfunction()
+
+# lipsync_add_qtest(SOURCE [LIBS target...] [GUI])
+# One QtTest executable per tst_*.cpp, registered with ctest under its path-derived name.
+function(lipsync_add_qtest source)
+  cmake_parse_arguments(ARG "GUI" "TIMEOUT" "LIBS" ${ARGN})
+  get_filename_component(stem ${source} NAME_WE)
+  file(RELATIVE_PATH rel ${PROJECT_SOURCE_DIR}/tests ${CMAKE_CURRENT_SOURCE_DIR}/${source})
+  get_filename_component(reldir ${rel} DIRECTORY)
+  string(REPLACE "/" "_" prefix "${reldir}")
+  set(target "${prefix}_${stem}")
+  add_executable(${target} ${source})
+  target_link_libraries(${target} PRIVATE ${ARG_LIBS} Qt6::Test)
+  target_compile_definitions(${target} PRIVATE
+    LIPSYNC_TEST_DATA="${PROJECT_SOURCE_DIR}/tests/data"
+    LIPSYNC_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    LIPSYNC_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  add_test(NAME ${target} COMMAND ${target})
+  if(NOT ARG_TIMEOUT)
+    set(ARG_TIMEOUT 300)
+  endif()
+  set_tests_properties(${target} PROPERTIES TIMEOUT ${ARG_TIMEOUT})
+  if(ARG_GUI)
+    set_tests_properties(${target} PROPERTIES LABELS gui)
+  endif()
+endfunction()

@@ -1,0 +1,26 @@
+#pragma once
+// Audio PCM from any media file (.mpg/.mp4/.wav...) through libavformat/libavcodec, resampled
+// with libswresample to mono float at the requested rate.
+#include <string>
+#include <vector>
+
+namespace lipsync {
+
+struct AudioBuffer
+{
+    int sampleRate = 0;
+    std::vector<float> samples; // mono, [-1, 1]
+
+    double duration() const { return sampleRate > 0 ? double(samples.size()) / sampleRate : 0.0; }
+};
+
+class AudioDecoder
+{
+public:
+    // Decodes the first audio stream of `path`, mixed down to mono and resampled to `sampleRate`
+    // (0 keeps the stream's own rate). Throws lipsync::Error naming the file for missing,
+    // corrupt or truncated files and for files without audio.
+    static AudioBuffer decode(const std::string &path, int sampleRate = 16000);
+};
+
+} // namespace lipsync

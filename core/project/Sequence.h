@@ -1,0 +1,32 @@
+#pragma once
+// One recorded utterance of the project: a media file plus everything derived from it.
+#include "project/LandmarkSet.h"
+#include "project/Tier.h"
+
+#include <Eigen/Core>
+
+#include <map>
+#include <string>
+
+namespace lipsync {
+
+struct Sequence
+{
+    std::string id;          // unique within the project, used for file names ("bbaf2n")
+    std::string mediaFile;   // relative to the project folder (or absolute)
+    double frameRate = 25.0; // video frames per second
+    int frameCount = 0;
+    std::string transcript;  // plain words
+
+    std::map<int, LandmarkSet> landmarks; // video frame index -> 23 points
+    Tier words{"words", {}};
+    Tier phones{"phones", {}};
+    // Per-frame face features y_t (the AAM parameters): frameCount rows x d columns; empty
+    // until the AAM has been fitted. Stored beside the manifest as features/<id>.csv.
+    Eigen::MatrixXd features;
+
+    double duration() const { return frameRate > 0 ? frameCount / frameRate : 0.0; }
+    bool operator==(const Sequence &other) const;
+};
+
+} // namespace lipsync
