@@ -2,6 +2,7 @@
 // sampled from a DPDS, phone labels as .lab files) plus one real MFA phone alignment (TextGrid).
 #include "../core/dynamics/SyntheticDynamics.h"
 
+#include "dynamics/PhoneLabels.h"
 #include "io/FeatureCsv.h"
 
 #include <QDir>
@@ -74,8 +75,10 @@ private slots:
         // One real phone alignment (MFA, short TextGrid form) with synthetic features.
         QVERIFY(QFile::copy(QStringLiteral(LIPSYNC_TEST_DATA "/dynamics/acoustic_corpus.TextGrid"),
                             m_labels + "/real.TextGrid"));
-        Eigen::MatrixXd real = Eigen::MatrixXd::Random(668, 4);
-        writeFeatureCsv((m_features + "/real.csv").toStdString(), real);
+        const std::vector<int> realLabels =
+            frameLabelsFromTier(readPhoneTier((m_labels + "/real.TextGrid").toStdString()), 25.0, 668);
+        writeFeatureCsv((m_features + "/real.csv").toStdString(),
+                        test::sampleDpds(rng, truth, realLabels, "real").features);
     }
 
     void trainsEveryKind_data()
