@@ -168,10 +168,41 @@ Eigen::MatrixXd BrandModel::generate(const std::vector<int> &labels) const
     checkGenerationInput(labels);
     if (!jointCovariance.empty())
         return generateBlock(labels);
-    Eigen::MatrixXd out(Eigen::Index(labels.size()), m_dimension);
-    for (int k = 0; k < m_dimension; ++k)
-        out.col(k) = brand::solveTridiagonal(tridiagonalSystem(labels, k));
-    return out;
+    // The d tridiagonal LDL^T solves of §2.2, run side by side (one column of d values per frame,
+    // contiguous, so the per-frame arithmetic vectorises). Same operations as solveTridiagonal.
+    const Eigen::Index T = Eigen::Index(labels.size()), d = m_dimension;
+    const Eigen::ArrayXXd p = staticVariance.array().inverse().transpose();  // d x P
+    const Eigen::ArrayXXd pm = p * staticMean.array().transpose();
+    const Eigen::ArrayXXd q = deltaVariance.array().inverse().transpose();
+    const Eigen::ArrayXXd qd = q * deltaMean.array().transpose();
+    Eigen::ArrayXXd pivot(d, T), l(d, T), z(d, T), y(d, T);
+    Eigen::ArrayXd alpha(d), b(d);
+    for (Eigen::Index t = 0; t < T; ++t) {
+        const int n = labels[size_t(t)];
+        // alpha_t = p_t + q_t + q_{t+1}, b_t = p_t m_t + q_t delta_t - q_{t+1} delta_{t+1}
+        alpha = p.col(n);
+        b = pm.col(n);
+        if (t + 1 < T) {
+            const int next = labels[size_t(t + 1)];
+            alpha += q.col(next);
+            b -= qd.col(next);
+        }
+        if (t == 0) {
+            pivot.col(0) = alpha;
+            z.col(0) = b;
+            continue;
+        }
+        alpha += q.col(n);
+        b += qd.col(n);
+        // beta_{t-1} = -q_t
+        l.col(t) = -q.col(n) / pivot.col(t - 1);
+        pivot.col(t) = alpha + l.col(t) * q.col(n);
+        z.col(t) = b - l.col(t) * z.col(t - 1);
+    }
+    y.col(T - 1) = z.col(T - 1) / pivot.col(T - 1);
+    for (Eigen::Index t = T - 2; t >= 0; --t)
+        y.col(t) = z.col(t) / pivot.col(t) - l.col(t + 1) * y.col(t + 1);
+    return y.matrix().transpose();
 }
 
 brand::BlockTridiagonalSystem BrandModel::blockSystem(const std::vector<int> &labels) const
