@@ -190,7 +190,21 @@ private slots:
             qInfo("lag %d: rho %.3f, max error %.3g", lag, rho, maxError);
         }
         QVERIFY(previousError < 1e-3);
-        // The truncation error bound itself, for one frame: compare with the end error.
+        // The bound itself: the solve truncated at h is the exact solve of the prefix 1..h, and
+        // |y^(h)_t - y_t| <= rho^(h-t) |y^(h)_h - y_h| for every t <= h.
+        const double rho = reference.contraction();
+        for (Eigen::Index h : {Eigen::Index(10), Eigen::Index(40), Eigen::Index(77), exact.rows() - 1}) {
+            const std::vector<int> prefix(labels.begin(), labels.begin() + h + 1);
+            const Eigen::MatrixXd truncated = reference.generate(prefix);
+            for (int k = 0; k < 3; ++k) {
+                const double endError = std::abs(truncated(h, k) - exact(h, k));
+                for (Eigen::Index t = 0; t <= h; ++t)
+                    QVERIFY(std::abs(truncated(t, k) - exact(t, k))
+                            <= std::pow(rho, double(h - t)) * endError * (1 + 1e-9) + 1e-12);
+                if (h == exact.rows() - 1)
+                    QVERIFY(endError < 1e-12); // exactly 0 at h = T
+            }
+        }
         const BrandModel model = trained(data, false, 5);
         QVERIFY(model.streamingLag() == 5);
     }
