@@ -6,11 +6,14 @@
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
+#include <QtConcurrent/QtConcurrentMap>
+
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <Eigen/SVD>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lipsync {
@@ -124,7 +127,8 @@ void SldsModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &fe
     // Initialisation [choice, §3.4]: DPDS a, nu, mu; Q = R = r/2; Sigma_n = c_n.
     DpdsOptions dpdsOptions;
     dpdsOptions.maxIterations = m_options.initIterations;
-    dpdsOptions.aMax = m_options.aMax;
+    dpdsOptions.aMax = std::min(m_options.aMax, 0.999);
+    dpdsOptions.threads = m_options.threads;
     DpdsModel dpds(dpdsOptions);
     {
         Feedback child(feedback, 0.0, 0.2);
@@ -181,8 +185,12 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
     const int P = PhoneSet::kSize;
     const Eigen::Index d = m_dimension;
     slds::Parameters &p = m_params;
-    double total = 0.0;
-    for (Eigen::Index k = 0; k < d; ++k) {
+    // Dimensions are independent: run them in parallel (each writes only its own k entries).
+    std::vector<double> perDimension(static_cast<size_t>(d), 0.0);
+    std::vector<Eigen::Index> dimensions(static_cast<size_t>(d));
+    for (Eigen::Index k = 0; k < d; ++k)
+        dimensions[size_t(k)] = k;
+    auto fitDimension = [&](Eigen::Index k) {
         Eigen::VectorXd a(P), q(P), r(P), sigma(P), nu = p.nu.col(k), mu = p.mu.col(k);
         for (int n = 0; n < P; ++n) {
             a[n] = p.A[size_t(n)](k, k);
@@ -249,7 +257,7 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
             if (N1[n] > 0 && m_options.kappa > 0)
                 ll += -(m_options.kappa / 2 + 1) * std::log(sigma[n])
                       - m_options.kappa * s0[k] / (2 * sigma[n]);
-        total += ll;
+        perDimension[size_t(k)] = ll;
         // M-step (§3.4), diagonal A and Q: the exact 2 x 2 solve per state.
         const double floor = st.floor[k];
         for (int n = 0; n < P; ++n) {
@@ -304,7 +312,14 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
         }
         p.nu.col(k) = nu;
         p.mu.col(k) = mu;
-    }
+    };
+    if (m_options.threads == 1 || d == 1)
+        std::for_each(dimensions.begin(), dimensions.end(), fitDimension);
+    else
+        QtConcurrent::blockingMap(dimensions, fitDimension);
+    double total = 0.0;
+    for (double ll : perDimension)
+        total += ll;
     return total;
 }
 

@@ -22,6 +22,7 @@ struct SldsOptions
     double tolerance = 1e-7;
     double aMax = 0.999;      // |a| (diagonal) or ||A||_2 (full) bound for stable generation
     int initIterations = 30;  // DPDS iterations of the initialisation
+    int threads = 0;          // 0: all cores (QtConcurrent over dimensions), 1: serial
 };
 
 namespace slds {
