@@ -1,0 +1,136 @@
+// lipsync train: fits one dynamic model (models.md §1-4) to features + phone labels.
+#include "Command.h"
+
+#include "dynamics/LabelledFolder.h"
+#include "dynamics/ModelFile.h"
+#include "tasks/Feedback.h"
+
+#include <QJsonArray>
+
+#include <chrono>
+#include <cstdio>
+
+using namespace lipsync;
+using namespace lipsync::cli;
+
+namespace {
+
+const char *kTrainUsage =
+    "usage: lipsync train --kind dpds|slds|brand|hmm --features DIR --labels DIR --out MODEL\n"
+    "                     [--fps 25] [--aam ID] [--json]\n"
+    "  options: --full-covariance (brand), --full-a (slds), --optimizer lm|gradient (dpds),\n"
+    "           --paper-mode (dpds), --max-iterations N (dpds, slds), --threads N (dpds)";
+
+// Shared by train and evaluate: model options from the command line. Returns an error or "".
+QString modelOptionsFrom(const Arguments &args, ModelOptions &options)
+{
+    options.brand.fullCovariance = args.flag(QStringLiteral("full-covariance"));
+    options.slds.fullA = args.flag(QStringLiteral("full-a"));
+    options.dpds.paperMode = args.flag(QStringLiteral("paper-mode"));
+    const QString optimizer = args.value(QStringLiteral("optimizer"), QStringLiteral("lm"));
+    if (optimizer == QLatin1String("gradient"))
+        options.dpds.optimizer = DpdsOptions::Optimizer::GradientAscent;
+    else if (optimizer != QLatin1String("lm"))
+        return QStringLiteral("--optimizer must be lm or gradient");
+    if (args.has(QStringLiteral("max-iterations"))) {
+        bool ok = false;
+        const int n = args.value(QStringLiteral("max-iterations")).toInt(&ok);
+        if (!ok || n < 1)
+            return QStringLiteral("--max-iterations must be a positive integer");
+        options.dpds.maxIterations = n;
+        options.slds.maxIterations = n;
+    }
+    if (args.has(QStringLiteral("threads"))) {
+        bool ok = false;
+        const int n = args.value(QStringLiteral("threads")).toInt(&ok);
+        if (!ok || n < 0)
+            return QStringLiteral("--threads must be a non-negative integer");
+        options.dpds.threads = n;
+    }
+    return {};
+}
+
+int runTrain(const QStringList &argv)
+{
+    const Arguments args(argv);
+    const QStringList unknown = args.unknown({"kind", "project", "features", "labels", "out", "fps", "aam",
+                                              "json", "full-covariance", "full-a", "optimizer", "paper-mode",
+                                              "max-iterations", "threads"});
+    if (!unknown.isEmpty() || !args.positional().isEmpty())
+        return fail(QStringLiteral("unknown argument %1\n").arg((unknown + args.positional()).first())
+                        + QString::fromLatin1(kTrainUsage),
+                    2);
+    const QString kind = args.value(QStringLiteral("kind"));
+    const QString out = args.value(QStringLiteral("out"));
+    if (args.has(QStringLiteral("project")))
+        return fail(QStringLiteral("--project is not available in this build yet; use --features DIR --labels DIR"), 2);
+    if (kind.isEmpty() || out.isEmpty() || !args.has(QStringLiteral("features")) || !args.has(QStringLiteral("labels")))
+        return fail(QString::fromLatin1(kTrainUsage), 2);
+    bool ok = false;
+    const double fps = args.value(QStringLiteral("fps"), QStringLiteral("25")).toDouble(&ok);
+    if (!ok || !(fps > 0))
+        return fail(QStringLiteral("--fps must be a positive number"), 2);
+    ModelOptions options;
+    if (const QString error = modelOptionsFrom(args, options); !error.isEmpty())
+        return fail(error, 2);
+    if (std::find(dynamicModelKinds().begin(), dynamicModelKinds().end(), kind.toStdString())
+        == dynamicModelKinds().end())
+        return fail(QStringLiteral("--kind must be dpds, slds, brand or hmm"), 2);
+
+    const auto sequences = loadLabelledFolder(args.value(QStringLiteral("features")).toStdString(),
+                                              args.value(QStringLiteral("labels")).toStdString(), fps);
+    auto model = createDynamicModel(kind.toStdString(), options);
+    Feedback feedback;
+    int iterations = 0;
+    double objective = 0.0;
+    feedback.onIteration = [&](int i, double value) {
+        iterations = i;
+        objective = value;
+    };
+    const auto start = std::chrono::steady_clock::now();
+    model->train(sequences, feedback);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::string aam = args.value(QStringLiteral("aam"), QStringLiteral("unspecified")).toStdString();
+    saveModel(*model, out.toStdString(), aam);
+
+    long long frames = 0;
+    double ll = 0.0;
+    for (const LabelledSequence &s : sequences) {
+        frames += s.frameCount();
+        ll += model->logLikelihood(s.labels, s.features);
+    }
+    if (args.flag(QStringLiteral("json"))) {
+        QJsonObject o;
+        o[QStringLiteral("kind")] = kind;
+        o[QStringLiteral("model")] = out;
+        o[QStringLiteral("aam")] = QString::fromStdString(aam);
+        o[QStringLiteral("sequences")] = int(sequences.size());
+        o[QStringLiteral("frames")] = double(frames);
+        o[QStringLiteral("dimension")] = model->dimension();
+        o[QStringLiteral("trainingSeconds")] = seconds;
+        o[QStringLiteral("iterations")] = iterations;
+        o[QStringLiteral("objective")] = objective;
+        o[QStringLiteral("loglikPerFrame")] = ll / double(frames);
+        printJson(o);
+    } else {
+        std::printf("trained %s on %zu sequences (%lld frames, d = %d) in %.3f s; "
+                    "log-likelihood %.6f nats/frame; saved %s\n",
+                    kind.toUtf8().constData(), sequences.size(), frames, model->dimension(), seconds,
+                    ll / double(frames), out.toUtf8().constData());
+    }
+    return 0;
+}
+
+const CommandRegistration registration{
+    QStringLiteral("train"), QStringLiteral("train a dynamic model (dpds, slds, brand, hmm) on features + phone labels"),
+    &runTrain};
+
+} // namespace
+
+namespace lipsync::cli {
+// Used by EvaluateCommand.cpp.
+QString dynamicModelOptionsFrom(const Arguments &args, ModelOptions &options)
+{
+    return modelOptionsFrom(args, options);
+}
+} // namespace lipsync::cli

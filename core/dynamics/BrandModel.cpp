@@ -1,0 +1,614 @@
+#include "dynamics/BrandModel.h"
+
+#include "dynamics/GaussianMath.h"
+#include "dynamics/JsonEigen.h"
+#include "dynamics/PhoneSet.h"
+#include "tasks/Feedback.h"
+#include "util/Error.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <deque>
+
+namespace lipsync {
+
+namespace {
+
+// Symmetric matrix with eigenvalues clamped below at the floor (the variance floor of §0 for a
+// full covariance).
+Eigen::MatrixXd floorCovariance(const Eigen::MatrixXd &C, const Eigen::VectorXd &floor)
+{
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (C + C.transpose()));
+    const double minimum = floor.minCoeff();
+    Eigen::VectorXd values = eig.eigenvalues().cwiseMax(minimum);
+    return eig.eigenvectors() * values.asDiagonal() * eig.eigenvectors().transpose();
+}
+
+} // namespace
+
+void BrandModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &feedback)
+{
+    feedback.throwIfCanceled();
+    const int P = PhoneSet::kSize;
+    const FrameStatistics st = computeFrameStatistics(sequences);
+    const Eigen::Index d = st.mean.cols();
+    // Delta statistics over the transition frames T_n (the delta of frame t takes t's label).
+    Eigen::MatrixXd dm = Eigen::MatrixXd::Zero(P, d), dv = Eigen::MatrixXd::Zero(P, d);
+    Eigen::VectorXd gm = Eigen::VectorXd::Zero(d), gv = Eigen::VectorXd::Zero(d);
+    long long transitions = 0;
+    for (const LabelledSequence &s : sequences)
+        for (Eigen::Index t = 1; t < s.features.rows(); ++t) {
+            const Eigen::RowVectorXd delta = s.features.row(t) - s.features.row(t - 1);
+            dm.row(s.labels[size_t(t)]) += delta;
+            gm += delta.transpose();
+            ++transitions;
+        }
+    if (transitions > 0)
+        gm /= double(transitions);
+    for (int n = 0; n < P; ++n)
+        if (st.transitionCount[n] > 0)
+            dm.row(n) /= double(st.transitionCount[n]);
+    for (const LabelledSequence &s : sequences)
+        for (Eigen::Index t = 1; t < s.features.rows(); ++t) {
+            const int n = s.labels[size_t(t)];
+            const Eigen::RowVectorXd delta = s.features.row(t) - s.features.row(t - 1);
+            dv.row(n) += (delta - dm.row(n)).array().square().matrix();
+            gv += (delta.transpose() - gm).array().square().matrix();
+        }
+    // [choice] Back-off for phones without transition frames: the global delta statistics; with
+    // no transition frames at all, zero mean and twice the static variance.
+    if (transitions > 0)
+        gv = (gv / double(transitions)).cwiseMax(st.floor);
+    else
+        gv = 2.0 * st.globalVariance;
+    for (int n = 0; n < P; ++n) {
+        if (st.transitionCount[n] > 0) {
+            dv.row(n) = (dv.row(n) / double(st.transitionCount[n])).cwiseMax(st.floor.transpose());
+        } else {
+            dm.row(n) = gm.transpose();
+            dv.row(n) = gv.transpose();
+        }
+    }
+    staticMean = st.mean;
+    staticVariance = st.variance;
+    deltaMean = dm;
+    deltaVariance = dv;
+    jointMean.resize(0, 0);
+    jointCovariance.clear();
+    m_dimension = int(d);
+    if (m_options.fullCovariance)
+        fitFull(sequences, st.floor);
+    feedback.setProgress(1.0);
+}
+
+void BrandModel::fitFull(const std::vector<LabelledSequence> &sequences,
+                         const Eigen::VectorXd &floor)
+{
+    // [choice, §2.1] Mean and ML covariance of o_t over T_n only.
+    const int P = PhoneSet::kSize;
+    const Eigen::Index d = m_dimension, D = 2 * d;
+    Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(P, D);
+    std::vector<Eigen::MatrixXd> outer(size_t(P), Eigen::MatrixXd::Zero(D, D));
+    Eigen::VectorXi count = Eigen::VectorXi::Zero(P);
+    Eigen::VectorXd o(D);
+    for (const LabelledSequence &s : sequences)
+        for (Eigen::Index t = 1; t < s.features.rows(); ++t) {
+            const int n = s.labels[size_t(t)];
+            o.head(d) = s.features.row(t).transpose();
+            o.tail(d) = (s.features.row(t) - s.features.row(t - 1)).transpose();
+            sum.row(n) += o.transpose();
+            outer[size_t(n)].selfadjointView<Eigen::Lower>().rankUpdate(o);
+            ++count[n];
+        }
+    Eigen::VectorXd jointFloor(D);
+    jointFloor << floor, floor;
+    jointMean.resize(P, D);
+    jointCovariance.assign(size_t(P), Eigen::MatrixXd());
+    for (int n = 0; n < P; ++n) {
+        Eigen::VectorXd mean(D);
+        mean << staticMean.row(n).transpose(), deltaMean.row(n).transpose();
+        Eigen::MatrixXd C;
+        // [choice] With fewer transition frames than 2d + 1 the ML covariance is singular: use
+        // the diagonal statistics (the back-off of the diagonal model) instead.
+        if (count[n] > D) {
+            mean = sum.row(n).transpose() / double(count[n]);
+            C = outer[size_t(n)].selfadjointView<Eigen::Lower>();
+            C = C / double(count[n]) - mean * mean.transpose();
+            C = floorCovariance(C, jointFloor);
+        } else {
+            Eigen::VectorXd diag(D);
+            diag << staticVariance.row(n).transpose(), deltaVariance.row(n).transpose();
+            C = diag.asDiagonal();
+        }
+        jointMean.row(n) = mean.transpose();
+        jointCovariance[size_t(n)] = C;
+    }
+}
+
+Eigen::MatrixXd BrandModel::jointPrecision(int n) const
+{
+    const Eigen::Index d = m_dimension;
+    if (jointCovariance.empty()) {
+        Eigen::VectorXd precision(2 * d);
+        precision << staticVariance.row(n).transpose().cwiseInverse(),
+            deltaVariance.row(n).transpose().cwiseInverse();
+        return precision.asDiagonal();
+    }
+    const Eigen::MatrixXd &C = jointCovariance[size_t(n)];
+    return C.llt().solve(Eigen::MatrixXd::Identity(C.rows(), C.cols()));
+}
+
+Eigen::MatrixXd BrandModel::staticPrecision(int n) const
+{
+    const Eigen::Index d = m_dimension;
+    if (jointCovariance.empty())
+        return staticVariance.row(n).transpose().cwiseInverse().asDiagonal();
+    const Eigen::MatrixXd C = jointCovariance[size_t(n)].topLeftCorner(d, d);
+    return C.llt().solve(Eigen::MatrixXd::Identity(d, d));
+}
+
+brand::TridiagonalSystem BrandModel::tridiagonalSystem(const std::vector<int> &labels, int k) const
+{
+    const Eigen::Index T = Eigen::Index(labels.size());
+    Eigen::VectorXd p(T), m(T), q(T), delta(T);
+    for (Eigen::Index t = 0; t < T; ++t) {
+        const int n = labels[size_t(t)];
+        p[t] = 1.0 / staticVariance(n, k);
+        m[t] = staticMean(n, k);
+        q[t] = t > 0 ? 1.0 / deltaVariance(n, k) : 0.0;
+        delta[t] = t > 0 ? deltaMean(n, k) : 0.0;
+    }
+    return brand::buildTridiagonal(p, m, q, delta);
+}
+
+Eigen::MatrixXd BrandModel::generate(const std::vector<int> &labels) const
+{
+    checkGenerationInput(labels);
+    if (!jointCovariance.empty())
+        return generateBlock(labels);
+    // The d tridiagonal LDL^T solves of §2.2, run side by side (one column of d values per frame,
+    // contiguous, so the per-frame arithmetic vectorises). Same operations as solveTridiagonal.
+    const Eigen::Index T = Eigen::Index(labels.size()), d = m_dimension;
+    const Eigen::ArrayXXd p = staticVariance.array().inverse().transpose();  // d x P
+    const Eigen::ArrayXXd pm = p * staticMean.array().transpose();
+    const Eigen::ArrayXXd q = deltaVariance.array().inverse().transpose();
+    const Eigen::ArrayXXd qd = q * deltaMean.array().transpose();
+    Eigen::ArrayXXd pivot(d, T), l(d, T), z(d, T), y(d, T);
+    Eigen::ArrayXd alpha(d), b(d);
+    for (Eigen::Index t = 0; t < T; ++t) {
+        const int n = labels[size_t(t)];
+        // alpha_t = p_t + q_t + q_{t+1}, b_t = p_t m_t + q_t delta_t - q_{t+1} delta_{t+1}
+        alpha = p.col(n);
+        b = pm.col(n);
+        if (t + 1 < T) {
+            const int next = labels[size_t(t + 1)];
+            alpha += q.col(next);
+            b -= qd.col(next);
+        }
+        if (t == 0) {
+            pivot.col(0) = alpha;
+            z.col(0) = b;
+            continue;
+        }
+        alpha += q.col(n);
+        b += qd.col(n);
+        // beta_{t-1} = -q_t
+        l.col(t) = -q.col(n) / pivot.col(t - 1);
+        pivot.col(t) = alpha + l.col(t) * q.col(n);
+        z.col(t) = b - l.col(t) * z.col(t - 1);
+    }
+    y.col(T - 1) = z.col(T - 1) / pivot.col(T - 1);
+    for (Eigen::Index t = T - 2; t >= 0; --t)
+        y.col(t) = z.col(t) / pivot.col(t) - l.col(t + 1) * y.col(t + 1);
+    return y.matrix().transpose();
+}
+
+brand::BlockTridiagonalSystem BrandModel::blockSystem(const std::vector<int> &labels) const
+{
+    // §2.2, general full-covariance form, accumulated frame by frame.
+    const Eigen::Index d = m_dimension;
+    const size_t T = labels.size();
+    const int P = PhoneSet::kSize;
+    std::vector<Eigen::MatrixXd> lambda(static_cast<size_t>(P)), lambdaStatic(static_cast<size_t>(P));
+    std::vector<bool> done(size_t(P), false);
+    for (int n : labels)
+        if (!done[size_t(n)]) {
+            lambda[size_t(n)] = jointPrecision(n);
+            lambdaStatic[size_t(n)] = staticPrecision(n);
+            done[size_t(n)] = true;
+        }
+    brand::BlockTridiagonalSystem s;
+    s.diagonal.assign(T, Eigen::MatrixXd::Zero(d, d));
+    s.lower.assign(T > 0 ? T - 1 : 0, Eigen::MatrixXd::Zero(d, d));
+    s.rhs = Eigen::MatrixXd::Zero(d, Eigen::Index(T));
+    for (size_t t = 0; t < T; ++t) {
+        const int n = labels[t];
+        const Eigen::VectorXd my = jointCovariance.empty() ? Eigen::VectorXd(staticMean.row(n).transpose())
+                                                           : Eigen::VectorXd(jointMean.row(n).head(d).transpose());
+        if (t == 0) {
+            s.diagonal[0] += lambdaStatic[size_t(n)];
+            s.rhs.col(0) += lambdaStatic[size_t(n)] * my;
+            continue;
+        }
+        const Eigen::VectorXd md = jointCovariance.empty() ? Eigen::VectorXd(deltaMean.row(n).transpose())
+                                                           : Eigen::VectorXd(jointMean.row(n).tail(d).transpose());
+        const Eigen::MatrixXd &L = lambda[size_t(n)];
+        const auto Lyy = L.topLeftCorner(d, d), LyD = L.topRightCorner(d, d);
+        const auto LDy = L.bottomLeftCorner(d, d), LDD = L.bottomRightCorner(d, d);
+        s.diagonal[t] += Lyy + LyD + LDy + LDD;
+        s.diagonal[t - 1] += LDD;
+        s.lower[t - 1] -= LyD + LDD; // H_{t,t-1}
+        s.rhs.col(Eigen::Index(t)) += (Lyy + LDy) * my + (LyD + LDD) * md;
+        s.rhs.col(Eigen::Index(t - 1)) -= LDy * my + LDD * md;
+    }
+    return s;
+}
+
+Eigen::MatrixXd BrandModel::generateBlock(const std::vector<int> &labels) const
+{
+    checkGenerationInput(labels);
+    return brand::solveBlockTridiagonal(blockSystem(labels)).transpose();
+}
+
+void BrandModel::denseReferenceSystem(const std::vector<int> &labels, Eigen::MatrixXd &H,
+                                      Eigen::VectorXd &b) const
+{
+    // Explicit W (static window [1], delta window [-1, 1]), block-diagonal Lambda and stacked
+    // means M: H = W^T Lambda W, b = W^T Lambda M (§2.2).
+    const Eigen::Index d = m_dimension, T = Eigen::Index(labels.size());
+    const Eigen::Index rows = d + 2 * d * (T - 1);
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(rows, d * T), Lambda = Eigen::MatrixXd::Zero(rows, rows);
+    Eigen::VectorXd M(rows);
+    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(d, d);
+    Eigen::Index r = 0;
+    for (Eigen::Index t = 0; t < T; ++t) {
+        const int n = labels[size_t(t)];
+        Eigen::VectorXd mean(2 * d);
+        if (jointCovariance.empty())
+            mean << staticMean.row(n).transpose(), deltaMean.row(n).transpose();
+        else
+            mean = jointMean.row(n).transpose();
+        if (t == 0) {
+            W.block(0, 0, d, d) = I;
+            Lambda.block(0, 0, d, d) = staticPrecision(n);
+            M.head(d) = mean.head(d);
+            r = d;
+            continue;
+        }
+        W.block(r, t * d, d, d) = I;
+        W.block(r + d, t * d, d, d) = I;
+        W.block(r + d, (t - 1) * d, d, d) = -I;
+        Lambda.block(r, r, 2 * d, 2 * d) = jointPrecision(n);
+        M.segment(r, 2 * d) = mean;
+        r += 2 * d;
+    }
+    H = W.transpose() * Lambda * W;
+    b = W.transpose() * Lambda * M;
+}
+
+Eigen::MatrixXd BrandModel::generateDenseReference(const std::vector<int> &labels) const
+{
+    checkGenerationInput(labels);
+    Eigen::MatrixXd H;
+    Eigen::VectorXd b;
+    denseReferenceSystem(labels, H, b);
+    const Eigen::VectorXd y = H.llt().solve(b);
+    return Eigen::Map<const Eigen::MatrixXd>(y.data(), m_dimension, Eigen::Index(labels.size()))
+        .transpose();
+}
+
+double BrandModel::logLikelihood(const std::vector<int> &labels, const Eigen::MatrixXd &Y) const
+{
+    checkScoringInput(labels, Y);
+    const Eigen::Index d = m_dimension;
+    double ll = 0.0;
+    if (jointCovariance.empty()) {
+        for (Eigen::Index t = 0; t < Y.rows(); ++t) {
+            const int n = labels[size_t(t)];
+            ll += diagonalGaussianLogPdf(Y.row(t).transpose(), staticMean.row(n).transpose(),
+                                         staticVariance.row(n).transpose());
+            if (t > 0)
+                ll += diagonalGaussianLogPdf((Y.row(t) - Y.row(t - 1)).transpose(),
+                                             deltaMean.row(n).transpose(),
+                                             deltaVariance.row(n).transpose());
+        }
+        return ll;
+    }
+    auto logPdf = [](const Eigen::VectorXd &z, const Eigen::VectorXd &m, const Eigen::MatrixXd &C) {
+        const Eigen::LLT<Eigen::MatrixXd> llt(C);
+        const Eigen::VectorXd w = llt.matrixL().solve(z - m);
+        const double logDet = 2.0 * llt.matrixL().toDenseMatrix().diagonal().array().log().sum();
+        return -0.5 * (double(z.size()) * kLog2Pi + logDet + w.squaredNorm());
+    };
+    for (Eigen::Index t = 0; t < Y.rows(); ++t) {
+        const int n = labels[size_t(t)];
+        const Eigen::MatrixXd &C = jointCovariance[size_t(n)];
+        if (t == 0) {
+            ll += logPdf(Y.row(0).transpose(), jointMean.row(n).head(d).transpose(),
+                         C.topLeftCorner(d, d));
+        } else {
+            Eigen::VectorXd o(2 * d);
+            o << Y.row(t).transpose(), (Y.row(t) - Y.row(t - 1)).transpose();
+            ll += logPdf(o, jointMean.row(n).transpose(), C);
+        }
+    }
+    return ll;
+}
+
+double BrandModel::trajectoryLogLikelihood(const std::vector<int> &labels,
+                                           const Eigen::MatrixXd &Y) const
+{
+    checkScoringInput(labels, Y);
+    const Eigen::Index T = Y.rows();
+    if (!jointCovariance.empty()) {
+        Eigen::MatrixXd H;
+        Eigen::VectorXd b;
+        denseReferenceSystem(labels, H, b);
+        const Eigen::LLT<Eigen::MatrixXd> llt(H);
+        const Eigen::VectorXd y = Eigen::Map<const Eigen::MatrixXd>(Eigen::MatrixXd(Y.transpose()).data(), m_dimension * T, 1);
+        const Eigen::VectorXd e = y - llt.solve(b);
+        const double logDet = 2.0 * llt.matrixL().toDenseMatrix().diagonal().array().log().sum();
+        return -0.5 * double(e.size()) * kLog2Pi + 0.5 * logDet - 0.5 * e.dot(H * e);
+    }
+    double ll = -0.5 * double(m_dimension * T) * kLog2Pi;
+    for (int k = 0; k < m_dimension; ++k) {
+        const brand::TridiagonalSystem s = tridiagonalSystem(labels, k);
+        Eigen::VectorXd pivots;
+        const Eigen::VectorXd e = Y.col(k) - brand::solveTridiagonal(s, &pivots);
+        double quadratic = (s.alpha.array() * e.array().square()).sum();
+        for (Eigen::Index t = 0; t + 1 < T; ++t)
+            quadratic += 2.0 * s.beta[t] * e[t] * e[t + 1];
+        ll += 0.5 * pivots.array().log().sum() - 0.5 * quadratic;
+    }
+    return ll;
+}
+
+double BrandModel::contraction() const
+{
+    checkTrained();
+    const double qMax = deltaVariance.cwiseInverse().maxCoeff();
+    const double pMin = staticVariance.cwiseInverse().minCoeff();
+    return qMax / (qMax + pMin);
+}
+
+int BrandModel::streamingLag() const
+{
+    if (m_options.lag > 0)
+        return m_options.lag;
+    const double rho = contraction();
+    if (rho <= 0.0)
+        return 1;
+    return int(std::clamp(std::ceil(std::log(1e-3) / std::log(rho)), 1.0, 500.0));
+}
+
+namespace {
+
+// Fixed-lag MLPG for diagonal covariances (§5): the causal forward LDL^T sweep, a truncated last
+// pivot at h = t + L, back substitution down to t. Vectorised over the d dimensions.
+class FixedLagBrandStreamer : public StreamingGenerator
+{
+public:
+    FixedLagBrandStreamer(const BrandModel &model, int lag)
+        : m_pInv(model.staticVariance), m_mean(model.staticMean), m_qInv(model.deltaVariance),
+          m_delta(model.deltaMean), m_lag(lag)
+    {
+    }
+    int latency() const override { return m_lag; }
+
+    void push(int label) override
+    {
+        if (m_finished)
+            throw Error("streamer already finished");
+        if (label < 0 || label >= PhoneSet::kSize)
+            throw Error("label " + std::to_string(label) + " outside 0.."
+                        + std::to_string(PhoneSet::kSize - 1));
+        Row row;
+        row.p = m_pInv.row(label).transpose().array().inverse();
+        row.pm = row.p * m_mean.row(label).transpose().array();
+        const bool first = m_rows.empty() && m_base == 0;
+        if (first) {
+            row.q = Eigen::ArrayXd::Zero(row.p.size());
+            row.qd = row.q;
+        } else {
+            row.q = m_qInv.row(label).transpose().array().inverse();
+            row.qd = row.q * m_delta.row(label).transpose().array();
+        }
+        m_rows.push_back(std::move(row));
+        const long h = m_base + long(m_rows.size()) - 1;
+        if (h > 0)
+            finaliseRow(h - 1);
+        if (h - m_lag >= m_next)
+            emitUpTo(h, m_next);
+    }
+
+    void finish() override
+    {
+        if (m_finished)
+            return;
+        m_finished = true;
+        const long h = m_base + long(m_rows.size()) - 1;
+        if (h >= m_next)
+            emitUpTo(h, h);
+    }
+
+    bool pop(Eigen::Ref<Eigen::VectorXd> frame) override
+    {
+        if (m_ready.empty())
+            return false;
+        frame = m_ready.front();
+        m_ready.pop_front();
+        return true;
+    }
+
+private:
+    struct Row
+    {
+        Eigen::ArrayXd p, pm, q, qd; // p_t, p_t mbar_t, q_t, q_t deltabar_t
+        Eigen::ArrayXd pivot, l, z;  // set once row t+1's label is known
+    };
+    Row &row(long t) { return m_rows[size_t(t - m_base)]; }
+
+    // Row t of H needs q_{t+1}: alpha_t = p_t + q_t + q_{t+1}, beta_t = -q_{t+1}.
+    void finaliseRow(long t)
+    {
+        Row &r = row(t);
+        const Row &next = row(t + 1);
+        const Eigen::ArrayXd alpha = r.p + r.q + next.q;
+        const Eigen::ArrayXd b = r.pm + r.qd - next.qd;
+        if (t == 0) {
+            r.l = Eigen::ArrayXd::Zero(r.p.size());
+            r.pivot = alpha;
+            r.z = b;
+        } else {
+            const Row &prev = row(t - 1);
+            const Eigen::ArrayXd beta = -r.q; // beta_{t-1}
+            r.l = beta / prev.pivot;
+            r.pivot = alpha - r.l * beta;
+            r.z = b - r.l * prev.z;
+        }
+    }
+
+    // Treat h as the end of the sequence (truncated last pivot), back-substitute, emit frames
+    // m_next..last.
+    void emitUpTo(long h, long last)
+    {
+        const Row &end = row(h);
+        Eigen::ArrayXd pivot = end.p + end.q, z = end.pm + end.qd, lEnd;
+        if (h > 0) {
+            const Row &prev = row(h - 1);
+            const Eigen::ArrayXd beta = -end.q;
+            lEnd = beta / prev.pivot;
+            pivot -= lEnd * beta;
+            z -= lEnd * prev.z;
+        }
+        std::vector<Eigen::ArrayXd> y(size_t(h - m_next + 1));
+        y.back() = z / pivot;
+        for (long tau = h - 1; tau >= m_next; --tau) {
+            const Eigen::ArrayXd &lNext = tau + 1 == h ? lEnd : row(tau + 1).l;
+            y[size_t(tau - m_next)] = row(tau).z / row(tau).pivot - lNext * y[size_t(tau + 1 - m_next)];
+        }
+        for (long t = m_next; t <= last; ++t)
+            m_ready.push_back(y[size_t(t - m_next)].matrix());
+        m_next = last + 1;
+        // Rows before m_next - 2 are no longer needed (rows m_next - 2 and m_next - 1 feed the next
+        // finalised row and pivot).
+        while (m_base < m_next - 2) {
+            m_rows.pop_front();
+            ++m_base;
+        }
+    }
+
+    Eigen::MatrixXd m_pInv, m_mean, m_qInv, m_delta; // variances and means (P x d)
+    int m_lag;
+    std::deque<Row> m_rows;
+    long m_base = 0; // frame index of m_rows.front()
+    long m_next = 0; // next frame to emit
+    bool m_finished = false;
+    std::deque<Eigen::VectorXd> m_ready;
+};
+
+// Full covariances: exact Brand cannot stream (§5), so the whole sequence is buffered and solved
+// on finish(). latency() = -1 says "whole sequence".
+class BufferedBrandStreamer : public StreamingGenerator
+{
+public:
+    explicit BufferedBrandStreamer(const BrandModel &model) : m_model(model) {}
+    int latency() const override { return -1; }
+    void push(int label) override
+    {
+        if (label < 0 || label >= PhoneSet::kSize)
+            throw Error("label " + std::to_string(label) + " outside 0.."
+                        + std::to_string(PhoneSet::kSize - 1));
+        m_labels.push_back(label);
+    }
+    void finish() override
+    {
+        if (!m_labels.empty())
+            m_frames = m_model.generate(m_labels);
+        m_labels.clear();
+    }
+    bool pop(Eigen::Ref<Eigen::VectorXd> frame) override
+    {
+        if (m_next >= m_frames.rows())
+            return false;
+        frame = m_frames.row(m_next++).transpose();
+        return true;
+    }
+
+private:
+    BrandModel m_model;
+    std::vector<int> m_labels;
+    Eigen::MatrixXd m_frames;
+    Eigen::Index m_next = 0;
+};
+
+} // namespace
+
+std::unique_ptr<StreamingGenerator> BrandModel::streamer() const
+{
+    checkTrained();
+    if (!jointCovariance.empty())
+        return std::make_unique<BufferedBrandStreamer>(*this);
+    return std::make_unique<FixedLagBrandStreamer>(*this, streamingLag());
+}
+
+QJsonObject BrandModel::parametersToJson() const
+{
+    QJsonObject o;
+    o[QStringLiteral("covariance")] = jointCovariance.empty() ? QStringLiteral("diagonal")
+                                                              : QStringLiteral("full");
+    o[QStringLiteral("lag")] = m_options.lag;
+    o[QStringLiteral("staticMean")] = json::fromMatrix(staticMean);
+    o[QStringLiteral("staticVariance")] = json::fromMatrix(staticVariance);
+    o[QStringLiteral("deltaMean")] = json::fromMatrix(deltaMean);
+    o[QStringLiteral("deltaVariance")] = json::fromMatrix(deltaVariance);
+    if (!jointCovariance.empty()) {
+        o[QStringLiteral("jointMean")] = json::fromMatrix(jointMean);
+        QJsonArray covariances;
+        for (const Eigen::MatrixXd &C : jointCovariance)
+            covariances.append(json::fromMatrix(C));
+        o[QStringLiteral("jointCovariance")] = covariances;
+    }
+    return o;
+}
+
+void BrandModel::parametersFromJson(const QJsonObject &o, const std::string &file)
+{
+    const int P = PhoneSet::kSize;
+    staticMean = json::toMatrix(o, "staticMean", P, -1, file);
+    const Eigen::Index d = staticMean.cols();
+    staticVariance = json::toMatrix(o, "staticVariance", P, d, file);
+    deltaMean = json::toMatrix(o, "deltaMean", P, d, file);
+    deltaVariance = json::toMatrix(o, "deltaVariance", P, d, file);
+    if ((staticVariance.array() <= 0).any() || (deltaVariance.array() <= 0).any())
+        throw Error("variances must be positive", file, "staticVariance/deltaVariance");
+    m_options.lag = o.value(QStringLiteral("lag")).toInt(0);
+    const QString covariance = o.value(QStringLiteral("covariance")).toString();
+    jointMean.resize(0, 0);
+    jointCovariance.clear();
+    if (covariance == QLatin1String("full")) {
+        m_options.fullCovariance = true;
+        jointMean = json::toMatrix(o, "jointMean", P, 2 * d, file);
+        const QJsonArray covariances = o.value(QStringLiteral("jointCovariance")).toArray();
+        if (covariances.size() != P)
+            throw Error("expected " + std::to_string(P) + " matrices", file, "jointCovariance");
+        for (int n = 0; n < P; ++n) {
+            QJsonObject wrapper;
+            wrapper[QStringLiteral("c")] = covariances[n];
+            Eigen::MatrixXd C = json::toMatrix(wrapper, "c", 2 * d, 2 * d, file);
+            if (Eigen::LLT<Eigen::MatrixXd>(C).info() != Eigen::Success)
+                throw Error("matrix " + std::to_string(n) + " is not positive definite", file,
+                            "jointCovariance");
+            jointCovariance.push_back(std::move(C));
+        }
+    } else if (covariance == QLatin1String("diagonal")) {
+        m_options.fullCovariance = false;
+    } else {
+        throw Error("must be \"diagonal\" or \"full\"", file, "covariance");
+    }
+    m_dimension = int(d);
+}
+
+} // namespace lipsync

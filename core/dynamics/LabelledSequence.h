@@ -1,0 +1,41 @@
+#pragma once
+// Training and test data of the dynamic models (models.md §0): one utterance = an integer phone
+// label per video frame (0..PhoneSet::kSize-1) and the T x d matrix of face features y_t.
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace lipsync {
+
+struct LabelledSequence
+{
+    std::string name;        // used in error messages ("bbaf2n")
+    std::vector<int> labels; // one per frame
+    Eigen::MatrixXd features; // frames x d
+    int frameCount() const { return int(labels.size()); }
+};
+
+// Checks what every model relies on and throws lipsync::Error naming the sequence: at least one
+// sequence, the same d > 0 everywhere, as many labels as feature rows, at least one frame, labels
+// in 0..P-1, finite features. Sequences of one frame are valid (they only inform the t = 1 terms).
+void validateSequences(const std::vector<LabelledSequence> &sequences);
+// Label checks for generation: non-empty, every label in 0..P-1.
+void validateLabels(const std::vector<int> &labels, const std::string &what = "labels");
+
+// Per-state frame statistics shared by the models' closed-form estimates and back-offs.
+struct FrameStatistics
+{
+    Eigen::MatrixXd mean;       // P x d: m_n (§1), the global mean for unseen states
+    Eigen::MatrixXd variance;   // P x d: c_n (§1) floored, the global variance for unseen states
+    Eigen::VectorXi count;      // N_n
+    Eigen::VectorXi startCount; // N^(1)_n
+    Eigen::VectorXi transitionCount; // N^{>=2}_n
+    Eigen::VectorXd globalMean;     // d
+    Eigen::VectorXd globalVariance; // d
+    Eigen::VectorXd floor;          // eps_k = 1e-6 Var(y_k) (models.md §0), at least 1e-12
+    long long frames = 0;
+};
+FrameStatistics computeFrameStatistics(const std::vector<LabelledSequence> &sequences);
+
+} // namespace lipsync

@@ -1,0 +1,95 @@
+#include "dynamics/ModelFile.h"
+
+#include "dynamics/HmmMeanModel.h"
+#include "dynamics/PhoneSet.h"
+#include "io/AtomicFile.h"
+#include "util/Error.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+
+namespace lipsync {
+
+const std::vector<std::string> &dynamicModelKinds()
+{
+    static const std::vector<std::string> kinds{"hmm", "brand", "slds", "dpds"};
+    return kinds;
+}
+
+std::unique_ptr<DynamicModel> createDynamicModel(const std::string &kind, const ModelOptions &options)
+{
+    if (kind == "hmm")
+        return std::make_unique<HmmMeanModel>();
+    if (kind == "brand")
+        return std::make_unique<BrandModel>(options.brand);
+    if (kind == "slds")
+        return std::make_unique<SldsModel>(options.slds);
+    if (kind == "dpds")
+        return std::make_unique<DpdsModel>(options.dpds);
+    throw Error("unknown model kind '" + kind + "' (expected dpds, slds, brand or hmm)");
+}
+
+void saveModel(const DynamicModel &model, const std::string &path, const std::string &aamId)
+{
+    if (!model.isTrained())
+        throw Error("cannot save an untrained " + model.kind() + " model", path);
+    QJsonObject o;
+    o[QStringLiteral("format")] = QString::fromLatin1(kModelFileFormat);
+    o[QStringLiteral("version")] = kModelFileVersion;
+    o[QStringLiteral("kind")] = QString::fromStdString(model.kind());
+    o[QStringLiteral("aam")] = QString::fromStdString(aamId);
+    QJsonArray labels;
+    for (std::string_view name : PhoneSet::names())
+        labels.append(QString::fromLatin1(name.data(), qsizetype(name.size())));
+    o[QStringLiteral("labels")] = labels;
+    o[QStringLiteral("dimension")] = model.dimension();
+    o[QStringLiteral("parameters")] = model.parametersToJson();
+    writeFileAtomically(path, QJsonDocument(o).toJson(QJsonDocument::Compact).toStdString());
+}
+
+std::unique_ptr<DynamicModel> loadModel(const std::string &path, const std::string &expectedAamId,
+                                        std::string *aamId)
+{
+    const std::string text = readWholeFile(path);
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(text), &parseError);
+    if (doc.isNull() || !doc.isObject())
+        throw Error("not a model file (" + parseError.errorString().toStdString() + ")", path);
+    const QJsonObject o = doc.object();
+    if (o.value(QStringLiteral("format")).toString() != QLatin1String(kModelFileFormat))
+        throw Error("not a lipsync dynamic model file", path, "format");
+    const QJsonValue version = o.value(QStringLiteral("version"));
+    if (!version.isDouble() || version.toInt() != kModelFileVersion)
+        throw Error("model file version " + (version.isDouble() ? std::to_string(version.toInt()) : std::string("?"))
+                        + " is not supported (this build reads version "
+                        + std::to_string(kModelFileVersion) + ")",
+                    path, "version");
+    const std::string aam = o.value(QStringLiteral("aam")).toString().toStdString();
+    if (!expectedAamId.empty() && aam != expectedAamId)
+        throw Error("the model was trained for AAM '" + aam + "', not for AAM '" + expectedAamId + "'",
+                    path, "aam");
+    const QJsonArray labels = o.value(QStringLiteral("labels")).toArray();
+    bool sameLabels = labels.size() == PhoneSet::kSize;
+    for (int i = 0; sameLabels && i < PhoneSet::kSize; ++i)
+        sameLabels = labels[i].toString().toStdString() == PhoneSet::name(i);
+    if (!sameLabels)
+        throw Error("the label set differs from this build's 41 phones (AA .. ZH, sil, br)", path,
+                    "labels");
+    const std::string kind = o.value(QStringLiteral("kind")).toString().toStdString();
+    std::unique_ptr<DynamicModel> model;
+    try {
+        model = createDynamicModel(kind);
+    } catch (const Error &e) {
+        throw Error(e.reason(), path, "kind");
+    }
+    if (!o.value(QStringLiteral("parameters")).isObject())
+        throw Error("missing", path, "parameters");
+    model->parametersFromJson(o.value(QStringLiteral("parameters")).toObject(), path);
+    if (model->dimension() != o.value(QStringLiteral("dimension")).toInt(-1))
+        throw Error("does not match the parameters", path, "dimension");
+    if (aamId)
+        *aamId = aam;
+    return model;
+}
+
+} // namespace lipsync

@@ -1,0 +1,39 @@
+#pragma once
+// Model files and the model factory. A model file is JSON (written atomically):
+//   {"format": "lipsync-dynamic-model", "version": 1, "kind": "dpds", "aam": "<AAM id>",
+//    "labels": ["AA", ..., "sil", "br"], "dimension": 32, "parameters": {...}}
+// "labels" records the phone set the integer labels refer to, "aam" the AAM whose parameters
+// the features are. Loading rejects another format or version, an unknown kind, another label
+// set, and (when an AAM id is expected) another AAM, with a lipsync::Error naming the file.
+#include "dynamics/BrandModel.h"
+#include "dynamics/DpdsModel.h"
+#include "dynamics/DynamicModel.h"
+#include "dynamics/SldsModel.h"
+
+#include <memory>
+#include <string>
+
+namespace lipsync {
+
+constexpr int kModelFileVersion = 1;
+constexpr const char *kModelFileFormat = "lipsync-dynamic-model";
+
+struct ModelOptions
+{
+    BrandOptions brand;
+    SldsOptions slds;
+    DpdsOptions dpds;
+};
+
+// "hmm", "brand", "slds", "dpds"; throws lipsync::Error for anything else.
+std::unique_ptr<DynamicModel> createDynamicModel(const std::string &kind,
+                                                 const ModelOptions &options = {});
+const std::vector<std::string> &dynamicModelKinds();
+
+void saveModel(const DynamicModel &model, const std::string &path, const std::string &aamId);
+// expectedAamId empty: accept any AAM. aamId (optional) receives the file's AAM id.
+std::unique_ptr<DynamicModel> loadModel(const std::string &path,
+                                        const std::string &expectedAamId = {},
+                                        std::string *aamId = nullptr);
+
+} // namespace lipsync

@@ -1,0 +1,71 @@
+#pragma once
+// The cross-validated comparison of the dynamic models (models.md §6.1-6.3): every model is trained
+// on the same k-1 folds and tested on the held-out one; per test sequence L1, RMS, Linf (§6.2) of
+// the generated trajectory and the log-likelihood per frame; fold value = mean over the fold's
+// sequences (equal weight); reported as the mean over folds with a 95 % t interval, plus paired
+// t-tests between models. Results serialise to JSON and CSV.
+#include "dynamics/LabelledSequence.h"
+#include "dynamics/ModelFile.h"
+
+#include <QJsonObject>
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace lipsync {
+
+class Feedback;
+
+struct EvaluationOptions
+{
+    int folds = 10;
+    std::uint64_t seed = 2007;
+    std::vector<std::string> kinds{"hmm", "brand", "slds", "dpds"};
+    ModelOptions modelOptions;
+};
+
+struct MetricSummary
+{
+    std::vector<double> folds; // fold values e_f
+    double mean = 0.0;
+    double ci95 = 0.0; // half-width
+};
+
+struct ModelEvaluation
+{
+    std::string kind;
+    std::map<std::string, MetricSummary> metrics; // "l1", "rms", "linf", "loglik"
+    std::vector<double> trainingSeconds;           // per fold
+};
+
+struct MetricComparison
+{
+    std::string metric, a, b;
+    double meanDifference = 0.0, t = 0.0, p = 1.0;
+    bool intervalsOverlap = true;
+};
+
+struct EvaluationResult
+{
+    int folds = 0;
+    std::uint64_t seed = 0;
+    int sequences = 0;
+    long long frames = 0;
+    std::vector<std::vector<int>> foldMembers;
+    std::vector<ModelEvaluation> models;
+    std::vector<MetricComparison> comparisons;
+
+    QJsonObject toJson() const;
+    // One row per model and metric: model,metric,mean,ci95,fold1..foldK (and training seconds).
+    std::string toCsv() const;
+};
+
+const std::vector<std::string> &evaluationMetrics();
+
+// Throws lipsync::Error for invalid sequences (validateSequences) or too few sequences.
+EvaluationResult evaluateModels(const std::vector<LabelledSequence> &sequences,
+                                const EvaluationOptions &options, Feedback &feedback);
+
+} // namespace lipsync

@@ -1,0 +1,199 @@
+// lipsync train / generate / evaluate as users run them, on a tiny synthetic data set (features
+// sampled from a DPDS, phone labels as .lab files) plus one real MFA phone alignment (TextGrid).
+#include "../core/dynamics/SyntheticDynamics.h"
+
+#include "dynamics/PhoneLabels.h"
+#include "io/FeatureCsv.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <fstream>
+
+using namespace lipsync;
+
+namespace {
+
+struct Run
+{
+    int exitCode = -1;
+    QByteArray out, err;
+};
+
+Run lipsyncRun(const QStringList &args)
+{
+    QProcess p;
+    p.start(QStringLiteral(LIPSYNC_CLI), args);
+    p.waitForFinished(120000);
+    return {p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
+}
+
+// .lab from per-frame labels at 25 fps: one segment per run.
+void writeLab(const std::string &path, const std::vector<int> &labels)
+{
+    std::ofstream out(path);
+    size_t start = 0;
+    for (size_t t = 1; t <= labels.size(); ++t)
+        if (t == labels.size() || labels[t] != labels[start]) {
+            out << start / 25.0 << " " << t / 25.0 << " " << PhoneSet::name(labels[start]) << "\n";
+            start = t;
+        }
+}
+
+} // namespace
+
+class TestDynamicsCli : public QObject
+{
+    Q_OBJECT
+    QTemporaryDir m_dir;
+    QString m_features, m_labels;
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        m_features = m_dir.filePath(QStringLiteral("features"));
+        m_labels = m_dir.filePath(QStringLiteral("labels"));
+        QDir().mkpath(m_features);
+        QDir().mkpath(m_labels);
+        std::mt19937 rng(7);
+        const test::DpdsTruth truth = test::randomDpdsTruth(rng, 4, 0.05);
+        const std::vector<int> states{PhoneSet::index("B"), PhoneSet::index("IH"), PhoneSet::index("N"),
+                                      PhoneSet::index("AA"), PhoneSet::index("T")};
+        for (int s = 0; s < 12; ++s) {
+            const std::string name = "clip" + std::to_string(s);
+            const auto seq = test::sampleDpds(rng, truth, test::randomLabels(rng, 75, states), name);
+            writeFeatureCsv((m_features + "/" + QString::fromStdString(name) + ".csv").toStdString(), seq.features);
+            writeLab((m_labels + "/" + QString::fromStdString(name) + ".lab").toStdString(), seq.labels);
+        }
+        // One real phone alignment (MFA, short TextGrid form) with synthetic features.
+        QVERIFY(QFile::copy(QStringLiteral(LIPSYNC_TEST_DATA "/dynamics/acoustic_corpus.TextGrid"),
+                            m_labels + "/real.TextGrid"));
+        const std::vector<int> realLabels =
+            frameLabelsFromTier(readPhoneTier((m_labels + "/real.TextGrid").toStdString()), 25.0, 668);
+        writeFeatureCsv((m_features + "/real.csv").toStdString(),
+                        test::sampleDpds(rng, truth, realLabels, "real").features);
+    }
+
+    void trainsEveryKind_data()
+    {
+        QTest::addColumn<QString>("kind");
+        for (const char *k : {"dpds", "slds", "brand", "hmm"})
+            QTest::newRow(k) << QString::fromLatin1(k);
+    }
+    void trainsEveryKind()
+    {
+        QFETCH(QString, kind);
+        const QString model = m_dir.filePath(kind + ".json");
+        const Run r = lipsyncRun({"train", "--kind", kind, "--features", m_features, "--labels", m_labels,
+                                  "--out", model, "--aam", "aam-test", "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(o.value("kind").toString(), kind);
+        QCOMPARE(o.value("sequences").toInt(), 13);
+        QCOMPARE(o.value("frames").toInt(), 12 * 75 + 668);
+        QCOMPARE(o.value("dimension").toInt(), 4);
+        QVERIFY(std::isfinite(o.value("loglikPerFrame").toDouble()));
+        QVERIFY(QFile::exists(model));
+
+        // Generate from the real TextGrid: 26.72 s at 25 fps = 669 frames.
+        const QString out = m_dir.filePath(kind + "-gen.csv");
+        Run g = lipsyncRun({"generate", "--model", model, "--labels", m_labels + "/real.TextGrid", "--out", out,
+                            "--aam", "aam-test", "--json"});
+        QVERIFY2(g.exitCode == 0, g.err.constData());
+        const FeatureTable table = readFeatureCsv(out.toStdString());
+        QCOMPARE(table.values.rows(), Eigen::Index(669));
+        QCOMPARE(table.values.cols(), Eigen::Index(4));
+        // The frame-by-frame generator writes the same file (Brand: within its fixed-lag error).
+        const QString streamed = m_dir.filePath(kind + "-stream.csv");
+        g = lipsyncRun({"generate", "--model", model, "--labels", m_labels + "/real.TextGrid", "--out",
+                        streamed, "--stream"});
+        QVERIFY2(g.exitCode == 0, g.err.constData());
+        const double difference = (readFeatureCsv(streamed.toStdString()).values - table.values).cwiseAbs().maxCoeff();
+        QVERIFY(difference <= (kind == "brand" ? 1e-3 : 0.0));
+        // Another AAM: a clear error.
+        g = lipsyncRun({"generate", "--model", model, "--labels", m_labels + "/real.TextGrid", "--out", out,
+                        "--aam", "other-aam"});
+        QCOMPARE(g.exitCode, 1);
+        QVERIFY(g.err.contains("aam-test") && g.err.contains("other-aam"));
+    }
+
+    void generatesFromFrameList()
+    {
+        const QString list = m_dir.filePath(QStringLiteral("frames.txt"));
+        std::ofstream(list.toStdString()) << "sil\nsil\nB\nIH1\nIH1\nN\nsil\n";
+        const QString out = m_dir.filePath(QStringLiteral("list.csv"));
+        const Run g = lipsyncRun({"generate", "--model", m_dir.filePath("dpds.json"), "--labels", list, "--out", out});
+        QVERIFY2(g.exitCode == 0, g.err.constData());
+        QCOMPARE(readFeatureCsv(out.toStdString()).values.rows(), Eigen::Index(7));
+    }
+
+    void evaluates()
+    {
+        const QString csv = m_dir.filePath(QStringLiteral("eval.csv"));
+        const Run r = lipsyncRun({"evaluate", "--features", m_features, "--labels", m_labels, "--folds", "4",
+                                  "--kinds", "hmm,brand,dpds", "--csv", csv, "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(o.value("folds").toInt(), 4);
+        const QJsonObject models = o.value("models").toObject();
+        QCOMPARE(models.keys().size(), 3);
+        for (const QString &kind : {QStringLiteral("hmm"), QStringLiteral("brand"), QStringLiteral("dpds")}) {
+            const QJsonObject m = models.value(kind).toObject();
+            for (const char *metric : {"l1", "rms", "linf", "loglik"}) {
+                const QJsonObject s = m.value(QLatin1String(metric)).toObject();
+                QVERIFY(s.contains("mean") && s.contains("ci95"));
+                QCOMPARE(s.value("folds").toArray().size(), 4);
+            }
+            QVERIFY(m.value("trainingSeconds").toDouble() >= 0);
+        }
+        QVERIFY(QFile::exists(csv));
+    }
+
+    void badInput()
+    {
+        const QString model = m_dir.filePath(QStringLiteral("bad.json"));
+        // Bad usage: exit 2.
+        QCOMPARE(lipsyncRun({"train", "--kind", "lstm", "--features", m_features, "--labels", m_labels, "--out", model}).exitCode, 2);
+        QCOMPARE(lipsyncRun({"train", "--features", m_features}).exitCode, 2);
+        QCOMPARE(lipsyncRun({"generate", "--model", model}).exitCode, 2);
+        QCOMPARE(lipsyncRun({"evaluate", "--features", m_features, "--labels", m_labels, "--folds", "1"}).exitCode, 2);
+        QCOMPARE(lipsyncRun({"train", "--kind", "hmm", "--features", m_features, "--labels", m_labels, "--out", model, "--bogus"}).exitCode, 2);
+        // Bad data: exit 1 with one line naming the file.
+        QTemporaryDir bad;
+        const QString features = bad.filePath("f"), labels = bad.filePath("l");
+        QDir().mkpath(features);
+        QDir().mkpath(labels);
+        std::ofstream((features + "/nan.csv").toStdString()) << "frame,p0\n0,1.0\n1,nan\n";
+        std::ofstream((labels + "/nan.lab").toStdString()) << "0 0.08 sil\n";
+        Run r = lipsyncRun({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.err.contains("nan.csv") && r.err.count('\n') == 1);
+        std::ofstream((features + "/nan.csv").toStdString()) << "frame,p0\n0,1.0\n1,2.0\n";
+        std::ofstream((features + "/orphan.csv").toStdString()) << "frame,p0\n0,1.0\n";
+        r = lipsyncRun({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.err.contains("orphan"));
+        QFile::remove(features + "/orphan.csv");
+        std::ofstream((labels + "/nan.lab").toStdString()) << "0 0.08 QQ\n";
+        r = lipsyncRun({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.err.contains("QQ") && r.err.contains("nan.lab"));
+        // Too few sequences for the folds; a model file that is not one.
+        r = lipsyncRun({"evaluate", "--features", m_features, "--labels", m_labels, "--folds", "20"});
+        QCOMPARE(r.exitCode, 1);
+        std::ofstream(model.toStdString()) << "{}";
+        r = lipsyncRun({"generate", "--model", model, "--labels", m_labels + "/real.TextGrid", "--out", bad.filePath("x.csv")});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.err.contains("bad.json"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestDynamicsCli)
+#include "tst_dynamicscli.moc"

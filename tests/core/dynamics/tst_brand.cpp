@@ -1,0 +1,273 @@
+// Brand / MLPG checks of models.md §7 (items 11-16) and the HMM-mean limit.
+#include "SyntheticDynamics.h"
+
+#include "dynamics/BrandModel.h"
+#include "dynamics/HmmMeanModel.h"
+#include "tasks/Feedback.h"
+
+#include <QTest>
+
+#include <Eigen/Cholesky>
+
+using namespace lipsync;
+using namespace lipsync::test;
+
+namespace {
+
+std::vector<LabelledSequence> trainingData(unsigned seed, int d, int sequences = 30, int frames = 40)
+{
+    std::mt19937 rng(seed);
+    const DpdsTruth truth = randomDpdsTruth(rng, d, 0.1);
+    return dpdsDataset(rng, truth, {0, 2, 6, 9, 21, 26, 35}, sequences, frames);
+}
+
+BrandModel trained(const std::vector<LabelledSequence> &data, bool full = false, int lag = 0)
+{
+    BrandOptions options;
+    options.fullCovariance = full;
+    options.lag = lag;
+    BrandModel model(options);
+    Feedback feedback;
+    model.train(data, feedback);
+    return model;
+}
+
+double maxAbs(const Eigen::MatrixXd &m) { return m.cwiseAbs().maxCoeff(); }
+
+} // namespace
+
+class TestBrand : public QObject
+{
+    Q_OBJECT
+private slots:
+    // §7.11
+    void tridiagonalSystemMatchesDenseConstruction()
+    {
+        const auto data = trainingData(1, 3);
+        const BrandModel model = trained(data);
+        std::mt19937 rng(2);
+        const std::vector<int> labels = randomLabels(rng, 12, {0, 6, 21, 11});
+        Eigen::MatrixXd H;
+        Eigen::VectorXd b;
+        model.denseReferenceSystem(labels, H, b);
+        const Eigen::Index T = Eigen::Index(labels.size()), d = 3;
+        for (int k = 0; k < d; ++k) {
+            const brand::TridiagonalSystem s = model.tridiagonalSystem(labels, k);
+            for (Eigen::Index t = 0; t < T; ++t) {
+                QVERIFY(std::abs(s.alpha[t] - H(t * d + k, t * d + k)) < 1e-9 * s.alpha[t]);
+                QVERIFY(std::abs(s.b[t] - b[t * d + k]) < 1e-9 * (1 + std::abs(s.b[t])));
+                if (t + 1 < T)
+                    QVERIFY(std::abs(s.beta[t] - H(t * d + k, (t + 1) * d + k)) < 1e-9 * std::abs(s.alpha[t]));
+            }
+        }
+        const Eigen::MatrixXd tri = model.generate(labels);
+        const Eigen::MatrixXd dense = model.generateDenseReference(labels);
+        QVERIFY(maxAbs(tri - dense) < 1e-9 * (1 + maxAbs(dense)));
+    }
+
+    // §7.12
+    void fullCovarianceBlockSolve()
+    {
+        const auto data = trainingData(3, 2, 60, 50);
+        const BrandModel model = trained(data, true);
+        QVERIFY(!model.jointCovariance.empty());
+        std::mt19937 rng(4);
+        const std::vector<int> labels = randomLabels(rng, 15, {0, 6, 21, 26});
+        const Eigen::MatrixXd block = model.generate(labels);
+        const Eigen::MatrixXd dense = model.generateDenseReference(labels);
+        QVERIFY(maxAbs(block - dense) < 1e-9 * (1 + maxAbs(dense)));
+        // Also the assembled block system equals the explicit W^T Lambda W.
+        Eigen::MatrixXd H;
+        Eigen::VectorXd b;
+        model.denseReferenceSystem(labels, H, b);
+        const brand::BlockTridiagonalSystem s = model.blockSystem(labels);
+        QVERIFY(maxAbs(brand::denseMatrix(s) - H) < 1e-9 * maxAbs(H));
+        QVERIFY((brand::denseRhs(s) - b).cwiseAbs().maxCoeff() < 1e-9 * b.cwiseAbs().maxCoeff());
+        QVERIFY(maxAbs(brand::solveDense(s).transpose() - dense) < 1e-9 * (1 + maxAbs(dense)));
+        // The gradient of the objective vanishes at the solution (central differences).
+        const double h = 1e-5;
+        for (Eigen::Index t = 0; t < block.rows(); t += 3)
+            for (Eigen::Index k = 0; k < 2; ++k) {
+                Eigen::MatrixXd up = block, down = block;
+                up(t, k) += h;
+                down(t, k) -= h;
+                const double g = (model.logLikelihood(labels, up) - model.logLikelihood(labels, down)) / (2 * h);
+                QVERIFY2(std::abs(g) < 1e-4 * H(t * 2 + k, t * 2 + k), qPrintable(QString::number(g)));
+            }
+        // The objective is -(1/2 Y^T H Y - b^T Y) + c: c is the same for any Y.
+        auto constant = [&](const Eigen::MatrixXd &Y) {
+            const Eigen::MatrixXd Yt = Y.transpose();
+            const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(Yt.data(), Yt.size());
+            return model.logLikelihood(labels, Y) + 0.5 * y.dot(H * y) - b.dot(y);
+        };
+        Eigen::MatrixXd other = block;
+        other.array() += 0.3;
+        other(3, 1) -= 1.0;
+        QVERIFY(std::abs(constant(block) - constant(other)) < 1e-8 * (1 + std::abs(constant(block))));
+    }
+
+    // §7.13
+    void blockSolverWithDiagonalCovarianceEqualsTridiagonal()
+    {
+        const auto data = trainingData(5, 4);
+        const BrandModel model = trained(data);
+        std::mt19937 rng(6);
+        const std::vector<int> labels = randomLabels(rng, 100, {0, 2, 6, 21, 35});
+        QVERIFY(maxAbs(model.generateBlock(labels) - model.generate(labels)) < 1e-10 * (1 + maxAbs(model.generate(labels))));
+    }
+
+    // §7.14
+    void limitsGiveHmmMean()
+    {
+        const auto data = trainingData(7, 2);
+        BrandModel model = trained(data);
+        HmmMeanModel hmm;
+        Feedback feedback;
+        hmm.train(data, feedback);
+        QVERIFY(maxAbs(model.staticMean - hmm.means()) < 1e-12);
+        std::mt19937 rng(8);
+        const std::vector<int> labels = randomLabels(rng, 50, {0, 6, 21});
+        model.deltaVariance.setConstant(1e14); // q -> 0
+        QVERIFY(maxAbs(model.generate(labels) - hmm.generate(labels)) < 1e-6);
+        // Constant labels with zero delta mean reproduce the static mean exactly.
+        model = trained(data);
+        model.deltaMean.setZero();
+        const std::vector<int> constant(30, 6);
+        const Eigen::MatrixXd Y = model.generate(constant);
+        for (Eigen::Index t = 0; t < Y.rows(); ++t)
+            QVERIFY((Y.row(t) - model.staticMean.row(6)).cwiseAbs().maxCoeff() < 1e-10);
+    }
+
+    // §7.15
+    void fixedLagStreaming()
+    {
+        const auto data = trainingData(9, 3);
+        const BrandModel reference = trained(data);
+        std::mt19937 rng(10);
+        const std::vector<int> labels = randomLabels(rng, 120, {0, 2, 6, 9, 21, 26, 35});
+        const Eigen::MatrixXd exact = reference.generate(labels);
+        // |l_t| <= q_t / (p_{t-1} + q_t)
+        for (int k = 0; k < 3; ++k) {
+            Eigen::VectorXd pivots, l;
+            const brand::TridiagonalSystem s = reference.tridiagonalSystem(labels, k);
+            brand::solveTridiagonal(s, &pivots, &l);
+            for (size_t t = 1; t < labels.size(); ++t) {
+                const double q = 1.0 / reference.deltaVariance(labels[t], k);
+                const double p = 1.0 / reference.staticVariance(labels[t - 1], k);
+                QVERIFY(std::abs(l[Eigen::Index(t)]) <= q / (p + q) * (1 + 1e-12));
+            }
+        }
+        double previousError = INFINITY;
+        for (int lag : {2, 5, 10, 20}) {
+            const BrandModel model = trained(data, false, lag);
+            auto stream = model.streamer();
+            QCOMPARE(stream->latency(), lag);
+            Eigen::MatrixXd streamed(exact.rows(), exact.cols());
+            Eigen::VectorXd frame(3);
+            Eigen::Index next = 0;
+            for (size_t t = 0; t < labels.size(); ++t) {
+                stream->push(labels[t]);
+                while (stream->pop(frame))
+                    streamed.row(next++) = frame.transpose();
+                // Frame t is ready once label t + L is known.
+                QCOMPARE(next, std::max<Eigen::Index>(0, Eigen::Index(t) - lag + 1));
+            }
+            stream->finish();
+            while (stream->pop(frame))
+                streamed.row(next++) = frame.transpose();
+            QCOMPARE(next, exact.rows());
+            // Error bound rho^{h-t} x end error; exact when h = T.
+            const double rho = model.contraction();
+            double maxError = 0;
+            for (Eigen::Index t = 0; t < exact.rows(); ++t) {
+                const double error = (streamed.row(t) - exact.row(t)).cwiseAbs().maxCoeff();
+                maxError = std::max(maxError, error);
+                if (t + lag >= exact.rows())
+                    QVERIFY(error < 1e-9);
+            }
+            QVERIFY(maxError <= previousError + 1e-15);
+            previousError = maxError;
+            qInfo("lag %d: rho %.3f, max error %.3g", lag, rho, maxError);
+        }
+        QVERIFY(previousError < 1e-3);
+        // The bound itself: the solve truncated at h is the exact solve of the prefix 1..h, and
+        // |y^(h)_t - y_t| <= rho^(h-t) |y^(h)_h - y_h| for every t <= h.
+        const double rho = reference.contraction();
+        for (Eigen::Index h : {Eigen::Index(10), Eigen::Index(40), Eigen::Index(77), exact.rows() - 1}) {
+            const std::vector<int> prefix(labels.begin(), labels.begin() + h + 1);
+            const Eigen::MatrixXd truncated = reference.generate(prefix);
+            for (int k = 0; k < 3; ++k) {
+                const double endError = std::abs(truncated(h, k) - exact(h, k));
+                for (Eigen::Index t = 0; t <= h; ++t)
+                    QVERIFY(std::abs(truncated(t, k) - exact(t, k))
+                            <= std::pow(rho, double(h - t)) * endError * (1 + 1e-9) + 1e-12);
+                if (h == exact.rows() - 1)
+                    QVERIFY(endError < 1e-12); // exactly 0 at h = T
+            }
+        }
+        const BrandModel model = trained(data, false, 5);
+        QVERIFY(model.streamingLag() == 5);
+    }
+
+    // §7.16
+    void trajectoryDensityEqualsDenseGaussian()
+    {
+        const auto data = trainingData(11, 2);
+        const BrandModel model = trained(data);
+        std::mt19937 rng(12);
+        const std::vector<int> labels = randomLabels(rng, 10, {0, 6, 21});
+        Eigen::MatrixXd Y = model.generate(labels);
+        Y.array() += 0.05;
+        Y(4, 1) -= 0.2;
+        Eigen::MatrixXd H;
+        Eigen::VectorXd b;
+        model.denseReferenceSystem(labels, H, b);
+        const Eigen::LLT<Eigen::MatrixXd> llt(H);
+        const Eigen::MatrixXd Yt = Y.transpose();
+        const Eigen::VectorXd e = Eigen::Map<const Eigen::VectorXd>(Yt.data(), Yt.size()) - llt.solve(b);
+        const double logDet = 2.0 * llt.matrixLLT().diagonal().array().log().sum();
+        const double dense = -0.5 * double(e.size()) * std::log(2 * M_PI) + 0.5 * logDet - 0.5 * e.dot(H * e);
+        QVERIFY(std::abs(model.trajectoryLogLikelihood(labels, Y) - dense) < 1e-9 * std::abs(dense));
+    }
+
+    void unseenPhonesAndOneFrame()
+    {
+        const auto data = trainingData(13, 2);
+        const BrandModel model = trained(data);
+        const Eigen::MatrixXd Y = model.generate({11, 29, 29, 38});
+        QVERIFY(Y.allFinite());
+        QCOMPARE(model.generate({6}).rows(), Eigen::Index(1));
+        QVERIFY((model.generate({6}).row(0) - model.staticMean.row(6)).cwiseAbs().maxCoeff() < 1e-12);
+        auto stream = model.streamer();
+        stream->push(6);
+        stream->finish();
+        Eigen::VectorXd frame(2);
+        QVERIFY(stream->pop(frame));
+        QVERIFY(!stream->pop(frame));
+    }
+
+    void hmmMeanIsClosedFormAndStreams()
+    {
+        // 2 x 2 example by hand: phone 0 frames (1, 2) and (3, 6).
+        LabelledSequence s{"hand", {0, 0}, (Eigen::MatrixXd(2, 2) << 1, 2, 3, 6).finished()};
+        HmmMeanModel model;
+        Feedback feedback;
+        model.train({s}, feedback);
+        QCOMPARE(model.means()(0, 0), 2.0);
+        QCOMPARE(model.means()(0, 1), 4.0);
+        QCOMPARE(model.variances()(0, 0), 1.0);
+        QCOMPARE(model.variances()(0, 1), 4.0);
+        const double expected = -0.5 * (4 * std::log(2 * M_PI) + 2 * (std::log(1.0) + std::log(4.0)) + 1 + 1 + 1 + 1);
+        QVERIFY(std::abs(model.logLikelihood(s.labels, s.features) - expected) < 1e-12);
+        // Unseen phone: the global mean.
+        QCOMPARE(model.generate({5})(0, 1), 4.0);
+        auto stream = model.streamer();
+        Eigen::VectorXd frame(2);
+        stream->push(0);
+        QVERIFY(stream->pop(frame));
+        QCOMPARE(frame[0], 2.0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestBrand)
+#include "tst_brand.moc"

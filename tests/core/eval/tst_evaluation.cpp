@@ -1,0 +1,159 @@
+// Evaluation checks of models.md §7 (items 22-25) and the cross-validation runner.
+#include "../dynamics/SyntheticDynamics.h"
+
+#include "eval/CrossValidation.h"
+#include "eval/Evaluation.h"
+#include "eval/ForcedChoice.h"
+#include "eval/Metrics.h"
+#include "eval/Statistics.h"
+#include "tasks/Feedback.h"
+#include "util/Error.h"
+
+#include <QJsonArray>
+#include <QTest>
+
+#include <set>
+
+using namespace lipsync;
+
+class TestEvaluation : public QObject
+{
+    Q_OBJECT
+private slots:
+    // §7.22
+    void metricsByHand()
+    {
+        Eigen::MatrixXd real = Eigen::MatrixXd::Zero(2, 2), gen(2, 2);
+        gen << 1, -2, 3, 0;
+        const SequenceErrors e = sequenceErrors(gen, real);
+        QCOMPARE(e.l1, 3.0);
+        QCOMPARE(e.rms, std::sqrt(7.0));
+        QCOMPARE(e.linf, 2.5);
+        gen << 0.5, 0.5, -0.5, 0.5;
+        real << 0, 1, 0, 0;
+        const SequenceErrors f = sequenceErrors(gen, real);
+        QCOMPARE(f.l1, 1.0);
+        QCOMPARE(f.rms, std::sqrt(0.5));
+        QCOMPARE(f.linf, 0.5);
+        QVERIFY_THROWS_EXCEPTION(Error, sequenceErrors(gen, Eigen::MatrixXd::Zero(3, 2)));
+    }
+
+    // §7.23
+    void confidenceInterval()
+    {
+        QVERIFY(std::abs(stats::studentTQuantile(0.975, 9) - 2.2622) < 1e-4);
+        QVERIFY(std::abs(stats::studentTQuantile(0.975, 1) - 12.7062) < 1e-3);
+        const stats::MeanInterval m = stats::meanWithCi95({1, 2, 3, 4, 5, 6, 7, 8, 9, 10});
+        QCOMPARE(m.mean, 5.5);
+        QVERIFY(std::abs(m.sd - 3.0277) < 1e-4);
+        QVERIFY(std::abs(m.halfWidth - 2.1659) < 1e-4);
+        // Paired t-test: differences 1, 2, 3 -> t = 2 / (1 / sqrt 3) = 3.4641, p = 0.0742.
+        const stats::TTest t = stats::pairedTTest({2, 4, 6}, {1, 2, 3});
+        QVERIFY(std::abs(t.t - 3.4641016) < 1e-6);
+        QVERIFY(std::abs(t.p - 0.07417990) < 1e-6);
+    }
+
+    // §7.24
+    void forcedChoiceTable1()
+    {
+        const std::vector<PairTally> table{{"Brand", "DPDS", 5, 7, 54},  {"Brand", "real", 4, 7, 55},
+                                           {"Brand", "SLDS", 36, 21, 9}, {"DPDS", "real", 29, 11, 26},
+                                           {"DPDS", "SLDS", 60, 5, 1},   {"real", "SLDS", 58, 5, 3}};
+        for (const PairTally &t : table)
+            QCOMPARE(t.preferA + t.undecided + t.preferB, 66);
+        const std::vector<double> expected{1.9e-11, 1.7e-12, 6.6e-5, 0.79, 5.4e-17, 3.3e-14};
+        const std::vector<PairTest> tests = signTests(table);
+        for (size_t i = 0; i < table.size(); ++i)
+            QVERIFY2(std::abs(tests[i].p / expected[i] - 1.0) < 0.05,
+                     qPrintable(QStringLiteral("%1 vs %2").arg(tests[i].p).arg(expected[i])));
+        const std::vector<std::string> methods{"DPDS", "real", "Brand", "SLDS"};
+        const std::vector<double> dropped = bradleyTerryLogScores(table, methods);
+        const std::vector<double> halves = bradleyTerryLogScores(table, methods, true);
+        const std::vector<double> expectDropped{1.571, 1.451, -0.879, -2.143};
+        const std::vector<double> expectHalves{1.207, 1.116, -0.759, -1.564};
+        for (size_t i = 0; i < 4; ++i) {
+            QVERIFY2(std::abs(dropped[i] - expectDropped[i]) < 2e-3, qPrintable(QString::number(dropped[i])));
+            QVERIFY2(std::abs(halves[i] - expectHalves[i]) < 2e-3, qPrintable(QString::number(halves[i])));
+        }
+        QVERIFY(tests[3].pHolm > 0.05);
+        for (size_t i : {0, 1, 2, 4, 5})
+            QVERIFY(tests[i].pHolm < 0.001);
+    }
+
+    // §7.25
+    void foldsCoverDisjointBalanced_data()
+    {
+        QTest::addColumn<int>("sequences");
+        QTest::addColumn<int>("folds");
+        QTest::newRow("400/10") << 400 << 10;
+        QTest::newRow("37/10") << 37 << 10;
+        QTest::newRow("10/10") << 10 << 10;
+        QTest::newRow("23/4") << 23 << 4;
+    }
+    void foldsCoverDisjointBalanced()
+    {
+        QFETCH(int, sequences);
+        QFETCH(int, folds);
+        const auto split = makeFolds(sequences, folds);
+        QCOMPARE(int(split.size()), folds);
+        std::set<int> seen;
+        for (const auto &fold : split) {
+            QVERIFY(int(fold.size()) == sequences / folds || int(fold.size()) == (sequences + folds - 1) / folds);
+            for (int i : fold) {
+                QVERIFY(i >= 0 && i < sequences);
+                QVERIFY(seen.insert(i).second); // disjoint
+            }
+        }
+        QCOMPARE(int(seen.size()), sequences); // cover
+        QCOMPARE(makeFolds(sequences, folds), split); // deterministic
+        QVERIFY(makeFolds(sequences, folds, 99) != split || sequences == folds);
+        QVERIFY_THROWS_EXCEPTION(Error, makeFolds(5, 10));
+        QVERIFY_THROWS_EXCEPTION(Error, makeFolds(5, 1));
+    }
+
+    void crossValidatesAllModelsOnIdenticalFolds()
+    {
+        std::mt19937 rng(1);
+        const test::DpdsTruth truth = test::randomDpdsTruth(rng, 3, 0.05);
+        const auto data = test::dpdsDataset(rng, truth, {0, 2, 6, 9, 21}, 20, 40);
+        EvaluationOptions options;
+        options.folds = 5;
+        Feedback feedback;
+        std::vector<double> progress;
+        feedback.onProgress = [&](double p) { progress.push_back(p); };
+        const EvaluationResult r = evaluateModels(data, options, feedback);
+        QCOMPARE(r.models.size(), size_t(4));
+        QCOMPARE(r.foldMembers, makeFolds(20, 5));
+        QVERIFY(!progress.empty() && progress.back() == 1.0);
+        for (const ModelEvaluation &m : r.models) {
+            QCOMPARE(m.trainingSeconds.size(), size_t(5));
+            for (const std::string &metric : evaluationMetrics()) {
+                const MetricSummary &s = m.metrics.at(metric);
+                QCOMPARE(s.folds.size(), size_t(5));
+                const stats::MeanInterval check = stats::meanWithCi95(s.folds);
+                QCOMPARE(s.mean, check.mean);
+                QCOMPARE(s.ci95, check.halfWidth);
+            }
+        }
+        // Data sampled from a DPDS: the DPDS generates better than the HMM-mean.
+        QVERIFY(r.models[3].metrics.at("rms").mean < r.models[0].metrics.at("rms").mean);
+        QCOMPARE(r.comparisons.size(), size_t(6 * 4));
+        const QJsonObject json = r.toJson();
+        QCOMPARE(json.value(QStringLiteral("folds")).toInt(), 5);
+        const QJsonObject dpds = json.value(QStringLiteral("models")).toObject().value(QStringLiteral("dpds")).toObject();
+        QVERIFY(dpds.value(QStringLiteral("rms")).toObject().contains(QStringLiteral("ci95")));
+        QVERIFY(dpds.value(QStringLiteral("trainingSeconds")).toDouble() > 0);
+        const std::string csv = r.toCsv();
+        QCOMPARE(std::count(csv.begin(), csv.end(), '\n'), long(1 + 4 * 5));
+        QVERIFY(csv.rfind("model,metric,mean,ci95,fold1", 0) == 0);
+        // Unknown kinds and too few sequences are errors before any training.
+        options.kinds = {"dpds", "lstm"};
+        QVERIFY_THROWS_EXCEPTION(Error, evaluateModels(data, options, feedback));
+        options.kinds = {"hmm"};
+        options.folds = 30;
+        QVERIFY_THROWS_EXCEPTION(Error, evaluateModels(data, options, feedback));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestEvaluation)
+#include "tst_evaluation.moc"
