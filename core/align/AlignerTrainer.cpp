@@ -19,25 +19,56 @@ namespace lipsync {
 AcousticModel AlignerTrainer::flatStart(const std::vector<TrainingUtterance> &utterances,
                                         const TrainerOptions &options)
 {
-    Eigen::VectorXd sum, sumSquares;
-    long long frames = 0;
+    // HCompV's global mean and variance, with one refinement: the quietest frames of every
+    // utterance (by C0, the last static coefficient) seed the silence model and the others the
+    // phones. Without it the flat start lets the first and last phones of every transcript
+    // absorb the long leading and trailing silences, and re-estimation never recovers.
+    const int c0 = options.features.cepstra;
+    Eigen::VectorXd sum[2], sumSquares[2];
+    long long frames[2] = {0, 0};
     for (const TrainingUtterance &u : utterances) {
         if (u.features.rows() == 0)
             continue;
-        if (sum.size() == 0) {
-            sum = Eigen::VectorXd::Zero(u.features.cols());
-            sumSquares = Eigen::VectorXd::Zero(u.features.cols());
+        if (sum[0].size() == 0)
+            for (int k = 0; k < 2; ++k) {
+                sum[k] = Eigen::VectorXd::Zero(u.features.cols());
+                sumSquares[k] = Eigen::VectorXd::Zero(u.features.cols());
+            }
+        std::vector<float> energy(u.features.col(c0).data(), u.features.col(c0).data() + u.features.rows());
+        const size_t quiet = energy.size() * size_t(options.silenceSeedPercent) / 100;
+        std::nth_element(energy.begin(), energy.begin() + long(quiet), energy.end());
+        const float threshold = energy[quiet];
+        for (int t = 0; t < u.features.rows(); ++t) {
+            const Eigen::VectorXd x = u.features.row(t).transpose().cast<double>();
+            const int k = u.features(t, c0) < threshold ? 1 : 0;
+            sum[k] += x;
+            sumSquares[k] += x.cwiseAbs2();
+            ++frames[k];
         }
-        const Eigen::MatrixXd f = u.features.cast<double>();
-        sum += f.colwise().sum().transpose();
-        sumSquares += f.array().square().colwise().sum().matrix().transpose();
-        frames += f.rows();
     }
-    if (frames < 2)
+    if (frames[0] + frames[1] < 2)
         throw Error("no audio frames to train the aligner on");
-    const Eigen::VectorXd mean = sum / double(frames);
-    const Eigen::VectorXd variance = (sumSquares / double(frames) - mean.cwiseAbs2()).cwiseMax(1e-6);
-    return AcousticModel(options.features, options.meanNormalize, mean.cast<float>(), variance.cast<float>());
+    const Eigen::VectorXd mean = (sum[0] + sum[1]) / double(frames[0] + frames[1]);
+    const Eigen::VectorXd variance = ((sumSquares[0] + sumSquares[1]) / double(frames[0] + frames[1])
+                                      - mean.cwiseAbs2()).cwiseMax(1e-6);
+    AcousticModel model(options.features, options.meanNormalize, mean.cast<float>(), variance.cast<float>());
+    for (int k = 0; k < 2; ++k) {
+        if (frames[k] < 10)
+            continue;
+        const Eigen::VectorXd m = sum[k] / double(frames[k]);
+        const Eigen::VectorXd v = (sumSquares[k] / double(frames[k]) - m.cwiseAbs2()).cwiseMax(0.01 * variance);
+        for (int p = 0; p < PhoneSet::kCount; ++p) {
+            if ((k == 1) != (p == PhoneSet::kSilence))
+                continue;
+            for (int s = 0; s < AcousticModel::kStatesPerPhone; ++s) {
+                GaussianMixture &g = model.state(AcousticModel::stateIndex(p, s));
+                g.means.row(0) = m.cast<float>().transpose();
+                g.variances.row(0) = v.cast<float>().transpose();
+            }
+        }
+    }
+    model.prepare();
+    return model;
 }
 
 double AlignerTrainer::reestimate(AcousticModel &model, const std::vector<TrainingUtterance> &utterances,
@@ -54,7 +85,7 @@ double AlignerTrainer::reestimate(AcousticModel &model, const std::vector<Traini
     auto work = [&](int chunk) {
         for (size_t i = size_t(chunk); i < utterances.size(); i += size_t(workers)) {
             const TrainingUtterance &u = utterances[i];
-            const UtteranceGraph graph(u.pronunciations);
+            const UtteranceGraph graph(u.pronunciations, options.graph);
             const double logP = accumulateUtterance(model, graph, u.features, options.beam, partial[size_t(chunk)]);
             if (!(logP > -INFINITY)) {
                 std::lock_guard lock(failedMutex);

@@ -11,6 +11,7 @@
 // Feedback::reportIteration.
 #include "align/AcousticModel.h"
 #include "align/PronunciationDictionary.h"
+#include "align/UtteranceGraph.h"
 
 #include <Eigen/Core>
 
@@ -39,6 +40,11 @@ struct TrainerOptions
     double minimumStateOccupancy = 3.0; // frames; below it a state keeps its parameters
     double minimumMixtureOccupancy = 2.0; // per component to split further (times dimension)
     bool parallel = true;
+    int silenceSeedPercent = 15; // quietest frames per utterance that seed the silence model
+    // Recordings start and end in silence: making it mandatory in training keeps the flat start
+    // from spreading the first and last phones over it (HTK's recipe puts "sil" at both ends of
+    // every training transcript). Silence between words stays optional.
+    UtteranceGraph::Options graph{0.5, false};
 };
 
 struct TrainingReport
