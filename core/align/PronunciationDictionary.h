@@ -25,6 +25,7 @@ public:
     // Variants in file order, or nullptr. `word` is normalised with normalizeWord().
     const std::vector<Pronunciation> *find(const std::string &word) const;
     size_t size() const { return m_entries.size(); }
+    const std::unordered_map<std::string, std::vector<Pronunciation>> &entries() const { return m_entries; }
 
     // Lower case (ASCII), surrounding punctuation removed, inner apostrophes and hyphens kept.
     static std::string normalizeWord(const std::string &word);
