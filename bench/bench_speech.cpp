@@ -49,11 +49,7 @@ bool exists(const std::string &p)
 
 TrainerOptions benchOptions()
 {
-    TrainerOptions o;
-    o.mixtureSchedule = {1, 2, 4, 8};
-    o.iterationsPerStage = 6;
-    o.firstStageIterations = 8;
-    return o;
+    return TrainerOptions{}; // the defaults: up to 16 mixtures, 8 + 4 x 6 iterations
 }
 
 const Lexicon &lexicon()

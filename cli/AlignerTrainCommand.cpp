@@ -54,7 +54,7 @@ int runAlignerTrain(const QStringList &args)
     const bool json = a.flag("json");
     TrainerOptions options;
     bool ok = true;
-    const int mixtures = a.value("mixtures", QStringLiteral("8")).toInt(&ok);
+    const int mixtures = a.value("mixtures", QStringLiteral("16")).toInt(&ok);
     if (!ok || mixtures < 1 || mixtures > 64)
         return cli::fail(QStringLiteral("aligner train: --mixtures must be 1..64"), 2);
     options.mixtureSchedule = {1};

@@ -33,9 +33,11 @@ struct TrainerOptions
 {
     MfccOptions features;
     bool meanNormalize = true;
-    std::vector<int> mixtureSchedule{1, 2, 4, 8}; // mixtures per state at each stage
-    int iterationsPerStage = 4;
-    int firstStageIterations = 6; // from the flat start
+    // Mixtures per state at each stage. On GRID s1 (bench_speech) 16 mixtures place 91.5% of
+    // the held-out inner word boundaries within 40 ms, 8 mixtures 90.8%.
+    std::vector<int> mixtureSchedule{1, 2, 4, 8, 16};
+    int iterationsPerStage = 6;
+    int firstStageIterations = 8; // from the flat start
     double beam = 400.0;          // log-domain forward pruning
     double minimumStateOccupancy = 3.0; // frames; below it a state keeps its parameters
     double minimumMixtureOccupancy = 2.0; // per component to split further (times dimension)
