@@ -86,7 +86,9 @@ double AlignerTrainer::reestimate(AcousticModel &model, const std::vector<Traini
         for (size_t i = size_t(chunk); i < utterances.size(); i += size_t(workers)) {
             const TrainingUtterance &u = utterances[i];
             const UtteranceGraph graph(u.pronunciations, options.graph);
-            const double logP = accumulateUtterance(model, graph, u.features, options.beam, partial[size_t(chunk)]);
+            double logP = accumulateUtterance(model, graph, u.features, options.beam, partial[size_t(chunk)]);
+            if (!(logP > -INFINITY) && u.features.rows() >= graph.minimumFrames())
+                logP = accumulateUtterance(model, graph, u.features, INFINITY, partial[size_t(chunk)]);
             if (!(logP > -INFINITY)) {
                 std::lock_guard lock(failedMutex);
                 failedIndices.push_back(i);

@@ -38,7 +38,7 @@ struct TrainerOptions
     std::vector<int> mixtureSchedule{1, 2, 4, 8, 16};
     int iterationsPerStage = 6;
     int firstStageIterations = 8; // from the flat start
-    double beam = 400.0;          // log-domain forward pruning
+    double beam = 400.0; // log-domain forward pruning; an utterance that loses every path is retried unpruned (HERest -t 250 150 1000)
     double minimumStateOccupancy = 3.0; // frames; below it a state keeps its parameters
     double minimumMixtureOccupancy = 2.0; // per component to split further (times dimension)
     bool parallel = true;

@@ -12,6 +12,20 @@ AlignmentResult ForcedAligner::align(const Eigen::MatrixXf &features, const std:
                                      const std::vector<std::vector<Pronunciation>> &pronunciations,
                                      double audioDuration) const
 {
+    try {
+        return alignWithBeam(features, words, pronunciations, audioDuration, m_options.beam);
+    } catch (const Error &) {
+        // Every path pruned: retry without pruning before declaring that the transcript does not fit.
+        if (!std::isfinite(m_options.beam))
+            throw;
+        return alignWithBeam(features, words, pronunciations, audioDuration, INFINITY);
+    }
+}
+
+AlignmentResult ForcedAligner::alignWithBeam(const Eigen::MatrixXf &features, const std::vector<std::string> &words,
+                                             const std::vector<std::vector<Pronunciation>> &pronunciations,
+                                             double audioDuration, double beam) const
+{
     const UtteranceGraph graph(pronunciations, m_options.graph);
     const int T = int(features.rows());
     const int S = graph.size();
@@ -65,7 +79,7 @@ AlignmentResult ForcedAligner::align(const Eigen::MatrixXf &features, const std:
         if (best == -INFINITY)
             throw Error("no alignment path survives (the transcript does not fit the audio)");
         for (int s = 0; s < S; ++s)
-            if (delta[size_t(s)] < best - m_options.beam)
+            if (delta[size_t(s)] < best - beam)
                 delta[size_t(s)] = -INFINITY;
     }
     int last = -1;

@@ -43,6 +43,10 @@ public:
                           const Lexicon &lexicon, double audioDuration = 0.0) const;
 
 private:
+    AlignmentResult alignWithBeam(const Eigen::MatrixXf &features, const std::vector<std::string> &words,
+                                  const std::vector<std::vector<Pronunciation>> &pronunciations,
+                                  double audioDuration, double beam) const;
+
     const AcousticModel &m_model;
     Options m_options;
 };
