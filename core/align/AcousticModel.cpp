@@ -33,10 +33,12 @@ float GaussianMixture::componentLogLikelihoods(const float *x, float *out) const
     const int d = int(means.cols());
     float best = -INFINITY;
     for (int i = 0; i < m; ++i) {
+        const float *mean = means.data() + size_t(i) * size_t(d);
+        const float *precision = precisions.data() + size_t(i) * size_t(d);
         float sum = 0;
         for (int k = 0; k < d; ++k) {
-            const float diff = x[k] - means(i, k);
-            sum += diff * diff * precisions(i, k);
+            const float diff = x[k] - mean[k];
+            sum += diff * diff * precision[k];
         }
         out[i] = logConstants[i] - 0.5f * sum;
         best = std::max(best, out[i]);

@@ -18,12 +18,16 @@ namespace lipsync {
 
 struct AudioBuffer;
 
+// Row-major so that one component's D values are contiguous for the Gaussian loops.
+using RowMatrixXf = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using RowMatrixXd = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
 // One emitting state: M weighted diagonal Gaussians.
 struct GaussianMixture
 {
-    Eigen::VectorXf weights;   // M, sum 1
-    Eigen::MatrixXf means;     // M x D
-    Eigen::MatrixXf variances; // M x D
+    Eigen::VectorXf weights; // M, sum 1
+    RowMatrixXf means;       // M x D
+    RowMatrixXf variances;   // M x D
 
     int size() const { return int(weights.size()); }
     // Caches precisions and log constants; call after changing the parameters.
@@ -33,7 +37,7 @@ struct GaussianMixture
     // Per-component log(w_m N(x; ...)) into `out` (size M); returns their log-sum.
     float componentLogLikelihoods(const float *x, float *out) const;
 
-    Eigen::MatrixXf precisions; // 1 / variances
+    RowMatrixXf precisions; // 1 / variances
     Eigen::VectorXf logConstants; // log w_m - (D log 2 pi + sum log var_m) / 2
 };
 

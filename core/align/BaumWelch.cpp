@@ -13,8 +13,8 @@ Accumulators::Accumulators(const AcousticModel &model)
         const GaussianMixture &g = model.state(j);
         StateAccumulator &a = states[size_t(j)];
         a.componentOccupancy = Eigen::VectorXd::Zero(g.size());
-        a.sum = Eigen::MatrixXd::Zero(g.size(), model.dimension());
-        a.sumSquares = Eigen::MatrixXd::Zero(g.size(), model.dimension());
+        a.sum = RowMatrixXd::Zero(g.size(), model.dimension());
+        a.sumSquares = RowMatrixXd::Zero(g.size(), model.dimension());
     }
 }
 
@@ -121,6 +121,8 @@ double accumulateUtterance(const AcousticModel &model, const UtteranceGraph &gra
                                                         + emission(t, j) + beta[size_t(s)] - logP);
         }
         const float *x = emission.frame(t);
+        const Eigen::RowVectorXd xd = Eigen::Map<const Eigen::RowVectorXf>(x, model.dimension()).cast<double>();
+        const Eigen::RowVectorXd xsq = xd.cwiseAbs2();
         for (size_t j = 0; j < gammaByModelState.size(); ++j) {
             const double gamma = gammaByModelState[j];
             StateAccumulator &acc = out.states[j];
@@ -133,16 +135,13 @@ double accumulateUtterance(const AcousticModel &model, const UtteranceGraph &gra
             if (int(componentLog.size()) < M)
                 componentLog.resize(size_t(M));
             const float total = g.componentLogLikelihoods(x, componentLog.data());
-            const Eigen::Map<const Eigen::VectorXf> xv(x, model.dimension());
-            const Eigen::VectorXd xd = xv.cast<double>();
-            const Eigen::VectorXd xsq = xd.cwiseAbs2();
             for (int m = 0; m < M; ++m) {
                 const double w = gamma * std::exp(double(componentLog[size_t(m)] - total));
                 if (w < kMinGamma * 1e-2)
                     continue;
                 acc.componentOccupancy[m] += w;
-                acc.sum.row(m) += w * xd.transpose();
-                acc.sumSquares.row(m) += w * xsq.transpose();
+                acc.sum.row(m) += w * xd;
+                acc.sumSquares.row(m) += w * xsq;
             }
         }
         if (t == 0)

@@ -17,8 +17,8 @@ struct StateAccumulator
     double occupancy = 0;  // sum_t gamma_t(j)
     double selfCount = 0;  // sum_t xi_t(j, j)
     Eigen::VectorXd componentOccupancy; // M
-    Eigen::MatrixXd sum;                // M x D
-    Eigen::MatrixXd sumSquares;         // M x D
+    RowMatrixXd sum;                    // M x D
+    RowMatrixXd sumSquares;             // M x D
 };
 
 struct Accumulators
