@@ -5,6 +5,8 @@
 
 #include "align/AlignerUtterance.h"
 #include "align/ForcedAligner.h"
+#include "align/FrameLabels.h"
+#include "io/MediaInfo.h"
 #include "io/TextGrid.h"
 #include "io/Transcript.h"
 #include "util/Error.h"
@@ -62,7 +64,19 @@ int runAlign(const QStringList &args)
     writeTextGrid(a.value("out").toStdString(), makeTextGrid({result.words, result.phones}, u.duration));
     const double seconds = timer.elapsed() / 1000.0;
     if (a.flag("json")) {
+        // Per-video-frame phone labels (models.md §0 voting) when the media has video.
+        QJsonArray frameLabels;
+        double frameRate = 0;
+        const MediaInfo info = MediaInfo::probe(media.toStdString());
+        if (info.hasVideo && info.frameRate > 0) {
+            frameRate = info.frameRate;
+            for (const std::string &label : voteFrameLabels(result.phones, info.frameRate, info.frameCount,
+                                                            model.featureOptions()))
+                frameLabels.append(QString::fromStdString(label));
+        }
         cli::printJson(QJsonObject{
+            {QStringLiteral("frameRate"), frameRate},
+            {QStringLiteral("frameLabels"), frameLabels},
             {QStringLiteral("media"), media},
             {QStringLiteral("model"), modelPath},
             {QStringLiteral("out"), a.value("out")},

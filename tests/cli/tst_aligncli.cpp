@@ -57,6 +57,13 @@ private slots:
         QCOMPARE(spoken.join(' '), QStringLiteral("bin blue at f two now"));
         QVERIFY(phones->intervals.size() > 15);
         QCOMPARE(json.value("words").toArray().size(), int(words->intervals.size()));
+        // One voted phone label per video frame (25 fps, 75 frames), silence at both ends.
+        QCOMPARE(json.value("frameRate").toDouble(), 25.0);
+        const QJsonArray frames = json.value("frameLabels").toArray();
+        QCOMPARE(frames.size(), 75);
+        QCOMPARE(frames.first().toString(), QStringLiteral("sil"));
+        QCOMPARE(frames.last().toString(), QStringLiteral("sil"));
+        QVERIFY(frames.contains(QStringLiteral("B"))); // bin
     }
 
     void alignBadInput()
