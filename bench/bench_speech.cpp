@@ -1,0 +1,348 @@
+// Speech benchmarks and the aligner's accuracy evaluation (issue 4 targets). They read
+// ../shared/data when present and skip otherwise.
+//   BM_Mfcc                 MFCC_0_D_A of 60 s of audio (real-time factor counter "rtf")
+//   BM_MfccAndAlign         MFCC + Viterbi alignment of the 10 GRID demo clips with the shipped
+//                           model on all cores (decoding excluded; "rtf" = CPU-seconds... see below)
+//   BM_TrainGrid20min       training on all 400 GRID s1 clips (20 min of audio), features given
+//   BM_EvalGridWords        train on 320 GRID s1 clips, align the other 80: share of word
+//                           boundaries within 40 ms of GRID's .align ("inner": without the
+//                           boundaries between the leading/trailing silence and the first/last word)
+//   BM_EvalMfaPhones        phone boundaries within 25 ms of the Montreal Forced Aligner's on
+//                           ../shared/data/speech/mfa-tests (models trained on those recordings,
+//                           and on them plus GRID s1)
+#include "align/AlignerTrainer.h"
+#include "align/AlignerUtterance.h"
+#include "align/ForcedAligner.h"
+#include "align/PhoneSet.h"
+#include "io/AudioDecoder.h"
+#include "io/TextGrid.h"
+#include "io/Transcript.h"
+#include "tasks/Feedback.h"
+
+#include <benchmark/benchmark.h>
+
+#include <QDir>
+#include <QFileInfo>
+#include <QtConcurrent/QtConcurrentMap>
+
+#include <chrono>
+#include <ctime>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <numeric>
+
+using namespace lipsync;
+
+namespace {
+
+const std::string kShared = LIPSYNC_SOURCE_DIR "/../shared/data";
+const std::string kGrid = kShared + "/grid-s1";
+const std::string kMfa = kShared + "/speech/mfa-tests";
+const std::string kModel = LIPSYNC_SOURCE_DIR "/resources/aligner/grid-s1.aligner";
+
+bool exists(const std::string &p)
+{
+    return std::filesystem::exists(p);
+}
+
+TrainerOptions benchOptions()
+{
+    return TrainerOptions{}; // the defaults: up to 16 mixtures, 8 + 4 x 6 iterations
+}
+
+const Lexicon &lexicon()
+{
+    static const Lexicon l(&PronunciationDictionary::cmu());
+    return l;
+}
+
+struct GridClip
+{
+    PreparedUtterance utterance;
+    Tier reference;
+};
+
+// All 400 GRID s1 clips, decoded once per process (sorted by name: the first 320 train).
+const std::vector<GridClip> &gridClips()
+{
+    static const std::vector<GridClip> clips = [] {
+        std::vector<std::string> ids;
+        for (const auto &e : std::filesystem::directory_iterator(kGrid + "/video"))
+            ids.push_back(e.path().stem().string());
+        std::sort(ids.begin(), ids.end());
+        const AcousticModel features = featureModel(benchOptions());
+        std::vector<GridClip> out(ids.size());
+        std::vector<int> index(ids.size());
+        std::iota(index.begin(), index.end(), 0);
+        QtConcurrent::blockingMap(index, [&](int i) {
+            const Transcript t = readTranscript(kGrid + "/align/" + ids[size_t(i)] + ".align");
+            out[size_t(i)].utterance = prepareUtterance(ids[size_t(i)], kGrid + "/video/" + ids[size_t(i)] + ".mpg",
+                                                        t.words, features, lexicon());
+            out[size_t(i)].reference = t.timing;
+        });
+        return out;
+    }();
+    return clips;
+}
+
+std::vector<TrainingUtterance> trainingSet(const std::vector<GridClip> &clips, size_t from, size_t to)
+{
+    std::vector<TrainingUtterance> out;
+    for (size_t i = from; i < to && i < clips.size(); ++i)
+        out.push_back({clips[i].utterance.id, clips[i].utterance.features, clips[i].utterance.pronunciations});
+    return out;
+}
+
+bool isSilence(const std::string &label)
+{
+    return label.empty() || label == "sil" || label == "sp" || label == "spn" || label == "<sil>";
+}
+
+std::vector<Interval> nonSilence(const Tier &tier)
+{
+    std::vector<Interval> out;
+    for (const Interval &i : tier.intervals)
+        if (!isSilence(i.label))
+            out.push_back(i);
+    return out;
+}
+
+void BM_Mfcc(benchmark::State &state)
+{
+    std::vector<float> samples(16000 * 60);
+    for (size_t i = 0; i < samples.size(); ++i)
+        samples[i] = float(0.3 * std::sin(0.05 * double(i)) + 0.01 * std::sin(1.3 * double(i)));
+    const Mfcc mfcc;
+    for (auto _ : state)
+        benchmark::DoNotOptimize(mfcc.compute(samples));
+    state.counters["rtf"] = benchmark::Counter(state.iterations() * 60.0, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_Mfcc)->Unit(benchmark::kMillisecond);
+
+// Wall-clock time of MFCC + alignment of the demo clips, both cores busy (QtConcurrent).
+// Counter "rtf" = wall seconds per second of audio (target <= 0.02).
+void BM_MfccAndAlign(benchmark::State &state)
+{
+    if (!exists(kModel)) {
+        state.SkipWithError("no shipped model");
+        return;
+    }
+    const AcousticModel model = AcousticModel::load(kModel);
+    const QDir demo(QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media"));
+    struct Clip
+    {
+        std::vector<float> samples;
+        double duration;
+        std::vector<std::string> words;
+        std::vector<std::vector<Pronunciation>> pronunciations;
+    };
+    std::vector<Clip> clips;
+    for (const QString &name : demo.entryList({QStringLiteral("*.mpg")}, QDir::Files, QDir::Name)) {
+        const AudioBuffer audio = AudioDecoder::decode(demo.filePath(name).toStdString(), 16000);
+        const Transcript t = readTranscript(demo.filePath(QFileInfo(name).completeBaseName() + ".align").toStdString());
+        clips.push_back({audio.samples, audio.duration(), t.words, lexicon().pronounceAll(t.words)});
+    }
+    // Eight copies of the set so that both cores stay busy.
+    std::vector<int> work;
+    for (int copy = 0; copy < 8; ++copy)
+        for (size_t i = 0; i < clips.size(); ++i)
+            work.push_back(int(i));
+    double audioSeconds = 0;
+    for (int i : work)
+        audioSeconds += clips[size_t(i)].duration;
+    const ForcedAligner aligner(model);
+    for (auto _ : state) {
+        QtConcurrent::blockingMap(work, [&](int i) {
+            const Clip &c = clips[size_t(i)];
+            const Eigen::MatrixXf f = model.features(c.samples);
+            benchmark::DoNotOptimize(aligner.align(f, c.words, c.pronunciations, c.duration));
+        });
+    }
+    state.counters["rtf"] = benchmark::Counter(state.iterations() * audioSeconds, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["audio_s"] = audioSeconds;
+}
+BENCHMARK(BM_MfccAndAlign)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_TrainGrid20min(benchmark::State &state)
+{
+    if (!exists(kGrid)) {
+        state.SkipWithError("../shared/data/grid-s1 not present");
+        return;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto &clips = gridClips();
+    state.counters["decode_and_features_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const std::vector<TrainingUtterance> all = trainingSet(clips, 0, clips.size());
+    double audio = 0;
+    for (const TrainingUtterance &u : all)
+        audio += u.features.rows() * 0.01;
+    const std::clock_t cpu0 = std::clock();
+    for (auto _ : state) {
+        Feedback feedback;
+        benchmark::DoNotOptimize(AlignerTrainer::train(all, benchOptions(), feedback));
+    }
+    // Process CPU seconds (all threads): on a machine shared with other jobs wall time overstates.
+    state.counters["train_cpu_s"] = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+    state.counters["audio_min"] = audio / 60.0;
+}
+BENCHMARK(BM_TrainGrid20min)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+void BM_EvalGridWords(benchmark::State &state)
+{
+    if (!exists(kGrid)) {
+        state.SkipWithError("../shared/data/grid-s1 not present");
+        return;
+    }
+    const auto &clips = gridClips();
+    const std::vector<TrainingUtterance> train = trainingSet(clips, 0, 320);
+    int within = 0, total = 0, innerWithin = 0, inner = 0, mismatched = 0;
+    for (auto _ : state) {
+        Feedback feedback;
+        const AcousticModel model = AlignerTrainer::train(train, benchOptions(), feedback);
+        const ForcedAligner aligner(model);
+        for (size_t k = 320; k < clips.size(); ++k) {
+            const PreparedUtterance &u = clips[k].utterance;
+            const AlignmentResult r = aligner.align(u.features, u.words, u.pronunciations, u.duration);
+            const std::vector<Interval> ref = nonSilence(clips[k].reference), hyp = nonSilence(r.words);
+            if (ref.size() != hyp.size()) {
+                ++mismatched;
+                continue;
+            }
+            for (size_t w = 0; w < ref.size(); ++w)
+                for (int edge = 0; edge < 2; ++edge) {
+                    const double d = edge ? hyp[w].end - ref[w].end : hyp[w].start - ref[w].start;
+                    const bool ok = std::abs(d) <= 0.040 + 1e-6;
+                    within += ok;
+                    ++total;
+                    const bool silenceEdge = (w == 0 && edge == 0) || (w + 1 == ref.size() && edge == 1);
+                    if (!silenceEdge) {
+                        innerWithin += ok;
+                        ++inner;
+                    }
+                }
+        }
+    }
+    state.counters["inner_within_40ms_pct"] = 100.0 * innerWithin / std::max(inner, 1);
+    state.counters["all_within_40ms_pct"] = 100.0 * within / std::max(total, 1);
+    state.counters["boundaries"] = inner;
+    state.counters["mismatched"] = mismatched;
+    std::printf("GRID s1 (train 320, align 80): %.1f%% of %d inner word boundaries within 40 ms "
+                "(%.1f%% of %d with the silence edges)\n",
+                100.0 * innerWithin / std::max(inner, 1), inner, 100.0 * within / std::max(total, 1), total);
+}
+BENCHMARK(BM_EvalGridWords)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+struct MfaFile
+{
+    PreparedUtterance utterance;
+    Tier words, phones;
+};
+
+// mfa-tests recordings with an ARPAbet phone tier and a words tier.
+std::vector<MfaFile> mfaFiles()
+{
+    std::vector<MfaFile> out;
+    const AcousticModel features = featureModel(benchOptions());
+    for (const auto &e : std::filesystem::directory_iterator(kMfa)) {
+        if (e.path().extension() != ".TextGrid")
+            continue;
+        const TextGrid grid = readTextGrid(e.path().string());
+        const Tier *words = grid.tier("words");
+        const Tier *phones = grid.tier("phones");
+        if (!words || !phones)
+            continue;
+        bool arpabet = true;
+        for (const Interval &i : phones->intervals)
+            arpabet = arpabet && (isSilence(i.label) || PhoneSet::index(i.label) >= 0);
+        if (!arpabet)
+            continue;
+        std::string media;
+        for (const char *ext : {".wav", ".flac"})
+            if (exists(kMfa + "/" + e.path().stem().string() + ext))
+                media = kMfa + "/" + e.path().stem().string() + ext;
+        std::vector<std::string> list;
+        for (const Interval &i : nonSilence(*words))
+            list.push_back(i.label);
+        out.push_back({prepareUtterance(e.path().stem().string(), media, list, features, lexicon()), *words, *phones});
+    }
+    return out;
+}
+
+// Phone boundaries (each phone's start, and its end when silence follows) of the words whose
+// phone sequence agrees with MFA's, within 25 ms.
+void comparePhones(const MfaFile &file, const AlignmentResult &r, int &within, int &total, int &wordsCompared, int &wordsSkipped)
+{
+    const std::vector<Interval> refWords = nonSilence(file.words), hypWords = nonSilence(r.words);
+    auto phonesIn = [](const Tier &phones, const Interval &word) {
+        std::vector<Interval> out;
+        for (const Interval &p : phones.intervals)
+            if (!isSilence(p.label) && p.start >= word.start - 1e-6 && p.end <= word.end + 1e-6)
+                out.push_back(p);
+        return out;
+    };
+    for (size_t w = 0; w < refWords.size() && w < hypWords.size(); ++w) {
+        const auto ref = phonesIn(file.phones, refWords[w]), hyp = phonesIn(r.phones, hypWords[w]);
+        bool same = ref.size() == hyp.size() && !ref.empty();
+        for (size_t i = 0; same && i < ref.size(); ++i)
+            same = PhoneSet::index(ref[i].label) == PhoneSet::index(hyp[i].label);
+        if (!same) {
+            ++wordsSkipped;
+            continue;
+        }
+        ++wordsCompared;
+        for (size_t i = 0; i < ref.size(); ++i) {
+            within += std::abs(hyp[i].start - ref[i].start) <= 0.025 + 1e-6;
+            ++total;
+        }
+        bool silenceFollows = true;
+        for (const Interval &p : file.phones.intervals)
+            if (p.start <= ref.back().end + 1e-4 && p.end > ref.back().end + 1e-4)
+                silenceFollows = isSilence(p.label);
+        if (silenceFollows) {
+            within += std::abs(hyp.back().end - ref.back().end) <= 0.025 + 1e-6;
+            ++total;
+        }
+    }
+}
+
+void BM_EvalMfaPhones(benchmark::State &state)
+{
+    if (!exists(kMfa)) {
+        state.SkipWithError("../shared/data/speech/mfa-tests not present");
+        return;
+    }
+    const std::vector<MfaFile> files = mfaFiles();
+    std::vector<TrainingUtterance> own;
+    for (const MfaFile &f : files)
+        own.push_back({f.utterance.id, f.utterance.features, f.utterance.pronunciations});
+    const bool withGrid = state.range(0) == 1;
+    std::vector<TrainingUtterance> train = own;
+    if (withGrid && exists(kGrid)) {
+        const auto grid = trainingSet(gridClips(), 0, 400);
+        train.insert(train.end(), grid.begin(), grid.end());
+    }
+    int within = 0, total = 0, compared = 0, skipped = 0;
+    for (auto _ : state) {
+        Feedback feedback;
+        const AcousticModel model = AlignerTrainer::train(train, benchOptions(), feedback);
+        const ForcedAligner aligner(model);
+        for (const MfaFile &f : files) {
+            const AlignmentResult r = aligner.align(f.utterance.features, f.utterance.words, f.utterance.pronunciations,
+                                                    f.utterance.duration);
+            comparePhones(f, r, within, total, compared, skipped);
+        }
+    }
+    state.counters["within_25ms_pct"] = 100.0 * within / std::max(total, 1);
+    state.counters["boundaries"] = total;
+    state.counters["words_compared"] = compared;
+    state.counters["words_other_pronunciation"] = skipped;
+    std::printf("mfa-tests (%zu files, trained on them%s): %.1f%% of %d phone boundaries within 25 ms of MFA "
+                "(%d words compared, %d with another pronunciation)\n",
+                files.size(), withGrid ? " + GRID s1" : "", 100.0 * within / std::max(total, 1), total, compared, skipped);
+}
+BENCHMARK(BM_EvalMfaPhones)->Arg(0)->Arg(1)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+} // namespace

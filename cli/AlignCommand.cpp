@@ -1,0 +1,100 @@
+// lipsync align MEDIA --transcript FILE [--model MODEL] [--pronunciations DICT] --out FILE.TextGrid [--json]
+// Forced alignment of one recording: writes a TextGrid with tiers "words" and "phones".
+#include "AlignerSupport.h"
+#include "Command.h"
+
+#include "align/AlignerUtterance.h"
+#include "align/ForcedAligner.h"
+#include "align/FrameLabels.h"
+#include "io/MediaInfo.h"
+#include "io/TextGrid.h"
+#include "io/Transcript.h"
+#include "util/Error.h"
+
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QJsonArray>
+
+#include <cstdio>
+
+using namespace lipsync;
+
+namespace {
+
+QJsonArray tierJson(const Tier &tier)
+{
+    QJsonArray out;
+    for (const Interval &i : tier.intervals)
+        out.append(QJsonObject{{QStringLiteral("start"), i.start}, {QStringLiteral("end"), i.end},
+                               {QStringLiteral("label"), QString::fromStdString(i.label)}});
+    return out;
+}
+
+int runAlign(const QStringList &args)
+{
+    const cli::Arguments a(args);
+    const QStringList unknown = a.unknown({"transcript", "model", "out", "json", "pronunciations"});
+    if (!unknown.isEmpty())
+        return cli::fail(QStringLiteral("align: unknown option %1").arg(unknown.join(' ')), 2);
+    if (a.positional().size() != 1 || a.value("transcript").isEmpty() || a.value("out").isEmpty())
+        return cli::fail(QStringLiteral("usage: lipsync align MEDIA --transcript FILE [--model MODEL] "
+                                        "[--pronunciations DICT] --out FILE.TextGrid [--json]"), 2);
+    const QString media = a.positional().front();
+    QString modelPath = a.value("model");
+    if (modelPath.isEmpty()) {
+        modelPath = cli::defaultAlignerModel();
+        if (modelPath.isEmpty())
+            return cli::fail(QStringLiteral("align: no --model given and the shipped model "
+                                            "resources/aligner/grid-s1.aligner was not found "
+                                            "(set LIPSYNC_ALIGNER_MODEL)"));
+    }
+    QElapsedTimer timer;
+    timer.start();
+    const AcousticModel model = AcousticModel::load(modelPath.toStdString());
+    const auto lexicon = cli::makeLexicon(a.value("pronunciations"));
+    const Transcript transcript = readTranscript(a.value("transcript").toStdString());
+    const PreparedUtterance u = prepareUtterance(QFileInfo(media).completeBaseName().toStdString(),
+                                                 media.toStdString(), transcript.words, model, *lexicon);
+    AlignmentResult result;
+    try {
+        result = ForcedAligner(model).align(u.features, u.words, u.pronunciations, u.duration);
+    } catch (const Error &e) {
+        throw Error(e.reason(), media.toStdString());
+    }
+    writeTextGrid(a.value("out").toStdString(), makeTextGrid({result.words, result.phones}, u.duration));
+    const double seconds = timer.elapsed() / 1000.0;
+    if (a.flag("json")) {
+        // Per-video-frame phone labels (models.md §0 voting) when the media has video.
+        QJsonArray frameLabels;
+        double frameRate = 0;
+        const MediaInfo info = MediaInfo::probe(media.toStdString());
+        if (info.hasVideo && info.frameRate > 0) {
+            frameRate = info.frameRate;
+            for (const std::string &label : voteFrameLabels(result.phones, info.frameRate, info.frameCount,
+                                                            model.featureOptions()))
+                frameLabels.append(QString::fromStdString(label));
+        }
+        cli::printJson(QJsonObject{
+            {QStringLiteral("frameRate"), frameRate},
+            {QStringLiteral("frameLabels"), frameLabels},
+            {QStringLiteral("media"), media},
+            {QStringLiteral("model"), modelPath},
+            {QStringLiteral("out"), a.value("out")},
+            {QStringLiteral("duration"), u.duration},
+            {QStringLiteral("frames"), result.frames},
+            {QStringLiteral("logLikelihood"), result.logLikelihood},
+            {QStringLiteral("seconds"), seconds},
+            {QStringLiteral("words"), tierJson(result.words)},
+            {QStringLiteral("phones"), tierJson(result.phones)},
+        });
+    } else {
+        std::printf("aligned %zu words, %zu phones of %s in %.2f s -> %s\n", transcript.words.size(),
+                    result.phones.intervals.size(), qPrintable(media), seconds, qPrintable(a.value("out")));
+    }
+    return 0;
+}
+
+const cli::CommandRegistration registration{
+    QStringLiteral("align"), QStringLiteral("forced alignment of a recording to its transcript (TextGrid)"), &runAlign};
+
+} // namespace

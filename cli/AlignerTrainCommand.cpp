@@ -1,0 +1,159 @@
+// lipsync aligner train --media DIR --transcripts DIR --out MODEL [--mixtures N] [--iterations N]
+//                       [--pronunciations DICT] [--json]
+// Trains the aligner's monophone HMMs on transcribed recordings: every media file in DIR with a
+// transcript of the same name (.align, .TextGrid, .lab or .txt) in the transcripts folder.
+// Recordings that cannot be used (no transcript, unknown words, undecodable or silent audio, a
+// transcript that does not fit) are reported and skipped; the others train the model.
+#include "AlignerSupport.h"
+#include "Command.h"
+
+#include "align/AlignerTrainer.h"
+#include "align/AlignerUtterance.h"
+#include "io/Transcript.h"
+#include "tasks/Feedback.h"
+
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QtConcurrent/QtConcurrentMap>
+
+#include <cstdio>
+#include <optional>
+
+using namespace lipsync;
+
+namespace {
+
+QString findTranscript(const QDir &dir, const QString &stem)
+{
+    for (const std::string &ext : transcriptExtensions())
+        for (const QString &candidate : dir.entryList({stem + QString::fromStdString(ext)}, QDir::Files))
+            return dir.filePath(candidate); // entryList matches case-insensitively on the pattern
+    return {};
+}
+
+struct Job
+{
+    QString id;
+    QString media;
+    QString transcript;
+    std::optional<PreparedUtterance> prepared;
+    QString error;
+};
+
+int runAlignerTrain(const QStringList &args)
+{
+    const cli::Arguments a(args);
+    const QStringList unknown = a.unknown({"media", "transcripts", "out", "json", "mixtures", "iterations", "pronunciations"});
+    if (!unknown.isEmpty())
+        return cli::fail(QStringLiteral("aligner train: unknown option %1").arg(unknown.join(' ')), 2);
+    if (a.value("media").isEmpty() || a.value("transcripts").isEmpty() || a.value("out").isEmpty() || !a.positional().isEmpty())
+        return cli::fail(QStringLiteral("usage: lipsync aligner train --media DIR --transcripts DIR --out MODEL "
+                                        "[--mixtures N] [--iterations N] [--pronunciations DICT] [--json]"), 2);
+    const bool json = a.flag("json");
+    TrainerOptions options;
+    bool ok = true;
+    const int mixtures = a.value("mixtures", QStringLiteral("16")).toInt(&ok);
+    if (!ok || mixtures < 1 || mixtures > 64)
+        return cli::fail(QStringLiteral("aligner train: --mixtures must be 1..64"), 2);
+    options.mixtureSchedule = {1};
+    while (options.mixtureSchedule.back() < mixtures)
+        options.mixtureSchedule.push_back(std::min(mixtures, options.mixtureSchedule.back() * 2));
+    const int iterations = a.value("iterations", QStringLiteral("6")).toInt(&ok);
+    if (!ok || iterations < 1 || iterations > 100)
+        return cli::fail(QStringLiteral("aligner train: --iterations must be 1..100"), 2);
+    options.iterationsPerStage = iterations;
+    options.firstStageIterations = iterations + 2;
+
+    const QDir mediaDir(a.value("media")), transcriptDir(a.value("transcripts"));
+    if (!mediaDir.exists())
+        return cli::fail(QStringLiteral("%1: no such folder").arg(a.value("media")));
+    if (!transcriptDir.exists())
+        return cli::fail(QStringLiteral("%1: no such folder").arg(a.value("transcripts")));
+
+    QElapsedTimer timer;
+    timer.start();
+    const auto lexicon = cli::makeLexicon(a.value("pronunciations"));
+    const AcousticModel features = featureModel(options);
+    std::vector<Job> jobs;
+    for (const QString &name : mediaDir.entryList(cli::alignerMediaFilters(), QDir::Files, QDir::Name)) {
+        Job job;
+        job.id = QFileInfo(name).completeBaseName();
+        job.media = mediaDir.filePath(name);
+        job.transcript = findTranscript(transcriptDir, job.id);
+        if (job.transcript.isEmpty())
+            job.error = QStringLiteral("no transcript %1.{align,TextGrid,lab,txt} in %2").arg(job.id, transcriptDir.path());
+        jobs.push_back(std::move(job));
+    }
+    if (jobs.empty())
+        return cli::fail(QStringLiteral("%1: no media files").arg(mediaDir.path()));
+    // Decoding and features in parallel; each failure stays with its recording.
+    QtConcurrent::blockingMap(jobs, [&](Job &job) {
+        if (!job.error.isEmpty())
+            return;
+        try {
+            const Transcript t = readTranscript(job.transcript.toStdString());
+            job.prepared = prepareUtterance(job.id.toStdString(), job.media.toStdString(), t.words, features, *lexicon);
+        } catch (const std::exception &e) {
+            job.error = QString::fromUtf8(e.what());
+        }
+    });
+    std::vector<TrainingUtterance> utterances;
+    QJsonArray skipped;
+    for (Job &job : jobs) {
+        if (job.prepared) {
+            utterances.push_back({job.prepared->id, std::move(job.prepared->features), std::move(job.prepared->pronunciations)});
+        } else {
+            skipped.append(QJsonObject{{QStringLiteral("id"), job.id}, {QStringLiteral("reason"), job.error}});
+            if (!json)
+                std::fprintf(stderr, "lipsync: skipped %s: %s\n", qPrintable(job.id), qPrintable(job.error));
+        }
+    }
+    if (utterances.empty())
+        return cli::fail(QStringLiteral("aligner train: no usable recordings in %1").arg(mediaDir.path()));
+    const double prepareSeconds = timer.elapsed() / 1000.0;
+
+    Feedback feedback;
+    if (!json)
+        feedback.onIteration = [](int iteration, double ll) {
+            std::fprintf(stderr, "iteration %d: log-likelihood per frame %.4f\n", iteration + 1, ll);
+        };
+    TrainingReport report;
+    const AcousticModel model = AlignerTrainer::train(utterances, options, feedback, &report);
+    model.save(a.value("out").toStdString());
+    const double seconds = timer.elapsed() / 1000.0;
+
+    QJsonArray failed, likelihood;
+    for (const std::string &id : report.failedUtterances)
+        failed.append(QString::fromStdString(id));
+    for (double ll : report.logLikelihoodPerFrame)
+        likelihood.append(ll);
+    if (json) {
+        cli::printJson(QJsonObject{
+            {QStringLiteral("model"), a.value("out")},
+            {QStringLiteral("utterances"), int(utterances.size())},
+            {QStringLiteral("frames"), double(report.frames)},
+            {QStringLiteral("audioSeconds"), report.frames * options.features.shiftSeconds},
+            {QStringLiteral("mixtures"), mixtures},
+            {QStringLiteral("logLikelihoodPerFrame"), likelihood},
+            {QStringLiteral("skipped"), skipped},
+            {QStringLiteral("didNotFit"), failed},
+            {QStringLiteral("prepareSeconds"), prepareSeconds},
+            {QStringLiteral("seconds"), seconds},
+        });
+    } else {
+        for (const std::string &id : report.failedUtterances)
+            std::fprintf(stderr, "lipsync: %s: the transcript does not fit the audio (not used)\n", id.c_str());
+        std::printf("trained on %zu recordings (%.1f min of audio, %lld skipped) in %.1f s -> %s\n", utterances.size(),
+                    report.frames * options.features.shiftSeconds / 60.0, (long long)skipped.size(), seconds,
+                    qPrintable(a.value("out")));
+    }
+    return 0;
+}
+
+const cli::CommandRegistration registration{QStringLiteral("aligner train"),
+                                            QStringLiteral("train the forced aligner's phone HMMs on transcribed media"),
+                                            &runAlignerTrain};
+
+} // namespace

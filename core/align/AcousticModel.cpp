@@ -1,0 +1,253 @@
+#include "align/AcousticModel.h"
+
+#include "align/PhoneSet.h"
+#include "io/AtomicFile.h"
+#include "io/AudioDecoder.h"
+#include "util/Error.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace lipsync {
+
+namespace {
+constexpr double kLog2Pi = 1.8378770664093453;
+}
+
+void GaussianMixture::prepare()
+{
+    const int m = size();
+    const int d = int(means.cols());
+    precisions = variances.cwiseInverse();
+    logConstants.resize(m);
+    for (int i = 0; i < m; ++i) {
+        const double logDet = variances.row(i).array().log().sum();
+        logConstants[i] = float(std::log(std::max(double(weights[i]), 1e-30)) - 0.5 * (d * kLog2Pi + logDet));
+    }
+}
+
+float GaussianMixture::componentLogLikelihoods(const float *x, float *out) const
+{
+    const int m = size();
+    const int d = int(means.cols());
+    float best = -INFINITY;
+    for (int i = 0; i < m; ++i) {
+        const float *mean = means.data() + size_t(i) * size_t(d);
+        const float *precision = precisions.data() + size_t(i) * size_t(d);
+        float sum = 0;
+        for (int k = 0; k < d; ++k) {
+            const float diff = x[k] - mean[k];
+            sum += diff * diff * precision[k];
+        }
+        out[i] = logConstants[i] - 0.5f * sum;
+        best = std::max(best, out[i]);
+    }
+    if (m == 1)
+        return out[0];
+    float total = 0;
+    for (int i = 0; i < m; ++i)
+        total += std::exp(out[i] - best);
+    return best + std::log(total);
+}
+
+float GaussianMixture::logLikelihood(const float *x) const
+{
+    float buffer[64];
+    std::vector<float> heap;
+    float *out = buffer;
+    if (size() > 64) {
+        heap.resize(size_t(size()));
+        out = heap.data();
+    }
+    return componentLogLikelihoods(x, out);
+}
+
+AcousticModel::AcousticModel(const MfccOptions &features, bool meanNormalize,
+                             const Eigen::VectorXf &mean, const Eigen::VectorXf &variance, double selfLoop)
+    : m_features(features), m_meanNormalize(meanNormalize), m_dimension(int(mean.size()))
+{
+    const int states = PhoneSet::kCount * kStatesPerPhone;
+    m_states.resize(size_t(states));
+    m_selfLoop.assign(size_t(states), selfLoop);
+    for (GaussianMixture &g : m_states) {
+        g.weights = Eigen::VectorXf::Ones(1);
+        g.means = mean.transpose();
+        g.variances = variance.transpose();
+    }
+    m_varianceFloor = 0.01f * variance;
+    prepare();
+}
+
+void AcousticModel::prepare()
+{
+    for (GaussianMixture &g : m_states)
+        g.prepare();
+    if (!m_mfcc || !(m_mfcc->options() == m_features))
+        m_mfcc = std::make_shared<const Mfcc>(m_features);
+}
+
+Eigen::MatrixXf AcousticModel::features(const std::vector<float> &samples) const
+{
+    Eigen::MatrixXf f = m_mfcc->compute(samples);
+    if (m_meanNormalize && f.rows() > 0) {
+        const int s = m_mfcc->staticDimension();
+        const Eigen::RowVectorXf mean = f.leftCols(s).colwise().mean();
+        f.leftCols(s).rowwise() -= mean;
+    }
+    return f;
+}
+
+Eigen::MatrixXf AcousticModel::features(const AudioBuffer &audio) const
+{
+    if (audio.sampleRate != m_features.sampleRate)
+        throw Error("audio at " + std::to_string(audio.sampleRate) + " Hz, the aligner model expects "
+                    + std::to_string(m_features.sampleRate) + " Hz");
+    return features(audio.samples);
+}
+
+void AcousticModel::save(const std::string &path) const
+{
+    std::string out;
+    out.reserve(1 << 20);
+    char buffer[64];
+    auto number = [&](double v) {
+        std::snprintf(buffer, sizeof buffer, " %.7g", v);
+        out += buffer;
+    };
+    const MfccOptions &f = m_features;
+    out += "lipsync-aligner " + std::to_string(kFormatVersion) + "\n";
+    out += "# Monophone HMMs (3 emitting states, diagonal GMMs) over MFCC_0_D_A; see core/align/AcousticModel.h\n";
+    out += "features";
+    number(f.sampleRate), number(f.windowSeconds), number(f.shiftSeconds), number(f.preemphasis);
+    number(f.melChannels), number(f.cepstra), number(f.lifter), number(f.deltaWindow);
+    number(m_meanNormalize ? 1 : 0);
+    out += "\ndimension " + std::to_string(m_dimension) + "\nfloor";
+    for (int k = 0; k < m_varianceFloor.size(); ++k)
+        number(m_varianceFloor[k]);
+    out += "\n";
+    for (int p = 0; p < PhoneSet::kCount; ++p) {
+        out += "phone " + PhoneSet::label(p) + "\n";
+        for (int s = 0; s < kStatesPerPhone; ++s) {
+            const int index = stateIndex(p, s);
+            const GaussianMixture &g = m_states[size_t(index)];
+            out += "state " + std::to_string(s) + " mixtures " + std::to_string(g.size()) + " selfloop";
+            number(m_selfLoop[size_t(index)]);
+            out += "\n";
+            for (int m = 0; m < g.size(); ++m) {
+                out += "w";
+                number(g.weights[m]);
+                out += "\nm";
+                for (int k = 0; k < m_dimension; ++k)
+                    number(g.means(m, k));
+                out += "\nv";
+                for (int k = 0; k < m_dimension; ++k)
+                    number(g.variances(m, k));
+                out += "\n";
+            }
+        }
+    }
+    writeFileAtomically(path, out);
+}
+
+AcousticModel AcousticModel::load(const std::string &path)
+{
+    const std::string text = readWholeFile(path);
+    std::istringstream in(text);
+    std::string line;
+    int lineNumber = 0;
+    auto fail = [&](const std::string &what) -> Error {
+        return Error(what, path, "line " + std::to_string(lineNumber));
+    };
+    auto next = [&]() -> std::istringstream {
+        while (std::getline(in, line)) {
+            ++lineNumber;
+            if (!line.empty() && line.back() == '\r')
+                line.pop_back();
+            if (!line.empty() && line[0] != '#')
+                return std::istringstream(line);
+        }
+        ++lineNumber;
+        throw fail("unexpected end of file");
+    };
+    auto expectKey = [&](std::istringstream &s, const std::string &key) {
+        std::string k;
+        if (!(s >> k) || k != key)
+            throw fail("expected '" + key + "'");
+    };
+    AcousticModel model;
+    {
+        std::istringstream s = next();
+        std::string magic;
+        int version = 0;
+        if (!(s >> magic >> version) || magic != "lipsync-aligner")
+            throw fail("not a lipsync aligner model");
+        if (version != kFormatVersion)
+            throw fail("unsupported aligner model version " + std::to_string(version));
+    }
+    {
+        std::istringstream s = next();
+        expectKey(s, "features");
+        MfccOptions &f = model.m_features;
+        double normalize = 0;
+        if (!(s >> f.sampleRate >> f.windowSeconds >> f.shiftSeconds >> f.preemphasis >> f.melChannels
+              >> f.cepstra >> f.lifter >> f.deltaWindow >> normalize))
+            throw fail("bad feature configuration");
+        model.m_meanNormalize = normalize != 0;
+    }
+    {
+        std::istringstream s = next();
+        expectKey(s, "dimension");
+        if (!(s >> model.m_dimension) || model.m_dimension <= 0 || model.m_dimension > 1000)
+            throw fail("bad dimension");
+    }
+    const int d = model.m_dimension;
+    auto readVector = [&](const std::string &key, int n) {
+        std::istringstream s = next();
+        expectKey(s, key);
+        Eigen::VectorXf v(n);
+        for (int k = 0; k < n; ++k)
+            if (!(s >> v[k]) || !std::isfinite(v[k]))
+                throw fail("expected " + std::to_string(n) + " numbers after '" + key + "'");
+        return v;
+    };
+    model.m_varianceFloor = readVector("floor", d);
+    const int states = PhoneSet::kCount * kStatesPerPhone;
+    model.m_states.resize(size_t(states));
+    model.m_selfLoop.assign(size_t(states), 0.6);
+    for (int p = 0; p < PhoneSet::kCount; ++p) {
+        std::istringstream s = next();
+        expectKey(s, "phone");
+        std::string label;
+        s >> label;
+        if (label != PhoneSet::label(p))
+            throw fail("expected phone " + PhoneSet::label(p) + ", found '" + label + "'");
+        for (int st = 0; st < kStatesPerPhone; ++st) {
+            std::istringstream h = next();
+            int position = -1, mixtures = 0;
+            double selfLoop = 0;
+            std::string k1, k2, k3;
+            if (!(h >> k1 >> position >> k2 >> mixtures >> k3 >> selfLoop) || k1 != "state"
+                || k2 != "mixtures" || k3 != "selfloop" || position != st || mixtures < 1 || mixtures > 1024
+                || !(selfLoop > 0 && selfLoop < 1))
+                throw fail("expected 'state " + std::to_string(st) + " mixtures M selfloop P'");
+            const int index = stateIndex(p, st);
+            model.m_selfLoop[size_t(index)] = selfLoop;
+            GaussianMixture &g = model.m_states[size_t(index)];
+            g.weights.resize(mixtures);
+            g.means.resize(mixtures, d);
+            g.variances.resize(mixtures, d);
+            for (int m = 0; m < mixtures; ++m) {
+                g.weights[m] = readVector("w", 1)[0];
+                g.means.row(m) = readVector("m", d).transpose();
+                g.variances.row(m) = readVector("v", d).transpose();
+                if (!(g.variances.row(m).array() > 0).all())
+                    throw fail("variances must be positive");
+            }
+        }
+    }
+    model.prepare();
+    return model;
+}
+
+} // namespace lipsync

@@ -1,0 +1,91 @@
+#pragma once
+// Monophone acoustic model of the aligner: for each of the 41 phones (PhoneSet) a left-to-right
+// HMM with 3 emitting states, each emitting through a diagonal-covariance Gaussian mixture over
+// MFCC_0_D_A features (39 dimensions), the HTK "proto" topology: state k goes to itself with
+// probability a_k or on to k+1 (the third state leaves the phone).
+//
+// Saved as a versioned text file ("lipsync-aligner 1"), which also records the feature
+// configuration so alignment computes exactly the features the model was trained on.
+#include "audio/Mfcc.h"
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lipsync {
+
+struct AudioBuffer;
+
+// Row-major so that one component's D values are contiguous for the Gaussian loops.
+using RowMatrixXf = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using RowMatrixXd = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// One emitting state: M weighted diagonal Gaussians.
+struct GaussianMixture
+{
+    Eigen::VectorXf weights; // M, sum 1
+    RowMatrixXf means;       // M x D
+    RowMatrixXf variances;   // M x D
+
+    int size() const { return int(weights.size()); }
+    // Caches precisions and log constants; call after changing the parameters.
+    void prepare();
+    // log sum_m w_m N(x; mean_m, diag var_m).
+    float logLikelihood(const float *x) const;
+    // Per-component log(w_m N(x; ...)) into `out` (size M); returns their log-sum.
+    float componentLogLikelihoods(const float *x, float *out) const;
+
+    RowMatrixXf precisions; // 1 / variances
+    Eigen::VectorXf logConstants; // log w_m - (D log 2 pi + sum log var_m) / 2
+};
+
+class AcousticModel
+{
+public:
+    static constexpr int kFormatVersion = 1;
+    static constexpr int kStatesPerPhone = 3;
+
+    AcousticModel() = default;
+    // A flat-start model (HCompV): every state one Gaussian with the global mean and variance.
+    AcousticModel(const MfccOptions &features, bool meanNormalize, const Eigen::VectorXf &mean,
+                  const Eigen::VectorXf &variance, double selfLoop = 0.6);
+
+    const MfccOptions &featureOptions() const { return m_features; }
+    bool meanNormalize() const { return m_meanNormalize; }
+    int dimension() const { return m_dimension; }
+    int stateCount() const { return int(m_states.size()); }
+    static int stateIndex(int phone, int position) { return phone * kStatesPerPhone + position; }
+
+    GaussianMixture &state(int index) { return m_states[size_t(index)]; }
+    const GaussianMixture &state(int index) const { return m_states[size_t(index)]; }
+    // Probability that state `index` stays in itself for one more frame.
+    double selfLoop(int index) const { return m_selfLoop[size_t(index)]; }
+    void setSelfLoop(int index, double p) { m_selfLoop[size_t(index)] = p; }
+    // Variance floor applied by re-estimation (HCompV -f 0.01: 1% of the global variance).
+    const Eigen::VectorXf &varianceFloor() const { return m_varianceFloor; }
+    void setVarianceFloor(const Eigen::VectorXf &floor) { m_varianceFloor = floor; }
+    void prepare();
+
+    // Features of an utterance as this model expects them: MFCC_0_D_A at the model's sample
+    // rate, with the per-utterance mean of the static coefficients removed when meanNormalize()
+    // (cepstral mean normalisation). `audio` must be at featureOptions().sampleRate.
+    Eigen::MatrixXf features(const AudioBuffer &audio) const;
+    Eigen::MatrixXf features(const std::vector<float> &samples) const;
+
+    // Throws lipsync::Error naming the file (and line for malformed content).
+    void save(const std::string &path) const;
+    static AcousticModel load(const std::string &path);
+
+private:
+    MfccOptions m_features;
+    bool m_meanNormalize = true;
+    int m_dimension = 0;
+    std::vector<GaussianMixture> m_states;
+    std::vector<double> m_selfLoop;
+    Eigen::VectorXf m_varianceFloor;
+    std::shared_ptr<const Mfcc> m_mfcc; // shared by copies; compute() is thread-safe
+};
+
+} // namespace lipsync

@@ -1,0 +1,142 @@
+#include "align/ForcedAligner.h"
+
+#include "align/EmissionCache.h"
+#include "align/PhoneSet.h"
+#include "util/Error.h"
+
+#include <cmath>
+
+namespace lipsync {
+
+AlignmentResult ForcedAligner::align(const Eigen::MatrixXf &features, const std::vector<std::string> &words,
+                                     const std::vector<std::vector<Pronunciation>> &pronunciations,
+                                     double audioDuration) const
+{
+    try {
+        return alignWithBeam(features, words, pronunciations, audioDuration, m_options.beam);
+    } catch (const Error &) {
+        // Every path pruned: retry without pruning before declaring that the transcript does not fit.
+        if (!std::isfinite(m_options.beam))
+            throw;
+        return alignWithBeam(features, words, pronunciations, audioDuration, INFINITY);
+    }
+}
+
+AlignmentResult ForcedAligner::alignWithBeam(const Eigen::MatrixXf &features, const std::vector<std::string> &words,
+                                             const std::vector<std::vector<Pronunciation>> &pronunciations,
+                                             double audioDuration, double beam) const
+{
+    const UtteranceGraph graph(pronunciations, m_options.graph);
+    const int T = int(features.rows());
+    const int S = graph.size();
+    const double shift = m_model.featureOptions().shiftSeconds;
+    if (T < graph.minimumFrames())
+        throw Error("the transcript does not fit the audio: " + std::to_string(graph.minimumFrames() / 3)
+                    + " phones need at least " + std::to_string(graph.minimumFrames() * shift)
+                    + " s, the audio has " + std::to_string(T * shift) + " s");
+    if (features.cols() != m_model.dimension())
+        throw Error("features do not match the aligner model's dimension");
+    const auto &states = graph.states();
+    EmissionCache emission(m_model, features);
+    std::vector<double> logSelf(static_cast<size_t>(S)), logExit(static_cast<size_t>(S));
+    std::vector<std::vector<double>> logIn(static_cast<size_t>(S));
+    for (int s = 0; s < S; ++s) {
+        logSelf[size_t(s)] = graph.logSelf(m_model, s);
+        logExit[size_t(s)] = graph.logExit(m_model, s);
+        for (const GraphEdge &e : states[size_t(s)].in)
+            logIn[size_t(s)].push_back(graph.logEdge(m_model, e));
+    }
+    // delta[s] at t, and back pointers (predecessor state, -1 = entry) for every (t, s).
+    std::vector<double> delta(static_cast<size_t>(S), -INFINITY), previous(size_t(S), -INFINITY);
+    std::vector<int> back(static_cast<size_t>(T) * size_t(S), -2);
+    for (int t = 0; t < T; ++t) {
+        std::swap(delta, previous);
+        double best = -INFINITY;
+        for (int s = 0; s < S; ++s) {
+            double v = -INFINITY;
+            int from = -2;
+            const GraphState &st = states[size_t(s)];
+            if (t > 0 && previous[size_t(s)] > -INFINITY) {
+                v = previous[size_t(s)] + logSelf[size_t(s)];
+                from = s;
+            }
+            for (size_t e = 0; e < st.in.size(); ++e) {
+                const int p = st.in[e].from;
+                const double score = p < 0 ? (t == 0 ? logIn[size_t(s)][e] : -INFINITY)
+                                           : (t > 0 ? previous[size_t(p)] + logIn[size_t(s)][e] : -INFINITY);
+                if (score > v) {
+                    v = score;
+                    from = p;
+                }
+            }
+            if (v > -INFINITY) {
+                v += emission(t, st.modelState);
+                best = std::max(best, v);
+            }
+            delta[size_t(s)] = v;
+            back[size_t(t) * size_t(S) + size_t(s)] = from;
+        }
+        if (best == -INFINITY)
+            throw Error("no alignment path survives (the transcript does not fit the audio)");
+        for (int s = 0; s < S; ++s)
+            if (delta[size_t(s)] < best - beam)
+                delta[size_t(s)] = -INFINITY;
+    }
+    int last = -1;
+    double bestFinal = -INFINITY;
+    for (int s = 0; s < S; ++s) {
+        const double v = delta[size_t(s)] + logExit[size_t(s)];
+        if (v > bestFinal) {
+            bestFinal = v;
+            last = s;
+        }
+    }
+    if (last < 0)
+        throw Error("no alignment path reaches the end of the transcript (the transcript does not fit the audio)");
+
+    std::vector<int> path(static_cast<size_t>(T));
+    for (int t = T - 1, s = last; t >= 0; --t) {
+        path[size_t(t)] = s;
+        s = back[size_t(t) * size_t(S) + size_t(s)];
+    }
+
+    AlignmentResult result;
+    result.logLikelihood = bestFinal;
+    result.frames = T;
+    const double end = std::max(audioDuration, T * shift);
+    auto pushOrExtend = [](Tier &tier, double start, double stop, const std::string &label, bool merge) {
+        if (merge && !tier.intervals.empty() && tier.intervals.back().label == label)
+            tier.intervals.back().end = stop;
+        else
+            tier.intervals.push_back(Interval{start, stop, label, false});
+    };
+    int segmentStart = 0;
+    int lastWord = -2;
+    for (int t = 1; t <= T; ++t) {
+        if (t < T && states[size_t(path[size_t(t)])].phoneInstance == states[size_t(path[size_t(t - 1)])].phoneInstance)
+            continue;
+        const GraphState &st = states[size_t(path[size_t(t - 1)])];
+        const double start = segmentStart * shift;
+        const double stop = t == T ? end : t * shift;
+        const std::string phone = PhoneSet::label(st.phone);
+        // Adjacent silences (a word-final sil variant next to an optional sil) are one segment.
+        pushOrExtend(result.phones, start, stop, phone, st.phone == PhoneSet::kSilence);
+        const std::string word = st.word < 0 ? std::string("sil") : words[size_t(st.word)];
+        if (st.word >= 0 && st.word == lastWord)
+            result.words.intervals.back().end = stop;
+        else
+            pushOrExtend(result.words, start, stop, word, st.word < 0);
+        lastWord = st.word;
+        segmentStart = t;
+    }
+    return result;
+}
+
+AlignmentResult ForcedAligner::align(const Eigen::MatrixXf &features, const std::string &transcript,
+                                     const Lexicon &lexicon, double audioDuration) const
+{
+    const std::vector<std::string> words = Lexicon::splitWords(transcript);
+    return align(features, words, lexicon.pronounceAll(words), audioDuration);
+}
+
+} // namespace lipsync

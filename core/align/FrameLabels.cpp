@@ -1,0 +1,73 @@
+#include "align/FrameLabels.h"
+
+#include "util/Error.h"
+
+#include <cmath>
+#include <map>
+
+namespace lipsync {
+
+namespace {
+std::string labelAt(const Tier &phones, double t)
+{
+    // Tier::indexAt lives in core/project (header-only here); a local search keeps align
+    // independent of it. Intervals are [start, end).
+    for (const Interval &interval : phones.intervals)
+        if (t >= interval.start && t < interval.end)
+            return interval.label.empty() ? std::string("sil") : interval.label;
+    return "sil";
+}
+} // namespace
+
+std::vector<std::string> voteFrameLabels(const Tier &phones, double frameRate, int frameCount,
+                                         const MfccOptions &o)
+{
+    if (!(frameRate > 0))
+        throw Error("frame voting needs a positive video frame rate");
+    std::vector<std::string> labels(size_t(std::max(frameCount, 0)));
+    const double end = phones.endTime();
+    for (int i = 0; i < frameCount; ++i) {
+        const double from = i / frameRate, to = (i + 1) / frameRate, centre = (i + 0.5) / frameRate;
+        // Audio frames j with c_j in [from, to).
+        int j = std::max(0, int(std::ceil((from - o.windowSeconds / 2) / o.shiftSeconds - 1e-9)));
+        struct Vote
+        {
+            int count = 0;
+            double nearest = INFINITY; // distance of its nearest audio frame centre
+            int nearestFrame = 0;
+        };
+        std::map<std::string, Vote> votes;
+        for (;; ++j) {
+            const double c = mfccFrameCentre(j, o);
+            if (c < from - 1e-12)
+                continue;
+            if (c >= to - 1e-12 || c >= end)
+                break;
+            Vote &v = votes[labelAt(phones, c)];
+            ++v.count;
+            // Strictly nearer only: equally near keeps the earlier frame.
+            if (std::abs(c - centre) < v.nearest - 1e-12) {
+                v.nearest = std::abs(c - centre);
+                v.nearestFrame = j;
+            }
+        }
+        if (votes.empty()) {
+            labels[size_t(i)] = labelAt(phones, centre);
+            continue;
+        }
+        const std::string *best = nullptr;
+        Vote bestVote;
+        for (const auto &[label, v] : votes)
+            if (!best || v.count > bestVote.count
+                || (v.count == bestVote.count
+                    && (v.nearest < bestVote.nearest - 1e-12
+                        || (std::abs(v.nearest - bestVote.nearest) <= 1e-12 && v.nearestFrame < bestVote.nearestFrame)))) {
+                best = &label;
+                bestVote = v;
+            }
+        labels[size_t(i)] = *best;
+    }
+    return labels;
+}
+
+} // namespace lipsync

@@ -1,0 +1,165 @@
+#include "io/HtkLabel.h"
+
+#include "io/AtomicFile.h"
+#include "util/Error.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace lipsync {
+
+namespace {
+
+bool isInteger(const std::string &s)
+{
+    if (s.empty())
+        return false;
+    for (size_t i = (s[0] == '-' ? 1 : 0); i < s.size(); ++i)
+        if (!std::isdigit(static_cast<unsigned char>(s[i])))
+            return false;
+    return s != "-";
+}
+
+// One label line into `tier`; `timed` is -1 until the first line decides.
+void parseLine(const std::string &line, const std::string &path, int lineNumber, Tier &tier, int &timed)
+{
+    std::istringstream fields(line);
+    std::vector<std::string> f;
+    std::string word;
+    while (fields >> word)
+        f.push_back(word);
+    if (f.empty())
+        return;
+    const std::string where = "line " + std::to_string(lineNumber);
+    const bool hasTimes = f.size() >= 3 && isInteger(f[0]) && isInteger(f[1]);
+    if (timed < 0)
+        timed = hasTimes ? 1 : 0;
+    if ((timed == 1) != hasTimes)
+        throw Error(timed ? "expected 'start end label' (times in 100 ns units)"
+                          : "timed label after untimed ones",
+                    path, where);
+    if (!hasTimes) {
+        if (f.size() != 1)
+            throw Error("expected 'start end label' or a single label", path, where);
+        tier.intervals.push_back(Interval{0, 0, f[0], false});
+        return;
+    }
+    const long long start = std::stoll(f[0]), end = std::stoll(f[1]);
+    if (start < 0 || end < start)
+        throw Error("interval end is before its start", path, where);
+    Interval interval{start / kHtkUnitsPerSecond, end / kHtkUnitsPerSecond, f[2], false};
+    if (!tier.intervals.empty() && interval.start < tier.intervals.back().end - 1e-9)
+        throw Error("interval overlaps the previous one", path, where);
+    // Fields after the label (scores, auxiliary labels) are ignored.
+    tier.intervals.push_back(interval);
+}
+
+} // namespace
+
+Tier parseHtkLabel(const std::string &text, const std::string &path, bool *isTimed)
+{
+    Tier tier{"labels", {}};
+    std::istringstream in(text);
+    std::string line;
+    int lineNumber = 0;
+    int timed = -1;
+    while (std::getline(in, line)) {
+        ++lineNumber;
+        if (!line.empty() && line.back() == '\r')
+            line.pop_back();
+        if (line.rfind("///", 0) == 0)
+            break; // further label levels
+        parseLine(line, path, lineNumber, tier, timed);
+    }
+    if (tier.intervals.empty())
+        throw Error("no labels", path);
+    if (isTimed)
+        *isTimed = timed == 1;
+    return tier;
+}
+
+Tier readHtkLabel(const std::string &path, bool *isTimed)
+{
+    return parseHtkLabel(readWholeFile(path), path, isTimed);
+}
+
+std::string formatHtkLabel(const Tier &tier)
+{
+    std::ostringstream out;
+    for (const Interval &i : tier.intervals)
+        out << std::llround(i.start * kHtkUnitsPerSecond) << ' ' << std::llround(i.end * kHtkUnitsPerSecond)
+            << ' ' << (i.label.empty() ? std::string("sil") : i.label) << '\n';
+    return out.str();
+}
+
+void writeHtkLabel(const std::string &path, const Tier &tier)
+{
+    writeFileAtomically(path, formatHtkLabel(tier));
+}
+
+std::map<std::string, Tier> parseHtkMlf(const std::string &text, const std::string &path)
+{
+    std::map<std::string, Tier> entries;
+    std::istringstream in(text);
+    std::string line;
+    int lineNumber = 0;
+    bool header = false;
+    Tier *current = nullptr;
+    int timed = -1;
+    int entryLine = 0;
+    while (std::getline(in, line)) {
+        ++lineNumber;
+        if (!line.empty() && line.back() == '\r')
+            line.pop_back();
+        const std::string where = "line " + std::to_string(lineNumber);
+        if (!header) {
+            if (line.find_first_not_of(" \t") == std::string::npos)
+                continue;
+            if (line.rfind("#!MLF!#", 0) != 0)
+                throw Error("not an HTK master label file (expected #!MLF!#)", path, where);
+            header = true;
+            continue;
+        }
+        if (!current) {
+            if (line.find_first_not_of(" \t") == std::string::npos)
+                continue;
+            if (line.size() < 2 || line.front() != '"' || line.find('"', 1) == std::string::npos)
+                throw Error("expected a quoted file pattern", path, where);
+            const std::string name = line.substr(1, line.find('"', 1) - 1);
+            if (entries.count(name))
+                throw Error("duplicate entry \"" + name + "\"", path, where);
+            current = &entries[name];
+            current->name = "labels";
+            timed = -1;
+            entryLine = lineNumber;
+            continue;
+        }
+        if (line == ".") {
+            if (current->intervals.empty())
+                throw Error("entry has no labels", path, "line " + std::to_string(entryLine));
+            current = nullptr;
+            continue;
+        }
+        parseLine(line, path, lineNumber, *current, timed);
+    }
+    if (!header)
+        throw Error("empty file, not an HTK master label file", path);
+    if (current)
+        throw Error("last entry is not terminated by '.'", path, "line " + std::to_string(entryLine));
+    return entries;
+}
+
+std::map<std::string, Tier> readHtkMlf(const std::string &path)
+{
+    return parseHtkMlf(readWholeFile(path), path);
+}
+
+void writeHtkMlf(const std::string &path, const std::map<std::string, Tier> &entries)
+{
+    std::string out = "#!MLF!#\n";
+    for (const auto &[name, tier] : entries)
+        out += "\"" + name + "\"\n" + formatHtkLabel(tier) + ".\n";
+    writeFileAtomically(path, out);
+}
+
+} // namespace lipsync

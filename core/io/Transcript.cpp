@@ -1,0 +1,119 @@
+#include "io/Transcript.h"
+
+#include "io/AtomicFile.h"
+#include "io/GridAlign.h"
+#include "io/HtkLabel.h"
+#include "io/TextGrid.h"
+#include "util/Error.h"
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+
+namespace lipsync {
+
+namespace {
+
+bool isSilenceLabel(const std::string &label)
+{
+    std::string l;
+    for (char c : label)
+        l += char(std::tolower(static_cast<unsigned char>(c)));
+    return l.empty() || l == "sil" || l == "sp" || l == "<sil>" || l == "sil!" || l == "silence";
+}
+
+std::string extensionOf(const std::string &path)
+{
+    const size_t slash = path.find_last_of('/');
+    const size_t dot = path.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+        return {};
+    std::string ext = path.substr(dot);
+    for (char &c : ext)
+        c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+Transcript fromTier(const Tier &tier)
+{
+    Transcript t;
+    t.timing = tier;
+    t.timing.name = "words";
+    for (const Interval &i : tier.intervals)
+        if (!isSilenceLabel(i.label))
+            t.words.push_back(i.label);
+    return t;
+}
+
+} // namespace
+
+std::string Transcript::text() const
+{
+    std::string out;
+    for (const std::string &w : words)
+        out += (out.empty() ? "" : " ") + w;
+    return out;
+}
+
+const std::vector<std::string> &transcriptExtensions()
+{
+    static const std::vector<std::string> list{".align", ".textgrid", ".lab", ".txt"};
+    return list;
+}
+
+Transcript parsePlainTranscript(const std::string &text)
+{
+    Transcript t;
+    std::istringstream in(text);
+    std::string word;
+    while (in >> word)
+        t.words.push_back(word);
+    return t;
+}
+
+Transcript readTranscript(const std::string &path)
+{
+    const std::string ext = extensionOf(path);
+    Transcript t;
+    if (ext == ".align") {
+        t = fromTier(readGridAlign(path));
+    } else if (ext == ".textgrid") {
+        const TextGrid grid = readTextGrid(path);
+        const Tier *words = grid.tier("words");
+        for (const TextGridTier &candidate : grid.tiers)
+            if (!words && !candidate.isPointTier)
+                words = &candidate.tier;
+        if (!words)
+            throw Error("no interval tier with words", path);
+        t = fromTier(*words);
+    } else if (ext == ".lab") {
+        // HTK timed labels, or (as MFA uses .lab) the plain transcript.
+        const std::string text = readWholeFile(path);
+        std::istringstream first(text);
+        std::string a, b;
+        first >> a >> b;
+        auto integer = [](const std::string &s) {
+            return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+        };
+        if (integer(a) && integer(b)) {
+            Tier tier = parseHtkLabel(text, path);
+            t = fromTier(tier);
+        } else {
+            t = parsePlainTranscript(text);
+        }
+    } else if (ext == ".txt" || ext.empty()) {
+        t = parsePlainTranscript(readWholeFile(path));
+    } else {
+        throw Error("unsupported transcript format '" + ext + "' (use .align, .lab, .txt or .TextGrid)", path);
+    }
+    if (t.words.empty())
+        throw Error("the transcript has no words", path);
+    return t;
+}
+
+void writePlainTranscript(const std::string &path, const Transcript &transcript)
+{
+    writeFileAtomically(path, transcript.text() + "\n");
+}
+
+} // namespace lipsync

@@ -1,0 +1,133 @@
+// `lipsync align` and `lipsync aligner train` as users run them.
+#include "io/TextGrid.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace lipsync;
+
+namespace {
+const QString kDemo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media/");
+
+struct Run
+{
+    int code;
+    QByteArray out, err;
+};
+
+Run run(const QStringList &args, const QProcessEnvironment &env = QProcessEnvironment::systemEnvironment())
+{
+    QProcess p;
+    p.setProcessEnvironment(env);
+    p.start(QStringLiteral(LIPSYNC_CLI), args);
+    p.waitForFinished(240000);
+    return {p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
+}
+} // namespace
+
+class TestAlignCli : public QObject
+{
+    Q_OBJECT
+private slots:
+    void alignWritesWordsAndPhonesTiers()
+    {
+        QTemporaryDir dir;
+        const QString out = dir.filePath(QStringLiteral("bbaf2n.TextGrid"));
+        // Default model: found relative to the executable (build tree -> source resources).
+        const Run r = run({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bbaf2n.align", "--out", out, "--json"});
+        QVERIFY2(r.code == 0, r.err.constData());
+        const QJsonObject json = QJsonDocument::fromJson(r.out).object();
+        QVERIFY(json.value("model").toString().endsWith("grid-s1.aligner"));
+        QVERIFY(json.value("frames").toInt() > 290 && json.value("frames").toInt() <= 298);
+        const TextGrid grid = readTextGrid(out.toStdString());
+        QCOMPARE(grid.tiers.size(), size_t(2));
+        const Tier *words = grid.tier("words");
+        const Tier *phones = grid.tier("phones");
+        QVERIFY(words && phones);
+        QStringList spoken;
+        for (const Interval &i : words->intervals)
+            if (i.label != "sil" && !i.label.empty())
+                spoken << QString::fromStdString(i.label);
+        QCOMPARE(spoken.join(' '), QStringLiteral("bin blue at f two now"));
+        QVERIFY(phones->intervals.size() > 15);
+        QCOMPARE(json.value("words").toArray().size(), int(words->intervals.size()));
+        // One voted phone label per video frame (25 fps, 75 frames), silence at both ends.
+        QCOMPARE(json.value("frameRate").toDouble(), 25.0);
+        const QJsonArray frames = json.value("frameLabels").toArray();
+        QCOMPARE(frames.size(), 75);
+        QCOMPARE(frames.first().toString(), QStringLiteral("sil"));
+        QCOMPARE(frames.last().toString(), QStringLiteral("sil"));
+        QVERIFY(frames.contains(QStringLiteral("B"))); // bin
+    }
+
+    void alignBadInput()
+    {
+        QTemporaryDir dir;
+        const QString out = dir.filePath(QStringLiteral("x.TextGrid"));
+        // Usage errors: exit 2.
+        QCOMPARE(run({"align", kDemo + "bbaf2n.mpg"}).code, 2);
+        QCOMPARE(run({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bbaf2n.align", "--out", out, "--bogus"}).code, 2);
+        // Missing media: exit 1, names the file, writes nothing.
+        Run r = run({"align", dir.filePath("none.mpg"), "--transcript", kDemo + "bbaf2n.align", "--out", out});
+        QCOMPARE(r.code, 1);
+        QVERIFY(r.err.contains("none.mpg"));
+        QVERIFY(!QFile::exists(out));
+        // A transcript far too long for 3 s of audio.
+        const QString longText = dir.filePath(QStringLiteral("long.txt"));
+        QFile f(longText);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        for (int i = 0; i < 60; ++i)
+            f.write("extraordinary circumstances ");
+        f.close();
+        r = run({"align", kDemo + "bbaf2n.mpg", "--transcript", longText, "--out", out});
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains("does not fit"), r.err.constData());
+        // A bad model file is named.
+        const QString badModel = dir.filePath(QStringLiteral("bad.aligner"));
+        QFile m(badModel);
+        QVERIFY(m.open(QIODevice::WriteOnly));
+        m.write("not a model\n");
+        m.close();
+        r = run({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bbaf2n.align", "--model", badModel, "--out", out});
+        QCOMPARE(r.code, 1);
+        QVERIFY(r.err.contains("bad.aligner"));
+    }
+
+    void trainThenAlign()
+    {
+        QTemporaryDir dir;
+        // Three demo clips and a clip without a transcript (reported, skipped).
+        QDir media(dir.filePath(QStringLiteral("media")));
+        QVERIFY(QDir().mkpath(media.path()));
+        for (const char *id : {"bbaf2n", "bgin3a", "bwbg8n"})
+            QVERIFY(QFile::copy(kDemo + id + ".mpg", media.filePath(QString::fromLatin1(id) + ".mpg")));
+        QVERIFY(QFile::copy(kDemo + "lrik4p.mpg", media.filePath(QStringLiteral("orphan.mpg"))));
+        const QString model = dir.filePath(QStringLiteral("small.aligner"));
+        const Run r = run({"aligner", "train", "--media", media.path(), "--transcripts", kDemo, "--out", model,
+                           "--mixtures", "1", "--iterations", "2", "--json"});
+        QVERIFY2(r.code == 0, r.err.constData());
+        const QJsonObject json = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(json.value("utterances").toInt(), 3);
+        QCOMPARE(json.value("skipped").toArray().size(), 1);
+        QCOMPARE(json.value("skipped").toArray()[0].toObject().value("id").toString(), QStringLiteral("orphan"));
+        const QJsonArray ll = json.value("logLikelihoodPerFrame").toArray();
+        QCOMPARE(ll.size(), 4);
+        for (int i = 1; i < ll.size(); ++i)
+            QVERIFY(ll[i].toDouble() >= ll[i - 1].toDouble() - 1e-4);
+        QVERIFY(QFile::exists(model));
+        const Run a = run({"align", kDemo + "bgin3a.mpg", "--transcript", kDemo + "bgin3a.align", "--model", model,
+                           "--out", dir.filePath(QStringLiteral("a.TextGrid"))});
+        QVERIFY2(a.code == 0, a.err.constData());
+        // Usage: missing --out.
+        QCOMPARE(run({"aligner", "train", "--media", media.path(), "--transcripts", kDemo}).code, 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestAlignCli)
+#include "tst_aligncli.moc"
