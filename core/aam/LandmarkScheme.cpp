@@ -109,6 +109,30 @@ Eigen::VectorXd mapIbug68To23(const Eigen::VectorXd &ibug68)
     return out;
 }
 
+Eigen::VectorXd templateShape()
+{
+    static constexpr double mean[scheme23::kPointCount][2] = {
+        {-0.17532, -0.20853}, {-0.11903, -0.22348}, {-0.06622, -0.19405}, {-0.12310, -0.19078},
+        {0.09331, -0.18267}, {0.15008, -0.20515}, {0.20262, -0.18237}, {0.15169, -0.17209},
+        {-0.12627, 0.07382}, {-0.03267, 0.05047}, {-0.00491, 0.05992}, {0.02803, 0.05488},
+        {0.11339, 0.08910}, {0.02280, 0.14823}, {-0.01184, 0.14944}, {-0.04272, 0.14451},
+        {-0.00671, 0.08169}, {-0.00893, 0.10911}, {-0.29003, -0.04738}, {-0.20683, 0.17187},
+        {-0.01782, 0.28519}, {0.18066, 0.19457}, {0.28983, -0.00628}};
+    Eigen::VectorXd shape(2 * scheme23::kPointCount);
+    for (int i = 0; i < scheme23::kPointCount; ++i)
+        shape.segment<2>(2 * i) << mean[i][0], mean[i][1];
+    // Level the eyes.
+    const Eigen::Vector2d d = shape.segment<2>(2 * scheme23::kRightEyeOuter)
+                              - shape.segment<2>(2 * scheme23::kLeftEyeOuter);
+    const double angle = -std::atan2(d.y(), d.x());
+    const double c = std::cos(angle), s = std::sin(angle);
+    for (int i = 0; i < scheme23::kPointCount; ++i) {
+        const Eigen::Vector2d p = shape.segment<2>(2 * i);
+        shape.segment<2>(2 * i) << c * p.x() - s * p.y(), s * p.x() + c * p.y();
+    }
+    return shape;
+}
+
 double normalisedMeanError(const Eigen::VectorXd &shape, const Eigen::VectorXd &truth)
 {
     const int n = int(truth.size() / 2);

@@ -50,6 +50,10 @@ std::string landmarkSchemeJson();
 // Maps 68 iBUG points (flat, 136 values) to the 23-point scheme (46 values).
 Eigen::VectorXd mapIbug68To23(const Eigen::VectorXd &ibug68);
 
+// A typical frontal face in the scheme (centred, unit size, eyes level): the mean of the Procrustes
+// -aligned Helen training shapes. Seeds the editor and places points when no AAM exists yet.
+Eigen::VectorXd templateShape();
+
 // Mean point-to-point error over the points divided by the outer-eye-corner distance of `truth`.
 double normalisedMeanError(const Eigen::VectorXd &shape, const Eigen::VectorXd &truth);
 
