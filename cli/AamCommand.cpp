@@ -128,7 +128,9 @@ int runAamEval(const QStringList &args)
         return fail("aam eval: --init must be detector, dlib or none", 2);
     const AamModel model = AamModel::load(a.value("model").toStdString());
     const AamFitter fitter(model);
-    FaceDetector detector;
+    FaceDetectorPaths paths;
+    paths.useDlib = init == "dlib"; // loading the predictor takes seconds: only when used
+    FaceDetector detector(paths);
     if (!detector.hasYunet() && !detector.hasHaar())
         return fail("aam eval: no face detector available (YuNet model or Haar cascade)");
     if (init == "dlib" && !detector.hasDlib())

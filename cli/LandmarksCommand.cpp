@@ -61,7 +61,9 @@ int runLandmarksDetect(const QStringList &args)
             throw Error("frame " + std::to_string(frameIndex) + " cannot be decoded", input);
     }
 
-    FaceDetector detector;
+    FaceDetectorPaths paths;
+    paths.useDlib = method == "auto" || method == "dlib";
+    FaceDetector detector(paths);
     const std::vector<FaceDetection> faces = detector.detect(image);
     if (faces.empty())
         return fail(QString::fromStdString(input) + ": no face found"

@@ -34,7 +34,9 @@ int runTrack(const QStringList &args)
                     2);
     const std::string videoPath = a.positional().front().toStdString();
     const AamModel model = AamModel::load(a.value("model").toStdString());
-    FaceDetector detector;
+    FaceDetectorPaths paths;
+    paths.useDlib = false;
+    FaceDetector detector(paths);
     if (!detector.hasYunet() && !detector.hasHaar())
         return fail("track: no face detector available (YuNet model or Haar cascade)");
     FaceTracker tracker(model, &detector);
