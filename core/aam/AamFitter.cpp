@@ -212,13 +212,44 @@ AamFitResult AamFitter::fit(const cv::Mat &image, const Eigen::VectorXd &initial
             f = 1.0;
             levelImage = grey;
         }
-        levelImage = smoothedForFitting(levelImage);
+        // Smooth only the region around the face (half its size again on each side): tracking
+        // a 360x288 video then costs a few thousand pixels per frame, not the whole frame.
+        cv::Rect roi;
+        {
+            const Eigen::VectorXd s = scaled(result.shape, f);
+            double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+            for (int i = 0; i < k; ++i) {
+                x0 = std::min(x0, s[2 * i]);
+                x1 = std::max(x1, s[2 * i]);
+                y0 = std::min(y0, s[2 * i + 1]);
+                y1 = std::max(y1, s[2 * i + 1]);
+            }
+            const double mx = 0.5 * (x1 - x0) + 4, my = 0.5 * (y1 - y0) + 4;
+            const cv::Rect wanted(int(std::floor(x0 - mx)), int(std::floor(y0 - my)),
+                                  int(std::ceil(x1 - x0 + 2 * mx)), int(std::ceil(y1 - y0 + 2 * my)));
+            roi = wanted & cv::Rect(0, 0, levelImage.cols, levelImage.rows);
+            if (roi.width < 2 || roi.height < 2)
+                roi = cv::Rect(0, 0, levelImage.cols, levelImage.rows);
+        }
+        levelImage = smoothedForFitting(levelImage(roi));
+        const Eigen::Vector2d offset(roi.x, roi.y);
+        auto toLevel = [&](const Eigen::VectorXd &shape) {
+            Eigen::VectorXd out = scaled(shape, f);
+            for (int i = 0; i < k; ++i)
+                out.segment<2>(2 * i) -= offset;
+            return out;
+        };
+        auto fromLevel = [&](Eigen::VectorXd shape) {
+            for (int i = 0; i < k; ++i)
+                shape.segment<2>(2 * i) += offset;
+            return scaled(shape, 1.0 / f);
+        };
         const int N = warp.pixelCount();
         sample.resize(size_t(N));
         // Residual of a shape: the part of the normalised texture error the appearance model
         // cannot explain (the project-out cost, Matthews & Baker eq. 39).
         auto evaluate = [&](const Eigen::VectorXd &shape, Eigen::VectorXf &error) {
-            warp.sampleGrey(levelImage, scaled(shape, f), sample.data());
+            warp.sampleGrey(levelImage, toLevel(shape), sample.data());
             normaliseTexture(sample.data(), sample.size());
             error = Eigen::Map<Eigen::VectorXf>(sample.data(), N) - level.templateMean;
             const Eigen::VectorXf c = level.appearance.transpose() * error;
@@ -229,12 +260,12 @@ AamFitResult AamFitter::fit(const cv::Mat &image, const Eigen::VectorXd &initial
         double step = 1.0;
         for (int it = 0; it < options.maxIterations; ++it) {
             ++result.iterations;
-            const Eigen::VectorXd current = scaled(result.shape, f);
+            const Eigen::VectorXd current = toLevel(result.shape);
             const Eigen::VectorXd dp = step * (level.update * error).cast<double>();
             // Inverse compositional update: W(x; p) <- W(x; p) o W(x; dp)^-1, with the inverse
             // approximated by -dp and the composition done on the mesh vertices (§4.1.2).
             const Eigen::VectorXd inverseRef = level.reference - level.basis * dp;
-            Eigen::VectorXd next = scaled(warp.warpVertices(inverseRef, current), 1.0 / f);
+            Eigen::VectorXd next = fromLevel(warp.warpVertices(inverseRef, current));
             pinFixed(next);
             Eigen::VectorXd params;
             Similarity pose;
