@@ -10,6 +10,7 @@
 
 #ifdef LIPSYNC_HAVE_DLIB
 #include <dlib/image_processing.h>
+#include <dlib/image_processing/frontal_face_detector.h>
 #include <dlib/opencv/cv_image.h>
 #endif
 
@@ -26,6 +27,7 @@ struct FaceDetector::Impl
     bool haarLoaded = false;
 #ifdef LIPSYNC_HAVE_DLIB
     std::unique_ptr<dlib::shape_predictor> predictor;
+    std::unique_ptr<dlib::frontal_face_detector> hog;
 #endif
 };
 
@@ -183,10 +185,33 @@ Eigen::VectorXd FaceDetector::dlibLandmarks(const cv::Mat &bgr, const FaceDetect
     else
         grey = bgr;
     dlib::cv_image<unsigned char> image(grey);
-    // dlib's predictor was trained on its HOG detector's boxes, which are tighter and lower than
-    // YuNet's: shrink the box towards the eyes-mouth region.
+    // dlib's predictor was trained on the boxes of dlib's HOG detector: use that detector's box
+    // for this face when it finds one (on a copy of at most 480 pixels, for speed); otherwise
+    // adjust the YuNet box, which is larger and higher, towards the HOG convention.
     cv::Rect2d b = face.box;
-    if (face.source == "yunet") {
+    bool fromHog = false;
+    {
+        if (!m_impl->hog)
+            m_impl->hog = std::make_unique<dlib::frontal_face_detector>(dlib::get_frontal_face_detector());
+        const double f = std::min(1.0, 480.0 / std::max(grey.cols, grey.rows));
+        cv::Mat small = grey;
+        if (f < 1.0)
+            cv::resize(grey, small, cv::Size(), f, f, cv::INTER_AREA);
+        dlib::cv_image<unsigned char> smallImage(small);
+        const std::vector<dlib::rectangle> boxes = (*m_impl->hog)(smallImage);
+        double best = 0.0;
+        for (const auto &r : boxes) {
+            const cv::Rect2d candidate(r.left() / f, r.top() / f, (r.width()) / f, (r.height()) / f);
+            const double inter = (candidate & face.box).area();
+            const double iou = inter / (candidate.area() + face.box.area() - inter);
+            if (iou > best && iou > 0.3) {
+                best = iou;
+                b = candidate;
+                fromHog = true;
+            }
+        }
+    }
+    if (!fromHog && face.source == "yunet") {
         const double cx = b.x + 0.5 * b.width, w = 0.86 * b.width;
         const double top = b.y + 0.17 * b.height, h = 0.86 * b.height;
         b = cv::Rect2d(cx - 0.5 * w, top, w, h);
