@@ -12,6 +12,7 @@
 #include "aam/FaceDetector.h"
 #include "aam/FaceTracker.h"
 #include "aam/LandmarkScheme.h"
+#include "io/VideoReader.h"
 #include "tasks/Feedback.h"
 
 #include <benchmark/benchmark.h>
@@ -20,7 +21,6 @@
 #include <QFileInfo>
 
 #include <opencv2/imgcodecs.hpp>
-#include <opencv2/videoio.hpp>
 
 #include <algorithm>
 #include <memory>
@@ -42,12 +42,10 @@ const AamModel &gridModel()
 
 std::vector<cv::Mat> demoFrames(const std::string &clip)
 {
-    cv::VideoCapture capture(std::string(LIPSYNC_SOURCE_DIR "/resources/demo/media/") + clip + ".mpg",
-                             cv::CAP_FFMPEG);
+    VideoReader video(std::string(LIPSYNC_SOURCE_DIR "/resources/demo/media/") + clip + ".mpg");
     std::vector<cv::Mat> frames;
-    cv::Mat f;
-    while (capture.read(f))
-        frames.push_back(f.clone());
+    for (int i = 0; i < video.frameCount(); ++i)
+        frames.push_back(video.frame(i).clone());
     return frames;
 }
 

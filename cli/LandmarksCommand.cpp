@@ -2,12 +2,12 @@
 // face (issue #3, items 2 and 7). dlib's 68-point predictor when installed, else an AAM fit from
 // the detector (--model), else the template shape placed on the detection.
 #include "Command.h"
-#include "VideoFrames.h"
 
 #include "aam/AamFitter.h"
 #include "aam/FaceDetector.h"
 #include "aam/LandmarkScheme.h"
 #include "aam/PtsFile.h"
+#include "io/VideoReader.h"
 #include "util/Error.h"
 
 #include <QJsonArray>
@@ -22,6 +22,15 @@ using namespace lipsync;
 using namespace lipsync::cli;
 
 namespace {
+
+bool isImageFile(const QString &path)
+{
+    static const QStringList extensions{".jpg", ".jpeg", ".png", ".bmp", ".tif", ".tiff", ".ppm", ".pgm"};
+    for (const QString &ext : extensions)
+        if (path.endsWith(ext, Qt::CaseInsensitive))
+            return true;
+    return false;
+}
 
 int runLandmarksDetect(const QStringList &args)
 {
@@ -44,19 +53,19 @@ int runLandmarksDetect(const QStringList &args)
         return fail("landmarks detect: --frame must be a frame index >= 0", 2);
 
     cv::Mat image;
-    if (isImageFile(input)) {
+    if (isImageFile(QString::fromStdString(input))) {
         if (a.has("frame") && frameIndex != 0)
             return fail("landmarks detect: --frame applies to videos only", 2);
         image = cv::imread(input, cv::IMREAD_COLOR);
         if (image.empty())
             throw Error("cannot read the image", input);
     } else {
-        VideoFrames video(input);
-        for (int i = 0; i <= frameIndex; ++i)
-            if (!video.next(image))
-                throw Error("the video has no frame " + std::to_string(frameIndex) + " ("
-                                + std::to_string(i) + " frames)",
-                            input, "--frame");
+        VideoReader video(input);
+        if (frameIndex >= video.frameCount())
+            throw Error("the video has no frame " + std::to_string(frameIndex) + " ("
+                            + std::to_string(video.frameCount()) + " frames)",
+                        input, "--frame");
+        image = video.frame(frameIndex);
         if (image.empty())
             throw Error("frame " + std::to_string(frameIndex) + " cannot be decoded", input);
     }

@@ -2,13 +2,13 @@
 // frame initialises the next, re-detecting when the fit error jumps) and writes one row per frame
 // with a face: the frame index, then the combined parameters (the paper's y_t).
 #include "Command.h"
-#include "VideoFrames.h"
 
 #include "aam/FaceDetector.h"
 #include "aam/FaceTracker.h"
 #include "aam/PtsFile.h"
 #include "io/AtomicFile.h"
 #include "io/FeatureCsv.h"
+#include "io/VideoReader.h"
 #include "util/Error.h"
 
 #include <QDir>
@@ -40,7 +40,7 @@ int runTrack(const QStringList &args)
     if (!detector.hasYunet() && !detector.hasHaar())
         return fail("track: no face detector available (YuNet model or Haar cascade)");
     FaceTracker tracker(model, &detector);
-    VideoFrames video(videoPath);
+    VideoReader video(videoPath);
 
     std::vector<int> frames;
     std::vector<Eigen::VectorXd> rows;
@@ -51,9 +51,9 @@ int runTrack(const QStringList &args)
     points << "\n";
     int total = 0, noFace = 0, redetections = 0;
     double errorSum = 0.0, seconds = 0.0;
-    cv::Mat frame;
-    while (video.next(frame)) {
-        const int index = total++;
+    for (int index = 0; index < video.frameCount(); ++index) {
+        ++total;
+        const cv::Mat frame = video.frame(index);
         if (frame.empty()) {
             ++noFace;
             tracker.reset();

@@ -2,10 +2,10 @@
 // 23 (when libdlib-data is installed), and no face on a blank frame.
 #include "aam/FaceDetector.h"
 #include "aam/LandmarkScheme.h"
+#include "io/VideoReader.h"
 
 #include <QTest>
 
-#include <opencv2/videoio.hpp>
 
 using namespace lipsync;
 
@@ -13,11 +13,8 @@ namespace {
 
 cv::Mat demoFrame(int index)
 {
-    cv::VideoCapture capture(LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg", cv::CAP_FFMPEG);
-    cv::Mat frame;
-    for (int i = 0; i <= index; ++i)
-        capture.read(frame);
-    return frame;
+    VideoReader video(LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg");
+    return video.frame(index);
 }
 
 } // namespace
