@@ -1,0 +1,244 @@
+// `lipsync aam build` and `lipsync aam eval`: train an AAM from labelled images and measure how well
+// it fits held-out images from the face detector's initialisation (issue #3, items 4, 5, 7).
+#include "Command.h"
+
+#include "aam/AamBuilder.h"
+#include "aam/AamFitter.h"
+#include "aam/FaceDetector.h"
+#include "aam/LandmarkScheme.h"
+#include "tasks/Feedback.h"
+#include "util/Error.h"
+
+#include <QJsonArray>
+#include <QJsonObject>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+using namespace lipsync;
+using namespace lipsync::cli;
+
+namespace {
+
+int runAamBuild(const QStringList &args)
+{
+    const Arguments a(args);
+    if (const QStringList bad = a.unknown({"images", "out", "json", "shape-variance",
+                                           "texture-variance", "combined-variance", "max-modes",
+                                           "eye-distance", "levels"});
+        !bad.isEmpty())
+        return fail("aam build: unknown option " + bad.join(", "), 2);
+    if (!a.has("images") || !a.has("out"))
+        return fail("usage: lipsync aam build --images DIR --out MODEL [--combined-variance F] "
+                    "[--shape-variance F] [--texture-variance F] [--max-modes N] "
+                    "[--eye-distance PX] [--levels N] [--json]",
+                    2);
+    AamBuildOptions options;
+    bool ok = true;
+    auto number = [&](const char *name, double &target) {
+        if (a.has(name)) {
+            bool good = false;
+            target = a.value(name).toDouble(&good);
+            ok = ok && good;
+        }
+    };
+    number("shape-variance", options.shapeVariance);
+    number("texture-variance", options.textureVariance);
+    number("combined-variance", options.combinedVariance);
+    number("eye-distance", options.referenceEyeDistance);
+    double maxModes = 0, levels = options.levels;
+    number("max-modes", maxModes);
+    number("levels", levels);
+    options.maxCombinedModes = int(maxModes);
+    options.levels = int(levels);
+    if (!ok || options.referenceEyeDistance < 8 || options.levels < 1)
+        return fail("aam build: bad numeric option", 2);
+
+    std::vector<std::string> warnings;
+    const auto started = std::chrono::steady_clock::now();
+    std::vector<AamTrainingExample> examples =
+        loadTrainingDirectory(a.value("images").toStdString(), &warnings);
+    Feedback feedback;
+    const bool json = a.flag("json");
+    if (!json)
+        feedback.onStatus = [](const std::string &s) { std::fprintf(stderr, "aam build: %s\n", s.c_str()); };
+    const AamModel model = buildAam(std::move(examples), options, feedback, &warnings);
+    model.save(a.value("out").toStdString());
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    for (const auto &w : warnings)
+        std::fprintf(stderr, "lipsync: warning: %s\n", w.c_str());
+    QJsonArray warningArray;
+    for (const auto &w : warnings)
+        warningArray.append(QString::fromStdString(w));
+    const double shapeTotal = model.shapeVariances.sum();
+    QJsonObject out{{"model", a.value("out")},
+                    {"identifier", QString::fromStdString(model.identifier)},
+                    {"images", model.trainingImages},
+                    {"points", model.pointCount()},
+                    {"triangles", int(model.triangles.size())},
+                    {"shape_modes", model.shapeModes()},
+                    {"texture_modes", model.textureModes()},
+                    {"combined_modes", model.combinedModes()},
+                    {"texture_pixels", model.warp(0).pixelCount()},
+                    {"levels", int(model.levels.size())},
+                    {"shape_variance_total", shapeTotal},
+                    {"seconds", seconds},
+                    {"warnings", warningArray}};
+    if (json)
+        printJson(out);
+    else
+        std::printf("built %s from %d images: %d shape, %d texture, %d combined modes (%s)\n",
+                    qPrintable(a.value("out")), model.trainingImages, model.shapeModes(),
+                    model.textureModes(), model.combinedModes(), model.identifier.c_str());
+    return 0;
+}
+
+double overlap(const cv::Rect2d &a, const cv::Rect2d &b)
+{
+    const double inter = (a & b).area();
+    const double uni = a.area() + b.area() - inter;
+    return uni > 0 ? inter / uni : 0.0;
+}
+
+cv::Rect2d boundingBox(const Eigen::VectorXd &shape)
+{
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (Eigen::Index i = 0; i < shape.size() / 2; ++i) {
+        x0 = std::min(x0, shape[2 * i]);
+        x1 = std::max(x1, shape[2 * i]);
+        y0 = std::min(y0, shape[2 * i + 1]);
+        y1 = std::max(y1, shape[2 * i + 1]);
+    }
+    return {x0, y0, x1 - x0, y1 - y0};
+}
+
+int runAamEval(const QStringList &args)
+{
+    const Arguments a(args);
+    if (const QStringList bad = a.unknown({"model", "images", "json", "init", "levels"}); !bad.isEmpty())
+        return fail("aam eval: unknown option " + bad.join(", "), 2);
+    if (!a.has("model") || !a.has("images"))
+        return fail("usage: lipsync aam eval --model MODEL --images DIR [--init detector|dlib|none] [--json]", 2);
+    const QString init = a.value("init", "detector");
+    if (init != "detector" && init != "dlib" && init != "none")
+        return fail("aam eval: --init must be detector, dlib or none", 2);
+    const AamModel model = AamModel::load(a.value("model").toStdString());
+    const AamFitter fitter(model);
+    FaceDetectorPaths paths;
+    paths.useDlib = init == "dlib"; // loading the predictor takes seconds: only when used
+    FaceDetector detector(paths);
+    if (!detector.hasYunet() && !detector.hasHaar())
+        return fail("aam eval: no face detector available (YuNet model or Haar cascade)");
+    if (init == "dlib" && !detector.hasDlib())
+        return fail("aam eval: --init dlib needs /usr/share/dlib/shape_predictor_68_face_landmarks.dat");
+    std::vector<std::string> warnings;
+    std::vector<AamTrainingExample> examples =
+        loadTrainingDirectory(a.value("images").toStdString(), &warnings);
+
+    std::vector<double> nmes, initNmes;
+    int noFace = 0;
+    double fitSeconds = 0.0, detectSeconds = 0.0;
+    QJsonArray perImage;
+    for (auto &e : examples) {
+        const cv::Mat image = cv::imread(e.imagePath, cv::IMREAD_COLOR);
+        if (image.empty()) {
+            warnings.push_back(e.name + ": cannot read the image");
+            continue;
+        }
+        const auto t0 = std::chrono::steady_clock::now();
+        const std::vector<FaceDetection> faces = detector.detect(image);
+        // The detection that overlaps the labelled face most (images may hold several faces).
+        const cv::Rect2d truthBox = boundingBox(e.shape);
+        const FaceDetection *best = nullptr;
+        double bestOverlap = 0.0;
+        for (const auto &f : faces) {
+            const double o = overlap(f.box, truthBox);
+            if (o > bestOverlap) {
+                bestOverlap = o;
+                best = &f;
+            }
+        }
+        Eigen::VectorXd start;
+        if (best && init == "dlib") {
+            const Eigen::VectorXd points = detector.dlibLandmarks(image, *best);
+            if (points.size() == 136)
+                start = mapIbug68To23(points);
+        } else if (best) {
+            start = initialShapeFromDetection(model.meanShape, *best);
+        }
+        const auto t1 = std::chrono::steady_clock::now();
+        detectSeconds += std::chrono::duration<double>(t1 - t0).count();
+        if (start.size() == 0) {
+            ++noFace;
+            perImage.append(QJsonObject{{"image", QString::fromStdString(e.name)}, {"face", false}});
+            continue;
+        }
+        AamFitResult fit;
+        fit.shape = start;
+        if (init != "none") {
+            const auto t2 = std::chrono::steady_clock::now();
+            fit = fitter.fit(image, start);
+            fitSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
+        }
+        const double nme = normalisedMeanError(fit.shape, e.shape);
+        const double nme0 = normalisedMeanError(start, e.shape);
+        nmes.push_back(nme);
+        initNmes.push_back(nme0);
+        perImage.append(QJsonObject{{"image", QString::fromStdString(e.name)},
+                                    {"face", true},
+                                    {"nme", nme},
+                                    {"nme_init", nme0},
+                                    {"fit_error", fit.error},
+                                    {"iterations", fit.iterations}});
+    }
+    auto mean = [](const std::vector<double> &v) {
+        double s = 0;
+        for (double x : v)
+            s += x;
+        return v.empty() ? 0.0 : s / double(v.size());
+    };
+    auto median = [](std::vector<double> v) {
+        if (v.empty())
+            return 0.0;
+        std::sort(v.begin(), v.end());
+        const size_t m = v.size() / 2;
+        return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+    };
+    for (const auto &w : warnings)
+        std::fprintf(stderr, "lipsync: warning: %s\n", w.c_str());
+    const int fitted = int(nmes.size());
+    QJsonObject out{{"images", fitted + noFace},
+                    {"fitted", fitted},
+                    {"no_face", noFace},
+                    {"init", init},
+                    {"nme_mean", mean(nmes)},
+                    {"nme_median", median(nmes)},
+                    {"nme_init_mean", mean(initNmes)},
+                    {"nme_init_median", median(initNmes)},
+                    {"fps", fitSeconds > 0 ? fitted / fitSeconds : 0.0},
+                    {"fps_with_detection",
+                     fitSeconds + detectSeconds > 0 ? fitted / (fitSeconds + detectSeconds) : 0.0},
+                    {"detector", QString::fromStdString(detector.available())},
+                    {"model", QString::fromStdString(model.identifier)},
+                    {"per_image", perImage}};
+    if (a.flag("json")) {
+        printJson(out);
+    } else {
+        std::printf("%d images (%d without a face): NME mean %.4f median %.4f (init %.4f), %.1f fits/s\n",
+                    fitted + noFace, noFace, mean(nmes), median(nmes), mean(initNmes),
+                    out["fps"].toDouble());
+    }
+    return fitted > 0 ? 0 : 1;
+}
+
+const CommandRegistration buildRegistration{
+    "aam build", "train an AAM from images with .pts landmarks (--images DIR --out MODEL)", &runAamBuild};
+const CommandRegistration evalRegistration{
+    "aam eval", "fit an AAM to labelled images from the detector and report NME (--model --images)",
+    &runAamEval};
+
+} // namespace

@@ -1,0 +1,136 @@
+// `lipsync landmarks detect IMAGE|VIDEO [--frame N] --out FILE.pts`: automatic 23 points for a
+// face (issue #3, items 2 and 7). dlib's 68-point predictor when installed, else an AAM fit from
+// the detector (--model), else the template shape placed on the detection.
+#include "Command.h"
+
+#include "aam/AamFitter.h"
+#include "aam/FaceDetector.h"
+#include "aam/LandmarkScheme.h"
+#include "aam/PtsFile.h"
+#include "io/VideoReader.h"
+#include "util/Error.h"
+
+#include <QJsonArray>
+#include <QJsonObject>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <cstdio>
+#include <optional>
+
+using namespace lipsync;
+using namespace lipsync::cli;
+
+namespace {
+
+bool isImageFile(const QString &path)
+{
+    static const QStringList extensions{".jpg", ".jpeg", ".png", ".bmp", ".tif", ".tiff", ".ppm", ".pgm"};
+    for (const QString &ext : extensions)
+        if (path.endsWith(ext, Qt::CaseInsensitive))
+            return true;
+    return false;
+}
+
+int runLandmarksDetect(const QStringList &args)
+{
+    const Arguments a(args);
+    if (const QStringList bad = a.unknown({"frame", "out", "json", "model", "method"}); !bad.isEmpty())
+        return fail("landmarks detect: unknown option " + bad.join(", "), 2);
+    if (a.positional().size() != 1 || !a.has("out"))
+        return fail("usage: lipsync landmarks detect IMAGE|VIDEO [--frame N] --out FILE.pts "
+                    "[--method auto|dlib|aam|template] [--model MODEL] [--json]",
+                    2);
+    const std::string input = a.positional().front().toStdString();
+    const QString method = a.value("method", "auto");
+    if (!QStringList{"auto", "dlib", "aam", "template"}.contains(method))
+        return fail("landmarks detect: --method must be auto, dlib, aam or template", 2);
+    if (method == "aam" && !a.has("model"))
+        return fail("landmarks detect: --method aam needs --model MODEL", 2);
+    bool ok = true;
+    const int frameIndex = a.value("frame", "0").toInt(&ok);
+    if (!ok || frameIndex < 0)
+        return fail("landmarks detect: --frame must be a frame index >= 0", 2);
+
+    cv::Mat image;
+    if (isImageFile(QString::fromStdString(input))) {
+        if (a.has("frame") && frameIndex != 0)
+            return fail("landmarks detect: --frame applies to videos only", 2);
+        image = cv::imread(input, cv::IMREAD_COLOR);
+        if (image.empty())
+            throw Error("cannot read the image", input);
+    } else {
+        VideoReader video(input);
+        if (frameIndex >= video.frameCount())
+            throw Error("the video has no frame " + std::to_string(frameIndex) + " ("
+                            + std::to_string(video.frameCount()) + " frames)",
+                        input, "--frame");
+        image = video.frame(frameIndex);
+        if (image.empty())
+            throw Error("frame " + std::to_string(frameIndex) + " cannot be decoded", input);
+    }
+
+    FaceDetectorPaths paths;
+    paths.useDlib = method == "auto" || method == "dlib";
+    FaceDetector detector(paths);
+    const std::vector<FaceDetection> faces = detector.detect(image);
+    if (faces.empty())
+        return fail(QString::fromStdString(input) + ": no face found"
+                    + (a.has("frame") ? QStringLiteral(" in frame %1").arg(frameIndex) : QString())
+                    + " (detectors: " + QString::fromStdString(detector.available()) + ")");
+    const FaceDetection &face = faces.front();
+
+    std::optional<AamModel> model;
+    if (a.has("model"))
+        model = AamModel::load(a.value("model").toStdString());
+
+    Eigen::VectorXd shape;
+    QString used;
+    if ((method == "auto" || method == "dlib") && detector.hasDlib()) {
+        const Eigen::VectorXd ibug = detector.dlibLandmarks(image, face);
+        if (ibug.size() == 136) {
+            shape = mapIbug68To23(ibug);
+            used = "dlib";
+        }
+    }
+    if (method == "dlib" && shape.size() == 0)
+        return fail("landmarks detect: dlib's shape predictor is not available "
+                    "(install libdlib-data)");
+    if (shape.size() == 0 && model && method != "template") {
+        const AamFitter fitter(*model);
+        shape = fitter.fit(image, initialShapeFromDetection(model->meanShape, face)).shape;
+        used = "aam";
+    }
+    if (shape.size() == 0) {
+        shape = initialShapeFromDetection(templateShape(), face);
+        used = "template";
+    }
+    const std::string out = a.value("out").toStdString();
+    writePtsFile(out, shape);
+
+    if (a.flag("json")) {
+        QJsonArray points;
+        for (int i = 0; i < scheme23::kPointCount; ++i)
+            points.append(QJsonArray{shape[2 * i], shape[2 * i + 1]});
+        printJson(QJsonObject{
+            {"input", QString::fromStdString(input)},
+            {"frame", frameIndex},
+            {"out", QString::fromStdString(out)},
+            {"method", used},
+            {"points", points},
+            {"face", QJsonObject{{"x", face.box.x}, {"y", face.box.y}, {"width", face.box.width},
+                                 {"height", face.box.height}, {"score", face.score},
+                                 {"detector", QString::fromStdString(face.source)}}},
+            {"faces", int(faces.size())},
+            {"state", "automatic"}});
+    } else {
+        std::printf("%s: 23 points (%s) -> %s\n", input.c_str(), qPrintable(used), out.c_str());
+    }
+    return 0;
+}
+
+const CommandRegistration registration{
+    "landmarks detect", "automatic 23 face points for an image or video frame (--out FILE.pts)",
+    &runLandmarksDetect};
+
+} // namespace

@@ -1,0 +1,238 @@
+#include "aam/AamBuilder.h"
+
+#include "aam/AamFitter.h"
+
+#include "aam/LandmarkScheme.h"
+#include "aam/PtsFile.h"
+#include "aam/TextureNormalisation.h"
+#include "tasks/Feedback.h"
+#include "util/Error.h"
+
+#include <QDir>
+#include <QFileInfo>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+
+namespace lipsync {
+
+namespace {
+
+double eyeDistance(const Eigen::VectorXd &shape)
+{
+    return (shape.segment<2>(2 * scheme23::kLeftEyeOuter)
+            - shape.segment<2>(2 * scheme23::kRightEyeOuter))
+        .norm();
+}
+
+// Why an example cannot be used, or empty.
+std::string checkExample(const AamTrainingExample &e)
+{
+    if (e.shape.size() != 2 * scheme23::kPointCount)
+        return "has " + std::to_string(e.shape.size() / 2) + " points, expected 23";
+    if (!e.shape.allFinite())
+        return "has non-finite points";
+    if (shapeSpread(e.shape) < 1.0 || eyeDistance(e.shape) < 2.0)
+        return "has a degenerate shape (points coincide or lie on a line)";
+    for (int i = 0; i < scheme23::kPointCount; ++i) {
+        const double x = e.shape[2 * i], y = e.shape[2 * i + 1];
+        if (x < 0 || y < 0 || x > e.image.cols - 1 || y > e.image.rows - 1)
+            return "point " + std::to_string(i) + " (" + landmarkDefinitions()[size_t(i)].name
+                   + ") lies outside the " + std::to_string(e.image.cols) + "x"
+                   + std::to_string(e.image.rows) + " image";
+    }
+    return {};
+}
+
+} // namespace
+
+std::vector<AamTrainingExample> loadTrainingDirectory(const std::string &directory,
+                                                      std::vector<std::string> *warnings)
+{
+    const QDir dir(QString::fromStdString(directory));
+    if (!dir.exists())
+        throw Error("directory does not exist", directory);
+    const QStringList images = dir.entryList(
+        {"*.jpg", "*.jpeg", "*.png", "*.bmp", "*.JPG", "*.PNG", "*.JPEG"}, QDir::Files, QDir::Name);
+    std::vector<AamTrainingExample> out;
+    for (const QString &name : images) {
+        const QString pts = dir.filePath(QFileInfo(name).completeBaseName() + ".pts");
+        if (!QFileInfo::exists(pts)) {
+            if (warnings)
+                warnings->push_back(name.toStdString() + ": no .pts beside it, skipped");
+            continue;
+        }
+        AamTrainingExample e;
+        e.name = name.toStdString();
+        e.imagePath = dir.filePath(name).toStdString();
+        try {
+            e.shape = readFaceShape(pts.toStdString());
+        } catch (const Error &error) {
+            if (warnings)
+                warnings->push_back(std::string(error.what()) + ", skipped");
+            continue;
+        }
+        out.push_back(std::move(e));
+    }
+    if (out.empty())
+        throw Error("no labelled images (image files with a .pts of the same name)", directory);
+    return out;
+}
+
+AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOptions &options,
+                  Feedback &feedback, std::vector<std::string> *warnings)
+{
+    auto warn = [&](const std::string &w) {
+        if (warnings)
+            warnings->push_back(w);
+    };
+    const int levelCount = std::clamp(options.levels, 1, 4);
+    feedback.setStatus("reading images");
+
+    // 1. Read, check and pre-scale every image so the face is about reference size: the warp
+    //    then samples without aliasing and memory stays small.
+    std::vector<AamTrainingExample> usable;
+    for (size_t i = 0; i < examples.size(); ++i) {
+        feedback.throwIfCanceled();
+        feedback.setProgress(0.4 * double(i) / double(examples.size()));
+        AamTrainingExample &e = examples[i];
+        if (e.image.empty() && !e.imagePath.empty())
+            e.image = cv::imread(e.imagePath, cv::IMREAD_COLOR);
+        if (e.image.empty()) {
+            warn(e.name + ": cannot read the image, skipped");
+            continue;
+        }
+        if (e.image.type() == CV_8UC1)
+            cv::cvtColor(e.image, e.image, cv::COLOR_GRAY2BGR);
+        if (e.image.type() != CV_8UC3) {
+            warn(e.name + ": not an 8-bit image, skipped");
+            continue;
+        }
+        if (const std::string why = checkExample(e); !why.empty()) {
+            warn(e.name + ": " + why + ", skipped");
+            continue;
+        }
+        const double f = options.referenceEyeDistance / eyeDistance(e.shape);
+        if (f < 0.8) {
+            cv::Mat small;
+            cv::resize(e.image, small, cv::Size(), f, f, cv::INTER_AREA);
+            e.image = small;
+            e.shape = (e.shape.array() + 0.5) * f - 0.5;
+        }
+        usable.push_back(std::move(e));
+    }
+    const int n = int(usable.size());
+    if (n < 3)
+        throw Error("need at least 3 usable training images, found " + std::to_string(n));
+
+    // 2. Shape model.
+    feedback.setStatus("aligning shapes");
+    std::vector<Eigen::VectorXd> shapes;
+    for (const auto &e : usable)
+        shapes.push_back(e.shape);
+    const ProcrustesResult gpa = generalisedProcrustes(shapes);
+    Eigen::MatrixXd shapeData(gpa.mean.size(), n);
+    for (int i = 0; i < n; ++i)
+        shapeData.col(i) = gpa.aligned[size_t(i)];
+    const Pca shapePca = computePca(shapeData, options.shapeVariance);
+    if (shapePca.modes() == 0)
+        throw Error("the training shapes do not vary; label more different frames");
+
+    AamModel model;
+    model.meanShape = gpa.mean;
+    model.shapeBasis = shapePca.basis;
+    model.shapeVariances = shapePca.variances;
+    model.triangles = delaunayTriangles(gpa.mean * 1000.0);
+    model.referenceScale = options.referenceEyeDistance / eyeDistance(gpa.mean);
+    for (int l = 0; l < levelCount; ++l) {
+        AamTextureLevel level;
+        level.scale = std::pow(0.5, l);
+        model.levels.push_back(level);
+    }
+    model.prepare();
+    model.trainingImages = n;
+
+    // 3. Textures: colour at level 0 for the combined model, grey at each level for fitting.
+    feedback.setStatus("sampling textures");
+    const int colourSize = 3 * model.warp(0).pixelCount();
+    Eigen::MatrixXd colour(colourSize, n);
+    std::vector<Eigen::MatrixXd> grey;
+    grey.resize(size_t(levelCount));
+    for (int l = 0; l < levelCount; ++l)
+        grey[size_t(l)].resize(model.warp(l).pixelCount(), n);
+    double scaleSum = 0.0, offsetSum = 0.0;
+    std::vector<float> buffer;
+    for (int i = 0; i < n; ++i) {
+        feedback.throwIfCanceled();
+        feedback.setProgress(0.4 + 0.4 * double(i) / n);
+        const AamTrainingExample &e = usable[size_t(i)];
+        buffer.resize(size_t(colourSize));
+        model.warp(0).sampleColour(e.image, e.shape, buffer.data());
+        const PhotometricTransform t = normaliseTexture(buffer.data(), buffer.size());
+        scaleSum += t.scale;
+        offsetSum += t.offset;
+        colour.col(i) = Eigen::Map<Eigen::VectorXf>(buffer.data(), colourSize).cast<double>();
+
+        cv::Mat g;
+        cv::cvtColor(e.image, g, cv::COLOR_BGR2GRAY);
+        g.convertTo(g, CV_32F);
+        const double imageScale = model.referenceScale / shapeSize(e.shape);
+        for (int l = 0; l < levelCount; ++l) {
+            const double f = imageScale * model.levels[size_t(l)].scale;
+            cv::Mat gl = g;
+            Eigen::VectorXd s = e.shape;
+            if (f < 0.8) {
+                cv::resize(g, gl, cv::Size(), f, f, cv::INTER_AREA);
+                s = (s.array() + 0.5) * f - 0.5;
+            }
+            const int count = model.warp(l).pixelCount();
+            buffer.resize(size_t(count));
+            model.warp(l).sampleGrey(smoothedForFitting(gl), s, buffer.data());
+            normaliseTexture(buffer.data(), buffer.size());
+            grey[size_t(l)].col(i) = Eigen::Map<Eigen::VectorXf>(buffer.data(), count).cast<double>();
+        }
+    }
+    model.meanTextureScale = scaleSum / n;
+    model.meanTextureOffset = offsetSum / n;
+
+    feedback.setStatus("texture PCA");
+    feedback.throwIfCanceled();
+    const Pca texturePca = computePca(colour, options.textureVariance);
+    model.textureMean = texturePca.mean;
+    model.textureBasis = texturePca.basis;
+    model.textureVariances = texturePca.variances;
+    feedback.setProgress(0.85);
+    for (int l = 0; l < levelCount; ++l) {
+        feedback.throwIfCanceled();
+        const Pca p = computePca(grey[size_t(l)], options.textureVariance);
+        auto &level = model.levels[size_t(l)];
+        level.mean = p.mean;
+        level.basis = p.basis;
+        level.variances = p.variances;
+    }
+    feedback.setProgress(0.95);
+
+    // 4. Combined model (Cootes et al. 2001, eq. 4-5).
+    feedback.setStatus("combined PCA");
+    const double shapeVar = std::max(1e-12, model.shapeVariances.sum());
+    const double textureVar = model.textureVariances.sum();
+    model.shapeWeight = textureVar > 0 ? std::sqrt(textureVar / shapeVar) : 1.0;
+    const int ns = model.shapeModes(), ng = model.textureModes();
+    Eigen::MatrixXd joint(ns + ng, n);
+    for (int i = 0; i < n; ++i) {
+        joint.col(i).head(ns) =
+            model.shapeWeight * shapePca.basis.transpose() * (shapeData.col(i) - model.meanShape);
+        joint.col(i).tail(ng) = texturePca.basis.transpose() * (colour.col(i) - texturePca.mean);
+    }
+    const Pca combined = computePca(joint, options.combinedVariance, options.maxCombinedModes, false);
+    model.combinedBasis = combined.basis;
+    model.combinedVariances = combined.variances;
+    model.identifier = model.computeIdentifier();
+    feedback.setProgress(1.0);
+    feedback.setStatus("done");
+    return model;
+}
+
+} // namespace lipsync

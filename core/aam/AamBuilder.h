@@ -1,0 +1,50 @@
+#pragma once
+// Trains an AamModel from labelled images (Cootes, Edwards & Taylor 2001, §3-4): generalised
+// Procrustes alignment and shape PCA, Delaunay triangulation of the mean shape, piecewise-affine
+// warp of every image to it, photometric normalisation and texture PCA, then the combined PCA of
+// [Ws b_s; b_g] with Ws = r I, r^2 = (texture variance) / (shape variance).
+#include "aam/AamModel.h"
+
+#include <opencv2/core.hpp>
+
+#include <string>
+#include <vector>
+
+namespace lipsync {
+
+class Feedback;
+
+struct AamTrainingExample
+{
+    std::string name;      // for messages (file name)
+    std::string imagePath; // read when `image` is empty
+    cv::Mat image;         // BGR 8-bit (grey is converted)
+    Eigen::VectorXd shape; // 23 points, flat, 0-based pixels
+};
+
+struct AamBuildOptions
+{
+    // Fractions of variance retained. The defaults give ~30 combined modes on 100 Helen faces,
+    // near the paper's 32 (§4).
+    double shapeVariance = 0.95;
+    double textureVariance = 0.95;
+    double combinedVariance = 0.95;
+    int maxCombinedModes = 0; // 0: no cap
+    // Size of the level-0 reference frame: pixels between the outer eye corners.
+    double referenceEyeDistance = 50.0;
+    int levels = 2; // resolution levels for fitting, each half the previous
+};
+
+// Images with a .pts of the same stem (68 or 23 points) in `directory`, sorted by name. Throws
+// lipsync::Error if the directory does not exist or holds no labelled image. `warnings` receives
+// one line per image without landmarks or with an unreadable .pts.
+std::vector<AamTrainingExample> loadTrainingDirectory(const std::string &directory,
+                                                      std::vector<std::string> *warnings = nullptr);
+
+// Builds the model. Examples that cannot be used (unreadable image, points outside the image,
+// degenerate shape) are skipped with a line in `warnings`. Throws lipsync::Error when fewer than
+// 3 usable examples remain, or Canceled when `feedback` is canceled.
+AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOptions &options,
+                  Feedback &feedback, std::vector<std::string> *warnings = nullptr);
+
+} // namespace lipsync

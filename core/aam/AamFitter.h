@@ -1,0 +1,84 @@
+#pragma once
+// Fits an AamModel to an image: project-out inverse compositional image alignment (Matthews &
+// Baker, "Active Appearance Models Revisited", IJCV 2004, §4) with a global similarity folded
+// into the shape basis, coarse to fine over the model's resolution levels. The steepest-descent
+// images and the Hessian are precomputed per level, so one iteration is a warp, a dot product
+// with a (params x pixels) matrix and a compositional update of the 23 vertices. After each
+// update the shape is projected back onto the shape model (clamped to +-3 s.d.), which is also
+// where points a user fixed are honoured (weighted projection that keeps them in place).
+#include "aam/AamModel.h"
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include <vector>
+
+namespace lipsync {
+
+// Grey images are smoothed (Gaussian, sigma 1 pixel of the level frame) before sampling, in training
+// and fitting alike: it widens the basin of convergence of the Gauss-Newton steps.
+cv::Mat smoothedForFitting(const cv::Mat &grey);
+
+struct AamFitOptions
+{
+    int maxIterations = 30;     // per level
+    double tolerance = 0.03;    // stop when no vertex moves more (pixels of the level frame)
+    int coarsestLevel = -1;     // -1: the model's coarsest; 0 to fit the finest level only
+    double shapeLimit = 3.0;    // shape parameters are clamped to this many s.d.
+    // Points that must stay where they are (PointState::Fixed): flat shape and a mask.
+    Eigen::VectorXd fixedShape;
+    std::vector<bool> fixedMask;
+};
+
+struct AamFitResult
+{
+    Eigen::VectorXd shape;       // fitted 23 points, image coordinates
+    Similarity pose;             // model (normalised) coordinates -> image
+    Eigen::VectorXd shapeParams; // b_s
+    double error = 0.0;          // mean squared normalised texture residual after fitting
+    int iterations = 0;
+    bool converged = false;
+};
+
+class AamFitter
+{
+public:
+    explicit AamFitter(const AamModel &model);
+
+    const AamModel &model() const { return m_model; }
+
+    // `image`: BGR or grey 8-bit. `initialShape`: 23 points in image coordinates.
+    AamFitResult fit(const cv::Mat &image, const Eigen::VectorXd &initialShape,
+                     const AamFitOptions &options = {}) const;
+
+    // Combined parameters c (the paper's y_t) of a fitted face: shape parameters from the fit,
+    // texture parameters from the colour texture under the fitted shape.
+    Eigen::VectorXd features(const cv::Mat &bgrImage, const AamFitResult &fit,
+                             Eigen::VectorXd *textureParams = nullptr) const;
+
+    // Projects an image-space shape onto the shape model: the similarity and the shape
+    // parameters (clamped to `limit` s.d.) of the closest model shape, with optional per-point
+    // weights (fixed points weigh heavily). Returns the model shape in image coordinates.
+    Eigen::VectorXd projectShape(const Eigen::VectorXd &shape, Similarity &pose,
+                                 Eigen::VectorXd &params, double limit = 3.0,
+                                 const Eigen::VectorXd &weights = {}) const;
+
+    // Shape from a pose and shape parameters.
+    Eigen::VectorXd modelShape(const Similarity &pose, const Eigen::VectorXd &params) const;
+
+private:
+    struct Level
+    {
+        Eigen::VectorXd reference;    // s0 in reference pixels
+        Eigen::VectorXf templateMean; // A0
+        Eigen::MatrixXf appearance;   // A (pixels x m)
+        Eigen::MatrixXd basis;        // B (2k x P), orthonormal: similarity + shape
+        Eigen::MatrixXf update;       // (SD^T SD)^-1 SD^T  (P x pixels)
+    };
+    void prepareLevel(int level);
+
+    const AamModel &m_model;
+    std::vector<Level> m_levels;
+};
+
+} // namespace lipsync

@@ -1,0 +1,263 @@
+#include "aam/AamModel.h"
+
+#include "io/AtomicFile.h"
+#include "util/Error.h"
+
+#include <QCryptographicHash>
+#include <QByteArray>
+
+#include <cstring>
+
+namespace lipsync {
+
+namespace {
+
+constexpr char kMagic[8] = {'L', 'S', 'A', 'A', 'M', '\n', '\x1a', '\0'};
+constexpr double kMargin = 2.0;
+
+class Writer
+{
+public:
+    void raw(const void *data, size_t size) { m_out.append(static_cast<const char *>(data), size); }
+    void i32(int v) { raw(&v, sizeof v); }
+    void f64(double v) { raw(&v, sizeof v); }
+    void str(const std::string &s)
+    {
+        i32(int(s.size()));
+        raw(s.data(), s.size());
+    }
+    void vec(const Eigen::VectorXd &v)
+    {
+        i32(int(v.size()));
+        raw(v.data(), sizeof(double) * size_t(v.size()));
+    }
+    void mat(const Eigen::MatrixXd &m)
+    {
+        i32(int(m.rows()));
+        i32(int(m.cols()));
+        raw(m.data(), sizeof(double) * size_t(m.size()));
+    }
+    std::string &out() { return m_out; }
+
+private:
+    std::string m_out;
+};
+
+class Reader
+{
+public:
+    Reader(const std::string &data, const std::string &path) : m_data(data), m_path(path) {}
+    void raw(void *out, size_t size)
+    {
+        if (m_pos + size > m_data.size())
+            throw Error("truncated AAM file", m_path);
+        std::memcpy(out, m_data.data() + m_pos, size);
+        m_pos += size;
+    }
+    int i32()
+    {
+        int v = 0;
+        raw(&v, sizeof v);
+        return v;
+    }
+    int count(const char *what)
+    {
+        const int v = i32();
+        if (v < 0 || size_t(v) > m_data.size())
+            throw Error("corrupt AAM file", m_path, what);
+        return v;
+    }
+    double f64()
+    {
+        double v = 0;
+        raw(&v, sizeof v);
+        return v;
+    }
+    std::string str(const char *what)
+    {
+        std::string s(size_t(count(what)), '\0');
+        raw(s.data(), s.size());
+        return s;
+    }
+    Eigen::VectorXd vec(const char *what)
+    {
+        Eigen::VectorXd v(count(what));
+        raw(v.data(), sizeof(double) * size_t(v.size()));
+        return v;
+    }
+    Eigen::MatrixXd mat(const char *what)
+    {
+        const int r = count(what), c = count(what);
+        if (double(r) * double(c) * 8 > double(m_data.size()))
+            throw Error("corrupt AAM file", m_path, what);
+        Eigen::MatrixXd m(r, c);
+        raw(m.data(), sizeof(double) * size_t(m.size()));
+        return m;
+    }
+    bool atEnd() const { return m_pos == m_data.size(); }
+
+private:
+    const std::string &m_data;
+    const std::string &m_path;
+    size_t m_pos = 0;
+};
+
+} // namespace
+
+Similarity AamModel::referenceTransform(int level) const
+{
+    const double scale = referenceScale * levels.at(size_t(level)).scale;
+    double minX = 1e300, minY = 1e300;
+    for (int i = 0; i < pointCount(); ++i) {
+        minX = std::min(minX, scale * meanShape[2 * i]);
+        minY = std::min(minY, scale * meanShape[2 * i + 1]);
+    }
+    Similarity t;
+    t.a = scale;
+    t.tx = kMargin - minX;
+    t.ty = kMargin - minY;
+    return t;
+}
+
+Eigen::VectorXd AamModel::referenceShape(int level) const
+{
+    return referenceTransform(level).apply(meanShape);
+}
+
+void AamModel::prepare()
+{
+    m_warps.clear();
+    for (int l = 0; l < int(levels.size()); ++l)
+        m_warps.emplace_back(referenceShape(l), triangles);
+}
+
+Eigen::VectorXd AamModel::combinedFromParts(const Eigen::VectorXd &shapeParams,
+                                            const Eigen::VectorXd &textureParams) const
+{
+    Eigen::VectorXd joint(shapeParams.size() + textureParams.size());
+    joint << shapeWeight * shapeParams, textureParams;
+    return combinedBasis.transpose() * joint;
+}
+
+void AamModel::partsFromCombined(const Eigen::VectorXd &combined, Eigen::VectorXd &shapeParams,
+                                 Eigen::VectorXd &textureParams) const
+{
+    const Eigen::VectorXd joint = combinedBasis * combined;
+    shapeParams = joint.head(shapeModes()) / shapeWeight;
+    textureParams = joint.tail(textureModes());
+}
+
+std::string AamModel::serialise(bool withIdentifier) const
+{
+    Writer w;
+    w.raw(kMagic, sizeof kMagic);
+    w.i32(kFormatVersion);
+    w.str(withIdentifier ? identifier : std::string());
+    w.i32(trainingImages);
+    w.vec(meanShape);
+    w.mat(shapeBasis);
+    w.vec(shapeVariances);
+    w.i32(int(triangles.size()));
+    for (const auto &t : triangles)
+        for (int v : t)
+            w.i32(v);
+    w.f64(referenceScale);
+    w.vec(textureMean);
+    w.mat(textureBasis);
+    w.vec(textureVariances);
+    w.f64(meanTextureScale);
+    w.f64(meanTextureOffset);
+    w.f64(shapeWeight);
+    w.mat(combinedBasis);
+    w.vec(combinedVariances);
+    w.i32(int(levels.size()));
+    for (const auto &l : levels) {
+        w.f64(l.scale);
+        w.vec(l.mean);
+        w.mat(l.basis);
+        w.vec(l.variances);
+    }
+    return std::move(w.out());
+}
+
+std::string AamModel::computeIdentifier() const
+{
+    const std::string bytes = serialise(false);
+    const QByteArray hash = QCryptographicHash::hash(
+        QByteArray::fromRawData(bytes.data(), qsizetype(bytes.size())), QCryptographicHash::Sha1);
+    return "aam-" + hash.toHex().left(16).toStdString();
+}
+
+void AamModel::save(const std::string &path) const
+{
+    writeFileAtomically(path, serialise(true));
+}
+
+AamModel AamModel::load(const std::string &path)
+{
+    const std::string data = readWholeFile(path);
+    if (data.size() < sizeof kMagic || std::memcmp(data.data(), kMagic, sizeof kMagic) != 0)
+        throw Error("not an AAM model file (bad magic)", path);
+    Reader r(data, path);
+    char magic[sizeof kMagic];
+    r.raw(magic, sizeof magic);
+    const int version = r.i32();
+    if (version != kFormatVersion)
+        throw Error("unsupported AAM file version " + std::to_string(version) + " (expected "
+                        + std::to_string(kFormatVersion) + ")",
+                    path, "version");
+    AamModel m;
+    m.identifier = r.str("identifier");
+    m.trainingImages = r.i32();
+    m.meanShape = r.vec("meanShape");
+    m.shapeBasis = r.mat("shapeBasis");
+    m.shapeVariances = r.vec("shapeVariances");
+    const int nt = r.count("triangles");
+    const int np = m.pointCount();
+    for (int i = 0; i < nt; ++i) {
+        Triangle t{r.i32(), r.i32(), r.i32()};
+        for (int v : t)
+            if (v < 0 || v >= np)
+                throw Error("triangle vertex out of range", path, "triangles");
+        m.triangles.push_back(t);
+    }
+    m.referenceScale = r.f64();
+    m.textureMean = r.vec("textureMean");
+    m.textureBasis = r.mat("textureBasis");
+    m.textureVariances = r.vec("textureVariances");
+    m.meanTextureScale = r.f64();
+    m.meanTextureOffset = r.f64();
+    m.shapeWeight = r.f64();
+    m.combinedBasis = r.mat("combinedBasis");
+    m.combinedVariances = r.vec("combinedVariances");
+    const int nl = r.count("levels");
+    for (int i = 0; i < nl; ++i) {
+        AamTextureLevel l;
+        l.scale = r.f64();
+        l.mean = r.vec("levels");
+        l.basis = r.mat("levels");
+        l.variances = r.vec("levels");
+        m.levels.push_back(std::move(l));
+    }
+    if (!r.atEnd())
+        throw Error("trailing data after the AAM model", path);
+    // Consistency: sizes must agree or fitting would read out of bounds.
+    const bool ok = np >= 3 && m.shapeBasis.rows() == m.meanShape.size()
+                    && m.shapeVariances.size() == m.shapeBasis.cols() && nt > 0 && nl > 0
+                    && m.textureBasis.rows() == m.textureMean.size()
+                    && m.textureVariances.size() == m.textureBasis.cols()
+                    && m.combinedBasis.rows() == m.shapeModes() + m.textureModes()
+                    && m.referenceScale > 0 && m.shapeWeight > 0;
+    if (!ok)
+        throw Error("inconsistent AAM model (sizes disagree)", path);
+    m.prepare();
+    if (m.textureMean.size() != 3 * m.warp(0).pixelCount())
+        throw Error("inconsistent AAM model (texture size)", path);
+    for (int l = 0; l < nl; ++l)
+        if (m.levels[size_t(l)].mean.size() != m.warp(l).pixelCount()
+            || m.levels[size_t(l)].basis.rows() != m.warp(l).pixelCount())
+            throw Error("inconsistent AAM model (level texture size)", path);
+    return m;
+}
+
+} // namespace lipsync

@@ -1,0 +1,94 @@
+#pragma once
+// A trained Active Appearance Model (Cootes, Edwards & Taylor 2001): the shape model (mean and
+// modes of the Procrustes-aligned 23 points), the texture model (colour, photometrically
+// normalised, in the triangulated mean-shape frame), and the combined model whose parameters c
+// are the paper's face features y_t (§4: "a 32 parameter model proves sufficient"). It also
+// keeps grey texture models at each resolution level for fitting.
+//
+// Texture: colour (B, G, R) for the combined model and synthesis, normalised per image by one
+// offset and scale over all channels (so colour balance is kept); the fitter works on grey
+// (normalised to zero mean, unit variance), which is what makes it fast.
+#include "aam/Pca.h"
+#include "aam/PiecewiseAffineWarp.h"
+#include "aam/Procrustes.h"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace lipsync {
+
+struct AamTextureLevel
+{
+    double scale = 1.0;       // size relative to level 0
+    Eigen::VectorXd mean;     // grey, normalised, one value per reference pixel
+    Eigen::MatrixXd basis;    // pixels x modes
+    Eigen::VectorXd variances;
+};
+
+class AamModel
+{
+public:
+    static constexpr int kFormatVersion = 1;
+
+    // Shape model, in normalised (centred, unit size) coordinates.
+    Eigen::VectorXd meanShape;
+    Eigen::MatrixXd shapeBasis;
+    Eigen::VectorXd shapeVariances;
+    std::vector<Triangle> triangles;
+    // Pixels per normalised unit of the level-0 reference frame.
+    double referenceScale = 100.0;
+
+    // Colour texture model (3 values per level-0 reference pixel).
+    Eigen::VectorXd textureMean;
+    Eigen::MatrixXd textureBasis;
+    Eigen::VectorXd textureVariances;
+    double meanTextureScale = 50.0;   // average photometric scale alpha of the training images
+    double meanTextureOffset = 128.0; // average photometric offset beta
+
+    // Combined model: c = Q^T [Ws b_s; b_g].
+    double shapeWeight = 1.0;
+    Eigen::MatrixXd combinedBasis; // (ns + ng) x nc
+    Eigen::VectorXd combinedVariances;
+
+    // Grey fitting models, level 0 first (finest).
+    std::vector<AamTextureLevel> levels;
+
+    int trainingImages = 0;
+    // Stable identifier of this model (hash of its contents); dynamic models record it.
+    std::string identifier;
+
+    int pointCount() const { return int(meanShape.size() / 2); }
+    int shapeModes() const { return int(shapeBasis.cols()); }
+    int textureModes() const { return int(textureBasis.cols()); }
+    int combinedModes() const { return int(combinedBasis.cols()); }
+
+    // The mean shape in pixel coordinates of the reference frame of `level` (and the similarity
+    // from normalised to that frame).
+    Similarity referenceTransform(int level) const;
+    Eigen::VectorXd referenceShape(int level) const;
+
+    // Builds the warps of every level; called by the builder and by load().
+    void prepare();
+    const PiecewiseAffineWarp &warp(int level) const { return m_warps.at(size_t(level)); }
+
+    // Combined parameters <-> shape and texture parameters.
+    Eigen::VectorXd combinedFromParts(const Eigen::VectorXd &shapeParams,
+                                      const Eigen::VectorXd &textureParams) const;
+    void partsFromCombined(const Eigen::VectorXd &combined, Eigen::VectorXd &shapeParams,
+                           Eigen::VectorXd &textureParams) const;
+
+    // Versioned binary file, written atomically. load() throws lipsync::Error naming the file for a
+    // wrong magic, version or truncated/corrupt content.
+    void save(const std::string &path) const;
+    static AamModel load(const std::string &path);
+    // Hash of the model contents (what `identifier` holds after building).
+    std::string computeIdentifier() const;
+
+private:
+    std::string serialise(bool withIdentifier) const;
+    std::vector<PiecewiseAffineWarp> m_warps;
+};
+
+} // namespace lipsync

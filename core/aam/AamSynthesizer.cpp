@@ -1,0 +1,157 @@
+#include "aam/AamSynthesizer.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lipsync {
+
+AamSynthesizer::AamSynthesizer(const AamModel &model, double featherPixels) : m_model(model)
+{
+    // x = x0 + Ps Ws^-1 Qs c and g = g0 + Pg Qg c (Cootes et al. 2001, eq. 5).
+    const int ns = model.shapeModes();
+    const int ng = model.textureModes();
+    const Eigen::MatrixXd qs = model.combinedBasis.topRows(ns);
+    const Eigen::MatrixXd qg = model.combinedBasis.bottomRows(ng);
+    m_shapeMatrix = model.shapeBasis * qs / model.shapeWeight;
+    m_textureMatrix = (model.textureBasis * qg).cast<float>();
+    m_textureMean = model.textureMean.cast<float>();
+
+    const PiecewiseAffineWarp &warp = model.warp(0);
+    const cv::Mat &index = warp.indexMap();
+    cv::Mat mask = index >= 0;
+    // Feather: opacity rises from 0 at the outline to 1 at `featherPixels` inside it.
+    cv::Mat padded;
+    cv::copyMakeBorder(mask, padded, 1, 1, 1, 1, cv::BORDER_CONSTANT, 0);
+    cv::Mat dist;
+    cv::distanceTransform(padded, dist, cv::DIST_L2, 3);
+    dist = dist(cv::Rect(1, 1, mask.cols, mask.rows)).clone();
+    m_alpha = cv::Mat(mask.size(), CV_32F, cv::Scalar(0));
+    const float feather = float(std::max(0.5, featherPixels));
+    for (int y = 0; y < mask.rows; ++y)
+        for (int x = 0; x < mask.cols; ++x)
+            if (mask.at<uchar>(y, x))
+                m_alpha.at<float>(y, x) = std::min(1.f, (dist.at<float>(y, x) - 0.5f) / feather + 0.1f);
+    // Outside pixels next to the frame copy their nearest inside pixel, so bilinear lookups at
+    // the outline do not mix in black.
+    for (int y = 0; y < mask.rows; ++y) {
+        for (int x = 0; x < mask.cols; ++x) {
+            if (mask.at<uchar>(y, x))
+                continue;
+            int best = -1;
+            int bestD = 1 << 30;
+            for (int dy = -2; dy <= 2; ++dy)
+                for (int dx = -2; dx <= 2; ++dx) {
+                    const int xx = x + dx, yy = y + dy;
+                    if (xx < 0 || yy < 0 || xx >= mask.cols || yy >= mask.rows)
+                        continue;
+                    const int j = index.at<int>(yy, xx);
+                    if (j >= 0 && dx * dx + dy * dy < bestD) {
+                        bestD = dx * dx + dy * dy;
+                        best = j;
+                    }
+                }
+            if (best >= 0)
+                m_borderFill.emplace_back(y * mask.cols + x, best);
+        }
+    }
+}
+
+Eigen::VectorXd AamSynthesizer::shape(const Eigen::VectorXd &combined) const
+{
+    return m_model.meanShape + m_shapeMatrix * combined;
+}
+
+Eigen::VectorXf AamSynthesizer::texture(const Eigen::VectorXd &combined) const
+{
+    return m_textureMean + m_textureMatrix * combined.cast<float>();
+}
+
+PhotometricTransform AamSynthesizer::defaultPhotometric() const
+{
+    return {m_model.meanTextureOffset, m_model.meanTextureScale};
+}
+
+cv::Mat AamSynthesizer::textureImage(const Eigen::VectorXd &combined,
+                                     PhotometricTransform photometric) const
+{
+    const PiecewiseAffineWarp &warp = m_model.warp(0);
+    Eigen::VectorXf g = texture(combined);
+    g = (g.array() * float(photometric.scale) + float(photometric.offset)).cwiseMax(0.f).cwiseMin(255.f);
+    cv::Mat image = warp.toImage(g.data(), 3, 0.f);
+    float *data = image.ptr<float>();
+    for (const auto &[offset, inside] : m_borderFill)
+        for (int c = 0; c < 3; ++c)
+            data[3 * offset + c] = g[3 * inside + c];
+    return image;
+}
+
+void AamSynthesizer::composite(const Eigen::VectorXd &combined, const Similarity &pose,
+                               cv::Mat &frame) const
+{
+    composite(combined, pose, defaultPhotometric(), frame);
+}
+
+void AamSynthesizer::composite(const Eigen::VectorXd &combined, const Similarity &pose,
+                               PhotometricTransform photometric, cv::Mat &frame) const
+{
+    CV_Assert(frame.type() == CV_8UC3);
+    const cv::Mat tex = textureImage(combined, photometric);
+    const Eigen::VectorXd target = pose.apply(shape(combined));
+    const PiecewiseAffineWarp &warp = m_model.warp(0);
+    const Eigen::VectorXd &ref = warp.referenceShape();
+    const int tw = tex.cols, th = tex.rows;
+    const float *texData = tex.ptr<float>();
+    const float *alphaData = m_alpha.ptr<float>();
+    for (const Triangle &tri : warp.triangles()) {
+        // Frame -> reference affine map of this triangle.
+        const Eigen::Vector2d p0 = target.segment<2>(2 * tri[0]), p1 = target.segment<2>(2 * tri[1]),
+                              p2 = target.segment<2>(2 * tri[2]);
+        const Eigen::Vector2d r0 = ref.segment<2>(2 * tri[0]), r1 = ref.segment<2>(2 * tri[1]),
+                              r2 = ref.segment<2>(2 * tri[2]);
+        const Eigen::Vector2d u = p1 - p0, v = p2 - p0;
+        const double det = u.x() * v.y() - u.y() * v.x();
+        if (std::abs(det) < 1e-9)
+            continue;
+        const int x0 = std::max(0, int(std::floor(std::min({p0.x(), p1.x(), p2.x()}))));
+        const int x1 = std::min(frame.cols - 1, int(std::ceil(std::max({p0.x(), p1.x(), p2.x()}))));
+        const int y0 = std::max(0, int(std::floor(std::min({p0.y(), p1.y(), p2.y()}))));
+        const int y1 = std::min(frame.rows - 1, int(std::ceil(std::max({p0.y(), p1.y(), p2.y()}))));
+        const double inv = 1.0 / det;
+        const float eps = -1e-4f;
+        for (int y = y0; y <= y1; ++y) {
+            uchar *row = frame.ptr<uchar>(y);
+            for (int x = x0; x <= x1; ++x) {
+                const double dx = x - p0.x(), dy = y - p0.y();
+                const float b = float((dx * v.y() - dy * v.x()) * inv);
+                const float c = float((u.x() * dy - u.y() * dx) * inv);
+                const float a = 1.f - b - c;
+                if (a < eps || b < eps || c < eps)
+                    continue;
+                float rx = float(a * r0.x() + b * r1.x() + c * r2.x());
+                float ry = float(a * r0.y() + b * r1.y() + c * r2.y());
+                rx = std::clamp(rx, 0.f, float(tw - 1) - 1e-3f);
+                ry = std::clamp(ry, 0.f, float(th - 1) - 1e-3f);
+                const int ix = int(rx), iy = int(ry);
+                const float fx = rx - float(ix), fy = ry - float(iy);
+                const float w00 = (1 - fx) * (1 - fy), w01 = fx * (1 - fy), w10 = (1 - fx) * fy,
+                            w11 = fx * fy;
+                const int i00 = iy * tw + ix;
+                const float alpha = w00 * alphaData[i00] + w01 * alphaData[i00 + 1]
+                                    + w10 * alphaData[i00 + tw] + w11 * alphaData[i00 + tw + 1];
+                if (alpha <= 0.f)
+                    continue;
+                uchar *px = row + 3 * x;
+                for (int ch = 0; ch < 3; ++ch) {
+                    const float t = w00 * texData[3 * i00 + ch] + w01 * texData[3 * (i00 + 1) + ch]
+                                    + w10 * texData[3 * (i00 + tw) + ch]
+                                    + w11 * texData[3 * (i00 + tw + 1) + ch];
+                    px[ch] = cv::saturate_cast<uchar>(alpha * t + (1.f - alpha) * px[ch]);
+                }
+            }
+        }
+    }
+}
+
+} // namespace lipsync

@@ -1,0 +1,260 @@
+#include "aam/FaceDetector.h"
+
+#include "aam/LandmarkScheme.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+
+#include <opencv2/imgproc.hpp>
+#include <opencv2/objdetect.hpp>
+
+#ifdef LIPSYNC_HAVE_DLIB
+#include <dlib/image_processing.h>
+#include <dlib/image_processing/frontal_face_detector.h>
+#include <dlib/opencv/cv_image.h>
+#endif
+
+#include <algorithm>
+#include <cstdlib>
+#include <mutex>
+
+namespace lipsync {
+
+struct FaceDetector::Impl
+{
+    cv::Ptr<cv::FaceDetectorYN> yunet;
+    cv::CascadeClassifier haar;
+    bool haarLoaded = false;
+#ifdef LIPSYNC_HAVE_DLIB
+    std::unique_ptr<dlib::shape_predictor> predictor;
+    std::unique_ptr<dlib::frontal_face_detector> hog;
+#endif
+};
+
+std::string FaceDetector::findYunetModel()
+{
+    const std::string name = "face_detection_yunet_2022mar.onnx";
+    std::vector<QString> candidates;
+    if (const char *env = std::getenv("LIPSYNC_YUNET_MODEL"))
+        candidates.push_back(QString::fromLocal8Bit(env));
+    if (QCoreApplication::instance()) {
+        const QString dir = QCoreApplication::applicationDirPath();
+        candidates.push_back(dir + "/../share/lipsync/models/" + QString::fromStdString(name));
+        candidates.push_back(dir + "/models/" + QString::fromStdString(name));
+    }
+#ifdef LIPSYNC_RESOURCE_DIR
+    candidates.push_back(QStringLiteral(LIPSYNC_RESOURCE_DIR "/models/") + QString::fromStdString(name));
+#endif
+    for (const QString &c : candidates)
+        if (QFileInfo::exists(c))
+            return c.toStdString();
+    return {};
+}
+
+FaceDetector::FaceDetector(const FaceDetectorPaths &paths) : m_impl(std::make_unique<Impl>())
+{
+    const std::string yunetPath = paths.yunetModel.empty() ? findYunetModel() : paths.yunetModel;
+    if (!yunetPath.empty() && QFileInfo::exists(QString::fromStdString(yunetPath))) {
+        try {
+            m_impl->yunet = cv::FaceDetectorYN::create(yunetPath, "", cv::Size(320, 320), 0.6f, 0.3f, 20);
+        } catch (const cv::Exception &) {
+            m_impl->yunet.release();
+        }
+    }
+    const std::string haarPath = paths.haarCascade.empty()
+                                     ? "/usr/share/opencv4/haarcascades/haarcascade_frontalface_alt2.xml"
+                                     : paths.haarCascade;
+    if (QFileInfo::exists(QString::fromStdString(haarPath)))
+        m_impl->haarLoaded = m_impl->haar.load(haarPath);
+#ifdef LIPSYNC_HAVE_DLIB
+    const std::string dlibPath = paths.dlibPredictor.empty()
+                                     ? "/usr/share/dlib/shape_predictor_68_face_landmarks.dat"
+                                     : paths.dlibPredictor;
+    if (paths.useDlib && QFileInfo::exists(QString::fromStdString(dlibPath))) {
+        try {
+            auto predictor = std::make_unique<dlib::shape_predictor>();
+            dlib::deserialize(dlibPath) >> *predictor;
+            m_impl->predictor = std::move(predictor);
+        } catch (const std::exception &) {
+        }
+    }
+#endif
+}
+
+FaceDetector::~FaceDetector() = default;
+
+bool FaceDetector::hasYunet() const
+{
+    return !m_impl->yunet.empty();
+}
+
+bool FaceDetector::hasHaar() const
+{
+    return m_impl->haarLoaded;
+}
+
+bool FaceDetector::hasDlib() const
+{
+#ifdef LIPSYNC_HAVE_DLIB
+    return m_impl->predictor != nullptr;
+#else
+    return false;
+#endif
+}
+
+std::string FaceDetector::available() const
+{
+    std::string s;
+    auto add = [&](bool on, const char *name) {
+        if (on)
+            s += (s.empty() ? "" : ",") + std::string(name);
+    };
+    add(hasYunet(), "yunet");
+    add(hasHaar(), "haar");
+    add(hasDlib(), "dlib");
+    return s.empty() ? "none" : s;
+}
+
+std::vector<FaceDetection> FaceDetector::detect(const cv::Mat &bgrIn)
+{
+    std::vector<FaceDetection> out;
+    if (bgrIn.empty())
+        return out;
+    cv::Mat bgr = bgrIn;
+    if (bgr.type() == CV_8UC1)
+        cv::cvtColor(bgrIn, bgr, cv::COLOR_GRAY2BGR);
+    if (m_impl->yunet) {
+        // YuNet works best on images of a few hundred pixels: detect on a downscaled copy.
+        const double maxSide = 640.0;
+        const double f = std::min(1.0, maxSide / std::max(bgr.cols, bgr.rows));
+        cv::Mat small = bgr;
+        if (f < 1.0)
+            cv::resize(bgr, small, cv::Size(), f, f, cv::INTER_AREA);
+        cv::Mat faces;
+        m_impl->yunet->setInputSize(small.size());
+        m_impl->yunet->detect(small, faces);
+        for (int r = 0; r < faces.rows; ++r) {
+            const float *row = faces.ptr<float>(r);
+            FaceDetection d;
+            d.source = "yunet";
+            d.box = cv::Rect2d(row[0] / f, row[1] / f, row[2] / f, row[3] / f);
+            d.score = row[14];
+            d.hasKeypoints = true;
+            for (int k = 0; k < 5; ++k)
+                d.keypoints[size_t(k)] = Eigen::Vector2d(row[4 + 2 * k] / f, row[5 + 2 * k] / f);
+            // Order by image side regardless of the model's convention.
+            if (d.keypoints[0].x() > d.keypoints[1].x())
+                std::swap(d.keypoints[0], d.keypoints[1]);
+            if (d.keypoints[3].x() > d.keypoints[4].x())
+                std::swap(d.keypoints[3], d.keypoints[4]);
+            out.push_back(d);
+        }
+    }
+    if (out.empty() && m_impl->haarLoaded) {
+        cv::Mat grey;
+        cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
+        cv::equalizeHist(grey, grey);
+        std::vector<cv::Rect> rects;
+        std::vector<int> levels;
+        std::vector<double> weights;
+        const int minSide = std::max(24, std::min(bgr.cols, bgr.rows) / 10);
+        m_impl->haar.detectMultiScale(grey, rects, levels, weights, 1.1, 3, 0,
+                                      cv::Size(minSide, minSide), cv::Size(), true);
+        for (size_t i = 0; i < rects.size(); ++i) {
+            FaceDetection d;
+            d.source = "haar";
+            d.box = rects[i];
+            d.score = i < weights.size() ? weights[i] : 0.0;
+            out.push_back(d);
+        }
+    }
+    std::sort(out.begin(), out.end(), [](const FaceDetection &a, const FaceDetection &b) {
+        return a.box.area() * (0.5 + a.score) > b.box.area() * (0.5 + b.score);
+    });
+    return out;
+}
+
+Eigen::VectorXd FaceDetector::dlibLandmarks(const cv::Mat &bgr, const FaceDetection &face)
+{
+#ifdef LIPSYNC_HAVE_DLIB
+    if (!m_impl->predictor || bgr.empty())
+        return {};
+    cv::Mat grey;
+    if (bgr.channels() == 3)
+        cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
+    else
+        grey = bgr;
+    dlib::cv_image<unsigned char> image(grey);
+    // dlib's predictor was trained on the boxes of dlib's HOG detector: use that detector's box
+    // for this face when it finds one (on a copy of at most 480 pixels, for speed); otherwise
+    // adjust the YuNet box, which is larger and higher, towards the HOG convention.
+    cv::Rect2d b = face.box;
+    bool fromHog = false;
+    {
+        if (!m_impl->hog)
+            m_impl->hog = std::make_unique<dlib::frontal_face_detector>(dlib::get_frontal_face_detector());
+        const double f = std::min(1.0, 480.0 / std::max(grey.cols, grey.rows));
+        cv::Mat small = grey;
+        if (f < 1.0)
+            cv::resize(grey, small, cv::Size(), f, f, cv::INTER_AREA);
+        dlib::cv_image<unsigned char> smallImage(small);
+        const std::vector<dlib::rectangle> boxes = (*m_impl->hog)(smallImage);
+        double best = 0.0;
+        for (const auto &r : boxes) {
+            const cv::Rect2d candidate(r.left() / f, r.top() / f, (r.width()) / f, (r.height()) / f);
+            const double inter = (candidate & face.box).area();
+            const double iou = inter / (candidate.area() + face.box.area() - inter);
+            if (iou > best && iou > 0.3) {
+                best = iou;
+                b = candidate;
+                fromHog = true;
+            }
+        }
+    }
+    if (!fromHog && face.source == "yunet") {
+        const double cx = b.x + 0.5 * b.width, w = 0.86 * b.width;
+        const double top = b.y + 0.17 * b.height, h = 0.86 * b.height;
+        b = cv::Rect2d(cx - 0.5 * w, top, w, h);
+    }
+    const dlib::rectangle rect(long(std::lround(b.x)), long(std::lround(b.y)),
+                               long(std::lround(b.x + b.width)), long(std::lround(b.y + b.height)));
+    const dlib::full_object_detection shape = (*m_impl->predictor)(image, rect);
+    if (shape.num_parts() != 68)
+        return {};
+    Eigen::VectorXd out(136);
+    for (unsigned long i = 0; i < 68; ++i) {
+        out[2 * long(i)] = double(shape.part(i).x());
+        out[2 * long(i) + 1] = double(shape.part(i).y());
+    }
+    return out;
+#else
+    (void)bgr;
+    (void)face;
+    return {};
+#endif
+}
+
+Eigen::VectorXd initialShapeFromDetection(const Eigen::VectorXd &meanShape, const FaceDetection &face)
+{
+    // Model points: eye centres (mean of each eye's four points) and the mouth corners.
+    auto centre = [&](int from) {
+        Eigen::Vector2d c = Eigen::Vector2d::Zero();
+        for (int i = from; i < from + 4; ++i)
+            c += meanShape.segment<2>(2 * i);
+        return Eigen::Vector2d(c / 4.0);
+    };
+    Eigen::VectorXd model(8), target(8);
+    model << centre(0), centre(4), meanShape.segment<2>(2 * scheme23::kMouthLeft),
+        meanShape.segment<2>(2 * scheme23::kMouthRight);
+    if (face.hasKeypoints) {
+        target << face.keypoints[0], face.keypoints[1], face.keypoints[3], face.keypoints[4];
+    } else {
+        // Typical positions in a frontal Haar box (fractions of width and height).
+        const cv::Rect2d &b = face.box;
+        auto at = [&](double fx, double fy) { return Eigen::Vector2d(b.x + fx * b.width, b.y + fy * b.height); };
+        target << at(0.31, 0.40), at(0.69, 0.40), at(0.36, 0.76), at(0.64, 0.76);
+    }
+    return alignSimilarity(model, target).apply(meanShape);
+}
+
+} // namespace lipsync

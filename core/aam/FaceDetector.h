@@ -1,0 +1,70 @@
+#pragma once
+// Automatic landmarks for a new face (issue #3, item 2): YuNet (OpenCV's cv::FaceDetectorYN with
+// the 2022mar model shipped in resources/models) finds the face box and five keypoints; a Haar
+// cascade (Debian's opencv-data) is the fallback when YuNet is missing or finds nothing; dlib's
+// 68-point shape predictor (Debian's libdlib-data) gives all 68 iBUG points when it is installed,
+// mapped to the 23-point scheme. Everything optional degrades cleanly: a missing file just
+// disables that stage (see available()).
+#include "aam/Procrustes.h"
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lipsync {
+
+struct FaceDetection
+{
+    cv::Rect2d box;
+    double score = 0.0;
+    // Image-left eye, image-right eye, nose tip, image-left and image-right mouth corner.
+    bool hasKeypoints = false;
+    std::array<Eigen::Vector2d, 5> keypoints{};
+    std::string source; // "yunet" or "haar"
+};
+
+struct FaceDetectorPaths
+{
+    std::string yunetModel;   // empty: search (LIPSYNC_YUNET_MODEL, beside the executable, source tree)
+    std::string haarCascade;  // empty: /usr/share/opencv4/haarcascades/haarcascade_frontalface_alt2.xml
+    std::string dlibPredictor; // empty: /usr/share/dlib/shape_predictor_68_face_landmarks.dat
+    bool useDlib = true;
+};
+
+class FaceDetector
+{
+public:
+    explicit FaceDetector(const FaceDetectorPaths &paths = {});
+    ~FaceDetector();
+    FaceDetector(const FaceDetector &) = delete;
+    FaceDetector &operator=(const FaceDetector &) = delete;
+
+    bool hasYunet() const;
+    bool hasHaar() const;
+    bool hasDlib() const;
+    // One line saying which stages are available (for --json and messages).
+    std::string available() const;
+
+    // Faces in a BGR image, best first. Empty when none is found.
+    std::vector<FaceDetection> detect(const cv::Mat &bgr);
+    // 68 iBUG points (flat, 0-based) inside `face` from dlib, or an empty vector without dlib.
+    Eigen::VectorXd dlibLandmarks(const cv::Mat &bgr, const FaceDetection &face);
+
+    // Where the YuNet model was found (empty if not).
+    static std::string findYunetModel();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+// Places `meanShape` (normalised 23 points) on a detection: a similarity fitted to the eye
+// centres and mouth corners for keypoint detections, or to fixed fractions of the box for Haar.
+Eigen::VectorXd initialShapeFromDetection(const Eigen::VectorXd &meanShape,
+                                          const FaceDetection &face);
+
+} // namespace lipsync

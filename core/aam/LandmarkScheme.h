@@ -1,0 +1,60 @@
+#pragma once
+// The studio's 23-point face scheme (the paper's §4 model: "23 points on key features on the eyes,
+// mouth and jaw-line", Fig. 2) and its mapping from the iBUG 68-point scheme used by 300-W and
+// dlib. The same table ships as resources/aam/landmarks23.json for other tools; a test keeps the
+// two in sync. The choice of points (see resources/aam/README.md):
+//   eyes  (8): per eye the two corners and the lid centres (mean of the two iBUG lid points),
+//   mouth (10): the corners, three points on each outer lip, the inner-lip centres,
+//   jaw   (5): iBUG 2, 5, 8 (chin), 11, 14 — the lower face below the eyes.
+// "left"/"right" are as seen in the image (iBUG 36 is the image-left eye's outer corner).
+#include <Eigen/Core>
+
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lipsync {
+
+enum class LandmarkFeature { Eyes, Mouth, Jaw };
+
+const char *landmarkFeatureName(LandmarkFeature feature);
+
+struct LandmarkDefinition
+{
+    const char *name;
+    LandmarkFeature feature;
+    // iBUG 68-point indices (0-based) averaged to give this point; ibugB == -1: ibugA alone.
+    int ibugA;
+    int ibugB;
+};
+
+namespace scheme23 {
+constexpr int kPointCount = 23;
+constexpr int kLeftEyeOuter = 0;  // outer eye corners: the NME normaliser
+constexpr int kRightEyeOuter = 6;
+constexpr int kMouthLeft = 8;
+constexpr int kMouthRight = 12;
+constexpr int kIbugPointCount = 68;
+} // namespace scheme23
+
+const std::array<LandmarkDefinition, scheme23::kPointCount> &landmarkDefinitions();
+// Drawing connectivity (pairs of indices): eye outlines, outer and inner lips, the jaw line.
+const std::vector<std::pair<int, int>> &landmarkConnections();
+// Indices of the points of one feature group, in scheme order.
+std::vector<int> landmarkIndices(LandmarkFeature feature);
+// The scheme as JSON (what resources/aam/landmarks23.json holds).
+std::string landmarkSchemeJson();
+
+// Shapes in core/aam are flat interleaved vectors (x0, y0, x1, y1, ...).
+// Maps 68 iBUG points (flat, 136 values) to the 23-point scheme (46 values).
+Eigen::VectorXd mapIbug68To23(const Eigen::VectorXd &ibug68);
+
+// A typical frontal face in the scheme (centred, unit size, eyes level): the mean of the Procrustes
+// -aligned Helen training shapes. Seeds the editor and places points when no AAM exists yet.
+Eigen::VectorXd templateShape();
+
+// Mean point-to-point error over the points divided by the outer-eye-corner distance of `truth`.
+double normalisedMeanError(const Eigen::VectorXd &shape, const Eigen::VectorXd &truth);
+
+} // namespace lipsync

@@ -1,0 +1,162 @@
+// The face commands as users run them: landmarks detect, aam build, aam eval, track.
+#include "aam/PtsFile.h"
+#include "io/FeatureCsv.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <opencv2/imgcodecs.hpp>
+
+using namespace lipsync;
+
+namespace {
+
+struct Run
+{
+    int code = -1;
+    QByteArray out;
+    QByteArray err;
+    QJsonObject json() const { return QJsonDocument::fromJson(out).object(); }
+};
+
+Run lipsyncCli(const QStringList &args)
+{
+    QProcess p;
+    p.start(QStringLiteral(LIPSYNC_CLI), args);
+    p.waitForFinished(120000);
+    return {p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
+}
+
+const QString kGrid = QStringLiteral(LIPSYNC_TEST_DATA "/faces/grid");
+const QString kDemo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media/");
+
+} // namespace
+
+class TestAamCli : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+    QString m_model;
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        // Train on 18 frames, hold out the two sgivzn frames for eval.
+        QDir(m_dir.path()).mkdir("train");
+        QDir(m_dir.path()).mkdir("test");
+        for (const QString &name : QDir(kGrid).entryList(QDir::Files)) {
+            const QString sub = name.startsWith("sgivzn") ? "test" : "train";
+            QVERIFY(QFile::copy(kGrid + "/" + name, m_dir.path() + "/" + sub + "/" + name));
+        }
+        m_model = m_dir.path() + "/grid.aam";
+    }
+
+    void aamBuild()
+    {
+        const Run r = lipsyncCli({"aam", "build", "--images", m_dir.path() + "/train", "--out", m_model, "--json"});
+        QVERIFY2(r.code == 0, r.err.constData());
+        const QJsonObject j = r.json();
+        QCOMPARE(j["images"].toInt(), 18);
+        QCOMPARE(j["points"].toInt(), 23);
+        QVERIFY(j["combined_modes"].toInt() >= 2);
+        QVERIFY(j["identifier"].toString().startsWith("aam-"));
+        QVERIFY(QFile::exists(m_model));
+    }
+
+    void aamEval()
+    {
+        const Run r = lipsyncCli({"aam", "eval", "--model", m_model, "--images", m_dir.path() + "/test", "--json"});
+        QVERIFY2(r.code == 0, r.err.constData());
+        const QJsonObject j = r.json();
+        for (const char *key : {"images", "nme_mean", "nme_median", "fps"})
+            QVERIFY2(j.contains(key), key);
+        QCOMPARE(j["images"].toInt(), 2);
+        QVERIFY2(j["nme_mean"].toDouble() < 0.05, qPrintable(QString::number(j["nme_mean"].toDouble())));
+        QVERIFY(j["fps"].toDouble() > 0);
+    }
+
+    void landmarksDetectVideoFrame()
+    {
+        const QString out = m_dir.path() + "/frame10.pts";
+        const Run r = lipsyncCli({"landmarks", "detect", kDemo + "bbaf2n.mpg", "--frame", "10", "--out", out, "--json"});
+        QVERIFY2(r.code == 0, r.err.constData());
+        QCOMPARE(r.json()["points"].toArray().size(), 23);
+        QCOMPARE(r.json()["state"].toString(), QString("automatic"));
+        const Eigen::VectorXd s = readFaceShape(out.toStdString());
+        QCOMPARE(s.size(), Eigen::Index(46));
+        QVERIFY(s.minCoeff() > 0 && s.maxCoeff() < 360);
+    }
+
+    void landmarksDetectWithModelAndTemplate()
+    {
+        const QString image = kGrid + "/bbaf3s_22.jpg";
+        for (const QString &method : {QString("aam"), QString("template")}) {
+            const QString out = m_dir.path() + "/" + method + ".pts";
+            const Run r = lipsyncCli({"landmarks", "detect", image, "--out", out, "--method", method,
+                                      "--model", m_model, "--json"});
+            QVERIFY2(r.code == 0, r.err.constData());
+            QCOMPARE(r.json()["method"].toString(), method);
+        }
+        const Eigen::VectorXd truth = readFaceShape((kGrid + "/bbaf3s_22.pts").toStdString());
+        const Eigen::VectorXd fitted = readFaceShape((m_dir.path() + "/aam.pts").toStdString());
+        QVERIFY((fitted - truth).cwiseAbs().mean() < 3.0);
+    }
+
+    void track()
+    {
+        const QString csv = m_dir.path() + "/bbaf2n.csv";
+        const Run r = lipsyncCli({"track", "--model", m_model, kDemo + "bbaf2n.mpg", "--out", csv, "--json"});
+        QVERIFY2(r.code == 0, r.err.constData());
+        const QJsonObject j = r.json();
+        QCOMPARE(j["frames"].toInt(), 75);
+        QCOMPARE(j["tracked"].toInt(), 75);
+        const FeatureTable table = readFeatureCsv(csv.toStdString());
+        QCOMPARE(int(table.frames.size()), 75);
+        QCOMPARE(table.frames.front(), 0);
+        QCOMPARE(table.frames.back(), 74);
+        QCOMPARE(int(table.values.cols()), j["parameters"].toInt());
+        // The features move with speech: not constant over the clip.
+        QVERIFY((table.values.colwise().maxCoeff() - table.values.colwise().minCoeff()).maxCoeff() > 0.1);
+    }
+
+    void badInput()
+    {
+        // Usage errors: exit 2.
+        QCOMPARE(lipsyncCli({"aam", "build", "--images", m_dir.path()}).code, 2);
+        QCOMPARE(lipsyncCli({"landmarks", "detect", "--out", "x.pts"}).code, 2);
+        QCOMPARE(lipsyncCli({"track", "--model", m_model, "--out", "x.csv"}).code, 2);
+        QCOMPARE(lipsyncCli({"aam", "eval", "--model", m_model, "--images", m_dir.path(), "--bogus"}).code, 2);
+        // No face: exit 1 with a message naming the file.
+        const QString blank = m_dir.path() + "/blank.png";
+        cv::imwrite(blank.toStdString(), cv::Mat(288, 360, CV_8UC3, cv::Scalar(90, 90, 90)));
+        Run r = lipsyncCli({"landmarks", "detect", blank, "--out", m_dir.path() + "/b.pts"});
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains("no face"), r.err.constData());
+        QVERIFY(!QFile::exists(m_dir.path() + "/b.pts"));
+        // A frame past the end of the video.
+        r = lipsyncCli({"landmarks", "detect", kDemo + "bbaf2n.mpg", "--frame", "500", "--out", m_dir.path() + "/c.pts"});
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains("no frame 500"), r.err.constData());
+        // Missing directory, too few images, not a model.
+        r = lipsyncCli({"aam", "build", "--images", m_dir.path() + "/missing", "--out", m_dir.path() + "/m.aam"});
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains("does not exist"), r.err.constData());
+        r = lipsyncCli({"aam", "build", "--images", m_dir.path() + "/test", "--out", m_dir.path() + "/m.aam"});
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains("at least 3"), r.err.constData());
+        r = lipsyncCli({"track", "--model", blank, kDemo + "bbaf2n.mpg", "--out", m_dir.path() + "/t.csv"});
+        QCOMPARE(r.code, 1);
+        QVERIFY2(r.err.contains("not an AAM model"), r.err.constData());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestAamCli)
+#include "tst_aamcli.moc"

@@ -1,0 +1,310 @@
+// Procrustes, PCA, the piecewise-affine warp, building, saving, fitting and synthesis of an AAM,
+// on the committed GRID frames (tests/data/faces/grid, 20 frames with dlib-derived 23 points).
+#include "aam/AamBuilder.h"
+#include "aam/AamFitter.h"
+#include "aam/AamSynthesizer.h"
+#include "aam/LandmarkScheme.h"
+#include "aam/PtsFile.h"
+#include "io/AtomicFile.h"
+#include "tasks/Feedback.h"
+#include "util/Error.h"
+
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <chrono>
+#include <random>
+
+using namespace lipsync;
+
+namespace {
+
+const char *kHeldOut = "sgivzn";
+
+std::vector<AamTrainingExample> gridExamples(bool heldOut)
+{
+    std::vector<AamTrainingExample> all = loadTrainingDirectory(LIPSYNC_TEST_DATA "/faces/grid");
+    std::vector<AamTrainingExample> out;
+    for (auto &e : all)
+        if ((e.name.rfind(kHeldOut, 0) == 0) == heldOut)
+            out.push_back(e);
+    return out;
+}
+
+Eigen::VectorXd randomShape(std::mt19937 &rng)
+{
+    std::normal_distribution<double> noise(0.0, 0.02);
+    Eigen::VectorXd s = templateShape();
+    for (Eigen::Index i = 0; i < s.size(); ++i)
+        s[i] += noise(rng);
+    return s;
+}
+
+} // namespace
+
+class TestAam : public QObject
+{
+    Q_OBJECT
+
+    AamModel m_model;
+
+private slots:
+    void initTestCase()
+    {
+        Feedback feedback;
+        AamBuildOptions options;
+        options.combinedVariance = 0.98;
+        m_model = buildAam(gridExamples(false), options, feedback);
+        QCOMPARE(m_model.trainingImages, 18);
+        QCOMPARE(feedback.progress(), 1.0);
+    }
+
+    void procrustesRemovesSimilarity()
+    {
+        std::mt19937 rng(1);
+        const Eigen::VectorXd base = randomShape(rng);
+        std::vector<Eigen::VectorXd> shapes;
+        for (int i = 0; i < 6; ++i) {
+            Similarity t;
+            t.a = (1.0 + i) * std::cos(0.3 * i);
+            t.b = (1.0 + i) * std::sin(0.3 * i);
+            t.tx = 10.0 * i;
+            t.ty = -5.0 * i;
+            shapes.push_back(t.apply(base));
+        }
+        const ProcrustesResult r = generalisedProcrustes(shapes);
+        QVERIFY(std::abs(r.mean.norm() - 1.0) < 1e-9);
+        QVERIFY(shapeCentroid(r.mean).norm() < 1e-9);
+        for (const auto &a : r.aligned)
+            QVERIFY((a - r.mean).norm() < 1e-9); // similar copies collapse onto the mean
+        // alignSimilarity recovers a known transform exactly.
+        Similarity t{1.7, -0.4, 3.0, 9.0};
+        const Similarity found = alignSimilarity(base, t.apply(base));
+        QVERIFY(std::abs(found.a - t.a) < 1e-9 && std::abs(found.b - t.b) < 1e-9);
+        QVERIFY(std::abs(found.tx - t.tx) < 1e-9 && std::abs(found.ty - t.ty) < 1e-9);
+        QVERIFY((t.inverse().compose(t).apply(base) - base).norm() < 1e-9);
+    }
+
+    void pcaModesAreOrthonormalAndReconstructionImproves()
+    {
+        std::mt19937 rng(2);
+        std::normal_distribution<double> n(0.0, 1.0);
+        Eigen::MatrixXd data(30, 40); // 30 dims, 40 samples with decaying variance per dim
+        for (int j = 0; j < 40; ++j)
+            for (int i = 0; i < 30; ++i)
+                data(i, j) = n(rng) * std::pow(0.8, i) + 2.0;
+        const Pca all = computePca(data, 1.0);
+        QCOMPARE(all.modes(), 30);
+        const Eigen::MatrixXd gram = all.basis.transpose() * all.basis;
+        QVERIFY((gram - Eigen::MatrixXd::Identity(30, 30)).cwiseAbs().maxCoeff() < 1e-9);
+        for (int m = 1; m < all.modes(); ++m)
+            QVERIFY(all.variances[m] <= all.variances[m - 1]);
+        double previous = 1e300;
+        for (int modes : {1, 3, 6, 12, 30}) {
+            const Pca p = computePca(data, 1.0, modes);
+            double err = 0.0;
+            for (int j = 0; j < 40; ++j)
+                err += (p.reconstruct(p.project(data.col(j))) - data.col(j)).squaredNorm();
+            QVERIFY2(err < previous, qPrintable(QString::number(err)));
+            previous = err;
+        }
+        QVERIFY(previous < 1e-18 * 40 + 1e-9);
+        // Gram-matrix path (fewer samples than dimensions) gives orthonormal modes too, n-1 at most.
+        const Pca wide = computePca(data.leftCols(5).transpose().replicate(1, 1).transpose(), 1.0);
+        QVERIFY(wide.modes() <= 4);
+        const Eigen::MatrixXd g2 = wide.basis.transpose() * wide.basis;
+        QVERIFY((g2 - Eigen::MatrixXd::Identity(wide.modes(), wide.modes())).cwiseAbs().maxCoeff() < 1e-9);
+        // Variance retained chooses fewer modes for a lower fraction.
+        QVERIFY(computePca(data, 0.5).modes() < computePca(data, 0.95).modes());
+    }
+
+    void warpRoundTrip()
+    {
+        const PiecewiseAffineWarp &warp = m_model.warp(0);
+        QVERIFY(warp.pixelCount() > 1000);
+        // Every precomputed barycentric triple sums to one and reproduces the pixel position.
+        std::vector<float> positions(size_t(2 * warp.pixelCount()));
+        warp.pixelPositions(warp.referenceShape(), positions.data());
+        for (int i = 0; i < warp.pixelCount(); i += 7) {
+            const float *w = warp.pixelBarycentric(i);
+            QVERIFY(std::abs(w[0] + w[1] + w[2] - 1.f) < 1e-5f);
+            QVERIFY(std::abs(positions[size_t(2 * i)] - warp.pixelX(i)) < 1e-3f);
+            QVERIFY(std::abs(positions[size_t(2 * i + 1)] - warp.pixelY(i)) < 1e-3f);
+        }
+        // Render a smooth pattern at a shape by sampling it through the warp, then sample again at
+        // the same shape after a similarity: values agree (round trip of the warp tables).
+        cv::Mat image(300, 400, CV_32F);
+        for (int y = 0; y < image.rows; ++y)
+            for (int x = 0; x < image.cols; ++x)
+                image.at<float>(y, x) = float(100 + 50 * std::sin(x * 0.05) * std::cos(y * 0.07));
+        Similarity t{1.3, 0.2, 120, 60};
+        const Eigen::VectorXd shape = t.apply(warp.referenceShape());
+        std::vector<float> a(size_t(warp.pixelCount()));
+        warp.sampleGrey(image, shape, a.data());
+        for (int i = 0; i < warp.pixelCount(); i += 13) {
+            const Eigen::Vector2d p = t.apply(Eigen::Vector2d(warp.pixelX(i), warp.pixelY(i)));
+            const float expected = float(100 + 50 * std::sin(p.x() * 0.05) * std::cos(p.y() * 0.07));
+            QVERIFY2(std::abs(a[size_t(i)] - expected) < 0.5f, qPrintable(QString::number(i)));
+        }
+        // Vertices map through the warp onto the shape.
+        QVERIFY((warp.warpVertices(warp.referenceShape(), shape) - shape).cwiseAbs().maxCoeff() < 1e-6);
+    }
+
+    void modelHasExpectedStructure()
+    {
+        QCOMPARE(m_model.pointCount(), 23);
+        QVERIFY(m_model.shapeModes() >= 2 && m_model.shapeModes() <= 17);
+        QVERIFY(m_model.combinedModes() >= 2 && m_model.combinedModes() <= 17);
+        QVERIFY(m_model.triangles.size() >= 25);
+        QVERIFY(QString::fromStdString(m_model.identifier).startsWith("aam-"));
+        QCOMPARE(m_model.identifier, m_model.computeIdentifier());
+        // Combined parameters of the mean are zero; parts survive a round trip.
+        const Eigen::VectorXd c = Eigen::VectorXd::Random(m_model.combinedModes()) * 0.01;
+        Eigen::VectorXd bs, bg;
+        m_model.partsFromCombined(c, bs, bg);
+        QVERIFY((m_model.combinedFromParts(bs, bg) - c).norm() < 1e-9);
+    }
+
+    void saveLoadRoundTrip()
+    {
+        QTemporaryDir dir;
+        const std::string path = (dir.path() + "/m.aam").toStdString();
+        m_model.save(path);
+        const AamModel back = AamModel::load(path);
+        QCOMPARE(back.identifier, m_model.identifier);
+        QCOMPARE(back.computeIdentifier(), m_model.identifier);
+        QVERIFY(back.combinedBasis.isApprox(m_model.combinedBasis));
+        QCOMPARE(back.warp(0).pixelCount(), m_model.warp(0).pixelCount());
+        // Truncated, wrong magic and wrong version are clear errors.
+        std::string bytes = readWholeFile(path);
+        writeFileAtomically(path, bytes.substr(0, bytes.size() / 2));
+        QVERIFY_THROWS_EXCEPTION(Error, AamModel::load(path));
+        writeFileAtomically(path, "not a model");
+        QVERIFY_THROWS_EXCEPTION(Error, AamModel::load(path));
+        bytes[8] = 99;
+        writeFileAtomically(path, bytes);
+        try {
+            AamModel::load(path);
+            QFAIL("loaded a wrong version");
+        } catch (const Error &e) {
+            QVERIFY2(QString(e.what()).contains("version"), e.what());
+        }
+    }
+
+    void fitConvergesOnHeldOutFrame()
+    {
+        const AamFitter fitter(m_model);
+        int improved = 0;
+        for (const auto &e : gridExamples(true)) {
+            const cv::Mat image = cv::imread(e.imagePath);
+            QVERIFY(!image.empty());
+            // Perturb the labelled shape: shift 4 px, scale 6 %, rotate 3 degrees.
+            Similarity pose;
+            Eigen::VectorXd params;
+            fitter.projectShape(e.shape, pose, params);
+            Similarity perturb{1.06 * std::cos(0.05), 1.06 * std::sin(0.05), 0, 0};
+            const Eigen::Vector2d c = shapeCentroid(e.shape);
+            Similarity move = Similarity{1, 0, c.x() + 4, c.y() - 3}.compose(perturb.compose(Similarity{1, 0, -c.x(), -c.y()}));
+            const Eigen::VectorXd start = move.apply(e.shape);
+            const double before = normalisedMeanError(start, e.shape);
+            const AamFitResult fit = fitter.fit(image, start);
+            const double after = normalisedMeanError(fit.shape, e.shape);
+            qInfo("%s: NME %.4f -> %.4f, error %.4f, %d iterations", e.name.c_str(), before, after,
+                  fit.error, fit.iterations);
+            QVERIFY(before > 0.06);
+            QVERIFY2(after < 0.04, qPrintable(QString::number(after)));
+            improved += after < before;
+        }
+        QCOMPARE(improved, 2);
+    }
+
+    void fixedPointsStayPut()
+    {
+        const AamFitter fitter(m_model);
+        const auto held = gridExamples(true);
+        const cv::Mat image = cv::imread(held.front().imagePath);
+        AamFitOptions options;
+        options.fixedShape = held.front().shape;
+        options.fixedShape.segment<2>(2 * 20) += Eigen::Vector2d(0, 6); // user pulled the chin down
+        options.fixedMask.assign(23, false);
+        options.fixedMask[20] = true;
+        const AamFitResult fit = fitter.fit(image, held.front().shape, options);
+        QVERIFY((fit.shape.segment<2>(40) - options.fixedShape.segment<2>(40)).norm() < 1e-9);
+        // The rest of the face still fits.
+        QVERIFY(normalisedMeanError(fit.shape, held.front().shape) < 0.06);
+    }
+
+    void featuresAndSynthesis()
+    {
+        const AamFitter fitter(m_model);
+        const auto held = gridExamples(true);
+        const cv::Mat image = cv::imread(held.front().imagePath);
+        const AamFitResult fit = fitter.fit(image, held.front().shape);
+        const Eigen::VectorXd c = fitter.features(image, fit);
+        QCOMPARE(c.size(), Eigen::Index(m_model.combinedModes()));
+        QVERIFY(c.allFinite());
+
+        const AamSynthesizer synth(m_model);
+        // The synthesised shape of the fitted parameters is close to the fit.
+        const Eigen::VectorXd shape = fit.pose.apply(synth.shape(c));
+        QVERIFY2(normalisedMeanError(shape, fit.shape) < 0.03,
+                 qPrintable(QString::number(normalisedMeanError(shape, fit.shape))));
+        // Compositing changes pixels inside the face and none far outside it.
+        cv::Mat frame(image.size(), CV_8UC3, cv::Scalar(0, 255, 0));
+        synth.composite(c, fit.pose, frame);
+        const Eigen::Vector2d mouth = fit.shape.segment<2>(2 * 14);
+        const cv::Vec3b inside = frame.at<cv::Vec3b>(int(mouth.y()) - 3, int(mouth.x()));
+        QVERIFY(inside != cv::Vec3b(0, 255, 0));
+        QCOMPARE(frame.at<cv::Vec3b>(2, 2), cv::Vec3b(0, 255, 0));
+        // The composite resembles the real frame inside the face (reconstruction, not noise).
+        cv::Mat real = image.clone();
+        synth.composite(c, fit.pose, real);
+        cv::Mat diff;
+        cv::absdiff(real, image, diff);
+        const cv::Rect box(int(fit.shape[36]) + 5, int(fit.shape[1]), 30, 40);
+        QVERIFY2(cv::mean(diff(box))[1] < 25.0, qPrintable(QString::number(cv::mean(diff(box))[1])));
+        // Fast enough for preview: well above 300 frames/s at 360x288 (loose bound for CI).
+        const auto t0 = std::chrono::steady_clock::now();
+        for (int i = 0; i < 100; ++i)
+            synth.composite(c, fit.pose, frame);
+        const double fps = 100 / std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        qInfo("synthesis: %.0f frames/s", fps);
+        QVERIFY(fps > 150);
+    }
+
+    void badInput()
+    {
+        Feedback feedback;
+        auto examples = gridExamples(false);
+        // Fewer than 3 usable images.
+        std::vector<AamTrainingExample> two(examples.begin(), examples.begin() + 2);
+        QVERIFY_THROWS_EXCEPTION(Error, buildAam(two, {}, feedback));
+        // Points outside the image and a degenerate shape are skipped with a warning.
+        std::vector<AamTrainingExample> some(examples.begin(), examples.begin() + 6);
+        some[0].shape[0] = -50;
+        some[1].shape = Eigen::VectorXd::Constant(46, 100.0);
+        // Images of different sizes are fine.
+        some[2].image = cv::imread(some[2].imagePath);
+        cv::resize(some[2].image, some[2].image, cv::Size(), 1.5, 1.5);
+        some[2].shape = (some[2].shape.array() + 0.5) * 1.5 - 0.5;
+        std::vector<std::string> warnings;
+        const AamModel m = buildAam(some, {}, feedback, &warnings);
+        QCOMPARE(m.trainingImages, 4);
+        QCOMPARE(int(warnings.size()), 2);
+        QVERIFY(QString::fromStdString(warnings[0]).contains("outside"));
+        QVERIFY(QString::fromStdString(warnings[1]).contains("degenerate"));
+        // Fewer frames than modes: the model keeps at most n-1 modes.
+        QVERIFY(m.shapeModes() <= 3 && m.combinedModes() <= 3);
+        // Unreadable directory.
+        QVERIFY_THROWS_EXCEPTION(Error, loadTrainingDirectory("/nonexistent/faces"));
+        // Cancel.
+        feedback.cancel();
+        QVERIFY_THROWS_EXCEPTION(Canceled, buildAam(examples, {}, feedback));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestAam)
+#include "tst_aam.moc"
