@@ -34,7 +34,13 @@ int fail(const QString &message, int exitCode)
     return exitCode;
 }
 
-Arguments::Arguments(const QStringList &args)
+QStringList Arguments::defaultBooleanFlags()
+{
+    return {QStringLiteral("json"), QStringLiteral("force"), QStringLiteral("help"),
+            QStringLiteral("side-by-side"), QStringLiteral("verbose"), QStringLiteral("quiet")};
+}
+
+Arguments::Arguments(const QStringList &args, const QStringList &booleanFlags)
 {
     for (int i = 0; i < args.size(); ++i) {
         const QString &a = args[i];
@@ -42,7 +48,8 @@ Arguments::Arguments(const QStringList &args)
             const int eq = a.indexOf(QLatin1Char('='));
             if (eq > 0) {
                 m_options[a.mid(2, eq - 2)] = a.mid(eq + 1);
-            } else if (i + 1 < args.size() && !args[i + 1].startsWith(QLatin1String("--"))) {
+            } else if (!booleanFlags.contains(a.mid(2)) && i + 1 < args.size()
+                       && !args[i + 1].startsWith(QLatin1String("--"))) {
                 m_options[a.mid(2)] = args[i + 1];
                 ++i;
             } else {

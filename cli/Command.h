@@ -34,11 +34,14 @@ void printJson(const QJsonObject &object);
 // Prints "lipsync: <message>" on stderr and returns the exit code.
 int fail(const QString &message, int exitCode = 1);
 
-// Minimal option parsing shared by commands: --name value, --flag, and positionals.
+// Minimal option parsing shared by commands: --name value, --name=value, --flag, positionals.
+// Options named in `booleanFlags` never take a value, so "--json DIR" keeps DIR positional.
 class Arguments
 {
 public:
-    explicit Arguments(const QStringList &args);
+    static QStringList defaultBooleanFlags();
+    explicit Arguments(const QStringList &args,
+                       const QStringList &booleanFlags = defaultBooleanFlags());
     bool flag(const QString &name) const;                // --name present
     QString value(const QString &name, const QString &fallback = {}) const; // --name VALUE
     bool has(const QString &name) const;

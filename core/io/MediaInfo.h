@@ -1,5 +1,14 @@
 #pragma once
 // What a media file holds, as `lipsync info` and the project import report it.
+//
+// Damaged files, the policy all of core/io shares (MediaInfo::probe, VideoReader,
+// AudioDecoder::decode): a truncated file is an error, not a shorter clip. "Truncated" means
+// the file ends inside a packet: the last picture needs concealment, the last MPEG audio frame
+// is shorter than its header says, a video packet yields no picture, the demuxer reports a
+// packet cut short, or a container that states its length (WAV, MP4) decodes shorter. The
+// error reads "<file>: truncated or damaged file: <why>". Concealed damage in the middle of a
+// stream is tolerated and counted (damagedFrames); frames before a stream's first keyframe
+// decode (often flat grey) and count as frames.
 #include <string>
 
 namespace lipsync {
@@ -16,10 +25,18 @@ struct MediaInfo
     bool hasAudio = false;
     int audioSampleRate = 0;
     int audioChannels = 0;
-    double audioDuration = 0.0; // seconds
+    double audioDuration = 0.0; // seconds (decoded samples / rate)
 
-    // Probes `path` with libavformat (streams, rates) and OpenCV (frame count by decoding).
-    // Throws lipsync::Error naming the file for missing, empty, truncated or unsupported media.
+    std::string format;     // container, libavformat's name ("mpeg", "mov,mp4,m4a,3gp,3g2,mj2", "wav")
+    std::string videoCodec; // "mpeg1video", "h264", ... (empty without video)
+    std::string audioCodec; // "mp2", "pcm_s16le", ... (empty without audio)
+    double audioStartTime = 0.0; // first audio sample, seconds from the file start
+    int damagedFrames = 0;  // video frames the decoder had to conceal (tolerated unless last)
+
+    // Probes `path` with libavformat (streams, rates) and counts frames and audio samples by
+    // decoding the whole file once with libavcodec (the decoder OpenCV uses too; cached per
+    // file). A file without audio is fine (hasAudio = false). Throws lipsync::Error naming the
+    // file for missing, empty, truncated or unsupported media.
     static MediaInfo probe(const std::string &path);
 };
 

@@ -1,10 +1,18 @@
 #pragma once
 // Video frames through OpenCV with real timestamps. Random access by frame index (seeks and
 // decodes forward; sequential reads are cheap). Frames are BGR 8-bit cv::Mat.
+//
+// The frame count and the timestamps come from one full decode of the file at construction
+// (cached per file for the process), so frameCount() is what really decodes, not the
+// container's estimate. Frames a stream holds before its first keyframe (some GRID clips) are
+// returned as the decoder produces them (often flat grey), not skipped.
+// Truncated files (cut inside a packet) are rejected by the constructor, as by MediaInfo::probe
+// and AudioDecoder::decode. One reader is not thread-safe; use one per thread.
 #include <opencv2/core.hpp>
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace cv { class VideoCapture; }
 
@@ -27,10 +35,17 @@ public:
 
     // Frame `index` (0-based). Throws lipsync::Error if it cannot be decoded (truncated file).
     cv::Mat frame(int index);
-    // Presentation time of frame `index` in seconds.
+    // Presentation time of frame `index` in seconds from the start of the file (the time base
+    // AudioBuffer::startTime uses). Indices past the end extrapolate at frameRate().
     double timestamp(int index) const;
+    // All frames' presentation times (frameCount() entries).
+    const std::vector<double> &timestamps() const { return m_frameTimes; }
 
 private:
+    void reopen();
+    bool seekTo(int index, cv::Mat &image);
+    cv::Mat readNext();
+
     std::string m_path;
     std::unique_ptr<cv::VideoCapture> m_capture;
     int m_frameCount = 0;
@@ -38,6 +53,8 @@ private:
     int m_width = 0;
     int m_height = 0;
     int m_nextIndex = 0; // index of the frame the next read() returns
+    std::vector<double> m_frameTimes;
+    double m_videoStart = 0.0; // video stream start, seconds from the file start (OpenCV's zero)
 };
 
 } // namespace lipsync

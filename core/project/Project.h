@@ -5,8 +5,10 @@
 //   features/<id>.csv     per-sequence features (frame index, then the parameters)
 //   media/ aam/ models/   media, built AAMs and trained models (referenced by relative path)
 // Load validates everything and throws lipsync::Error naming the file and the field
-// ("project.json: sequences[2].frameRate: must be positive"). Save is atomic per file
-// (QSaveFile), so a crash leaves either the old or the new version.
+// (".../project.json: sequences[2].frameRate: must be a positive number"). Missing media is not
+// a load error (it may be on another disk; see mediaPath), a missing features file is. Save is
+// atomic per file (QSaveFile), so a crash leaves either the old or the new version. The manifest
+// format is read and written by ProjectManifest.
 #include "project/Sequence.h"
 
 #include <string>
@@ -31,22 +33,40 @@ public:
 
     Project() = default;
 
-    // Reads <folder>/project.json and the files it references. Throws lipsync::Error.
+    // Reads <folder>/project.json and the feature files it references. `folder` may also be the
+    // path of the manifest itself. folder() becomes the absolute folder. Throws lipsync::Error.
     static Project load(const std::string &folder);
     // Writes the manifest and the feature files into `folder` (created if missing), keeping the
-    // previous manifest as project.json.bak. Throws lipsync::Error on I/O failure.
+    // previous manifest as project.json.bak. The content is validated first, so a project that
+    // would not load again (NaN features, a bad frame rate, ...) is not written. Throws
+    // lipsync::Error on invalid content or I/O failure; the old files stay then.
+    // Saving into a folder other than folder() writes only the manifest and the features there;
+    // relative media and model paths are rewritten relative to the new folder so they still
+    // point at the same files (media is never copied), absolute paths stay absolute. The object
+    // itself is unchanged: use saveAs to move it to the new folder.
     void save(const std::string &folder) const;
     void save() const { save(m_folder); }
+    // save(folder), then the project lives in `folder`: relative paths rebased, folder() set.
+    void saveAs(const std::string &folder);
 
-    // Creates a project from a folder of media files (*.mpg, *.mp4, *.mov, *.avi, *.wav),
-    // probing each for frame rate and count and reading a transcript and word tier from a
-    // sibling <stem>.align / .lab / .txt when present.
+    // Creates a project (not yet saved) in `projectFolder` from a folder of media files (*.mpg,
+    // *.mp4, *.mov, *.avi, *.mkv, *.wav; sorted by name, id = file stem), probing each for frame
+    // rate and count and reading a transcript and word tier from a sibling <stem>.align (GRID
+    // word timings) or a plain-text transcript <stem>.lab / <stem>.txt when present. Media paths
+    // are relative to projectFolder. Audio-only files get kAudioOnlyFrameRate. Throws
+    // lipsync::Error naming the file for unreadable media or transcripts.
     static Project fromMediaFolder(const std::string &mediaFolder, const std::string &projectFolder);
+    // The frame grid of sequences without video (features are still per frame).
+    static constexpr double kAudioOnlyFrameRate = 25.0;
 
     const std::string &folder() const { return m_folder; }
     void setFolder(const std::string &folder) { m_folder = folder; }
     // Absolute path of a file referenced relative to the project folder.
     std::string resolve(const std::string &relative) const;
+    std::string mediaPath(const Sequence &sequence) const { return resolve(sequence.mediaFile); }
+    // The manifest path inside folder() (or `folder`).
+    std::string manifestPath() const { return manifestPath(m_folder); }
+    static std::string manifestPath(const std::string &folder);
 
     std::string name;
     std::vector<Sequence> sequences;

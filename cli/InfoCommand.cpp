@@ -1,0 +1,215 @@
+// lipsync info PATH [--json]: what a media file or a project folder holds.
+//   media file:     frames, fps, duration, size, audio rate/channels/duration (decoded counts)
+//   project folder: its sequences (count, total frames and duration, per sequence id/frames/fps)
+// Bad input (missing, empty, truncated, unsupported) exits 1 with one line naming the file.
+#include "Command.h"
+
+#include "io/MediaInfo.h"
+#include "project/Project.h"
+#include "util/Error.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QTextStream>
+
+#include <cmath>
+#include <cstdio>
+
+namespace {
+
+using lipsync::cli::Arguments;
+using lipsync::cli::fail;
+using lipsync::cli::printJson;
+
+QString number(double value, int decimals)
+{
+    return QString::number(value, 'f', decimals);
+}
+
+// 25 -> "25", 29.97002997 -> "29.97"
+QString rate(double fps)
+{
+    return QString::number(fps, 'g', 6);
+}
+
+void printRows(const QList<QPair<QString, QString>> &rows)
+{
+    int width = 0;
+    for (const auto &row : rows)
+        width = std::max(width, int(row.first.size()));
+    QTextStream out(stdout);
+    for (const auto &row : rows)
+        out << row.first.leftJustified(width + 2) << row.second << '\n';
+}
+
+int infoMedia(const QString &path, bool json)
+{
+    const lipsync::MediaInfo info = lipsync::MediaInfo::probe(path.toStdString());
+    const double duration = info.hasVideo ? info.videoDuration : info.audioDuration;
+    if (json) {
+        QJsonObject o;
+        o[QStringLiteral("path")] = path;
+        o[QStringLiteral("kind")] = QStringLiteral("media");
+        o[QStringLiteral("format")] = QString::fromStdString(info.format);
+        o[QStringLiteral("has_video")] = info.hasVideo;
+        o[QStringLiteral("frames")] = info.frameCount;
+        o[QStringLiteral("fps")] = info.frameRate;
+        o[QStringLiteral("duration")] = duration;
+        o[QStringLiteral("width")] = info.width;
+        o[QStringLiteral("height")] = info.height;
+        o[QStringLiteral("video_codec")] = QString::fromStdString(info.videoCodec);
+        o[QStringLiteral("has_audio")] = info.hasAudio;
+        o[QStringLiteral("audio_rate")] = info.audioSampleRate;
+        o[QStringLiteral("audio_channels")] = info.audioChannels;
+        o[QStringLiteral("audio_duration")] = info.audioDuration;
+        o[QStringLiteral("audio_codec")] = QString::fromStdString(info.audioCodec);
+        printJson(o);
+        return 0;
+    }
+    QList<QPair<QString, QString>> rows;
+    rows << qMakePair(QStringLiteral("path"), path);
+    rows << qMakePair(QStringLiteral("kind"),
+                      QStringLiteral("media (%1)").arg(QString::fromStdString(info.format)));
+    if (info.hasVideo) {
+        rows << qMakePair(QStringLiteral("frames"), QString::number(info.frameCount));
+        rows << qMakePair(QStringLiteral("fps"), rate(info.frameRate));
+        rows << qMakePair(QStringLiteral("duration"), number(duration, 3) + QStringLiteral(" s"));
+        rows << qMakePair(QStringLiteral("size"),
+                          QStringLiteral("%1 x %2").arg(info.width).arg(info.height));
+        rows << qMakePair(QStringLiteral("video codec"), QString::fromStdString(info.videoCodec));
+    } else {
+        rows << qMakePair(QStringLiteral("video"), QStringLiteral("none"));
+    }
+    if (info.hasAudio) {
+        rows << qMakePair(QStringLiteral("audio rate"),
+                          QStringLiteral("%1 Hz").arg(info.audioSampleRate));
+        rows << qMakePair(QStringLiteral("audio channels"), QString::number(info.audioChannels));
+        rows << qMakePair(QStringLiteral("audio duration"),
+                          number(info.audioDuration, 3) + QStringLiteral(" s"));
+        rows << qMakePair(QStringLiteral("audio codec"), QString::fromStdString(info.audioCodec));
+    } else {
+        rows << qMakePair(QStringLiteral("audio"), QStringLiteral("none"));
+    }
+    printRows(rows);
+    return 0;
+}
+
+int infoProject(const QString &path, bool json)
+{
+    const lipsync::Project project = lipsync::Project::load(path.toStdString());
+    long long totalFrames = 0;
+    double totalDuration = 0.0;
+    double commonRate = -1.0; // -1: none yet, 0: mixed
+    for (const lipsync::Sequence &s : project.sequences) {
+        totalFrames += s.frameCount;
+        totalDuration += s.duration();
+        if (commonRate < 0)
+            commonRate = s.frameRate;
+        else if (std::abs(commonRate - s.frameRate) > 1e-9)
+            commonRate = 0.0;
+    }
+
+    if (json) {
+        QJsonArray sequences;
+        for (const lipsync::Sequence &s : project.sequences) {
+            QJsonObject o;
+            o[QStringLiteral("id")] = QString::fromStdString(s.id);
+            o[QStringLiteral("media")] = QString::fromStdString(s.mediaFile);
+            o[QStringLiteral("frames")] = s.frameCount;
+            o[QStringLiteral("fps")] = s.frameRate;
+            o[QStringLiteral("duration")] = s.duration();
+            o[QStringLiteral("transcript")] = QString::fromStdString(s.transcript);
+            sequences.append(o);
+        }
+        QJsonObject o;
+        o[QStringLiteral("path")] = path;
+        o[QStringLiteral("kind")] = QStringLiteral("project");
+        o[QStringLiteral("name")] = QString::fromStdString(project.name);
+        o[QStringLiteral("sequence_count")] = int(project.sequences.size());
+        o[QStringLiteral("frames")] = double(totalFrames);
+        // The frame rate the sequences share, null when they differ or there are none.
+        o[QStringLiteral("fps")] = commonRate > 0 ? QJsonValue(commonRate) : QJsonValue();
+        o[QStringLiteral("duration")] = totalDuration;
+        // Media-level facts are per sequence (run `lipsync info` on a sequence's media file).
+        for (const char *key : {"width", "height", "audio_rate", "audio_channels",
+                                "audio_duration", "has_audio"})
+            o[QLatin1String(key)] = QJsonValue();
+        o[QStringLiteral("sequences")] = sequences;
+        printJson(o);
+        return 0;
+    }
+
+    QList<QPair<QString, QString>> rows;
+    rows << qMakePair(QStringLiteral("path"), path);
+    rows << qMakePair(QStringLiteral("kind"),
+                      project.name.empty()
+                          ? QStringLiteral("project")
+                          : QStringLiteral("project \"%1\"").arg(QString::fromStdString(project.name)));
+    rows << qMakePair(QStringLiteral("sequences"), QString::number(project.sequences.size()));
+    rows << qMakePair(QStringLiteral("frames"), QString::number(totalFrames));
+    rows << qMakePair(QStringLiteral("fps"),
+                      commonRate > 0 ? rate(commonRate)
+                                     : (commonRate == 0 ? QStringLiteral("mixed")
+                                                        : QStringLiteral("-")));
+    rows << qMakePair(QStringLiteral("duration"), number(totalDuration, 3) + QStringLiteral(" s"));
+    printRows(rows);
+    if (project.sequences.empty())
+        return 0;
+
+    // Sequence table.
+    int idWidth = 2;
+    for (const lipsync::Sequence &s : project.sequences)
+        idWidth = std::max(idWidth, int(s.id.size()));
+    QTextStream out(stdout);
+    out << '\n'
+        << QStringLiteral("id").leftJustified(idWidth + 2) << QStringLiteral("frames").rightJustified(7)
+        << QStringLiteral("fps").rightJustified(9) << QStringLiteral("duration").rightJustified(11)
+        << QStringLiteral("  media") << '\n';
+    for (const lipsync::Sequence &s : project.sequences)
+        out << QString::fromStdString(s.id).leftJustified(idWidth + 2)
+            << QString::number(s.frameCount).rightJustified(7) << rate(s.frameRate).rightJustified(9)
+            << (number(s.duration(), 3) + QStringLiteral(" s")).rightJustified(11) << QStringLiteral("  ")
+            << QString::fromStdString(s.mediaFile) << '\n';
+    return 0;
+}
+
+int runInfo(const QStringList &args)
+{
+    const Arguments arguments(args);
+    const QStringList unknown = arguments.unknown({QStringLiteral("json")});
+    if (!unknown.isEmpty())
+        return fail(QStringLiteral("info: unknown option %1 (usage: lipsync info PATH [--json])")
+                        .arg(unknown.join(QLatin1String(", "))),
+                    2);
+    // "--json PATH" parses as an option with a value: take the value as the path.
+    QStringList positional = arguments.positional();
+    if (!arguments.value(QStringLiteral("json")).isEmpty())
+        positional.prepend(arguments.value(QStringLiteral("json")));
+    if (positional.size() != 1)
+        return fail(QStringLiteral("usage: lipsync info PATH [--json]"), 2);
+    const QString path = positional.constFirst();
+    const bool json = arguments.flag(QStringLiteral("json"));
+    try {
+        const QFileInfo file(path);
+        if (!file.exists())
+            return fail(QStringLiteral("%1: file not found").arg(path));
+        if (file.isDir()) {
+            if (!QFileInfo::exists(QDir(path).filePath(QString::fromLatin1(lipsync::Project::kManifestName))))
+                return fail(QStringLiteral("%1: a folder without %2 (neither a media file nor a project)")
+                                .arg(path, QString::fromLatin1(lipsync::Project::kManifestName)));
+            return infoProject(path, json);
+        }
+        if (file.fileName() == QLatin1String(lipsync::Project::kManifestName))
+            return infoProject(file.absolutePath(), json);
+        return infoMedia(path, json);
+    } catch (const lipsync::Error &e) {
+        return fail(QString::fromUtf8(e.what()));
+    }
+}
+
+const lipsync::cli::CommandRegistration registration{
+    QStringLiteral("info"), QStringLiteral("summary of a media file or project (frames, fps, audio)"),
+    &runInfo};
+
+} // namespace

@@ -1,0 +1,133 @@
+// `lipsync project create` (a project from a folder of clips) and `lipsync project check`
+// (load and validate a project, report what it holds and which media are missing).
+#include "Command.h"
+
+#include "project/Project.h"
+#include "util/Error.h"
+
+#include <QFileInfo>
+#include <QJsonArray>
+
+#include <cstdio>
+
+using namespace lipsync;
+using namespace lipsync::cli;
+
+namespace {
+
+QString q(const std::string &s)
+{
+    return QString::fromStdString(s);
+}
+
+QJsonObject sequenceSummary(const Project &project, const Sequence &s)
+{
+    return QJsonObject{{"id", q(s.id)},
+                       {"mediaFile", q(s.mediaFile)},
+                       {"mediaFound", QFileInfo(q(project.mediaPath(s))).isFile()},
+                       {"frameRate", s.frameRate},
+                       {"frameCount", s.frameCount},
+                       {"duration", s.duration()},
+                       {"transcript", q(s.transcript)},
+                       {"words", qint64(s.words.intervals.size())},
+                       {"phones", qint64(s.phones.intervals.size())},
+                       {"landmarkFrames", qint64(s.landmarks.size())},
+                       {"featureRows", qint64(s.features.rows())},
+                       {"featureColumns", qint64(s.features.cols())}};
+}
+
+QJsonObject projectSummary(const Project &project)
+{
+    QJsonArray sequences;
+    QJsonArray missing;
+    for (const Sequence &s : project.sequences) {
+        sequences.append(sequenceSummary(project, s));
+        if (!QFileInfo(q(project.mediaPath(s))).isFile())
+            missing.append(q(project.mediaPath(s)));
+    }
+    QJsonArray models;
+    for (const ModelReference &m : project.models)
+        models.append(QJsonObject{{"kind", q(m.kind)},
+                                  {"name", q(m.name)},
+                                  {"file", q(m.file)},
+                                  {"found", QFileInfo(q(project.resolve(m.file))).isFile()}});
+    return QJsonObject{{"project", q(project.manifestPath())},
+                       {"name", q(project.name)},
+                       {"formatVersion", Project::kFormatVersion},
+                       {"sequences", sequences},
+                       {"models", models},
+                       {"missingMedia", missing}};
+}
+
+void printSummary(const Project &project)
+{
+    int frames = 0;
+    for (const Sequence &s : project.sequences)
+        frames += s.frameCount;
+    std::printf("%s: %zu sequences, %d frames, %zu models\n",
+                project.manifestPath().c_str(), project.sequences.size(), frames,
+                project.models.size());
+    for (const Sequence &s : project.sequences) {
+        const bool found = QFileInfo(q(project.mediaPath(s))).isFile();
+        std::printf("  %-12s %5d frames @ %6.3f fps  %3zu landmark frames  %s%s\n", s.id.c_str(),
+                    s.frameCount, s.frameRate, s.landmarks.size(),
+                    s.transcript.empty() ? "(no transcript)" : ("\"" + s.transcript + "\"").c_str(),
+                    found ? "" : "  [media not found]");
+    }
+}
+
+int runCreate(const QStringList &args)
+{
+    const Arguments a(args);
+    const QString usage =
+        QStringLiteral("usage: lipsync project create --media DIR --out DIR [--force] [--json]");
+    if (!a.unknown({"media", "out", "force", "json"}).isEmpty())
+        return fail(QStringLiteral("unknown option %1; %2").arg(a.unknown({"media", "out", "force", "json"}).join(' '), usage), 2);
+    if (!a.positional().isEmpty() || a.value("media").isEmpty() || a.value("out").isEmpty())
+        return fail(usage, 2);
+    const std::string out = a.value("out").toStdString();
+    if (QFileInfo(q(Project::manifestPath(out))).exists() && !a.flag("force"))
+        return fail(QStringLiteral("%1 already exists; use --force to replace it (the old "
+                                   "manifest is kept as project.json.bak)")
+                        .arg(q(Project::manifestPath(out))));
+    try {
+        const Project project = Project::fromMediaFolder(a.value("media").toStdString(), out);
+        project.save();
+        if (a.flag("json"))
+            printJson(projectSummary(project));
+        else
+            printSummary(project);
+    } catch (const Error &e) {
+        return fail(QString::fromUtf8(e.what()));
+    }
+    return 0;
+}
+
+int runCheck(const QStringList &args)
+{
+    const Arguments a(args);
+    const QString usage = QStringLiteral("usage: lipsync project check DIR [--json]");
+    if (!a.unknown({"json"}).isEmpty())
+        return fail(QStringLiteral("unknown option %1; %2").arg(a.unknown({"json"}).join(' '), usage), 2);
+    const QStringList positional = a.positional();
+    if (positional.size() != 1)
+        return fail(usage, 2);
+    try {
+        // Missing media is reported, not an error: the clips may be on a disk not mounted now.
+        const Project project = Project::load(positional[0].toStdString());
+        if (a.flag("json"))
+            printJson(projectSummary(project));
+        else
+            printSummary(project);
+    } catch (const Error &e) {
+        return fail(QString::fromUtf8(e.what()));
+    }
+    return 0;
+}
+
+const CommandRegistration createRegistration{
+    "project create", "make a project from a folder of clips (--media DIR --out DIR)", &runCreate};
+const CommandRegistration checkRegistration{
+    "project check", "load and validate a project folder, list its sequences", &runCheck};
+
+} // namespace

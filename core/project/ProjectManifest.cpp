@@ -1,0 +1,547 @@
+#include "project/ProjectManifest.h"
+
+#include "io/FeatureCsv.h"
+#include "util/Error.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonValue>
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <set>
+
+namespace lipsync {
+
+namespace {
+
+QString q(const std::string &s)
+{
+    return QString::fromStdString(s);
+}
+
+std::string absoluteFolder(const std::string &folder)
+{
+    return QDir::cleanPath(QFileInfo(q(folder.empty() ? std::string(".") : folder)).absoluteFilePath())
+        .toStdString();
+}
+
+// ---- reading ------------------------------------------------------------------------------
+
+std::string member(const std::string &parent, const char *key)
+{
+    return parent.empty() ? std::string(key) : parent + "." + key;
+}
+
+std::string element(const std::string &parent, qsizetype index)
+{
+    return parent + "[" + std::to_string(index) + "]";
+}
+
+std::string describe(const QJsonValue &value)
+{
+    switch (value.type()) {
+    case QJsonValue::Null: return "null";
+    case QJsonValue::Bool: return "a boolean";
+    case QJsonValue::Double: return QString::number(value.toDouble()).toStdString();
+    case QJsonValue::String: return "a string";
+    case QJsonValue::Array: return "an array";
+    case QJsonValue::Object: return "an object";
+    case QJsonValue::Undefined: break;
+    }
+    return "missing";
+}
+
+class Reader
+{
+public:
+    Reader(std::string manifestPath, std::string folder, bool readFeatures)
+        : m_path(std::move(manifestPath)), m_folder(std::move(folder)), m_readFeatures(readFeatures)
+    {
+    }
+
+    Project read(const QJsonObject &root) const
+    {
+        // Format and version first: a newer manifest may well have fields this build does not
+        // know, and "newer version" is the useful message then, not "unknown field".
+        const std::string format = string(require(root, "format", ""), "format", false);
+        if (format != ProjectManifest::kFormatName)
+            fail("format", "is '" + format + "', expected '" + ProjectManifest::kFormatName + "'");
+        const QJsonValue versionValue = require(root, "version", "");
+        if (!versionValue.isDouble() || versionValue.toDouble() != std::floor(versionValue.toDouble()))
+            fail("version", "must be an integer, found " + describe(versionValue));
+        const double version = versionValue.toDouble();
+        if (version > Project::kFormatVersion)
+            fail("version", "project format version " + QString::number(version).toStdString()
+                                + " is newer than this build of LipSync Studio reads (up to "
+                                + std::to_string(Project::kFormatVersion)
+                                + "); open it with a newer version");
+        if (version < 1)
+            fail("version", "must be at least 1");
+        checkKeys(root, "", {"format", "version", "name", "sequences", "models"});
+
+        Project project;
+        if (root.contains("name"))
+            project.name = string(root.value("name"), "name", true);
+
+        const QJsonArray sequences = array(require(root, "sequences", ""), "sequences");
+        std::set<std::string> ids;
+        for (qsizetype i = 0; i < sequences.size(); ++i) {
+            const std::string field = element("sequences", i);
+            Sequence sequence = readSequence(object(sequences[i], field), field);
+            if (!ids.insert(sequence.id).second)
+                fail(member(field, "id"), "'" + sequence.id + "' is used by an earlier sequence");
+            project.sequences.push_back(std::move(sequence));
+        }
+
+        if (root.contains("models")) {
+            const QJsonArray models = array(root.value("models"), "models");
+            for (qsizetype i = 0; i < models.size(); ++i)
+                project.models.push_back(readModel(object(models[i], element("models", i)),
+                                                   element("models", i)));
+        }
+        return project;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string &field, const std::string &message) const
+    {
+        throw Error(message, m_path, field.empty() ? std::string("(top level)") : field);
+    }
+
+    void checkKeys(const QJsonObject &object, const std::string &field,
+                   std::initializer_list<const char *> known) const
+    {
+        for (auto it = object.begin(); it != object.end(); ++it) {
+            const std::string key = it.key().toStdString();
+            if (std::none_of(known.begin(), known.end(), [&](const char *k) { return key == k; }))
+                fail(member(field, key.c_str()), "unknown field (misspelt, or from a newer version?)");
+        }
+    }
+
+    QJsonValue require(const QJsonObject &object, const char *key, const std::string &parent) const
+    {
+        if (!object.contains(QLatin1String(key)))
+            fail(member(parent, key), "missing");
+        return object.value(QLatin1String(key));
+    }
+
+    QJsonObject object(const QJsonValue &value, const std::string &field) const
+    {
+        if (!value.isObject())
+            fail(field, "must be an object, found " + describe(value));
+        return value.toObject();
+    }
+
+    QJsonArray array(const QJsonValue &value, const std::string &field) const
+    {
+        if (!value.isArray())
+            fail(field, "must be an array, found " + describe(value));
+        return value.toArray();
+    }
+
+    std::string string(const QJsonValue &value, const std::string &field, bool allowEmpty) const
+    {
+        if (!value.isString())
+            fail(field, "must be a string, found " + describe(value));
+        const std::string text = value.toString().toStdString();
+        if (!allowEmpty && text.empty())
+            fail(field, "must not be empty");
+        return text;
+    }
+
+    double number(const QJsonValue &value, const std::string &field) const
+    {
+        if (!value.isDouble() || !std::isfinite(value.toDouble()))
+            fail(field, "must be a finite number, found " + describe(value));
+        return value.toDouble();
+    }
+
+    int integer(const QJsonValue &value, const std::string &field, int minimum) const
+    {
+        const double v = value.isDouble() ? value.toDouble() : std::numeric_limits<double>::quiet_NaN();
+        if (!std::isfinite(v) || v != std::floor(v) || v < minimum
+            || v > std::numeric_limits<int>::max())
+            fail(field, "must be an integer >= " + std::to_string(minimum) + ", found "
+                            + describe(value));
+        return int(v);
+    }
+
+    bool boolean(const QJsonValue &value, const std::string &field) const
+    {
+        if (!value.isBool())
+            fail(field, "must be true or false, found " + describe(value));
+        return value.toBool();
+    }
+
+    Sequence readSequence(const QJsonObject &o, const std::string &field) const
+    {
+        checkKeys(o, field, {"id", "mediaFile", "frameRate", "frameCount", "transcript", "features",
+                             "tiers", "landmarks"});
+        Sequence s;
+        s.id = string(require(o, "id", field), member(field, "id"), false);
+        // The id names files (features/<id>.csv), so it must stay inside the project folder.
+        if (s.id.find_first_of("/\\") != std::string::npos || s.id.front() == '.'
+            || std::any_of(s.id.begin(), s.id.end(), [](char c) { return (unsigned char)c < 32; }))
+            fail(member(field, "id"), "'" + s.id
+                                          + "' must not contain '/', '\\' or control characters "
+                                            "nor start with '.'");
+        s.mediaFile = string(require(o, "mediaFile", field), member(field, "mediaFile"), false);
+        const QJsonValue rate = require(o, "frameRate", field);
+        if (!rate.isDouble() || !std::isfinite(rate.toDouble()) || rate.toDouble() <= 0)
+            fail(member(field, "frameRate"), "must be a positive number, found " + describe(rate));
+        s.frameRate = rate.toDouble();
+        s.frameCount = integer(require(o, "frameCount", field), member(field, "frameCount"), 0);
+        if (o.contains("transcript"))
+            s.transcript = string(o.value("transcript"), member(field, "transcript"), true);
+
+        if (o.contains("tiers")) {
+            const std::string tiersField = member(field, "tiers");
+            const QJsonObject tiers = object(o.value("tiers"), tiersField);
+            checkKeys(tiers, tiersField, {"words", "phones"});
+            if (tiers.contains("words"))
+                s.words.intervals = readIntervals(tiers.value("words"), member(tiersField, "words"));
+            if (tiers.contains("phones"))
+                s.phones.intervals = readIntervals(tiers.value("phones"), member(tiersField, "phones"));
+        }
+
+        if (o.contains("landmarks")) {
+            const std::string lmField = member(field, "landmarks");
+            const QJsonArray frames = array(o.value("landmarks"), lmField);
+            for (qsizetype i = 0; i < frames.size(); ++i) {
+                const std::string frameField = element(lmField, i);
+                const QJsonObject frame = object(frames[i], frameField);
+                checkKeys(frame, frameField, {"frame", "points"});
+                const int index = integer(require(frame, "frame", frameField),
+                                          member(frameField, "frame"), 0);
+                if (index >= s.frameCount)
+                    fail(member(frameField, "frame"), std::to_string(index)
+                                                          + " is not below frameCount "
+                                                          + std::to_string(s.frameCount));
+                if (s.landmarks.count(index))
+                    fail(member(frameField, "frame"), std::to_string(index)
+                                                          + " appears twice");
+                s.landmarks[index] = readLandmarks(require(frame, "points", frameField),
+                                                   member(frameField, "points"));
+            }
+        }
+
+        if (o.contains("features")) {
+            const std::string featuresField = member(field, "features");
+            const std::string relative = string(o.value("features"), featuresField, false);
+            if (m_readFeatures)
+                s.features = readFeatures(relative, s, featuresField);
+        }
+        return s;
+    }
+
+    std::vector<Interval> readIntervals(const QJsonValue &value, const std::string &field) const
+    {
+        const QJsonArray items = array(value, field);
+        std::vector<Interval> intervals;
+        for (qsizetype i = 0; i < items.size(); ++i) {
+            const std::string f = element(field, i);
+            const QJsonObject o = object(items[i], f);
+            checkKeys(o, f, {"start", "end", "label", "userEdited"});
+            Interval interval;
+            interval.start = number(require(o, "start", f), member(f, "start"));
+            interval.end = number(require(o, "end", f), member(f, "end"));
+            interval.label = string(require(o, "label", f), member(f, "label"), true);
+            if (o.contains("userEdited"))
+                interval.userEdited = boolean(o.value("userEdited"), member(f, "userEdited"));
+            if (interval.start < 0)
+                fail(member(f, "start"), "must not be negative");
+            if (interval.end < interval.start)
+                fail(member(f, "end"), "is before start");
+            // The timeline and Tier::indexAt rely on sorted, non-overlapping intervals.
+            if (!intervals.empty() && interval.start < intervals.back().end)
+                fail(member(f, "start"), "overlaps the previous interval (which ends at "
+                                             + QString::number(intervals.back().end).toStdString()
+                                             + ")");
+            intervals.push_back(std::move(interval));
+        }
+        return intervals;
+    }
+
+    LandmarkSet readLandmarks(const QJsonValue &value, const std::string &field) const
+    {
+        const QJsonArray points = array(value, field);
+        if (points.size() != LandmarkSet::kPointCount)
+            fail(field, "has " + std::to_string(points.size()) + " points, expected "
+                            + std::to_string(LandmarkSet::kPointCount));
+        LandmarkSet set;
+        for (qsizetype i = 0; i < points.size(); ++i) {
+            const std::string f = element(field, i);
+            if (points[i].isNull())
+                continue; // undefined at (0, 0)
+            const QJsonArray p = array(points[i], f);
+            if (p.size() != 3)
+                fail(f, "must be null or [x, y, state]");
+            LandmarkPoint &point = set.points[size_t(i)];
+            point.x = number(p[0], element(f, 0));
+            point.y = number(p[1], element(f, 1));
+            const std::string state = string(p[2], element(f, 2), false);
+            if (!pointStateFromName(state, point.state))
+                fail(element(f, 2), "unknown state '" + state
+                                        + "' (expected undefined, placed, automatic or fixed)");
+        }
+        return set;
+    }
+
+    Eigen::MatrixXd readFeatures(const std::string &relative, const Sequence &s,
+                                 const std::string &field) const
+    {
+        const QString path = QDir::cleanPath(QDir(q(m_folder)).absoluteFilePath(q(relative)));
+        const std::string where = "sequence '" + s.id + "': ";
+        if (!QFileInfo(path).isFile())
+            fail(field, where + "referenced features file '" + path.toStdString()
+                            + "' does not exist");
+        FeatureTable table;
+        try {
+            table = readFeatureCsv(path.toStdString());
+        } catch (const Error &e) {
+            fail(field, where + e.what());
+        }
+        if (table.values.rows() != s.frameCount)
+            fail(field, where + "'" + path.toStdString() + "' has "
+                            + std::to_string(table.values.rows()) + " rows, expected frameCount "
+                            + std::to_string(s.frameCount));
+        for (size_t r = 0; r < table.frames.size(); ++r)
+            if (table.frames[r] != int(r))
+                fail(field, where + "'" + path.toStdString() + "' row " + std::to_string(r)
+                                + " is frame " + std::to_string(table.frames[r])
+                                + ", expected " + std::to_string(r));
+        return table.values;
+    }
+
+    ModelReference readModel(const QJsonObject &o, const std::string &field) const
+    {
+        checkKeys(o, field, {"kind", "name", "file"});
+        ModelReference model;
+        model.kind = string(require(o, "kind", field), member(field, "kind"), false);
+        model.name = string(require(o, "name", field), member(field, "name"), true);
+        model.file = string(require(o, "file", field), member(field, "file"), false);
+        return model;
+    }
+
+    std::string m_path;
+    std::string m_folder;
+    bool m_readFeatures;
+};
+
+// ---- writing ------------------------------------------------------------------------------
+
+QJsonValue pointToJson(const LandmarkPoint &p)
+{
+    // An untouched point is null; an undefined one that kept coordinates keeps them, so a
+    // save/load round trip is exact.
+    if (p.state == PointState::Undefined && p.x == 0.0 && p.y == 0.0)
+        return QJsonValue::Null;
+    return QJsonArray{p.x, p.y, QString::fromLatin1(pointStateName(p.state))};
+}
+
+QJsonArray tierToJson(const Tier &tier)
+{
+    QJsonArray out;
+    for (const Interval &i : tier.intervals)
+        out.append(QJsonObject{{"start", i.start},
+                               {"end", i.end},
+                               {"label", q(i.label)},
+                               {"userEdited", i.userEdited}});
+    return out;
+}
+
+// Manifest keys in reading order; keys not listed follow alphabetically.
+const QStringList &keyOrder()
+{
+    static const QStringList order{"format",     "version",   "kind",      "name",
+                                   "sequences",  "models",    "id",        "mediaFile",
+                                   "frameRate",  "frameCount", "transcript", "features",
+                                   "tiers",      "words",     "phones",    "landmarks",
+                                   "frame",      "points",    "start",     "end",
+                                   "label",      "userEdited", "file"};
+    return order;
+}
+
+QStringList orderedKeys(const QJsonObject &object)
+{
+    QStringList keys = object.keys();
+    const QStringList &order = keyOrder();
+    std::stable_sort(keys.begin(), keys.end(), [&](const QString &a, const QString &b) {
+        qsizetype ia = order.indexOf(a), ib = order.indexOf(b);
+        if (ia < 0)
+            ia = order.size();
+        if (ib < 0)
+            ib = order.size();
+        return ia < ib;
+    });
+    return keys;
+}
+
+bool isScalar(const QJsonValue &v)
+{
+    return !v.isArray() && !v.isObject();
+}
+
+// On one line: scalars, containers of scalars, and arrays of scalar arrays (a frame's points).
+bool isFlat(const QJsonValue &v)
+{
+    if (isScalar(v))
+        return true;
+    if (v.isObject()) {
+        const QJsonObject o = v.toObject();
+        return std::all_of(o.begin(), o.end(), [](const QJsonValue &c) { return isScalar(c); });
+    }
+    const QJsonArray a = v.toArray();
+    return std::all_of(a.begin(), a.end(), [](const QJsonValue &c) {
+        if (isScalar(c))
+            return true;
+        if (!c.isArray())
+            return false;
+        const QJsonArray inner = c.toArray();
+        return std::all_of(inner.begin(), inner.end(),
+                           [](const QJsonValue &x) { return isScalar(x); });
+    });
+}
+
+QByteArray scalarText(const QJsonValue &v)
+{
+    // QJsonDocument does the escaping and the shortest round-trip number formatting.
+    const QByteArray text = QJsonDocument(QJsonArray{v}).toJson(QJsonDocument::Compact);
+    return text.mid(1, text.size() - 2);
+}
+
+void writeValue(QByteArray &out, const QJsonValue &v, int indent)
+{
+    if (isScalar(v)) {
+        out += scalarText(v);
+        return;
+    }
+    const bool flat = isFlat(v);
+    const QByteArray pad(indent + 2, ' ');
+    const char *separator = flat ? ", " : ",\n";
+    if (v.isArray()) {
+        const QJsonArray a = v.toArray();
+        if (a.isEmpty()) {
+            out += "[]";
+            return;
+        }
+        out += flat ? "[" : "[\n";
+        for (qsizetype i = 0; i < a.size(); ++i) {
+            if (i > 0)
+                out += separator;
+            if (!flat)
+                out += pad;
+            writeValue(out, a[i], indent + 2);
+        }
+        out += flat ? QByteArray("]") : "\n" + QByteArray(indent, ' ') + "]";
+        return;
+    }
+    const QJsonObject o = v.toObject();
+    if (o.isEmpty()) {
+        out += "{}";
+        return;
+    }
+    out += flat ? "{" : "{\n";
+    bool first = true;
+    for (const QString &key : orderedKeys(o)) {
+        if (!first)
+            out += separator;
+        first = false;
+        if (!flat)
+            out += pad;
+        out += scalarText(key) + ": ";
+        writeValue(out, o.value(key), indent + 2);
+    }
+    out += flat ? QByteArray("}") : "\n" + QByteArray(indent, ' ') + "}";
+}
+
+} // namespace
+
+std::string rebaseRelativePath(const std::string &path, const std::string &fromFolder,
+                               const std::string &toFolder)
+{
+    if (path.empty() || QDir::isAbsolutePath(q(path)))
+        return path;
+    const std::string from = absoluteFolder(fromFolder);
+    const std::string to = absoluteFolder(toFolder);
+    if (from == to)
+        return path;
+    const QString target = QDir::cleanPath(QDir(q(from)).absoluteFilePath(q(path)));
+    return QDir(q(to)).relativeFilePath(target).toStdString();
+}
+
+QJsonObject ProjectManifest::toJson(const Project &project, const std::string &targetFolder)
+{
+    // A project never saved has no folder yet: its paths are already relative to the target.
+    const std::string from = project.folder().empty() ? targetFolder : project.folder();
+    QJsonArray sequences;
+    for (const Sequence &s : project.sequences) {
+        QJsonObject o{{"id", q(s.id)},
+                      {"mediaFile", q(rebaseRelativePath(s.mediaFile, from, targetFolder))},
+                      {"frameRate", s.frameRate},
+                      {"frameCount", s.frameCount},
+                      {"transcript", q(s.transcript)},
+                      {"tiers", QJsonObject{{"words", tierToJson(s.words)},
+                                            {"phones", tierToJson(s.phones)}}}};
+        if (s.features.size() > 0)
+            o.insert("features", q(featureFileName(s.id)));
+        QJsonArray landmarks;
+        for (const auto &[frame, set] : s.landmarks) {
+            QJsonArray points;
+            for (const LandmarkPoint &p : set.points)
+                points.append(pointToJson(p));
+            landmarks.append(QJsonObject{{"frame", frame}, {"points", points}});
+        }
+        o.insert("landmarks", landmarks);
+        sequences.append(o);
+    }
+    QJsonArray models;
+    for (const ModelReference &m : project.models)
+        models.append(QJsonObject{{"kind", q(m.kind)},
+                                  {"name", q(m.name)},
+                                  {"file", q(rebaseRelativePath(m.file, from, targetFolder))}});
+    return QJsonObject{{"format", kFormatName},
+                       {"version", Project::kFormatVersion},
+                       {"name", q(project.name)},
+                       {"sequences", sequences},
+                       {"models", models}};
+}
+
+QByteArray ProjectManifest::serialize(const QJsonObject &manifest)
+{
+    QByteArray out;
+    writeValue(out, manifest, 0);
+    out += '\n';
+    return out;
+}
+
+Project ProjectManifest::parse(const QByteArray &text, const std::string &manifestPath,
+                               const std::string &folder, bool readFeatures)
+{
+    QJsonParseError error;
+    const QJsonDocument document = QJsonDocument::fromJson(text, &error);
+    if (error.error != QJsonParseError::NoError) {
+        // Line and column are what an editor shows; QJsonParseError only has a byte offset.
+        const QByteArray before = text.left(error.offset);
+        const qsizetype line = before.count('\n') + 1;
+        const qsizetype column = error.offset - (before.lastIndexOf('\n') + 1) + 1;
+        throw Error("not valid JSON: " + error.errorString().toStdString(), manifestPath,
+                    "line " + std::to_string(line) + ", column " + std::to_string(column));
+    }
+    if (!document.isObject())
+        throw Error("must be a JSON object", manifestPath, "(top level)");
+    return fromJson(document.object(), manifestPath, folder, readFeatures);
+}
+
+Project ProjectManifest::fromJson(const QJsonObject &manifest, const std::string &manifestPath,
+                                  const std::string &folder, bool readFeatures)
+{
+    return Reader(manifestPath, folder, readFeatures).read(manifest);
+}
+
+} // namespace lipsync

@@ -1,0 +1,588 @@
+// The project document: manifest round trip, backups, atomic saves, validation of every field of
+// a corrupt manifest, and import from a media folder (the bundled GRID demo clips).
+#include "project/Project.h"
+#include "project/ProjectManifest.h"
+#include "util/Error.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+#include <limits>
+
+using namespace lipsync;
+
+namespace {
+
+QString q(const std::string &s)
+{
+    return QString::fromStdString(s);
+}
+
+QByteArray readBytes(const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    return file.readAll();
+}
+
+void writeBytes(const QString &path, const QByteArray &bytes)
+{
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(bytes);
+}
+
+// One sequence with landmarks in all four states (including an undefined point that kept its
+// coordinates), both tiers with user-edited intervals, and awkward feature values; a second,
+// bare one with an absolute media path.
+Project makeProject()
+{
+    Project p;
+    p.name = "round trip \"quoted\" ü";
+
+    Sequence s;
+    s.id = "s1";
+    s.mediaFile = "media/s1.mpg";
+    s.frameRate = 29.97;
+    s.frameCount = 4;
+    s.transcript = "set white";
+    LandmarkSet set;
+    for (int i = 0; i < LandmarkSet::kPointCount; ++i)
+        set.points[size_t(i)] = {10.25 + i, 20.5 - i * 0.125, PointState(i % 4)};
+    set.points[4] = {}; // never touched
+    s.landmarks[0] = set;
+    LandmarkSet fixedOnly;
+    fixedOnly.points[22] = {1.0 / 3.0, -0.0, PointState::Fixed};
+    s.landmarks[3] = fixedOnly;
+    s.words.intervals = {{0.0, 0.5, "set", false}, {0.5, 0.9, "white", true}};
+    s.phones.intervals = {{0.0, 0.1, "s", false}, {0.1, 0.3, "eh", true}, {0.35, 0.5, "t", false}};
+    s.features.resize(4, 3);
+    s.features << 1.0 / 3.0, -1e-12, 1e300, 0, 1, 2, -3.5, 4.25, 5e-7, 7, 8, 9;
+    p.sequences.push_back(s);
+
+    Sequence bare;
+    bare.id = "s2";
+    bare.mediaFile = "/somewhere/else/s2.wav";
+    bare.frameRate = 25;
+    bare.frameCount = 0;
+    p.sequences.push_back(bare);
+
+    p.models = {{"aam", "face model", "aam/face.aam"}, {"slds", "dynamics", "models/slds.json"}};
+    return p;
+}
+
+} // namespace
+
+class TestProject : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void pointStateNames()
+    {
+        for (PointState s : {PointState::Undefined, PointState::Placed, PointState::Automatic,
+                             PointState::Fixed}) {
+            PointState back = PointState::Undefined;
+            QVERIFY(pointStateFromName(pointStateName(s), back));
+            QCOMPARE(back, s);
+        }
+        PointState state = PointState::Placed;
+        QVERIFY(!pointStateFromName("moved", state));
+        QCOMPARE(QString(pointStateName(PointState::Automatic)), QString("automatic"));
+    }
+
+    void landmarkCounts()
+    {
+        LandmarkSet set;
+        QCOMPARE(set.definedCount(), 0);
+        set.points[0].state = PointState::Placed;
+        set.points[7].state = PointState::Fixed;
+        QCOMPARE(set.definedCount(), 2);
+        QVERIFY(!set.isComplete());
+        for (auto &p : set.points)
+            p.state = PointState::Automatic;
+        QVERIFY(set.isComplete());
+    }
+
+    void tierIndexAt()
+    {
+        Tier tier{"words", {{0.0, 0.5, "a", false}, {0.5, 0.9, "b", false}, {1.0, 1.2, "c", false}}};
+        QCOMPARE(tier.indexAt(-0.1), -1);
+        QCOMPARE(tier.indexAt(0.0), 0);
+        QCOMPARE(tier.indexAt(0.49), 0);
+        QCOMPARE(tier.indexAt(0.5), 1);
+        QCOMPARE(tier.indexAt(0.95), -1); // the gap
+        QCOMPARE(tier.indexAt(1.1), 2);
+        QCOMPARE(tier.indexAt(1.2), -1);
+        QCOMPARE(tier.endTime(), 1.2);
+    }
+
+    void roundTrip()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const Project original = makeProject();
+        // The fixture must exercise every state, or the round trip proves less than it claims.
+        int stateSeen[4] = {};
+        for (const auto &p : original.sequences[0].landmarks.at(0).points)
+            ++stateSeen[int(p.state)];
+        for (int n : stateSeen)
+            QVERIFY(n > 0);
+
+        original.save(dir.path().toStdString());
+        QVERIFY(QFileInfo(dir.filePath("project.json")).isFile());
+        QVERIFY(QFileInfo(dir.filePath("features/s1.csv")).isFile());
+        QVERIFY(!QFileInfo(dir.filePath("features/s2.csv")).exists());
+        QVERIFY(!QFileInfo(dir.filePath("project.json.bak")).exists());
+        const QByteArray text = readBytes(dir.filePath("project.json"));
+        QVERIFY(text.contains("\"format\": \"lipsync-project\""));
+        QVERIFY(text.contains("\"version\": 1"));
+        QVERIFY(text.contains("\"features\": \"features/s1.csv\""));
+
+        const Project loaded = Project::load(dir.path().toStdString());
+        QCOMPARE(q(loaded.folder()), QDir::cleanPath(QFileInfo(dir.path()).absoluteFilePath()));
+        QCOMPARE(loaded.sequences.size(), size_t(2));
+        QCOMPARE(loaded.sequences[0].landmarks, original.sequences[0].landmarks);
+        QCOMPARE(loaded.sequences[0].words, original.sequences[0].words);
+        QCOMPARE(loaded.sequences[0].phones, original.sequences[0].phones);
+        QVERIFY(loaded.sequences[0].features == original.sequences[0].features);
+        QCOMPARE(loaded.models, original.models);
+        QVERIFY(loaded == original);
+
+        // Equality must notice a change, or the comparison above proves nothing.
+        Project changed = loaded;
+        changed.sequences[0].landmarks[3].points[22].state = PointState::Placed;
+        QVERIFY(!(changed == original));
+        changed = loaded;
+        changed.sequences[0].features(2, 1) += 1e-9;
+        QVERIFY(!(changed == original));
+        changed = loaded;
+        changed.sequences[0].phones.intervals[1].userEdited = false;
+        QVERIFY(!(changed == original));
+
+        // Loading by the manifest's own path works too.
+        QVERIFY(Project::load(dir.filePath("project.json").toStdString()) == original);
+    }
+
+    void savesAreStable()
+    {
+        // save(load(x)) writes the same bytes: no drift in number formatting or key order.
+        QTemporaryDir dir;
+        makeProject().save(dir.path().toStdString());
+        const QByteArray first = readBytes(dir.filePath("project.json"));
+        Project::load(dir.path().toStdString()).save();
+        QCOMPARE(readBytes(dir.filePath("project.json")), first);
+    }
+
+    void backupKeptOnSecondSave()
+    {
+        QTemporaryDir dir;
+        Project p = makeProject();
+        p.save(dir.path().toStdString());
+        const QByteArray first = readBytes(dir.filePath("project.json"));
+        QVERIFY(!QFileInfo(dir.filePath("project.json.bak")).exists());
+
+        p.name = "second";
+        p.setFolder(dir.path().toStdString());
+        p.save();
+        QCOMPARE(readBytes(dir.filePath("project.json.bak")), first);
+        const QByteArray second = readBytes(dir.filePath("project.json"));
+        QVERIFY(second != first);
+        QCOMPARE(Project::load(dir.path().toStdString()).name, std::string("second"));
+
+        p.name = "third";
+        p.save();
+        QCOMPARE(readBytes(dir.filePath("project.json.bak")), second);
+    }
+
+    void corruptManifest_data()
+    {
+        QTest::addColumn<QString>("folder");
+        QTest::addColumn<QString>("field");
+        QTest::addColumn<QString>("reason");
+        const auto row = [](const char *folder, const char *field, const char *reason) {
+            QTest::newRow(folder) << QString(folder) << QString(field) << QString(reason);
+        };
+        row("not_json", "line 3, column 1", "not valid JSON");
+        row("not_object", "(top level)", "must be a JSON object");
+        row("missing_format", "format", "missing");
+        row("wrong_format", "format", "is 'praat-textgrid', expected 'lipsync-project'");
+        row("missing_version", "version", "missing");
+        row("version_not_integer", "version", "must be an integer, found 1.5");
+        row("future_version", "version", "version 2 is newer than this build");
+        row("version_zero", "version", "must be at least 1");
+        row("name_not_string", "name", "must be a string, found an array");
+        row("unknown_field", "sequences[1].framerate", "unknown field");
+        row("missing_sequences", "sequences", "missing");
+        row("sequences_not_array", "sequences", "must be an array, found an object");
+        row("sequence_not_object", "sequences[1]", "must be an object, found a string");
+        row("missing_id", "sequences[2].id", "missing");
+        row("empty_id", "sequences[0].id", "must not be empty");
+        row("id_with_slash", "sequences[1].id", "must not contain '/'");
+        row("duplicate_id", "sequences[2].id", "'a' is used by an earlier sequence");
+        row("missing_media_file", "sequences[1].mediaFile", "missing");
+        row("frame_rate_negative", "sequences[2].frameRate", "must be a positive number, found -25");
+        row("frame_rate_zero", "sequences[2].frameRate", "must be a positive number, found 0");
+        row("frame_rate_string", "sequences[0].frameRate", "must be a positive number, found a string");
+        row("frame_count_negative", "sequences[1].frameCount", "must be an integer >= 0, found -1");
+        row("frame_count_fractional", "sequences[1].frameCount", "must be an integer >= 0, found 74.5");
+        row("transcript_not_string", "sequences[0].transcript", "must be a string, found 42");
+        row("unknown_tier", "sequences[0].tiers.syllables", "unknown field");
+        row("interval_end_before_start", "sequences[0].tiers.words[1].end", "is before start");
+        row("interval_overlap", "sequences[0].tiers.words[1].start", "overlaps the previous interval");
+        row("interval_negative_start", "sequences[0].tiers.words[0].start", "must not be negative");
+        row("interval_label_missing", "sequences[0].tiers.words[0].label", "missing");
+        row("interval_user_edited_not_bool", "sequences[0].tiers.words[1].userEdited",
+            "must be true or false, found a string");
+        row("interval_start_not_number", "sequences[1].tiers.phones[0].start",
+            "must be a finite number, found a string");
+        row("landmarks_not_array", "sequences[0].landmarks", "must be an array, found an object");
+        row("landmark_frame_out_of_range", "sequences[0].landmarks[0].frame",
+            "3 is not below frameCount 3");
+        row("landmark_duplicate_frame", "sequences[0].landmarks[1].frame", "1 appears twice");
+        row("landmark_point_count", "sequences[0].landmarks[0].points", "has 22 points, expected 23");
+        row("landmark_unknown_state", "sequences[0].landmarks[0].points[22][2]",
+            "unknown state 'moved'");
+        row("landmark_point_malformed", "sequences[0].landmarks[0].points[22]",
+            "must be null or [x, y, state]");
+        row("landmark_coordinate_not_number", "sequences[0].landmarks[0].points[22][0]",
+            "must be a finite number, found a string");
+        row("features_missing_file", "sequences[1].features", "sequence 'b': referenced features file");
+        row("features_nan", "sequences[1].features", "sequence 'b': ");
+        row("features_wrong_rows", "sequences[1].features", "has 2 rows, expected frameCount 3");
+        row("features_not_string", "sequences[1].features", "must be a string, found 7");
+        row("models_not_array", "models", "must be an array, found a string");
+        row("model_missing_kind", "models[0].kind", "missing");
+        row("model_empty_file", "models[1].file", "must not be empty");
+    }
+
+    void corruptManifest()
+    {
+        QFETCH(QString, folder);
+        QFETCH(QString, field);
+        QFETCH(QString, reason);
+        const QString dir = QStringLiteral(LIPSYNC_TEST_DATA "/project/") + folder;
+        const QString manifest = QDir::cleanPath(dir + "/project.json");
+        QVERIFY2(QFileInfo(manifest).isFile(), qPrintable(manifest));
+        try {
+            Project::load(dir.toStdString());
+            QFAIL("loaded a corrupt manifest");
+        } catch (const Error &e) {
+            const QString message = QString::fromStdString(e.what());
+            QCOMPARE(q(e.file()), manifest);
+            QCOMPARE(q(e.field()), field);
+            QVERIFY2(message.startsWith(manifest + ": " + field + ": "), qPrintable(message));
+            QVERIFY2(message.contains(reason), qPrintable(message));
+        }
+    }
+
+    void featureErrorsNameTheFile()
+    {
+        const QString dir = QStringLiteral(LIPSYNC_TEST_DATA "/project/");
+        try {
+            Project::load((dir + "features_nan").toStdString());
+            QFAIL("loaded NaN features");
+        } catch (const Error &e) {
+            const QString message = QString::fromStdString(e.what());
+            QVERIFY2(message.contains("features_nan/features/b.csv"), qPrintable(message));
+            QVERIFY2(message.contains("line 3"), qPrintable(message));
+            QVERIFY2(message.contains("not finite"), qPrintable(message));
+        }
+        try {
+            Project::load((dir + "features_missing_file").toStdString());
+            QFAIL("loaded a project whose features file is missing");
+        } catch (const Error &e) {
+            const QString message = QString::fromStdString(e.what());
+            QVERIFY2(message.contains("features_missing_file/features/b.csv' does not exist"),
+                     qPrintable(message));
+        }
+    }
+
+    void missingFolderOrManifest()
+    {
+        QTemporaryDir dir;
+        try {
+            Project::load(dir.path().toStdString());
+            QFAIL("loaded an empty folder");
+        } catch (const Error &e) {
+            QVERIFY(QString(e.what()).contains(dir.filePath("project.json")));
+            QVERIFY(QString(e.what()).contains("not a project folder"));
+        }
+        QVERIFY_THROWS_EXCEPTION(Error, Project::load(dir.filePath("nope").toStdString()));
+    }
+
+    void missingMediaIsNotALoadError()
+    {
+        const QString dir = QStringLiteral(LIPSYNC_TEST_DATA "/project/valid_media_elsewhere");
+        const Project p = Project::load(dir.toStdString());
+        QCOMPARE(p.name, std::string("fixture"));
+        QCOMPARE(p.sequences.size(), size_t(3));
+        const Sequence &a = p.sequences[0];
+        QCOMPARE(q(p.mediaPath(a)), QDir::cleanPath(QFileInfo(dir).absoluteFilePath() + "/media/a.mpg"));
+        QVERIFY(!QFileInfo::exists(q(p.mediaPath(a))));
+        QCOMPARE(q(p.mediaPath(p.sequences[1])), QString("/elsewhere/disk/b.mpg"));
+        QCOMPARE(a.landmarks.size(), size_t(1));
+        QCOMPARE(a.landmarks.at(1).definedCount(), 1);
+        QCOMPARE(a.landmarks.at(1).points[22], (LandmarkPoint{1.5, 2.5, PointState::Placed}));
+        QCOMPARE(a.words.intervals.size(), size_t(2));
+        QVERIFY(a.words.intervals[1].userEdited);
+        const Sequence *b = p.sequence("b");
+        QVERIFY(b);
+        QCOMPARE(b->frameRate, 29.97);
+        QCOMPARE(b->features.rows(), Eigen::Index(3));
+        QCOMPARE(b->features.cols(), Eigen::Index(2));
+        QCOMPARE(b->features(1, 1), 4.5);
+        QCOMPARE(b->features(2, 0), -1.0);
+        QCOMPARE(p.models.size(), size_t(2));
+        QCOMPARE(p.models[1].kind, std::string("dpds"));
+        QVERIFY(p.sequence("zz") == nullptr);
+    }
+
+    void saveRejectsInvalidContent()
+    {
+        QTemporaryDir dir;
+        const std::string folder = dir.filePath("p").toStdString();
+        Project p = makeProject();
+        p.sequences[0].features(1, 2) = std::numeric_limits<double>::quiet_NaN();
+        try {
+            p.save(folder);
+            QFAIL("saved NaN features");
+        } catch (const Error &e) {
+            QCOMPARE(q(e.field()), QString("sequences[0].features"));
+            QVERIFY2(QString(e.what()).contains("sequence 's1'"), e.what());
+            QVERIFY2(QString(e.what()).contains("NaN"), e.what());
+        }
+        QVERIFY(!QFileInfo::exists(dir.filePath("p/project.json")));
+
+        p = makeProject();
+        p.sequences[1].frameRate = -1;
+        try {
+            p.save(folder);
+            QFAIL("saved a negative frame rate");
+        } catch (const Error &e) {
+            QCOMPARE(q(e.field()), QString("sequences[1].frameRate"));
+        }
+        p = makeProject();
+        p.sequences[1].id = "s1";
+        QVERIFY_THROWS_EXCEPTION(Error, p.save(folder));
+        p = makeProject();
+        p.sequences[0].features.conservativeResize(3, Eigen::NoChange);
+        QVERIFY_THROWS_EXCEPTION(Error, p.save(folder));
+        p = makeProject();
+        p.sequences[0].landmarks[7] = LandmarkSet{}; // beyond frameCount 4
+        QVERIFY_THROWS_EXCEPTION(Error, p.save(folder));
+        QVERIFY(!QFileInfo::exists(dir.filePath("p/project.json")));
+        QVERIFY_THROWS_EXCEPTION(Error, Project().save()); // no folder yet
+    }
+
+    void saveAsRebasesRelativePaths()
+    {
+        QTemporaryDir dir;
+        const QString oldFolder = dir.filePath("old");
+        const QString newFolder = dir.filePath("new/deeper");
+        Project p = makeProject();
+        p.save(oldFolder.toStdString());
+        p = Project::load(oldFolder.toStdString());
+        const std::string mediaBefore = p.mediaPath(p.sequences[0]);
+        const std::string modelBefore = p.resolve(p.models[0].file);
+
+        p.saveAs(newFolder.toStdString());
+        QCOMPARE(q(p.folder()), QDir::cleanPath(QFileInfo(newFolder).absoluteFilePath()));
+        QCOMPARE(p.sequences[0].mediaFile, std::string("../../old/media/s1.mpg"));
+        QCOMPARE(p.sequences[1].mediaFile, std::string("/somewhere/else/s2.wav"));
+        QCOMPARE(p.models[0].file, std::string("../../old/aam/face.aam"));
+        QCOMPARE(p.mediaPath(p.sequences[0]), mediaBefore);
+        QCOMPARE(p.resolve(p.models[0].file), modelBefore);
+        QVERIFY(QFileInfo(newFolder + "/features/s1.csv").isFile());
+        QVERIFY(!QFileInfo::exists(newFolder + "/project.json.bak"));
+
+        const Project reloaded = Project::load(newFolder.toStdString());
+        QVERIFY(reloaded == p);
+        QCOMPARE(reloaded.mediaPath(reloaded.sequences[0]), mediaBefore);
+        // The old project is untouched.
+        QCOMPARE(Project::load(oldFolder.toStdString()).sequences[0].mediaFile,
+                 std::string("media/s1.mpg"));
+        QVERIFY(!QFileInfo::exists(oldFolder + "/project.json.bak"));
+    }
+
+    void failedSaveKeepsOldManifest()
+    {
+        QTemporaryDir dir;
+        Project p = makeProject();
+        p.save(dir.path().toStdString());
+        const QByteArray before = readBytes(dir.filePath("project.json"));
+
+        // Feature files cannot be written when features/ is a regular file.
+        QVERIFY(QDir(dir.filePath("features")).removeRecursively());
+        writeBytes(dir.filePath("features"), "in the way");
+        p.name = "changed";
+        try {
+            p.save(dir.path().toStdString());
+            QFAIL("save succeeded although features/ is a file");
+        } catch (const Error &e) {
+            QVERIFY2(QString(e.what()).contains("features/s1.csv"), e.what());
+        }
+        QCOMPARE(readBytes(dir.filePath("project.json")), before);
+        QVERIFY(!QFileInfo::exists(dir.filePath("project.json.bak")));
+
+        // The backup cannot be written when project.json.bak is a folder: the manifest stays.
+        QVERIFY(QFile::remove(dir.filePath("features")));
+        QVERIFY(QDir().mkpath(dir.filePath("project.json.bak/blocker")));
+        QVERIFY_THROWS_EXCEPTION(Error, p.save(dir.path().toStdString()));
+        QCOMPARE(readBytes(dir.filePath("project.json")), before);
+        QCOMPARE(Project::load(dir.path().toStdString()).name, makeProject().name);
+    }
+
+    void saveUnderRegularFileFails()
+    {
+        // Tests run as root, so permissions cannot make a folder unwritable; a path below a
+        // regular file can never be created.
+        QTemporaryDir dir;
+        const QString file = dir.filePath("plain.txt");
+        writeBytes(file, "keep me");
+        const QString target = file + "/project";
+        try {
+            makeProject().save(target.toStdString());
+            QFAIL("saved below a regular file");
+        } catch (const Error &e) {
+            QVERIFY2(QString(e.what()).contains(target), e.what());
+        }
+        QCOMPARE(readBytes(file), QByteArray("keep me"));
+    }
+
+    void manifestLayout()
+    {
+        // A landmark frame is one line, and keys come in reading order.
+        const QByteArray text =
+            ProjectManifest::serialize(ProjectManifest::toJson(makeProject(), "/tmp/x"));
+        QVERIFY(text.startsWith("{\n  \"format\": \"lipsync-project\",\n  \"version\": 1,\n"));
+        const qsizetype points = text.indexOf("\"points\": [[");
+        QVERIFY(points > 0);
+        QVERIFY(text.indexOf('\n', points) > text.indexOf("]]", points));
+        QVERIFY(text.indexOf("\"id\"") < text.indexOf("\"mediaFile\""));
+        QVERIFY(text.indexOf("\"mediaFile\"") < text.indexOf("\"landmarks\""));
+        QVERIFY(text.contains(
+            "{\"kind\": \"aam\", \"name\": \"face model\", \"file\": \"aam/face.aam\"}"));
+    }
+
+    void fromMediaFolderDemo()
+    {
+        const QString demo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo");
+        const Project p = Project::fromMediaFolder((demo + "/media").toStdString(), demo.toStdString());
+        QCOMPARE(p.name, std::string("demo"));
+        QCOMPARE(p.sequences.size(), size_t(10));
+        for (const Sequence &s : p.sequences) {
+            QCOMPARE(s.frameRate, 25.0);
+            QCOMPARE(s.frameCount, 75);
+            QVERIFY2(!s.transcript.empty(), s.id.c_str());
+            QVERIFY(s.words.intervals.size() >= 6);
+            QCOMPARE(s.mediaFile, "media/" + s.id + ".mpg");
+            QVERIFY(QFileInfo(q(p.mediaPath(s))).isFile());
+        }
+        const Sequence *s = p.sequence("bbaf2n");
+        QVERIFY(s);
+        QCOMPARE(s->transcript, std::string("bin blue at f two now"));
+        QCOMPARE(s->words.intervals[1].label, std::string("bin"));
+        QCOMPARE(s->words.intervals[1].start, 0.95);
+        QCOMPARE(s->words.name, std::string("words"));
+
+        // Imported projects save and load like any other.
+        QTemporaryDir dir;
+        Project copy = p;
+        copy.saveAs(dir.path().toStdString());
+        QVERIFY(Project::load(dir.path().toStdString()) == copy);
+        QCOMPARE(Project::load(dir.path().toStdString()).mediaPath(copy.sequences[0]),
+                 p.mediaPath(p.sequences[0]));
+    }
+
+    void fromMediaFolderPlainTranscript()
+    {
+        QTemporaryDir dir;
+        const QString media = dir.filePath("media");
+        QVERIFY(QDir().mkpath(media));
+        QVERIFY(QFile::copy(QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg"),
+                            media + "/take1.MPG"));
+        writeBytes(media + "/take1.txt", "  place   green\n by d  two\n");
+        writeBytes(media + "/notes.md", "not media");
+        const Project p =
+            Project::fromMediaFolder(media.toStdString(), dir.filePath("project").toStdString());
+        QCOMPARE(p.sequences.size(), size_t(1));
+        QCOMPARE(p.sequences[0].id, std::string("take1"));
+        QCOMPARE(p.sequences[0].transcript, std::string("place green by d two"));
+        QVERIFY(p.sequences[0].words.isEmpty());
+        QCOMPARE(p.sequences[0].mediaFile, std::string("../media/take1.MPG"));
+        QCOMPARE(p.sequences[0].frameCount, 75);
+    }
+
+    void fromMediaFolderAudioOnly()
+    {
+        // 1.2 s of 16 kHz mono silence: no video, so the nominal frame grid applies.
+        QTemporaryDir dir;
+        const qint32 rate = 16000, samples = 19200, bytes = samples * 2;
+        QByteArray wav;
+        QDataStream out(&wav, QIODevice::WriteOnly);
+        out.setByteOrder(QDataStream::LittleEndian);
+        out.writeRawData("RIFF", 4);
+        out << qint32(36 + bytes);
+        out.writeRawData("WAVEfmt ", 8);
+        out << qint32(16) << qint16(1) << qint16(1) << rate << qint32(rate * 2) << qint16(2)
+            << qint16(16);
+        out.writeRawData("data", 4);
+        out << qint32(bytes);
+        wav.append(QByteArray(bytes, '\0'));
+        writeBytes(dir.filePath("speech.wav"), wav);
+        writeBytes(dir.filePath("speech.lab"), "lay red\n");
+        const Project p = Project::fromMediaFolder(dir.path().toStdString(), dir.path().toStdString());
+        QCOMPARE(p.sequences.size(), size_t(1));
+        QCOMPARE(p.sequences[0].frameRate, Project::kAudioOnlyFrameRate);
+        QCOMPARE(p.sequences[0].frameCount, 30);
+        QCOMPARE(p.sequences[0].transcript, std::string("lay red"));
+        QCOMPARE(p.sequences[0].mediaFile, std::string("speech.wav"));
+    }
+
+    void fromMediaFolderErrors()
+    {
+        QTemporaryDir dir;
+        try {
+            Project::fromMediaFolder(dir.path().toStdString(), dir.path().toStdString());
+            QFAIL("imported an empty folder");
+        } catch (const Error &e) {
+            QVERIFY(QString(e.what()).contains(dir.path()));
+            QVERIFY(QString(e.what()).contains("no media files"));
+        }
+        QVERIFY_THROWS_EXCEPTION(Error, Project::fromMediaFolder(dir.filePath("missing").toStdString(),
+                                                                 dir.path().toStdString()));
+        // A broken clip is reported by name rather than skipped.
+        writeBytes(dir.filePath("broken.mpg"), "not an mpeg stream");
+        try {
+            Project::fromMediaFolder(dir.path().toStdString(), dir.path().toStdString());
+            QFAIL("imported a broken clip");
+        } catch (const Error &e) {
+            QVERIFY2(QString(e.what()).contains("broken.mpg"), e.what());
+        }
+    }
+
+    void bundledDemoProject()
+    {
+        const QString demo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo");
+        const Project p = Project::load(demo.toStdString());
+        QCOMPARE(p.sequences.size(), size_t(10));
+        for (const Sequence &s : p.sequences) {
+            QVERIFY2(QFileInfo(q(p.mediaPath(s))).isFile(), s.mediaFile.c_str());
+            QCOMPARE(s.frameCount, 75);
+            QVERIFY(!s.transcript.empty());
+        }
+        // The bundled manifest is what the importer makes of the bundled clips.
+        Project imported = Project::fromMediaFolder((demo + "/media").toStdString(), demo.toStdString());
+        QVERIFY(imported == p);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestProject)
+#include "tst_project.moc"
