@@ -47,7 +47,8 @@ struct VideoExportOptions
 class VideoExporter
 {
 public:
-    // `audio` (mono float PCM, copied) may be null for a silent video. Throws lipsync::Error
+    // `audio` (mono float PCM, copied) may be null for a silent video. Its first sample plays with
+    // the first frame (AudioBuffer::startTime is not applied: trim or pad the samples to shift). Throws lipsync::Error
     // naming `path` if the target directory does not exist or is not writable, or if the audio
     // is empty.
     explicit VideoExporter(const std::string &path, const VideoExportOptions &options = {},

@@ -4,6 +4,8 @@
 #include "render/VideoExporter.h"
 
 #include "MediaProbe.h"
+#include "io/AudioDecoder.h"
+#include "io/VideoReader.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
@@ -107,6 +109,33 @@ private slots:
                      qPrintable(QString("frame %1: PSNR %2").arg(i).arg(psnr(probe.frames[size_t(i)], patternFrame(i)))));
         // Nothing but the file itself is left in the folder.
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 1);
+    }
+
+    // A real GRID clip with its own sound (44.1 kHz MP2, 2.95 s against 3 s of video): the export
+    // keeps the audio's rate and lasts as long as the sound, within a frame.
+    void gridClipWithItsOwnSound()
+    {
+        const std::string clip = LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg";
+        VideoReader reader(clip);
+        const AudioBuffer audio = AudioDecoder::decode(clip, 0);
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("bbaf2n.mp4").toStdString();
+        Feedback feedback;
+        exportVideo(path, reader.frameCount(), [&](int i) { return reader.frame(i); }, &audio, feedback);
+
+        const MediaProbe probe = MediaProbe::read(path, true);
+        QCOMPARE(probe.videoCodec, AV_CODEC_ID_H264);
+        QCOMPARE(probe.audioCodec, AV_CODEC_ID_AAC);
+        QCOMPARE(probe.sampleRate, audio.sampleRate);
+        const double frame = 1.0 / 25;
+        QCOMPARE(probe.videoPackets, int(std::lround(audio.duration() * 25)));
+        QVERIFY2(std::abs(probe.containerDuration - audio.duration()) < frame,
+                 qPrintable(QString("%1 vs %2").arg(probe.containerDuration).arg(audio.duration())));
+        QVERIFY(std::abs(probe.videoDuration - audio.duration()) < frame);
+        QVERIFY(std::abs(probe.audioDuration - audio.duration()) < frame);
+        QVERIFY(std::abs(probe.audioStart - probe.videoStart) < frame);
+        const double quality = psnr(probe.frames[40], reader.frame(40));
+        QVERIFY2(quality > 30.0, qPrintable(QString::number(quality)));
     }
 
     // Sync measured on decoded content: the white flash starts on frame 30 (t = 1.2 s) and the
