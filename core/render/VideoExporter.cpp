@@ -183,6 +183,9 @@ struct VideoExporter::Impl
         audioCodec->time_base = AVRational{1, audioRate};
         if (format->oformat->flags & AVFMT_GLOBALHEADER)
             audioCodec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+        // The "fast" coder costs a third of the default two-loop search; at 96-128 kbit/s for
+        // mono speech the difference is inaudible.
+        av_opt_set(audioCodec->priv_data, "aac_coder", "fast", 0);
         int rc = avcodec_open2(audioCodec, codec, nullptr);
         if (rc < 0)
             fail("cannot open the AAC encoder", rc);
@@ -222,6 +225,7 @@ struct VideoExporter::Impl
         videoCodec->color_trc = AVCOL_TRC_SMPTE170M;
         if (format->oformat->flags & AVFMT_GLOBALHEADER)
             videoCodec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+        videoCodec->thread_count = std::max(0, options.threads);
         av_opt_set(videoCodec->priv_data, "preset", options.preset.c_str(), 0);
         av_opt_set(videoCodec->priv_data, "crf", std::to_string(options.crf).c_str(), 0);
         int rc = avcodec_open2(videoCodec, codec, nullptr);

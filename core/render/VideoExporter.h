@@ -30,6 +30,8 @@ struct VideoExportOptions
     // x264 constant rate factor (0 lossless ... 51; 18-23 look transparent) and speed preset.
     int crf = 20;
     std::string preset = "veryfast";
+    // Encoder threads (0: libx264 chooses, about 1.5 per core).
+    int threads = 0;
     // Bits per second of the AAC stream.
     int audioBitRate = 128000;
     // With audio, write exactly round(audio duration x fps) frames: surplus frames are dropped and
