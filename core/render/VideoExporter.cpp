@@ -189,9 +189,6 @@ struct VideoExporter::Impl
         int rc = avcodec_open2(audioCodec, codec, nullptr);
         if (rc < 0)
             fail("cannot open the AAC encoder", rc);
-        audioStream = avformat_new_stream(format, nullptr);
-        audioStream->time_base = audioCodec->time_base;
-        avcodec_parameters_from_context(audioStream->codecpar, audioCodec);
 
         audioFrame = av_frame_alloc();
         audioFrame->format = audioCodec->sample_fmt;
@@ -249,6 +246,14 @@ struct VideoExporter::Impl
                              SWS_BILINEAR, nullptr, nullptr, nullptr);
         if (!sws)
             throw Error("cannot create the colour converter", path);
+    }
+
+    // Video first, then sound: the stream order players and editors expect.
+    void addAudioStream()
+    {
+        audioStream = avformat_new_stream(format, nullptr);
+        audioStream->time_base = audioCodec->time_base;
+        avcodec_parameters_from_context(audioStream->codecpar, audioCodec);
     }
 
     void writeHeader()
@@ -435,6 +440,8 @@ void VideoExporter::addFrame(const cv::Mat &frame)
     try {
         if (!d->videoCodec) {
             d->openVideo(frame.cols, frame.rows);
+            if (d->hasAudio)
+                d->addAudioStream();
             d->writeHeader();
         }
         if (frame.cols != d->width || frame.rows != d->height)

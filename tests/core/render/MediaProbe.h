@@ -29,6 +29,7 @@ struct MediaProbe
     double audioStart = 0;
     double audioDuration = 0;
     int videoPackets = 0;
+    int videoStreamIndex = -1;
 
     std::vector<double> frameTimes;      // presentation time of each decoded frame, seconds
     std::vector<double> frameBrightness; // mean luma of each decoded frame
@@ -52,6 +53,7 @@ struct MediaProbe
             const double duration = s->duration == AV_NOPTS_VALUE ? 0 : s->duration * tb;
             if (s->codecpar->codec_type == AVMEDIA_TYPE_VIDEO) {
                 ++probe.videoStreams;
+                probe.videoStreamIndex = int(i);
                 probe.videoCodec = s->codecpar->codec_id;
                 probe.width = s->codecpar->width;
                 probe.height = s->codecpar->height;

@@ -80,6 +80,7 @@ private slots:
         const MediaProbe probe = MediaProbe::read(path, true);
         QCOMPARE(probe.videoStreams, 1);
         QCOMPARE(probe.audioStreams, 1);
+        QCOMPARE(probe.videoStreamIndex, 0); // video first, as players and editors expect
         QCOMPARE(probe.videoCodec, AV_CODEC_ID_H264);
         QCOMPARE(probe.audioCodec, AV_CODEC_ID_AAC);
         QCOMPARE(probe.width, 360);
