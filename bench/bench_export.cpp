@@ -1,0 +1,63 @@
+// Export speed (issue 6 target: a 3 s clip well under a second). The demo GRID clip bbaf2n
+// (75 frames 360x288, 44.1 kHz sound) is decoded once; each iteration encodes H.264 + AAC and
+// muxes an MP4 into a temporary folder, including the atomic rename.
+#include "io/AudioDecoder.h"
+#include "io/VideoReader.h"
+#include "render/VideoExporter.h"
+#include "tasks/Feedback.h"
+
+#include <benchmark/benchmark.h>
+
+#include <QTemporaryDir>
+
+namespace {
+
+struct Clip
+{
+    std::vector<cv::Mat> frames;
+    lipsync::AudioBuffer audio;
+};
+
+const Clip &demoClip()
+{
+    static const Clip clip = [] {
+        const std::string path = LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg";
+        Clip c;
+        lipsync::VideoReader reader(path);
+        for (int i = 0; i < reader.frameCount(); ++i)
+            c.frames.push_back(reader.frame(i));
+        c.audio = lipsync::AudioDecoder::decode(path, 0);
+        return c;
+    }();
+    return clip;
+}
+
+void BM_ExportMp4ThreeSeconds(benchmark::State &state)
+{
+    const Clip &clip = demoClip();
+    QTemporaryDir dir;
+    const std::string path = dir.filePath("bench.mp4").toStdString();
+    lipsync::VideoExportOptions options;
+    options.fitVideoToAudio = false; // all 75 frames, as the target states
+    options.threads = int(state.range(0));
+    const lipsync::AudioBuffer *audio = state.range(1) ? &clip.audio : nullptr;
+    for (auto _ : state) {
+        lipsync::Feedback feedback;
+        lipsync::exportVideo(path, int(clip.frames.size()),
+                             [&](int i) { return clip.frames[size_t(i)]; }, audio, feedback,
+                             options);
+    }
+    state.counters["frames"] = double(clip.frames.size());
+    state.counters["fps"] = benchmark::Counter(double(clip.frames.size()) * double(state.iterations()),
+                                               benchmark::Counter::kIsRate);
+}
+// Arguments: encoder threads (0 = libx264's choice, 1 = single-threaded); with sound (1) or not.
+BENCHMARK(BM_ExportMp4ThreeSeconds)
+    ->ArgNames({"threads", "audio"})
+    ->Args({0, 1})
+    ->Args({1, 1})
+    ->Args({1, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+} // namespace

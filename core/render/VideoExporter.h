@@ -1,0 +1,89 @@
+#pragma once
+// MP4 export with sound: H.264 video (libx264, yuv420p) and the original audio as AAC (FFmpeg's
+// native encoder), muxed by libavformat. OpenCV's VideoWriter cannot write audio, hence FFmpeg.
+//
+// Timestamps: video pts count frames in the time base 1/fps; audio pts count samples in the time
+// base 1/sampleRate. Both streams start at t = 0 (the muxer's edit list hides the AAC encoder
+// delay and the B-frame reorder delay), so sound and picture are aligned to the sample.
+//
+// Atomic: everything is written to a temporary file in the target directory (".<name>.XXXXXX.part")
+// that is renamed over the target only when the file is complete. On error, cancel or
+// destruction before finish() the temporary file is removed: a half-written file never appears
+// under the final name, and an existing file there is left untouched.
+#include "io/AudioDecoder.h"
+
+#include <opencv2/core.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace lipsync {
+
+class Feedback;
+
+struct VideoExportOptions
+{
+    // Frame rate as a fraction (25/1 for GRID, 30000/1001 for NTSC).
+    int frameRateNumerator = 25;
+    int frameRateDenominator = 1;
+    // x264 constant rate factor (0 lossless ... 51; 18-23 look transparent) and speed preset.
+    int crf = 20;
+    std::string preset = "veryfast";
+    // Encoder threads (0: libx264 chooses, about 1.5 per core).
+    int threads = 0;
+    // Bits per second of the AAC stream.
+    int audioBitRate = 128000;
+    // With audio, write exactly round(audio duration x fps) frames: surplus frames are dropped and
+    // a short video holds its last frame, so the file lasts as long as its sound (within half a
+    // frame). Without audio the frames are written as given.
+    bool fitVideoToAudio = true;
+
+    double frameRate() const { return double(frameRateNumerator) / frameRateDenominator; }
+};
+
+// Streaming writer: construct (opens the temporary file), addFrame() for every frame, finish().
+// Frames are BGR cv::Mat (CV_8UC3; CV_8UC1 and CV_8UC4 are converted) of one size, fixed by the
+// first frame. H.264 in yuv420p needs even dimensions: an odd width or height is padded by
+// repeating the last column or row (the output is then one pixel wider or taller).
+class VideoExporter
+{
+public:
+    // `audio` (mono float PCM, copied) may be null for a silent video. Its first sample plays with
+    // the first frame (AudioBuffer::startTime is not applied: trim or pad the samples to shift). Throws lipsync::Error
+    // naming `path` if the target directory does not exist or is not writable, or if the audio
+    // is empty.
+    explicit VideoExporter(const std::string &path, const VideoExportOptions &options = {},
+                           const AudioBuffer *audio = nullptr);
+    // Abandons the export (removes the temporary file) unless finish() succeeded.
+    ~VideoExporter();
+    VideoExporter(const VideoExporter &) = delete;
+    VideoExporter &operator=(const VideoExporter &) = delete;
+
+    // Encodes one frame. Frames beyond targetFrameCount() are ignored (see fitVideoToAudio).
+    void addFrame(const cv::Mat &frame);
+    // Writes the rest of the audio, flushes the encoders, writes the index and renames the
+    // temporary file to the final path. Throws lipsync::Error if no frame was added.
+    void finish();
+    // Stops and removes the temporary file. Safe to call more than once.
+    void abandon();
+
+    const std::string &path() const;
+    // Frames the file will hold: round(audio duration x fps) when fitted to the audio, else -1.
+    int targetFrameCount() const;
+    int framesAdded() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> d;
+};
+
+// One-call export of `frameCount` frames produced by `frameAt(i)` (rendered on demand so a long
+// clip never sits in memory), with progress and cancel through `feedback`. On cancel throws
+// lipsync::Canceled and leaves no file at `path`. With audio and fitVideoToAudio the frame count
+// written is round(audio duration x fps) whatever `frameCount` says (the last frame is held).
+void exportVideo(const std::string &path, int frameCount,
+                 const std::function<cv::Mat(int)> &frameAt, const AudioBuffer *audio,
+                 Feedback &feedback, const VideoExportOptions &options = {});
+
+} // namespace lipsync
