@@ -343,14 +343,25 @@ double BrandModel::trajectoryLogLikelihood(const std::vector<int> &labels,
     checkScoringInput(labels, Y);
     const Eigen::Index T = Y.rows();
     if (!jointCovariance.empty()) {
-        Eigen::MatrixXd H;
-        Eigen::VectorXd b;
-        denseReferenceSystem(labels, H, b);
-        const Eigen::LLT<Eigen::MatrixXd> llt(H);
-        const Eigen::VectorXd y = Eigen::Map<const Eigen::MatrixXd>(Eigen::MatrixXd(Y.transpose()).data(), m_dimension * T, 1);
-        const Eigen::VectorXd e = y - llt.solve(b);
-        const double logDet = 2.0 * llt.matrixL().toDenseMatrix().diagonal().array().log().sum();
-        return -0.5 * double(e.size()) * kLog2Pi + 0.5 * logDet - 0.5 * e.dot(H * e);
+        // Block form: log|H| = sum_t log|D_t| over the block LDL^T pivots, and e^T H e from the
+        // diagonal and sub-diagonal blocks. O(d^3 T), like generation.
+        const brand::BlockTridiagonalSystem s = blockSystem(labels);
+        const Eigen::MatrixXd e = Y.transpose() - brand::solveBlockTridiagonal(s); // d x T
+        double logDet = 0.0, quadratic = 0.0;
+        Eigen::MatrixXd pivot = s.diagonal[0];
+        for (Eigen::Index t = 0; t < T; ++t) {
+            if (t > 0) {
+                const Eigen::MatrixXd L = Eigen::LLT<Eigen::MatrixXd>(pivot)
+                                              .solve(s.lower[size_t(t - 1)].transpose())
+                                              .transpose();
+                pivot = s.diagonal[size_t(t)] - L * s.lower[size_t(t - 1)].transpose();
+                quadratic += 2.0 * e.col(t).dot(s.lower[size_t(t - 1)] * e.col(t - 1));
+            }
+            const Eigen::LLT<Eigen::MatrixXd> llt(pivot);
+            logDet += 2.0 * llt.matrixLLT().diagonal().array().log().sum();
+            quadratic += e.col(t).dot(s.diagonal[size_t(t)] * e.col(t));
+        }
+        return -0.5 * double(e.size()) * kLog2Pi + 0.5 * logDet - 0.5 * quadratic;
     }
     double ll = -0.5 * double(m_dimension * T) * kLog2Pi;
     for (int k = 0; k < m_dimension; ++k) {

@@ -228,6 +228,14 @@ private slots:
         const double logDet = 2.0 * llt.matrixLLT().diagonal().array().log().sum();
         const double dense = -0.5 * double(e.size()) * std::log(2 * M_PI) + 0.5 * logDet - 0.5 * e.dot(H * e);
         QVERIFY(std::abs(model.trajectoryLogLikelihood(labels, Y) - dense) < 1e-9 * std::abs(dense));
+        // Full covariance: the block computation equals the dense one too.
+        const BrandModel full = trained(trainingData(14, 2, 60, 50), true);
+        full.denseReferenceSystem(labels, H, b);
+        const Eigen::LLT<Eigen::MatrixXd> fullLlt(H);
+        const Eigen::VectorXd ef = Eigen::Map<const Eigen::VectorXd>(Yt.data(), Yt.size()) - fullLlt.solve(b);
+        const double fullDense = -0.5 * double(ef.size()) * std::log(2 * M_PI)
+                                 + fullLlt.matrixLLT().diagonal().array().log().sum() - 0.5 * ef.dot(H * ef);
+        QVERIFY(std::abs(full.trajectoryLogLikelihood(labels, Y) - fullDense) < 1e-9 * std::abs(fullDense));
     }
 
     void unseenPhonesAndOneFrame()
