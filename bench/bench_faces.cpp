@@ -33,8 +33,12 @@ const AamModel &gridModel()
 {
     static const AamModel model = [] {
         Feedback feedback;
+        FaceDetectorPaths paths;
+        paths.useDlib = false;
+        FaceDetector detector(paths);
         AamBuildOptions options;
         options.combinedVariance = 0.98;
+        options.detector = &detector;
         return buildAam(loadTrainingDirectory(LIPSYNC_TEST_DATA "/faces/grid"), options, feedback);
     }();
     return model;
@@ -126,18 +130,20 @@ void BM_HelenGeneric(benchmark::State &state)
         return;
     }
     Feedback feedback;
-    const AamModel model = buildAam(loadTrainingDirectory(train.toStdString()), {}, feedback);
-    const AamFitter fitter(model);
     FaceDetectorPaths paths;
     paths.useDlib = false;
     FaceDetector detector(paths);
+    AamBuildOptions options;
+    options.detector = &detector;
+    const AamModel model = buildAam(loadTrainingDirectory(train.toStdString()), options, feedback);
+    const AamFitter fitter(model);
     std::vector<AamTrainingExample> tests = loadTrainingDirectory(test.toStdString());
     std::vector<cv::Mat> images;
     std::vector<Eigen::VectorXd> starts;
     for (auto &e : tests) {
         images.push_back(cv::imread(e.imagePath));
         const auto faces = detector.detect(images.back());
-        starts.push_back(faces.empty() ? Eigen::VectorXd() : initialShapeFromDetection(model.meanShape, faces.front()));
+        starts.push_back(faces.empty() ? Eigen::VectorXd() : initialShapeFromDetection(model, faces.front()));
     }
     std::vector<double> nmes;
     for (auto _ : state) {

@@ -28,13 +28,13 @@ int runAamBuild(const QStringList &args)
     const Arguments a(args);
     if (const QStringList bad = a.unknown({"images", "out", "json", "shape-variance",
                                            "texture-variance", "combined-variance", "max-modes",
-                                           "eye-distance", "levels"});
+                                           "eye-distance", "levels", "no-detector"});
         !bad.isEmpty())
         return fail("aam build: unknown option " + bad.join(", "), 2);
     if (!a.has("images") || !a.has("out"))
         return fail("usage: lipsync aam build --images DIR --out MODEL [--combined-variance F] "
                     "[--shape-variance F] [--texture-variance F] [--max-modes N] "
-                    "[--eye-distance PX] [--levels N] [--json]",
+                    "[--eye-distance PX] [--levels N] [--no-detector] [--json]",
                     2);
     AamBuildOptions options;
     bool ok = true;
@@ -62,6 +62,11 @@ int runAamBuild(const QStringList &args)
     std::vector<AamTrainingExample> examples =
         loadTrainingDirectory(a.value("images").toStdString(), &warnings);
     Feedback feedback;
+    FaceDetectorPaths paths;
+    paths.useDlib = false;
+    FaceDetector detector(paths);
+    if (!a.flag("no-detector") && (detector.hasYunet() || detector.hasHaar()))
+        options.detector = &detector;
     const bool json = a.flag("json");
     if (!json)
         feedback.onStatus = [](const std::string &s) { std::fprintf(stderr, "aam build: %s\n", s.c_str()); };
@@ -86,6 +91,7 @@ int runAamBuild(const QStringList &args)
                     {"texture_pixels", model.warp(0).pixelCount()},
                     {"levels", int(model.levels.size())},
                     {"shape_variance_total", shapeTotal},
+                    {"detector_calibrated", model.detectorShape.size() > 0},
                     {"seconds", seconds},
                     {"warnings", warningArray}};
     if (json)
@@ -168,7 +174,7 @@ int runAamEval(const QStringList &args)
             if (points.size() == 136)
                 start = mapIbug68To23(points);
         } else if (best) {
-            start = initialShapeFromDetection(model.meanShape, *best);
+            start = initialShapeFromDetection(model, *best);
         }
         const auto t1 = std::chrono::steady_clock::now();
         detectSeconds += std::chrono::duration<double>(t1 - t0).count();
@@ -181,7 +187,11 @@ int runAamEval(const QStringList &args)
         fit.shape = start;
         if (init != "none") {
             const auto t2 = std::chrono::steady_clock::now();
-            fit = fitter.fit(image, start);
+            AamFitOptions fitOptions;
+            // dlib's points are already close: refine at the finest level only.
+            if (init == "dlib")
+                fitOptions.coarsestLevel = 0;
+            fit = fitter.fit(image, start, fitOptions);
             fitSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
         }
         const double nme = normalisedMeanError(fit.shape, e.shape);

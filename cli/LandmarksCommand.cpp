@@ -98,7 +98,7 @@ int runLandmarksDetect(const QStringList &args)
                     "(install libdlib-data)");
     if (shape.size() == 0 && model && method != "template") {
         const AamFitter fitter(*model);
-        shape = fitter.fit(image, initialShapeFromDetection(model->meanShape, face)).shape;
+        shape = fitter.fit(image, initialShapeFromDetection(*model, face)).shape;
         used = "aam";
     }
     if (shape.size() == 0) {

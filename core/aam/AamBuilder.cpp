@@ -1,6 +1,7 @@
 #include "aam/AamBuilder.h"
 
 #include "aam/AamFitter.h"
+#include "aam/FaceDetector.h"
 
 #include "aam/LandmarkScheme.h"
 #include "aam/PtsFile.h"
@@ -229,6 +230,33 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
     const Pca combined = computePca(joint, options.combinedVariance, options.maxCombinedModes, false);
     model.combinedBasis = combined.basis;
     model.combinedVariances = combined.variances;
+    // 5. Detector calibration: the mean of the training shapes in the frame of the detector's
+    //    keypoints, expressed where those keypoints sit on the mean shape.
+    if (options.detector) {
+        feedback.setStatus("calibrating the face detector");
+        const Eigen::VectorXd anchors = keypointAnchors(model.meanShape);
+        Eigen::VectorXd sum = Eigen::VectorXd::Zero(model.meanShape.size());
+        int count = 0;
+        for (const auto &e : usable) {
+            feedback.throwIfCanceled();
+            const std::vector<FaceDetection> faces = options.detector->detect(e.image);
+            // The detection whose keypoints are nearest the labelled eyes and mouth.
+            const Eigen::VectorXd truth = keypointAnchors(e.shape);
+            const double eyes = eyeDistance(e.shape);
+            for (const auto &f : faces) {
+                const Eigen::VectorXd k = detectionAnchors(f);
+                if (k.size() == 0 || (k - truth).cwiseAbs().maxCoeff() > 0.5 * eyes)
+                    continue;
+                sum += alignSimilarity(k, anchors).apply(e.shape);
+                ++count;
+                break;
+            }
+        }
+        if (count >= 3)
+            model.detectorShape = sum / count;
+        else
+            warn("the face detector found too few training faces to calibrate its initialisation");
+    }
     model.identifier = model.computeIdentifier();
     feedback.setProgress(1.0);
     feedback.setStatus("done");

@@ -13,6 +13,7 @@
 namespace lipsync {
 
 class Feedback;
+class FaceDetector;
 
 struct AamTrainingExample
 {
@@ -33,6 +34,9 @@ struct AamBuildOptions
     // Size of the level-0 reference frame: pixels between the outer eye corners.
     double referenceEyeDistance = 50.0;
     int levels = 2; // resolution levels for fitting, each half the previous
+    // When set, the detector is run on every training image to learn where its keypoints put
+    // the 23 points (AamModel::detectorShape), which makes fits from a detection start closer.
+    FaceDetector *detector = nullptr;
 };
 
 // Images with a .pts of the same stem (68 or 23 points) in `directory`, sorted by name. Throws

@@ -177,6 +177,7 @@ std::string AamModel::serialise(bool withIdentifier) const
         w.mat(l.basis);
         w.vec(l.variances);
     }
+    w.vec(detectorShape);
     return std::move(w.out());
 }
 
@@ -239,6 +240,7 @@ AamModel AamModel::load(const std::string &path)
         l.variances = r.vec("levels");
         m.levels.push_back(std::move(l));
     }
+    m.detectorShape = r.vec("detectorShape");
     if (!r.atEnd())
         throw Error("trailing data after the AAM model", path);
     // Consistency: sizes must agree or fitting would read out of bounds.
@@ -247,7 +249,8 @@ AamModel AamModel::load(const std::string &path)
                     && m.textureBasis.rows() == m.textureMean.size()
                     && m.textureVariances.size() == m.textureBasis.cols()
                     && m.combinedBasis.rows() == m.shapeModes() + m.textureModes()
-                    && m.referenceScale > 0 && m.shapeWeight > 0;
+                    && m.referenceScale > 0 && m.shapeWeight > 0
+                    && (m.detectorShape.size() == 0 || m.detectorShape.size() == m.meanShape.size());
     if (!ok)
         throw Error("inconsistent AAM model (sizes disagree)", path);
     m.prepare();

@@ -55,6 +55,12 @@ public:
     // Grey fitting models, level 0 first (finest).
     std::vector<AamTextureLevel> levels;
 
+    // Where the face detector's keypoints put the face: the mean training shape in the frame of
+    // the detector's eye centres and mouth corners (see initialShapeFromDetection). Corrects the
+    // systematic offset between the detector's keypoints and the 23 points. Empty if the model
+    // was built without a detector.
+    Eigen::VectorXd detectorShape;
+
     int trainingImages = 0;
     // Stable identifier of this model (hash of its contents); dynamic models record it.
     std::string identifier;

@@ -1,5 +1,6 @@
 #include "aam/FaceDetector.h"
 
+#include "aam/AamModel.h"
 #include "aam/LandmarkScheme.h"
 
 #include <QCoreApplication>
@@ -234,27 +235,51 @@ Eigen::VectorXd FaceDetector::dlibLandmarks(const cv::Mat &bgr, const FaceDetect
 #endif
 }
 
-Eigen::VectorXd initialShapeFromDetection(const Eigen::VectorXd &meanShape, const FaceDetection &face)
+Eigen::VectorXd keypointAnchors(const Eigen::VectorXd &shape)
 {
-    // Model points: eye centres (mean of each eye's four points) and the mouth corners.
     auto centre = [&](int from) {
         Eigen::Vector2d c = Eigen::Vector2d::Zero();
         for (int i = from; i < from + 4; ++i)
-            c += meanShape.segment<2>(2 * i);
+            c += shape.segment<2>(2 * i);
         return Eigen::Vector2d(c / 4.0);
     };
-    Eigen::VectorXd model(8), target(8);
-    model << centre(0), centre(4), meanShape.segment<2>(2 * scheme23::kMouthLeft),
-        meanShape.segment<2>(2 * scheme23::kMouthRight);
-    if (face.hasKeypoints) {
-        target << face.keypoints[0], face.keypoints[1], face.keypoints[3], face.keypoints[4];
-    } else {
+    Eigen::VectorXd anchors(8);
+    anchors << centre(0), centre(4), shape.segment<2>(2 * scheme23::kMouthLeft),
+        shape.segment<2>(2 * scheme23::kMouthRight);
+    return anchors;
+}
+
+Eigen::VectorXd detectionAnchors(const FaceDetection &face)
+{
+    if (!face.hasKeypoints)
+        return {};
+    Eigen::VectorXd anchors(8);
+    anchors << face.keypoints[0], face.keypoints[1], face.keypoints[3], face.keypoints[4];
+    return anchors;
+}
+
+Eigen::VectorXd initialShapeFromDetection(const Eigen::VectorXd &meanShape, const FaceDetection &face)
+{
+    const Eigen::VectorXd model = keypointAnchors(meanShape);
+    Eigen::VectorXd target = detectionAnchors(face);
+    if (target.size() == 0) {
         // Typical positions in a frontal Haar box (fractions of width and height).
         const cv::Rect2d &b = face.box;
         auto at = [&](double fx, double fy) { return Eigen::Vector2d(b.x + fx * b.width, b.y + fy * b.height); };
+        target.resize(8);
         target << at(0.31, 0.40), at(0.69, 0.40), at(0.36, 0.76), at(0.64, 0.76);
     }
     return alignSimilarity(model, target).apply(meanShape);
+}
+
+Eigen::VectorXd initialShapeFromDetection(const AamModel &model, const FaceDetection &face)
+{
+    if (face.hasKeypoints && model.detectorShape.size() == model.meanShape.size()) {
+        // detectorShape lives in the frame where the keypoints sit on the mean shape's anchors.
+        const Similarity t = alignSimilarity(keypointAnchors(model.meanShape), detectionAnchors(face));
+        return t.apply(model.detectorShape);
+    }
+    return initialShapeFromDetection(model.meanShape, face);
 }
 
 } // namespace lipsync

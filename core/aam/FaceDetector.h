@@ -62,9 +62,18 @@ private:
     std::unique_ptr<Impl> m_impl;
 };
 
+// The four reference points of a 23-point shape that detector keypoints correspond to: the eye
+// centres (mean of each eye's four points) and the mouth corners (flat, 8 values).
+Eigen::VectorXd keypointAnchors(const Eigen::VectorXd &shape);
+// The detector keypoints matching keypointAnchors() (flat, 8 values); empty without keypoints.
+Eigen::VectorXd detectionAnchors(const FaceDetection &face);
+
 // Places `meanShape` (normalised 23 points) on a detection: a similarity fitted to the eye
 // centres and mouth corners for keypoint detections, or to fixed fractions of the box for Haar.
 Eigen::VectorXd initialShapeFromDetection(const Eigen::VectorXd &meanShape,
                                           const FaceDetection &face);
+// As above with a model: uses its detector-calibrated shape when it has one.
+class AamModel;
+Eigen::VectorXd initialShapeFromDetection(const AamModel &model, const FaceDetection &face);
 
 } // namespace lipsync

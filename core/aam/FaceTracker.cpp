@@ -42,7 +42,7 @@ bool FaceTracker::fitFromDetection(const cv::Mat &bgr, const cv::Mat &grey,
     const std::vector<FaceDetection> faces = m_detector->detect(bgr);
     if (faces.empty())
         return false;
-    const Eigen::VectorXd start = initialShapeFromDetection(m_fitter.model().meanShape, faces.front());
+    const Eigen::VectorXd start = initialShapeFromDetection(m_fitter.model(), faces.front());
     AamFitOptions full = options;
     full.coarsestLevel = -1;
     out = m_fitter.fit(grey, start, full);
