@@ -1,5 +1,8 @@
 // `lipsync export video` on a demo clip, read back with ffprobe-like checks through the JSON
 // report and the written files; bad input gives one clear line.
+#include "render/VideoExporter.h"
+#include "tasks/Feedback.h"
+
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonDocument>
@@ -80,6 +83,24 @@ private slots:
         QVERIFY2(r.exitCode == 0, r.err.constData());
         QCOMPARE(parse(r.out).value("frames").toInt(), 75);
         QCOMPARE(QDir(dir.filePath("png")).entryList({"*.png"}).size(), 75);
+    }
+
+    // Media without sound: a clear message that says how to go on.
+    void mediaWithoutAudio()
+    {
+        QTemporaryDir dir;
+        const QString silent = dir.filePath("silent.mp4");
+        lipsync::Feedback feedback;
+        lipsync::exportVideo(silent.toStdString(), 10, [](int i) {
+            return cv::Mat(64, 64, CV_8UC3, cv::Scalar(i * 20, 100, 100));
+        }, nullptr, feedback);
+        verifyOneLineError(run({"export", "video", "--media", silent, "--out", dir.filePath("x.mp4")}), 1,
+                           "--no-audio");
+        QVERIFY(!QFileInfo::exists(dir.filePath("x.mp4")));
+        const Run r = run({"export", "video", "--media", silent, "--no-audio", "--out", dir.filePath("x.mp4"), "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QCOMPARE(parse(r.out).value("frames").toInt(), 10);
+        QCOMPARE(parse(r.out).value("audio").toBool(), false);
     }
 
     void badInput()
