@@ -511,7 +511,7 @@ void VideoExporter::finish()
     }
 }
 
-void exportVideo(const std::string &path, int frameCount,
+int exportVideo(const std::string &path, int frameCount,
                  const std::function<cv::Mat(int)> &frameAt, const AudioBuffer *audio,
                  Feedback &feedback, const VideoExportOptions &options)
 {
@@ -531,6 +531,7 @@ void exportVideo(const std::string &path, int frameCount,
     feedback.throwIfCanceled();
     exporter.finish();
     feedback.setProgress(1.0);
+    return total;
 }
 
 } // namespace lipsync

@@ -82,7 +82,8 @@ private:
 // clip never sits in memory), with progress and cancel through `feedback`. On cancel throws
 // lipsync::Canceled and leaves no file at `path`. With audio and fitVideoToAudio the frame count
 // written is round(audio duration x fps) whatever `frameCount` says (the last frame is held).
-void exportVideo(const std::string &path, int frameCount,
+// Returns the number of frames in the file.
+int exportVideo(const std::string &path, int frameCount,
                  const std::function<cv::Mat(int)> &frameAt, const AudioBuffer *audio,
                  Feedback &feedback, const VideoExportOptions &options = {});
 

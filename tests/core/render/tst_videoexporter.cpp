@@ -185,7 +185,7 @@ private slots:
         const AudioBuffer audio = tone(2.0);
         Feedback feedback;
         int rendered = 0;
-        exportVideo(path, given, [&](int i) { ++rendered; return patternFrame(i); }, &audio, feedback);
+        QCOMPARE(exportVideo(path, given, [&](int i) { ++rendered; return patternFrame(i); }, &audio, feedback), 50);
         QCOMPARE(rendered, std::min(given, 50));
         const MediaProbe probe = MediaProbe::read(path);
         QCOMPARE(probe.videoPackets, 50);
