@@ -12,7 +12,7 @@
 #include "dynamics/DpdsModel.h"
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
-#include "dynamics/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "eval/Evaluation.h"
 #include "io/GridAlign.h"
 #include "tasks/Feedback.h"
@@ -87,7 +87,7 @@ const std::vector<std::vector<int>> &gridLabels()
 std::vector<LabelledSequence> gridLikeData(int d, unsigned seed = 1)
 {
     std::mt19937 rng(seed);
-    const int P = PhoneSet::kSize;
+    const int P = PhoneSet::kCount;
     std::uniform_real_distribution<double> aDist(0.2, 0.9), mDist(-2.0, 2.0);
     std::normal_distribution<double> noise(0.0, 0.05);
     Eigen::MatrixXd a(P, d), nu(P, d), mu(P, d);

@@ -15,7 +15,7 @@
 #include "align/AlignerTrainer.h"
 #include "align/AlignerUtterance.h"
 #include "align/ForcedAligner.h"
-#include "align/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "io/AudioDecoder.h"
 #include "io/TextGrid.h"
 #include "io/Transcript.h"

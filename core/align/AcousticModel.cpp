@@ -1,6 +1,6 @@
 #include "align/AcousticModel.h"
 
-#include "align/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "io/AtomicFile.h"
 #include "io/AudioDecoder.h"
 #include "util/Error.h"

@@ -1,7 +1,7 @@
 #include "align/AlignerTrainer.h"
 
 #include "align/BaumWelch.h"
-#include "align/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "align/UtteranceGraph.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"

@@ -1,6 +1,6 @@
 #include "align/EspeakPhonemizer.h"
 
-#include "align/PhoneSet.h"
+#include "util/PhoneSet.h"
 
 #include <espeak-ng/speak_lib.h>
 

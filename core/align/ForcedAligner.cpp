@@ -1,7 +1,7 @@
 #include "align/ForcedAligner.h"
 
 #include "align/EmissionCache.h"
-#include "align/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "util/Error.h"
 
 #include <cmath>

@@ -1,7 +1,7 @@
 #include "align/Lexicon.h"
 
 #include "align/EspeakPhonemizer.h"
-#include "align/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "util/Error.h"
 
 #include <sstream>

@@ -1,6 +1,6 @@
 #include "align/PronunciationDictionary.h"
 
-#include "align/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "util/Error.h"
 
 #include <cctype>

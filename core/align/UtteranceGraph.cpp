@@ -1,7 +1,7 @@
 #include "align/UtteranceGraph.h"
 
 #include "align/AcousticModel.h"
-#include "align/PhoneSet.h"
+#include "util/PhoneSet.h"
 
 #include <cmath>
 

@@ -2,7 +2,7 @@
 
 #include "dynamics/GaussianMath.h"
 #include "dynamics/JsonEigen.h"
-#include "dynamics/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
@@ -31,7 +31,7 @@ Eigen::MatrixXd floorCovariance(const Eigen::MatrixXd &C, const Eigen::VectorXd 
 void BrandModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &feedback)
 {
     feedback.throwIfCanceled();
-    const int P = PhoneSet::kSize;
+    const int P = PhoneSet::kCount;
     const FrameStatistics st = computeFrameStatistics(sequences);
     const Eigen::Index d = st.mean.cols();
     // Delta statistics over the transition frames T_n (the delta of frame t takes t's label).
@@ -87,7 +87,7 @@ void BrandModel::fitFull(const std::vector<LabelledSequence> &sequences,
                          const Eigen::VectorXd &floor)
 {
     // [choice, §2.1] Mean and ML covariance of o_t over T_n only.
-    const int P = PhoneSet::kSize;
+    const int P = PhoneSet::kCount;
     const Eigen::Index d = m_dimension, D = 2 * d;
     Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(P, D);
     std::vector<Eigen::MatrixXd> outer(size_t(P), Eigen::MatrixXd::Zero(D, D));
@@ -210,7 +210,7 @@ brand::BlockTridiagonalSystem BrandModel::blockSystem(const std::vector<int> &la
     // §2.2, general full-covariance form, accumulated frame by frame.
     const Eigen::Index d = m_dimension;
     const size_t T = labels.size();
-    const int P = PhoneSet::kSize;
+    const int P = PhoneSet::kCount;
     std::vector<Eigen::MatrixXd> lambda(static_cast<size_t>(P)), lambdaStatic(static_cast<size_t>(P));
     std::vector<bool> done(size_t(P), false);
     for (int n : labels)
@@ -412,9 +412,9 @@ public:
     {
         if (m_finished)
             throw Error("streamer already finished");
-        if (label < 0 || label >= PhoneSet::kSize)
+        if (label < 0 || label >= PhoneSet::kCount)
             throw Error("label " + std::to_string(label) + " outside 0.."
-                        + std::to_string(PhoneSet::kSize - 1));
+                        + std::to_string(PhoneSet::kCount - 1));
         Row row;
         row.p = m_pInv.row(label).transpose().array().inverse();
         row.pm = row.p * m_mean.row(label).transpose().array();
@@ -529,9 +529,9 @@ public:
     int latency() const override { return -1; }
     void push(int label) override
     {
-        if (label < 0 || label >= PhoneSet::kSize)
+        if (label < 0 || label >= PhoneSet::kCount)
             throw Error("label " + std::to_string(label) + " outside 0.."
-                        + std::to_string(PhoneSet::kSize - 1));
+                        + std::to_string(PhoneSet::kCount - 1));
         m_labels.push_back(label);
     }
     void finish() override
@@ -587,7 +587,7 @@ QJsonObject BrandModel::parametersToJson() const
 
 void BrandModel::parametersFromJson(const QJsonObject &o, const std::string &file)
 {
-    const int P = PhoneSet::kSize;
+    const int P = PhoneSet::kCount;
     staticMean = json::toMatrix(o, "staticMean", P, -1, file);
     const Eigen::Index d = staticMean.cols();
     staticVariance = json::toMatrix(o, "staticVariance", P, d, file);

@@ -3,7 +3,7 @@
 #include "dynamics/DpdsSolver.h"
 #include "dynamics/GaussianMath.h"
 #include "dynamics/JsonEigen.h"
-#include "dynamics/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
@@ -230,7 +230,7 @@ struct DimensionFit
 
 void DpdsModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &feedback)
 {
-    const int P = PhoneSet::kSize;
+    const int P = PhoneSet::kCount;
     const FrameStatistics st = computeFrameStatistics(sequences);
     const Eigen::Index d = st.mean.cols();
     std::vector<std::vector<int>> labels;
@@ -409,7 +409,7 @@ QJsonObject DpdsModel::parametersToJson() const
 
 void DpdsModel::parametersFromJson(const QJsonObject &o, const std::string &file)
 {
-    const int P = PhoneSet::kSize;
+    const int P = PhoneSet::kCount;
     a = json::toMatrix(o, "a", P, -1, file);
     const Eigen::Index d = a.cols();
     mu = json::toMatrix(o, "mu", P, d, file);

@@ -2,7 +2,7 @@
 
 #include "dynamics/GaussianMath.h"
 #include "dynamics/JsonEigen.h"
-#include "dynamics/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "tasks/Feedback.h"
 
 namespace lipsync {
@@ -63,8 +63,8 @@ QJsonObject HmmMeanModel::parametersToJson() const
 
 void HmmMeanModel::parametersFromJson(const QJsonObject &o, const std::string &file)
 {
-    m_mean = json::toMatrix(o, "mean", PhoneSet::kSize, -1, file);
-    m_variance = json::toMatrix(o, "variance", PhoneSet::kSize, m_mean.cols(), file);
+    m_mean = json::toMatrix(o, "mean", PhoneSet::kCount, -1, file);
+    m_variance = json::toMatrix(o, "variance", PhoneSet::kCount, m_mean.cols(), file);
     m_dimension = int(m_mean.cols());
 }
 

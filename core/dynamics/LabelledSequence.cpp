@@ -1,6 +1,6 @@
 #include "dynamics/LabelledSequence.h"
 
-#include "dynamics/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "util/Error.h"
 
 #include <cmath>
@@ -12,9 +12,9 @@ void validateLabels(const std::vector<int> &labels, const std::string &what)
     if (labels.empty())
         throw Error("no frames", what);
     for (size_t t = 0; t < labels.size(); ++t)
-        if (labels[t] < 0 || labels[t] >= PhoneSet::kSize)
+        if (labels[t] < 0 || labels[t] >= PhoneSet::kCount)
             throw Error("frame " + std::to_string(t) + ": label " + std::to_string(labels[t])
-                            + " outside 0.." + std::to_string(PhoneSet::kSize - 1),
+                            + " outside 0.." + std::to_string(PhoneSet::kCount - 1),
                         what);
 }
 
@@ -50,7 +50,7 @@ void validateSequences(const std::vector<LabelledSequence> &sequences)
 
 FrameStatistics computeFrameStatistics(const std::vector<LabelledSequence> &sequences)
 {
-    const int P = PhoneSet::kSize;
+    const int P = PhoneSet::kCount;
     const Eigen::Index d = sequences.front().features.cols();
     FrameStatistics st;
     st.mean = Eigen::MatrixXd::Zero(P, d);

@@ -1,6 +1,6 @@
 #pragma once
 // Training and test data of the dynamic models (models.md §0): one utterance = an integer phone
-// label per video frame (0..PhoneSet::kSize-1) and the T x d matrix of face features y_t.
+// label per video frame (0..PhoneSet::kCount-1) and the T x d matrix of face features y_t.
 #include <Eigen/Core>
 
 #include <string>

@@ -1,6 +1,6 @@
 #include "dynamics/LinearRecursion.h"
 
-#include "dynamics/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "util/Error.h"
 
 namespace lipsync {
@@ -43,9 +43,9 @@ public:
     int latency() const override { return 0; }
     void push(int label) override
     {
-        if (label < 0 || label >= PhoneSet::kSize)
+        if (label < 0 || label >= PhoneSet::kCount)
             throw Error("label " + std::to_string(label) + " outside 0.."
-                        + std::to_string(PhoneSet::kSize - 1));
+                        + std::to_string(PhoneSet::kCount - 1));
         if (!m_started) {
             m_r.first(label, m_y);
             m_started = true;

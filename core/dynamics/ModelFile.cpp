@@ -1,7 +1,7 @@
 #include "dynamics/ModelFile.h"
 
 #include "dynamics/HmmMeanModel.h"
-#include "dynamics/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "io/AtomicFile.h"
 #include "util/Error.h"
 
@@ -39,7 +39,7 @@ void saveModel(const DynamicModel &model, const std::string &path, const std::st
     o[QStringLiteral("kind")] = QString::fromStdString(model.kind());
     o[QStringLiteral("aam")] = QString::fromStdString(aamId);
     QJsonArray labels;
-    for (std::string_view name : PhoneSet::names())
+    for (std::string_view name : PhoneSet::labels())
         labels.append(QString::fromLatin1(name.data(), qsizetype(name.size())));
     o[QStringLiteral("labels")] = labels;
     o[QStringLiteral("dimension")] = model.dimension();
@@ -69,9 +69,9 @@ std::unique_ptr<DynamicModel> loadModel(const std::string &path, const std::stri
         throw Error("the model was trained for AAM '" + aam + "', not for AAM '" + expectedAamId + "'",
                     path, "aam");
     const QJsonArray labels = o.value(QStringLiteral("labels")).toArray();
-    bool sameLabels = labels.size() == PhoneSet::kSize;
-    for (int i = 0; sameLabels && i < PhoneSet::kSize; ++i)
-        sameLabels = labels[i].toString().toStdString() == PhoneSet::name(i);
+    bool sameLabels = labels.size() == PhoneSet::kCount;
+    for (int i = 0; sameLabels && i < PhoneSet::kCount; ++i)
+        sameLabels = labels[i].toString().toStdString() == PhoneSet::label(i);
     if (!sameLabels)
         throw Error("the label set differs from this build's 41 phones (AA .. ZH, sil, br)", path,
                     "labels");

@@ -1,6 +1,6 @@
 #include "dynamics/PhoneLabels.h"
 
-#include "dynamics/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "io/AtomicFile.h"
 #include "util/Error.h"
 

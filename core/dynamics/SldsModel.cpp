@@ -2,7 +2,7 @@
 
 #include "dynamics/GaussianMath.h"
 #include "dynamics/JsonEigen.h"
-#include "dynamics/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
@@ -121,7 +121,7 @@ void SldsModel::setParameters(const slds::Parameters &parameters)
 
 void SldsModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &feedback)
 {
-    const int P = PhoneSet::kSize;
+    const int P = PhoneSet::kCount;
     const FrameStatistics st = computeFrameStatistics(sequences);
     const Eigen::Index d = st.mean.cols();
     // Initialisation [choice, §3.4]: DPDS a, nu, mu; Q = R = r/2; Sigma_n = c_n.
@@ -182,7 +182,7 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
                              const FrameStatistics &st, const Eigen::VectorXd &s0)
 {
     // All-diagonal default: d independent scalar Kalman filters / RTS smoothers (§3.1).
-    const int P = PhoneSet::kSize;
+    const int P = PhoneSet::kCount;
     const Eigen::Index d = m_dimension;
     slds::Parameters &p = m_params;
     // Dimensions are independent: run them in parallel (each writes only its own k entries).
@@ -326,7 +326,7 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
 double SldsModel::emMatrix(const std::vector<LabelledSequence> &sequences,
                            const FrameStatistics &st, const Eigen::VectorXd &s0)
 {
-    const int P = PhoneSet::kSize;
+    const int P = PhoneSet::kCount;
     const Eigen::Index d = m_dimension;
     slds::Parameters &p = m_params;
     const Eigen::MatrixXd Z = Eigen::MatrixXd::Zero(d, d);
@@ -524,7 +524,7 @@ QJsonObject SldsModel::parametersToJson() const
 
 void SldsModel::parametersFromJson(const QJsonObject &o, const std::string &file)
 {
-    const int P = PhoneSet::kSize;
+    const int P = PhoneSet::kCount;
     slds::Parameters p;
     p.nu = json::toMatrix(o, "nu", P, -1, file);
     const Eigen::Index d = p.nu.cols();

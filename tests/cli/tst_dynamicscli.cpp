@@ -41,7 +41,7 @@ void writeLab(const std::string &path, const std::vector<int> &labels)
     size_t start = 0;
     for (size_t t = 1; t <= labels.size(); ++t)
         if (t == labels.size() || labels[t] != labels[start]) {
-            out << start / 25.0 << " " << t / 25.0 << " " << PhoneSet::name(labels[start]) << "\n";
+            out << start / 25.0 << " " << t / 25.0 << " " << PhoneSet::label(labels[start]) << "\n";
             start = t;
         }
 }

@@ -9,7 +9,7 @@
 #include "align/AlignerTrainer.h"
 #include "align/AlignerUtterance.h"
 #include "align/ForcedAligner.h"
-#include "align/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "io/Transcript.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"

@@ -2,7 +2,7 @@
 // ARPAbet, project overrides, unknown words named in the error.
 #include "align/EspeakPhonemizer.h"
 #include "align/Lexicon.h"
-#include "align/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "util/Error.h"
 
 #include <QTemporaryDir>

@@ -2,7 +2,7 @@
 // Synthetic labelled data for the dynamics tests: phone sequences made of runs (like aligned
 // speech: a few frames per phone, starting in silence) and features sampled from a DPDS.
 #include "dynamics/LabelledSequence.h"
-#include "dynamics/PhoneSet.h"
+#include "util/PhoneSet.h"
 
 #include <Eigen/Core>
 
@@ -38,7 +38,7 @@ struct DpdsTruth
 
 inline DpdsTruth randomDpdsTruth(std::mt19937 &rng, int d, double noise)
 {
-    const int P = PhoneSet::kSize;
+    const int P = PhoneSet::kCount;
     std::uniform_real_distribution<double> aDist(0.2, 0.9), mDist(-2.0, 2.0);
     DpdsTruth truth;
     truth.a.resize(P, d);

@@ -28,7 +28,7 @@ struct Problem
 Problem makeProblem(unsigned seed, int sequences = 6, int frames = 25)
 {
     std::mt19937 rng(seed);
-    const int P = PhoneSet::kSize;
+    const int P = PhoneSet::kCount;
     const std::vector<int> states{0, 2, 6, 9, 21, 26};
     std::vector<std::vector<int>> labels;
     for (int s = 0; s < sequences; ++s)
@@ -419,7 +419,7 @@ private slots:
         Feedback feedback;
         DpdsModel model;
         model.train(data, feedback);
-        const int P = PhoneSet::kSize;
+        const int P = PhoneSet::kCount;
         for (int n = 0; n < P; ++n)
             model.sigma2.row(n) = model.r.transpose();
         slds::Parameters p;
@@ -463,7 +463,7 @@ private slots:
         const double aBar = model.a.cwiseAbs().maxCoeff();
         QVERIFY(aBar <= 0.999 + 1e-15);
         std::vector<int> labels;
-        std::uniform_int_distribution<int> pick(0, PhoneSet::kSize - 1);
+        std::uniform_int_distribution<int> pick(0, PhoneSet::kCount - 1);
         for (int t = 0; t < 100000; ++t)
             labels.push_back(pick(rng));
         const Eigen::MatrixXd Y = model.generate(labels);

@@ -1,6 +1,6 @@
 // Phone set, TextGrid / .lab readers and the frame voting rule of models.md §0.
 #include "dynamics/PhoneLabels.h"
-#include "dynamics/PhoneSet.h"
+#include "util/PhoneSet.h"
 #include "util/Error.h"
 
 #include <QTemporaryDir>
@@ -18,7 +18,7 @@ class TestPhoneLabels : public QObject
 private slots:
     void phoneSet()
     {
-        QCOMPARE(PhoneSet::kSize, 41);
+        QCOMPARE(PhoneSet::kCount, 41);
         QCOMPARE(PhoneSet::index("AH0"), 2);
         QCOMPARE(PhoneSet::index("ah"), 2);
         QCOMPARE(PhoneSet::index("sp"), PhoneSet::kSilence);
@@ -26,7 +26,7 @@ private slots:
         QCOMPARE(PhoneSet::index("breath"), PhoneSet::kBreath);
         QCOMPARE(PhoneSet::index("ZH"), 38);
         QCOMPARE(PhoneSet::index("ɑ"), -1);
-        QCOMPARE(PhoneSet::name(39), std::string("sil"));
+        QCOMPARE(PhoneSet::label(39), std::string("sil"));
     }
 
     void longAndShortTextGridAndLabAgree()

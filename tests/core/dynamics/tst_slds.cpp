@@ -25,7 +25,7 @@ Eigen::MatrixXd randomSpd(std::mt19937 &rng, int d, double scale)
 
 slds::Parameters randomParameters(std::mt19937 &rng, int d, bool diagonal)
 {
-    const int P = PhoneSet::kSize;
+    const int P = PhoneSet::kCount;
     std::uniform_real_distribution<double> u(-0.6, 0.6);
     slds::Parameters p;
     p.mu.resize(P, d);

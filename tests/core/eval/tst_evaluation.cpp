@@ -3,13 +3,14 @@
 
 #include "eval/CrossValidation.h"
 #include "eval/Evaluation.h"
-#include "eval/ForcedChoice.h"
+#include "eval/StudyTally.h"
 #include "eval/Metrics.h"
 #include "eval/Statistics.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
 #include <QJsonArray>
+#include <cmath>
 #include <QTest>
 
 #include <set>
@@ -53,31 +54,39 @@ private slots:
         QVERIFY(std::abs(t.p - 0.07417990) < 1e-6);
     }
 
-    // §7.24
+    // §7.24: the paper's Table 1 counts give its sign-test p-values and Bradley-Terry order.
     void forcedChoiceTable1()
     {
-        const std::vector<PairTally> table{{"Brand", "DPDS", 5, 7, 54},  {"Brand", "real", 4, 7, 55},
-                                           {"Brand", "SLDS", 36, 21, 9}, {"DPDS", "real", 29, 11, 26},
-                                           {"DPDS", "SLDS", 60, 5, 1},   {"real", "SLDS", 58, 5, 3}};
-        for (const PairTally &t : table)
-            QCOMPARE(t.preferA + t.undecided + t.preferB, 66);
-        const std::vector<double> expected{1.9e-11, 1.7e-12, 6.6e-5, 0.79, 5.4e-17, 3.3e-14};
-        const std::vector<PairTest> tests = signTests(table);
-        for (size_t i = 0; i < table.size(); ++i)
-            QVERIFY2(std::abs(tests[i].p / expected[i] - 1.0) < 0.05,
-                     qPrintable(QStringLiteral("%1 vs %2").arg(tests[i].p).arg(expected[i])));
-        const std::vector<std::string> methods{"DPDS", "real", "Brand", "SLDS"};
-        const std::vector<double> dropped = bradleyTerryLogScores(table, methods);
-        const std::vector<double> halves = bradleyTerryLogScores(table, methods, true);
-        const std::vector<double> expectDropped{1.571, 1.451, -0.879, -2.143};
-        const std::vector<double> expectHalves{1.207, 1.116, -0.759, -1.564};
-        for (size_t i = 0; i < 4; ++i) {
-            QVERIFY2(std::abs(dropped[i] - expectDropped[i]) < 2e-3, qPrintable(QString::number(dropped[i])));
-            QVERIFY2(std::abs(halves[i] - expectHalves[i]) < 2e-3, qPrintable(QString::number(halves[i])));
+        const std::vector<std::string> methods{"Brand", "DPDS", "real", "SLDS"};
+        std::vector<PairTally> counts(6);
+        const int rows[6][5] = {{0, 1, 5, 7, 54}, {0, 2, 4, 7, 55}, {0, 3, 36, 21, 9},
+                                {1, 2, 29, 11, 26}, {1, 3, 60, 5, 1}, {2, 3, 58, 5, 3}};
+        for (int i = 0; i < 6; ++i) {
+            counts[size_t(i)].a = rows[i][0];
+            counts[size_t(i)].b = rows[i][1];
+            counts[size_t(i)].preferA = rows[i][2];
+            counts[size_t(i)].undecided = rows[i][3];
+            counts[size_t(i)].preferB = rows[i][4];
         }
-        QVERIFY(tests[3].pHolm > 0.05);
-        for (size_t i : {0, 1, 2, 4, 5})
-            QVERIFY(tests[i].pHolm < 0.001);
+        const StudyTally tally = StudyTally::fromCounts(methods, counts);
+        const double expected[6] = {1.9e-11, 1.7e-12, 6.6e-5, 0.79, 5.4e-17, 3.3e-14};
+        for (int i = 0; i < 6; ++i) {
+            const PairTally &p = tally.pair(rows[i][0], rows[i][1]);
+            QCOMPARE(p.total(), 66);
+            QVERIFY2(std::abs(p.pValue / expected[i] - 1.0) < 0.05,
+                     qPrintable(QStringLiteral("%1 vs %2").arg(p.pValue).arg(expected[i])));
+        }
+        // Bradley-Terry with undecided answers dropped: log-strengths centred to sum 0 are
+        // DPDS 1.571, real 1.451, Brand -0.879, SLDS -2.143 (models.md §7.24).
+        const double expectLog[4] = {-0.879, 1.571, 1.451, -2.143}; // Brand, DPDS, real, SLDS
+        double meanLog = 0;
+        for (const MethodScore &m : tally.ranking)
+            meanLog += std::log(m.strength) / 4.0;
+        for (const MethodScore &m : tally.ranking)
+            QVERIFY2(std::abs(std::log(m.strength) - meanLog - expectLog[m.method]) < 2e-3,
+                     qPrintable(QString::number(std::log(m.strength) - meanLog)));
+        QCOMPARE(methods[size_t(tally.ranking.front().method)], std::string("DPDS"));
+        QCOMPARE(methods[size_t(tally.ranking.back().method)], std::string("SLDS"));
     }
 
     // §7.25

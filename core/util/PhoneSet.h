@@ -1,7 +1,7 @@
 #pragma once
 // The 41 phone labels of the paper (models.md §0: P = 41): the 39 ARPAbet phonemes of the CMU
 // pronouncing dictionary (without stress digits), silence "sil" and breath "br".
-// (Created here because core/util/PhoneSet.h did not exist when the aligner was written.)
+// Shared by the aligner (HMM states) and the dynamic models (labels 0..P-1 in this order).
 #include <array>
 #include <string>
 #include <string_view>

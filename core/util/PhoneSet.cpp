@@ -1,4 +1,4 @@
-#include "align/PhoneSet.h"
+#include "util/PhoneSet.h"
 
 #include <algorithm>
 #include <cctype>
@@ -27,7 +27,7 @@ int PhoneSet::index(std::string_view label)
     for (char c : label)
         if (!std::isdigit(static_cast<unsigned char>(c)))
             s += char(std::tolower(static_cast<unsigned char>(c)));
-    if (s.empty() || s == "sil" || s == "sp" || s == "<sil>" || s == "silence")
+    if (s.empty() || s == "sil" || s == "sp" || s == "<sil>" || s == "<eps>" || s == "silence")
         return kSilence;
     if (s == "br" || s == "spn" || s == "noise" || s == "breath" || s == "<br>")
         return kBreath;
