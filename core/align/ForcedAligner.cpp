@@ -34,6 +34,10 @@ AlignmentResult ForcedAligner::alignWithBeam(const Eigen::MatrixXf &features, co
         throw Error("the transcript does not fit the audio: " + std::to_string(graph.minimumFrames() / 3)
                     + " phones need at least " + std::to_string(graph.minimumFrames() * shift)
                     + " s, the audio has " + std::to_string(T * shift) + " s");
+    // Back pointers take T x S ints: about 10 minutes of continuous speech in one pass at most.
+    if (double(T) * double(S) > 3e8)
+        throw Error("the recording is too long to align in one piece (" + std::to_string(T * shift)
+                    + " s with " + std::to_string(S / 3) + " phones): split it into shorter utterances");
     if (features.cols() != m_model.dimension())
         throw Error("features do not match the aligner model's dimension");
     const auto &states = graph.states();

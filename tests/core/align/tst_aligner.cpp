@@ -9,10 +9,11 @@
 #include "align/AlignerTrainer.h"
 #include "align/AlignerUtterance.h"
 #include "align/ForcedAligner.h"
-#include "util/PhoneSet.h"
+#include "io/AudioDecoder.h"
 #include "io/Transcript.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
+#include "util/PhoneSet.h"
 
 #include <QTemporaryDir>
 #include <QTest>
@@ -96,6 +97,23 @@ TrainerOptions smallOptions()
     o.firstStageIterations = 5;
     o.iterationsPerStage = 3;
     return o;
+}
+
+// A 16-bit PCM WAV file.
+void writeWav(const std::string &path, const std::vector<int16_t> &interleaved, int rate, int channels)
+{
+    std::ofstream f(path, std::ios::binary);
+    auto u32 = [&](uint32_t v) { f.write(reinterpret_cast<const char *>(&v), 4); };
+    auto u16 = [&](uint16_t v) { f.write(reinterpret_cast<const char *>(&v), 2); };
+    const uint32_t bytes = uint32_t(interleaved.size() * 2);
+    f.write("RIFF", 4);
+    u32(36 + bytes);
+    f.write("WAVEfmt ", 8);
+    u32(16), u16(1), u16(uint16_t(channels)), u32(uint32_t(rate)), u32(uint32_t(rate * channels * 2)),
+        u16(uint16_t(channels * 2)), u16(16);
+    f.write("data", 4);
+    u32(bytes);
+    f.write(reinterpret_cast<const char *>(interleaved.data()), bytes);
 }
 
 } // namespace
@@ -282,6 +300,43 @@ private slots:
             }
         }
         QVERIFY2(good >= total * 3 / 4, qPrintable(QStringLiteral("%1 of %2 inner word boundaries within 40 ms").arg(good).arg(total)));
+    }
+
+    void stereo48kHzClippedAudioStillAligns()
+    {
+        // The demo clip's audio at 48 kHz, stereo (right channel inverted-free copy at half gain),
+        // 4x gain hard-clipped: the decoder resamples and mixes down, the aligner copes.
+        const std::string id = "lrik4p";
+        const AudioBuffer audio = AudioDecoder::decode(kDemo + id + ".mpg", 16000);
+        std::vector<int16_t> pcm;
+        for (size_t i = 0; i < audio.samples.size(); ++i)
+            for (int k = 0; k < 3; ++k) {
+                const float a = audio.samples[i], b = audio.samples[std::min(i + 1, audio.samples.size() - 1)];
+                const float v = std::clamp(4.0f * (a + (b - a) * k / 3.0f), -1.0f, 1.0f);
+                pcm.push_back(int16_t(v * 32767));
+                pcm.push_back(int16_t(v * 16383));
+            }
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("loud.wav").toStdString();
+        writeWav(path, pcm, 48000, 2);
+        const AcousticModel model = AcousticModel::load(kShippedModel);
+        const Lexicon lexicon(&PronunciationDictionary::cmu());
+        const Transcript t = readTranscript(kDemo + id + ".align");
+        const PreparedUtterance u = prepareUtterance(id, path, t.words, model, lexicon);
+        QVERIFY(std::abs(u.duration - audio.duration()) < 0.01);
+        const AlignmentResult r = ForcedAligner(model).align(u.features, u.words, u.pronunciations, u.duration);
+        std::vector<Interval> ref, hyp;
+        for (const Interval &i : t.timing.intervals)
+            if (i.label != "sil" && i.label != "sp")
+                ref.push_back(i);
+        for (const Interval &i : r.words.intervals)
+            if (i.label != "sil")
+                hyp.push_back(i);
+        QCOMPARE(hyp.size(), ref.size());
+        int good = 0;
+        for (size_t w = 0; w < ref.size(); ++w)
+            good += std::abs(hyp[w].start - ref[w].start) <= 0.06 && std::abs(hyp[w].end - ref[w].end) <= 0.06;
+        QVERIFY2(good >= 4, qPrintable(QStringLiteral("%1 of 6 words within 60 ms").arg(good)));
     }
 
     void silentAudioIsAnError()
