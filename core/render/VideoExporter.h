@@ -49,10 +49,10 @@ struct VideoExportOptions
 class VideoExporter
 {
 public:
-    // `audio` (mono float PCM, copied) may be null for a silent video. Its first sample plays with
-    // the first frame (AudioBuffer::startTime is not applied; see alignAudioToVideo()). Throws lipsync::Error
-    // naming `path` if the target directory does not exist or is not writable, or if the audio
-    // is empty.
+    // `audio` (mono float PCM, copied) may be null for a silent video. Its first sample plays
+    // with the first frame (AudioBuffer::startTime is not applied; see alignAudioToVideo()).
+    // Throws lipsync::Error naming `path` if the target directory does not exist or is not
+    // writable, or if the audio is empty.
     explicit VideoExporter(const std::string &path, const VideoExportOptions &options = {},
                            const AudioBuffer *audio = nullptr);
     // Abandons the export (removes the temporary file) unless finish() succeeded.
