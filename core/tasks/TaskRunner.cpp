@@ -4,11 +4,17 @@
 
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <QThread>
+
+#include <algorithm>
 #include <memory>
 
 namespace lipsync {
 
-TaskRunner::TaskRunner(QObject *parent) : QObject(parent) {}
+TaskRunner::TaskRunner(QObject *parent) : QObject(parent)
+{
+    m_pool.setMaxThreadCount(std::max(2, QThread::idealThreadCount()));
+}
 
 TaskRunner::~TaskRunner()
 {
@@ -51,7 +57,7 @@ Task *TaskRunner::start(const QString &title, Work work)
     });
 
     Feedback *feedback = &task->feedback();
-    watcher->setFuture(QtConcurrent::run([work = std::move(work), outcome, feedback] {
+    watcher->setFuture(QtConcurrent::run(&m_pool, [work = std::move(work), outcome, feedback] {
         try {
             outcome->commit = work(*feedback);
         } catch (const Canceled &) {

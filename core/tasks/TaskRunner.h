@@ -9,6 +9,7 @@
 #include <QList>
 #include <QObject>
 #include <QPointer>
+#include <QThreadPool>
 
 #include <functional>
 
@@ -52,6 +53,10 @@ signals:
     void tasksCleared();
 
 private:
+    // Its own pool, not QThreadPool::globalInstance(): Qt's raster engine paints large areas on
+    // the global pool and the GUI thread waits for it, so long tasks filling the global pool
+    // would freeze painting (QGIS made the same fix for its task manager).
+    QThreadPool m_pool;
     QList<Task *> m_tasks;
     QList<QFutureWatcher<void> *> m_watchers;
     int m_nextId = 1;

@@ -1,0 +1,22 @@
+#pragma once
+// lipsync-studio's command line:
+//   lipsync-studio [PROJECT] [--project DIR] [--lang LANG] [--screenshot FILE.png]
+#include <QCoreApplication>
+#include <QString>
+
+namespace lipsync::studio {
+
+struct CommandLine
+{
+    Q_DECLARE_TR_FUNCTIONS(CommandLine)
+
+public:
+    QString project;    // empty: the bundled demo
+    QString language;   // empty: the system's
+    QString screenshot; // empty: interactive
+
+    // Parses the application's arguments; exits for --help, --version and errors.
+    static CommandLine parse(const QCoreApplication &app);
+};
+
+} // namespace lipsync::studio

@@ -1,0 +1,420 @@
+#include "app/MainWindow.h"
+
+#include "annotate/FrameView.h"
+#include "app/AboutBox.h"
+#include "app/ErrorReporter.h"
+#include "app/ProjectDocument.h"
+#include "app/ProjectFiles.h"
+#include "app/SequenceListModel.h"
+#include "app/SequenceDetailsView.h"
+#include "app/SequenceLoader.h"
+#include "app/SequenceMedia.h"
+#include "app/StudioActions.h"
+#include "app/TransportBar.h"
+#include "build/ModelsPanel.h"
+#include "plots/LineChartView.h"
+#include "preview/PlaybackController.h"
+#include "preview/PreviewPanel.h"
+#include "tasks/TaskRunner.h"
+#include "tasks/TaskStatusWidget.h"
+#include "timeline/TimelinePanel.h"
+#include "timeline/WaveformView.h"
+
+#include <QAction>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QItemSelectionModel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSignalBlocker>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTableView>
+#include <QToolBar>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+namespace lipsync::studio {
+
+MainWindow::MainWindow(QWidget *parent)
+    : QMainWindow(parent), m_undo(new QUndoStack(this)), m_runner(new TaskRunner(this)),
+      m_document(new ProjectDocument(m_undo, this)), m_actions(std::make_unique<StudioActions>(this, m_undo)),
+      m_playback(new PlaybackController(this))
+{
+    setObjectName(QStringLiteral("MainWindow"));
+    setDockNestingEnabled(true);
+
+    auto *central = new QWidget(this);
+    auto *layout = new QVBoxLayout(central);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    m_tabs = new QTabWidget(central);
+    m_tabs->setDocumentMode(true);
+    m_frameView = new FrameView(m_tabs);
+    m_frameView->setObjectName(QStringLiteral("frameView"));
+    m_preview = new PreviewPanel(*m_actions, m_tabs);
+    m_tabs->addTab(m_frameView, tr("Annotate"));
+    m_tabs->addTab(m_preview, tr("Preview && Compare"));
+    m_transport = new TransportBar(*m_actions, central);
+    layout->addWidget(m_tabs, 1);
+    layout->addWidget(m_transport);
+    setCentralWidget(central);
+
+    createDocks();
+    createMenus();
+    m_taskStatus = new TaskStatusWidget(m_runner, this);
+    statusBar()->addPermanentWidget(m_taskStatus);
+
+    connect(m_document, &ProjectDocument::documentReset, this, &MainWindow::onDocumentReset);
+    connect(m_document, &ProjectDocument::locationChanged, this, &MainWindow::updateTitle);
+    connect(m_undo, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(m_transport, &TransportBar::frameRequested, this, &MainWindow::setCurrentFrame);
+    connect(waveformView(), &WaveformView::timeClicked, this, [this](double t) {
+        if (m_media)
+            setCurrentFrame(int(t * m_media->frameRate));
+    });
+    connect(m_playback, &PlaybackController::frameReached, this, &MainWindow::setCurrentFrame);
+    connect(m_playback, &PlaybackController::playingChanged, this, [this](bool playing) {
+        m_actions->playPause->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    });
+
+    m_frameView->setPlaceholderText(tr("No project open"));
+    m_preview->setPlaceholderText(tr("No project open"));
+    updateTitle();
+    restoreSettings();
+}
+
+MainWindow::~MainWindow()
+{
+    // Workers must be gone before the views their results would reach.
+    m_runner->cancelAll();
+    m_runner->waitForAll();
+}
+
+WaveformView *MainWindow::waveformView() const
+{
+    return m_timeline->waveform();
+}
+
+void MainWindow::createDocks()
+{
+    auto makeDock = [this](const QString &title, const QString &name, QWidget *content, Qt::DockWidgetArea area) {
+        auto *dock = new QDockWidget(title, this);
+        dock->setObjectName(name);
+        dock->setWidget(content);
+        addDockWidget(area, dock);
+        return dock;
+    };
+
+    m_sequenceModel = new SequenceListModel(m_document, this);
+    m_sequenceView = new QTableView(this);
+    m_sequenceView->setObjectName(QStringLiteral("sequenceView"));
+    m_sequenceView->setModel(m_sequenceModel);
+    m_sequenceView->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_sequenceView->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_sequenceView->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
+    m_sequenceView->verticalHeader()->hide();
+    m_sequenceView->verticalHeader()->setDefaultSectionSize(m_sequenceView->fontMetrics().height() + 8);
+    m_sequenceView->horizontalHeader()->setStretchLastSection(true);
+    m_sequenceView->setAlternatingRowColors(true);
+    m_sequenceView->setWordWrap(false);
+    connect(m_sequenceView->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &MainWindow::onSelectionChanged);
+    m_details = new SequenceDetailsView(this);
+    auto *sequencePanel = new QSplitter(Qt::Vertical, this);
+    sequencePanel->addWidget(m_sequenceView);
+    sequencePanel->addWidget(m_details);
+    sequencePanel->setStretchFactor(0, 1);
+    sequencePanel->setChildrenCollapsible(false);
+    QDockWidget *sequences = makeDock(tr("Sequences"), QStringLiteral("sequencesDock"), sequencePanel,
+                                      Qt::LeftDockWidgetArea);
+
+    m_timeline = new TimelinePanel(this);
+    QDockWidget *timeline = makeDock(tr("Timeline"), QStringLiteral("timelineDock"), m_timeline,
+                                     Qt::BottomDockWidgetArea);
+
+    m_chart = new LineChartView(this);
+    m_chart->setObjectName(QStringLiteral("chartView"));
+    QDockWidget *plots = makeDock(tr("Plots"), QStringLiteral("plotsDock"), m_chart, Qt::RightDockWidgetArea);
+
+    m_models = new ModelsPanel(this);
+    QDockWidget *models = makeDock(tr("Models"), QStringLiteral("modelsDock"), m_models, Qt::RightDockWidgetArea);
+    splitDockWidget(plots, models, Qt::Vertical);
+
+    resizeDocks({sequences, plots}, {385, 310}, Qt::Horizontal);
+    resizeDocks({timeline}, {230}, Qt::Vertical);
+    resizeDocks({plots, models}, {330, 170}, Qt::Vertical);
+}
+
+void MainWindow::createMenus()
+{
+    const StudioActions &a = *m_actions;
+    m_files = nullptr;
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    file->addAction(a.open);
+    QMenu *recent = file->addMenu(tr("Open &Recent"));
+    file->addAction(a.openDemo);
+    file->addSeparator();
+    file->addAction(a.save);
+    file->addAction(a.saveAs);
+    file->addSeparator();
+    file->addAction(a.quit);
+    m_files = new ProjectFiles(m_document, this, recent);
+
+    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
+    edit->addAction(a.undo);
+    edit->addAction(a.redo);
+
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    for (QAction *act : {a.previousFrame, a.nextFrame, a.firstFrame, a.lastFrame})
+        view->addAction(act);
+    view->addSeparator();
+    view->addAction(a.playPause);
+    view->addSeparator();
+    view->addAction(a.previousSequence);
+    view->addAction(a.nextSequence);
+    view->addAction(a.fitFrame);
+    view->addSeparator();
+    QMenu *panels = view->addMenu(tr("&Panels"));
+    for (QDockWidget *dock : findChildren<QDockWidget *>())
+        panels->addAction(dock->toggleViewAction());
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(a.about);
+
+    QToolBar *bar = addToolBar(tr("Main"));
+    bar->setObjectName(QStringLiteral("mainToolBar"));
+    bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    bar->setMovable(false);
+    for (QAction *act : {a.open, a.save, a.undo, a.redo})
+        bar->addAction(act);
+    bar->addSeparator();
+    bar->addAction(a.previousSequence);
+    bar->addAction(a.nextSequence);
+
+    connect(a.open, &QAction::triggered, m_files, &ProjectFiles::openWithDialog);
+    connect(a.openDemo, &QAction::triggered, this, [this] {
+        if (m_files->maybeSave())
+            m_files->openDemo();
+    });
+    connect(a.save, &QAction::triggered, m_files, &ProjectFiles::save);
+    connect(a.saveAs, &QAction::triggered, m_files, &ProjectFiles::saveAs);
+    connect(a.quit, &QAction::triggered, this, &QWidget::close);
+    connect(a.previousFrame, &QAction::triggered, this, [this] { setCurrentFrame(m_currentFrame - 1); });
+    connect(a.nextFrame, &QAction::triggered, this, [this] { setCurrentFrame(m_currentFrame + 1); });
+    connect(a.firstFrame, &QAction::triggered, this, [this] { setCurrentFrame(0); });
+    connect(a.lastFrame, &QAction::triggered, this, [this] {
+        if (m_media)
+            setCurrentFrame(m_media->frameCount() - 1);
+    });
+    connect(a.playPause, &QAction::triggered, this, &MainWindow::togglePlayback);
+    connect(a.previousSequence, &QAction::triggered, this, [this] {
+        selectSequence(std::max(0, (m_pendingRow >= 0 ? m_pendingRow : m_currentRow) - 1));
+    });
+    connect(a.nextSequence, &QAction::triggered, this, [this] {
+        selectSequence(std::min(m_document->sequenceCount() - 1, (m_pendingRow >= 0 ? m_pendingRow : m_currentRow) + 1));
+    });
+    connect(a.fitFrame, &QAction::triggered, m_frameView, &FrameView::fitToView);
+    connect(a.about, &QAction::triggered, this, &MainWindow::showAbout);
+}
+
+void MainWindow::onDocumentReset()
+{
+    // A new document: drop the old one's media and any load still running for it.
+    if (m_loadTask)
+        m_loadTask->cancel();
+    m_playback->pause();
+    m_media.reset();
+    m_currentRow = -1;
+    m_pendingRow = -1;
+    m_currentFrame = 0;
+    m_frameView->setImage({});
+    m_frameView->setPlaceholderText(tr("Select a sequence"));
+    m_preview->setFrame({}, {});
+    waveformView()->clear();
+    waveformView()->setDuration(0);
+    m_chart->clearSeries();
+    m_details->clear();
+    m_transport->setFrameCount(0, 25.0);
+    m_models->setProject(m_document->project());
+    m_sequenceView->resizeColumnsToContents();
+    m_sequenceView->horizontalHeader()->setStretchLastSection(true);
+    if (m_document->sequenceCount() > 0)
+        selectSequence(0);
+}
+
+void MainWindow::selectSequence(int row)
+{
+    if (row < 0 || row >= m_document->sequenceCount())
+        return;
+    const QModelIndex index = m_sequenceModel->index(row, 0);
+    if (m_sequenceView->currentIndex().row() != row || !m_sequenceView->selectionModel()->isRowSelected(row))
+        m_sequenceView->selectionModel()->setCurrentIndex(
+            index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    else
+        onSelectionChanged();
+}
+
+void MainWindow::onSelectionChanged()
+{
+    const QModelIndexList rows = m_sequenceView->selectionModel()->selectedRows();
+    if (rows.isEmpty())
+        return;
+    const int row = rows.first().row();
+    if (row == m_pendingRow || (row == m_currentRow && m_pendingRow < 0))
+        return;
+    if (m_loadTask)
+        m_loadTask->cancel(); // superseded: its result must not arrive after this one's
+    m_playback->pause();
+    m_pendingRow = row;
+    const Sequence &s = m_document->sequence(row);
+    SequenceSource source{QString::fromStdString(s.id), m_document->mediaPath(row), s.frameRate};
+    Task *task = SequenceLoader::start(*m_runner, source, [this, row](std::shared_ptr<const SequenceMedia> media) {
+        applyMedia(row, std::move(media));
+    });
+    m_loadTask = task;
+    connect(task, &Task::finished, this, [this, task, path = source.mediaPath] { onLoadFinished(task, path); });
+    statusBar()->showMessage(tr("Loading %1…").arg(source.id), 3000);
+}
+
+void MainWindow::onLoadFinished(Task *task, const QString &mediaPath)
+{
+    if (task->state() == Task::State::Finished)
+        return; // applyMedia ran
+    if (task->state() == Task::State::Failed)
+        ErrorReporter::report(this, tr("The media of this sequence could not be read."), mediaPath, task->errorMessage());
+    if (task != m_loadTask)
+        return; // superseded by a newer load
+    // Canceled or failed: the views keep the sequence they showed; so does the list.
+    m_pendingRow = -1;
+    if (m_currentRow >= 0) {
+        const QSignalBlocker block(m_sequenceView->selectionModel());
+        m_sequenceView->selectionModel()->setCurrentIndex(m_sequenceModel->index(m_currentRow, 0),
+                                                          QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+        m_sequenceView->viewport()->update();
+    } else {
+        m_sequenceView->selectionModel()->clearSelection();
+    }
+    emit sequenceLoadEnded(false);
+}
+
+void MainWindow::applyMedia(int row, std::shared_ptr<const SequenceMedia> media)
+{
+    if (row >= m_document->sequenceCount())
+        return;
+    const Sequence &s = m_document->sequence(row);
+    m_pendingRow = -1;
+    m_currentRow = row;
+    m_media = std::move(media);
+    m_currentFrame = -1;
+    const int frames = m_media->frameCount();
+    m_transport->setFrameCount(frames, m_media->frameRate);
+    m_playback->setSequence(m_media->mediaPath, frames, m_media->frameRate);
+
+    WaveformView *wave = waveformView();
+    wave->setPeaks(m_media->peaks);
+    wave->setWords(s.words);
+    wave->setThumbnails(m_media->thumbnails, m_media->frameRate);
+    wave->setDuration(frames / m_media->frameRate);
+    wave->setPlaceholderText(m_media->peaks ? QString() : tr("No audio: %1").arg(m_media->audioError));
+    showChart();
+    m_frameView->setPlaceholderText(frames > 0 ? QString() : tr("The video has no frames"));
+    m_details->showSequence(s, m_media->mediaPath, *m_media);
+    setCurrentFrame(0);
+    updateTitle();
+    statusBar()->showMessage(tr("%1: %n frames at %2 fps", "", frames)
+                                 .arg(m_media->sequenceId, QLocale().toString(m_media->frameRate, 'f', 2)),
+                             5000);
+    emit sequenceLoaded(m_media->sequenceId);
+    emit sequenceLoadEnded(true);
+}
+
+void MainWindow::showChart()
+{
+    m_chart->clearSeries();
+    m_chart->setTitle(tr("Audio energy of %1").arg(m_media->sequenceId));
+    m_chart->setAxisTitles(tr("time (s)"), tr("RMS per video frame"));
+    if (m_media->frameRms.isEmpty())
+        return;
+    QVector<double> t(m_media->frameRms.size());
+    for (int i = 0; i < t.size(); ++i)
+        t[i] = (i + 0.5) / m_media->frameRate;
+    m_chart->addSeries(tr("RMS"), t, m_media->frameRms, QColor(0x1e, 0x88, 0xe5));
+}
+
+void MainWindow::setCurrentFrame(int frame)
+{
+    if (!m_media || m_media->frameCount() == 0)
+        return;
+    frame = std::clamp(frame, 0, m_media->frameCount() - 1);
+    if (frame == m_currentFrame)
+        return;
+    m_currentFrame = frame;
+    const QImage &image = m_media->frames[frame];
+    m_frameView->setImage(image);
+    const Sequence &s = m_document->sequence(m_currentRow);
+    const auto it = s.landmarks.find(frame);
+    m_frameView->setLandmarks(it != s.landmarks.end() ? std::optional<LandmarkSet>(it->second) : std::nullopt);
+    const double t = frame / m_media->frameRate;
+    m_preview->setFrame(image, tr("%1 — frame %2 of %3").arg(m_media->sequenceId).arg(frame + 1).arg(m_media->frameCount()));
+    m_transport->setFrame(frame);
+    waveformView()->setCursorTime(t + 0.5 / m_media->frameRate);
+    m_chart->setCursor(t + 0.5 / m_media->frameRate);
+}
+
+void MainWindow::togglePlayback()
+{
+    if (m_playback->isPlaying())
+        m_playback->pause();
+    else if (m_media)
+        m_playback->play(m_currentFrame);
+}
+
+void MainWindow::updateTitle()
+{
+    QString title = tr("LipSync Studio");
+    if (m_document->isOpen()) {
+        QString name = QString::fromStdString(m_document->project().name);
+        if (name.isEmpty())
+            name = QFileInfo(m_document->folder()).fileName();
+        title = name + QStringLiteral("[*]");
+        if (m_document->isReadOnly())
+            title += tr(" (bundled demo, read-only)");
+        title += QStringLiteral(" — ") + tr("LipSync Studio");
+    }
+    setWindowTitle(title);
+    setWindowModified(m_document->isModified());
+}
+
+void MainWindow::showAbout()
+{
+    AboutBox::show(this);
+}
+
+void MainWindow::restoreSettings()
+{
+    QSettings settings;
+    if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray()))
+        resize(1280, 800);
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    if (!m_files->maybeSave()) {
+        event->ignore();
+        return;
+    }
+    m_playback->pause();
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    m_runner->cancelAll();
+    event->accept();
+}
+
+} // namespace lipsync::studio

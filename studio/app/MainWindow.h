@@ -1,0 +1,113 @@
+#pragma once
+// The studio's main window: the workflow areas (Annotate and Preview & compare as tabs, the
+// sequence list, Timeline, Plots and Models as docks) around one ProjectDocument, one undo
+// stack and one task runner.
+#include "tasks/Task.h"
+
+#include <QMainWindow>
+#include <QPointer>
+
+#include <memory>
+
+class QTableView;
+class QTabWidget;
+class QUndoStack;
+
+namespace lipsync {
+class TaskRunner;
+}
+
+namespace lipsync::studio {
+
+class FrameView;
+class LineChartView;
+class ModelsPanel;
+class PlaybackController;
+class PreviewPanel;
+class ProjectDocument;
+class ProjectFiles;
+class SequenceDetailsView;
+class SequenceListModel;
+class TaskStatusWidget;
+class TimelinePanel;
+class TransportBar;
+class WaveformView;
+struct SequenceMedia;
+struct StudioActions;
+
+class MainWindow : public QMainWindow
+{
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    ProjectFiles *files() const { return m_files; }
+    ProjectDocument *document() const { return m_document; }
+    QUndoStack *undoStack() const { return m_undo; }
+    TaskRunner *taskRunner() const { return m_runner; }
+    TaskStatusWidget *taskStatus() const { return m_taskStatus; }
+    QTableView *sequenceView() const { return m_sequenceView; }
+    FrameView *frameView() const { return m_frameView; }
+    WaveformView *waveformView() const;
+    LineChartView *chartView() const { return m_chart; }
+    PlaybackController *playback() const { return m_playback; }
+    const StudioActions &actions() const { return *m_actions; }
+
+    int currentSequence() const { return m_currentRow; }
+    int currentFrame() const { return m_currentFrame; }
+    // The media shown now (null before the first sequence has loaded).
+    std::shared_ptr<const SequenceMedia> media() const { return m_media; }
+
+public slots:
+    void selectSequence(int row);
+    void setCurrentFrame(int frame);
+    void togglePlayback();
+    void showAbout();
+
+signals:
+    // The media of a sequence reached the views (sequenceId), or its loading ended without
+    // doing so (canceled or failed).
+    void sequenceLoaded(const QString &sequenceId);
+    void sequenceLoadEnded(bool loaded);
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+
+private:
+    void createDocks();
+    void createMenus();
+    void onDocumentReset();
+    void onSelectionChanged();
+    void onLoadFinished(Task *task, const QString &mediaPath);
+    void applyMedia(int row, std::shared_ptr<const SequenceMedia> media);
+    void showChart();
+    void updateTitle();
+    void restoreSettings();
+
+    QUndoStack *m_undo;
+    TaskRunner *m_runner;
+    ProjectDocument *m_document;
+    std::unique_ptr<StudioActions> m_actions;
+    ProjectFiles *m_files = nullptr;
+    SequenceListModel *m_sequenceModel = nullptr;
+    QTableView *m_sequenceView = nullptr;
+    SequenceDetailsView *m_details = nullptr;
+    QTabWidget *m_tabs = nullptr;
+    FrameView *m_frameView = nullptr;
+    PreviewPanel *m_preview = nullptr;
+    TransportBar *m_transport = nullptr;
+    TimelinePanel *m_timeline = nullptr;
+    LineChartView *m_chart = nullptr;
+    ModelsPanel *m_models = nullptr;
+    TaskStatusWidget *m_taskStatus = nullptr;
+    PlaybackController *m_playback = nullptr;
+
+    std::shared_ptr<const SequenceMedia> m_media;
+    int m_currentRow = -1;
+    int m_currentFrame = 0;
+    int m_pendingRow = -1;
+    QPointer<Task> m_loadTask;
+};
+
+} // namespace lipsync::studio

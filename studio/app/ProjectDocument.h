@@ -1,0 +1,56 @@
+#pragma once
+// The open project as the studio edits it: the core document, where it lives, and the
+// request* edit functions. Each request either changes nothing and returns false, or pushes
+// one command on the main window's undo stack (the studio's single undo mechanism); the
+// commands call the apply* functions, which emit what changed so views refresh only that.
+#include "project/Project.h"
+
+#include <QObject>
+#include <QString>
+
+class QUndoStack;
+
+namespace lipsync::studio {
+
+class ProjectDocument : public QObject
+{
+    Q_OBJECT
+public:
+    ProjectDocument(QUndoStack *undoStack, QObject *parent = nullptr);
+
+    const Project &project() const { return m_project; }
+    // The folder the project was loaded from or last saved to.
+    QString folder() const { return m_folder; }
+    // The bundled demo is never written to: saving it asks for a new folder.
+    bool isReadOnly() const { return m_readOnly; }
+    bool isOpen() const { return m_open; }
+    bool isModified() const;
+
+    // Replaces the whole document (open, new). Clears the undo stack.
+    void reset(Project project, const QString &folder, bool readOnly);
+    // Writes the project into `folder` (Project::saveAs: relative paths rebased so they still
+    // reach the media). Saving the read-only demo copies its clips along instead. Throws
+    // lipsync::Error. On success the document lives in `folder`.
+    void saveTo(const QString &folder);
+
+    int sequenceCount() const { return int(m_project.sequences.size()); }
+    const Sequence &sequence(int row) const { return m_project.sequences.at(std::size_t(row)); }
+    QString mediaPath(int row) const;
+
+    bool requestTranscriptChange(int row, const QString &transcript);
+    void applyTranscript(int row, const QString &transcript);
+
+signals:
+    void documentReset();
+    void sequenceChanged(int row);
+    void locationChanged();
+
+private:
+    QUndoStack *m_undo;
+    Project m_project;
+    QString m_folder;
+    bool m_readOnly = false;
+    bool m_open = false;
+};
+
+} // namespace lipsync::studio

@@ -1,0 +1,71 @@
+#include "app/SequenceDetailsView.h"
+
+#include "app/SequenceMedia.h"
+#include "project/Sequence.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLocale>
+
+namespace lipsync::studio {
+
+SequenceDetailsView::SequenceDetailsView(QWidget *parent)
+    : QWidget(parent), m_title(new QLabel(this)), m_media(new QLabel(this)), m_video(new QLabel(this)),
+      m_audio(new QLabel(this)), m_words(new QLabel(this)), m_landmarks(new QLabel(this))
+{
+    auto *form = new QFormLayout(this);
+    form->setContentsMargins(8, 8, 8, 8);
+    form->setLabelAlignment(Qt::AlignRight);
+    QFont bold = m_title->font();
+    bold.setBold(true);
+    bold.setPointSizeF(bold.pointSizeF() * 1.15);
+    m_title->setFont(bold);
+    form->addRow(m_title);
+    form->addRow(tr("Media:"), m_media);
+    form->addRow(tr("Video:"), m_video);
+    form->addRow(tr("Audio:"), m_audio);
+    form->addRow(tr("Words:"), m_words);
+    form->addRow(tr("Landmarks:"), m_landmarks);
+    for (QLabel *l : {m_media, m_video, m_audio, m_words, m_landmarks}) {
+        l->setWordWrap(true);
+        l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    }
+    clear();
+}
+
+void SequenceDetailsView::clear()
+{
+    m_title->setText(tr("No sequence"));
+    for (QLabel *l : {m_media, m_video, m_audio, m_words, m_landmarks})
+        l->clear();
+}
+
+void SequenceDetailsView::showSequence(const Sequence &sequence, const QString &mediaPath,
+                                       const SequenceMedia &media)
+{
+    const QLocale locale;
+    m_title->setText(QString::fromStdString(sequence.id));
+    m_media->setText(QFileInfo(mediaPath).fileName());
+    m_media->setToolTip(QDir::toNativeSeparators(mediaPath));
+    const QSize size = media.frames.isEmpty() ? QSize() : media.frames.front().size();
+    m_video->setText(tr("%1 frames at %2 fps, %3 × %4")
+                         .arg(media.frameCount())
+                         .arg(locale.toString(media.frameRate, 'f', 2))
+                         .arg(size.width())
+                         .arg(size.height()));
+    if (media.peaks)
+        m_audio->setText(tr("%1 s, decoded at %2 Hz mono")
+                             .arg(locale.toString(media.peaks->duration(), 'f', 2))
+                             .arg(media.peaks->sampleRate()));
+    else
+        m_audio->setText(tr("none (%1)").arg(media.audioError));
+    int spoken = 0;
+    for (const Interval &iv : sequence.words.intervals)
+        spoken += iv.label == "sil" || iv.label == "sp" || iv.label.empty() ? 0 : 1;
+    m_words->setText(tr("%1 timed words").arg(spoken));
+    m_landmarks->setText(tr("%1 of %2 frames").arg(sequence.landmarks.size()).arg(sequence.frameCount));
+}
+
+} // namespace lipsync::studio

@@ -1,0 +1,85 @@
+#include "app/SequenceListModel.h"
+
+#include "app/ProjectDocument.h"
+
+#include <QLocale>
+
+namespace lipsync::studio {
+
+SequenceListModel::SequenceListModel(ProjectDocument *document, QObject *parent)
+    : QAbstractTableModel(parent), m_document(document)
+{
+    connect(document, &ProjectDocument::documentReset, this, [this] {
+        beginResetModel();
+        endResetModel();
+    });
+    connect(document, &ProjectDocument::sequenceChanged, this, [this](int row) {
+        emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
+    });
+}
+
+int SequenceListModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : m_document->sequenceCount();
+}
+
+int SequenceListModel::columnCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant SequenceListModel::data(const QModelIndex &index, int role) const
+{
+    if (!index.isValid() || index.row() >= m_document->sequenceCount())
+        return {};
+    const Sequence &s = m_document->sequence(index.row());
+    if (role == Qt::DisplayRole || role == Qt::EditRole) {
+        switch (index.column()) {
+        case IdColumn: return QString::fromStdString(s.id);
+        case FramesColumn: return s.frameCount;
+        case DurationColumn:
+            return role == Qt::EditRole ? QVariant(s.duration())
+                                        : QVariant(tr("%1 s").arg(QLocale().toString(s.duration(), 'f', 2)));
+        case TranscriptColumn: return QString::fromStdString(s.transcript);
+        }
+    }
+    if (role == Qt::ToolTipRole) {
+        if (index.column() == TranscriptColumn)
+            return tr("Double-click to edit the transcript");
+        return tr("%1 — %2 frames at %3 fps")
+            .arg(QString::fromStdString(s.mediaFile)).arg(s.frameCount).arg(QLocale().toString(s.frameRate, 'f', 2));
+    }
+    if (role == Qt::TextAlignmentRole && (index.column() == FramesColumn || index.column() == DurationColumn))
+        return QVariant(Qt::AlignRight | Qt::AlignVCenter);
+    return {};
+}
+
+bool SequenceListModel::setData(const QModelIndex &index, const QVariant &value, int role)
+{
+    if (role != Qt::EditRole || index.column() != TranscriptColumn)
+        return false;
+    return m_document->requestTranscriptChange(index.row(), value.toString());
+}
+
+Qt::ItemFlags SequenceListModel::flags(const QModelIndex &index) const
+{
+    Qt::ItemFlags f = QAbstractTableModel::flags(index);
+    if (index.column() == TranscriptColumn)
+        f |= Qt::ItemIsEditable;
+    return f;
+}
+
+QVariant SequenceListModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return QAbstractTableModel::headerData(section, orientation, role);
+    switch (section) {
+    case IdColumn: return tr("Sequence");
+    case FramesColumn: return tr("Frames");
+    case DurationColumn: return tr("Duration");
+    case TranscriptColumn: return tr("Transcript");
+    }
+    return {};
+}
+
+} // namespace lipsync::studio

@@ -1,0 +1,29 @@
+#pragma once
+// The project's sequences as a table (id, frames, duration, transcript). The transcript column
+// is editable; edits go through ProjectDocument::requestTranscriptChange, so they are undoable.
+#include <QAbstractTableModel>
+
+namespace lipsync::studio {
+
+class ProjectDocument;
+
+class SequenceListModel : public QAbstractTableModel
+{
+    Q_OBJECT
+public:
+    enum Column { IdColumn, FramesColumn, DurationColumn, TranscriptColumn, ColumnCount };
+
+    explicit SequenceListModel(ProjectDocument *document, QObject *parent = nullptr);
+
+    int rowCount(const QModelIndex &parent = {}) const override;
+    int columnCount(const QModelIndex &parent = {}) const override;
+    QVariant data(const QModelIndex &index, int role) const override;
+    bool setData(const QModelIndex &index, const QVariant &value, int role) override;
+    Qt::ItemFlags flags(const QModelIndex &index) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
+
+private:
+    ProjectDocument *m_document;
+};
+
+} // namespace lipsync::studio

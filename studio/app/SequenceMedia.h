@@ -1,0 +1,29 @@
+#pragma once
+// Everything the views show of one sequence's media, decoded off the GUI thread by
+// SequenceLoader and handed to the main window in one piece (so a canceled or failed load
+// leaves the views exactly as they were).
+#include "audio/WaveformPeaks.h"
+
+#include <QImage>
+#include <QString>
+#include <QVector>
+
+#include <memory>
+
+namespace lipsync::studio {
+
+struct SequenceMedia
+{
+    QString sequenceId;
+    QString mediaPath;
+    double frameRate = 25.0;
+    QVector<QImage> frames;     // every video frame (downscaled only if the sequence is huge)
+    QVector<QImage> thumbnails; // the same frames, small, for the timeline strip
+    std::shared_ptr<const WaveformPeaks> peaks; // null if the file has no readable audio
+    QVector<double> frameRms;   // audio RMS over each video frame's interval
+    QString audioError;         // why there is no audio, if there is none
+
+    int frameCount() const { return int(frames.size()); }
+};
+
+} // namespace lipsync::studio

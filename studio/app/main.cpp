@@ -1,0 +1,48 @@
+// lipsync-studio: the desktop studio.
+//   lipsync-studio [PROJECT] [--project DIR] [--lang de] [--screenshot FILE.png]
+// Without a project it opens the bundled demo (see DemoProject.h for where it is looked up).
+#include "app/AppIcon.h"
+#include "app/CommandLine.h"
+#include "app/ErrorReporter.h"
+#include "app/MainWindow.h"
+#include "app/ProjectFiles.h"
+#include "app/ScreenshotRunner.h"
+#include "app/SurfaceFormat.h"
+#include "app/Translations.h"
+
+#include <QApplication>
+#include <QStyleFactory>
+
+using namespace lipsync::studio;
+
+int main(int argc, char *argv[])
+{
+    setDefaultSurfaceFormat(); // VTK needs it before QApplication exists
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("lipsync"));
+    QApplication::setApplicationName(QStringLiteral("LipSync Studio"));
+    QApplication::setApplicationVersion(QStringLiteral(LIPSYNC_VERSION));
+    QApplication::setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
+    QApplication::setWindowIcon(appIcon());
+
+    // The system's language first, so --help is translated too; --lang replaces it.
+    Translations::install();
+    const CommandLine options = CommandLine::parse(app);
+    if (!options.language.isEmpty())
+        Translations::install(options.language);
+
+    const bool batch = !options.screenshot.isEmpty();
+    ErrorReporter::setBatchMode(batch);
+    MainWindow window;
+    if (batch)
+        window.resize(1280, 800); // independent of the saved geometry
+    window.show();
+
+    if (options.project.isEmpty())
+        window.files()->openDemo();
+    else
+        window.files()->open(options.project);
+    if (batch)
+        (new ScreenshotRunner(&window, options.screenshot))->start();
+    return app.exec();
+}

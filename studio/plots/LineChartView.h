@@ -1,0 +1,37 @@
+#pragma once
+// A 2-D line chart (vtkContextView + vtkChartXY) in a VtkWidget. The audio envelope now, and
+// later the trajectory and objective plots, are all "one or more y(x) series plus a cursor".
+#include "plots/VtkWidget.h"
+
+#include <QColor>
+#include <QString>
+#include <QVector>
+
+#include <memory>
+
+namespace lipsync::studio {
+
+class LineChartView : public VtkWidget
+{
+    Q_OBJECT
+public:
+    explicit LineChartView(QWidget *parent = nullptr);
+    ~LineChartView() override;
+
+    void setTitle(const QString &title);
+    void setAxisTitles(const QString &x, const QString &y);
+    // Adds a series (x and y of equal length); returns its index.
+    int addSeries(const QString &name, const QVector<double> &x, const QVector<double> &y,
+                  const QColor &color, float width = 2.0f);
+    void clearSeries();
+    int seriesCount() const;
+    // A vertical line at x (the current frame's time); hidden when x is NaN.
+    void setCursor(double x);
+
+private:
+    void updateCursor();
+    struct Impl;
+    std::unique_ptr<Impl> c;
+};
+
+} // namespace lipsync::studio

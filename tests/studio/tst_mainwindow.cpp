@@ -1,0 +1,245 @@
+// The studio opens the bundled demo: ten sequences, the first frame and the waveform on screen
+// once the background load has finished; frame/sequence navigation; undo/redo of a transcript
+// edit (every step back and forward again); a canceled load leaves the views as they were.
+#include "annotate/FrameView.h"
+#include "app/AboutBox.h"
+#include "app/ErrorReporter.h"
+#include "app/MainWindow.h"
+#include "app/ProjectDocument.h"
+#include "app/ProjectFiles.h"
+#include "app/SequenceListModel.h"
+#include "app/SequenceMedia.h"
+#include "app/StudioActions.h"
+#include "app/SurfaceFormat.h"
+#include "preview/PlaybackController.h"
+#include "tasks/TaskRunner.h"
+#include "timeline/WaveformView.h"
+
+#include <QAction>
+#include <QFile>
+#include <QDir>
+#include <QFileInfo>
+#include <QSet>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+using namespace lipsync;
+using namespace lipsync::studio;
+
+class TestMainWindow : public QObject
+{
+    Q_OBJECT
+public:
+    static void initMain()
+    {
+        setDefaultSurfaceFormat();
+        QStandardPaths::setTestModeEnabled(true); // keep the user's settings and recent list
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QCoreApplication::setOrganizationName(QStringLiteral("lipsync-tests"));
+        ErrorReporter::setBatchMode(true);
+        m_window = new MainWindow;
+        m_window->resize(1280, 800);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        // Window shortcuts (arrows, Ctrl+Z) only fire in the active window.
+        m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window));
+        QVERIFY(m_window->files()->openDemo());
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() != nullptr, 60000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 60000);
+    }
+
+    void cleanupTestCase() { delete m_window; }
+
+    void opensDemoProject()
+    {
+        QCOMPARE(m_window->sequenceView()->model()->rowCount(), 10);
+        QVERIFY(m_window->document()->isReadOnly());
+        QCOMPARE(m_window->currentSequence(), 0);
+        QCOMPARE(m_window->currentFrame(), 0);
+        QCOMPARE(m_window->media()->frameCount(), 75);
+        QVERIFY(m_window->media()->peaks);
+    }
+
+    void frameViewShowsTheFrame()
+    {
+        const QImage image = m_window->frameView()->grab().toImage();
+        QSet<QRgb> colours;
+        for (int y = 0; y < image.height(); y += 2)
+            for (int x = 0; x < image.width(); x += 2)
+                colours.insert(image.pixel(x, y) & 0xffffff);
+        QVERIFY2(colours.size() > 1000, qPrintable(QStringLiteral("%1 distinct colours").arg(colours.size())));
+    }
+
+    void waveformViewShowsTheWaveform()
+    {
+        const QImage image = m_window->waveformView()->grab().toImage().convertToFormat(QImage::Format_RGB32);
+        const QRgb wave = WaveformView::waveformColor().rgb() & 0xffffff;
+        int n = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                n += (image.pixel(x, y) & 0xffffff) == wave ? 1 : 0;
+        QVERIFY2(n > 2000, qPrintable(QStringLiteral("%1 waveform pixels").arg(n)));
+    }
+
+    void frameNavigation()
+    {
+        const StudioActions &a = m_window->actions();
+        a.nextFrame->trigger();
+        QCOMPARE(m_window->currentFrame(), 1);
+        a.lastFrame->trigger();
+        QCOMPARE(m_window->currentFrame(), 74);
+        a.nextFrame->trigger();
+        QCOMPARE(m_window->currentFrame(), 74); // clamped
+        a.firstFrame->trigger();
+        QCOMPARE(m_window->currentFrame(), 0);
+        QTest::keyClick(m_window, Qt::Key_Right);
+        QCOMPARE(m_window->currentFrame(), 1);
+        QTest::keyClick(m_window, Qt::Key_Home);
+        QCOMPARE(m_window->currentFrame(), 0);
+    }
+
+    void nextSequenceLoadsIt()
+    {
+        QSignalSpy loaded(m_window, &MainWindow::sequenceLoaded);
+        m_window->actions().nextSequence->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(loaded.count(), 1, 60000);
+        QCOMPARE(m_window->currentSequence(), 1);
+        QCOMPARE(m_window->media()->sequenceId, QStringLiteral("bgin3a"));
+        QCOMPARE(m_window->sequenceView()->currentIndex().row(), 1);
+    }
+
+    void canceledLoadChangesNothing()
+    {
+        const int before = m_window->currentSequence();
+        const auto media = m_window->media();
+        QSignalSpy ended(m_window, &MainWindow::sequenceLoadEnded);
+        m_window->selectSequence(5);
+        QCOMPARE(m_window->taskRunner()->runningCount(), 1);
+        m_window->taskRunner()->cancelAll();
+        QTRY_COMPARE_WITH_TIMEOUT(ended.count(), 1, 60000);
+        QCOMPARE(ended.first().first().toBool(), false);
+        QCOMPARE(m_window->currentSequence(), before);
+        QCOMPARE(m_window->media(), media);
+        QCOMPARE(m_window->sequenceView()->currentIndex().row(), before);
+    }
+
+    void transcriptEditUndoRedo()
+    {
+        QAbstractItemModel *model = m_window->sequenceView()->model();
+        QUndoStack *undo = m_window->undoStack();
+        const QModelIndex cell = model->index(2, SequenceListModel::TranscriptColumn);
+        const QString original = model->data(cell).toString();
+        QVERIFY(!original.isEmpty());
+        QVERIFY(!m_window->document()->isModified());
+
+        QVERIFY(!model->setData(cell, original)); // no change, no command
+        QCOMPARE(undo->count(), 0);
+        QVERIFY(model->setData(cell, QStringLiteral("bin green  in n three again")));
+        QVERIFY(model->setData(cell, QStringLiteral("second edit")));
+        const QString first = QStringLiteral("bin green in n three again"); // whitespace simplified
+        QCOMPARE(undo->count(), 2);
+        QCOMPARE(model->data(cell).toString(), QStringLiteral("second edit"));
+        QVERIFY(m_window->document()->isModified());
+
+        // Every step back (through the Edit menu's actions) and forward again.
+        m_window->actions().undo->trigger();
+        QCOMPARE(model->data(cell).toString(), first);
+        QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(model->data(cell).toString(), original);
+        QCOMPARE(QString::fromStdString(m_window->document()->sequence(2).transcript), original);
+        QVERIFY(!m_window->document()->isModified());
+        QVERIFY(!m_window->actions().undo->isEnabled());
+        m_window->actions().redo->trigger();
+        QCOMPARE(model->data(cell).toString(), first);
+        QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QCOMPARE(model->data(cell).toString(), QStringLiteral("second edit"));
+        QVERIFY(!m_window->actions().redo->isEnabled());
+
+        undo->setIndex(0); // back to the demo as shipped
+        QCOMPARE(model->data(cell).toString(), original);
+    }
+
+    void playbackStepsFrames()
+    {
+        PlaybackController *playback = m_window->playback();
+        playback->setAudioEnabled(false); // no sound device under Xvfb
+        m_window->setCurrentFrame(0);
+        m_window->actions().playPause->trigger();
+        QVERIFY(playback->isPlaying());
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->currentFrame() >= 5, 5000);
+        QTest::keyClick(m_window, Qt::Key_Space);
+        QVERIFY(!playback->isPlaying());
+        const int stopped = m_window->currentFrame();
+        QTest::qWait(200);
+        QCOMPARE(m_window->currentFrame(), stopped);
+    }
+
+    void savedCopyOfTheDemoOpens()
+    {
+        QVERIFY(dir.isValid());
+        const QString folder = dir.filePath(QStringLiteral("demo-copy"));
+        m_window->document()->saveTo(folder);
+        QVERIFY(!m_window->document()->isReadOnly());
+        QCOMPARE(m_window->document()->folder(), folder);
+        QVERIFY(QFileInfo::exists(folder + QStringLiteral("/project.json")));
+        const QString media = m_window->document()->mediaPath(0);
+        QVERIFY2(media.startsWith(folder) && QFileInfo::exists(media), qPrintable(media));
+
+        QVERIFY(m_window->files()->open(folder));
+        QCOMPARE(m_window->sequenceView()->model()->rowCount(), 10);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() && m_window->currentSequence() == 0, 60000);
+        QCOMPARE(m_window->media()->mediaPath, media);
+    }
+
+    void missingMediaIsReportedAndChangesNothing()
+    {
+        // The copy saved above is open: take one of its clips away (never the bundled one).
+        QVERIFY(m_window->document()->folder().startsWith(QDir::tempPath()));
+        const QString media = m_window->document()->mediaPath(3);
+        QVERIFY2(media.startsWith(m_window->document()->folder()), qPrintable(media));
+        QVERIFY(QFile::remove(media));
+        const auto before = m_window->media();
+        QSignalSpy ended(m_window, &MainWindow::sequenceLoadEnded);
+        m_window->selectSequence(3);
+        QTRY_COMPARE_WITH_TIMEOUT(ended.count(), 1, 60000);
+        QCOMPARE(ended.first().first().toBool(), false);
+        QVERIFY2(ErrorReporter::lastMessage().contains(media), qPrintable(ErrorReporter::lastMessage()));
+        QCOMPARE(m_window->media(), before);
+        QCOMPARE(m_window->currentSequence(), 0);
+        QCOMPARE(m_window->sequenceView()->currentIndex().row(), 0);
+        m_window->selectSequence(1); // still usable
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->currentSequence() == 1, 60000);
+    }
+
+    void aboutNamesPaperAndData()
+    {
+        const QString about = AboutBox::text();
+        for (const char *needle : {"Englebienne", "NIPS 2007", "GRID audio-visual corpus", "CC BY 4.0", "YuNet", LIPSYNC_VERSION})
+            QVERIFY2(about.contains(QLatin1String(needle)), needle);
+    }
+
+    void badProjectIsReportedAndChangesNothing()
+    {
+        const int rows = m_window->sequenceView()->model()->rowCount();
+        QVERIFY(!m_window->files()->open(QStringLiteral("/nonexistent/project")));
+        QVERIFY(ErrorReporter::lastMessage().contains(QStringLiteral("/nonexistent/project")));
+        QCOMPARE(m_window->sequenceView()->model()->rowCount(), rows);
+        QVERIFY(m_window->media());
+    }
+
+private:
+    MainWindow *m_window = nullptr;
+    QTemporaryDir dir; // the saved copy of the demo
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_mainwindow.moc"
