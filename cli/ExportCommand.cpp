@@ -69,7 +69,8 @@ int runExportVideo(const QStringList &args)
     std::optional<AudioBuffer> audio;
     if (!arguments.flag("no-audio") && !out.isEmpty()) {
         try {
-            audio = AudioDecoder::decode(media.toStdString(), 0);
+            // Sound and picture may start at different times in the source container.
+            audio = alignAudioToVideo(AudioDecoder::decode(media.toStdString(), 0), reader.timestamp(0));
         } catch (const Error &e) {
             throw Error(e.reason() + " (use --no-audio to export the picture only)", e.file(), e.field());
         }

@@ -14,7 +14,7 @@ struct CompositionStyle
 {
     int gap = 0;                           // pixels between panels
     cv::Scalar background{0, 0, 0};        // fills gaps and empty grid cells
-    double labelScale = 0.5;               // cv::putText font scale (Hershey simplex)
+    double labelScale = 0.5;               // cv::putText font scale (Hershey simplex: ASCII only)
 };
 
 // Two frames in one wide frame. Throws lipsync::Error if either frame is empty.

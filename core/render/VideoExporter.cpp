@@ -511,6 +511,21 @@ void VideoExporter::finish()
     }
 }
 
+AudioBuffer alignAudioToVideo(const AudioBuffer &audio, double firstFrameTime)
+{
+    AudioBuffer aligned;
+    aligned.sampleRate = audio.sampleRate;
+    aligned.startTime = firstFrameTime;
+    const long long shift = std::llround((audio.startTime - firstFrameTime) * audio.sampleRate);
+    if (shift >= 0) {
+        aligned.samples.assign(size_t(shift), 0.0f);
+        aligned.samples.insert(aligned.samples.end(), audio.samples.begin(), audio.samples.end());
+    } else if (size_t(-shift) < audio.samples.size()) {
+        aligned.samples.assign(audio.samples.begin() + std::ptrdiff_t(-shift), audio.samples.end());
+    }
+    return aligned;
+}
+
 int exportVideo(const std::string &path, int frameCount,
                  const std::function<cv::Mat(int)> &frameAt, const AudioBuffer *audio,
                  Feedback &feedback, const VideoExportOptions &options)

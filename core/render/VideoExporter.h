@@ -49,10 +49,10 @@ struct VideoExportOptions
 class VideoExporter
 {
 public:
-    // `audio` (mono float PCM, copied) may be null for a silent video. Its first sample plays with
-    // the first frame (AudioBuffer::startTime is not applied: trim or pad the samples to shift). Throws lipsync::Error
-    // naming `path` if the target directory does not exist or is not writable, or if the audio
-    // is empty.
+    // `audio` (mono float PCM, copied) may be null for a silent video. Its first sample plays
+    // with the first frame (AudioBuffer::startTime is not applied; see alignAudioToVideo()).
+    // Throws lipsync::Error naming `path` if the target directory does not exist or is not
+    // writable, or if the audio is empty.
     explicit VideoExporter(const std::string &path, const VideoExportOptions &options = {},
                            const AudioBuffer *audio = nullptr);
     // Abandons the export (removes the temporary file) unless finish() succeeded.
@@ -77,6 +77,12 @@ private:
     struct Impl;
     std::unique_ptr<Impl> d;
 };
+
+// The sound re-timed so that its first sample plays with a video frame shown at
+// `firstFrameTime` (seconds, the time base of AudioBuffer::startTime and VideoReader::timestamp):
+// leading silence is added when the sound starts later, samples are dropped when it starts
+// earlier. The result has startTime = firstFrameTime.
+AudioBuffer alignAudioToVideo(const AudioBuffer &audio, double firstFrameTime);
 
 // One-call export of `frameCount` frames produced by `frameAt(i)` (rendered on demand so a long
 // clip never sits in memory), with progress and cancel through `feedback`. On cancel throws

@@ -304,6 +304,20 @@ private slots:
         }
     }
 
+    void audioIsAlignedToTheFirstFrame()
+    {
+        AudioBuffer audio;
+        audio.sampleRate = 1000;
+        audio.samples = {1, 2, 3, 4, 5};
+        audio.startTime = 0.5;
+        AudioBuffer later = alignAudioToVideo(audio, 0.497); // sound starts 3 samples after the frame
+        QCOMPARE(later.samples, (std::vector<float>{0, 0, 0, 1, 2, 3, 4, 5}));
+        QCOMPARE(later.startTime, 0.497);
+        AudioBuffer earlier = alignAudioToVideo(audio, 0.502); // sound started 2 samples before
+        QCOMPARE(earlier.samples, (std::vector<float>{3, 4, 5}));
+        QVERIFY(alignAudioToVideo(audio, 1.0).samples.empty());
+    }
+
     void emptyAudioIsRejected()
     {
         QTemporaryDir dir;
