@@ -69,8 +69,11 @@ TrackedFrame FaceTracker::track(const cv::Mat &bgr, const AamFitOptions &fitOpti
             options.coarsestLevel = 0;
         frame.fit = m_fitter.fit(grey, m_previous, options);
         const double median = medianError();
+        // Re-detect when the error jumps above the recent ones, and keep trying while the
+        // recent fits are all poor (a track started on a broken frame must not lock in).
         const bool jumped = frame.fit.error > m_options.minRedetectError
-                            && (m_errors.empty() || frame.fit.error > m_options.redetectFactor * median);
+                            && (m_errors.empty() || frame.fit.error > m_options.redetectFactor * median
+                                || median > m_options.minRedetectError);
         if (jumped) {
             AamFitResult again;
             if (fitFromDetection(bgr, grey, fitOptions, again) && again.error < frame.fit.error) {

@@ -34,8 +34,9 @@ Eigen::Vector2d shapeCentroid(const Eigen::VectorXd &shape);
 double shapeSize(const Eigen::VectorXd &shape);
 // Centred, unit size.
 Eigen::VectorXd normalisedShape(const Eigen::VectorXd &shape);
-// Twice the area of the convex-hull-free polygon test used to reject collinear/coincident points:
-// the smaller singular value of the centred point cloud (0 when all points are on a line).
+// Spread of the points across their main direction: the smaller singular value of the centred
+// point cloud over sqrt(n), in the shape's units (0 when all points coincide or lie on a line).
+// Used to reject degenerate training shapes.
 double shapeSpread(const Eigen::VectorXd &shape);
 
 struct ProcrustesResult

@@ -3,8 +3,10 @@
 #include "aam/AamBuilder.h"
 #include "aam/AamFitter.h"
 #include "aam/AamSynthesizer.h"
+#include "aam/FaceDetector.h"
 #include "aam/LandmarkScheme.h"
 #include "aam/PtsFile.h"
+#include "aam/VideoTracking.h"
 #include "io/AtomicFile.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
@@ -273,6 +275,34 @@ private slots:
         const double fps = 100 / std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         qInfo("synthesis: %.0f frames/s", fps);
         QVERIFY(fps > 150);
+    }
+
+    void tracksAVideoWithFixedPoints()
+    {
+        FaceDetectorPaths paths;
+        paths.useDlib = false;
+        FaceDetector detector(paths);
+        const std::string clip = LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg";
+        Feedback feedback;
+        const VideoTrackingResult plain = trackVideo(m_model, clip, detector, feedback);
+        QCOMPARE(int(plain.features.rows()), 75);
+        QCOMPARE(int(plain.features.cols()), m_model.combinedModes());
+        QVERIFY(plain.framesWithoutFace.empty());
+        QVERIFY(plain.errors.allFinite());
+        QVERIFY(plain.errors.maxCoeff() < 0.1);
+        const std::vector<int> worst = plain.worstFrames(3);
+        QCOMPARE(int(worst.size()), 3);
+        QVERIFY(plain.errors[worst[0]] >= plain.errors[worst[1]]);
+        QVERIFY(plain.errors[worst[1]] >= plain.errors[worst[2]]);
+        // A user fixed the chin 5 pixels lower in frame 30: the track keeps it there.
+        Eigen::VectorXd corrected = plain.shapes.row(30).transpose();
+        corrected[41] += 5.0;
+        LandmarkSet set = landmarkSetFromShape(corrected, PointState::Automatic);
+        set.points[20].state = PointState::Fixed;
+        const VideoTrackingResult fixed = trackVideo(m_model, clip, detector, feedback, {{30, set}});
+        QVERIFY(std::abs(fixed.shapes(30, 40) - corrected[40]) < 1e-9);
+        QVERIFY(std::abs(fixed.shapes(30, 41) - corrected[41]) < 1e-9);
+        QVERIFY((fixed.features.row(30) - plain.features.row(30)).norm() > 1e-6);
     }
 
     void badInput()
