@@ -13,6 +13,7 @@
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
 #include "dynamics/PhoneSet.h"
+#include "dynamics/SldsModel.h"
 #include "eval/Evaluation.h"
 #include "io/GridAlign.h"
 #include "tasks/Feedback.h"
@@ -187,7 +188,7 @@ void BM_DpdsLmVersusGradientAscent(benchmark::State &state)
         state.counters["speedup"] = gaSeconds / lmSeconds;
     }
 }
-BENCHMARK(BM_DpdsLmVersusGradientAscent)->Args({1, 20000})->Args({32, 2000})->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_DpdsLmVersusGradientAscent)->Args({1, 20000})->Args({8, 3000})->Iterations(1)->Unit(benchmark::kSecond);
 
 void BM_DpdsTrain20Minutes(benchmark::State &state)
 {
@@ -302,4 +303,21 @@ void BM_Evaluate10Fold(benchmark::State &state)
 }
 BENCHMARK(BM_Evaluate10Fold)->Iterations(1)->Unit(benchmark::kSecond);
 
+} // namespace
+
+namespace {
+void BM_SldsTrain20Minutes(benchmark::State &state)
+{
+    const auto data = gridLikeData(32);
+    for (auto _ : state) {
+        SldsModel model;
+        Feedback feedback;
+        const auto start = std::chrono::steady_clock::now();
+        model.train(data, feedback);
+        state.counters["train_s"] = seconds(start);
+        state.counters["em_iterations"] = double(model.objectiveHistory().size());
+        state.counters["loglik_per_frame"] = loglikPerFrame(model, data);
+    }
+}
+BENCHMARK(BM_SldsTrain20Minutes)->Iterations(1)->Unit(benchmark::kSecond);
 } // namespace
