@@ -129,12 +129,14 @@ void SldsModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &fe
     dpdsOptions.maxIterations = m_options.initIterations;
     dpdsOptions.aMax = std::min(m_options.aMax, 0.999);
     dpdsOptions.threads = m_options.threads;
-    DpdsModel dpds(dpdsOptions);
-    {
+    DpdsModel trainedHere(dpdsOptions);
+    if (!m_initialisation || m_initialisation->dimension() != int(d)) {
         Feedback child(feedback, 0.0, 0.2);
         feedback.setStatus("SLDS: DPDS initialisation");
-        dpds.train(sequences, child);
+        trainedHere.train(sequences, child);
     }
+    const DpdsModel &dpds = m_initialisation && m_initialisation->dimension() == int(d) ? *m_initialisation
+                                                                                         : trainedHere;
     slds::Parameters p;
     p.mu = dpds.mu;
     p.nu = dpds.nu;

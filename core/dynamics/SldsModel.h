@@ -70,6 +70,9 @@ public:
     // Log-likelihood (+ log prior of Sigma when kappa > 0) after each E-step; non-decreasing.
     const std::vector<double> &objectiveHistory() const { return m_history; }
     bool isDiagonal() const { return !m_options.fullA && !m_options.fullNoise; }
+    // Use this DPDS (trained on the same sequences) as the initialisation of the next train()
+    // instead of training one (§3.4 initialisation); the evaluation shares its fold's DPDS.
+    void setInitialisation(std::shared_ptr<const DpdsModel> dpds) { m_initialisation = std::move(dpds); }
     LinearRecursion recursion() const;
 
 protected:
@@ -85,6 +88,7 @@ private:
     SldsOptions m_options;
     slds::Parameters m_params;
     std::vector<double> m_history;
+    std::shared_ptr<const DpdsModel> m_initialisation;
 };
 
 } // namespace lipsync

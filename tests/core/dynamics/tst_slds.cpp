@@ -248,6 +248,29 @@ private slots:
         }
     }
 
+    void sharedDpdsInitialisationGivesTheSameModel()
+    {
+        std::mt19937 rng(7);
+        const slds::Parameters p = randomParameters(rng, 2, true);
+        std::vector<LabelledSequence> data;
+        for (int s = 0; s < 15; ++s)
+            data.push_back(sample(rng, p, randomLabels(rng, 30, {0, 6, 21})));
+        Feedback feedback;
+        SldsOptions options;
+        options.maxIterations = 20;
+        SldsModel own(options);
+        own.train(data, feedback);
+        DpdsOptions dpdsOptions;
+        dpdsOptions.maxIterations = options.initIterations;
+        auto dpds = std::make_shared<DpdsModel>(dpdsOptions);
+        dpds->train(data, feedback);
+        SldsModel shared(options);
+        shared.setInitialisation(dpds);
+        shared.train(data, feedback);
+        QCOMPARE(shared.objectiveHistory(), own.objectiveHistory());
+        QVERIFY(shared.parameters().nu == own.parameters().nu);
+    }
+
     void trainsOnOneFrameSequencesAndUnseenPhones()
     {
         std::mt19937 rng(6);
