@@ -1,7 +1,7 @@
 // lipsync evaluate: k-fold cross-validation of the dynamic models (models.md §6).
 #include "Command.h"
+#include "TrainingData.h"
 
-#include "dynamics/LabelledFolder.h"
 #include "eval/Evaluation.h"
 #include "io/AtomicFile.h"
 #include "tasks/Feedback.h"
@@ -20,7 +20,7 @@ QString dynamicModelOptionsFrom(const Arguments &args, ModelOptions &options); /
 namespace {
 
 const char *kEvaluateUsage =
-    "usage: lipsync evaluate --features DIR --labels DIR [--folds 10] [--seed 2007]\n"
+    "usage: lipsync evaluate (--project DIR | --features DIR --labels DIR) [--folds 10] [--seed 2007]\n"
     "                        [--kinds dpds,slds,brand,hmm] [--fps 25] [--csv FILE] [--json]\n"
     "  model options as for train (--full-covariance, --full-a, --optimizer, --paper-mode, ...)";
 
@@ -34,10 +34,6 @@ int runEvaluate(const QStringList &argv)
         return fail(QStringLiteral("unknown argument %1\n").arg((unknown + args.positional()).first())
                         + QString::fromLatin1(kEvaluateUsage),
                     2);
-    if (args.has(QStringLiteral("project")))
-        return fail(QStringLiteral("--project is not available in this build yet; use --features DIR --labels DIR"), 2);
-    if (!args.has(QStringLiteral("features")) || !args.has(QStringLiteral("labels")))
-        return fail(QString::fromLatin1(kEvaluateUsage), 2);
     EvaluationOptions options;
     bool ok = false;
     options.folds = args.value(QStringLiteral("folds"), QStringLiteral("10")).toInt(&ok);
@@ -46,9 +42,6 @@ int runEvaluate(const QStringList &argv)
     options.seed = args.value(QStringLiteral("seed"), QStringLiteral("2007")).toULongLong(&ok);
     if (!ok)
         return fail(QStringLiteral("--seed must be a non-negative integer"), 2);
-    const double fps = args.value(QStringLiteral("fps"), QStringLiteral("25")).toDouble(&ok);
-    if (!ok || !(fps > 0))
-        return fail(QStringLiteral("--fps must be a positive number"), 2);
     if (args.has(QStringLiteral("kinds"))) {
         options.kinds.clear();
         for (const QString &k : args.value(QStringLiteral("kinds")).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
@@ -62,8 +55,9 @@ int runEvaluate(const QStringList &argv)
     if (const QString error = dynamicModelOptionsFrom(args, options.modelOptions); !error.isEmpty())
         return fail(error, 2);
 
-    const auto sequences = loadLabelledFolder(args.value(QStringLiteral("features")).toStdString(),
-                                              args.value(QStringLiteral("labels")).toStdString(), fps);
+    std::vector<LabelledSequence> sequences;
+    if (const QString error = loadTrainingData(args, sequences); !error.isEmpty())
+        return fail(error + QLatin1Char('\n') + QString::fromLatin1(kEvaluateUsage), 2);
     Feedback feedback;
     const EvaluationResult result = evaluateModels(sequences, options, feedback);
     if (args.has(QStringLiteral("csv")))

@@ -1,7 +1,7 @@
 // lipsync train: fits one dynamic model (models.md §1-4) to features + phone labels.
 #include "Command.h"
+#include "TrainingData.h"
 
-#include "dynamics/LabelledFolder.h"
 #include "dynamics/ModelFile.h"
 #include "tasks/Feedback.h"
 
@@ -16,8 +16,8 @@ using namespace lipsync::cli;
 namespace {
 
 const char *kTrainUsage =
-    "usage: lipsync train --kind dpds|slds|brand|hmm --features DIR --labels DIR --out MODEL\n"
-    "                     [--fps 25] [--aam ID] [--json]\n"
+    "usage: lipsync train --kind dpds|slds|brand|hmm (--project DIR | --features DIR --labels DIR)\n"
+    "                     --out MODEL [--fps 25] [--aam ID] [--json]\n"
     "  options: --full-covariance (brand), --full-a (slds), --optimizer lm|gradient (dpds),\n"
     "           --paper-mode (dpds), --max-iterations N (dpds, slds), --threads N (dpds)";
 
@@ -62,14 +62,8 @@ int runTrain(const QStringList &argv)
                     2);
     const QString kind = args.value(QStringLiteral("kind"));
     const QString out = args.value(QStringLiteral("out"));
-    if (args.has(QStringLiteral("project")))
-        return fail(QStringLiteral("--project is not available in this build yet; use --features DIR --labels DIR"), 2);
-    if (kind.isEmpty() || out.isEmpty() || !args.has(QStringLiteral("features")) || !args.has(QStringLiteral("labels")))
+    if (kind.isEmpty() || out.isEmpty())
         return fail(QString::fromLatin1(kTrainUsage), 2);
-    bool ok = false;
-    const double fps = args.value(QStringLiteral("fps"), QStringLiteral("25")).toDouble(&ok);
-    if (!ok || !(fps > 0))
-        return fail(QStringLiteral("--fps must be a positive number"), 2);
     ModelOptions options;
     if (const QString error = modelOptionsFrom(args, options); !error.isEmpty())
         return fail(error, 2);
@@ -77,8 +71,9 @@ int runTrain(const QStringList &argv)
         == dynamicModelKinds().end())
         return fail(QStringLiteral("--kind must be dpds, slds, brand or hmm"), 2);
 
-    const auto sequences = loadLabelledFolder(args.value(QStringLiteral("features")).toStdString(),
-                                              args.value(QStringLiteral("labels")).toStdString(), fps);
+    std::vector<LabelledSequence> sequences;
+    if (const QString error = loadTrainingData(args, sequences); !error.isEmpty())
+        return fail(error + QLatin1Char('\n') + QString::fromLatin1(kTrainUsage), 2);
     auto model = createDynamicModel(kind.toStdString(), options);
     Feedback feedback;
     int iterations = 0;

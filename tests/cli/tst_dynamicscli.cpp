@@ -4,6 +4,7 @@
 
 #include "dynamics/PhoneLabels.h"
 #include "io/FeatureCsv.h"
+#include "project/Project.h"
 
 #include <QDir>
 #include <QFile>
@@ -14,6 +15,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
 #include <fstream>
 
 using namespace lipsync;
@@ -154,6 +156,62 @@ private slots:
             QVERIFY(m.value("trainingSeconds").toDouble() >= 0);
         }
         QVERIFY(QFile::exists(csv));
+    }
+
+    // --project DIR gives the same data as the folders: features from the project's CSVs, frame
+    // labels voted from its phone tiers.
+    void trainsFromProject()
+    {
+        Project project;
+        project.name = "synthetic";
+        const QDir features(m_features);
+        for (const QString &csv : features.entryList({QStringLiteral("*.csv")}, QDir::Files, QDir::Name)) {
+            const QString name = csv.chopped(4);
+            Sequence s;
+            s.id = name.toStdString();
+            s.mediaFile = "media/" + s.id + ".mpg";
+            s.features = readFeatureCsv(features.filePath(csv).toStdString()).values;
+            s.frameCount = int(s.features.rows());
+            s.phones = readPhoneTier((m_labels + "/" + name + (name == "real" ? ".TextGrid" : ".lab")).toStdString());
+            s.phones.name = "phones";
+            project.sequences.push_back(std::move(s));
+        }
+        const QString folder = m_dir.filePath(QStringLiteral("project"));
+        project.save(folder.toStdString());
+
+        const QString a = m_dir.filePath(QStringLiteral("from-project.model"));
+        const QString b = m_dir.filePath(QStringLiteral("from-folders.model"));
+        const Run fromProject = lipsyncRun({"train", "--kind", "hmm", "--project", folder, "--out", a, "--json"});
+        QVERIFY2(fromProject.exitCode == 0, fromProject.err.constData());
+        const Run fromFolders = lipsyncRun({"train", "--kind", "hmm", "--features", m_features, "--labels",
+                                            m_labels, "--out", b, "--json"});
+        QVERIFY2(fromFolders.exitCode == 0, fromFolders.err.constData());
+        const QJsonObject p = QJsonDocument::fromJson(fromProject.out).object();
+        const QJsonObject f = QJsonDocument::fromJson(fromFolders.out).object();
+        QCOMPARE(p.value("sequences").toInt(), f.value("sequences").toInt());
+        QCOMPARE(p.value("frames").toDouble(), f.value("frames").toDouble());
+        QVERIFY(std::abs(p.value("loglikPerFrame").toDouble() - f.value("loglikPerFrame").toDouble()) < 1e-9);
+
+        const Run evaluation = lipsyncRun({"evaluate", "--project", folder, "--folds", "3", "--kinds", "hmm", "--json"});
+        QVERIFY2(evaluation.exitCode == 0, evaluation.err.constData());
+
+        // A project without features: exit 1, one line naming the manifest.
+        Project empty;
+        Sequence bare;
+        bare.id = "bare";
+        bare.mediaFile = "media/bare.mpg";
+        bare.frameCount = 75;
+        empty.sequences.push_back(bare);
+        const QString emptyFolder = m_dir.filePath(QStringLiteral("empty-project"));
+        empty.save(emptyFolder.toStdString());
+        const Run none = lipsyncRun({"train", "--kind", "hmm", "--project", emptyFolder, "--out", a});
+        QCOMPARE(none.exitCode, 1);
+        QVERIFY(none.err.contains("project.json"));
+        QVERIFY(none.err.contains("no sequence has both face features and a phone alignment"));
+        QCOMPARE(none.err.count('\n'), 1);
+        // Both sources at once is a usage error.
+        QCOMPARE(lipsyncRun({"train", "--kind", "hmm", "--project", folder, "--features", m_features,
+                             "--labels", m_labels, "--out", a}).exitCode, 2);
     }
 
     void badInput()

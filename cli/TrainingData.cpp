@@ -1,0 +1,57 @@
+#include "TrainingData.h"
+
+#include "dynamics/LabelledFolder.h"
+#include "dynamics/PhoneLabels.h"
+#include "project/Project.h"
+#include "util/Error.h"
+
+namespace lipsync::cli {
+
+namespace {
+
+// Frame labels by the §0 vote at each sequence's own frame rate, one per feature row.
+std::vector<LabelledSequence> projectSequences(const std::string &folder)
+{
+    const Project project = Project::load(folder);
+    std::vector<LabelledSequence> sequences;
+    for (const Sequence &s : project.sequences) {
+        if (s.features.rows() == 0 || s.phones.isEmpty())
+            continue;
+        LabelledSequence ls;
+        ls.name = s.id;
+        ls.features = s.features;
+        ls.labels = frameLabelsFromTier(s.phones, s.frameRate, int(s.features.rows()),
+                                        project.manifestPath() + ": " + s.id);
+        sequences.push_back(std::move(ls));
+    }
+    if (sequences.empty())
+        throw Error("no sequence has both face features and a phone alignment "
+                    "(track the faces and align the speech first)",
+                    project.manifestPath());
+    return sequences;
+}
+
+} // namespace
+
+QString loadTrainingData(const Arguments &args, std::vector<LabelledSequence> &sequences)
+{
+    const bool project = args.has(QStringLiteral("project"));
+    const bool folders = args.has(QStringLiteral("features")) || args.has(QStringLiteral("labels"));
+    if (project == folders)
+        return QStringLiteral("give either --project DIR or --features DIR --labels DIR");
+    if (project) {
+        sequences = projectSequences(args.value(QStringLiteral("project")).toStdString());
+        return {};
+    }
+    if (!args.has(QStringLiteral("features")) || !args.has(QStringLiteral("labels")))
+        return QStringLiteral("--features and --labels go together");
+    bool ok = false;
+    const double fps = args.value(QStringLiteral("fps"), QStringLiteral("25")).toDouble(&ok);
+    if (!ok || !(fps > 0))
+        return QStringLiteral("--fps must be a positive number");
+    sequences = loadLabelledFolder(args.value(QStringLiteral("features")).toStdString(),
+                                   args.value(QStringLiteral("labels")).toStdString(), fps);
+    return {};
+}
+
+} // namespace lipsync::cli
