@@ -1,7 +1,13 @@
 #include "annotate/FrameView.h"
 
+#include "aam/LandmarkScheme.h"
+
+#include <QCoreApplication>
+#include <QKeyEvent>
+#include <QKeySequence>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QPainterPath>
 #include <QWheelEvent>
 
 #include <algorithm>
@@ -34,6 +40,21 @@ void FrameView::setImage(const QImage &image)
 void FrameView::setLandmarks(const std::optional<LandmarkSet> &landmarks)
 {
     m_landmarks = landmarks;
+    m_dragPoint = -1;
+    if (m_selected >= 0 && (!m_landmarks || !m_landmarks->points[std::size_t(m_selected)].isDefined()))
+        m_selected = -1;
+    update();
+}
+
+void FrameView::setOnionSkin(const std::optional<LandmarkSet> &landmarks)
+{
+    m_onion = landmarks;
+    update();
+}
+
+void FrameView::setOnionSkinVisible(bool visible)
+{
+    m_onionVisible = visible;
     update();
 }
 
@@ -41,6 +62,36 @@ void FrameView::setPlaceholderText(const QString &text)
 {
     m_placeholder = text;
     update();
+}
+
+void FrameView::setInfoText(const QString &text)
+{
+    m_info = text;
+    update();
+}
+
+void FrameView::setEditable(bool editable)
+{
+    m_editable = editable;
+    if (!editable) {
+        m_selected = -1;
+        m_dragPoint = -1;
+    }
+    update();
+}
+
+void FrameView::setSelectedPoint(int index)
+{
+    m_selected = index;
+    update();
+}
+
+int FrameView::nextUndefinedPoint() const
+{
+    for (int i = 0; i < LandmarkSet::kPointCount; ++i)
+        if (!m_landmarks || !m_landmarks->points[std::size_t(i)].isDefined())
+            return i;
+    return -1;
 }
 
 QColor FrameView::stateColor(PointState state)
@@ -52,6 +103,38 @@ QColor FrameView::stateColor(PointState state)
     case PointState::Undefined: break;
     }
     return QColor(158, 158, 158);
+}
+
+QString FrameView::pointName(int index)
+{
+    static const char *const names[LandmarkSet::kPointCount] = {
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "left eye, outer corner"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "left eye, upper lid"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "left eye, inner corner"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "left eye, lower lid"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "right eye, inner corner"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "right eye, upper lid"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "right eye, outer corner"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "right eye, lower lid"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "mouth, left corner"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "upper lip, left"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "upper lip, centre"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "upper lip, right"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "mouth, right corner"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "lower lip, right"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "lower lip, centre"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "lower lip, left"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "inner lip, top"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "inner lip, bottom"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "jaw, left"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "jaw, lower left"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "chin"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "jaw, lower right"),
+        QT_TRANSLATE_NOOP("lipsync::studio::FrameView", "jaw, right"),
+    };
+    if (index < 0 || index >= LandmarkSet::kPointCount)
+        return {};
+    return QCoreApplication::translate("lipsync::studio::FrameView", names[index]);
 }
 
 double FrameView::scale() const
@@ -66,6 +149,48 @@ QPointF FrameView::offset() const
 {
     const double s = scale();
     return QPointF((width() - m_image.width() * s) / 2.0, (height() - m_image.height() * s) / 2.0) + m_pan;
+}
+
+QPointF FrameView::imageToWidget(const QPointF &image) const
+{
+    return offset() + image * scale();
+}
+
+QPointF FrameView::widgetToImage(const QPointF &widget) const
+{
+    return (widget - offset()) / scale();
+}
+
+double FrameView::pointRadius() const
+{
+    return std::clamp(2.0 + scale(), 3.0, 7.0);
+}
+
+int FrameView::pointAt(const QPointF &widget) const
+{
+    if (!m_landmarks || m_image.isNull())
+        return -1;
+    const double reach = pointRadius() + 4.0;
+    int best = -1;
+    double bestDistance = reach * reach;
+    for (int i = 0; i < LandmarkSet::kPointCount; ++i) {
+        const LandmarkPoint &pt = m_landmarks->points[std::size_t(i)];
+        if (!pt.isDefined())
+            continue;
+        const QPointF d = imageToWidget(QPointF(pt.x, pt.y)) - widget;
+        const double d2 = d.x() * d.x() + d.y() * d.y();
+        if (d2 <= bestDistance) {
+            bestDistance = d2;
+            best = i;
+        }
+    }
+    return best;
+}
+
+QPointF FrameView::clampToImage(const QPointF &image) const
+{
+    return QPointF(std::clamp(image.x(), 0.0, double(m_image.width() - 1)),
+                   std::clamp(image.y(), 0.0, double(m_image.height() - 1)));
 }
 
 void FrameView::setZoom(double zoom, const QPointF &anchor)
@@ -90,6 +215,39 @@ void FrameView::fitToView()
     emit zoomChanged(m_zoom);
 }
 
+void FrameView::drawShape(QPainter &p, const LandmarkSet &set, bool onion) const
+{
+    const double r = pointRadius();
+    QColor line = onion ? QColor(255, 128, 171, 150) : QColor(255, 255, 255, 150);
+    p.setPen(QPen(line, onion ? 1.0 : 1.2, onion ? Qt::DashLine : Qt::SolidLine));
+    for (const auto &[a, b] : landmarkConnections()) {
+        const LandmarkPoint &pa = set.points[std::size_t(a)];
+        const LandmarkPoint &pb = set.points[std::size_t(b)];
+        if (pa.isDefined() && pb.isDefined())
+            p.drawLine(imageToWidget(QPointF(pa.x, pa.y)), imageToWidget(QPointF(pb.x, pb.y)));
+    }
+    for (int i = 0; i < LandmarkSet::kPointCount; ++i) {
+        const LandmarkPoint &pt = set.points[std::size_t(i)];
+        if (!pt.isDefined())
+            continue;
+        const QPointF w = imageToWidget(QPointF(pt.x, pt.y));
+        if (onion) {
+            p.setPen(QPen(QColor(255, 128, 171, 200), 1.2));
+            p.setBrush(Qt::NoBrush);
+            p.drawEllipse(w, r * 0.8, r * 0.8);
+            continue;
+        }
+        p.setPen(QPen(Qt::black, 1.0));
+        p.setBrush(stateColor(pt.state));
+        p.drawEllipse(w, r, r);
+        if (i == m_selected) {
+            p.setPen(QPen(Qt::white, 1.5));
+            p.setBrush(Qt::NoBrush);
+            p.drawEllipse(w, r + 3.0, r + 3.0);
+        }
+    }
+}
+
 void FrameView::paintEvent(QPaintEvent *)
 {
     QPainter p(this);
@@ -104,18 +262,61 @@ void FrameView::paintEvent(QPaintEvent *)
     p.setRenderHint(QPainter::SmoothPixmapTransform, m_zoom < 3.0);
     p.drawImage(QRectF(o, QSizeF(m_image.width() * s, m_image.height() * s)), m_image);
 
-    if (!m_landmarks)
-        return;
     p.setRenderHint(QPainter::Antialiasing);
-    const double r = std::clamp(2.0 + s, 3.0, 7.0);
-    for (int i = 0; i < LandmarkSet::kPointCount; ++i) {
-        const LandmarkPoint &pt = m_landmarks->points[std::size_t(i)];
-        if (!pt.isDefined())
-            continue;
-        const QPointF w = o + QPointF(pt.x, pt.y) * s;
-        p.setPen(QPen(Qt::black, 1.0));
-        p.setBrush(stateColor(pt.state));
-        p.drawEllipse(w, r, r);
+    if (m_onionVisible && m_onion)
+        drawShape(p, *m_onion, true);
+    if (m_landmarks)
+        drawShape(p, *m_landmarks, false);
+
+    if (m_landmarks && m_landmarks->definedCount() > 0) {
+        // Legend of the point states, bottom left.
+        const QFontMetrics fm = p.fontMetrics();
+        const std::pair<PointState, QString> states[] = {{PointState::Automatic, tr("automatic")},
+                                                         {PointState::Placed, tr("placed")},
+                                                         {PointState::Fixed, tr("fixed")}};
+        double legendWidth = 0;
+        for (const auto &entry : states)
+            legendWidth += 8 + fm.horizontalAdvance(entry.second) + 16;
+        double x = 12;
+        const double y = height() - 12 - fm.height() / 2.0;
+        p.setPen(Qt::NoPen);
+        p.setBrush(QColor(0, 0, 0, 160));
+        p.drawRoundedRect(QRectF(x - 8, y - fm.height() / 2.0 - 3, legendWidth, fm.height() + 6), 4, 4);
+        for (const auto &[state, label] : states) {
+            p.setPen(QPen(Qt::black, 1.0));
+            p.setBrush(stateColor(state));
+            p.drawEllipse(QPointF(x, y), 4.5, 4.5);
+            p.setPen(QColor(235, 235, 235));
+            p.drawText(QPointF(x + 8, y + fm.ascent() / 2.0 - 1), label);
+            x += 8 + fm.horizontalAdvance(label) + 16;
+        }
+    }
+
+    QStringList lines;
+    if (!m_info.isEmpty())
+        lines << m_info;
+    if (m_editable) {
+        const int next = nextUndefinedPoint();
+        if (next >= 0 && (!m_landmarks || m_landmarks->definedCount() == 0))
+            lines << tr("Click to place %1 (%2 of %3), or press %4 to detect all points")
+                         .arg(pointName(next))
+                         .arg(next + 1)
+                         .arg(LandmarkSet::kPointCount)
+                         .arg(QKeySequence(Qt::CTRL | Qt::Key_D).toString(QKeySequence::NativeText));
+        else if (next >= 0)
+            lines << tr("Click to place %1 (%2 of %3)").arg(pointName(next)).arg(next + 1).arg(LandmarkSet::kPointCount);
+        else if (m_selected >= 0)
+            lines << tr("Selected: %1").arg(pointName(m_selected));
+    }
+    if (!lines.isEmpty()) {
+        const QString text = lines.join(QLatin1Char('\n'));
+        QRectF box = p.fontMetrics().boundingRect(QRect(0, 0, width() - 20, height()), Qt::TextWordWrap, text);
+        box.moveTopLeft(QPointF(8, 8));
+        p.setPen(Qt::NoPen);
+        p.setBrush(QColor(0, 0, 0, 160));
+        p.drawRoundedRect(box.adjusted(-5, -3, 5, 3), 4, 4);
+        p.setPen(QColor(240, 240, 240));
+        p.drawText(box, Qt::TextWordWrap, text);
     }
 }
 
@@ -128,6 +329,31 @@ void FrameView::wheelEvent(QWheelEvent *event)
 
 void FrameView::mousePressEvent(QMouseEvent *event)
 {
+    if (event->button() == Qt::LeftButton && m_editable && !m_image.isNull()) {
+        const int hit = pointAt(event->position());
+        if (hit >= 0) {
+            m_selected = hit;
+            m_dragPoint = hit;
+            m_dragMoved = false;
+            m_dragStart = event->position();
+            update();
+            return;
+        }
+        const QPointF at = widgetToImage(event->position());
+        const int next = nextUndefinedPoint();
+        const bool inside = at.x() >= 0 && at.y() >= 0 && at.x() < m_image.width() && at.y() < m_image.height();
+        if (next >= 0 && inside) {
+            LandmarkSet set = m_landmarks.value_or(LandmarkSet{});
+            set.points[std::size_t(next)] = {at.x(), at.y(), PointState::Placed};
+            m_landmarks = set;
+            m_selected = next;
+            update();
+            emit landmarksEdited(set, tr("Place %1").arg(pointName(next)));
+            return;
+        }
+        m_selected = -1;
+        update();
+    }
     if (event->button() == Qt::LeftButton || event->button() == Qt::MiddleButton) {
         m_dragging = true;
         m_dragStart = event->position();
@@ -138,21 +364,65 @@ void FrameView::mousePressEvent(QMouseEvent *event)
 
 void FrameView::mouseMoveEvent(QMouseEvent *event)
 {
+    if (m_dragPoint >= 0 && m_landmarks) {
+        if (!m_dragMoved && (event->position() - m_dragStart).manhattanLength() < 2)
+            return;
+        m_dragMoved = true;
+        const QPointF at = clampToImage(widgetToImage(event->position()));
+        LandmarkPoint &pt = m_landmarks->points[std::size_t(m_dragPoint)];
+        pt.x = at.x();
+        pt.y = at.y();
+        update();
+        return;
+    }
     if (!m_dragging)
         return;
     m_pan = m_panAtDragStart + (event->position() - m_dragStart);
     update();
 }
 
-void FrameView::mouseReleaseEvent(QMouseEvent *)
+void FrameView::mouseReleaseEvent(QMouseEvent *event)
 {
+    if (m_dragPoint >= 0 && event->button() == Qt::LeftButton) {
+        const int index = m_dragPoint;
+        m_dragPoint = -1;
+        if (m_dragMoved && m_landmarks) {
+            // The whole drag is one edit: a point the user corrects is fixed from now on.
+            m_landmarks->points[std::size_t(index)].state = PointState::Fixed;
+            update();
+            emit landmarksEdited(*m_landmarks, tr("Move %1").arg(pointName(index)));
+        }
+        return;
+    }
     m_dragging = false;
     unsetCursor();
 }
 
-void FrameView::mouseDoubleClickEvent(QMouseEvent *)
+void FrameView::mouseDoubleClickEvent(QMouseEvent *event)
 {
+    if (m_editable && event->button() == Qt::LeftButton && pointAt(event->position()) >= 0)
+        return;
+    if (m_editable && nextUndefinedPoint() >= 0) {
+        mousePressEvent(event); // a quick second click places the next point too
+        return;
+    }
     fitToView();
+}
+
+void FrameView::keyPressEvent(QKeyEvent *event)
+{
+    if (m_editable && (event->key() == Qt::Key_Delete || event->key() == Qt::Key_Backspace) && m_landmarks
+        && m_selected >= 0 && m_landmarks->points[std::size_t(m_selected)].isDefined()) {
+        const int index = m_selected;
+        LandmarkSet set = *m_landmarks;
+        set.points[std::size_t(index)] = {};
+        m_landmarks = set;
+        m_selected = -1;
+        update();
+        emit landmarksEdited(set, tr("Remove %1").arg(pointName(index)));
+        return;
+    }
+    QWidget::keyPressEvent(event);
 }
 
 } // namespace lipsync::studio

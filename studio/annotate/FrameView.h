@@ -1,7 +1,11 @@
 #pragma once
-// A video frame, large, with the 23 landmarks drawn over it. Wheel zooms about the cursor,
-// dragging pans, double-click fits the frame to the view again. The landmark editing tools of
-// the faces feature will hook in here.
+// A video frame, large, with the 23 landmarks and their connections drawn over it, and the
+// landmark editor on it. Wheel zooms about the cursor, middle-drag (or a left-drag on empty
+// space once every point is placed) pans, double-click fits the frame to the view again.
+// When editable: a click places the next undefined point (scheme order; its name is shown), a
+// drag moves a point (reported once, at release: one undo step), Delete undefines the selected
+// point. Edits are reported through landmarksEdited; the owner turns them into undoable document
+// edits and sets the result back with setLandmarks.
 #include "project/LandmarkSet.h"
 
 #include <QImage>
@@ -20,19 +24,41 @@ public:
     void setImage(const QImage &image);
     const QImage &image() const { return m_image; }
     void setLandmarks(const std::optional<LandmarkSet> &landmarks);
+    const std::optional<LandmarkSet> &landmarks() const { return m_landmarks; }
+    // The previous frame's points, drawn faintly when the onion skin is on.
+    void setOnionSkin(const std::optional<LandmarkSet> &landmarks);
+    void setOnionSkinVisible(bool visible);
+    bool isOnionSkinVisible() const { return m_onionVisible; }
     // Shown when there is no image ("Loading…", an error).
     void setPlaceholderText(const QString &text);
+    // A line over the frame's top-left corner (fit error, ...).
+    void setInfoText(const QString &text);
+
+    void setEditable(bool editable);
+    bool isEditable() const { return m_editable; }
+    int selectedPoint() const { return m_selected; }
+    void setSelectedPoint(int index);
+    // The first undefined point in scheme order, or -1.
+    int nextUndefinedPoint() const;
 
     // 1 = the frame fits the view; zoom multiplies that.
     double zoom() const { return m_zoom; }
     void setZoom(double zoom, const QPointF &anchor);
     void fitToView();
 
+    // Image <-> widget coordinates.
+    QPointF imageToWidget(const QPointF &image) const;
+    QPointF widgetToImage(const QPointF &widget) const;
+
     // Colour used for a landmark in the given state.
     static QColor stateColor(PointState state);
+    // Human-readable (translated) name of point `index` of the 23-point scheme.
+    static QString pointName(int index);
 
 signals:
     void zoomChanged(double zoom);
+    // The user changed the points (`what` names the edit for the undo stack).
+    void landmarksEdited(const lipsync::LandmarkSet &landmarks, const QString &what);
 
 protected:
     void paintEvent(QPaintEvent *event) override;
@@ -41,15 +67,27 @@ protected:
     void mouseMoveEvent(QMouseEvent *event) override;
     void mouseReleaseEvent(QMouseEvent *event) override;
     void mouseDoubleClickEvent(QMouseEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
 
 private:
     // Image-to-widget mapping: widget = offset + image * scale.
     double scale() const;
     QPointF offset() const;
+    double pointRadius() const;
+    int pointAt(const QPointF &widget) const;
+    QPointF clampToImage(const QPointF &image) const;
+    void drawShape(QPainter &p, const LandmarkSet &set, bool onion) const;
 
     QImage m_image;
     std::optional<LandmarkSet> m_landmarks;
+    std::optional<LandmarkSet> m_onion;
+    bool m_onionVisible = false;
     QString m_placeholder;
+    QString m_info;
+    bool m_editable = false;
+    int m_selected = -1;
+    int m_dragPoint = -1;
+    bool m_dragMoved = false;
     double m_zoom = 1.0;
     QPointF m_pan; // widget pixels, added to the centred position
     QPointF m_dragStart;

@@ -1,0 +1,550 @@
+#include "annotate/FacesController.h"
+
+#include "aam/AamBuilder.h"
+#include "aam/AamFitter.h"
+#include "aam/FaceDetector.h"
+#include "aam/FaceTracker.h"
+#include "aam/LandmarkScheme.h"
+#include "aam/PtsFile.h"
+#include "annotate/FrameView.h"
+#include "app/ErrorReporter.h"
+#include "app/MainWindow.h"
+#include "app/ProjectDocument.h"
+#include "app/SequenceMedia.h"
+#include "build/ModesView.h"
+#include "io/VideoReader.h"
+#include "tasks/Feedback.h"
+#include "tasks/TaskRunner.h"
+#include "util/Error.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFileInfo>
+#include <QMenu>
+#include <QMenuBar>
+#include <QStatusBar>
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace lipsync::studio {
+
+namespace {
+
+QAction *makeAction(QWidget *owner, const QString &text, const QKeySequence &key)
+{
+    auto *a = new QAction(text, owner);
+    if (!key.isEmpty()) {
+        a->setShortcut(key);
+        a->setShortcutContext(Qt::WindowShortcut);
+        a->setToolTip(QStringLiteral("%1 (%2)").arg(QString(text).remove(QLatin1Char('&')).remove(QStringLiteral("…")),
+                                                    key.toString(QKeySequence::NativeText)));
+    }
+    owner->addAction(a);
+    return a;
+}
+
+cv::Mat toBgr(const QImage &image)
+{
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB888);
+    cv::Mat wrapped(rgb.height(), rgb.width(), CV_8UC3, const_cast<uchar *>(rgb.constBits()),
+                    std::size_t(rgb.bytesPerLine()));
+    cv::Mat bgr;
+    cv::cvtColor(wrapped, bgr, cv::COLOR_RGB2BGR);
+    return bgr;
+}
+
+bool isUserPoint(const LandmarkPoint &p)
+{
+    return p.state == PointState::Fixed || p.state == PointState::Placed;
+}
+
+// `shape` as automatic points, keeping the points a user placed or fixed in `existing`.
+LandmarkSet mergeAutomatic(const std::optional<LandmarkSet> &existing, const Eigen::VectorXd &shape)
+{
+    LandmarkSet set = landmarkSetFromShape(shape, PointState::Automatic);
+    if (existing)
+        for (int i = 0; i < LandmarkSet::kPointCount; ++i)
+            if (isUserPoint(existing->points[std::size_t(i)]))
+                set.points[std::size_t(i)] = existing->points[std::size_t(i)];
+    return set;
+}
+
+QString modelFileName(const QString &name)
+{
+    return QStringLiteral("aam/%1.aam").arg(name);
+}
+
+} // namespace
+
+FacesController::FacesController(MainWindow *window) : QObject(window), m_window(window)
+{
+    m_detect = makeAction(window, tr("&Detect Landmarks"), QKeySequence(Qt::CTRL | Qt::Key_D));
+    m_copyPrevious = makeAction(window, tr("&Copy Previous Frame's Points"), QKeySequence(Qt::Key_C));
+    m_onionSkin = makeAction(window, tr("&Onion Skin of Previous Frame"), QKeySequence(Qt::Key_O));
+    m_onionSkin->setCheckable(true);
+    m_nextUnlabelled = makeAction(window, tr("Next &Unlabelled Frame"), QKeySequence(Qt::Key_N));
+    m_nextWorst = makeAction(window, tr("Next &Worst-Fitted Frame"), QKeySequence(Qt::Key_W));
+    m_buildAam = makeAction(window, tr("&Build AAM"), {});
+    m_trackSequence = makeAction(window, tr("&Track Sequence"), QKeySequence(Qt::CTRL | Qt::Key_T));
+    m_trackAll = makeAction(window, tr("Track &All Sequences"), {});
+    m_modes = makeAction(window, tr("&Modes of Variation…"), {});
+
+    m_menu = new QMenu(tr("Fa&ces"), window);
+    m_menu->addAction(m_detect);
+    m_menu->addAction(m_copyPrevious);
+    m_menu->addAction(m_onionSkin);
+    m_menu->addSeparator();
+    m_menu->addAction(m_nextUnlabelled);
+    m_menu->addAction(m_nextWorst);
+    m_menu->addSeparator();
+    m_menu->addAction(m_buildAam);
+    m_menu->addAction(m_trackSequence);
+    m_menu->addAction(m_trackAll);
+    m_menu->addAction(m_modes);
+    const QList<QAction *> top = window->menuBar()->actions();
+    window->menuBar()->insertMenu(top.isEmpty() ? nullptr : top.last(), m_menu); // before Help
+
+    connect(m_detect, &QAction::triggered, this, [this] { detectLandmarks(); });
+    connect(m_copyPrevious, &QAction::triggered, this, [this] { copyPreviousFrame(); });
+    connect(m_onionSkin, &QAction::toggled, window->frameView(), &FrameView::setOnionSkinVisible);
+    connect(m_nextUnlabelled, &QAction::triggered, this, &FacesController::nextUnlabelledFrame);
+    connect(m_nextWorst, &QAction::triggered, this, &FacesController::nextWorstFrame);
+    connect(m_buildAam, &QAction::triggered, this, [this] { buildAam(); });
+    connect(m_trackSequence, &QAction::triggered, this, [this] {
+        if (m_window->currentSequence() >= 0)
+            trackSequences({m_window->currentSequence()});
+    });
+    connect(m_trackAll, &QAction::triggered, this, [this] {
+        QList<int> rows;
+        for (int i = 0; i < m_window->document()->sequenceCount(); ++i)
+            rows << i;
+        trackSequences(rows);
+    });
+    connect(m_modes, &QAction::triggered, this, &FacesController::showModes);
+
+    FrameView *view = window->frameView();
+    view->setEditable(true);
+    connect(view, &FrameView::landmarksEdited, this, [this](const LandmarkSet &set, const QString &what) {
+        const int row = m_window->currentSequence();
+        if (row < 0 || !m_window->document()->requestLandmarks(row, m_window->currentFrame(), set, what))
+            refreshFrame();
+    });
+    ProjectDocument *doc = window->document();
+    connect(doc, &ProjectDocument::documentReset, this, &FacesController::onDocumentReset);
+    connect(doc, &ProjectDocument::sequenceChanged, this, &FacesController::onSequenceChanged);
+    connect(doc, &ProjectDocument::locationChanged, this, &FacesController::onLocationChanged);
+    connect(window, &MainWindow::currentFrameChanged, this, &FacesController::refreshFrame);
+    updateActions();
+}
+
+FacesController::~FacesController() = default;
+
+void FacesController::updateActions()
+{
+    const bool open = m_window->document()->isOpen();
+    for (QAction *a : {m_detect, m_copyPrevious, m_nextUnlabelled, m_buildAam, m_trackSequence, m_trackAll})
+        a->setEnabled(open);
+    m_nextWorst->setEnabled(open && !m_fitErrors.isEmpty());
+    m_modes->setEnabled(m_model != nullptr || open);
+}
+
+void FacesController::onDocumentReset()
+{
+    m_model.reset();
+    m_modelName.clear();
+    m_modelUnsaved = false;
+    m_fitErrors.clear();
+    if (m_modesView)
+        m_modesView->setModel(nullptr);
+    updateActions();
+}
+
+void FacesController::onSequenceChanged(int row)
+{
+    if (row == m_window->currentSequence())
+        refreshFrame();
+}
+
+void FacesController::onLocationChanged()
+{
+    // The demo's AAM lived in memory: the project now has a folder of its own to keep it in.
+    ProjectDocument *doc = m_window->document();
+    if (!m_model || !m_modelUnsaved || doc->isReadOnly() || doc->folder().isEmpty())
+        return;
+    const QString path = QDir(doc->folder()).filePath(modelFileName(m_modelName));
+    try {
+        QDir().mkpath(QFileInfo(path).absolutePath());
+        m_model->save(path.toStdString());
+        m_modelUnsaved = false;
+    } catch (const std::exception &e) {
+        ErrorReporter::report(m_window, tr("The AAM could not be saved with the project."), e);
+    }
+}
+
+void FacesController::refreshFrame()
+{
+    FrameView *view = m_window->frameView();
+    const int row = m_window->currentSequence();
+    const int frame = m_window->currentFrame();
+    if (row < 0 || row >= m_window->document()->sequenceCount()) {
+        view->setLandmarks(std::nullopt);
+        view->setOnionSkin(std::nullopt);
+        view->setInfoText({});
+        return;
+    }
+    const Sequence &s = m_window->document()->sequence(row);
+    const auto it = s.landmarks.find(frame);
+    view->setLandmarks(it != s.landmarks.end() ? std::optional<LandmarkSet>(it->second) : std::nullopt);
+    const auto prev = s.landmarks.find(frame - 1);
+    view->setOnionSkin(prev != s.landmarks.end() ? std::optional<LandmarkSet>(prev->second) : std::nullopt);
+    QString info;
+    const std::vector<double> errors = m_fitErrors.value(QString::fromStdString(s.id));
+    if (frame >= 0 && frame < int(errors.size()))
+        info = errors[std::size_t(frame)] >= 0 ? tr("Fit error %1").arg(errors[std::size_t(frame)], 0, 'f', 4)
+                                               : tr("No face found by the tracker");
+    view->setInfoText(info);
+    updateActions();
+}
+
+void FacesController::reportFailure(Task *task, const QString &what)
+{
+    connect(task, &Task::finished, this, [this, task, what](Task::State state) {
+        if (state == Task::State::Failed)
+            ErrorReporter::report(m_window, what, QString(), task->errorMessage());
+    });
+}
+
+Task *FacesController::detectLandmarks()
+{
+    const int row = m_window->currentSequence();
+    const int frame = m_window->currentFrame();
+    const auto media = m_window->media();
+    if (row < 0 || !media || frame < 0 || frame >= media->frameCount())
+        return nullptr;
+    const cv::Mat image = toBgr(media->frames[frame]);
+    const std::shared_ptr<const AamModel> model = m_model;
+    const QString sequenceId = QString::fromStdString(m_window->document()->sequence(row).id);
+    Task *task = m_window->taskRunner()->start(
+        tr("Detect landmarks in %1, frame %2").arg(sequenceId).arg(frame + 1),
+        [this, image, model, row, frame, sequenceId](Feedback &feedback) -> TaskRunner::Commit {
+            feedback.setStatus(tr("Finding the face…").toStdString());
+            FaceDetector detector;
+            feedback.throwIfCanceled();
+            const std::vector<FaceDetection> faces = detector.detect(image);
+            if (faces.empty())
+                throw Error("no face found in frame " + std::to_string(frame + 1) + " (detectors: "
+                                + detector.available() + ")",
+                            sequenceId.toStdString());
+            feedback.setProgress(0.5);
+            Eigen::VectorXd shape;
+            if (detector.hasDlib()) {
+                const Eigen::VectorXd ibug = detector.dlibLandmarks(image, faces.front());
+                if (ibug.size() == 2 * scheme23::kIbugPointCount)
+                    shape = mapIbug68To23(ibug);
+            }
+            if (shape.size() == 0 && model) {
+                const AamFitter fitter(*model);
+                shape = fitter.fit(image, initialShapeFromDetection(*model, faces.front())).shape;
+            }
+            if (shape.size() == 0)
+                shape = initialShapeFromDetection(templateShape(), faces.front());
+            feedback.setProgress(1.0);
+            return [this, shape, row, frame] {
+                ProjectDocument *doc = m_window->document();
+                if (row >= doc->sequenceCount())
+                    return;
+                const Sequence &s = doc->sequence(row);
+                const auto it = s.landmarks.find(frame);
+                const std::optional<LandmarkSet> existing =
+                    it != s.landmarks.end() ? std::optional<LandmarkSet>(it->second) : std::nullopt;
+                doc->requestLandmarks(row, frame, mergeAutomatic(existing, shape),
+                                      tr("Detect landmarks in frame %1").arg(frame + 1));
+            };
+        });
+    reportFailure(task, tr("No landmarks were detected."));
+    return task;
+}
+
+bool FacesController::copyPreviousFrame()
+{
+    const int row = m_window->currentSequence();
+    const int frame = m_window->currentFrame();
+    if (row < 0 || frame <= 0)
+        return false;
+    const Sequence &s = m_window->document()->sequence(row);
+    // The nearest labelled frame before this one.
+    auto it = s.landmarks.lower_bound(frame);
+    if (it == s.landmarks.begin())
+        return false;
+    --it;
+    LandmarkSet copy = it->second;
+    for (LandmarkPoint &p : copy.points)
+        if (p.isDefined())
+            p.state = PointState::Automatic; // not confirmed on this frame until the user touches it
+    return m_window->document()->requestLandmarks(row, frame, copy,
+                                                  tr("Copy points of frame %1 to frame %2").arg(it->first + 1).arg(frame + 1));
+}
+
+void FacesController::nextUnlabelledFrame()
+{
+    const int row = m_window->currentSequence();
+    const auto media = m_window->media();
+    if (row < 0 || !media || media->frameCount() == 0)
+        return;
+    const Sequence &s = m_window->document()->sequence(row);
+    const int n = media->frameCount();
+    for (int k = 1; k <= n; ++k) {
+        const int f = (m_window->currentFrame() + k) % n;
+        const auto it = s.landmarks.find(f);
+        if (it == s.landmarks.end() || !it->second.isComplete()) {
+            m_window->setCurrentFrame(f);
+            return;
+        }
+    }
+    m_window->statusBar()->showMessage(tr("Every frame of this sequence is labelled."), 4000);
+}
+
+void FacesController::nextWorstFrame()
+{
+    const int row = m_window->currentSequence();
+    if (row < 0)
+        return;
+    const std::vector<double> errors = m_fitErrors.value(QString::fromStdString(m_window->document()->sequence(row).id));
+    if (errors.empty()) {
+        m_window->statusBar()->showMessage(tr("Track this sequence first to rank its frames by fit error."), 4000);
+        return;
+    }
+    // Frames by falling fit error (no face first): W starts at the worst and, pressed again on the
+    // frame it went to, walks down that queue.
+    std::vector<int> order(errors.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+        order[i] = int(i);
+    auto key = [&](int f) { return errors[std::size_t(f)] < 0 ? 1e300 : errors[std::size_t(f)]; };
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) > key(b); });
+    const int current = m_window->currentFrame();
+    int rank = 0;
+    if (m_worstRank >= 0 && m_worstRank < int(order.size()) && order[std::size_t(m_worstRank)] == current)
+        rank = (m_worstRank + 1) % int(order.size());
+    m_worstRank = rank;
+    m_window->setCurrentFrame(order[std::size_t(rank)]);
+}
+
+bool FacesController::ensureModel()
+{
+    if (m_model)
+        return true;
+    const ProjectDocument *doc = m_window->document();
+    for (const ModelReference &ref : doc->project().models) {
+        if (ref.kind != "aam")
+            continue;
+        try {
+            m_model = std::make_shared<const AamModel>(AamModel::load(doc->project().resolve(ref.file)));
+            m_modelName = QString::fromStdString(ref.name);
+            updateActions();
+            return true;
+        } catch (const std::exception &e) {
+            ErrorReporter::report(m_window, tr("The project's AAM could not be loaded."), e);
+            return false;
+        }
+    }
+    return false;
+}
+
+Task *FacesController::buildAam()
+{
+    ProjectDocument *doc = m_window->document();
+    struct Labelled
+    {
+        std::string media;
+        std::string name;
+        int frame;
+        Eigen::VectorXd shape;
+    };
+    std::vector<Labelled> labelled;
+    for (int row = 0; row < doc->sequenceCount(); ++row) {
+        const Sequence &s = doc->sequence(row);
+        for (const auto &[frame, set] : s.landmarks)
+            if (set.isComplete())
+                labelled.push_back({doc->mediaPath(row).toStdString(), s.id + " frame " + std::to_string(frame + 1),
+                                    frame, shapeFromLandmarkSet(set)});
+    }
+    if (labelled.size() < 3) {
+        ErrorReporter::report(m_window, tr("An AAM needs at least 3 frames with all 23 points; this project has %1.")
+                                            .arg(labelled.size()),
+                              QString(), tr("Label more frames (Detect Landmarks, then correct the points)."));
+        return nullptr;
+    }
+    // One AAM per project: building again replaces it (file and reference).
+    const QString name = QStringLiteral("faces");
+    const QString target = doc->isReadOnly() ? QString() : QDir(doc->folder()).filePath(modelFileName(name));
+    Task *task = m_window->taskRunner()->start(
+        tr("Build AAM from %n frame(s)", "", int(labelled.size())),
+        [this, labelled, name, target](Feedback &feedback) -> TaskRunner::Commit {
+            feedback.setStatus(tr("Reading the labelled frames…").toStdString());
+            std::vector<AamTrainingExample> examples;
+            std::map<std::string, std::unique_ptr<VideoReader>> readers;
+            for (std::size_t i = 0; i < labelled.size(); ++i) {
+                feedback.throwIfCanceled();
+                const Labelled &l = labelled[i];
+                auto &reader = readers[l.media];
+                if (!reader)
+                    reader = std::make_unique<VideoReader>(l.media);
+                examples.push_back({l.name, {}, reader->frame(l.frame), l.shape});
+                feedback.setProgress(0.2 * double(i + 1) / double(labelled.size()));
+            }
+            readers.clear();
+            FaceDetectorPaths paths;
+            paths.useDlib = false;
+            FaceDetector detector(paths);
+            AamBuildOptions options;
+            if (detector.hasYunet() || detector.hasHaar())
+                options.detector = &detector;
+            Feedback sub(feedback, 0.2, 0.95);
+            std::vector<std::string> warnings;
+            auto model = std::make_shared<AamModel>(lipsync::buildAam(std::move(examples), options, sub, &warnings));
+            if (!target.isEmpty()) {
+                QDir().mkpath(QFileInfo(target).absolutePath());
+                model->save(target.toStdString());
+            }
+            feedback.setProgress(1.0);
+            return [this, model, name, target, warnings] {
+                m_model = model;
+                m_modelName = name;
+                m_modelUnsaved = target.isEmpty();
+                m_window->document()->requestAddModel({"aam", name.toStdString(), modelFileName(name).toStdString()},
+                                                      tr("Build AAM %1").arg(name));
+                if (m_modesView)
+                    m_modesView->setModel(m_model);
+                m_window->statusBar()->showMessage(
+                    tr("AAM %1 built from %2 frames: %3 combined modes%4")
+                        .arg(name)
+                        .arg(model->trainingImages)
+                        .arg(model->combinedModes())
+                        .arg(warnings.empty() ? QString() : tr(" (%n frame(s) skipped)", "", int(warnings.size()))),
+                    8000);
+                updateActions();
+            };
+        });
+    reportFailure(task, tr("The AAM could not be built."));
+    return task;
+}
+
+Task *FacesController::trackSequences(const QList<int> &rows)
+{
+    if (rows.isEmpty())
+        return nullptr;
+    if (!ensureModel()) {
+        ErrorReporter::report(m_window, tr("Tracking needs an AAM."), QString(),
+                              tr("Label a few frames and choose Faces ▸ Build AAM first."));
+        return nullptr;
+    }
+    ProjectDocument *doc = m_window->document();
+    struct Job
+    {
+        int row;
+        QString id;
+        std::string media;
+        int frameCount;
+        std::map<int, LandmarkSet> landmarks;
+    };
+    std::vector<Job> jobs;
+    for (int row : rows) {
+        const Sequence &s = doc->sequence(row);
+        jobs.push_back({row, QString::fromStdString(s.id), doc->mediaPath(row).toStdString(), s.frameCount, s.landmarks});
+    }
+    const std::shared_ptr<const AamModel> model = m_model;
+    const QString title = jobs.size() == 1 ? tr("Track %1").arg(jobs.front().id) : tr("Track %n sequence(s)", "", int(jobs.size()));
+    Task *task = m_window->taskRunner()->start(title, [this, jobs, model, title](Feedback &feedback) -> TaskRunner::Commit {
+        FaceDetectorPaths paths;
+        paths.useDlib = false;
+        FaceDetector detector(paths);
+        std::vector<ProjectDocument::FaceData> results;
+        std::vector<std::pair<QString, std::vector<double>>> errors;
+        for (std::size_t j = 0; j < jobs.size(); ++j) {
+            const Job &job = jobs[j];
+            feedback.setStatus(job.id.toStdString());
+            VideoReader video(job.media);
+            FaceTracker tracker(*model, detector.hasYunet() || detector.hasHaar() ? &detector : nullptr);
+            const int n = job.frameCount;
+            Eigen::MatrixXd features = Eigen::MatrixXd::Zero(n, model->combinedModes());
+            std::map<int, LandmarkSet> landmarks = job.landmarks;
+            std::vector<double> frameErrors(std::size_t(n), -1.0);
+            bool any = false;
+            for (int f = 0; f < n; ++f) {
+                feedback.throwIfCanceled();
+                feedback.setProgress((double(j) + double(f) / n) / double(jobs.size()));
+                const cv::Mat image = f < video.frameCount() ? video.frame(f) : cv::Mat();
+                const auto existing = landmarks.find(f);
+                std::optional<LandmarkSet> before;
+                if (existing != landmarks.end())
+                    before = existing->second;
+                AamFitOptions options;
+                if (before) {
+                    options.fixedShape = shapeFromLandmarkSet(*before);
+                    options.fixedMask.assign(std::size_t(LandmarkSet::kPointCount), false);
+                    bool anyFixed = false;
+                    for (int i = 0; i < LandmarkSet::kPointCount; ++i) {
+                        const bool user = isUserPoint(before->points[std::size_t(i)]);
+                        options.fixedMask[std::size_t(i)] = user;
+                        anyFixed = anyFixed || user;
+                    }
+                    if (!anyFixed) {
+                        options.fixedShape = {};
+                        options.fixedMask.clear();
+                    }
+                }
+                TrackedFrame tracked;
+                if (!image.empty())
+                    tracked = tracker.track(image, options);
+                if (!tracked.found) {
+                    if (!image.empty())
+                        tracker.reset();
+                    if (f > 0)
+                        features.row(f) = features.row(f - 1); // a gap holds the last face
+                    continue;
+                }
+                any = true;
+                features.row(f) = tracked.features.transpose();
+                frameErrors[std::size_t(f)] = tracked.fit.error;
+                landmarks[f] = mergeAutomatic(before, tracked.fit.shape);
+            }
+            if (!any)
+                throw Error("no face found in any of the " + std::to_string(n) + " frames", job.media);
+            // Frames before the first face take its features.
+            int first = 0;
+            while (first < n && frameErrors[std::size_t(first)] < 0)
+                ++first;
+            for (int f = 0; f < first; ++f)
+                features.row(f) = features.row(first);
+            results.push_back({job.row, std::move(landmarks), std::move(features)});
+            errors.emplace_back(job.id, std::move(frameErrors));
+        }
+        feedback.setProgress(1.0);
+        return [this, results, errors, title] {
+            for (const auto &[id, e] : errors)
+                m_fitErrors.insert(id, e);
+            m_window->document()->requestFaces(results, title);
+            refreshFrame();
+        };
+    });
+    reportFailure(task, tr("Tracking failed."));
+    return task;
+}
+
+void FacesController::showModes()
+{
+    ensureModel();
+    if (!m_modesView) {
+        m_modesView = new ModesView(m_window);
+        m_modesView->setAttribute(Qt::WA_DeleteOnClose);
+    }
+    m_modesView->setModel(m_model);
+    m_modesView->show();
+    m_modesView->raise();
+}
+
+} // namespace lipsync::studio

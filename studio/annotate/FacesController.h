@@ -1,0 +1,91 @@
+#pragma once
+// The faces workflow of the main window (issue #3 from the GUI side): the landmark editor on the
+// Annotate tab (the FrameView's edits become undoable document edits), and the Faces menu —
+// automatic landmarks (Ctrl+D), copy the previous frame's points (C), onion skin (O), next
+// unlabelled frame (N), next worst-fitted frame (W), Build AAM, Track Sequence / Track All, and
+// the modes-of-variation view. Detection, building and tracking run as TaskRunner tasks: the
+// worker never touches the document, the commit pushes one undo command.
+#include "aam/AamModel.h"
+
+#include <QCoreApplication>
+#include <QHash>
+#include <QObject>
+#include <QPointer>
+
+#include <memory>
+#include <vector>
+
+class QAction;
+class QMenu;
+
+namespace lipsync {
+class Task;
+}
+
+namespace lipsync::studio {
+
+class MainWindow;
+class ModesView;
+
+class FacesController : public QObject
+{
+    Q_OBJECT
+public:
+    explicit FacesController(MainWindow *window);
+    ~FacesController() override;
+
+    QMenu *menu() const { return m_menu; }
+    QAction *detectAction() const { return m_detect; }
+    QAction *copyPreviousAction() const { return m_copyPrevious; }
+    QAction *onionSkinAction() const { return m_onionSkin; }
+    QAction *nextUnlabelledAction() const { return m_nextUnlabelled; }
+    QAction *nextWorstAction() const { return m_nextWorst; }
+    QAction *buildAamAction() const { return m_buildAam; }
+    QAction *trackSequenceAction() const { return m_trackSequence; }
+    QAction *trackAllAction() const { return m_trackAll; }
+    QAction *modesAction() const { return m_modes; }
+
+    // The AAM in use (built this session or loaded from the project), or null.
+    std::shared_ptr<const AamModel> model() const { return m_model; }
+    // Per-frame fit errors of a tracked sequence (negative: no face), empty if not tracked.
+    std::vector<double> fitErrors(const QString &sequenceId) const { return m_fitErrors.value(sequenceId); }
+
+    // The actions, callable directly (tests). Each returns the task started, or null.
+    Task *detectLandmarks();
+    Task *buildAam();
+    Task *trackSequences(const QList<int> &rows);
+    bool copyPreviousFrame();
+    void nextUnlabelledFrame();
+    void nextWorstFrame();
+    void showModes();
+
+private:
+    void onDocumentReset();
+    void onSequenceChanged(int row);
+    void onLocationChanged();
+    void refreshFrame();
+    void updateActions();
+    bool ensureModel();
+    void reportFailure(Task *task, const QString &what);
+
+    MainWindow *m_window;
+    QMenu *m_menu = nullptr;
+    QAction *m_detect = nullptr;
+    QAction *m_copyPrevious = nullptr;
+    QAction *m_onionSkin = nullptr;
+    QAction *m_nextUnlabelled = nullptr;
+    QAction *m_nextWorst = nullptr;
+    QAction *m_buildAam = nullptr;
+    QAction *m_trackSequence = nullptr;
+    QAction *m_trackAll = nullptr;
+    QAction *m_modes = nullptr;
+    QPointer<ModesView> m_modesView;
+
+    std::shared_ptr<const AamModel> m_model;
+    QString m_modelName;
+    bool m_modelUnsaved = false; // built in the read-only demo: written when the project is saved
+    QHash<QString, std::vector<double>> m_fitErrors;
+    int m_worstRank = -1; // where W is in the current sequence's worst-fit queue
+};
+
+} // namespace lipsync::studio

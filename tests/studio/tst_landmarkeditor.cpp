@@ -1,0 +1,312 @@
+// The landmark editor on the Annotate tab, driven through the real widgets: clicks place points
+// in scheme order, a drag is one undo step (undo restores the point exactly, redo re-applies) and
+// makes the point Fixed, Delete undefines a point, C copies the previous frame's points, O toggles
+// the onion skin; automatic detection gives 23 Automatic points on the face; an AAM built from
+// labelled frames (and the demo's shipped AAM) tracks a whole clip into per-frame features, undone
+// in one step; W walks the worst fits; the modes view synthesises a face per mode.
+#include "aam/PtsFile.h"
+#include "annotate/FacesController.h"
+#include "annotate/FrameView.h"
+#include "app/ErrorReporter.h"
+#include "app/MainWindow.h"
+#include "app/ProjectDocument.h"
+#include "app/ProjectFiles.h"
+#include "app/SequenceMedia.h"
+#include "app/SurfaceFormat.h"
+#include "build/ModesView.h"
+#include "tasks/Task.h"
+#include "tasks/TaskRunner.h"
+
+#include <QAction>
+#include <QDir>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QTest>
+#include <QUndoStack>
+
+#include <cmath>
+
+using namespace lipsync;
+using namespace lipsync::studio;
+
+class TestLandmarkEditor : public QObject
+{
+    Q_OBJECT
+public:
+    static void initMain()
+    {
+        setDefaultSurfaceFormat();
+        QStandardPaths::setTestModeEnabled(true);
+    }
+
+private:
+    MainWindow *m_window = nullptr;
+
+    FrameView *view() const { return m_window->frameView(); }
+    std::optional<LandmarkSet> landmarksAt(int frame) const
+    {
+        const Sequence &s = m_window->document()->sequence(m_window->currentSequence());
+        const auto it = s.landmarks.find(frame);
+        return it != s.landmarks.end() ? std::optional<LandmarkSet>(it->second) : std::nullopt;
+    }
+    QPoint widgetPoint(double x, double y) const { return view()->imageToWidget(QPointF(x, y)).toPoint(); }
+    bool waitFor(Task *task, int timeout = 120000)
+    {
+        if (!task)
+            return false;
+        QSignalSpy finished(task, &Task::finished);
+        if (task->isRunning() && !finished.wait(timeout))
+            return false;
+        return task->state() == Task::State::Finished;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QCoreApplication::setOrganizationName(QStringLiteral("lipsync-tests"));
+        ErrorReporter::setBatchMode(true);
+        m_window = new MainWindow;
+        m_window->resize(1280, 800);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window));
+        QVERIFY(m_window->files()->openDemo());
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() != nullptr, 60000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 60000);
+        QVERIFY(view()->isEditable());
+    }
+
+    void cleanupTestCase() { delete m_window; }
+
+    void clicksPlacePointsInSchemeOrder()
+    {
+        m_window->setCurrentFrame(5);
+        QVERIFY(!landmarksAt(5));
+        QUndoStack *undo = m_window->undoStack();
+        const int before = undo->count();
+        const QList<QPointF> targets{{150, 120}, {160, 115}, {170, 120}};
+        for (const QPointF &t : targets)
+            QTest::mouseClick(view(), Qt::LeftButton, {}, widgetPoint(t.x(), t.y()));
+        QCOMPARE(undo->count(), before + 3);
+        const std::optional<LandmarkSet> set = landmarksAt(5);
+        QVERIFY(set);
+        QCOMPARE(set->definedCount(), 3);
+        const double tolerance = 1.0 / view()->zoom(); // one widget pixel in image pixels, and more
+        for (int i = 0; i < 3; ++i) {
+            const LandmarkPoint &p = set->points[std::size_t(i)];
+            QCOMPARE(p.state, PointState::Placed);
+            QVERIFY2(std::abs(p.x - targets[i].x()) <= tolerance && std::abs(p.y - targets[i].y()) <= tolerance,
+                     qPrintable(QStringLiteral("point %1 at %2,%3").arg(i).arg(p.x).arg(p.y)));
+        }
+        QCOMPARE(view()->nextUndefinedPoint(), 3);
+        QCOMPARE(m_window->document()->sequence(0).landmarks.size(), std::size_t(1));
+    }
+
+    void dragIsOneUndoStepAndFixesThePoint()
+    {
+        QUndoStack *undo = m_window->undoStack();
+        const LandmarkSet before = *landmarksAt(5);
+        const LandmarkPoint p1 = before.points[1];
+        const int count = undo->count();
+        const QPoint start = widgetPoint(p1.x, p1.y);
+        QTest::mousePress(view(), Qt::LeftButton, {}, start);
+        QTest::mouseMove(view(), start + QPoint(10, 4));
+        QTest::mouseMove(view(), start + QPoint(20, 8));
+        QTest::mouseMove(view(), start + QPoint(30, 12));
+        QTest::mouseRelease(view(), Qt::LeftButton, {}, start + QPoint(30, 12));
+        QCOMPARE(undo->count(), count + 1); // the whole drag
+        const LandmarkSet after = *landmarksAt(5);
+        QCOMPARE(after.points[1].state, PointState::Fixed);
+        const QPointF moved = view()->widgetToImage(QPointF(start + QPoint(30, 12)));
+        QVERIFY(std::abs(after.points[1].x - moved.x()) < 1e-6 && std::abs(after.points[1].y - moved.y()) < 1e-6);
+        QCOMPARE(after.points[0], before.points[0]);
+        QCOMPARE(after.points[2], before.points[2]);
+
+        undo->undo();
+        QCOMPARE(*landmarksAt(5), before); // exactly, state included
+        QCOMPARE(*view()->landmarks(), before);
+        undo->redo();
+        QCOMPARE(*landmarksAt(5), after);
+        QCOMPARE(*view()->landmarks(), after);
+    }
+
+    void deleteUndefinesTheSelectedPoint()
+    {
+        QUndoStack *undo = m_window->undoStack();
+        const LandmarkSet before = *landmarksAt(5);
+        const LandmarkPoint p2 = before.points[2];
+        QTest::mouseClick(view(), Qt::LeftButton, {}, widgetPoint(p2.x, p2.y)); // selects, places nothing
+        QCOMPARE(*landmarksAt(5), before);
+        QCOMPARE(view()->selectedPoint(), 2);
+        QTest::keyClick(view(), Qt::Key_Delete);
+        QVERIFY(!landmarksAt(5)->points[2].isDefined());
+        QCOMPARE(view()->nextUndefinedPoint(), 2); // the next click fills the gap
+        undo->undo();
+        QCOMPARE(*landmarksAt(5), before);
+    }
+
+    void copyPreviousFrameAndOnionSkin()
+    {
+        const LandmarkSet source = *landmarksAt(5);
+        m_window->setCurrentFrame(6);
+        QVERIFY(!landmarksAt(6));
+        QTest::keyClick(m_window, Qt::Key_C);
+        const std::optional<LandmarkSet> copy = landmarksAt(6);
+        QVERIFY(copy);
+        QCOMPARE(copy->definedCount(), source.definedCount());
+        for (int i = 0; i < LandmarkSet::kPointCount; ++i) {
+            QCOMPARE(copy->points[std::size_t(i)].x, source.points[std::size_t(i)].x);
+            QCOMPARE(copy->points[std::size_t(i)].isDefined(), source.points[std::size_t(i)].isDefined());
+        }
+        m_window->undoStack()->undo();
+        QVERIFY(!landmarksAt(6));
+        QVERIFY(!view()->landmarks());
+
+        QVERIFY(!view()->isOnionSkinVisible());
+        const QImage without = view()->grab().toImage();
+        QTest::keyClick(m_window, Qt::Key_O);
+        QVERIFY(view()->isOnionSkinVisible());
+        const QImage with = view()->grab().toImage();
+        QVERIFY(with != without); // frame 5's points drawn over frame 6
+        QTest::keyClick(m_window, Qt::Key_O);
+        QVERIFY(!view()->isOnionSkinVisible());
+    }
+
+    void detectionGivesAutomaticPointsOnTheFace()
+    {
+        m_window->setCurrentFrame(10);
+        const int index = m_window->undoStack()->index();
+        QVERIFY(waitFor(m_window->faces()->detectLandmarks()));
+        QCOMPARE(m_window->undoStack()->index(), index + 1);
+        const std::optional<LandmarkSet> set = landmarksAt(10);
+        QVERIFY(set);
+        QVERIFY(set->isComplete());
+        const QImage &image = m_window->media()->frames[10];
+        double cx = 0, cy = 0;
+        for (const LandmarkPoint &p : set->points) {
+            QCOMPARE(p.state, PointState::Automatic);
+            QVERIFY(p.x >= 0 && p.y >= 0 && p.x < image.width() && p.y < image.height());
+            cx += p.x / LandmarkSet::kPointCount;
+            cy += p.y / LandmarkSet::kPointCount;
+        }
+        // GRID s1 sits in the middle of the 360x288 frame; the eyes are apart by a face's width.
+        QVERIFY2(cx > 0.3 * image.width() && cx < 0.7 * image.width() && cy > 0.3 * image.height()
+                     && cy < 0.8 * image.height(),
+                 qPrintable(QStringLiteral("centroid %1,%2").arg(cx).arg(cy)));
+        const double eyes = std::hypot(set->points[6].x - set->points[0].x, set->points[6].y - set->points[0].y);
+        QVERIFY2(eyes > 30 && eyes < 150, qPrintable(QStringLiteral("eye distance %1").arg(eyes)));
+        QVERIFY(set->points[0].x < set->points[6].x);             // image-left eye on the left
+        QVERIFY(set->points[20].y > set->points[10].y);            // chin below the upper lip
+        // For looking at: the Annotate tab with the detected points (and the onion skin of 9).
+        if (const QByteArray dir = qgetenv("LIPSYNC_SCREENSHOT_DIR"); !dir.isEmpty()) {
+            view()->setZoom(2.0, view()->imageToWidget(QPointF(cx, cy)));
+            m_window->grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("annotate-landmarks.png")));
+            view()->fitToView();
+        }
+        m_window->undoStack()->undo();
+        QVERIFY(!landmarksAt(10));
+        m_window->undoStack()->redo();
+        QVERIFY(landmarksAt(10));
+
+        // N skips labelled frames: from 9, frame 10 is complete, 11 is not.
+        m_window->setCurrentFrame(9);
+        QTest::keyClick(m_window, Qt::Key_N);
+        QCOMPARE(m_window->currentFrame(), 11);
+    }
+
+    void tracksWithTheProjectsAam()
+    {
+        // The demo references a shipped AAM: tracking loads it without building one.
+        ProjectDocument *doc = m_window->document();
+        bool hasAam = false;
+        for (const ModelReference &m : doc->project().models)
+            hasAam = hasAam || m.kind == "aam";
+        if (!hasAam)
+            QSKIP("the demo ships no AAM");
+        QVERIFY(!m_window->faces()->model());
+        const int index = m_window->undoStack()->index();
+        QVERIFY(waitFor(m_window->faces()->trackSequences({4})));
+        QVERIFY(m_window->faces()->model());
+        const Sequence &s = doc->sequence(4);
+        QCOMPARE(int(s.features.rows()), s.frameCount);
+        QCOMPARE(int(s.features.cols()), m_window->faces()->model()->combinedModes());
+        QVERIFY(int(s.landmarks.size()) >= s.frameCount - 5);
+        QCOMPARE(m_window->undoStack()->index(), index + 1);
+        m_window->undoStack()->undo();
+        QVERIFY(doc->sequence(4).landmarks.empty());
+    }
+
+    void buildAamAndTrackASequence()
+    {
+        // Label a few frames of the first clips with dlib's points of held-out frames of the same
+        // speaker (tests/data/faces/grid): same camera, so near enough to train on.
+        ProjectDocument *doc = m_window->document();
+        const QDir data(QStringLiteral(LIPSYNC_TEST_DATA "/faces/grid"));
+        const QStringList pts = data.entryList({QStringLiteral("*_22.pts")}, QDir::Files, QDir::Name);
+        QVERIFY(pts.size() >= 6);
+        for (int i = 0; i < 6; ++i) {
+            const LandmarkSet set = readLandmarkSet(data.filePath(pts[i]).toStdString(), PointState::Placed);
+            QVERIFY(doc->requestLandmarks(1 + i % 3, 20 + 10 * i, set, QStringLiteral("label")));
+        }
+        Task *build = m_window->faces()->buildAam();
+        QVERIFY(waitFor(build));
+        const auto model = m_window->faces()->model();
+        QVERIFY(model);
+        QVERIFY(model->combinedModes() >= 1);
+        QCOMPARE(doc->project().models.back().kind, std::string("aam"));
+        QVERIFY(doc->isModified()); // the read-only demo keeps the model in memory
+
+        const Eigen::MatrixXd featuresBefore = doc->sequence(0).features; // the demo ships some
+        Task *track = m_window->faces()->trackSequences({0});
+        QVERIFY(waitFor(track));
+        const Sequence &s = doc->sequence(0);
+        QCOMPARE(int(s.features.rows()), 75);
+        QCOMPARE(int(s.features.cols()), model->combinedModes());
+        QVERIFY(s.features.allFinite());
+        QVERIFY(s.landmarks.size() >= 70);
+        // The user's points on frame 5 stayed as they were.
+        const LandmarkSet &five = s.landmarks.at(5);
+        QCOMPARE(five.points[1].state, PointState::Fixed);
+        QCOMPARE(five.points[0].state, PointState::Placed);
+        const std::vector<double> errors = m_window->faces()->fitErrors(QStringLiteral("bbaf2n"));
+        QCOMPARE(int(errors.size()), 75);
+
+        // W walks the worst-fitted frames.
+        m_window->setCurrentFrame(0);
+        QTest::keyClick(m_window, Qt::Key_W);
+        const int worst = m_window->currentFrame();
+        for (double e : errors)
+            QVERIFY(e <= errors[std::size_t(worst)] || errors[std::size_t(worst)] < 0);
+        QTest::keyClick(m_window, Qt::Key_W);
+        const int second = m_window->currentFrame();
+        QVERIFY(second != worst);
+        for (std::size_t f = 0; f < errors.size(); ++f)
+            if (int(f) != worst && errors[std::size_t(worst)] >= 0)
+                QVERIFY(errors[f] <= errors[std::size_t(second)] || errors[std::size_t(second)] < 0);
+
+        // Undo takes the whole track back in one step.
+        QCOMPARE(m_window->undoStack()->undoText(), QStringLiteral("Track bbaf2n"));
+        m_window->undoStack()->undo();
+        QVERIFY(doc->sequence(0).features.rows() == featuresBefore.rows()
+                && doc->sequence(0).features.cols() == featuresBefore.cols());
+        QVERIFY(featuresBefore.size() == 0 || doc->sequence(0).features == featuresBefore);
+        QCOMPARE(doc->sequence(0).landmarks.size(), std::size_t(2)); // frames 5 and 10 again
+
+        // The modes view synthesises a face that changes with the first mode.
+        m_window->faces()->showModes();
+        ModesView *modes = m_window->findChild<ModesView *>();
+        QVERIFY(modes);
+        const QImage mean = modes->face();
+        QVERIFY(!mean.isNull());
+        modes->setMode(0, 3.0);
+        QVERIFY(modes->face() != mean);
+        if (const QByteArray dir = qgetenv("LIPSYNC_SCREENSHOT_DIR"); !dir.isEmpty())
+            modes->grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("annotate-modes.png")));
+        modes->close();
+    }
+};
+
+QTEST_MAIN(TestLandmarkEditor)
+#include "tst_landmarkeditor.moc"
