@@ -1,10 +1,27 @@
 #include "timeline/TimelinePanel.h"
 
+#include "align/FrameLabels.h"
+#include "app/ErrorReporter.h"
+#include "app/MainWindow.h"
+#include "app/ProjectDocument.h"
+#include "app/SequenceMedia.h"
+#include "preview/PlaybackController.h"
+#include "tasks/TaskRunner.h"
+#include "timeline/AlignTask.h"
+#include "timeline/TimelinePlayer.h"
 #include "timeline/WaveformView.h"
+#include "util/PhoneSet.h"
 
+#include <QAction>
+#include <QComboBox>
+#include <QFocusEvent>
 #include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLineEdit>
 #include <QScrollBar>
+#include <QStatusBar>
 #include <QToolButton>
+#include <QUndoStack>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -14,18 +31,80 @@ namespace lipsync::studio {
 namespace {
 // The scroll bar counts milliseconds.
 constexpr double kUnitsPerSecond = 1000.0;
+
+// Closes the relabel editor on Escape and when it loses focus (not to its own popup).
+class EditorFilter : public QObject
+{
+public:
+    EditorFilter(QObject *parent, std::function<void()> close) : QObject(parent), m_close(std::move(close)) {}
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override
+    {
+        if (event->type() == QEvent::KeyPress && static_cast<QKeyEvent *>(event)->key() == Qt::Key_Escape) {
+            m_close();
+            return true;
+        }
+        if (event->type() == QEvent::FocusOut
+            && static_cast<QFocusEvent *>(event)->reason() != Qt::PopupFocusReason)
+            m_close();
+        return QObject::eventFilter(watched, event);
+    }
+
+private:
+    std::function<void()> m_close;
+};
 } // namespace
 
 TimelinePanel::TimelinePanel(QWidget *parent)
-    : QWidget(parent), m_waveform(new WaveformView(this)), m_scroll(new QScrollBar(Qt::Horizontal, this))
+    : QWidget(parent), m_waveform(new WaveformView(this)), m_scroll(new QScrollBar(Qt::Horizontal, this)),
+      m_player(new TimelinePlayer(this))
 {
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
     layout->addWidget(m_waveform, 1);
 
+    // Actions: buttons below the view, the editing ones in the view's context menu with keys
+    // that work while the view has focus.
+    auto makeAction = [this](const QString &text, const QString &tip, const QKeySequence &key = {}) {
+        auto *a = new QAction(text, this);
+        a->setToolTip(key.isEmpty() ? tip : QStringLiteral("%1 (%2)").arg(tip, key.toString(QKeySequence::NativeText)));
+        if (!key.isEmpty()) {
+            a->setShortcut(key);
+            a->setShortcutContext(Qt::WidgetShortcut);
+        }
+        return a;
+    };
+    m_align = makeAction(tr("Align"), tr("Align this sequence's transcript to its audio (words and phones)"));
+    m_alignAll = makeAction(tr("Align All"), tr("Align every sequence that has a transcript"));
+    m_realign = makeAction(tr("Re-align Selection"),
+                           tr("Align the selected stretch again, keeping the words whose timing you edited"));
+    m_split = makeAction(tr("Split at Cursor"), tr("Split the interval under the cursor"), QKeySequence(Qt::Key_S));
+    m_merge = makeAction(tr("Merge with Next"), tr("Join the selected interval with the next one"),
+                         QKeySequence(Qt::Key_M));
+    m_relabel = makeAction(tr("Relabel…"), tr("Change the label of the selected interval"),
+                           QKeySequence(Qt::Key_Return));
+    m_insertSilence = makeAction(tr("Insert Silence"), tr("Make the selection a silence"), QKeySequence(Qt::Key_I));
+    m_insertBreath = makeAction(tr("Insert Breath"), tr("Make the selection a breath"), QKeySequence(Qt::Key_B));
+    m_playSelection = makeAction(tr("Play Selection"), tr("Play the selected stretch (Space in the timeline)"));
+    m_playWord = makeAction(tr("Play Word"), tr("Play the word under the cursor"));
+    m_playAll = makeAction(tr("Play All"), tr("Play the whole sequence"));
+    m_relabel->setShortcuts({QKeySequence(Qt::Key_Return), QKeySequence(Qt::Key_Enter)});
+    for (QAction *a : {m_split, m_merge, m_relabel, m_insertSilence, m_insertBreath, m_playSelection})
+        m_waveform->addAction(a);
+    m_waveform->setContextMenuPolicy(Qt::ActionsContextMenu);
+
     auto *bar = new QHBoxLayout;
     bar->setContentsMargins(4, 0, 4, 2);
+    bar->setSpacing(2);
+    auto addButton = [this, bar](QAction *action) {
+        auto *b = new QToolButton(this);
+        b->setDefaultAction(action);
+        b->setAutoRaise(true);
+        bar->addWidget(b);
+        return b;
+    };
     auto makeButton = [this, bar](const QString &text, const QString &tip) {
         auto *b = new QToolButton(this);
         b->setText(text);
@@ -34,6 +113,8 @@ TimelinePanel::TimelinePanel(QWidget *parent)
         bar->addWidget(b);
         return b;
     };
+    for (QAction *a : {m_align, m_alignAll, m_realign, m_playSelection, m_playWord, m_playAll})
+        addButton(a);
     bar->addWidget(m_scroll, 1);
     QToolButton *zoomOut = makeButton(QStringLiteral("−"), tr("Zoom out (wheel down)"));
     QToolButton *zoomIn = makeButton(QStringLiteral("+"), tr("Zoom in (wheel up)"));
@@ -48,7 +129,31 @@ TimelinePanel::TimelinePanel(QWidget *parent)
         if (!m_syncing)
             m_waveform->setViewStart(value / kUnitsPerSecond);
     });
+
+    connect(m_align, &QAction::triggered, this, &TimelinePanel::alignSequence);
+    connect(m_alignAll, &QAction::triggered, this, &TimelinePanel::alignAll);
+    connect(m_realign, &QAction::triggered, this, &TimelinePanel::realignSelection);
+    connect(m_split, &QAction::triggered, this, &TimelinePanel::splitAtCursor);
+    connect(m_merge, &QAction::triggered, this, &TimelinePanel::mergeWithNext);
+    connect(m_relabel, &QAction::triggered, this, &TimelinePanel::relabelSelected);
+    connect(m_insertSilence, &QAction::triggered, this, &TimelinePanel::insertSilence);
+    connect(m_insertBreath, &QAction::triggered, this, &TimelinePanel::insertBreath);
+    connect(m_playSelection, &QAction::triggered, this, &TimelinePanel::playSelection);
+    connect(m_playWord, &QAction::triggered, this, &TimelinePanel::playWord);
+    connect(m_playAll, &QAction::triggered, this, &TimelinePanel::playAll);
+
+    connect(m_waveform, &WaveformView::boundaryDragStarted, this, &TimelinePanel::onDragStarted);
+    connect(m_waveform, &WaveformView::boundaryDragged, this, &TimelinePanel::onDragged);
+    connect(m_waveform, &WaveformView::boundaryDragFinished, this, [this] { m_dragKey = -1; });
+    connect(m_waveform, &WaveformView::relabelRequested, this, &TimelinePanel::openEditor);
+    connect(m_waveform, &WaveformView::playRequested, this, &TimelinePanel::togglePlay);
+    connect(m_waveform, &WaveformView::selectionChanged, this, &TimelinePanel::updateActions);
+    connect(m_player, &TimelinePlayer::positionChanged, this, [this](double t) {
+        m_waveform->requestTime(t);
+        m_waveform->setCursorTime(t);
+    });
     syncScrollBar();
+    updateActions();
 }
 
 void TimelinePanel::syncScrollBar()
@@ -62,6 +167,398 @@ void TimelinePanel::syncScrollBar()
     m_scroll->setValue(int(std::lround(m_waveform->viewStart() * kUnitsPerSecond)));
     m_scroll->setEnabled(total > page);
     m_syncing = false;
+}
+
+void TimelinePanel::attach(MainWindow *window)
+{
+    m_window = window;
+    m_document = window->document();
+    m_waveform->setEditable(true);
+    connect(m_document, &ProjectDocument::documentReset, this, [this] { showSequence(-1); });
+    connect(m_document, &ProjectDocument::sequenceChanged, this, [this](int row) {
+        if (row == m_row)
+            refresh();
+        updateActions();
+    });
+    connect(window, &MainWindow::sequenceLoaded, this, [this] { showSequence(m_window->currentSequence()); });
+    connect(window->playback(), &PlaybackController::playingChanged, this, [this](bool playing) {
+        if (playing)
+            m_player->stop();
+    });
+    connect(window->taskRunner(), &TaskRunner::taskFinished, this, [this] { updateActions(); });
+    updateActions();
+}
+
+void TimelinePanel::showSequence(int row)
+{
+    closeEditor();
+    m_player->stop();
+    m_row = m_document && row < m_document->sequenceCount() ? row : -1;
+    m_dragKey = -1;
+    m_player->setMedia(m_row >= 0 ? m_document->mediaPath(m_row) : QString());
+    m_waveform->clearSelection();
+    refresh();
+}
+
+void TimelinePanel::refresh()
+{
+    if (!m_document || m_row < 0) {
+        m_waveform->setPhones({});
+        m_waveform->setFrameLabels({}, 25.0);
+        updateActions();
+        return;
+    }
+    const Sequence &s = m_document->sequence(m_row);
+    m_waveform->setWords(s.words);
+    m_waveform->setPhones(s.phones);
+    int frames = s.frameCount;
+    if (frames <= 0 && m_window->media())
+        frames = m_window->media()->frameCount();
+    m_waveform->setFrameLabels(s.phones.isEmpty() ? std::vector<std::string>{}
+                                                  : voteFrameLabels(s.phones, s.frameRate, frames),
+                               s.frameRate);
+    updateActions();
+}
+
+void TimelinePanel::updateActions()
+{
+    const bool open = m_document && m_row >= 0;
+    const bool aligning = m_alignTask && m_alignTask->isRunning();
+    const bool transcript = open && !m_document->sequence(m_row).transcript.empty();
+    double a = 0, b = 0;
+    const bool selection = open && m_waveform->selection(&a, &b);
+    m_align->setEnabled(transcript && !aligning);
+    m_alignAll->setEnabled(m_document && m_document->sequenceCount() > 0 && !aligning);
+    m_realign->setEnabled(selection && !aligning && !m_waveform->words().isEmpty());
+    for (QAction *act : {m_split, m_merge, m_relabel})
+        act->setEnabled(open);
+    m_insertSilence->setEnabled(selection);
+    m_insertBreath->setEnabled(selection);
+    m_playSelection->setEnabled(open);
+    m_playWord->setEnabled(open);
+    m_playAll->setEnabled(open);
+}
+
+TierPair TimelinePanel::currentTiers() const
+{
+    if (!m_document || m_row < 0)
+        return {};
+    const Sequence &s = m_document->sequence(m_row);
+    return TierPair{s.words, s.phones};
+}
+
+bool TimelinePanel::edit(const TierPair &next, const QString &text, int mergeKey)
+{
+    if (!m_document || m_row < 0)
+        return false;
+    return m_document->requestTiersChange(m_row, next.words, next.phones, text, mergeKey);
+}
+
+// --- alignment ---
+
+void TimelinePanel::alignSequence()
+{
+    if (!m_document || m_row < 0)
+        return;
+    const Sequence &s = m_document->sequence(m_row);
+    AlignJob job;
+    job.row = m_row;
+    job.sequenceId = QString::fromStdString(s.id);
+    job.mediaPath = m_document->mediaPath(m_row);
+    job.transcript = s.transcript;
+    startAlignment(tr("Align %1").arg(job.sequenceId), {job});
+}
+
+void TimelinePanel::alignAll()
+{
+    if (!m_document)
+        return;
+    std::vector<AlignJob> jobs;
+    for (int row = 0; row < m_document->sequenceCount(); ++row) {
+        const Sequence &s = m_document->sequence(row);
+        if (s.transcript.empty())
+            continue;
+        AlignJob job;
+        job.row = row;
+        job.sequenceId = QString::fromStdString(s.id);
+        job.mediaPath = m_document->mediaPath(row);
+        job.transcript = s.transcript;
+        jobs.push_back(std::move(job));
+    }
+    if (jobs.empty()) {
+        ErrorReporter::report(this, tr("No sequence has a transcript to align."), QString(), QString());
+        return;
+    }
+    startAlignment(tr("Align all sequences"), std::move(jobs));
+}
+
+void TimelinePanel::realignSelection()
+{
+    double a = 0, b = 0;
+    if (!m_document || m_row < 0 || !m_waveform->selection(&a, &b))
+        return;
+    const TierPair tiers = currentTiers();
+    AlignJob job;
+    job.row = m_row;
+    job.sequenceId = QString::fromStdString(m_document->sequence(m_row).id);
+    job.mediaPath = m_document->mediaPath(m_row);
+    job.current = tiers;
+    job.stretches = realignStretches(tiers, a, b);
+    if (job.stretches.empty()) {
+        if (m_window)
+            m_window->statusBar()->showMessage(
+                tr("Nothing to re-align: the selection holds no words, or only words you edited."), 5000);
+        return;
+    }
+    startAlignment(tr("Re-align %1").arg(job.sequenceId), {job});
+}
+
+void TimelinePanel::startAlignment(const QString &title, std::vector<AlignJob> jobs)
+{
+    if (!m_window)
+        return;
+    QPointer<TimelinePanel> self(this);
+    Task *task = lipsync::studio::startAlignment(*m_window->taskRunner(), title, std::move(jobs),
+                                                 [self, title](std::vector<AlignOutcome> outcomes) {
+                                                     if (self)
+                                                         self->applyAlignment(title, std::move(outcomes));
+                                                 });
+    m_alignTask = task;
+    connect(task, &Task::finished, this, [this, task](Task::State state) {
+        if (state == Task::State::Failed)
+            ErrorReporter::report(m_window, tr("The alignment failed."), QString(), task->errorMessage());
+        updateActions();
+    });
+    updateActions();
+    emit alignmentStarted(task);
+}
+
+void TimelinePanel::applyAlignment(const QString &title, std::vector<AlignOutcome> outcomes)
+{
+    if (!m_document)
+        return;
+    QStringList failed;
+    QString file;
+    QUndoStack *undo = m_window->undoStack();
+    int ok = 0;
+    for (const AlignOutcome &o : outcomes)
+        ok += o.ok ? 1 : 0;
+    if (ok > 1)
+        undo->beginMacro(title);
+    for (const AlignOutcome &o : outcomes) {
+        // The document may have changed meanwhile: find the sequence by id.
+        if (!o.ok) {
+            failed << QStringLiteral("%1: %2").arg(o.sequenceId, o.error);
+            file = o.errorFile;
+            continue;
+        }
+        int row = o.row;
+        if (row >= m_document->sequenceCount()
+            || QString::fromStdString(m_document->sequence(row).id) != o.sequenceId)
+            continue;
+        m_document->requestTiersChange(row, o.tiers.words, o.tiers.phones, title);
+    }
+    if (ok > 1)
+        undo->endMacro();
+    if (!failed.isEmpty())
+        ErrorReporter::report(m_window, tr("%n sequence(s) could not be aligned; the others were.", "", int(failed.size())),
+                              failed.size() == 1 ? file : QString(), failed.join(QLatin1Char('\n')));
+}
+
+// --- edits ---
+
+void TimelinePanel::onDragStarted(TierKind, int, int drag)
+{
+    closeEditor();
+    m_dragBase = currentTiers();
+    m_dragKey = drag;
+    ++m_dragMergeKey;
+}
+
+void TimelinePanel::onDragged(TierKind kind, int boundary, double time, int drag)
+{
+    if (drag != m_dragKey)
+        return;
+    TierPair next = m_dragBase;
+    tieredit::moveBoundary(next, kind, boundary, time);
+    // Every move of one drag carries the same key: the stack merges them into one step, and
+    // back at the start the step disappears.
+    edit(next, kind == TierKind::Words ? tr("Move word boundary") : tr("Move phone boundary"), m_dragMergeKey);
+}
+
+void TimelinePanel::splitAtCursor()
+{
+    const TierKind kind = m_waveform->activeTier();
+    TierPair next = currentTiers();
+    if (tieredit::split(next, kind, m_waveform->cursorTime()))
+        edit(next, tr("Split interval"));
+}
+
+void TimelinePanel::mergeWithNext()
+{
+    const TierKind kind = m_waveform->activeTier();
+    TierPair next = currentTiers();
+    int index = m_waveform->selectedInterval();
+    if (index < 0)
+        index = next[kind].indexAt(m_waveform->cursorTime());
+    if (tieredit::mergeWithNext(next, kind, index) && edit(next, tr("Merge intervals")))
+        m_waveform->selectInterval(kind, index);
+}
+
+void TimelinePanel::relabelSelected()
+{
+    const TierKind kind = m_waveform->activeTier();
+    int index = m_waveform->selectedInterval();
+    if (index < 0)
+        index = m_waveform->tier(kind).indexAt(m_waveform->cursorTime());
+    if (index >= 0)
+        openEditor(kind, index);
+}
+
+void TimelinePanel::insertSilence()
+{
+    insertInterval("sil");
+}
+
+void TimelinePanel::insertBreath()
+{
+    insertInterval("br");
+}
+
+void TimelinePanel::insertInterval(const std::string &label)
+{
+    double a = 0, b = 0;
+    if (!m_waveform->selection(&a, &b))
+        return;
+    const TierKind kind = m_waveform->activeTier();
+    TierPair next = currentTiers();
+    if (tieredit::insertInterval(next, kind, a, b, label)
+        && edit(next, label == "br" ? tr("Insert breath") : tr("Insert silence")))
+        m_waveform->selectInterval(kind, next[kind].indexAt((tieredit::snap(a) + tieredit::snap(b)) / 2));
+}
+
+// --- relabel editor ---
+
+void TimelinePanel::openEditor(TierKind kind, int index)
+{
+    closeEditor();
+    const Tier &tier = m_waveform->tier(kind);
+    if (!m_document || m_row < 0 || index < 0 || index >= int(tier.intervals.size()))
+        return;
+    const Interval &iv = tier.intervals[size_t(index)];
+    const QRect lane = m_waveform->laneRect(kind == TierKind::Words ? WaveformView::Lane::Words
+                                                                     : WaveformView::Lane::Phones);
+    const int x0 = int(m_waveform->xAt(iv.start));
+    const int x1 = int(m_waveform->xAt(iv.end));
+    const int w = std::max(x1 - x0, kind == TierKind::Words ? 110 : 80);
+    QLineEdit *line = nullptr;
+    if (kind == TierKind::Phones) {
+        auto *combo = new QComboBox(m_waveform);
+        combo->setEditable(true);
+        combo->setInsertPolicy(QComboBox::NoInsert);
+        for (std::string_view label : PhoneSet::labels())
+            combo->addItem(QString::fromLatin1(label.data(), int(label.size())));
+        combo->setCurrentText(QString::fromStdString(iv.label));
+        connect(combo, &QComboBox::activated, this, [this] { commitEditor(); });
+        line = combo->lineEdit();
+        m_editor = combo;
+    } else {
+        line = new QLineEdit(QString::fromStdString(iv.label), m_waveform);
+        m_editor = line;
+    }
+    m_editor->setObjectName(QStringLiteral("relabelEditor"));
+    m_editorTier = kind;
+    m_editorIndex = index;
+    auto *filter = new EditorFilter(m_editor, [this] { closeEditor(); });
+    line->installEventFilter(filter);
+    connect(line, &QLineEdit::returnPressed, this, &TimelinePanel::commitEditor);
+    connect(line, &QLineEdit::textEdited, this, [this, line] {
+        line->setStyleSheet(QString());
+        line->setToolTip(QString());
+    });
+    const int h = std::max(lane.height() + 4, m_editor->sizeHint().height());
+    m_editor->setGeometry(std::clamp(x0, 0, std::max(0, m_waveform->width() - w)), lane.center().y() - h / 2, w, h);
+    m_editor->show();
+    line->selectAll();
+    m_editor->setFocus(Qt::OtherFocusReason);
+}
+
+void TimelinePanel::commitEditor()
+{
+    if (!m_editor || m_closingEditor)
+        return;
+    auto *combo = qobject_cast<QComboBox *>(m_editor.data());
+    QLineEdit *line = combo ? combo->lineEdit() : qobject_cast<QLineEdit *>(m_editor.data());
+    const std::string label = tieredit::validLabel(m_editorTier, line->text());
+    if (label.empty()) {
+        line->setStyleSheet(QStringLiteral("background: #7f1d1d; color: white;"));
+        line->setToolTip(m_editorTier == TierKind::Phones ? tr("Not one of the 41 phones (ARPAbet, sil, br)")
+                                                          : tr("Enter one word"));
+        return;
+    }
+    const TierKind kind = m_editorTier;
+    const int index = m_editorIndex;
+    closeEditor();
+    TierPair next = currentTiers();
+    if (tieredit::relabel(next, kind, index, label))
+        edit(next, tr("Relabel as %1").arg(QString::fromStdString(label)));
+    m_waveform->selectInterval(kind, index);
+    m_waveform->setFocus(Qt::OtherFocusReason);
+}
+
+void TimelinePanel::closeEditor()
+{
+    if (!m_editor || m_closingEditor)
+        return;
+    m_closingEditor = true;
+    QWidget *editor = m_editor;
+    m_editor = nullptr;
+    editor->hide();
+    editor->deleteLater();
+    m_closingEditor = false;
+}
+
+// --- playback ---
+
+void TimelinePanel::playSelection()
+{
+    double a = 0, b = 0;
+    if (!m_waveform->selection(&a, &b)) {
+        a = m_waveform->cursorTime();
+        b = m_waveform->duration();
+    }
+    if (m_window)
+        m_window->playback()->pause();
+    m_player->setAudioEnabled(!ErrorReporter::isBatchMode());
+    m_player->play(a, b);
+}
+
+void TimelinePanel::playWord()
+{
+    const Tier &words = m_waveform->words();
+    const int i = words.indexAt(m_waveform->cursorTime());
+    if (i < 0)
+        return;
+    if (m_window)
+        m_window->playback()->pause();
+    m_player->setAudioEnabled(!ErrorReporter::isBatchMode());
+    m_player->play(words.intervals[size_t(i)].start, words.intervals[size_t(i)].end);
+}
+
+void TimelinePanel::playAll()
+{
+    if (m_window)
+        m_window->playback()->pause();
+    m_player->setAudioEnabled(!ErrorReporter::isBatchMode());
+    m_player->play(0.0, m_waveform->duration());
+}
+
+void TimelinePanel::togglePlay()
+{
+    if (m_player->isPlaying())
+        m_player->stop();
+    else
+        playSelection();
 }
 
 } // namespace lipsync::studio

@@ -1,12 +1,35 @@
 #pragma once
-// The Timeline dock: the waveform view with a scroll bar and zoom buttons.
+// The Timeline dock: the waveform view with its tiers, the speech workflow's buttons (align the
+// sequence or all of them, re-align the selection, play), a scroll bar and zoom buttons.
+//
+// It is also the timing controller of the view: it turns the view's gestures (boundary drags,
+// relabel requests) and its own edit actions (split S, merge M, relabel Enter, insert silence I
+// or breath B) into tier edits (TierEdits) requested from the ProjectDocument, so every edit is
+// one step on the main window's undo stack — a whole boundary drag included. It follows the
+// current sequence of the main window and redraws the tiers whenever the document changes them.
+#include "timeline/TierEdits.h"
+
+#include <QPointer>
 #include <QWidget>
 
+#include <vector>
+
+class QAction;
 class QScrollBar;
+class QToolButton;
+
+namespace lipsync {
+class Task;
+}
 
 namespace lipsync::studio {
 
+class MainWindow;
+class ProjectDocument;
+class TimelinePlayer;
 class WaveformView;
+struct AlignJob;
+struct AlignOutcome;
 
 class TimelinePanel : public QWidget
 {
@@ -14,13 +37,93 @@ class TimelinePanel : public QWidget
 public:
     explicit TimelinePanel(QWidget *parent = nullptr);
     WaveformView *waveform() const { return m_waveform; }
+    TimelinePlayer *player() const { return m_player; }
+
+    // Follows `window`'s document, current sequence and task runner. Until then the panel only
+    // shows what it is given (setWords etc. on the view).
+    void attach(MainWindow *window);
+    int row() const { return m_row; }
+
+    QAction *alignAction() const { return m_align; }
+    QAction *alignAllAction() const { return m_alignAll; }
+    QAction *realignAction() const { return m_realign; }
+    QAction *splitAction() const { return m_split; }
+    QAction *mergeAction() const { return m_merge; }
+    QAction *relabelAction() const { return m_relabel; }
+    QAction *insertSilenceAction() const { return m_insertSilence; }
+    QAction *insertBreathAction() const { return m_insertBreath; }
+    QAction *playSelectionAction() const { return m_playSelection; }
+    QAction *playWordAction() const { return m_playWord; }
+    QAction *playAllAction() const { return m_playAll; }
+
+    // The open relabel editor (a QLineEdit for words, an editable QComboBox of the 41 phones for
+    // phones), or null.
+    QWidget *relabelEditor() const { return m_editor; }
+
+public slots:
+    void alignSequence();
+    void alignAll();
+    void realignSelection();
+    void splitAtCursor();
+    void mergeWithNext();
+    void relabelSelected();
+    void insertSilence();
+    void insertBreath();
+    void playSelection();
+    void playWord();
+    void playAll();
+    void togglePlay();
+
+signals:
+    // An alignment task started (the tests wait for it).
+    void alignmentStarted(lipsync::Task *task);
 
 private:
     void syncScrollBar();
+    void showSequence(int row);
+    void refresh();
+    void updateActions();
+    TierPair currentTiers() const;
+    bool edit(const TierPair &next, const QString &text, int mergeKey = -1);
+    void startAlignment(const QString &title, std::vector<AlignJob> jobs);
+    void applyAlignment(const QString &title, std::vector<AlignOutcome> outcomes);
+    void openEditor(TierKind kind, int index);
+    void commitEditor();
+    void closeEditor();
+    void insertInterval(const std::string &label);
+    void onDragStarted(TierKind kind, int boundary, int drag);
+    void onDragged(TierKind kind, int boundary, double time, int drag);
 
     WaveformView *m_waveform;
     QScrollBar *m_scroll;
+    TimelinePlayer *m_player;
     bool m_syncing = false;
+
+    MainWindow *m_window = nullptr;
+    ProjectDocument *m_document = nullptr;
+    int m_row = -1;
+
+    TierPair m_dragBase;
+    int m_dragKey = -1;
+    int m_dragMergeKey = 0;
+
+    QPointer<QWidget> m_editor;
+    TierKind m_editorTier = TierKind::Phones;
+    int m_editorIndex = -1;
+    bool m_closingEditor = false;
+
+    QAction *m_align;
+    QAction *m_alignAll;
+    QAction *m_realign;
+    QAction *m_split;
+    QAction *m_merge;
+    QAction *m_relabel;
+    QAction *m_insertSilence;
+    QAction *m_insertBreath;
+    QAction *m_playSelection;
+    QAction *m_playWord;
+    QAction *m_playAll;
+    QPointer<Task> m_alignTask;
 };
 
 } // namespace lipsync::studio

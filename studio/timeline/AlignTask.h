@@ -1,0 +1,59 @@
+#pragma once
+// Forced alignment as a background task (TaskRunner): decode, features, Viterbi alignment with
+// the shipped GRID model (or $LIPSYNC_ALIGNER_MODEL) and the CMU dictionary with espeak-ng for
+// other words. The worker only computes; the tiers reach the document in the commit, through
+// ProjectDocument::requestTiersChange, so cancel leaves the project untouched.
+#include "timeline/TierEdits.h"
+
+#include <QString>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace lipsync {
+class Task;
+class TaskRunner;
+} // namespace lipsync
+
+namespace lipsync::studio {
+
+struct AlignJob
+{
+    int row = -1;
+    QString sequenceId;
+    QString mediaPath;
+    std::string transcript;
+    // Re-align only these stretches [start, end) of `current` (seconds, on word boundaries),
+    // everything else stays; empty: align the whole sequence.
+    std::vector<std::pair<double, double>> stretches;
+    TierPair current;
+};
+
+struct AlignOutcome
+{
+    int row = -1;
+    QString sequenceId;
+    QString mediaPath;
+    bool ok = false;
+    TierPair tiers;
+    QString error;     // why it failed (for unknown words: names them)
+    QString errorFile; // the file concerned
+};
+
+// The aligner model the studio uses: $LIPSYNC_ALIGNER_MODEL, else resources/aligner/grid-s1.aligner
+// next to or above the executable, in the source tree, or under <prefix>/share/lipsync. Empty
+// if none exists.
+QString alignerModelPath();
+
+// Aligns the jobs one after the other (progress per job, cancel between them). Failures of
+// single sequences are reported in their outcome and the others go on; the task itself fails
+// only when every job failed (its error lists them). `apply` runs on the GUI thread.
+Task *startAlignment(TaskRunner &runner, const QString &title, std::vector<AlignJob> jobs,
+                     std::function<void(std::vector<AlignOutcome>)> apply);
+
+// The stretches of `tiers` to re-align for the selection [a, b): runs of consecutive words
+// overlapping it whose word and phones the user has not edited (userEdited words stay fixed).
+std::vector<std::pair<double, double>> realignStretches(const TierPair &tiers, double a, double b);
+
+} // namespace lipsync::studio

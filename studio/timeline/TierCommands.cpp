@@ -1,0 +1,34 @@
+#include "timeline/TierCommands.h"
+
+#include "app/ProjectDocument.h"
+
+namespace lipsync::studio {
+
+SetTiersCommand::SetTiersCommand(ProjectDocument *document, int row, TierPair before, TierPair after,
+                                 const QString &text, int mergeKey)
+    : m_document(document), m_row(row), m_before(std::move(before)), m_after(std::move(after)), m_mergeKey(mergeKey)
+{
+    setText(text);
+}
+
+void SetTiersCommand::undo()
+{
+    m_document->applyTiers(m_row, m_before.words, m_before.phones);
+}
+
+void SetTiersCommand::redo()
+{
+    m_document->applyTiers(m_row, m_after.words, m_after.phones);
+}
+
+bool SetTiersCommand::mergeWith(const QUndoCommand *other)
+{
+    const auto *next = dynamic_cast<const SetTiersCommand *>(other);
+    if (!next || next->m_row != m_row || next->m_mergeKey != m_mergeKey || m_mergeKey < 0)
+        return false;
+    m_after = next->m_after;
+    setObsolete(m_after == m_before);
+    return true;
+}
+
+} // namespace lipsync::studio

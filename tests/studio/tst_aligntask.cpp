@@ -1,0 +1,166 @@
+// The studio's alignment task on its own: the shipped model is found; a demo clip aligns to its
+// transcript with contiguous tiers covering the audio; re-aligning stretches (realignStretches)
+// leaves a user-fixed word and its phones exactly as they were; a missing file fails naming it;
+// a canceled task never applies its result.
+#include "align/Lexicon.h"
+#include "tasks/TaskRunner.h"
+#include "timeline/AlignTask.h"
+
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QTest>
+
+#include <cmath>
+
+using namespace lipsync;
+using namespace lipsync::studio;
+
+namespace {
+
+const QString kClip = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg");
+const std::string kTranscript = "bin blue at f two now";
+
+AlignJob wholeJob(const QString &media = kClip)
+{
+    AlignJob job;
+    job.row = 0;
+    job.sequenceId = QStringLiteral("bbaf2n");
+    job.mediaPath = media;
+    job.transcript = kTranscript;
+    return job;
+}
+
+// Spins the event loop until the task has ended (its result applied or dropped).
+void waitFor(Task *task)
+{
+    QElapsedTimer timer;
+    timer.start();
+    while (task->isRunning() && timer.elapsed() < 60000)
+        QTest::qWait(10);
+}
+
+// Runs the jobs and returns the outcomes (empty if the task failed or was canceled).
+std::vector<AlignOutcome> run(TaskRunner &runner, std::vector<AlignJob> jobs, Task **taskOut = nullptr)
+{
+    std::vector<AlignOutcome> result;
+    Task *task = startAlignment(runner, QStringLiteral("test"), std::move(jobs),
+                                [&result](std::vector<AlignOutcome> o) { result = std::move(o); });
+    if (taskOut)
+        *taskOut = task;
+    waitFor(task);
+    return result;
+}
+
+void checkContiguous(const Tier &tier, double duration)
+{
+    QVERIFY(!tier.isEmpty());
+    QVERIFY(std::abs(tier.intervals.front().start) < 1e-9);
+    QVERIFY(std::abs(tier.intervals.back().end - duration) < 0.02);
+    for (std::size_t i = 1; i < tier.intervals.size(); ++i)
+        QVERIFY(std::abs(tier.intervals[i].start - tier.intervals[i - 1].end) < 1e-6);
+}
+
+QStringList spokenWords(const Tier &words)
+{
+    QStringList out;
+    for (const Interval &w : words.intervals)
+        if (!tieredit::isSilenceLabel(w.label))
+            out << QString::fromStdString(w.label);
+    return out;
+}
+
+} // namespace
+
+class TestAlignTask : public QObject
+{
+    Q_OBJECT
+private slots:
+    void shippedModelIsFound()
+    {
+        const QString path = alignerModelPath();
+        QVERIFY2(QFileInfo::exists(path), qPrintable(path));
+    }
+
+    void alignsADemoClip()
+    {
+        TaskRunner runner;
+        const std::vector<AlignOutcome> out = run(runner, {wholeJob()});
+        QCOMPARE(int(out.size()), 1);
+        QVERIFY2(out[0].ok, qPrintable(out[0].error));
+        QCOMPARE(spokenWords(out[0].tiers.words).join(QLatin1Char(' ')), QString::fromStdString(kTranscript));
+        checkContiguous(out[0].tiers.words, 2.96);
+        checkContiguous(out[0].tiers.phones, 2.96);
+        QVERIFY(out[0].tiers.phones.intervals.size() > out[0].tiers.words.intervals.size());
+    }
+
+    void realignKeepsAFixedWord()
+    {
+        TaskRunner runner;
+        const std::vector<AlignOutcome> first = run(runner, {wholeJob()});
+        QVERIFY(first.size() == 1 && first[0].ok);
+        TierPair edited = first[0].tiers;
+        // The user fixes "at": moves its start by 30 ms (word and phone edge together).
+        int w = -1;
+        for (int i = 0; i < int(edited.words.intervals.size()); ++i)
+            if (edited.words.intervals[size_t(i)].label == "at")
+                w = i;
+        QVERIFY(w > 0);
+        QVERIFY(tieredit::moveBoundary(edited, TierKind::Words, w, edited.words.intervals[size_t(w)].start - 0.03));
+        const Interval fixed = edited.words.intervals[size_t(w)];
+        QVERIFY(fixed.userEdited);
+
+        const auto stretches = realignStretches(edited, 0.0, 3.0);
+        QVERIFY(stretches.size() >= 2); // before and after the fixed word (its neighbour got edited too)
+        for (const auto &[a, b] : stretches)
+            QVERIFY(b <= fixed.start + 1e-9 || a >= fixed.end - 1e-9);
+
+        AlignJob job = wholeJob();
+        job.current = edited;
+        job.stretches = stretches;
+        const std::vector<AlignOutcome> again = run(runner, {job});
+        QVERIFY(again.size() == 1 && again[0].ok);
+        const TierPair &now = again[0].tiers;
+        // The fixed word and every phone inside it are untouched.
+        bool found = false;
+        for (const Interval &iv : now.words.intervals)
+            found = found || iv == fixed;
+        QVERIFY(found);
+        for (const Interval &p : edited.phones.intervals) {
+            if (p.start >= fixed.start - 1e-9 && p.end <= fixed.end + 1e-9) {
+                bool kept = false;
+                for (const Interval &q : now.phones.intervals)
+                    kept = kept || q == p;
+                QVERIFY2(kept, p.label.c_str());
+            }
+        }
+        QCOMPARE(spokenWords(now.words).join(QLatin1Char(' ')), QString::fromStdString(kTranscript));
+        checkContiguous(now.words, 2.96);
+        checkContiguous(now.phones, 2.96);
+    }
+
+    void missingFileFailsNamingIt()
+    {
+        TaskRunner runner;
+        Task *task = nullptr;
+        const QString missing = QStringLiteral("/nonexistent/clip.mpg");
+        const std::vector<AlignOutcome> out = run(runner, {wholeJob(missing)}, &task);
+        QVERIFY(out.empty());
+        QCOMPARE(task->state(), Task::State::Failed);
+        QVERIFY2(task->errorMessage().contains(missing), qPrintable(task->errorMessage()));
+    }
+
+    void canceledTaskAppliesNothing()
+    {
+        TaskRunner runner;
+        bool applied = false;
+        Task *task = startAlignment(runner, QStringLiteral("test"), {wholeJob(), wholeJob()},
+                                    [&applied](std::vector<AlignOutcome>) { applied = true; });
+        task->cancel();
+        waitFor(task);
+        QVERIFY(!applied);
+        QCOMPARE(task->state(), Task::State::Canceled);
+    }
+};
+
+QTEST_MAIN(TestAlignTask)
+#include "tst_aligntask.moc"

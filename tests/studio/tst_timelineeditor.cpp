@@ -1,0 +1,479 @@
+// The speech workflow in the studio's timeline: "Align" on the demo's first clip fills the word
+// and phone tiers (words = the transcript) and the 75-frame label strip; a phone boundary dragged
+// with the mouse in the real widget moves by the snapped amount, is marked user-edited and is ONE
+// undo step that restores the tiers exactly (redo re-applies); split (S), merge (M), relabel
+// (double-click, the phone combo, validation), insert silence (I), Tab and Space in the view;
+// re-aligning a selection keeps the edited boundary; "Align all" is one undo step and canceling
+// it changes nothing; a transcript that cannot fit is reported naming the clip.
+#include "align/Lexicon.h"
+#include "app/ErrorReporter.h"
+#include "app/MainWindow.h"
+#include "app/ProjectDocument.h"
+#include "app/ProjectFiles.h"
+#include "app/SurfaceFormat.h"
+#include "preview/PlaybackController.h"
+#include "tasks/TaskRunner.h"
+#include "timeline/TierEdits.h"
+#include "timeline/TimelinePanel.h"
+#include "timeline/TimelinePlayer.h"
+#include "timeline/WaveformView.h"
+#include "util/PhoneSet.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QElapsedTimer>
+#include <QLineEdit>
+#include <QStandardPaths>
+#include <QTest>
+#include <QUndoStack>
+
+#include <cmath>
+
+using namespace lipsync;
+using namespace lipsync::studio;
+
+namespace {
+
+bool near(double a, double b, double tolerance = 1e-9)
+{
+    return std::abs(a - b) <= tolerance;
+}
+
+} // namespace
+
+class TestTimelineEditor : public QObject
+{
+    Q_OBJECT
+public:
+    static void initMain()
+    {
+        setDefaultSurfaceFormat();
+        QStandardPaths::setTestModeEnabled(true);
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QCoreApplication::setOrganizationName(QStringLiteral("lipsync-tests"));
+        ErrorReporter::setBatchMode(true);
+        m_window = new MainWindow;
+        m_window->resize(1280, 800);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window));
+        QVERIFY(m_window->files()->openDemo());
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() != nullptr, 60000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 60000);
+        m_panel = m_window->findChild<TimelinePanel *>();
+        QVERIFY(m_panel);
+        m_view = m_window->waveformView();
+        m_window->playback()->setAudioEnabled(false);
+    }
+
+    void cleanupTestCase() { delete m_window; }
+
+    void alignSequenceFillsTiers()
+    {
+        QCOMPARE(m_window->currentSequence(), 0);
+        // Start from a sequence without tiers (the demo ships its alignment).
+        QVERIFY(m_window->document()->requestTiersChange(0, Tier{"words", {}}, Tier{"phones", {}}, QStringLiteral("clear")));
+        const TierPair before = tiers();
+        QVERIFY(before.phones.isEmpty());
+        QVERIFY(m_view->phones().isEmpty());
+        QVERIFY(m_view->frameLabels().empty());
+        QVERIFY(m_panel->alignAction()->isEnabled());
+        QElapsedTimer timer;
+        timer.start();
+        m_panel->alignAction()->trigger();
+        QCOMPARE(m_window->taskRunner()->runningCount(), 1);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 30000);
+        qInfo("aligning one clip took %lld ms", timer.elapsed());
+
+        const Sequence &s = m_window->document()->sequence(0);
+        QVERIFY(s.phones.intervals.size() > 10);
+        QVERIFY(!(s.phones == before.phones));
+        for (const Interval &p : s.phones.intervals)
+            QVERIFY2(PhoneSet::index(p.label) >= 0, p.label.c_str());
+        QStringList spoken;
+        for (const Interval &w : s.words.intervals)
+            if (!tieredit::isSilenceLabel(w.label))
+                spoken << QString::fromStdString(w.label).toLower();
+        QStringList transcript;
+        for (const std::string &w : Lexicon::splitWords(s.transcript))
+            transcript << QString::fromStdString(w).toLower();
+        QCOMPARE(spoken, transcript);
+        QCOMPARE(m_window->undoStack()->index(), 2);
+        // The view shows them, with the per-video-frame labels (75 frames at 25 fps).
+        QVERIFY(m_view->phones() == s.phones);
+        QCOMPARE(int(m_view->frameLabels().size()), 75);
+        QCOMPARE(m_view->frameLabels().front(), std::string("sil"));
+        // Undo takes the alignment back, redo brings it again.
+        const TierPair aligned = tiers();
+        m_window->undoStack()->undo();
+        QVERIFY(tiers() == before);
+        QVERIFY(m_view->phones() == before.phones);
+        m_window->undoStack()->redo();
+        QVERIFY(tiers() == aligned);
+        QCOMPARE(int(m_view->frameLabels().size()), 75);
+    }
+
+    void dragPhoneBoundaryIsOneUndoStep()
+    {
+        const TierPair before = tiers();
+        // A phone boundary inside a word (not on a word edge), both neighbours long enough.
+        int b = -1;
+        for (int i = 2; i + 1 < int(before.phones.intervals.size()) && b < 0; ++i) {
+            const Interval &l = before.phones.intervals[size_t(i - 1)];
+            const Interval &r = before.phones.intervals[size_t(i)];
+            if (l.end - l.start > 0.06 && r.end - r.start > 0.06 && !tieredit::isSilenceLabel(l.label)
+                && !tieredit::isSilenceLabel(r.label) && tieredit::boundaryNear(before.words, r.start, 1e-3) < 0)
+                b = i;
+        }
+        QVERIFY(b > 0);
+        m_view->zoomToFit();
+        const double t0 = before.phones.intervals[size_t(b)].start;
+        const int y = m_view->laneRect(WaveformView::Lane::Phones).center().y();
+        const int x0 = int(std::lround(m_view->xAt(t0)));
+        const int dx = 7;
+        const double expected = tieredit::snap(t0 + dx * m_view->secondsPerPixel());
+        QVERIFY(!near(expected, t0));
+        double lower = 0, upper = 0;
+        tieredit::boundaryLimits(before, TierKind::Phones, b, &lower, &upper);
+        QVERIFY(expected > lower && expected < upper);
+
+        const int steps = m_window->undoStack()->index();
+        QTest::mousePress(m_view, Qt::LeftButton, {}, QPoint(x0, y));
+        for (int x = x0 + 1; x <= x0 + dx; ++x)
+            QTest::mouseMove(m_view, QPoint(x, y));
+        QTest::mouseRelease(m_view, Qt::LeftButton, {}, QPoint(x0 + dx, y));
+
+        const TierPair after = tiers();
+        QVERIFY2(near(after.phones.intervals[size_t(b)].start, expected),
+                 qPrintable(QStringLiteral("%1 -> %2, expected %3")
+                                .arg(t0).arg(after.phones.intervals[size_t(b)].start).arg(expected)));
+        QVERIFY(near(after.phones.intervals[size_t(b - 1)].end, expected)); // the shared edge
+        QVERIFY(after.phones.intervals[size_t(b)].userEdited);
+        QVERIFY(after.phones.intervals[size_t(b - 1)].userEdited);
+        QVERIFY(after.words == before.words);
+        QCOMPARE(m_window->undoStack()->index(), steps + 1); // the whole drag: one step
+        QVERIFY(m_view->phones() == after.phones);          // the view follows
+
+        m_window->undoStack()->undo();
+        QVERIFY(tiers() == before);
+        QVERIFY(m_view->phones() == before.phones);
+        m_window->undoStack()->redo();
+        QVERIFY(tiers() == after);
+        // For looking at: the window with the aligned, edited tiers.
+        const QString shots = qEnvironmentVariable("LIPSYNC_TEST_SCREENSHOTS");
+        if (!shots.isEmpty()) {
+            m_window->grab().save(shots + QStringLiteral("/timeline-window.png"));
+            m_view->grab().save(shots + QStringLiteral("/timeline-view.png"));
+            m_view->selectInterval(TierKind::Phones, b);
+            m_view->zoomBy(3.0, m_view->xAt(expected));
+            m_view->grab().save(shots + QStringLiteral("/timeline-zoomed.png"));
+            m_view->zoomToFit();
+        }
+    }
+
+    void dragCannotCrossNeighbours()
+    {
+        const TierPair before = tiers();
+        const int b = int(before.phones.intervals.size()) / 2;
+        const double t0 = before.phones.intervals[size_t(b)].start;
+        double lower = 0, upper = 0;
+        tieredit::boundaryLimits(before, TierKind::Phones, b, &lower, &upper);
+        const int y = m_view->laneRect(WaveformView::Lane::Phones).center().y();
+        const int x0 = int(std::lround(m_view->xAt(t0)));
+        QTest::mousePress(m_view, Qt::LeftButton, {}, QPoint(x0, y));
+        QTest::mouseMove(m_view, QPoint(x0 + 150, y));
+        QTest::mouseRelease(m_view, Qt::LeftButton, {}, QPoint(x0 + 150, y));
+        const double moved = tiers().phones.intervals[size_t(b)].start;
+        QVERIFY2(near(moved, upper), qPrintable(QStringLiteral("%1 vs limit %2").arg(moved).arg(upper)));
+        QVERIFY(tiers().phones.intervals[size_t(b)].end - moved >= tieredit::kSnap - 1e-9);
+        m_window->undoStack()->undo();
+        QVERIFY(tiers() == before);
+    }
+
+    void wordBoundaryTakesThePhoneBoundaryAlong()
+    {
+        // After alignment every word edge is a phone edge: dragging it in the words lane moves both.
+        const TierPair before = tiers();
+        int w = -1, p = -1;
+        for (int i = 1; i < int(before.words.intervals.size()) && w < 0; ++i) {
+            const double t = before.words.intervals[size_t(i)].start;
+            const int k = tieredit::boundaryNear(before.phones, t, 1e-6);
+            if (k > 0 && !tieredit::isSilenceLabel(before.words.intervals[size_t(i)].label)
+                && !tieredit::isSilenceLabel(before.words.intervals[size_t(i - 1)].label)) {
+                w = i;
+                p = k;
+            }
+        }
+        QVERIFY(w > 0);
+        const double t0 = before.words.intervals[size_t(w)].start;
+        double lower = 0, upper = 0;
+        tieredit::boundaryLimits(before, TierKind::Words, w, &lower, &upper);
+        const int y = m_view->laneRect(WaveformView::Lane::Words).center().y();
+        const int x0 = int(std::lround(m_view->xAt(t0)));
+        const int dx = -5;
+        const double expected = std::clamp(tieredit::snap(t0 + dx * m_view->secondsPerPixel()), lower, upper);
+        QVERIFY(!near(expected, t0));
+        QTest::mousePress(m_view, Qt::LeftButton, {}, QPoint(x0, y));
+        QTest::mouseMove(m_view, QPoint(x0 - 2, y));
+        QTest::mouseMove(m_view, QPoint(x0 + dx, y));
+        QTest::mouseRelease(m_view, Qt::LeftButton, {}, QPoint(x0 + dx, y));
+        const TierPair after = tiers();
+        QVERIFY(near(after.words.intervals[size_t(w)].start, expected));
+        QVERIFY(near(after.words.intervals[size_t(w - 1)].end, expected));
+        QVERIFY(near(after.phones.intervals[size_t(p)].start, expected));
+        QVERIFY(near(after.phones.intervals[size_t(p - 1)].end, expected));
+        QVERIFY(after.words.intervals[size_t(w)].userEdited && after.phones.intervals[size_t(p)].userEdited);
+        m_window->undoStack()->undo();
+        QVERIFY(tiers() == before);
+    }
+
+    void splitMergeRelabelWithKeysAndUndo()
+    {
+        const TierPair before = tiers();
+        const int steps = m_window->undoStack()->index();
+        // Click the middle of a long phone: selects it and puts the cursor there.
+        int i = 0;
+        for (int k = 1; k < int(before.phones.intervals.size()); ++k)
+            if (!tieredit::isSilenceLabel(before.phones.intervals[size_t(k)].label)
+                && before.phones.intervals[size_t(k)].end - before.phones.intervals[size_t(k)].start
+                       > before.phones.intervals[size_t(i)].end - before.phones.intervals[size_t(i)].start)
+                i = k;
+        const Interval &iv = before.phones.intervals[size_t(i)];
+        const int y = m_view->laneRect(WaveformView::Lane::Phones).center().y();
+        const int x = int(std::lround(m_view->xAt((iv.start + iv.end) / 2)));
+        QTest::mouseClick(m_view, Qt::LeftButton, {}, QPoint(x, y));
+        QCOMPARE(m_view->activeTier(), TierKind::Phones);
+        QCOMPARE(m_view->selectedInterval(), i);
+        QVERIFY(m_view->hasFocus());
+
+        // S: split at the cursor (snapped to 10 ms).
+        QTest::keyClick(m_view, Qt::Key_S);
+        TierPair now = tiers();
+        QCOMPARE(now.phones.intervals.size(), before.phones.intervals.size() + 1);
+        const double cut = tieredit::snap(m_view->cursorTime());
+        QVERIFY(near(now.phones.intervals[size_t(i)].end, cut));
+        QCOMPARE(now.phones.intervals[size_t(i + 1)].label, iv.label);
+        QVERIFY(now.phones.intervals[size_t(i + 1)].userEdited);
+        QCOMPARE(m_window->undoStack()->index(), steps + 1);
+
+        // M: merge the selected interval with the next (the two halves again).
+        m_view->selectInterval(TierKind::Phones, i);
+        QTest::keyClick(m_view, Qt::Key_M);
+        now = tiers();
+        QCOMPARE(now.phones.intervals.size(), before.phones.intervals.size());
+        QVERIFY(near(now.phones.intervals[size_t(i)].end, iv.end));
+        QCOMPARE(m_window->undoStack()->index(), steps + 2);
+        m_window->undoStack()->undo();
+        QCOMPARE(tiers().phones.intervals.size(), before.phones.intervals.size() + 1);
+        m_window->undoStack()->undo();
+        QVERIFY(tiers() == before);
+
+        // Double-click: the phone combo; an unknown phone is refused, a valid one relabels.
+        QTest::mouseDClick(m_view, Qt::LeftButton, {}, QPoint(x, y));
+        auto *combo = qobject_cast<QComboBox *>(m_panel->relabelEditor());
+        QVERIFY(combo);
+        QCOMPARE(combo->count(), PhoneSet::kCount);
+        QCOMPARE(combo->currentText(), QString::fromStdString(iv.label));
+        combo->lineEdit()->setText(QStringLiteral("XQ"));
+        QTest::keyClick(combo->lineEdit(), Qt::Key_Return);
+        QVERIFY(m_panel->relabelEditor()); // still open
+        QVERIFY(tiers() == before);
+        const std::string target = iv.label == "AA" ? "IY" : "AA";
+        combo->lineEdit()->setText(QString::fromStdString(target).toLower() + QStringLiteral("1")); // stress dropped
+        QTest::keyClick(combo->lineEdit(), Qt::Key_Return);
+        QTRY_VERIFY(!m_panel->relabelEditor());
+        now = tiers();
+        QCOMPARE(now.phones.intervals[size_t(i)].label, target);
+        QVERIFY(now.phones.intervals[size_t(i)].userEdited);
+        m_window->undoStack()->undo();
+        QVERIFY(tiers() == before);
+
+        // Enter on the words tier: a line edit; one word only.
+        const int wy = m_view->laneRect(WaveformView::Lane::Words).center().y();
+        QTest::mouseClick(m_view, Qt::LeftButton, {}, QPoint(x, wy));
+        QCOMPARE(m_view->activeTier(), TierKind::Words);
+        const int w = m_view->selectedInterval();
+        QVERIFY(w >= 0);
+        QTest::keyClick(m_view, Qt::Key_Return);
+        auto *line = qobject_cast<QLineEdit *>(m_panel->relabelEditor());
+        QVERIFY(line);
+        line->setText(QStringLiteral("two words"));
+        QTest::keyClick(line, Qt::Key_Return);
+        QVERIFY(m_panel->relabelEditor());
+        line->setText(QStringLiteral("please"));
+        QTest::keyClick(line, Qt::Key_Return);
+        QTRY_VERIFY(!m_panel->relabelEditor());
+        QCOMPARE(tiers().words.intervals[size_t(w)].label, std::string("please"));
+        m_window->undoStack()->undo();
+        QVERIFY(tiers() == before);
+    }
+
+    void insertSilenceOnASelectedStretch()
+    {
+        const TierPair before = tiers();
+        // Select the phones tier, then drag a stretch over the waveform and press I.
+        const Interval iv = before.phones.intervals[before.phones.intervals.size() / 2];
+        const int py = m_view->laneRect(WaveformView::Lane::Phones).center().y();
+        QTest::mouseClick(m_view, Qt::LeftButton, {}, QPoint(int(m_view->xAt((iv.start + iv.end) / 2)), py));
+        const int wy = m_view->laneRect(WaveformView::Lane::Waveform).center().y();
+        const int xa = int(m_view->xAt(1.0));
+        const int xb = int(m_view->xAt(1.2));
+        QTest::mousePress(m_view, Qt::LeftButton, {}, QPoint(xa, wy));
+        QTest::mouseMove(m_view, QPoint((xa + xb) / 2, wy));
+        QTest::mouseMove(m_view, QPoint(xb, wy));
+        QTest::mouseRelease(m_view, Qt::LeftButton, {}, QPoint(xb, wy));
+        QVERIFY(m_view->hasRange());
+        const double a = tieredit::snap(m_view->rangeStart());
+        const double b = tieredit::snap(m_view->rangeEnd());
+        QVERIFY(b - a > 0.1);
+        QTest::keyClick(m_view, Qt::Key_I);
+        const Tier phones = tiers().phones;
+        const int k = phones.indexAt((a + b) / 2);
+        QVERIFY(k >= 0);
+        QCOMPARE(phones.intervals[size_t(k)].label, std::string("sil"));
+        QVERIFY(near(phones.intervals[size_t(k)].start, a));
+        QVERIFY2(near(phones.intervals[size_t(k)].end, b),
+                 qPrintable(QStringLiteral("[%1, %2] for the range [%3, %4]")
+                                .arg(phones.intervals[size_t(k)].start).arg(phones.intervals[size_t(k)].end)
+                                .arg(a).arg(b)));
+        QVERIFY(phones.intervals[size_t(k)].userEdited);
+        // Still contiguous.
+        for (std::size_t j = 1; j < phones.intervals.size(); ++j)
+            QVERIFY(near(phones.intervals[j].start, phones.intervals[j - 1].end));
+        m_window->undoStack()->undo();
+        QVERIFY(tiers() == before);
+    }
+
+    void tabWalksAndSpacePlaysTheSelection()
+    {
+        const int py = m_view->laneRect(WaveformView::Lane::Phones).center().y();
+        const Interval first = tiers().phones.intervals[1];
+        QTest::mouseClick(m_view, Qt::LeftButton, {}, QPoint(int(m_view->xAt((first.start + first.end) / 2)), py));
+        QCOMPARE(m_view->selectedInterval(), 1);
+        QTest::keyClick(m_view, Qt::Key_Tab);
+        QCOMPARE(m_view->selectedInterval(), 2);
+        QVERIFY(m_view->hasFocus()); // Tab did not move the focus
+        QTest::keyClick(m_view, Qt::Key_Tab, Qt::ShiftModifier);
+        QCOMPARE(m_view->selectedInterval(), 1);
+
+        // Space in the timeline plays the selected interval (not the video from the cursor).
+        const Interval iv = tiers().phones.intervals[1];
+        QTest::keyClick(m_view, Qt::Key_Space);
+        QVERIFY(m_panel->player()->isPlaying());
+        QVERIFY(!m_window->playback()->isPlaying());
+        QTRY_VERIFY_WITH_TIMEOUT(!m_panel->player()->isPlaying(), 5000);
+        QVERIFY(near(m_panel->player()->position(), iv.end));
+        QVERIFY(near(m_view->cursorTime(), iv.end));
+        QCOMPARE(m_window->currentFrame(), int(iv.end * 25.0));
+    }
+
+    void realignKeepsEditedWords()
+    {
+        // Move one phone boundary (its word becomes user-fixed), then re-align everything.
+        const TierPair aligned = tiers();
+        int b = -1;
+        for (int i = 2; i + 1 < int(aligned.phones.intervals.size()) && b < 0; ++i)
+            if (aligned.phones.intervals[size_t(i)].end - aligned.phones.intervals[size_t(i)].start > 0.05
+                && aligned.phones.intervals[size_t(i - 1)].end - aligned.phones.intervals[size_t(i - 1)].start > 0.05
+                && tieredit::boundaryNear(aligned.words, aligned.phones.intervals[size_t(i)].start, 1e-3) < 0)
+                b = i;
+        QVERIFY(b > 0);
+        TierPair edited = aligned;
+        QVERIFY(tieredit::moveBoundary(edited, TierKind::Phones, b, aligned.phones.intervals[size_t(b)].start + 0.02));
+        QVERIFY(m_window->document()->requestTiersChange(0, edited.words, edited.phones, QStringLiteral("edit")));
+        const double moved = edited.phones.intervals[size_t(b)].start;
+        m_view->setRange(0.0, m_view->duration());
+        QVERIFY(m_panel->realignAction()->isEnabled());
+        const int steps = m_window->undoStack()->index();
+        m_panel->realignAction()->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 30000);
+        QVERIFY(m_window->undoStack()->index() <= steps + 1); // one step (none if nothing moved)
+        const TierPair now = tiers();
+        QVERIFY(tieredit::boundaryNear(now.phones, moved, 1e-6) > 0); // the edited boundary stays
+        QStringList spoken;
+        for (const Interval &w : now.words.intervals)
+            if (!tieredit::isSilenceLabel(w.label))
+                spoken << QString::fromStdString(w.label);
+        QCOMPARE(spoken.size(), int(Lexicon::splitWords(m_window->document()->sequence(0).transcript).size()));
+        for (std::size_t j = 1; j < now.phones.intervals.size(); ++j)
+            QVERIFY(near(now.phones.intervals[j].start, now.phones.intervals[j - 1].end, 1e-6));
+        if (m_window->undoStack()->index() == steps + 1) {
+            m_window->undoStack()->undo();
+            QVERIFY(tiers() == edited);
+        }
+    }
+
+    void alignAllIsOneStepAndCancelChangesNothing()
+    {
+        ProjectDocument *doc = m_window->document();
+        std::vector<TierPair> before;
+        for (int row = 0; row < doc->sequenceCount(); ++row)
+            before.push_back(TierPair{doc->sequence(row).words, doc->sequence(row).phones});
+        const int steps = m_window->undoStack()->index();
+
+        // Canceled at once: nothing reaches the document.
+        m_panel->alignAllAction()->trigger();
+        QCOMPARE(m_window->taskRunner()->runningCount(), 1);
+        m_window->taskRunner()->cancelAll();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 30000);
+        QCOMPARE(m_window->undoStack()->index(), steps);
+        for (int row = 0; row < doc->sequenceCount(); ++row)
+            QVERIFY(TierPair(TierPair{doc->sequence(row).words, doc->sequence(row).phones}) == before[size_t(row)]);
+
+        // Run to the end: every sequence aligned to its transcript, one undo step for all.
+        m_panel->alignAllAction()->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 60000);
+        QCOMPARE(m_window->undoStack()->index(), steps + 1);
+        for (int row = 0; row < doc->sequenceCount(); ++row) {
+            const Sequence &s = doc->sequence(row);
+            QStringList spoken;
+            for (const Interval &w : s.words.intervals)
+                if (!tieredit::isSilenceLabel(w.label))
+                    spoken << QString::fromStdString(w.label);
+            QCOMPARE(spoken.size(), int(Lexicon::splitWords(s.transcript).size()));
+            QVERIFY(!s.phones.isEmpty());
+        }
+        m_window->undoStack()->undo();
+        for (int row = 0; row < doc->sequenceCount(); ++row)
+            QVERIFY(TierPair(TierPair{doc->sequence(row).words, doc->sequence(row).phones}) == before[size_t(row)]);
+    }
+
+    void failedAlignmentIsReportedAndChangesNothing()
+    {
+        // 300 words cannot fit 3 s of audio: the task fails, the error names the clip and why.
+        ProjectDocument *doc = m_window->document();
+        QStringList words;
+        for (int i = 0; i < 150; ++i)
+            words << QStringLiteral("bin blue");
+        QVERIFY(doc->requestTranscriptChange(0, words.join(QLatin1Char(' '))));
+        const TierPair before = tiers();
+        const int steps = m_window->undoStack()->index();
+        m_panel->alignAction()->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 30000);
+        const QString message = ErrorReporter::lastMessage();
+        QVERIFY2(message.contains(QStringLiteral("bbaf2n.mpg")) && message.contains(QStringLiteral("does not fit")),
+                 qPrintable(message));
+        QVERIFY(tiers() == before);
+        QCOMPARE(m_window->undoStack()->index(), steps);
+        m_window->undoStack()->undo(); // the transcript
+    }
+
+private:
+    TierPair tiers() const
+    {
+        const Sequence &s = m_window->document()->sequence(0);
+        return TierPair{s.words, s.phones};
+    }
+
+    MainWindow *m_window = nullptr;
+    TimelinePanel *m_panel = nullptr;
+    WaveformView *m_view = nullptr;
+};
+
+QTEST_MAIN(TestTimelineEditor)
+#include "tst_timelineeditor.moc"
