@@ -311,6 +311,10 @@
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
+    <message>
+        <source>Audio</source>
+        <translation>Audio</translation>
+    </message>
 </context>
 <context>
     <name>lipsync::studio::ModelsPanel</name>
@@ -350,11 +354,6 @@
         <translation>AAM erstellen …</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="30"/>
-        <source>Train…</source>
-        <translation>Trainieren …</translation>
-    </message>
-    <message>
         <location filename="../studio/build/ModelsPanel.cpp" line="34"/>
         <source>Model</source>
         <translation>Modell</translation>
@@ -370,19 +369,170 @@
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="45"/>
-        <source>Building an Active Appearance Model comes with the faces feature (landmark editor, AAM building and fitting).</source>
-        <translation>Das Erstellen eines Active Appearance Model kommt mit der Gesichtsfunktion (Landmarken-Editor, AAM-Erstellung und -Anpassung).</translation>
-    </message>
-    <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="48"/>
-        <source>Training dynamic models comes with the dynamics feature (DPDS, SLDS, Voice Puppetry, phoneme means).</source>
-        <translation>Das Trainieren dynamischer Modelle kommt mit der Dynamikfunktion (DPDS, SLDS, Voice Puppetry, Phonem-Mittelwerte).</translation>
-    </message>
-    <message>
         <location filename="../studio/build/ModelsPanel.cpp" line="64"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
+    </message>
+    <message>
+        <source>Train</source>
+        <translation>Trainieren</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Evaluate (k-fold)</source>
+        <translation>Evaluieren (k-fach)</translation>
+    </message>
+    <message>
+        <source>Voice Puppetry (Brand)</source>
+        <translation>Voice Puppetry (Brand)</translation>
+    </message>
+    <message>
+        <source>VarPro / Levenberg–Marquardt</source>
+        <translation>VarPro / Levenberg–Marquardt</translation>
+    </message>
+    <message>
+        <source>Gradient ascent (paper)</source>
+        <translation>Gradientenaufstieg (Artikel)</translation>
+    </message>
+    <message>
+        <source>Diagonal A</source>
+        <translation>Diagonales A</translation>
+    </message>
+    <message>
+        <source>Full A</source>
+        <translation>Volles A</translation>
+    </message>
+    <message>
+        <source>Diagonal covariance</source>
+        <translation>Diagonale Kovarianz</translation>
+    </message>
+    <message>
+        <source>Full covariance</source>
+        <translation>Volle Kovarianz</translation>
+    </message>
+    <message>
+        <source>folds: </source>
+        <translation>Folds: </translation>
+    </message>
+    <message>
+        <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
+        <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
+    </message>
+    <message>
+        <source>Train the checked models on every sequence with features and phonemes</source>
+        <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
+    </message>
+    <message>
+        <source>Stop training or evaluation; the previous models stay</source>
+        <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
+    </message>
+    <message>
+        <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
+        <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
+    </message>
+    <message>
+        <source>AAM parameter </source>
+        <translation>AAM-Parameter </translation>
+    </message>
+    <message>
+        <source>Which AAM parameter to plot over time</source>
+        <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
+    </message>
+    <message>
+        <source>Trajectory</source>
+        <translation>Trajektorie</translation>
+    </message>
+    <message>
+        <source>Training</source>
+        <translation>Training</translation>
+    </message>
+    <message>
+        <source>Evaluation</source>
+        <translation>Evaluation</translation>
+    </message>
+    <message>
+        <source>Trained in this session; written when the project is saved</source>
+        <translation>In dieser Sitzung trainiert; wird beim Speichern des Projekts geschrieben</translation>
+    </message>
+    <message>
+        <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
+        <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter verfolgen und die Sprache alignieren.</translation>
+    </message>
+    <message>
+        <source>Train %1</source>
+        <translation>%1 trainieren</translation>
+    </message>
+    <message numerus="yes">
+        <source>Training %1 on %n sequence(s)…</source>
+        <translation>
+            <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
+            <numerusform>%1 wird auf %n Sequenzen trainiert …</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
+        <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
+    </message>
+    <message>
+        <source>Training %1 canceled: the previous model stays.</source>
+        <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
+    </message>
+    <message>
+        <source>Training %1 failed: %2</source>
+        <translation>Training von %1 fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>Check at least one model kind to train.</source>
+        <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
+    </message>
+    <message>
+        <source>Check at least one model kind to evaluate.</source>
+        <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
+    </message>
+    <message>
+        <source>Cross-validation needs at least two sequences.</source>
+        <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Evaluate %n model(s) (%1-fold)</source>
+        <translation>
+            <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
+            <numerusform>%n Modelle evaluieren (%1-fach)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Evaluated %n model(s) on %1 sequences, %2 folds.</source>
+        <translation>
+            <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Folds.</numerusform>
+            <numerusform>%n Modelle auf %1 Sequenzen evaluiert, %2 Folds.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Evaluation failed: %1</source>
+        <translation>Evaluation fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Some models could not be loaded: %1</source>
+        <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
+    </message>
+    <message>
+        <source>The %1 model could not be saved: %2</source>
+        <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <source>%1: no features yet (track the faces first)</source>
+        <translation>%1: noch keine Merkmale (zuerst die Gesichter verfolgen)</translation>
+    </message>
+    <message>
+        <source>real</source>
+        <translation>echt</translation>
+    </message>
+    <message>
+        <source>%1 — AAM parameter %2</source>
+        <translation>%1 — AAM-Parameter %2</translation>
     </message>
 </context>
 <context>
@@ -696,6 +846,199 @@
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="79"/>
+        <source>Align</source>
+        <translation>Ausrichten</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="79"/>
+        <source>Align this sequence&apos;s transcript to its audio (words and phones)</source>
+        <translation>Das Transkript dieser Sequenz am Ton ausrichten (Wörter und Phone)</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="80"/>
+        <source>Align All</source>
+        <translation>Alle ausrichten</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="80"/>
+        <source>Align every sequence that has a transcript</source>
+        <translation>Jede Sequenz mit Transkript ausrichten</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="81"/>
+        <source>Re-align Selection</source>
+        <translation>Auswahl neu ausrichten</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="82"/>
+        <source>Align the selected stretch again, keeping the words whose timing you edited</source>
+        <translation>Den ausgewählten Abschnitt neu ausrichten; Wörter mit bearbeitetem Timing bleiben</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="83"/>
+        <source>Split at Cursor</source>
+        <translation>Am Cursor teilen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="83"/>
+        <source>Split the interval under the cursor</source>
+        <translation>Das Intervall unter dem Cursor teilen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="84"/>
+        <source>Merge with Next</source>
+        <translation>Mit nächstem verbinden</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="84"/>
+        <source>Join the selected interval with the next one</source>
+        <translation>Das ausgewählte Intervall mit dem nächsten verbinden</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="86"/>
+        <source>Relabel…</source>
+        <translation>Umbenennen…</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="86"/>
+        <source>Change the label of the selected interval</source>
+        <translation>Die Beschriftung des ausgewählten Intervalls ändern</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
+        <source>Insert Silence</source>
+        <translation>Stille einfügen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
+        <source>Make the selection a silence</source>
+        <translation>Die Auswahl zur Stille machen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
+        <source>Insert Breath</source>
+        <translation>Atmer einfügen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
+        <source>Make the selection a breath</source>
+        <translation>Die Auswahl zum Atmer machen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
+        <source>Play Selection</source>
+        <translation>Auswahl abspielen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
+        <source>Play the selected stretch (Space in the timeline)</source>
+        <translation>Den ausgewählten Abschnitt abspielen (Leertaste in der Zeitleiste)</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="91"/>
+        <source>Play Word</source>
+        <translation>Wort abspielen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="91"/>
+        <source>Play the word under the cursor</source>
+        <translation>Das Wort unter dem Cursor abspielen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="92"/>
+        <source>Play All</source>
+        <translation>Alles abspielen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="92"/>
+        <source>Play the whole sequence</source>
+        <translation>Die ganze Sequenz abspielen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="269"/>
+        <source>Align %1</source>
+        <translation>%1 ausrichten</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="289"/>
+        <source>No sequence has a transcript to align.</source>
+        <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="310"/>
+        <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
+        <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="313"/>
+        <source>Re-align %1</source>
+        <translation>%1 neu ausrichten</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="292"/>
+        <source>Align all sequences</source>
+        <translation>Alle Sequenzen ausrichten</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="329"/>
+        <source>The alignment failed.</source>
+        <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="364"/>
+        <source>%n sequence(s) could not be aligned; the others were.</source>
+        <translation>
+            <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
+            <numerusform>%n Sequenzen konnten nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="386"/>
+        <source>Move word boundary</source>
+        <translation>Wortgrenze verschieben</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="386"/>
+        <source>Move phone boundary</source>
+        <translation>Phongrenze verschieben</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="394"/>
+        <source>Split interval</source>
+        <translation>Intervall teilen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="404"/>
+        <source>Merge intervals</source>
+        <translation>Intervalle verbinden</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="436"/>
+        <source>Insert breath</source>
+        <translation>Atmer einfügen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="436"/>
+        <source>Insert silence</source>
+        <translation>Stille einfügen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="495"/>
+        <source>Not one of the 41 phones (ARPAbet, sil, br)</source>
+        <translation>Keines der 41 Phone (ARPAbet, sil, br)</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="496"/>
+        <source>Enter one word</source>
+        <translation>Ein einzelnes Wort eingeben</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="504"/>
+        <source>Relabel as %1</source>
+        <translation>Umbenennen in %1</translation>
+    </message>
 </context>
 <context>
     <name>lipsync::studio::TransportBar</name>
@@ -708,6 +1051,479 @@
         <location filename="../studio/app/TransportBar.cpp" line="73"/>
         <source>%1 s / %2 s</source>
         <translation>%1 s / %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::TrajectoryView</name>
+    <message>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <source>parameter value</source>
+        <translation>Parameterwert</translation>
+    </message>
+    <message>
+        <source>phonemes</source>
+        <translation>Phoneme</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::ObjectivePlot</name>
+    <message>
+        <source>Training objective</source>
+        <translation>Trainingsziel</translation>
+    </message>
+    <message>
+        <source>iteration</source>
+        <translation>Iteration</translation>
+    </message>
+    <message>
+        <source>objective</source>
+        <translation>Zielfunktion</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Training objective — %1</source>
+        <translation>Trainingsziel — %1</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::EvaluationChart</name>
+    <message>
+        <source>L1 error</source>
+        <translation>L1-Fehler</translation>
+    </message>
+    <message>
+        <source>RMS error</source>
+        <translation>RMS-Fehler</translation>
+    </message>
+    <message>
+        <source>L-inf error</source>
+        <translation>L-inf-Fehler</translation>
+    </message>
+    <message>
+        <source>log-likelihood per frame</source>
+        <translation>Log-Likelihood pro Bild</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::WaveformView</name>
+    <message>
+        <location filename="../studio/timeline/WaveformView.cpp" line="399"/>
+        <source>No phones yet: align the sequence (Align)</source>
+        <translation>Noch keine Phone: Sequenz ausrichten (Ausrichten)</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/WaveformView.cpp" line="399"/>
+        <source>No words</source>
+        <translation>Keine Wörter</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/WaveformView.cpp" line="400"/>
+        <source>phones</source>
+        <translation>Phone</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/WaveformView.cpp" line="400"/>
+        <source>words</source>
+        <translation>Wörter</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/WaveformView.cpp" line="448"/>
+        <source>frame labels</source>
+        <translation>Bildlabels</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/WaveformView.cpp" line="469"/>
+        <source>frames</source>
+        <translation>Bilder</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::FacesController</name>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="85"/>
+        <source>&amp;Detect Landmarks</source>
+        <translation>Landmarken &amp;erkennen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="86"/>
+        <source>&amp;Copy Previous Frame&apos;s Points</source>
+        <translation>Punkte des vorigen Bildes &amp;kopieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="87"/>
+        <source>&amp;Onion Skin of Previous Frame</source>
+        <translation>&amp;Zwiebelschicht des vorigen Bildes</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="89"/>
+        <source>Next &amp;Unlabelled Frame</source>
+        <translation>Nächstes &amp;unbeschriftetes Bild</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="90"/>
+        <source>Next &amp;Worst-Fitted Frame</source>
+        <translation>Nächstes &amp;schlecht angepasstes Bild</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="91"/>
+        <source>&amp;Build AAM</source>
+        <translation>AAM &amp;erstellen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="92"/>
+        <source>&amp;Track Sequence</source>
+        <translation>Sequenz &amp;verfolgen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="93"/>
+        <source>Track &amp;All Sequences</source>
+        <translation>&amp;Alle Sequenzen verfolgen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="94"/>
+        <source>&amp;Modes of Variation…</source>
+        <translation>&amp;Variationsmoden…</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="96"/>
+        <source>Fa&amp;ces</source>
+        <translation>&amp;Gesichter</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="184"/>
+        <source>The AAM could not be saved with the project.</source>
+        <translation>Das AAM konnte nicht mit dem Projekt gespeichert werden.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="207"/>
+        <source>Fit error %1</source>
+        <translation>Anpassungsfehler %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="208"/>
+        <source>No face found by the tracker</source>
+        <translation>Der Tracker hat kein Gesicht gefunden</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="232"/>
+        <source>Detect landmarks in %1, frame %2</source>
+        <translation>Landmarken in %1, Bild %2 erkennen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="234"/>
+        <source>Finding the face…</source>
+        <translation>Gesicht wird gesucht…</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="265"/>
+        <source>Detect landmarks in frame %1</source>
+        <translation>Landmarken in Bild %1 erkennen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="268"/>
+        <source>No landmarks were detected.</source>
+        <translation>Es wurden keine Landmarken erkannt.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="289"/>
+        <source>Copy points of frame %1 to frame %2</source>
+        <translation>Punkte von Bild %1 nach Bild %2 kopieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="308"/>
+        <source>Every frame of this sequence is labelled.</source>
+        <translation>Alle Bilder dieser Sequenz sind beschriftet.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="318"/>
+        <source>Track this sequence first to rank its frames by fit error.</source>
+        <translation>Verfolgen Sie diese Sequenz zuerst, um ihre Bilder nach Anpassungsfehler zu ordnen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="346"/>
+        <source>The project&apos;s AAM could not be loaded.</source>
+        <translation>Das AAM des Projekts konnte nicht geladen werden.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="372"/>
+        <source>An AAM needs at least 3 frames with all 23 points; this project has %1.</source>
+        <translation>Ein AAM braucht mindestens 3 Bilder mit allen 23 Punkten; dieses Projekt hat %1.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="374"/>
+        <source>Label more frames (Detect Landmarks, then correct the points).</source>
+        <translation>Beschriften Sie weitere Bilder (Landmarken erkennen, dann die Punkte korrigieren).</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/annotate/FacesController.cpp" line="385"/>
+        <source>Build AAM from %n frame(s)</source>
+        <translation>
+            <numerusform>AAM aus %n Bild erstellen</numerusform>
+            <numerusform>AAM aus %n Bildern erstellen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="387"/>
+        <source>Reading the labelled frames…</source>
+        <translation>Beschriftete Bilder werden gelesen…</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="419"/>
+        <source>Build AAM %1</source>
+        <translation>AAM %1 erstellen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="423"/>
+        <source>AAM %1 built from %2 frames: %3 combined modes%4</source>
+        <translation>AAM %1 aus %2 Bildern erstellt: %3 kombinierte Moden%4</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/annotate/FacesController.cpp" line="427"/>
+        <source> (%n frame(s) skipped)</source>
+        <translation>
+            <numerusform> (%n Bild übersprungen)</numerusform>
+            <numerusform> (%n Bilder übersprungen)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="432"/>
+        <source>The AAM could not be built.</source>
+        <translation>Das AAM konnte nicht erstellt werden.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="441"/>
+        <source>Tracking needs an AAM.</source>
+        <translation>Zum Verfolgen wird ein AAM benötigt.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="442"/>
+        <source>Label a few frames and choose Faces ▸ Build AAM first.</source>
+        <translation>Beschriften Sie einige Bilder und wählen Sie zuerst Gesichter ▸ AAM erstellen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="460"/>
+        <source>Track %1</source>
+        <translation>%1 verfolgen</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/annotate/FacesController.cpp" line="460"/>
+        <source>Track %n sequence(s)</source>
+        <translation>
+            <numerusform>%n Sequenz verfolgen</numerusform>
+            <numerusform>%n Sequenzen verfolgen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="531"/>
+        <source>Tracking failed.</source>
+        <translation>Das Verfolgen ist fehlgeschlagen.</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::FrameView</name>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="305"/>
+        <source>Click to place %1 (%2 of %3), or press %4 to detect all points</source>
+        <translation>Klicken, um %1 zu setzen (%2 von %3), oder %4 drücken, um alle Punkte zu erkennen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="280"/>
+        <source>automatic</source>
+        <translation>automatisch</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="280"/>
+        <source>placed</source>
+        <translation>gesetzt</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="280"/>
+        <source>fixed</source>
+        <translation>fixiert</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="276"/>
+        <source>Click to place %1 (%2 of %3)</source>
+        <translation>Klicken, um %1 zu setzen (%2 von %3)</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="278"/>
+        <source>Selected: %1</source>
+        <translation>Ausgewählt: %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="320"/>
+        <source>Place %1</source>
+        <translation>%1 setzen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="362"/>
+        <source>Move %1</source>
+        <translation>%1 verschieben</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="391"/>
+        <source>Remove %1</source>
+        <translation>%1 entfernen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="110"/>
+        <source>left eye, outer corner</source>
+        <translation>linkes Auge, äußerer Winkel</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="111"/>
+        <source>left eye, upper lid</source>
+        <translation>linkes Auge, Oberlid</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="112"/>
+        <source>left eye, inner corner</source>
+        <translation>linkes Auge, innerer Winkel</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="113"/>
+        <source>left eye, lower lid</source>
+        <translation>linkes Auge, Unterlid</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="114"/>
+        <source>right eye, inner corner</source>
+        <translation>rechtes Auge, innerer Winkel</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="115"/>
+        <source>right eye, upper lid</source>
+        <translation>rechtes Auge, Oberlid</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="116"/>
+        <source>right eye, outer corner</source>
+        <translation>rechtes Auge, äußerer Winkel</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="117"/>
+        <source>right eye, lower lid</source>
+        <translation>rechtes Auge, Unterlid</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="118"/>
+        <source>mouth, left corner</source>
+        <translation>Mund, linker Winkel</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="119"/>
+        <source>upper lip, left</source>
+        <translation>Oberlippe, links</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="120"/>
+        <source>upper lip, centre</source>
+        <translation>Oberlippe, Mitte</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="121"/>
+        <source>upper lip, right</source>
+        <translation>Oberlippe, rechts</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="122"/>
+        <source>mouth, right corner</source>
+        <translation>Mund, rechter Winkel</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="123"/>
+        <source>lower lip, right</source>
+        <translation>Unterlippe, rechts</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="124"/>
+        <source>lower lip, centre</source>
+        <translation>Unterlippe, Mitte</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="125"/>
+        <source>lower lip, left</source>
+        <translation>Unterlippe, links</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="126"/>
+        <source>inner lip, top</source>
+        <translation>Innenlippe, oben</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="127"/>
+        <source>inner lip, bottom</source>
+        <translation>Innenlippe, unten</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="128"/>
+        <source>jaw, left</source>
+        <translation>Kiefer, links</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="129"/>
+        <source>jaw, lower left</source>
+        <translation>Kiefer, unten links</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="130"/>
+        <source>chin</source>
+        <translation>Kinn</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="131"/>
+        <source>jaw, lower right</source>
+        <translation>Kiefer, unten rechts</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="132"/>
+        <source>jaw, right</source>
+        <translation>Kiefer, rechts</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::ModesView</name>
+    <message>
+        <location filename="../studio/build/ModesView.cpp" line="28"/>
+        <source>AAM Modes of Variation</source>
+        <translation>Variationsmoden des AAM</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModesView.cpp" line="40"/>
+        <source>Combined mode %1, -3 to +3 standard deviations</source>
+        <translation>Kombinierte Mode %1, −3 bis +3 Standardabweichungen</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModesView.cpp" line="43"/>
+        <source>Mode %1</source>
+        <translation>Mode %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModesView.cpp" line="51"/>
+        <source>&amp;Reset to Mean</source>
+        <translation>Auf &amp;Mittelwert zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModesView.cpp" line="93"/>
+        <source>%1 s.d.</source>
+        <translation>%1 SA</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModesView.cpp" line="97"/>
+        <source>No AAM yet: label frames and choose Faces ▸ Build AAM.</source>
+        <translation>Noch kein AAM: Bilder beschriften und Gesichter ▸ AAM erstellen wählen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModesView.cpp" line="101"/>
+        <source>%1 training frames, %2 shape, %3 texture and %4 combined modes.</source>
+        <translation>%1 Trainingsbilder, %2 Form-, %3 Textur- und %4 kombinierte Moden.</translation>
     </message>
 </context>
 </TS>

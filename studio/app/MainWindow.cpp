@@ -1,5 +1,6 @@
 #include "app/MainWindow.h"
 
+#include "annotate/FacesController.h"
 #include "annotate/FrameView.h"
 #include "app/AboutBox.h"
 #include "app/ErrorReporter.h"
@@ -66,11 +67,17 @@ MainWindow::MainWindow(QWidget *parent)
 
     createDocks();
     createMenus();
+    m_faces = new FacesController(this);
     m_taskStatus = new TaskStatusWidget(m_runner, this);
     statusBar()->addPermanentWidget(m_taskStatus);
 
     connect(m_document, &ProjectDocument::documentReset, this, &MainWindow::onDocumentReset);
     connect(m_document, &ProjectDocument::locationChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &ProjectDocument::modelsChanged, this, [this] { m_models->setProject(m_document->project()); });
+    connect(m_document, &ProjectDocument::sequenceChanged, this, [this](int row) {
+        if (row == m_currentRow && m_media) // "Landmarks: n of m frames"
+            m_details->showSequence(m_document->sequence(row), m_media->mediaPath, *m_media);
+    });
     connect(m_undo, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(m_transport, &TransportBar::frameRequested, this, &MainWindow::setCurrentFrame);
     connect(waveformView(), &WaveformView::timeClicked, this, [this](double t) {
@@ -134,14 +141,21 @@ void MainWindow::createDocks()
                                       Qt::LeftDockWidgetArea);
 
     m_timeline = new TimelinePanel(this);
+    m_timeline->attach(this);
     QDockWidget *timeline = makeDock(tr("Timeline"), QStringLiteral("timelineDock"), m_timeline,
                                      Qt::BottomDockWidgetArea);
 
     m_chart = new LineChartView(this);
     m_chart->setObjectName(QStringLiteral("chartView"));
-    QDockWidget *plots = makeDock(tr("Plots"), QStringLiteral("plotsDock"), m_chart, Qt::RightDockWidgetArea);
+    // The Plots dock: the audio energy, plus the dynamics plots the Models panel adds as tabs.
+    auto *plotTabs = new QTabWidget(this);
+    plotTabs->setObjectName(QStringLiteral("plotTabs"));
+    plotTabs->setDocumentMode(true);
+    plotTabs->addTab(m_chart, tr("Audio"));
+    QDockWidget *plots = makeDock(tr("Plots"), QStringLiteral("plotsDock"), plotTabs, Qt::RightDockWidgetArea);
 
     m_models = new ModelsPanel(this);
+    m_models->attach(this, plotTabs);
     QDockWidget *models = makeDock(tr("Models"), QStringLiteral("modelsDock"), m_models, Qt::RightDockWidgetArea);
     splitDockWidget(plots, models, Qt::Vertical);
 
@@ -364,6 +378,7 @@ void MainWindow::setCurrentFrame(int frame)
     m_transport->setFrame(frame);
     waveformView()->setCursorTime(t + 0.5 / m_media->frameRate);
     m_chart->setCursor(t + 0.5 / m_media->frameRate);
+    emit currentFrameChanged(frame);
 }
 
 void MainWindow::togglePlayback()

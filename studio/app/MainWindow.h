@@ -19,6 +19,7 @@ class TaskRunner;
 
 namespace lipsync::studio {
 
+class FacesController;
 class FrameView;
 class LineChartView;
 class ModelsPanel;
@@ -53,6 +54,7 @@ public:
     LineChartView *chartView() const { return m_chart; }
     PlaybackController *playback() const { return m_playback; }
     const StudioActions &actions() const { return *m_actions; }
+    FacesController *faces() const { return m_faces; }
 
     int currentSequence() const { return m_currentRow; }
     int currentFrame() const { return m_currentFrame; }
@@ -70,6 +72,8 @@ signals:
     // doing so (canceled or failed).
     void sequenceLoaded(const QString &sequenceId);
     void sequenceLoadEnded(bool loaded);
+    // The frame shown changed (also when a sequence's media arrives).
+    void currentFrameChanged(int frame);
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -102,6 +106,7 @@ private:
     ModelsPanel *m_models = nullptr;
     TaskStatusWidget *m_taskStatus = nullptr;
     PlaybackController *m_playback = nullptr;
+    FacesController *m_faces = nullptr;
 
     std::shared_ptr<const SequenceMedia> m_media;
     int m_currentRow = -1;

@@ -1,12 +1,16 @@
 #include "app/ProjectDocument.h"
 
+#include "annotate/LandmarkCommands.h"
 #include "app/SetTranscriptCommand.h"
+#include "timeline/TierCommands.h"
 #include "util/Error.h"
 
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QUndoStack>
+
+#include <algorithm>
 
 namespace lipsync::studio {
 
@@ -54,6 +58,17 @@ void ProjectDocument::saveTo(const QString &folder)
             if (!QDir().mkpath(QFileInfo(to).absolutePath()) || !QFile::copy(from, to))
                 throw Error("cannot copy the media file into the project", to.toStdString());
         }
+        // So do the model files it refers to (the demo's AAM); models trained in memory are
+        // written by their owners on locationChanged.
+        for (const ModelReference &m : m_project.models) {
+            const QString relative = QString::fromStdString(m.file);
+            const QString from = QString::fromStdString(m_project.resolve(m.file));
+            const QString to = target.filePath(relative);
+            if (QFileInfo(relative).isAbsolute() || !QFileInfo::exists(from) || QFileInfo::exists(to))
+                continue;
+            if (!QDir().mkpath(QFileInfo(to).absolutePath()) || !QFile::copy(from, to))
+                throw Error("cannot copy the model file into the project", to.toStdString());
+        }
         // Relative paths now hold in the new folder as they are: save from there.
         Project copy = m_project;
         copy.setFolder(folder.toStdString());
@@ -85,6 +100,102 @@ void ProjectDocument::applyTranscript(int row, const QString &transcript)
 {
     m_project.sequences.at(std::size_t(row)).transcript = transcript.toStdString();
     emit sequenceChanged(row);
+}
+
+bool ProjectDocument::requestTiersChange(int row, const Tier &words, const Tier &phones, const QString &text,
+                                         int mergeKey)
+{
+    if (row < 0 || row >= sequenceCount())
+        return false;
+    const Sequence &s = sequence(row);
+    TierPair before{s.words, s.phones};
+    TierPair after{words, phones};
+    after.words.name = "words";
+    after.phones.name = "phones";
+    if (before == after)
+        return false;
+    m_undo->push(new SetTiersCommand(this, row, std::move(before), std::move(after), text, mergeKey));
+    return true;
+}
+
+void ProjectDocument::applyTiers(int row, const Tier &words, const Tier &phones)
+{
+    Sequence &s = m_project.sequences.at(std::size_t(row));
+    s.words = words;
+    s.phones = phones;
+    emit sequenceChanged(row);
+}
+
+bool ProjectDocument::requestLandmarks(int row, int frame, const std::optional<LandmarkSet> &landmarks,
+                                       const QString &text)
+{
+    if (row < 0 || row >= sequenceCount() || frame < 0)
+        return false;
+    const Sequence &s = sequence(row);
+    const auto it = s.landmarks.find(frame);
+    std::optional<LandmarkSet> before;
+    if (it != s.landmarks.end())
+        before = it->second;
+    if (before == landmarks)
+        return false;
+    m_undo->push(new SetLandmarksCommand(this, row, frame, before, landmarks, text));
+    return true;
+}
+
+void ProjectDocument::applyLandmarks(int row, int frame, const std::optional<LandmarkSet> &landmarks)
+{
+    Sequence &s = m_project.sequences.at(std::size_t(row));
+    if (landmarks)
+        s.landmarks[frame] = *landmarks;
+    else
+        s.landmarks.erase(frame);
+    emit sequenceChanged(row);
+}
+
+bool ProjectDocument::requestFaces(const std::vector<FaceData> &faces, const QString &text)
+{
+    std::vector<FaceData> before;
+    for (const FaceData &f : faces) {
+        if (f.row < 0 || f.row >= sequenceCount())
+            return false;
+        const Sequence &s = sequence(f.row);
+        before.push_back({f.row, s.landmarks, s.features});
+    }
+    if (faces.empty())
+        return false;
+    m_undo->push(new SetFacesCommand(this, std::move(before), faces, text));
+    return true;
+}
+
+void ProjectDocument::applyFaces(const std::vector<FaceData> &faces)
+{
+    for (const FaceData &f : faces) {
+        Sequence &s = m_project.sequences.at(std::size_t(f.row));
+        s.landmarks = f.landmarks;
+        s.features = f.features;
+    }
+    for (const FaceData &f : faces)
+        emit sequenceChanged(f.row);
+}
+
+bool ProjectDocument::requestAddModel(const ModelReference &model, const QString &text)
+{
+    std::vector<ModelReference> after = m_project.models;
+    const auto same = std::find_if(after.begin(), after.end(), [&](const ModelReference &m) {
+        return m.kind == model.kind && m.name == model.name;
+    });
+    if (same != after.end())
+        *same = model;
+    else
+        after.push_back(model);
+    m_undo->push(new SetModelsCommand(this, m_project.models, std::move(after), text));
+    return true;
+}
+
+void ProjectDocument::applyModels(const std::vector<ModelReference> &models)
+{
+    m_project.models = models;
+    emit modelsChanged();
 }
 
 } // namespace lipsync::studio

@@ -8,6 +8,9 @@
 #include <QObject>
 #include <QString>
 
+#include <optional>
+#include <vector>
+
 class QUndoStack;
 
 namespace lipsync::studio {
@@ -40,9 +43,33 @@ public:
     bool requestTranscriptChange(int row, const QString &transcript);
     void applyTranscript(int row, const QString &transcript);
 
+    // Speech (timeline/TierCommands): the word and phone tiers of one sequence (alignment,
+    // timeline edits). Requests with the same mergeKey >= 0 (one boundary drag) merge into one
+    // undo step; `text` names it.
+    bool requestTiersChange(int row, const Tier &words, const Tier &phones, const QString &text, int mergeKey = -1);
+    void applyTiers(int row, const Tier &words, const Tier &phones);
+
+    // Faces (annotate/LandmarkCommands). The landmarks of one frame (nullopt: none); `text` names
+    // the undo step.
+    bool requestLandmarks(int row, int frame, const std::optional<LandmarkSet> &landmarks, const QString &text);
+    void applyLandmarks(int row, int frame, const std::optional<LandmarkSet> &landmarks);
+    // Whole sequences' landmarks and features at once (tracking), as one undo step.
+    struct FaceData
+    {
+        int row = -1;
+        std::map<int, LandmarkSet> landmarks;
+        Eigen::MatrixXd features;
+    };
+    bool requestFaces(const std::vector<FaceData> &faces, const QString &text);
+    void applyFaces(const std::vector<FaceData> &faces);
+    // Adds (or replaces, same kind and name) a model reference.
+    bool requestAddModel(const ModelReference &model, const QString &text);
+    void applyModels(const std::vector<ModelReference> &models);
+
 signals:
     void documentReset();
     void sequenceChanged(int row);
+    void modelsChanged();
     void locationChanged();
 
 private:

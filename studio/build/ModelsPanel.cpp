@@ -1,16 +1,48 @@
 #include "build/ModelsPanel.h"
 
-#include "project/Project.h"
+#include "annotate/FacesController.h"
 
+#include "app/MainWindow.h"
+#include "app/ProjectDocument.h"
+#include "dynamics/DynamicModel.h"
+#include "dynamics/ModelFile.h"
+#include "dynamics/PhoneLabels.h"
+#include "eval/Evaluation.h"
+#include "plots/EvaluationChart.h"
+#include "plots/ObjectivePlot.h"
+#include "plots/TrajectoryView.h"
+#include "project/Project.h"
+#include "tasks/Feedback.h"
+#include "tasks/TaskRunner.h"
+#include "util/Error.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDir>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QLabel>
 #include <QPushButton>
+#include <QSpinBox>
+#include <QTabWidget>
 #include <QTreeWidget>
 #include <QVBoxLayout>
+
+#include <QSignalBlocker>
+
+#include <algorithm>
+#include <chrono>
 
 namespace lipsync::studio {
 
 namespace {
+
+const QStringList kKinds{QStringLiteral("dpds"), QStringLiteral("slds"), QStringLiteral("brand"),
+                         QStringLiteral("hmm")};
 
 QString kindText(const std::string &kind)
 {
@@ -23,11 +55,33 @@ QString kindText(const std::string &kind)
     return QString::fromStdString(kind);
 }
 
+QColor kindColor(const QString &kind)
+{
+    if (kind == QLatin1String("dpds")) return QColor(0xe5, 0x39, 0x35);
+    if (kind == QLatin1String("slds")) return QColor(0x43, 0xa0, 0x47);
+    if (kind == QLatin1String("brand")) return QColor(0xfb, 0x8c, 0x00);
+    if (kind == QLatin1String("hmm")) return QColor(0x8e, 0x24, 0xaa);
+    return QColor(0x54, 0x6e, 0x7a);
+}
+
+QString modelFile(const QString &kind)
+{
+    return QStringLiteral("models/%1.model").arg(kind);
+}
+
+bool isDynamicKind(const std::string &kind)
+{
+    return kKinds.contains(QString::fromStdString(kind));
+}
+
 } // namespace
 
 ModelsPanel::ModelsPanel(QWidget *parent)
     : QWidget(parent), m_list(new QTreeWidget(this)), m_buildAam(new QPushButton(tr("Build AAM…"), this)),
-      m_train(new QPushButton(tr("Train…"), this))
+      m_train(new QPushButton(tr("Train"), this)), m_cancel(new QPushButton(tr("Cancel"), this)),
+      m_evaluate(new QPushButton(tr("Evaluate (k-fold)"), this)), m_dpdsOptimizer(new QComboBox(this)),
+      m_sldsA(new QComboBox(this)), m_brandCovariance(new QComboBox(this)), m_folds(new QSpinBox(this)),
+      m_parameter(new QSpinBox(this)), m_status(new QLabel(this))
 {
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
@@ -36,17 +90,106 @@ ModelsPanel::ModelsPanel(QWidget *parent)
     m_list->header()->setSectionResizeMode(0, QHeaderView::Stretch);
     m_list->header()->setStretchLastSection(false);
     layout->addWidget(m_list, 1);
+
+    // Kinds with their options, one row each.
+    auto *grid = new QGridLayout;
+    grid->setContentsMargins(0, 0, 0, 0);
+    const QStringList labels{tr("DPDS"), tr("SLDS"), tr("Voice Puppetry (Brand)"), tr("Phoneme-mean HMM")};
+    m_dpdsOptimizer->addItem(tr("VarPro / Levenberg–Marquardt"), QStringLiteral("lm"));
+    m_dpdsOptimizer->addItem(tr("Gradient ascent (paper)"), QStringLiteral("gradient"));
+    m_sldsA->addItem(tr("Diagonal A"), false);
+    m_sldsA->addItem(tr("Full A"), true);
+    m_brandCovariance->addItem(tr("Diagonal covariance"), false);
+    m_brandCovariance->addItem(tr("Full covariance"), true);
+    QWidget *options[] = {m_dpdsOptimizer, m_sldsA, m_brandCovariance, nullptr};
+    for (int i = 0; i < kKinds.size(); ++i) {
+        auto *check = new QCheckBox(labels[i], this);
+        check->setObjectName(QStringLiteral("train_%1").arg(kKinds[i]));
+        check->setChecked(true);
+        m_kinds.insert(kKinds[i], check);
+        grid->addWidget(check, i, 0);
+        if (options[i])
+            grid->addWidget(options[i], i, 1);
+    }
+    layout->addLayout(grid);
+
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(m_buildAam);
     buttons->addWidget(m_train);
+    buttons->addWidget(m_cancel);
     buttons->addStretch();
     layout->addLayout(buttons);
-    m_buildAam->setEnabled(false);
-    m_buildAam->setToolTip(tr("Building an Active Appearance Model comes with the faces feature "
-                              "(landmark editor, AAM building and fitting)."));
-    m_train->setEnabled(false);
-    m_train->setToolTip(tr("Training dynamic models comes with the dynamics feature "
-                           "(DPDS, SLDS, Voice Puppetry, phoneme means)."));
+    auto *evaluation = new QHBoxLayout;
+    m_folds->setRange(2, 100);
+    m_folds->setValue(10);
+    m_folds->setPrefix(tr("folds: "));
+    evaluation->addWidget(m_evaluate);
+    evaluation->addWidget(m_folds);
+    evaluation->addStretch();
+    layout->addLayout(evaluation);
+    m_status->setWordWrap(true);
+    layout->addWidget(m_status);
+
+    m_buildAam->setEnabled(false); // until attached to the Faces menu's action
+    m_buildAam->setToolTip(tr("Build an Active Appearance Model from the labelled frames (Faces menu)."));
+    m_train->setToolTip(tr("Train the checked models on every sequence with features and phonemes"));
+    m_cancel->setToolTip(tr("Stop training or evaluation; the previous models stay"));
+    m_evaluate->setToolTip(tr("k-fold cross-validation of the checked models (the paper's Figure 4)"));
+    connect(m_train, &QPushButton::clicked, this, [this] { train(); });
+    connect(m_cancel, &QPushButton::clicked, this, &ModelsPanel::cancel);
+    connect(m_evaluate, &QPushButton::clicked, this, [this] { evaluate(); });
+    updateActions();
+}
+
+ModelsPanel::~ModelsPanel() = default;
+
+void ModelsPanel::attach(MainWindow *window, QTabWidget *plots)
+{
+    m_window = window;
+    m_plots = plots;
+    // The button is another trigger of the Faces menu's action, so both stay in one state.
+    if (QAction *buildAam = window->faces() ? window->faces()->buildAamAction() : nullptr) {
+        m_buildAam->setEnabled(buildAam->isEnabled());
+        connect(buildAam, &QAction::changed, m_buildAam,
+                [this, buildAam] { m_buildAam->setEnabled(buildAam->isEnabled()); });
+        connect(m_buildAam, &QPushButton::clicked, buildAam, &QAction::trigger);
+    }
+    m_trajectoryPage = new QWidget(plots);
+    auto *page = new QVBoxLayout(m_trajectoryPage);
+    page->setContentsMargins(0, 0, 0, 0);
+    auto *row = new QHBoxLayout;
+    row->setContentsMargins(4, 2, 4, 0);
+    m_parameter->setParent(m_trajectoryPage);
+    m_parameter->setRange(0, 0);
+    m_parameter->setPrefix(tr("AAM parameter "));
+    m_parameter->setToolTip(tr("Which AAM parameter to plot over time"));
+    row->addWidget(m_parameter);
+    row->addStretch();
+    page->addLayout(row);
+    m_trajectory = new TrajectoryView(m_trajectoryPage);
+    m_trajectory->setObjectName(QStringLiteral("trajectoryView"));
+    page->addWidget(m_trajectory, 1);
+    m_objective = new ObjectivePlot(plots);
+    m_objective->setObjectName(QStringLiteral("objectivePlot"));
+    m_evaluation = new EvaluationChart(plots);
+    m_evaluation->setObjectName(QStringLiteral("evaluationChart"));
+    plots->addTab(m_trajectoryPage, tr("Trajectory"));
+    plots->addTab(m_objective, tr("Training"));
+    plots->addTab(m_evaluation, tr("Evaluation"));
+
+    ProjectDocument *doc = window->document();
+    connect(doc, &ProjectDocument::documentReset, this, &ModelsPanel::onDocumentReset);
+    connect(doc, &ProjectDocument::locationChanged, this, &ModelsPanel::onLocationChanged);
+    connect(doc, &ProjectDocument::modelsChanged, this, &ModelsPanel::refreshTrajectory);
+    connect(doc, &ProjectDocument::sequenceChanged, this, [this](int row) {
+        if (m_window && row == m_window->currentSequence())
+            refreshTrajectory();
+        updateActions();
+    });
+    connect(window, &MainWindow::sequenceLoaded, this, &ModelsPanel::refreshTrajectory);
+    connect(window, &MainWindow::currentFrameChanged, m_trajectory, &TrajectoryView::setCurrentFrame);
+    connect(m_parameter, &QSpinBox::valueChanged, this, &ModelsPanel::refreshTrajectory);
+    updateActions();
 }
 
 void ModelsPanel::setProject(const Project &project)
@@ -57,7 +200,14 @@ void ModelsPanel::setProject(const Project &project)
         item->setText(0, QString::fromStdString(m.name));
         item->setText(1, kindText(m.kind));
         item->setText(2, QString::fromStdString(m.file));
-        item->setToolTip(2, QString::fromStdString(project.resolve(m.file)));
+        item->setData(1, Qt::UserRole, QString::fromStdString(m.kind));
+        const QString kind = QString::fromStdString(m.kind);
+        if (isDynamicKind(m.kind) && m_unsaved.contains(kind))
+            item->setToolTip(2, tr("Trained in this session; written when the project is saved"));
+        else
+            item->setToolTip(2, QString::fromStdString(project.resolve(m.file)));
+        if (isDynamicKind(m.kind))
+            item->setForeground(1, kindColor(kind));
     }
     if (project.models.empty()) {
         auto *item = new QTreeWidgetItem(m_list);
@@ -65,6 +215,316 @@ void ModelsPanel::setProject(const Project &project)
         item->setFlags(Qt::NoItemFlags);
         item->setFirstColumnSpanned(true);
     }
+    updateActions();
+}
+
+std::vector<LabelledSequence> ModelsPanel::trainingData(QString *problem) const
+{
+    std::vector<LabelledSequence> out;
+    if (!m_window)
+        return out;
+    const Project &project = m_window->document()->project();
+    int withoutFeatures = 0, withoutPhones = 0;
+    for (const Sequence &s : project.sequences) {
+        if (s.features.size() == 0) {
+            ++withoutFeatures;
+            continue;
+        }
+        if (s.phones.isEmpty()) {
+            ++withoutPhones;
+            continue;
+        }
+        try {
+            LabelledSequence l;
+            l.name = s.id;
+            l.labels = frameLabelsFromTier(s.phones, s.frameRate, s.frameCount, s.id);
+            l.features = s.features;
+            out.push_back(std::move(l));
+        } catch (const Error &e) {
+            if (problem)
+                *problem = QString::fromUtf8(e.what());
+            return {};
+        }
+    }
+    if (out.empty() && problem)
+        *problem = tr("No sequence has both features and phonemes (%1 without features, %2 without "
+                      "phonemes): track the faces and align the speech first.")
+                       .arg(withoutFeatures)
+                       .arg(withoutPhones);
+    return out;
+}
+
+QList<Task *> ModelsPanel::runningTasks() const
+{
+    QList<Task *> out;
+    for (const QPointer<Task> &t : m_tasks)
+        if (t && t->isRunning())
+            out.append(t.data());
+    return out;
+}
+
+QList<Task *> ModelsPanel::train()
+{
+    QList<Task *> started;
+    if (!m_window || !runningTasks().isEmpty())
+        return started;
+    QString problem;
+    auto data = std::make_shared<const std::vector<LabelledSequence>>(trainingData(&problem));
+    if (data->empty()) {
+        m_status->setText(problem);
+        return started;
+    }
+    ModelOptions options;
+    options.dpds.optimizer = m_dpdsOptimizer->currentData().toString() == QLatin1String("gradient")
+                                 ? DpdsOptions::Optimizer::GradientAscent
+                                 : DpdsOptions::Optimizer::LevenbergMarquardt;
+    options.slds.fullA = m_sldsA->currentData().toBool();
+    options.brand.fullCovariance = m_brandCovariance->currentData().toBool();
+
+    ProjectDocument *doc = m_window->document();
+    std::string aamId = "unspecified";
+    for (const ModelReference &m : doc->project().models)
+        if (m.kind == "aam")
+            aamId = m.name;
+    if (m_plots)
+        m_plots->setCurrentWidget(m_objective);
+    for (const QString &kind : kKinds) {
+        if (!m_kinds[kind]->isChecked() || !m_kinds[kind]->isEnabled())
+            continue;
+        const QString name = kindText(kind.toStdString());
+        const QString target = doc->isReadOnly() ? QString() : QDir(doc->folder()).filePath(modelFile(kind));
+        m_objective->startRun(kind, name, kindColor(kind));
+        QPointer<ModelsPanel> self(this);
+        Task *task = m_window->taskRunner()->start(
+            tr("Train %1").arg(name),
+            [self, kind, name, target, data, options, aamId](Feedback &feedback) -> TaskRunner::Commit {
+                feedback.setStatus(tr("Training %1 on %n sequence(s)…", "", int(data->size())).arg(name).toStdString());
+                std::shared_ptr<DynamicModel> model = createDynamicModel(kind.toStdString(), options);
+                const auto start = std::chrono::steady_clock::now();
+                model->train(*data, feedback);
+                const double seconds =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                long long frames = 0;
+                double ll = 0.0;
+                for (const LabelledSequence &s : *data) {
+                    frames += s.frameCount();
+                    ll += model->logLikelihood(s.labels, s.features);
+                }
+                // Written on the GUI thread by the commit (a small JSON file), so a canceled
+                // training never replaces the model file either.
+                return [self, kind, name, target, model, seconds, ll, frames, aamId] {
+                    if (!self)
+                        return;
+                    self->m_trained.insert(kind, model);
+                    self->m_unsaved.insert(kind);
+                    self->m_status->setText(tr("%1 trained in %2 s: log-likelihood %3 nats/frame")
+                                                .arg(name)
+                                                .arg(seconds, 0, 'f', 2)
+                                                .arg(frames > 0 ? ll / double(frames) : 0.0, 0, 'f', 3));
+                    if (!target.isEmpty()) {
+                        try {
+                            QDir().mkpath(QFileInfo(target).absolutePath());
+                            saveModel(*model, target.toStdString(), aamId);
+                            self->m_unsaved.remove(kind);
+                        } catch (const Error &e) {
+                            self->m_status->setText(tr("The %1 model could not be saved: %2").arg(name, QString::fromUtf8(e.what())));
+                        }
+                    }
+                    self->m_window->document()->requestAddModel(
+                        {kind.toStdString(), name.toStdString(), modelFile(kind).toStdString()},
+                        tr("Train %1").arg(name));
+                    self->refreshTrajectory();
+                    emit self->modelTrained(kind);
+                };
+            });
+        connect(task, &Task::iterationReported, m_objective,
+                [plot = m_objective, kind](int i, double value) { plot->addIteration(kind, i, value); });
+        connect(task, &Task::finished, this, [this, name, task](Task::State state) {
+            if (state == Task::State::Canceled)
+                m_status->setText(tr("Training %1 canceled: the previous model stays.").arg(name));
+            else if (state == Task::State::Failed)
+                m_status->setText(tr("Training %1 failed: %2").arg(name, task->errorMessage()));
+            updateActions();
+        });
+        m_tasks.append(task);
+        started.append(task);
+    }
+    if (started.isEmpty())
+        m_status->setText(tr("Check at least one model kind to train."));
+    updateActions();
+    return started;
+}
+
+Task *ModelsPanel::evaluate()
+{
+    if (!m_window || !runningTasks().isEmpty())
+        return nullptr;
+    QString problem;
+    auto data = std::make_shared<const std::vector<LabelledSequence>>(trainingData(&problem));
+    if (data->empty()) {
+        m_status->setText(problem);
+        return nullptr;
+    }
+    EvaluationOptions options;
+    options.folds = std::min(m_folds->value(), int(data->size()));
+    options.kinds.clear();
+    for (const QString &kind : kKinds)
+        if (m_kinds[kind]->isChecked() && m_kinds[kind]->isEnabled())
+            options.kinds.push_back(kind.toStdString());
+    if (options.kinds.empty() || options.folds < 2) {
+        m_status->setText(options.kinds.empty() ? tr("Check at least one model kind to evaluate.")
+                                                : tr("Cross-validation needs at least two sequences."));
+        return nullptr;
+    }
+    options.modelOptions.dpds.optimizer = m_dpdsOptimizer->currentData().toString() == QLatin1String("gradient")
+                                              ? DpdsOptions::Optimizer::GradientAscent
+                                              : DpdsOptions::Optimizer::LevenbergMarquardt;
+    options.modelOptions.slds.fullA = m_sldsA->currentData().toBool();
+    options.modelOptions.brand.fullCovariance = m_brandCovariance->currentData().toBool();
+    QPointer<ModelsPanel> self(this);
+    Task *task = m_window->taskRunner()->run<EvaluationResult>(
+        tr("Evaluate %n model(s) (%1-fold)", "", int(options.kinds.size())).arg(options.folds),
+        [data, options](Feedback &feedback) { return evaluateModels(*data, options, feedback); },
+        [self](EvaluationResult result) {
+            if (!self)
+                return;
+            self->m_evaluation->setResult(result);
+            if (self->m_plots)
+                self->m_plots->setCurrentWidget(self->m_evaluation);
+            self->m_status->setText(tr("Evaluated %n model(s) on %1 sequences, %2 folds.", "", int(result.models.size()))
+                                        .arg(result.sequences)
+                                        .arg(result.folds));
+            emit self->evaluated();
+        });
+    connect(task, &Task::finished, this, [this, task](Task::State state) {
+        if (state == Task::State::Failed)
+            m_status->setText(tr("Evaluation failed: %1").arg(task->errorMessage()));
+        updateActions();
+    });
+    m_tasks.append(task);
+    updateActions();
+    return task;
+}
+
+void ModelsPanel::cancel()
+{
+    for (Task *task : runningTasks())
+        task->cancel();
+    updateActions();
+}
+
+void ModelsPanel::onDocumentReset()
+{
+    // Models of the new project: load the dynamic ones it refers to (small JSON files).
+    m_trained.clear();
+    m_unsaved.clear();
+    m_objective->clearRuns();
+    m_evaluation->clear();
+    const Project &project = m_window->document()->project();
+    QStringList failed;
+    for (const ModelReference &m : project.models) {
+        if (!isDynamicKind(m.kind))
+            continue;
+        try {
+            std::shared_ptr<const DynamicModel> model = loadModel(project.resolve(m.file));
+            m_trained.insert(QString::fromStdString(m.kind), model);
+        } catch (const Error &e) {
+            failed.append(QString::fromUtf8(e.what()));
+        }
+    }
+    m_status->setText(failed.isEmpty() ? QString() : tr("Some models could not be loaded: %1").arg(failed.join(QLatin1Char('\n'))));
+    refreshTrajectory();
+    updateActions();
+}
+
+void ModelsPanel::onLocationChanged()
+{
+    // A read-only document (the demo) was saved somewhere: write the models trained meanwhile.
+    ProjectDocument *doc = m_window->document();
+    if (doc->isReadOnly() || m_unsaved.isEmpty())
+        return;
+    std::string aamId = "unspecified";
+    for (const ModelReference &m : doc->project().models)
+        if (m.kind == "aam")
+            aamId = m.name;
+    for (const QString &kind : QSet<QString>(m_unsaved)) {
+        const auto model = m_trained.value(kind);
+        if (!model)
+            continue;
+        const QString target = QDir(doc->folder()).filePath(modelFile(kind));
+        try {
+            QDir().mkpath(QFileInfo(target).absolutePath());
+            saveModel(*model, target.toStdString(), aamId);
+            m_unsaved.remove(kind);
+        } catch (const Error &e) {
+            m_status->setText(tr("The %1 model could not be saved: %2").arg(kindText(kind.toStdString()), QString::fromUtf8(e.what())));
+        }
+    }
+    setProject(doc->project());
+}
+
+void ModelsPanel::refreshTrajectory()
+{
+    if (!m_window || !m_trajectory)
+        return;
+    const int row = m_window->currentSequence();
+    const ProjectDocument *doc = m_window->document();
+    if (row < 0 || row >= doc->sequenceCount()) {
+        m_trajectory->clear();
+        return;
+    }
+    const Sequence &s = doc->sequence(row);
+    if (s.features.size() == 0) {
+        m_parameter->setRange(0, 0);
+        m_trajectory->setData(tr("%1: no features yet (track the faces first)").arg(QString::fromStdString(s.id)),
+                              s.frameRate, s.phones, {});
+        return;
+    }
+    {
+        const QSignalBlocker block(m_parameter);
+        m_parameter->setRange(0, int(s.features.cols()) - 1);
+    }
+    const int k = m_parameter->value();
+    QVector<TrajectoryView::Series> series;
+    TrajectoryView::Series real{tr("real"), {}, QColor(0x1e, 0x88, 0xe5)};
+    for (Eigen::Index t = 0; t < s.features.rows(); ++t)
+        real.values.append(s.features(t, k));
+    series.append(real);
+    if (!s.phones.isEmpty()) {
+        std::vector<int> labels;
+        try {
+            labels = frameLabelsFromTier(s.phones, s.frameRate, s.frameCount, s.id);
+        } catch (const Error &) {
+        }
+        // Each trained model the document refers to, in the panel's order.
+        for (const QString &kind : kKinds) {
+            const auto model = m_trained.value(kind);
+            const bool referenced = std::any_of(doc->project().models.begin(), doc->project().models.end(),
+                                                [&](const ModelReference &m) { return m.kind == kind.toStdString(); });
+            if (!model || !referenced || labels.empty() || model->dimension() != s.features.cols())
+                continue;
+            try {
+                const Eigen::MatrixXd generated = model->generate(labels);
+                TrajectoryView::Series g{kindText(kind.toStdString()), {}, kindColor(kind)};
+                for (Eigen::Index t = 0; t < generated.rows(); ++t)
+                    g.values.append(generated(t, k));
+                series.append(g);
+            } catch (const Error &) {
+            }
+        }
+    }
+    m_trajectory->setData(tr("%1 — AAM parameter %2").arg(QString::fromStdString(s.id)).arg(k), s.frameRate,
+                          s.phones, series);
+    m_trajectory->setCurrentFrame(m_window->currentFrame());
+}
+
+void ModelsPanel::updateActions()
+{
+    const bool busy = !runningTasks().isEmpty();
+    const bool ready = m_window && m_window->document()->isOpen();
+    m_train->setEnabled(ready && !busy);
+    m_evaluate->setEnabled(ready && !busy);
+    m_cancel->setEnabled(busy);
 }
 
 } // namespace lipsync::studio

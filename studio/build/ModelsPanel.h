@@ -1,32 +1,116 @@
 #pragma once
-// The Models dock: the AAMs and dynamic models the project refers to, and the actions that
-// build them (enabled by the faces and dynamics features).
+// The Models dock: the AAMs and dynamic models the project refers to, and the dynamics workflow
+// (issue #5): choose model kinds and options, train them as TaskRunner tasks with a live plot of
+// the objective per iteration (cancel keeps the previous model), compare them by k-fold
+// cross-validation (the paper's Figure 4), and look at the trajectories they generate for the
+// current sequence. Trained models live here (in memory) and in the document as ModelReferences
+// (kind dpds/slds/brand/hmm, file models/<kind>.model, written when the project is saved).
+#include <QHash>
+#include <QList>
+#include <QPointer>
+#include <QSet>
 #include <QWidget>
 
+#include <memory>
+#include <vector>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
 class QPushButton;
+class QSpinBox;
+class QTabWidget;
 class QTreeWidget;
 
 namespace lipsync {
+class DynamicModel;
 class Project;
+class Task;
+struct LabelledSequence;
 }
 
 namespace lipsync::studio {
+
+class EvaluationChart;
+class MainWindow;
+class ObjectivePlot;
+class TrajectoryView;
 
 class ModelsPanel : public QWidget
 {
     Q_OBJECT
 public:
     explicit ModelsPanel(QWidget *parent = nullptr);
+    ~ModelsPanel() override;
+
+    // Connects the panel to the window's document, task runner and current frame, and adds the
+    // Trajectory, Training and Evaluation plots as tabs of `plots` (the Plots dock).
+    void attach(MainWindow *window, QTabWidget *plots);
 
     void setProject(const Project &project);
     QTreeWidget *list() const { return m_list; }
     QPushButton *buildAamButton() const { return m_buildAam; }
     QPushButton *trainButton() const { return m_train; }
+    QPushButton *cancelButton() const { return m_cancel; }
+    QPushButton *evaluateButton() const { return m_evaluate; }
+    // "dpds", "slds", "brand", "hmm".
+    QCheckBox *kindCheck(const QString &kind) const { return m_kinds.value(kind); }
+    QComboBox *dpdsOptimizer() const { return m_dpdsOptimizer; }
+    QComboBox *sldsTransition() const { return m_sldsA; }
+    QComboBox *brandCovariance() const { return m_brandCovariance; }
+    QSpinBox *foldsSpin() const { return m_folds; }
+    QSpinBox *parameterSpin() const { return m_parameter; }
+    TrajectoryView *trajectoryView() const { return m_trajectory; }
+    ObjectivePlot *objectivePlot() const { return m_objective; }
+    EvaluationChart *evaluationChart() const { return m_evaluation; }
+    QTabWidget *plotTabs() const { return m_plots; }
+
+    // The trained (or loaded) model of a kind, or null.
+    std::shared_ptr<const DynamicModel> model(const QString &kind) const { return m_trained.value(kind); }
+    // Training and evaluation tasks still running.
+    QList<Task *> runningTasks() const;
+
+    // The actions behind the buttons (return the tasks started; empty/null when nothing to do).
+    QList<Task *> train();
+    Task *evaluate();
+    void cancel();
+
+signals:
+    // A model was trained and added to the document (kind).
+    void modelTrained(const QString &kind);
+    // An evaluation finished and is shown.
+    void evaluated();
 
 private:
+    std::vector<LabelledSequence> trainingData(QString *problem) const;
+    void onDocumentReset();
+    void onLocationChanged();
+    void refreshTrajectory();
+    void updateActions();
+
     QTreeWidget *m_list;
     QPushButton *m_buildAam;
     QPushButton *m_train;
+    QPushButton *m_cancel;
+    QPushButton *m_evaluate;
+    QHash<QString, QCheckBox *> m_kinds;
+    QComboBox *m_dpdsOptimizer;
+    QComboBox *m_sldsA;
+    QComboBox *m_brandCovariance;
+    QSpinBox *m_folds;
+    QSpinBox *m_parameter;
+    QLabel *m_status;
+
+    MainWindow *m_window = nullptr;
+    QPointer<QTabWidget> m_plots;
+    TrajectoryView *m_trajectory = nullptr;
+    ObjectivePlot *m_objective = nullptr;
+    EvaluationChart *m_evaluation = nullptr;
+    QWidget *m_trajectoryPage = nullptr;
+
+    QHash<QString, std::shared_ptr<const DynamicModel>> m_trained;
+    QSet<QString> m_unsaved; // kinds trained into a read-only document: written on the next save
+    QList<QPointer<Task>> m_tasks;
 };
 
 } // namespace lipsync::studio

@@ -1,0 +1,206 @@
+#include "plots/EvaluationChart.h"
+
+#include "eval/Evaluation.h"
+
+#include <vtkAxis.h>
+#include <vtkChartMatrix.h>
+#include <vtkChartXY.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkDoubleArray.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkGenericRenderWindowInteractor.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkPen.h>
+#include <vtkPlot.h>
+#include <vtkPlotBar.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
+#include <vtkTable.h>
+#include <vtkTextProperty.h>
+#include <vtkVector.h>
+
+#include <QColor>
+#include <QCoreApplication>
+#include <QString>
+
+#include <algorithm>
+#include <vector>
+
+namespace lipsync::studio {
+
+namespace {
+
+QColor kindColor(const std::string &kind)
+{
+    if (kind == "dpds") return QColor(0xe5, 0x39, 0x35);
+    if (kind == "slds") return QColor(0x43, 0xa0, 0x47);
+    if (kind == "brand") return QColor(0xfb, 0x8c, 0x00);
+    if (kind == "hmm") return QColor(0x8e, 0x24, 0xaa);
+    return QColor(0x54, 0x6e, 0x7a);
+}
+
+QString metricTitle(const std::string &metric)
+{
+    if (metric == "l1") return EvaluationChart::tr("L1 error");
+    if (metric == "rms") return EvaluationChart::tr("RMS error");
+    if (metric == "linf") return EvaluationChart::tr("L-inf error");
+    if (metric == "loglik") return EvaluationChart::tr("log-likelihood per frame");
+    return QString::fromStdString(metric);
+}
+
+QString kindName(const std::string &kind)
+{
+    if (kind == "dpds") return QStringLiteral("DPDS");
+    if (kind == "slds") return QStringLiteral("SLDS");
+    if (kind == "brand") return QStringLiteral("Brand");
+    if (kind == "hmm") return QStringLiteral("HMM");
+    return QString::fromStdString(kind);
+}
+
+} // namespace
+
+struct EvaluationChart::Impl
+{
+    vtkNew<vtkContextView> view;
+    vtkNew<vtkChartMatrix> matrix;
+    std::vector<vtkSmartPointer<vtkTable>> tables;
+    int models = 0;
+    int metrics = 0;
+};
+
+EvaluationChart::EvaluationChart(QWidget *parent) : VtkWidget(parent), e(std::make_unique<Impl>())
+{
+    e->view->SetRenderWindow(renderWindow());
+    e->view->SetInteractor(interactor());
+    e->view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
+    e->view->GetScene()->AddItem(e->matrix);
+    setMinimumSize(240, 140);
+}
+
+EvaluationChart::~EvaluationChart() = default;
+
+int EvaluationChart::modelCount() const
+{
+    return e->models;
+}
+
+int EvaluationChart::metricCount() const
+{
+    return e->metrics;
+}
+
+void EvaluationChart::clear()
+{
+    e->matrix->SetSize(vtkVector2i(0, 0));
+    e->tables.clear();
+    e->models = e->metrics = 0;
+    update();
+}
+
+void EvaluationChart::setResult(const EvaluationResult &result)
+{
+    clear();
+    const std::vector<std::string> &metrics = evaluationMetrics();
+    const int n = int(result.models.size());
+    if (n == 0)
+        return;
+    e->matrix->SetSize(vtkVector2i(2, (int(metrics.size()) + 1) / 2));
+    e->matrix->SetGutter(vtkVector2f(50.0f, 40.0f));
+    for (size_t m = 0; m < metrics.size(); ++m) {
+        const int rows = (int(metrics.size()) + 1) / 2;
+        auto *chart = vtkChartXY::SafeDownCast(e->matrix->GetChart(vtkVector2i(int(m) % 2, rows - 1 - int(m) / 2)));
+        if (!chart)
+            continue;
+        chart->SetTitle(metricTitle(metrics[m]).toUtf8().constData());
+        chart->GetTitleProperties()->SetFontSize(12);
+        chart->SetShowLegend(false);
+        vtkNew<vtkDoubleArray> ticks;
+        vtkNew<vtkStringArray> labels;
+        double lo = 0.0, hi = 0.0;
+        // One bar plot per chart (vtkChartXY puts several bar plots side by side), coloured per
+        // model through a lookup table on the model index.
+        auto bars = vtkSmartPointer<vtkTable>::New();
+        vtkNew<vtkDoubleArray> bx;
+        bx->SetName("model");
+        vtkNew<vtkDoubleArray> by;
+        by->SetName("mean");
+        vtkNew<vtkDoubleArray> bc;
+        bc->SetName("colour");
+        bars->AddColumn(bx);
+        bars->AddColumn(by);
+        bars->AddColumn(bc);
+        vtkNew<vtkLookupTable> colours;
+        colours->SetNumberOfTableValues(n);
+        colours->SetRange(0.0, std::max(1.0, double(n - 1)));
+        for (int i = 0; i < n; ++i) {
+            const ModelEvaluation &model = result.models[size_t(i)];
+            const QColor color = kindColor(model.kind);
+            colours->SetTableValue(i, color.redF(), color.greenF(), color.blueF(), 1.0);
+            const auto found = model.metrics.find(metrics[m]);
+            if (found == model.metrics.end())
+                continue;
+            const double mean = found->second.mean, ci = found->second.ci95;
+            lo = std::min({lo, mean - ci, mean});
+            hi = std::max({hi, mean + ci, mean});
+            ticks->InsertNextValue(i);
+            labels->InsertNextValue(kindName(model.kind).toStdString());
+            bx->InsertNextValue(i);
+            by->InsertNextValue(mean);
+            bc->InsertNextValue(i);
+        }
+        colours->Build();
+        auto *plot = vtkPlotBar::SafeDownCast(chart->AddPlot(vtkChart::BAR));
+        plot->SetInputData(bars, 0, 1);
+        plot->SetLookupTable(colours);
+        plot->SelectColorArray("colour");
+        plot->ScalarVisibilityOn();
+        plot->SetWidth(0.6f);
+        e->tables.push_back(bars);
+        for (int i = 0; i < n; ++i) {
+            const ModelEvaluation &model = result.models[size_t(i)];
+            const auto found = model.metrics.find(metrics[m]);
+            if (found == model.metrics.end())
+                continue;
+            const double mean = found->second.mean, ci = found->second.ci95;
+            // Error bar: cap, stem, cap as one polyline.
+            const double w = 0.15;
+            const double xs[] = {i - w, i + w, double(i), double(i), i - w, i + w};
+            const double ys[] = {mean + ci, mean + ci, mean + ci, mean - ci, mean - ci, mean - ci};
+            auto whisker = vtkSmartPointer<vtkTable>::New();
+            vtkNew<vtkDoubleArray> wx;
+            wx->SetName("x");
+            vtkNew<vtkDoubleArray> wy;
+            wy->SetName("ci95");
+            whisker->AddColumn(wx);
+            whisker->AddColumn(wy);
+            whisker->SetNumberOfRows(6);
+            for (int k = 0; k < 6; ++k) {
+                whisker->SetValue(k, 0, xs[k]);
+                whisker->SetValue(k, 1, ys[k]);
+            }
+            vtkPlot *line = chart->AddPlot(vtkChart::LINE);
+            line->SetInputData(whisker, 0, 1);
+            line->SetColor(20, 20, 20, 255);
+            line->SetWidth(1.5f);
+            e->tables.push_back(whisker);
+        }
+        vtkAxis *x = chart->GetAxis(vtkAxis::BOTTOM);
+        x->SetCustomTickPositions(ticks, labels);
+        x->SetBehavior(vtkAxis::FIXED);
+        x->SetRange(-0.6, n - 0.4);
+        x->SetTitle("");
+        vtkAxis *y = chart->GetAxis(vtkAxis::LEFT);
+        y->SetTitle("");
+        const double pad = 0.08 * std::max(hi - lo, 1e-9);
+        y->SetBehavior(vtkAxis::FIXED);
+        y->SetRange(lo < 0 ? lo - pad : 0.0, hi > 0 ? hi + pad : 0.0);
+    }
+    e->models = n;
+    e->metrics = int(metrics.size());
+    update();
+}
+
+} // namespace lipsync::studio

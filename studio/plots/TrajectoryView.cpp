@@ -1,0 +1,254 @@
+#include "plots/TrajectoryView.h"
+
+#include "project/Tier.h"
+
+#include <vtkAxis.h>
+#include <vtkBrush.h>
+#include <vtkCallbackCommand.h>
+#include <vtkChartLegend.h>
+#include <vtkChartXY.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkDoubleArray.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkGenericRenderWindowInteractor.h>
+#include <vtkNew.h>
+#include <vtkPen.h>
+#include <vtkPlot.h>
+#include <vtkPlotArea.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
+#include <vtkTable.h>
+#include <vtkTextProperty.h>
+#include <vtkVariant.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace lipsync::studio {
+
+namespace {
+
+vtkSmartPointer<vtkTable> makeTable(const std::vector<const char *> &names, vtkIdType rows)
+{
+    auto table = vtkSmartPointer<vtkTable>::New();
+    for (const char *name : names) {
+        vtkNew<vtkDoubleArray> column;
+        column->SetName(name);
+        table->AddColumn(column);
+    }
+    table->SetNumberOfRows(rows);
+    return table;
+}
+
+} // namespace
+
+struct TrajectoryView::Impl
+{
+    vtkNew<vtkContextView> view;
+    vtkNew<vtkChartXY> chart;
+    std::vector<vtkSmartPointer<vtkTable>> tables;
+    vtkSmartPointer<vtkTable> cursorTable;
+    vtkPlot *cursorPlot = nullptr;
+    vtkNew<vtkCallbackCommand> syncAxes;
+
+    QString title;
+    double frameRate = 25.0;
+    std::vector<Interval> phones;
+    QVector<Series> series;
+    int currentFrame = -1;
+    double yMin = 0.0, yMax = 1.0;
+};
+
+TrajectoryView::TrajectoryView(QWidget *parent) : VtkWidget(parent), t(std::make_unique<Impl>())
+{
+    t->view->SetRenderWindow(renderWindow());
+    t->view->SetInteractor(interactor());
+    t->view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
+    t->view->GetScene()->AddItem(t->chart);
+    t->chart->SetShowLegend(true);
+    t->chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+    t->chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+    t->chart->GetLegend()->GetLabelProperties()->SetFontSize(9);
+    t->chart->GetLegend()->GetBrush()->SetOpacity(170); // the curves stay visible beneath
+    t->chart->GetTitleProperties()->SetFontSize(13);
+    for (int axis : {vtkAxis::BOTTOM, vtkAxis::LEFT, vtkAxis::TOP}) {
+        t->chart->GetAxis(axis)->GetTitleProperties()->SetFontSize(12);
+        t->chart->GetAxis(axis)->GetLabelProperties()->SetFontSize(11);
+    }
+    // The top axis carries the phone labels at the segment centres; it follows the bottom axis
+    // through zoom and pan (synchronised before every render).
+    t->chart->SetAutoAxes(false);
+    t->chart->GetAxis(vtkAxis::TOP)->SetVisible(true);
+    t->chart->GetAxis(vtkAxis::TOP)->SetBehavior(vtkAxis::FIXED);
+    t->chart->GetAxis(vtkAxis::TOP)->SetGridVisible(false);
+    t->chart->GetAxis(vtkAxis::RIGHT)->SetVisible(false);
+    t->syncAxes->SetClientData(t.get());
+    t->syncAxes->SetCallback([](vtkObject *, unsigned long, void *clientData, void *) {
+        auto *impl = static_cast<Impl *>(clientData);
+        vtkAxis *bottom = impl->chart->GetAxis(vtkAxis::BOTTOM);
+        vtkAxis *top = impl->chart->GetAxis(vtkAxis::TOP);
+        if (top->GetMinimum() != bottom->GetMinimum() || top->GetMaximum() != bottom->GetMaximum())
+            top->SetRange(bottom->GetMinimum(), bottom->GetMaximum());
+    });
+    t->view->GetRenderer()->AddObserver(vtkCommand::StartEvent, t->syncAxes);
+    setMinimumSize(200, 140);
+}
+
+TrajectoryView::~TrajectoryView() = default;
+
+void TrajectoryView::setData(const QString &title, double frameRate, const Tier &phones,
+                             const QVector<Series> &series)
+{
+    t->title = title;
+    t->frameRate = frameRate > 0 ? frameRate : 25.0;
+    t->phones = phones.intervals;
+    t->series = series;
+    rebuild();
+}
+
+void TrajectoryView::clear()
+{
+    t->title.clear();
+    t->phones.clear();
+    t->series.clear();
+    rebuild();
+}
+
+int TrajectoryView::seriesCount() const
+{
+    return int(t->series.size());
+}
+
+int TrajectoryView::phoneBandCount() const
+{
+    return int(t->phones.size());
+}
+
+void TrajectoryView::rebuild()
+{
+    t->chart->ClearPlots();
+    t->tables.clear();
+    t->cursorPlot = nullptr;
+    t->cursorTable = nullptr;
+    t->chart->SetTitle(t->title.toUtf8().constData());
+    t->chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(tr("time (s)").toUtf8().constData());
+    t->chart->GetAxis(vtkAxis::LEFT)->SetTitle(tr("parameter value").toUtf8().constData());
+    t->chart->GetAxis(vtkAxis::TOP)->SetTitle("");
+
+    bool first = true;
+    double duration = 0.0;
+    for (const Series &s : t->series) {
+        for (double v : s.values) {
+            if (!std::isfinite(v))
+                continue;
+            t->yMin = first ? v : std::min(t->yMin, v);
+            t->yMax = first ? v : std::max(t->yMax, v);
+            first = false;
+        }
+        duration = std::max(duration, s.values.size() / t->frameRate);
+    }
+    if (first) {
+        t->yMin = 0.0;
+        t->yMax = 1.0;
+    }
+    const double margin = 0.05 * std::max(t->yMax - t->yMin, 1e-9);
+    const double lo = t->yMin - margin, hi = t->yMax + margin;
+
+    // Phoneme segments: every other one shaded, so neighbours stay distinguishable.
+    vtkNew<vtkDoubleArray> tickPositions;
+    vtkNew<vtkStringArray> tickLabels;
+    if (!t->phones.empty() && !t->series.isEmpty()) {
+        auto bands = makeTable({"t", "lo", "hi"}, vtkIdType(2 * t->phones.size()));
+        for (size_t i = 0; i < t->phones.size(); ++i) {
+            const Interval &p = t->phones[i];
+            const double top = i % 2 == 0 ? hi : lo;
+            bands->SetValue(vtkIdType(2 * i), 0, p.start);
+            bands->SetValue(vtkIdType(2 * i), 1, lo);
+            bands->SetValue(vtkIdType(2 * i), 2, top);
+            bands->SetValue(vtkIdType(2 * i + 1), 0, p.end);
+            bands->SetValue(vtkIdType(2 * i + 1), 1, lo);
+            bands->SetValue(vtkIdType(2 * i + 1), 2, top);
+            tickPositions->InsertNextValue(0.5 * (p.start + p.end));
+            tickLabels->InsertNextValue(p.label.empty() ? std::string("sil") : p.label);
+            duration = std::max(duration, p.end);
+        }
+        auto *area = vtkPlotArea::SafeDownCast(t->chart->AddPlot(vtkChart::AREA));
+        area->SetInputData(bands);
+        area->SetInputArray(0, "t");
+        area->SetInputArray(1, "lo");
+        area->SetInputArray(2, "hi");
+        area->GetBrush()->SetColor(225, 232, 240, 255);
+        area->GetPen()->SetLineType(vtkPen::NO_PEN);
+        area->SetLabel(tr("phonemes").toUtf8().constData());
+        t->tables.push_back(bands);
+    }
+    t->chart->GetAxis(vtkAxis::TOP)->SetCustomTickPositions(tickPositions, tickLabels);
+
+    for (const Series &s : t->series) {
+        auto table = makeTable({"t", "y"}, vtkIdType(s.values.size()));
+        for (qsizetype i = 0; i < s.values.size(); ++i) {
+            table->SetValue(vtkIdType(i), 0, (double(i) + 0.5) / t->frameRate);
+            table->SetValue(vtkIdType(i), 1, s.values[i]);
+        }
+        vtkPlot *plot = t->chart->AddPlot(vtkChart::LINE);
+        plot->SetInputData(table, 0, 1);
+        plot->SetColor(static_cast<unsigned char>(s.color.red()), static_cast<unsigned char>(s.color.green()),
+                       static_cast<unsigned char>(s.color.blue()), 255);
+        plot->SetWidth(2.0f);
+        plot->SetLabel(s.name.toUtf8().constData());
+        t->tables.push_back(table);
+    }
+
+    t->cursorTable = makeTable({"t", "y"}, 2);
+    t->cursorTable->SetValue(0, 1, lo);
+    t->cursorTable->SetValue(1, 1, hi);
+    t->cursorPlot = t->chart->AddPlot(vtkChart::LINE);
+    t->cursorPlot->SetInputData(t->cursorTable, 0, 1);
+    t->cursorPlot->SetColor(33, 33, 33, 255);
+    t->cursorPlot->SetWidth(1.5f);
+    t->cursorPlot->SetLegendVisibility(false);
+    setCurrentFrame(t->currentFrame);
+
+    t->chart->RecalculateBounds();
+    vtkAxis *bottom = t->chart->GetAxis(vtkAxis::BOTTOM);
+    bottom->SetBehavior(vtkAxis::FIXED);
+    bottom->SetRange(0.0, duration > 0 ? duration : 1.0);
+    vtkAxis *left = t->chart->GetAxis(vtkAxis::LEFT);
+    left->SetBehavior(vtkAxis::FIXED);
+    left->SetRange(lo, hi);
+    t->chart->GetAxis(vtkAxis::TOP)->SetRange(bottom->GetMinimum(), bottom->GetMaximum());
+    update();
+}
+
+void TrajectoryView::setCurrentFrame(int frame)
+{
+    t->currentFrame = frame;
+    if (!t->cursorPlot)
+        return;
+    const bool visible = frame >= 0 && !t->series.isEmpty();
+    const double x = visible ? (frame + 0.5) / t->frameRate : 0.0;
+    t->cursorTable->SetValue(0, 0, x);
+    t->cursorTable->SetValue(1, 0, x);
+    t->cursorTable->Modified();
+    t->cursorPlot->SetVisible(visible);
+    update();
+}
+
+double TrajectoryView::cursorTime() const
+{
+    if (!t->cursorPlot || !t->cursorPlot->GetVisible())
+        return std::numeric_limits<double>::quiet_NaN();
+    return t->cursorTable->GetValue(0, 0).ToDouble();
+}
+
+void TrajectoryView::visibleRange(double &from, double &to) const
+{
+    from = t->chart->GetAxis(vtkAxis::BOTTOM)->GetMinimum();
+    to = t->chart->GetAxis(vtkAxis::BOTTOM)->GetMaximum();
+}
+
+} // namespace lipsync::studio

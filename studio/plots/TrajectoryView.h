@@ -1,0 +1,52 @@
+#pragma once
+// The trajectory plot (issue #5): one AAM parameter over time — the real features of a sequence
+// and each trained model's generation for the sequence's frame labels — over alternating shaded
+// bands of the phoneme segments (labelled along the top axis), with a cursor at the current frame.
+// Zoom (wheel) and pan (drag) are vtkChartXY's own interaction.
+#include "plots/VtkWidget.h"
+
+#include <QColor>
+#include <QString>
+#include <QVector>
+
+#include <memory>
+
+namespace lipsync {
+struct Tier;
+}
+
+namespace lipsync::studio {
+
+class TrajectoryView : public VtkWidget
+{
+    Q_OBJECT
+public:
+    struct Series
+    {
+        QString name;
+        QVector<double> values; // one per frame
+        QColor color;
+    };
+
+    explicit TrajectoryView(QWidget *parent = nullptr);
+    ~TrajectoryView() override;
+
+    // Replaces everything: frame rate, phone segments and the series (first = the real features).
+    void setData(const QString &title, double frameRate, const Tier &phones, const QVector<Series> &series);
+    void clear();
+    int seriesCount() const;
+    int phoneBandCount() const;
+    // The cursor at frame `frame` (its centre); hidden for a negative frame.
+    void setCurrentFrame(int frame);
+    // Time (s) of the cursor line, NaN when hidden.
+    double cursorTime() const;
+    // The visible time range of the bottom axis.
+    void visibleRange(double &from, double &to) const;
+
+private:
+    void rebuild();
+    struct Impl;
+    std::unique_ptr<Impl> t;
+};
+
+} // namespace lipsync::studio

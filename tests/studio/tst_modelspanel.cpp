@@ -1,0 +1,206 @@
+// The dynamics workflow from the Models panel: the bundled demo carries features and phonemes, so
+// clicking Train trains the checked models as background tasks; the Training plot receives the
+// objective per iteration, the models appear in the panel's list and in the document (one undo
+// step each), a canceled training keeps the previous model, and Evaluate (k-fold) draws Figure 4.
+#include "app/ErrorReporter.h"
+#include "app/MainWindow.h"
+#include "app/ProjectDocument.h"
+#include "app/ProjectFiles.h"
+#include "app/SurfaceFormat.h"
+#include "build/ModelsPanel.h"
+#include "dynamics/DynamicModel.h"
+#include "dynamics/ModelFile.h"
+#include "dynamics/PhoneLabels.h"
+#include "plots/EvaluationChart.h"
+#include "plots/ObjectivePlot.h"
+#include "tasks/TaskRunner.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QDir>
+#include <QFileInfo>
+#include <QTreeWidget>
+#include <QUndoStack>
+
+#include <algorithm>
+
+using namespace lipsync;
+using namespace lipsync::studio;
+
+class TestModelsPanel : public QObject
+{
+    Q_OBJECT
+public:
+    static void initMain()
+    {
+        setDefaultSurfaceFormat();
+        QStandardPaths::setTestModeEnabled(true);
+    }
+
+private:
+    void checkOnly(const QStringList &kinds)
+    {
+        for (const QString &k : {"dpds", "slds", "brand", "hmm"})
+            m_panel->kindCheck(k)->setChecked(kinds.contains(k));
+    }
+    bool listed(const QString &kind) const
+    {
+        for (int i = 0; i < m_panel->list()->topLevelItemCount(); ++i)
+            if (m_panel->list()->topLevelItem(i)->data(1, Qt::UserRole).toString() == kind)
+                return true;
+        return false;
+    }
+    void waitIdle()
+    {
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 120000);
+    }
+
+    MainWindow *m_window = nullptr;
+    ModelsPanel *m_panel = nullptr;
+
+private slots:
+    void initTestCase()
+    {
+        QCoreApplication::setOrganizationName(QStringLiteral("lipsync-tests"));
+        ErrorReporter::setBatchMode(true);
+        m_window = new MainWindow;
+        m_window->resize(1280, 800);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        m_panel = m_window->findChild<ModelsPanel *>();
+        QVERIFY(m_panel);
+        QVERIFY(m_window->files()->openDemo());
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() != nullptr, 60000);
+        waitIdle();
+    }
+
+    void cleanupTestCase() { delete m_window; }
+
+    void demoHasTrainingData()
+    {
+        const Project &p = m_window->document()->project();
+        QCOMPARE(p.sequences.size(), size_t(10));
+        for (const Sequence &s : p.sequences) {
+            QCOMPARE(s.features.rows(), Eigen::Index(75));
+            QVERIFY(!s.phones.isEmpty());
+        }
+        QVERIFY(listed(QStringLiteral("aam")));
+        QVERIFY(!listed(QStringLiteral("hmm")));
+        QVERIFY(m_panel->trainButton()->isEnabled());
+        QVERIFY(!m_panel->cancelButton()->isEnabled());
+    }
+
+    void trainsHmmAndDpdsFromTheButton()
+    {
+        checkOnly({QStringLiteral("hmm"), QStringLiteral("dpds")});
+        QSignalSpy trained(m_panel, &ModelsPanel::modelTrained);
+        const int undoBefore = m_window->undoStack()->count();
+        QTest::mouseClick(m_panel->trainButton(), Qt::LeftButton);
+        QCOMPARE(m_panel->runningTasks().size(), 2);
+        QVERIFY(m_panel->cancelButton()->isEnabled());
+        QVERIFY(!m_panel->trainButton()->isEnabled());
+        QCOMPARE(m_panel->plotTabs()->currentWidget(), static_cast<QWidget *>(m_panel->objectivePlot()));
+        waitIdle();
+        QCOMPARE(trained.count(), 2);
+        QVERIFY(m_panel->model("hmm"));
+        QVERIFY(m_panel->model("dpds"));
+        QCOMPARE(m_panel->model("dpds")->dimension(), int(m_window->document()->sequence(0).features.cols()));
+        // The live objective plot got the iterations of the iterative model (DPDS).
+        QVERIFY2(m_panel->objectivePlot()->iterationCount("dpds") >= 2,
+                 qPrintable(QString::number(m_panel->objectivePlot()->iterationCount("dpds"))));
+        QVERIFY(m_panel->objectivePlot()->seriesCount() >= 1);
+        // Listed in the panel and referenced by the (read-only, so in-memory) document.
+        QVERIFY(listed(QStringLiteral("hmm")));
+        QVERIFY(listed(QStringLiteral("dpds")));
+        QCOMPARE(m_window->undoStack()->count(), undoBefore + 2);
+        const auto &models = m_window->document()->project().models;
+        QVERIFY(std::any_of(models.begin(), models.end(),
+                            [](const ModelReference &m) { return m.kind == "dpds" && m.file == "models/dpds.model"; }));
+        QVERIFY(m_panel->trainButton()->isEnabled());
+        // Undo removes the reference again, redo restores it.
+        m_window->undoStack()->undo();
+        QVERIFY(!listed(QStringLiteral("dpds")) || !listed(QStringLiteral("hmm")));
+        m_window->undoStack()->redo();
+        QVERIFY(listed(QStringLiteral("hmm")) && listed(QStringLiteral("dpds")));
+    }
+
+    void cancelKeepsThePreviousModel()
+    {
+        const std::shared_ptr<const DynamicModel> before = m_panel->model("dpds");
+        QVERIFY(before);
+        checkOnly({QStringLiteral("dpds")});
+        m_panel->dpdsOptimizer()->setCurrentIndex(1); // the paper's (slow) gradient ascent
+        QSignalSpy trained(m_panel, &ModelsPanel::modelTrained);
+        QTest::mouseClick(m_panel->trainButton(), Qt::LeftButton);
+        const QList<Task *> tasks = m_panel->runningTasks();
+        QCOMPARE(tasks.size(), 1);
+        QPointer<Task> task = tasks.front();
+        QSignalSpy finished(task.data(), &Task::finished);
+        QTest::mouseClick(m_panel->cancelButton(), Qt::LeftButton);
+        waitIdle();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+        QCOMPARE(finished.front().front().value<Task::State>(), Task::State::Canceled);
+        QCOMPARE(trained.count(), 0);
+        QCOMPARE(m_panel->model("dpds").get(), before.get());
+        QVERIFY(listed(QStringLiteral("dpds")));
+        m_panel->dpdsOptimizer()->setCurrentIndex(0);
+    }
+
+    void evaluatesByCrossValidation()
+    {
+        checkOnly({QStringLiteral("hmm"), QStringLiteral("brand")});
+        m_panel->foldsSpin()->setValue(5);
+        QSignalSpy evaluated(m_panel, &ModelsPanel::evaluated);
+        QTest::mouseClick(m_panel->evaluateButton(), Qt::LeftButton);
+        waitIdle();
+        QCOMPARE(evaluated.count(), 1);
+        QCOMPARE(m_panel->evaluationChart()->modelCount(), 2);
+        QCOMPARE(m_panel->evaluationChart()->metricCount(), 4);
+        QCOMPARE(m_panel->plotTabs()->currentWidget(), static_cast<QWidget *>(m_panel->evaluationChart()));
+        // Figure 4 is on screen: the bar colours of both models are in the picture.
+        const QImage image = m_panel->evaluationChart()->grab().toImage();
+        if (qEnvironmentVariableIsSet("LIPSYNC_SCREENSHOT"))
+            image.save(qEnvironmentVariable("LIPSYNC_SCREENSHOT"));
+        int purple = 0, orange = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                purple += qAbs(c.red() - 0x8e) < 12 && qAbs(c.green() - 0x24) < 12 && qAbs(c.blue() - 0xaa) < 12;
+                orange += qAbs(c.red() - 0xfb) < 12 && qAbs(c.green() - 0x8c) < 12 && qAbs(c.blue() - 0x00) < 12;
+            }
+        QVERIFY2(purple > 50 && orange > 50, qPrintable(QStringLiteral("%1 %2").arg(purple).arg(orange)));
+    }
+
+    void savingTheDemoWritesTheTrainedModels()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString folder = dir.filePath(QStringLiteral("copy"));
+        m_window->document()->saveTo(folder);
+        QVERIFY(!m_window->document()->isReadOnly());
+        // The models trained in memory went to models/, the demo's AAM was copied along.
+        for (const char *file : {"models/dpds.model", "models/hmm.model", "aam/demo.aam"})
+            QVERIFY2(QFileInfo(QDir(folder).filePath(QString::fromLatin1(file))).isFile(), file);
+        const std::unique_ptr<DynamicModel> loaded = loadModel(QDir(folder).filePath("models/dpds.model").toStdString());
+        const Sequence &s = m_window->document()->sequence(0);
+        const std::vector<int> labels = frameLabelsFromTier(s.phones, s.frameRate, s.frameCount);
+        QVERIFY(loaded->generate(labels).isApprox(m_panel->model("dpds")->generate(labels)));
+        // A project on disk: the next training writes its model file at once.
+        checkOnly({QStringLiteral("brand")});
+        QTest::mouseClick(m_panel->trainButton(), Qt::LeftButton);
+        waitIdle();
+        QVERIFY(QFileInfo(QDir(folder).filePath("models/brand.model")).isFile());
+        const Project reloaded = Project::load(folder.toStdString());
+        QCOMPARE(reloaded.models.size(), size_t(3)); // the AAM, HMM and DPDS (Brand: not saved yet)
+    }
+};
+
+QTEST_MAIN(TestModelsPanel)
+#include "tst_modelspanel.moc"
