@@ -45,6 +45,8 @@ function(lipsync_add_qtest source)
   endif()
   set_tests_properties(${target} PROPERTIES TIMEOUT ${ARG_TIMEOUT})
   if(ARG_GUI)
-    set_tests_properties(${target} PROPERTIES LABELS gui)
+    # GUI tests share one X display; run alone so no other test's window takes the keyboard focus
+    # their shortcuts need.
+    set_tests_properties(${target} PROPERTIES LABELS gui RUN_SERIAL ON)
   endif()
 endfunction()

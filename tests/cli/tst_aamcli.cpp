@@ -1,4 +1,6 @@
 // The face commands as users run them: landmarks detect, aam build, aam eval, track.
+#include "CliRun.h"
+
 #include "aam/PtsFile.h"
 #include "io/FeatureCsv.h"
 
@@ -13,25 +15,13 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+using lipsync::testing::Run;
+using lipsync::testing::parseJsonObject;
+using lipsync::testing::runLipsync;
+
 using namespace lipsync;
 
 namespace {
-
-struct Run
-{
-    int code = -1;
-    QByteArray out;
-    QByteArray err;
-    QJsonObject json() const { return QJsonDocument::fromJson(out).object(); }
-};
-
-Run lipsyncCli(const QStringList &args)
-{
-    QProcess p;
-    p.start(QStringLiteral(LIPSYNC_CLI), args);
-    p.waitForFinished(120000);
-    return {p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
-}
 
 const QString kGrid = QStringLiteral(LIPSYNC_TEST_DATA "/faces/grid");
 const QString kDemo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media/");
@@ -61,9 +51,9 @@ private slots:
 
     void aamBuild()
     {
-        const Run r = lipsyncCli({"aam", "build", "--images", m_dir.path() + "/train", "--out", m_model, "--json"});
-        QVERIFY2(r.code == 0, r.err.constData());
-        const QJsonObject j = r.json();
+        const Run r = runLipsync({"aam", "build", "--images", m_dir.path() + "/train", "--out", m_model, "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject j = parseJsonObject(r.out);
         QCOMPARE(j["images"].toInt(), 18);
         QCOMPARE(j["points"].toInt(), 23);
         QVERIFY(j["combined_modes"].toInt() >= 2);
@@ -73,9 +63,9 @@ private slots:
 
     void aamEval()
     {
-        const Run r = lipsyncCli({"aam", "eval", "--model", m_model, "--images", m_dir.path() + "/test", "--json"});
-        QVERIFY2(r.code == 0, r.err.constData());
-        const QJsonObject j = r.json();
+        const Run r = runLipsync({"aam", "eval", "--model", m_model, "--images", m_dir.path() + "/test", "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject j = parseJsonObject(r.out);
         for (const char *key : {"images", "nme_mean", "nme_median", "fps"})
             QVERIFY2(j.contains(key), key);
         QCOMPARE(j["images"].toInt(), 2);
@@ -86,10 +76,10 @@ private slots:
     void landmarksDetectVideoFrame()
     {
         const QString out = m_dir.path() + "/frame10.pts";
-        const Run r = lipsyncCli({"landmarks", "detect", kDemo + "bbaf2n.mpg", "--frame", "10", "--out", out, "--json"});
-        QVERIFY2(r.code == 0, r.err.constData());
-        QCOMPARE(r.json()["points"].toArray().size(), 23);
-        QCOMPARE(r.json()["state"].toString(), QString("automatic"));
+        const Run r = runLipsync({"landmarks", "detect", kDemo + "bbaf2n.mpg", "--frame", "10", "--out", out, "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QCOMPARE(parseJsonObject(r.out)["points"].toArray().size(), 23);
+        QCOMPARE(parseJsonObject(r.out)["state"].toString(), QString("automatic"));
         const Eigen::VectorXd s = readFaceShape(out.toStdString());
         QCOMPARE(s.size(), Eigen::Index(46));
         QVERIFY(s.minCoeff() > 0 && s.maxCoeff() < 360);
@@ -100,10 +90,10 @@ private slots:
         const QString image = kGrid + "/bbaf3s_22.jpg";
         for (const QString &method : {QString("aam"), QString("template")}) {
             const QString out = m_dir.path() + "/" + method + ".pts";
-            const Run r = lipsyncCli({"landmarks", "detect", image, "--out", out, "--method", method,
+            const Run r = runLipsync({"landmarks", "detect", image, "--out", out, "--method", method,
                                       "--model", m_model, "--json"});
-            QVERIFY2(r.code == 0, r.err.constData());
-            QCOMPARE(r.json()["method"].toString(), method);
+            QVERIFY2(r.exitCode == 0, r.err.constData());
+            QCOMPARE(parseJsonObject(r.out)["method"].toString(), method);
         }
         const Eigen::VectorXd truth = readFaceShape((kGrid + "/bbaf3s_22.pts").toStdString());
         const Eigen::VectorXd fitted = readFaceShape((m_dir.path() + "/aam.pts").toStdString());
@@ -113,9 +103,9 @@ private slots:
     void track()
     {
         const QString csv = m_dir.path() + "/bbaf2n.csv";
-        const Run r = lipsyncCli({"track", "--model", m_model, kDemo + "bbaf2n.mpg", "--out", csv, "--json"});
-        QVERIFY2(r.code == 0, r.err.constData());
-        const QJsonObject j = r.json();
+        const Run r = runLipsync({"track", "--model", m_model, kDemo + "bbaf2n.mpg", "--out", csv, "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject j = parseJsonObject(r.out);
         QCOMPARE(j["frames"].toInt(), 75);
         QCOMPARE(j["tracked"].toInt(), 75);
         const FeatureTable table = readFeatureCsv(csv.toStdString());
@@ -130,30 +120,30 @@ private slots:
     void badInput()
     {
         // Usage errors: exit 2.
-        QCOMPARE(lipsyncCli({"aam", "build", "--images", m_dir.path()}).code, 2);
-        QCOMPARE(lipsyncCli({"landmarks", "detect", "--out", "x.pts"}).code, 2);
-        QCOMPARE(lipsyncCli({"track", "--model", m_model, "--out", "x.csv"}).code, 2);
-        QCOMPARE(lipsyncCli({"aam", "eval", "--model", m_model, "--images", m_dir.path(), "--bogus"}).code, 2);
+        QCOMPARE(runLipsync({"aam", "build", "--images", m_dir.path()}).exitCode, 2);
+        QCOMPARE(runLipsync({"landmarks", "detect", "--out", "x.pts"}).exitCode, 2);
+        QCOMPARE(runLipsync({"track", "--model", m_model, "--out", "x.csv"}).exitCode, 2);
+        QCOMPARE(runLipsync({"aam", "eval", "--model", m_model, "--images", m_dir.path(), "--bogus"}).exitCode, 2);
         // No face: exit 1 with a message naming the file.
         const QString blank = m_dir.path() + "/blank.png";
         cv::imwrite(blank.toStdString(), cv::Mat(288, 360, CV_8UC3, cv::Scalar(90, 90, 90)));
-        Run r = lipsyncCli({"landmarks", "detect", blank, "--out", m_dir.path() + "/b.pts"});
-        QCOMPARE(r.code, 1);
+        Run r = runLipsync({"landmarks", "detect", blank, "--out", m_dir.path() + "/b.pts"});
+        QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("no face"), r.err.constData());
         QVERIFY(!QFile::exists(m_dir.path() + "/b.pts"));
         // A frame past the end of the video.
-        r = lipsyncCli({"landmarks", "detect", kDemo + "bbaf2n.mpg", "--frame", "500", "--out", m_dir.path() + "/c.pts"});
-        QCOMPARE(r.code, 1);
+        r = runLipsync({"landmarks", "detect", kDemo + "bbaf2n.mpg", "--frame", "500", "--out", m_dir.path() + "/c.pts"});
+        QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("no frame 500"), r.err.constData());
         // Missing directory, too few images, not a model.
-        r = lipsyncCli({"aam", "build", "--images", m_dir.path() + "/missing", "--out", m_dir.path() + "/m.aam"});
-        QCOMPARE(r.code, 1);
+        r = runLipsync({"aam", "build", "--images", m_dir.path() + "/missing", "--out", m_dir.path() + "/m.aam"});
+        QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("does not exist"), r.err.constData());
-        r = lipsyncCli({"aam", "build", "--images", m_dir.path() + "/test", "--out", m_dir.path() + "/m.aam"});
-        QCOMPARE(r.code, 1);
+        r = runLipsync({"aam", "build", "--images", m_dir.path() + "/test", "--out", m_dir.path() + "/m.aam"});
+        QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("at least 3"), r.err.constData());
-        r = lipsyncCli({"track", "--model", blank, kDemo + "bbaf2n.mpg", "--out", m_dir.path() + "/t.csv"});
-        QCOMPARE(r.code, 1);
+        r = runLipsync({"track", "--model", blank, kDemo + "bbaf2n.mpg", "--out", m_dir.path() + "/t.csv"});
+        QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("not an AAM model"), r.err.constData());
     }
 };

@@ -1,4 +1,6 @@
 // `lipsync align` and `lipsync aligner train` as users run them.
+#include "CliRun.h"
+
 #include "io/TextGrid.h"
 
 #include <QDir>
@@ -10,25 +12,15 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+using lipsync::testing::Run;
+using lipsync::testing::parseJsonObject;
+using lipsync::testing::runLipsync;
+
 using namespace lipsync;
 
 namespace {
 const QString kDemo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media/");
 
-struct Run
-{
-    int code;
-    QByteArray out, err;
-};
-
-Run run(const QStringList &args, const QProcessEnvironment &env = QProcessEnvironment::systemEnvironment())
-{
-    QProcess p;
-    p.setProcessEnvironment(env);
-    p.start(QStringLiteral(LIPSYNC_CLI), args);
-    p.waitForFinished(240000);
-    return {p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
-}
 } // namespace
 
 class TestAlignCli : public QObject
@@ -40,8 +32,8 @@ private slots:
         QTemporaryDir dir;
         const QString out = dir.filePath(QStringLiteral("bbaf2n.TextGrid"));
         // Default model: found relative to the executable (build tree -> source resources).
-        const Run r = run({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bbaf2n.align", "--out", out, "--json"});
-        QVERIFY2(r.code == 0, r.err.constData());
+        const Run r = runLipsync({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bbaf2n.align", "--out", out, "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
         const QJsonObject json = QJsonDocument::fromJson(r.out).object();
         QVERIFY(json.value("model").toString().endsWith("grid-s1.aligner"));
         QVERIFY(json.value("frames").toInt() > 290 && json.value("frames").toInt() <= 298);
@@ -71,11 +63,11 @@ private slots:
         QTemporaryDir dir;
         const QString out = dir.filePath(QStringLiteral("x.TextGrid"));
         // Usage errors: exit 2.
-        QCOMPARE(run({"align", kDemo + "bbaf2n.mpg"}).code, 2);
-        QCOMPARE(run({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bbaf2n.align", "--out", out, "--bogus"}).code, 2);
+        QCOMPARE(runLipsync({"align", kDemo + "bbaf2n.mpg"}).exitCode, 2);
+        QCOMPARE(runLipsync({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bbaf2n.align", "--out", out, "--bogus"}).exitCode, 2);
         // Missing media: exit 1, names the file, writes nothing.
-        Run r = run({"align", dir.filePath("none.mpg"), "--transcript", kDemo + "bbaf2n.align", "--out", out});
-        QCOMPARE(r.code, 1);
+        Run r = runLipsync({"align", dir.filePath("none.mpg"), "--transcript", kDemo + "bbaf2n.align", "--out", out});
+        QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains("none.mpg"));
         QVERIFY(!QFile::exists(out));
         // A transcript far too long for 3 s of audio.
@@ -85,8 +77,8 @@ private slots:
         for (int i = 0; i < 60; ++i)
             f.write("extraordinary circumstances ");
         f.close();
-        r = run({"align", kDemo + "bbaf2n.mpg", "--transcript", longText, "--out", out});
-        QCOMPARE(r.code, 1);
+        r = runLipsync({"align", kDemo + "bbaf2n.mpg", "--transcript", longText, "--out", out});
+        QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("does not fit"), r.err.constData());
         // A bad model file is named.
         const QString badModel = dir.filePath(QStringLiteral("bad.aligner"));
@@ -94,8 +86,8 @@ private slots:
         QVERIFY(m.open(QIODevice::WriteOnly));
         m.write("not a model\n");
         m.close();
-        r = run({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bbaf2n.align", "--model", badModel, "--out", out});
-        QCOMPARE(r.code, 1);
+        r = runLipsync({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bbaf2n.align", "--model", badModel, "--out", out});
+        QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains("bad.aligner"));
     }
 
@@ -109,9 +101,9 @@ private slots:
             QVERIFY(QFile::copy(kDemo + id + ".mpg", media.filePath(QString::fromLatin1(id) + ".mpg")));
         QVERIFY(QFile::copy(kDemo + "lrik4p.mpg", media.filePath(QStringLiteral("orphan.mpg"))));
         const QString model = dir.filePath(QStringLiteral("small.aligner"));
-        const Run r = run({"aligner", "train", "--media", media.path(), "--transcripts", kDemo, "--out", model,
+        const Run r = runLipsync({"aligner", "train", "--media", media.path(), "--transcripts", kDemo, "--out", model,
                            "--mixtures", "1", "--iterations", "2", "--json"});
-        QVERIFY2(r.code == 0, r.err.constData());
+        QVERIFY2(r.exitCode == 0, r.err.constData());
         const QJsonObject json = QJsonDocument::fromJson(r.out).object();
         QCOMPARE(json.value("utterances").toInt(), 3);
         QCOMPARE(json.value("skipped").toArray().size(), 1);
@@ -121,11 +113,11 @@ private slots:
         for (int i = 1; i < ll.size(); ++i)
             QVERIFY(ll[i].toDouble() >= ll[i - 1].toDouble() - 1e-4);
         QVERIFY(QFile::exists(model));
-        const Run a = run({"align", kDemo + "bgin3a.mpg", "--transcript", kDemo + "bgin3a.align", "--model", model,
+        const Run a = runLipsync({"align", kDemo + "bgin3a.mpg", "--transcript", kDemo + "bgin3a.align", "--model", model,
                            "--out", dir.filePath(QStringLiteral("a.TextGrid"))});
-        QVERIFY2(a.code == 0, a.err.constData());
+        QVERIFY2(a.exitCode == 0, a.err.constData());
         // Usage: missing --out.
-        QCOMPARE(run({"aligner", "train", "--media", media.path(), "--transcripts", kDemo}).code, 2);
+        QCOMPARE(runLipsync({"aligner", "train", "--media", media.path(), "--transcripts", kDemo}).exitCode, 2);
     }
 };
 

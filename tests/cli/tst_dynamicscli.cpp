@@ -1,5 +1,7 @@
 // lipsync train / generate / evaluate as users run them, on a tiny synthetic data set (features
 // sampled from a DPDS, phone labels as .lab files) plus one real MFA phone alignment (TextGrid).
+#include "CliRun.h"
+
 #include "../core/dynamics/SyntheticDynamics.h"
 
 #include "dynamics/PhoneLabels.h"
@@ -18,23 +20,13 @@
 #include <cmath>
 #include <fstream>
 
+using lipsync::testing::Run;
+using lipsync::testing::parseJsonObject;
+using lipsync::testing::runLipsync;
+
 using namespace lipsync;
 
 namespace {
-
-struct Run
-{
-    int exitCode = -1;
-    QByteArray out, err;
-};
-
-Run lipsyncRun(const QStringList &args)
-{
-    QProcess p;
-    p.start(QStringLiteral(LIPSYNC_CLI), args);
-    p.waitForFinished(120000);
-    return {p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
-}
 
 // .lab from per-frame labels at 25 fps: one segment per run.
 void writeLab(const std::string &path, const std::vector<int> &labels)
@@ -93,7 +85,7 @@ private slots:
     {
         QFETCH(QString, kind);
         const QString model = m_dir.filePath(kind + ".json");
-        const Run r = lipsyncRun({"train", "--kind", kind, "--features", m_features, "--labels", m_labels,
+        const Run r = runLipsync({"train", "--kind", kind, "--features", m_features, "--labels", m_labels,
                                   "--out", model, "--aam", "aam-test", "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         const QJsonObject o = QJsonDocument::fromJson(r.out).object();
@@ -106,7 +98,7 @@ private slots:
 
         // Generate from the real TextGrid: 26.72 s at 25 fps = 669 frames.
         const QString out = m_dir.filePath(kind + "-gen.csv");
-        Run g = lipsyncRun({"generate", "--model", model, "--labels", m_labels + "/real.TextGrid", "--out", out,
+        Run g = runLipsync({"generate", "--model", model, "--labels", m_labels + "/real.TextGrid", "--out", out,
                             "--aam", "aam-test", "--json"});
         QVERIFY2(g.exitCode == 0, g.err.constData());
         const FeatureTable table = readFeatureCsv(out.toStdString());
@@ -114,13 +106,13 @@ private slots:
         QCOMPARE(table.values.cols(), Eigen::Index(4));
         // The frame-by-frame generator writes the same file (Brand: within its fixed-lag error).
         const QString streamed = m_dir.filePath(kind + "-stream.csv");
-        g = lipsyncRun({"generate", "--model", model, "--labels", m_labels + "/real.TextGrid", "--out",
+        g = runLipsync({"generate", "--model", model, "--labels", m_labels + "/real.TextGrid", "--out",
                         streamed, "--stream"});
         QVERIFY2(g.exitCode == 0, g.err.constData());
         const double difference = (readFeatureCsv(streamed.toStdString()).values - table.values).cwiseAbs().maxCoeff();
         QVERIFY(difference <= (kind == "brand" ? 1e-3 : 0.0));
         // Another AAM: a clear error.
-        g = lipsyncRun({"generate", "--model", model, "--labels", m_labels + "/real.TextGrid", "--out", out,
+        g = runLipsync({"generate", "--model", model, "--labels", m_labels + "/real.TextGrid", "--out", out,
                         "--aam", "other-aam"});
         QCOMPARE(g.exitCode, 1);
         QVERIFY(g.err.contains("aam-test") && g.err.contains("other-aam"));
@@ -131,7 +123,7 @@ private slots:
         const QString list = m_dir.filePath(QStringLiteral("frames.txt"));
         std::ofstream(list.toStdString()) << "sil\nsil\nB\nIH1\nIH1\nN\nsil\n";
         const QString out = m_dir.filePath(QStringLiteral("list.csv"));
-        const Run g = lipsyncRun({"generate", "--model", m_dir.filePath("dpds.json"), "--labels", list, "--out", out});
+        const Run g = runLipsync({"generate", "--model", m_dir.filePath("dpds.json"), "--labels", list, "--out", out});
         QVERIFY2(g.exitCode == 0, g.err.constData());
         QCOMPARE(readFeatureCsv(out.toStdString()).values.rows(), Eigen::Index(7));
     }
@@ -139,7 +131,7 @@ private slots:
     void evaluates()
     {
         const QString csv = m_dir.filePath(QStringLiteral("eval.csv"));
-        const Run r = lipsyncRun({"evaluate", "--features", m_features, "--labels", m_labels, "--folds", "4",
+        const Run r = runLipsync({"evaluate", "--features", m_features, "--labels", m_labels, "--folds", "4",
                                   "--kinds", "hmm,brand,dpds", "--csv", csv, "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         const QJsonObject o = QJsonDocument::fromJson(r.out).object();
@@ -181,9 +173,9 @@ private slots:
 
         const QString a = m_dir.filePath(QStringLiteral("from-project.model"));
         const QString b = m_dir.filePath(QStringLiteral("from-folders.model"));
-        const Run fromProject = lipsyncRun({"train", "--kind", "hmm", "--project", folder, "--out", a, "--json"});
+        const Run fromProject = runLipsync({"train", "--kind", "hmm", "--project", folder, "--out", a, "--json"});
         QVERIFY2(fromProject.exitCode == 0, fromProject.err.constData());
-        const Run fromFolders = lipsyncRun({"train", "--kind", "hmm", "--features", m_features, "--labels",
+        const Run fromFolders = runLipsync({"train", "--kind", "hmm", "--features", m_features, "--labels",
                                             m_labels, "--out", b, "--json"});
         QVERIFY2(fromFolders.exitCode == 0, fromFolders.err.constData());
         const QJsonObject p = QJsonDocument::fromJson(fromProject.out).object();
@@ -192,7 +184,7 @@ private slots:
         QCOMPARE(p.value("frames").toDouble(), f.value("frames").toDouble());
         QVERIFY(std::abs(p.value("loglikPerFrame").toDouble() - f.value("loglikPerFrame").toDouble()) < 1e-9);
 
-        const Run evaluation = lipsyncRun({"evaluate", "--project", folder, "--folds", "3", "--kinds", "hmm", "--json"});
+        const Run evaluation = runLipsync({"evaluate", "--project", folder, "--folds", "3", "--kinds", "hmm", "--json"});
         QVERIFY2(evaluation.exitCode == 0, evaluation.err.constData());
 
         // A project without features: exit 1, one line naming the manifest.
@@ -204,13 +196,13 @@ private slots:
         empty.sequences.push_back(bare);
         const QString emptyFolder = m_dir.filePath(QStringLiteral("empty-project"));
         empty.save(emptyFolder.toStdString());
-        const Run none = lipsyncRun({"train", "--kind", "hmm", "--project", emptyFolder, "--out", a});
+        const Run none = runLipsync({"train", "--kind", "hmm", "--project", emptyFolder, "--out", a});
         QCOMPARE(none.exitCode, 1);
         QVERIFY(none.err.contains("project.json"));
         QVERIFY(none.err.contains("no sequence has both face features and a phone alignment"));
         QCOMPARE(none.err.count('\n'), 1);
         // Both sources at once is a usage error.
-        QCOMPARE(lipsyncRun({"train", "--kind", "hmm", "--project", folder, "--features", m_features,
+        QCOMPARE(runLipsync({"train", "--kind", "hmm", "--project", folder, "--features", m_features,
                              "--labels", m_labels, "--out", a}).exitCode, 2);
     }
 
@@ -218,11 +210,11 @@ private slots:
     {
         const QString model = m_dir.filePath(QStringLiteral("bad.json"));
         // Bad usage: exit 2.
-        QCOMPARE(lipsyncRun({"train", "--kind", "lstm", "--features", m_features, "--labels", m_labels, "--out", model}).exitCode, 2);
-        QCOMPARE(lipsyncRun({"train", "--features", m_features}).exitCode, 2);
-        QCOMPARE(lipsyncRun({"generate", "--model", model}).exitCode, 2);
-        QCOMPARE(lipsyncRun({"evaluate", "--features", m_features, "--labels", m_labels, "--folds", "1"}).exitCode, 2);
-        QCOMPARE(lipsyncRun({"train", "--kind", "hmm", "--features", m_features, "--labels", m_labels, "--out", model, "--bogus"}).exitCode, 2);
+        QCOMPARE(runLipsync({"train", "--kind", "lstm", "--features", m_features, "--labels", m_labels, "--out", model}).exitCode, 2);
+        QCOMPARE(runLipsync({"train", "--features", m_features}).exitCode, 2);
+        QCOMPARE(runLipsync({"generate", "--model", model}).exitCode, 2);
+        QCOMPARE(runLipsync({"evaluate", "--features", m_features, "--labels", m_labels, "--folds", "1"}).exitCode, 2);
+        QCOMPARE(runLipsync({"train", "--kind", "hmm", "--features", m_features, "--labels", m_labels, "--out", model, "--bogus"}).exitCode, 2);
         // Bad data: exit 1 with one line naming the file.
         QTemporaryDir bad;
         const QString features = bad.filePath("f"), labels = bad.filePath("l");
@@ -230,24 +222,24 @@ private slots:
         QDir().mkpath(labels);
         std::ofstream((features + "/nan.csv").toStdString()) << "frame,p0\n0,1.0\n1,nan\n";
         std::ofstream((labels + "/nan.lab").toStdString()) << "0 0.08 sil\n";
-        Run r = lipsyncRun({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model});
+        Run r = runLipsync({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model});
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains("nan.csv") && r.err.count('\n') == 1);
         std::ofstream((features + "/nan.csv").toStdString()) << "frame,p0\n0,1.0\n1,2.0\n";
         std::ofstream((features + "/orphan.csv").toStdString()) << "frame,p0\n0,1.0\n";
-        r = lipsyncRun({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model});
+        r = runLipsync({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model});
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains("orphan"));
         QFile::remove(features + "/orphan.csv");
         std::ofstream((labels + "/nan.lab").toStdString()) << "0 0.08 QQ\n";
-        r = lipsyncRun({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model});
+        r = runLipsync({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model});
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains("QQ") && r.err.contains("nan.lab"));
         // Too few sequences for the folds; a model file that is not one.
-        r = lipsyncRun({"evaluate", "--features", m_features, "--labels", m_labels, "--folds", "20"});
+        r = runLipsync({"evaluate", "--features", m_features, "--labels", m_labels, "--folds", "20"});
         QCOMPARE(r.exitCode, 1);
         std::ofstream(model.toStdString()) << "{}";
-        r = lipsyncRun({"generate", "--model", model, "--labels", m_labels + "/real.TextGrid", "--out", bad.filePath("x.csv")});
+        r = runLipsync({"generate", "--model", model, "--labels", m_labels + "/real.TextGrid", "--out", bad.filePath("x.csv")});
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains("bad.json"));
     }

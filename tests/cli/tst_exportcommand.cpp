@@ -1,5 +1,7 @@
 // `lipsync export video` on a demo clip, read back with ffprobe-like checks through the JSON
 // report and the written files; bad input gives one clear line.
+#include "CliRun.h"
+
 #include "render/VideoExporter.h"
 #include "tasks/Feedback.h"
 
@@ -11,35 +13,11 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+using lipsync::testing::Run;
+using lipsync::testing::parseJsonObject;
+using lipsync::testing::runLipsync;
+
 namespace {
-
-struct Run
-{
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run run(const QStringList &args)
-{
-    QProcess process;
-    process.start(QStringLiteral(LIPSYNC_CLI), args);
-    Run r;
-    if (!process.waitForFinished(60000)) {
-        process.kill();
-        process.waitForFinished();
-        return r;
-    }
-    r.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
-    r.out = process.readAllStandardOutput();
-    r.err = process.readAllStandardError();
-    return r;
-}
-
-QJsonObject parse(const QByteArray &out)
-{
-    return QJsonDocument::fromJson(out).object();
-}
 
 void verifyOneLineError(const Run &r, int exitCode, const QString &needle)
 {
@@ -63,11 +41,11 @@ private slots:
     {
         QTemporaryDir dir;
         const QString out = dir.filePath("compare.mp4");
-        const Run r = run({"export", "video", "--media", kClip, "--beside", kOther, "--labels",
+        const Run r = runLipsync({"export", "video", "--media", kClip, "--beside", kOther, "--labels",
                            "real,other", "--out", out, "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         QVERIFY2(r.err.isEmpty(), r.err.constData()); // FFmpeg's chatter stays quiet
-        const QJsonObject json = parse(r.out);
+        const QJsonObject json = parseJsonObject(r.out);
         QVERIFY(json.value("audio").toBool());
         const double audio = json.value("audioDuration").toDouble();
         QVERIFY(audio > 2.5);
@@ -79,9 +57,9 @@ private slots:
     void pngSequence()
     {
         QTemporaryDir dir;
-        const Run r = run({"export", "video", "--media", kClip, "--png-dir", dir.filePath("png"), "--json"});
+        const Run r = runLipsync({"export", "video", "--media", kClip, "--png-dir", dir.filePath("png"), "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
-        QCOMPARE(parse(r.out).value("frames").toInt(), 75);
+        QCOMPARE(parseJsonObject(r.out).value("frames").toInt(), 75);
         QCOMPARE(QDir(dir.filePath("png")).entryList({"*.png"}).size(), 75);
     }
 
@@ -94,24 +72,24 @@ private slots:
         lipsync::exportVideo(silent.toStdString(), 10, [](int i) {
             return cv::Mat(64, 64, CV_8UC3, cv::Scalar(i * 20, 100, 100));
         }, nullptr, feedback);
-        verifyOneLineError(run({"export", "video", "--media", silent, "--out", dir.filePath("x.mp4")}), 1,
+        verifyOneLineError(runLipsync({"export", "video", "--media", silent, "--out", dir.filePath("x.mp4")}), 1,
                            "--no-audio");
         QVERIFY(!QFileInfo::exists(dir.filePath("x.mp4")));
-        const Run r = run({"export", "video", "--media", silent, "--no-audio", "--out", dir.filePath("x.mp4"), "--json"});
+        const Run r = runLipsync({"export", "video", "--media", silent, "--no-audio", "--out", dir.filePath("x.mp4"), "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
-        QCOMPARE(parse(r.out).value("frames").toInt(), 10);
-        QCOMPARE(parse(r.out).value("audio").toBool(), false);
+        QCOMPARE(parseJsonObject(r.out).value("frames").toInt(), 10);
+        QCOMPARE(parseJsonObject(r.out).value("audio").toBool(), false);
     }
 
     void badInput()
     {
         QTemporaryDir dir;
-        verifyOneLineError(run({"export", "video", "--media", dir.filePath("none.mpg"), "--out",
+        verifyOneLineError(runLipsync({"export", "video", "--media", dir.filePath("none.mpg"), "--out",
                                 dir.filePath("x.mp4")}), 1, "none.mpg");
-        verifyOneLineError(run({"export", "video", "--media", kClip, "--out",
+        verifyOneLineError(runLipsync({"export", "video", "--media", kClip, "--out",
                                 dir.filePath("missing/x.mp4")}), 1, "does not exist");
-        verifyOneLineError(run({"export", "video", "--media", kClip}), 2, "usage");
-        verifyOneLineError(run({"export", "video", "--media", kClip, "--out", "x.mp4", "--crf", "99"}), 2, "--crf");
+        verifyOneLineError(runLipsync({"export", "video", "--media", kClip}), 2, "usage");
+        verifyOneLineError(runLipsync({"export", "video", "--media", kClip, "--out", "x.mp4", "--crf", "99"}), 2, "--crf");
         QVERIFY(QDir(dir.path()).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot).isEmpty());
     }
 };

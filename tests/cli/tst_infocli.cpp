@@ -1,5 +1,7 @@
 // `lipsync info` as users run it: values of a GRID clip, a project's sequences, and one-line
 // errors with exit code 1 for bad files.
+#include "CliRun.h"
+
 #include "project/Project.h"
 
 #include <QJsonArray>
@@ -8,30 +10,11 @@
 #include <QProcess>
 #include <QtTest>
 
+using lipsync::testing::Run;
+using lipsync::testing::parseJsonObject;
+using lipsync::testing::runLipsync;
+
 namespace {
-
-struct Run
-{
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run runCli(const QStringList &args)
-{
-    QProcess process;
-    process.start(QStringLiteral(LIPSYNC_CLI), args);
-    Run run;
-    if (!process.waitForFinished(60000)) {
-        process.kill();
-        process.waitForFinished();
-        return run;
-    }
-    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
-}
 
 QString gridClip()
 {
@@ -52,7 +35,7 @@ class TestInfoCli : public QObject
 private slots:
     void mediaJson()
     {
-        const Run run = runCli({QStringLiteral("info"), gridClip(), QStringLiteral("--json")});
+        const Run run = runLipsync({QStringLiteral("info"), gridClip(), QStringLiteral("--json")});
         QCOMPARE(run.exitCode, 0);
         QVERIFY(run.err.isEmpty());
         QJsonParseError error;
@@ -73,14 +56,14 @@ private slots:
 
     void jsonFlagBeforePath()
     {
-        const Run run = runCli({QStringLiteral("info"), QStringLiteral("--json"), gridClip()});
+        const Run run = runLipsync({QStringLiteral("info"), QStringLiteral("--json"), gridClip()});
         QCOMPARE(run.exitCode, 0);
         QCOMPARE(QJsonDocument::fromJson(run.out).object().value(QLatin1String("frames")).toInt(), 75);
     }
 
     void mediaTable()
     {
-        const Run run = runCli({QStringLiteral("info"), gridClip()});
+        const Run run = runLipsync({QStringLiteral("info"), gridClip()});
         QCOMPARE(run.exitCode, 0);
         const QString text = QString::fromUtf8(run.out);
         QVERIFY2(text.contains(QRegularExpression(QStringLiteral("^frames\\s+75$"),
@@ -97,7 +80,7 @@ private slots:
 
     void videoWithoutAudio()
     {
-        const Run run = runCli({QStringLiteral("info"), media("no_audio_29.97fps.mp4"),
+        const Run run = runLipsync({QStringLiteral("info"), media("no_audio_29.97fps.mp4"),
                                  QStringLiteral("--json")});
         QCOMPARE(run.exitCode, 0);
         const QJsonObject o = QJsonDocument::fromJson(run.out).object();
@@ -120,7 +103,7 @@ private slots:
     {
         QFETCH(QString, path);
         for (const QStringList &extra : {QStringList{}, QStringList{QStringLiteral("--json")}}) {
-            const Run run = runCli(QStringList{QStringLiteral("info"), path} + extra);
+            const Run run = runLipsync(QStringList{QStringLiteral("info"), path} + extra);
             QCOMPARE(run.exitCode, 1);
             QVERIFY(run.out.isEmpty());
             QVERIFY2(run.err.endsWith('\n') && run.err.count('\n') == 1, run.err.constData());
@@ -131,9 +114,9 @@ private slots:
 
     void badUsage()
     {
-        QCOMPARE(runCli({QStringLiteral("info")}).exitCode, 2);
-        QCOMPARE(runCli({QStringLiteral("info"), gridClip(), QStringLiteral("--frames")}).exitCode, 2);
-        QCOMPARE(runCli({QStringLiteral("info"), gridClip(), gridClip()}).exitCode, 2);
+        QCOMPARE(runLipsync({QStringLiteral("info")}).exitCode, 2);
+        QCOMPARE(runLipsync({QStringLiteral("info"), gridClip(), QStringLiteral("--frames")}).exitCode, 2);
+        QCOMPARE(runLipsync({QStringLiteral("info"), gridClip(), gridClip()}).exitCode, 2);
     }
 
     void project()
@@ -160,7 +143,7 @@ private slots:
             QFAIL(e.what());
         }
 
-        const Run run = runCli({QStringLiteral("info"), dir.path(), QStringLiteral("--json")});
+        const Run run = runLipsync({QStringLiteral("info"), dir.path(), QStringLiteral("--json")});
         QCOMPARE(run.exitCode, 0);
         const QJsonObject o = QJsonDocument::fromJson(run.out).object();
         QCOMPARE(o.value(QLatin1String("kind")).toString(), QStringLiteral("project"));
@@ -175,7 +158,7 @@ private slots:
         QCOMPARE(sequences[0].toObject().value(QLatin1String("fps")).toDouble(), 25.0);
         QCOMPARE(sequences[1].toObject().value(QLatin1String("frames")).toInt(), 15);
 
-        const Run table = runCli({QStringLiteral("info"), dir.path()});
+        const Run table = runLipsync({QStringLiteral("info"), dir.path()});
         QCOMPARE(table.exitCode, 0);
         const QString text = QString::fromUtf8(table.out);
         QVERIFY2(text.contains(QRegularExpression(QStringLiteral("^sequences\\s+2$"),
@@ -195,7 +178,7 @@ private slots:
         QVERIFY(manifest.open(QIODevice::WriteOnly));
         manifest.write("{ not json");
         manifest.close();
-        const Run run = runCli({QStringLiteral("info"), dir.path()});
+        const Run run = runLipsync({QStringLiteral("info"), dir.path()});
         QCOMPARE(run.exitCode, 1);
         QCOMPARE(run.err.count('\n'), 1);
         QVERIFY2(run.err.contains("project.json"), run.err.constData());

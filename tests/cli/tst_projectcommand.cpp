@@ -1,4 +1,6 @@
 // `lipsync project create` and `lipsync project check`, run as a user runs them.
+#include "CliRun.h"
+
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -8,37 +10,11 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+using lipsync::testing::Run;
+using lipsync::testing::parseJsonObject;
+using lipsync::testing::runLipsync;
+
 namespace {
-
-struct Run
-{
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run run(const QStringList &args)
-{
-    QProcess process;
-    process.start(QStringLiteral(LIPSYNC_CLI), args);
-    Run r;
-    if (!process.waitForFinished(60000)) {
-        process.kill();
-        process.waitForFinished();
-        return r;
-    }
-    r.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
-    r.out = process.readAllStandardOutput();
-    r.err = process.readAllStandardError();
-    return r;
-}
-
-QJsonObject parse(const QByteArray &out)
-{
-    QJsonParseError error;
-    const QJsonDocument doc = QJsonDocument::fromJson(out, &error);
-    return error.error == QJsonParseError::NoError ? doc.object() : QJsonObject();
-}
 
 // Errors are one line on stderr and nothing on stdout.
 void verifyOneLineError(const Run &r, int exitCode, const QString &needle)
@@ -63,9 +39,9 @@ private slots:
     {
         QTemporaryDir dir;
         const QString out = dir.filePath("demo");
-        const Run r = run({"project", "create", "--media", kDemo + "/media", "--out", out, "--json"});
+        const Run r = runLipsync({"project", "create", "--media", kDemo + "/media", "--out", out, "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
-        const QJsonObject json = parse(r.out);
+        const QJsonObject json = parseJsonObject(r.out);
         QCOMPARE(json.value("project").toString(), out + "/project.json");
         const QJsonArray sequences = json.value("sequences").toArray();
         QCOMPARE(sequences.size(), 10);
@@ -80,16 +56,16 @@ private slots:
         }
         QVERIFY(QFileInfo(out + "/project.json").isFile());
 
-        const Run check = run({"project", "check", out, "--json"});
+        const Run check = runLipsync({"project", "check", out, "--json"});
         QVERIFY2(check.exitCode == 0, check.err.constData());
-        QCOMPARE(parse(check.out).value("sequences").toArray().size(), 10);
-        QVERIFY(parse(check.out).value("missingMedia").toArray().isEmpty());
+        QCOMPARE(parseJsonObject(check.out).value("sequences").toArray().size(), 10);
+        QVERIFY(parseJsonObject(check.out).value("missingMedia").toArray().isEmpty());
 
         // An existing project is only replaced on request, and then backed up.
-        verifyOneLineError(run({"project", "create", "--media", kDemo + "/media", "--out", out}), 1,
+        verifyOneLineError(runLipsync({"project", "create", "--media", kDemo + "/media", "--out", out}), 1,
                            "already exists");
         QVERIFY(!QFileInfo::exists(out + "/project.json.bak"));
-        const Run forced = run({"project", "create", "--media", kDemo + "/media", "--out", out, "--force"});
+        const Run forced = runLipsync({"project", "create", "--media", kDemo + "/media", "--out", out, "--force"});
         QVERIFY2(forced.exitCode == 0, forced.err.constData());
         QVERIFY(forced.out.contains("10 sequences, 750 frames"));
         QVERIFY(QFileInfo(out + "/project.json.bak").isFile());
@@ -97,9 +73,9 @@ private slots:
 
     void checkBundledDemo()
     {
-        const Run r = run({"project", "check", "--json", kDemo});
+        const Run r = runLipsync({"project", "check", "--json", kDemo});
         QVERIFY2(r.exitCode == 0, r.err.constData());
-        const QJsonObject json = parse(r.out);
+        const QJsonObject json = parseJsonObject(r.out);
         QCOMPARE(json.value("name").toString(), QString("demo"));
         QCOMPARE(json.value("sequences").toArray().size(), 10);
         QCOMPARE(json.value("sequences").toArray()[0].toObject().value("mediaFile").toString(),
@@ -110,13 +86,13 @@ private slots:
     void checkReportsMissingMedia()
     {
         const QString dir = QStringLiteral(LIPSYNC_TEST_DATA "/project/valid_media_elsewhere");
-        const Run r = run({"project", "check", dir, "--json"});
+        const Run r = runLipsync({"project", "check", dir, "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
-        const QJsonObject json = parse(r.out);
+        const QJsonObject json = parseJsonObject(r.out);
         QCOMPARE(json.value("missingMedia").toArray().size(), 3);
         QCOMPARE(json.value("missingMedia").toArray()[1].toString(), QString("/elsewhere/disk/b.mpg"));
         QCOMPARE(json.value("sequences").toArray()[1].toObject().value("featureRows").toInt(), 3);
-        const Run text = run({"project", "check", dir});
+        const Run text = runLipsync({"project", "check", dir});
         QCOMPARE(text.exitCode, 0);
         QVERIFY(text.out.contains("[media not found]"));
     }
@@ -124,21 +100,21 @@ private slots:
     void checkCorruptManifest()
     {
         const QString dir = QStringLiteral(LIPSYNC_TEST_DATA "/project/frame_rate_negative");
-        verifyOneLineError(run({"project", "check", dir}), 1,
+        verifyOneLineError(runLipsync({"project", "check", dir}), 1,
                            dir + "/project.json: sequences[2].frameRate: must be a positive number");
-        verifyOneLineError(run({"project", "check", dir, "--json"}), 1, "sequences[2].frameRate");
-        verifyOneLineError(run({"project", "check", QStringLiteral(LIPSYNC_TEST_DATA "/project/not_json")}),
+        verifyOneLineError(runLipsync({"project", "check", dir, "--json"}), 1, "sequences[2].frameRate");
+        verifyOneLineError(runLipsync({"project", "check", QStringLiteral(LIPSYNC_TEST_DATA "/project/not_json")}),
                            1, "not valid JSON");
     }
 
     void badUsage()
     {
-        verifyOneLineError(run({"project", "check"}), 2, "usage: lipsync project check");
-        verifyOneLineError(run({"project", "create", "--media", kDemo + "/media"}), 2,
+        verifyOneLineError(runLipsync({"project", "check"}), 2, "usage: lipsync project check");
+        verifyOneLineError(runLipsync({"project", "create", "--media", kDemo + "/media"}), 2,
                            "usage: lipsync project create");
-        verifyOneLineError(run({"project", "check", kDemo, "--verbose"}), 2, "unknown option --verbose");
+        verifyOneLineError(runLipsync({"project", "check", kDemo, "--verbose"}), 2, "unknown option --verbose");
         QTemporaryDir dir;
-        verifyOneLineError(run({"project", "create", "--media", dir.filePath("none"), "--out",
+        verifyOneLineError(runLipsync({"project", "create", "--media", dir.filePath("none"), "--out",
                                 dir.filePath("p")}),
                            1, "no such media folder");
         QVERIFY(!QFileInfo::exists(dir.filePath("p")));

@@ -1,6 +1,8 @@
 // `lipsync project import`: tracked features (a lost frame filled from its neighbour), aligned
 // phones and an AAM reference end up in the project, which still loads (`project check`); bad
 // input is one line on stderr naming the file.
+#include "CliRun.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -11,35 +13,11 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+using lipsync::testing::Run;
+using lipsync::testing::parseJsonObject;
+using lipsync::testing::runLipsync;
+
 namespace {
-
-struct Run
-{
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run run(const QStringList &args)
-{
-    QProcess process;
-    process.start(QStringLiteral(LIPSYNC_CLI), args);
-    Run r;
-    if (!process.waitForFinished(60000)) {
-        process.kill();
-        process.waitForFinished();
-        return r;
-    }
-    r.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
-    r.out = process.readAllStandardOutput();
-    r.err = process.readAllStandardError();
-    return r;
-}
-
-QJsonObject parse(const QByteArray &out)
-{
-    return QJsonDocument::fromJson(out).object();
-}
 
 void write(const QString &path, const QByteArray &bytes)
 {
@@ -91,7 +69,7 @@ private slots:
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString project = dir.filePath("p");
-        Run r = run({"project", "create", "--media", kMedia, "--out", project});
+        Run r = runLipsync({"project", "create", "--media", kMedia, "--out", project});
         QVERIFY2(r.exitCode == 0, r.err.constData());
 
         // bbaf2n: 75 frames of 2 parameters with frame 10 lost by the tracker.
@@ -103,16 +81,16 @@ private slots:
         write(dir.filePath("align/bbaf2n.TextGrid"), kTextGrid);
         write(project + "/aam/face.aam", "not read by import");
 
-        r = run({"project", "import", project, "--features", dir.filePath("features"), "--alignments",
+        r = runLipsync({"project", "import", project, "--features", dir.filePath("features"), "--alignments",
                  dir.filePath("align"), "--aam", project + "/aam/face.aam", "--aam-name", "Face", "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
-        QJsonObject json = parse(r.out);
+        QJsonObject json = parseJsonObject(r.out);
         QCOMPARE(json.value("features").toInt(), 1);
         QCOMPARE(json.value("alignments").toInt(), 1);
 
-        r = run({"project", "check", project, "--json"});
+        r = runLipsync({"project", "check", project, "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
-        json = parse(r.out);
+        json = parseJsonObject(r.out);
         const QJsonObject first = json.value("sequences").toArray().at(0).toObject();
         QCOMPARE(first.value("id").toString(), QString("bbaf2n"));
         QCOMPARE(first.value("featureRows").toInt(), 75);
@@ -137,15 +115,15 @@ private slots:
     {
         QTemporaryDir dir;
         const QString project = dir.filePath("p");
-        QCOMPARE(run({"project", "create", "--media", kMedia, "--out", project}).exitCode, 0);
+        QCOMPARE(runLipsync({"project", "create", "--media", kMedia, "--out", project}).exitCode, 0);
         QByteArray grid = kTextGrid;
         grid.replace("\"phones\"", "\"words\"");
         write(dir.filePath("align/bbaf2n.TextGrid"), grid);
-        const Run r = run({"project", "import", project, "--alignments", dir.filePath("align")});
+        const Run r = runLipsync({"project", "import", project, "--alignments", dir.filePath("align")});
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.out.isEmpty());
         QVERIFY2(r.err.contains("bbaf2n.TextGrid") && r.err.contains("phones"), r.err.constData());
-        QCOMPARE(run({"project", "import"}).exitCode, 2);
+        QCOMPARE(runLipsync({"project", "import"}).exitCode, 2);
     }
 };
 

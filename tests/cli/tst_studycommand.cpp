@@ -1,5 +1,7 @@
 // `lipsync study create` and `lipsync study tally`, run as a user runs them, on a study whose
 // answers reproduce the paper's Table 1 (33 volunteers, every pair twice).
+#include "CliRun.h"
+
 #include "eval/ForcedChoiceStudy.h"
 
 #include <QDir>
@@ -13,39 +15,13 @@
 
 #include <map>
 
+using lipsync::testing::Run;
+using lipsync::testing::parseJsonObject;
+using lipsync::testing::runLipsync;
+
 using namespace lipsync;
 
 namespace {
-
-struct Run
-{
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run run(const QStringList &args)
-{
-    QProcess process;
-    process.start(QStringLiteral(LIPSYNC_CLI), args);
-    Run r;
-    if (!process.waitForFinished(60000)) {
-        process.kill();
-        process.waitForFinished();
-        return r;
-    }
-    r.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
-    r.out = process.readAllStandardOutput();
-    r.err = process.readAllStandardError();
-    return r;
-}
-
-QJsonObject parse(const QByteArray &out)
-{
-    QJsonParseError error;
-    const QJsonDocument doc = QJsonDocument::fromJson(out, &error);
-    return error.error == QJsonParseError::NoError ? doc.object() : QJsonObject();
-}
 
 void verifyOneLineError(const Run &r, int exitCode, const QString &needle)
 {
@@ -94,10 +70,10 @@ private slots:
         paperStudy().save(results.toStdString());
         const QString csv = dir.filePath("table1.csv");
         const QString rankingCsv = dir.filePath("ranking.csv");
-        const Run r = run({"study", "tally", "--results", results, "--json", "--csv", csv,
+        const Run r = runLipsync({"study", "tally", "--results", results, "--json", "--csv", csv,
                            "--ranking-csv", rankingCsv});
         QVERIFY2(r.exitCode == 0, r.err.constData());
-        const QJsonObject json = parse(r.out);
+        const QJsonObject json = parseJsonObject(r.out);
         QCOMPARE(json.value("summary").toString(), QString("DPDS ≈ reality ≻ Brand ≻ SLDS"));
         QCOMPARE(json.value("participants").toInt(), 33);
         QCOMPARE(json.value("answered").toInt(), 33 * 12);
@@ -119,7 +95,7 @@ private slots:
         QVERIFY(ranking.readAll().split('\n')[4].startsWith("4,SLDS,"));
 
         // Without --json: the table for people.
-        const Run text = run({"study", "tally", "--results", results});
+        const Run text = runLipsync({"study", "tally", "--results", results});
         QCOMPARE(text.exitCode, 0);
         QVERIFY2(text.out.contains("DPDS ≈ reality ≻ Brand ≻ SLDS"), text.out.constData());
     }
@@ -132,18 +108,18 @@ private slots:
         QVERIFY(manifest.open(QIODevice::WriteOnly));
         manifest.write("{}");
         manifest.close();
-        Run r = run({"study", "create", "--project", dir.path(), "--methods", "real,dpds,slds,brand,hmm",
+        Run r = runLipsync({"study", "create", "--project", dir.path(), "--methods", "real,dpds,slds,brand,hmm",
                      "--utterances", "bbaf2n,bgin3a,bwbg8n", "--participants", "4", "--seed", "9",
                      "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
-        QCOMPARE(parse(r.out).value("trialsPerSession").toInt(), 20);
+        QCOMPARE(parseJsonObject(r.out).value("trialsPerSession").toInt(), 20);
         const ForcedChoiceStudy study = ForcedChoiceStudy::load(dir.filePath("study.json").toStdString());
         QCOMPARE(int(study.sessions().size()), 4);
         QCOMPARE(study.sessions()[3].participant, std::string("P04"));
 
-        r = run({"study", "tally", "--project", dir.path(), "--json"});
+        r = runLipsync({"study", "tally", "--project", dir.path(), "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
-        const QJsonObject json = parse(r.out);
+        const QJsonObject json = parseJsonObject(r.out);
         QCOMPARE(json.value("answered").toInt(), 0);
         QCOMPARE(json.value("unanswered").toInt(), 80);
         QCOMPARE(json.value("pairs").toArray().size(), 10);
@@ -152,19 +128,19 @@ private slots:
     void badInputAndUsage()
     {
         QTemporaryDir dir;
-        verifyOneLineError(run({"study", "tally", "--results", dir.filePath("missing.json")}), 1,
+        verifyOneLineError(runLipsync({"study", "tally", "--results", dir.filePath("missing.json")}), 1,
                            "missing.json");
-        verifyOneLineError(run({"study", "tally", "--project", dir.path()}), 1, "not a project folder");
+        verifyOneLineError(runLipsync({"study", "tally", "--project", dir.path()}), 1, "not a project folder");
         QFile broken(dir.filePath("broken.json"));
         QVERIFY(broken.open(QIODevice::WriteOnly));
         broken.write("{\"format\": \"something else\"}");
         broken.close();
-        verifyOneLineError(run({"study", "tally", "--results", dir.filePath("broken.json")}), 1,
+        verifyOneLineError(runLipsync({"study", "tally", "--results", dir.filePath("broken.json")}), 1,
                            "broken.json: format:");
-        verifyOneLineError(run({"study", "tally"}), 2, "usage");
-        verifyOneLineError(run({"study", "tally", "--results", "x", "--project", "y"}), 2, "usage");
-        verifyOneLineError(run({"study", "tally", "--results", "x", "--colour"}), 2, "--colour");
-        verifyOneLineError(run({"study", "create", "--methods", "real", "--utterances", "u", "--out",
+        verifyOneLineError(runLipsync({"study", "tally"}), 2, "usage");
+        verifyOneLineError(runLipsync({"study", "tally", "--results", "x", "--project", "y"}), 2, "usage");
+        verifyOneLineError(runLipsync({"study", "tally", "--results", "x", "--colour"}), 2, "--colour");
+        verifyOneLineError(runLipsync({"study", "create", "--methods", "real", "--utterances", "u", "--out",
                                 dir.filePath("s.json")}), 1, "at least two methods");
     }
 };
