@@ -4,6 +4,8 @@
 // the onion skin; automatic detection gives 23 Automatic points on the face; an AAM built from
 // labelled frames (and the demo's shipped AAM) tracks a whole clip into per-frame features, undone
 // in one step; W walks the worst fits; the modes view synthesises a face per mode.
+#include "DemoWindow.h"
+
 #include "aam/PtsFile.h"
 #include "annotate/FacesController.h"
 #include "annotate/FrameView.h"
@@ -29,6 +31,7 @@
 
 using namespace lipsync;
 using namespace lipsync::studio;
+using lipsync::studio::testing::openDemoWindow;
 
 class TestLandmarkEditor : public QObject
 {
@@ -64,17 +67,9 @@ private:
 private slots:
     void initTestCase()
     {
-        QCoreApplication::setOrganizationName(QStringLiteral("lipsync-tests"));
-        ErrorReporter::setBatchMode(true);
-        m_window = new MainWindow;
-        m_window->resize(1280, 800);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window));
-        m_window->activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(m_window));
-        QVERIFY(m_window->files()->openDemo());
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() != nullptr, 60000);
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 60000);
+        openDemoWindow(m_window);
+        if (QTest::currentTestFailed())
+            return;
         QVERIFY(view()->isEditable());
     }
 

@@ -1,6 +1,8 @@
 // The studio opens the bundled demo: ten sequences, the first frame and the waveform on screen
 // once the background load has finished; frame/sequence navigation; undo/redo of a transcript
 // edit (every step back and forward again); a canceled load leaves the views as they were.
+#include "DemoWindow.h"
+
 #include "annotate/FrameView.h"
 #include "app/AboutBox.h"
 #include "app/ErrorReporter.h"
@@ -29,6 +31,7 @@
 
 using namespace lipsync;
 using namespace lipsync::studio;
+using lipsync::studio::testing::openDemoWindow;
 
 class TestMainWindow : public QObject
 {
@@ -43,18 +46,7 @@ public:
 private slots:
     void initTestCase()
     {
-        QCoreApplication::setOrganizationName(QStringLiteral("lipsync-tests"));
-        ErrorReporter::setBatchMode(true);
-        m_window = new MainWindow;
-        m_window->resize(1280, 800);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window));
-        // Window shortcuts (arrows, Ctrl+Z) only fire in the active window.
-        m_window->activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(m_window));
-        QVERIFY(m_window->files()->openDemo());
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() != nullptr, 60000);
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 60000);
+        openDemoWindow(m_window);
     }
 
     void cleanupTestCase() { delete m_window; }

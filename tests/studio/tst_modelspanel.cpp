@@ -2,6 +2,8 @@
 // clicking Train trains the checked models as background tasks; the Training plot receives the
 // objective per iteration, the models appear in the panel's list and in the document (one undo
 // step each), a canceled training keeps the previous model, and Evaluate (k-fold) draws Figure 4.
+#include "DemoWindow.h"
+
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
 #include "app/ProjectDocument.h"
@@ -33,6 +35,7 @@
 
 using namespace lipsync;
 using namespace lipsync::studio;
+using lipsync::studio::testing::openDemoWindow;
 
 class TestModelsPanel : public QObject
 {
@@ -68,16 +71,11 @@ private:
 private slots:
     void initTestCase()
     {
-        QCoreApplication::setOrganizationName(QStringLiteral("lipsync-tests"));
-        ErrorReporter::setBatchMode(true);
-        m_window = new MainWindow;
-        m_window->resize(1280, 800);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        openDemoWindow(m_window);
+        if (QTest::currentTestFailed())
+            return;
         m_panel = m_window->findChild<ModelsPanel *>();
         QVERIFY(m_panel);
-        QVERIFY(m_window->files()->openDemo());
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() != nullptr, 60000);
         waitIdle();
     }
 

@@ -5,6 +5,8 @@
 // (double-click, the phone combo, validation), insert silence (I), Tab and Space in the view;
 // re-aligning a selection keeps the edited boundary; "Align all" is one undo step and canceling
 // it changes nothing; a transcript that cannot fit is reported naming the clip.
+#include "DemoWindow.h"
+
 #include "align/Lexicon.h"
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
@@ -31,6 +33,7 @@
 
 using namespace lipsync;
 using namespace lipsync::studio;
+using lipsync::studio::testing::openDemoWindow;
 
 namespace {
 
@@ -54,17 +57,9 @@ public:
 private slots:
     void initTestCase()
     {
-        QCoreApplication::setOrganizationName(QStringLiteral("lipsync-tests"));
-        ErrorReporter::setBatchMode(true);
-        m_window = new MainWindow;
-        m_window->resize(1280, 800);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window));
-        m_window->activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(m_window));
-        QVERIFY(m_window->files()->openDemo());
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() != nullptr, 60000);
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 60000);
+        openDemoWindow(m_window);
+        if (QTest::currentTestFailed())
+            return;
         m_panel = m_window->findChild<TimelinePanel *>();
         QVERIFY(m_panel);
         m_view = m_window->waveformView();

@@ -2,6 +2,8 @@
 // parameter and each model's generation are drawn (their colours are on screen) over shaded
 // phoneme bands; the parameter spin box switches the parameter; the cursor follows the current
 // frame of the main window (the transport's next-frame action); the wheel zooms.
+#include "DemoWindow.h"
+
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
 #include "app/ProjectDocument.h"
@@ -24,6 +26,7 @@
 
 using namespace lipsync;
 using namespace lipsync::studio;
+using lipsync::studio::testing::openDemoWindow;
 
 namespace {
 
@@ -63,19 +66,11 @@ private:
 private slots:
     void initTestCase()
     {
-        QCoreApplication::setOrganizationName(QStringLiteral("lipsync-tests"));
-        ErrorReporter::setBatchMode(true);
-        m_window = new MainWindow;
-        m_window->resize(1280, 800);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window));
-        m_window->activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(m_window));
+        openDemoWindow(m_window);
+        if (QTest::currentTestFailed())
+            return;
         m_panel = m_window->findChild<ModelsPanel *>();
         QVERIFY(m_panel);
-        QVERIFY(m_window->files()->openDemo());
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() != nullptr, 60000);
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 60000);
     }
 
     void cleanupTestCase() { delete m_window; }

@@ -1,0 +1,31 @@
+#pragma once
+// Shared set-up of the GUI tests: the studio's main window on the bundled demo project, shown,
+// active (window shortcuts only fire in the active window) and with its loading tasks finished.
+#include "app/ErrorReporter.h"
+#include "app/MainWindow.h"
+#include "app/ProjectFiles.h"
+#include "tasks/TaskRunner.h"
+
+#include <QCoreApplication>
+#include <QTest>
+
+namespace lipsync::studio::testing {
+
+// Creates `window`. A failed check fails the calling test: callers return when
+// QTest::currentTestFailed().
+inline void openDemoWindow(MainWindow *&window)
+{
+    QCoreApplication::setOrganizationName(QStringLiteral("lipsync-tests"));
+    ErrorReporter::setBatchMode(true);
+    window = new MainWindow;
+    window->resize(1280, 800);
+    window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window));
+    window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(window));
+    QVERIFY(window->files()->openDemo());
+    QTRY_VERIFY_WITH_TIMEOUT(window->media() != nullptr, 60000);
+    QTRY_COMPARE_WITH_TIMEOUT(window->taskRunner()->runningCount(), 0, 60000);
+}
+
+} // namespace lipsync::studio::testing
