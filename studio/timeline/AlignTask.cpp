@@ -1,5 +1,7 @@
 #include "timeline/AlignTask.h"
 
+#include "align/ShippedAlignerModel.h"
+
 #include "align/AlignerUtterance.h"
 #include "align/ForcedAligner.h"
 #include "tasks/TaskRunner.h"
@@ -19,7 +21,6 @@ namespace lipsync::studio {
 
 namespace {
 
-const char *const kModelRelative = "resources/aligner/grid-s1.aligner";
 
 // Loaded once per path and shared by every alignment (the model is read-only once prepared).
 std::shared_ptr<const AcousticModel> loadModel(const QString &path)
@@ -130,27 +131,11 @@ AlignOutcome alignOne(const AlignJob &job, const AcousticModel &model)
 
 QString alignerModelPath()
 {
-    const QString env = qEnvironmentVariable("LIPSYNC_ALIGNER_MODEL");
-    if (!env.isEmpty())
-        return env;
-    QDir dir(QCoreApplication::applicationDirPath());
-    for (int up = 0; up < 5; ++up) {
-        const QString candidate = dir.filePath(QLatin1String(kModelRelative));
-        if (QFileInfo::exists(candidate))
-            return QFileInfo(candidate).absoluteFilePath();
-        if (!dir.cdUp())
-            break;
-    }
 #ifdef LIPSYNC_SOURCE_DIR
-    const QString source = QDir(QStringLiteral(LIPSYNC_SOURCE_DIR)).filePath(QLatin1String(kModelRelative));
-    if (QFileInfo::exists(source))
-        return source;
+    return QString::fromStdString(shippedAlignerModelPath(LIPSYNC_SOURCE_DIR));
+#else
+    return QString::fromStdString(shippedAlignerModelPath());
 #endif
-    const QString installed =
-        QCoreApplication::applicationDirPath() + QStringLiteral("/../share/lipsync/aligner/grid-s1.aligner");
-    if (QFileInfo::exists(installed))
-        return QFileInfo(installed).absoluteFilePath();
-    return {};
 }
 
 Task *startAlignment(TaskRunner &runner, const QString &title, std::vector<AlignJob> jobs,
