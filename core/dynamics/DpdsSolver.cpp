@@ -117,7 +117,7 @@ NormalEquations normalEquations(const LabelLayout &layout, const Series &y, cons
     ne.transitionH = Eigen::VectorXd::Zero(2 * P);
     ne.startCount = Eigen::VectorXd::Zero(P);
     ne.startSum = Eigen::VectorXd::Zero(P);
-    Eigen::MatrixXd Gl;
+    Eigen::MatrixXd R, Gl;
     Eigen::VectorXd hl, r;
     std::vector<int> global;
     for (size_t s = 0; s < layout.labels.size(); ++s) {
@@ -131,11 +131,13 @@ NormalEquations normalEquations(const LabelLayout &layout, const Series &y, cons
         if (L == 1)
             continue;
         // Local row: slot 0 = mu_{pi_1}, slot 1 + j = nu of visited[j]. Slots become non-zero in
-        // order, so only the prefix [0, active) is touched (§4.3 sparsity).
+        // order, so only the prefix [0, active) is touched (§4.3 sparsity). The rows r_t (t >= 2)
+        // are stacked into R and G_local = R^T R, h_local = R^T y are formed by one symmetric
+        // rank-k update and one product (vectorised) instead of per-frame outer products.
+        const Eigen::Index rows = Eigen::Index(pi.size()) - 1;
+        R.setZero(rows, L);
         r = Eigen::VectorXd::Zero(L);
         r[0] = 1.0;
-        Gl = Eigen::MatrixXd::Zero(L, L);
-        hl = Eigen::VectorXd::Zero(L);
         Eigen::Index active = 1;
         for (size_t t = 1; t < pi.size(); ++t) {
             const Eigen::Index j = 1 + local[t];
@@ -143,15 +145,11 @@ NormalEquations normalEquations(const LabelLayout &layout, const Series &y, cons
             if (j >= active)
                 active = j + 1;
             r[j] += 1.0;
-            const double yt = ys[Eigen::Index(t)];
-            for (Eigen::Index i = 0; i < active; ++i) {
-                const double ri = r[i];
-                hl[i] += ri * yt;
-                double *column = &Gl(i, i); // lower triangle, column i from row i
-                for (Eigen::Index k = i; k < active; ++k)
-                    column[k - i] += ri * r[k];
-            }
+            R.row(Eigen::Index(t) - 1).head(active) = r.head(active).transpose();
         }
+        Gl.setZero(L, L);
+        Gl.selfadjointView<Eigen::Lower>().rankUpdate(R.transpose());
+        hl.noalias() = R.transpose() * ys.tail(rows);
         global.assign(size_t(L), 0);
         global[0] = pi[0];
         for (size_t j = 0; j < visited.size(); ++j)
@@ -241,9 +239,8 @@ void gaussNewton(const LabelLayout &layout, const Series &y, const Eigen::Vector
     const int P = layout.states;
     H = Eigen::MatrixXd::Zero(3 * P, 3 * P);
     g = Eigen::VectorXd::Zero(P);
-    Eigen::MatrixXd Hl;
-    Eigen::VectorXd z, gl;
-    std::vector<Eigen::Index> active;
+    Eigen::MatrixXd Z, Hl;
+    Eigen::VectorXd z, e, gl;
     std::vector<int> global;
     for (size_t s = 0; s < layout.labels.size(); ++s) {
         const std::vector<int> &pi = layout.labels[s];
@@ -255,49 +252,43 @@ void gaussNewton(const LabelLayout &layout, const Series &y, const Eigen::Vector
         const Eigen::Index M = Eigen::Index(visited.size());
         if (M == 0)
             continue;
-        // Local z = [r (1 + M: mu_{pi_1}, nu of visited); s (M: a of visited)].
-        const Eigen::Index L = 1 + 2 * M;
+        // Local z = [r; s] interleaved by visit: slot 0 = mu_{pi_1}, slot 1 + 2j = nu and
+        // slot 2 + 2j = a of visited[j]. States are numbered in order of first visit, so the
+        // non-zero slots of z_t are always a prefix. The z_t (t >= 2) are stacked into Z and
+        // H_local = Z^T Z, g_local = Z^T e come from one rank-k update and one product.
+        const Eigen::Index L = 1 + 2 * M, rows = Eigen::Index(pi.size()) - 1;
+        Z.setZero(rows, L);
+        e.resize(rows);
         z = Eigen::VectorXd::Zero(L);
         z[0] = 1.0;
-        Hl = Eigen::MatrixXd::Zero(L, L);
-        gl = Eigen::VectorXd::Zero(M);
-        active.assign(1, 0);
+        Eigen::Index active = 1;
         double x = theta[pi[0]];
         for (size_t t = 1; t < pi.size(); ++t) {
             const int n = pi[t];
             const Eigen::Index j = local[t];
             const double an = a[n];
-            for (Eigen::Index i : active)
-                z[i] *= an;
-            if (Eigen::Index(active.size()) == 1 + 2 * j) { // first visit (slots are in visit order)
-                active.push_back(1 + j);
-                active.push_back(1 + M + j);
-            }
-            z[1 + j] += 1.0;
-            z[1 + M + j] += x; // s_t: e_{pi_t} x_{t-1}
+            z.head(active) *= an;
+            if (2 + 2 * j >= active) // first visit
+                active = 3 + 2 * j;
+            z[1 + 2 * j] += 1.0;
+            z[2 + 2 * j] += x; // s_t: e_{pi_t} x_{t-1}
             x = an * x + theta[P + n];
-            const double e = ys[Eigen::Index(t)] - x;
-            for (Eigen::Index i : active) {
-                const double zi = z[i];
-                if (i > M)
-                    gl[i - 1 - M] += e * zi;
-                for (Eigen::Index k : active)
-                    if (k >= i)
-                        Hl(k, i) += zi * z[k];
-            }
+            e[Eigen::Index(t) - 1] = ys[Eigen::Index(t)] - x;
+            Z.row(Eigen::Index(t) - 1).head(active) = z.head(active).transpose();
         }
+        Hl.setZero(L, L);
+        Hl.selfadjointView<Eigen::Lower>().rankUpdate(Z.transpose(), w.transitionWeight);
+        gl.noalias() = Z.transpose() * e;
         global.assign(size_t(L), 0);
         global[0] = P + pi[0];
         for (Eigen::Index j = 0; j < M; ++j) {
-            global[size_t(1 + j)] = 2 * P + visited[size_t(j)];
-            global[size_t(1 + M + j)] = visited[size_t(j)];
-            g[visited[size_t(j)]] += w.transitionWeight * gl[j];
+            global[size_t(1 + 2 * j)] = 2 * P + visited[size_t(j)];
+            global[size_t(2 + 2 * j)] = visited[size_t(j)];
+            g[visited[size_t(j)]] += w.transitionWeight * gl[2 + 2 * j];
         }
         for (Eigen::Index i = 0; i < L; ++i)
             for (Eigen::Index k = i; k < L; ++k) {
-                const double v = w.transitionWeight * Hl(k, i);
-                if (v == 0.0)
-                    continue;
+                const double v = Hl(k, i);
                 H(global[size_t(k)], global[size_t(i)]) += v;
                 if (k != i)
                     H(global[size_t(i)], global[size_t(k)]) += v;

@@ -18,4 +18,32 @@ inline double diagonalGaussianLogPdf(const Eigen::Ref<const Eigen::VectorXd> &z,
                    + ((z - mean).array().square() / variance.array()).sum());
 }
 
+// Sum of logarithms of positive values with one std::log per block of 8: the running product is
+// renormalised by frexp (exact) after each block, so it neither overflows nor underflows for
+// values within 2^+-120. log per frame and dimension was the costliest operation of the scalar
+// Kalman filter in the SLDS E-step.
+class LogSum
+{
+public:
+    void add(double value)
+    {
+        m_product *= value;
+        if (++m_count == 8)
+            normalise();
+    }
+    double value() const { return std::log(m_product) + double(m_exponent) * std::numbers::ln2; }
+
+private:
+    void normalise()
+    {
+        int exponent = 0;
+        m_product = std::frexp(m_product, &exponent);
+        m_exponent += exponent;
+        m_count = 0;
+    }
+    double m_product = 1.0;
+    long long m_exponent = 0;
+    int m_count = 0;
+};
+
 } // namespace lipsync

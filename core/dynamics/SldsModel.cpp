@@ -203,6 +203,8 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
         Eigen::VectorXd Sxx = Eigen::VectorXd::Zero(P), Smm = Sxx, Sxm = Sxx, sx = Sxx, sm = Sxx,
                         N2 = Sxx, Rsum = Sxx, Rn = Sxx, x1 = Sxx, x1sq = Sxx, N1 = Sxx;
         double ll = 0.0;
+        LogSum logS; // sum of log S_t, one log per 8 frames
+        long long frames = 0;
         std::vector<double> mp, Pp, mf, Pf, ms, Ps;
         for (const LabelledSequence &s : sequences) {
             const size_t T = s.labels.size();
@@ -221,12 +223,14 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
                     mp[t] = a[n] * mf[t - 1] + nu[n];
                     Pp[t] = a[n] * a[n] * Pf[t - 1] + q[n];
                 }
-                const double S = Pp[t] + r[n], K = Pp[t] / S;
+                const double S = Pp[t] + r[n], inverseS = 1.0 / S, K = Pp[t] * inverseS;
                 const double eta = s.features(Eigen::Index(t), k) - mp[t];
-                ll += -0.5 * (kLog2Pi + std::log(S) + eta * eta / S);
+                ll -= 0.5 * eta * eta * inverseS;
+                logS.add(S);
                 mf[t] = mp[t] + K * eta;
                 Pf[t] = (1 - K) * (1 - K) * Pp[t] + K * K * r[n];
             }
+            frames += (long long)T;
             ms[T - 1] = mf[T - 1];
             Ps[T - 1] = Pf[T - 1];
             for (size_t t = T - 1; t-- > 0;) {
@@ -254,6 +258,7 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
             x1sq[n0] += Ps[0] + ms[0] * ms[0];
             N1[n0] += 1.0;
         }
+        ll -= 0.5 * (double(frames) * kLog2Pi + logS.value());
         // Log prior of Sigma (MAP, §4.5 form) for the objective.
         for (int n = 0; n < P; ++n)
             if (N1[n] > 0 && m_options.kappa > 0)

@@ -6,10 +6,16 @@
 #include "tasks/Feedback.h"
 
 #include <QJsonArray>
+#include <QThreadPool>
+#include <QtConcurrent/QtConcurrentMap>
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
 #include <chrono>
 #include <memory>
+#include <mutex>
+#include <numeric>
 #include <sstream>
 
 namespace lipsync {
@@ -19,6 +25,76 @@ const std::vector<std::string> &evaluationMetrics()
     static const std::vector<std::string> names{"l1", "rms", "linf", "loglik"};
     return names;
 }
+
+namespace {
+
+// One model's outcome on one fold.
+struct FoldOutcome
+{
+    double trainingSeconds = 0.0;
+    double l1 = 0.0, rms = 0.0, linf = 0.0, loglik = 0.0;
+};
+
+// Trains every model on the training folds and scores it on fold `f` (§6.1-6.3). Independent of
+// every other fold, so folds can run concurrently.
+std::vector<FoldOutcome> runFold(const std::vector<LabelledSequence> &sequences,
+                                 const std::vector<int> &test, const EvaluationOptions &options,
+                                 const ModelOptions &modelOptions, int f, Feedback &feedback)
+{
+    std::vector<bool> isTest(sequences.size(), false);
+    for (int i : test)
+        isTest[size_t(i)] = true;
+    std::vector<LabelledSequence> training;
+    for (size_t i = 0; i < sequences.size(); ++i)
+        if (!isTest[i])
+            training.push_back(sequences[i]);
+    // The DPDS is trained before the SLDS, which starts from it (§3.4 initialisation) instead
+    // of training its own: the SLDS training time then excludes the shared DPDS fit.
+    std::vector<size_t> order(options.kinds.size());
+    for (size_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        return options.kinds[a] == "dpds" && options.kinds[b] != "dpds";
+    });
+    std::vector<FoldOutcome> out(options.kinds.size());
+    std::shared_ptr<const DpdsModel> foldDpds;
+    for (size_t step = 0; step < order.size(); ++step) {
+        const size_t index = order[step];
+        const std::string &kind = options.kinds[index];
+        feedback.throwIfCanceled();
+        feedback.setStatus("fold " + std::to_string(f + 1) + "/" + std::to_string(options.folds) + ": "
+                           + kind);
+        std::shared_ptr<DynamicModel> model = createDynamicModel(kind, modelOptions);
+        if (auto *slds = dynamic_cast<SldsModel *>(model.get()); slds && foldDpds)
+            slds->setInitialisation(foldDpds);
+        const double steps = double(order.size());
+        Feedback child(feedback, double(step) / steps, double(step + 1) / steps);
+        const auto start = std::chrono::steady_clock::now();
+        model->train(training, child);
+        if (kind == "dpds")
+            foldDpds = std::static_pointer_cast<const DpdsModel>(model);
+        FoldOutcome &o = out[index];
+        o.trainingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        // Fold value = mean over the fold's test sequences, each weighted equally (§6.3).
+        for (int i : test) {
+            const LabelledSequence &s = sequences[size_t(i)];
+            const SequenceErrors e = sequenceErrors(model->generate(s.labels), s.features);
+            o.l1 += e.l1;
+            o.rms += e.rms;
+            o.linf += e.linf;
+            o.loglik += model->logLikelihood(s.labels, s.features) / double(s.frameCount());
+        }
+        const double n = double(test.size());
+        o.l1 /= n;
+        o.rms /= n;
+        o.linf /= n;
+        o.loglik /= n;
+        feedback.setProgress(double(step + 1) / steps);
+    }
+    return out;
+}
+
+} // namespace
 
 EvaluationResult evaluateModels(const std::vector<LabelledSequence> &sequences,
                                 const EvaluationOptions &options, Feedback &feedback)
@@ -33,67 +109,77 @@ EvaluationResult evaluateModels(const std::vector<LabelledSequence> &sequences,
     for (const LabelledSequence &s : sequences)
         result.frames += s.frameCount();
     result.foldMembers = makeFolds(int(sequences.size()), options.folds, options.seed);
-    for (const std::string &kind : options.kinds) {
-        ModelEvaluation m;
-        m.kind = kind;
-        for (const std::string &metric : evaluationMetrics())
-            m.metrics[metric];
-        result.models.push_back(m);
-    }
-    const double steps = double(options.folds * options.kinds.size());
-    int step = 0;
-    for (int f = 0; f < options.folds; ++f) {
-        std::vector<bool> isTest(sequences.size(), false);
-        for (int i : result.foldMembers[size_t(f)])
-            isTest[size_t(i)] = true;
-        std::vector<LabelledSequence> training;
-        for (size_t i = 0; i < sequences.size(); ++i)
-            if (!isTest[i])
-                training.push_back(sequences[i]);
-        // The DPDS is trained before the SLDS, which starts from it (§3.4 initialisation) instead
-        // of training its own: the SLDS training time then excludes the shared DPDS fit.
-        std::vector<size_t> order(result.models.size());
-        for (size_t i = 0; i < order.size(); ++i)
-            order[i] = i;
-        std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-            return result.models[a].kind == "dpds" && result.models[b].kind != "dpds";
-        });
-        std::shared_ptr<const DpdsModel> foldDpds;
-        for (size_t index : order) {
-            ModelEvaluation &m = result.models[index];
-            feedback.throwIfCanceled();
-            feedback.setStatus("fold " + std::to_string(f + 1) + "/" + std::to_string(options.folds)
-                               + ": " + m.kind);
-            std::shared_ptr<DynamicModel> model = createDynamicModel(m.kind, options.modelOptions);
-            if (auto *slds = dynamic_cast<SldsModel *>(model.get()); slds && foldDpds)
-                slds->setInitialisation(foldDpds);
-            Feedback child(feedback, step / steps, (step + 1) / steps);
-            const auto start = std::chrono::steady_clock::now();
-            model->train(training, child);
-            if (m.kind == "dpds")
-                foldDpds = std::static_pointer_cast<const DpdsModel>(model);
-            m.trainingSeconds.push_back(
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-            // Fold value = mean over the fold's test sequences, each weighted equally (§6.3).
-            double l1 = 0, rms = 0, linf = 0, ll = 0;
-            const std::vector<int> &test = result.foldMembers[size_t(f)];
-            for (int i : test) {
-                const LabelledSequence &s = sequences[size_t(i)];
-                const SequenceErrors e = sequenceErrors(model->generate(s.labels), s.features);
-                l1 += e.l1;
-                rms += e.rms;
-                linf += e.linf;
-                ll += model->logLikelihood(s.labels, s.features) / double(s.frameCount());
-            }
-            const double n = double(test.size());
-            m.metrics["l1"].folds.push_back(l1 / n);
-            m.metrics["rms"].folds.push_back(rms / n);
-            m.metrics["linf"].folds.push_back(linf / n);
-            m.metrics["loglik"].folds.push_back(ll / n);
-            ++step;
-            feedback.setProgress(step / steps);
+
+    std::vector<std::vector<FoldOutcome>> outcomes(size_t(options.folds));
+    const bool parallel = options.parallelFolds && QThreadPool::globalInstance()->maxThreadCount() > 1;
+    if (!parallel) {
+        for (int f = 0; f < options.folds; ++f) {
+            Feedback child(feedback, double(f) / options.folds, double(f + 1) / options.folds);
+            outcomes[size_t(f)] = runFold(sequences, result.foldMembers[size_t(f)], options,
+                                          options.modelOptions, f, child);
         }
+    } else {
+        // Folds are independent (§6.1): run them concurrently, each model single-threaded (its
+        // per-dimension parallelism would only add a barrier per iteration). Results are stored
+        // per fold, so they do not depend on the schedule. Progress is the mean over folds;
+        // a cancel of `feedback` reaches the folds through their progress reports.
+        ModelOptions serial = options.modelOptions;
+        serial.dpds.threads = 1;
+        serial.slds.threads = 1;
+        std::mutex mutex;
+        std::vector<double> progress(size_t(options.folds), 0.0);
+        std::vector<int> folds(size_t(options.folds));
+        std::iota(folds.begin(), folds.end(), 0);
+        std::exception_ptr firstError;
+        std::atomic<bool> stop{false};
+        QtConcurrent::blockingMap(folds, [&](int f) {
+            Feedback own;
+            auto pollCancel = [&] {
+                if (stop.load() || feedback.isCanceled())
+                    own.cancel();
+            };
+            own.onProgress = [&, f](double fraction) {
+                pollCancel();
+                const std::lock_guard lock(mutex);
+                progress[size_t(f)] = fraction;
+                feedback.setProgress(std::accumulate(progress.begin(), progress.end(), 0.0) / options.folds);
+            };
+            own.onStatus = [&](const std::string &status) {
+                pollCancel();
+                const std::lock_guard lock(mutex);
+                feedback.setStatus(status);
+            };
+            own.onIteration = [&](int, double) { pollCancel(); };
+            try {
+                pollCancel();
+                outcomes[size_t(f)] = runFold(sequences, result.foldMembers[size_t(f)], options, serial, f, own);
+            } catch (...) {
+                // The first failure (an Error, or the user's cancel) stops the other folds and is
+                // rethrown once all of them have returned.
+                const std::lock_guard lock(mutex);
+                if (!firstError)
+                    firstError = std::current_exception();
+                stop = true;
+            }
+        });
+        if (firstError)
+            std::rethrow_exception(firstError);
     }
+    feedback.throwIfCanceled();
+    for (size_t index = 0; index < options.kinds.size(); ++index) {
+        ModelEvaluation m;
+        m.kind = options.kinds[index];
+        for (const std::vector<FoldOutcome> &fold : outcomes) {
+            const FoldOutcome &o = fold[index];
+            m.metrics["l1"].folds.push_back(o.l1);
+            m.metrics["rms"].folds.push_back(o.rms);
+            m.metrics["linf"].folds.push_back(o.linf);
+            m.metrics["loglik"].folds.push_back(o.loglik);
+            m.trainingSeconds.push_back(o.trainingSeconds);
+        }
+        result.models.push_back(std::move(m));
+    }
+    feedback.setProgress(1.0);
     for (ModelEvaluation &m : result.models)
         for (auto &[name, summary] : m.metrics) {
             const stats::MeanInterval interval = stats::meanWithCi95(summary.folds);

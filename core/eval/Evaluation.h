@@ -24,6 +24,9 @@ struct EvaluationOptions
     std::uint64_t seed = 2007;
     std::vector<std::string> kinds{"hmm", "brand", "slds", "dpds"};
     ModelOptions modelOptions;
+    // Folds are independent: run them concurrently on the global thread pool, each model
+    // single-threaded. false: one fold at a time, models threaded as modelOptions say.
+    bool parallelFolds = true;
 };
 
 struct MetricSummary

@@ -4,6 +4,7 @@
 #include "util/Error.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 namespace lipsync {
@@ -20,7 +21,18 @@ bool isInteger(const std::string &s)
     return s != "-";
 }
 
-// One label line into `tier`; `timed` is -1 until the first line decides.
+// A time in seconds ("0.05", "1.2e-1"): the .lab form of wavesurfer and Audacity exports.
+bool isSeconds(const std::string &s)
+{
+    if (s.find_first_of(".eE") == std::string::npos)
+        return false;
+    char *end = nullptr;
+    std::strtod(s.c_str(), &end);
+    return end == s.c_str() + s.size();
+}
+
+// One label line into `tier`; `timed` is -1 until the first line decides: 0 untimed, 1 times in
+// 100 ns units, 2 times in seconds (a time with a decimal point on the first timed line).
 void parseLine(const std::string &line, const std::string &path, int lineNumber, Tier &tier, int &timed)
 {
     std::istringstream fields(line);
@@ -28,14 +40,16 @@ void parseLine(const std::string &line, const std::string &path, int lineNumber,
     std::string word;
     while (fields >> word)
         f.push_back(word);
-    if (f.empty())
+    if (f.empty() || f[0][0] == '#') // blank or comment
         return;
     const std::string where = "line " + std::to_string(lineNumber);
-    const bool hasTimes = f.size() >= 3 && isInteger(f[0]) && isInteger(f[1]);
+    auto isTime = [](const std::string &s) { return isInteger(s) || isSeconds(s); };
+    const bool hasTimes = f.size() >= 3 && isTime(f[0]) && isTime(f[1]);
+    const bool inSeconds = hasTimes && (isSeconds(f[0]) || isSeconds(f[1]));
     if (timed < 0)
-        timed = hasTimes ? 1 : 0;
-    if ((timed == 1) != hasTimes)
-        throw Error(timed ? "expected 'start end label' (times in 100 ns units)"
+        timed = !hasTimes ? 0 : inSeconds ? 2 : 1;
+    if ((timed != 0) != hasTimes)
+        throw Error(timed ? "expected 'start end label' (times in 100 ns units, or in seconds)"
                           : "timed label after untimed ones",
                     path, where);
     if (!hasTimes) {
@@ -44,10 +58,13 @@ void parseLine(const std::string &line, const std::string &path, int lineNumber,
         tier.intervals.push_back(Interval{0, 0, f[0], false});
         return;
     }
-    const long long start = std::stoll(f[0]), end = std::stoll(f[1]);
+    if (timed == 1 && inSeconds)
+        throw Error("time in seconds in a file whose times are in 100 ns units", path, where);
+    const double start = timed == 2 ? std::strtod(f[0].c_str(), nullptr) : std::stoll(f[0]) / kHtkUnitsPerSecond;
+    const double end = timed == 2 ? std::strtod(f[1].c_str(), nullptr) : std::stoll(f[1]) / kHtkUnitsPerSecond;
     if (start < 0 || end < start)
         throw Error("interval end is before its start", path, where);
-    Interval interval{start / kHtkUnitsPerSecond, end / kHtkUnitsPerSecond, f[2], false};
+    Interval interval{start, end, f[2], false};
     if (!tier.intervals.empty() && interval.start < tier.intervals.back().end - 1e-9)
         throw Error("interval overlaps the previous one", path, where);
     // Fields after the label (scores, auxiliary labels) are ignored.
@@ -74,7 +91,7 @@ Tier parseHtkLabel(const std::string &text, const std::string &path, bool *isTim
     if (tier.intervals.empty())
         throw Error("no labels", path);
     if (isTimed)
-        *isTimed = timed == 1;
+        *isTimed = timed > 0;
     return tier;
 }
 

@@ -2,6 +2,8 @@
 // HTK label files: .lab ("start end label [score...]" per line, times in 100 ns units; lines
 // with only a label are untimed) and master label files .mlf ("#!MLF!#", then for each file a
 // quoted pattern line, its label lines and a "." line). Only the first label level is read.
+// Also read: times in seconds (the .lab of wavesurfer, Audacity, MFA-style tools) when the first
+// timed line has a time with a decimal point, and '#' comment lines.
 #include "project/Tier.h"
 
 #include <map>

@@ -162,6 +162,47 @@ private slots:
         options.folds = 30;
         QVERIFY_THROWS_EXCEPTION(Error, evaluateModels(data, options, feedback));
     }
+
+    void parallelFoldsEqualSerialFolds()
+    {
+        // Folds run concurrently by default; the results must not depend on the schedule.
+        std::mt19937 rng(2);
+        const test::DpdsTruth truth = test::randomDpdsTruth(rng, 2, 0.05);
+        const auto data = test::dpdsDataset(rng, truth, {0, 2, 6, 9, 21}, 12, 30);
+        EvaluationOptions options;
+        options.folds = 4;
+        Feedback feedback;
+        options.parallelFolds = false;
+        const EvaluationResult serial = evaluateModels(data, options, feedback);
+        options.parallelFolds = true;
+        std::vector<double> progress;
+        feedback.onProgress = [&](double p) { progress.push_back(p); };
+        const EvaluationResult parallel = evaluateModels(data, options, feedback);
+        QVERIFY(!progress.empty() && progress.back() == 1.0);
+        QCOMPARE(parallel.models.size(), serial.models.size());
+        for (size_t m = 0; m < serial.models.size(); ++m) {
+            QCOMPARE(parallel.models[m].kind, serial.models[m].kind);
+            QCOMPARE(parallel.models[m].trainingSeconds.size(), size_t(4));
+            for (const std::string &metric : evaluationMetrics()) {
+                const std::vector<double> &a = serial.models[m].metrics.at(metric).folds;
+                const std::vector<double> &b = parallel.models[m].metrics.at(metric).folds;
+                QCOMPARE(b.size(), a.size());
+                for (size_t f = 0; f < a.size(); ++f)
+                    QVERIFY2(std::abs(a[f] - b[f]) <= 1e-9 * (1.0 + std::abs(a[f])),
+                             (serial.models[m].kind + " " + metric).c_str());
+            }
+        }
+        // A cancel before or during the folds ends the evaluation with Canceled.
+        Feedback canceled;
+        canceled.cancel();
+        QVERIFY_THROWS_EXCEPTION(Canceled, evaluateModels(data, options, canceled));
+        Feedback midway;
+        midway.onProgress = [&](double p) {
+            if (p > 0.3)
+                midway.cancel();
+        };
+        QVERIFY_THROWS_EXCEPTION(Canceled, evaluateModels(data, options, midway));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestEvaluation)

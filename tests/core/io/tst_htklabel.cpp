@@ -43,6 +43,24 @@ private slots:
         QCOMPARE(untimed.intervals[1].label, std::string("hello"));
     }
 
+    void secondsAndComments()
+    {
+        // The .lab of wavesurfer / Audacity exports: times in seconds, '#' comment lines.
+        bool timed = false;
+        const Tier t = parseHtkLabel("# start end phone\n0 0.05 sil\n0.05 0.13 B\n\n0.13 2e-1 IH1\n", {}, &timed);
+        QVERIFY(timed);
+        QCOMPARE(t.intervals.size(), size_t(3));
+        QCOMPARE(t.intervals[1].start, 0.05);
+        QCOMPARE(t.intervals[2].end, 0.2);
+        // The first timed line decides the unit: seconds inside a 100 ns file are an error.
+        try {
+            parseHtkLabel("0 500000 sil\n0.05 0.13 B\n", "mixed.lab");
+            QFAIL("no error");
+        } catch (const Error &e) {
+            QCOMPARE(e.field(), std::string("line 2"));
+        }
+    }
+
     void mlfRoundTrip()
     {
         QTemporaryDir dir;
