@@ -109,6 +109,33 @@ void NormalEquations::assemble(const Weights &w, Eigen::MatrixXd &G, Eigen::Vect
     }
 }
 
+// Sums of outer products of a linear recursion in O(T L) instead of O(T L^2) [implementation]:
+// the rows obey v_t = alpha_t v_{t-1} + u_t with a sparse u_t (one or two slots), so
+//   sum_{t>=1} v_t v_t^T = alpha_1^2 R_1 v_0 v_0^T
+//                          + sum_{t>=1} R_t [alpha_t (v_{t-1} u_t^T + u_t v_{t-1}^T) + u_t u_t^T],
+// with R_t = sum_{tau>=t} prod_{rho=t+1..tau} alpha_rho^2 = 1 + alpha_{t+1}^2 R_{t+1} (all terms
+// positive: no cancellation). Likewise sum_t c_t v_t = sum_t u_t lambda_t (+ the v_0 term) with
+// the adjoint lambda_t = c_t + alpha_{t+1} lambda_{t+1} (§4.7b).
+namespace {
+
+// R_t (t = 1..T-1) and lambda_t of c_t for one sequence; alpha_t = a[pi_t].
+void backwardSums(const std::vector<int> &pi, const Eigen::VectorXd &a, const double *c,
+                  std::vector<double> &R, std::vector<double> &lambda)
+{
+    const size_t T = pi.size();
+    R.resize(T);
+    lambda.resize(T);
+    R[T - 1] = 1.0;
+    lambda[T - 1] = c[T - 1];
+    for (size_t t = T - 1; t-- > 1;) {
+        const double alpha = a[pi[t + 1]];
+        R[t] = 1.0 + alpha * alpha * R[t + 1];
+        lambda[t] = c[t] + alpha * lambda[t + 1];
+    }
+}
+
+} // namespace
+
 NormalEquations normalEquations(const LabelLayout &layout, const Series &y, const Eigen::VectorXd &a)
 {
     const int P = layout.states;
@@ -117,8 +144,9 @@ NormalEquations normalEquations(const LabelLayout &layout, const Series &y, cons
     ne.transitionH = Eigen::VectorXd::Zero(2 * P);
     ne.startCount = Eigen::VectorXd::Zero(P);
     ne.startSum = Eigen::VectorXd::Zero(P);
-    Eigen::MatrixXd R, Gl;
+    Eigen::MatrixXd Gl;
     Eigen::VectorXd hl, r;
+    std::vector<double> R, lambda;
     std::vector<int> global;
     for (size_t s = 0; s < layout.labels.size(); ++s) {
         const std::vector<int> &pi = layout.labels[s];
@@ -130,38 +158,39 @@ NormalEquations normalEquations(const LabelLayout &layout, const Series &y, cons
         const Eigen::Index L = 1 + Eigen::Index(visited.size());
         if (L == 1)
             continue;
-        // Local row: slot 0 = mu_{pi_1}, slot 1 + j = nu of visited[j]. Slots become non-zero in
-        // order, so only the prefix [0, active) is touched (§4.3 sparsity). The rows r_t (t >= 2)
-        // are stacked into R and G_local = R^T R, h_local = R^T y are formed by one symmetric
-        // rank-k update and one product (vectorised) instead of per-frame outer products.
-        const Eigen::Index rows = Eigen::Index(pi.size()) - 1;
-        R.setZero(rows, L);
+        // Local row: slot 0 = mu_{pi_1}, slot 1 + j = nu of visited[j]; r_0 = e_0 and
+        // r_t = a_{pi_t} r_{t-1} + e_{1 + local_t} (§4.3). Slots become non-zero in order, so only
+        // the prefix [0, active) of r is touched.
+        backwardSums(pi, a, ys.data(), R, lambda);
+        Gl.setZero(L, L); // columns j: sum R_t alpha_t r_{t-1} over the t with slot j (then + transpose)
+        hl.setZero(L);
         r = Eigen::VectorXd::Zero(L);
         r[0] = 1.0;
         Eigen::Index active = 1;
         for (size_t t = 1; t < pi.size(); ++t) {
             const Eigen::Index j = 1 + local[t];
-            r.head(active) *= a[pi[t]];
+            const double alpha = a[pi[t]];
+            Gl.col(j).head(active) += (R[t] * alpha) * r.head(active);
+            hl[j] += lambda[t];
+            r.head(active) *= alpha;
             if (j >= active)
                 active = j + 1;
             r[j] += 1.0;
-            R.row(Eigen::Index(t) - 1).head(active) = r.head(active).transpose();
         }
-        Gl.setZero(L, L);
-        Gl.selfadjointView<Eigen::Lower>().rankUpdate(R.transpose());
-        hl.noalias() = R.transpose() * ys.tail(rows);
+        for (size_t t = 1; t < pi.size(); ++t)
+            Gl(1 + local[t], 1 + local[t]) += 0.5 * R[t]; // u u^T, halved before the symmetrisation
+        const double alpha1 = a[pi[1]];
+        Gl(0, 0) += 0.5 * alpha1 * alpha1 * R[1];
+        hl[0] += alpha1 * lambda[1];
+        Gl += Gl.transpose().eval();
         global.assign(size_t(L), 0);
         global[0] = pi[0];
         for (size_t j = 0; j < visited.size(); ++j)
             global[j + 1] = P + visited[j];
         for (Eigen::Index i = 0; i < L; ++i) {
             ne.transitionH[global[size_t(i)]] += hl[i];
-            for (Eigen::Index k = i; k < L; ++k) {
-                const double v = Gl(k, i);
-                ne.transitionG(global[size_t(k)], global[size_t(i)]) += v;
-                if (k != i)
-                    ne.transitionG(global[size_t(i)], global[size_t(k)]) += v;
-            }
+            for (Eigen::Index k = 0; k < L; ++k)
+                ne.transitionG(global[size_t(k)], global[size_t(i)]) += Gl(k, i);
         }
     }
     return ne;
@@ -239,8 +268,9 @@ void gaussNewton(const LabelLayout &layout, const Series &y, const Eigen::Vector
     const int P = layout.states;
     H = Eigen::MatrixXd::Zero(3 * P, 3 * P);
     g = Eigen::VectorXd::Zero(P);
-    Eigen::MatrixXd Z, Hl;
-    Eigen::VectorXd z, e, gl;
+    Eigen::MatrixXd Hl;
+    Eigen::VectorXd z, gl;
+    std::vector<double> x, e, R, lambda;
     std::vector<int> global;
     for (size_t s = 0; s < layout.labels.size(); ++s) {
         const std::vector<int> &pi = layout.labels[s];
@@ -253,32 +283,45 @@ void gaussNewton(const LabelLayout &layout, const Series &y, const Eigen::Vector
         if (M == 0)
             continue;
         // Local z = [r; s] interleaved by visit: slot 0 = mu_{pi_1}, slot 1 + 2j = nu and
-        // slot 2 + 2j = a of visited[j]. States are numbered in order of first visit, so the
-        // non-zero slots of z_t are always a prefix. The z_t (t >= 2) are stacked into Z and
-        // H_local = Z^T Z, g_local = Z^T e come from one rank-k update and one product.
-        const Eigen::Index L = 1 + 2 * M, rows = Eigen::Index(pi.size()) - 1;
-        Z.setZero(rows, L);
-        e.resize(rows);
+        // slot 2 + 2j = a of visited[j]; z_0 = e_0 and z_t = a_{pi_t} z_{t-1} + u_t with
+        // u_t = e_{nu_j} + x_{t-1} e_{a_j} (§4.7a, §4.8). States are numbered in order of first
+        // visit, so the non-zero slots of z_t are a prefix.
+        const size_t T = pi.size();
+        const Eigen::Index L = 1 + 2 * M;
+        x.resize(T);
+        e.resize(T);
+        x[0] = theta[pi[0]];
+        e[0] = 0.0;
+        for (size_t t = 1; t < T; ++t) {
+            x[t] = a[pi[t]] * x[t - 1] + theta[P + pi[t]];
+            e[t] = ys[Eigen::Index(t)] - x[t];
+        }
+        backwardSums(pi, a, e.data(), R, lambda);
+        Hl.setZero(L, L);
+        gl.setZero(L);
         z = Eigen::VectorXd::Zero(L);
         z[0] = 1.0;
         Eigen::Index active = 1;
-        double x = theta[pi[0]];
-        for (size_t t = 1; t < pi.size(); ++t) {
-            const int n = pi[t];
-            const Eigen::Index j = local[t];
-            const double an = a[n];
-            z.head(active) *= an;
-            if (2 + 2 * j >= active) // first visit
-                active = 3 + 2 * j;
-            z[1 + 2 * j] += 1.0;
-            z[2 + 2 * j] += x; // s_t: e_{pi_t} x_{t-1}
-            x = an * x + theta[P + n];
-            e[Eigen::Index(t) - 1] = ys[Eigen::Index(t)] - x;
-            Z.row(Eigen::Index(t) - 1).head(active) = z.head(active).transpose();
+        for (size_t t = 1; t < T; ++t) {
+            const Eigen::Index p = 1 + 2 * Eigen::Index(local[t]), q = p + 1;
+            const double alpha = a[pi[t]], previous = x[t - 1], c = R[t] * alpha;
+            Hl.col(p).head(active) += c * z.head(active);
+            Hl.col(q).head(active) += (c * previous) * z.head(active);
+            // u u^T, halved before the symmetrisation below.
+            Hl(p, p) += 0.5 * R[t];
+            Hl(q, q) += 0.5 * R[t] * previous * previous;
+            Hl(q, p) += R[t] * previous;
+            gl[q] += previous * lambda[t];
+            z.head(active) *= alpha;
+            if (q >= active)
+                active = q + 1;
+            z[p] += 1.0;
+            z[q] += previous;
         }
-        Hl.setZero(L, L);
-        Hl.selfadjointView<Eigen::Lower>().rankUpdate(Z.transpose(), w.transitionWeight);
-        gl.noalias() = Z.transpose() * e;
+        const double alpha1 = a[pi[1]];
+        Hl(0, 0) += 0.5 * alpha1 * alpha1 * R[1];
+        Hl += Hl.transpose().eval();
+        Hl *= w.transitionWeight;
         global.assign(size_t(L), 0);
         global[0] = P + pi[0];
         for (Eigen::Index j = 0; j < M; ++j) {
@@ -287,12 +330,8 @@ void gaussNewton(const LabelLayout &layout, const Series &y, const Eigen::Vector
             g[visited[size_t(j)]] += w.transitionWeight * gl[2 + 2 * j];
         }
         for (Eigen::Index i = 0; i < L; ++i)
-            for (Eigen::Index k = i; k < L; ++k) {
-                const double v = Hl(k, i);
-                H(global[size_t(k)], global[size_t(i)]) += v;
-                if (k != i)
-                    H(global[size_t(i)], global[size_t(k)]) += v;
-            }
+            for (Eigen::Index k = 0; k < L; ++k)
+                H(global[size_t(k)], global[size_t(i)]) += Hl(k, i);
     }
 }
 
