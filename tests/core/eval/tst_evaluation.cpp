@@ -17,6 +17,14 @@
 
 using namespace lipsync;
 
+// Sequences sampled from a random DPDS of dimension d over five phones.
+static std::vector<LabelledSequence> sampledData(unsigned seed, int d, int sequences, int frames)
+{
+    std::mt19937 rng(seed);
+    const test::DpdsTruth truth = test::randomDpdsTruth(rng, d, 0.05);
+    return test::dpdsDataset(rng, truth, {0, 2, 6, 9, 21}, sequences, frames);
+}
+
 class TestEvaluation : public QObject
 {
     Q_OBJECT
@@ -122,9 +130,7 @@ private slots:
 
     void crossValidatesAllModelsOnIdenticalFolds()
     {
-        std::mt19937 rng(1);
-        const test::DpdsTruth truth = test::randomDpdsTruth(rng, 3, 0.05);
-        const auto data = test::dpdsDataset(rng, truth, {0, 2, 6, 9, 21}, 20, 40);
+        const auto data = sampledData(1, 3, 20, 40);
         EvaluationOptions options;
         options.folds = 5;
         Feedback feedback;
@@ -166,9 +172,7 @@ private slots:
     void parallelFoldsEqualSerialFolds()
     {
         // Folds run concurrently by default; the results must not depend on the schedule.
-        std::mt19937 rng(2);
-        const test::DpdsTruth truth = test::randomDpdsTruth(rng, 2, 0.05);
-        const auto data = test::dpdsDataset(rng, truth, {0, 2, 6, 9, 21}, 12, 30);
+        const auto data = sampledData(2, 2, 12, 30);
         EvaluationOptions options;
         options.folds = 4;
         Feedback feedback;
