@@ -40,7 +40,10 @@ struct ModelEvaluation
 {
     std::string kind;
     std::map<std::string, MetricSummary> metrics; // "l1", "rms", "linf", "loglik"
-    std::vector<double> trainingSeconds;           // per fold
+    std::vector<double> trainingSeconds;           // per fold, wall
+    // Per fold, CPU of the training thread: the whole training when folds run in parallel (models
+    // single-threaded); without the per-dimension worker threads otherwise.
+    std::vector<double> trainingCpuSeconds;
 };
 
 struct MetricComparison

@@ -158,6 +158,7 @@ private slots:
         const QJsonObject dpds = json.value(QStringLiteral("models")).toObject().value(QStringLiteral("dpds")).toObject();
         QVERIFY(dpds.value(QStringLiteral("rms")).toObject().contains(QStringLiteral("ci95")));
         QVERIFY(dpds.value(QStringLiteral("trainingSeconds")).toDouble() > 0);
+        QVERIFY(dpds.value(QStringLiteral("trainingCpuSeconds")).toDouble() > 0);
         const std::string csv = r.toCsv();
         QCOMPARE(std::count(csv.begin(), csv.end(), '\n'), long(1 + 4 * 5));
         QVERIFY(csv.rfind("model,metric,mean,ci95,fold1", 0) == 0);
@@ -187,6 +188,7 @@ private slots:
         for (size_t m = 0; m < serial.models.size(); ++m) {
             QCOMPARE(parallel.models[m].kind, serial.models[m].kind);
             QCOMPARE(parallel.models[m].trainingSeconds.size(), size_t(4));
+            QCOMPARE(parallel.models[m].trainingCpuSeconds.size(), size_t(4));
             for (const std::string &metric : evaluationMetrics()) {
                 const std::vector<double> &a = serial.models[m].metrics.at(metric).folds;
                 const std::vector<double> &b = parallel.models[m].metrics.at(metric).folds;
