@@ -66,7 +66,11 @@ FaceRenderer::FaceRenderer(const AamModel &aam, const std::string &videoPath, Fe
     m_size = cv::Size(m_video->width(), m_video->height());
     std::unique_ptr<FaceDetector> ownDetector;
     if (!detector) {
-        ownDetector = std::make_unique<FaceDetector>();
+        // YuNet (or Haar) only: dlib's 68-point predictor takes seconds to load and the AAM
+        // fit refines the points anyway.
+        FaceDetectorPaths paths;
+        paths.useDlib = false;
+        ownDetector = std::make_unique<FaceDetector>(paths);
         detector = ownDetector.get();
     }
     feedback.setStatus("Tracking the face in " + videoPath);
