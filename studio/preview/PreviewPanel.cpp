@@ -86,14 +86,14 @@ PreviewPanel::PreviewPanel(const StudioActions &actions, QWidget *parent)
     header->addWidget(m_play);
     header->addWidget(m_stepForward);
     header->addWidget(m_scrub, 1);
+    header->addWidget(m_caption);
     layout->addLayout(header);
     auto *options = new QHBoxLayout;
     options->setContentsMargins(8, 0, 8, 0);
     options->setSpacing(12);
-    m_caption->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    options->addWidget(m_caption, 1);
     options->addWidget(m_loop);
     options->addWidget(m_landmarks);
+    options->addStretch(1);
     options->addWidget(m_back);
     options->addWidget(m_speechButton);
     layout->addLayout(options);
