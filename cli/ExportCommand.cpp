@@ -54,17 +54,7 @@ int runExportVideo(const QStringList &args)
     if (!labels.empty() && labels.size() != (other ? 2u : 1u))
         return fail(QStringLiteral("export video: --labels takes one label per panel"), 2);
 
-    // Frame rate as a fraction: 25 -> 25/1, 29.97 -> 30000/1001, else in thousandths.
-    const double fps = reader.frameRate();
-    if (std::abs(fps - std::round(fps)) < 1e-3) {
-        options.frameRateNumerator = int(std::lround(fps));
-    } else if (std::abs(fps * 1.001 - std::round(fps * 1.001)) < 1e-3) {
-        options.frameRateNumerator = int(std::lround(fps * 1.001)) * 1000;
-        options.frameRateDenominator = 1001;
-    } else {
-        options.frameRateNumerator = int(std::lround(fps * 1000));
-        options.frameRateDenominator = 1000;
-    }
+    options.setFrameRate(reader.frameRate());
 
     std::optional<AudioBuffer> audio;
     if (!arguments.flag("no-audio") && !out.isEmpty()) {

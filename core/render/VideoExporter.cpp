@@ -511,6 +511,20 @@ void VideoExporter::finish()
     }
 }
 
+void VideoExportOptions::setFrameRate(double fps)
+{
+    if (std::abs(fps - std::round(fps)) < 1e-3) {
+        frameRateNumerator = int(std::lround(fps));
+        frameRateDenominator = 1;
+    } else if (std::abs(fps * 1.001 - std::round(fps * 1.001)) < 1e-3) {
+        frameRateNumerator = int(std::lround(fps * 1.001)) * 1000;
+        frameRateDenominator = 1001;
+    } else {
+        frameRateNumerator = int(std::lround(fps * 1000));
+        frameRateDenominator = 1000;
+    }
+}
+
 AudioBuffer alignAudioToVideo(const AudioBuffer &audio, double firstFrameTime)
 {
     AudioBuffer aligned;

@@ -40,6 +40,8 @@ struct VideoExportOptions
     bool fitVideoToAudio = true;
 
     double frameRate() const { return double(frameRateNumerator) / frameRateDenominator; }
+    // From frames per second: 25 -> 25/1, 29.97 -> 30000/1001, else in thousandths.
+    void setFrameRate(double fps);
 };
 
 // Streaming writer: construct (opens the temporary file), addFrame() for every frame, finish().

@@ -13,6 +13,7 @@
 #include "app/StudioActions.h"
 #include "app/TransportBar.h"
 #include "build/ModelsPanel.h"
+#include "export/ExportMenu.h"
 #include "plots/LineChartView.h"
 #include "preview/PlaybackController.h"
 #include "preview/PreviewPanel.h"
@@ -179,6 +180,8 @@ void MainWindow::createMenus()
     file->addSeparator();
     file->addAction(a.save);
     file->addAction(a.saveAs);
+    file->addSeparator();
+    m_export = new ExportMenu(this, file);
     file->addSeparator();
     file->addAction(a.quit);
     m_files = new ProjectFiles(m_document, this, recent);

@@ -19,6 +19,7 @@ class TaskRunner;
 
 namespace lipsync::studio {
 
+class ExportMenu;
 class FacesController;
 class FrameView;
 class LineChartView;
@@ -57,6 +58,7 @@ public:
     ModelsPanel *modelsPanel() const { return m_models; }
     const StudioActions &actions() const { return *m_actions; }
     FacesController *faces() const { return m_faces; }
+    ExportMenu *exportMenu() const { return m_export; }
 
     int currentSequence() const { return m_currentRow; }
     int currentFrame() const { return m_currentFrame; }
@@ -109,6 +111,7 @@ private:
     TaskStatusWidget *m_taskStatus = nullptr;
     PlaybackController *m_playback = nullptr;
     FacesController *m_faces = nullptr;
+    ExportMenu *m_export = nullptr;
 
     std::shared_ptr<const SequenceMedia> m_media;
     int m_currentRow = -1;

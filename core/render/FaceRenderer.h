@@ -1,0 +1,75 @@
+#pragma once
+// Rendering AAM parameters (real or generated) as video frames (issue #6): the face region is
+// synthesised from the combined parameters (shape + texture, AamSynthesizer) and composited, with
+// its feathered edge, into a background frame at the pose of the face there.
+//
+// Two backgrounds:
+//  - a video (the sequence's own clip): its face is tracked once with the AAM (trackVideo), and
+//    each frame's pose (model coordinates -> image) is the similarity between the shape implied
+//    by the tracked parameters and the fitted points, lightly smoothed over time so the pasted
+//    face does not jitter with the tracker. Frames past the end of the video hold its last frame.
+//  - a neutral frame when there is no video (generation from an audio file): the AAM's mean face
+//    on a mid-grey frame, centred and scaled to fill half the frame height.
+// Per frame the work is one synthesis and one pass over the face's pixels (no allocation beyond
+// the output frame), so rendering runs far faster than real time.
+#include "aam/AamModel.h"
+#include "aam/AamSynthesizer.h"
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lipsync {
+
+class Feedback;
+class FaceDetector;
+class VideoReader;
+
+class FaceRenderer
+{
+public:
+    // Neutral background of `size` pixels.
+    explicit FaceRenderer(const AamModel &aam, cv::Size size = cv::Size(360, 288));
+    // The frames of `videoPath`, the face tracked with `detector` (null: a default FaceDetector).
+    // Throws lipsync::Error naming the file if it cannot be read or holds no face; Canceled.
+    FaceRenderer(const AamModel &aam, const std::string &videoPath, Feedback &feedback,
+                 FaceDetector *detector = nullptr);
+    ~FaceRenderer();
+    FaceRenderer(const FaceRenderer &) = delete;
+    FaceRenderer &operator=(const FaceRenderer &) = delete;
+
+    bool hasVideo() const;
+    // Frames of the background video (0 for the neutral background).
+    int videoFrameCount() const;
+    double videoFrameRate() const; // 0 for the neutral background
+    cv::Size frameSize() const;
+
+    // The untouched background of frame `index` (BGR 8-bit; a copy).
+    cv::Mat background(int index);
+    // Parameters tracked in the background video (frames x d; empty for the neutral background).
+    const Eigen::MatrixXd &trackedFeatures() const { return m_tracked; }
+    // Pose of the face in frame `index` (the last frame's beyond the end).
+    const Similarity &pose(int index) const;
+
+    // `features` (combined AAM parameters c) drawn into the background of frame `index`.
+    cv::Mat render(int index, const Eigen::VectorXd &features);
+    // Same, into a caller's frame (CV_8UC3, frameSize()) already holding the background.
+    void renderInto(int index, const Eigen::VectorXd &features, cv::Mat &frame) const;
+    // The real frame on the left and the rendered one on the right, one frame (optional labels).
+    cv::Mat renderSideBySide(int index, const Eigen::VectorXd &features,
+                             const std::string &leftLabel = {}, const std::string &rightLabel = {});
+
+private:
+    const AamModel &m_aam;
+    AamSynthesizer m_synthesizer;
+    std::unique_ptr<VideoReader> m_video;
+    cv::Mat m_neutral;                 // the neutral background (no video)
+    cv::Size m_size;
+    std::vector<Similarity> m_poses;   // one per video frame, or one for the neutral frame
+    Eigen::MatrixXd m_tracked;
+};
+
+} // namespace lipsync

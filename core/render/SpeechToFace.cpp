@@ -1,0 +1,236 @@
+#include "render/SpeechToFace.h"
+
+#include "align/AlignerUtterance.h"
+#include "align/ForcedAligner.h"
+#include "align/FrameLabels.h"
+#include "align/Lexicon.h"
+#include "align/PronunciationDictionary.h"
+#include "align/ShippedAlignerModel.h"
+#include "dynamics/ModelFile.h"
+#include "io/MediaInfo.h"
+#include "io/Transcript.h"
+#include "io/VideoReader.h"
+#include "render/FaceRenderer.h"
+#include "render/FrameComposition.h"
+#include "render/ImageSequenceExporter.h"
+#include "tasks/Feedback.h"
+#include "util/Error.h"
+#include "util/PhoneSet.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+
+namespace lipsync {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+} // namespace
+
+namespace {
+
+// What both entry points share: the media checked for sound, the AAM and the model loaded and
+// checked against each other.
+struct Loaded
+{
+    MediaInfo info;
+    std::shared_ptr<AamModel> aam;
+    std::unique_ptr<DynamicModel> model;
+};
+
+Loaded loadInputs(const SpeechToFaceRequest &request)
+{
+    Loaded in;
+    in.info = MediaInfo::probe(request.mediaPath);
+    if (!in.info.hasAudio)
+        throw Error("no audio stream: lip movements are generated from speech, so the recording "
+                    "needs its sound",
+                    request.mediaPath);
+    in.aam = std::make_shared<AamModel>(AamModel::load(request.aamPath));
+    // A model trained without naming its AAM (`lipsync train` without --aam) is accepted if its
+    // dimension fits; one that names another AAM is not.
+    std::string modelAam;
+    in.model = loadModel(request.modelPath, {}, &modelAam);
+    if (!modelAam.empty() && modelAam != "unspecified" && modelAam != in.aam->identifier)
+        throw Error("the model was trained for AAM '" + modelAam + "', not for " + request.aamPath
+                        + " ('" + in.aam->identifier + "')",
+                    request.modelPath, "aam");
+    if (in.model->dimension() != in.aam->combinedModes())
+        throw Error("the model generates " + std::to_string(in.model->dimension())
+                        + " parameters, the AAM has " + std::to_string(in.aam->combinedModes()),
+                    request.modelPath);
+    return in;
+}
+
+// Labels by the voting rule of models.md §0 (one per video frame: the clip's own frame count
+// when rendering into its frames at its rate, else as many frames as the sound lasts), the
+// generated trajectory, and the sound for export.
+void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, double audioDuration,
+                      const MfccOptions &audioFrames, SpeechToFaceResult &result, Feedback &feedback)
+{
+    result.mediaPath = request.mediaPath;
+    result.aam = in.aam;
+    result.modelKind = in.model->kind();
+    result.hasVideo = in.info.hasVideo && in.info.frameCount > 0;
+    result.frameRate = request.frameRate > 0 ? request.frameRate
+                       : result.hasVideo && in.info.frameRate > 0 ? in.info.frameRate
+                                                                  : 25.0;
+    const bool ownFrames = result.hasVideo && std::abs(result.frameRate - in.info.frameRate) < 1e-6;
+    const int frames = ownFrames ? in.info.frameCount
+                                 : std::max(1, int(std::lround(audioDuration * result.frameRate)));
+    result.labels.clear();
+    for (const std::string &label : voteFrameLabels(result.phones, result.frameRate, frames, audioFrames)) {
+        const int index = PhoneSet::index(label);
+        result.labels.push_back(index >= 0 ? index : int(PhoneSet::kSilence));
+    }
+    result.features = in.model->generate(result.labels);
+    feedback.throwIfCanceled();
+    // The sound at its own rate, its first sample with the first video frame.
+    const AudioBuffer audio = AudioDecoder::decode(request.mediaPath, 0);
+    result.audio = result.hasVideo
+                       ? alignAudioToVideo(audio, VideoReader(request.mediaPath).timestamp(0))
+                       : alignAudioToVideo(audio, audio.startTime);
+    feedback.setProgress(1.0);
+}
+
+} // namespace
+
+SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedback &feedback)
+{
+    const auto start = std::chrono::steady_clock::now();
+    feedback.setStatus("Aligning " + request.mediaPath);
+    // Models first: a wrong file fails before the (longer) alignment.
+    const Loaded in = loadInputs(request);
+    SpeechToFaceResult result;
+    result.alignerModelPath =
+        request.alignerModelPath.empty() ? shippedAlignerModelPath() : request.alignerModelPath;
+    if (result.alignerModelPath.empty())
+        throw Error("no aligner model given and the shipped resources/aligner/grid-s1.aligner "
+                    "was not found (set LIPSYNC_ALIGNER_MODEL)");
+    const AcousticModel acoustic = AcousticModel::load(result.alignerModelPath);
+    const Transcript transcript = readTranscript(request.transcriptPath);
+    feedback.throwIfCanceled();
+    feedback.setProgress(0.1);
+
+    static const Lexicon lexicon(&PronunciationDictionary::cmu());
+    const PreparedUtterance utterance =
+        prepareUtterance(std::filesystem::path(request.mediaPath).stem().string(), request.mediaPath,
+                         transcript.words, acoustic, lexicon);
+    feedback.throwIfCanceled();
+    feedback.setProgress(0.3);
+    AlignmentResult alignment;
+    try {
+        alignment = ForcedAligner(acoustic).align(utterance.features, utterance.words,
+                                                  utterance.pronunciations, utterance.duration);
+    } catch (const Error &e) {
+        throw Error(e.reason() + " (transcript " + request.transcriptPath + ")", request.mediaPath);
+    }
+    result.words = alignment.words;
+    result.phones = alignment.phones;
+    feedback.throwIfCanceled();
+    feedback.setProgress(0.8);
+    labelAndGenerate(request, in, utterance.duration, acoustic.featureOptions(), result, feedback);
+    result.seconds = secondsSince(start);
+    return result;
+}
+
+SpeechToFaceResult generateFromPhones(const SpeechToFaceRequest &request, const Tier &phones,
+                                      const Tier &words, Feedback &feedback)
+{
+    const auto start = std::chrono::steady_clock::now();
+    feedback.setStatus("Generating for " + request.mediaPath);
+    const Loaded in = loadInputs(request);
+    if (phones.intervals.empty())
+        throw Error("no phone alignment: align the speech first", request.mediaPath);
+    SpeechToFaceResult result;
+    result.phones = phones;
+    result.words = words;
+    labelAndGenerate(request, in, in.info.audioDuration, MfccOptions{}, result, feedback);
+    result.seconds = secondsSince(start);
+    return result;
+}
+
+std::unique_ptr<FaceRenderer> makeRenderer(const SpeechToFaceResult &result,
+                                           const std::string &mediaPath, Feedback &feedback)
+{
+    if (!result.aam)
+        throw Error("cannot render: nothing was generated", mediaPath);
+    if (result.hasVideo && !mediaPath.empty())
+        return std::make_unique<FaceRenderer>(*result.aam, mediaPath, feedback);
+    return std::make_unique<FaceRenderer>(*result.aam);
+}
+
+cv::Mat renderFrame(const SpeechToFaceResult &result, FaceRenderer &renderer, int index,
+                    const RenderOptions &options)
+{
+    const Eigen::VectorXd c = result.features.row(std::clamp<Eigen::Index>(index, 0, result.features.rows() - 1))
+                                  .transpose();
+    if (options.sideBySide)
+        return renderer.renderSideBySide(index, c, options.leftLabel, options.rightLabel);
+    cv::Mat frame = renderer.render(index, c);
+    if (!options.rightLabel.empty())
+        return composeGrid({frame}, 1, {options.rightLabel});
+    return frame;
+}
+
+namespace {
+
+void checkRenderable(const SpeechToFaceResult &result, const FaceRenderer &renderer,
+                     const RenderOptions &options, const std::string &out)
+{
+    if (result.frameCount() == 0)
+        throw Error("cannot export: nothing was generated", out);
+    if (options.sideBySide && !renderer.hasVideo())
+        throw Error("side by side needs the real video, and the media has none", result.mediaPath);
+}
+
+} // namespace
+
+int exportRenderedVideo(const SpeechToFaceResult &result, FaceRenderer &renderer,
+                        const std::string &path, Feedback &feedback, const RenderOptions &options)
+{
+    checkRenderable(result, renderer, options, path);
+    VideoExportOptions video = options.video;
+    video.setFrameRate(result.frameRate);
+    return exportVideo(
+        path, result.frameCount(), [&](int i) { return renderFrame(result, renderer, i, options); },
+        result.audio.samples.empty() ? nullptr : &result.audio, feedback, video);
+}
+
+std::vector<std::string> exportRenderedImages(const SpeechToFaceResult &result, FaceRenderer &renderer,
+                                              const std::string &folder, Feedback &feedback,
+                                              const RenderOptions &options)
+{
+    checkRenderable(result, renderer, options, folder);
+    return exportImageSequence(folder, result.frameCount(),
+                               [&](int i) { return renderFrame(result, renderer, i, options); }, feedback);
+}
+
+SpeechVideoReport renderSpeechVideo(const SpeechToFaceRequest &request, const std::string &outPath,
+                                    Feedback &feedback, const RenderOptions &options)
+{
+    SpeechVideoReport report;
+    {
+        Feedback step(feedback, 0.0, 0.4);
+        report.generated = generateFromSpeech(request, step);
+    }
+    const auto start = std::chrono::steady_clock::now();
+    std::unique_ptr<FaceRenderer> renderer;
+    {
+        Feedback step(feedback, 0.4, 0.55);
+        renderer = makeRenderer(report.generated, request.mediaPath, step);
+    }
+    {
+        Feedback step(feedback, 0.55, 1.0);
+        report.framesWritten = exportRenderedVideo(report.generated, *renderer, outPath, step, options);
+    }
+    report.renderSeconds = secondsSince(start);
+    return report;
+}
+
+} // namespace lipsync

@@ -1,0 +1,104 @@
+#pragma once
+// Generation from new speech (issue #6), shared by `lipsync render` and the studio's "generate
+// from new speech": any audio or video file with its transcript ->
+//   forced alignment (ForcedAligner with the shipped aligner model or a given one)
+//   -> phone label of every video frame (voteFrameLabels, models.md §0)
+//   -> the most likely feature trajectory of a trained dynamic model (DynamicModel::generate)
+//   -> frames rendered by FaceRenderer (into the clip's own frames, or a neutral frame)
+//   -> MP4 (H.264 + the recording's sound as AAC) or PNGs.
+// Each step reports progress into its share of the Feedback and honours cancel.
+//
+// Media without sound cannot be aligned: generateFromSpeech() throws lipsync::Error naming the
+// file ("no audio stream"); there is no silent-audio fallback, since the labels come from the speech.
+#include "aam/AamModel.h"
+#include "io/AudioDecoder.h"
+#include "project/Tier.h"
+#include "render/VideoExporter.h"
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lipsync {
+
+class Feedback;
+class FaceRenderer;
+
+struct SpeechToFaceRequest
+{
+    std::string mediaPath;          // audio or video with speech
+    std::string transcriptPath;     // what readTranscript() reads: .align, .lab, .txt, .TextGrid
+    std::string modelPath;          // a trained dynamic model (ModelFile)
+    std::string aamPath;            // the AAM the model's features are parameters of
+    std::string alignerModelPath;   // empty: the shipped aligner model (ShippedAlignerModel)
+    // Frames per second of the generated sequence; 0: the video's rate, 25 for audio only.
+    double frameRate = 0.0;
+};
+
+struct SpeechToFaceResult
+{
+    std::string mediaPath;
+    std::shared_ptr<const AamModel> aam; // FaceRenderers made for this result refer to it
+    std::string modelKind;        // "dpds", "slds", "brand", "hmm"
+    std::string alignerModelPath; // the aligner model used
+    Tier words{"words", {}};      // forced alignment
+    Tier phones{"phones", {}};
+    double frameRate = 25.0;
+    std::vector<int> labels;      // PhoneSet index of every frame
+    Eigen::MatrixXd features;     // generated parameters, frames x d
+    AudioBuffer audio;            // the recording's sound (own rate), first sample with frame 0
+    bool hasVideo = false;        // the media has a video stream (render into its frames)
+    double seconds = 0.0;         // wall time of generateFromSpeech
+
+    int frameCount() const { return int(features.rows()); }
+};
+
+// Align, label and generate. Throws lipsync::Error naming the file at fault (media without
+// sound, a transcript that does not fit the audio, a model made for another AAM, ...); Canceled.
+// Words are pronounced from the CMU dictionary, espeak-ng for the rest.
+SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedback &feedback);
+// The same for a recording already aligned (a project sequence's phone tier, and its words if
+// any): no aligner; request.transcriptPath and alignerModelPath are not used.
+SpeechToFaceResult generateFromPhones(const SpeechToFaceRequest &request, const Tier &phones,
+                                      const Tier &words, Feedback &feedback);
+
+// The renderer for a result: into the media's own frames when it has video, else a neutral
+// frame. (Tracking the clip for the pose reports into `feedback`.)
+std::unique_ptr<FaceRenderer> makeRenderer(const SpeechToFaceResult &result,
+                                           const std::string &mediaPath, Feedback &feedback);
+
+struct RenderOptions
+{
+    bool sideBySide = false;  // the real clip left, the generated face right
+    std::string leftLabel;    // drawn in the panels' corners when not empty (ASCII)
+    std::string rightLabel;
+    VideoExportOptions video; // frame rate is set from the result
+};
+
+// Frame `index` of the rendered clip.
+cv::Mat renderFrame(const SpeechToFaceResult &result, FaceRenderer &renderer, int index,
+                    const RenderOptions &options = {});
+
+// Writes the rendered clip with the recording's sound (exportVideo: atomic, no file under `path`
+// on error or cancel). Returns the frames written.
+int exportRenderedVideo(const SpeechToFaceResult &result, FaceRenderer &renderer,
+                        const std::string &path, Feedback &feedback, const RenderOptions &options = {});
+// The rendered frames as PNGs in `folder` (exportImageSequence: atomic). Returns the files.
+std::vector<std::string> exportRenderedImages(const SpeechToFaceResult &result, FaceRenderer &renderer,
+                                              const std::string &folder, Feedback &feedback,
+                                              const RenderOptions &options = {});
+
+struct SpeechVideoReport
+{
+    SpeechToFaceResult generated;
+    int framesWritten = 0;
+    double renderSeconds = 0.0; // tracking + rendering + encoding
+};
+
+// Everything at once (the CLI's `lipsync render`): generate, render and write `outPath`.
+SpeechVideoReport renderSpeechVideo(const SpeechToFaceRequest &request, const std::string &outPath,
+                                    Feedback &feedback, const RenderOptions &options = {});
+
+} // namespace lipsync

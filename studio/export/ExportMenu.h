@@ -1,0 +1,70 @@
+#pragma once
+// File ▸ Export (issue #6): the current sequence's generated face as MP4 (H.264 + its sound as
+// AAC), real and generated side by side, or PNG frames; and its features (CSV), alignment
+// (TextGrid) and landmarks (.pts), and the project's AAM and trained dynamic model.
+//
+// Every entry asks for a path (a QFileDialog, or the prompt a test installs), then runs in the
+// background through the TaskRunner with progress and cancel. Every writer is atomic
+// (core/io/AtomicFile, VideoExporter, ImageSequenceExporter), so a cancel or an error leaves no
+// half-written file under the chosen name.
+#include <QObject>
+#include <QString>
+
+#include <functional>
+
+class QAction;
+class QMenu;
+
+namespace lipsync {
+class Task;
+}
+
+namespace lipsync::studio {
+
+class MainWindow;
+
+class ExportMenu : public QObject
+{
+    Q_OBJECT
+public:
+    enum class Kind { Video, SideBySide, Images, Features, Alignment, Landmarks, Aam, Model };
+    Q_ENUM(Kind)
+
+    // What the path prompt is asked for: a file (with a name filter) or a folder.
+    struct PathRequest
+    {
+        Kind kind;
+        QString title;
+        QString suggestedPath;
+        QString filter; // empty: a folder
+    };
+    // Returns the chosen path, or an empty string to cancel.
+    using PathPrompt = std::function<QString(const PathRequest &)>;
+
+    ExportMenu(MainWindow *window, QMenu *parentMenu);
+
+    QMenu *menu() const { return m_menu; }
+    QAction *action(Kind kind) const;
+    // Replaces the file dialogs (GUI tests).
+    void setPathPrompt(PathPrompt prompt) { m_prompt = std::move(prompt); }
+
+    // Asks for a path and starts the export; returns the task (null if nothing was started).
+    Task *trigger(Kind kind);
+    // Starts the export to `path` without asking. Null (and the reason reported) when the
+    // project lacks what the export needs (a sequence, features, an alignment, a model).
+    Task *exportTo(Kind kind, const QString &path);
+
+signals:
+    // A file or folder was written completely.
+    void exported(const QString &path);
+
+private:
+    void updateActions();
+
+    MainWindow *m_window;
+    QMenu *m_menu;
+    QList<QAction *> m_actions; // in Kind order
+    PathPrompt m_prompt;
+};
+
+} // namespace lipsync::studio

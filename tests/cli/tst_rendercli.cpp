@@ -1,0 +1,135 @@
+// `lipsync render` as users run it: a model trained on the demo project (`lipsync train
+// --project`), a demo clip and its transcript -> an MP4 read back with MediaInfo (H.264 + AAC,
+// frame count, duration within one frame of the sound); side by side; bad input (media without
+// sound, a transcript that cannot fit, an unwritable output) gives one line naming the file and
+// leaves no output file.
+#include "CliRun.h"
+
+#include "io/MediaInfo.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+
+using lipsync::MediaInfo;
+using lipsync::testing::Run;
+using lipsync::testing::parseJsonObject;
+using lipsync::testing::runLipsync;
+
+namespace {
+
+const QString kDemo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo");
+const QString kClip = kDemo + "/media/bbaf2n.mpg";
+const QString kTranscript = kDemo + "/media/bbaf2n.align";
+const QString kAam = kDemo + "/aam/demo.aam";
+
+void verifyOneLineError(const Run &r, const QString &needle)
+{
+    QCOMPARE(r.exitCode, 1);
+    QCOMPARE(r.err.count('\n'), 1);
+    QVERIFY2(QString::fromUtf8(r.err).contains(needle), r.err.constData());
+}
+
+} // namespace
+
+class TestRenderCli : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+    QString m_model;
+
+    QStringList renderArgs(const QString &media, const QString &transcript, const QString &out) const
+    {
+        return {"render", "--model", m_model, "--aam", kAam, "--media", media, "--transcript", transcript,
+                "--out", out};
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        m_model = m_dir.filePath("demo.model");
+        const Run train = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--out", m_model});
+        QVERIFY2(train.exitCode == 0, train.err.constData());
+    }
+
+    void rendersADemoClipWithItsSound()
+    {
+        const QString out = m_dir.filePath("bbaf2n-generated.mp4");
+        const Run r = runLipsync(renderArgs(kClip, kTranscript, out) << "--json");
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject report = parseJsonObject(r.out);
+        QCOMPARE(report.value("model").toString(), QStringLiteral("hmm"));
+        QCOMPARE(report.value("video").toBool(), true);
+        QVERIFY(report.value("phones").toInt() > 10);
+
+        const MediaInfo info = MediaInfo::probe(out.toStdString());
+        QCOMPARE(info.videoCodec, std::string("h264"));
+        QCOMPARE(info.audioCodec, std::string("aac"));
+        QVERIFY(info.hasAudio);
+        QCOMPARE(info.width, 360);
+        QCOMPARE(info.height, 288);
+        QCOMPARE(info.frameRate, 25.0);
+        QCOMPARE(info.frameCount, report.value("frames").toInt());
+        // The clip's 75 frames, fitted to its 2.98 s of sound: within one frame.
+        QVERIFY(std::abs(info.frameCount - 75) <= 1);
+        QVERIFY2(std::abs(info.videoDuration - info.audioDuration) <= 1.0 / 25 + 1e-6,
+                 qPrintable(QString("video %1 s, audio %2 s").arg(info.videoDuration).arg(info.audioDuration)));
+        QVERIFY(std::abs(info.audioDuration - report.value("audioDuration").toDouble()) < 0.05);
+    }
+
+    void sideBySide()
+    {
+        const QString out = m_dir.filePath("side.mp4");
+        const Run r = runLipsync(renderArgs(kClip, kTranscript, out) << "--side-by-side" << "--json");
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const MediaInfo info = MediaInfo::probe(out.toStdString());
+        QCOMPARE(info.width, 720);
+        QCOMPARE(info.height, 288);
+        QVERIFY(info.hasAudio);
+    }
+
+    void mediaWithoutSound()
+    {
+        const QString silent = QStringLiteral(LIPSYNC_TEST_DATA "/media/no_audio_29.97fps.mp4");
+        const QString out = m_dir.filePath("silent.mp4");
+        const Run r = runLipsync(renderArgs(silent, kTranscript, out));
+        verifyOneLineError(r, silent);
+        QVERIFY(r.err.contains("no audio stream"));
+        QVERIFY(!QFile::exists(out));
+    }
+
+    void transcriptThatDoesNotFit()
+    {
+        const QString text = m_dir.filePath("too-long.txt");
+        QFile f(text);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        for (int i = 0; i < 40; ++i)
+            f.write("place blue at seven again please ");
+        f.close();
+        const QString out = m_dir.filePath("too-long.mp4");
+        const Run r = runLipsync(renderArgs(kClip, text, out));
+        verifyOneLineError(r, text);
+        QVERIFY(!QFile::exists(out));
+    }
+
+    void unwritableOutput()
+    {
+        const QString out = m_dir.filePath("no/such/folder/out.mp4");
+        const Run r = runLipsync(renderArgs(kClip, kTranscript, out));
+        verifyOneLineError(r, out);
+        QVERIFY(r.err.contains("does not exist"));
+    }
+
+    void usage()
+    {
+        QCOMPARE(runLipsync({"render", "--model", m_model}).exitCode, 2);
+        QCOMPARE(runLipsync(renderArgs(kClip, kTranscript, "x.mp4") << "--crf" << "99").exitCode, 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRenderCli)
+#include "tst_rendercli.moc"

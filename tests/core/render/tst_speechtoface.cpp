@@ -1,0 +1,279 @@
+// Generation from new speech and rendering (issue #6): a model trained on the demo project
+// generates parameters for a demo clip from its sound and transcript; the faces are rendered
+// into the clip (or onto a neutral frame for audio only) and exported with the sound. Bad input
+// (no sound, a transcript that cannot fit, another AAM's model) fails naming the file; cancel
+// leaves nothing under the final name.
+#include "render/FaceRenderer.h"
+#include "render/SpeechToFace.h"
+
+#include "MediaProbe.h"
+#include "dynamics/ModelFile.h"
+#include "dynamics/PhoneLabels.h"
+#include "io/AudioDecoder.h"
+#include "project/Project.h"
+#include "tasks/Feedback.h"
+#include "util/Error.h"
+#include "util/PhoneSet.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <opencv2/imgproc.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+
+using namespace lipsync;
+
+namespace {
+
+const std::string kDemo = std::string(LIPSYNC_SOURCE_DIR) + "/resources/demo";
+const std::string kClip = kDemo + "/media/bbaf2n.mpg";
+const std::string kTranscript = kDemo + "/media/bbaf2n.align";
+const std::string kAam = kDemo + "/aam/demo.aam";
+const std::string kAligner = std::string(LIPSYNC_SOURCE_DIR) + "/resources/aligner/grid-s1.aligner";
+
+// 16-bit PCM mono WAV (the audio-only case: no video stream).
+void writeWav(const std::string &path, const AudioBuffer &audio)
+{
+    std::ofstream out(path, std::ios::binary);
+    auto u32 = [&](uint32_t v) { out.write(reinterpret_cast<const char *>(&v), 4); };
+    auto u16 = [&](uint16_t v) { out.write(reinterpret_cast<const char *>(&v), 2); };
+    const uint32_t bytes = uint32_t(audio.samples.size() * 2);
+    out.write("RIFF", 4);
+    u32(36 + bytes);
+    out.write("WAVEfmt ", 8);
+    u32(16);
+    u16(1);
+    u16(1);
+    u32(uint32_t(audio.sampleRate));
+    u32(uint32_t(audio.sampleRate * 2));
+    u16(2);
+    u16(16);
+    out.write("data", 4);
+    u32(bytes);
+    for (float s : audio.samples)
+        u16(uint16_t(int16_t(std::lround(std::clamp(s, -1.f, 1.f) * 32767))));
+}
+
+bool noHiddenFiles(const QString &folder)
+{
+    return QDir(folder).entryList(QDir::Hidden | QDir::Files | QDir::NoDotAndDotDot).filter(".part").isEmpty();
+}
+
+} // namespace
+
+class TestSpeechToFace : public QObject
+{
+    Q_OBJECT
+
+private:
+    QTemporaryDir m_dir;
+    std::string m_model;
+    AamModel m_aam;
+
+    SpeechToFaceRequest request(const std::string &media = kClip) const
+    {
+        SpeechToFaceRequest r;
+        r.mediaPath = media;
+        r.transcriptPath = kTranscript;
+        r.modelPath = m_model;
+        r.aamPath = kAam;
+        r.alignerModelPath = kAligner;
+        return r;
+    }
+
+private slots:
+    // An HMM-mean model of the demo project's tracked features and phone tiers, for the demo AAM.
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        m_aam = AamModel::load(kAam);
+        const Project project = Project::load(kDemo);
+        std::vector<LabelledSequence> sequences;
+        for (const Sequence &s : project.sequences) {
+            if (s.features.rows() == 0 || s.phones.isEmpty())
+                continue;
+            sequences.push_back({s.id, frameLabelsFromTier(s.phones, s.frameRate, int(s.features.rows())), s.features});
+        }
+        QVERIFY(sequences.size() >= 5);
+        auto model = createDynamicModel("hmm");
+        Feedback feedback;
+        model->train(sequences, feedback);
+        QCOMPARE(model->dimension(), m_aam.combinedModes());
+        m_model = m_dir.filePath("demo.model").toStdString();
+        saveModel(*model, m_model, m_aam.identifier);
+    }
+
+    // The clip's own tracked parameters rendered back into it reproduce the face region closely
+    // and leave everything outside the face untouched.
+    void rendersTrackedFacesBackIntoTheClip()
+    {
+        Feedback feedback;
+        FaceRenderer renderer(m_aam, kClip, feedback);
+        QVERIFY(renderer.hasVideo());
+        QCOMPARE(renderer.videoFrameCount(), 75);
+        QCOMPARE(renderer.frameSize(), cv::Size(360, 288));
+        QCOMPARE(renderer.trackedFeatures().rows(), Eigen::Index(75));
+        const int i = 40;
+        const cv::Mat real = renderer.background(i);
+        const cv::Mat rendered = renderer.render(i, renderer.trackedFeatures().row(i).transpose());
+        cv::Mat diff;
+        cv::absdiff(real, rendered, diff);
+        cv::Mat changed;
+        cv::cvtColor(diff, changed, cv::COLOR_BGR2GRAY);
+        const cv::Rect face = cv::boundingRect(changed > 0);
+        QVERIFY2(face.area() > 40 * 40, "the face region was drawn");
+        QVERIFY2(face.area() < 360 * 288 / 2, "only the face region was drawn");
+        const double meanError = cv::mean(diff(face))[0];
+        QVERIFY2(meanError < 12.0, qPrintable(QString("mean difference %1 in the face box").arg(meanError)));
+        // Other parameters give another face.
+        Eigen::VectorXd other = renderer.trackedFeatures().row(i).transpose();
+        other[0] += 3.0 * std::sqrt(m_aam.combinedVariances[0]);
+        cv::absdiff(rendered, renderer.render(i, other), diff);
+        QVERIFY(cv::mean(diff(face))[0] > 1.0);
+        // Wrong dimension: a clear error.
+        QVERIFY_THROWS_EXCEPTION(Error, renderer.render(i, Eigen::VectorXd::Zero(3)));
+    }
+
+    void neutralFrameWithoutVideo()
+    {
+        FaceRenderer renderer(m_aam);
+        QVERIFY(!renderer.hasVideo());
+        const cv::Mat mean = renderer.render(0, Eigen::VectorXd::Zero(m_aam.combinedModes()));
+        QCOMPARE(mean.size(), cv::Size(360, 288));
+        QCOMPARE(mean.at<cv::Vec3b>(2, 2), cv::Vec3b(128, 128, 128)); // background
+        const cv::Vec3b centre = mean.at<cv::Vec3b>(144, 180);
+        QVERIFY(centre != cv::Vec3b(128, 128, 128)); // the face is there
+    }
+
+    void generatesFromSpeechAndExports()
+    {
+        Feedback feedback;
+        const SpeechToFaceResult result = generateFromSpeech(request(), feedback);
+        QCOMPARE(result.frameCount(), 75);
+        QCOMPARE(result.features.cols(), Eigen::Index(m_aam.combinedModes()));
+        QCOMPARE(int(result.labels.size()), 75);
+        QCOMPARE(result.frameRate, 25.0);
+        QVERIFY(result.hasVideo);
+        QCOMPARE(result.modelKind, std::string("hmm"));
+        QVERIFY(result.phones.intervals.size() > 10);
+        QVERIFY(std::abs(result.audio.duration() - 3.0) < 0.05);
+        // Speech is not all silence: the labels hold phones.
+        int speech = 0;
+        for (int label : result.labels)
+            speech += label != PhoneSet::kSilence;
+        QVERIFY(speech > 30);
+
+        auto renderer = makeRenderer(result, kClip, feedback);
+        const QString out = m_dir.filePath("generated.mp4");
+        const int written = exportRenderedVideo(result, *renderer, out.toStdString(), feedback);
+        // The file lasts as long as the sound (2.98 s): round(2.98 x 25) = 74 frames.
+        QCOMPARE(written, int(std::lround(result.audio.duration() * 25)));
+        QVERIFY(std::abs(written - 75) <= 1);
+        const MediaProbe probe = MediaProbe::read(out.toStdString());
+        QCOMPARE(probe.videoCodec, AV_CODEC_ID_H264);
+        QCOMPARE(probe.audioCodec, AV_CODEC_ID_AAC);
+        QCOMPARE(int(probe.frameTimes.size()), written);
+        QVERIFY(std::abs(probe.videoDuration - probe.audioDuration) <= 1.0 / 25 + 1e-6);
+        QVERIFY(!probe.audio.empty());
+
+        // Side by side: twice as wide.
+        RenderOptions side;
+        side.sideBySide = true;
+        const QString wide = m_dir.filePath("side.mp4");
+        exportRenderedVideo(result, *renderer, wide.toStdString(), feedback, side);
+        QCOMPARE(MediaProbe::read(wide.toStdString()).width, 720);
+
+        // PNGs.
+        const QString folder = m_dir.filePath("frames");
+        QCOMPARE(int(exportRenderedImages(result, *renderer, folder.toStdString(), feedback).size()),
+                 result.frameCount());
+    }
+
+    void audioOnlyRendersOntoANeutralFrame()
+    {
+        const std::string wav = m_dir.filePath("speech.wav").toStdString();
+        writeWav(wav, AudioDecoder::decode(kClip, 16000));
+        Feedback feedback;
+        const QString out = m_dir.filePath("audio-only.mp4");
+        const SpeechVideoReport report = renderSpeechVideo(request(wav), out.toStdString(), feedback);
+        QVERIFY(!report.generated.hasVideo);
+        // As many frames as the sound lasts.
+        QCOMPARE(report.generated.frameCount(), int(std::lround(report.generated.audio.duration() * 25)));
+        const MediaProbe probe = MediaProbe::read(out.toStdString());
+        QCOMPARE(int(probe.frameTimes.size()), report.framesWritten);
+        QCOMPARE(probe.width, 360);
+        // Side by side needs a real video.
+        RenderOptions side;
+        side.sideBySide = true;
+        FaceRenderer neutral(m_aam);
+        QVERIFY_THROWS_EXCEPTION(Error, exportRenderedVideo(report.generated, neutral,
+                                                            m_dir.filePath("x.mp4").toStdString(), feedback, side));
+    }
+
+    void cancelLeavesNoFile()
+    {
+        Feedback feedback;
+        const SpeechToFaceResult result = generateFromSpeech(request(), feedback);
+        auto renderer = makeRenderer(result, kClip, feedback);
+        const QString folder = m_dir.filePath("cancel");
+        QVERIFY(QDir().mkpath(folder));
+        const QString out = folder + "/canceled.mp4";
+        Feedback canceling;
+        canceling.onProgress = [&](double p) {
+            if (p > 0.3)
+                canceling.cancel();
+        };
+        QVERIFY_THROWS_EXCEPTION(Canceled, exportRenderedVideo(result, *renderer, out.toStdString(), canceling));
+        QVERIFY(!QFile::exists(out));
+        QVERIFY(noHiddenFiles(folder));
+    }
+
+    void badInputNamesTheFile()
+    {
+        Feedback feedback;
+        // Media without sound.
+        const std::string silent = std::string(LIPSYNC_TEST_DATA) + "/media/no_audio_29.97fps.mp4";
+        try {
+            generateFromSpeech(request(silent), feedback);
+            QFAIL("no error for media without audio");
+        } catch (const Error &e) {
+            QCOMPARE(e.file(), silent);
+            QVERIFY(std::string(e.what()).find("no audio stream") != std::string::npos);
+        }
+        // A transcript far too long for three seconds of speech.
+        const QString longText = m_dir.filePath("long.txt");
+        {
+            QFile f(longText);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            for (int i = 0; i < 40; ++i)
+                f.write("place blue at seven again please ");
+        }
+        SpeechToFaceRequest r = request();
+        r.transcriptPath = longText.toStdString();
+        try {
+            generateFromSpeech(r, feedback);
+            QFAIL("no error for a transcript that does not fit");
+        } catch (const Error &e) {
+            QVERIFY2(std::string(e.what()).find(longText.toStdString()) != std::string::npos, e.what());
+        }
+        // A model trained for another AAM.
+        const std::string otherModel = m_dir.filePath("other.model").toStdString();
+        saveModel(*loadModel(m_model), otherModel, "another-aam");
+        r = request();
+        r.modelPath = otherModel;
+        try {
+            generateFromSpeech(r, feedback);
+            QFAIL("no error for another AAM's model");
+        } catch (const Error &e) {
+            QCOMPARE(e.file(), otherModel);
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSpeechToFace)
+#include "tst_speechtoface.moc"

@@ -1,0 +1,152 @@
+// File ▸ Export on the demo project: the entries are in the File menu; features (CSV) and the
+// alignment (TextGrid) of the current sequence are written where the (test's) path prompt says and
+// read back; a prompt answered with Cancel starts nothing; with a trained model in the project the
+// generated video is written as H.264 + AAC, and a canceled export leaves no file.
+#include "DemoWindow.h"
+
+#include "app/MainWindow.h"
+#include "app/ProjectDocument.h"
+#include "app/SurfaceFormat.h"
+#include "dynamics/ModelFile.h"
+#include "dynamics/PhoneLabels.h"
+#include "export/ExportMenu.h"
+#include "io/FeatureCsv.h"
+#include "io/MediaInfo.h"
+#include "tasks/TaskRunner.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFile>
+#include <QMenu>
+#include <QMenuBar>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace lipsync;
+using namespace lipsync::studio;
+using lipsync::studio::testing::openDemoWindow;
+
+class TestExportMenu : public QObject
+{
+    Q_OBJECT
+public:
+    static void initMain()
+    {
+        setDefaultSurfaceFormat();
+        QStandardPaths::setTestModeEnabled(true);
+    }
+
+private:
+    MainWindow *m_window = nullptr;
+    QTemporaryDir m_dir;
+
+    void waitIdle() { QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 120000); }
+    ExportMenu *menu() const { return m_window->exportMenu(); }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        openDemoWindow(m_window);
+        if (QTest::currentTestFailed())
+            return;
+        QVERIFY(m_window->currentSequence() >= 0);
+    }
+
+    void cleanupTestCase() { delete m_window; }
+
+    void menuIsInTheFileMenu()
+    {
+        QMenu *file = nullptr;
+        for (QAction *a : m_window->menuBar()->actions())
+            if (a->menu() && a->menu()->actions().contains(menu()->menu()->menuAction()))
+                file = a->menu();
+        QVERIFY(file);
+        QCOMPARE(menu()->menu()->actions().size(), 8 + 2); // entries and two separators
+    }
+
+    void exportsFeaturesAndAlignment()
+    {
+        const Sequence &s = m_window->document()->sequence(m_window->currentSequence());
+        QVERIFY(s.features.rows() > 0);
+        QVERIFY(!s.phones.isEmpty());
+        const QString csv = m_dir.filePath("features.csv");
+        const QString grid = m_dir.filePath("alignment.TextGrid");
+        QString suggested;
+        menu()->setPathPrompt([&](const ExportMenu::PathRequest &r) {
+            suggested = r.suggestedPath;
+            return r.kind == ExportMenu::Kind::Features ? csv : grid;
+        });
+        QSignalSpy exported(menu(), &ExportMenu::exported);
+        QVERIFY(menu()->trigger(ExportMenu::Kind::Features));
+        QTRY_COMPARE_WITH_TIMEOUT(exported.count(), 1, 30000);
+        QVERIFY(suggested.endsWith(QString::fromStdString(s.id) + ".csv"));
+        const FeatureTable table = readFeatureCsv(csv.toStdString());
+        QCOMPARE(table.values.rows(), s.features.rows());
+        QCOMPARE(table.values.cols(), s.features.cols());
+        QVERIFY((table.values - s.features).cwiseAbs().maxCoeff() < 1e-6);
+
+        QVERIFY(menu()->trigger(ExportMenu::Kind::Alignment));
+        QTRY_COMPARE_WITH_TIMEOUT(exported.count(), 2, 30000);
+        QCOMPARE(exported.at(1).at(0).toString(), grid);
+        // The phones as in the document (a tier shorter than the words tier is padded with one
+        // empty interval, which TextGrid requires).
+        Tier phones = readPhoneTier(grid.toStdString());
+        std::erase_if(phones.intervals, [](const Interval &i) { return i.label.empty(); });
+        QCOMPARE(phones.intervals.size(), s.phones.intervals.size());
+        for (size_t i = 0; i < phones.intervals.size(); ++i) {
+            QCOMPARE(phones.intervals[i].label, s.phones.intervals[i].label);
+            QVERIFY(std::abs(phones.intervals[i].end - s.phones.intervals[i].end) < 1e-6);
+        }
+    }
+
+    void cancelingThePromptStartsNothing()
+    {
+        menu()->setPathPrompt([](const ExportMenu::PathRequest &) { return QString(); });
+        QVERIFY(!menu()->trigger(ExportMenu::Kind::Features));
+        QCOMPARE(m_window->taskRunner()->runningCount(), 0);
+    }
+
+    // A model trained on the demo's features, added to the project, drives the video export.
+    void exportsTheGeneratedVideoAndCancels()
+    {
+        const Project &project = m_window->document()->project();
+        std::vector<LabelledSequence> sequences;
+        for (const Sequence &s : project.sequences)
+            if (s.features.rows() > 0 && !s.phones.isEmpty())
+                sequences.push_back({s.id, frameLabelsFromTier(s.phones, s.frameRate, int(s.features.rows())),
+                                     s.features});
+        auto model = createDynamicModel("hmm");
+        Feedback feedback;
+        model->train(sequences, feedback);
+        const QString modelPath = m_dir.filePath("demo.model");
+        saveModel(*model, modelPath.toStdString(), "unspecified");
+        std::vector<ModelReference> models = project.models;
+        models.push_back({"hmm", "HMM-mean (test)", modelPath.toStdString()});
+        m_window->document()->applyModels(models);
+
+        const QString video = m_dir.filePath("generated.mp4");
+        QSignalSpy exported(menu(), &ExportMenu::exported);
+        QVERIFY(menu()->exportTo(ExportMenu::Kind::Video, video));
+        QTRY_COMPARE_WITH_TIMEOUT(exported.count(), 1, 120000);
+        const MediaInfo info = MediaInfo::probe(video.toStdString());
+        QCOMPARE(info.videoCodec, std::string("h264"));
+        QCOMPARE(info.audioCodec, std::string("aac"));
+        QVERIFY(std::abs(info.videoDuration - info.audioDuration) <= 1.0 / 25 + 1e-6);
+
+        const QString canceled = m_dir.filePath("canceled.mp4");
+        Task *task = menu()->exportTo(ExportMenu::Kind::SideBySide, canceled);
+        QVERIFY(task);
+        QTest::qWait(50);
+        task->cancel();
+        waitIdle();
+        QCOMPARE(exported.count(), 1);
+        QVERIFY(!QFile::exists(canceled));
+        QVERIFY(QDir(m_dir.path()).entryList(QDir::Hidden | QDir::Files).filter(".part").isEmpty());
+    }
+};
+
+QTEST_MAIN(TestExportMenu)
+#include "tst_exportmenu.moc"
