@@ -1,7 +1,6 @@
 #include "preview/PreviewPanel.h"
 
 #include "aam/FaceDetector.h"
-#include "aam/VideoTracking.h"
 #include "annotate/FacesController.h"
 #include "annotate/FrameView.h"
 #include "app/ErrorReporter.h"
@@ -11,12 +10,15 @@
 #include "app/StudioActions.h"
 #include "build/ModelsPanel.h"
 #include "dynamics/DynamicModel.h"
+#include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
+#include "io/Transcript.h"
 #include "preview/GeneratedFaces.h"
 #include "preview/PlaybackController.h"
 #include "preview/SpeechDialog.h"
-#include "preview/SpeechGeneration.h"
 #include "project/Project.h"
+#include "render/FaceRenderer.h"
+#include "render/SpeechToFace.h"
 #include "tasks/Feedback.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/WaveformView.h"
@@ -30,6 +32,7 @@
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSlider>
+#include <QTemporaryDir>
 #include <QStyle>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -157,7 +160,7 @@ void PreviewPanel::attach(MainWindow *window)
             // Another AAM (built anew): the poses were tracked with the old one.
             ++m_epoch;
             m_aam.reset();
-            m_poses.clear();
+            m_renderers.clear();
             m_prepareFailed.clear();
         }
         invalidate();
@@ -166,7 +169,7 @@ void PreviewPanel::attach(MainWindow *window)
         ++m_epoch;
         m_aam.reset();
         m_aamPath.clear();
-        m_poses.clear();
+        m_renderers.clear();
         m_faces.reset();
         m_facesSequence.clear();
         m_prepareFailed.clear();
@@ -224,7 +227,7 @@ void PreviewPanel::prepare()
     const ProjectDocument *doc = m_window->document();
     const Sequence &s = doc->sequence(row);
     const QString id = QString::fromStdString(s.id);
-    if (m_aam && m_poses.contains(id)) {
+    if (m_aam && m_renderers.contains(id)) {
         if (m_facesSequence != id)
             rebuild();
         return;
@@ -239,25 +242,22 @@ void PreviewPanel::prepare()
     // The Faces workflow may have the AAM loaded already.
     std::shared_ptr<const AamModel> aam = m_aam ? m_aam : m_window->faces()->model();
     const std::string mediaPath = media->mediaPath.toStdString();
-    const std::map<int, LandmarkSet> landmarks = s.landmarks;
     m_prepareTask = m_window->taskRunner()->start(
         tr("Prepare the preview of %1").arg(id),
-        [this, aam, aamPath, mediaPath, landmarks, id, epoch = m_epoch](Feedback &feedback) -> TaskRunner::Commit {
+        [this, aam, aamPath, mediaPath, id, epoch = m_epoch](Feedback &feedback) -> TaskRunner::Commit {
             feedback.setStatus("loading the appearance model");
             auto model = aam ? aam : std::make_shared<const AamModel>(AamModel::load(aamPath));
             FaceDetectorPaths paths;
             paths.useDlib = false;
             FaceDetector detector(paths);
             feedback.setStatus("tracking the head pose");
-            const VideoTrackingResult tracking = trackVideo(*model, mediaPath, detector, feedback, landmarks);
-            const AamSynthesizer synthesizer(*model);
-            auto poses = std::make_shared<const SequencePoses>(posesFromTracking(synthesizer, tracking));
-            return [this, model, poses, id, epoch, aamPath] {
+            auto renderer = std::make_shared<const FaceRenderer>(*model, mediaPath, feedback, &detector);
+            return [this, model, renderer, id, epoch, aamPath] {
                 if (epoch != m_epoch)
                     return; // another document or AAM since
                 m_aam = model;
                 m_aamPath = aamPath;
-                m_poses.insert(id, poses);
+                m_renderers.insert(id, {model, renderer});
                 m_facesSequence.clear();
                 prepare();
             };
@@ -282,9 +282,8 @@ void PreviewPanel::rebuild()
     if (row >= 0 && m_aam) {
         const Sequence &s = m_window->document()->sequence(row);
         const QString id = QString::fromStdString(s.id);
-        if (const auto poses = m_poses.value(id)) {
-            auto faces = std::make_shared<GeneratedFaces>(m_aam, s.frameRate);
-            faces->setPoses(poses);
+        if (const Renderer r = m_renderers.value(id); r.renderer) {
+            auto faces = std::make_shared<GeneratedFaces>(r.aam, r.renderer, s.frameRate);
             std::vector<int> labels;
             try {
                 labels = frameLabelsFromTier(s.phones, s.frameRate, s.frameCount, s.id);
@@ -543,45 +542,59 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
                               tr("Build one with Faces ▸ Build AAM."));
         return nullptr;
     }
-    SpeechRequest request{mediaPath, transcript.toStdString(), frameRate, kind, m_window->modelsPanel()->model(kind)};
+    const auto model = m_window->modelsPanel()->model(kind);
+    if (!model) {
+        ErrorReporter::report(m_window, tr("No faces could be generated for this speech."), mediaPath,
+                              tr("Train a dynamic model in the Models panel first."));
+        return nullptr;
+    }
+    SpeechToFaceRequest request;
+    request.mediaPath = mediaPath.toStdString();
+    request.aamPath = aamPath;
+    request.frameRate = frameRate;
     // The neutral frame: the first frame of the current sequence at its tracked pose, else the
     // mean face on grey.
     const auto media = m_window->media();
     QImage background;
-    std::shared_ptr<const SequencePoses> poses;
+    Renderer sequence;
     if (media && !media->frames.isEmpty() && m_window->currentSequence() >= 0) {
-        poses = m_poses.value(QString::fromStdString(m_window->document()->sequence(m_window->currentSequence()).id));
-        if (poses && !poses->poses.empty())
+        sequence = m_renderers.value(QString::fromStdString(m_window->document()->sequence(m_window->currentSequence()).id));
+        if (sequence.renderer)
             background = media->frames.front();
     }
-    const std::shared_ptr<const AamModel> aam = m_aam;
+    const std::string aamId = m_aam ? m_aam->identifier : std::string("unspecified");
     const QString title = QFileInfo(mediaPath).fileName();
+    const std::string words = transcript.toStdString();
     Task *task = m_window->taskRunner()->start(
         tr("Generate faces for %1").arg(title),
-        [this, request, aam, aamPath, background, poses, mediaPath, title](Feedback &feedback) -> TaskRunner::Commit {
-            auto model = aam ? aam : std::make_shared<const AamModel>(AamModel::load(aamPath));
+        [this, request, model, aamId, words, background, sequence, mediaPath, title, kind](Feedback &feedback) mutable
+        -> TaskRunner::Commit {
+            // The shared pipeline (core/render/SpeechToFace) reads the transcript and the model
+            // from files: the typed words and the model in memory (perhaps never saved) go to
+            // temporary ones.
+            QTemporaryDir scratch;
+            if (!scratch.isValid())
+                throw Error("no temporary folder for the transcript and the model", request.mediaPath);
+            request.transcriptPath = scratch.filePath(QStringLiteral("transcript.txt")).toStdString();
+            request.modelPath = scratch.filePath(QStringLiteral("speech.model")).toStdString();
+            writePlainTranscript(request.transcriptPath, parsePlainTranscript(words));
+            saveModel(*model, request.modelPath, aamId);
             Feedback sub(feedback, 0.0, 0.95);
-            auto result = std::make_shared<SpeechResult>(generateFromSpeech(request, sub));
-            if (model->combinedModes() != result->params.cols())
-                throw Error(QStringLiteral("the %1 model generates %2 parameters, the appearance model has %3")
-                                .arg(request.kind).arg(result->params.cols()).arg(model->combinedModes())
-                                .toStdString(),
-                            mediaPath.toStdString());
-            auto faces = std::make_shared<GeneratedFaces>(model, request.frameRate);
-            if (!background.isNull())
-                faces->setNeutralFrame(background, poses->poses.front());
-            else
-                faces->setMeanFaceFrame(QSize(360, 288));
-            faces->addTrack({request.kind, ModelsPanel::kindName(request.kind), ModelsPanel::kindColour(request.kind),
-                             result->params});
+            const SpeechToFaceResult result = lipsync::generateFromSpeech(request, sub);
+            std::shared_ptr<GeneratedFaces> faces;
+            if (sequence.renderer) {
+                faces = std::make_shared<GeneratedFaces>(sequence.aam, sequence.renderer, result.frameRate);
+                faces->setFixedFrame(background, 0);
+            } else {
+                auto neutral = std::make_shared<FaceRenderer>(*result.aam);
+                const cv::Mat bgr = neutral->background(0);
+                const QImage image(bgr.data, bgr.cols, bgr.rows, int(bgr.step), QImage::Format_BGR888);
+                faces = std::make_shared<GeneratedFaces>(result.aam, neutral, result.frameRate);
+                faces->setFixedFrame(image.copy(), 0);
+            }
+            faces->addTrack({kind, ModelsPanel::kindName(kind), ModelsPanel::kindColour(kind), result.features});
             feedback.setProgress(1.0);
-            return [this, faces, mediaPath, title, model, aamPath] {
-                if (!m_aam) {
-                    m_aam = model;
-                    m_aamPath = aamPath;
-                }
-                showSpeech(faces, mediaPath, title);
-            };
+            return [this, faces, mediaPath, title] { showSpeech(faces, mediaPath, title); };
         });
     connect(task, &Task::finished, this, [this, task, mediaPath](Task::State state) {
         if (state == Task::State::Failed)

@@ -138,19 +138,6 @@ QString alignerModelPath()
 #endif
 }
 
-TierPair alignMedia(const QString &id, const QString &mediaPath, const std::string &transcript)
-{
-    const QString modelPath = alignerModelPath();
-    if (modelPath.isEmpty())
-        throw Error("the aligner model resources/aligner/grid-s1.aligner was not found "
-                    "(set LIPSYNC_ALIGNER_MODEL to a model trained with `lipsync aligner train`)");
-    AlignJob job;
-    job.sequenceId = id;
-    job.mediaPath = mediaPath;
-    job.transcript = transcript;
-    return alignOne(job, *loadModel(modelPath)).tiers;
-}
-
 Task *startAlignment(TaskRunner &runner, const QString &title, std::vector<AlignJob> jobs,
                      std::function<void(std::vector<AlignOutcome>)> apply)
 {

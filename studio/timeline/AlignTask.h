@@ -46,10 +46,6 @@ struct AlignOutcome
 // if none exists.
 QString alignerModelPath();
 
-// Aligns the whole transcript of one media file (any audio or video) with the studio's aligner
-// model (loaded once per process). Runs on any thread; throws lipsync::Error naming the file.
-TierPair alignMedia(const QString &id, const QString &mediaPath, const std::string &transcript);
-
 // Aligns the jobs one after the other (progress per job, cancel between them). Failures of
 // single sequences are reported in their outcome and the others go on; the task itself fails
 // only when every job failed (its error lists them). `apply` runs on the GUI thread.
