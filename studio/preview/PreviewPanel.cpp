@@ -363,6 +363,7 @@ void PreviewPanel::layoutPanels()
     for (int i = 0; i < titles.size(); ++i) {
         QLabel *title = m_panels[std::size_t(i)].title;
         title->setText(titles[i]);
+        title->setToolTip(titles[i]); // the whole name when the column is narrow
         QPalette pal = title->palette();
         pal.setColor(QPalette::WindowText, colours[i]);
         title->setPalette(pal);

@@ -269,6 +269,8 @@ private slots:
         const auto tracked = m_preview->panel(0)->landmarks();
         const auto generated = m_preview->panel(1)->landmarks();
         QVERIFY(tracked && generated);
+        if (const QString dir = qEnvironmentVariable("LIPSYNC_PREVIEW_SHOT"); !dir.isEmpty())
+            m_preview->grab().save(dir + QStringLiteral("/landmarks.png"));
         QVERIFY(tracked->isComplete() && generated->isComplete());
         // The generated face sits where the tracked one is (same pose), within a few pixels on
         // average; the mouth may differ.
