@@ -7,7 +7,7 @@
 #include "render/SpeechToFace.h"
 #include "tasks/Feedback.h"
 
-#include <QJsonArray>
+#include <QElapsedTimer>
 
 #include <cstdio>
 
@@ -17,7 +17,8 @@ using namespace lipsync::cli;
 namespace {
 
 const char *kRenderUsage =
-    "usage: lipsync render --model MODEL --aam AAM --media CLIP --transcript FILE --out OUT.mp4\n"
+    "usage: lipsync render --model MODEL --aam AAM --media CLIP --transcript FILE\n"
+    "                      (--out OUT.mp4 | --png-dir DIR)\n"
     "                      [--side-by-side] [--labels LEFT,RIGHT] [--aligner MODEL] [--fps F]\n"
     "                      [--crf 20] [--json]\n"
     "  CLIP: any audio or video file with speech (audio only renders onto a neutral frame).\n"
@@ -28,7 +29,7 @@ int runRender(const QStringList &argv)
 {
     const Arguments args(argv);
     const QStringList unknown = args.unknown({"model", "aam", "media", "transcript", "out", "side-by-side",
-                                              "labels", "aligner", "fps", "crf", "json"});
+                                              "labels", "aligner", "fps", "crf", "png-dir", "json"});
     if (!unknown.isEmpty() || !args.positional().isEmpty())
         return fail(QStringLiteral("render: unknown argument %1\n").arg((unknown + args.positional()).first())
                         + QString::fromLatin1(kRenderUsage),
@@ -39,8 +40,9 @@ int runRender(const QStringList &argv)
     request.mediaPath = args.value("media").toStdString();
     request.transcriptPath = args.value("transcript").toStdString();
     const QString out = args.value("out");
+    const QString pngDir = args.value("png-dir");
     if (request.modelPath.empty() || request.aamPath.empty() || request.mediaPath.empty()
-        || request.transcriptPath.empty() || out.isEmpty())
+        || request.transcriptPath.empty() || out.isEmpty() == pngDir.isEmpty())
         return fail(QString::fromLatin1(kRenderUsage), 2);
     request.alignerModelPath =
         (args.has("aligner") ? args.value("aligner") : defaultAlignerModel()).toStdString();
@@ -68,11 +70,23 @@ int runRender(const QStringList &argv)
     }
 
     Feedback feedback;
-    const SpeechVideoReport report = renderSpeechVideo(request, out.toStdString(), feedback, options);
+    SpeechVideoReport report;
+    if (!pngDir.isEmpty()) {
+        // The same steps as renderSpeechVideo, frames to PNGs instead of an MP4.
+        report.generated = generateFromSpeech(request, feedback);
+        QElapsedTimer timer;
+        timer.start();
+        const auto renderer = makeRenderer(report.generated, request.mediaPath, feedback);
+        report.framesWritten = int(
+            exportRenderedImages(report.generated, *renderer, pngDir.toStdString(), feedback, options).size());
+        report.renderSeconds = timer.elapsed() / 1000.0;
+    } else {
+        report = renderSpeechVideo(request, out.toStdString(), feedback, options);
+    }
     const SpeechToFaceResult &g = report.generated;
     if (args.flag("json")) {
         printJson(QJsonObject{
-            {"out", out},
+            {"out", out.isEmpty() ? pngDir : out},
             {"media", args.value("media")},
             {"model", QString::fromStdString(g.modelKind)},
             {"aligner", QString::fromStdString(g.alignerModelPath)},
@@ -88,7 +102,7 @@ int runRender(const QStringList &argv)
             {"renderSeconds", report.renderSeconds},
         });
     } else {
-        std::printf("%s: %d frames (%s model, %s) in %.2f s + %.2f s\n", qPrintable(out), report.framesWritten,
+        std::printf("%s: %d frames (%s model, %s) in %.2f s + %.2f s\n", qPrintable(out.isEmpty() ? pngDir : out), report.framesWritten,
                     g.modelKind.c_str(), g.hasVideo ? "into the clip" : "neutral frame", g.seconds,
                     report.renderSeconds);
     }

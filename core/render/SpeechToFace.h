@@ -13,6 +13,7 @@
 #include "aam/AamModel.h"
 #include "io/AudioDecoder.h"
 #include "project/Tier.h"
+#include "render/FaceRenderer.h"
 #include "render/VideoExporter.h"
 
 #include <Eigen/Core>
@@ -24,7 +25,6 @@
 namespace lipsync {
 
 class Feedback;
-class FaceRenderer;
 
 struct SpeechToFaceRequest
 {

@@ -7,6 +7,7 @@
 
 #include "io/MediaInfo.h"
 
+#include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -90,6 +91,19 @@ private slots:
         QCOMPARE(info.width, 720);
         QCOMPARE(info.height, 288);
         QVERIFY(info.hasAudio);
+    }
+
+    void pngFrames()
+    {
+        const QString folder = m_dir.filePath("frames");
+        QStringList args = renderArgs(kClip, kTranscript, QString());
+        args.removeLast();
+        args.removeLast(); // no --out
+        const Run r = runLipsync(args << "--png-dir" << folder << "--json");
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const int frames = parseJsonObject(r.out).value("frames").toInt();
+        QCOMPARE(frames, 75); // every generated frame (an MP4 is fitted to the sound instead)
+        QCOMPARE(QDir(folder).entryList({"*.png"}, QDir::Files).size(), frames);
     }
 
     void mediaWithoutSound()
