@@ -69,6 +69,7 @@ MainWindow::MainWindow(QWidget *parent)
     createDocks();
     createMenus();
     m_faces = new FacesController(this);
+    m_preview->attach(this);
     m_taskStatus = new TaskStatusWidget(m_runner, this);
     statusBar()->addPermanentWidget(m_taskStatus);
 
@@ -85,7 +86,10 @@ MainWindow::MainWindow(QWidget *parent)
         if (m_media)
             setCurrentFrame(int(t * m_media->frameRate));
     });
-    connect(m_playback, &PlaybackController::frameReached, this, &MainWindow::setCurrentFrame);
+    connect(m_playback, &PlaybackController::frameReached, this, [this](int frame) {
+        if (m_media && m_playback->mediaPath() == m_media->mediaPath) // not the preview's new speech
+            setCurrentFrame(frame);
+    });
     connect(m_playback, &PlaybackController::playingChanged, this, [this](bool playing) {
         m_actions->playPause->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
     });
@@ -386,10 +390,13 @@ void MainWindow::setCurrentFrame(int frame)
 
 void MainWindow::togglePlayback()
 {
-    if (m_playback->isPlaying())
+    if (m_playback->isPlaying()) {
         m_playback->pause();
-    else if (m_media)
+    } else if (m_media) {
+        if (m_playback->mediaPath() != m_media->mediaPath)
+            m_playback->setSequence(m_media->mediaPath, m_media->frameCount(), m_media->frameRate);
         m_playback->play(m_currentFrame);
+    }
 }
 
 void MainWindow::updateTitle()

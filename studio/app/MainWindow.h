@@ -54,6 +54,8 @@ public:
     WaveformView *waveformView() const;
     LineChartView *chartView() const { return m_chart; }
     PlaybackController *playback() const { return m_playback; }
+    PreviewPanel *preview() const { return m_preview; }
+    ModelsPanel *modelsPanel() const { return m_models; }
     const StudioActions &actions() const { return *m_actions; }
     FacesController *faces() const { return m_faces; }
     ExportMenu *exportMenu() const { return m_export; }

@@ -76,6 +76,21 @@ bool isDynamicKind(const std::string &kind)
 
 } // namespace
 
+const QStringList &ModelsPanel::dynamicKinds()
+{
+    return kKinds;
+}
+
+QString ModelsPanel::kindName(const QString &kind)
+{
+    return kindText(kind.toStdString());
+}
+
+QColor ModelsPanel::kindColour(const QString &kind)
+{
+    return kindColor(kind);
+}
+
 ModelsPanel::ModelsPanel(QWidget *parent)
     : QWidget(parent), m_list(new QTreeWidget(this)), m_buildAam(new QPushButton(tr("Build AAM…"), this)),
       m_train(new QPushButton(tr("Train"), this)), m_cancel(new QPushButton(tr("Cancel"), this)),

@@ -1,15 +1,26 @@
 #pragma once
-// Plays a sequence by stepping frames with a timer at the sequence's frame rate. Sound comes
-// from Qt Multimedia (QMediaPlayer on the same file), started at the current frame's time.
-// QMediaPlayer is not frame-accurate, so picture and sound may drift by a frame or two; the
-// frame-locked player (own PCM through QAudioSink, frames following the audio clock) comes
-// with the side-by-side preview of generated video.
+// The studio's one player: plays the current sequence (or any stretch of it: the timeline's
+// selection, one word, a loop) with its sound, and reports the position for the moving cursors
+// of the timeline, the plots and the preview.
+//
+// Frame-locked to the audio clock: the sound is the media file's own PCM (core AudioDecoder)
+// pushed through a Qt Multimedia QAudioSink, and the position is the audio the device has played
+// (processed minus what still waits in its buffer), so the frame shown is the frame of the sound
+// heard and the two cannot drift. Without sound (batch mode: tests, screenshots; no output
+// device; a file without audio) the position follows a monotonic wall clock from the start.
+#include <QElapsedTimer>
 #include <QObject>
 #include <QString>
 
-class QAudioOutput;
-class QMediaPlayer;
+#include <memory>
+
+class QAudioSink;
+class QBuffer;
 class QTimer;
+
+namespace lipsync {
+struct AudioBuffer;
+}
 
 namespace lipsync::studio {
 
@@ -18,33 +29,74 @@ class PlaybackController : public QObject
     Q_OBJECT
 public:
     explicit PlaybackController(QObject *parent = nullptr);
+    ~PlaybackController() override;
 
-    void setSequence(const QString &mediaPath, int frameCount, double frameRate);
+    // What to play: the media (its audio is decoded on the first play with sound), its frame grid
+    // and its length (frameCount / frameRate, or `duration` seconds when given, e.g. audio only).
+    // Stops playback.
+    void setSequence(const QString &mediaPath, int frameCount, double frameRate, double duration = -1.0);
+    const QString &mediaPath() const { return m_mediaPath; }
+    int frameCount() const { return m_frameCount; }
+    double frameRate() const { return m_frameRate; }
+    double duration() const { return m_duration; }
+
     bool isPlaying() const { return m_playing; }
-    // Sound on/off (tests and screenshots run silent; the player is created on first use).
+    // Seconds from the start of the media: where playback is (or stopped).
+    double position() const { return m_position; }
+    // The stretch being (or last) played.
+    double rangeStart() const { return m_from; }
+    double rangeEnd() const { return m_to; }
+    // Loop: at the end of the stretch, play it again (until paused).
+    bool isLooping() const { return m_loop; }
+    void setLooping(bool loop) { m_loop = loop; }
+    // Sound on/off (tests and screenshots run silent).
     void setAudioEnabled(bool enabled) { m_audioEnabled = enabled; }
+    // True while the position follows the audio device's clock.
+    bool isAudioClocked() const { return m_sink != nullptr; }
 
 public slots:
+    // From a frame to the end (from the start when at the last frame).
     void play(int fromFrame);
+    // The stretch [from, to] seconds.
+    void playRange(double from, double to);
     void pause();
+    void stop() { pause(); }
 
 signals:
+    // The video frame under the position changed; emitted before positionChanged.
     void frameReached(int frame);
+    void positionChanged(double seconds);
     void playingChanged(bool playing);
 
 private:
+    void startRange(double from, double to, int fromFrame);
     void tick();
+    void startClock();
+    bool startAudio();
+    void stopAudio();
+    double clockPosition() const;
+    int frameAt(double seconds) const;
 
     QTimer *m_timer;
-    QMediaPlayer *m_player = nullptr;
-    QAudioOutput *m_output = nullptr;
+    QElapsedTimer m_wallClock;
+    QAudioSink *m_sink = nullptr;
+    QBuffer *m_pcm = nullptr;
+    double m_bytesPerSecond = 0;
+    std::shared_ptr<const AudioBuffer> m_audio; // decoded sound of m_mediaPath (null until needed)
+    QString m_audioPath;                        // the file m_audio came from
+    bool m_audioFailed = false;                 // decoding failed: play silent
+
     QString m_mediaPath;
     int m_frameCount = 0;
     double m_frameRate = 25.0;
-    int m_frame = 0;
-    qint64 m_startMs = 0;
-    int m_startFrame = 0;
+    double m_duration = 0.0;
+    double m_from = 0.0;
+    double m_to = 0.0;
+    double m_origin = 0.0; // media time at which the clock started
+    double m_position = 0.0;
+    int m_frame = -1;
     bool m_playing = false;
+    bool m_loop = false;
     bool m_audioEnabled = true;
 };
 

@@ -8,7 +8,6 @@
 #include "preview/PlaybackController.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/AlignTask.h"
-#include "timeline/TimelinePlayer.h"
 #include "timeline/WaveformView.h"
 #include "util/PhoneSet.h"
 
@@ -57,8 +56,7 @@ private:
 } // namespace
 
 TimelinePanel::TimelinePanel(QWidget *parent)
-    : QWidget(parent), m_waveform(new WaveformView(this)), m_scroll(new QScrollBar(Qt::Horizontal, this)),
-      m_player(new TimelinePlayer(this))
+    : QWidget(parent), m_waveform(new WaveformView(this)), m_scroll(new QScrollBar(Qt::Horizontal, this))
 {
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -148,10 +146,6 @@ TimelinePanel::TimelinePanel(QWidget *parent)
     connect(m_waveform, &WaveformView::relabelRequested, this, &TimelinePanel::openEditor);
     connect(m_waveform, &WaveformView::playRequested, this, &TimelinePanel::togglePlay);
     connect(m_waveform, &WaveformView::selectionChanged, this, &TimelinePanel::updateActions);
-    connect(m_player, &TimelinePlayer::positionChanged, this, [this](double t) {
-        m_waveform->requestTime(t);
-        m_waveform->setCursorTime(t);
-    });
     syncScrollBar();
     updateActions();
 }
@@ -181,9 +175,12 @@ void TimelinePanel::attach(MainWindow *window)
         updateActions();
     });
     connect(window, &MainWindow::sequenceLoaded, this, [this] { showSequence(m_window->currentSequence()); });
-    connect(window->playback(), &PlaybackController::playingChanged, this, [this](bool playing) {
-        if (playing)
-            m_player->stop();
+    // The one player: the main window follows its frames; the timeline's cursor follows its
+    // exact position (between frame centres), whoever started it.
+    m_player = window->playback();
+    connect(m_player, &PlaybackController::positionChanged, this, [this](double t) {
+        if (m_player->mediaPath() == m_mediaPath)
+            m_waveform->setCursorTime(t);
     });
     connect(window->taskRunner(), &TaskRunner::taskFinished, this, [this] { updateActions(); });
     updateActions();
@@ -192,10 +189,9 @@ void TimelinePanel::attach(MainWindow *window)
 void TimelinePanel::showSequence(int row)
 {
     closeEditor();
-    m_player->stop();
     m_row = m_document && row < m_document->sequenceCount() ? row : -1;
     m_dragKey = -1;
-    m_player->setMedia(m_row >= 0 ? m_document->mediaPath(m_row) : QString());
+    m_mediaPath = m_row >= 0 ? m_document->mediaPath(m_row) : QString();
     m_waveform->clearSelection();
     refresh();
 }
@@ -520,6 +516,17 @@ void TimelinePanel::closeEditor()
 
 // --- playback ---
 
+bool TimelinePanel::preparePlayer()
+{
+    const auto media = m_window ? m_window->media() : nullptr;
+    if (!m_player || !media || media->mediaPath != m_mediaPath)
+        return false;
+    if (m_player->mediaPath() != m_mediaPath) // it played other media (the preview's new speech)
+        m_player->setSequence(media->mediaPath, media->frameCount(), media->frameRate);
+    m_player->setAudioEnabled(!ErrorReporter::isBatchMode());
+    return true;
+}
+
 void TimelinePanel::playSelection()
 {
     double a = 0, b = 0;
@@ -527,10 +534,9 @@ void TimelinePanel::playSelection()
         a = m_waveform->cursorTime();
         b = m_waveform->duration();
     }
-    if (m_window)
-        m_window->playback()->pause();
-    m_player->setAudioEnabled(!ErrorReporter::isBatchMode());
-    m_player->play(a, b);
+    if (!preparePlayer())
+        return;
+    m_player->playRange(a, b);
 }
 
 void TimelinePanel::playWord()
@@ -539,23 +545,21 @@ void TimelinePanel::playWord()
     const int i = words.indexAt(m_waveform->cursorTime());
     if (i < 0)
         return;
-    if (m_window)
-        m_window->playback()->pause();
-    m_player->setAudioEnabled(!ErrorReporter::isBatchMode());
-    m_player->play(words.intervals[size_t(i)].start, words.intervals[size_t(i)].end);
+    if (!preparePlayer())
+        return;
+    m_player->playRange(words.intervals[size_t(i)].start, words.intervals[size_t(i)].end);
 }
 
 void TimelinePanel::playAll()
 {
-    if (m_window)
-        m_window->playback()->pause();
-    m_player->setAudioEnabled(!ErrorReporter::isBatchMode());
-    m_player->play(0.0, m_waveform->duration());
+    if (!preparePlayer())
+        return;
+    m_player->playRange(0.0, m_waveform->duration());
 }
 
 void TimelinePanel::togglePlay()
 {
-    if (m_player->isPlaying())
+    if (m_player && m_player->isPlaying())
         m_player->stop();
     else
         playSelection();

@@ -26,7 +26,7 @@ namespace lipsync::studio {
 
 class MainWindow;
 class ProjectDocument;
-class TimelinePlayer;
+class PlaybackController;
 class WaveformView;
 struct AlignJob;
 struct AlignOutcome;
@@ -37,7 +37,8 @@ class TimelinePanel : public QWidget
 public:
     explicit TimelinePanel(QWidget *parent = nullptr);
     WaveformView *waveform() const { return m_waveform; }
-    TimelinePlayer *player() const { return m_player; }
+    // The main window's player, which plays the selection, a word or everything (null until attached).
+    PlaybackController *player() const { return m_player; }
 
     // Follows `window`'s document, current sequence and task runner. Until then the panel only
     // shows what it is given (setWords etc. on the view).
@@ -80,6 +81,7 @@ signals:
 
 private:
     void syncScrollBar();
+    bool preparePlayer();
     void showSequence(int row);
     void refresh();
     void updateActions();
@@ -96,12 +98,13 @@ private:
 
     WaveformView *m_waveform;
     QScrollBar *m_scroll;
-    TimelinePlayer *m_player;
+    PlaybackController *m_player = nullptr;
     bool m_syncing = false;
 
     MainWindow *m_window = nullptr;
     ProjectDocument *m_document = nullptr;
     int m_row = -1;
+    QString m_mediaPath; // of the sequence shown (the player may be playing other media)
 
     TierPair m_dragBase;
     int m_dragKey = -1;

@@ -17,7 +17,6 @@
 #include "tasks/TaskRunner.h"
 #include "timeline/TierEdits.h"
 #include "timeline/TimelinePanel.h"
-#include "timeline/TimelinePlayer.h"
 #include "timeline/WaveformView.h"
 #include "util/PhoneSet.h"
 
@@ -360,7 +359,9 @@ private slots:
         const Interval iv = tiers().phones.intervals[1];
         QTest::keyClick(m_view, Qt::Key_Space);
         QVERIFY(m_panel->player()->isPlaying());
-        QVERIFY(!m_window->playback()->isPlaying());
+        QCOMPARE(m_panel->player(), m_window->playback()); // one player
+        QVERIFY(near(m_window->playback()->rangeStart(), iv.start));
+        QVERIFY(near(m_window->playback()->rangeEnd(), iv.end));
         QTRY_VERIFY_WITH_TIMEOUT(!m_panel->player()->isPlaying(), 5000);
         QVERIFY(near(m_panel->player()->position(), iv.end));
         QVERIFY(near(m_view->cursorTime(), iv.end));

@@ -1,0 +1,76 @@
+#include "preview/GeneratedFaces.h"
+
+#include "aam/PtsFile.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+
+namespace lipsync::studio {
+
+GeneratedFaces::GeneratedFaces(std::shared_ptr<const AamModel> aam, std::shared_ptr<const FaceRenderer> renderer,
+                               double frameRate)
+    : m_aam(std::move(aam)), m_renderer(std::move(renderer)), m_synth(*m_aam),
+      m_frameRate(frameRate > 0 ? frameRate : 25.0)
+{
+}
+
+void GeneratedFaces::setFixedFrame(const QImage &background, int poseFrame)
+{
+    m_fixed = background.convertToFormat(QImage::Format_RGB888);
+    m_fixedPose = std::max(0, poseFrame);
+}
+
+int GeneratedFaces::frameCount() const
+{
+    Eigen::Index n = 0;
+    for (const Track &t : m_tracks)
+        n = std::max(n, t.params.rows());
+    return int(n);
+}
+
+Eigen::VectorXd GeneratedFaces::paramsAt(int track, int frame) const
+{
+    const Eigen::MatrixXd &p = m_tracks[std::size_t(track)].params;
+    return p.row(std::clamp(frame, 0, int(p.rows()) - 1)).transpose();
+}
+
+QImage GeneratedFaces::render(int track, int frame, const QImage &background) const
+{
+    if (track < 0 || track >= int(m_tracks.size()) || m_tracks[std::size_t(track)].params.rows() == 0)
+        return {};
+    QImage out = (m_fixed.isNull() ? background : m_fixed).convertToFormat(QImage::Format_RGB888);
+    if (out.isNull())
+        return {};
+    const cv::Size size = m_renderer->frameSize();
+    if (out.width() != size.width || out.height() != size.height) // a downscaled huge clip
+        out = out.scaled(size.width, size.height, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
+    out.detach();
+    // The renderer draws BGR: into a BGR copy, then back into the RGB image.
+    cv::Mat rgb(out.height(), out.width(), CV_8UC3, out.bits(), std::size_t(out.bytesPerLine()));
+    cv::Mat bgr;
+    cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+    m_renderer->renderInto(poseFrame(frame), paramsAt(track, frame), bgr);
+    cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
+    return out;
+}
+
+LandmarkSet GeneratedFaces::landmarks(int track, int frame) const
+{
+    if (track < 0 || track >= int(m_tracks.size()) || m_tracks[std::size_t(track)].params.rows() == 0)
+        return {};
+    const Eigen::VectorXd shape = m_renderer->pose(poseFrame(frame)).apply(m_synth.shape(paramsAt(track, frame)));
+    return landmarkSetFromShape(shape, PointState::Automatic);
+}
+
+std::optional<LandmarkSet> GeneratedFaces::trackedLandmarks(int frame) const
+{
+    const Eigen::MatrixXd &tracked = m_renderer->trackedFeatures();
+    if (m_fixedPose >= 0 || tracked.rows() == 0 || frame < 0)
+        return std::nullopt;
+    const int row = std::min(frame, int(tracked.rows()) - 1);
+    return landmarkSetFromShape(m_renderer->pose(row).apply(m_synth.shape(tracked.row(row).transpose())),
+                                PointState::Automatic);
+}
+
+} // namespace lipsync::studio

@@ -1,0 +1,72 @@
+#pragma once
+// The faces the preview shows beside (or instead of) the recorded video: for each dynamic model
+// its generated AAM parameters for a sequence's frame labels (DynamicModel::generate, the most
+// likely trajectory), drawn by core/render's FaceRenderer into a frame at the head pose of that
+// frame. For a recorded sequence the poses are the ones tracked in its clip, so the generated
+// mouth moves in the speaker's own head; for new speech every frame is drawn into one neutral
+// frame (the first frame of a sequence at its pose, or the mean face on grey).
+//
+// Drawing one frame is one synthesis (about 0.25 ms for the GRID AAM) and a copy of the
+// background, so the preview renders on demand on the GUI thread and keeps up with playback.
+#include "aam/AamModel.h"
+#include "project/LandmarkSet.h"
+#include "render/FaceRenderer.h"
+
+#include <QColor>
+#include <QImage>
+#include <QString>
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace lipsync::studio {
+
+class GeneratedFaces
+{
+public:
+    struct Track
+    {
+        QString kind;            // "dpds", ...
+        QString name;            // shown above the panel
+        QColor color;
+        Eigen::MatrixXd params;  // frames x combined modes
+    };
+
+    // `renderer` holds the poses (tracked in a clip, or the neutral frame's); it refers to `aam`.
+    GeneratedFaces(std::shared_ptr<const AamModel> aam, std::shared_ptr<const FaceRenderer> renderer,
+                   double frameRate);
+
+    const AamModel &aam() const { return *m_aam; }
+    double frameRate() const { return m_frameRate; }
+    // Every frame drawn into `background` at the pose of the renderer's frame `poseFrame`.
+    void setFixedFrame(const QImage &background, int poseFrame);
+
+    void addTrack(Track track) { m_tracks.push_back(std::move(track)); }
+    const std::vector<Track> &tracks() const { return m_tracks; }
+    int frameCount() const; // of the longest track
+
+    // Track `track`'s face at `frame` drawn into `background` (the recorded frame; ignored with a
+    // fixed frame). Frames past a track's end hold its last frame.
+    QImage render(int track, int frame, const QImage &background = {}) const;
+    // Where the generated face's 23 points are in the rendered frame.
+    LandmarkSet landmarks(int track, int frame) const;
+    // The points tracked in the recorded frame (none for new speech).
+    std::optional<LandmarkSet> trackedLandmarks(int frame) const;
+
+private:
+    int poseFrame(int frame) const { return m_fixedPose >= 0 ? m_fixedPose : frame; }
+    Eigen::VectorXd paramsAt(int track, int frame) const;
+
+    std::shared_ptr<const AamModel> m_aam;
+    std::shared_ptr<const FaceRenderer> m_renderer;
+    AamSynthesizer m_synth; // shapes for the landmarks overlay
+    double m_frameRate;
+    QImage m_fixed;
+    int m_fixedPose = -1;
+    std::vector<Track> m_tracks;
+};
+
+} // namespace lipsync::studio

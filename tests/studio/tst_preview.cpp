@@ -1,0 +1,352 @@
+// Preview & compare on the bundled demo: with HMM-mean and DPDS models trained from the demo's
+// features, the preview shows the recorded video beside the faces each model generates (drawn
+// into the recorded frames at the tracked pose), frame step and scrub move the shared cursor
+// (timeline, trajectory plot, current frame), the timeline's selection loops, the landmarks
+// overlay toggles, and Generate from Speech turns a demo clip and its transcript into a playable
+// generated sequence at a chosen frame rate.
+#include "DemoWindow.h"
+
+#include "annotate/FrameView.h"
+#include "app/MainWindow.h"
+#include "app/ProjectDocument.h"
+#include "app/SequenceMedia.h"
+#include "app/SurfaceFormat.h"
+#include "build/ModelsPanel.h"
+#include "plots/TrajectoryView.h"
+#include "preview/GeneratedFaces.h"
+#include "preview/PlaybackController.h"
+#include "preview/PreviewPanel.h"
+#include "preview/SpeechDialog.h"
+#include "tasks/TaskRunner.h"
+#include "timeline/WaveformView.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QTabWidget>
+#include <QTest>
+#include <QTimer>
+#include <QToolButton>
+
+#include <cmath>
+
+using namespace lipsync;
+using namespace lipsync::studio;
+using lipsync::studio::testing::openDemoWindow;
+
+namespace {
+
+// Mean absolute difference per channel, and the share of pixels differing by more than 24.
+void compareImages(const QImage &a, const QImage &b, double &meanDiff, double &changedShare)
+{
+    const QImage x = a.convertToFormat(QImage::Format_RGB888);
+    const QImage y = b.convertToFormat(QImage::Format_RGB888);
+    double sum = 0;
+    long changed = 0;
+    for (int r = 0; r < x.height(); ++r) {
+        const uchar *p = x.constScanLine(r);
+        const uchar *q = y.constScanLine(r);
+        for (int c = 0; c < x.width(); ++c) {
+            int d = 0;
+            for (int k = 0; k < 3; ++k)
+                d = std::max(d, std::abs(int(p[3 * c + k]) - int(q[3 * c + k])));
+            sum += d;
+            changed += d > 24;
+        }
+    }
+    const double n = double(x.width()) * x.height();
+    meanDiff = sum / n;
+    changedShare = changed / n;
+}
+
+double greyStdDev(const QImage &image)
+{
+    const QImage g = image.convertToFormat(QImage::Format_Grayscale8);
+    double s = 0, s2 = 0;
+    for (int r = 0; r < g.height(); ++r)
+        for (int c = 0; c < g.width(); ++c) {
+            const double v = g.constScanLine(r)[c];
+            s += v;
+            s2 += v * v;
+        }
+    const double n = double(g.width()) * g.height();
+    return std::sqrt(std::max(0.0, s2 / n - (s / n) * (s / n)));
+}
+
+bool near(double a, double b, double tolerance = 1e-3)
+{
+    return std::abs(a - b) < tolerance;
+}
+
+} // namespace
+
+class TestPreview : public QObject
+{
+    Q_OBJECT
+public:
+    static void initMain()
+    {
+        setDefaultSurfaceFormat();
+        QStandardPaths::setTestModeEnabled(true);
+    }
+
+private:
+    void waitIdle() { QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 120000); }
+
+    MainWindow *m_window = nullptr;
+    PreviewPanel *m_preview = nullptr;
+    PlaybackController *m_player = nullptr;
+
+private slots:
+    void initTestCase()
+    {
+        openDemoWindow(m_window);
+        if (QTest::currentTestFailed())
+            return;
+        m_preview = m_window->preview();
+        m_player = m_window->playback();
+        m_player->setAudioEnabled(false); // no sound device under Xvfb
+        // Two small models from the demo's features: the phoneme-mean HMM and DPDS.
+        ModelsPanel *models = m_window->modelsPanel();
+        for (const QString &k : ModelsPanel::dynamicKinds())
+            models->kindCheck(k)->setChecked(k == QLatin1String("hmm") || k == QLatin1String("dpds"));
+        QTest::mouseClick(models->trainButton(), Qt::LeftButton);
+        waitIdle();
+        QVERIFY(models->model(QStringLiteral("hmm")));
+        QVERIFY(models->model(QStringLiteral("dpds")));
+    }
+
+    void cleanupTestCase() { delete m_window; }
+
+    void showsRecordedAndGeneratedSideBySide()
+    {
+        QCOMPARE(m_preview->panelCount(), 1 + 1); // recorded + "train a model first" before it is shown
+        auto *tabs = m_window->findChild<QTabWidget *>();
+        QVERIFY(tabs && tabs->indexOf(m_preview) >= 0);
+        QSignalSpy ready(m_preview, &PreviewPanel::facesReady);
+        tabs->setCurrentWidget(m_preview);
+        // Tracking the head pose runs as a task once per sequence.
+        QTRY_VERIFY_WITH_TIMEOUT(m_preview->faces() && m_preview->faces()->tracks().size() == 2, 120000);
+        QVERIFY(ready.count() >= 1);
+        QCOMPARE(m_preview->panelCount(), 3);
+        QCOMPARE(m_preview->panelTitle(0), QStringLiteral("Recorded video"));
+        QVERIFY(m_preview->panelTitle(1).contains(QStringLiteral("DPDS")));
+        QVERIFY(m_preview->panelTitle(2).contains(QStringLiteral("HMM")));
+        // The three panels share one row.
+        auto at = [this](int i) { return m_preview->panel(i)->mapTo(m_preview, QPoint()); };
+        QTRY_VERIFY(at(1).x() > at(0).x() && at(2).x() > at(1).x());
+        QCOMPARE(at(1).y(), at(0).y());
+        QCOMPARE(at(2).y(), at(0).y());
+
+        m_window->setCurrentFrame(40); // mid-sentence: the mouth is open
+        const QImage recorded = m_preview->panel(0)->image();
+        const QImage dpds = m_preview->panel(1)->image();
+        const QImage hmm = m_preview->panel(2)->image();
+        QVERIFY(!recorded.isNull() && !dpds.isNull() && !hmm.isNull());
+        QCOMPARE(dpds.size(), recorded.size());
+        QCOMPARE(recorded, m_window->media()->frames[40]);
+        // LIPSYNC_PREVIEW_SHOT=DIR keeps a picture of the window for a look by eye.
+        if (const QString dir = qEnvironmentVariable("LIPSYNC_PREVIEW_SHOT"); !dir.isEmpty())
+        {
+            m_window->grab().save(dir + QStringLiteral("/preview.png"));
+            recorded.save(dir + QStringLiteral("/recorded.png"));
+            dpds.save(dir + QStringLiteral("/dpds.png"));
+            hmm.save(dir + QStringLiteral("/hmm.png"));
+        }
+        // The face was redrawn where the tracked face is; everything else is the recording.
+        const auto tracked = m_preview->faces()->trackedLandmarks(40);
+        QVERIFY(tracked && tracked->isComplete());
+        QRectF face;
+        for (const LandmarkPoint &p : tracked->points)
+            face = face.isNull() ? QRectF(p.x, p.y, 1, 1) : face.united(QRectF(p.x, p.y, 1, 1));
+        const QRect box = face.adjusted(-12, -12, 12, 12).toAlignedRect();
+        int inside = 0, outside = 0;
+        const QImage x = recorded.convertToFormat(QImage::Format_RGB888);
+        const QImage y = dpds.convertToFormat(QImage::Format_RGB888);
+        for (int r = 0; r < x.height(); ++r)
+            for (int c = 0; c < x.width(); ++c) {
+                int d = 0;
+                for (int k = 0; k < 3; ++k)
+                    d = std::max(d, std::abs(int(x.constScanLine(r)[3 * c + k]) - int(y.constScanLine(r)[3 * c + k])));
+                if (d > 8)
+                    (box.contains(c, r) ? inside : outside) += 1;
+            }
+        qInfo("recorded vs DPDS at frame 40: %d pixels differ by more than 8 inside the face box, %d outside", inside, outside);
+        QVERIFY2(inside > 200, qPrintable(QString::number(inside)));
+        QCOMPARE(outside, 0);
+        QVERIFY2(greyStdDev(dpds) > 10.0, "the generated panel is blank");
+        double mean = 0, share = 0;
+        compareImages(dpds, hmm, mean, share);
+        QVERIFY2(mean > 0.05, "two models drew the same face");
+
+        // Drawing keeps up with playback by a wide margin (two models per frame).
+        QElapsedTimer clock;
+        clock.start();
+        const int n = 100;
+        for (int i = 0; i < n; ++i)
+            m_window->setCurrentFrame(i % 75 == 40 ? 41 : i % 75);
+        const double fps = n / (clock.nsecsElapsed() * 1e-9);
+        qInfo("preview: %.0f frames/s with recorded + 2 generated panels", fps);
+        QVERIFY2(fps > 50, qPrintable(QString::number(fps)));
+    }
+
+    void frameStepAndScrubMoveTheSharedCursor()
+    {
+        TrajectoryView *trajectory = m_window->modelsPanel()->trajectoryView();
+        m_window->setCurrentFrame(10);
+        const QImage before = m_preview->panel(1)->image();
+        QTest::mouseClick(m_preview->stepForwardButton(), Qt::LeftButton);
+        QCOMPARE(m_window->currentFrame(), 11);
+        QCOMPARE(m_preview->scrubber()->value(), 11);
+        QVERIFY(near(m_window->waveformView()->cursorTime(), 11.5 / 25.0));
+        QVERIFY(near(trajectory->cursorTime(), 11.5 / 25.0));
+        QTest::mouseClick(m_preview->stepBackButton(), Qt::LeftButton);
+        QTest::mouseClick(m_preview->stepBackButton(), Qt::LeftButton);
+        QCOMPARE(m_window->currentFrame(), 9);
+
+        m_preview->scrubber()->setValue(50);
+        QCOMPARE(m_window->currentFrame(), 50);
+        QVERIFY(near(m_window->waveformView()->cursorTime(), 50.5 / 25.0));
+        QVERIFY(near(trajectory->cursorTime(), 50.5 / 25.0));
+        QVERIFY(m_preview->panel(1)->image() != before);
+
+        // Playing moves everything, from the one player.
+        m_window->setCurrentFrame(0);
+        QTest::mouseClick(m_preview->playButton(), Qt::LeftButton);
+        QVERIFY(m_player->isPlaying());
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->currentFrame() >= 8, 5000);
+        QTest::mouseClick(m_preview->playButton(), Qt::LeftButton);
+        QVERIFY(!m_player->isPlaying());
+        const int stopped = m_window->currentFrame();
+        QCOMPARE(m_preview->scrubber()->value(), stopped);
+        QVERIFY(std::abs(m_window->waveformView()->cursorTime() - m_player->position()) < 0.05);
+    }
+
+    void loopsTheSelection()
+    {
+        WaveformView *wave = m_window->waveformView();
+        wave->setRange(0.8, 1.2);
+        QSignalSpy positions(m_player, &PlaybackController::positionChanged);
+        m_preview->loopCheck()->setChecked(true);
+        QVERIFY(m_player->isPlaying());
+        QVERIFY(m_player->isLooping());
+        QVERIFY(near(m_player->rangeStart(), 0.8));
+        QVERIFY(near(m_player->rangeEnd(), 1.2));
+        // Past the end of the 0.4 s selection it is still playing, and came back to its start.
+        QTest::qWait(1000);
+        QVERIFY(m_player->isPlaying());
+        bool wrapped = false;
+        double last = 0;
+        for (const QList<QVariant> &args : positions) {
+            const double t = args.at(0).toDouble();
+            QVERIFY2(t >= 0.8 - 1e-9 && t <= 1.2 + 1e-9, qPrintable(QString::number(t)));
+            wrapped = wrapped || t < last - 0.2;
+            last = t;
+        }
+        QVERIFY(wrapped);
+        QVERIFY(m_window->currentFrame() >= 20 && m_window->currentFrame() <= 30);
+        // Unchecked: it plays to the end of the selection and stops there.
+        m_preview->loopCheck()->setChecked(false);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_player->isPlaying(), 3000);
+        QVERIFY(near(m_player->position(), 1.2));
+        wave->clearSelection();
+    }
+
+    void landmarksOverlayToggles()
+    {
+        m_window->setCurrentFrame(30);
+        QVERIFY(!m_preview->panel(0)->landmarks());
+        QVERIFY(!m_preview->panel(1)->landmarks());
+        m_preview->landmarksCheck()->setChecked(true);
+        const auto tracked = m_preview->panel(0)->landmarks();
+        const auto generated = m_preview->panel(1)->landmarks();
+        QVERIFY(tracked && generated);
+        if (const QString dir = qEnvironmentVariable("LIPSYNC_PREVIEW_SHOT"); !dir.isEmpty())
+            m_preview->grab().save(dir + QStringLiteral("/landmarks.png"));
+        QVERIFY(tracked->isComplete() && generated->isComplete());
+        // The generated face sits where the tracked one is (same pose), within a few pixels on
+        // average; the mouth may differ.
+        double d = 0;
+        for (int i = 0; i < LandmarkSet::kPointCount; ++i)
+            d += std::hypot(tracked->points[size_t(i)].x - generated->points[size_t(i)].x,
+                            tracked->points[size_t(i)].y - generated->points[size_t(i)].y);
+        d /= LandmarkSet::kPointCount;
+        QVERIFY2(d < 12.0, qPrintable(QString::number(d)));
+        m_window->setCurrentFrame(31); // follows the frame
+        QVERIFY(m_preview->panel(1)->landmarks());
+        m_preview->landmarksCheck()->setChecked(false);
+        QVERIFY(!m_preview->panel(0)->landmarks());
+        QVERIFY(!m_preview->panel(1)->landmarks());
+    }
+
+    void generatesFacesForNewSpeech()
+    {
+        // A demo clip and its GRID transcript; the dialog finds the transcript beside it.
+        const QString clip = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media/pbav2n.mpg");
+        bool filled = false;
+        connect(m_preview, &PreviewPanel::speechDialogOpened, this, [&](SpeechDialog *dialog) {
+            dialog->setMediaPath(clip);
+            filled = dialog->transcript() == QStringLiteral("place blue at v two now");
+            dialog->frameRateSpin()->setValue(30.0);
+            dialog->modelCombo()->setCurrentIndex(dialog->modelCombo()->findData(QStringLiteral("dpds")));
+            QTimer::singleShot(0, dialog, [dialog] {
+                QVERIFY(dialog->buttons()->button(QDialogButtonBox::Ok)->isEnabled());
+                dialog->buttons()->button(QDialogButtonBox::Ok)->click();
+            });
+        });
+        QSignalSpy started(m_window->taskRunner(), &TaskRunner::taskStarted);
+        QTest::mouseClick(m_preview->speechButton(), Qt::LeftButton);
+        QVERIFY(filled);
+        QCOMPARE(started.count(), 1); // one background task
+        QTRY_VERIFY_WITH_TIMEOUT(m_preview->isShowingSpeech(), 120000);
+        waitIdle();
+
+        const GeneratedFaces *faces = m_preview->faces();
+        QVERIFY(faces);
+        QCOMPARE(faces->tracks().size(), size_t(1));
+        QCOMPARE(faces->frameRate(), 30.0);
+        QVERIFY2(std::abs(faces->frameCount() - 90) <= 1, qPrintable(QString::number(faces->frameCount()))); // 3 s at 30 fps
+        QCOMPARE(m_preview->panelCount(), 1);
+        QVERIFY(m_preview->panelTitle(0).contains(QStringLiteral("DPDS")));
+        QVERIFY(m_preview->backButton()->isVisible());
+        QCOMPARE(m_preview->scrubber()->maximum(), faces->frameCount() - 1);
+        const QImage first = m_preview->panel(0)->image();
+        QVERIFY(!first.isNull());
+        QVERIFY(greyStdDev(first) > 10.0);
+        if (const QString dir = qEnvironmentVariable("LIPSYNC_PREVIEW_SHOT"); !dir.isEmpty())
+            m_window->grab().save(dir + QStringLiteral("/speech.png"));
+
+        // It plays with the clip's sound, frame by frame at 30 fps; the sequence stays put.
+        const int sequenceFrame = m_window->currentFrame();
+        QTest::mouseClick(m_preview->playButton(), Qt::LeftButton);
+        QVERIFY(m_player->isPlaying());
+        QCOMPARE(m_player->mediaPath(), clip);
+        QTRY_VERIFY_WITH_TIMEOUT(m_preview->speechFrame() >= 30, 5000);
+        QTest::mouseClick(m_preview->playButton(), Qt::LeftButton);
+        QVERIFY(!m_player->isPlaying());
+        QCOMPARE(m_window->currentFrame(), sequenceFrame);
+        QCOMPARE(m_preview->scrubber()->value(), m_preview->speechFrame());
+        QVERIFY(m_preview->panel(0)->image() != first); // the mouth moved
+
+        // Back to the sequence; its own play button plays the sequence again.
+        QTest::mouseClick(m_preview->backButton(), Qt::LeftButton);
+        QVERIFY(!m_preview->isShowingSpeech());
+        QCOMPARE(m_preview->panelCount(), 3);
+        m_window->setCurrentFrame(0);
+        QTest::mouseClick(m_preview->playButton(), Qt::LeftButton);
+        QCOMPARE(m_player->mediaPath(), m_window->media()->mediaPath);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->currentFrame() >= 3, 5000);
+        m_player->pause();
+    }
+};
+
+QTEST_MAIN(TestPreview)
+#include "tst_preview.moc"
