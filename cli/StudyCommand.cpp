@@ -2,11 +2,11 @@
 // `lipsync study tally` (its results in the form of the paper's Table 1, with sign-test p-values
 // and a Bradley-Terry ranking; CSV export).
 //
-// A project keeps its study beside the manifest as <project>/study.json; --results reads any
-// study file.
+// A project keeps its study in the project (study.json, referenced by the manifest and saved with
+// it, see core/project/Project.h); --out / --results write and read a stand-alone study file.
 #include "Command.h"
 
-#include "eval/ForcedChoiceStudy.h"
+#include "project/ForcedChoiceStudy.h"
 #include "eval/StudyTally.h"
 #include "io/AtomicFile.h"
 #include "project/Project.h"
@@ -16,13 +16,12 @@
 #include <QFileInfo>
 
 #include <cstdio>
+#include <optional>
 
 using namespace lipsync;
 using namespace lipsync::cli;
 
 namespace {
-
-constexpr const char *kStudyFileName = "study.json";
 
 std::vector<std::string> splitList(const QString &text)
 {
@@ -32,17 +31,29 @@ std::vector<std::string> splitList(const QString &text)
     return out;
 }
 
-// The study file named by --results, or <project>/study.json for --project.
-QString studyPath(const Arguments &arguments)
+QString projectFolder(const Arguments &arguments)
 {
-    if (arguments.has(QStringLiteral("results")))
-        return arguments.value(QStringLiteral("results"));
     const QString folder = arguments.value(QStringLiteral("project"));
     const QString manifest = QDir(folder).filePath(QString::fromLatin1(Project::kManifestName));
     if (!QFileInfo(manifest).isFile())
         throw Error("not a project folder (no " + std::string(Project::kManifestName) + ")",
                     folder.toStdString());
-    return QDir(folder).filePath(QString::fromLatin1(kStudyFileName));
+    return folder;
+}
+
+// The study of --results FILE, or the one kept in the project of --project DIR.
+ForcedChoiceStudy loadStudy(const Arguments &arguments, QString *source)
+{
+    if (arguments.has("results")) {
+        *source = arguments.value("results");
+        return ForcedChoiceStudy::load(source->toStdString());
+    }
+    const Project project = Project::load(projectFolder(arguments).toStdString());
+    *source = QString::fromStdString(project.studyPath());
+    if (!project.study)
+        throw Error("the project has no study (create one with lipsync study create --project)",
+                    project.manifestPath());
+    return *project.study;
 }
 
 int runCreate(const QStringList &args)
@@ -52,10 +63,10 @@ int runCreate(const QStringList &args)
         {"methods", "utterances", "participants", "seed", "repeats", "out", "project", "json"});
     if (!unknown.isEmpty())
         return fail(QStringLiteral("study create: unknown option %1").arg(unknown.join(' ')), 2);
-    if (!arguments.has("methods") || !arguments.has("utterances")
-        || (arguments.has("out") == arguments.has("project")))
+    if (!arguments.has("methods") || (arguments.has("out") == arguments.has("project"))
+        || (arguments.has("out") && !arguments.has("utterances")))
         return fail(QStringLiteral("usage: lipsync study create --methods real,dpds,... "
-                                   "--utterances ID,ID,... (--out FILE.json | --project DIR) "
+                                   "[--utterances ID,ID,...] (--out FILE.json | --project DIR) "
                                    "[--participants N] [--seed S] [--repeats R] [--json]"),
                     2);
     bool ok = true;
@@ -68,12 +79,30 @@ int runCreate(const QStringList &args)
         return fail(QStringLiteral("study create: --participants, --seed and --repeats take "
                                    "non-negative integers"),
                     2);
-    ForcedChoiceStudy study(splitList(arguments.value("methods")),
-                            splitList(arguments.value("utterances")), seed, repeats);
+    // In a project the utterances are its sequences (all of them unless --utterances names some).
+    std::optional<Project> project;
+    std::vector<std::string> utterances = splitList(arguments.value("utterances"));
+    if (arguments.has("project")) {
+        project = Project::load(projectFolder(arguments).toStdString());
+        if (!arguments.has("utterances"))
+            for (const Sequence &s : project->sequences)
+                utterances.push_back(s.id);
+        for (const std::string &u : utterances)
+            if (!project->sequence(u))
+                throw Error("the project has no sequence '" + u + "'", project->manifestPath(),
+                            "sequences");
+    }
+    ForcedChoiceStudy study(splitList(arguments.value("methods")), utterances, seed, repeats);
     for (int p = 1; p <= participants; ++p)
         study.addParticipant(QStringLiteral("P%1").arg(p, 2, 10, QLatin1Char('0')).toStdString());
-    const QString out = arguments.has("out") ? arguments.value("out") : studyPath(arguments);
-    study.save(out.toStdString());
+    QString out = arguments.value("out");
+    if (project) {
+        project->study = study;
+        project->save(); // manifest and study.json, atomically
+        out = QString::fromStdString(project->studyPath());
+    } else {
+        study.save(out.toStdString());
+    }
     if (arguments.flag("json"))
         printJson(QJsonObject{{"study", out},
                               {"methods", qint64(study.methods().size())},
@@ -121,8 +150,8 @@ int runTally(const QStringList &args)
     if (!ok || alpha <= 0 || alpha >= 1)
         return fail(QStringLiteral("study tally: --alpha takes a number in (0, 1)"), 2);
 
-    const QString path = studyPath(arguments);
-    const ForcedChoiceStudy study = ForcedChoiceStudy::load(path.toStdString());
+    QString path;
+    const ForcedChoiceStudy study = loadStudy(arguments, &path);
     const StudyTally tally = StudyTally::fromStudy(study);
     if (arguments.has("csv"))
         writeFileAtomically(arguments.value("csv").toStdString(), tally.pairsCsv());

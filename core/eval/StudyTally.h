@@ -11,7 +11,7 @@
 //    gets strength 0 (the maximum-likelihood limit).
 //  - the paper's one-line summary ("DPDS ≈ reality ≻ Brand ≻ SLDS"): methods by strength, "≻"
 //    between neighbours whose direct comparison is significant at alpha, else "≈".
-#include "eval/ForcedChoiceStudy.h"
+#include "project/ForcedChoiceStudy.h"
 
 #include <Eigen/Core>
 #include <QJsonObject>

@@ -85,6 +85,8 @@ void Project::save(const std::string &folderArgument) const
             writeFeatureCsv(QDir(q(folder)).filePath(q(ProjectManifest::featureFileName(s.id)))
                                 .toStdString(),
                             s.features);
+    if (study)
+        study->save(QDir(q(folder)).filePath(q(kStudyFileName)).toStdString());
     if (QFileInfo(q(manifest)).isFile())
         writeFileAtomically(manifest + ".bak", readWholeFile(manifest));
     const QByteArray text = ProjectManifest::serialize(json);
@@ -101,6 +103,15 @@ void Project::saveAs(const std::string &folderArgument)
     for (ModelReference &m : models)
         m.file = rebaseRelativePath(m.file, from, folder);
     m_folder = folder;
+}
+
+void Project::saveStudy() const
+{
+    if (m_folder.empty())
+        throw Error("the project has no folder yet; save it into a folder first");
+    if (!study)
+        throw Error("the project has no study", manifestPath());
+    study->save(studyPath());
 }
 
 std::string Project::resolve(const std::string &relative) const
@@ -127,7 +138,8 @@ const Sequence *Project::sequence(const std::string &id) const
 
 bool Project::operator==(const Project &other) const
 {
-    return name == other.name && sequences == other.sequences && models == other.models;
+    return name == other.name && sequences == other.sequences && models == other.models
+           && study == other.study;
 }
 
 } // namespace lipsync

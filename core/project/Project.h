@@ -4,12 +4,17 @@
 //   project.json.bak      the previous manifest, kept by every save
 //   features/<id>.csv     per-sequence features (frame index, then the parameters)
 //   media/ aam/ models/   media, built AAMs and trained models (referenced by relative path)
+//   study.json            the blind forced-choice study with every participant's answers
+//                         (ForcedChoiceStudy's own versioned format), when the project has one
 // Load validates everything and throws lipsync::Error naming the file and the field
 // (".../project.json: sequences[2].frameRate: must be a positive number"). Missing media is not
 // a load error (it may be on another disk; see mediaPath), a missing features file is. Save is
 // atomic per file (QSaveFile), so a crash leaves either the old or the new version. The manifest
 // format is read and written by ProjectManifest.
+#include "project/ForcedChoiceStudy.h"
 #include "project/Sequence.h"
+
+#include <optional>
 
 #include <string>
 #include <vector>
@@ -30,6 +35,7 @@ class Project
 public:
     static constexpr int kFormatVersion = 1;
     static constexpr const char *kManifestName = "project.json";
+    static constexpr const char *kStudyFileName = "study.json";
 
     Project() = default;
 
@@ -71,6 +77,15 @@ public:
     std::string name;
     std::vector<Sequence> sequences;
     std::vector<ModelReference> models;
+    // The blind study (paper §4, Table 1), saved with the project as study.json.
+    std::optional<ForcedChoiceStudy> study;
+
+    // Writes only study.json into folder() (atomically), so a participant's answer is on disk
+    // right after each trial without rewriting the manifest and features. The manifest must
+    // already refer to the study (the project was saved with it); throws lipsync::Error if the
+    // project has no folder or no study.
+    void saveStudy() const;
+    std::string studyPath() const { return resolve(kStudyFileName); }
 
     Sequence *sequence(const std::string &id);
     const Sequence *sequence(const std::string &id) const;

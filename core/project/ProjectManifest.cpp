@@ -82,7 +82,7 @@ public:
                                 + "); open it with a newer version");
         if (version < 1)
             fail("version", "must be at least 1");
-        checkKeys(root, "", {"format", "version", "name", "sequences", "models"});
+        checkKeys(root, "", {"format", "version", "name", "sequences", "models", "study"});
 
         Project project;
         if (root.contains("name"))
@@ -103,6 +103,17 @@ public:
             for (qsizetype i = 0; i < models.size(); ++i)
                 project.models.push_back(readModel(object(models[i], element("models", i)),
                                                    element("models", i)));
+        }
+
+        if (root.contains("study")) {
+            const std::string relative = string(root.value("study"), "study", false);
+            if (m_readFeatures) {
+                const QString path = QDir::cleanPath(QDir(q(m_folder)).absoluteFilePath(q(relative)));
+                if (!QFileInfo(path).isFile())
+                    fail("study", "referenced study file '" + path.toStdString() + "' does not exist");
+                // The study file validates itself; its errors name the study file and field.
+                project.study = ForcedChoiceStudy::load(path.toStdString());
+            }
         }
         return project;
     }
@@ -363,7 +374,7 @@ const QStringList &keyOrder()
                                    "frameRate",  "frameCount", "transcript", "features",
                                    "tiers",      "words",     "phones",    "landmarks",
                                    "frame",      "points",    "start",     "end",
-                                   "label",      "userEdited", "file"};
+                                   "label",      "userEdited", "file",      "study"};
     return order;
 }
 
@@ -505,11 +516,14 @@ QJsonObject ProjectManifest::toJson(const Project &project, const std::string &t
         models.append(QJsonObject{{"kind", q(m.kind)},
                                   {"name", q(m.name)},
                                   {"file", q(rebaseRelativePath(m.file, from, targetFolder))}});
-    return QJsonObject{{"format", kFormatName},
-                       {"version", Project::kFormatVersion},
-                       {"name", q(project.name)},
-                       {"sequences", sequences},
-                       {"models", models}};
+    QJsonObject manifest{{"format", kFormatName},
+                         {"version", Project::kFormatVersion},
+                         {"name", q(project.name)},
+                         {"sequences", sequences},
+                         {"models", models}};
+    if (project.study)
+        manifest.insert("study", QString::fromLatin1(Project::kStudyFileName));
+    return manifest;
 }
 
 QByteArray ProjectManifest::serialize(const QJsonObject &manifest)

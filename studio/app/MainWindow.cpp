@@ -13,6 +13,7 @@
 #include "app/StudioActions.h"
 #include "app/TransportBar.h"
 #include "build/ModelsPanel.h"
+#include "compare/StudyController.h"
 #include "export/ExportMenu.h"
 #include "plots/LineChartView.h"
 #include "preview/PlaybackController.h"
@@ -203,6 +204,8 @@ void MainWindow::createMenus()
     QMenu *panels = view->addMenu(tr("&Panels"));
     for (QDockWidget *dock : findChildren<QDockWidget *>())
         panels->addAction(dock->toggleViewAction());
+
+    menuBar()->addMenu((new StudyController(this))->menu());
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(a.about);

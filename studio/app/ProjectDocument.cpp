@@ -2,6 +2,7 @@
 
 #include "annotate/LandmarkCommands.h"
 #include "app/SetTranscriptCommand.h"
+#include "compare/StudyCommands.h"
 #include "timeline/TierCommands.h"
 #include "util/Error.h"
 
@@ -196,6 +197,64 @@ void ProjectDocument::applyModels(const std::vector<ModelReference> &models)
 {
     m_project.models = models;
     emit modelsChanged();
+}
+
+bool ProjectDocument::requestStudy(const std::optional<ForcedChoiceStudy> &study, const QString &text,
+                                   int mergeKey)
+{
+    if (study == m_project.study)
+        return false;
+    m_undo->push(new SetStudyCommand(this, m_project.study, study, text, mergeKey));
+    return true;
+}
+
+void ProjectDocument::applyStudy(const std::optional<ForcedChoiceStudy> &study)
+{
+    m_project.study = study;
+    emit studyChanged();
+}
+
+bool ProjectDocument::isStudySaved() const
+{
+    return m_open && !m_readOnly && !m_folder.isEmpty() && m_project.study && !isModified()
+           && QFileInfo::exists(QString::fromStdString(m_project.studyPath()));
+}
+
+void ProjectDocument::pushStudyStep(ForcedChoiceStudy study, int session)
+{
+    // Written before the step is pushed: if the disk refuses, the answer is not pretended.
+    const bool saved = isStudySaved();
+    if (saved) {
+        Project copy = m_project;
+        copy.study = study;
+        copy.saveStudy();
+    }
+    const QString participant = QString::fromStdString(study.sessions().at(std::size_t(session)).participant);
+    // One undo step per answer: QUndoStack never merges into the clean state, and each answer
+    // is saved, i.e. clean.
+    requestStudy(std::move(study), tr("Answer of %1").arg(participant));
+    if (saved)
+        m_undo->setClean(); // the file on disk now holds exactly this state
+}
+
+int ProjectDocument::addStudyParticipant(const QString &participant)
+{
+    if (!m_project.study)
+        throw Error("the project has no study");
+    ForcedChoiceStudy study = *m_project.study;
+    study.addParticipant(participant.toStdString());
+    const int session = int(study.sessions().size()) - 1;
+    pushStudyStep(std::move(study), session);
+    return session;
+}
+
+void ProjectDocument::recordStudyAnswer(int session, int trial, StudyChoice choice, double seconds)
+{
+    if (!m_project.study)
+        throw Error("the project has no study");
+    ForcedChoiceStudy study = *m_project.study;
+    study.answer(session, trial, choice, seconds);
+    pushStudyStep(std::move(study), session);
 }
 
 } // namespace lipsync::studio

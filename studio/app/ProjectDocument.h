@@ -66,13 +66,29 @@ public:
     bool requestAddModel(const ModelReference &model, const QString &text);
     void applyModels(const std::vector<ModelReference> &models);
 
+    // Blind study (compare/StudyCommands). Sets up or removes (nullopt) the study; requests with
+    // the same mergeKey >= 0 merge into one undo step.
+    bool requestStudy(const std::optional<ForcedChoiceStudy> &study, const QString &text, int mergeKey = -1);
+    void applyStudy(const std::optional<ForcedChoiceStudy> &study);
+    // A participant's session: adding the participant and each answer are undo steps, and each
+    // is written to the project's study file at once (Project::saveStudy)
+    // so nothing is lost if the studio dies mid-session; a document that was saved stays
+    // unmodified. Returns the session index; throws lipsync::Error (no study, bad index, I/O).
+    int addStudyParticipant(const QString &participant);
+    void recordStudyAnswer(int session, int trial, StudyChoice choice, double seconds);
+    // The study is on disk as it is in memory (saved project folder, nothing unsaved).
+    bool isStudySaved() const;
+
 signals:
     void documentReset();
     void sequenceChanged(int row);
     void modelsChanged();
+    void studyChanged();
     void locationChanged();
 
 private:
+    void pushStudyStep(ForcedChoiceStudy study, int session);
+
     QUndoStack *m_undo;
     Project m_project;
     QString m_folder;

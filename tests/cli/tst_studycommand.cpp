@@ -2,7 +2,8 @@
 // answers reproduce the paper's Table 1 (33 volunteers, every pair twice).
 #include "CliRun.h"
 
-#include "eval/ForcedChoiceStudy.h"
+#include "project/ForcedChoiceStudy.h"
+#include "project/Project.h"
 
 #include <QDir>
 #include <QFile>
@@ -100,22 +101,25 @@ private slots:
         QVERIFY2(text.out.contains("DPDS ≈ reality ≻ Brand ≻ SLDS"), text.out.constData());
     }
 
-    // In a project the study lives beside the manifest.
+    // In a project the study is part of the project: study.json, referenced by the manifest.
     void createAndTallyInAProject()
     {
         QTemporaryDir dir;
-        QFile manifest(dir.filePath("project.json"));
-        QVERIFY(manifest.open(QIODevice::WriteOnly));
-        manifest.write("{}");
-        manifest.close();
+        Project project;
+        project.name = "study";
+        for (const char *id : {"bbaf2n", "bgin3a", "bwbg8n"})
+            project.sequences.push_back(Sequence{id, std::string("media/") + id + ".mpg", 25.0, 75});
+        project.save(dir.path().toStdString());
         Run r = runLipsync({"study", "create", "--project", dir.path(), "--methods", "real,dpds,slds,brand,hmm",
-                     "--utterances", "bbaf2n,bgin3a,bwbg8n", "--participants", "4", "--seed", "9",
-                     "--json"});
+                     "--participants", "4", "--seed", "9", "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         QCOMPARE(parseJsonObject(r.out).value("trialsPerSession").toInt(), 20);
-        const ForcedChoiceStudy study = ForcedChoiceStudy::load(dir.filePath("study.json").toStdString());
+        const Project loaded = Project::load(dir.path().toStdString());
+        QVERIFY(loaded.study);
+        const ForcedChoiceStudy &study = *loaded.study;
         QCOMPARE(int(study.sessions().size()), 4);
         QCOMPARE(study.sessions()[3].participant, std::string("P04"));
+        QCOMPARE(study.utterances(), (std::vector<std::string>{"bbaf2n", "bgin3a", "bwbg8n"}));
 
         r = runLipsync({"study", "tally", "--project", dir.path(), "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
@@ -123,6 +127,14 @@ private slots:
         QCOMPARE(json.value("answered").toInt(), 0);
         QCOMPARE(json.value("unanswered").toInt(), 80);
         QCOMPARE(json.value("pairs").toArray().size(), 10);
+
+        // Utterances must be sequences of the project.
+        verifyOneLineError(runLipsync({"study", "create", "--project", dir.path(), "--methods", "real,dpds",
+                                       "--utterances", "nosuch"}),
+                           1, "no sequence 'nosuch'");
+        QTemporaryDir empty;
+        Project().save(empty.path().toStdString());
+        verifyOneLineError(runLipsync({"study", "tally", "--project", empty.path()}), 1, "has no study");
     }
 
     void badInputAndUsage()

@@ -170,6 +170,44 @@ private slots:
         QVERIFY(Project::load(dir.filePath("project.json").toStdString()) == original);
     }
 
+    // The blind study is part of the project: study.json beside the manifest, referenced by it;
+    // saveStudy() rewrites only that file (a participant's answers after every trial).
+    void studyRoundTrip()
+    {
+        QTemporaryDir dir;
+        Project p = makeProject();
+        p.study = ForcedChoiceStudy({"real", "dpds", "hmm"}, {"s1", "s2"}, 5);
+        p.study->addParticipant("P01");
+        p.save(dir.path().toStdString());
+        QVERIFY(readBytes(dir.filePath("project.json")).contains("\"study\": \"study.json\""));
+        Project loaded = Project::load(dir.path().toStdString());
+        QVERIFY(loaded.study);
+        QVERIFY(loaded == p);
+
+        const QByteArray manifest = readBytes(dir.filePath("project.json"));
+        loaded.study->answer(0, 2, StudyChoice::Right, 1.5);
+        loaded.study->addParticipant("P02");
+        loaded.saveStudy();
+        QCOMPARE(readBytes(dir.filePath("project.json")), manifest); // manifest untouched
+        const Project again = Project::load(dir.path().toStdString());
+        QCOMPARE(again.study->sessions().size(), size_t(2));
+        QVERIFY(again.study->sessions()[0].trials[2].choice == StudyChoice::Right);
+        QVERIFY(again == loaded);
+
+        // Equality sees the study; a missing study file is a load error naming the field.
+        Project without = again;
+        without.study.reset();
+        QVERIFY(!(without == again));
+        QVERIFY(QFile::remove(dir.filePath("study.json")));
+        try {
+            Project::load(dir.path().toStdString());
+            QFAIL("loaded a project whose study file is missing");
+        } catch (const Error &e) {
+            QCOMPARE(QString::fromStdString(e.field()), QString("study"));
+        }
+        QVERIFY_THROWS_EXCEPTION(Error, Project().saveStudy());
+    }
+
     void savesAreStable()
     {
         // save(load(x)) writes the same bytes: no drift in number formatting or key order.

@@ -1,4 +1,4 @@
-#include "eval/ForcedChoiceStudy.h"
+#include "project/ForcedChoiceStudy.h"
 
 #include "util/Error.h"
 

@@ -1,7 +1,7 @@
 // The forced-choice study design (paper section 4): every pair of methods twice per session with
 // sides swapped, sides balanced per method, random but reproducible order, participants apart,
 // and the JSON the studio stores in the project.
-#include "eval/ForcedChoiceStudy.h"
+#include "project/ForcedChoiceStudy.h"
 
 #include "util/Error.h"
 

@@ -1,0 +1,66 @@
+#pragma once
+// The videos of the blind study (paper §4): for an utterance and a method, the frames a
+// participant sees. "real" is the recorded video; any other method is a trained dynamic model
+// of the project (its kind: "dpds", "slds", "brand", "hmm"), whose trajectory for the
+// utterance's frame labels (models.md §0 voting) is synthesised with the project's AAM and
+// composited into the recorded frames at the face's tracked pose — so both sides of a trial
+// show the same person, background and head motion, and differ only in the modelled face.
+//
+// Thread-safe: render() runs in worker tasks; the AAM, the models and the per-utterance poses
+// are loaded or tracked once and shared.
+#include "project/Project.h"
+
+#include <QImage>
+#include <QString>
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace lipsync {
+class AamModel;
+class DynamicModel;
+class Feedback;
+struct Similarity;
+} // namespace lipsync
+
+namespace lipsync::studio {
+
+struct StudyClip
+{
+    std::vector<QImage> frames;
+    double frameRate = 25.0;
+    QString mediaPath; // the recording: its sound is played with either side
+};
+
+class StudyClipRenderer
+{
+public:
+    static constexpr const char *kRealMethod = "real";
+
+    explicit StudyClipRenderer(Project project);
+    ~StudyClipRenderer();
+
+    // Throws lipsync::Error naming the file for unreadable media, a missing AAM or model, or an
+    // utterance without features or phones; Canceled when `feedback` is canceled.
+    StudyClip render(const std::string &utterance, const std::string &method, Feedback &feedback);
+
+    // The methods a study can compare in `project`: "real" and each trained dynamic model kind.
+    static std::vector<std::string> availableMethods(const Project &project);
+
+private:
+    struct Poses;
+    std::shared_ptr<const AamModel> aam();
+    std::shared_ptr<const DynamicModel> model(const std::string &kind);
+    std::shared_ptr<const Poses> poses(const Sequence &sequence, Feedback &feedback);
+
+    const Project m_project;
+    std::mutex m_mutex;
+    std::shared_ptr<const AamModel> m_aam;
+    std::map<std::string, std::shared_ptr<const DynamicModel>> m_models;
+    std::map<std::string, std::shared_ptr<const Poses>> m_poses;
+};
+
+} // namespace lipsync::studio

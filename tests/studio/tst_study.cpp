@@ -1,0 +1,259 @@
+// The blind study in the studio (paper §4, Table 1): set up a study on the demo project with a
+// model trained in the test, run participants through the full-screen participant mode with the
+// keys a participant uses, and check that every answer is in the project on disk right after its
+// trial, that participants are kept apart, and that the results view shows the tally.
+#include "DemoWindow.h"
+
+#include "app/ProjectDocument.h"
+#include "app/SurfaceFormat.h"
+#include "build/ModelsPanel.h"
+#include "compare/ParticipantSession.h"
+#include "compare/ParticipantView.h"
+#include "compare/StudyController.h"
+#include "compare/StudyResultsView.h"
+#include "compare/StudySetupDialog.h"
+#include "eval/StudyTally.h"
+#include "project/Project.h"
+#include "tasks/Task.h"
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QDir>
+#include <QFile>
+#include <QLabel>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QUndoStack>
+
+using namespace lipsync;
+using namespace lipsync::studio;
+using lipsync::studio::testing::openDemoWindow;
+
+class TestStudy : public QObject
+{
+    Q_OBJECT
+public:
+    static void initMain()
+    {
+        setDefaultSurfaceFormat();
+        QStandardPaths::setTestModeEnabled(true);
+    }
+
+private:
+    MainWindow *m_window = nullptr;
+    StudyController *m_study = nullptr;
+    QTemporaryDir m_dir;
+    QString m_folder;
+
+    void waitIdle() { QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 120000); }
+    const ForcedChoiceStudy &study() const { return *m_window->document()->project().study; }
+    ForcedChoiceStudy onDisk() const
+    {
+        return ForcedChoiceStudy::load(QDir(m_folder).filePath("study.json").toStdString());
+    }
+    // Waits for the current trial's videos, checks what the participant sees, answers by key.
+    QString taskReport() const
+    {
+        QStringList lines;
+        for (Task *t : m_window->taskRunner()->tasks())
+            lines << QStringLiteral("%1: %2 %3").arg(t->title()).arg(int(t->state())).arg(t->errorMessage());
+        return lines.join(QLatin1Char('\n'));
+    }
+    void answerByKey(ParticipantView *view, int trial, int count, Qt::Key key)
+    {
+        QTRY_VERIFY2_WITH_TIMEOUT(view->isAcceptingAnswers(), qPrintable(taskReport()), 40000);
+        QCOMPARE(view->progressText(), QStringLiteral("Trial %1 of %2").arg(trial + 1).arg(count));
+        // No method name anywhere on the participant's screen (only the question says "real").
+        for (QLabel *label : view->findChildren<QLabel *>())
+            for (const char *name : {"recorded", "Real", "hmm", "HMM", "dpds", "DPDS", "model"})
+                QVERIFY2(!label->text().contains(QLatin1String(name)), qPrintable(label->text()));
+        QTest::keyClick(view, key);
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        openDemoWindow(m_window);
+        if (QTest::currentTestFailed())
+            return;
+        m_study = m_window->findChild<StudyController *>();
+        QVERIFY(m_study);
+        // A model to compare with the recordings: HMM-mean trains in a moment on the demo features.
+        auto *panel = m_window->findChild<ModelsPanel *>();
+        for (const char *kind : {"dpds", "slds", "brand", "hmm"})
+            panel->kindCheck(kind)->setChecked(QLatin1String(kind) == QLatin1String("hmm"));
+        QTest::mouseClick(panel->trainButton(), Qt::LeftButton);
+        waitIdle();
+        QVERIFY(panel->model("hmm"));
+        // Participants' answers go to the project on disk: work on a saved copy of the demo.
+        m_folder = m_dir.filePath("demo-study");
+        m_window->document()->saveTo(m_folder);
+    }
+
+    void cleanupTestCase() { delete m_window; }
+
+    void setUpIsAnUndoableEdit()
+    {
+        QVERIFY(!m_study->runAction()->isEnabled()); // nothing to run before a study exists
+        const int undoBefore = m_window->undoStack()->count();
+        // Through the menu: the dialog lists real and the trained model; two utterances.
+        QTimer::singleShot(0, this, [] {
+            auto *dialog = qobject_cast<StudySetupDialog *>(QApplication::activeModalWidget());
+            QVERIFY(dialog);
+            QStringList methods;
+            for (int i = 0; i < dialog->methodList()->count(); ++i)
+                methods << dialog->methodList()->item(i)->data(Qt::UserRole).toString();
+            QCOMPARE(methods, QStringList({"real", "hmm"}));
+            QCOMPARE(dialog->utteranceCount()->maximum(), 10);
+            dialog->utteranceCount()->setValue(2);
+            dialog->seed()->setValue(7);
+            dialog->accept();
+        });
+        m_study->setUpAction()->trigger();
+        QVERIFY(m_window->document()->project().study);
+        QVERIFY(study().methods() == (std::vector<std::string>{"real", "hmm"}));
+        QCOMPARE(study().utterances().size(), size_t(2));
+        QCOMPARE(study().trialsPerSession(), 2); // one pair, shown twice with sides swapped
+        QCOMPARE(m_window->undoStack()->count(), undoBefore + 1);
+        QVERIFY(m_study->runAction()->isEnabled());
+        m_window->undoStack()->undo();
+        QVERIFY(!m_window->document()->project().study);
+        m_window->undoStack()->redo();
+        QVERIFY(m_window->document()->project().study);
+        QVERIFY(m_window->document()->isModified());
+    }
+
+    void participantModeRecordsEveryAnswer()
+    {
+        // Starting saves the study with the project (answers are written after every trial).
+        ParticipantSession *session = m_study->startParticipant(QStringLiteral("P01"));
+        QVERIFY(session);
+        QVERIFY(!m_window->document()->isModified());
+        QVERIFY(QFile::exists(QDir(m_folder).filePath("study.json")));
+        ParticipantView *view = session->view();
+        view->setAudioEnabled(false);
+        QVERIFY(view->isFullScreen());
+
+        answerByKey(view, 0, 2, Qt::Key_Left);
+        // The first answer is on disk before the second trial starts.
+        QVERIFY(onDisk().sessions().at(0).trials[0].choice == StudyChoice::Left);
+        QVERIFY(onDisk().sessions().at(0).trials[1].choice == StudyChoice::Unanswered);
+        QVERIFY(onDisk().sessions().at(0).trials[0].responseSeconds >= 0);
+
+        QTRY_VERIFY_WITH_TIMEOUT(view->isAcceptingAnswers(), 60000);
+        QTRY_VERIFY(view->currentFrame() > 3); // the videos play
+        const QString shot = QDir(QString::fromLatin1(LIPSYNC_BINARY_DIR)).filePath("participant-mode.png");
+        QVERIFY(view->grab().save(shot));
+        // Replay restarts both videos.
+        QTest::keyClick(view, Qt::Key_R);
+        QVERIFY(view->currentFrame() < 3);
+        answerByKey(view, 1, 2, Qt::Key_Down);
+        QVERIFY(!view->isAcceptingAnswers());
+        QVERIFY(view->promptText().contains("Esc"));
+        QVERIFY(onDisk().sessions().at(0).trials[1].choice == StudyChoice::Undecided);
+        QTest::keyClick(view, Qt::Key_Escape); // finished: leaves without asking
+        QTRY_VERIFY(!m_study->participantSession());
+        QVERIFY(!m_window->document()->isModified());
+
+        // Reloading the project gives the same answers.
+        const Project reloaded = Project::load(m_folder.toStdString());
+        QVERIFY(reloaded.study);
+        QVERIFY(*reloaded.study == study());
+        QVERIFY(reloaded.study->sessions()[0].complete());
+    }
+
+    void secondParticipantIsKeptApart()
+    {
+        QCOMPARE(m_study->nextPseudonym(), QStringLiteral("P02"));
+        ParticipantSession *session = m_study->startParticipant(QStringLiteral("P02"), false);
+        QVERIFY(session);
+        ParticipantView *view = session->view();
+        view->setAudioEnabled(false);
+        answerByKey(view, 0, 2, Qt::Key_Right);
+        // Esc in the middle asks first; "No" keeps the participant in the study.
+        QTRY_VERIFY_WITH_TIMEOUT(view->isAcceptingAnswers(), 60000);
+        QTimer::singleShot(0, this, [] {
+            auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+            QVERIFY(box);
+            box->button(QMessageBox::No)->click();
+        });
+        QTest::keyClick(view, Qt::Key_Escape);
+        QVERIFY(m_study->participantSession());
+        QTimer::singleShot(0, this, [] {
+            auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+            QVERIFY(box);
+            box->button(QMessageBox::Yes)->click();
+        });
+        QTest::keyClick(view, Qt::Key_Escape);
+        QTRY_VERIFY(!m_study->participantSession());
+
+        QCOMPARE(study().sessions().size(), size_t(2));
+        const StudySession &first = study().sessions()[0];
+        const StudySession &second = study().sessions()[1];
+        QVERIFY(second.participant == "P02");
+        QVERIFY(second.seed != first.seed); // a fresh random order of its own
+        QCOMPARE(second.answered(), 1);
+        QVERIFY(second.trials[0].choice == StudyChoice::Right);
+        QCOMPARE(first.answered(), 2); // untouched
+        QVERIFY(first.trials[0].choice == StudyChoice::Left);
+        QVERIFY(onDisk() == study());
+
+        // P02 resumes at the open trial.
+        session = m_study->startParticipant(QStringLiteral("P02"), false);
+        QVERIFY(session);
+        session->view()->setAudioEnabled(false);
+        answerByKey(session->view(), 1, 2, Qt::Key_Left);
+        QTRY_VERIFY(!session->view()->isAcceptingAnswers());
+        QTest::keyClick(session->view(), Qt::Key_Escape);
+        QTRY_VERIFY(!m_study->participantSession());
+        QVERIFY(study().sessions()[1].complete());
+        QVERIFY(onDisk() == study());
+        QCOMPARE(m_window->undoStack()->undoText(), QStringLiteral("Answer of P02"));
+    }
+
+    void resultsShowTheTally()
+    {
+        StudyResultsView *results = m_study->showResults();
+        QVERIFY(results);
+        const StudyTally tally = StudyTally::fromStudy(study());
+        QCOMPARE(tally.answered, 4);
+        QTableWidget *pairs = results->pairTable();
+        QCOMPARE(pairs->rowCount(), 1);
+        QCOMPARE(pairs->item(0, 0)->text(), QStringLiteral("real"));
+        QCOMPARE(pairs->item(0, 4)->text(), QStringLiteral("hmm"));
+        QCOMPARE(pairs->item(0, 1)->text().toInt(), tally.pairs[0].preferA);
+        QCOMPARE(pairs->item(0, 2)->text().toInt(), 1); // P01's "can't decide"
+        QCOMPARE(pairs->item(0, 3)->text().toInt(), tally.pairs[0].preferB);
+        QCOMPARE(tally.pairs[0].preferA + tally.pairs[0].preferB, 3);
+        QCOMPARE(results->rankingTable()->rowCount(), 2);
+        QVERIFY(results->summary()->text().startsWith(QStringLiteral("Participants: 2, answers: 4")));
+
+        const QString csv = m_dir.filePath("table1.csv");
+        results->exportCsv(csv);
+        QFile file(csv);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = file.readAll().split('\n');
+        QCOMPARE(lines[0], QByteArray("method_a,method_b,prefer_a,undecided,prefer_b,n_decided,p_value"));
+        QVERIFY2(lines[1].startsWith(QStringLiteral("real,hmm,%1,1,%2,3,")
+                                         .arg(tally.pairs[0].preferA)
+                                         .arg(tally.pairs[0].preferB)
+                                         .toLatin1()),
+                 lines[1].constData());
+        QVERIFY(QFile::exists(StudyResultsView::rankingPath(csv)));
+
+        // The table follows the document: undoing P02's last answer updates it.
+        m_window->undoStack()->undo();
+        QVERIFY(results->summary()->text().startsWith(QStringLiteral("Participants: 2, answers: 3")));
+    }
+};
+
+QTEST_MAIN(TestStudy)
+#include "tst_study.moc"
