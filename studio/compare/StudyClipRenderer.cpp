@@ -1,13 +1,11 @@
 #include "compare/StudyClipRenderer.h"
 
 #include "aam/AamModel.h"
-#include "aam/AamSynthesizer.h"
 #include "aam/FaceDetector.h"
-#include "aam/Procrustes.h"
-#include "aam/VideoTracking.h"
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
 #include "io/VideoReader.h"
+#include "render/FaceRenderer.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
@@ -16,13 +14,6 @@
 #include <algorithm>
 
 namespace lipsync::studio {
-
-// Where the face is in each recorded frame: the similarity from the AAM's normalised frame to
-// the image, from tracking the recording with the same AAM.
-struct StudyClipRenderer::Poses
-{
-    std::vector<Similarity> pose;
-};
 
 namespace {
 
@@ -90,27 +81,22 @@ std::shared_ptr<const DynamicModel> StudyClipRenderer::model(const std::string &
     return slot;
 }
 
-std::shared_ptr<const StudyClipRenderer::Poses> StudyClipRenderer::poses(const Sequence &sequence,
-                                                                         Feedback &feedback)
+std::shared_ptr<const FaceRenderer> StudyClipRenderer::faces(const Sequence &sequence, Feedback &feedback)
 {
     {
         std::lock_guard lock(m_mutex);
-        if (const auto it = m_poses.find(sequence.id); it != m_poses.end())
+        if (const auto it = m_faces.find(sequence.id); it != m_faces.end())
             return it->second;
     }
+    // The face is tracked in the recording once (core/render/FaceRenderer); both sides of a trial
+    // then share its pose, so they differ only in the modelled face.
     const std::shared_ptr<const AamModel> model = aam();
     FaceDetectorPaths paths;
     paths.useDlib = false;
     FaceDetector detector(paths);
-    const VideoTrackingResult tracked =
-        trackVideo(*model, m_project.mediaPath(sequence), detector, feedback, sequence.landmarks);
-    const AamSynthesizer synthesizer(*model);
-    auto poses = std::make_shared<Poses>();
-    for (Eigen::Index t = 0; t < tracked.shapes.rows(); ++t)
-        poses->pose.push_back(alignSimilarity(synthesizer.shape(tracked.features.row(t).transpose()),
-                                              tracked.shapes.row(t).transpose()));
+    auto renderer = std::make_shared<const FaceRenderer>(*model, m_project.mediaPath(sequence), feedback, &detector);
     std::lock_guard lock(m_mutex);
-    return m_poses.emplace(sequence.id, std::move(poses)).first->second;
+    return m_faces.emplace(sequence.id, std::move(renderer)).first->second;
 }
 
 StudyClip StudyClipRenderer::render(const std::string &utterance, const std::string &method, Feedback &feedback)
@@ -125,8 +111,7 @@ StudyClip StudyClipRenderer::render(const std::string &utterance, const std::str
     const int frames = reader.frameCount();
 
     Eigen::MatrixXd generated;
-    std::shared_ptr<const Poses> facePoses;
-    std::shared_ptr<const AamModel> faceModel;
+    std::shared_ptr<const FaceRenderer> renderer;
     if (method != kRealMethod) {
         if (sequence->phones.isEmpty())
             throw Error("sequence '" + utterance + "' has no phone alignment to generate from",
@@ -134,19 +119,15 @@ StudyClip StudyClipRenderer::render(const std::string &utterance, const std::str
         const std::shared_ptr<const DynamicModel> dynamics = model(method);
         // Labels on the video's own frame grid, so frame t of the trajectory is frame t of the clip.
         generated = dynamics->generate(frameLabelsFromTier(sequence->phones, clip.frameRate, frames));
-        faceModel = aam();
         Feedback tracking(feedback, 0.0, 0.7);
-        facePoses = poses(*sequence, tracking);
+        renderer = faces(*sequence, tracking);
     }
     const double from = method == kRealMethod ? 0.0 : 0.7;
-    std::unique_ptr<AamSynthesizer> synthesizer;
-    if (faceModel)
-        synthesizer = std::make_unique<AamSynthesizer>(*faceModel);
     for (int t = 0; t < frames; ++t) {
         feedback.throwIfCanceled();
         cv::Mat frame = reader.frame(t);
-        if (synthesizer && t < generated.rows() && t < int(facePoses->pose.size()))
-            synthesizer->composite(generated.row(t).transpose(), facePoses->pose[size_t(t)], frame);
+        if (renderer && t < generated.rows())
+            renderer->renderInto(t, generated.row(t).transpose(), frame);
         clip.frames.push_back(toImage(frame));
         feedback.setProgress(from + (1.0 - from) * double(t + 1) / frames);
     }

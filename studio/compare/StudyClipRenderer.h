@@ -6,7 +6,7 @@
 // composited into the recorded frames at the face's tracked pose — so both sides of a trial
 // show the same person, background and head motion, and differ only in the modelled face.
 //
-// Thread-safe: render() runs in worker tasks; the AAM, the models and the per-utterance poses
+// Thread-safe: render() runs in worker tasks; the AAM, the models and the per-utterance face renderers (the tracked poses)
 // are loaded or tracked once and shared.
 #include "project/Project.h"
 
@@ -23,7 +23,7 @@ namespace lipsync {
 class AamModel;
 class DynamicModel;
 class Feedback;
-struct Similarity;
+class FaceRenderer;
 } // namespace lipsync
 
 namespace lipsync::studio {
@@ -51,16 +51,16 @@ public:
     static std::vector<std::string> availableMethods(const Project &project);
 
 private:
-    struct Poses;
     std::shared_ptr<const AamModel> aam();
     std::shared_ptr<const DynamicModel> model(const std::string &kind);
-    std::shared_ptr<const Poses> poses(const Sequence &sequence, Feedback &feedback);
+    std::shared_ptr<const FaceRenderer> faces(const Sequence &sequence, Feedback &feedback);
 
     const Project m_project;
     std::mutex m_mutex;
     std::shared_ptr<const AamModel> m_aam;
     std::map<std::string, std::shared_ptr<const DynamicModel>> m_models;
-    std::map<std::string, std::shared_ptr<const Poses>> m_poses;
+    // After m_aam: each renderer refers to it.
+    std::map<std::string, std::shared_ptr<const FaceRenderer>> m_faces;
 };
 
 } // namespace lipsync::studio
