@@ -125,13 +125,18 @@ cv::Rect2d boundingBox(const Eigen::VectorXd &shape)
 int runAamEval(const QStringList &args)
 {
     const Arguments a(args);
-    if (const QStringList bad = a.unknown({"model", "images", "json", "init", "levels"}); !bad.isEmpty())
+    if (const QStringList bad = a.unknown({"model", "images", "json", "init", "levels", "algorithm", "multi-start"}); !bad.isEmpty())
         return fail("aam eval: unknown option " + bad.join(", "), 2);
     if (!a.has("model") || !a.has("images"))
-        return fail("usage: lipsync aam eval --model MODEL --images DIR [--init detector|dlib|none] [--json]", 2);
+        return fail("usage: lipsync aam eval --model MODEL --images DIR [--init detector|dlib|none] "
+                    "[--algorithm project-out|wiberg] [--multi-start] [--json]",
+                    2);
     const QString init = a.value("init", "detector");
     if (init != "detector" && init != "dlib" && init != "none")
         return fail("aam eval: --init must be detector, dlib or none", 2);
+    const QString algorithm = a.value("algorithm", "project-out");
+    if (algorithm != "project-out" && algorithm != "wiberg")
+        return fail("aam eval: --algorithm must be project-out or wiberg", 2);
     const AamModel model = AamModel::load(a.value("model").toStdString());
     const AamFitter fitter(model);
     FaceDetectorPaths paths;
@@ -188,6 +193,9 @@ int runAamEval(const QStringList &args)
         if (init != "none") {
             const auto t2 = std::chrono::steady_clock::now();
             AamFitOptions fitOptions;
+            if (algorithm == "wiberg")
+                fitOptions.algorithm = AamFitAlgorithm::Wiberg;
+            fitOptions.multiStart = a.flag("multi-start");
             // dlib's points are already close: refine at the finest level only.
             if (init == "dlib")
                 fitOptions.coarsestLevel = 0;
@@ -225,6 +233,8 @@ int runAamEval(const QStringList &args)
                     {"fitted", fitted},
                     {"no_face", noFace},
                     {"init", init},
+                    {"algorithm", algorithm},
+                    {"multi_start", a.flag("multi-start")},
                     {"nme_mean", mean(nmes)},
                     {"nme_median", median(nmes)},
                     {"nme_init_mean", mean(initNmes)},

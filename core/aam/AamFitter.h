@@ -6,6 +6,16 @@
 // with a (params x pixels) matrix and a compositional update of the 23 vertices. After each
 // update the shape is projected back onto the shape model (clamped to +-3 s.d.), which is also
 // where points a user fixed are honoured (weighted projection that keeps them in place).
+//
+// Project-out with a fixed Jacobian assumes the face looks like the mean texture; that holds for a
+// person-specific model (tracking), not for faces in the wild. AamFitAlgorithm::Wiberg recomputes
+// the steepest-descent images each iteration from the gradient of the current appearance instance
+// A0 + A c, with c the projection of the current sample, and projects the appearance out of them
+// (the Wiberg / fast simultaneous inverse compositional algorithm of Tzimiropoulos & Pantic,
+// "Optimization problems for fast AAM fitting in-the-wild", ICCV 2013, §4): a (params x params)
+// solve per iteration instead of a product with a precomputed matrix. It also weighs the shape
+// model's Gaussian prior against the texture residual (the MAP form of their eq. 15), which keeps
+// in-the-wild fits to plausible shapes.
 #include "aam/AamModel.h"
 
 #include <Eigen/Core>
@@ -19,12 +29,22 @@ namespace lipsync {
 // and fitting alike: it widens the basin of convergence of the Gauss-Newton steps.
 cv::Mat smoothedForFitting(const cv::Mat &grey);
 
+enum class AamFitAlgorithm {
+    ProjectOut, // fixed Jacobian of the mean texture: fast, for person-specific models
+    Wiberg,     // Jacobian of the current appearance instance: for generic models
+};
+
 struct AamFitOptions
 {
+    AamFitAlgorithm algorithm = AamFitAlgorithm::ProjectOut;
     int maxIterations = 30;     // per level
     double tolerance = 0.03;    // stop when no vertex moves more (pixels of the level frame)
     int coarsestLevel = -1;     // -1: the model's coarsest; 0 to fit the finest level only
     double shapeLimit = 3.0;    // shape parameters are clamped to this many s.d.
+    // Also fit from the start scaled by 0.9 and 1.1 and shifted by 6 % of its RMS radius in four
+    // directions about its centroid, keeping the fit with the lowest residual: for a detector's
+    // start on a generic face, where one start often lands in a wrong minimum. 7x the cost.
+    bool multiStart = false;
     // Points that must stay where they are (PointState::Fixed): flat shape and a mask.
     Eigen::VectorXd fixedShape;
     std::vector<bool> fixedMask;
@@ -67,6 +87,8 @@ public:
     Eigen::VectorXd modelShape(const Similarity &pose, const Eigen::VectorXd &params) const;
 
 private:
+    AamFitResult fitOnce(const cv::Mat &grey, const Eigen::VectorXd &initialShape,
+                         const AamFitOptions &options) const;
     struct Level
     {
         Eigen::VectorXd reference;    // s0 in reference pixels
@@ -74,8 +96,14 @@ private:
         Eigen::MatrixXf appearance;   // A (pixels x m)
         Eigen::MatrixXd basis;        // B (2k x P), orthonormal: similarity + shape
         Eigen::MatrixXf update;       // (SD^T SD)^-1 SD^T  (P x pixels)
+        Eigen::MatrixXf warpX, warpY; // dW/dp per pixel, x and y components (pixels x P)
+        Eigen::MatrixXd toShapeParams; // M: change of the shape parameters b per unit of p (ns x P)
     };
     void prepareLevel(int level);
+    // Steepest-descent images (pixels x P) of a texture on the level's frame, with the appearance
+    // subspace projected out.
+    Eigen::MatrixXf steepestDescent(const Level &level, const PiecewiseAffineWarp &warp,
+                                    const Eigen::VectorXf &texture) const;
 
     const AamModel &m_model;
     std::vector<Level> m_levels;

@@ -33,7 +33,8 @@ struct ModelReference
 class Project
 {
 public:
-    static constexpr int kFormatVersion = 1;
+    // 2: sequences may carry per-frame fitErrors. Version 1 manifests still load.
+    static constexpr int kFormatVersion = 2;
     static constexpr const char *kManifestName = "project.json";
     static constexpr const char *kStudyFileName = "study.json";
 

@@ -192,7 +192,7 @@ private:
     Sequence readSequence(const QJsonObject &o, const std::string &field) const
     {
         checkKeys(o, field, {"id", "mediaFile", "frameRate", "frameCount", "transcript", "features",
-                             "tiers", "landmarks"});
+                             "tiers", "landmarks", "fitErrors"});
         Sequence s;
         s.id = string(require(o, "id", field), member(field, "id"), false);
         // The id names files (features/<id>.csv), so it must stay inside the project folder.
@@ -246,6 +246,25 @@ private:
             const std::string relative = string(o.value("features"), featuresField, false);
             if (m_readFeatures)
                 s.features = readFeatures(relative, s, featuresField);
+        }
+
+        if (o.contains("fitErrors")) {
+            const std::string errorsField = member(field, "fitErrors");
+            const QJsonArray errors = array(o.value("fitErrors"), errorsField);
+            if (errors.size() != s.frameCount)
+                fail(errorsField, "has " + std::to_string(errors.size()) + " values, expected one per frame ("
+                                      + std::to_string(s.frameCount) + ")");
+            s.fitErrors.reserve(size_t(errors.size()));
+            for (qsizetype i = 0; i < errors.size(); ++i) {
+                if (errors[i].isNull()) {
+                    s.fitErrors.push_back(Sequence::kNoFace);
+                    continue;
+                }
+                const double e = number(errors[i], element(errorsField, i));
+                if (e < 0)
+                    fail(element(errorsField, i), "must not be negative (null marks a frame without a face)");
+                s.fitErrors.push_back(e);
+            }
         }
         return s;
     }
@@ -372,7 +391,7 @@ const QStringList &keyOrder()
     static const QStringList order{"format",     "version",   "kind",      "name",
                                    "sequences",  "models",    "id",        "mediaFile",
                                    "frameRate",  "frameCount", "transcript", "features",
-                                   "tiers",      "words",     "phones",    "landmarks",
+                                   "tiers",      "words",     "phones",    "landmarks", "fitErrors",
                                    "frame",      "points",    "start",     "end",
                                    "label",      "userEdited", "file",      "study"};
     return order;
@@ -509,6 +528,12 @@ QJsonObject ProjectManifest::toJson(const Project &project, const std::string &t
             landmarks.append(QJsonObject{{"frame", frame}, {"points", points}});
         }
         o.insert("landmarks", landmarks);
+        if (!s.fitErrors.empty()) {
+            QJsonArray errors;
+            for (double e : s.fitErrors)
+                errors.append(e >= 0 ? QJsonValue(e) : QJsonValue(QJsonValue::Null));
+            o.insert("fitErrors", errors);
+        }
         sequences.append(o);
     }
     QJsonArray models;

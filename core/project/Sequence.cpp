@@ -11,7 +11,7 @@ bool Sequence::operator==(const Sequence &other) const
     return sameFeatures && id == other.id && mediaFile == other.mediaFile
            && frameRate == other.frameRate && frameCount == other.frameCount
            && transcript == other.transcript && landmarks == other.landmarks
-           && words == other.words && phones == other.phones;
+           && words == other.words && phones == other.phones && fitErrors == other.fitErrors;
 }
 
 } // namespace lipsync

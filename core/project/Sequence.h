@@ -7,6 +7,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace lipsync {
 
@@ -24,6 +25,12 @@ struct Sequence
     // Per-frame face features y_t (the AAM parameters): frameCount rows x d columns; empty
     // until the AAM has been fitted. Stored beside the manifest as features/<id>.csv.
     Eigen::MatrixXd features;
+    // Per-frame AAM fit error of the tracking that produced the features (the mean squared
+    // normalised texture residual; kNoFace where the tracker found no face): frameCount values,
+    // or empty when the sequence has not been tracked. It orders the worst-fit queue, so it is
+    // saved with the project (manifest version 2, "fitErrors", null for kNoFace).
+    std::vector<double> fitErrors;
+    static constexpr double kNoFace = -1.0;
 
     double duration() const { return frameRate > 0 ? frameCount / frameRate : 0.0; }
     bool operator==(const Sequence &other) const;

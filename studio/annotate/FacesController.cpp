@@ -148,7 +148,11 @@ void FacesController::updateActions()
     const bool open = m_window->document()->isOpen();
     for (QAction *a : {m_detect, m_copyPrevious, m_nextUnlabelled, m_buildAam, m_trackSequence, m_trackAll})
         a->setEnabled(open);
-    m_nextWorst->setEnabled(open && !m_fitErrors.isEmpty());
+    const ProjectDocument *doc = m_window->document();
+    bool tracked = false;
+    for (int row = 0; open && !tracked && row < doc->sequenceCount(); ++row)
+        tracked = !doc->sequence(row).fitErrors.empty();
+    m_nextWorst->setEnabled(tracked);
     m_modes->setEnabled(m_model != nullptr || open);
 }
 
@@ -157,7 +161,6 @@ void FacesController::onDocumentReset()
     m_model.reset();
     m_modelName.clear();
     m_modelUnsaved = false;
-    m_fitErrors.clear();
     if (m_modesView)
         m_modesView->setModel(nullptr);
     updateActions();
@@ -202,7 +205,7 @@ void FacesController::refreshFrame()
     const auto prev = s.landmarks.find(frame - 1);
     view->setOnionSkin(prev != s.landmarks.end() ? std::optional<LandmarkSet>(prev->second) : std::nullopt);
     QString info;
-    const std::vector<double> errors = m_fitErrors.value(QString::fromStdString(s.id));
+    const std::vector<double> &errors = s.fitErrors;
     if (frame >= 0 && frame < int(errors.size()))
         info = errors[std::size_t(frame)] >= 0 ? tr("Fit error %1").arg(errors[std::size_t(frame)], 0, 'f', 4)
                                                : tr("No face found by the tracker");
@@ -313,7 +316,7 @@ void FacesController::nextWorstFrame()
     const int row = m_window->currentSequence();
     if (row < 0)
         return;
-    const std::vector<double> errors = m_fitErrors.value(QString::fromStdString(m_window->document()->sequence(row).id));
+    const std::vector<double> &errors = m_window->document()->sequence(row).fitErrors;
     if (errors.empty()) {
         m_window->statusBar()->showMessage(tr("Track this sequence first to rank its frames by fit error."), 4000);
         return;
@@ -463,7 +466,6 @@ Task *FacesController::trackSequences(const QList<int> &rows)
         paths.useDlib = false;
         FaceDetector detector(paths);
         std::vector<ProjectDocument::FaceData> results;
-        std::vector<std::pair<QString, std::vector<double>>> errors;
         for (std::size_t j = 0; j < jobs.size(); ++j) {
             const Job &job = jobs[j];
             feedback.setStatus(job.id.toStdString());
@@ -472,7 +474,7 @@ Task *FacesController::trackSequences(const QList<int> &rows)
             const int n = job.frameCount;
             Eigen::MatrixXd features = Eigen::MatrixXd::Zero(n, model->combinedModes());
             std::map<int, LandmarkSet> landmarks = job.landmarks;
-            std::vector<double> frameErrors(std::size_t(n), -1.0);
+            std::vector<double> frameErrors(std::size_t(n), Sequence::kNoFace);
             bool any = false;
             for (int f = 0; f < n; ++f) {
                 feedback.throwIfCanceled();
@@ -520,13 +522,10 @@ Task *FacesController::trackSequences(const QList<int> &rows)
                 ++first;
             for (int f = 0; f < first; ++f)
                 features.row(f) = features.row(first);
-            results.push_back({job.row, std::move(landmarks), std::move(features)});
-            errors.emplace_back(job.id, std::move(frameErrors));
+            results.push_back({job.row, std::move(landmarks), std::move(features), std::move(frameErrors)});
         }
         feedback.setProgress(1.0);
-        return [this, results, errors, title] {
-            for (const auto &[id, e] : errors)
-                m_fitErrors.insert(id, e);
+        return [this, results, title] {
             m_window->document()->requestFaces(results, title);
             refreshFrame();
         };

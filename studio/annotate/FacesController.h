@@ -48,7 +48,6 @@ public:
     // The AAM in use (built this session or loaded from the project), or null.
     std::shared_ptr<const AamModel> model() const { return m_model; }
     // Per-frame fit errors of a tracked sequence (negative: no face), empty if not tracked.
-    std::vector<double> fitErrors(const QString &sequenceId) const { return m_fitErrors.value(sequenceId); }
 
     // The actions, callable directly (tests). Each returns the task started, or null.
     Task *detectLandmarks();
@@ -84,7 +83,6 @@ private:
     std::shared_ptr<const AamModel> m_model;
     QString m_modelName;
     bool m_modelUnsaved = false; // built in the read-only demo: written when the project is saved
-    QHash<QString, std::vector<double>> m_fitErrors;
     int m_worstRank = -1; // where W is in the current sequence's worst-fit queue
 };
 

@@ -329,7 +329,7 @@ void FrameView::wheelEvent(QWheelEvent *event)
 
 void FrameView::mousePressEvent(QMouseEvent *event)
 {
-    if (event->button() == Qt::LeftButton && m_editable && !m_image.isNull()) {
+    if (event->button() == Qt::LeftButton && m_editable && !m_image.isNull() && !m_spaceHeld) {
         const int hit = pointAt(event->position());
         if (hit >= 0) {
             m_selected = hit;
@@ -395,7 +395,10 @@ void FrameView::mouseReleaseEvent(QMouseEvent *event)
         return;
     }
     m_dragging = false;
-    unsetCursor();
+    if (m_spaceHeld)
+        setCursor(Qt::OpenHandCursor);
+    else
+        unsetCursor();
 }
 
 void FrameView::mouseDoubleClickEvent(QMouseEvent *event)
@@ -422,7 +425,51 @@ void FrameView::keyPressEvent(QKeyEvent *event)
         emit landmarksEdited(set, tr("Remove %1").arg(pointName(index)));
         return;
     }
+    if (event->key() == Qt::Key_Space && event->modifiers() == Qt::NoModifier) {
+        if (!event->isAutoRepeat()) {
+            m_spaceHeld = true;
+            if (!m_dragging)
+                setCursor(Qt::OpenHandCursor);
+        }
+        return;
+    }
     QWidget::keyPressEvent(event);
+}
+
+void FrameView::keyReleaseEvent(QKeyEvent *event)
+{
+    if (event->key() == Qt::Key_Space) {
+        if (!event->isAutoRepeat()) {
+            m_spaceHeld = false;
+            if (!m_dragging)
+                unsetCursor();
+        }
+        return;
+    }
+    QWidget::keyReleaseEvent(event);
+}
+
+void FrameView::focusOutEvent(QFocusEvent *event)
+{
+    // The release may go to another widget: do not stay in pan mode.
+    m_spaceHeld = false;
+    if (!m_dragging)
+        unsetCursor();
+    QWidget::focusOutEvent(event);
+}
+
+bool FrameView::event(QEvent *event)
+{
+    // Space pans while the pointer is over the focused view (the window's Space plays the video
+    // otherwise): take it before the shortcut does.
+    if (event->type() == QEvent::ShortcutOverride) {
+        auto *key = static_cast<QKeyEvent *>(event);
+        if (key->key() == Qt::Key_Space && key->modifiers() == Qt::NoModifier && underMouse()) {
+            event->accept();
+            return true;
+        }
+    }
+    return QWidget::event(event);
 }
 
 } // namespace lipsync::studio

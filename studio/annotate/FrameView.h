@@ -1,7 +1,8 @@
 #pragma once
 // A video frame, large, with the 23 landmarks and their connections drawn over it, and the
-// landmark editor on it. Wheel zooms about the cursor, middle-drag (or a left-drag on empty
-// space once every point is placed) pans, double-click fits the frame to the view again.
+// landmark editor on it. Wheel zooms about the cursor, middle-drag, a left-drag with Space held
+// (as in image editors) or a left-drag on empty space once every point is placed pans,
+// double-click fits the frame to the view again.
 // When editable: a click places the next undefined point (scheme order; its name is shown), a
 // drag moves a point (reported once, at release: one undo step), Delete undefines the selected
 // point. Edits are reported through landmarksEdited; the owner turns them into undoable document
@@ -68,6 +69,9 @@ protected:
     void mouseReleaseEvent(QMouseEvent *event) override;
     void mouseDoubleClickEvent(QMouseEvent *event) override;
     void keyPressEvent(QKeyEvent *event) override;
+    void keyReleaseEvent(QKeyEvent *event) override;
+    void focusOutEvent(QFocusEvent *event) override;
+    bool event(QEvent *event) override;
 
 private:
     // Image-to-widget mapping: widget = offset + image * scale.
@@ -93,6 +97,7 @@ private:
     QPointF m_dragStart;
     QPointF m_panAtDragStart;
     bool m_dragging = false;
+    bool m_spaceHeld = false; // Space down: a left-drag pans instead of editing
 };
 
 } // namespace lipsync::studio

@@ -160,7 +160,7 @@ bool ProjectDocument::requestFaces(const std::vector<FaceData> &faces, const QSt
         if (f.row < 0 || f.row >= sequenceCount())
             return false;
         const Sequence &s = sequence(f.row);
-        before.push_back({f.row, s.landmarks, s.features});
+        before.push_back({f.row, s.landmarks, s.features, s.fitErrors});
     }
     if (faces.empty())
         return false;
@@ -174,6 +174,7 @@ void ProjectDocument::applyFaces(const std::vector<FaceData> &faces)
         Sequence &s = m_project.sequences.at(std::size_t(f.row));
         s.landmarks = f.landmarks;
         s.features = f.features;
+        s.fitErrors = f.fitErrors;
     }
     for (const FaceData &f : faces)
         emit sequenceChanged(f.row);

@@ -59,6 +59,7 @@ public:
         int row = -1;
         std::map<int, LandmarkSet> landmarks;
         Eigen::MatrixXd features;
+        std::vector<double> fitErrors; // per frame (Sequence::fitErrors)
     };
     bool requestFaces(const std::vector<FaceData> &faces, const QString &text);
     void applyFaces(const std::vector<FaceData> &faces);

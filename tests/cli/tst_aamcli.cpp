@@ -71,6 +71,15 @@ private slots:
         QCOMPARE(j["images"].toInt(), 2);
         QVERIFY2(j["nme_mean"].toDouble() < 0.05, qPrintable(QString::number(j["nme_mean"].toDouble())));
         QVERIFY(j["fps"].toDouble() > 0);
+
+        // The generic-face fitter (Wiberg, shape prior, several starts) fits these too.
+        const Run w = runLipsync({"aam", "eval", "--model", m_model, "--images", m_dir.path() + "/test",
+                                  "--algorithm", "wiberg", "--multi-start", "--json"});
+        QVERIFY2(w.exitCode == 0, w.err.constData());
+        const QJsonObject jw = parseJsonObject(w.out);
+        QCOMPARE(jw["algorithm"].toString(), QString("wiberg"));
+        QVERIFY(jw["multi_start"].toBool());
+        QVERIFY2(jw["nme_mean"].toDouble() < 0.05, qPrintable(QString::number(jw["nme_mean"].toDouble())));
     }
 
     void landmarksDetectVideoFrame()
@@ -124,6 +133,7 @@ private slots:
         QCOMPARE(runLipsync({"landmarks", "detect", "--out", "x.pts"}).exitCode, 2);
         QCOMPARE(runLipsync({"track", "--model", m_model, "--out", "x.csv"}).exitCode, 2);
         QCOMPARE(runLipsync({"aam", "eval", "--model", m_model, "--images", m_dir.path(), "--bogus"}).exitCode, 2);
+        QCOMPARE(runLipsync({"aam", "eval", "--model", m_model, "--images", m_dir.path(), "--algorithm", "x"}).exitCode, 2);
         // No face: exit 1 with a message naming the file.
         const QString blank = m_dir.path() + "/blank.png";
         cv::imwrite(blank.toStdString(), cv::Mat(288, 360, CV_8UC3, cv::Scalar(90, 90, 90)));

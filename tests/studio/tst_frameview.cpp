@@ -1,5 +1,6 @@
 // FrameView draws the frame and its landmarks in their state colours; the wheel zooms about
-// the cursor (the image point under it stays put) and a double-click fits the frame again.
+// the cursor (the image point under it stays put), a double-click fits the frame again, and a
+// left-drag with Space held pans instead of editing.
 #include "annotate/FrameView.h"
 
 #include <QTest>
@@ -70,6 +71,42 @@ private slots:
 
         QTest::mouseDClick(&view, Qt::LeftButton, {}, QPoint(10, 10));
         QCOMPARE(view.zoom(), 1.0);
+    }
+
+    void spaceDragPans()
+    {
+        // In an editable view a left click places the next point; with Space held a left-drag
+        // pans instead and edits nothing.
+        FrameView view;
+        view.resize(400, 320);
+        QImage frame(200, 160, QImage::Format_RGB32);
+        frame.fill(Qt::black);
+        view.setImage(frame);
+        view.setEditable(true);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        int edits = 0;
+        connect(&view, &FrameView::landmarksEdited, &view, [&] { ++edits; });
+        const QPointF before = view.imageToWidget(QPointF(50, 50));
+
+        QTest::keyPress(&view, Qt::Key_Space);
+        QTest::mousePress(&view, Qt::LeftButton, {}, QPoint(100, 100));
+        QMouseEvent move(QEvent::MouseMove, QPointF(130, 80), view.mapToGlobal(QPointF(130, 80)),
+                         Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(&view, &move);
+        QTest::mouseRelease(&view, Qt::LeftButton, {}, QPoint(130, 80));
+        QKeyEvent release(QEvent::KeyRelease, Qt::Key_Space, Qt::NoModifier, QStringLiteral(" "));
+        QApplication::sendEvent(&view, &release);
+
+        QCOMPARE(edits, 0);
+        QVERIFY(!view.landmarks() || view.nextUndefinedPoint() == 0);
+        const QPointF after = view.imageToWidget(QPointF(50, 50));
+        QCOMPARE(after - before, QPointF(30, -20));
+
+        // Space released: a click edits again.
+        QTest::mouseClick(&view, Qt::LeftButton, {}, QPoint(200, 160));
+        QCOMPARE(edits, 1);
+        QVERIFY(view.landmarks() && view.landmarks()->points[0].isDefined());
     }
 };
 

@@ -24,6 +24,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
 
@@ -265,7 +266,7 @@ private slots:
         const LandmarkSet &five = s.landmarks.at(5);
         QCOMPARE(five.points[1].state, PointState::Fixed);
         QCOMPARE(five.points[0].state, PointState::Placed);
-        const std::vector<double> errors = m_window->faces()->fitErrors(QStringLiteral("bbaf2n"));
+        const std::vector<double> errors = s.fitErrors;
         QCOMPARE(int(errors.size()), 75);
 
         // W walks the worst-fitted frames.
@@ -288,6 +289,7 @@ private slots:
                 && doc->sequence(0).features.cols() == featuresBefore.cols());
         QVERIFY(featuresBefore.size() == 0 || doc->sequence(0).features == featuresBefore);
         QCOMPARE(doc->sequence(0).landmarks.size(), std::size_t(2)); // frames 5 and 10 again
+        QVERIFY(doc->sequence(0).fitErrors.empty());
 
         // The modes view synthesises a face that changes with the first mode.
         m_window->faces()->showModes();
@@ -300,6 +302,33 @@ private slots:
         if (const QByteArray dir = qgetenv("LIPSYNC_SCREENSHOT_DIR"); !dir.isEmpty())
             modes->grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("annotate-modes.png")));
         modes->close();
+    }
+
+    void fitErrorsSurviveReopening()
+    {
+        // The worst-fit queue comes from the project: saved, reopened, W still knows the worst frame.
+        ProjectDocument *doc = m_window->document();
+        const Sequence &first = doc->sequence(0);
+        std::vector<double> errors(std::size_t(first.frameCount), 0.01);
+        errors[40] = 0.3;
+        errors[12] = 0.2;
+        errors[3] = Sequence::kNoFace;
+        QVERIFY(doc->requestFaces({{0, first.landmarks, first.features, errors}}, QStringLiteral("fit errors")));
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        Project copy = doc->project();
+        copy.saveAs(dir.path().toStdString());
+        QVERIFY(m_window->files()->open(dir.path()));
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 60000);
+        QCOMPARE(m_window->document()->sequence(0).fitErrors, errors);
+        m_window->selectSequence(0);
+        m_window->setCurrentFrame(0);
+        QTest::keyClick(m_window, Qt::Key_W);
+        QCOMPARE(m_window->currentFrame(), 3); // no face ranks first
+        QTest::keyClick(m_window, Qt::Key_W);
+        QCOMPARE(m_window->currentFrame(), 40);
+        QTest::keyClick(m_window, Qt::Key_W);
+        QCOMPARE(m_window->currentFrame(), 12);
     }
 };
 

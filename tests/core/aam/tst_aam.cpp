@@ -196,8 +196,18 @@ private slots:
         }
     }
 
+    void fitConvergesOnHeldOutFrame_data()
+    {
+        QTest::addColumn<int>("algorithm");
+        QTest::newRow("project-out") << int(AamFitAlgorithm::ProjectOut);
+        QTest::newRow("wiberg") << int(AamFitAlgorithm::Wiberg);
+    }
+
     void fitConvergesOnHeldOutFrame()
     {
+        QFETCH(int, algorithm);
+        AamFitOptions options;
+        options.algorithm = AamFitAlgorithm(algorithm);
         const AamFitter fitter(m_model);
         int improved = 0;
         for (const auto &e : gridExamples(true)) {
@@ -212,7 +222,7 @@ private slots:
             Similarity move = Similarity{1, 0, c.x() + 4, c.y() - 3}.compose(perturb.compose(Similarity{1, 0, -c.x(), -c.y()}));
             const Eigen::VectorXd start = move.apply(e.shape);
             const double before = normalisedMeanError(start, e.shape);
-            const AamFitResult fit = fitter.fit(image, start);
+            const AamFitResult fit = fitter.fit(image, start, options);
             const double after = normalisedMeanError(fit.shape, e.shape);
             qInfo("%s: NME %.4f -> %.4f, error %.4f, %d iterations", e.name.c_str(), before, after,
                   fit.error, fit.iterations);

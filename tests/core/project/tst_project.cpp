@@ -64,6 +64,7 @@ Project makeProject()
     s.phones.intervals = {{0.0, 0.1, "s", false}, {0.1, 0.3, "eh", true}, {0.35, 0.5, "t", false}};
     s.features.resize(4, 3);
     s.features << 1.0 / 3.0, -1e-12, 1e300, 0, 1, 2, -3.5, 4.25, 5e-7, 7, 8, 9;
+    s.fitErrors = {0.0123456789012345, Sequence::kNoFace, 0.0, 2.5e-7};
     p.sequences.push_back(s);
 
     Sequence bare;
@@ -142,7 +143,7 @@ private slots:
         QVERIFY(!QFileInfo(dir.filePath("project.json.bak")).exists());
         const QByteArray text = readBytes(dir.filePath("project.json"));
         QVERIFY(text.contains("\"format\": \"lipsync-project\""));
-        QVERIFY(text.contains("\"version\": 1"));
+        QVERIFY(text.contains("\"version\": 2"));
         QVERIFY(text.contains("\"features\": \"features/s1.csv\""));
 
         const Project loaded = Project::load(dir.path().toStdString());
@@ -152,6 +153,8 @@ private slots:
         QCOMPARE(loaded.sequences[0].words, original.sequences[0].words);
         QCOMPARE(loaded.sequences[0].phones, original.sequences[0].phones);
         QVERIFY(loaded.sequences[0].features == original.sequences[0].features);
+        QCOMPARE(loaded.sequences[0].fitErrors, original.sequences[0].fitErrors);
+        QVERIFY(loaded.sequences[1].fitErrors.empty());
         QCOMPARE(loaded.models, original.models);
         QVERIFY(loaded == original);
 
@@ -164,6 +167,9 @@ private slots:
         QVERIFY(!(changed == original));
         changed = loaded;
         changed.sequences[0].phones.intervals[1].userEdited = false;
+        QVERIFY(!(changed == original));
+        changed = loaded;
+        changed.sequences[0].fitErrors[1] = 0.5;
         QVERIFY(!(changed == original));
 
         // Loading by the manifest's own path works too.
@@ -253,7 +259,7 @@ private slots:
         row("wrong_format", "format", "is 'praat-textgrid', expected 'lipsync-project'");
         row("missing_version", "version", "missing");
         row("version_not_integer", "version", "must be an integer, found 1.5");
-        row("future_version", "version", "version 2 is newer than this build");
+        row("future_version", "version", "version 3 is newer than this build");
         row("version_zero", "version", "must be at least 1");
         row("name_not_string", "name", "must be a string, found an array");
         row("unknown_field", "sequences[1].framerate", "unknown field");
@@ -295,6 +301,9 @@ private slots:
         row("features_nan", "sequences[1].features", "sequence 'b': ");
         row("features_wrong_rows", "sequences[1].features", "has 2 rows, expected frameCount 3");
         row("features_not_string", "sequences[1].features", "must be a string, found 7");
+        row("fit_errors_count", "sequences[1].fitErrors", "has 2 values, expected one per frame (3)");
+        row("fit_errors_negative", "sequences[1].fitErrors[2]", "must not be negative");
+        row("fit_errors_not_number", "sequences[1].fitErrors[1]", "must be a finite number, found a string");
         row("models_not_array", "models", "must be an array, found a string");
         row("model_missing_kind", "models[0].kind", "missing");
         row("model_empty_file", "models[1].file", "must not be empty");
@@ -410,6 +419,14 @@ private slots:
         p.sequences[1].id = "s1";
         QVERIFY_THROWS_EXCEPTION(Error, p.save(folder));
         p = makeProject();
+        p.sequences[0].fitErrors.pop_back();
+        try {
+            p.save(folder);
+            QFAIL("saved fit errors for fewer frames than the sequence has");
+        } catch (const Error &e) {
+            QCOMPARE(q(e.field()), QString("sequences[0].fitErrors"));
+        }
+        p = makeProject();
         p.sequences[0].features.conservativeResize(3, Eigen::NoChange);
         QVERIFY_THROWS_EXCEPTION(Error, p.save(folder));
         p = makeProject();
@@ -499,7 +516,7 @@ private slots:
         // A landmark frame is one line, and keys come in reading order.
         const QByteArray text =
             ProjectManifest::serialize(ProjectManifest::toJson(makeProject(), "/tmp/x"));
-        QVERIFY(text.startsWith("{\n  \"format\": \"lipsync-project\",\n  \"version\": 1,\n"));
+        QVERIFY(text.startsWith("{\n  \"format\": \"lipsync-project\",\n  \"version\": 2,\n"));
         const qsizetype points = text.indexOf("\"points\": [[");
         QVERIFY(points > 0);
         QVERIFY(text.indexOf('\n', points) > text.indexOf("]]", points));
