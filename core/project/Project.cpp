@@ -127,7 +127,8 @@ const Sequence *Project::sequence(const std::string &id) const
 
 bool Project::operator==(const Project &other) const
 {
-    return name == other.name && sequences == other.sequences && models == other.models;
+    return name == other.name && sequences == other.sequences && models == other.models
+        && pronunciations == other.pronunciations;
 }
 
 } // namespace lipsync

@@ -11,6 +11,7 @@
 // format is read and written by ProjectManifest.
 #include "project/Sequence.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,10 @@ public:
     std::string name;
     std::vector<Sequence> sequences;
     std::vector<ModelReference> models;
+    // Pronunciation overrides for the aligner, before the CMU dictionary and espeak-ng: word
+    // (lower case, no spaces) -> ARPAbet phones of PhoneSet separated by spaces ("L IH1 P S IH2 NG K";
+    // stress digits allowed). Every alignment of the project uses them.
+    std::map<std::string, std::string> pronunciations;
 
     Sequence *sequence(const std::string &id);
     const Sequence *sequence(const std::string &id) const;
