@@ -31,7 +31,7 @@
 
 using namespace lipsync;
 using namespace lipsync::studio;
-using lipsync::studio::testing::openDemoWindow;
+using lipsync::studio::testing::openDemoTimeline;
 
 class TestSpeechTools : public QObject
 {
@@ -46,12 +46,7 @@ public:
 private slots:
     void initTestCase()
     {
-        openDemoWindow(m_window);
-        if (QTest::currentTestFailed())
-            return;
-        m_panel = m_window->findChild<TimelinePanel *>();
-        QVERIFY(m_panel);
-        m_window->playback()->setAudioEnabled(false);
+        openDemoTimeline(m_window, m_panel);
     }
 
     void cleanupTestCase() { delete m_window; }
