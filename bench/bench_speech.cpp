@@ -12,6 +12,8 @@
 //                           ../shared/data/speech/mfa-tests (the 3 files with an ARPAbet phone
 //                           tier), for words whose phones agree with MFA's; N = 0: model trained on
 //                           those recordings, 1: on them plus GRID s1, 2: the shipped GRID s1 model
+// LIPSYNC_BENCH_NORMALIZE=none|mean|cmvn chooses the per-utterance feature normalisation of the
+// models trained here (default: TrainerOptions' own).
 #include "align/AlignerTrainer.h"
 #include "align/AlignerUtterance.h"
 #include "align/ForcedAligner.h"
@@ -52,7 +54,15 @@ bool exists(const std::string &p)
 
 TrainerOptions benchOptions()
 {
-    return TrainerOptions{}; // the defaults: up to 16 mixtures, 8 + 4 x 6 iterations
+    TrainerOptions o; // the defaults: up to 16 mixtures, 8 + 4 x 6 iterations
+    const std::string normalize = qEnvironmentVariable("LIPSYNC_BENCH_NORMALIZE").toStdString();
+    if (normalize == "none")
+        o.normalization = CepstralNormalization::None;
+    else if (normalize == "mean")
+        o.normalization = CepstralNormalization::Mean;
+    else if (normalize == "cmvn")
+        o.normalization = CepstralNormalization::MeanAndVariance;
+    return o;
 }
 
 const Lexicon &lexicon()

@@ -1,5 +1,8 @@
-// lipsync align MEDIA --transcript FILE [--model MODEL] [--pronunciations DICT] --out FILE.TextGrid [--json]
-// Forced alignment of one recording: writes a TextGrid with tiers "words" and "phones".
+// lipsync align MEDIA --transcript FILE [--model MODEL] [--project DIR] [--pronunciations DICT]
+//               --out FILE.TextGrid [--json]
+// Forced alignment of one recording: writes a TextGrid with tiers "words" and "phones". Words
+// are pronounced from the project's pronunciations (--project), a CMU-format file (--pronunciations,
+// which wins), the CMU dictionary, then espeak-ng; --json lists the words espeak-ng guessed.
 #include "AlignerSupport.h"
 #include "Command.h"
 
@@ -9,6 +12,7 @@
 #include "io/MediaInfo.h"
 #include "io/TextGrid.h"
 #include "io/Transcript.h"
+#include "project/Project.h"
 #include "util/Error.h"
 
 #include <QElapsedTimer>
@@ -33,12 +37,12 @@ QJsonArray tierJson(const Tier &tier)
 int runAlign(const QStringList &args)
 {
     const cli::Arguments a(args);
-    const QStringList unknown = a.unknown({"transcript", "model", "out", "json", "pronunciations"});
+    const QStringList unknown = a.unknown({"transcript", "model", "out", "json", "pronunciations", "project"});
     if (!unknown.isEmpty())
         return cli::fail(QStringLiteral("align: unknown option %1").arg(unknown.join(' ')), 2);
     if (a.positional().size() != 1 || a.value("transcript").isEmpty() || a.value("out").isEmpty())
         return cli::fail(QStringLiteral("usage: lipsync align MEDIA --transcript FILE [--model MODEL] "
-                                        "[--pronunciations DICT] --out FILE.TextGrid [--json]"), 2);
+                                        "[--project DIR] [--pronunciations DICT] --out FILE.TextGrid [--json]"), 2);
     const QString media = a.positional().front();
     QString modelPath = a.value("model");
     if (modelPath.isEmpty()) {
@@ -51,7 +55,10 @@ int runAlign(const QStringList &args)
     QElapsedTimer timer;
     timer.start();
     const AcousticModel model = AcousticModel::load(modelPath.toStdString());
-    const auto lexicon = cli::makeLexicon(a.value("pronunciations"));
+    std::map<std::string, std::string> projectPronunciations;
+    if (!a.value("project").isEmpty())
+        projectPronunciations = Project::load(a.value("project").toStdString()).pronunciations;
+    const auto lexicon = cli::makeLexicon(a.value("pronunciations"), projectPronunciations);
     const Transcript transcript = readTranscript(a.value("transcript").toStdString());
     const PreparedUtterance u = prepareUtterance(QFileInfo(media).completeBaseName().toStdString(),
                                                  media.toStdString(), transcript.words, model, *lexicon);
@@ -74,7 +81,13 @@ int runAlign(const QStringList &args)
                                                             model.featureOptions()))
                 frameLabels.append(QString::fromStdString(label));
         }
+        QJsonArray guessed;
+        for (const auto &[word, phones] : lexicon->guessed(u.words))
+            guessed.append(QJsonObject{{QStringLiteral("word"), QString::fromStdString(word)},
+                                       {QStringLiteral("phones"),
+                                        QString::fromStdString(PronunciationDictionary::toString(phones))}});
         cli::printJson(QJsonObject{
+            {QStringLiteral("guessed"), guessed},
             {QStringLiteral("frameRate"), frameRate},
             {QStringLiteral("frameLabels"), frameLabels},
             {QStringLiteral("media"), media},

@@ -14,9 +14,10 @@ QString defaultAlignerModel()
         shippedAlignerModelPath(qEnvironmentVariable("LIPSYNC_SOURCE_DIR").toStdString()));
 }
 
-std::unique_ptr<Lexicon> makeLexicon(const QString &overridesPath)
+std::unique_ptr<Lexicon> makeLexicon(const QString &overridesPath,
+                                     const std::map<std::string, std::string> &projectPronunciations)
 {
-    std::map<std::string, std::vector<Pronunciation>> overrides;
+    std::map<std::string, std::vector<Pronunciation>> overrides = Lexicon::parseOverrides(projectPronunciations);
     if (!overridesPath.isEmpty()) {
         const PronunciationDictionary user = PronunciationDictionary::read(overridesPath.toStdString());
         for (const auto &[word, variants] : user.entries())

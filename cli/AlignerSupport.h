@@ -5,7 +5,9 @@
 
 #include <QString>
 
+#include <map>
 #include <memory>
+#include <string>
 
 namespace lipsync::cli {
 
@@ -15,9 +17,11 @@ namespace lipsync::cli {
 // then <prefix>/share/lipsync/aligner/grid-s1.aligner. Empty if none exists.
 QString defaultAlignerModel();
 
-// CMU dictionary plus overrides read from `overridesPath` (CMU format, "word PH ON EMES";
-// may be empty). Throws lipsync::Error naming the file.
-std::unique_ptr<Lexicon> makeLexicon(const QString &overridesPath);
+// CMU dictionary plus overrides: a project's pronunciations (Project::pronunciations), then those
+// read from `overridesPath` (CMU format, "word PH ON EMES"; may be empty), which win. Throws
+// lipsync::Error naming the file.
+std::unique_ptr<Lexicon> makeLexicon(const QString &overridesPath,
+                                     const std::map<std::string, std::string> &projectPronunciations = {});
 
 // Media file extensions the aligner accepts in a folder.
 QStringList alignerMediaFilters();

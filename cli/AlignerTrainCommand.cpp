@@ -1,5 +1,5 @@
 // lipsync aligner train --media DIR --transcripts DIR --out MODEL [--mixtures N] [--iterations N]
-//                       [--pronunciations DICT] [--json]
+//                       [--normalize none|mean|cmvn] [--pronunciations DICT] [--json]
 // Trains the aligner's monophone HMMs on transcribed recordings: every media file in DIR with a
 // transcript of the same name (.align, .TextGrid, .lab or .txt) in the transcripts folder.
 // Recordings that cannot be used (no transcript, unknown words, undecodable or silent audio, a
@@ -45,12 +45,13 @@ struct Job
 int runAlignerTrain(const QStringList &args)
 {
     const cli::Arguments a(args);
-    const QStringList unknown = a.unknown({"media", "transcripts", "out", "json", "mixtures", "iterations", "pronunciations"});
+    const QStringList unknown = a.unknown({"media", "transcripts", "out", "json", "mixtures", "iterations", "pronunciations", "normalize"});
     if (!unknown.isEmpty())
         return cli::fail(QStringLiteral("aligner train: unknown option %1").arg(unknown.join(' ')), 2);
     if (a.value("media").isEmpty() || a.value("transcripts").isEmpty() || a.value("out").isEmpty() || !a.positional().isEmpty())
         return cli::fail(QStringLiteral("usage: lipsync aligner train --media DIR --transcripts DIR --out MODEL "
-                                        "[--mixtures N] [--iterations N] [--pronunciations DICT] [--json]"), 2);
+                                        "[--mixtures N] [--iterations N] [--normalize none|mean|cmvn] "
+                                        "[--pronunciations DICT] [--json]"), 2);
     const bool json = a.flag("json");
     TrainerOptions options;
     bool ok = true;
@@ -65,6 +66,16 @@ int runAlignerTrain(const QStringList &args)
         return cli::fail(QStringLiteral("aligner train: --iterations must be 1..100"), 2);
     options.iterationsPerStage = iterations;
     options.firstStageIterations = iterations + 2;
+    // Per-utterance feature normalisation, stored in the model (AcousticModel.h).
+    const QString normalize = a.value("normalize", QStringLiteral("mean"));
+    if (normalize == QLatin1String("none"))
+        options.normalization = CepstralNormalization::None;
+    else if (normalize == QLatin1String("mean"))
+        options.normalization = CepstralNormalization::Mean;
+    else if (normalize == QLatin1String("cmvn"))
+        options.normalization = CepstralNormalization::MeanAndVariance;
+    else
+        return cli::fail(QStringLiteral("aligner train: --normalize must be none, mean or cmvn"), 2);
 
     const QDir mediaDir(a.value("media")), transcriptDir(a.value("transcripts"));
     if (!mediaDir.exists())

@@ -63,9 +63,9 @@ float GaussianMixture::logLikelihood(const float *x) const
     return componentLogLikelihoods(x, out);
 }
 
-AcousticModel::AcousticModel(const MfccOptions &features, bool meanNormalize,
+AcousticModel::AcousticModel(const MfccOptions &features, CepstralNormalization normalization,
                              const Eigen::VectorXf &mean, const Eigen::VectorXf &variance, double selfLoop)
-    : m_features(features), m_meanNormalize(meanNormalize), m_dimension(int(mean.size()))
+    : m_features(features), m_normalization(normalization), m_dimension(int(mean.size()))
 {
     const int states = PhoneSet::kCount * kStatesPerPhone;
     m_states.resize(size_t(states));
@@ -90,10 +90,18 @@ void AcousticModel::prepare()
 Eigen::MatrixXf AcousticModel::features(const std::vector<float> &samples) const
 {
     Eigen::MatrixXf f = m_mfcc->compute(samples);
-    if (m_meanNormalize && f.rows() > 0) {
+    if (m_normalization != CepstralNormalization::None && f.rows() > 0) {
         const int s = m_mfcc->staticDimension();
         const Eigen::RowVectorXf mean = f.leftCols(s).colwise().mean();
         f.leftCols(s).rowwise() -= mean;
+    }
+    if (m_normalization == CepstralNormalization::MeanAndVariance && f.rows() > 1) {
+        // Deltas and accelerations have (near) zero mean already; scale every column to unit
+        // variance about its mean, with a floor so a constant column stays finite.
+        const Eigen::RowVectorXf mean = f.colwise().mean();
+        const Eigen::RowVectorXf sd =
+            ((f.rowwise() - mean).array().square().colwise().sum() / float(f.rows())).sqrt().max(1e-3f);
+        f.array().rowwise() /= sd.array();
     }
     return f;
 }
@@ -121,7 +129,7 @@ void AcousticModel::save(const std::string &path) const
     out += "features";
     number(f.sampleRate), number(f.windowSeconds), number(f.shiftSeconds), number(f.preemphasis);
     number(f.melChannels), number(f.cepstra), number(f.lifter), number(f.deltaWindow);
-    number(m_meanNormalize ? 1 : 0);
+    number(int(m_normalization));
     out += "\ndimension " + std::to_string(m_dimension) + "\nfloor";
     for (int k = 0; k < m_varianceFloor.size(); ++k)
         number(m_varianceFloor[k]);
@@ -193,7 +201,9 @@ AcousticModel AcousticModel::load(const std::string &path)
         if (!(s >> f.sampleRate >> f.windowSeconds >> f.shiftSeconds >> f.preemphasis >> f.melChannels
               >> f.cepstra >> f.lifter >> f.deltaWindow >> normalize))
             throw fail("bad feature configuration");
-        model.m_meanNormalize = normalize != 0;
+        if (normalize != 0 && normalize != 1 && normalize != 2)
+            throw fail("unknown feature normalisation " + std::to_string(normalize) + " (0 none, 1 mean, 2 mean and variance)");
+        model.m_normalization = CepstralNormalization(int(normalize));
     }
     {
         std::istringstream s = next();

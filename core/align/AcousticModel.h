@@ -41,6 +41,13 @@ struct GaussianMixture
     Eigen::VectorXf logConstants; // log w_m - (D log 2 pi + sum log var_m) / 2
 };
 
+// Per-utterance feature normalisation (stored in the model file, since a model only fits the
+// features it was trained on): none; cepstral mean normalisation of the static coefficients
+// (HTK's TARGETKIND _Z); or mean and variance normalisation (CMVN: the static coefficients'
+// mean removed, then every coefficient divided by its standard deviation over the utterance,
+// HTK's HCompV -c/-k variance scaling per utterance), which evens out speakers and channels.
+enum class CepstralNormalization { None = 0, Mean = 1, MeanAndVariance = 2 };
+
 class AcousticModel
 {
 public:
@@ -49,11 +56,11 @@ public:
 
     AcousticModel() = default;
     // A flat-start model (HCompV): every state one Gaussian with the global mean and variance.
-    AcousticModel(const MfccOptions &features, bool meanNormalize, const Eigen::VectorXf &mean,
+    AcousticModel(const MfccOptions &features, CepstralNormalization normalization, const Eigen::VectorXf &mean,
                   const Eigen::VectorXf &variance, double selfLoop = 0.6);
 
     const MfccOptions &featureOptions() const { return m_features; }
-    bool meanNormalize() const { return m_meanNormalize; }
+    CepstralNormalization normalization() const { return m_normalization; }
     int dimension() const { return m_dimension; }
     int stateCount() const { return int(m_states.size()); }
     static int stateIndex(int phone, int position) { return phone * kStatesPerPhone + position; }
@@ -69,8 +76,7 @@ public:
     void prepare();
 
     // Features of an utterance as this model expects them: MFCC_0_D_A at the model's sample
-    // rate, with the per-utterance mean of the static coefficients removed when meanNormalize()
-    // (cepstral mean normalisation). `audio` must be at featureOptions().sampleRate.
+    // rate, normalised per utterance as normalization() says. `audio` must be at featureOptions().sampleRate.
     Eigen::MatrixXf features(const AudioBuffer &audio) const;
     Eigen::MatrixXf features(const std::vector<float> &samples) const;
 
@@ -80,7 +86,7 @@ public:
 
 private:
     MfccOptions m_features;
-    bool m_meanNormalize = true;
+    CepstralNormalization m_normalization = CepstralNormalization::Mean;
     int m_dimension = 0;
     std::vector<GaussianMixture> m_states;
     std::vector<double> m_selfLoop;

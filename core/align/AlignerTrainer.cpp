@@ -51,7 +51,7 @@ AcousticModel AlignerTrainer::flatStart(const std::vector<TrainingUtterance> &ut
     const Eigen::VectorXd mean = (sum[0] + sum[1]) / double(frames[0] + frames[1]);
     const Eigen::VectorXd variance = ((sumSquares[0] + sumSquares[1]) / double(frames[0] + frames[1])
                                       - mean.cwiseAbs2()).cwiseMax(1e-6);
-    AcousticModel model(options.features, options.meanNormalize, mean.cast<float>(), variance.cast<float>());
+    AcousticModel model(options.features, options.normalization, mean.cast<float>(), variance.cast<float>());
     for (int k = 0; k < 2; ++k) {
         if (frames[k] < 10)
             continue;

@@ -32,7 +32,7 @@ struct TrainingUtterance
 struct TrainerOptions
 {
     MfccOptions features;
-    bool meanNormalize = true;
+    CepstralNormalization normalization = CepstralNormalization::Mean;
     // Mixtures per state at each stage. On GRID s1 (bench_speech) 16 mixtures place 91.5% of
     // the held-out inner word boundaries within 40 ms, 8 mixtures 90.8%.
     std::vector<int> mixtureSchedule{1, 2, 4, 8, 16};

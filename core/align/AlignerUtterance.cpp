@@ -36,7 +36,7 @@ PreparedUtterance prepareUtterance(const std::string &id, const std::string &med
 AcousticModel featureModel(const TrainerOptions &options)
 {
     const int d = Mfcc(options.features).dimension();
-    return AcousticModel(options.features, options.meanNormalize, Eigen::VectorXf::Zero(d), Eigen::VectorXf::Ones(d));
+    return AcousticModel(options.features, options.normalization, Eigen::VectorXf::Zero(d), Eigen::VectorXf::Ones(d));
 }
 
 } // namespace lipsync

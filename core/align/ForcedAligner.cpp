@@ -4,7 +4,9 @@
 #include "util/PhoneSet.h"
 #include "util/Error.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace lipsync {
 
@@ -12,19 +14,27 @@ AlignmentResult ForcedAligner::align(const Eigen::MatrixXf &features, const std:
                                      const std::vector<std::vector<Pronunciation>> &pronunciations,
                                      double audioDuration) const
 {
+    return align(features, words, pronunciations, audioDuration, {});
+}
+
+AlignmentResult ForcedAligner::align(const Eigen::MatrixXf &features, const std::vector<std::string> &words,
+                                     const std::vector<std::vector<Pronunciation>> &pronunciations,
+                                     double audioDuration, const std::vector<FixedBoundary> &fixed) const
+{
     try {
-        return alignWithBeam(features, words, pronunciations, audioDuration, m_options.beam);
+        return alignWithBeam(features, words, pronunciations, audioDuration, fixed, m_options.beam);
     } catch (const Error &) {
         // Every path pruned: retry without pruning before declaring that the transcript does not fit.
         if (!std::isfinite(m_options.beam))
             throw;
-        return alignWithBeam(features, words, pronunciations, audioDuration, INFINITY);
+        return alignWithBeam(features, words, pronunciations, audioDuration, fixed, INFINITY);
     }
 }
 
 AlignmentResult ForcedAligner::alignWithBeam(const Eigen::MatrixXf &features, const std::vector<std::string> &words,
                                              const std::vector<std::vector<Pronunciation>> &pronunciations,
-                                             double audioDuration, double beam) const
+                                             double audioDuration, const std::vector<FixedBoundary> &fixed,
+                                             double beam) const
 {
     const UtteranceGraph graph(pronunciations, m_options.graph);
     const int T = int(features.rows());
@@ -41,6 +51,29 @@ AlignmentResult ForcedAligner::alignWithBeam(const Eigen::MatrixXf &features, co
     if (features.cols() != m_model.dimension())
         throw Error("features do not match the aligner model's dimension");
     const auto &states = graph.states();
+    // Fixed boundaries as cuts of the graph: the graph's states are ordered along the utterance
+    // (leading silence, word 0 with its variants, silence, word 1, ...), so "word w starts at
+    // frame f" means states below word w's first state only before f and the others from f on;
+    // "ends" cuts after its last state. Each state gets the frame range it may occupy.
+    std::vector<int> firstOf(words.size(), S), lastOf(words.size(), -1);
+    for (int s = 0; s < S; ++s)
+        if (const int w = states[size_t(s)].word; w >= 0) {
+            firstOf[size_t(w)] = std::min(firstOf[size_t(w)], s);
+            lastOf[size_t(w)] = std::max(lastOf[size_t(w)], s);
+        }
+    std::vector<int> earliest(size_t(S), 0), latest(size_t(S), T - 1);
+    std::map<int, double> fixedTimes; // frame -> the time given for a boundary there
+    for (const FixedBoundary &b : fixed) {
+        if (b.word < 0 || b.word >= int(words.size()) || lastOf[size_t(b.word)] < 0)
+            throw Error("a fixed boundary refers to word " + std::to_string(b.word) + ", which is not aligned");
+        const int cut = b.side == FixedBoundary::Side::Start ? firstOf[size_t(b.word)] : lastOf[size_t(b.word)] + 1;
+        const int f = std::clamp(int(std::lround(b.time / shift)), 0, T);
+        for (int s = 0; s < cut; ++s)
+            latest[size_t(s)] = std::min(latest[size_t(s)], f - 1);
+        for (int s = cut; s < S; ++s)
+            earliest[size_t(s)] = std::max(earliest[size_t(s)], f);
+        fixedTimes[f] = b.time;
+    }
     EmissionCache emission(m_model, features);
     std::vector<double> logSelf(static_cast<size_t>(S)), logExit(static_cast<size_t>(S));
     std::vector<std::vector<double>> logIn(static_cast<size_t>(S));
@@ -73,6 +106,8 @@ AlignmentResult ForcedAligner::alignWithBeam(const Eigen::MatrixXf &features, co
                     from = p;
                 }
             }
+            if (t < earliest[size_t(s)] || t > latest[size_t(s)])
+                v = -INFINITY;
             if (v > -INFINITY) {
                 v += emission(t, st.modelState);
                 best = std::max(best, v);
@@ -81,7 +116,9 @@ AlignmentResult ForcedAligner::alignWithBeam(const Eigen::MatrixXf &features, co
             back[size_t(t) * size_t(S) + size_t(s)] = from;
         }
         if (best == -INFINITY)
-            throw Error("no alignment path survives (the transcript does not fit the audio)");
+            throw Error(fixed.empty() ? "no alignment path survives (the transcript does not fit the audio)"
+                                      : "no alignment keeps the fixed boundaries (too little time for the "
+                                        "phones between them)");
         for (int s = 0; s < S; ++s)
             if (delta[size_t(s)] < best - beam)
                 delta[size_t(s)] = -INFINITY;
@@ -108,6 +145,13 @@ AlignmentResult ForcedAligner::alignWithBeam(const Eigen::MatrixXf &features, co
     result.logLikelihood = bestFinal;
     result.frames = T;
     const double end = std::max(audioDuration, T * shift);
+    auto timeOf = [&](int frame) {
+        if (frame == 0 || frame == T)
+            return frame == 0 ? 0.0 : end;
+        if (const auto it = fixedTimes.find(frame); it != fixedTimes.end())
+            return it->second;
+        return frame * shift;
+    };
     auto pushOrExtend = [](Tier &tier, double start, double stop, const std::string &label, bool merge) {
         if (merge && !tier.intervals.empty() && tier.intervals.back().label == label)
             tier.intervals.back().end = stop;
@@ -120,8 +164,8 @@ AlignmentResult ForcedAligner::alignWithBeam(const Eigen::MatrixXf &features, co
         if (t < T && states[size_t(path[size_t(t)])].phoneInstance == states[size_t(path[size_t(t - 1)])].phoneInstance)
             continue;
         const GraphState &st = states[size_t(path[size_t(t - 1)])];
-        const double start = segmentStart * shift;
-        const double stop = t == T ? end : t * shift;
+        const double start = timeOf(segmentStart);
+        const double stop = timeOf(t);
         const std::string phone = PhoneSet::label(st.phone);
         // Adjacent silences (a word-final sil variant next to an optional sil) are one segment.
         pushOrExtend(result.phones, start, stop, phone, st.phone == PhoneSet::kSilence);

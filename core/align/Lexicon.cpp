@@ -4,6 +4,7 @@
 #include "util/PhoneSet.h"
 #include "util/Error.h"
 
+#include <set>
 #include <sstream>
 
 namespace lipsync {
@@ -54,6 +55,35 @@ std::vector<Pronunciation> Lexicon::pronounce(const std::string &word, Source *s
         }
     set(Source::None);
     return {};
+}
+
+std::map<std::string, std::vector<Pronunciation>> Lexicon::parseOverrides(const std::map<std::string, std::string> &overrides)
+{
+    std::map<std::string, std::vector<Pronunciation>> out;
+    for (const auto &[word, phones] : overrides) {
+        try {
+            out[word] = {PronunciationDictionary::parse(phones)};
+        } catch (const Error &e) {
+            throw Error("the pronunciation of '" + word + "': " + e.reason());
+        }
+    }
+    return out;
+}
+
+std::vector<std::pair<std::string, Pronunciation>> Lexicon::guessed(const std::vector<std::string> &words) const
+{
+    std::vector<std::pair<std::string, Pronunciation>> out;
+    std::set<std::string> seen;
+    for (const std::string &w : words) {
+        const std::string key = PronunciationDictionary::normalizeWord(w);
+        if (!seen.insert(key).second)
+            continue;
+        Source source = Source::None;
+        std::vector<Pronunciation> variants = pronounce(w, &source);
+        if (source == Source::Espeak && !variants.empty())
+            out.emplace_back(key, variants.front());
+    }
+    return out;
 }
 
 std::vector<std::string> Lexicon::splitWords(const std::string &transcript)

@@ -6,6 +6,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lipsync {
@@ -22,6 +23,13 @@ public:
 
     // All variants of `word` (empty if none) and where they came from.
     std::vector<Pronunciation> pronounce(const std::string &word, Source *source = nullptr) const;
+
+    // Overrides as a project stores them (Project::pronunciations: word -> "PH ON EMES"), for the
+    // constructor. Throws lipsync::Error naming the word with a phone outside the phone set.
+    static std::map<std::string, std::vector<Pronunciation>> parseOverrides(const std::map<std::string, std::string> &overrides);
+    // The words among `words` that only espeak-ng could pronounce (not overridden, not in the
+    // dictionary), once each in order of appearance, with espeak's guess: for the user to check.
+    std::vector<std::pair<std::string, Pronunciation>> guessed(const std::vector<std::string> &words) const;
 
     // Splits a transcript into words (whitespace; punctuation trimmed; empty tokens dropped).
     static std::vector<std::string> splitWords(const std::string &transcript);

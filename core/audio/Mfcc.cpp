@@ -1,5 +1,6 @@
 #include "audio/Mfcc.h"
 
+#include "audio/FftwPlanner.h"
 #include "util/Error.h"
 
 #include <fftw3.h>
@@ -11,13 +12,6 @@
 namespace lipsync {
 
 namespace {
-// FFTW's planner is not thread-safe; plan execution with new arrays is.
-std::mutex &plannerMutex()
-{
-    static std::mutex mutex;
-    return mutex;
-}
-
 double mel(double hz)
 {
     return 1127.0 * std::log(1.0 + hz / 700.0);
@@ -84,7 +78,7 @@ Mfcc::Mfcc(const MfccOptions &options) : m_options(options)
     for (int j = 0; j < channels; ++j)
         m_dct(n, j) = float(norm);
 
-    std::lock_guard lock(plannerMutex());
+    std::lock_guard lock(fftwPlannerMutex());
     double *in = fftw_alloc_real(size_t(m_fftSize));
     fftw_complex *out = fftw_alloc_complex(size_t(bins));
     m_plan = fftw_plan_dft_r2c_1d(m_fftSize, in, out, FFTW_ESTIMATE);
@@ -96,7 +90,7 @@ Mfcc::Mfcc(const MfccOptions &options) : m_options(options)
 
 Mfcc::~Mfcc()
 {
-    std::lock_guard lock(plannerMutex());
+    std::lock_guard lock(fftwPlannerMutex());
     fftw_destroy_plan(static_cast<fftw_plan>(m_plan));
 }
 

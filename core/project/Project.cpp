@@ -139,7 +139,7 @@ const Sequence *Project::sequence(const std::string &id) const
 bool Project::operator==(const Project &other) const
 {
     return name == other.name && sequences == other.sequences && models == other.models
-           && study == other.study;
+           && study == other.study && pronunciations == other.pronunciations;
 }
 
 } // namespace lipsync

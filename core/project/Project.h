@@ -14,8 +14,8 @@
 #include "project/ForcedChoiceStudy.h"
 #include "project/Sequence.h"
 
+#include <map>
 #include <optional>
-
 #include <string>
 #include <vector>
 
@@ -87,6 +87,11 @@ public:
     // project has no folder or no study.
     void saveStudy() const;
     std::string studyPath() const { return resolve(kStudyFileName); }
+
+    // Pronunciation overrides for the aligner, before the CMU dictionary and espeak-ng: word
+    // (lower case, no spaces) -> ARPAbet phones of PhoneSet separated by spaces ("L IH1 P S IH2 NG K";
+    // stress digits allowed). Every alignment of the project uses them.
+    std::map<std::string, std::string> pronunciations;
 
     Sequence *sequence(const std::string &id);
     const Sequence *sequence(const std::string &id) const;

@@ -2,6 +2,7 @@
 
 #include "io/FeatureCsv.h"
 #include "util/Error.h"
+#include "util/PhoneSet.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -10,10 +11,12 @@
 #include <QJsonValue>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <initializer_list>
 #include <limits>
 #include <set>
+#include <sstream>
 
 namespace lipsync {
 
@@ -82,7 +85,7 @@ public:
                                 + "); open it with a newer version");
         if (version < 1)
             fail("version", "must be at least 1");
-        checkKeys(root, "", {"format", "version", "name", "sequences", "models", "study"});
+        checkKeys(root, "", {"format", "version", "name", "sequences", "models", "study", "pronunciations"});
 
         Project project;
         if (root.contains("name"))
@@ -115,6 +118,8 @@ public:
                 project.study = ForcedChoiceStudy::load(path.toStdString());
             }
         }
+        if (root.contains("pronunciations"))
+            project.pronunciations = readPronunciations(root.value("pronunciations"), "pronunciations");
         return project;
     }
 
@@ -348,6 +353,36 @@ private:
         return table.values;
     }
 
+    // [{"word": "lipsync", "phones": "L IH P S IH NG K"}, ...]: one entry per word, phones of
+    // PhoneSet (stress digits allowed).
+    std::map<std::string, std::string> readPronunciations(const QJsonValue &value, const std::string &field) const
+    {
+        const QJsonArray entries = array(value, field);
+        std::map<std::string, std::string> out;
+        for (qsizetype i = 0; i < entries.size(); ++i) {
+            const std::string f = element(field, i);
+            const QJsonObject o = object(entries[i], f);
+            checkKeys(o, f, {"word", "phones"});
+            const std::string word = string(require(o, "word", f), member(f, "word"), false);
+            if (std::any_of(word.begin(), word.end(), [](char c) { return std::isspace((unsigned char)c) || std::isupper((unsigned char)c); }))
+                fail(member(f, "word"), "'" + word + "' must be one lower-case word without spaces");
+            const std::string phones = string(require(o, "phones", f), member(f, "phones"), false);
+            std::istringstream in(phones);
+            std::string label;
+            int count = 0;
+            while (in >> label) {
+                ++count;
+                if (PhoneSet::index(label) < 0)
+                    fail(member(f, "phones"), "'" + label + "' is not one of the 41 phones (ARPAbet, sil, br)");
+            }
+            if (count == 0)
+                fail(member(f, "phones"), "must hold at least one phone");
+            if (!out.emplace(word, phones).second)
+                fail(member(f, "word"), "'" + word + "' has an earlier entry");
+        }
+        return out;
+    }
+
     ModelReference readModel(const QJsonObject &o, const std::string &field) const
     {
         checkKeys(o, field, {"kind", "name", "file"});
@@ -389,11 +424,12 @@ QJsonArray tierToJson(const Tier &tier)
 const QStringList &keyOrder()
 {
     static const QStringList order{"format",     "version",   "kind",      "name",
-                                   "sequences",  "models",    "id",        "mediaFile",
-                                   "frameRate",  "frameCount", "transcript", "features",
-                                   "tiers",      "words",     "phones",    "landmarks", "fitErrors",
-                                   "frame",      "points",    "start",     "end",
-                                   "label",      "userEdited", "file",      "study"};
+                                   "sequences",  "models",    "pronunciations", "word",
+                                   "id",         "mediaFile", "frameRate", "frameCount",
+                                   "transcript", "features",  "tiers",     "words",
+                                   "phones",     "landmarks", "fitErrors", "frame",
+                                   "points",     "start",     "end",       "label",
+                                   "userEdited", "file",      "study"};
     return order;
 }
 
@@ -548,6 +584,13 @@ QJsonObject ProjectManifest::toJson(const Project &project, const std::string &t
                          {"models", models}};
     if (project.study)
         manifest.insert("study", QString::fromLatin1(Project::kStudyFileName));
+    // Written only when there are some, so projects without overrides keep their manifest.
+    if (!project.pronunciations.empty()) {
+        QJsonArray pronunciations;
+        for (const auto &[word, phones] : project.pronunciations)
+            pronunciations.append(QJsonObject{{"word", q(word)}, {"phones", q(phones)}});
+        manifest.insert("pronunciations", pronunciations);
+    }
     return manifest;
 }
 

@@ -200,6 +200,7 @@ void MainWindow::createMenus()
     view->addAction(a.previousSequence);
     view->addAction(a.nextSequence);
     view->addAction(a.fitFrame);
+    view->addAction(m_timeline->spectrogramAction());
     view->addSeparator();
     QMenu *panels = view->addMenu(tr("&Panels"));
     for (QDockWidget *dock : findChildren<QDockWidget *>())

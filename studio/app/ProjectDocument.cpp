@@ -3,6 +3,7 @@
 #include "annotate/LandmarkCommands.h"
 #include "app/SetTranscriptCommand.h"
 #include "compare/StudyCommands.h"
+#include "timeline/PronunciationCommand.h"
 #include "timeline/TierCommands.h"
 #include "util/Error.h"
 
@@ -192,6 +193,21 @@ bool ProjectDocument::requestAddModel(const ModelReference &model, const QString
         after.push_back(model);
     m_undo->push(new SetModelsCommand(this, m_project.models, std::move(after), text));
     return true;
+}
+
+bool ProjectDocument::requestPronunciations(const std::map<std::string, std::string> &pronunciations,
+                                            const QString &text)
+{
+    if (!m_open || pronunciations == m_project.pronunciations)
+        return false;
+    m_undo->push(new SetPronunciationsCommand(this, m_project.pronunciations, pronunciations, text));
+    return true;
+}
+
+void ProjectDocument::applyPronunciations(const std::map<std::string, std::string> &pronunciations)
+{
+    m_project.pronunciations = pronunciations;
+    emit pronunciationsChanged();
 }
 
 void ProjectDocument::applyModels(const std::vector<ModelReference> &models)

@@ -49,6 +49,11 @@ public:
     bool requestTiersChange(int row, const Tier &words, const Tier &phones, const QString &text, int mergeKey = -1);
     void applyTiers(int row, const Tier &words, const Tier &phones);
 
+    // Speech (timeline/PronunciationCommand): the project's pronunciation overrides, word ->
+    // ARPAbet phones (Project::pronunciations), replaced as a whole; false if unchanged.
+    bool requestPronunciations(const std::map<std::string, std::string> &pronunciations, const QString &text);
+    void applyPronunciations(const std::map<std::string, std::string> &pronunciations);
+
     // Faces (annotate/LandmarkCommands). The landmarks of one frame (nullopt: none); `text` names
     // the undo step.
     bool requestLandmarks(int row, int frame, const std::optional<LandmarkSet> &landmarks, const QString &text);
@@ -85,6 +90,7 @@ signals:
     void sequenceChanged(int row);
     void modelsChanged();
     void studyChanged();
+    void pronunciationsChanged();
     void locationChanged();
 
 private:

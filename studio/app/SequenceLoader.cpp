@@ -46,6 +46,7 @@ void decodeAudio(SequenceMedia &media, Feedback &feedback)
     try {
         AudioBuffer audio = AudioDecoder::decode(media.mediaPath.toStdString(), SequenceLoader::kAudioRate);
         feedback.throwIfCanceled();
+        media.spectrogram = std::make_shared<Spectrogram>(Spectrogram::compute(audio.samples, audio.sampleRate));
         media.peaks = std::make_shared<WaveformPeaks>(std::move(audio.samples), audio.sampleRate);
     } catch (const Error &e) {
         // A video without sound is still worth annotating: show the reason instead of a waveform.

@@ -2,6 +2,7 @@
 // Everything the views show of one sequence's media, decoded off the GUI thread by
 // SequenceLoader and handed to the main window in one piece (so a canceled or failed load
 // leaves the views exactly as they were).
+#include "audio/Spectrogram.h"
 #include "audio/WaveformPeaks.h"
 
 #include <QImage>
@@ -20,6 +21,7 @@ struct SequenceMedia
     QVector<QImage> frames;     // every video frame (downscaled only if the sequence is huge)
     QVector<QImage> thumbnails; // the same frames, small, for the timeline strip
     std::shared_ptr<const WaveformPeaks> peaks; // null if the file has no readable audio
+    std::shared_ptr<const Spectrogram> spectrogram; // of the same audio (timeline lane), or null
     QVector<double> frameRms;   // audio RMS over each video frame's interval
     QString audioError;         // why there is no audio, if there is none
 

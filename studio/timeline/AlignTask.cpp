@@ -4,6 +4,7 @@
 
 #include "align/AlignerUtterance.h"
 #include "align/ForcedAligner.h"
+#include "align/Realignment.h"
 #include "tasks/TaskRunner.h"
 #include "util/Error.h"
 
@@ -34,40 +35,6 @@ std::shared_ptr<const AcousticModel> loadModel(const QString &path)
     return slot;
 }
 
-const Lexicon &lexicon()
-{
-    static const Lexicon instance(&PronunciationDictionary::cmu());
-    return instance;
-}
-
-// Replaces the intervals of `tier` inside [a, b] by `replacement` shifted by a.
-void splice(Tier &tier, double a, double b, const Tier &replacement)
-{
-    constexpr double eps = 1e-6;
-    std::vector<Interval> out;
-    for (const Interval &iv : tier.intervals)
-        if (!(iv.start >= a - eps && iv.end <= b + eps))
-            out.push_back(iv);
-    for (Interval iv : replacement.intervals) {
-        iv.start = std::min(b, iv.start + a);
-        iv.end = std::min(b, iv.end + a);
-        if (iv.end > iv.start)
-            out.push_back(iv);
-    }
-    std::stable_sort(out.begin(), out.end(), [](const Interval &x, const Interval &y) { return x.start < y.start; });
-    tier.intervals = std::move(out);
-}
-
-std::vector<std::string> wordsIn(const Tier &words, double a, double b)
-{
-    std::vector<std::string> out;
-    for (const Interval &iv : words.intervals)
-        if (iv.start >= a - 1e-6 && iv.end <= b + 1e-6 && !tieredit::isSilenceLabel(iv.label))
-            for (const std::string &w : Lexicon::splitWords(iv.label))
-                out.push_back(w);
-    return out;
-}
-
 AlignOutcome alignOne(const AlignJob &job, const AcousticModel &model)
 {
     AlignOutcome outcome;
@@ -77,11 +44,17 @@ AlignOutcome alignOne(const AlignJob &job, const AcousticModel &model)
     const std::string id = job.sequenceId.toStdString();
     const std::string path = job.mediaPath.toStdString();
     const ForcedAligner aligner(model);
+    const Lexicon lexicon(&PronunciationDictionary::cmu(), Lexicon::parseOverrides(job.pronunciations));
+    auto noteGuesses = [&](const std::vector<std::string> &words) {
+        for (const auto &[word, phones] : lexicon.guessed(words))
+            outcome.guessed.emplace_back(word, PronunciationDictionary::toString(phones));
+    };
     if (job.stretches.empty()) {
         const std::vector<std::string> words = Lexicon::splitWords(job.transcript);
         if (words.empty())
             throw Error("the sequence has no transcript to align", path);
-        const PreparedUtterance u = prepareUtterance(id, path, words, model, lexicon());
+        noteGuesses(words);
+        const PreparedUtterance u = prepareUtterance(id, path, words, model, lexicon);
         AlignmentResult r;
         try {
             r = aligner.align(u.features, u.words, u.pronunciations, u.duration);
@@ -90,36 +63,18 @@ AlignOutcome alignOne(const AlignJob &job, const AcousticModel &model)
         }
         outcome.tiers = TierPair{r.words, r.phones};
     } else {
-        std::vector<std::vector<std::string>> stretchWords;
-        std::vector<std::string> all;
-        for (const auto &[a, b] : job.stretches) {
-            stretchWords.push_back(wordsIn(job.current.words, a, b));
-            all.insert(all.end(), stretchWords.back().begin(), stretchWords.back().end());
+        // Constrained re-alignment (core/align/Realignment): the whole word tier again, with
+        // every boundary outside the stretches kept exactly.
+        const Realignment realignment(job.current.words, job.current.phones, job.stretches);
+        noteGuesses(realignment.words());
+        const PreparedUtterance u = prepareUtterance(id, path, realignment.words(), model, lexicon);
+        AlignmentResult r;
+        try {
+            r = realignment.run(aligner, u.features, u.pronunciations, u.duration);
+        } catch (const Error &e) {
+            throw Error(e.reason(), path);
         }
-        const PreparedUtterance u = prepareUtterance(id, path, all, model, lexicon());
-        const double shift = model.featureOptions().shiftSeconds;
-        const int frames = int(u.features.rows());
-        outcome.tiers = job.current;
-        std::size_t first = 0;
-        for (std::size_t k = 0; k < job.stretches.size(); ++k) {
-            const auto [a, b] = job.stretches[k];
-            const std::size_t n = stretchWords[k].size();
-            const std::vector<std::vector<Pronunciation>> pron(u.pronunciations.begin() + long(first),
-                                                               u.pronunciations.begin() + long(first + n));
-            first += n;
-            if (n == 0)
-                continue;
-            const int fa = std::clamp(int(std::lround(a / shift)), 0, frames);
-            const int fb = std::clamp(int(std::lround(b / shift)), fa, frames);
-            AlignmentResult r;
-            try {
-                r = aligner.align(u.features.middleRows(fa, fb - fa), stretchWords[k], pron, b - a);
-            } catch (const Error &e) {
-                throw Error(e.reason(), path);
-            }
-            splice(outcome.tiers.words, a, b, r.words);
-            splice(outcome.tiers.phones, a, b, r.phones);
-        }
+        outcome.tiers = TierPair{r.words, r.phones};
     }
     outcome.tiers.words.name = "words";
     outcome.tiers.phones.name = "phones";
@@ -178,39 +133,7 @@ Task *startAlignment(TaskRunner &runner, const QString &title, std::vector<Align
 
 std::vector<std::pair<double, double>> realignStretches(const TierPair &tiers, double a, double b)
 {
-    std::vector<std::pair<double, double>> out;
-    if (b < a)
-        std::swap(a, b);
-    bool open = false;
-    bool spoken = false;
-    double runStart = 0, runEnd = 0;
-    auto close = [&] {
-        if (open && spoken)
-            out.emplace_back(runStart, runEnd);
-        open = spoken = false;
-    };
-    for (const Interval &w : tiers.words.intervals) {
-        if (w.end <= a + 1e-9 || w.start >= b - 1e-9) {
-            close();
-            continue;
-        }
-        bool fixed = w.userEdited;
-        for (const Interval &p : tiers.phones.intervals)
-            if (p.userEdited && p.end > w.start + 1e-6 && p.start < w.end - 1e-6)
-                fixed = true;
-        if (fixed) {
-            close();
-            continue;
-        }
-        if (!open) {
-            open = true;
-            runStart = w.start;
-        }
-        runEnd = w.end;
-        spoken = spoken || !tieredit::isSilenceLabel(w.label);
-    }
-    close();
-    return out;
+    return Realignment::freeStretches(tiers.words, tiers.phones, a, b);
 }
 
 } // namespace lipsync::studio

@@ -1,13 +1,14 @@
 #pragma once
 // Forced alignment as a background task (TaskRunner): decode, features, Viterbi alignment with
-// the shipped GRID model (or $LIPSYNC_ALIGNER_MODEL) and the CMU dictionary with espeak-ng for
-// other words. The worker only computes; the tiers reach the document in the commit, through
+// the shipped GRID model (or $LIPSYNC_ALIGNER_MODEL), the project's pronunciations, the CMU
+// dictionary, and espeak-ng for other words (reported back so the user can check them). The worker only computes; the tiers reach the document in the commit, through
 // ProjectDocument::requestTiersChange, so cancel leaves the project untouched.
 #include "timeline/TierEdits.h"
 
 #include <QString>
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,8 @@ struct AlignJob
     // everything else stays; empty: align the whole sequence.
     std::vector<std::pair<double, double>> stretches;
     TierPair current;
+    // The project's pronunciation overrides (Project::pronunciations).
+    std::map<std::string, std::string> pronunciations;
 };
 
 struct AlignOutcome
@@ -39,6 +42,8 @@ struct AlignOutcome
     TierPair tiers;
     QString error;     // why it failed (for unknown words: names them)
     QString errorFile; // the file concerned
+    // Words only espeak-ng could pronounce, with its guess ("N AW Z IY"), for the user to check.
+    std::vector<std::pair<std::string, std::string>> guessed;
 };
 
 // The aligner model the studio uses: $LIPSYNC_ALIGNER_MODEL, else resources/aligner/grid-s1.aligner

@@ -8,6 +8,7 @@
 #include "preview/PlaybackController.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/AlignTask.h"
+#include "timeline/PronunciationsDialog.h"
 #include "timeline/WaveformView.h"
 #include "util/PhoneSet.h"
 
@@ -18,6 +19,7 @@
 #include <QKeyEvent>
 #include <QLineEdit>
 #include <QScrollBar>
+#include <QSettings>
 #include <QStatusBar>
 #include <QToolButton>
 #include <QUndoStack>
@@ -88,6 +90,8 @@ TimelinePanel::TimelinePanel(QWidget *parent)
     m_playSelection = makeAction(tr("Play Selection"), tr("Play the selected stretch (Space in the timeline)"));
     m_playWord = makeAction(tr("Play Word"), tr("Play the word under the cursor"));
     m_playAll = makeAction(tr("Play All"), tr("Play the whole sequence"));
+    m_pronunciationsAction = makeAction(tr("Pronunciations…"),
+                                        tr("The project's pronunciations, and the words espeak-ng guessed"));
     m_relabel->setShortcuts({QKeySequence(Qt::Key_Return), QKeySequence(Qt::Key_Enter)});
     for (QAction *a : {m_split, m_merge, m_relabel, m_insertSilence, m_insertBreath, m_playSelection})
         m_waveform->addAction(a);
@@ -111,7 +115,7 @@ TimelinePanel::TimelinePanel(QWidget *parent)
         bar->addWidget(b);
         return b;
     };
-    for (QAction *a : {m_align, m_alignAll, m_realign, m_playSelection, m_playWord, m_playAll})
+    for (QAction *a : {m_align, m_alignAll, m_realign, m_pronunciationsAction, m_playSelection, m_playWord, m_playAll})
         addButton(a);
     bar->addWidget(m_scroll, 1);
     QToolButton *zoomOut = makeButton(QStringLiteral("−"), tr("Zoom out (wheel down)"));
@@ -139,6 +143,17 @@ TimelinePanel::TimelinePanel(QWidget *parent)
     connect(m_playSelection, &QAction::triggered, this, &TimelinePanel::playSelection);
     connect(m_playWord, &QAction::triggered, this, &TimelinePanel::playWord);
     connect(m_playAll, &QAction::triggered, this, &TimelinePanel::playAll);
+    connect(m_pronunciationsAction, &QAction::triggered, this, &TimelinePanel::showPronunciations);
+
+    m_spectrogramAction = new QAction(tr("Show Spectrogram"), this);
+    m_spectrogramAction->setToolTip(tr("Show the spectrogram under the waveform in the timeline"));
+    m_spectrogramAction->setCheckable(true);
+    m_spectrogramAction->setChecked(QSettings().value(QStringLiteral("timeline/spectrogram"), false).toBool());
+    m_waveform->setSpectrogramVisible(m_spectrogramAction->isChecked());
+    connect(m_spectrogramAction, &QAction::toggled, this, [this](bool on) {
+        m_waveform->setSpectrogramVisible(on);
+        QSettings().setValue(QStringLiteral("timeline/spectrogram"), on);
+    });
 
     connect(m_waveform, &WaveformView::boundaryDragStarted, this, &TimelinePanel::onDragStarted);
     connect(m_waveform, &WaveformView::boundaryDragged, this, &TimelinePanel::onDragged);
@@ -192,6 +207,8 @@ void TimelinePanel::showSequence(int row)
     m_row = m_document && row < m_document->sequenceCount() ? row : -1;
     m_dragKey = -1;
     m_mediaPath = m_row >= 0 ? m_document->mediaPath(m_row) : QString();
+    const std::shared_ptr<const SequenceMedia> media = m_row >= 0 && m_window ? m_window->media() : nullptr;
+    m_waveform->setSpectrogram(media ? media->spectrogram : nullptr);
     m_waveform->clearSelection();
     refresh();
 }
@@ -233,6 +250,7 @@ void TimelinePanel::updateActions()
     m_playSelection->setEnabled(open);
     m_playWord->setEnabled(open);
     m_playAll->setEnabled(open);
+    m_pronunciationsAction->setEnabled(m_document && m_document->isOpen());
 }
 
 TierPair TimelinePanel::currentTiers() const
@@ -262,6 +280,7 @@ void TimelinePanel::alignSequence()
     job.sequenceId = QString::fromStdString(s.id);
     job.mediaPath = m_document->mediaPath(m_row);
     job.transcript = s.transcript;
+    job.pronunciations = m_document->project().pronunciations;
     startAlignment(tr("Align %1").arg(job.sequenceId), {job});
 }
 
@@ -279,6 +298,7 @@ void TimelinePanel::alignAll()
         job.sequenceId = QString::fromStdString(s.id);
         job.mediaPath = m_document->mediaPath(row);
         job.transcript = s.transcript;
+        job.pronunciations = m_document->project().pronunciations;
         jobs.push_back(std::move(job));
     }
     if (jobs.empty()) {
@@ -299,6 +319,7 @@ void TimelinePanel::realignSelection()
     job.sequenceId = QString::fromStdString(m_document->sequence(m_row).id);
     job.mediaPath = m_document->mediaPath(m_row);
     job.current = tiers;
+    job.pronunciations = m_document->project().pronunciations;
     job.stretches = realignStretches(tiers, a, b);
     if (job.stretches.empty()) {
         if (m_window)
@@ -337,8 +358,17 @@ void TimelinePanel::applyAlignment(const QString &title, std::vector<AlignOutcom
     QString file;
     QUndoStack *undo = m_window->undoStack();
     int ok = 0;
-    for (const AlignOutcome &o : outcomes)
+    int guessed = 0;
+    for (const AlignOutcome &o : outcomes) {
         ok += o.ok ? 1 : 0;
+        for (const auto &[word, phones] : o.guessed)
+            guessed += m_guessed.insert_or_assign(word, phones).second ? 1 : 0;
+    }
+    if (m_pronunciations)
+        m_pronunciations->setGuesses(m_guessed);
+    if (guessed > 0 && m_window)
+        m_window->statusBar()->showMessage(
+            tr("espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…", "", guessed), 8000);
     if (ok > 1)
         undo->beginMacro(title);
     for (const AlignOutcome &o : outcomes) {
@@ -359,6 +389,23 @@ void TimelinePanel::applyAlignment(const QString &title, std::vector<AlignOutcom
     if (!failed.isEmpty())
         ErrorReporter::report(m_window, tr("%n sequence(s) could not be aligned; the others were.", "", int(failed.size())),
                               failed.size() == 1 ? file : QString(), failed.join(QLatin1Char('\n')));
+}
+
+PronunciationsDialog *TimelinePanel::pronunciationsDialog() const
+{
+    return m_pronunciations;
+}
+
+void TimelinePanel::showPronunciations()
+{
+    if (!m_document)
+        return;
+    if (!m_pronunciations)
+        m_pronunciations = new PronunciationsDialog(m_document, this);
+    m_pronunciations->setGuesses(m_guessed);
+    m_pronunciations->show();
+    m_pronunciations->raise();
+    m_pronunciations->activateWindow();
 }
 
 // --- edits ---

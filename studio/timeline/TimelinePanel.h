@@ -5,13 +5,17 @@
 // It is also the timing controller of the view: it turns the view's gestures (boundary drags,
 // relabel requests) and its own edit actions (split S, merge M, relabel Enter, insert silence I
 // or breath B) into tier edits (TierEdits) requested from the ProjectDocument, so every edit is
-// one step on the main window's undo stack — a whole boundary drag included. It follows the
+// one step on the main window's undo stack — a whole boundary drag included. Alignments use the
+// project's pronunciations, edited in the Pronunciations dialog it opens, which also lists the
+// words espeak-ng had to guess. It follows the
 // current sequence of the main window and redraws the tiers whenever the document changes them.
 #include "timeline/TierEdits.h"
 
 #include <QPointer>
 #include <QWidget>
 
+#include <map>
+#include <string>
 #include <vector>
 
 class QAction;
@@ -27,6 +31,7 @@ namespace lipsync::studio {
 class MainWindow;
 class ProjectDocument;
 class PlaybackController;
+class PronunciationsDialog;
 class WaveformView;
 struct AlignJob;
 struct AlignOutcome;
@@ -56,6 +61,14 @@ public:
     QAction *playSelectionAction() const { return m_playSelection; }
     QAction *playWordAction() const { return m_playWord; }
     QAction *playAllAction() const { return m_playAll; }
+    QAction *pronunciationsAction() const { return m_pronunciationsAction; }
+    // Checkable: the spectrogram lane under the waveform (for the View menu; remembered in
+    // QSettings as timeline/spectrogram).
+    QAction *spectrogramAction() const { return m_spectrogramAction; }
+    // The Pronunciations dialog once opened (null before).
+    PronunciationsDialog *pronunciationsDialog() const;
+    // Words espeak-ng pronounced in the alignments so far, with its guesses.
+    const std::map<std::string, std::string> &guessedPronunciations() const { return m_guessed; }
 
     // The open relabel editor (a QLineEdit for words, an editable QComboBox of the 41 phones for
     // phones), or null.
@@ -74,6 +87,7 @@ public slots:
     void playWord();
     void playAll();
     void togglePlay();
+    void showPronunciations();
 
 signals:
     // An alignment task started (the tests wait for it).
@@ -126,6 +140,10 @@ private:
     QAction *m_playSelection;
     QAction *m_playWord;
     QAction *m_playAll;
+    QAction *m_pronunciationsAction;
+    QAction *m_spectrogramAction;
+    QPointer<PronunciationsDialog> m_pronunciations;
+    std::map<std::string, std::string> m_guessed;
     QPointer<Task> m_alignTask;
 };
 

@@ -60,6 +60,16 @@ QColor phoneColor(const std::string &label)
         return QColor(0x3f, 0x8f, 0x5a);
     return QColor(0xa0, 0x7d, 0x1c); // fricatives, affricates, HH
 }
+// Dark blue through red to pale yellow (perceptually ordered like "inferno"), v in [0, 1].
+QRgb spectrogramColor(float v)
+{
+    static constexpr std::array<std::array<int, 3>, 5> stops{{{0, 0, 4}, {87, 16, 110}, {188, 55, 84}, {249, 142, 9}, {252, 255, 164}}};
+    const float x = v * float(stops.size() - 1);
+    const int i = std::min(int(x), int(stops.size()) - 2);
+    const float u = x - float(i);
+    auto mix = [&](int c) { return int(std::lround(stops[size_t(i)][size_t(c)] * (1 - u) + stops[size_t(i) + 1][size_t(c)] * u)); };
+    return qRgb(mix(0), mix(1), mix(2));
+}
 } // namespace
 
 WaveformView::WaveformView(QWidget *parent) : QWidget(parent)
@@ -83,6 +93,31 @@ QColor WaveformView::editedColor()
 void WaveformView::setPeaks(std::shared_ptr<const WaveformPeaks> peaks)
 {
     m_peaks = std::move(peaks);
+    update();
+}
+
+void WaveformView::setSpectrogram(std::shared_ptr<const Spectrogram> spectrogram)
+{
+    m_spectrogram = std::move(spectrogram);
+    m_spectrogramImage = QImage();
+    if (m_spectrogram && !m_spectrogram->isEmpty()) {
+        // Rendered once per sequence; painting then only scales the visible columns.
+        const Eigen::MatrixXf &db = m_spectrogram->powerDb();
+        const float top = m_spectrogram->maxDb();
+        constexpr float kRangeDb = 70.0f;
+        m_spectrogramImage = QImage(int(db.rows()), int(db.cols()), QImage::Format_RGB32);
+        for (int b = 0; b < db.cols(); ++b) {
+            auto *line = reinterpret_cast<QRgb *>(m_spectrogramImage.scanLine(int(db.cols()) - 1 - b));
+            for (int f = 0; f < db.rows(); ++f)
+                line[f] = spectrogramColor(std::clamp((db(f, b) - top + kRangeDb) / kRangeDb, 0.0f, 1.0f));
+        }
+    }
+    update();
+}
+
+void WaveformView::setSpectrogramVisible(bool visible)
+{
+    m_showSpectrogram = visible;
     update();
 }
 
@@ -138,6 +173,7 @@ void WaveformView::setEditable(bool editable)
 void WaveformView::clear()
 {
     m_peaks.reset();
+    setSpectrogram(nullptr);
     m_words = {};
     m_phones = {};
     m_frameLabels.clear();
@@ -262,10 +298,14 @@ QRect WaveformView::laneRect(Lane lane) const
     const int words = phones - kWordsHeight;
     // Thumbnails give way first when the dock is low.
     const int thumbs = std::clamp((words - kRulerHeight) / 4, 0, kThumbHeight);
+    const int audio = std::max(0, words - kRulerHeight - thumbs);
+    // The spectrogram, when shown, takes the lower half of the audio lanes.
+    const int spectrogram = m_showSpectrogram ? audio / 2 : 0;
     switch (lane) {
     case Lane::Ruler: return QRect(0, 0, w, kRulerHeight);
     case Lane::Thumbnails: return QRect(0, kRulerHeight, w, thumbs);
-    case Lane::Waveform: return QRect(0, kRulerHeight + thumbs, w, std::max(0, words - kRulerHeight - thumbs));
+    case Lane::Waveform: return QRect(0, kRulerHeight + thumbs, w, audio - spectrogram);
+    case Lane::Spectrogram: return QRect(0, words - spectrogram, w, spectrogram);
     case Lane::Words: return QRect(0, words, w, kWordsHeight);
     case Lane::Phones: return QRect(0, phones, w, kPhonesHeight);
     case Lane::FrameLabels: return QRect(0, frames, w, kFrameLabelsHeight);
@@ -281,6 +321,8 @@ void WaveformView::paintEvent(QPaintEvent *)
     drawRuler(p, laneRect(Lane::Ruler));
     drawThumbnails(p, laneRect(Lane::Thumbnails));
     drawWaveform(p, wave);
+    if (m_showSpectrogram)
+        drawSpectrogram(p, laneRect(Lane::Spectrogram));
     drawTier(p, laneRect(Lane::Words), TierKind::Words);
     drawTier(p, laneRect(Lane::Phones), TierKind::Phones);
     drawFrameLabels(p, laneRect(Lane::FrameLabels));
@@ -374,6 +416,24 @@ void WaveformView::drawWaveform(QPainter &p, const QRect &r) const
         const double bottom = mid - std::clamp(pk.min * gain, -1.0, 1.0) * half;
         p.drawLine(QPointF(x + 0.5, top), QPointF(x + 0.5, std::max(bottom, top + 1.0)));
     }
+}
+
+void WaveformView::drawSpectrogram(QPainter &p, const QRect &r) const
+{
+    p.fillRect(r, kBackground);
+    if (m_spectrogramImage.isNull() || r.isEmpty())
+        return;
+    // Image column f is frame f, centred at frameCentre(f): x in image units for time t.
+    const Spectrogram &s = *m_spectrogram;
+    auto column = [&s](double t) { return (t - s.windowSeconds() / 2.0) / s.shiftSeconds() + 0.5; };
+    const double c0 = std::max(0.0, column(timeAt(0)));
+    const double c1 = std::min(double(m_spectrogramImage.width()), column(timeAt(r.width())));
+    if (c1 <= c0)
+        return;
+    auto xOf = [&](double c) { return xAt((c - 0.5) * s.shiftSeconds() + s.windowSeconds() / 2.0); };
+    const QRectF target(xOf(c0), r.top(), xOf(c1) - xOf(c0), r.height());
+    p.drawImage(target, m_spectrogramImage, QRectF(c0, 0, c1 - c0, m_spectrogramImage.height()));
+    drawLaneName(p, r, tr("spectrogram"));
 }
 
 void WaveformView::drawLaneName(QPainter &p, const QRect &r, const QString &name) const

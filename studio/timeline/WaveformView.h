@@ -2,6 +2,8 @@
 // The timeline of one sequence: a time ruler, a strip of video thumbnails, the audio waveform
 // (drawn per pixel column from the min/max peak pyramid, so any zoom costs the same), the words
 // and phones tiers and the per-video-frame phone label strip, with a cursor at the current time.
+// Optionally a spectrogram lane (core/audio/Spectrogram, log power, 70 dB range below the
+// loudest bin) shares the waveform's height, under it.
 // Wheel zooms about the mouse, Shift+wheel scrolls. Clicking sets the cursor; dragging over the
 // waveform selects a stretch; dragging in the ruler scrubs.
 //
@@ -11,6 +13,7 @@
 // selection, Tab / Shift+Tab select the next / previous interval, Esc clears the selection.
 // The view only reports intentions (signals); TimelinePanel turns them into document edits.
 // Intervals the user edited are drawn with an orange marker and orange boundaries.
+#include "audio/Spectrogram.h"
 #include "audio/WaveformPeaks.h"
 #include "project/Tier.h"
 #include "timeline/TierEdits.h"
@@ -29,11 +32,15 @@ class WaveformView : public QWidget
 {
     Q_OBJECT
 public:
-    enum class Lane { Ruler, Thumbnails, Waveform, Words, Phones, FrameLabels };
+    enum class Lane { Ruler, Thumbnails, Waveform, Spectrogram, Words, Phones, FrameLabels };
 
     explicit WaveformView(QWidget *parent = nullptr);
 
     void setPeaks(std::shared_ptr<const WaveformPeaks> peaks);
+    // The sequence's spectrogram (null: none); drawn while spectrogramVisible.
+    void setSpectrogram(std::shared_ptr<const Spectrogram> spectrogram);
+    void setSpectrogramVisible(bool visible);
+    bool isSpectrogramVisible() const { return m_showSpectrogram; }
     void setWords(const Tier &words);
     void setPhones(const Tier &phones);
     // One phone label per video frame (FrameLabels voting) at `frameRate`.
@@ -115,11 +122,15 @@ private:
     void drawRuler(QPainter &p, const QRect &r) const;
     void drawThumbnails(QPainter &p, const QRect &r) const;
     void drawWaveform(QPainter &p, const QRect &r) const;
+    void drawSpectrogram(QPainter &p, const QRect &r) const;
     void drawTier(QPainter &p, const QRect &r, TierKind kind) const;
     void drawFrameLabels(QPainter &p, const QRect &r) const;
     void drawLaneName(QPainter &p, const QRect &r, const QString &name) const;
 
     std::shared_ptr<const WaveformPeaks> m_peaks;
+    std::shared_ptr<const Spectrogram> m_spectrogram;
+    QImage m_spectrogramImage; // one column per frame, low frequencies at the bottom
+    bool m_showSpectrogram = false;
     Tier m_words;
     Tier m_phones;
     std::vector<std::string> m_frameLabels;

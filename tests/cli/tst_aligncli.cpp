@@ -2,6 +2,7 @@
 #include "CliRun.h"
 
 #include "io/TextGrid.h"
+#include "project/Project.h"
 
 #include <QDir>
 #include <QFile>
@@ -56,6 +57,50 @@ private slots:
         QCOMPARE(frames.first().toString(), QStringLiteral("sil"));
         QCOMPARE(frames.last().toString(), QStringLiteral("sil"));
         QVERIFY(frames.contains(QStringLiteral("B"))); // bin
+    }
+
+    // A word outside the CMU dictionary: espeak-ng guesses it (listed in --json), and the
+    // project's pronunciation (--project) overrides the guess.
+    void projectPronunciationsOverrideEspeak()
+    {
+        QTemporaryDir dir;
+        const QString transcript = dir.filePath(QStringLiteral("t.txt"));
+        QFile f(transcript);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("bin blue at f two nowzy\n");
+        f.close();
+        const QString out = dir.filePath(QStringLiteral("x.TextGrid"));
+        const QStringList args{"align", kDemo + "bbaf2n.mpg", "--transcript", transcript, "--out", out, "--json"};
+        Run r = runLipsync(args);
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QJsonArray guessed = QJsonDocument::fromJson(r.out).object().value("guessed").toArray();
+        QCOMPARE(guessed.size(), 1);
+        QCOMPARE(guessed[0].toObject().value("word").toString(), QStringLiteral("nowzy"));
+        QVERIFY(!guessed[0].toObject().value("phones").toString().isEmpty());
+
+        Project project;
+        project.name = "p";
+        project.pronunciations = {{"nowzy", "N AW1"}};
+        const QString folder = dir.filePath(QStringLiteral("project"));
+        project.save(folder.toStdString());
+        r = runLipsync(QStringList(args) << "--project" << folder);
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject json = QJsonDocument::fromJson(r.out).object();
+        QVERIFY(json.value("guessed").toArray().isEmpty());
+        QStringList phones;
+        for (const QJsonValue &v : json.value("phones").toArray())
+            if (v.toObject().value("label").toString() != "sil")
+                phones << v.toObject().value("label").toString();
+        QCOMPARE(phones.mid(phones.size() - 2), (QStringList{"N", "AW"}));
+
+        // A broken project is reported naming its manifest.
+        QFile bad(folder + "/project.json");
+        QVERIFY(bad.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        bad.write(R"({"format": "lipsync-project", "version": 1, "sequences": [], "pronunciations": [{"word": "nowzy", "phones": "N QQ"}]})");
+        bad.close();
+        r = runLipsync(QStringList(args) << "--project" << folder);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("project.json") && r.err.contains("pronunciations[0].phones"), r.err.constData());
     }
 
     void alignBadInput()

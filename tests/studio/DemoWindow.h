@@ -4,7 +4,9 @@
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
 #include "app/ProjectFiles.h"
+#include "preview/PlaybackController.h"
 #include "tasks/TaskRunner.h"
+#include "timeline/TimelinePanel.h"
 
 #include <QCoreApplication>
 #include <QTest>
@@ -26,6 +28,17 @@ inline void openDemoWindow(MainWindow *&window)
     QVERIFY(window->files()->openDemo());
     QTRY_VERIFY_WITH_TIMEOUT(window->media() != nullptr, 60000);
     QTRY_COMPARE_WITH_TIMEOUT(window->taskRunner()->runningCount(), 0, 60000);
+}
+
+// The demo window with its timeline panel found and audio playback off (the speech tests).
+inline void openDemoTimeline(MainWindow *&window, TimelinePanel *&panel)
+{
+    openDemoWindow(window);
+    if (QTest::currentTestFailed())
+        return;
+    panel = window->findChild<TimelinePanel *>();
+    QVERIFY(panel);
+    window->playback()->setAudioEnabled(false);
 }
 
 } // namespace lipsync::studio::testing

@@ -32,7 +32,7 @@
 
 using namespace lipsync;
 using namespace lipsync::studio;
-using lipsync::studio::testing::openDemoWindow;
+using lipsync::studio::testing::openDemoTimeline;
 
 namespace {
 
@@ -56,13 +56,10 @@ public:
 private slots:
     void initTestCase()
     {
-        openDemoWindow(m_window);
+        openDemoTimeline(m_window, m_panel);
         if (QTest::currentTestFailed())
             return;
-        m_panel = m_window->findChild<TimelinePanel *>();
-        QVERIFY(m_panel);
         m_view = m_window->waveformView();
-        m_window->playback()->setAudioEnabled(false);
     }
 
     void cleanupTestCase() { delete m_window; }

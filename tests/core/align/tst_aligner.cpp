@@ -9,6 +9,7 @@
 #include "align/AlignerTrainer.h"
 #include "align/AlignerUtterance.h"
 #include "align/ForcedAligner.h"
+#include "align/Realignment.h"
 #include "io/AudioDecoder.h"
 #include "io/Transcript.h"
 #include "tasks/Feedback.h"
@@ -18,6 +19,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
 #include <fstream>
 #include <random>
 
@@ -212,6 +214,7 @@ private slots:
         TrainerOptions o = smallOptions();
         o.firstStageIterations = 2;
         o.iterationsPerStage = 1;
+        o.normalization = CepstralNormalization::MeanAndVariance;
         Feedback feedback;
         const AcousticModel model = AlignerTrainer::train(train, o, feedback);
         QTemporaryDir dir;
@@ -219,6 +222,16 @@ private slots:
         model.save(path);
         const AcousticModel back = AcousticModel::load(path);
         QCOMPARE(back.dimension(), 39);
+        QCOMPARE(back.normalization(), CepstralNormalization::MeanAndVariance);
+        {
+            // CMVN: every coefficient has zero mean (static ones) and unit variance per utterance.
+            std::mt19937 r2(9);
+            const Eigen::MatrixXf n = back.features(synthesize(r2, kWords).samples);
+            const Eigen::RowVectorXf mean = n.colwise().mean();
+            const Eigen::RowVectorXf var = (n.rowwise() - mean).array().square().colwise().mean();
+            QVERIFY(mean.head(13).cwiseAbs().maxCoeff() < 1e-3f);
+            QVERIFY((var.array() - 1.0f).abs().maxCoeff() < 1e-3f);
+        }
         QVERIFY(back.featureOptions() == model.featureOptions());
         const Eigen::MatrixXf f = model.features(std::vector<float>(8000, 0.01f));
         for (int j = 0; j < model.stateCount(); ++j) {
@@ -300,6 +313,103 @@ private slots:
             }
         }
         QVERIFY2(good >= total * 3 / 4, qPrintable(QStringLiteral("%1 of %2 inner word boundaries within 40 ms").arg(good).arg(total)));
+    }
+
+    // Constrained Viterbi: fixed word boundaries are hard constraints.
+    void fixedBoundariesStayAndFreeOnesFollowTheUnconstrainedPath()
+    {
+        const AcousticModel model = AcousticModel::load(kShippedModel);
+        const Lexicon lexicon(&PronunciationDictionary::cmu());
+        const Transcript t = readTranscript(kDemo + std::string("bbaf2n.align"));
+        const PreparedUtterance u = prepareUtterance("bbaf2n", kDemo + "bbaf2n.mpg", t.words, model, lexicon);
+        const ForcedAligner aligner(model);
+        const AlignmentResult free = aligner.align(u.features, u.words, u.pronunciations, u.duration);
+        auto spoken = [](const Tier &words) {
+            std::vector<Interval> out;
+            for (const Interval &i : words.intervals)
+                if (i.label != "sil")
+                    out.push_back(i);
+            return out;
+        };
+        const std::vector<Interval> ref = spoken(free.words);
+        QCOMPARE(ref.size(), u.words.size());
+
+        // Constraints that agree with the free solution: the same path, boundary for boundary.
+        const std::vector<FixedBoundary> agree{{1, FixedBoundary::Side::Start, ref[1].start},
+                                               {3, FixedBoundary::Side::End, ref[3].end}};
+        const AlignmentResult same = aligner.align(u.features, u.words, u.pronunciations, u.duration, agree);
+        QCOMPARE(same.words, free.words);
+        QCOMPARE(same.phones, free.phones);
+        QCOMPARE(same.logLikelihood, free.logLikelihood);
+
+        // Moved boundaries (a user's fix, off the 10 ms grid by 2 ms) stay exactly where put.
+        const double start2 = ref[2].start + 0.062, end4 = ref[4].end - 0.048;
+        const std::vector<FixedBoundary> moved{{2, FixedBoundary::Side::Start, start2},
+                                               {4, FixedBoundary::Side::End, end4}};
+        const AlignmentResult fixed = aligner.align(u.features, u.words, u.pronunciations, u.duration, moved);
+        const std::vector<Interval> hyp = spoken(fixed.words);
+        QCOMPARE(hyp.size(), ref.size());
+        QCOMPARE(hyp[2].start, start2);
+        QCOMPARE(hyp[4].end, end4);
+        QVERIFY(fixed.logLikelihood < free.logLikelihood);
+        // The phone tier agrees: a phone starts where word 2 starts and one ends where word 4 ends.
+        bool phoneAtStart = false, phoneAtEnd = false;
+        for (const Interval &p : fixed.phones.intervals) {
+            phoneAtStart = phoneAtStart || p.start == start2;
+            phoneAtEnd = phoneAtEnd || p.end == end4;
+        }
+        QVERIFY(phoneAtStart && phoneAtEnd);
+        // Words far from the moved boundaries are where the free alignment put them.
+        QCOMPARE(hyp[0].start, ref[0].start);
+        QCOMPARE(hyp.back().end, ref.back().end);
+
+        // Re-aligning stretches (core/align/Realignment): a user-fixed word stays as it is, the
+        // free words around it meet it exactly, and with nothing fixed the result is the free path.
+        {
+            const Realignment all(free.words, free.phones,
+                                  Realignment::freeStretches(free.words, free.phones, 0.0, u.duration));
+            const AlignmentResult again = all.run(aligner, u.features, lexicon.pronounceAll(all.words()), u.duration);
+            QCOMPARE(again.words, free.words);
+            QCOMPARE(again.phones, free.phones);
+
+            Tier words = free.words;
+            int w = -1;
+            for (int i = 0; i < int(words.intervals.size()); ++i)
+                if (words.intervals[size_t(i)].label == u.words[2])
+                    w = i;
+            QVERIFY(w > 0);
+            // The user moves the word's start 30 ms earlier, word and phone edge together.
+            Interval &edited = words.intervals[size_t(w)];
+            Tier phones = free.phones;
+            for (std::size_t i = 1; i < phones.intervals.size(); ++i)
+                if (phones.intervals[i].start == edited.start) {
+                    phones.intervals[i].start -= 0.03;
+                    phones.intervals[i - 1].end -= 0.03;
+                }
+            edited.start -= 0.03;
+            edited.userEdited = true;
+            words.intervals[size_t(w - 1)].end = edited.start;
+            const auto stretches = Realignment::freeStretches(words, phones, 0.0, u.duration);
+            QCOMPARE(int(stretches.size()), 2);
+            const Realignment around(words, phones, stretches);
+            QCOMPARE(int(around.fixed().size()), 4); // both edges of the word, and its neighbours' there
+
+            const AlignmentResult r = around.run(aligner, u.features, lexicon.pronounceAll(around.words()), u.duration);
+            QVERIFY(std::find(r.words.intervals.begin(), r.words.intervals.end(), edited) != r.words.intervals.end());
+            for (std::size_t i = 1; i < r.words.intervals.size(); ++i)
+                QCOMPARE(r.words.intervals[i].start, r.words.intervals[i - 1].end);
+            for (std::size_t i = 1; i < r.phones.intervals.size(); ++i)
+                QCOMPARE(r.phones.intervals[i].start, r.phones.intervals[i - 1].end);
+            QCOMPARE(spoken(r.words).size(), u.words.size());
+        }
+
+        // Boundaries that leave no room for a word's phones are refused with a clear error.
+        const std::vector<FixedBoundary> squeezed{{3, FixedBoundary::Side::Start, ref[3].start},
+                                                  {3, FixedBoundary::Side::End, ref[3].start + 0.02}};
+        QVERIFY_THROWS_EXCEPTION(Error, aligner.align(u.features, u.words, u.pronunciations, u.duration, squeezed));
+        // A boundary of a word that is not there is an error too.
+        QVERIFY_THROWS_EXCEPTION(Error, aligner.align(u.features, u.words, u.pronunciations, u.duration,
+                                                      {{int(u.words.size()), FixedBoundary::Side::Start, 1.0}}));
     }
 
     void stereo48kHzClippedAudioStillAligns()

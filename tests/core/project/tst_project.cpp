@@ -75,6 +75,7 @@ Project makeProject()
     p.sequences.push_back(bare);
 
     p.models = {{"aam", "face model", "aam/face.aam"}, {"slds", "dynamics", "models/slds.json"}};
+    p.pronunciations = {{"lipsync", "L IH1 P S IH2 NG K"}, {"o'neill", "OW N IY L"}};
     return p;
 }
 
@@ -156,6 +157,8 @@ private slots:
         QCOMPARE(loaded.sequences[0].fitErrors, original.sequences[0].fitErrors);
         QVERIFY(loaded.sequences[1].fitErrors.empty());
         QCOMPARE(loaded.models, original.models);
+        QCOMPARE(loaded.pronunciations, original.pronunciations);
+        QVERIFY(text.contains("{\"word\": \"lipsync\", \"phones\": \"L IH1 P S IH2 NG K\"}"));
         QVERIFY(loaded == original);
 
         // Equality must notice a change, or the comparison above proves nothing.
@@ -170,6 +173,9 @@ private slots:
         QVERIFY(!(changed == original));
         changed = loaded;
         changed.sequences[0].fitErrors[1] = 0.5;
+        QVERIFY(!(changed == original));
+        changed = loaded;
+        changed.pronunciations["lipsync"] = "L IH P S IH N K";
         QVERIFY(!(changed == original));
 
         // Loading by the manifest's own path works too.
@@ -307,6 +313,10 @@ private slots:
         row("models_not_array", "models", "must be an array, found a string");
         row("model_missing_kind", "models[0].kind", "missing");
         row("model_empty_file", "models[1].file", "must not be empty");
+        row("pronunciation_unknown_phone", "pronunciations[1].phones", "'DX' is not one of the 41 phones");
+        row("pronunciation_upper_case", "pronunciations[1].word", "'Grid' must be one lower-case word");
+        row("pronunciation_duplicate", "pronunciations[1].word", "'lipsync' has an earlier entry");
+        row("pronunciation_empty_phones", "pronunciations[1].phones", "must hold at least one phone");
     }
 
     void corruptManifest()

@@ -1,0 +1,131 @@
+#include "align/Realignment.h"
+
+#include "align/Lexicon.h"
+#include "util/PhoneSet.h"
+
+#include <algorithm>
+
+namespace lipsync {
+
+namespace {
+
+constexpr double kEps = 1e-6;
+
+bool isSilence(const std::string &label)
+{
+    return label.empty() || PhoneSet::index(label) == PhoneSet::kSilence;
+}
+
+// The aligner's words for one word-tier label (a merged interval may hold several).
+std::vector<std::string> wordsOf(const std::string &label)
+{
+    if (isSilence(label))
+        return {};
+    if (PhoneSet::index(label) == PhoneSet::kBreath)
+        return {"[" + label + "]"};
+    return Lexicon::splitWords(label);
+}
+
+// Replaces the intervals of `tier` inside [a, b] by those of `replacement` clipped to it.
+void splice(Tier &tier, double a, double b, const Tier &replacement)
+{
+    std::vector<Interval> out;
+    for (const Interval &iv : tier.intervals)
+        if (!(iv.start >= a - kEps && iv.end <= b + kEps))
+            out.push_back(iv);
+    for (Interval iv : replacement.intervals) {
+        iv.start = std::max(a, iv.start);
+        iv.end = std::min(b, iv.end);
+        if (iv.end > iv.start + kEps)
+            out.push_back(iv);
+    }
+    std::stable_sort(out.begin(), out.end(), [](const Interval &x, const Interval &y) { return x.start < y.start; });
+    tier.intervals = std::move(out);
+}
+
+} // namespace
+
+std::vector<Realignment::Stretch> Realignment::freeStretches(const Tier &words, const Tier &phones, double a, double b)
+{
+    std::vector<Stretch> out;
+    if (b < a)
+        std::swap(a, b);
+    bool open = false;
+    bool spoken = false;
+    double runStart = 0, runEnd = 0;
+    auto close = [&] {
+        if (open && spoken)
+            out.emplace_back(runStart, runEnd);
+        open = spoken = false;
+    };
+    for (const Interval &w : words.intervals) {
+        if (w.end <= a + 1e-9 || w.start >= b - 1e-9) {
+            close();
+            continue;
+        }
+        bool fixed = w.userEdited;
+        for (const Interval &p : phones.intervals)
+            if (p.userEdited && p.end > w.start + kEps && p.start < w.end - kEps)
+                fixed = true;
+        if (fixed) {
+            close();
+            continue;
+        }
+        if (!open) {
+            open = true;
+            runStart = w.start;
+        }
+        runEnd = w.end;
+        spoken = spoken || !isSilence(w.label);
+    }
+    close();
+    return out;
+}
+
+Realignment::Realignment(const Tier &words, const Tier &phones, std::vector<Stretch> stretches)
+    : m_wordTier(words), m_phoneTier(phones), m_stretches(std::move(stretches))
+{
+    const double tierEnd = words.endTime();
+    auto kept = [this, tierEnd](double t) {
+        if (t <= kEps || t >= tierEnd - kEps)
+            return false; // the recording's own edges need no constraint
+        return std::none_of(m_stretches.begin(), m_stretches.end(),
+                            [t](const Stretch &s) { return t > s.first + kEps && t < s.second - kEps; });
+    };
+    for (const Interval &iv : words.intervals) {
+        const std::vector<std::string> inside = wordsOf(iv.label);
+        if (inside.empty())
+            continue; // a silence's edges are its neighbours' edges
+        const int first = int(m_words.size());
+        m_words.insert(m_words.end(), inside.begin(), inside.end());
+        const int last = int(m_words.size()) - 1;
+        if (kept(iv.start))
+            m_fixed.push_back(FixedBoundary{first, FixedBoundary::Side::Start, iv.start});
+        if (kept(iv.end))
+            m_fixed.push_back(FixedBoundary{last, FixedBoundary::Side::End, iv.end});
+    }
+}
+
+AlignmentResult Realignment::run(const ForcedAligner &aligner, const Eigen::MatrixXf &features,
+                                 const std::vector<std::vector<Pronunciation>> &pronunciations,
+                                 double audioDuration) const
+{
+    AlignmentResult aligned = aligner.align(features, m_words, pronunciations, audioDuration, m_fixed);
+    for (Interval &iv : aligned.words.intervals)
+        if (iv.label.size() > 2 && iv.label.front() == '[' && PhoneSet::index(iv.label.substr(1, iv.label.size() - 2)) == PhoneSet::kBreath)
+            iv.label = iv.label.substr(1, iv.label.size() - 2);
+    AlignmentResult out;
+    out.words = m_wordTier;
+    out.phones = m_phoneTier;
+    for (const auto &[a, b] : m_stretches) {
+        splice(out.words, a, b, aligned.words);
+        splice(out.phones, a, b, aligned.phones);
+    }
+    out.words.name = "words";
+    out.phones.name = "phones";
+    out.logLikelihood = aligned.logLikelihood;
+    out.frames = aligned.frames;
+    return out;
+}
+
+} // namespace lipsync

@@ -1,0 +1,181 @@
+// The timeline's speech tools in the studio on the demo project.
+//  - Project pronunciations: aligning a transcript with a word outside the CMU dictionary lists
+//    it with espeak-ng's guess in the Pronunciations dialog; setting its phones there (validated
+//    against the 41 phones: a bad phone changes nothing) is one undo step, the next alignment uses
+//    them (the phone tier shows them), and undo/redo restore the overrides.
+//  - The spectrogram lane: View > Show Spectrogram shows it under the waveform with the clip's
+//    spectrum (non-uniform pixels), remembers the choice in QSettings, and hides it again.
+#include "DemoWindow.h"
+
+#include "app/MainWindow.h"
+#include "app/ProjectDocument.h"
+#include "app/SurfaceFormat.h"
+#include "preview/PlaybackController.h"
+#include "tasks/TaskRunner.h"
+#include "timeline/PronunciationsDialog.h"
+#include "timeline/TimelinePanel.h"
+#include "timeline/WaveformView.h"
+
+#include <QAction>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
+#include <QSet>
+#include <QSettings>
+#include <QPushButton>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTest>
+#include <QUndoStack>
+
+using namespace lipsync;
+using namespace lipsync::studio;
+using lipsync::studio::testing::openDemoTimeline;
+
+class TestSpeechTools : public QObject
+{
+    Q_OBJECT
+public:
+    static void initMain()
+    {
+        setDefaultSurfaceFormat();
+        QStandardPaths::setTestModeEnabled(true);
+    }
+
+private slots:
+    void initTestCase()
+    {
+        openDemoTimeline(m_window, m_panel);
+    }
+
+    void cleanupTestCase() { delete m_window; }
+
+    void canonicalInput()
+    {
+        QString error;
+        QCOMPARE(PronunciationsDialog::canonicalWord(QStringLiteral(" Nowzy, "), &error), std::string("nowzy"));
+        QVERIFY(PronunciationsDialog::canonicalWord(QStringLiteral("two words"), &error).empty());
+        QCOMPARE(PronunciationsDialog::canonicalPhones(QStringLiteral("n  aw1 z iy0"), &error), std::string("N AW Z IY"));
+        QVERIFY(PronunciationsDialog::canonicalPhones(QStringLiteral("N QQ"), &error).empty());
+        QVERIFY(error.contains(QStringLiteral("QQ")));
+    }
+
+    void guessedWordIsListedAndOverridden()
+    {
+        ProjectDocument *doc = m_window->document();
+        QCOMPARE(m_window->currentSequence(), 0);
+        QVERIFY(doc->project().pronunciations.empty());
+        // The demo clip says "bin blue at f two now"; "nowzy" is no English word.
+        QVERIFY(doc->requestTranscriptChange(0, QStringLiteral("bin blue at f two nowzy")));
+        align();
+        QVERIFY(m_panel->guessedPronunciations().count("nowzy"));
+
+        QVERIFY(m_panel->pronunciationsAction()->isEnabled());
+        m_panel->pronunciationsAction()->trigger();
+        PronunciationsDialog *dialog = m_panel->pronunciationsDialog();
+        QVERIFY(dialog && dialog->isVisible());
+        QTableWidget *table = dialog->table();
+        QCOMPARE(table->rowCount(), 1);
+        QCOMPARE(table->item(0, 0)->text(), QStringLiteral("nowzy"));
+        QVERIFY(!table->item(0, 1)->text().isEmpty());
+        QCOMPARE(table->item(0, 2)->text(), QStringLiteral("espeak-ng guess"));
+
+        // Selecting the row fills the editor; a phone outside the set is refused.
+        table->selectRow(0);
+        QCOMPARE(dialog->wordEdit()->text(), QStringLiteral("nowzy"));
+        const int steps = m_window->undoStack()->index();
+        dialog->phonesEdit()->setText(QStringLiteral("N AW QQ"));
+        QTest::mouseClick(dialog->setButton(), Qt::LeftButton);
+        QVERIFY(dialog->messageLabel()->text().contains(QStringLiteral("QQ")));
+        QCOMPARE(m_window->undoStack()->index(), steps);
+        QVERIFY(doc->project().pronunciations.empty());
+
+        // A valid one: one undo step, shown as the project's.
+        dialog->phonesEdit()->setText(QStringLiteral("n aw1"));
+        QTest::mouseClick(dialog->setButton(), Qt::LeftButton);
+        QCOMPARE(m_window->undoStack()->index(), steps + 1);
+        QCOMPARE(doc->project().pronunciations, (std::map<std::string, std::string>{{"nowzy", "N AW"}}));
+        QCOMPARE(table->rowCount(), 1);
+        QCOMPARE(table->item(0, 1)->text(), QStringLiteral("N AW"));
+        QCOMPARE(table->item(0, 2)->text(), QStringLiteral("project"));
+
+        // The next alignment uses it: the word ends in N AW, and espeak guessed nothing new.
+        align();
+        QCOMPARE(lastSpokenPhones(2), (QStringList{"N", "AW"}));
+
+        // Undo and redo of the override (the alignment first).
+        m_window->undoStack()->undo();
+        m_window->undoStack()->undo();
+        QVERIFY(doc->project().pronunciations.empty());
+        QCOMPARE(table->item(0, 2)->text(), QStringLiteral("espeak-ng guess"));
+        m_window->undoStack()->redo();
+        QCOMPARE(doc->project().pronunciations.at("nowzy"), std::string("N AW"));
+
+        // Remove it again: one more step.
+        dialog->wordEdit()->setText(QStringLiteral("nowzy"));
+        QTest::mouseClick(dialog->removeButton(), Qt::LeftButton);
+        QVERIFY(doc->project().pronunciations.empty());
+        m_window->undoStack()->undo();
+        QVERIFY(!doc->project().pronunciations.empty());
+    }
+
+    void spectrogramFromTheViewMenu()
+    {
+        WaveformView *view = m_window->waveformView();
+        QAction *toggle = m_panel->spectrogramAction();
+        // It is in the View menu.
+        bool inMenu = false;
+        for (QMenu *menu : m_window->menuBar()->findChildren<QMenu *>())
+            inMenu = inMenu || menu->actions().contains(toggle);
+        QVERIFY(inMenu);
+        toggle->setChecked(false);
+        QCOMPARE(view->laneRect(WaveformView::Lane::Spectrogram).height(), 0);
+        const int waveHeight = view->laneRect(WaveformView::Lane::Waveform).height();
+
+        toggle->trigger();
+        QVERIFY(toggle->isChecked() && view->isSpectrogramVisible());
+        QVERIFY(QSettings().value(QStringLiteral("timeline/spectrogram")).toBool());
+        const QRect lane = view->laneRect(WaveformView::Lane::Spectrogram);
+        QVERIFY(lane.height() > 20);
+        QVERIFY(lane.top() >= view->laneRect(WaveformView::Lane::Waveform).bottom());
+        QVERIFY(lane.bottom() < view->laneRect(WaveformView::Lane::Words).top());
+        QVERIFY(view->laneRect(WaveformView::Lane::Waveform).height() < waveHeight);
+        view->zoomToFit();
+        const QImage image = view->grab().toImage().convertToFormat(QImage::Format_RGB32);
+        // Speech has structure: many distinct colours across the lane, low and high bands differ.
+        QSet<QRgb> colours;
+        for (int y = lane.top() + 2; y < lane.bottom() - 1; y += 2)
+            for (int x = lane.width() / 10; x < lane.width() * 9 / 10; x += 3)
+                colours.insert(image.pixel(x, y));
+        QVERIFY2(colours.size() > 50, qPrintable(QString::number(colours.size())));
+
+        toggle->trigger();
+        QVERIFY(!view->isSpectrogramVisible());
+        QVERIFY(!QSettings().value(QStringLiteral("timeline/spectrogram")).toBool());
+        QCOMPARE(view->laneRect(WaveformView::Lane::Spectrogram).height(), 0);
+    }
+
+private:
+    void align()
+    {
+        QVERIFY(m_panel->alignAction()->isEnabled());
+        m_panel->alignAction()->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 30000);
+    }
+
+    QStringList lastSpokenPhones(int n) const
+    {
+        QStringList phones;
+        for (const Interval &p : m_window->document()->sequence(0).phones.intervals)
+            if (p.label != "sil")
+                phones << QString::fromStdString(p.label);
+        return phones.mid(phones.size() - n);
+    }
+
+    MainWindow *m_window = nullptr;
+    TimelinePanel *m_panel = nullptr;
+};
+
+QTEST_MAIN(TestSpeechTools)
+#include "tst_speechtools.moc"
