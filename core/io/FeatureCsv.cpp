@@ -96,8 +96,8 @@ FeatureTable readFeatureCsv(const std::string &path)
     return table;
 }
 
-void writeFeatureCsv(const std::string &path, const Eigen::MatrixXd &values,
-                     const std::vector<int> &frames)
+std::string formatFeatureCsv(const Eigen::MatrixXd &values, const std::vector<int> &frames,
+                            const std::string &path)
 {
     if (!frames.empty() && frames.size() != size_t(values.rows()))
         throw Error("frame list and feature rows differ in length", path);
@@ -113,7 +113,13 @@ void writeFeatureCsv(const std::string &path, const Eigen::MatrixXd &values,
             out << ',' << values(r, c);
         out << '\n';
     }
-    writeFileAtomically(path, out.str());
+    return out.str();
+}
+
+void writeFeatureCsv(const std::string &path, const Eigen::MatrixXd &values,
+                     const std::vector<int> &frames)
+{
+    writeFileAtomically(path, formatFeatureCsv(values, frames, path));
 }
 
 } // namespace lipsync
