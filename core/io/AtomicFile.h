@@ -1,7 +1,6 @@
 #pragma once
-// Atomic whole-file writes for core/ (QSaveFile: temporary file + fsync + rename, then an fsync
-// of the folder so the rename itself survives a power cut), so a crash mid-save leaves either
-// the old or the new file, never a broken one.
+// Atomic whole-file writes for core/ (QSaveFile: temporary file + fsync + rename), so a crash
+// mid-save leaves either the old or the new file, never a broken one.
 #include <string>
 
 namespace lipsync {

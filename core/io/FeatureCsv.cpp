@@ -96,8 +96,8 @@ FeatureTable readFeatureCsv(const std::string &path)
     return table;
 }
 
-std::string formatFeatureCsv(const Eigen::MatrixXd &values, const std::vector<int> &frames,
-                            const std::string &path)
+void writeFeatureCsv(const std::string &path, const Eigen::MatrixXd &values,
+                     const std::vector<int> &frames)
 {
     if (!frames.empty() && frames.size() != size_t(values.rows()))
         throw Error("frame list and feature rows differ in length", path);
@@ -113,13 +113,7 @@ std::string formatFeatureCsv(const Eigen::MatrixXd &values, const std::vector<in
             out << ',' << values(r, c);
         out << '\n';
     }
-    return out.str();
-}
-
-void writeFeatureCsv(const std::string &path, const Eigen::MatrixXd &values,
-                     const std::vector<int> &frames)
-{
-    writeFileAtomically(path, formatFeatureCsv(values, frames, path));
+    writeFileAtomically(path, out.str());
 }
 
 } // namespace lipsync

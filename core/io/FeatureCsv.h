@@ -17,10 +17,8 @@ struct FeatureTable
 
 // Throws lipsync::Error naming the file and line for ragged rows, non-numbers, NaN/inf values.
 FeatureTable readFeatureCsv(const std::string &path);
-// The file's text. Rows are numbered 0..rows-1 unless `frames` is given.
-std::string formatFeatureCsv(const Eigen::MatrixXd &values, const std::vector<int> &frames = {},
-                             const std::string &path = {});
-// formatFeatureCsv written atomically (a temporary file, then renamed).
+// Atomic (written to a temporary file, then renamed). Rows are numbered 0..rows-1 unless
+// `frames` is given.
 void writeFeatureCsv(const std::string &path, const Eigen::MatrixXd &values,
                      const std::vector<int> &frames = {});
 

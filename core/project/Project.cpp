@@ -11,7 +11,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 
-#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -46,15 +45,6 @@ std::map<std::string, std::string> featureFilesOf(const std::string &manifest)
             files[o.value("id").toString().toStdString()] = o.value("features").toString().toStdString();
     }
     return files;
-}
-
-bool fileHolds(const std::string &path, const std::string &text)
-{
-    QFile file(q(path));
-    if (!file.open(QIODevice::ReadOnly) || file.size() != qint64(text.size()))
-        return false;
-    const QByteArray data = file.readAll();
-    return data.size() == qsizetype(text.size()) && std::equal(data.begin(), data.end(), text.begin());
 }
 
 void setFeatureFile(QJsonObject &manifest, size_t sequence, const std::string &relative)
@@ -138,35 +128,38 @@ void Project::save(const std::string &folderArgument) const
     const std::map<std::string, std::string> current = replacing ? featureFilesOf(manifest)
                                                                  : std::map<std::string, std::string>{};
     QJsonObject staged = json;
-    std::vector<std::pair<std::string, std::string>> moves; // (final path, text)
+    std::vector<std::pair<std::string, std::string>> moves; // (staged path, final path)
     for (size_t i = 0; i < sequences.size(); ++i) {
         const Sequence &s = sequences[i];
         if (s.features.size() == 0)
             continue;
         const std::string relative = ProjectManifest::featureFileName(s.id);
         const std::string path = dir.filePath(q(relative)).toStdString();
-        const std::string text = formatFeatureCsv(s.features, {}, path);
         const auto used = current.find(s.id);
-        const bool inUse = used != current.end() && used->second == relative;
-        if (inUse && fileHolds(path, text))
-            continue; // unchanged
-        if (!inUse || !QFileInfo(q(path)).isFile()) {
+        if (used == current.end() || used->second != relative || !QFileInfo(q(path)).isFile()) {
             // The manifest on disk does not read this file (or it is gone): no version to keep.
-            writeFileAtomically(path, text);
+            writeFeatureCsv(path, s.features);
             continue;
         }
         const std::string stagedRelative = std::string(kStagingFolder) + "/" + s.id + ".csv";
-        writeFileAtomically(dir.filePath(q(stagedRelative)).toStdString(), text);
+        const std::string stagedPath = dir.filePath(q(stagedRelative)).toStdString();
+        writeFeatureCsv(stagedPath, s.features);
+        if (readWholeFile(stagedPath) == readWholeFile(path)) {
+            QFile::remove(q(stagedPath)); // unchanged
+            continue;
+        }
         setFeatureFile(staged, i, stagedRelative);
-        moves.emplace_back(path, text);
+        moves.emplace_back(stagedPath, path);
     }
     if (replacing)
         writeFileAtomically(manifest + ".bak", readWholeFile(manifest));
     writeManifest(manifest, staged);
-    if (moves.empty())
+    if (moves.empty()) {
+        QDir(dir).rmdir(QString::fromLatin1(kStagingFolder)); // only if empty
         return;
-    for (const auto &[path, text] : moves)
-        writeFileAtomically(path, text);
+    }
+    for (const auto &[from, to] : moves)
+        writeFileAtomically(to, readWholeFile(from));
     writeManifest(manifest, json);
     QDir(dir.filePath(QString::fromLatin1(kStagingFolder))).removeRecursively();
 }

@@ -7,10 +7,8 @@
 // Load validates everything and throws lipsync::Error naming the file and the field
 // (".../project.json: sequences[2].frameRate: must be a positive number"). Missing media is not
 // a load error (it may be on another disk; see mediaPath), a missing features file is. Save is
-// atomic as a whole: each file is replaced atomically (io/AtomicFile) and the manifest, replaced
-// last, only ever names complete feature files, so a crash at any moment leaves either the old or
-// the new version (tests/core/project/tst_projectcrash kills a saving process 100 times). The
-// manifest format is read and written by ProjectManifest.
+// atomic per file (QSaveFile), so a crash leaves either the old or the new version. The manifest
+// format is read and written by ProjectManifest.
 #include "project/Sequence.h"
 
 #include <string>
