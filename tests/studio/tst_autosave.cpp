@@ -12,6 +12,7 @@
 #include "tasks/TaskRunner.h"
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QSettings>
 #include <QStandardPaths>
@@ -184,8 +185,13 @@ private slots:
         const QString side = Autosave::folderFor(doc()->folder(), true);
         QVERIFY(!side.startsWith(doc()->folder()));
         QVERIFY(doc()->requestTranscriptChange(1, QStringLiteral("demo edit")));
+        QElapsedTimer clock;
+        clock.start();
         QVERIFY(autosave()->saveNow());
+        const qint64 onGuiThread = clock.elapsed();
         autosave()->waitForWrite();
+        qInfo("demo autosave (10 sequences with features): %lld ms on the GUI thread, %lld ms until on disk",
+              onGuiThread, clock.elapsed());
         QVERIFY(readAll(side + QStringLiteral("/project.json")).contains("demo edit"));
         QVERIFY(!QFileInfo::exists(doc()->folder() + QStringLiteral("/.autosave")));
         delete m_window;
