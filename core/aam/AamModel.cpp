@@ -253,6 +253,10 @@ AamModel AamModel::load(const std::string &path)
                     && (m.detectorShape.size() == 0 || m.detectorShape.size() == m.meanShape.size());
     if (!ok)
         throw Error("inconsistent AAM model (sizes disagree)", path);
+    // The identifier is a hash of the content (computeIdentifier): damaged numbers that still
+    // parse would otherwise fit faces with garbage.
+    if (m.identifier.rfind("aam-", 0) == 0 && m.identifier != m.computeIdentifier())
+        throw Error("corrupt AAM file (the content does not match its identifier " + m.identifier + ")", path);
     m.prepare();
     if (m.textureMean.size() != 3 * m.warp(0).pixelCount())
         throw Error("inconsistent AAM model (texture size)", path);

@@ -6,9 +6,13 @@
 #include "util/Error.h"
 
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
 
 #include <cmath>
+#include <map>
 
 namespace lipsync {
 
@@ -22,6 +26,40 @@ QString q(const std::string &s)
 std::string absolutePath(const std::string &path)
 {
     return QDir::cleanPath(QFileInfo(q(path)).absoluteFilePath()).toStdString();
+}
+
+// Where a save puts changed feature files until the manifest names them (see save).
+constexpr const char *kStagingFolder = "features/.saving";
+
+// Sequence id -> the features file the manifest on disk names (empty if it cannot be read).
+std::map<std::string, std::string> featureFilesOf(const std::string &manifest)
+{
+    std::map<std::string, std::string> files;
+    QFile file(q(manifest));
+    if (!file.open(QIODevice::ReadOnly))
+        return files;
+    const QJsonArray sequences = QJsonDocument::fromJson(file.readAll()).object().value("sequences").toArray();
+    for (const QJsonValue &value : sequences) {
+        const QJsonObject o = value.toObject();
+        if (o.value("features").isString())
+            files[o.value("id").toString().toStdString()] = o.value("features").toString().toStdString();
+    }
+    return files;
+}
+
+void setFeatureFile(QJsonObject &manifest, size_t sequence, const std::string &relative)
+{
+    QJsonArray sequences = manifest.value("sequences").toArray();
+    QJsonObject o = sequences[qsizetype(sequence)].toObject();
+    o.insert("features", q(relative));
+    sequences[qsizetype(sequence)] = o;
+    manifest.insert("sequences", sequences);
+}
+
+void writeManifest(const std::string &path, const QJsonObject &json)
+{
+    const QByteArray text = ProjectManifest::serialize(json);
+    writeFileAtomically(path, std::string(text.constData(), size_t(text.size())));
 }
 
 } // namespace
@@ -77,20 +115,57 @@ void Project::save(const std::string &folderArgument) const
 
     if (!QDir().mkpath(q(folder)))
         throw Error("cannot create the project folder", folder);
-    // Features first and the manifest last: if anything fails on the way, the old manifest is
-    // still the one on disk (each file is replaced atomically; features of a sequence that no
-    // longer has any stay on disk, unreferenced, rather than deleting user data).
-    for (const Sequence &s : sequences)
-        if (s.features.size() > 0)
-            writeFeatureCsv(QDir(q(folder)).filePath(q(ProjectManifest::featureFileName(s.id)))
-                                .toStdString(),
-                            s.features);
+    // The manifest is the commit point: every feature file it names is complete before it is
+    // replaced, so a crash at any moment leaves a manifest that loads with the features it was
+    // saved with (the old version or the new one, never a mix). Changed features of a project
+    // already on disk are therefore first written beside the ones the current manifest uses
+    // (features/.saving/), the manifest switched to them, then moved into place and the manifest
+    // switched back. Anything failing before the manifest is replaced leaves the old one (and
+    // its .bak) as they were. Features of a sequence that no longer has any stay on disk,
+    // unreferenced, rather than deleting user data.
+    const QDir dir(q(folder));
+    const bool replacing = QFileInfo(q(manifest)).isFile();
+    const std::map<std::string, std::string> current = replacing ? featureFilesOf(manifest)
+                                                                 : std::map<std::string, std::string>{};
+    QJsonObject staged = json;
+    std::vector<std::pair<std::string, std::string>> moves; // (staged path, final path)
+    for (size_t i = 0; i < sequences.size(); ++i) {
+        const Sequence &s = sequences[i];
+        if (s.features.size() == 0)
+            continue;
+        const std::string relative = ProjectManifest::featureFileName(s.id);
+        const std::string path = dir.filePath(q(relative)).toStdString();
+        const auto used = current.find(s.id);
+        if (used == current.end() || used->second != relative || !QFileInfo(q(path)).isFile()) {
+            // The manifest on disk does not read this file (or it is gone): no version to keep.
+            writeFeatureCsv(path, s.features);
+            continue;
+        }
+        const std::string stagedRelative = std::string(kStagingFolder) + "/" + s.id + ".csv";
+        const std::string stagedPath = dir.filePath(q(stagedRelative)).toStdString();
+        writeFeatureCsv(stagedPath, s.features);
+        if (readWholeFile(stagedPath) == readWholeFile(path)) {
+            QFile::remove(q(stagedPath)); // unchanged
+            continue;
+        }
+        setFeatureFile(staged, i, stagedRelative);
+        moves.emplace_back(stagedPath, path);
+    }
+    // The study is written whole before the manifest that names it (saveStudy rewrites it alone
+    // after every answer of a participant, so it stands apart from the manifest's versions).
     if (study)
-        study->save(QDir(q(folder)).filePath(q(kStudyFileName)).toStdString());
-    if (QFileInfo(q(manifest)).isFile())
+        study->save(dir.filePath(q(kStudyFileName)).toStdString());
+    if (replacing)
         writeFileAtomically(manifest + ".bak", readWholeFile(manifest));
-    const QByteArray text = ProjectManifest::serialize(json);
-    writeFileAtomically(manifest, std::string(text.constData(), size_t(text.size())));
+    writeManifest(manifest, staged);
+    if (moves.empty()) {
+        QDir(dir).rmdir(QString::fromLatin1(kStagingFolder)); // only if empty
+        return;
+    }
+    for (const auto &[from, to] : moves)
+        writeFileAtomically(to, readWholeFile(from));
+    writeManifest(manifest, json);
+    QDir(dir.filePath(QString::fromLatin1(kStagingFolder))).removeRecursively();
 }
 
 void Project::saveAs(const std::string &folderArgument)

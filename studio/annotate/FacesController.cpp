@@ -441,8 +441,11 @@ Task *FacesController::trackSequences(const QList<int> &rows)
     if (rows.isEmpty())
         return nullptr;
     if (!ensureModel()) {
-        ErrorReporter::report(m_window, tr("Tracking needs an AAM."), QString(),
-                              tr("Label a few frames and choose Faces ▸ Build AAM first."));
+        const auto &models = m_window->document()->project().models;
+        // A project's AAM that failed to load has been reported (file and reason) by ensureModel.
+        if (std::none_of(models.begin(), models.end(), [](const ModelReference &m) { return m.kind == "aam"; }))
+            ErrorReporter::report(m_window, tr("Tracking needs an AAM."), QString(),
+                                  tr("Label a few frames and choose Faces ▸ Build AAM first."));
         return nullptr;
     }
     ProjectDocument *doc = m_window->document();

@@ -3,6 +3,7 @@
 #include "annotate/FacesController.h"
 #include "annotate/FrameView.h"
 #include "app/AboutBox.h"
+#include "app/Autosave.h"
 #include "app/ErrorReporter.h"
 #include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
@@ -186,6 +187,7 @@ void MainWindow::createMenus()
     file->addSeparator();
     file->addAction(a.quit);
     m_files = new ProjectFiles(m_document, this, recent);
+    m_files->autosave()->watch(m_runner);
 
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
     edit->addAction(a.undo);

@@ -1,5 +1,6 @@
 #include "app/ProjectFiles.h"
 
+#include "app/Autosave.h"
 #include "app/DemoProject.h"
 #include "app/ErrorReporter.h"
 #include "app/ProjectDocument.h"
@@ -9,11 +10,13 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
+#include <QUndoStack>
 
 namespace lipsync::studio {
 
 ProjectFiles::ProjectFiles(ProjectDocument *document, QWidget *window, QMenu *recentMenu)
-    : QObject(window), m_document(document), m_window(window), m_recent(new RecentProjects(recentMenu, this))
+    : QObject(window), m_document(document), m_window(window), m_recent(new RecentProjects(recentMenu, this)),
+      m_autosave(new Autosave(document, window))
 {
     connect(m_recent, &RecentProjects::openRequested, this, [this](const QString &folder) {
         if (maybeSave())
@@ -37,15 +40,34 @@ bool ProjectFiles::open(const QString &path)
     QFileInfo info(path);
     // A project.json names its folder; anything else (even a missing path) is the folder.
     const QString folder = info.isFile() ? info.absolutePath() : info.absoluteFilePath();
+    Project project;
     try {
-        Project project = Project::load(folder.toStdString());
-        m_document->reset(std::move(project), folder, false);
+        project = Project::load(folder.toStdString());
     } catch (const std::exception &e) {
         ErrorReporter::report(m_window, tr("The project could not be opened."), e,
                               QDir(folder).filePath(QString::fromLatin1(Project::kManifestName)));
         return false;
     }
+    if (!openLoaded(std::move(project), folder, false))
+        return false;
     m_recent->add(folder);
+    return true;
+}
+
+bool ProjectFiles::openLoaded(Project project, const QString &folder, bool readOnly)
+{
+    Autosave::Offer offer = Autosave::recoveryFor(folder, readOnly, m_window);
+    if (offer.choice == Autosave::Choice::Cancel)
+        return false;
+    if (!offer.recovered) {
+        m_document->reset(std::move(project), folder, readOnly);
+        return true;
+    }
+    // The recovered version opens as unsaved changes: the undo stack (the window's) starts
+    // without a clean state, so the title shows it, Save writes it and closing asks.
+    m_document->reset(std::move(*offer.recovered), folder, readOnly);
+    if (auto *undo = m_window->findChild<QUndoStack *>(QString(), Qt::FindDirectChildrenOnly))
+        undo->resetClean();
     return true;
 }
 
@@ -57,13 +79,14 @@ bool ProjectFiles::openDemo()
                               tr("Looked in $LIPSYNC_DEMO_DIR, <prefix>/share/lipsync/demo and the source tree."));
         return false;
     }
+    Project project;
     try {
-        m_document->reset(DemoProject::load(folder), folder, true);
+        project = DemoProject::load(folder);
     } catch (const std::exception &e) {
         ErrorReporter::report(m_window, tr("The demo project could not be opened."), e, folder);
         return false;
     }
-    return true;
+    return openLoaded(std::move(project), folder, true);
 }
 
 bool ProjectFiles::save()
@@ -104,6 +127,7 @@ bool ProjectFiles::saveTo(const QString &folder)
 {
     try {
         m_document->saveTo(folder);
+        m_autosave->discard(); // saved: nothing unsaved is left to keep
     } catch (const std::exception &e) {
         ErrorReporter::report(m_window, tr("The project could not be saved."), e,
                               QDir(folder).filePath(QString::fromLatin1(Project::kManifestName)));

@@ -1,6 +1,8 @@
 #pragma once
 // Open / save / save as / recent projects for the main window: the dialogs, the read-only demo
 // rule and the error messages. A failed open or save changes nothing.
+#include "project/Project.h"
+
 #include <QObject>
 #include <QString>
 
@@ -9,6 +11,7 @@ class QWidget;
 
 namespace lipsync::studio {
 
+class Autosave;
 class ProjectDocument;
 class RecentProjects;
 
@@ -19,7 +22,9 @@ public:
     ProjectFiles(ProjectDocument *document, QWidget *window, QMenu *recentMenu);
 
     // Loads the project in `folder` (or the folder of a project.json). Returns false, having
-    // reported why, if it cannot be loaded; the open document is then untouched.
+    // reported why, if it cannot be loaded; the open document is then untouched. If a crash left
+    // an autosave newer than the project, offers to recover it (see Autosave): recovered
+    // changes open as unsaved changes; Cancel opens nothing and returns false.
     bool open(const QString &path);
     bool openDemo();
     // Save: to the project's folder; for the read-only demo it behaves as Save As.
@@ -28,15 +33,19 @@ public:
     // Before closing or replacing a modified document: save, discard or cancel. True = go on.
     bool maybeSave();
 
+    Autosave *autosave() const { return m_autosave; }
+
 public slots:
     void openWithDialog();
 
 private:
     bool saveTo(const QString &folder);
+    bool openLoaded(Project project, const QString &folder, bool readOnly);
 
     ProjectDocument *m_document;
     QWidget *m_window;
     RecentProjects *m_recent;
+    Autosave *m_autosave;
 };
 
 } // namespace lipsync::studio

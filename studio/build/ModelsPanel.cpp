@@ -2,6 +2,7 @@
 
 #include "annotate/FacesController.h"
 
+#include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
 #include "app/ProjectDocument.h"
 #include "dynamics/DynamicModel.h"
@@ -444,6 +445,10 @@ void ModelsPanel::onDocumentReset()
             std::shared_ptr<const DynamicModel> model = loadModel(project.resolve(m.file));
             m_trained.insert(QString::fromStdString(m.kind), model);
         } catch (const Error &e) {
+            // One message box for the first damaged model (which file, why); the rest are listed here.
+            if (failed.isEmpty())
+                ErrorReporter::report(m_window, tr("A model of this project could not be loaded."), e,
+                                      QString::fromStdString(project.resolve(m.file)));
             failed.append(QString::fromUtf8(e.what()));
         }
     }

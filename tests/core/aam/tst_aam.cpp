@@ -182,6 +182,7 @@ private slots:
         QCOMPARE(back.warp(0).pixelCount(), m_model.warp(0).pixelCount());
         // Truncated, wrong magic and wrong version are clear errors.
         std::string bytes = readWholeFile(path);
+        const std::string original = bytes;
         writeFileAtomically(path, bytes.substr(0, bytes.size() / 2));
         QVERIFY_THROWS_EXCEPTION(Error, AamModel::load(path));
         writeFileAtomically(path, "not a model");
@@ -193,6 +194,16 @@ private slots:
             QFAIL("loaded a wrong version");
         } catch (const Error &e) {
             QVERIFY2(QString(e.what()).contains("version"), e.what());
+        }
+        // Damaged numbers that still parse: the content no longer matches its identifier.
+        std::string damaged = original;
+        damaged[damaged.size() / 2] = char(~damaged[damaged.size() / 2]);
+        writeFileAtomically(path, damaged);
+        try {
+            AamModel::load(path);
+            QFAIL("loaded a damaged model");
+        } catch (const Error &e) {
+            QVERIFY2(QString(e.what()).contains("corrupt AAM file") && QString(e.what()).contains("m.aam"), e.what());
         }
     }
 
