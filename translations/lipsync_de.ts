@@ -68,12 +68,12 @@
         <translation>Audio wird dekodiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceLoader.cpp" line="59"/>
+        <location filename="../studio/app/SequenceLoader.cpp" line="60"/>
         <source>Reading video frames</source>
         <translation>Videobilder werden gelesen</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceLoader.cpp" line="84"/>
+        <location filename="../studio/app/SequenceLoader.cpp" line="85"/>
         <source>Loading %1</source>
         <translation>%1 wird geladen</translation>
     </message>
@@ -170,105 +170,645 @@
     </message>
 </context>
 <context>
+    <name>lipsync::studio::Autosave</name>
+    <message>
+        <location filename="../studio/app/Autosave.cpp" line="33"/>
+        <source>Recover Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen wiederherstellen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/Autosave.cpp" line="34"/>
+        <source>LipSync Studio did not close normally while %1 had unsaved changes. An autosave from %2 is newer than the saved project.</source>
+        <translation>LipSync Studio wurde nicht normal beendet, während %1 ungespeicherte Änderungen hatte. Eine automatische Sicherung vom %2 ist neuer als das gespeicherte Projekt.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/Autosave.cpp" line="39"/>
+        <source>Recover opens the autosaved version as unsaved changes; Discard deletes the autosave.</source>
+        <translation>„Wiederherstellen“ öffnet die automatisch gesicherte Fassung als ungespeicherte Änderungen; „Verwerfen“ löscht die automatische Sicherung.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/Autosave.cpp" line="41"/>
+        <source>Recover</source>
+        <translation>Wiederherstellen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/Autosave.cpp" line="243"/>
+        <source>The autosaved changes could not be recovered; the saved project opens.</source>
+        <translation>Die automatisch gesicherten Änderungen konnten nicht wiederhergestellt werden; das gespeicherte Projekt wird geöffnet.</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::EvaluationChart</name>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="47"/>
+        <source>L1 error</source>
+        <translation>L1-Fehler</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="48"/>
+        <source>RMS error</source>
+        <translation>RMS-Fehler</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="49"/>
+        <source>L-inf error</source>
+        <translation>L-inf-Fehler</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="50"/>
+        <source>log-likelihood per frame</source>
+        <translation>Log-Likelihood pro Bild</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::ExportMenu</name>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="56"/>
+        <source>E&amp;xport</source>
+        <translation>E&amp;xportieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="59"/>
+        <source>Generated &amp;Video (MP4)…</source>
+        <translation>Erzeugtes &amp;Video (MP4)…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="59"/>
+        <source>Real and Generated &amp;Side by Side (MP4)…</source>
+        <translation>Echt und erzeugt &amp;nebeneinander (MP4)…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="60"/>
+        <source>Generated &amp;Frames (PNG)…</source>
+        <translation>Erzeugte &amp;Einzelbilder (PNG)…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="60"/>
+        <source>F&amp;eatures (CSV)…</source>
+        <translation>M&amp;erkmale (CSV)…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="61"/>
+        <source>&amp;Alignment (TextGrid)…</source>
+        <translation>&amp;Alignierung (TextGrid)…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="61"/>
+        <source>&amp;Landmarks (.pts)…</source>
+        <translation>&amp;Landmarken (.pts)…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="62"/>
+        <source>Active Appearance &amp;Model…</source>
+        <translation>Active Appearance &amp;Model…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="62"/>
+        <source>&amp;Trained Dynamic Model…</source>
+        <translation>&amp;Trainiertes dynamisches Modell…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="114"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="115"/>
+        <source>MP4 video (*.mp4)</source>
+        <translation>MP4-Video (*.mp4)</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="117"/>
+        <source>Feature tables (*.csv)</source>
+        <translation>Merkmalstabellen (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="118"/>
+        <source>Praat TextGrid (*.TextGrid)</source>
+        <translation>Praat-TextGrid (*.TextGrid)</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="120"/>
+        <source>Active appearance models (*.aam)</source>
+        <translation>Active Appearance Models (*.aam)</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="121"/>
+        <source>Dynamic models (*.model)</source>
+        <translation>Dynamische Modelle (*.model)</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="137"/>
+        <source>Cannot export</source>
+        <translation>Export nicht möglich</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="139"/>
+        <source>no sequence is selected</source>
+        <translation>keine Sequenz ausgewählt</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="156"/>
+        <source>the project has no trained dynamic model and AAM (train one in the Models panel)</source>
+        <translation>das Projekt hat kein trainiertes dynamisches Modell und kein AAM (im Bereich Modelle trainieren)</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="171"/>
+        <source>Export the generated frames of %1</source>
+        <translation>Erzeugte Einzelbilder von %1 exportieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="172"/>
+        <source>Export the generated video of %1</source>
+        <translation>Erzeugtes Video von %1 exportieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="195"/>
+        <source>%1 has no face features (track it first)</source>
+        <translation>%1 hat keine Gesichtsmerkmale (zuerst verfolgen)</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="198"/>
+        <source>Export the features of %1</source>
+        <translation>Merkmale von %1 exportieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="206"/>
+        <source>%1 has no phone alignment (align it first)</source>
+        <translation>%1 hat keine Phonem-Alignierung (zuerst alignieren)</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="209"/>
+        <source>Export the alignment of %1</source>
+        <translation>Alignierung von %1 exportieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="222"/>
+        <source>%1 has no landmarks</source>
+        <translation>%1 hat keine Landmarken</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="225"/>
+        <source>Export the landmarks of %1</source>
+        <translation>Landmarken von %1 exportieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="246"/>
+        <source>the project has no AAM</source>
+        <translation>das Projekt hat kein AAM</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="247"/>
+        <source>the project has no trained dynamic model</source>
+        <translation>das Projekt hat kein trainiertes dynamisches Modell</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="251"/>
+        <source>Export %1</source>
+        <translation>%1 exportieren</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::FacesController</name>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="85"/>
+        <source>&amp;Detect Landmarks</source>
+        <translation>Landmarken &amp;erkennen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="86"/>
+        <source>&amp;Copy Previous Frame&apos;s Points</source>
+        <translation>Punkte des vorigen Bildes &amp;kopieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="87"/>
+        <source>&amp;Onion Skin of Previous Frame</source>
+        <translation>&amp;Zwiebelschicht des vorigen Bildes</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="89"/>
+        <source>Next &amp;Unlabelled Frame</source>
+        <translation>Nächstes &amp;unbeschriftetes Bild</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="90"/>
+        <source>Next &amp;Worst-Fitted Frame</source>
+        <translation>Nächstes &amp;schlecht angepasstes Bild</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="91"/>
+        <source>&amp;Build AAM</source>
+        <translation>AAM &amp;erstellen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="92"/>
+        <source>&amp;Track Sequence</source>
+        <translation>Sequenz &amp;verfolgen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="93"/>
+        <source>Track &amp;All Sequences</source>
+        <translation>&amp;Alle Sequenzen verfolgen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="94"/>
+        <source>&amp;Modes of Variation…</source>
+        <translation>&amp;Variationsmoden…</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="96"/>
+        <source>Fa&amp;ces</source>
+        <translation>&amp;Gesichter</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="187"/>
+        <source>The AAM could not be saved with the project.</source>
+        <translation>Das AAM konnte nicht mit dem Projekt gespeichert werden.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="210"/>
+        <source>Fit error %1</source>
+        <translation>Anpassungsfehler %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="211"/>
+        <source>No face found by the tracker</source>
+        <translation>Der Tracker hat kein Gesicht gefunden</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="235"/>
+        <source>Detect landmarks in %1, frame %2</source>
+        <translation>Landmarken in %1, Bild %2 erkennen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="237"/>
+        <source>Finding the face…</source>
+        <translation>Gesicht wird gesucht…</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="268"/>
+        <source>Detect landmarks in frame %1</source>
+        <translation>Landmarken in Bild %1 erkennen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="271"/>
+        <source>No landmarks were detected.</source>
+        <translation>Es wurden keine Landmarken erkannt.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="292"/>
+        <source>Copy points of frame %1 to frame %2</source>
+        <translation>Punkte von Bild %1 nach Bild %2 kopieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="311"/>
+        <source>Every frame of this sequence is labelled.</source>
+        <translation>Alle Bilder dieser Sequenz sind beschriftet.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="321"/>
+        <source>Track this sequence first to rank its frames by fit error.</source>
+        <translation>Verfolgen Sie diese Sequenz zuerst, um ihre Bilder nach Anpassungsfehler zu ordnen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="353"/>
+        <source>The project&apos;s AAM could not be loaded.</source>
+        <translation>Das AAM des Projekts konnte nicht geladen werden.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="379"/>
+        <source>An AAM needs at least 3 frames with all 23 points; this project has %1.</source>
+        <translation>Ein AAM braucht mindestens 3 Bilder mit allen 23 Punkten; dieses Projekt hat %1.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="381"/>
+        <source>Label more frames (Detect Landmarks, then correct the points).</source>
+        <translation>Beschriften Sie weitere Bilder (Landmarken erkennen, dann die Punkte korrigieren).</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/annotate/FacesController.cpp" line="388"/>
+        <source>Build AAM from %n frame(s)</source>
+        <translation>
+            <numerusform>AAM aus %n Bild erstellen</numerusform>
+            <numerusform>AAM aus %n Bildern erstellen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="390"/>
+        <source>Reading the labelled frames…</source>
+        <translation>Beschriftete Bilder werden gelesen…</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="422"/>
+        <source>Build AAM %1</source>
+        <translation>AAM %1 erstellen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="426"/>
+        <source>AAM %1 built from %2 frames: %3 combined modes%4</source>
+        <translation>AAM %1 aus %2 Bildern erstellt: %3 kombinierte Moden%4</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/annotate/FacesController.cpp" line="430"/>
+        <source> (%n frame(s) skipped)</source>
+        <translation>
+            <numerusform> (%n Bild übersprungen)</numerusform>
+            <numerusform> (%n Bilder übersprungen)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="435"/>
+        <source>The AAM could not be built.</source>
+        <translation>Das AAM konnte nicht erstellt werden.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="447"/>
+        <source>Tracking needs an AAM.</source>
+        <translation>Zum Verfolgen wird ein AAM benötigt.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="448"/>
+        <source>Label a few frames and choose Faces ▸ Build AAM first.</source>
+        <translation>Beschriften Sie einige Bilder und wählen Sie zuerst Gesichter ▸ AAM erstellen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="466"/>
+        <source>Track %1</source>
+        <translation>%1 verfolgen</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/annotate/FacesController.cpp" line="466"/>
+        <source>Track %n sequence(s)</source>
+        <translation>
+            <numerusform>%n Sequenz verfolgen</numerusform>
+            <numerusform>%n Sequenzen verfolgen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="536"/>
+        <source>Tracking failed.</source>
+        <translation>Das Verfolgen ist fehlgeschlagen.</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::FrameView</name>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="301"/>
+        <source>Click to place %1 (%2 of %3), or press %4 to detect all points</source>
+        <translation>Klicken, um %1 zu setzen (%2 von %3), oder %4 drücken, um alle Punkte zu erkennen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="274"/>
+        <source>automatic</source>
+        <translation>automatisch</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="275"/>
+        <source>placed</source>
+        <translation>gesetzt</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="276"/>
+        <source>fixed</source>
+        <translation>fixiert</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="307"/>
+        <source>Click to place %1 (%2 of %3)</source>
+        <translation>Klicken, um %1 zu setzen (%2 von %3)</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="309"/>
+        <source>Selected: %1</source>
+        <translation>Ausgewählt: %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="351"/>
+        <source>Place %1</source>
+        <translation>%1 setzen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="393"/>
+        <source>Move %1</source>
+        <translation>%1 verschieben</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="425"/>
+        <source>Remove %1</source>
+        <translation>%1 entfernen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="111"/>
+        <source>left eye, outer corner</source>
+        <translation>linkes Auge, äußerer Winkel</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="112"/>
+        <source>left eye, upper lid</source>
+        <translation>linkes Auge, Oberlid</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="113"/>
+        <source>left eye, inner corner</source>
+        <translation>linkes Auge, innerer Winkel</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="114"/>
+        <source>left eye, lower lid</source>
+        <translation>linkes Auge, Unterlid</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="115"/>
+        <source>right eye, inner corner</source>
+        <translation>rechtes Auge, innerer Winkel</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="116"/>
+        <source>right eye, upper lid</source>
+        <translation>rechtes Auge, Oberlid</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="117"/>
+        <source>right eye, outer corner</source>
+        <translation>rechtes Auge, äußerer Winkel</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="118"/>
+        <source>right eye, lower lid</source>
+        <translation>rechtes Auge, Unterlid</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="119"/>
+        <source>mouth, left corner</source>
+        <translation>Mund, linker Winkel</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="120"/>
+        <source>upper lip, left</source>
+        <translation>Oberlippe, links</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="121"/>
+        <source>upper lip, centre</source>
+        <translation>Oberlippe, Mitte</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="122"/>
+        <source>upper lip, right</source>
+        <translation>Oberlippe, rechts</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="123"/>
+        <source>mouth, right corner</source>
+        <translation>Mund, rechter Winkel</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="124"/>
+        <source>lower lip, right</source>
+        <translation>Unterlippe, rechts</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="125"/>
+        <source>lower lip, centre</source>
+        <translation>Unterlippe, Mitte</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="126"/>
+        <source>lower lip, left</source>
+        <translation>Unterlippe, links</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="127"/>
+        <source>inner lip, top</source>
+        <translation>Innenlippe, oben</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="128"/>
+        <source>inner lip, bottom</source>
+        <translation>Innenlippe, unten</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="129"/>
+        <source>jaw, left</source>
+        <translation>Kiefer, links</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="130"/>
+        <source>jaw, lower left</source>
+        <translation>Kiefer, unten links</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="131"/>
+        <source>chin</source>
+        <translation>Kinn</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="132"/>
+        <source>jaw, lower right</source>
+        <translation>Kiefer, unten rechts</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FrameView.cpp" line="133"/>
+        <source>jaw, right</source>
+        <translation>Kiefer, rechts</translation>
+    </message>
+</context>
+<context>
     <name>lipsync::studio::MainWindow</name>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="60"/>
+        <location filename="../studio/app/MainWindow.cpp" line="64"/>
         <source>Annotate</source>
         <translation>Annotieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="61"/>
+        <location filename="../studio/app/MainWindow.cpp" line="65"/>
         <source>Preview &amp;&amp; Compare</source>
         <translation>Vorschau &amp;&amp; Vergleich</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="85"/>
-        <location filename="../studio/app/MainWindow.cpp" line="86"/>
+        <location filename="../studio/app/MainWindow.cpp" line="99"/>
+        <location filename="../studio/app/MainWindow.cpp" line="100"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="133"/>
+        <location filename="../studio/app/MainWindow.cpp" line="147"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="137"/>
+        <location filename="../studio/app/MainWindow.cpp" line="152"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="142"/>
+        <location filename="../studio/app/MainWindow.cpp" line="162"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="145"/>
+        <location filename="../studio/app/MainWindow.cpp" line="166"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="157"/>
+        <location filename="../studio/app/MainWindow.cpp" line="178"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="159"/>
+        <location filename="../studio/app/MainWindow.cpp" line="180"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="168"/>
+        <location filename="../studio/app/MainWindow.cpp" line="192"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="172"/>
+        <location filename="../studio/app/MainWindow.cpp" line="196"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="182"/>
+        <location filename="../studio/app/MainWindow.cpp" line="207"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="186"/>
+        <location filename="../studio/app/MainWindow.cpp" line="213"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="189"/>
+        <location filename="../studio/app/MainWindow.cpp" line="216"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="236"/>
+        <location filename="../studio/app/MainWindow.cpp" line="263"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="281"/>
+        <location filename="../studio/app/MainWindow.cpp" line="308"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="289"/>
+        <location filename="../studio/app/MainWindow.cpp" line="316"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="323"/>
+        <location filename="../studio/app/MainWindow.cpp" line="350"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="325"/>
+        <location filename="../studio/app/MainWindow.cpp" line="352"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="329"/>
+        <location filename="../studio/app/MainWindow.cpp" line="356"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -276,42 +816,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="339"/>
+        <location filename="../studio/app/MainWindow.cpp" line="366"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="340"/>
+        <location filename="../studio/app/MainWindow.cpp" line="367"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="340"/>
+        <location filename="../studio/app/MainWindow.cpp" line="367"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="346"/>
+        <location filename="../studio/app/MainWindow.cpp" line="373"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="363"/>
+        <location filename="../studio/app/MainWindow.cpp" line="390"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="379"/>
-        <location filename="../studio/app/MainWindow.cpp" line="387"/>
+        <location filename="../studio/app/MainWindow.cpp" line="410"/>
+        <location filename="../studio/app/MainWindow.cpp" line="418"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="386"/>
+        <location filename="../studio/app/MainWindow.cpp" line="417"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
+        <location filename="../studio/app/MainWindow.cpp" line="161"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -319,153 +860,181 @@
 <context>
     <name>lipsync::studio::ModelsPanel</name>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="17"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="50"/>
         <source>Appearance model</source>
         <translation>Erscheinungsmodell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="18"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="51"/>
         <source>Phoneme aligner</source>
         <translation>Phonem-Aligner</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="19"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="52"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
         <source>DPDS</source>
         <translation>DPDS</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="20"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="53"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
         <source>SLDS</source>
         <translation>SLDS</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="21"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="54"/>
         <source>Voice Puppetry</source>
         <translation>Voice Puppetry</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="22"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="55"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
         <source>Phoneme-mean HMM</source>
         <translation>Phonem-Mittelwert-HMM</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="29"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="96"/>
         <source>Build AAM…</source>
         <translation>AAM erstellen …</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="34"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="104"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="34"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="104"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="34"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="104"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="64"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="230"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="97"/>
         <source>Train</source>
         <translation>Trainieren</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="97"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="98"/>
         <source>Evaluate (k-fold)</source>
         <translation>Evaluieren (k-fach)</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
         <source>Voice Puppetry (Brand)</source>
         <translation>Voice Puppetry (Brand)</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="114"/>
         <source>VarPro / Levenberg–Marquardt</source>
         <translation>VarPro / Levenberg–Marquardt</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="115"/>
         <source>Gradient ascent (paper)</source>
         <translation>Gradientenaufstieg (Artikel)</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="116"/>
         <source>Diagonal A</source>
         <translation>Diagonales A</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="117"/>
         <source>Full A</source>
         <translation>Volles A</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
         <source>Diagonal covariance</source>
         <translation>Diagonale Kovarianz</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="119"/>
         <source>Full covariance</source>
         <translation>Volle Kovarianz</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="141"/>
         <source>folds: </source>
         <translation>Folds: </translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="150"/>
         <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
         <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="151"/>
         <source>Train the checked models on every sequence with features and phonemes</source>
         <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="152"/>
         <source>Stop training or evaluation; the previous models stay</source>
         <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="153"/>
         <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
         <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="180"/>
         <source>AAM parameter </source>
         <translation>AAM-Parameter </translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="181"/>
         <source>Which AAM parameter to plot over time</source>
         <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="192"/>
         <source>Trajectory</source>
         <translation>Trajektorie</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="193"/>
         <source>Training</source>
         <translation>Training</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="194"/>
         <source>Evaluation</source>
         <translation>Evaluation</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="222"/>
         <source>Trained in this session; written when the project is saved</source>
         <translation>In dieser Sitzung trainiert; wird beim Speichern des Projekts geschrieben</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="266"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter verfolgen und die Sprache alignieren.</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="315"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="351"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
+        <location filename="../studio/build/ModelsPanel.cpp" line="317"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -473,30 +1042,37 @@
         </translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="336"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="360"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="362"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="369"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="391"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="392"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
+        <location filename="../studio/build/ModelsPanel.cpp" line="402"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -504,6 +1080,7 @@
         </translation>
     </message>
     <message numerus="yes">
+        <location filename="../studio/build/ModelsPanel.cpp" line="410"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Folds.</numerusform>
@@ -511,105 +1088,494 @@
         </translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="417"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="450"/>
+        <source>A model of this project could not be loaded.</source>
+        <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="455"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="346"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="480"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="499"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter verfolgen)</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="509"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="536"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>
 </context>
 <context>
+    <name>lipsync::studio::ModesView</name>
+    <message>
+        <location filename="../studio/build/ModesView.cpp" line="28"/>
+        <source>AAM Modes of Variation</source>
+        <translation>Variationsmoden des AAM</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModesView.cpp" line="40"/>
+        <source>Combined mode %1, -3 to +3 standard deviations</source>
+        <translation>Kombinierte Mode %1, −3 bis +3 Standardabweichungen</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModesView.cpp" line="43"/>
+        <source>Mode %1</source>
+        <translation>Mode %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModesView.cpp" line="51"/>
+        <source>&amp;Reset to Mean</source>
+        <translation>Auf &amp;Mittelwert zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModesView.cpp" line="93"/>
+        <source>%1 s.d.</source>
+        <translation>%1 SA</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModesView.cpp" line="97"/>
+        <source>No AAM yet: label frames and choose Faces ▸ Build AAM.</source>
+        <translation>Noch kein AAM: Bilder beschriften und Gesichter ▸ AAM erstellen wählen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModesView.cpp" line="101"/>
+        <source>%1 training frames, %2 shape, %3 texture and %4 combined modes.</source>
+        <translation>%1 Trainingsbilder, %2 Form-, %3 Textur- und %4 kombinierte Moden.</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::ObjectivePlot</name>
+    <message>
+        <location filename="../studio/plots/ObjectivePlot.cpp" line="7"/>
+        <location filename="../studio/plots/ObjectivePlot.cpp" line="61"/>
+        <source>Training objective</source>
+        <translation>Trainingsziel</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/ObjectivePlot.cpp" line="8"/>
+        <source>iteration</source>
+        <translation>Iteration</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/ObjectivePlot.cpp" line="8"/>
+        <source>objective</source>
+        <translation>Zielfunktion</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/ObjectivePlot.cpp" line="57"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/ObjectivePlot.cpp" line="62"/>
+        <source>Training objective — %1</source>
+        <translation>Trainingsziel — %1</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::ParticipantSession</name>
+    <message>
+        <location filename="../studio/compare/ParticipantSession.cpp" line="74"/>
+        <source>Preparing study trial %1</source>
+        <translation>Studiendurchgang %1 wird vorbereitet</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/ParticipantSession.cpp" line="91"/>
+        <source>This trial cannot be shown: %1</source>
+        <translation>Dieser Durchgang kann nicht gezeigt werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/ParticipantSession.cpp" line="129"/>
+        <source>Record the answer</source>
+        <translation>Antwort speichern</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/ParticipantSession.cpp" line="130"/>
+        <source>The answer could not be saved. Please call the experimenter.</source>
+        <translation>Die Antwort konnte nicht gespeichert werden. Bitte rufen Sie die Versuchsleitung.</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::ParticipantView</name>
+    <message>
+        <location filename="../studio/compare/ParticipantView.cpp" line="24"/>
+        <source>Which one is real?</source>
+        <translation>Welches ist echt?</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/ParticipantView.cpp" line="54"/>
+        <source>Preparing the next videos…</source>
+        <translation>Die nächsten Videos werden vorbereitet …</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/ParticipantView.cpp" line="55"/>
+        <location filename="../studio/compare/ParticipantView.cpp" line="68"/>
+        <source>Trial %1 of %2</source>
+        <translation>Durchgang %1 von %2</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/ParticipantView.cpp" line="69"/>
+        <source>Which video is real?   ← left     ↓ can&apos;t decide     → right     R replay</source>
+        <translation>Welches Video ist echt?   ← links     ↓ unentschieden     → rechts     R wiederholen</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/ParticipantView.cpp" line="82"/>
+        <source>Thank you! All answers are saved.</source>
+        <translation>Vielen Dank! Alle Antworten sind gespeichert.</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/ParticipantView.cpp" line="83"/>
+        <location filename="../studio/compare/ParticipantView.cpp" line="92"/>
+        <source>Press Esc to leave.</source>
+        <translation>Esc drücken zum Verlassen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/ParticipantView.cpp" line="169"/>
+        <source>Leave the study</source>
+        <translation>Studie verlassen</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/ParticipantView.cpp" line="170"/>
+        <source>Leave the study now? The answers given so far are saved; this participant can continue later.</source>
+        <translation>Die Studie jetzt verlassen? Die bisherigen Antworten sind gespeichert; diese Person kann später weitermachen.</translation>
+    </message>
+</context>
+<context>
     <name>lipsync::studio::PreviewPanel</name>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="21"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="60"/>
+        <source>Loop selection</source>
+        <translation>Auswahl wiederholen</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="60"/>
+        <source>Landmarks</source>
+        <translation>Landmarken</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="61"/>
+        <source>Generate from Speech…</source>
+        <translation>Aus Sprache erzeugen…</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="62"/>
+        <source>Back to Sequence</source>
+        <translation>Zurück zur Sequenz</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="75"/>
+        <source>Previous frame</source>
+        <translation>Vorheriges Bild</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="77"/>
+        <source>Next frame</source>
+        <translation>Nächstes Bild</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="81"/>
+        <source>Scrub through the frames</source>
+        <translation>Durch die Bilder fahren</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="82"/>
+        <source>Play the timeline&apos;s selection (or everything) over and over</source>
+        <translation>Die Auswahl der Zeitleiste (oder alles) immer wieder abspielen</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="83"/>
+        <source>Show the tracked points on the recorded video and the generated points on the generated faces</source>
+        <translation>Die verfolgten Punkte auf dem aufgenommenen Video und die erzeugten Punkte auf den erzeugten Gesichtern zeigen</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="84"/>
+        <source>Generate faces for any recording with a transcript</source>
+        <translation>Gesichter für eine beliebige Aufnahme mit Transkript erzeugen</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="85"/>
+        <source>Show the current sequence again</source>
+        <translation>Die aktuelle Sequenz wieder zeigen</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="246"/>
+        <source>Prepare the preview of %1</source>
+        <translation>Vorschau von %1 vorbereiten</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="272"/>
+        <source>The head could not be tracked: %1</source>
+        <translation>Der Kopf konnte nicht verfolgt werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="321"/>
         <source>Recorded video</source>
         <translation>Aufgenommenes Video</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="326"/>
+        <source>Generated: %1</source>
+        <translation>Erzeugt: %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="330"/>
+        <source>Generated</source>
+        <translation>Erzeugt</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="378"/>
+        <source>The project has no appearance model (Faces ▸ Build AAM).</source>
+        <translation>Das Projekt hat kein Erscheinungsmodell (Gesichter ▸ AAM erstellen).</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="380"/>
+        <source>Tracking the head pose…</source>
+        <translation>Kopfhaltung wird verfolgt…</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="382"/>
+        <source>This sequence has no phones (align it in the Timeline).</source>
+        <translation>Diese Sequenz hat keine Phoneme (in der Zeitleiste alignieren).</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="384"/>
+        <source>Train a dynamic model in the Models panel to see the faces it generates.</source>
+        <translation>Trainieren Sie ein dynamisches Modell im Bereich „Modelle“, um die erzeugten Gesichter zu sehen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="433"/>
+        <source>%1 — frame %2 of %3</source>
+        <translation>%1 — Bild %2 von %3</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="542"/>
+        <source>Faces for new speech need the project&apos;s appearance model.</source>
+        <translation>Gesichter für neue Sprache brauchen das Erscheinungsmodell des Projekts.</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="543"/>
+        <source>Build one with Faces ▸ Build AAM.</source>
+        <translation>Erstellen Sie eines mit Gesichter ▸ AAM erstellen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="548"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="602"/>
+        <source>No faces could be generated for this speech.</source>
+        <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="549"/>
+        <source>Train a dynamic model in the Models panel first.</source>
+        <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="570"/>
+        <source>Generate faces for %1</source>
+        <translation>Gesichter für %1 erzeugen</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::ProjectDocument</name>
+    <message>
+        <location filename="../studio/app/ProjectDocument.cpp" line="252"/>
+        <source>Answer of %1</source>
+        <translation>Antwort von %1</translation>
     </message>
 </context>
 <context>
     <name>lipsync::studio::ProjectFiles</name>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="29"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="32"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="30"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="33"/>
         <source>LipSync projects (project.json)</source>
         <translation>LipSync-Projekte (project.json)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="44"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="47"/>
         <source>The project could not be opened.</source>
         <translation>Das Projekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="56"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="78"/>
         <source>The bundled demo project was not found.</source>
         <translation>Das mitgelieferte Demoprojekt wurde nicht gefunden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="57"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="79"/>
         <source>Looked in $LIPSYNC_DEMO_DIR, &lt;prefix&gt;/share/lipsync/demo and the source tree.</source>
         <translation>Gesucht in $LIPSYNC_DEMO_DIR, &lt;prefix&gt;/share/lipsync/demo und im Quellbaum.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="63"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="86"/>
         <source>The demo project could not be opened.</source>
         <translation>Das Demoprojekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="85"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="108"/>
         <source>Save Project As (a folder)</source>
         <translation>Projekt speichern unter (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="90"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="108"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="113"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="132"/>
         <source>The project could not be saved.</source>
         <translation>Das Projekt konnte nicht gespeichert werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="91"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="114"/>
         <source>a file of that name exists; a project needs a folder</source>
         <translation>es gibt eine Datei dieses Namens; ein Projekt braucht einen Ordner</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="96"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="119"/>
         <source>Replace Project</source>
         <translation>Projekt ersetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="97"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="120"/>
         <source>%1 already holds a project. Replace it?</source>
         <translation>%1 enthält bereits ein Projekt. Ersetzen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="121"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="145"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="121"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="145"/>
         <source>The project has unsaved changes. Save them?</source>
         <translation>Das Projekt hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::PronunciationsDialog</name>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="22"/>
+        <source>Set</source>
+        <translation>Festlegen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="23"/>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="25"/>
+        <source>Pronunciations</source>
+        <translation>Aussprachen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="27"/>
+        <source>Words are pronounced from this list first, then from the CMU dictionary, then guessed by espeak-ng. Phones are ARPAbet (AA … ZH, sil, br).</source>
+        <translation>Wörter werden zuerst nach dieser Liste ausgesprochen, dann nach dem CMU-Wörterbuch, sonst von espeak-ng geschätzt. Phone sind ARPAbet (AA … ZH, sil, br).</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="32"/>
+        <source>Word</source>
+        <translation>Wort</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="32"/>
+        <source>Phones</source>
+        <translation>Phone</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="32"/>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="41"/>
+        <source>word</source>
+        <translation>Wort</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="42"/>
+        <source>e.g. L IH P S IH NG K</source>
+        <translation>z. B. L IH P S IH NG K</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="43"/>
+        <source>Word:</source>
+        <translation>Wort:</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="44"/>
+        <source>Phones:</source>
+        <translation>Phone:</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="85"/>
+        <source>Enter one word.</source>
+        <translation>Geben Sie ein Wort ein.</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="97"/>
+        <source>&apos;%1&apos; is not one of the 41 phones (ARPAbet AA … ZH, sil, br).</source>
+        <translation>„%1“ ist keines der 41 Phone (ARPAbet AA … ZH, sil, br).</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="105"/>
+        <source>Enter the phones of the word.</source>
+        <translation>Geben Sie die Phone des Wortes ein.</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="121"/>
+        <source>Set Pronunciation of %1</source>
+        <translation>Aussprache von %1 festlegen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="122"/>
+        <source>No change.</source>
+        <translation>Keine Änderung.</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="125"/>
+        <source>&apos;%1&apos; is pronounced %2 in this project.</source>
+        <translation>„%1“ wird in diesem Projekt %2 ausgesprochen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="135"/>
+        <source>The project has no pronunciation for &apos;%1&apos;.</source>
+        <translation>Das Projekt hat keine Aussprache für „%1“.</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="138"/>
+        <source>Remove Pronunciation of %1</source>
+        <translation>Aussprache von %1 entfernen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="166"/>
+        <source>project</source>
+        <translation>Projekt</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/PronunciationsDialog.cpp" line="169"/>
+        <source>espeak-ng guess</source>
+        <translation>Schätzung von espeak-ng</translation>
     </message>
 </context>
 <context>
@@ -735,6 +1701,302 @@
     </message>
 </context>
 <context>
+    <name>lipsync::studio::SpeechDialog</name>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="28"/>
+        <source>Generate from Speech</source>
+        <translation>Aus Sprache erzeugen</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="30"/>
+        <source>Faces for any recording with a transcript: the speech is aligned to its words, labelled per frame and given to a trained dynamic model.</source>
+        <translation>Gesichter für jede Aufnahme mit Transkript: Die Sprache wird an ihre Wörter ausgerichtet, pro Bild etikettiert und einem trainierten dynamischen Modell übergeben.</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="38"/>
+        <source>An audio or video file</source>
+        <translation>Eine Audio- oder Videodatei</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="39"/>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="42"/>
+        <source>Speech:</source>
+        <translation>Sprache:</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="43"/>
+        <source>The words spoken, e.g. &quot;bin blue at f two now&quot;</source>
+        <translation>Die gesprochenen Wörter, z. B. „bin blue at f two now“</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="46"/>
+        <source>Transcript:</source>
+        <translation>Transkript:</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="49"/>
+        <source> fps</source>
+        <translation> B/s</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="51"/>
+        <source>Frame rate:</source>
+        <translation>Bildrate:</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="54"/>
+        <source>Model:</source>
+        <translation>Modell:</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="58"/>
+        <source>Generate</source>
+        <translation>Erzeugen</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="117"/>
+        <source>Choose Speech</source>
+        <translation>Sprachaufnahme wählen</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="118"/>
+        <source>Audio and video (*.wav *.flac *.mp3 *.ogg *.m4a *.mpg *.mp4 *.mov *.avi *.mkv *.webm);;All files (*)</source>
+        <translation>Audio und Video (*.wav *.flac *.mp3 *.ogg *.m4a *.mpg *.mp4 *.mov *.avi *.mkv *.webm);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="127"/>
+        <source>Train a dynamic model in the Models panel first.</source>
+        <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="129"/>
+        <source>Choose an audio or video file.</source>
+        <translation>Wählen Sie eine Audio- oder Videodatei.</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/SpeechDialog.cpp" line="131"/>
+        <source>Type the words spoken (no transcript file was found beside it).</source>
+        <translation>Geben Sie die gesprochenen Wörter ein (daneben wurde keine Transkriptdatei gefunden).</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::StudyController</name>
+    <message>
+        <location filename="../studio/compare/StudyController.cpp" line="23"/>
+        <source>&amp;Study</source>
+        <translation>&amp;Studie</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyController.cpp" line="24"/>
+        <source>&amp;Set Up Study…</source>
+        <translation>Studie &amp;einrichten …</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyController.cpp" line="24"/>
+        <source>&amp;Run Participant…</source>
+        <translation>&amp;Teilnehmende Person starten …</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyController.cpp" line="25"/>
+        <source>Study &amp;Results</source>
+        <translation>Studien&amp;ergebnisse</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyController.cpp" line="80"/>
+        <location filename="../studio/compare/StudyController.cpp" line="91"/>
+        <source>Set up study</source>
+        <translation>Studie einrichten</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/compare/StudyController.cpp" line="81"/>
+        <source>The current study has %n answer(s). Replace it with a new study? (Edit ▸ Undo brings it back.)</source>
+        <translation>
+            <numerusform>Die aktuelle Studie hat %n Antwort(en). Durch eine neue Studie ersetzen? (Bearbeiten ▸ Rückgängig holt sie zurück.)</numerusform>
+            <numerusform>Die aktuelle Studie hat %n Antwort(en). Durch eine neue Studie ersetzen? (Bearbeiten ▸ Rückgängig holt sie zurück.)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyController.cpp" line="102"/>
+        <location filename="../studio/compare/StudyController.cpp" line="116"/>
+        <location filename="../studio/compare/StudyController.cpp" line="132"/>
+        <location filename="../studio/compare/StudyController.cpp" line="160"/>
+        <source>Run participant</source>
+        <translation>Teilnehmende Person starten</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyController.cpp" line="103"/>
+        <source>The project must be saved with the study before a participant starts (every answer is saved at once). Save now?</source>
+        <translation>Das Projekt muss mit der Studie gespeichert sein, bevor eine Person beginnt (jede Antwort wird sofort gespeichert). Jetzt speichern?</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyController.cpp" line="116"/>
+        <source>The project has no study yet.</source>
+        <translation>Das Projekt hat noch keine Studie.</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyController.cpp" line="149"/>
+        <source>New participant: %1</source>
+        <translation>Neue teilnehmende Person: %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyController.cpp" line="153"/>
+        <source>Continue %1 (%2 of %3 answered)</source>
+        <translation>%1 fortsetzen (%2 von %3 beantwortet)</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyController.cpp" line="160"/>
+        <source>Participant:</source>
+        <translation>Teilnehmende Person:</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyController.cpp" line="170"/>
+        <source>Study results</source>
+        <translation>Studienergebnisse</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::StudyResultsView</name>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="40"/>
+        <source>Export CSV…</source>
+        <translation>CSV exportieren …</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="46"/>
+        <source>Method A</source>
+        <translation>Methode A</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="46"/>
+        <source>A judged real</source>
+        <translation>A als echt beurteilt</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="46"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="50"/>
+        <source>Can&apos;t decide</source>
+        <translation>Unentschieden</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="47"/>
+        <source>B judged real</source>
+        <translation>B als echt beurteilt</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="47"/>
+        <source>Method B</source>
+        <translation>Methode B</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="47"/>
+        <source>p (sign test)</source>
+        <translation>p (Vorzeichentest)</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="50"/>
+        <source>Method</source>
+        <translation>Methode</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="50"/>
+        <source>Bradley–Terry strength</source>
+        <translation>Bradley-Terry-Stärke</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="50"/>
+        <source>Judged real</source>
+        <translation>Als echt beurteilt</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="50"/>
+        <source>Not judged real</source>
+        <translation>Nicht als echt beurteilt</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="57"/>
+        <source>Which one is real? Pairs of methods (as in the paper&apos;s Table 1):</source>
+        <translation>Welches ist echt? Methodenpaare (wie in Tabelle 1 des Artikels):</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="59"/>
+        <source>Ranking:</source>
+        <translation>Rangfolge:</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="75"/>
+        <source>The project has no study yet: Study ▸ Set up study…</source>
+        <translation>Das Projekt hat noch keine Studie: Studie ▸ Studie einrichten …</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="99"/>
+        <source>Participants: %1, answers: %2 (%3 still open). %4</source>
+        <translation>Teilnehmende: %1, Antworten: %2 (%3 noch offen). %4</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="124"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="131"/>
+        <source>Export study results</source>
+        <translation>Studienergebnisse exportieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="125"/>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::StudySetupDialog</name>
+    <message>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="24"/>
+        <source>Real (the recorded video)</source>
+        <translation>Echt (das aufgenommene Video)</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="39"/>
+        <source>Set up blind study</source>
+        <translation>Blindstudie einrichten</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="54"/>
+        <source>Methods to compare:</source>
+        <translation>Zu vergleichende Methoden:</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="55"/>
+        <source>Utterances:</source>
+        <translation>Äußerungen:</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="56"/>
+        <source>Each pair shown (× 2, sides swapped):</source>
+        <translation>Jedes Paar gezeigt (× 2, Seiten vertauscht):</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="57"/>
+        <source>Random seed:</source>
+        <translation>Zufallsstartwert:</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="106"/>
+        <source>Choose at least two methods (train models in the Models panel).</source>
+        <translation>Mindestens zwei Methoden wählen (Modelle im Modelle-Bereich trainieren).</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="111"/>
+        <source>No sequence has both features and phones yet.</source>
+        <translation>Noch keine Sequenz hat sowohl Merkmale als auch Phone.</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="135"/>
+        <source>%1 pairs of methods, each shown %2 times with sides swapped: %3 trials per participant, in a fresh random order for each participant.</source>
+        <translation>%1 Methodenpaare, jedes %2-mal mit vertauschten Seiten gezeigt: %3 Durchgänge pro Person, für jede Person in neuer zufälliger Reihenfolge.</translation>
+    </message>
+</context>
+<context>
     <name>lipsync::studio::TaskListModel</name>
     <message>
         <location filename="../studio/tasks/TaskListModel.cpp" line="74"/>
@@ -827,22 +2089,22 @@
 <context>
     <name>lipsync::studio::TimelinePanel</name>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="38"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="121"/>
         <source>Zoom out (wheel down)</source>
         <translation>Verkleinern (Mausrad nach unten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="39"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="122"/>
         <source>Zoom in (wheel up)</source>
         <translation>Vergrößern (Mausrad nach oben)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="40"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="40"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
@@ -957,37 +2219,65 @@
         <translation>Die ganze Sequenz abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="269"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="93"/>
+        <source>Pronunciations…</source>
+        <translation>Aussprachen…</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="94"/>
+        <source>The project&apos;s pronunciations, and the words espeak-ng guessed</source>
+        <translation>Die Aussprachen des Projekts und die von espeak-ng geschätzten Wörter</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="148"/>
+        <source>Show Spectrogram</source>
+        <translation>Spektrogramm anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="149"/>
+        <source>Show the spectrogram under the waveform in the timeline</source>
+        <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="284"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="289"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="305"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="310"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="327"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="313"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="330"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="292"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="308"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="329"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="346"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="364"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="371"/>
+        <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
+        <translation>
+            <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
+            <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="390"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -995,49 +2285,67 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="386"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="429"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="386"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="429"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="394"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="437"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="404"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="447"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="436"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="479"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="436"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="479"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="495"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="538"/>
         <source>Not one of the 41 phones (ARPAbet, sil, br)</source>
         <translation>Keines der 41 Phone (ARPAbet, sil, br)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="496"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="539"/>
         <source>Enter one word</source>
         <translation>Ein einzelnes Wort eingeben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="504"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="547"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::TrajectoryView</name>
+    <message>
+        <location filename="../studio/plots/TrajectoryView.cpp" line="138"/>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/TrajectoryView.cpp" line="139"/>
+        <source>parameter value</source>
+        <translation>Parameterwert</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/TrajectoryView.cpp" line="186"/>
+        <source>phonemes</source>
+        <translation>Phoneme</translation>
     </message>
 </context>
 <context>
@@ -1054,476 +2362,43 @@
     </message>
 </context>
 <context>
-    <name>lipsync::studio::TrajectoryView</name>
-    <message>
-        <source>time (s)</source>
-        <translation>Zeit (s)</translation>
-    </message>
-    <message>
-        <source>parameter value</source>
-        <translation>Parameterwert</translation>
-    </message>
-    <message>
-        <source>phonemes</source>
-        <translation>Phoneme</translation>
-    </message>
-</context>
-<context>
-    <name>lipsync::studio::ObjectivePlot</name>
-    <message>
-        <source>Training objective</source>
-        <translation>Trainingsziel</translation>
-    </message>
-    <message>
-        <source>iteration</source>
-        <translation>Iteration</translation>
-    </message>
-    <message>
-        <source>objective</source>
-        <translation>Zielfunktion</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>Training objective — %1</source>
-        <translation>Trainingsziel — %1</translation>
-    </message>
-</context>
-<context>
-    <name>lipsync::studio::EvaluationChart</name>
-    <message>
-        <source>L1 error</source>
-        <translation>L1-Fehler</translation>
-    </message>
-    <message>
-        <source>RMS error</source>
-        <translation>RMS-Fehler</translation>
-    </message>
-    <message>
-        <source>L-inf error</source>
-        <translation>L-inf-Fehler</translation>
-    </message>
-    <message>
-        <source>log-likelihood per frame</source>
-        <translation>Log-Likelihood pro Bild</translation>
-    </message>
-</context>
-<context>
     <name>lipsync::studio::WaveformView</name>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="399"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="436"/>
+        <source>spectrogram</source>
+        <translation>Spektrogramm</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/WaveformView.cpp" line="460"/>
         <source>No phones yet: align the sequence (Align)</source>
         <translation>Noch keine Phone: Sequenz ausrichten (Ausrichten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="399"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="460"/>
         <source>No words</source>
         <translation>Keine Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="400"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="461"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="502"/>
         <source>phones</source>
         <translation>Phone</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="400"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="461"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="502"/>
         <source>words</source>
         <translation>Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="448"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="509"/>
         <source>frame labels</source>
         <translation>Bildlabels</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="469"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="530"/>
         <source>frames</source>
         <translation>Bilder</translation>
-    </message>
-</context>
-<context>
-    <name>lipsync::studio::FacesController</name>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="85"/>
-        <source>&amp;Detect Landmarks</source>
-        <translation>Landmarken &amp;erkennen</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="86"/>
-        <source>&amp;Copy Previous Frame&apos;s Points</source>
-        <translation>Punkte des vorigen Bildes &amp;kopieren</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="87"/>
-        <source>&amp;Onion Skin of Previous Frame</source>
-        <translation>&amp;Zwiebelschicht des vorigen Bildes</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="89"/>
-        <source>Next &amp;Unlabelled Frame</source>
-        <translation>Nächstes &amp;unbeschriftetes Bild</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="90"/>
-        <source>Next &amp;Worst-Fitted Frame</source>
-        <translation>Nächstes &amp;schlecht angepasstes Bild</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="91"/>
-        <source>&amp;Build AAM</source>
-        <translation>AAM &amp;erstellen</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="92"/>
-        <source>&amp;Track Sequence</source>
-        <translation>Sequenz &amp;verfolgen</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="93"/>
-        <source>Track &amp;All Sequences</source>
-        <translation>&amp;Alle Sequenzen verfolgen</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="94"/>
-        <source>&amp;Modes of Variation…</source>
-        <translation>&amp;Variationsmoden…</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="96"/>
-        <source>Fa&amp;ces</source>
-        <translation>&amp;Gesichter</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="184"/>
-        <source>The AAM could not be saved with the project.</source>
-        <translation>Das AAM konnte nicht mit dem Projekt gespeichert werden.</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="207"/>
-        <source>Fit error %1</source>
-        <translation>Anpassungsfehler %1</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="208"/>
-        <source>No face found by the tracker</source>
-        <translation>Der Tracker hat kein Gesicht gefunden</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="232"/>
-        <source>Detect landmarks in %1, frame %2</source>
-        <translation>Landmarken in %1, Bild %2 erkennen</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="234"/>
-        <source>Finding the face…</source>
-        <translation>Gesicht wird gesucht…</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="265"/>
-        <source>Detect landmarks in frame %1</source>
-        <translation>Landmarken in Bild %1 erkennen</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="268"/>
-        <source>No landmarks were detected.</source>
-        <translation>Es wurden keine Landmarken erkannt.</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="289"/>
-        <source>Copy points of frame %1 to frame %2</source>
-        <translation>Punkte von Bild %1 nach Bild %2 kopieren</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="308"/>
-        <source>Every frame of this sequence is labelled.</source>
-        <translation>Alle Bilder dieser Sequenz sind beschriftet.</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="318"/>
-        <source>Track this sequence first to rank its frames by fit error.</source>
-        <translation>Verfolgen Sie diese Sequenz zuerst, um ihre Bilder nach Anpassungsfehler zu ordnen.</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="346"/>
-        <source>The project&apos;s AAM could not be loaded.</source>
-        <translation>Das AAM des Projekts konnte nicht geladen werden.</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="372"/>
-        <source>An AAM needs at least 3 frames with all 23 points; this project has %1.</source>
-        <translation>Ein AAM braucht mindestens 3 Bilder mit allen 23 Punkten; dieses Projekt hat %1.</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="374"/>
-        <source>Label more frames (Detect Landmarks, then correct the points).</source>
-        <translation>Beschriften Sie weitere Bilder (Landmarken erkennen, dann die Punkte korrigieren).</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="385"/>
-        <source>Build AAM from %n frame(s)</source>
-        <translation>
-            <numerusform>AAM aus %n Bild erstellen</numerusform>
-            <numerusform>AAM aus %n Bildern erstellen</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="387"/>
-        <source>Reading the labelled frames…</source>
-        <translation>Beschriftete Bilder werden gelesen…</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="419"/>
-        <source>Build AAM %1</source>
-        <translation>AAM %1 erstellen</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="423"/>
-        <source>AAM %1 built from %2 frames: %3 combined modes%4</source>
-        <translation>AAM %1 aus %2 Bildern erstellt: %3 kombinierte Moden%4</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="427"/>
-        <source> (%n frame(s) skipped)</source>
-        <translation>
-            <numerusform> (%n Bild übersprungen)</numerusform>
-            <numerusform> (%n Bilder übersprungen)</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="432"/>
-        <source>The AAM could not be built.</source>
-        <translation>Das AAM konnte nicht erstellt werden.</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="441"/>
-        <source>Tracking needs an AAM.</source>
-        <translation>Zum Verfolgen wird ein AAM benötigt.</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="442"/>
-        <source>Label a few frames and choose Faces ▸ Build AAM first.</source>
-        <translation>Beschriften Sie einige Bilder und wählen Sie zuerst Gesichter ▸ AAM erstellen.</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="460"/>
-        <source>Track %1</source>
-        <translation>%1 verfolgen</translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="460"/>
-        <source>Track %n sequence(s)</source>
-        <translation>
-            <numerusform>%n Sequenz verfolgen</numerusform>
-            <numerusform>%n Sequenzen verfolgen</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="531"/>
-        <source>Tracking failed.</source>
-        <translation>Das Verfolgen ist fehlgeschlagen.</translation>
-    </message>
-</context>
-<context>
-    <name>lipsync::studio::FrameView</name>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="305"/>
-        <source>Click to place %1 (%2 of %3), or press %4 to detect all points</source>
-        <translation>Klicken, um %1 zu setzen (%2 von %3), oder %4 drücken, um alle Punkte zu erkennen</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="280"/>
-        <source>automatic</source>
-        <translation>automatisch</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="280"/>
-        <source>placed</source>
-        <translation>gesetzt</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="280"/>
-        <source>fixed</source>
-        <translation>fixiert</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="276"/>
-        <source>Click to place %1 (%2 of %3)</source>
-        <translation>Klicken, um %1 zu setzen (%2 von %3)</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="278"/>
-        <source>Selected: %1</source>
-        <translation>Ausgewählt: %1</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="320"/>
-        <source>Place %1</source>
-        <translation>%1 setzen</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="362"/>
-        <source>Move %1</source>
-        <translation>%1 verschieben</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="391"/>
-        <source>Remove %1</source>
-        <translation>%1 entfernen</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="110"/>
-        <source>left eye, outer corner</source>
-        <translation>linkes Auge, äußerer Winkel</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="111"/>
-        <source>left eye, upper lid</source>
-        <translation>linkes Auge, Oberlid</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="112"/>
-        <source>left eye, inner corner</source>
-        <translation>linkes Auge, innerer Winkel</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="113"/>
-        <source>left eye, lower lid</source>
-        <translation>linkes Auge, Unterlid</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="114"/>
-        <source>right eye, inner corner</source>
-        <translation>rechtes Auge, innerer Winkel</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="115"/>
-        <source>right eye, upper lid</source>
-        <translation>rechtes Auge, Oberlid</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="116"/>
-        <source>right eye, outer corner</source>
-        <translation>rechtes Auge, äußerer Winkel</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="117"/>
-        <source>right eye, lower lid</source>
-        <translation>rechtes Auge, Unterlid</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="118"/>
-        <source>mouth, left corner</source>
-        <translation>Mund, linker Winkel</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="119"/>
-        <source>upper lip, left</source>
-        <translation>Oberlippe, links</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="120"/>
-        <source>upper lip, centre</source>
-        <translation>Oberlippe, Mitte</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="121"/>
-        <source>upper lip, right</source>
-        <translation>Oberlippe, rechts</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="122"/>
-        <source>mouth, right corner</source>
-        <translation>Mund, rechter Winkel</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="123"/>
-        <source>lower lip, right</source>
-        <translation>Unterlippe, rechts</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="124"/>
-        <source>lower lip, centre</source>
-        <translation>Unterlippe, Mitte</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="125"/>
-        <source>lower lip, left</source>
-        <translation>Unterlippe, links</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="126"/>
-        <source>inner lip, top</source>
-        <translation>Innenlippe, oben</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="127"/>
-        <source>inner lip, bottom</source>
-        <translation>Innenlippe, unten</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="128"/>
-        <source>jaw, left</source>
-        <translation>Kiefer, links</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="129"/>
-        <source>jaw, lower left</source>
-        <translation>Kiefer, unten links</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="130"/>
-        <source>chin</source>
-        <translation>Kinn</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="131"/>
-        <source>jaw, lower right</source>
-        <translation>Kiefer, unten rechts</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="132"/>
-        <source>jaw, right</source>
-        <translation>Kiefer, rechts</translation>
-    </message>
-</context>
-<context>
-    <name>lipsync::studio::ModesView</name>
-    <message>
-        <location filename="../studio/build/ModesView.cpp" line="28"/>
-        <source>AAM Modes of Variation</source>
-        <translation>Variationsmoden des AAM</translation>
-    </message>
-    <message>
-        <location filename="../studio/build/ModesView.cpp" line="40"/>
-        <source>Combined mode %1, -3 to +3 standard deviations</source>
-        <translation>Kombinierte Mode %1, −3 bis +3 Standardabweichungen</translation>
-    </message>
-    <message>
-        <location filename="../studio/build/ModesView.cpp" line="43"/>
-        <source>Mode %1</source>
-        <translation>Mode %1</translation>
-    </message>
-    <message>
-        <location filename="../studio/build/ModesView.cpp" line="51"/>
-        <source>&amp;Reset to Mean</source>
-        <translation>Auf &amp;Mittelwert zurücksetzen</translation>
-    </message>
-    <message>
-        <location filename="../studio/build/ModesView.cpp" line="93"/>
-        <source>%1 s.d.</source>
-        <translation>%1 SA</translation>
-    </message>
-    <message>
-        <location filename="../studio/build/ModesView.cpp" line="97"/>
-        <source>No AAM yet: label frames and choose Faces ▸ Build AAM.</source>
-        <translation>Noch kein AAM: Bilder beschriften und Gesichter ▸ AAM erstellen wählen.</translation>
-    </message>
-    <message>
-        <location filename="../studio/build/ModesView.cpp" line="101"/>
-        <source>%1 training frames, %2 shape, %3 texture and %4 combined modes.</source>
-        <translation>%1 Trainingsbilder, %2 Form-, %3 Textur- und %4 kombinierte Moden.</translation>
     </message>
 </context>
 </TS>
