@@ -196,7 +196,11 @@ void AamModel::save(const std::string &path) const
 
 AamModel AamModel::load(const std::string &path)
 {
-    const std::string data = readWholeFile(path);
+    return fromBytes(readWholeFile(path), path);
+}
+
+AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
+{
     if (data.size() < sizeof kMagic || std::memcmp(data.data(), kMagic, sizeof kMagic) != 0)
         throw Error("not an AAM model file (bad magic)", path);
     Reader r(data, path);

@@ -152,7 +152,11 @@ void AcousticModel::save(const std::string &path) const
 
 AcousticModel AcousticModel::load(const std::string &path)
 {
-    const std::string text = readWholeFile(path);
+    return parse(readWholeFile(path), path);
+}
+
+AcousticModel AcousticModel::parse(const std::string &text, const std::string &path)
+{
     std::istringstream in(text);
     std::string line;
     int lineNumber = 0;

@@ -1,5 +1,7 @@
 #include "io/HtkLabel.h"
 
+#include <charconv>
+
 #include "io/AtomicFile.h"
 #include "util/Error.h"
 
@@ -44,7 +46,14 @@ void parseLine(const std::string &line, const std::string &path, int lineNumber,
         tier.intervals.push_back(Interval{0, 0, f[0], false});
         return;
     }
-    const long long start = std::stoll(f[0]), end = std::stoll(f[1]);
+    // from_chars, not stoll: a time too large for 64 bits is bad input (an Error naming the line),
+    // not std::out_of_range (found by fuzz/fuzz_htklabel).
+    long long start = 0, end = 0;
+    for (auto [text, value] : {std::pair{&f[0], &start}, std::pair{&f[1], &end}}) {
+        const auto [ptr, ec] = std::from_chars(text->data(), text->data() + text->size(), *value);
+        if (ec != std::errc() || ptr != text->data() + text->size())
+            throw Error("time '" + *text + "' is out of range", path, where);
+    }
     if (start < 0 || end < start)
         throw Error("interval end is before its start", path, where);
     Interval interval{start / kHtkUnitsPerSecond, end / kHtkUnitsPerSecond, f[2], false};
