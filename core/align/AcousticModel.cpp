@@ -250,7 +250,11 @@ AcousticModel AcousticModel::parse(const std::string &text, const std::string &p
             }
         }
     }
-    model.prepare();
+    try {
+        model.prepare();
+    } catch (const Error &e) {
+        throw Error(e.reason(), path, "features");
+    }
     return model;
 }
 
