@@ -167,7 +167,7 @@ void BM_AamFit(benchmark::State &state)
     for (auto _ : state)
         benchmark::DoNotOptimize(result = fitter.fit(f.image, start));
     state.SetItemsProcessed(state.iterations());
-    state.counters["iterations"] = result.iterations;
+    state.counters["fit_iterations"] = result.iterations;
     state.counters["nme_vs_hand"] = normalisedMeanError(result.shape, f.shape);
 }
 BENCHMARK(BM_AamFit)->Unit(benchmark::kMillisecond);
