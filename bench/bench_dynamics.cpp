@@ -342,3 +342,49 @@ void BM_SldsTrain20Minutes(benchmark::State &state)
 }
 BENCHMARK(BM_SldsTrain20Minutes)->Iterations(1)->Unit(benchmark::kSecond);
 } // namespace
+
+namespace {
+// Training and generation of each of the four models (models.md) through the model factory, on the
+// same data: 40 GRID-like sentences (3000 frames = 2 min at 25 fps), d = 32. Generation is 60 s of
+// speech (1500 frames); real-time factor = generation time / 60 s.
+std::vector<LabelledSequence> twoMinutes()
+{
+    auto data = gridLikeData(32);
+    data.resize(40);
+    return data;
+}
+
+void BM_ModelTrain(benchmark::State &state, const std::string &kind)
+{
+    const auto data = twoMinutes();
+    for (auto _ : state) {
+        auto model = createDynamicModel(kind);
+        Feedback feedback;
+        const double cpu = cpuSeconds();
+        model->train(data, feedback);
+        state.counters["train_cpu_s"] = cpuSeconds() - cpu;
+    }
+    state.counters["frames"] = 3000;
+}
+BENCHMARK_CAPTURE(BM_ModelTrain, hmm, std::string("hmm"))->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ModelTrain, brand, std::string("brand"))->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ModelTrain, slds, std::string("slds"))->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ModelTrain, dpds, std::string("dpds"))->Iterations(1)->Unit(benchmark::kMillisecond);
+
+void BM_ModelGenerate(benchmark::State &state, const std::string &kind)
+{
+    auto model = createDynamicModel(kind);
+    Feedback feedback;
+    model->train(twoMinutes(), feedback);
+    const auto labels = sixtySeconds();
+    for (auto _ : state)
+        benchmark::DoNotOptimize(model->generate(labels));
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(labels.size()));
+    state.counters["media_s"] = double(labels.size()) / 25.0;
+}
+BENCHMARK_CAPTURE(BM_ModelGenerate, hmm, std::string("hmm"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ModelGenerate, brand, std::string("brand"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ModelGenerate, slds, std::string("slds"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ModelGenerate, dpds, std::string("dpds"))->Unit(benchmark::kMillisecond);
+} // namespace
+

@@ -12,6 +12,7 @@
 #include "aam/FaceDetector.h"
 #include "aam/FaceTracker.h"
 #include "aam/LandmarkScheme.h"
+#include "aam/PtsFile.h"
 #include "io/VideoReader.h"
 #include "tasks/Feedback.h"
 
@@ -120,6 +121,56 @@ void BM_Synthesis(benchmark::State &state)
     state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_Synthesis);
+
+// One committed GRID frame with its hand-placed 23 points.
+struct AnnotatedFrame
+{
+    cv::Mat image;
+    Eigen::VectorXd shape;
+};
+AnnotatedFrame annotatedFrame()
+{
+    const std::string stem = LIPSYNC_TEST_DATA "/faces/grid/bbaf3s_22";
+    return {cv::imread(stem + ".jpg"), readFaceShape(stem + ".pts")};
+}
+
+// The piecewise-affine warp alone: colour texture of a 360x288 frame sampled under a 23-point
+// shape into the level-0 reference frame (what texture extraction and features() do per frame).
+void BM_AamWarp(benchmark::State &state)
+{
+    const AamModel &model = gridModel();
+    const AnnotatedFrame f = annotatedFrame();
+    const PiecewiseAffineWarp &warp = model.warp(0);
+    std::vector<float> texture(size_t(3 * warp.pixelCount()));
+    for (auto _ : state) {
+        warp.sampleColour(f.image, f.shape, texture.data());
+        benchmark::DoNotOptimize(texture.data());
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["pixels"] = warp.pixelCount();
+}
+BENCHMARK(BM_AamWarp)->Unit(benchmark::kMicrosecond);
+
+// One AAM fit (all levels) from the hand-placed shape moved 4 px right and 3 px down: the
+// inverse-compositional search a tracker runs per frame, without the detector.
+void BM_AamFit(benchmark::State &state)
+{
+    const AamModel &model = gridModel();
+    const AamFitter fitter(model);
+    const AnnotatedFrame f = annotatedFrame();
+    Eigen::VectorXd start = f.shape;
+    for (Eigen::Index i = 0; i < start.size(); i += 2) {
+        start[i] += 4.0;
+        start[i + 1] += 3.0;
+    }
+    AamFitResult result;
+    for (auto _ : state)
+        benchmark::DoNotOptimize(result = fitter.fit(f.image, start));
+    state.SetItemsProcessed(state.iterations());
+    state.counters["fit_iterations"] = result.iterations;
+    state.counters["nme_vs_hand"] = normalisedMeanError(result.shape, f.shape);
+}
+BENCHMARK(BM_AamFit)->Unit(benchmark::kMillisecond);
 
 void BM_HelenGeneric(benchmark::State &state)
 {

@@ -44,6 +44,9 @@ function(lipsync_add_qtest source)
     set(ARG_TIMEOUT 300)
   endif()
   set_tests_properties(${target} PROPERTIES TIMEOUT ${ARG_TIMEOUT})
+  if(LIPSYNC_SANITIZER_TEST_ENV)
+    set_tests_properties(${target} PROPERTIES ENVIRONMENT "${LIPSYNC_SANITIZER_TEST_ENV}")
+  endif()
   if(ARG_GUI)
     # GUI tests share one X display; run alone so no other test's window takes the keyboard focus
     # their shortcuts need.

@@ -6,6 +6,7 @@
 #include <QCryptographicHash>
 #include <QByteArray>
 
+#include <cmath>
 #include <cstring>
 
 namespace lipsync {
@@ -14,6 +15,8 @@ namespace {
 
 constexpr char kMagic[8] = {'L', 'S', 'A', 'A', 'M', '\n', '\x1a', '\0'};
 constexpr double kMargin = 2.0;
+// The reference frames of real models are a few hundred pixels wide; a file claiming more is corrupt.
+constexpr double kMaxReferenceFrame = 1024.0;
 
 class Writer
 {
@@ -196,7 +199,11 @@ void AamModel::save(const std::string &path) const
 
 AamModel AamModel::load(const std::string &path)
 {
-    const std::string data = readWholeFile(path);
+    return fromBytes(readWholeFile(path), path);
+}
+
+AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
+{
     if (data.size() < sizeof kMagic || std::memcmp(data.data(), kMagic, sizeof kMagic) != 0)
         throw Error("not an AAM model file (bad magic)", path);
     Reader r(data, path);
@@ -253,6 +260,21 @@ AamModel AamModel::load(const std::string &path)
                     && (m.detectorShape.size() == 0 || m.detectorShape.size() == m.meanShape.size());
     if (!ok)
         throw Error("inconsistent AAM model (sizes disagree)", path);
+    // prepare() rasterises each level's reference frame from these numbers: non-finite or huge
+    // values would overflow the int frame size or allocate without bound.
+    bool bounded = m.meanShape.allFinite() && std::isfinite(m.referenceScale) && std::isfinite(m.shapeWeight);
+    for (int l = 0; bounded && l < nl; ++l) {
+        const double scale = m.levels[size_t(l)].scale;
+        bounded = std::isfinite(scale) && scale > 0;
+        if (bounded) {
+            const Eigen::VectorXd reference = m.referenceShape(l);
+            bounded = reference.allFinite() && reference.maxCoeff() < kMaxReferenceFrame;
+        }
+    }
+    if (!bounded)
+        throw Error("inconsistent AAM model (reference frame not finite or larger than "
+                        + std::to_string(int(kMaxReferenceFrame)) + " pixels)",
+                    path);
     // The identifier is a hash of the content (computeIdentifier): damaged numbers that still
     // parse would otherwise fit faces with garbage.
     if (m.identifier.rfind("aam-", 0) == 0 && m.identifier != m.computeIdentifier())

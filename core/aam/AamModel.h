@@ -89,6 +89,8 @@ public:
     // wrong magic, version or truncated/corrupt content.
     void save(const std::string &path) const;
     static AamModel load(const std::string &path);
+    // The same from the file's bytes; `pathForErrors` only names the source in errors.
+    static AamModel fromBytes(const std::string &data, const std::string &pathForErrors = {});
     // Hash of the model contents (what `identifier` holds after building).
     std::string computeIdentifier() const;
 

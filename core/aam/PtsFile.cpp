@@ -55,7 +55,8 @@ Eigen::VectorXd parsePts(const std::string &text, const std::string &path)
         if (line.starts_with("n_points:")) {
             std::string_view count = trimmed(line.substr(9));
             double n = 0;
-            if (!parseDouble(count, n) || n < 0 || n != std::floor(n))
+            // Bounded before the cast: int(1e300) is undefined behaviour.
+            if (!parseDouble(count, n) || n < 0 || n != std::floor(n) || n > 1e6)
                 throw Error("bad n_points '" + std::string(count) + "'", path, lineField(lineNo));
             declared = int(n);
             continue;

@@ -160,7 +160,11 @@ void AcousticModel::save(const std::string &path) const
 
 AcousticModel AcousticModel::load(const std::string &path)
 {
-    const std::string text = readWholeFile(path);
+    return parse(readWholeFile(path), path);
+}
+
+AcousticModel AcousticModel::parse(const std::string &text, const std::string &path)
+{
     std::istringstream in(text);
     std::string line;
     int lineNumber = 0;
@@ -256,7 +260,11 @@ AcousticModel AcousticModel::load(const std::string &path)
             }
         }
     }
-    model.prepare();
+    try {
+        model.prepare();
+    } catch (const Error &e) {
+        throw Error(e.reason(), path, "features");
+    }
     return model;
 }
 

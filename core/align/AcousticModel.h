@@ -83,6 +83,8 @@ public:
     // Throws lipsync::Error naming the file (and line for malformed content).
     void save(const std::string &path) const;
     static AcousticModel load(const std::string &path);
+    // The same from the file's text; `pathForErrors` only names the source in errors.
+    static AcousticModel parse(const std::string &text, const std::string &pathForErrors = {});
 
 private:
     MfccOptions m_features;

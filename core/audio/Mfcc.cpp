@@ -25,6 +25,11 @@ Mfcc::Mfcc(const MfccOptions &options) : m_options(options)
         throw Error("MFCC: unsupported sample rate " + std::to_string(o.sampleRate));
     if (o.melChannels < 2 || o.cepstra < 1 || o.cepstra >= o.melChannels)
         throw Error("MFCC: need 2 or more mel channels and fewer cepstra than channels");
+    // Bounded before the conversions below (options come from aligner model files too).
+    if (!(o.windowSeconds > 0 && o.windowSeconds <= 1.0 && o.shiftSeconds > 0 && o.shiftSeconds <= 1.0))
+        throw Error("MFCC: window and shift must be between 0 and 1 s");
+    if (o.melChannels > 1024)
+        throw Error("MFCC: more than 1024 mel channels");
     m_window = int(std::lround(o.windowSeconds * o.sampleRate));
     m_shift = int(std::lround(o.shiftSeconds * o.sampleRate));
     if (m_window < 2 || m_shift < 1)

@@ -50,7 +50,12 @@ void saveModel(const DynamicModel &model, const std::string &path, const std::st
 std::unique_ptr<DynamicModel> loadModel(const std::string &path, const std::string &expectedAamId,
                                         std::string *aamId)
 {
-    const std::string text = readWholeFile(path);
+    return parseModel(readWholeFile(path), path, expectedAamId, aamId);
+}
+
+std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::string &path,
+                                         const std::string &expectedAamId, std::string *aamId)
+{
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(text), &parseError);
     if (doc.isNull() || !doc.isObject())

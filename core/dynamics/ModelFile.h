@@ -35,5 +35,9 @@ void saveModel(const DynamicModel &model, const std::string &path, const std::st
 std::unique_ptr<DynamicModel> loadModel(const std::string &path,
                                         const std::string &expectedAamId = {},
                                         std::string *aamId = nullptr);
+// The same from the file's text; `pathForErrors` only names the source in errors.
+std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::string &pathForErrors,
+                                         const std::string &expectedAamId = {},
+                                         std::string *aamId = nullptr);
 
 } // namespace lipsync

@@ -5,6 +5,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace lipsync {
@@ -43,7 +44,11 @@ bool parseDouble(std::string_view text, double &value)
 
 FeatureTable readFeatureCsv(const std::string &path)
 {
-    const std::string text = readWholeFile(path);
+    return parseFeatureCsv(readWholeFile(path), path);
+}
+
+FeatureTable parseFeatureCsv(const std::string &text, const std::string &path)
+{
     std::vector<std::vector<double>> rows;
     std::vector<int> frames;
     size_t columns = 0;
@@ -66,6 +71,11 @@ FeatureTable readFeatureCsv(const std::string &path)
                 continue; // header
             throw Error("frame index '" + std::string(fields[0]) + "' is not a number", path, where);
         }
+        // A frame index is a whole number in int range: converting anything else to int is undefined
+        // behaviour (found by fuzz/fuzz_featurecsv).
+        if (!(first >= 0 && first <= double(std::numeric_limits<int>::max()) && first == std::floor(first)))
+            throw Error("frame index '" + std::string(fields[0]) + "' is not a whole number from 0 to "
+                            + std::to_string(std::numeric_limits<int>::max()), path, where);
         if (fields.size() < 2)
             throw Error("expected a frame index and at least one parameter", path, where);
         if (columns == 0)

@@ -17,6 +17,8 @@ struct FeatureTable
 
 // Throws lipsync::Error naming the file and line for ragged rows, non-numbers, NaN/inf values.
 FeatureTable readFeatureCsv(const std::string &path);
+// The same from the file's text; `pathForErrors` only names the source in errors.
+FeatureTable parseFeatureCsv(const std::string &text, const std::string &pathForErrors = {});
 // Atomic (written to a temporary file, then renamed). Rows are numbered 0..rows-1 unless
 // `frames` is given.
 void writeFeatureCsv(const std::string &path, const Eigen::MatrixXd &values,

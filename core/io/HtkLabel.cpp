@@ -1,5 +1,7 @@
 #include "io/HtkLabel.h"
 
+#include <charconv>
+
 #include "io/AtomicFile.h"
 #include "util/Error.h"
 
@@ -60,8 +62,24 @@ void parseLine(const std::string &line, const std::string &path, int lineNumber,
     }
     if (timed == 1 && inSeconds)
         throw Error("time in seconds in a file whose times are in 100 ns units", path, where);
-    const double start = timed == 2 ? std::strtod(f[0].c_str(), nullptr) : std::stoll(f[0]) / kHtkUnitsPerSecond;
-    const double end = timed == 2 ? std::strtod(f[1].c_str(), nullptr) : std::stoll(f[1]) / kHtkUnitsPerSecond;
+    // from_chars, not stoll: a time too large for 64 bits is bad input (an Error naming the line),
+    // not std::out_of_range (found by fuzz/fuzz_htklabel); likewise a time in seconds that overflows.
+    double times[2] = {0, 0};
+    for (int k = 0; k < 2; ++k) {
+        const std::string &text = f[size_t(k)];
+        if (timed == 2) {
+            times[k] = std::strtod(text.c_str(), nullptr);
+            if (!std::isfinite(times[k]))
+                throw Error("time '" + text + "' is out of range", path, where);
+        } else {
+            long long units = 0;
+            const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), units);
+            if (ec != std::errc() || ptr != text.data() + text.size())
+                throw Error("time '" + text + "' is out of range", path, where);
+            times[k] = double(units) / kHtkUnitsPerSecond;
+        }
+    }
+    const double start = times[0], end = times[1];
     if (start < 0 || end < start)
         throw Error("interval end is before its start", path, where);
     Interval interval{start, end, f[2], false};

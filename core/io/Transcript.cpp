@@ -34,6 +34,11 @@ std::string extensionOf(const std::string &path)
     return ext;
 }
 
+Error unsupportedFormat(const std::string &ext, const std::string &path)
+{
+    return Error("unsupported transcript format '" + ext + "' (use .align, .lab, .txt or .TextGrid)", path);
+}
+
 Transcript fromTier(const Tier &tier)
 {
     Transcript t;
@@ -74,11 +79,19 @@ Transcript parsePlainTranscript(const std::string &text)
 Transcript readTranscript(const std::string &path)
 {
     const std::string ext = extensionOf(path);
+    if (ext != ".align" && ext != ".textgrid" && ext != ".lab" && ext != ".txt" && !ext.empty())
+        throw unsupportedFormat(ext, path);
+    return parseTranscript(readWholeFile(path), path);
+}
+
+Transcript parseTranscript(const std::string &bytes, const std::string &path)
+{
+    const std::string ext = extensionOf(path);
     Transcript t;
     if (ext == ".align") {
-        t = fromTier(readGridAlign(path));
+        t = fromTier(parseGridAlign(bytes, path));
     } else if (ext == ".textgrid") {
-        const TextGrid grid = readTextGrid(path);
+        const TextGrid grid = parseTextGrid(bytes, path);
         const Tier *words = grid.tier("words");
         for (const TextGridTier &candidate : grid.tiers)
             if (!words && !candidate.isPointTier)
@@ -88,23 +101,22 @@ Transcript readTranscript(const std::string &path)
         t = fromTier(*words);
     } else if (ext == ".lab") {
         // HTK timed labels, or (as MFA uses .lab) the plain transcript.
-        const std::string text = readWholeFile(path);
-        std::istringstream first(text);
+        std::istringstream first(bytes);
         std::string a, b;
         first >> a >> b;
         auto integer = [](const std::string &s) {
             return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
         };
         if (integer(a) && integer(b)) {
-            Tier tier = parseHtkLabel(text, path);
+            Tier tier = parseHtkLabel(bytes, path);
             t = fromTier(tier);
         } else {
-            t = parsePlainTranscript(text);
+            t = parsePlainTranscript(bytes);
         }
     } else if (ext == ".txt" || ext.empty()) {
-        t = parsePlainTranscript(readWholeFile(path));
+        t = parsePlainTranscript(bytes);
     } else {
-        throw Error("unsupported transcript format '" + ext + "' (use .align, .lab, .txt or .TextGrid)", path);
+        throw unsupportedFormat(ext, path);
     }
     if (t.words.empty())
         throw Error("the transcript has no words", path);

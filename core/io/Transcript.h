@@ -22,6 +22,8 @@ struct Transcript
 // Throws lipsync::Error naming the file (and line where it applies); an empty transcript is an
 // error.
 Transcript readTranscript(const std::string &path);
+// The same from the file's bytes; the format is chosen by the extension of `path`.
+Transcript parseTranscript(const std::string &bytes, const std::string &path);
 // Plain text: whitespace-separated words, any line breaks.
 Transcript parsePlainTranscript(const std::string &text);
 // Writes plain text, one line.

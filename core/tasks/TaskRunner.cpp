@@ -2,14 +2,63 @@
 
 #include "util/Error.h"
 
-#include <QtConcurrent/QtConcurrentRun>
+#include "tasks/HandoffFence.h"
 
+#include <QPromise>
+#include <QRunnable>
 #include <QThread>
 
 #include <algorithm>
 #include <memory>
 
 namespace lipsync {
+
+namespace {
+
+struct Outcome
+{
+    TaskRunner::Commit commit;
+    Task::State state = Task::State::Finished;
+    QString error;
+};
+
+// The work of one task on a pool thread. A QRunnable of ours rather than QtConcurrent::run so that
+// the first thing the pool thread does with the task's data is pass handoffFence() (see there).
+class Job : public QRunnable
+{
+public:
+    Job(TaskRunner::Work work, std::shared_ptr<Outcome> outcome, Feedback *feedback)
+        : m_work(std::move(work)), m_outcome(std::move(outcome)), m_feedback(feedback)
+    {
+        m_promise.start();
+    }
+    QFuture<void> future() { return m_promise.future(); }
+
+    void run() override
+    {
+        handoffFence();
+        try {
+            m_outcome->commit = m_work(*m_feedback);
+        } catch (const Canceled &) {
+            m_outcome->state = Task::State::Canceled;
+        } catch (const std::exception &e) {
+            m_outcome->state = Task::State::Failed;
+            m_outcome->error = QString::fromUtf8(e.what());
+        }
+        // Drop the work's captures here, on the worker, before the GUI thread is told.
+        m_work = nullptr;
+        handoffFence();
+        m_promise.finish();
+    }
+
+private:
+    TaskRunner::Work m_work;
+    std::shared_ptr<Outcome> m_outcome;
+    Feedback *m_feedback;
+    QPromise<void> m_promise;
+};
+
+} // namespace
 
 TaskRunner::TaskRunner(QObject *parent) : QObject(parent)
 {
@@ -27,17 +76,12 @@ Task *TaskRunner::start(const QString &title, Work work)
     auto *task = new Task(m_nextId++, title, this);
     m_tasks.append(task);
 
-    struct Outcome
-    {
-        Commit commit;
-        Task::State state = Task::State::Finished;
-        QString error;
-    };
     auto outcome = std::make_shared<Outcome>();
     auto *watcher = new QFutureWatcher<void>(this);
     m_watchers.append(watcher);
 
     connect(watcher, &QFutureWatcher<void>::finished, this, [this, task, watcher, outcome] {
+        handoffFence();
         m_watchers.removeOne(watcher);
         watcher->deleteLater();
         Task::State state = outcome->state;
@@ -56,17 +100,10 @@ Task *TaskRunner::start(const QString &title, Work work)
         emit taskFinished(task);
     });
 
-    Feedback *feedback = &task->feedback();
-    watcher->setFuture(QtConcurrent::run(&m_pool, [work = std::move(work), outcome, feedback] {
-        try {
-            outcome->commit = work(*feedback);
-        } catch (const Canceled &) {
-            outcome->state = Task::State::Canceled;
-        } catch (const std::exception &e) {
-            outcome->state = Task::State::Failed;
-            outcome->error = QString::fromUtf8(e.what());
-        }
-    }));
+    auto *job = new Job(std::move(work), outcome, &task->feedback());
+    watcher->setFuture(job->future());
+    handoffFence();
+    m_pool.start(job); // the pool deletes the job after run()
     emit taskStarted(task);
     return task;
 }

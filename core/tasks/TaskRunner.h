@@ -1,5 +1,5 @@
 #pragma once
-// The one task runner: runs work on QThreadPool through QtConcurrent and applies its result on
+// The one task runner: runs work on its own QThreadPool and applies its result on
 // the runner's (GUI) thread. The work function returns a "commit" closure; the runner calls it
 // only if the task was not canceled and did not throw. So cancel and failure leave the project
 // exactly as before — the worker never touches the document.

@@ -1,0 +1,22 @@
+#include "FuzzParsers.h"
+
+namespace lipsync::fuzz {
+
+const std::map<std::string, Parser> &parsers()
+{
+    static const std::map<std::string, Parser> table{
+        {"aam", &parseAamBytes},
+        {"aligner", &parseAlignerBytes},
+        {"featurecsv", &parseFeatureCsvBytes},
+        {"gridalign", &parseGridAlignBytes},
+        {"htklabel", &parseHtkLabelBytes},
+        {"modelfile", &parseModelFileBytes},
+        {"project", &parseProjectBytes},
+        {"pts", &parsePtsBytes},
+        {"textgrid", &parseTextGridBytes},
+        {"transcript", &parseTranscriptBytes},
+    };
+    return table;
+}
+
+} // namespace lipsync::fuzz
