@@ -117,7 +117,7 @@ SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedba
     feedback.throwIfCanceled();
     feedback.setProgress(0.1);
 
-    static const Lexicon lexicon(&PronunciationDictionary::cmu());
+    const Lexicon lexicon(&PronunciationDictionary::cmu(), Lexicon::parseOverrides(request.pronunciations));
     const PreparedUtterance utterance =
         prepareUtterance(std::filesystem::path(request.mediaPath).stem().string(), request.mediaPath,
                          transcript.words, acoustic, lexicon);

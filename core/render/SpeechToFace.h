@@ -18,6 +18,7 @@
 
 #include <Eigen/Core>
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,6 +36,8 @@ struct SpeechToFaceRequest
     std::string alignerModelPath;   // empty: the shipped aligner model (ShippedAlignerModel)
     // Frames per second of the generated sequence; 0: the video's rate, 25 for audio only.
     double frameRate = 0.0;
+    // Pronunciation overrides (a project's Project::pronunciations), before CMU and espeak-ng.
+    std::map<std::string, std::string> pronunciations;
 };
 
 struct SpeechToFaceResult
@@ -57,7 +60,7 @@ struct SpeechToFaceResult
 
 // Align, label and generate. Throws lipsync::Error naming the file at fault (media without
 // sound, a transcript that does not fit the audio, a model made for another AAM, ...); Canceled.
-// Words are pronounced from the CMU dictionary, espeak-ng for the rest.
+// Words are pronounced from request.pronunciations, then the CMU dictionary, espeak-ng for the rest.
 SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedback &feedback);
 // The same for a recording already aligned (a project sequence's phone tier, and its words if
 // any): no aligner; request.transcriptPath and alignerModelPath are not used.

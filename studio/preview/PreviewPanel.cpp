@@ -553,6 +553,7 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
     request.mediaPath = mediaPath.toStdString();
     request.aamPath = aamPath;
     request.frameRate = frameRate;
+    request.pronunciations = m_window->document()->project().pronunciations;
     // The neutral frame: the first frame of the current sequence at its tracked pose, else the
     // mean face on grey.
     const auto media = m_window->media();
