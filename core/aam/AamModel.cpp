@@ -52,6 +52,8 @@ public:
     Reader(const std::string &data, const std::string &path) : m_data(data), m_path(path) {}
     void raw(void *out, size_t size)
     {
+        if (size == 0) // an empty matrix has no data pointer: memcpy(nullptr, ..., 0) is undefined
+            return;
         if (m_pos + size > m_data.size())
             throw Error("truncated AAM file", m_path);
         std::memcpy(out, m_data.data() + m_pos, size);
