@@ -211,6 +211,14 @@ const Sequence *Project::sequence(const std::string &id) const
     return const_cast<Project *>(this)->sequence(id);
 }
 
+const ModelReference *Project::model(const std::string &kind) const
+{
+    for (auto it = models.rbegin(); it != models.rend(); ++it)
+        if (it->kind == kind)
+            return &*it;
+    return nullptr;
+}
+
 bool Project::operator==(const Project &other) const
 {
     return name == other.name && sequences == other.sequences && models == other.models

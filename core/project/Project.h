@@ -95,6 +95,9 @@ public:
 
     Sequence *sequence(const std::string &id);
     const Sequence *sequence(const std::string &id) const;
+    // The reference of `kind` ("aam", "dpds", ...) the project uses, or null: the latest one, as a
+    // model added again under another name supersedes the earlier (ProjectDocument::requestAddModel).
+    const ModelReference *model(const std::string &kind) const;
 
     bool operator==(const Project &other) const; // content, not folder
 

@@ -441,9 +441,8 @@ Task *FacesController::trackSequences(const QList<int> &rows)
     if (rows.isEmpty())
         return nullptr;
     if (!ensureModel()) {
-        const auto &models = m_window->document()->project().models;
         // A project's AAM that failed to load has been reported (file and reason) by ensureModel.
-        if (std::none_of(models.begin(), models.end(), [](const ModelReference &m) { return m.kind == "aam"; }))
+        if (!m_window->document()->project().model("aam"))
             ErrorReporter::report(m_window, tr("Tracking needs an AAM."), QString(),
                                   tr("Label a few frames and choose Faces ▸ Build AAM first."));
         return nullptr;

@@ -298,10 +298,8 @@ QList<Task *> ModelsPanel::train()
     options.brand.fullCovariance = m_brandCovariance->currentData().toBool();
 
     ProjectDocument *doc = m_window->document();
-    std::string aamId = "unspecified";
-    for (const ModelReference &m : doc->project().models)
-        if (m.kind == "aam")
-            aamId = m.name;
+    const ModelReference *aam = doc->project().model("aam");
+    const std::string aamId = aam ? aam->name : "unspecified";
     if (m_plots)
         m_plots->setCurrentWidget(m_objective);
     for (const QString &kind : kKinds) {
@@ -463,10 +461,8 @@ void ModelsPanel::onLocationChanged()
     ProjectDocument *doc = m_window->document();
     if (doc->isReadOnly() || m_unsaved.isEmpty())
         return;
-    std::string aamId = "unspecified";
-    for (const ModelReference &m : doc->project().models)
-        if (m.kind == "aam")
-            aamId = m.name;
+    const ModelReference *aam = doc->project().model("aam");
+    const std::string aamId = aam ? aam->name : "unspecified";
     for (const QString &kind : QSet<QString>(m_unsaved)) {
         const auto model = m_trained.value(kind);
         if (!model)
@@ -519,8 +515,7 @@ void ModelsPanel::refreshTrajectory()
         // Each trained model the document refers to, in the panel's order.
         for (const QString &kind : kKinds) {
             const auto model = m_trained.value(kind);
-            const bool referenced = std::any_of(doc->project().models.begin(), doc->project().models.end(),
-                                                [&](const ModelReference &m) { return m.kind == kind.toStdString(); });
+            const bool referenced = doc->project().model(kind.toStdString()) != nullptr;
             if (!model || !referenced || labels.empty() || model->dimension() != s.features.cols())
                 continue;
             try {

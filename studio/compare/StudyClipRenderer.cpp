@@ -24,15 +24,6 @@ QImage toImage(const cv::Mat &bgr)
     return QImage(rgb.data, rgb.cols, rgb.rows, int(rgb.step), QImage::Format_RGB888).copy();
 }
 
-const ModelReference *findModel(const Project &project, const std::string &kind)
-{
-    // The latest reference of a kind wins (the models panel keeps one per kind).
-    for (auto it = project.models.rbegin(); it != project.models.rend(); ++it)
-        if (it->kind == kind)
-            return &*it;
-    return nullptr;
-}
-
 } // namespace
 
 StudyClipRenderer::StudyClipRenderer(Project project) : m_project(std::move(project)) {}
@@ -43,7 +34,7 @@ std::vector<std::string> StudyClipRenderer::availableMethods(const Project &proj
 {
     std::vector<std::string> methods{kRealMethod};
     for (const std::string &kind : dynamicModelKinds())
-        if (findModel(project, kind))
+        if (project.model(kind))
             methods.push_back(kind);
     return methods;
 }
@@ -52,7 +43,7 @@ std::shared_ptr<const AamModel> StudyClipRenderer::aam()
 {
     std::lock_guard lock(m_mutex);
     if (!m_aam) {
-        const ModelReference *ref = findModel(m_project, "aam");
+        const ModelReference *ref = m_project.model("aam");
         if (!ref)
             throw Error("the project has no AAM to synthesise faces with", m_project.manifestPath(), "models");
         m_aam = std::make_shared<const AamModel>(AamModel::load(m_project.resolve(ref->file)));
@@ -66,7 +57,7 @@ std::shared_ptr<const DynamicModel> StudyClipRenderer::model(const std::string &
     std::lock_guard lock(m_mutex);
     auto &slot = m_models[kind];
     if (!slot) {
-        const ModelReference *ref = findModel(m_project, kind);
+        const ModelReference *ref = m_project.model(kind);
         if (!ref)
             throw Error("the project has no trained " + kind + " model", m_project.manifestPath(), "models");
         // The model must speak the parameters of the AAM that synthesises: the file records the
@@ -74,7 +65,7 @@ std::shared_ptr<const DynamicModel> StudyClipRenderer::model(const std::string &
         const std::string path = m_project.resolve(ref->file);
         std::string recorded;
         slot = loadModel(path, {}, &recorded);
-        const ModelReference *aamRef = findModel(m_project, "aam");
+        const ModelReference *aamRef = m_project.model("aam");
         if (!recorded.empty() && recorded != faces->identifier && (!aamRef || recorded != aamRef->name))
             throw Error("the model was trained for AAM '" + recorded + "', not for the project's AAM", path, "aam");
     }

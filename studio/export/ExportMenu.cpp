@@ -31,17 +31,8 @@ namespace {
 const ModelReference *dynamicModel(const Project &project)
 {
     for (const char *kind : {"dpds", "slds", "brand", "hmm"})
-        for (const ModelReference &m : project.models)
-            if (m.kind == kind)
-                return &m;
-    return nullptr;
-}
-
-const ModelReference *aamModel(const Project &project)
-{
-    for (const ModelReference &m : project.models)
-        if (m.kind == "aam")
-            return &m;
+        if (const ModelReference *m = project.model(kind))
+            return m;
     return nullptr;
 }
 
@@ -87,14 +78,14 @@ void ExportMenu::updateActions()
     const int row = m_window->currentSequence();
     const bool hasSequence = row >= 0 && row < document->sequenceCount();
     const Project &project = document->project();
-    const bool canGenerate = hasSequence && dynamicModel(project) && aamModel(project);
+    const bool canGenerate = hasSequence && dynamicModel(project) && project.model("aam");
     action(Kind::Video)->setEnabled(canGenerate);
     action(Kind::SideBySide)->setEnabled(canGenerate);
     action(Kind::Images)->setEnabled(canGenerate);
     action(Kind::Features)->setEnabled(hasSequence && document->sequence(row).features.rows() > 0);
     action(Kind::Alignment)->setEnabled(hasSequence && !document->sequence(row).phones.isEmpty());
     action(Kind::Landmarks)->setEnabled(hasSequence && !document->sequence(row).landmarks.empty());
-    action(Kind::Aam)->setEnabled(aamModel(project) != nullptr);
+    action(Kind::Aam)->setEnabled(project.model("aam") != nullptr);
     action(Kind::Model)->setEnabled(dynamicModel(project) != nullptr);
 }
 
@@ -142,7 +133,7 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path)
     // Everything the worker needs is copied here, on the GUI thread: it never reads the document.
     const Sequence sequence = projectWide ? Sequence() : document->sequence(row);
     const ModelReference *model = dynamicModel(project);
-    const ModelReference *aam = aamModel(project);
+    const ModelReference *aam = project.model("aam");
     const std::string target = path.toStdString();
     const QString id = QString::fromStdString(sequence.id);
     TaskRunner::Work work;

@@ -46,10 +46,8 @@ namespace {
 // The AAM the project refers to (its file), or "" if it has none.
 std::string projectAamPath(const Project &project)
 {
-    for (const ModelReference &ref : project.models)
-        if (ref.kind == "aam")
-            return project.resolve(ref.file);
-    return {};
+    const ModelReference *aam = project.model("aam");
+    return aam ? project.resolve(aam->file) : std::string();
 }
 
 } // namespace
