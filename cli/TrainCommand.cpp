@@ -2,6 +2,7 @@
 #include "Command.h"
 #include "TrainingData.h"
 
+#include "aam/AamModel.h"
 #include "dynamics/ModelFile.h"
 #include "tasks/Feedback.h"
 
@@ -18,6 +19,7 @@ namespace {
 const char *kTrainUsage =
     "usage: lipsync train --kind dpds|slds|brand|hmm (--project DIR | --features DIR --labels DIR)\n"
     "                     --out MODEL [--fps 25] [--aam ID] [--json]\n"
+    "  --aam: the identifier of the AAM the features come from (default: the project's AAM)\n"
     "  options: --full-covariance (brand), --full-a (slds), --optimizer lm|gradient (dpds),\n"
     "           --paper-mode (dpds), --max-iterations N (dpds, slds), --threads N (dpds)";
 
@@ -72,8 +74,15 @@ int runTrain(const QStringList &argv)
         return fail(QStringLiteral("--kind must be dpds, slds, brand or hmm"), 2);
 
     std::vector<LabelledSequence> sequences;
-    if (const QString error = loadTrainingData(args, sequences); !error.isEmpty())
+    std::string projectAam;
+    if (const QString error = loadTrainingData(args, sequences, &projectAam); !error.isEmpty())
         return fail(error + QLatin1Char('\n') + QString::fromLatin1(kTrainUsage), 2);
+    // The model records the AAM whose parameters it generates: --aam, else the content identifier of
+    // the project's AAM (what `lipsync render` and the studio check a model against). Read before
+    // training, so a broken AAM file costs no training time.
+    std::string aam = args.value(QStringLiteral("aam"), QStringLiteral("unspecified")).toStdString();
+    if (!args.has(QStringLiteral("aam")) && !projectAam.empty())
+        aam = AamModel::load(projectAam).identifier;
     auto model = createDynamicModel(kind.toStdString(), options);
     Feedback feedback;
     int iterations = 0;
@@ -85,7 +94,6 @@ int runTrain(const QStringList &argv)
     const auto start = std::chrono::steady_clock::now();
     model->train(sequences, feedback);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const std::string aam = args.value(QStringLiteral("aam"), QStringLiteral("unspecified")).toStdString();
     saveModel(*model, out.toStdString(), aam);
 
     long long frames = 0;

@@ -10,9 +10,13 @@ namespace lipsync::cli {
 namespace {
 
 // Frame labels by the §0 vote at each sequence's own frame rate, one per feature row.
-std::vector<LabelledSequence> projectSequences(const std::string &folder)
+std::vector<LabelledSequence> projectSequences(const std::string &folder, std::string *projectAam)
 {
     const Project project = Project::load(folder);
+    if (projectAam) {
+        const ModelReference *aam = project.model("aam");
+        *projectAam = aam ? project.resolve(aam->file) : std::string();
+    }
     std::vector<LabelledSequence> sequences;
     for (const Sequence &s : project.sequences) {
         if (s.features.rows() == 0 || s.phones.isEmpty())
@@ -33,14 +37,15 @@ std::vector<LabelledSequence> projectSequences(const std::string &folder)
 
 } // namespace
 
-QString loadTrainingData(const Arguments &args, std::vector<LabelledSequence> &sequences)
+QString loadTrainingData(const Arguments &args, std::vector<LabelledSequence> &sequences,
+                         std::string *projectAam)
 {
     const bool project = args.has(QStringLiteral("project"));
     const bool folders = args.has(QStringLiteral("features")) || args.has(QStringLiteral("labels"));
     if (project == folders)
         return QStringLiteral("give either --project DIR or --features DIR --labels DIR");
     if (project) {
-        sequences = projectSequences(args.value(QStringLiteral("project")).toStdString());
+        sequences = projectSequences(args.value(QStringLiteral("project")).toStdString(), projectAam);
         return {};
     }
     if (!args.has(QStringLiteral("features")) || !args.has(QStringLiteral("labels")))

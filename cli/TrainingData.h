@@ -10,7 +10,9 @@
 namespace lipsync::cli {
 
 // Returns "" and fills `sequences`, or returns a usage error (exit 2). Bad files throw
-// lipsync::Error naming the file.
-QString loadTrainingData(const Arguments &args, std::vector<LabelledSequence> &sequences);
+// lipsync::Error naming the file. With --project, `projectAam` (if given) receives the path of the
+// project's AAM, empty if it has none.
+QString loadTrainingData(const Arguments &args, std::vector<LabelledSequence> &sequences,
+                         std::string *projectAam = nullptr);
 
 } // namespace lipsync::cli

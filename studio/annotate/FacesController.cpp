@@ -341,20 +341,18 @@ bool FacesController::ensureModel()
     if (m_model)
         return true;
     const ProjectDocument *doc = m_window->document();
-    for (const ModelReference &ref : doc->project().models) {
-        if (ref.kind != "aam")
-            continue;
-        try {
-            m_model = std::make_shared<const AamModel>(AamModel::load(doc->project().resolve(ref.file)));
-            m_modelName = QString::fromStdString(ref.name);
-            updateActions();
-            return true;
-        } catch (const std::exception &e) {
-            ErrorReporter::report(m_window, tr("The project's AAM could not be loaded."), e);
-            return false;
-        }
+    const ModelReference *ref = doc->project().model("aam");
+    if (!ref)
+        return false;
+    try {
+        m_model = std::make_shared<const AamModel>(AamModel::load(doc->project().resolve(ref->file)));
+        m_modelName = QString::fromStdString(ref->name);
+        updateActions();
+        return true;
+    } catch (const std::exception &e) {
+        ErrorReporter::report(m_window, tr("The project's AAM could not be loaded."), e);
+        return false;
     }
-    return false;
 }
 
 Task *FacesController::buildAam()

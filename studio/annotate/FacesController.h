@@ -47,7 +47,9 @@ public:
 
     // The AAM in use (built this session or loaded from the project), or null.
     std::shared_ptr<const AamModel> model() const { return m_model; }
-    // Per-frame fit errors of a tracked sequence (negative: no face), empty if not tracked.
+    // Loads the project's AAM (its latest reference) unless one is loaded; a file that does not load
+    // is reported (file and reason) and false returned.
+    bool ensureModel();
 
     // The actions, callable directly (tests). Each returns the task started, or null.
     Task *detectLandmarks();
@@ -64,7 +66,6 @@ private:
     void onLocationChanged();
     void refreshFrame();
     void updateActions();
-    bool ensureModel();
     void reportFailure(Task *task, const QString &what);
 
     MainWindow *m_window;

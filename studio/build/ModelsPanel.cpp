@@ -270,6 +270,14 @@ std::vector<LabelledSequence> ModelsPanel::trainingData(QString *problem) const
     return out;
 }
 
+// What a trained model records as its AAM: the content identifier of the project's AAM, which
+// `lipsync render` and the preview check against whichever AAM file they are given.
+std::string ModelsPanel::aamIdentifier() const
+{
+    FacesController *faces = m_window->faces();
+    return faces && faces->ensureModel() ? faces->model()->identifier : std::string("unspecified");
+}
+
 QList<Task *> ModelsPanel::runningTasks() const
 {
     QList<Task *> out;
@@ -298,8 +306,7 @@ QList<Task *> ModelsPanel::train()
     options.brand.fullCovariance = m_brandCovariance->currentData().toBool();
 
     ProjectDocument *doc = m_window->document();
-    const ModelReference *aam = doc->project().model("aam");
-    const std::string aamId = aam ? aam->name : "unspecified";
+    const std::string aamId = aamIdentifier();
     if (m_plots)
         m_plots->setCurrentWidget(m_objective);
     for (const QString &kind : kKinds) {
@@ -461,8 +468,7 @@ void ModelsPanel::onLocationChanged()
     ProjectDocument *doc = m_window->document();
     if (doc->isReadOnly() || m_unsaved.isEmpty())
         return;
-    const ModelReference *aam = doc->project().model("aam");
-    const std::string aamId = aam ? aam->name : "unspecified";
+    const std::string aamId = aamIdentifier();
     for (const QString &kind : QSet<QString>(m_unsaved)) {
         const auto model = m_trained.value(kind);
         if (!model)

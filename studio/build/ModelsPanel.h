@@ -90,6 +90,7 @@ signals:
 
 private:
     std::vector<LabelledSequence> trainingData(QString *problem) const;
+    std::string aamIdentifier() const;
     void onDocumentReset();
     void onLocationChanged();
     void refreshTrajectory();

@@ -5,6 +5,7 @@
 // leaves no output file.
 #include "CliRun.h"
 
+#include "aam/AamModel.h"
 #include "io/MediaInfo.h"
 
 #include <QDir>
@@ -14,6 +15,7 @@
 
 #include <cmath>
 
+using lipsync::AamModel;
 using lipsync::MediaInfo;
 using lipsync::testing::Run;
 using lipsync::testing::parseJsonObject;
@@ -53,8 +55,26 @@ private slots:
     {
         QVERIFY(m_dir.isValid());
         m_model = m_dir.filePath("demo.model");
-        const Run train = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--out", m_model});
+        const Run train = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--out", m_model, "--json"});
         QVERIFY2(train.exitCode == 0, train.err.constData());
+        // Trained from a project, the model records the content identifier of the project's AAM.
+        QCOMPARE(parseJsonObject(train.out).value("aam").toString().toStdString(),
+                 AamModel::load(kAam.toStdString()).identifier);
+    }
+
+    // A model that names another AAM is refused, naming the model file.
+    void modelForAnotherAam()
+    {
+        const QString model = m_dir.filePath("other.model");
+        const Run train = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--out", model, "--aam", "aam-other"});
+        QVERIFY2(train.exitCode == 0, train.err.constData());
+        const QString out = m_dir.filePath("other.mp4");
+        QStringList args = renderArgs(kClip, kTranscript, out);
+        args[args.indexOf(m_model)] = model;
+        const Run r = runLipsync(args);
+        verifyOneLineError(r, model);
+        QVERIFY(r.err.contains("trained for AAM 'aam-other'"));
+        QVERIFY(!QFile::exists(out));
     }
 
     void rendersADemoClipWithItsSound()

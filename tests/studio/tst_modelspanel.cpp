@@ -3,6 +3,7 @@
 // objective per iteration, the models appear in the panel's list and in the document (one undo
 // step each), a canceled training keeps the previous model, and Evaluate (k-fold) draws Figure 4.
 #include "DemoWindow.h"
+#include "aam/AamModel.h"
 
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
@@ -186,7 +187,12 @@ private slots:
         // The models trained in memory went to models/, the demo's AAM was copied along.
         for (const char *file : {"models/dpds.model", "models/hmm.model", "aam/demo.aam"})
             QVERIFY2(QFileInfo(QDir(folder).filePath(QString::fromLatin1(file))).isFile(), file);
-        const std::unique_ptr<DynamicModel> loaded = loadModel(QDir(folder).filePath("models/dpds.model").toStdString());
+        std::string recordedAam;
+        const std::unique_ptr<DynamicModel> loaded =
+            loadModel(QDir(folder).filePath("models/dpds.model").toStdString(), {}, &recordedAam);
+        // It records the content identifier of the AAM its features came from (what `lipsync render`
+        // checks), not the AAM's display name.
+        QCOMPARE(recordedAam, AamModel::load(QDir(folder).filePath("aam/demo.aam").toStdString()).identifier);
         const Sequence &s = m_window->document()->sequence(0);
         const std::vector<int> labels = frameLabelsFromTier(s.phones, s.frameRate, s.frameCount);
         QVERIFY(loaded->generate(labels).isApprox(m_panel->model("dpds")->generate(labels)));
