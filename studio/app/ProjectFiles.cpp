@@ -9,7 +9,9 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QMainWindow>
 #include <QMessageBox>
+#include <QStatusBar>
 #include <QUndoStack>
 
 namespace lipsync::studio {
@@ -21,6 +23,14 @@ ProjectFiles::ProjectFiles(ProjectDocument *document, QWidget *window, QMenu *re
     connect(m_recent, &RecentProjects::openRequested, this, [this](const QString &folder) {
         if (maybeSave())
             open(folder);
+    });
+    // Not a message box every few minutes, but not silent either: the user's edits are only in memory.
+    connect(m_autosave, &Autosave::failed, this, [this](const QString &message) {
+        if (auto *window = qobject_cast<QMainWindow *>(m_window))
+            window->statusBar()->showMessage(
+                tr("Autosave failed (unsaved changes are only in memory; the project on disk is untouched): %1")
+                    .arg(message),
+                30000);
     });
 }
 

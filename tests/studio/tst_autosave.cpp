@@ -15,7 +15,9 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -125,6 +127,31 @@ private slots:
         QVERIFY(m_window->files()->save());
         QVERIFY(!QFileInfo::exists(Autosave::folderFor(folder, false)));
         QVERIFY(readAll(folder + QStringLiteral("/project.json")).contains("edited once"));
+    }
+
+    // An autosave that cannot be written (here a file squats on the side folder's name — root ignores
+    // permissions) is shown in the status bar; the user's project stays as it was.
+    void aFailedAutosaveIsShown()
+    {
+        const QString folder = m_dir.filePath(QStringLiteral("blocked"));
+        makeProject(folder, "original");
+        QFile squatter(Autosave::folderFor(folder, false));
+        QVERIFY(squatter.open(QIODevice::WriteOnly));
+        squatter.close();
+        newWindow();
+        QVERIFY(m_window->files()->open(folder));
+        idle();
+        const QByteArray saved = readAll(folder + QStringLiteral("/project.json"));
+        QVERIFY(doc()->requestTranscriptChange(0, QStringLiteral("edited")));
+        QSignalSpy failed(autosave(), &Autosave::failed);
+        QVERIFY(autosave()->saveNow());
+        autosave()->waitForWrite();
+        QCOMPARE(failed.count(), 1);
+        const QString shown = m_window->statusBar()->currentMessage();
+        QVERIFY2(shown.startsWith(QStringLiteral("Autosave failed")), qPrintable(shown));
+        QVERIFY2(shown.contains(QStringLiteral(".autosave")), qPrintable(shown));
+        QCOMPARE(readAll(folder + QStringLiteral("/project.json")), saved);
+        QVERIFY(doc()->isModified());
     }
 
     void autosavesAfterATaskChangedTheDocument()
