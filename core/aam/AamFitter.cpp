@@ -87,7 +87,7 @@ void AamFitter::prepareLevel(int l)
     const Eigen::Vector2d c = shapeCentroid(level.reference);
     for (int i = 0; i < k; ++i) {
         const double x = level.reference[2 * i] - c.x(), y = level.reference[2 * i + 1] - c.y();
-        raw.row(2 * i) << x, -y, 1, 0;
+        raw.row(2 * i).head(4) << x, -y, 1, 0;
         raw.row(2 * i + 1).head(4) << y, x, 0, 1;
     }
     raw.rightCols(ns) = m_model.shapeBasis.leftCols(ns) * toRef.scale();
