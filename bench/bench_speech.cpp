@@ -13,7 +13,8 @@
 //                           ../shared/data/speech/mfa-tests (the 3 files with an ARPAbet phone
 //                           tier), for words whose phones agree with MFA's; N = 0: model trained on
 //                           those recordings, 1: on them plus GRID s1, 2: the shipped GRID s1 model,
-//                           3: the shipped model adapted to each recording (SpeakerAdaptation)
+//                           3: the shipped model adapted to each recording (SpeakerAdaptation),
+//                           4: adapted to the three recordings together (one speaker; aligner adapt)
 // LIPSYNC_BENCH_NORMALIZE=none|mean|cmvn chooses the per-utterance feature normalisation of the
 // models trained here (default: TrainerOptions' own).
 #include "align/AlignerTrainer.h"
@@ -345,6 +346,7 @@ void BM_EvalMfaPhones(benchmark::State &state)
     // 0: trained on the mfa-tests recordings; 1: on them plus GRID s1; 2: the shipped GRID model.
     const bool withGrid = state.range(0) == 1;
     const bool adapt = state.range(0) == 3;
+    const bool speakerAdapt = state.range(0) == 4;
     const bool shipped = state.range(0) >= 2;
     std::vector<TrainingUtterance> train = own;
     if (withGrid && exists(kGrid)) {
@@ -354,7 +356,9 @@ void BM_EvalMfaPhones(benchmark::State &state)
     int within = 0, total = 0, compared = 0, skipped = 0;
     for (auto _ : state) {
         Feedback feedback;
-        const AcousticModel model = shipped ? AcousticModel::load(kModel) : AlignerTrainer::train(train, benchOptions(), feedback);
+        AcousticModel model = shipped ? AcousticModel::load(kModel) : AlignerTrainer::train(train, benchOptions(), feedback);
+        if (speakerAdapt)
+            model = SpeakerAdaptation::adapt(model, own);
         for (const MfaFile &f : files) {
             const AlignmentResult r = alignUtterance(model, f.utterance.features, f.utterance.words,
                                                      f.utterance.pronunciations, f.utterance.duration, adapt);
@@ -367,8 +371,8 @@ void BM_EvalMfaPhones(benchmark::State &state)
     state.counters["words_other_pronunciation"] = skipped;
     std::printf("mfa-tests (%zu files, %s): %.1f%% of %d phone boundaries within 25 ms of MFA "
                 "(%d words compared, %d with another pronunciation)\n",
-                files.size(), adapt ? "shipped GRID s1 model adapted to each" : shipped ? "shipped GRID s1 model" : withGrid ? "trained on them + GRID s1" : "trained on them", 100.0 * within / std::max(total, 1), total, compared, skipped);
+                files.size(), speakerAdapt ? "shipped GRID s1 model adapted to all three" : adapt ? "shipped GRID s1 model adapted to each" : shipped ? "shipped GRID s1 model" : withGrid ? "trained on them + GRID s1" : "trained on them", 100.0 * within / std::max(total, 1), total, compared, skipped);
 }
-BENCHMARK(BM_EvalMfaPhones)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK(BM_EvalMfaPhones)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 } // namespace

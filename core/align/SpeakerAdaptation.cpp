@@ -152,29 +152,45 @@ AcousticModel SpeakerAdaptation::adapt(const AcousticModel &model, const std::ve
                                        const Eigen::MatrixXf &features, const AdaptationOptions &options,
                                        Feedback *feedback, AdaptationReport *report)
 {
-    const UtteranceGraph graph(pronunciations, options.graph);
+    return adapt(model, {TrainingUtterance{{}, features, pronunciations}}, options, feedback, report);
+}
+
+AcousticModel SpeakerAdaptation::adapt(const AcousticModel &model, const std::vector<TrainingUtterance> &utterances,
+                                       const AdaptationOptions &options, Feedback *feedback, AdaptationReport *report)
+{
+    std::vector<UtteranceGraph> graphs;
+    long long frames = 0;
+    for (const TrainingUtterance &u : utterances) {
+        graphs.emplace_back(u.pronunciations, options.graph);
+        frames += u.features.rows();
+    }
+    // Statistics of all the utterances under `current`; the log-likelihood per frame.
+    auto accumulate = [&](const AcousticModel &current, Accumulators &statistics) {
+        double total = 0;
+        for (size_t i = 0; i < utterances.size(); ++i) {
+            double logP = accumulateUtterance(current, graphs[i], utterances[i].features, options.beam, statistics);
+            if (!(logP > -INFINITY))
+                logP = accumulateUtterance(current, graphs[i], utterances[i].features, INFINITY, statistics);
+            if (!(logP > -INFINITY))
+                throw Error("speaker adaptation: the transcript does not fit the audio"
+                            + (utterances[i].id.empty() ? std::string() : " of " + utterances[i].id));
+            total += logP;
+        }
+        return total / double(std::max(frames, 1LL));
+    };
     AcousticModel current = model;
     for (int pass = 0; pass < options.iterations; ++pass) {
-        if (feedback) {
-            feedback->throwIfCanceled();
-            feedback->setStatus("speaker adaptation, pass " + std::to_string(pass + 1));
-        }
-        Accumulators statistics(current);
-        double logP = accumulateUtterance(current, graph, features, options.beam, statistics);
-        if (!(logP > -INFINITY))
-            logP = accumulateUtterance(current, graph, features, INFINITY, statistics);
-        if (!(logP > -INFINITY))
-            throw Error("speaker adaptation: the transcript does not fit the audio");
-        if (report)
-            report->logLikelihoodPerFrame.push_back(logP / double(features.rows()));
-        current = transform(model, statistics, options);
         if (feedback)
-            feedback->setProgress(double(pass + 1) / options.iterations);
+            feedback->throwIfCanceled();
+        Accumulators statistics(current);
+        const double perFrame = accumulate(current, statistics);
+        if (report)
+            report->logLikelihoodPerFrame.push_back(perFrame);
+        current = transform(model, statistics, options);
     }
     if (report && options.iterations > 0) {
         Accumulators statistics(current);
-        const double logP = accumulateUtterance(current, graph, features, options.beam, statistics);
-        report->logLikelihoodPerFrame.push_back(logP / double(features.rows()));
+        report->logLikelihoodPerFrame.push_back(accumulate(current, statistics));
     }
     return current;
 }

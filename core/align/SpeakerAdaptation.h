@@ -13,6 +13,7 @@
 //      mu = (tau mu' + sum_t gamma_t o_t) / (tau + sum_t gamma_t);
 // repeated `iterations` times, each pass collecting statistics under the last adapted model.
 #include "align/AcousticModel.h"
+#include "align/AlignerTrainer.h"
 #include "align/PronunciationDictionary.h"
 #include "align/UtteranceGraph.h"
 
@@ -45,10 +46,16 @@ class SpeakerAdaptation
 {
 public:
     // The model adapted to one utterance (`features` as the model computes them, the words'
-    // pronunciations as for ForcedAligner). Throws lipsync::Error if the transcript cannot fit.
+    // pronunciations as for ForcedAligner). Throws lipsync::Error if the transcript cannot fit;
+    // `feedback` (optional) is checked for cancel before every pass.
     static AcousticModel adapt(const AcousticModel &model, const std::vector<std::vector<Pronunciation>> &pronunciations,
                                const Eigen::MatrixXf &features, const AdaptationOptions &options = {},
                                Feedback *feedback = nullptr, AdaptationReport *report = nullptr);
+    // The model adapted to a speaker from several of their recordings at once (more data: each
+    // regression class is more likely to get its own transform, MAP moves more components).
+    static AcousticModel adapt(const AcousticModel &model, const std::vector<TrainingUtterance> &utterances,
+                               const AdaptationOptions &options = {}, Feedback *feedback = nullptr,
+                               AdaptationReport *report = nullptr);
 
     // One adaptation step from statistics collected under any model: MLLR of `speakerIndependent`'s
     // means, then MAP towards the data. Variances, weights and transitions are kept.
