@@ -47,14 +47,7 @@ int runAlign(const QStringList &args)
         return cli::fail(QStringLiteral("usage: lipsync align MEDIA --transcript FILE [--model MODEL] "
                                         "[--project DIR] [--pronunciations DICT] [--adapt] --out FILE.TextGrid [--json]"), 2);
     const QString media = a.positional().front();
-    QString modelPath = a.value("model");
-    if (modelPath.isEmpty()) {
-        modelPath = cli::defaultAlignerModel();
-        if (modelPath.isEmpty())
-            return cli::fail(QStringLiteral("align: no --model given and the shipped model "
-                                            "resources/aligner/grid-s1.aligner was not found "
-                                            "(set LIPSYNC_ALIGNER_MODEL)"));
-    }
+    const QString modelPath = cli::alignerModelOrDefault(a.value("model"), QStringLiteral("align"));
     QElapsedTimer timer;
     timer.start();
     const AcousticModel model = AcousticModel::load(modelPath.toStdString());

@@ -34,14 +34,7 @@ int runAlignerAdapt(const QStringList &args)
     for (const char *folder : {"media", "transcripts"})
         if (!QDir(a.value(folder)).exists())
             return cli::fail(QStringLiteral("%1: no such folder").arg(a.value(folder)));
-    QString modelPath = a.value("model");
-    if (modelPath.isEmpty()) {
-        modelPath = cli::defaultAlignerModel();
-        if (modelPath.isEmpty())
-            return cli::fail(QStringLiteral("aligner adapt: no --model given and the shipped model "
-                                            "resources/aligner/grid-s1.aligner was not found "
-                                            "(set LIPSYNC_ALIGNER_MODEL)"));
-    }
+    const QString modelPath = cli::alignerModelOrDefault(a.value("model"), QStringLiteral("aligner adapt"));
     QElapsedTimer timer;
     timer.start();
     const AcousticModel model = AcousticModel::load(modelPath.toStdString());

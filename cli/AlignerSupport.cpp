@@ -22,6 +22,17 @@ QString defaultAlignerModel()
         shippedAlignerModelPath(qEnvironmentVariable("LIPSYNC_SOURCE_DIR").toStdString()));
 }
 
+QString alignerModelOrDefault(const QString &given, const QString &command)
+{
+    if (!given.isEmpty())
+        return given;
+    const QString path = defaultAlignerModel();
+    if (path.isEmpty())
+        throw Error(command.toStdString() + ": no --model given and the shipped model "
+                    "resources/aligner/grid-s1.aligner was not found (set LIPSYNC_ALIGNER_MODEL)");
+    return path;
+}
+
 std::unique_ptr<Lexicon> makeLexicon(const QString &overridesPath,
                                      const std::map<std::string, std::string> &projectPronunciations)
 {

@@ -18,6 +18,9 @@ namespace lipsync::cli {
 // finds <source>/resources/...), then $LIPSYNC_SOURCE_DIR/resources/aligner/grid-s1.aligner,
 // then <prefix>/share/lipsync/aligner/grid-s1.aligner. Empty if none exists.
 QString defaultAlignerModel();
+// The model a command uses: `given` (its --model) if not empty, else defaultAlignerModel().
+// Throws lipsync::Error naming `command` when there is none.
+QString alignerModelOrDefault(const QString &given, const QString &command);
 
 // CMU dictionary plus overrides: a project's pronunciations (Project::pronunciations), then those
 // read from `overridesPath` (CMU format, "word PH ON EMES"; may be empty), which win. Throws

