@@ -163,6 +163,9 @@ AcousticModel SpeakerAdaptation::adapt(const AcousticModel &model, const std::ve
     for (const TrainingUtterance &u : utterances) {
         graphs.emplace_back(u.pronunciations, options.graph);
         frames += u.features.rows();
+        if (double(u.features.rows()) * double(graphs.back().size()) > kMaxForwardCells)
+            throw Error("speaker adaptation: the recording" + (u.id.empty() ? std::string() : " " + u.id)
+                        + " is too long to adapt to in one piece (split it into shorter utterances)");
     }
     // Statistics of all the utterances under `current`; the log-likelihood per frame.
     auto accumulate = [&](const AcousticModel &current, Accumulators &statistics) {

@@ -5,6 +5,7 @@
 //    forced aligner", with the Montreal Forced Aligner's word boundaries): adapting the shipped
 //    GRID s1 model raises the utterance's log-likelihood pass by pass and moves the
 //    "montreal"|"forced" boundary towards MFA's.
+//  - A transcript that cannot fit, or a recording too long for one pass, is a clear error.
 #include "align/AlignerUtterance.h"
 #include "align/BaumWelch.h"
 #include "align/ForcedAligner.h"
@@ -117,12 +118,21 @@ private slots:
         QCOMPARE(after.words.intervals.size(), before.words.intervals.size());
     }
 
-    void transcriptThatDoesNotFitIsAnError()
+    void transcriptThatDoesNotFitOrTooLongIsAnError()
     {
         const AcousticModel model = AcousticModel::load(kShippedModel);
         const Eigen::MatrixXf features = Eigen::MatrixXf::Zero(5, model.dimension());
         std::vector<std::vector<Pronunciation>> words{{PronunciationDictionary::parse("M AA N T R IY AO L")}};
         QVERIFY_THROWS_EXCEPTION(Error, SpeakerAdaptation::adapt(model, words, features));
+        // Too long for one forward-backward pass: said so, before any work.
+        const Eigen::MatrixXf longFeatures = Eigen::MatrixXf::Zero(110000, model.dimension());
+        const std::vector<std::vector<Pronunciation>> many(300, {PronunciationDictionary::parse("AA")});
+        try {
+            SpeakerAdaptation::adapt(model, many, longFeatures);
+            QFAIL("no error for a recording too long to adapt to");
+        } catch (const Error &e) {
+            QVERIFY2(std::string(e.what()).find("too long") != std::string::npos, e.what());
+        }
     }
 };
 
