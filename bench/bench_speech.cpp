@@ -1,22 +1,26 @@
 // Speech benchmarks and the aligner's accuracy evaluation (issue 4 targets). They read
 // ../shared/data when present and skip otherwise.
 //   BM_Mfcc                 MFCC_0_D_A of 60 s of audio (real-time factor counter "rtf")
-//   BM_MfccAndAlign         MFCC + Viterbi alignment of the 10 GRID demo clips (x8) with the
+//   BM_MfccAndAlign/A       MFCC + Viterbi alignment of the 10 GRID demo clips (x8) with the
 //                           shipped model on all cores, decoding excluded; "rtf" = wall seconds
-//                           per second of audio
+//                           per second of audio; A = 1: with speaker adaptation (align --adapt)
 //   BM_TrainGrid20min       training on all 400 GRID s1 clips (20 min of audio), features given
-//   BM_EvalGridWords        train on 320 GRID s1 clips, align the other 80: share of word
+//   BM_EvalGridWords/A      train on 320 GRID s1 clips, align the other 80: share of word
 //                           boundaries within 40 ms of GRID's .align ("inner": without the
-//                           boundaries between the leading/trailing silence and the first/last word)
+//                           boundaries between the leading/trailing silence and the first/last word);
+//                           A = 1: each clip aligned after speaker adaptation to itself
 //   BM_EvalMfaPhones/N      phone boundaries within 25 ms of the Montreal Forced Aligner's on
 //                           ../shared/data/speech/mfa-tests (the 3 files with an ARPAbet phone
 //                           tier), for words whose phones agree with MFA's; N = 0: model trained on
-//                           those recordings, 1: on them plus GRID s1, 2: the shipped GRID s1 model
+//                           those recordings, 1: on them plus GRID s1, 2: the shipped GRID s1 model,
+//                           3: the shipped model adapted to each recording (SpeakerAdaptation),
+//                           4: adapted to the three recordings together (one speaker; aligner adapt)
 // LIPSYNC_BENCH_NORMALIZE=none|mean|cmvn chooses the per-utterance feature normalisation of the
 // models trained here (default: TrainerOptions' own).
 #include "align/AlignerTrainer.h"
 #include "align/AlignerUtterance.h"
 #include "align/ForcedAligner.h"
+#include "align/SpeakerAdaptation.h"
 #include "util/PhoneSet.h"
 #include "io/AudioDecoder.h"
 #include "io/TextGrid.h"
@@ -122,6 +126,17 @@ std::vector<Interval> nonSilence(const Tier &tier)
     return out;
 }
 
+// Alignment with `model`, or with `model` adapted to the utterance first (align --adapt).
+AlignmentResult alignUtterance(const AcousticModel &model, const Eigen::MatrixXf &features,
+                               const std::vector<std::string> &words,
+                               const std::vector<std::vector<Pronunciation>> &pronunciations, double duration, bool adapt)
+{
+    if (!adapt)
+        return ForcedAligner(model).align(features, words, pronunciations, duration);
+    const AcousticModel adapted = SpeakerAdaptation::adapt(model, pronunciations, features);
+    return ForcedAligner(adapted).align(features, words, pronunciations, duration);
+}
+
 void BM_Mfcc(benchmark::State &state)
 {
     std::vector<float> samples(16000 * 60);
@@ -165,18 +180,17 @@ void BM_MfccAndAlign(benchmark::State &state)
     double audioSeconds = 0;
     for (int i : work)
         audioSeconds += clips[size_t(i)].duration;
-    const ForcedAligner aligner(model);
     for (auto _ : state) {
         QtConcurrent::blockingMap(work, [&](int i) {
             const Clip &c = clips[size_t(i)];
             const Eigen::MatrixXf f = model.features(c.samples);
-            benchmark::DoNotOptimize(aligner.align(f, c.words, c.pronunciations, c.duration));
+            benchmark::DoNotOptimize(alignUtterance(model, f, c.words, c.pronunciations, c.duration, state.range(0) == 1));
         });
     }
     state.counters["rtf"] = benchmark::Counter(state.iterations() * audioSeconds, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
     state.counters["audio_s"] = audioSeconds;
 }
-BENCHMARK(BM_MfccAndAlign)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_MfccAndAlign)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_TrainGrid20min(benchmark::State &state)
 {
@@ -214,10 +228,9 @@ void BM_EvalGridWords(benchmark::State &state)
     for (auto _ : state) {
         Feedback feedback;
         const AcousticModel model = AlignerTrainer::train(train, benchOptions(), feedback);
-        const ForcedAligner aligner(model);
         for (size_t k = 320; k < clips.size(); ++k) {
             const PreparedUtterance &u = clips[k].utterance;
-            const AlignmentResult r = aligner.align(u.features, u.words, u.pronunciations, u.duration);
+            const AlignmentResult r = alignUtterance(model, u.features, u.words, u.pronunciations, u.duration, state.range(0) == 1);
             const std::vector<Interval> ref = nonSilence(clips[k].reference), hyp = nonSilence(r.words);
             if (ref.size() != hyp.size()) {
                 ++mismatched;
@@ -241,11 +254,11 @@ void BM_EvalGridWords(benchmark::State &state)
     state.counters["all_within_40ms_pct"] = 100.0 * within / std::max(total, 1);
     state.counters["boundaries"] = inner;
     state.counters["mismatched"] = mismatched;
-    std::printf("GRID s1 (train 320, align 80): %.1f%% of %d inner word boundaries within 40 ms "
-                "(%.1f%% of %d with the silence edges)\n",
+    std::printf("GRID s1 (train 320, align 80%s): %.1f%% of %d inner word boundaries within 40 ms "
+                "(%.1f%% of %d with the silence edges)\n", state.range(0) == 1 ? ", adapted" : "",
                 100.0 * innerWithin / std::max(inner, 1), inner, 100.0 * within / std::max(total, 1), total);
 }
-BENCHMARK(BM_EvalGridWords)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK(BM_EvalGridWords)->Arg(0)->Arg(1)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 struct MfaFile
 {
@@ -332,7 +345,9 @@ void BM_EvalMfaPhones(benchmark::State &state)
         own.push_back({f.utterance.id, f.utterance.features, f.utterance.pronunciations});
     // 0: trained on the mfa-tests recordings; 1: on them plus GRID s1; 2: the shipped GRID model.
     const bool withGrid = state.range(0) == 1;
-    const bool shipped = state.range(0) == 2;
+    const bool adapt = state.range(0) == 3;
+    const bool speakerAdapt = state.range(0) == 4;
+    const bool shipped = state.range(0) >= 2;
     std::vector<TrainingUtterance> train = own;
     if (withGrid && exists(kGrid)) {
         const auto grid = trainingSet(gridClips(), 0, 400);
@@ -341,11 +356,12 @@ void BM_EvalMfaPhones(benchmark::State &state)
     int within = 0, total = 0, compared = 0, skipped = 0;
     for (auto _ : state) {
         Feedback feedback;
-        const AcousticModel model = shipped ? AcousticModel::load(kModel) : AlignerTrainer::train(train, benchOptions(), feedback);
-        const ForcedAligner aligner(model);
+        AcousticModel model = shipped ? AcousticModel::load(kModel) : AlignerTrainer::train(train, benchOptions(), feedback);
+        if (speakerAdapt)
+            model = SpeakerAdaptation::adapt(model, own);
         for (const MfaFile &f : files) {
-            const AlignmentResult r = aligner.align(f.utterance.features, f.utterance.words, f.utterance.pronunciations,
-                                                    f.utterance.duration);
+            const AlignmentResult r = alignUtterance(model, f.utterance.features, f.utterance.words,
+                                                     f.utterance.pronunciations, f.utterance.duration, adapt);
             comparePhones(f, r, within, total, compared, skipped);
         }
     }
@@ -355,8 +371,8 @@ void BM_EvalMfaPhones(benchmark::State &state)
     state.counters["words_other_pronunciation"] = skipped;
     std::printf("mfa-tests (%zu files, %s): %.1f%% of %d phone boundaries within 25 ms of MFA "
                 "(%d words compared, %d with another pronunciation)\n",
-                files.size(), shipped ? "shipped GRID s1 model" : withGrid ? "trained on them + GRID s1" : "trained on them", 100.0 * within / std::max(total, 1), total, compared, skipped);
+                files.size(), speakerAdapt ? "shipped GRID s1 model adapted to all three" : adapt ? "shipped GRID s1 model adapted to each" : shipped ? "shipped GRID s1 model" : withGrid ? "trained on them + GRID s1" : "trained on them", 100.0 * within / std::max(total, 1), total, compared, skipped);
 }
-BENCHMARK(BM_EvalMfaPhones)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK(BM_EvalMfaPhones)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 } // namespace

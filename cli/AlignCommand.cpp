@@ -1,13 +1,16 @@
 // lipsync align MEDIA --transcript FILE [--model MODEL] [--project DIR] [--pronunciations DICT]
-//               --out FILE.TextGrid [--json]
+//               [--adapt] --out FILE.TextGrid [--json]
 // Forced alignment of one recording: writes a TextGrid with tiers "words" and "phones". Words
 // are pronounced from the project's pronunciations (--project), a CMU-format file (--pronunciations,
 // which wins), the CMU dictionary, then espeak-ng; --json lists the words espeak-ng guessed.
+// --adapt first adapts the model to the recording's speaker (SpeakerAdaptation: MLLR + MAP of the
+// means on the recording's own alignment, 3 passes), for voices unlike the model's training data.
 #include "AlignerSupport.h"
 #include "Command.h"
 
 #include "align/AlignerUtterance.h"
 #include "align/ForcedAligner.h"
+#include "align/SpeakerAdaptation.h"
 #include "align/FrameLabels.h"
 #include "io/MediaInfo.h"
 #include "io/TextGrid.h"
@@ -36,22 +39,15 @@ QJsonArray tierJson(const Tier &tier)
 
 int runAlign(const QStringList &args)
 {
-    const cli::Arguments a(args);
-    const QStringList unknown = a.unknown({"transcript", "model", "out", "json", "pronunciations", "project"});
+    const cli::Arguments a(args, cli::Arguments::defaultBooleanFlags() << QStringLiteral("adapt"));
+    const QStringList unknown = a.unknown({"transcript", "model", "out", "json", "pronunciations", "project", "adapt"});
     if (!unknown.isEmpty())
         return cli::fail(QStringLiteral("align: unknown option %1").arg(unknown.join(' ')), 2);
     if (a.positional().size() != 1 || a.value("transcript").isEmpty() || a.value("out").isEmpty())
         return cli::fail(QStringLiteral("usage: lipsync align MEDIA --transcript FILE [--model MODEL] "
-                                        "[--project DIR] [--pronunciations DICT] --out FILE.TextGrid [--json]"), 2);
+                                        "[--project DIR] [--pronunciations DICT] [--adapt] --out FILE.TextGrid [--json]"), 2);
     const QString media = a.positional().front();
-    QString modelPath = a.value("model");
-    if (modelPath.isEmpty()) {
-        modelPath = cli::defaultAlignerModel();
-        if (modelPath.isEmpty())
-            return cli::fail(QStringLiteral("align: no --model given and the shipped model "
-                                            "resources/aligner/grid-s1.aligner was not found "
-                                            "(set LIPSYNC_ALIGNER_MODEL)"));
-    }
+    const QString modelPath = cli::alignerModelOrDefault(a.value("model"), QStringLiteral("align"));
     QElapsedTimer timer;
     timer.start();
     const AcousticModel model = AcousticModel::load(modelPath.toStdString());
@@ -63,8 +59,14 @@ int runAlign(const QStringList &args)
     const PreparedUtterance u = prepareUtterance(QFileInfo(media).completeBaseName().toStdString(),
                                                  media.toStdString(), transcript.words, model, *lexicon);
     AlignmentResult result;
+    AdaptationReport adaptation;
     try {
-        result = ForcedAligner(model).align(u.features, u.words, u.pronunciations, u.duration);
+        if (a.flag("adapt")) {
+            const AcousticModel adapted = SpeakerAdaptation::adapt(model, u.pronunciations, u.features, {}, nullptr, &adaptation);
+            result = ForcedAligner(adapted).align(u.features, u.words, u.pronunciations, u.duration);
+        } else {
+            result = ForcedAligner(model).align(u.features, u.words, u.pronunciations, u.duration);
+        }
     } catch (const Error &e) {
         throw Error(e.reason(), media.toStdString());
     }
@@ -81,6 +83,9 @@ int runAlign(const QStringList &args)
                                                             model.featureOptions()))
                 frameLabels.append(QString::fromStdString(label));
         }
+        QJsonArray adaptationLogLikelihoods;
+        for (double l : adaptation.logLikelihoodPerFrame)
+            adaptationLogLikelihoods.append(l);
         QJsonArray guessed;
         for (const auto &[word, phones] : lexicon->guessed(u.words))
             guessed.append(QJsonObject{{QStringLiteral("word"), QString::fromStdString(word)},
@@ -88,6 +93,7 @@ int runAlign(const QStringList &args)
                                         QString::fromStdString(PronunciationDictionary::toString(phones))}});
         cli::printJson(QJsonObject{
             {QStringLiteral("guessed"), guessed},
+            {QStringLiteral("adaptationLogLikelihoodPerFrame"), adaptationLogLikelihoods},
             {QStringLiteral("frameRate"), frameRate},
             {QStringLiteral("frameLabels"), frameLabels},
             {QStringLiteral("media"), media},

@@ -1,8 +1,10 @@
 #pragma once
 // Shared by `lipsync align` and `lipsync aligner train`: the shipped model's location and the
 // pronunciation lexicon with optional project overrides.
+#include "align/AlignerTrainer.h"
 #include "align/Lexicon.h"
 
+#include <QJsonArray>
 #include <QString>
 
 #include <map>
@@ -16,6 +18,9 @@ namespace lipsync::cli {
 // finds <source>/resources/...), then $LIPSYNC_SOURCE_DIR/resources/aligner/grid-s1.aligner,
 // then <prefix>/share/lipsync/aligner/grid-s1.aligner. Empty if none exists.
 QString defaultAlignerModel();
+// The model a command uses: `given` (its --model) if not empty, else defaultAlignerModel().
+// Throws lipsync::Error naming `command` when there is none.
+QString alignerModelOrDefault(const QString &given, const QString &command);
 
 // CMU dictionary plus overrides: a project's pronunciations (Project::pronunciations), then those
 // read from `overridesPath` (CMU format, "word PH ON EMES"; may be empty), which win. Throws
@@ -25,5 +30,15 @@ std::unique_ptr<Lexicon> makeLexicon(const QString &overridesPath,
 
 // Media file extensions the aligner accepts in a folder.
 QStringList alignerMediaFilters();
+
+// The transcribed recordings of a folder (`aligner train`, `aligner adapt`): every media file in
+// `mediaDir` with a transcript of the same name (.align, .TextGrid, .lab or .txt) in
+// `transcriptDir`, decoded and turned into features as `model` computes them, in parallel.
+// Recordings that cannot be used (no transcript, unknown words, undecodable or silent audio) go
+// to `skipped` ({id, reason}), also printed to stderr unless `quiet`. Throws lipsync::Error naming
+// the folder when it has no media files.
+std::vector<TrainingUtterance> loadTranscribedFolder(const QString &mediaDir, const QString &transcriptDir,
+                                                     const AcousticModel &model, const Lexicon &lexicon,
+                                                     bool quiet, QJsonArray &skipped);
 
 } // namespace lipsync::cli

@@ -16,31 +16,12 @@
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QJsonArray>
-#include <QtConcurrent/QtConcurrentMap>
 
 #include <cstdio>
-#include <optional>
 
 using namespace lipsync;
 
 namespace {
-
-QString findTranscript(const QDir &dir, const QString &stem)
-{
-    for (const std::string &ext : transcriptExtensions())
-        for (const QString &candidate : dir.entryList({stem + QString::fromStdString(ext)}, QDir::Files))
-            return dir.filePath(candidate); // entryList matches case-insensitively on the pattern
-    return {};
-}
-
-struct Job
-{
-    QString id;
-    QString media;
-    QString transcript;
-    std::optional<PreparedUtterance> prepared;
-    QString error;
-};
 
 int runAlignerTrain(const QStringList &args)
 {
@@ -87,40 +68,9 @@ int runAlignerTrain(const QStringList &args)
     timer.start();
     const auto lexicon = cli::makeLexicon(a.value("pronunciations"));
     const AcousticModel features = featureModel(options);
-    std::vector<Job> jobs;
-    for (const QString &name : mediaDir.entryList(cli::alignerMediaFilters(), QDir::Files, QDir::Name)) {
-        Job job;
-        job.id = QFileInfo(name).completeBaseName();
-        job.media = mediaDir.filePath(name);
-        job.transcript = findTranscript(transcriptDir, job.id);
-        if (job.transcript.isEmpty())
-            job.error = QStringLiteral("no transcript %1.{align,TextGrid,lab,txt} in %2").arg(job.id, transcriptDir.path());
-        jobs.push_back(std::move(job));
-    }
-    if (jobs.empty())
-        return cli::fail(QStringLiteral("%1: no media files").arg(mediaDir.path()));
-    // Decoding and features in parallel; each failure stays with its recording.
-    QtConcurrent::blockingMap(jobs, [&](Job &job) {
-        if (!job.error.isEmpty())
-            return;
-        try {
-            const Transcript t = readTranscript(job.transcript.toStdString());
-            job.prepared = prepareUtterance(job.id.toStdString(), job.media.toStdString(), t.words, features, *lexicon);
-        } catch (const std::exception &e) {
-            job.error = QString::fromUtf8(e.what());
-        }
-    });
-    std::vector<TrainingUtterance> utterances;
     QJsonArray skipped;
-    for (Job &job : jobs) {
-        if (job.prepared) {
-            utterances.push_back({job.prepared->id, std::move(job.prepared->features), std::move(job.prepared->pronunciations)});
-        } else {
-            skipped.append(QJsonObject{{QStringLiteral("id"), job.id}, {QStringLiteral("reason"), job.error}});
-            if (!json)
-                std::fprintf(stderr, "lipsync: skipped %s: %s\n", qPrintable(job.id), qPrintable(job.error));
-        }
-    }
+    std::vector<TrainingUtterance> utterances =
+        cli::loadTranscribedFolder(mediaDir.path(), transcriptDir.path(), features, *lexicon, json, skipped);
     if (utterances.empty())
         return cli::fail(QStringLiteral("aligner train: no usable recordings in %1").arg(mediaDir.path()));
     const double prepareSeconds = timer.elapsed() / 1000.0;

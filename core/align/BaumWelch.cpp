@@ -39,8 +39,7 @@ double accumulateUtterance(const AcousticModel &model, const UtteranceGraph &gra
 {
     const int T = int(features.rows());
     const int S = graph.size();
-    // Forward probabilities take T x S doubles; longer utterances are not used for training.
-    if (T == 0 || S == 0 || T < graph.minimumFrames() || double(T) * double(S) > 1.5e8)
+    if (T == 0 || S == 0 || T < graph.minimumFrames() || double(T) * double(S) > kMaxForwardCells)
         return -INFINITY;
     const auto &states = graph.states();
     EmissionCache emission(model, features);

@@ -32,6 +32,9 @@ struct Accumulators
     void add(const Accumulators &other);
 };
 
+// Forward probabilities take T x S doubles: utterances with more frames x graph states are not used.
+constexpr double kMaxForwardCells = 1.5e8;
+
 // Adds the expected statistics of one utterance. Returns its log-likelihood log p(O | graph),
 // or -inf (nothing added) if no path fits (fewer frames than phones, or everything pruned).
 double accumulateUtterance(const AcousticModel &model, const UtteranceGraph &graph,

@@ -5,6 +5,7 @@
 #include "align/AlignerUtterance.h"
 #include "align/ForcedAligner.h"
 #include "align/Realignment.h"
+#include "align/SpeakerAdaptation.h"
 #include "tasks/TaskRunner.h"
 #include "util/Error.h"
 
@@ -17,6 +18,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 namespace lipsync::studio {
 
@@ -35,7 +37,21 @@ std::shared_ptr<const AcousticModel> loadModel(const QString &path)
     return slot;
 }
 
-AlignOutcome alignOne(const AlignJob &job, const AcousticModel &model)
+// `model`, or when the job asks for it `model` adapted to the recording (kept in `adapted`).
+const AcousticModel &modelFor(const AlignJob &job, const AcousticModel &model, const PreparedUtterance &u,
+                              std::optional<AcousticModel> &adapted, Feedback &feedback)
+{
+    if (!job.adaptToSpeaker)
+        return model;
+    try {
+        adapted = SpeakerAdaptation::adapt(model, u.pronunciations, u.features, {}, &feedback);
+    } catch (const Error &e) {
+        throw Error(e.reason(), job.mediaPath.toStdString());
+    }
+    return *adapted;
+}
+
+AlignOutcome alignOne(const AlignJob &job, const AcousticModel &model, Feedback &feedback)
 {
     AlignOutcome outcome;
     outcome.row = job.row;
@@ -43,7 +59,7 @@ AlignOutcome alignOne(const AlignJob &job, const AcousticModel &model)
     outcome.mediaPath = job.mediaPath;
     const std::string id = job.sequenceId.toStdString();
     const std::string path = job.mediaPath.toStdString();
-    const ForcedAligner aligner(model);
+    std::optional<AcousticModel> adapted;
     const Lexicon lexicon(&PronunciationDictionary::cmu(), Lexicon::parseOverrides(job.pronunciations));
     auto noteGuesses = [&](const std::vector<std::string> &words) {
         for (const auto &[word, phones] : lexicon.guessed(words))
@@ -55,6 +71,7 @@ AlignOutcome alignOne(const AlignJob &job, const AcousticModel &model)
             throw Error("the sequence has no transcript to align", path);
         noteGuesses(words);
         const PreparedUtterance u = prepareUtterance(id, path, words, model, lexicon);
+        const ForcedAligner aligner(modelFor(job, model, u, adapted, feedback));
         AlignmentResult r;
         try {
             r = aligner.align(u.features, u.words, u.pronunciations, u.duration);
@@ -68,6 +85,7 @@ AlignOutcome alignOne(const AlignJob &job, const AcousticModel &model)
         const Realignment realignment(job.current.words, job.current.phones, job.stretches);
         noteGuesses(realignment.words());
         const PreparedUtterance u = prepareUtterance(id, path, realignment.words(), model, lexicon);
+        const ForcedAligner aligner(modelFor(job, model, u, adapted, feedback));
         AlignmentResult r;
         try {
             r = realignment.run(aligner, u.features, u.pronunciations, u.duration);
@@ -110,7 +128,7 @@ Task *startAlignment(TaskRunner &runner, const QString &title, std::vector<Align
             f.setStatus(jobs[i].sequenceId.toStdString());
             f.setProgress(double(i) / double(jobs.size()));
             try {
-                outcomes->push_back(alignOne(jobs[i], *model));
+                outcomes->push_back(alignOne(jobs[i], *model, f));
             } catch (const Error &e) {
                 AlignOutcome failed;
                 failed.row = jobs[i].row;

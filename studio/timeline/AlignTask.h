@@ -31,6 +31,8 @@ struct AlignJob
     TierPair current;
     // The project's pronunciation overrides (Project::pronunciations).
     std::map<std::string, std::string> pronunciations;
+    // Adapt the model to the recording's speaker first (SpeakerAdaptation, `align --adapt`).
+    bool adaptToSpeaker = false;
 };
 
 struct AlignOutcome

