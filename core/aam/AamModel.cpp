@@ -110,6 +110,25 @@ private:
     size_t m_pos = 0;
 };
 
+// A cheap necessary condition for the rasterised frame to have `pixels` pixels, checked before
+// prepare() rasterises it: a convex region of area A and perimeter P holds more than A - P lattice
+// points (a unit cell it covers whose centre lies outside touches its boundary, so such cells cover
+// at most P/sqrt(2) of A), and the frame's pixels include those of every triangle. A damaged scale or vertex that blows a
+// triangle up is rejected here instead of rasterising a frame of up to 1024 x 1024 pixels first.
+bool trianglesFitPixelCount(const Eigen::VectorXd &reference, const std::vector<Triangle> &triangles,
+                            Eigen::Index pixels)
+{
+    for (const Triangle &t : triangles) {
+        const Eigen::Vector2d a = reference.segment<2>(2 * t[0]), b = reference.segment<2>(2 * t[1]),
+                              c = reference.segment<2>(2 * t[2]);
+        const double area = 0.5 * std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+        const double perimeter = (b - a).norm() + (c - b).norm() + (a - c).norm();
+        if (area - perimeter > double(pixels))
+            return false;
+    }
+    return true;
+}
+
 } // namespace
 
 Similarity AamModel::referenceTransform(int level) const
@@ -279,6 +298,8 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
         if (bounded) {
             const Eigen::VectorXd reference = m.referenceShape(l);
             bounded = reference.allFinite() && reference.maxCoeff() < kMaxReferenceFrame;
+            if (bounded && !trianglesFitPixelCount(reference, m.triangles, m.levels[size_t(l)].mean.size()))
+                throw Error("inconsistent AAM model (level texture size)", path);
         }
     }
     if (!bounded)
