@@ -18,6 +18,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <chrono>
+#include <cstring>
 #include <random>
 
 using namespace lipsync;
@@ -204,6 +205,40 @@ private slots:
             QVERIFY(m.warp(0).pixelCount() > 50);
             QCOMPARE(m.textureMean.size(), Eigen::Index(3 * m.warp(0).pixelCount()));
         }
+    }
+
+    void damagedSizesAreRejectedBeforeAllocatingOrRasterising()
+    {
+        // tests/data/fuzz/aam/tiny-no-identifier.aam (no content hash to stop the damage early):
+        // 23 points, 1 shape mode, 35 triangles, then the reference scale at byte 1204 and the
+        // colour texture's length at 1212.
+        const std::string original = readWholeFile(LIPSYNC_TEST_DATA "/fuzz/aam/tiny-no-identifier.aam");
+        double scale = 0;
+        int textureLength = 0;
+        std::memcpy(&scale, original.data() + 1204, sizeof scale);
+        std::memcpy(&textureLength, original.data() + 1212, sizeof textureLength);
+        QVERIFY(std::abs(scale - 23.29) < 0.01);
+        QCOMPARE(textureLength, 309);
+        const auto reason = [](const std::string &bytes) -> QString {
+            try {
+                AamModel::fromBytes(bytes, "t.aam");
+            } catch (const Error &e) {
+                return QString::fromStdString(e.reason());
+            }
+            return QStringLiteral("loaded");
+        };
+        QCOMPARE(reason(original), QStringLiteral("loaded"));
+        // A length claiming more doubles than the bytes left: rejected before the vector exists.
+        std::string longer = original;
+        const int tooMany = int((original.size() - 1216) / sizeof(double)) + 1;
+        std::memcpy(longer.data() + 1212, &tooMany, sizeof tooMany);
+        QVERIFY2(reason(longer).contains("more textureMean than the file holds"), qPrintable(reason(longer)));
+        // A reference frame 10x larger: its triangles hold far more than the 103 declared pixels,
+        // which the check before rasterising reports (after it, the message would be "texture size").
+        std::string bigger = original;
+        const double tenTimes = 10 * scale;
+        std::memcpy(bigger.data() + 1204, &tenTimes, sizeof tenTimes);
+        QCOMPARE(reason(bigger), QStringLiteral("inconsistent AAM model (level texture size)"));
     }
 
     void modelHasExpectedStructure()
