@@ -65,11 +65,13 @@ public:
         raw(&v, sizeof v);
         return v;
     }
-    int count(const char *what)
+    // A count of items of `itemBytes` each, checked against the bytes left before anything is
+    // allocated: a damaged count is rejected at once instead of allocating up to the file's size.
+    int count(const char *what, double itemBytes = 1)
     {
         const int v = i32();
-        if (v < 0 || size_t(v) > m_data.size())
-            throw Error("corrupt AAM file", m_path, what);
+        if (v < 0 || double(v) * itemBytes > double(remaining()))
+            throw Error("corrupt AAM file (more " + std::string(what) + " than the file holds)", m_path, what);
         return v;
     }
     double f64()
@@ -86,26 +88,46 @@ public:
     }
     Eigen::VectorXd vec(const char *what)
     {
-        Eigen::VectorXd v(count(what));
+        Eigen::VectorXd v(count(what, sizeof(double)));
         raw(v.data(), sizeof(double) * size_t(v.size()));
         return v;
     }
     Eigen::MatrixXd mat(const char *what)
     {
         const int r = count(what), c = count(what);
-        if (double(r) * double(c) * 8 > double(m_data.size()))
-            throw Error("corrupt AAM file", m_path, what);
+        if (double(r) * double(c) * sizeof(double) > double(remaining()))
+            throw Error("corrupt AAM file (more " + std::string(what) + " than the file holds)", m_path, what);
         Eigen::MatrixXd m(r, c);
         raw(m.data(), sizeof(double) * size_t(m.size()));
         return m;
     }
     bool atEnd() const { return m_pos == m_data.size(); }
+    size_t remaining() const { return m_data.size() - m_pos; }
 
 private:
     const std::string &m_data;
     const std::string &m_path;
     size_t m_pos = 0;
 };
+
+// A cheap necessary condition for the rasterised frame to have `pixels` pixels, checked before
+// prepare() rasterises it: a convex region of area A and perimeter P holds more than A - P lattice
+// points (a unit cell it covers whose centre lies outside touches its boundary, so such cells cover
+// at most P/sqrt(2) of A), and the frame's pixels include those of every triangle. A damaged scale or vertex that blows a
+// triangle up is rejected here instead of rasterising a frame of up to 1024 x 1024 pixels first.
+bool trianglesFitPixelCount(const Eigen::VectorXd &reference, const std::vector<Triangle> &triangles,
+                            Eigen::Index pixels)
+{
+    for (const Triangle &t : triangles) {
+        const Eigen::Vector2d a = reference.segment<2>(2 * t[0]), b = reference.segment<2>(2 * t[1]),
+                              c = reference.segment<2>(2 * t[2]);
+        const double area = 0.5 * std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+        const double perimeter = (b - a).norm() + (c - b).norm() + (a - c).norm();
+        if (area - perimeter > double(pixels))
+            return false;
+    }
+    return true;
+}
 
 } // namespace
 
@@ -222,7 +244,7 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
     m.meanShape = r.vec("meanShape");
     m.shapeBasis = r.mat("shapeBasis");
     m.shapeVariances = r.vec("shapeVariances");
-    const int nt = r.count("triangles");
+    const int nt = r.count("triangles", 3 * sizeof(int));
     const int np = m.pointCount();
     for (int i = 0; i < nt; ++i) {
         Triangle t{r.i32(), r.i32(), r.i32()};
@@ -240,7 +262,7 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
     m.shapeWeight = r.f64();
     m.combinedBasis = r.mat("combinedBasis");
     m.combinedVariances = r.vec("combinedVariances");
-    const int nl = r.count("levels");
+    const int nl = r.count("levels", 3 * sizeof(double)); // scale and three sizes at least
     for (int i = 0; i < nl; ++i) {
         AamTextureLevel l;
         l.scale = r.f64();
@@ -253,13 +275,18 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
     if (!r.atEnd())
         throw Error("trailing data after the AAM model", path);
     // Consistency: sizes must agree or fitting would read out of bounds.
-    const bool ok = np >= 3 && m.shapeBasis.rows() == m.meanShape.size()
+    bool ok = np >= 3 && m.shapeBasis.rows() == m.meanShape.size()
                     && m.shapeVariances.size() == m.shapeBasis.cols() && nt > 0 && nl > 0
                     && m.textureBasis.rows() == m.textureMean.size()
                     && m.textureVariances.size() == m.textureBasis.cols()
                     && m.combinedBasis.rows() == m.shapeModes() + m.textureModes()
                     && m.referenceScale > 0 && m.shapeWeight > 0
-                    && (m.detectorShape.size() == 0 || m.detectorShape.size() == m.meanShape.size());
+                    && (m.detectorShape.size() == 0 || m.detectorShape.size() == m.meanShape.size())
+                    && m.textureMean.size() == 3 * m.levels[0].mean.size();
+    for (int l = 0; ok && l < nl; ++l) {
+        const AamTextureLevel &level = m.levels[size_t(l)];
+        ok = level.basis.rows() == level.mean.size() && level.variances.size() == level.basis.cols();
+    }
     if (!ok)
         throw Error("inconsistent AAM model (sizes disagree)", path);
     // prepare() rasterises each level's reference frame from these numbers: non-finite or huge
@@ -271,6 +298,8 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
         if (bounded) {
             const Eigen::VectorXd reference = m.referenceShape(l);
             bounded = reference.allFinite() && reference.maxCoeff() < kMaxReferenceFrame;
+            if (bounded && !trianglesFitPixelCount(reference, m.triangles, m.levels[size_t(l)].mean.size()))
+                throw Error("inconsistent AAM model (level texture size)", path);
         }
     }
     if (!bounded)

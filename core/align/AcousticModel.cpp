@@ -171,13 +171,20 @@ AcousticModel AcousticModel::parse(const std::string &text, const std::string &p
     auto fail = [&](const std::string &what) -> Error {
         return Error(what, path, "line " + std::to_string(lineNumber));
     };
-    auto next = [&]() -> std::istringstream {
+    // One stream re-filled for every line: constructing a stream per line (its locale and
+    // facets) was most of the cost of parsing a small model. A line's stream is valid until the
+    // next call.
+    std::istringstream fields;
+    auto next = [&]() -> std::istringstream & {
         while (std::getline(in, line)) {
             ++lineNumber;
             if (!line.empty() && line.back() == '\r')
                 line.pop_back();
-            if (!line.empty() && line[0] != '#')
-                return std::istringstream(line);
+            if (!line.empty() && line[0] != '#') {
+                fields.clear();
+                fields.str(line);
+                return fields;
+            }
         }
         ++lineNumber;
         throw fail("unexpected end of file");
@@ -189,7 +196,7 @@ AcousticModel AcousticModel::parse(const std::string &text, const std::string &p
     };
     AcousticModel model;
     {
-        std::istringstream s = next();
+        std::istringstream &s = next();
         std::string magic;
         int version = 0;
         if (!(s >> magic >> version) || magic != "lipsync-aligner")
@@ -198,7 +205,7 @@ AcousticModel AcousticModel::parse(const std::string &text, const std::string &p
             throw fail("unsupported aligner model version " + std::to_string(version));
     }
     {
-        std::istringstream s = next();
+        std::istringstream &s = next();
         expectKey(s, "features");
         MfccOptions &f = model.m_features;
         double normalize = 0;
@@ -210,14 +217,14 @@ AcousticModel AcousticModel::parse(const std::string &text, const std::string &p
         model.m_normalization = CepstralNormalization(int(normalize));
     }
     {
-        std::istringstream s = next();
+        std::istringstream &s = next();
         expectKey(s, "dimension");
         if (!(s >> model.m_dimension) || model.m_dimension <= 0 || model.m_dimension > 1000)
             throw fail("bad dimension");
     }
     const int d = model.m_dimension;
     auto readVector = [&](const std::string &key, int n) {
-        std::istringstream s = next();
+        std::istringstream &s = next();
         expectKey(s, key);
         Eigen::VectorXf v(n);
         for (int k = 0; k < n; ++k)
@@ -230,14 +237,14 @@ AcousticModel AcousticModel::parse(const std::string &text, const std::string &p
     model.m_states.resize(size_t(states));
     model.m_selfLoop.assign(size_t(states), 0.6);
     for (int p = 0; p < PhoneSet::kCount; ++p) {
-        std::istringstream s = next();
+        std::istringstream &s = next();
         expectKey(s, "phone");
         std::string label;
         s >> label;
         if (label != PhoneSet::label(p))
             throw fail("expected phone " + PhoneSet::label(p) + ", found '" + label + "'");
         for (int st = 0; st < kStatesPerPhone; ++st) {
-            std::istringstream h = next();
+            std::istringstream &h = next();
             int position = -1, mixtures = 0;
             double selfLoop = 0;
             std::string k1, k2, k3;

@@ -18,6 +18,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <chrono>
+#include <cstring>
 #include <random>
 
 using namespace lipsync;
@@ -153,6 +154,91 @@ private slots:
         }
         // Vertices map through the warp onto the shape.
         QVERIFY((warp.warpVertices(warp.referenceShape(), shape) - shape).cwiseAbs().maxCoeff() < 1e-6);
+    }
+
+    void warpPixelsBelongToTheFirstTriangleHoldingThem()
+    {
+        // The warp rasterises each triangle over its bounding box only: every pixel of the frame
+        // must still get the first triangle (in list order) that holds it, pixels are numbered in
+        // raster order, and pixels outside every triangle stay -1 in the index map.
+        const PiecewiseAffineWarp &warp = m_model.warp(0);
+        const Eigen::VectorXd &r = warp.referenceShape();
+        const auto holds = [&](const Triangle &t, double x, double y) {
+            const double ax = r[2 * t[0]], ay = r[2 * t[0] + 1];
+            const double bx = r[2 * t[1]] - ax, by = r[2 * t[1] + 1] - ay;
+            const double cx = r[2 * t[2]] - ax, cy = r[2 * t[2] + 1] - ay;
+            const double det = bx * cy - by * cx;
+            if (std::abs(det) < 1e-12)
+                return false;
+            const double beta = ((x - ax) * cy - (y - ay) * cx) / det;
+            const double gamma = (bx * (y - ay) - by * (x - ax)) / det;
+            return 1.0 - beta - gamma >= -1e-9 && beta >= -1e-9 && gamma >= -1e-9;
+        };
+        int next = 0;
+        for (int y = 0; y < warp.height(); ++y) {
+            for (int x = 0; x < warp.width(); ++x) {
+                int first = -1;
+                for (int t = 0; first < 0 && t < int(warp.triangles().size()); ++t)
+                    if (holds(warp.triangles()[size_t(t)], x, y))
+                        first = t;
+                const int index = warp.indexMap().at<int>(y, x);
+                if (first < 0) {
+                    QCOMPARE(index, -1);
+                    continue;
+                }
+                QCOMPARE(index, next++);
+                QCOMPARE(warp.pixelTriangle(index), first);
+                QCOMPARE(warp.pixelX(index), x);
+                QCOMPARE(warp.pixelY(index), y);
+            }
+        }
+        QCOMPARE(next, warp.pixelCount());
+    }
+
+    void tinyFuzzSeedsAreValidModels()
+    {
+        // The fuzz seeds of tests/data/fuzz/aam (see its README) must stay loadable models, or the
+        // fuzzer would only explore the error paths.
+        for (const char *name : {"tiny.aam", "tiny-no-identifier.aam"}) {
+            const AamModel m = AamModel::load(std::string(LIPSYNC_TEST_DATA "/fuzz/aam/") + name);
+            QCOMPARE(m.pointCount(), 23);
+            QVERIFY(m.warp(0).pixelCount() > 50);
+            QCOMPARE(m.textureMean.size(), Eigen::Index(3 * m.warp(0).pixelCount()));
+        }
+    }
+
+    void damagedSizesAreRejectedBeforeAllocatingOrRasterising()
+    {
+        // tests/data/fuzz/aam/tiny-no-identifier.aam (no content hash to stop the damage early):
+        // 23 points, 1 shape mode, 35 triangles, then the reference scale at byte 1204 and the
+        // colour texture's length at 1212.
+        const std::string original = readWholeFile(LIPSYNC_TEST_DATA "/fuzz/aam/tiny-no-identifier.aam");
+        double scale = 0;
+        int textureLength = 0;
+        std::memcpy(&scale, original.data() + 1204, sizeof scale);
+        std::memcpy(&textureLength, original.data() + 1212, sizeof textureLength);
+        QVERIFY(std::abs(scale - 23.29) < 0.01);
+        QCOMPARE(textureLength, 309);
+        const auto reason = [](const std::string &bytes) -> QString {
+            try {
+                AamModel::fromBytes(bytes, "t.aam");
+            } catch (const Error &e) {
+                return QString::fromStdString(e.reason());
+            }
+            return QStringLiteral("loaded");
+        };
+        QCOMPARE(reason(original), QStringLiteral("loaded"));
+        // A length claiming more doubles than the bytes left: rejected before the vector exists.
+        std::string longer = original;
+        const int tooMany = int((original.size() - 1216) / sizeof(double)) + 1;
+        std::memcpy(longer.data() + 1212, &tooMany, sizeof tooMany);
+        QVERIFY2(reason(longer).contains("more textureMean than the file holds"), qPrintable(reason(longer)));
+        // A reference frame 10x larger: its triangles hold far more than the 103 declared pixels,
+        // which the check before rasterising reports (after it, the message would be "texture size").
+        std::string bigger = original;
+        const double tenTimes = 10 * scale;
+        std::memcpy(bigger.data() + 1204, &tenTimes, sizeof tenTimes);
+        QCOMPARE(reason(bigger), QStringLiteral("inconsistent AAM model (level texture size)"));
     }
 
     void modelHasExpectedStructure()

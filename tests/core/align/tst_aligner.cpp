@@ -258,6 +258,19 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(Error, AcousticModel::load(path));
     }
 
+    void fuzzSeedsAreValidModels()
+    {
+        // The fuzz seeds of tests/data/fuzz/aligner (see its README) must stay loadable models, or
+        // the fuzzer would only explore the error paths.
+        const AcousticModel one = AcousticModel::load(LIPSYNC_TEST_DATA "/fuzz/aligner/grid-s1-dim1.aligner");
+        QCOMPARE(one.dimension(), 1);
+        const AcousticModel two = AcousticModel::load(LIPSYNC_TEST_DATA "/fuzz/aligner/tiny-d2-m2.aligner");
+        QCOMPARE(two.dimension(), 2);
+        QCOMPARE(two.stateCount(), PhoneSet::kCount * AcousticModel::kStatesPerPhone);
+        QCOMPARE(two.state(AcousticModel::stateIndex(0, 0)).size(), 2);
+        QCOMPARE(two.state(AcousticModel::stateIndex(0, 1)).size(), 1);
+    }
+
     void gridDemoTrainingLikelihoodIncreases()
     {
         TrainerOptions o;
