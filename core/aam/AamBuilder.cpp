@@ -124,6 +124,16 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
         }
         usable.push_back(std::move(e));
     }
+    if (options.mirror) {
+        const size_t originals = usable.size();
+        for (size_t i = 0; i < originals; ++i) {
+            AamTrainingExample m;
+            m.name = usable[i].name + " (mirrored)";
+            cv::flip(usable[i].image, m.image, 1);
+            m.shape = mirrorShape(usable[i].shape, usable[i].image.cols);
+            usable.push_back(std::move(m));
+        }
+    }
     const int n = int(usable.size());
     if (n < 3)
         throw Error("need at least 3 usable training images, found " + std::to_string(n));

@@ -34,6 +34,10 @@ struct AamBuildOptions
     // Size of the level-0 reference frame: pixels between the outer eye corners.
     double referenceEyeDistance = 50.0;
     int levels = 2; // resolution levels for fitting, each half the previous
+    // Also train on every image flipped left to right (points renumbered by the scheme's
+    // symmetric permutation, mirrorShape()): twice the shapes and textures for a generic model,
+    // and a symmetric mean. Off for person-specific models, whose asymmetry is real.
+    bool mirror = false;
     // When set, the detector is run on every training image to learn where its keypoints put
     // the 23 points (AamModel::detectorShape), which makes fits from a detection start closer.
     FaceDetector *detector = nullptr;

@@ -38,11 +38,6 @@ cv::Mat smoothedForFitting(const cv::Mat &grey)
 
 namespace {
 
-// Weight of the shape prior relative to the residual per pixel. Neighbouring pixels' errors are
-// strongly correlated, so the residual understates the noise of the |e - J dp|^2 sum by a large
-// factor; on Helen (train -> test) NME was flat for weights 10-40 and 1.5x worse at 1.
-constexpr double kShapePriorWeight = 20.0;
-
 // Pixel-centre-preserving rescale of shape coordinates.
 Eigen::VectorXd scaled(const Eigen::VectorXd &shape, double f)
 {
@@ -327,7 +322,7 @@ AamFitResult AamFitter::fitOnce(const cv::Mat &grey, const Eigen::VectorXd &init
                     // shape variances; b - M dp is the shape after the inverse compositional update.
                     const Eigen::MatrixXd &M = level.toShapeParams;
                     const Eigen::VectorXd inverseVar = m_model.shapeVariances.cwiseMax(1e-12).cwiseInverse();
-                    const double s2 = kShapePriorWeight * residual;
+                    const double s2 = options.shapePriorWeight * residual;
                     hessian += s2 * M.transpose() * inverseVar.asDiagonal() * M;
                     gradient += s2 * M.transpose() * (inverseVar.asDiagonal() * result.shapeParams);
                     hessian.diagonal().array() += 1e-6 * hessian.diagonal().mean();

@@ -41,6 +41,12 @@ struct AamFitOptions
     double tolerance = 0.03;    // stop when no vertex moves more (pixels of the level frame)
     int coarsestLevel = -1;     // -1: the model's coarsest; 0 to fit the finest level only
     double shapeLimit = 3.0;    // shape parameters are clamped to this many s.d.
+    // Wiberg only: weight of the shape prior against the texture residual per pixel.
+    // Neighbouring pixels' errors are strongly correlated, so the residual understates the noise
+    // of the |e - J dp|^2 sum by a large factor. Chosen on a validation split of Helen's
+    // training faces (README, "Generic AAM"), never on the test faces.
+    static constexpr double kDefaultShapePriorWeight = 20.0;
+    double shapePriorWeight = kDefaultShapePriorWeight;
     // Also fit from the start scaled by 0.9 and 1.1 and shifted by 6 % of its RMS radius in four
     // directions about its centroid, keeping the fit with the lowest residual: for a detector's
     // start on a generic face, where one start often lands in a wrong minimum. 7x the cost.

@@ -170,6 +170,26 @@ private slots:
         QVERIFY((m_model.combinedFromParts(bs, bg) - c).norm() < 1e-9);
     }
 
+    void mirrorAugmentationDoublesTheTrainingSetAndSymmetrisesTheMean()
+    {
+        Feedback feedback;
+        AamBuildOptions options;
+        options.mirror = true;
+        const AamModel mirrored = buildAam(gridExamples(false), options, feedback);
+        QCOMPARE(mirrored.trainingImages, 36);
+        // The mean of a set closed under mirroring is its own mirror, up to a similarity.
+        const Eigen::VectorXd flipped = mirrorShape(mirrored.meanShape, 1);
+        const Eigen::VectorXd aligned = alignSimilarity(flipped, mirrored.meanShape).apply(flipped);
+        const double asymmetry = (aligned - mirrored.meanShape).norm();
+        const Eigen::VectorXd plainFlipped = mirrorShape(m_model.meanShape, 1);
+        const double plainAsymmetry =
+            (alignSimilarity(plainFlipped, m_model.meanShape).apply(plainFlipped) - m_model.meanShape).norm();
+        QVERIFY2(asymmetry < 1e-3 * shapeSize(mirrored.meanShape), qPrintable(QString::number(asymmetry)));
+        QVERIFY(asymmetry < 0.1 * plainAsymmetry);
+        // More data: at least as many shape modes as without mirroring.
+        QVERIFY(mirrored.shapeModes() >= m_model.shapeModes());
+    }
+
     void saveLoadRoundTrip()
     {
         QTemporaryDir dir;
