@@ -12,6 +12,7 @@
 #include <QDir>
 #include <QFileInfo>
 
+#include <Eigen/Cholesky>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -20,6 +21,9 @@
 namespace lipsync {
 
 namespace {
+
+// Ridge of the detector keypoint regression, relative to the mean keypoint variance.
+constexpr double kDetectorRidge = 0.1;
 
 double eyeDistance(const Eigen::VectorXd &shape)
 {
@@ -245,8 +249,7 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
     if (options.detector) {
         feedback.setStatus("calibrating the face detector");
         const Eigen::VectorXd anchors = keypointAnchors(model.meanShape);
-        Eigen::VectorXd sum = Eigen::VectorXd::Zero(model.meanShape.size());
-        int count = 0;
+        std::vector<Eigen::VectorXd> keypoints, targets; // both in the frame of the anchors
         for (const auto &e : usable) {
             feedback.throwIfCanceled();
             const std::vector<FaceDetection> faces = options.detector->detect(e.image);
@@ -257,15 +260,33 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
                 const Eigen::VectorXd k = detectionAnchors(f);
                 if (k.size() == 0 || (k - truth).cwiseAbs().maxCoeff() > 0.5 * eyes)
                     continue;
-                sum += alignSimilarity(k, anchors).apply(e.shape);
-                ++count;
+                const Similarity t = alignSimilarity(k, anchors);
+                targets.push_back(t.apply(e.shape));
+                keypoints.push_back(t.apply(detectionKeypoints(f)));
                 break;
             }
         }
-        if (count >= 3)
-            model.detectorShape = sum / count;
-        else
+        const int count = int(targets.size());
+        if (count >= 3) {
+            Eigen::MatrixXd Y(model.meanShape.size(), count), K(10, count);
+            for (int i = 0; i < count; ++i) {
+                Y.col(i) = targets[size_t(i)];
+                K.col(i) = keypoints[size_t(i)];
+            }
+            model.detectorShape = Y.rowwise().mean();
+            model.detectorKeypointMean = K.rowwise().mean();
+            // Ridge regression of the shape on the keypoints, R = Yc Kc^T (Kc Kc^T + lambda I)^-1:
+            // a start that follows the detected nose and mouth, not just the mean. The ridge
+            // (a tenth of the mean keypoint variance per sample) keeps it near the mean for the
+            // few-image person-specific models.
+            const Eigen::MatrixXd Kc = K.colwise() - model.detectorKeypointMean;
+            const Eigen::MatrixXd Yc = Y.colwise() - model.detectorShape;
+            Eigen::MatrixXd gram = Kc * Kc.transpose();
+            gram.diagonal().array() += kDetectorRidge * gram.trace() / 10.0 + 1e-12;
+            model.detectorRegression = gram.ldlt().solve(Kc * Yc.transpose()).transpose();
+        } else {
             warn("the face detector found too few training faces to calibrate its initialisation");
+        }
     }
     model.identifier = model.computeIdentifier();
     feedback.setProgress(1.0);

@@ -156,7 +156,8 @@ std::string AamModel::serialise(bool withIdentifier) const
 {
     Writer w;
     w.raw(kMagic, sizeof kMagic);
-    w.i32(kFormatVersion);
+    const bool regression = detectorRegression.size() > 0;
+    w.i32(regression ? kFormatVersion : 1);
     w.str(withIdentifier ? identifier : std::string());
     w.i32(trainingImages);
     w.vec(meanShape);
@@ -183,6 +184,10 @@ std::string AamModel::serialise(bool withIdentifier) const
         w.vec(l.variances);
     }
     w.vec(detectorShape);
+    if (regression) {
+        w.mat(detectorRegression);
+        w.vec(detectorKeypointMean);
+    }
     return std::move(w.out());
 }
 
@@ -212,8 +217,8 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
     char magic[sizeof kMagic];
     r.raw(magic, sizeof magic);
     const int version = r.i32();
-    if (version != kFormatVersion)
-        throw Error("unsupported AAM file version " + std::to_string(version) + " (expected "
+    if (version != 1 && version != kFormatVersion)
+        throw Error("unsupported AAM file version " + std::to_string(version) + " (expected 1 to "
                         + std::to_string(kFormatVersion) + ")",
                     path, "version");
     AamModel m;
@@ -250,6 +255,10 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
         m.levels.push_back(std::move(l));
     }
     m.detectorShape = r.vec("detectorShape");
+    if (version >= 2) {
+        m.detectorRegression = r.mat("detectorRegression");
+        m.detectorKeypointMean = r.vec("detectorKeypointMean");
+    }
     if (!r.atEnd())
         throw Error("trailing data after the AAM model", path);
     // Consistency: sizes must agree or fitting would read out of bounds.
@@ -259,7 +268,10 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
                     && m.textureVariances.size() == m.textureBasis.cols()
                     && m.combinedBasis.rows() == m.shapeModes() + m.textureModes()
                     && m.referenceScale > 0 && m.shapeWeight > 0
-                    && (m.detectorShape.size() == 0 || m.detectorShape.size() == m.meanShape.size());
+                    && (m.detectorShape.size() == 0 || m.detectorShape.size() == m.meanShape.size())
+                    && (m.detectorRegression.size() == 0
+                        || (m.detectorShape.size() > 0 && m.detectorRegression.rows() == m.meanShape.size()
+                            && m.detectorRegression.cols() == 10 && m.detectorKeypointMean.size() == 10));
     if (!ok)
         throw Error("inconsistent AAM model (sizes disagree)", path);
     // prepare() rasterises each level's reference frame from these numbers: non-finite or huge

@@ -30,7 +30,9 @@ struct AamTextureLevel
 class AamModel
 {
 public:
-    static constexpr int kFormatVersion = 1;
+    // Version 2 adds the detector keypoint regression; version 1 files (without it) still load
+    // and are written back as version 1, so their identifiers do not change.
+    static constexpr int kFormatVersion = 2;
 
     // Shape model, in normalised (centred, unit size) coordinates.
     Eigen::VectorXd meanShape;
@@ -60,6 +62,13 @@ public:
     // systematic offset between the detector's keypoints and the 23 points. Empty if the model
     // was built without a detector.
     Eigen::VectorXd detectorShape;
+    // Linear regression of the shape on all five detector keypoints in that frame: the start is
+    // detectorShape + detectorRegression (k - detectorKeypointMean), with k the 5 keypoints
+    // (eyes, nose tip, mouth corners; 10 values) mapped into the frame. The nose and the residual
+    // positions of the eyes and mouth corners say where the face turns and how its proportions
+    // differ from the mean. Empty when not calibrated (then the mean detectorShape is the start).
+    Eigen::MatrixXd detectorRegression; // 2k x 10
+    Eigen::VectorXd detectorKeypointMean; // 10
 
     int trainingImages = 0;
     // Stable identifier of this model (hash of its contents); dynamic models record it.
