@@ -28,13 +28,13 @@ int runAamBuild(const QStringList &args)
     const Arguments a(args);
     if (const QStringList bad = a.unknown({"images", "out", "json", "shape-variance",
                                            "texture-variance", "combined-variance", "max-modes",
-                                           "eye-distance", "levels", "no-detector", "mirror"});
+                                           "eye-distance", "levels", "no-detector", "mirror", "features"});
         !bad.isEmpty())
         return fail("aam build: unknown option " + bad.join(", "), 2);
     if (!a.has("images") || !a.has("out"))
         return fail("usage: lipsync aam build --images DIR --out MODEL [--combined-variance F] "
                     "[--shape-variance F] [--texture-variance F] [--max-modes N] "
-                    "[--eye-distance PX] [--levels N] [--mirror] [--no-detector] [--json]",
+                    "[--eye-distance PX] [--levels N] [--mirror] [--features grey|igo] [--no-detector] [--json]",
                     2);
     AamBuildOptions options;
     bool ok = true;
@@ -55,6 +55,11 @@ int runAamBuild(const QStringList &args)
     options.maxCombinedModes = int(maxModes);
     options.levels = int(levels);
     options.mirror = a.flag("mirror");
+    const QString features = a.value("features", "grey");
+    if (features != "grey" && features != "igo")
+        return fail("aam build: --features must be grey or igo", 2);
+    if (features == "igo")
+        options.fitFeatures = AamFitFeatures::GradientOrientation;
     if (!ok || options.referenceEyeDistance < 8 || options.levels < 1)
         return fail("aam build: bad numeric option", 2);
 
@@ -92,6 +97,7 @@ int runAamBuild(const QStringList &args)
                     {"texture_pixels", model.warp(0).pixelCount()},
                     {"levels", int(model.levels.size())},
                     {"mirrored", options.mirror},
+                    {"features", features},
                     {"shape_variance_total", shapeTotal},
                     {"detector_calibrated", model.detectorShape.size() > 0},
                     {"seconds", seconds},

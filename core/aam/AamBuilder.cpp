@@ -166,6 +166,7 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
         level.scale = std::pow(0.5, l);
         model.levels.push_back(level);
     }
+    model.fitFeatures = options.fitFeatures;
     model.prepare();
     model.trainingImages = n;
 
@@ -176,7 +177,7 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
     std::vector<Eigen::MatrixXd> grey;
     grey.resize(size_t(levelCount));
     for (int l = 0; l < levelCount; ++l)
-        grey[size_t(l)].resize(model.warp(l).pixelCount(), n);
+        grey[size_t(l)].resize(model.fitChannels() * model.warp(l).pixelCount(), n);
     double scaleSum = 0.0, offsetSum = 0.0;
     std::vector<float> buffer;
     for (int i = 0; i < n; ++i) {
@@ -202,9 +203,10 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
                 cv::resize(g, gl, cv::Size(), f, f, cv::INTER_AREA);
                 s = (s.array() + 0.5) * f - 0.5;
             }
-            const int count = model.warp(l).pixelCount();
+            const int count = model.fitChannels() * model.warp(l).pixelCount();
             buffer.resize(size_t(count));
-            model.warp(l).sampleGrey(smoothedForFitting(gl), s, buffer.data());
+            sampleFittingChannels(model.warp(l), fittingChannels(smoothedForFitting(gl), model.fitFeatures), s,
+                                  buffer.data());
             normaliseTexture(buffer.data(), buffer.size());
             grey[size_t(l)].col(i) = Eigen::Map<Eigen::VectorXf>(buffer.data(), count).cast<double>();
         }

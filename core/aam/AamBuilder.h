@@ -38,6 +38,8 @@ struct AamBuildOptions
     // symmetric permutation, mirrorShape()): twice the shapes and textures for a generic model,
     // and a symmetric mean. Off for person-specific models, whose asymmetry is real.
     bool mirror = false;
+    // Texture the fitter matches: grey (person-specific tracking) or gradient orientations.
+    AamFitFeatures fitFeatures = AamFitFeatures::Grey;
     // When set, the detector is run on every training image to learn where its keypoints put
     // the 23 points (AamModel::detectorShape), which makes fits from a detection start closer.
     FaceDetector *detector = nullptr;

@@ -28,6 +28,12 @@ namespace lipsync {
 // Grey images are smoothed (Gaussian, sigma 1 pixel of the level frame) before sampling, in training
 // and fitting alike: it widens the basin of convergence of the Gauss-Newton steps.
 cv::Mat smoothedForFitting(const cv::Mat &grey);
+// The images the fitter samples from a smoothed grey CV_32F image: itself for Grey, the cosine and
+// sine of its gradient orientation (Sobel) for GradientOrientation.
+std::vector<cv::Mat> fittingChannels(const cv::Mat &smoothedGrey, AamFitFeatures features);
+// Samples every channel under `shape` into `out` (channel after channel, pixelCount() each).
+void sampleFittingChannels(const PiecewiseAffineWarp &warp, const std::vector<cv::Mat> &channels,
+                           const Eigen::VectorXd &shape, float *out);
 
 enum class AamFitAlgorithm {
     ProjectOut, // fixed Jacobian of the mean texture: fast, for person-specific models

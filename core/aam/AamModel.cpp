@@ -156,8 +156,8 @@ std::string AamModel::serialise(bool withIdentifier) const
 {
     Writer w;
     w.raw(kMagic, sizeof kMagic);
-    const bool regression = detectorRegression.size() > 0;
-    w.i32(regression ? kFormatVersion : 1);
+    const bool version2 = detectorRegression.size() > 0 || fitFeatures != AamFitFeatures::Grey;
+    w.i32(version2 ? kFormatVersion : 1);
     w.str(withIdentifier ? identifier : std::string());
     w.i32(trainingImages);
     w.vec(meanShape);
@@ -184,9 +184,10 @@ std::string AamModel::serialise(bool withIdentifier) const
         w.vec(l.variances);
     }
     w.vec(detectorShape);
-    if (regression) {
+    if (version2) {
         w.mat(detectorRegression);
         w.vec(detectorKeypointMean);
+        w.i32(int(fitFeatures));
     }
     return std::move(w.out());
 }
@@ -258,6 +259,10 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
     if (version >= 2) {
         m.detectorRegression = r.mat("detectorRegression");
         m.detectorKeypointMean = r.vec("detectorKeypointMean");
+        const int features = r.i32();
+        if (features != int(AamFitFeatures::Grey) && features != int(AamFitFeatures::GradientOrientation))
+            throw Error("unknown fitting features " + std::to_string(features), path, "features");
+        m.fitFeatures = AamFitFeatures(features);
     }
     if (!r.atEnd())
         throw Error("trailing data after the AAM model", path);
@@ -297,8 +302,8 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
     if (m.textureMean.size() != 3 * m.warp(0).pixelCount())
         throw Error("inconsistent AAM model (texture size)", path);
     for (int l = 0; l < nl; ++l)
-        if (m.levels[size_t(l)].mean.size() != m.warp(l).pixelCount()
-            || m.levels[size_t(l)].basis.rows() != m.warp(l).pixelCount())
+        if (m.levels[size_t(l)].mean.size() != m.fitChannels() * m.warp(l).pixelCount()
+            || m.levels[size_t(l)].basis.rows() != m.fitChannels() * m.warp(l).pixelCount())
             throw Error("inconsistent AAM model (level texture size)", path);
     return m;
 }

@@ -19,6 +19,13 @@
 
 namespace lipsync {
 
+// What the fitter's texture models describe. Grey: the smoothed, normalised intensity (fast, what
+// person-specific tracking uses). GradientOrientation: the cosine and sine of the image gradient's
+// orientation per pixel (IGO; Tzimiropoulos, Zafeiriou & Pantic, "Subspace learning from image
+// gradient orientations", PAMI 2012; Tzimiropoulos & Pantic, ICCV 2013 fit AAMs in the wild with
+// them): invariant to lighting, twice the values per pixel.
+enum class AamFitFeatures { Grey = 0, GradientOrientation = 1 };
+
 struct AamTextureLevel
 {
     double scale = 1.0;       // size relative to level 0
@@ -30,8 +37,9 @@ struct AamTextureLevel
 class AamModel
 {
 public:
-    // Version 2 adds the detector keypoint regression; version 1 files (without it) still load
-    // and are written back as version 1, so their identifiers do not change.
+    // Version 2 adds the detector keypoint regression and the fitting features; version 1 files
+    // (grey, no regression) still load and are written back as version 1, so their identifiers
+    // do not change.
     static constexpr int kFormatVersion = 2;
 
     // Shape model, in normalised (centred, unit size) coordinates.
@@ -54,8 +62,11 @@ public:
     Eigen::MatrixXd combinedBasis; // (ns + ng) x nc
     Eigen::VectorXd combinedVariances;
 
-    // Grey fitting models, level 0 first (finest).
+    // Fitting texture models, level 0 first (finest): fitChannels() values per reference pixel,
+    // channel after channel.
+    AamFitFeatures fitFeatures = AamFitFeatures::Grey;
     std::vector<AamTextureLevel> levels;
+    int fitChannels() const { return fitFeatures == AamFitFeatures::Grey ? 1 : 2; }
 
     // Where the face detector's keypoints put the face: the mean training shape in the frame of
     // the detector's eye centres and mouth corners (see initialShapeFromDetection). Corrects the

@@ -286,16 +286,37 @@ private slots:
     void fitConvergesOnHeldOutFrame_data()
     {
         QTest::addColumn<int>("algorithm");
-        QTest::newRow("project-out") << int(AamFitAlgorithm::ProjectOut);
-        QTest::newRow("wiberg") << int(AamFitAlgorithm::Wiberg);
+        QTest::addColumn<bool>("gradientOrientation");
+        QTest::newRow("project-out") << int(AamFitAlgorithm::ProjectOut) << false;
+        QTest::newRow("wiberg") << int(AamFitAlgorithm::Wiberg) << false;
+        QTest::newRow("wiberg-igo") << int(AamFitAlgorithm::Wiberg) << true;
     }
 
     void fitConvergesOnHeldOutFrame()
     {
         QFETCH(int, algorithm);
+        QFETCH(bool, gradientOrientation);
         AamFitOptions options;
         options.algorithm = AamFitAlgorithm(algorithm);
-        const AamFitter fitter(m_model);
+        AamModel igo;
+        if (gradientOrientation) {
+            // Gradient-orientation textures: two values (cos, sin) per reference pixel per level,
+            // kept through a save and load (format version 2).
+            Feedback feedback;
+            AamBuildOptions build;
+            build.combinedVariance = 0.98;
+            build.fitFeatures = AamFitFeatures::GradientOrientation;
+            const AamModel built = buildAam(gridExamples(false), build, feedback);
+            QCOMPARE(built.levels[0].mean.size(), Eigen::Index(2 * built.warp(0).pixelCount()));
+            QTemporaryDir dir;
+            const std::string path = (dir.path() + "/igo.aam").toStdString();
+            built.save(path);
+            QCOMPARE(int(readWholeFile(path)[8]), 2);
+            igo = AamModel::load(path);
+            QCOMPARE(igo.identifier, built.identifier);
+            QVERIFY(igo.fitFeatures == AamFitFeatures::GradientOrientation);
+        }
+        const AamFitter fitter(gradientOrientation ? igo : m_model);
         int improved = 0;
         for (const auto &e : gridExamples(true)) {
             const cv::Mat image = cv::imread(e.imagePath);
