@@ -28,15 +28,18 @@ int runAamBuild(const QStringList &args)
     const Arguments a(args);
     if (const QStringList bad = a.unknown({"images", "out", "json", "shape-variance",
                                            "texture-variance", "combined-variance", "max-modes",
-                                           "eye-distance", "levels", "no-detector", "mirror", "features"});
+                                           "eye-distance", "levels", "no-detector", "mirror", "features",
+                                           "generic"});
         !bad.isEmpty())
         return fail("aam build: unknown option " + bad.join(", "), 2);
     if (!a.has("images") || !a.has("out"))
         return fail("usage: lipsync aam build --images DIR --out MODEL [--combined-variance F] "
                     "[--shape-variance F] [--texture-variance F] [--max-modes N] "
-                    "[--eye-distance PX] [--levels N] [--mirror] [--features grey|igo] [--no-detector] [--json]",
+                    "[--eye-distance PX] [--levels N] [--mirror] [--features grey|igo] [--generic] "
+                    "[--no-detector] [--json]",
                     2);
-    AamBuildOptions options;
+    // --generic: the cross-validated settings for in-the-wild faces; options given explicitly win.
+    AamBuildOptions options = a.flag("generic") ? AamBuildOptions::generic() : AamBuildOptions{};
     bool ok = true;
     auto number = [&](const char *name, double &target) {
         if (a.has(name)) {
@@ -54,12 +57,11 @@ int runAamBuild(const QStringList &args)
     number("levels", levels);
     options.maxCombinedModes = int(maxModes);
     options.levels = int(levels);
-    options.mirror = a.flag("mirror");
-    const QString features = a.value("features", "grey");
+    options.mirror = options.mirror || a.flag("mirror");
+    const QString features = a.value("features", a.flag("generic") ? "igo" : "grey");
     if (features != "grey" && features != "igo")
         return fail("aam build: --features must be grey or igo", 2);
-    if (features == "igo")
-        options.fitFeatures = AamFitFeatures::GradientOrientation;
+    options.fitFeatures = features == "igo" ? AamFitFeatures::GradientOrientation : AamFitFeatures::Grey;
     if (!ok || options.referenceEyeDistance < 8 || options.levels < 1)
         return fail("aam build: bad numeric option", 2);
 

@@ -43,6 +43,17 @@ struct AamBuildOptions
     // When set, the detector is run on every training image to learn where its keypoints put
     // the 23 points (AamModel::detectorShape), which makes fits from a detection start closer.
     FaceDetector *detector = nullptr;
+
+    // The settings for a generic (in-the-wild) model, chosen by 5-fold cross-validation on Helen's
+    // training faces only (README, "Generic AAM"): mirrored training images and gradient-
+    // orientation textures. Fit it with AamFitAlgorithm::Wiberg and multiStart.
+    static AamBuildOptions generic()
+    {
+        AamBuildOptions o;
+        o.mirror = true;
+        o.fitFeatures = AamFitFeatures::GradientOrientation;
+        return o;
+    }
 };
 
 // Images with a .pts of the same stem (68 or 23 points) in `directory`, sorted by name. Throws
