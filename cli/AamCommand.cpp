@@ -136,11 +136,13 @@ int runAamEval(const QStringList &args)
 {
     const Arguments a(args);
     if (const QStringList bad = a.unknown({"model", "images", "json", "init", "levels", "algorithm",
-                                           "multi-start", "prior-weight"}); !bad.isEmpty())
+                                           "multi-start", "prior-weight", "start-spread"});
+        !bad.isEmpty())
         return fail("aam eval: unknown option " + bad.join(", "), 2);
     if (!a.has("model") || !a.has("images"))
         return fail("usage: lipsync aam eval --model MODEL --images DIR [--init detector|dlib|none] "
-                    "[--algorithm project-out|wiberg] [--multi-start] [--prior-weight W] [--json]",
+                    "[--algorithm project-out|wiberg] [--multi-start] [--prior-weight W] [--start-spread F] "
+                    "[--json]",
                     2);
     const QString init = a.value("init", "detector");
     if (init != "detector" && init != "dlib" && init != "none")
@@ -153,6 +155,9 @@ int runAamEval(const QStringList &args)
                                                      : AamFitOptions::kDefaultShapePriorWeight;
     if (!priorOk || priorWeight < 0)
         return fail("aam eval: --prior-weight must be a number >= 0", 2);
+    const double spread = a.has("start-spread") ? a.value("start-spread").toDouble(&priorOk) : 1.0;
+    if (!priorOk || spread <= 0)
+        return fail("aam eval: --start-spread must be a number > 0", 2);
     const AamModel model = AamModel::load(a.value("model").toStdString());
     const AamFitter fitter(model);
     FaceDetectorPaths paths;
@@ -213,6 +218,7 @@ int runAamEval(const QStringList &args)
                 fitOptions.algorithm = AamFitAlgorithm::Wiberg;
             fitOptions.multiStart = a.flag("multi-start");
             fitOptions.shapePriorWeight = priorWeight;
+            fitOptions.multiStartSpread = spread;
             // dlib's points are already close: refine at the finest level only.
             if (init == "dlib")
                 fitOptions.coarsestLevel = 0;
@@ -253,6 +259,7 @@ int runAamEval(const QStringList &args)
                     {"algorithm", algorithm},
                     {"multi_start", a.flag("multi-start")},
                     {"prior_weight", priorWeight},
+                    {"start_spread", spread},
                     {"nme_mean", mean(nmes)},
                     {"nme_median", median(nmes)},
                     {"nme_init_mean", mean(initNmes)},

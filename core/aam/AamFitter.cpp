@@ -234,7 +234,9 @@ AamFitResult AamFitter::fit(const cv::Mat &image, const Eigen::VectorXd &initial
                                                       {1, 0, 0.06},
                                                       {1, 0, -0.06}}};
     for (const auto &[scale, dx, dy] : moves) {
-        const Similarity move{scale, 0, (1 - scale) * c.x() + dx * size, (1 - scale) * c.y() + dy * size};
+        const double sc = 1.0 + (scale - 1.0) * options.multiStartSpread;
+        const double mx = dx * options.multiStartSpread, my = dy * options.multiStartSpread;
+        const Similarity move{sc, 0, (1 - sc) * c.x() + mx * size, (1 - sc) * c.y() + my * size};
         AamFitResult r = fitOnce(grey, move.apply(initialShape), options);
         r.iterations += best.iterations;
         if (r.error < best.error)

@@ -57,6 +57,8 @@ struct AamFitOptions
     // directions about its centroid, keeping the fit with the lowest residual: for a detector's
     // start on a generic face, where one start often lands in a wrong minimum. 7x the cost.
     bool multiStart = false;
+    // Scales the six moves above (1: +-10 % scale, 6 % shifts).
+    double multiStartSpread = 1.0;
     // Points that must stay where they are (PointState::Fixed): flat shape and a mask.
     Eigen::VectorXd fixedShape;
     std::vector<bool> fixedMask;
