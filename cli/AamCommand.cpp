@@ -155,7 +155,8 @@ int runAamEval(const QStringList &args)
                                                      : AamFitOptions::kDefaultShapePriorWeight;
     if (!priorOk || priorWeight < 0)
         return fail("aam eval: --prior-weight must be a number >= 0", 2);
-    const double spread = a.has("start-spread") ? a.value("start-spread").toDouble(&priorOk) : 1.0;
+    const double spread = a.has("start-spread") ? a.value("start-spread").toDouble(&priorOk)
+                                                : AamFitOptions{}.multiStartSpread;
     if (!priorOk || spread <= 0)
         return fail("aam eval: --start-spread must be a number > 0", 2);
     const AamModel model = AamModel::load(a.value("model").toStdString());

@@ -46,12 +46,14 @@ struct AamBuildOptions
 
     // The settings for a generic (in-the-wild) model, chosen by 5-fold cross-validation on Helen's
     // training faces only (README, "Generic AAM"): mirrored training images and gradient-
-    // orientation textures. Fit it with AamFitAlgorithm::Wiberg and multiStart.
+    // orientation textures in a larger reference frame (70 pixels between the outer eye corners).
+    // Fit it with AamFitAlgorithm::Wiberg and multiStart.
     static AamBuildOptions generic()
     {
         AamBuildOptions o;
         o.mirror = true;
         o.fitFeatures = AamFitFeatures::GradientOrientation;
+        o.referenceEyeDistance = 70.0;
         return o;
     }
 };
