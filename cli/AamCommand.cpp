@@ -28,15 +28,18 @@ int runAamBuild(const QStringList &args)
     const Arguments a(args);
     if (const QStringList bad = a.unknown({"images", "out", "json", "shape-variance",
                                            "texture-variance", "combined-variance", "max-modes",
-                                           "eye-distance", "levels", "no-detector"});
+                                           "eye-distance", "levels", "no-detector", "mirror", "features",
+                                           "generic"});
         !bad.isEmpty())
         return fail("aam build: unknown option " + bad.join(", "), 2);
     if (!a.has("images") || !a.has("out"))
         return fail("usage: lipsync aam build --images DIR --out MODEL [--combined-variance F] "
                     "[--shape-variance F] [--texture-variance F] [--max-modes N] "
-                    "[--eye-distance PX] [--levels N] [--no-detector] [--json]",
+                    "[--eye-distance PX] [--levels N] [--mirror] [--features grey|igo] [--generic] "
+                    "[--no-detector] [--json]",
                     2);
-    AamBuildOptions options;
+    // --generic: the cross-validated settings for in-the-wild faces; options given explicitly win.
+    AamBuildOptions options = a.flag("generic") ? AamBuildOptions::generic() : AamBuildOptions{};
     bool ok = true;
     auto number = [&](const char *name, double &target) {
         if (a.has(name)) {
@@ -54,6 +57,11 @@ int runAamBuild(const QStringList &args)
     number("levels", levels);
     options.maxCombinedModes = int(maxModes);
     options.levels = int(levels);
+    options.mirror = options.mirror || a.flag("mirror");
+    const QString features = a.value("features", a.flag("generic") ? "igo" : "grey");
+    if (features != "grey" && features != "igo")
+        return fail("aam build: --features must be grey or igo", 2);
+    options.fitFeatures = features == "igo" ? AamFitFeatures::GradientOrientation : AamFitFeatures::Grey;
     if (!ok || options.referenceEyeDistance < 8 || options.levels < 1)
         return fail("aam build: bad numeric option", 2);
 
@@ -90,6 +98,8 @@ int runAamBuild(const QStringList &args)
                     {"combined_modes", model.combinedModes()},
                     {"texture_pixels", model.warp(0).pixelCount()},
                     {"levels", int(model.levels.size())},
+                    {"mirrored", options.mirror},
+                    {"features", features},
                     {"shape_variance_total", shapeTotal},
                     {"detector_calibrated", model.detectorShape.size() > 0},
                     {"seconds", seconds},
@@ -125,11 +135,14 @@ cv::Rect2d boundingBox(const Eigen::VectorXd &shape)
 int runAamEval(const QStringList &args)
 {
     const Arguments a(args);
-    if (const QStringList bad = a.unknown({"model", "images", "json", "init", "levels", "algorithm", "multi-start"}); !bad.isEmpty())
+    if (const QStringList bad = a.unknown({"model", "images", "json", "init", "levels", "algorithm",
+                                           "multi-start", "prior-weight", "start-spread"});
+        !bad.isEmpty())
         return fail("aam eval: unknown option " + bad.join(", "), 2);
     if (!a.has("model") || !a.has("images"))
         return fail("usage: lipsync aam eval --model MODEL --images DIR [--init detector|dlib|none] "
-                    "[--algorithm project-out|wiberg] [--multi-start] [--json]",
+                    "[--algorithm project-out|wiberg] [--multi-start] [--prior-weight W] [--start-spread F] "
+                    "[--json]",
                     2);
     const QString init = a.value("init", "detector");
     if (init != "detector" && init != "dlib" && init != "none")
@@ -137,6 +150,15 @@ int runAamEval(const QStringList &args)
     const QString algorithm = a.value("algorithm", "project-out");
     if (algorithm != "project-out" && algorithm != "wiberg")
         return fail("aam eval: --algorithm must be project-out or wiberg", 2);
+    bool priorOk = true;
+    const double priorWeight = a.has("prior-weight") ? a.value("prior-weight").toDouble(&priorOk)
+                                                     : AamFitOptions::kDefaultShapePriorWeight;
+    if (!priorOk || priorWeight < 0)
+        return fail("aam eval: --prior-weight must be a number >= 0", 2);
+    const double spread = a.has("start-spread") ? a.value("start-spread").toDouble(&priorOk)
+                                                : AamFitOptions{}.multiStartSpread;
+    if (!priorOk || spread <= 0)
+        return fail("aam eval: --start-spread must be a number > 0", 2);
     const AamModel model = AamModel::load(a.value("model").toStdString());
     const AamFitter fitter(model);
     FaceDetectorPaths paths;
@@ -196,6 +218,8 @@ int runAamEval(const QStringList &args)
             if (algorithm == "wiberg")
                 fitOptions.algorithm = AamFitAlgorithm::Wiberg;
             fitOptions.multiStart = a.flag("multi-start");
+            fitOptions.shapePriorWeight = priorWeight;
+            fitOptions.multiStartSpread = spread;
             // dlib's points are already close: refine at the finest level only.
             if (init == "dlib")
                 fitOptions.coarsestLevel = 0;
@@ -235,6 +259,8 @@ int runAamEval(const QStringList &args)
                     {"init", init},
                     {"algorithm", algorithm},
                     {"multi_start", a.flag("multi-start")},
+                    {"prior_weight", priorWeight},
+                    {"start_spread", spread},
                     {"nme_mean", mean(nmes)},
                     {"nme_median", median(nmes)},
                     {"nme_init_mean", mean(initNmes)},

@@ -12,6 +12,7 @@
 #include <QDir>
 #include <QFileInfo>
 
+#include <Eigen/Cholesky>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -20,6 +21,9 @@
 namespace lipsync {
 
 namespace {
+
+// Ridge of the detector keypoint regression, relative to the mean keypoint variance.
+constexpr double kDetectorRidge = 0.1;
 
 double eyeDistance(const Eigen::VectorXd &shape)
 {
@@ -124,6 +128,16 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
         }
         usable.push_back(std::move(e));
     }
+    if (options.mirror) {
+        const size_t originals = usable.size();
+        for (size_t i = 0; i < originals; ++i) {
+            AamTrainingExample m;
+            m.name = usable[i].name + " (mirrored)";
+            cv::flip(usable[i].image, m.image, 1);
+            m.shape = mirrorShape(usable[i].shape, usable[i].image.cols);
+            usable.push_back(std::move(m));
+        }
+    }
     const int n = int(usable.size());
     if (n < 3)
         throw Error("need at least 3 usable training images, found " + std::to_string(n));
@@ -152,6 +166,7 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
         level.scale = std::pow(0.5, l);
         model.levels.push_back(level);
     }
+    model.fitFeatures = options.fitFeatures;
     model.prepare();
     model.trainingImages = n;
 
@@ -162,7 +177,7 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
     std::vector<Eigen::MatrixXd> grey;
     grey.resize(size_t(levelCount));
     for (int l = 0; l < levelCount; ++l)
-        grey[size_t(l)].resize(model.warp(l).pixelCount(), n);
+        grey[size_t(l)].resize(model.fitChannels() * model.warp(l).pixelCount(), n);
     double scaleSum = 0.0, offsetSum = 0.0;
     std::vector<float> buffer;
     for (int i = 0; i < n; ++i) {
@@ -188,9 +203,10 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
                 cv::resize(g, gl, cv::Size(), f, f, cv::INTER_AREA);
                 s = (s.array() + 0.5) * f - 0.5;
             }
-            const int count = model.warp(l).pixelCount();
+            const int count = model.fitChannels() * model.warp(l).pixelCount();
             buffer.resize(size_t(count));
-            model.warp(l).sampleGrey(smoothedForFitting(gl), s, buffer.data());
+            sampleFittingChannels(model.warp(l), fittingChannels(smoothedForFitting(gl), model.fitFeatures), s,
+                                  buffer.data());
             normaliseTexture(buffer.data(), buffer.size());
             grey[size_t(l)].col(i) = Eigen::Map<Eigen::VectorXf>(buffer.data(), count).cast<double>();
         }
@@ -235,8 +251,7 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
     if (options.detector) {
         feedback.setStatus("calibrating the face detector");
         const Eigen::VectorXd anchors = keypointAnchors(model.meanShape);
-        Eigen::VectorXd sum = Eigen::VectorXd::Zero(model.meanShape.size());
-        int count = 0;
+        std::vector<Eigen::VectorXd> keypoints, targets; // both in the frame of the anchors
         for (const auto &e : usable) {
             feedback.throwIfCanceled();
             const std::vector<FaceDetection> faces = options.detector->detect(e.image);
@@ -247,15 +262,33 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
                 const Eigen::VectorXd k = detectionAnchors(f);
                 if (k.size() == 0 || (k - truth).cwiseAbs().maxCoeff() > 0.5 * eyes)
                     continue;
-                sum += alignSimilarity(k, anchors).apply(e.shape);
-                ++count;
+                const Similarity t = alignSimilarity(k, anchors);
+                targets.push_back(t.apply(e.shape));
+                keypoints.push_back(t.apply(detectionKeypoints(f)));
                 break;
             }
         }
-        if (count >= 3)
-            model.detectorShape = sum / count;
-        else
+        const int count = int(targets.size());
+        if (count >= 3) {
+            Eigen::MatrixXd Y(model.meanShape.size(), count), K(10, count);
+            for (int i = 0; i < count; ++i) {
+                Y.col(i) = targets[size_t(i)];
+                K.col(i) = keypoints[size_t(i)];
+            }
+            model.detectorShape = Y.rowwise().mean();
+            model.detectorKeypointMean = K.rowwise().mean();
+            // Ridge regression of the shape on the keypoints, R = Yc Kc^T (Kc Kc^T + lambda I)^-1:
+            // a start that follows the detected nose and mouth, not just the mean. The ridge
+            // (a tenth of the mean keypoint variance per sample) keeps it near the mean for the
+            // few-image person-specific models.
+            const Eigen::MatrixXd Kc = K.colwise() - model.detectorKeypointMean;
+            const Eigen::MatrixXd Yc = Y.colwise() - model.detectorShape;
+            Eigen::MatrixXd gram = Kc * Kc.transpose();
+            gram.diagonal().array() += kDetectorRidge * gram.trace() / 10.0 + 1e-12;
+            model.detectorRegression = gram.ldlt().solve(Kc * Yc.transpose()).transpose();
+        } else {
             warn("the face detector found too few training faces to calibrate its initialisation");
+        }
     }
     model.identifier = model.computeIdentifier();
     feedback.setProgress(1.0);

@@ -34,9 +34,28 @@ struct AamBuildOptions
     // Size of the level-0 reference frame: pixels between the outer eye corners.
     double referenceEyeDistance = 50.0;
     int levels = 2; // resolution levels for fitting, each half the previous
+    // Also train on every image flipped left to right (points renumbered by the scheme's
+    // symmetric permutation, mirrorShape()): twice the shapes and textures for a generic model,
+    // and a symmetric mean. Off for person-specific models, whose asymmetry is real.
+    bool mirror = false;
+    // Texture the fitter matches: grey (person-specific tracking) or gradient orientations.
+    AamFitFeatures fitFeatures = AamFitFeatures::Grey;
     // When set, the detector is run on every training image to learn where its keypoints put
     // the 23 points (AamModel::detectorShape), which makes fits from a detection start closer.
     FaceDetector *detector = nullptr;
+
+    // The settings for a generic (in-the-wild) model, chosen by 5-fold cross-validation on Helen's
+    // training faces only (README, "Generic AAM"): mirrored training images and gradient-
+    // orientation textures in a larger reference frame (70 pixels between the outer eye corners).
+    // Fit it with AamFitAlgorithm::Wiberg and multiStart.
+    static AamBuildOptions generic()
+    {
+        AamBuildOptions o;
+        o.mirror = true;
+        o.fitFeatures = AamFitFeatures::GradientOrientation;
+        o.referenceEyeDistance = 70.0;
+        return o;
+    }
 };
 
 // Images with a .pts of the same stem (68 or 23 points) in `directory`, sorted by name. Throws

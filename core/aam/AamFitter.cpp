@@ -36,12 +36,31 @@ cv::Mat smoothedForFitting(const cv::Mat &grey)
     return out;
 }
 
-namespace {
+std::vector<cv::Mat> fittingChannels(const cv::Mat &smoothedGrey, AamFitFeatures features)
+{
+    if (features == AamFitFeatures::Grey)
+        return {smoothedGrey};
+    cv::Mat gx, gy, magnitude;
+    cv::Sobel(smoothedGrey, gx, CV_32F, 1, 0);
+    cv::Sobel(smoothedGrey, gy, CV_32F, 0, 1);
+    cv::magnitude(gx, gy, magnitude);
+    // cos and sin of the orientation; a tiny floor keeps flat regions finite (their orientations
+    // are noise, which the IGO texture model treats as such: Tzimiropoulos et al. 2012, §3).
+    magnitude += 1e-3f;
+    cv::divide(gx, magnitude, gx);
+    cv::divide(gy, magnitude, gy);
+    return {gx, gy};
+}
 
-// Weight of the shape prior relative to the residual per pixel. Neighbouring pixels' errors are
-// strongly correlated, so the residual understates the noise of the |e - J dp|^2 sum by a large
-// factor; on Helen (train -> test) NME was flat for weights 10-40 and 1.5x worse at 1.
-constexpr double kShapePriorWeight = 20.0;
+void sampleFittingChannels(const PiecewiseAffineWarp &warp, const std::vector<cv::Mat> &channels,
+                           const Eigen::VectorXd &shape, float *out)
+{
+    const size_t n = size_t(warp.pixelCount());
+    for (size_t c = 0; c < channels.size(); ++c)
+        warp.sampleGrey(channels[c], shape, out + c * n);
+}
+
+namespace {
 
 // Pixel-centre-preserving rescale of shape coordinates.
 Eigen::VectorXd scaled(const Eigen::VectorXd &shape, double f)
@@ -125,29 +144,35 @@ void AamFitter::prepareLevel(int l)
 Eigen::MatrixXf AamFitter::steepestDescent(const Level &level, const PiecewiseAffineWarp &warp,
                                            const Eigen::VectorXf &texture) const
 {
-    // Texture gradient by central differences inside the frame (one-sided at its edge).
+    // Texture gradient by central differences inside the frame (one-sided at its edge), per
+    // channel; the channels' rows are stacked.
     const int N = warp.pixelCount();
+    const int channels = int(texture.size() / N);
     const cv::Mat &index = warp.indexMap();
-    auto valueAt = [&](int x, int y, float &v) {
-        if (x < 0 || y < 0 || x >= index.cols || y >= index.rows)
-            return false;
-        const int j = index.at<int>(y, x);
-        if (j < 0)
-            return false;
-        v = texture[j];
-        return true;
-    };
-    Eigen::VectorXf gx(N), gy(N);
-    for (int i = 0; i < N; ++i) {
-        const int x = warp.pixelX(i), y = warp.pixelY(i);
-        const float v0 = texture[i];
-        float a = 0, b = 0;
-        const bool l = valueAt(x - 1, y, a), r = valueAt(x + 1, y, b);
-        gx[i] = l && r ? 0.5f * (b - a) : r ? b - v0 : l ? v0 - a : 0.f;
-        const bool u = valueAt(x, y - 1, a), d = valueAt(x, y + 1, b);
-        gy[i] = u && d ? 0.5f * (b - a) : d ? b - v0 : u ? v0 - a : 0.f;
+    Eigen::MatrixXf sd(texture.size(), level.warpX.cols());
+    for (int c = 0; c < channels; ++c) {
+        const float *t = texture.data() + size_t(c) * size_t(N);
+        auto valueAt = [&](int x, int y, float &v) {
+            if (x < 0 || y < 0 || x >= index.cols || y >= index.rows)
+                return false;
+            const int j = index.at<int>(y, x);
+            if (j < 0)
+                return false;
+            v = t[j];
+            return true;
+        };
+        Eigen::VectorXf gx(N), gy(N);
+        for (int i = 0; i < N; ++i) {
+            const int x = warp.pixelX(i), y = warp.pixelY(i);
+            const float v0 = t[i];
+            float a = 0, b = 0;
+            const bool l = valueAt(x - 1, y, a), r = valueAt(x + 1, y, b);
+            gx[i] = l && r ? 0.5f * (b - a) : r ? b - v0 : l ? v0 - a : 0.f;
+            const bool u = valueAt(x, y - 1, a), d = valueAt(x, y + 1, b);
+            gy[i] = u && d ? 0.5f * (b - a) : d ? b - v0 : u ? v0 - a : 0.f;
+        }
+        sd.middleRows(Eigen::Index(c) * N, N) = gx.asDiagonal() * level.warpX + gy.asDiagonal() * level.warpY;
     }
-    Eigen::MatrixXf sd = gx.asDiagonal() * level.warpX + gy.asDiagonal() * level.warpY;
     // Project out the appearance variation (Matthews & Baker §4.2, eq. 40).
     if (level.appearance.cols() > 0)
         sd -= level.appearance * (level.appearance.transpose() * sd);
@@ -209,7 +234,9 @@ AamFitResult AamFitter::fit(const cv::Mat &image, const Eigen::VectorXd &initial
                                                       {1, 0, 0.06},
                                                       {1, 0, -0.06}}};
     for (const auto &[scale, dx, dy] : moves) {
-        const Similarity move{scale, 0, (1 - scale) * c.x() + dx * size, (1 - scale) * c.y() + dy * size};
+        const double sc = 1.0 + (scale - 1.0) * options.multiStartSpread;
+        const double mx = dx * options.multiStartSpread, my = dy * options.multiStartSpread;
+        const Similarity move{sc, 0, (1 - sc) * c.x() + mx * size, (1 - sc) * c.y() + my * size};
         AamFitResult r = fitOnce(grey, move.apply(initialShape), options);
         r.iterations += best.iterations;
         if (r.error < best.error)
@@ -280,7 +307,8 @@ AamFitResult AamFitter::fitOnce(const cv::Mat &grey, const Eigen::VectorXd &init
             if (roi.width < 2 || roi.height < 2)
                 roi = cv::Rect(0, 0, levelImage.cols, levelImage.rows);
         }
-        levelImage = smoothedForFitting(levelImage(roi));
+        const std::vector<cv::Mat> channels =
+            fittingChannels(smoothedForFitting(levelImage(roi)), m_model.fitFeatures);
         const Eigen::Vector2d offset(roi.x, roi.y);
         auto toLevel = [&](const Eigen::VectorXd &shape) {
             Eigen::VectorXd out = scaled(shape, f);
@@ -293,12 +321,12 @@ AamFitResult AamFitter::fitOnce(const cv::Mat &grey, const Eigen::VectorXd &init
                 shape.segment<2>(2 * i) += offset;
             return scaled(shape, 1.0 / f);
         };
-        const int N = warp.pixelCount();
+        const int N = warp.pixelCount() * m_model.fitChannels();
         sample.resize(size_t(N));
         // Residual of a shape: the part of the normalised texture error the appearance model
         // cannot explain (the project-out cost, Matthews & Baker eq. 39).
         auto evaluate = [&](const Eigen::VectorXd &shape, Eigen::VectorXf &error) {
-            warp.sampleGrey(levelImage, toLevel(shape), sample.data());
+            sampleFittingChannels(warp, channels, toLevel(shape), sample.data());
             normaliseTexture(sample.data(), sample.size());
             error = Eigen::Map<Eigen::VectorXf>(sample.data(), N) - level.templateMean;
             const Eigen::VectorXf c = level.appearance.transpose() * error;
@@ -327,7 +355,7 @@ AamFitResult AamFitter::fitOnce(const cv::Mat &grey, const Eigen::VectorXd &init
                     // shape variances; b - M dp is the shape after the inverse compositional update.
                     const Eigen::MatrixXd &M = level.toShapeParams;
                     const Eigen::VectorXd inverseVar = m_model.shapeVariances.cwiseMax(1e-12).cwiseInverse();
-                    const double s2 = kShapePriorWeight * residual;
+                    const double s2 = options.shapePriorWeight * residual;
                     hessian += s2 * M.transpose() * inverseVar.asDiagonal() * M;
                     gradient += s2 * M.transpose() * (inverseVar.asDiagonal() * result.shapeParams);
                     hessian.diagonal().array() += 1e-6 * hessian.diagonal().mean();

@@ -28,6 +28,12 @@ namespace lipsync {
 // Grey images are smoothed (Gaussian, sigma 1 pixel of the level frame) before sampling, in training
 // and fitting alike: it widens the basin of convergence of the Gauss-Newton steps.
 cv::Mat smoothedForFitting(const cv::Mat &grey);
+// The images the fitter samples from a smoothed grey CV_32F image: itself for Grey, the cosine and
+// sine of its gradient orientation (Sobel) for GradientOrientation.
+std::vector<cv::Mat> fittingChannels(const cv::Mat &smoothedGrey, AamFitFeatures features);
+// Samples every channel under `shape` into `out` (channel after channel, pixelCount() each).
+void sampleFittingChannels(const PiecewiseAffineWarp &warp, const std::vector<cv::Mat> &channels,
+                           const Eigen::VectorXd &shape, float *out);
 
 enum class AamFitAlgorithm {
     ProjectOut, // fixed Jacobian of the mean texture: fast, for person-specific models
@@ -41,10 +47,18 @@ struct AamFitOptions
     double tolerance = 0.03;    // stop when no vertex moves more (pixels of the level frame)
     int coarsestLevel = -1;     // -1: the model's coarsest; 0 to fit the finest level only
     double shapeLimit = 3.0;    // shape parameters are clamped to this many s.d.
-    // Also fit from the start scaled by 0.9 and 1.1 and shifted by 6 % of its RMS radius in four
-    // directions about its centroid, keeping the fit with the lowest residual: for a detector's
-    // start on a generic face, where one start often lands in a wrong minimum. 7x the cost.
+    // Wiberg only: weight of the shape prior against the texture residual per pixel.
+    // Neighbouring pixels' errors are strongly correlated, so the residual understates the noise
+    // of the |e - J dp|^2 sum by a large factor. Chosen on a validation split of Helen's
+    // training faces (README, "Generic AAM"), never on the test faces.
+    static constexpr double kDefaultShapePriorWeight = 20.0;
+    double shapePriorWeight = kDefaultShapePriorWeight;
+    // Also fit from the start scaled by 1 -+ 0.1 s and shifted by 6 s % of its RMS radius in four
+    // directions about its centroid (s = multiStartSpread), keeping the fit with the lowest
+    // residual: for a detector's start on a generic face, where one start often lands in a wrong
+    // minimum. 7x the cost. s = 1.5 was chosen by cross-validation on Helen's training faces.
     bool multiStart = false;
+    double multiStartSpread = 1.5;
     // Points that must stay where they are (PointState::Fixed): flat shape and a mask.
     Eigen::VectorXd fixedShape;
     std::vector<bool> fixedMask;

@@ -178,7 +178,8 @@ std::string AamModel::serialise(bool withIdentifier) const
 {
     Writer w;
     w.raw(kMagic, sizeof kMagic);
-    w.i32(kFormatVersion);
+    const bool version2 = detectorRegression.size() > 0 || fitFeatures != AamFitFeatures::Grey;
+    w.i32(version2 ? kFormatVersion : 1);
     w.str(withIdentifier ? identifier : std::string());
     w.i32(trainingImages);
     w.vec(meanShape);
@@ -205,6 +206,11 @@ std::string AamModel::serialise(bool withIdentifier) const
         w.vec(l.variances);
     }
     w.vec(detectorShape);
+    if (version2) {
+        w.mat(detectorRegression);
+        w.vec(detectorKeypointMean);
+        w.i32(int(fitFeatures));
+    }
     return std::move(w.out());
 }
 
@@ -234,8 +240,8 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
     char magic[sizeof kMagic];
     r.raw(magic, sizeof magic);
     const int version = r.i32();
-    if (version != kFormatVersion)
-        throw Error("unsupported AAM file version " + std::to_string(version) + " (expected "
+    if (version != 1 && version != kFormatVersion)
+        throw Error("unsupported AAM file version " + std::to_string(version) + " (expected 1 to "
                         + std::to_string(kFormatVersion) + ")",
                     path, "version");
     AamModel m;
@@ -272,6 +278,14 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
         m.levels.push_back(std::move(l));
     }
     m.detectorShape = r.vec("detectorShape");
+    if (version >= 2) {
+        m.detectorRegression = r.mat("detectorRegression");
+        m.detectorKeypointMean = r.vec("detectorKeypointMean");
+        const int features = r.i32();
+        if (features != int(AamFitFeatures::Grey) && features != int(AamFitFeatures::GradientOrientation))
+            throw Error("unknown fitting features " + std::to_string(features), path, "features");
+        m.fitFeatures = AamFitFeatures(features);
+    }
     if (!r.atEnd())
         throw Error("trailing data after the AAM model", path);
     // Consistency: sizes must agree or fitting would read out of bounds.
@@ -282,10 +296,15 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
                     && m.combinedBasis.rows() == m.shapeModes() + m.textureModes()
                     && m.referenceScale > 0 && m.shapeWeight > 0
                     && (m.detectorShape.size() == 0 || m.detectorShape.size() == m.meanShape.size())
-                    && m.textureMean.size() == 3 * m.levels[0].mean.size();
+                    && (m.detectorRegression.size() == 0
+                        || (m.detectorShape.size() > 0 && m.detectorRegression.rows() == m.meanShape.size()
+                            && m.detectorRegression.cols() == 10 && m.detectorKeypointMean.size() == 10))
+                    // Colour: 3 values per level-0 pixel; fitting: fitChannels() per pixel.
+                    && m.textureMean.size() * m.fitChannels() == 3 * m.levels[0].mean.size();
     for (int l = 0; ok && l < nl; ++l) {
         const AamTextureLevel &level = m.levels[size_t(l)];
-        ok = level.basis.rows() == level.mean.size() && level.variances.size() == level.basis.cols();
+        ok = level.basis.rows() == level.mean.size() && level.variances.size() == level.basis.cols()
+             && level.mean.size() % m.fitChannels() == 0;
     }
     if (!ok)
         throw Error("inconsistent AAM model (sizes disagree)", path);
@@ -298,7 +317,8 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
         if (bounded) {
             const Eigen::VectorXd reference = m.referenceShape(l);
             bounded = reference.allFinite() && reference.maxCoeff() < kMaxReferenceFrame;
-            if (bounded && !trianglesFitPixelCount(reference, m.triangles, m.levels[size_t(l)].mean.size()))
+            if (bounded && !trianglesFitPixelCount(reference, m.triangles,
+                                                    m.levels[size_t(l)].mean.size() / m.fitChannels()))
                 throw Error("inconsistent AAM model (level texture size)", path);
         }
     }
@@ -314,8 +334,8 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
     if (m.textureMean.size() != 3 * m.warp(0).pixelCount())
         throw Error("inconsistent AAM model (texture size)", path);
     for (int l = 0; l < nl; ++l)
-        if (m.levels[size_t(l)].mean.size() != m.warp(l).pixelCount()
-            || m.levels[size_t(l)].basis.rows() != m.warp(l).pixelCount())
+        if (m.levels[size_t(l)].mean.size() != m.fitChannels() * m.warp(l).pixelCount()
+            || m.levels[size_t(l)].basis.rows() != m.fitChannels() * m.warp(l).pixelCount())
             throw Error("inconsistent AAM model (level texture size)", path);
     return m;
 }

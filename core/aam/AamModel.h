@@ -19,6 +19,13 @@
 
 namespace lipsync {
 
+// What the fitter's texture models describe. Grey: the smoothed, normalised intensity (fast, what
+// person-specific tracking uses). GradientOrientation: the cosine and sine of the image gradient's
+// orientation per pixel (IGO; Tzimiropoulos, Zafeiriou & Pantic, "Subspace learning from image
+// gradient orientations", PAMI 2012; Tzimiropoulos & Pantic, ICCV 2013 fit AAMs in the wild with
+// them): invariant to lighting, twice the values per pixel.
+enum class AamFitFeatures { Grey = 0, GradientOrientation = 1 };
+
 struct AamTextureLevel
 {
     double scale = 1.0;       // size relative to level 0
@@ -30,7 +37,10 @@ struct AamTextureLevel
 class AamModel
 {
 public:
-    static constexpr int kFormatVersion = 1;
+    // Version 2 adds the detector keypoint regression and the fitting features; version 1 files
+    // (grey, no regression) still load and are written back as version 1, so their identifiers
+    // do not change.
+    static constexpr int kFormatVersion = 2;
 
     // Shape model, in normalised (centred, unit size) coordinates.
     Eigen::VectorXd meanShape;
@@ -52,14 +62,24 @@ public:
     Eigen::MatrixXd combinedBasis; // (ns + ng) x nc
     Eigen::VectorXd combinedVariances;
 
-    // Grey fitting models, level 0 first (finest).
+    // Fitting texture models, level 0 first (finest): fitChannels() values per reference pixel,
+    // channel after channel.
+    AamFitFeatures fitFeatures = AamFitFeatures::Grey;
     std::vector<AamTextureLevel> levels;
+    int fitChannels() const { return fitFeatures == AamFitFeatures::Grey ? 1 : 2; }
 
     // Where the face detector's keypoints put the face: the mean training shape in the frame of
     // the detector's eye centres and mouth corners (see initialShapeFromDetection). Corrects the
     // systematic offset between the detector's keypoints and the 23 points. Empty if the model
     // was built without a detector.
     Eigen::VectorXd detectorShape;
+    // Linear regression of the shape on all five detector keypoints in that frame: the start is
+    // detectorShape + detectorRegression (k - detectorKeypointMean), with k the 5 keypoints
+    // (eyes, nose tip, mouth corners; 10 values) mapped into the frame. The nose and the residual
+    // positions of the eyes and mouth corners say where the face turns and how its proportions
+    // differ from the mean. Empty when not calibrated (then the mean detectorShape is the start).
+    Eigen::MatrixXd detectorRegression; // 2k x 10
+    Eigen::VectorXd detectorKeypointMean; // 10
 
     int trainingImages = 0;
     // Stable identifier of this model (hash of its contents); dynamic models record it.

@@ -258,6 +258,16 @@ Eigen::VectorXd detectionAnchors(const FaceDetection &face)
     return anchors;
 }
 
+Eigen::VectorXd detectionKeypoints(const FaceDetection &face)
+{
+    if (!face.hasKeypoints)
+        return {};
+    Eigen::VectorXd k(10);
+    for (int i = 0; i < 5; ++i)
+        k.segment<2>(2 * i) = face.keypoints[size_t(i)];
+    return k;
+}
+
 Eigen::VectorXd initialShapeFromDetection(const Eigen::VectorXd &meanShape, const FaceDetection &face)
 {
     const Eigen::VectorXd model = keypointAnchors(meanShape);
@@ -277,7 +287,11 @@ Eigen::VectorXd initialShapeFromDetection(const AamModel &model, const FaceDetec
     if (face.hasKeypoints && model.detectorShape.size() == model.meanShape.size()) {
         // detectorShape lives in the frame where the keypoints sit on the mean shape's anchors.
         const Similarity t = alignSimilarity(keypointAnchors(model.meanShape), detectionAnchors(face));
-        return t.apply(model.detectorShape);
+        if (model.detectorRegression.size() == 0)
+            return t.apply(model.detectorShape);
+        const Eigen::VectorXd k = t.inverse().apply(detectionKeypoints(face));
+        return t.apply(Eigen::VectorXd(model.detectorShape
+                                       + model.detectorRegression * (k - model.detectorKeypointMean)));
     }
     return initialShapeFromDetection(model.meanShape, face);
 }

@@ -68,11 +68,15 @@ Eigen::VectorXd keypointAnchors(const Eigen::VectorXd &shape);
 // The detector keypoints matching keypointAnchors() (flat, 8 values); empty without keypoints.
 Eigen::VectorXd detectionAnchors(const FaceDetection &face);
 
+// All five keypoints (flat, 10 values: eyes, nose tip, mouth corners); empty without keypoints.
+Eigen::VectorXd detectionKeypoints(const FaceDetection &face);
+
 // Places `meanShape` (normalised 23 points) on a detection: a similarity fitted to the eye
 // centres and mouth corners for keypoint detections, or to fixed fractions of the box for Haar.
 Eigen::VectorXd initialShapeFromDetection(const Eigen::VectorXd &meanShape,
                                           const FaceDetection &face);
-// As above with a model: uses its detector-calibrated shape when it has one.
+// As above with a model: uses its detector-calibrated shape when it has one, and its regression
+// on all five keypoints (AamModel::detectorRegression) when it has that too.
 class AamModel;
 Eigen::VectorXd initialShapeFromDetection(const AamModel &model, const FaceDetection &face);
 

@@ -63,6 +63,27 @@ const std::vector<std::pair<int, int>> &landmarkConnections()
     return connections;
 }
 
+int mirroredLandmark(int index)
+{
+    // Eyes swap corner for corner and lid for lid, the mouth corners and the off-centre lip
+    // points swap, the lip centres and the chin stay, the jaw points swap in pairs.
+    static constexpr std::array<int, scheme23::kPointCount> mirror{
+        6, 5, 4, 7, 2, 1, 0, 3, 12, 11, 10, 9, 8, 15, 14, 13, 16, 17, 22, 21, 20, 19, 18};
+    return index >= 0 && index < scheme23::kPointCount ? mirror[size_t(index)] : -1;
+}
+
+Eigen::VectorXd mirrorShape(const Eigen::VectorXd &shape, int imageWidth)
+{
+    Eigen::VectorXd out(shape.size());
+    const int n = int(shape.size() / 2);
+    for (int i = 0; i < n; ++i) {
+        const int j = n == scheme23::kPointCount ? mirroredLandmark(i) : i;
+        out[2 * j] = double(imageWidth - 1) - shape[2 * i];
+        out[2 * j + 1] = shape[2 * i + 1];
+    }
+    return out;
+}
+
 std::vector<int> landmarkIndices(LandmarkFeature feature)
 {
     std::vector<int> out;
@@ -84,7 +105,8 @@ std::string landmarkSchemeJson()
           << landmarkFeatureName(d.feature) << "\", \"ibug68\": [" << d.ibugA;
         if (d.ibugB >= 0)
             s << ", " << d.ibugB;
-        s << "]}" << (i + 1 < defs.size() ? "," : "") << "\n";
+        s << "], \"mirror\": " << mirroredLandmark(int(i)) << "}" << (i + 1 < defs.size() ? "," : "")
+          << "\n";
     }
     s << "  ],\n  \"connections\": [";
     const auto &con = landmarkConnections();

@@ -47,6 +47,15 @@ std::vector<int> landmarkIndices(LandmarkFeature feature);
 std::string landmarkSchemeJson();
 
 // Shapes in core/aam are flat interleaved vectors (x0, y0, x1, y1, ...).
+// The point a horizontal mirror image maps point `index` to (left and right swap; points on the
+// face's midline map to themselves): the scheme's own symmetric permutation.
+int mirroredLandmark(int index);
+// The shape of the mirrored image (x -> imageWidth - 1 - x, 0-based pixels) with the points
+// renumbered by mirroredLandmark(), so it is again a valid 23-point shape; mirroring twice with the
+// same width is the identity. imageWidth 0 mirrors about x = -0.5 (for centred, normalised shapes
+// use mirrorShape(shape, 0) and translate).
+Eigen::VectorXd mirrorShape(const Eigen::VectorXd &shape, int imageWidth);
+
 // Maps 68 iBUG points (flat, 136 values) to the 23-point scheme (46 values).
 Eigen::VectorXd mapIbug68To23(const Eigen::VectorXd &ibug68);
 

@@ -82,6 +82,33 @@ private slots:
         QVERIFY2(jw["nme_mean"].toDouble() < 0.05, qPrintable(QString::number(jw["nme_mean"].toDouble())));
     }
 
+    void aamBuildGenericAndEvalWithPriorWeight()
+    {
+        // --generic: mirrored images (twice the examples) and gradient-orientation textures.
+        const QString model = m_dir.path() + "/generic.aam";
+        const Run r = runLipsync({"aam", "build", "--images", m_dir.path() + "/train", "--out", model,
+                                  "--generic", "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject j = parseJsonObject(r.out);
+        QCOMPARE(j["images"].toInt(), 36);
+        QVERIFY(j["mirrored"].toBool());
+        QCOMPARE(j["features"].toString(), QString("igo"));
+        const Run w = runLipsync({"aam", "eval", "--model", model, "--images", m_dir.path() + "/test",
+                                  "--algorithm", "wiberg", "--multi-start", "--prior-weight", "5", "--json"});
+        QVERIFY2(w.exitCode == 0, w.err.constData());
+        const QJsonObject jw = parseJsonObject(w.out);
+        QCOMPARE(jw["prior_weight"].toDouble(), 5.0);
+        QVERIFY2(jw["nme_mean"].toDouble() < 0.05, qPrintable(QString::number(jw["nme_mean"].toDouble())));
+        QVERIFY(jw["nme_mean"].toDouble() < jw["nme_init_mean"].toDouble());
+        // Bad values are usage errors.
+        QCOMPARE(runLipsync({"aam", "build", "--images", m_dir.path() + "/train", "--out", model, "--features",
+                             "colour"}).exitCode,
+                 2);
+        QCOMPARE(runLipsync({"aam", "eval", "--model", model, "--images", m_dir.path(), "--prior-weight", "-1"})
+                     .exitCode,
+                 2);
+    }
+
     void landmarksDetectVideoFrame()
     {
         const QString out = m_dir.path() + "/frame10.pts";

@@ -256,6 +256,82 @@ private slots:
         QVERIFY((m_model.combinedFromParts(bs, bg) - c).norm() < 1e-9);
     }
 
+    void mirrorAugmentationDoublesTheTrainingSetAndSymmetrisesTheMean()
+    {
+        Feedback feedback;
+        AamBuildOptions options;
+        options.mirror = true;
+        const AamModel mirrored = buildAam(gridExamples(false), options, feedback);
+        QCOMPARE(mirrored.trainingImages, 36);
+        // The mean of a set closed under mirroring is its own mirror, up to a similarity.
+        const Eigen::VectorXd flipped = mirrorShape(mirrored.meanShape, 1);
+        const Eigen::VectorXd aligned = alignSimilarity(flipped, mirrored.meanShape).apply(flipped);
+        const double asymmetry = (aligned - mirrored.meanShape).norm();
+        const Eigen::VectorXd plainFlipped = mirrorShape(m_model.meanShape, 1);
+        const double plainAsymmetry =
+            (alignSimilarity(plainFlipped, m_model.meanShape).apply(plainFlipped) - m_model.meanShape).norm();
+        QVERIFY2(asymmetry < 1e-3 * shapeSize(mirrored.meanShape), qPrintable(QString::number(asymmetry)));
+        QVERIFY(asymmetry < 0.1 * plainAsymmetry);
+        // More data: at least as many shape modes as without mirroring.
+        QVERIFY(mirrored.shapeModes() >= m_model.shapeModes());
+    }
+
+    void detectorRegressionStartsFromAllFiveKeypoints()
+    {
+        FaceDetectorPaths paths;
+        paths.useDlib = false;
+        FaceDetector detector(paths);
+        QVERIFY2(detector.hasYunet(), "the YuNet model in resources/models was not found");
+        Feedback feedback;
+        AamBuildOptions options;
+        options.detector = &detector;
+        const AamModel model = buildAam(gridExamples(false), options, feedback);
+        QCOMPARE(model.detectorShape.size(), Eigen::Index(46));
+        QCOMPARE(model.detectorRegression.rows(), Eigen::Index(46));
+        QCOMPARE(model.detectorRegression.cols(), Eigen::Index(10));
+        QCOMPARE(model.detectorKeypointMean.size(), Eigen::Index(10));
+        QVERIFY(model.detectorRegression.allFinite() && model.detectorRegression.norm() > 0);
+
+        // Keypoints at their training mean: the start moves with the keypoints (a similarity of
+        // them moves it by the same similarity) and is near the calibrated mean shape.
+        auto detection = [](const Eigen::VectorXd &k) {
+            FaceDetection face;
+            face.hasKeypoints = true;
+            for (int i = 0; i < 5; ++i)
+                face.keypoints[size_t(i)] = k.segment<2>(2 * i);
+            return face;
+        };
+        const Similarity move{1.7, 0.2, 40.0, 25.0};
+        FaceDetection face = detection(move.apply(model.detectorKeypointMean));
+        const Eigen::VectorXd start = initialShapeFromDetection(model, face);
+        const Eigen::VectorXd atMean = initialShapeFromDetection(model, detection(model.detectorKeypointMean));
+        QVERIFY((start - move.apply(atMean)).cwiseAbs().maxCoeff() < 1e-6);
+        QVERIFY(normalisedMeanError(atMean, model.detectorShape) < 0.02);
+        // A nose further to the image right moves the start: the regression uses it.
+        face.keypoints[2].x() += 5.0;
+        QVERIFY((initialShapeFromDetection(model, face) - start).cwiseAbs().maxCoeff() > 0.1);
+
+        // Held-out frames: the regression start is close to the truth.
+        for (const auto &e : gridExamples(true)) {
+            const cv::Mat image = cv::imread(e.imagePath);
+            const auto faces = detector.detect(image);
+            QVERIFY(!faces.empty());
+            const double nme = normalisedMeanError(initialShapeFromDetection(model, faces.front()), e.shape);
+            QVERIFY2(nme < 0.1, qPrintable(QString::number(nme)));
+        }
+
+        // Saved as version 2 with the regression; a model without it stays version 1.
+        QTemporaryDir dir;
+        const std::string path = (dir.path() + "/r.aam").toStdString();
+        model.save(path);
+        QCOMPARE(int(readWholeFile(path)[8]), 2);
+        const AamModel back = AamModel::load(path);
+        QCOMPARE(back.identifier, model.identifier);
+        QVERIFY(back.detectorRegression.isApprox(model.detectorRegression));
+        m_model.save(path);
+        QCOMPARE(int(readWholeFile(path)[8]), 1);
+    }
+
     void saveLoadRoundTrip()
     {
         QTemporaryDir dir;
@@ -296,16 +372,37 @@ private slots:
     void fitConvergesOnHeldOutFrame_data()
     {
         QTest::addColumn<int>("algorithm");
-        QTest::newRow("project-out") << int(AamFitAlgorithm::ProjectOut);
-        QTest::newRow("wiberg") << int(AamFitAlgorithm::Wiberg);
+        QTest::addColumn<bool>("gradientOrientation");
+        QTest::newRow("project-out") << int(AamFitAlgorithm::ProjectOut) << false;
+        QTest::newRow("wiberg") << int(AamFitAlgorithm::Wiberg) << false;
+        QTest::newRow("wiberg-igo") << int(AamFitAlgorithm::Wiberg) << true;
     }
 
     void fitConvergesOnHeldOutFrame()
     {
         QFETCH(int, algorithm);
+        QFETCH(bool, gradientOrientation);
         AamFitOptions options;
         options.algorithm = AamFitAlgorithm(algorithm);
-        const AamFitter fitter(m_model);
+        AamModel igo;
+        if (gradientOrientation) {
+            // Gradient-orientation textures: two values (cos, sin) per reference pixel per level,
+            // kept through a save and load (format version 2).
+            Feedback feedback;
+            AamBuildOptions build;
+            build.combinedVariance = 0.98;
+            build.fitFeatures = AamFitFeatures::GradientOrientation;
+            const AamModel built = buildAam(gridExamples(false), build, feedback);
+            QCOMPARE(built.levels[0].mean.size(), Eigen::Index(2 * built.warp(0).pixelCount()));
+            QTemporaryDir dir;
+            const std::string path = (dir.path() + "/igo.aam").toStdString();
+            built.save(path);
+            QCOMPARE(int(readWholeFile(path)[8]), 2);
+            igo = AamModel::load(path);
+            QCOMPARE(igo.identifier, built.identifier);
+            QVERIFY(igo.fitFeatures == AamFitFeatures::GradientOrientation);
+        }
+        const AamFitter fitter(gradientOrientation ? igo : m_model);
         int improved = 0;
         for (const auto &e : gridExamples(true)) {
             const cv::Mat image = cv::imread(e.imagePath);

@@ -44,6 +44,52 @@ private slots:
         QCOMPARE(QString::fromStdString(file), QString::fromStdString(landmarkSchemeJson()));
     }
 
+    void mirrorPermutationIsASymmetricInvolution()
+    {
+        const auto &defs = landmarkDefinitions();
+        for (int i = 0; i < 23; ++i) {
+            const int j = mirroredLandmark(i);
+            QVERIFY(j >= 0 && j < 23);
+            QCOMPARE(mirroredLandmark(j), i);                     // an involution
+            QVERIFY(defs[size_t(i)].feature == defs[size_t(j)].feature);
+        }
+        QCOMPARE(mirroredLandmark(scheme23::kLeftEyeOuter), scheme23::kRightEyeOuter);
+        QCOMPARE(mirroredLandmark(scheme23::kMouthLeft), scheme23::kMouthRight);
+        QCOMPARE(mirroredLandmark(20), 20); // chin
+        QCOMPARE(mirroredLandmark(23), -1);
+        // Connections map to connections: the mirror of the drawing is the drawing.
+        std::set<std::pair<int, int>> edges;
+        for (auto [a, b] : landmarkConnections())
+            edges.insert({std::min(a, b), std::max(a, b)});
+        for (auto [a, b] : landmarkConnections()) {
+            const int ma = mirroredLandmark(a), mb = mirroredLandmark(b);
+            QVERIFY(edges.count({std::min(ma, mb), std::max(ma, mb)}));
+        }
+    }
+
+    void mirroringTwiceIsIdentity()
+    {
+        const Eigen::VectorXd t = templateShape() * 200.0 + Eigen::VectorXd::Constant(46, 150.0);
+        const Eigen::VectorXd m = mirrorShape(t, 320);
+        QVERIFY((m - t).cwiseAbs().maxCoeff() > 1.0);
+        QVERIFY((mirrorShape(m, 320) - t).cwiseAbs().maxCoeff() < 1e-12);
+        // x -> 319 - x, points renumbered: the image-left eye's outer corner comes from the right.
+        QCOMPARE(m[2 * scheme23::kLeftEyeOuter], 319.0 - t[2 * scheme23::kRightEyeOuter]);
+        QCOMPARE(m[2 * scheme23::kLeftEyeOuter + 1], t[2 * scheme23::kRightEyeOuter + 1]);
+        QVERIFY(m[2 * scheme23::kLeftEyeOuter] < m[2 * scheme23::kRightEyeOuter]);
+    }
+
+    void symmetricTemplateIsItsOwnMirror()
+    {
+        // The template made symmetric about x = 0 (mirrorShape with width 1 maps x to -x).
+        const Eigen::VectorXd t = templateShape();
+        const Eigen::VectorXd symmetric = 0.5 * (t + mirrorShape(t, 1));
+        QVERIFY((mirrorShape(symmetric, 1) - symmetric).cwiseAbs().maxCoeff() < 1e-12);
+        // The template is nearly symmetric already: its midline points lie near x = 0.
+        QVERIFY((symmetric - t).cwiseAbs().maxCoeff() < 0.03);
+        QVERIFY(std::abs(symmetric[2 * 20]) < 1e-12);
+    }
+
     void mapsIbug68()
     {
         Eigen::VectorXd ibug(136);
