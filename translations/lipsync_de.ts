@@ -223,143 +223,143 @@
 <context>
     <name>lipsync::studio::ExportMenu</name>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="56"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="47"/>
         <source>E&amp;xport</source>
         <translation>E&amp;xportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="59"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="50"/>
         <source>Generated &amp;Video (MP4)…</source>
         <translation>Erzeugtes &amp;Video (MP4)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="59"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="50"/>
         <source>Real and Generated &amp;Side by Side (MP4)…</source>
         <translation>Echt und erzeugt &amp;nebeneinander (MP4)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="60"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="51"/>
         <source>Generated &amp;Frames (PNG)…</source>
         <translation>Erzeugte &amp;Einzelbilder (PNG)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="60"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="51"/>
         <source>F&amp;eatures (CSV)…</source>
         <translation>M&amp;erkmale (CSV)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="61"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="52"/>
         <source>&amp;Alignment (TextGrid)…</source>
         <translation>&amp;Alignierung (TextGrid)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="61"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="52"/>
         <source>&amp;Landmarks (.pts)…</source>
         <translation>&amp;Landmarken (.pts)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="62"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="53"/>
         <source>Active Appearance &amp;Model…</source>
         <translation>Active Appearance &amp;Model…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="62"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="53"/>
         <source>&amp;Trained Dynamic Model…</source>
         <translation>&amp;Trainiertes dynamisches Modell…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="114"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="115"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="105"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="106"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="117"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="108"/>
         <source>Feature tables (*.csv)</source>
         <translation>Merkmalstabellen (*.csv)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="118"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="109"/>
         <source>Praat TextGrid (*.TextGrid)</source>
         <translation>Praat-TextGrid (*.TextGrid)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="120"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="111"/>
         <source>Active appearance models (*.aam)</source>
         <translation>Active Appearance Models (*.aam)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="121"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="112"/>
         <source>Dynamic models (*.model)</source>
         <translation>Dynamische Modelle (*.model)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="137"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="128"/>
         <source>Cannot export</source>
         <translation>Export nicht möglich</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="139"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="130"/>
         <source>no sequence is selected</source>
         <translation>keine Sequenz ausgewählt</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="156"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="147"/>
         <source>the project has no trained dynamic model and AAM (train one in the Models panel)</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell und kein AAM (im Bereich Modelle trainieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="171"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="162"/>
         <source>Export the generated frames of %1</source>
         <translation>Erzeugte Einzelbilder von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="172"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="163"/>
         <source>Export the generated video of %1</source>
         <translation>Erzeugtes Video von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="195"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="186"/>
         <source>%1 has no face features (track it first)</source>
         <translation>%1 hat keine Gesichtsmerkmale (zuerst verfolgen)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="198"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="189"/>
         <source>Export the features of %1</source>
         <translation>Merkmale von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="206"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="197"/>
         <source>%1 has no phone alignment (align it first)</source>
         <translation>%1 hat keine Phonem-Alignierung (zuerst alignieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="209"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="200"/>
         <source>Export the alignment of %1</source>
         <translation>Alignierung von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="222"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="213"/>
         <source>%1 has no landmarks</source>
         <translation>%1 hat keine Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="225"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="216"/>
         <source>Export the landmarks of %1</source>
         <translation>Landmarken von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="246"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="237"/>
         <source>the project has no AAM</source>
         <translation>das Projekt hat kein AAM</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="247"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="238"/>
         <source>the project has no trained dynamic model</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="251"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="242"/>
         <source>Export %1</source>
         <translation>%1 exportieren</translation>
     </message>
@@ -472,17 +472,17 @@
         <translation>Das AAM des Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="379"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="377"/>
         <source>An AAM needs at least 3 frames with all 23 points; this project has %1.</source>
         <translation>Ein AAM braucht mindestens 3 Bilder mit allen 23 Punkten; dieses Projekt hat %1.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="381"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="379"/>
         <source>Label more frames (Detect Landmarks, then correct the points).</source>
         <translation>Beschriften Sie weitere Bilder (Landmarken erkennen, dann die Punkte korrigieren).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="388"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="386"/>
         <source>Build AAM from %n frame(s)</source>
         <translation>
             <numerusform>AAM aus %n Bild erstellen</numerusform>
@@ -490,22 +490,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="390"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="388"/>
         <source>Reading the labelled frames…</source>
         <translation>Beschriftete Bilder werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="422"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="420"/>
         <source>Build AAM %1</source>
         <translation>AAM %1 erstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="426"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="424"/>
         <source>AAM %1 built from %2 frames: %3 combined modes%4</source>
         <translation>AAM %1 aus %2 Bildern erstellt: %3 kombinierte Moden%4</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="430"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="428"/>
         <source> (%n frame(s) skipped)</source>
         <translation>
             <numerusform> (%n Bild übersprungen)</numerusform>
@@ -513,27 +513,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="435"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="433"/>
         <source>The AAM could not be built.</source>
         <translation>Das AAM konnte nicht erstellt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="447"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="444"/>
         <source>Tracking needs an AAM.</source>
         <translation>Zum Verfolgen wird ein AAM benötigt.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="448"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="445"/>
         <source>Label a few frames and choose Faces ▸ Build AAM first.</source>
         <translation>Beschriften Sie einige Bilder und wählen Sie zuerst Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="466"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="463"/>
         <source>Track %1</source>
         <translation>%1 verfolgen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="466"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="463"/>
         <source>Track %n sequence(s)</source>
         <translation>
             <numerusform>%n Sequenz verfolgen</numerusform>
@@ -541,7 +541,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="536"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="533"/>
         <source>Tracking failed.</source>
         <translation>Das Verfolgen ist fehlgeschlagen.</translation>
     </message>
@@ -1028,13 +1028,13 @@
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter verfolgen und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="315"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="351"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="320"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="356"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="317"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="322"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -1042,37 +1042,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="336"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="341"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="360"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="365"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="362"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="367"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="369"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="374"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="391"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="396"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="392"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="397"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="402"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="407"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -1080,7 +1080,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="410"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="415"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Folds.</numerusform>
@@ -1088,38 +1088,38 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="417"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="422"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="450"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="455"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="455"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="460"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="346"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="480"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="351"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="482"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="499"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="501"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter verfolgen)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="509"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="511"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="536"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="537"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>
@@ -1262,133 +1262,133 @@
 <context>
     <name>lipsync::studio::PreviewPanel</name>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="60"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="58"/>
         <source>Loop selection</source>
         <translation>Auswahl wiederholen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="60"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="58"/>
         <source>Landmarks</source>
         <translation>Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="61"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="59"/>
         <source>Generate from Speech…</source>
         <translation>Aus Sprache erzeugen…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="62"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="60"/>
         <source>Back to Sequence</source>
         <translation>Zurück zur Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="75"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="73"/>
         <source>Previous frame</source>
         <translation>Vorheriges Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="77"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="75"/>
         <source>Next frame</source>
         <translation>Nächstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="81"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="79"/>
         <source>Scrub through the frames</source>
         <translation>Durch die Bilder fahren</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="82"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="80"/>
         <source>Play the timeline&apos;s selection (or everything) over and over</source>
         <translation>Die Auswahl der Zeitleiste (oder alles) immer wieder abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="83"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="81"/>
         <source>Show the tracked points on the recorded video and the generated points on the generated faces</source>
         <translation>Die verfolgten Punkte auf dem aufgenommenen Video und die erzeugten Punkte auf den erzeugten Gesichtern zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="84"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="82"/>
         <source>Generate faces for any recording with a transcript</source>
         <translation>Gesichter für eine beliebige Aufnahme mit Transkript erzeugen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="85"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="83"/>
         <source>Show the current sequence again</source>
         <translation>Die aktuelle Sequenz wieder zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="246"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="244"/>
         <source>Prepare the preview of %1</source>
         <translation>Vorschau von %1 vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="272"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="270"/>
         <source>The head could not be tracked: %1</source>
         <translation>Der Kopf konnte nicht verfolgt werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="321"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="319"/>
         <source>Recorded video</source>
         <translation>Aufgenommenes Video</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="326"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="324"/>
         <source>Generated: %1</source>
         <translation>Erzeugt: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="330"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="328"/>
         <source>Generated</source>
         <translation>Erzeugt</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="378"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="376"/>
         <source>The project has no appearance model (Faces ▸ Build AAM).</source>
         <translation>Das Projekt hat kein Erscheinungsmodell (Gesichter ▸ AAM erstellen).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="380"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="378"/>
         <source>Tracking the head pose…</source>
         <translation>Kopfhaltung wird verfolgt…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="382"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="380"/>
         <source>This sequence has no phones (align it in the Timeline).</source>
         <translation>Diese Sequenz hat keine Phoneme (in der Zeitleiste alignieren).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="384"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="382"/>
         <source>Train a dynamic model in the Models panel to see the faces it generates.</source>
         <translation>Trainieren Sie ein dynamisches Modell im Bereich „Modelle“, um die erzeugten Gesichter zu sehen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="433"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="431"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 — Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="542"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="540"/>
         <source>Faces for new speech need the project&apos;s appearance model.</source>
         <translation>Gesichter für neue Sprache brauchen das Erscheinungsmodell des Projekts.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="543"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="541"/>
         <source>Build one with Faces ▸ Build AAM.</source>
         <translation>Erstellen Sie eines mit Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="548"/>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="602"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="546"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="601"/>
         <source>No faces could be generated for this speech.</source>
         <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="549"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="547"/>
         <source>Train a dynamic model in the Models panel first.</source>
         <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="570"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="569"/>
         <source>Generate faces for %1</source>
         <translation>Gesichter für %1 erzeugen</translation>
     </message>
@@ -1404,68 +1404,73 @@
 <context>
     <name>lipsync::studio::ProjectFiles</name>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="32"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="31"/>
+        <source>Autosave failed (unsaved changes are only in memory; the project on disk is untouched): %1</source>
+        <translation>Automatisches Speichern fehlgeschlagen (ungespeicherte Änderungen sind nur im Speicher; das Projekt auf der Festplatte ist unverändert): %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ProjectFiles.cpp" line="42"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="33"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="43"/>
         <source>LipSync projects (project.json)</source>
         <translation>LipSync-Projekte (project.json)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="47"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="57"/>
         <source>The project could not be opened.</source>
         <translation>Das Projekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="78"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="88"/>
         <source>The bundled demo project was not found.</source>
         <translation>Das mitgelieferte Demoprojekt wurde nicht gefunden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="79"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="89"/>
         <source>Looked in $LIPSYNC_DEMO_DIR, &lt;prefix&gt;/share/lipsync/demo and the source tree.</source>
         <translation>Gesucht in $LIPSYNC_DEMO_DIR, &lt;prefix&gt;/share/lipsync/demo und im Quellbaum.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="86"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="96"/>
         <source>The demo project could not be opened.</source>
         <translation>Das Demoprojekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="108"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="118"/>
         <source>Save Project As (a folder)</source>
         <translation>Projekt speichern unter (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="113"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="132"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="123"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="142"/>
         <source>The project could not be saved.</source>
         <translation>Das Projekt konnte nicht gespeichert werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="114"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="124"/>
         <source>a file of that name exists; a project needs a folder</source>
         <translation>es gibt eine Datei dieses Namens; ein Projekt braucht einen Ordner</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="119"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="129"/>
         <source>Replace Project</source>
         <translation>Projekt ersetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="120"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="130"/>
         <source>%1 already holds a project. Replace it?</source>
         <translation>%1 enthält bereits ein Projekt. Ersetzen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="145"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="155"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="145"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="155"/>
         <source>The project has unsaved changes. Save them?</source>
         <translation>Das Projekt hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
@@ -2089,22 +2094,22 @@
 <context>
     <name>lipsync::studio::TimelinePanel</name>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="121"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
         <source>Zoom out (wheel down)</source>
         <translation>Verkleinern (Mausrad nach unten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="122"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
         <source>Zoom in (wheel up)</source>
         <translation>Vergrößern (Mausrad nach oben)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
@@ -2139,137 +2144,147 @@
         <translation>Den ausgewählten Abschnitt neu ausrichten; Wörter mit bearbeitetem Timing bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="83"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="85"/>
+        <source>Adapt to Speaker</source>
+        <translation>An Sprecher anpassen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="86"/>
+        <source>Adapt the aligner to each recording&apos;s voice before aligning it (slower; better for speakers unlike the built-in model&apos;s)</source>
+        <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Sprecher, die dem eingebauten Modell unähnlich sind)</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="92"/>
         <source>Split at Cursor</source>
         <translation>Am Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="83"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="92"/>
         <source>Split the interval under the cursor</source>
         <translation>Das Intervall unter dem Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="84"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="93"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="84"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="93"/>
         <source>Join the selected interval with the next one</source>
         <translation>Das ausgewählte Intervall mit dem nächsten verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="86"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
         <source>Relabel…</source>
         <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="86"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
         <source>Change the label of the selected interval</source>
         <translation>Die Beschriftung des ausgewählten Intervalls ändern</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
         <source>Insert Silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
         <source>Make the selection a silence</source>
         <translation>Die Auswahl zur Stille machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="98"/>
         <source>Insert Breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="98"/>
         <source>Make the selection a breath</source>
         <translation>Die Auswahl zum Atmer machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="99"/>
         <source>Play Selection</source>
         <translation>Auswahl abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="99"/>
         <source>Play the selected stretch (Space in the timeline)</source>
         <translation>Den ausgewählten Abschnitt abspielen (Leertaste in der Zeitleiste)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="91"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="100"/>
         <source>Play Word</source>
         <translation>Wort abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="91"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="100"/>
         <source>Play the word under the cursor</source>
         <translation>Das Wort unter dem Cursor abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="92"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="101"/>
         <source>Play All</source>
         <translation>Alles abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="92"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="101"/>
         <source>Play the whole sequence</source>
         <translation>Die ganze Sequenz abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="93"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="102"/>
         <source>Pronunciations…</source>
         <translation>Aussprachen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="94"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="103"/>
         <source>The project&apos;s pronunciations, and the words espeak-ng guessed</source>
         <translation>Die Aussprachen des Projekts und die von espeak-ng geschätzten Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="148"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="157"/>
         <source>Show Spectrogram</source>
         <translation>Spektrogramm anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="149"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="158"/>
         <source>Show the spectrogram under the waveform in the timeline</source>
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="284"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="293"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="305"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="314"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="327"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="336"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="330"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="339"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="308"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="317"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="346"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="357"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="371"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="382"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -2277,7 +2292,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="390"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="401"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -2285,47 +2300,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="429"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="440"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="429"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="440"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="437"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="448"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="447"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="458"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="479"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="490"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="479"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="490"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="538"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="549"/>
         <source>Not one of the 41 phones (ARPAbet, sil, br)</source>
         <translation>Keines der 41 Phone (ARPAbet, sil, br)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="539"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="550"/>
         <source>Enter one word</source>
         <translation>Ein einzelnes Wort eingeben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="547"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="558"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>
