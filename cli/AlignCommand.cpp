@@ -10,8 +10,8 @@
 
 #include "align/AlignerUtterance.h"
 #include "align/ForcedAligner.h"
-#include "align/SpeakerAdaptation.h"
 #include "align/FrameLabels.h"
+#include "align/SpeakerAdaptation.h"
 #include "io/MediaInfo.h"
 #include "io/TextGrid.h"
 #include "io/Transcript.h"
@@ -23,6 +23,7 @@
 #include <QJsonArray>
 
 #include <cstdio>
+#include <optional>
 
 using namespace lipsync;
 
@@ -61,12 +62,10 @@ int runAlign(const QStringList &args)
     AlignmentResult result;
     AdaptationReport adaptation;
     try {
-        if (a.flag("adapt")) {
-            const AcousticModel adapted = SpeakerAdaptation::adapt(model, u.pronunciations, u.features, {}, nullptr, &adaptation);
-            result = ForcedAligner(adapted).align(u.features, u.words, u.pronunciations, u.duration);
-        } else {
-            result = ForcedAligner(model).align(u.features, u.words, u.pronunciations, u.duration);
-        }
+        std::optional<AcousticModel> adapted;
+        if (a.flag("adapt"))
+            adapted = SpeakerAdaptation::adapt(model, u.pronunciations, u.features, {}, nullptr, &adaptation);
+        result = ForcedAligner(adapted ? *adapted : model).align(u.features, u.words, u.pronunciations, u.duration);
     } catch (const Error &e) {
         throw Error(e.reason(), media.toStdString());
     }
