@@ -20,9 +20,18 @@ function(lipsync_core_module name)
     target_link_libraries(lipsync_${name} PUBLIC ${ARG_DEPS})
     target_compile_options(lipsync_${name} PRIVATE -Wall -Wextra)
     set_target_properties(lipsync_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    list(LENGTH cpp count)
+    if(count GREATER_EQUAL 4 AND "Eigen3::Eigen" IN_LIST ARG_DEPS)
+      lipsync_precompile(lipsync_${name})
+    endif()
   endif()
   target_link_libraries(lipsync_core INTERFACE lipsync_${name})
 endfunction()
+
+set(LIPSYNC_TEST_DEFINITIONS
+  LIPSYNC_TEST_DATA="${PROJECT_SOURCE_DIR}/tests/data"
+  LIPSYNC_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+  LIPSYNC_BINARY_DIR="${PROJECT_BINARY_DIR}")
 
 # lipsync_add_qtest(SOURCE [LIBS target...] [GUI])
 # One QtTest executable per tst_*.cpp, registered with ctest under its path-derived name.
@@ -35,10 +44,13 @@ function(lipsync_add_qtest source)
   set(target "${prefix}_${stem}")
   add_executable(${target} ${source})
   target_link_libraries(${target} PRIVATE ${ARG_LIBS} Qt6::Test)
-  target_compile_definitions(${target} PRIVATE
-    LIPSYNC_TEST_DATA="${PROJECT_SOURCE_DIR}/tests/data"
-    LIPSYNC_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
-    LIPSYNC_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  target_compile_definitions(${target} PRIVATE ${LIPSYNC_TEST_DEFINITIONS})
+  # The shared precompiled headers (cmake/PrecompiledHeaders.cmake), for tests of our libraries.
+  if(ARG_GUI)
+    lipsync_reuse_pch(${target} lipsync_test_pch_gui)
+  elseif(ARG_LIBS MATCHES "lipsync_")
+    lipsync_reuse_pch(${target} lipsync_test_pch)
+  endif()
   add_test(NAME ${target} COMMAND ${target})
   if(NOT ARG_TIMEOUT)
     set(ARG_TIMEOUT 300)

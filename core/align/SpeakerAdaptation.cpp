@@ -62,10 +62,9 @@ Eigen::MatrixXd solveBlock(const BlockStatistics &s)
         const Eigen::MatrixXd g = s.g[size_t(i)] + ridge * Eigen::MatrixXd::Identity(n + 1, n + 1);
         const Eigen::VectorXd k = s.k[size_t(i)] + ridge * identity;
         const Eigen::LDLT<Eigen::MatrixXd> ldlt(g);
-        Eigen::VectorXd row = ldlt.solve(k);
-        if (ldlt.info() != Eigen::Success || !row.allFinite())
-            row = identity;
-        w.row(i) = row.transpose();
+        const Eigen::VectorXd row = ldlt.solve(k);
+        const bool solved = ldlt.info() == Eigen::Success && row.allFinite();
+        w.row(i) = (solved ? row : identity).transpose();
     }
     return w;
 }

@@ -14,7 +14,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
-#include <QtConcurrent>
+#include <QtConcurrent/QtConcurrentRun>
 #include <QtDebug>
 
 namespace lipsync::studio {

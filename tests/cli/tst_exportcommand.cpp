@@ -11,7 +11,7 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
-#include <QtTest>
+#include <QTest>
 
 using lipsync::testing::Run;
 using lipsync::testing::parseJsonObject;

@@ -4,7 +4,7 @@
 #include "io/VideoReader.h"
 #include "util/Error.h"
 
-#include <QtTest>
+#include <QTest>
 
 #include <cmath>
 #include <numeric>

@@ -3,7 +3,7 @@
 #include "io/VideoReader.h"
 #include "util/Error.h"
 
-#include <QtTest>
+#include <QTest>
 
 #include <cmath>
 
