@@ -185,6 +185,12 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
             throw Error("no pronunciation for \"" + words[w] + "\"");
     if (samples.empty())
         throw Error("the audio is empty");
+    float peak = 0;
+    for (float v : samples)
+        peak = std::max(peak, std::abs(v));
+    // -80 dBFS (as prepareUtterance): nothing to align words to.
+    if (peak < 1e-4f)
+        throw Error("the audio is silent");
 
     // The grammar: [silw] word0 [silw] word1 ... [silw], a word being its variants in parallel.
     std::string jsgf = "#JSGF V1.0;\ngrammar align;\npublic <utterance> = [silw]";
