@@ -72,6 +72,19 @@ QStringList spokenWords(const Tier &words)
     return out;
 }
 
+// The user fixes `word`: moves its start 30 ms earlier (word and phone edge together). Returns
+// the fixed word interval (userEdited), or an empty interval when the word is not there.
+Interval fixWordStart(TierPair &tiers, const std::string &word)
+{
+    int w = -1;
+    for (int i = 0; i < int(tiers.words.intervals.size()); ++i)
+        if (tiers.words.intervals[size_t(i)].label == word)
+            w = i;
+    if (w <= 0 || !tieredit::moveBoundary(tiers, TierKind::Words, w, tiers.words.intervals[size_t(w)].start - 0.03))
+        return {};
+    return tiers.words.intervals[size_t(w)];
+}
+
 } // namespace
 
 class TestAlignTask : public QObject
@@ -120,14 +133,7 @@ private slots:
         const std::vector<AlignOutcome> first = run(runner, {wholeJob()});
         QVERIFY(first.size() == 1 && first[0].ok);
         TierPair edited = first[0].tiers;
-        // The user fixes "at": moves its start by 30 ms (word and phone edge together).
-        int w = -1;
-        for (int i = 0; i < int(edited.words.intervals.size()); ++i)
-            if (edited.words.intervals[size_t(i)].label == "at")
-                w = i;
-        QVERIFY(w > 0);
-        QVERIFY(tieredit::moveBoundary(edited, TierKind::Words, w, edited.words.intervals[size_t(w)].start - 0.03));
-        const Interval fixed = edited.words.intervals[size_t(w)];
+        const Interval fixed = fixWordStart(edited, "at");
         QVERIFY(fixed.userEdited);
 
         const auto stretches = realignStretches(edited, 0.0, 3.0);
@@ -175,13 +181,8 @@ private slots:
         checkContiguous(first[0].tiers.words, 2.96);
         checkContiguous(first[0].tiers.phones, 2.96);
         TierPair edited = first[0].tiers;
-        int w = -1;
-        for (int i = 0; i < int(edited.words.intervals.size()); ++i)
-            if (edited.words.intervals[size_t(i)].label == "at")
-                w = i;
-        QVERIFY(w > 0);
-        QVERIFY(tieredit::moveBoundary(edited, TierKind::Words, w, edited.words.intervals[size_t(w)].start - 0.03));
-        const Interval fixed = edited.words.intervals[size_t(w)];
+        const Interval fixed = fixWordStart(edited, "at");
+        QVERIFY(fixed.userEdited);
         job.current = edited;
         job.stretches = realignStretches(edited, 0.0, 3.0);
         QVERIFY(job.stretches.size() >= 2);
