@@ -3,7 +3,8 @@
 //   BM_Mfcc                 MFCC_0_D_A of 60 s of audio (real-time factor counter "rtf")
 //   BM_MfccAndAlign/A       MFCC + Viterbi alignment of the 10 GRID demo clips (x8) with the
 //                           shipped model on all cores, decoding excluded; "rtf" = wall seconds
-//                           per second of audio; A = 1: with speaker adaptation (align --adapt)
+//                           per second of audio; A = 1: with speaker adaptation (align --adapt);
+//                           A = 2: SphinxAligner (CMU Sphinx en-us, one decoder per thread)
 //   BM_TrainGrid20min       training on all 400 GRID s1 clips (20 min of audio), features given
 //   BM_EvalGridWords/A      train on 320 GRID s1 clips, align the other 80: share of word
 //                           boundaries within 40 ms of GRID's .align ("inner": without the
@@ -14,13 +15,16 @@
 //                           tier), for words whose phones agree with MFA's; N = 0: model trained on
 //                           those recordings, 1: on them plus GRID s1, 2: the shipped GRID s1 model,
 //                           3: the shipped model adapted to each recording (SpeakerAdaptation),
-//                           4: adapted to the three recordings together (one speaker; aligner adapt)
+//                           4: adapted to the three recordings together (one speaker; aligner adapt),
+//                           5: SphinxAligner (CMU Sphinx's generic en-us model, align --model sphinx)
+// LIPSYNC_SPHINX_ARGS="-name value ..." adds pocketsphinx options to SphinxAligner's (tuning).
 // LIPSYNC_BENCH_NORMALIZE=none|mean|cmvn chooses the per-utterance feature normalisation of the
 // models trained here (default: TrainerOptions' own).
 #include "align/AlignerTrainer.h"
 #include "align/AlignerUtterance.h"
 #include "align/ForcedAligner.h"
 #include "align/SpeakerAdaptation.h"
+#include "align/SphinxAligner.h"
 #include "util/PhoneSet.h"
 #include "io/AudioDecoder.h"
 #include "io/TextGrid.h"
@@ -39,6 +43,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <numeric>
 
@@ -54,6 +59,21 @@ const std::string kModel = LIPSYNC_SOURCE_DIR "/resources/aligner/grid-s1.aligne
 bool exists(const std::string &p)
 {
     return std::filesystem::exists(p);
+}
+
+// SphinxAligner with the options of $LIPSYNC_SPHINX_ARGS; null (and the benchmark skipped) when
+// the model is not installed.
+std::unique_ptr<SphinxAligner> sphinxAligner(benchmark::State &state)
+{
+    if (!SphinxAligner::available()) {
+        state.SkipWithError("CMU Sphinx en-us model (pocketsphinx-en-us) not installed");
+        return nullptr;
+    }
+    SphinxAligner::Options o;
+    const QStringList args = qEnvironmentVariable("LIPSYNC_SPHINX_ARGS").split(' ', Qt::SkipEmptyParts);
+    for (qsizetype i = 0; i + 1 < args.size(); i += 2)
+        o.extraArguments.emplace_back(args[i].toStdString(), args[i + 1].toStdString());
+    return std::make_unique<SphinxAligner>(o);
 }
 
 TrainerOptions benchOptions()
@@ -153,6 +173,10 @@ BENCHMARK(BM_Mfcc)->Unit(benchmark::kMillisecond);
 // Counter "rtf" = wall seconds per second of audio (target <= 0.02).
 void BM_MfccAndAlign(benchmark::State &state)
 {
+    const bool sphinx = state.range(0) == 2;
+    const std::unique_ptr<SphinxAligner> sphinxModel = sphinx ? sphinxAligner(state) : nullptr;
+    if (sphinx && !sphinxModel)
+        return;
     if (!exists(kModel)) {
         state.SkipWithError("no shipped model");
         return;
@@ -180,9 +204,18 @@ void BM_MfccAndAlign(benchmark::State &state)
     double audioSeconds = 0;
     for (int i : work)
         audioSeconds += clips[size_t(i)].duration;
+    if (sphinx) // the decoders (one per thread) are created once, outside the timing
+        QtConcurrent::blockingMap(work, [&](int i) {
+            const Clip &c = clips[size_t(i)];
+            sphinxModel->align(c.samples, c.words, c.pronunciations, c.duration);
+        });
     for (auto _ : state) {
         QtConcurrent::blockingMap(work, [&](int i) {
             const Clip &c = clips[size_t(i)];
+            if (sphinx) {
+                benchmark::DoNotOptimize(sphinxModel->align(c.samples, c.words, c.pronunciations, c.duration));
+                return;
+            }
             const Eigen::MatrixXf f = model.features(c.samples);
             benchmark::DoNotOptimize(alignUtterance(model, f, c.words, c.pronunciations, c.duration, state.range(0) == 1));
         });
@@ -190,7 +223,7 @@ void BM_MfccAndAlign(benchmark::State &state)
     state.counters["rtf"] = benchmark::Counter(state.iterations() * audioSeconds, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
     state.counters["audio_s"] = audioSeconds;
 }
-BENCHMARK(BM_MfccAndAlign)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_MfccAndAlign)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_TrainGrid20min(benchmark::State &state)
 {
@@ -262,6 +295,7 @@ BENCHMARK(BM_EvalGridWords)->Arg(0)->Arg(1)->Unit(benchmark::kSecond)->Iteration
 
 struct MfaFile
 {
+    std::string media;
     PreparedUtterance utterance;
     Tier words, phones;
 };
@@ -291,7 +325,7 @@ std::vector<MfaFile> mfaFiles()
         std::vector<std::string> list;
         for (const Interval &i : nonSilence(*words))
             list.push_back(i.label);
-        out.push_back({prepareUtterance(e.path().stem().string(), media, list, features, lexicon()), *words, *phones});
+        out.push_back({media, prepareUtterance(e.path().stem().string(), media, list, features, lexicon()), *words, *phones});
     }
     return out;
 }
@@ -340,6 +374,33 @@ void BM_EvalMfaPhones(benchmark::State &state)
         return;
     }
     const std::vector<MfaFile> files = mfaFiles();
+    if (state.range(0) == 5) {
+        const std::unique_ptr<SphinxAligner> sphinx = sphinxAligner(state);
+        if (!sphinx)
+            return;
+        int within = 0, total = 0, compared = 0, skipped = 0;
+        double audioSeconds = 0, alignSeconds = 0;
+        for (auto _ : state)
+            for (const MfaFile &f : files) {
+                const AudioBuffer audio = AudioDecoder::decode(f.media, SphinxAligner::kSampleRate);
+                const auto start = std::chrono::steady_clock::now();
+                const AlignmentResult r = sphinx->align(audio.samples, f.utterance.words, f.utterance.pronunciations,
+                                                        audio.duration());
+                alignSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                audioSeconds += audio.duration();
+                comparePhones(f, r, within, total, compared, skipped);
+            }
+        state.counters["within_25ms_pct"] = 100.0 * within / std::max(total, 1);
+        state.counters["boundaries"] = total;
+        state.counters["words_compared"] = compared;
+        state.counters["words_other_pronunciation"] = skipped;
+        state.counters["rtf_one_thread"] = alignSeconds / std::max(audioSeconds, 1e-9);
+        std::printf("mfa-tests (%zu files, SphinxAligner %s): %.1f%% of %d phone boundaries within 25 ms of MFA "
+                    "(%d words compared, %d with another pronunciation)\n",
+                    files.size(), qPrintable(qEnvironmentVariable("LIPSYNC_SPHINX_ARGS")),
+                    100.0 * within / std::max(total, 1), total, compared, skipped);
+        return;
+    }
     std::vector<TrainingUtterance> own;
     for (const MfaFile &f : files)
         own.push_back({f.utterance.id, f.utterance.features, f.utterance.pronunciations});
@@ -373,6 +434,6 @@ void BM_EvalMfaPhones(benchmark::State &state)
                 "(%d words compared, %d with another pronunciation)\n",
                 files.size(), speakerAdapt ? "shipped GRID s1 model adapted to all three" : adapt ? "shipped GRID s1 model adapted to each" : shipped ? "shipped GRID s1 model" : withGrid ? "trained on them + GRID s1" : "trained on them", 100.0 * within / std::max(total, 1), total, compared, skipped);
 }
-BENCHMARK(BM_EvalMfaPhones)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK(BM_EvalMfaPhones)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Arg(4)->Arg(5)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 } // namespace

@@ -1,10 +1,12 @@
-// lipsync align MEDIA --transcript FILE [--model MODEL] [--project DIR] [--pronunciations DICT]
-//               [--adapt] --out FILE.TextGrid [--json]
+// lipsync align MEDIA --transcript FILE [--model MODEL | --model sphinx[:DIR]] [--project DIR]
+//               [--pronunciations DICT] [--adapt] --out FILE.TextGrid [--json]
 // Forced alignment of one recording: writes a TextGrid with tiers "words" and "phones". Words
 // are pronounced from the project's pronunciations (--project), a CMU-format file (--pronunciations,
 // which wins), the CMU dictionary, then espeak-ng; --json lists the words espeak-ng guessed.
 // --adapt first adapts the model to the recording's speaker (SpeakerAdaptation: MLLR + MAP of the
 // means on the recording's own alignment, 3 passes), for voices unlike the model's training data.
+// --model sphinx aligns with CMU Sphinx's generic US-English model instead (SphinxAligner; the
+// Debian model folder, or DIR).
 #include "AlignerSupport.h"
 #include "Command.h"
 
@@ -12,6 +14,8 @@
 #include "align/ForcedAligner.h"
 #include "align/FrameLabels.h"
 #include "align/SpeakerAdaptation.h"
+#include "align/SphinxAligner.h"
+#include "io/AudioDecoder.h"
 #include "io/MediaInfo.h"
 #include "io/TextGrid.h"
 #include "io/Transcript.h"
@@ -38,34 +42,79 @@ QJsonArray tierJson(const Tier &tier)
     return out;
 }
 
+const char *kUsage =
+    "usage: lipsync align MEDIA --transcript FILE [--model MODEL | --model sphinx[:DIR]] [--project DIR]\n"
+    "                     [--pronunciations DICT] [--adapt] --out FILE.TextGrid [--json]\n"
+    "Forced alignment of one recording to its transcript; writes a TextGrid with tiers \"words\" and \"phones\".\n"
+    "  --model MODEL        an aligner model of ours (lipsync aligner train/adapt); default: the shipped\n"
+    "                       GRID s1 model (one speaker)\n"
+    "  --model sphinx[:DIR] CMU Sphinx's generic US-English triphone model (many speakers; Debian package\n"
+    "                       pocketsphinx-en-us, BSD-2) at its Debian folder, or at DIR\n"
+    "  --project DIR        pronounce words with the project's pronunciations first\n"
+    "  --pronunciations DICT  a CMU-format dictionary that wins over all others\n"
+    "  --adapt              adapt our model to the recording's speaker first (not with sphinx)\n"
+    "  --json               print the tiers, per-video-frame labels and the words espeak-ng guessed\n";
+
+// `--model sphinx` or `--model sphinx:DIR`: the model folder ("" = default); nullopt otherwise.
+std::optional<std::string> sphinxModel(const QString &model)
+{
+    if (model == QLatin1String("sphinx"))
+        return std::string();
+    if (model.startsWith(QLatin1String("sphinx:")))
+        return model.mid(7).toStdString();
+    return std::nullopt;
+}
+
 int runAlign(const QStringList &args)
 {
     const cli::Arguments a(args, cli::Arguments::defaultBooleanFlags() << QStringLiteral("adapt"));
+    if (a.flag("help")) {
+        std::fputs(kUsage, stdout);
+        return 0;
+    }
     const QStringList unknown = a.unknown({"transcript", "model", "out", "json", "pronunciations", "project", "adapt"});
     if (!unknown.isEmpty())
         return cli::fail(QStringLiteral("align: unknown option %1").arg(unknown.join(' ')), 2);
     if (a.positional().size() != 1 || a.value("transcript").isEmpty() || a.value("out").isEmpty())
-        return cli::fail(QStringLiteral("usage: lipsync align MEDIA --transcript FILE [--model MODEL] "
-                                        "[--project DIR] [--pronunciations DICT] [--adapt] --out FILE.TextGrid [--json]"), 2);
+        return cli::fail(QString::fromLatin1(kUsage).section(QLatin1Char('\n'), 0, 1).simplified(), 2);
+    const std::optional<std::string> sphinxDir = sphinxModel(a.value("model"));
+    if (sphinxDir && a.flag("adapt"))
+        return cli::fail(QStringLiteral("align: --adapt adapts our own models; the CMU Sphinx model is used as it is"), 2);
     const QString media = a.positional().front();
-    const QString modelPath = cli::alignerModelOrDefault(a.value("model"), QStringLiteral("align"));
     QElapsedTimer timer;
     timer.start();
-    const AcousticModel model = AcousticModel::load(modelPath.toStdString());
+    std::optional<SphinxAligner> sphinx;
+    std::optional<AcousticModel> model;
+    QString modelName;
+    if (sphinxDir) {
+        sphinx.emplace(SphinxAligner::Options{*sphinxDir, {}});
+        modelName = QStringLiteral("sphinx:") + QString::fromStdString(sphinx->modelDir());
+    } else {
+        modelName = cli::alignerModelOrDefault(a.value("model"), QStringLiteral("align"));
+        model = AcousticModel::load(modelName.toStdString());
+    }
     std::map<std::string, std::string> projectPronunciations;
     if (!a.value("project").isEmpty())
         projectPronunciations = Project::load(a.value("project").toStdString()).pronunciations;
     const auto lexicon = cli::makeLexicon(a.value("pronunciations"), projectPronunciations);
     const Transcript transcript = readTranscript(a.value("transcript").toStdString());
+    // Our models' features; for sphinx only the checked audio and the pronunciations matter.
+    const AcousticModel plainFeatures = featureModel(TrainerOptions{});
+    const AcousticModel &featureSource = model ? *model : plainFeatures;
     const PreparedUtterance u = prepareUtterance(QFileInfo(media).completeBaseName().toStdString(),
-                                                 media.toStdString(), transcript.words, model, *lexicon);
+                                                 media.toStdString(), transcript.words, featureSource, *lexicon);
     AlignmentResult result;
     AdaptationReport adaptation;
     try {
-        std::optional<AcousticModel> adapted;
-        if (a.flag("adapt"))
-            adapted = SpeakerAdaptation::adapt(model, u.pronunciations, u.features, {}, nullptr, &adaptation);
-        result = ForcedAligner(adapted ? *adapted : model).align(u.features, u.words, u.pronunciations, u.duration);
+        if (sphinx) {
+            const AudioBuffer audio = AudioDecoder::decode(media.toStdString(), SphinxAligner::kSampleRate);
+            result = sphinx->align(audio.samples, u.words, u.pronunciations, u.duration);
+        } else {
+            std::optional<AcousticModel> adapted;
+            if (a.flag("adapt"))
+                adapted = SpeakerAdaptation::adapt(*model, u.pronunciations, u.features, {}, nullptr, &adaptation);
+            result = ForcedAligner(adapted ? *adapted : *model).align(u.features, u.words, u.pronunciations, u.duration);
+        }
     } catch (const Error &e) {
         throw Error(e.reason(), media.toStdString());
     }
@@ -79,7 +128,7 @@ int runAlign(const QStringList &args)
         if (info.hasVideo && info.frameRate > 0) {
             frameRate = info.frameRate;
             for (const std::string &label : voteFrameLabels(result.phones, info.frameRate, info.frameCount,
-                                                            model.featureOptions()))
+                                                            model ? model->featureOptions() : MfccOptions{}))
                 frameLabels.append(QString::fromStdString(label));
         }
         QJsonArray adaptationLogLikelihoods;
@@ -96,7 +145,7 @@ int runAlign(const QStringList &args)
             {QStringLiteral("frameRate"), frameRate},
             {QStringLiteral("frameLabels"), frameLabels},
             {QStringLiteral("media"), media},
-            {QStringLiteral("model"), modelPath},
+            {QStringLiteral("model"), modelName},
             {QStringLiteral("out"), a.value("out")},
             {QStringLiteral("duration"), u.duration},
             {QStringLiteral("frames"), result.frames},

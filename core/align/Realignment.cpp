@@ -98,6 +98,7 @@ Realignment::Realignment(const Tier &words, const Tier &phones, std::vector<Stre
             continue; // a silence's edges are its neighbours' edges
         const int first = int(m_words.size());
         m_words.insert(m_words.end(), inside.begin(), inside.end());
+        m_wordSpans.insert(m_wordSpans.end(), inside.size(), {iv.start, iv.end});
         const int last = int(m_words.size()) - 1;
         if (kept(iv.start))
             m_fixed.push_back(FixedBoundary{first, FixedBoundary::Side::Start, iv.start});
@@ -106,14 +107,23 @@ Realignment::Realignment(const Tier &words, const Tier &phones, std::vector<Stre
     }
 }
 
+namespace {
+
+void unbracketBreaths(Tier &words)
+{
+    for (Interval &iv : words.intervals)
+        if (iv.label.size() > 2 && iv.label.front() == '[' && PhoneSet::index(iv.label.substr(1, iv.label.size() - 2)) == PhoneSet::kBreath)
+            iv.label = iv.label.substr(1, iv.label.size() - 2);
+}
+
+} // namespace
+
 AlignmentResult Realignment::run(const ForcedAligner &aligner, const Eigen::MatrixXf &features,
                                  const std::vector<std::vector<Pronunciation>> &pronunciations,
                                  double audioDuration) const
 {
     AlignmentResult aligned = aligner.align(features, m_words, pronunciations, audioDuration, m_fixed);
-    for (Interval &iv : aligned.words.intervals)
-        if (iv.label.size() > 2 && iv.label.front() == '[' && PhoneSet::index(iv.label.substr(1, iv.label.size() - 2)) == PhoneSet::kBreath)
-            iv.label = iv.label.substr(1, iv.label.size() - 2);
+    unbracketBreaths(aligned.words);
     AlignmentResult out;
     out.words = m_wordTier;
     out.phones = m_phoneTier;
@@ -125,6 +135,47 @@ AlignmentResult Realignment::run(const ForcedAligner &aligner, const Eigen::Matr
     out.phones.name = "phones";
     out.logLikelihood = aligned.logLikelihood;
     out.frames = aligned.frames;
+    return out;
+}
+
+AlignmentResult Realignment::runPiecewise(const SphinxAligner &aligner, const std::vector<float> &samples,
+                                          const std::vector<std::vector<Pronunciation>> &pronunciations,
+                                          Feedback *feedback) const
+{
+    AlignmentResult out;
+    out.words = m_wordTier;
+    out.phones = m_phoneTier;
+    const double rate = SphinxAligner::kSampleRate;
+    for (const auto &[a, b] : m_stretches) {
+        std::vector<std::string> words;
+        std::vector<std::vector<Pronunciation>> prons;
+        for (size_t i = 0; i < m_words.size(); ++i)
+            if (m_wordSpans[i].first >= a - kEps && m_wordSpans[i].second <= b + kEps) {
+                words.push_back(m_words[i]);
+                prons.push_back(pronunciations.at(i));
+            }
+        if (words.empty())
+            continue;
+        const size_t from = std::min(samples.size(), size_t(std::max(0.0, a * rate)));
+        const size_t to = std::min(samples.size(), size_t(std::max(0.0, b * rate)));
+        const std::vector<float> piece(samples.begin() + long(from), samples.begin() + long(to));
+        AlignmentResult aligned = aligner.align(piece, words, prons, b - a, feedback);
+        unbracketBreaths(aligned.words);
+        for (Tier *tier : {&aligned.words, &aligned.phones})
+            for (Interval &iv : tier->intervals) {
+                iv.start += a;
+                iv.end += a;
+            }
+        // The piece's own edges are the stretch's (no rounding drift at the kept neighbours).
+        aligned.words.intervals.front().start = aligned.phones.intervals.front().start = a;
+        aligned.words.intervals.back().end = aligned.phones.intervals.back().end = b;
+        splice(out.words, a, b, aligned.words);
+        splice(out.phones, a, b, aligned.phones);
+        out.logLikelihood += aligned.logLikelihood;
+        out.frames += aligned.frames;
+    }
+    out.words.name = "words";
+    out.phones.name = "phones";
     return out;
 }
 

@@ -6,6 +6,7 @@
 // tiers. So the re-aligned words meet the kept ones exactly, and the Viterbi path still sees the
 // whole utterance.
 #include "align/ForcedAligner.h"
+#include "align/SphinxAligner.h"
 
 #include <utility>
 #include <vector>
@@ -36,11 +37,20 @@ public:
     AlignmentResult run(const ForcedAligner &aligner, const Eigen::MatrixXf &features,
                         const std::vector<std::vector<Pronunciation>> &pronunciations, double audioDuration) const;
 
+    // The CMU Sphinx aligner takes no fixed boundaries: each stretch's own audio (of `samples`,
+    // mono at SphinxAligner::kSampleRate, the whole recording) is aligned with the stretch's own
+    // words, so the stretch edges stay exactly where they were. `pronunciations` are those of
+    // words(). Throws lipsync::Error from the aligner (and Canceled through `feedback`).
+    AlignmentResult runPiecewise(const SphinxAligner &aligner, const std::vector<float> &samples,
+                                 const std::vector<std::vector<Pronunciation>> &pronunciations,
+                                 Feedback *feedback = nullptr) const;
+
 private:
     Tier m_wordTier, m_phoneTier;
     std::vector<Stretch> m_stretches;
     std::vector<std::string> m_words;
     std::vector<FixedBoundary> m_fixed;
+    std::vector<std::pair<double, double>> m_wordSpans; // of words()[i]: its word-tier interval
 };
 
 } // namespace lipsync

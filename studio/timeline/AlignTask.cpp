@@ -6,6 +6,8 @@
 #include "align/ForcedAligner.h"
 #include "align/Realignment.h"
 #include "align/SpeakerAdaptation.h"
+#include "align/SphinxAligner.h"
+#include "io/AudioDecoder.h"
 #include "tasks/TaskRunner.h"
 #include "util/Error.h"
 
@@ -37,6 +39,17 @@ std::shared_ptr<const AcousticModel> loadModel(const QString &path)
     return slot;
 }
 
+// One SphinxAligner per process: its decoders (a few hundred ms to load) are reused.
+std::shared_ptr<const SphinxAligner> sphinxAligner()
+{
+    static std::mutex mutex;
+    static std::shared_ptr<const SphinxAligner> aligner;
+    const std::lock_guard lock(mutex);
+    if (!aligner)
+        aligner = std::make_shared<const SphinxAligner>();
+    return aligner;
+}
+
 // `model`, or when the job asks for it `model` adapted to the recording (kept in `adapted`).
 const AcousticModel &modelFor(const AlignJob &job, const AcousticModel &model, const PreparedUtterance &u,
                               std::optional<AcousticModel> &adapted, Feedback &feedback)
@@ -51,7 +64,25 @@ const AcousticModel &modelFor(const AlignJob &job, const AcousticModel &model, c
     return *adapted;
 }
 
-AlignOutcome alignOne(const AlignJob &job, const AcousticModel &model, Feedback &feedback)
+// The same job with CMU Sphinx's generic model (SphinxAligner).
+TierPair alignWithSphinx(const AlignJob &job, const std::vector<std::string> &words, const Lexicon &lexicon,
+                         const Realignment *realignment, Feedback &feedback)
+{
+    const std::string path = job.mediaPath.toStdString();
+    try {
+        const auto pronunciations = lexicon.pronounceAll(words);
+        const AudioBuffer audio = AudioDecoder::decode(path, SphinxAligner::kSampleRate);
+        const std::shared_ptr<const SphinxAligner> aligner = sphinxAligner();
+        const AlignmentResult r = realignment
+                                      ? realignment->runPiecewise(*aligner, audio.samples, pronunciations, &feedback)
+                                      : aligner->align(audio.samples, words, pronunciations, audio.duration(), &feedback);
+        return TierPair{r.words, r.phones};
+    } catch (const Error &e) {
+        throw Error(e.reason(), e.file().empty() ? path : e.file());
+    }
+}
+
+AlignOutcome alignOne(const AlignJob &job, const AcousticModel *model, Feedback &feedback)
 {
     AlignOutcome outcome;
     outcome.row = job.row;
@@ -65,13 +96,22 @@ AlignOutcome alignOne(const AlignJob &job, const AcousticModel &model, Feedback 
         for (const auto &[word, phones] : lexicon.guessed(words))
             outcome.guessed.emplace_back(word, PronunciationDictionary::toString(phones));
     };
-    if (job.stretches.empty()) {
+    if (job.aligner == AlignerChoice::Sphinx) {
+        std::optional<Realignment> realignment;
+        if (!job.stretches.empty())
+            realignment.emplace(job.current.words, job.current.phones, job.stretches);
+        const std::vector<std::string> words = realignment ? realignment->words() : Lexicon::splitWords(job.transcript);
+        if (words.empty())
+            throw Error("the sequence has no transcript to align", path);
+        noteGuesses(words);
+        outcome.tiers = alignWithSphinx(job, words, lexicon, realignment ? &*realignment : nullptr, feedback);
+    } else if (job.stretches.empty()) {
         const std::vector<std::string> words = Lexicon::splitWords(job.transcript);
         if (words.empty())
             throw Error("the sequence has no transcript to align", path);
         noteGuesses(words);
-        const PreparedUtterance u = prepareUtterance(id, path, words, model, lexicon);
-        const ForcedAligner aligner(modelFor(job, model, u, adapted, feedback));
+        const PreparedUtterance u = prepareUtterance(id, path, words, *model, lexicon);
+        const ForcedAligner aligner(modelFor(job, *model, u, adapted, feedback));
         AlignmentResult r;
         try {
             r = aligner.align(u.features, u.words, u.pronunciations, u.duration);
@@ -84,8 +124,8 @@ AlignOutcome alignOne(const AlignJob &job, const AcousticModel &model, Feedback 
         // every boundary outside the stretches kept exactly.
         const Realignment realignment(job.current.words, job.current.phones, job.stretches);
         noteGuesses(realignment.words());
-        const PreparedUtterance u = prepareUtterance(id, path, realignment.words(), model, lexicon);
-        const ForcedAligner aligner(modelFor(job, model, u, adapted, feedback));
+        const PreparedUtterance u = prepareUtterance(id, path, realignment.words(), *model, lexicon);
+        const ForcedAligner aligner(modelFor(job, *model, u, adapted, feedback));
         AlignmentResult r;
         try {
             r = realignment.run(aligner, u.features, u.pronunciations, u.duration);
@@ -116,11 +156,13 @@ Task *startAlignment(TaskRunner &runner, const QString &title, std::vector<Align
 {
     const QString modelPath = alignerModelPath();
     return runner.start(title, [jobs = std::move(jobs), apply = std::move(apply), modelPath](Feedback &f) {
-        if (modelPath.isEmpty())
+        const bool shipped = std::any_of(jobs.begin(), jobs.end(),
+                                         [](const AlignJob &j) { return j.aligner == AlignerChoice::Shipped; });
+        if (shipped && modelPath.isEmpty())
             throw Error("the aligner model resources/aligner/grid-s1.aligner was not found "
                         "(set LIPSYNC_ALIGNER_MODEL to a model trained with `lipsync aligner train`)");
         f.setStatus("loading the aligner model");
-        const std::shared_ptr<const AcousticModel> model = loadModel(modelPath);
+        const std::shared_ptr<const AcousticModel> model = shipped ? loadModel(modelPath) : nullptr;
         auto outcomes = std::make_shared<std::vector<AlignOutcome>>();
         QStringList failures;
         for (std::size_t i = 0; i < jobs.size(); ++i) {
@@ -128,7 +170,8 @@ Task *startAlignment(TaskRunner &runner, const QString &title, std::vector<Align
             f.setStatus(jobs[i].sequenceId.toStdString());
             f.setProgress(double(i) / double(jobs.size()));
             try {
-                outcomes->push_back(alignOne(jobs[i], *model, f));
+                Feedback step(f, double(i) / double(jobs.size()), double(i + 1) / double(jobs.size()));
+                outcomes->push_back(alignOne(jobs[i], model.get(), step));
             } catch (const Error &e) {
                 AlignOutcome failed;
                 failed.row = jobs[i].row;

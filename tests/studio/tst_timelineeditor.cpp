@@ -8,6 +8,7 @@
 #include "DemoWindow.h"
 
 #include "align/Lexicon.h"
+#include "align/SphinxAligner.h"
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
 #include "app/ProjectDocument.h"
@@ -25,6 +26,7 @@
 #include <QElapsedTimer>
 #include <QLineEdit>
 #include <QStandardPaths>
+#include <QSettings>
 #include <QTest>
 #include <QUndoStack>
 
@@ -399,6 +401,38 @@ private slots:
             m_window->undoStack()->undo();
             QVERIFY(tiers() == edited);
         }
+    }
+
+    // "Generic US English (CMU Sphinx)": remembered in the settings, disables speaker adaptation
+    // (which adapts the built-in model), and aligns the sequence through the same task and undo.
+    void sphinxModelChoiceAligns()
+    {
+        if (!SphinxAligner::available())
+            QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");
+        QVERIFY(m_panel->builtInAlignerAction()->isChecked());
+        m_panel->sphinxAlignerAction()->trigger();
+        QVERIFY(m_panel->sphinxAlignerAction()->isChecked());
+        QVERIFY(!m_panel->builtInAlignerAction()->isChecked());
+        QCOMPARE(QSettings().value(QStringLiteral("timeline/aligner")).toString(), QStringLiteral("sphinx"));
+        QVERIFY(!m_panel->adaptToSpeakerAction()->isEnabled());
+        const int steps = m_window->undoStack()->index();
+        QVERIFY(m_window->document()->requestTiersChange(0, Tier{"words", {}}, Tier{"phones", {}}, QStringLiteral("clear")));
+        m_panel->alignAction()->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 30000);
+        QCOMPARE(m_window->undoStack()->index(), steps + 2);
+        const Sequence &s = m_window->document()->sequence(0);
+        QStringList spoken;
+        for (const Interval &w : s.words.intervals)
+            if (!tieredit::isSilenceLabel(w.label))
+                spoken << QString::fromStdString(w.label).toLower();
+        QCOMPARE(spoken.size(), int(Lexicon::splitWords(s.transcript).size()));
+        QVERIFY(s.phones.intervals.size() > 10);
+        QVERIFY(m_view->phones() == s.phones);
+        m_window->undoStack()->undo();
+        m_window->undoStack()->undo();
+        m_panel->builtInAlignerAction()->trigger();
+        QVERIFY(m_panel->adaptToSpeakerAction()->isEnabled());
+        QCOMPARE(QSettings().value(QStringLiteral("timeline/aligner")).toString(), QStringLiteral("builtin"));
     }
 
     void alignAllIsOneStepAndCancelChangesNothing()
