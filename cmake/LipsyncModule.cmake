@@ -63,5 +63,8 @@ function(lipsync_add_qtest source)
     # GUI tests share one X display; run alone so no other test's window takes the keyboard focus
     # their shortcuts need.
     set_tests_properties(${target} PROPERTIES LABELS gui RUN_SERIAL ON)
+    if(LIPSYNC_SANITIZER_GUI_TEST_ENV)
+      set_property(TEST ${target} APPEND PROPERTY ENVIRONMENT ${LIPSYNC_SANITIZER_GUI_TEST_ENV})
+    endif()
   endif()
 endfunction()

@@ -3,10 +3,10 @@
 #include "align/BaumWelch.h"
 #include "util/PhoneSet.h"
 #include "align/UtteranceGraph.h"
+#include "tasks/BlockingMap.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
-#include <QtConcurrent/QtConcurrentMap>
 #include <QThread>
 
 #include <algorithm>
@@ -98,7 +98,7 @@ double AlignerTrainer::reestimate(AcousticModel &model, const std::vector<Traini
     if (workers == 1)
         work(0);
     else
-        QtConcurrent::blockingMap(chunks, work);
+        lipsync::blockingMap(chunks, work);
     Accumulators total(model);
     for (const Accumulators &a : partial)
         total.add(a);

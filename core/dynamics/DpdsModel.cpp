@@ -4,10 +4,9 @@
 #include "dynamics/GaussianMath.h"
 #include "dynamics/JsonEigen.h"
 #include "util/PhoneSet.h"
+#include "tasks/BlockingMap.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
-
-#include <QtConcurrent/QtConcurrentMap>
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -312,7 +311,7 @@ void DpdsModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &fe
             for (DimensionFit &f : fits)
                 work(f);
         } else {
-            QtConcurrent::blockingMap(fits, work);
+            lipsync::blockingMap(fits, work);
         }
     };
 

@@ -3,10 +3,9 @@
 #include "dynamics/GaussianMath.h"
 #include "dynamics/JsonEigen.h"
 #include "util/PhoneSet.h"
+#include "tasks/BlockingMap.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
-
-#include <QtConcurrent/QtConcurrentMap>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -323,7 +322,7 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
     if (m_options.threads == 1 || d == 1)
         std::for_each(dimensions.begin(), dimensions.end(), fitDimension);
     else
-        QtConcurrent::blockingMap(dimensions, fitDimension);
+        lipsync::blockingMap(dimensions, fitDimension);
     double total = 0.0;
     for (double ll : perDimension)
         total += ll;

@@ -3,11 +3,11 @@
 #include "eval/CrossValidation.h"
 #include "eval/Metrics.h"
 #include "eval/Statistics.h"
+#include "tasks/BlockingMap.h"
 #include "tasks/Feedback.h"
 
 #include <QJsonArray>
 #include <QThreadPool>
-#include <QtConcurrent/QtConcurrentMap>
 
 #include <algorithm>
 #include <atomic>
@@ -144,7 +144,7 @@ EvaluationResult evaluateModels(const std::vector<LabelledSequence> &sequences,
         std::iota(folds.begin(), folds.end(), 0);
         std::exception_ptr firstError;
         std::atomic<bool> stop{false};
-        QtConcurrent::blockingMap(folds, [&](int f) {
+        lipsync::blockingMap(folds, [&](int f) {
             Feedback own;
             auto pollCancel = [&] {
                 if (stop.load() || feedback.isCanceled())

@@ -107,6 +107,10 @@ MainWindow::~MainWindow()
     // Workers must be gone before the views their results would reach.
     m_runner->cancelAll();
     m_runner->waitForAll();
+    // QWidget's destructor deletes the undo stack after this one has run, and a dirty stack emits
+    // cleanChanged while it dies — into updateTitle() of a MainWindow that is no longer one
+    // (UBSan: downcast of a QWidget to MainWindow, in every GUI test that closes an edited window).
+    disconnect(m_undo, nullptr, this, nullptr);
 }
 
 WaveformView *MainWindow::waveformView() const
