@@ -5,8 +5,9 @@
 // mfa-tests target). pocketsphinx reports word segments only, so every phone is a "word" of the
 // grammar (ph_dh -> DH), the transcript's words are sequences of them (pronunciation variants in
 // parallel) with an optional silence between words, and the phone-word path is parsed back into
-// the transcript's words. The FSG search still models cross-"word" triphone context (fsg_lextree
-// expands single-phone words by their left and right neighbours), so nothing is lost.
+// the transcript's words. The price: pocketsphinx's FSG lexicon tree models a one-phone word
+// context-independently, so the phone-words lose the triphones (README: 75.9 % of the mfa-tests
+// phone boundaries within 25 ms; scoring the triphone senones in our own Viterbi is the next step).
 // Returns the same AlignmentResult as ForcedAligner (TextGrid, frame labels and the timeline
 // work unchanged); times are on pocketsphinx's 10 ms frame grid.
 #include "align/ForcedAligner.h"
