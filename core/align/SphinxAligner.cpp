@@ -9,6 +9,7 @@
 #include <sphinxbase/cmn.h>
 #include <sphinxbase/err.h>
 #include <sphinxbase/feat.h>
+#include <sphinxbase/jsgf.h>
 
 #include <algorithm>
 #include <cmath>
@@ -238,8 +239,22 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
     // from the model's -cmninit, so that the result does not depend on what was aligned before.
     cmn_live_set(ps_get_feat(ps)->cmn_struct, decoder->initialMean.data());
 
-    if (ps_set_jsgf_string(ps, "align", jsgf.c_str()) < 0 || ps_set_search(ps, "align") < 0)
-        throw Error("pocketsphinx rejected the alignment grammar");
+    // The grammar through sphinxbase's JSGF parser, freed here: libpocketsphinx 5prealpha's
+    // ps_set_jsgf_string never frees the parsed grammar (a leak per utterance, found by LSan).
+    {
+        jsgf_t *grammar = jsgf_parse_string(jsgf.c_str(), nullptr);
+        jsgf_rule_t *rule = grammar ? jsgf_get_public_rule(grammar) : nullptr;
+        fsg_model_t *fsg = rule ? jsgf_build_fsg(grammar, rule, ps_get_logmath(ps),
+                                                 float32(cmd_ln_float32_r(ps_get_config(ps), "-lw")))
+                                : nullptr;
+        const bool set = fsg && ps_set_fsg(ps, "align", fsg) >= 0 && ps_set_search(ps, "align") >= 0;
+        if (fsg)
+            fsg_model_free(fsg);
+        if (grammar)
+            jsgf_grammar_free(grammar);
+        if (!set)
+            throw Error("pocketsphinx rejected the alignment grammar");
+    }
     if (ps_start_utt(ps) < 0)
         throw Error("pocketsphinx could not start the utterance");
     // One second at a time, for progress and cancel.
