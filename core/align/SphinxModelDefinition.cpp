@@ -179,8 +179,33 @@ int SphinxModelDefinition::ciPhone(const std::string &name) const
     return -1;
 }
 
+int SphinxModelDefinition::nearestPhone(int base, int left, int right, Position position) const
+{
+    auto anyPosition = [&](int l, int r) {
+        if (const int p = triphone(base, l, r, position); p >= 0)
+            return p;
+        for (int other = 0; other < 4; ++other)
+            if (other != int(position))
+                if (const int p = triphone(base, l, r, Position(other)); p >= 0)
+                    return p;
+        return -1;
+    };
+    if (const int p = anyPosition(left, right); p >= 0)
+        return p;
+    const bool edgeLeft = position == Position::Begin || position == Position::Single;
+    const bool edgeRight = position == Position::End || position == Position::Single;
+    const int l = isFiller(left) || edgeLeft ? m_silence : left;
+    const int r = isFiller(right) || edgeRight ? m_silence : right;
+    if (l != left || r != right)
+        if (const int p = anyPosition(l, r); p >= 0)
+            return p;
+    return base;
+}
+
 int SphinxModelDefinition::triphone(int base, int left, int right, Position position) const
 {
+    if (base < 0 || left < 0 || right < 0 || base >= ciPhoneCount() || left >= ciPhoneCount() || right >= ciPhoneCount())
+        return -1;
     const auto it = m_triphones.find(key(base, left, right, int(position)));
     return it == m_triphones.end() ? -1 : it->second;
 }

@@ -35,6 +35,10 @@ public:
     // The context-dependent phone of `base` between `left` and `right` (CI phones) at `position`,
     // or -1 when the model has none.
     int triphone(int base, int left, int right, Position position) const;
+    // The phone pocketsphinx's dictionary would use (bin_mdef_phone_id_nearest): the triphone,
+    // else the same contexts at another word position, else with SIL for filler contexts and for
+    // the contexts across the word's edges, else the CI phone `base`.
+    int nearestPhone(int base, int left, int right, Position position) const;
     // The senone ids of `phone`'s emitting states (statesPerPhone() of them).
     const uint16_t *senones(int phone) const { return &m_senoneIds.at(size_t(m_sequence.at(size_t(phone))) * size_t(m_states)); }
 
