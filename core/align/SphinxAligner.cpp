@@ -267,11 +267,8 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
     if (words.empty() || pronunciations.size() != words.size())
         throw Error("the transcript has no words to align");
     for (size_t w = 0; w < words.size(); ++w)
-        for (const Pronunciation &p : pronunciations[w])
-            if (p.empty())
-                throw Error("no pronunciation for \"" + words[w] + "\"");
-    for (size_t w = 0; w < words.size(); ++w)
-        if (pronunciations[w].empty())
+        if (pronunciations[w].empty() ||
+            std::any_of(pronunciations[w].begin(), pronunciations[w].end(), [](const Pronunciation &p) { return p.empty(); }))
             throw Error("no pronunciation for \"" + words[w] + "\"");
     if (samples.empty())
         throw Error("the audio is empty");
