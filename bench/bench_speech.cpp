@@ -4,7 +4,7 @@
 //   BM_MfccAndAlign/A       MFCC + Viterbi alignment of the 10 GRID demo clips (x8) with the
 //                           shipped model on all cores, decoding excluded; "rtf" = wall seconds
 //                           per second of audio; A = 1: with speaker adaptation (align --adapt);
-//                           A = 2: SphinxAligner (CMU Sphinx en-us, one decoder per thread)
+//                           A = 2: SphinxAligner (CMU Sphinx en-us triphones, one scorer per thread)
 //   BM_TrainGrid20min       training on all 400 GRID s1 clips (20 min of audio), features given
 //   BM_EvalGridWords/A      train on 320 GRID s1 clips, align the other 80: share of word
 //                           boundaries within 40 ms of GRID's .align ("inner": without the

@@ -12,6 +12,7 @@ const std::map<std::string, Parser> &parsers()
         {"htklabel", &parseHtkLabelBytes},
         {"modelfile", &parseModelFileBytes},
         {"project", &parseProjectBytes},
+        {"sphinxmdef", &parseSphinxMdefBytes},
         {"pts", &parsePtsBytes},
         {"textgrid", &parseTextGridBytes},
         {"transcript", &parseTranscriptBytes},

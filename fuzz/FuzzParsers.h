@@ -23,13 +23,14 @@ void parsePtsBytes(const std::string &bytes);
 void parseAamBytes(const std::string &bytes);
 // fuzz/ParseAligner.cpp (lipsync_align)
 void parseAlignerBytes(const std::string &bytes);
+void parseSphinxMdefBytes(const std::string &bytes); // CMU Sphinx binary mdef
 // fuzz/ParseModelFile.cpp (lipsync_dynamics)
 void parseModelFileBytes(const std::string &bytes);
 
 using Parser = void (*)(const std::string &bytes);
 
 // By name: "aam", "aligner", "featurecsv", "gridalign", "htklabel", "modelfile", "project", "pts",
-// "textgrid", "transcript" (fuzz/FuzzParsers.cpp, links them all).
+// "sphinxmdef", "textgrid", "transcript" (fuzz/FuzzParsers.cpp, links them all).
 const std::map<std::string, Parser> &parsers();
 
 } // namespace lipsync::fuzz

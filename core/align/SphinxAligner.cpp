@@ -6,36 +6,44 @@
 #include "util/PhoneSet.h"
 
 #include <pocketsphinx.h>
-#include <sphinxbase/cmn.h>
 #include <sphinxbase/err.h>
 #include <sphinxbase/feat.h>
-#include <sphinxbase/jsgf.h>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <functional>
+
+// libpocketsphinx's acoustic model (senone scoring): exported by the library but declared only in
+// its private acmod.h, which Debian does not install. These are pocketsphinx 0.8+5prealpha's
+// signatures (the version scripts/setup installs, libpocketsphinx3); pinned here by hand.
+extern "C" {
+typedef struct acmod_s acmod_t;
+acmod_t *acmod_init(cmd_ln_t *config, logmath_t *lmath, fe_t *fe, feat_t *fcb);
+void acmod_free(acmod_t *acmod);
+int acmod_set_grow(acmod_t *acmod, int grow_feat);
+int acmod_start_utt(acmod_t *acmod);
+int acmod_end_utt(acmod_t *acmod);
+int acmod_process_raw(acmod_t *acmod, int16 const **inout_raw, size_t *inout_n_samps, int full_utt);
+// The senone scores of frame *inout_frame_idx (absolute, with acmod_set_grow): costs, 0 for the
+// frame's best senone, in the log base's units shifted right by 10 (SENSCR_SHIFT).
+int16 const *acmod_score(acmod_t *acmod, int *inout_frame_idx);
+}
 
 namespace lipsync {
 
 struct SphinxAligner::Decoder
 {
-    ps_decoder_t *ps = nullptr;
-    std::vector<mfcc_t> initialMean; // -cmninit, restored before each utterance
+    ps_decoder_t *ps = nullptr; // the expanded configuration and the log table
     ~Decoder() { ps_free(ps); }
 };
 
 namespace {
 
-// The grammar's phone-words: ph_<label> -> the model's phone. Breath is the model's noise phone.
-std::string phoneWord(int phone)
-{
-    if (phone == PhoneSet::kSilence)
-        return "silw";
-    return "ph_" + PhoneSet::label(phone);
-}
+constexpr int kSenoneShift = 10; // pocketsphinx's SENSCR_SHIFT
 
+// The model's CI phone name of a PhoneSet phone. Breath is the model's noise phone.
 std::string sphinxPhone(int phone)
 {
     if (phone == PhoneSet::kBreath)
@@ -47,53 +55,126 @@ std::string sphinxPhone(int phone)
     return label;
 }
 
-// The options that make pocketsphinx a forced aligner (the lead's feasibility test, issue 4):
-// keep every frame (its default voice-activity detection drops silent frames and shifts all
-// times), search without pruning, no second pass.
+// The options of the senone scorer: keep every frame (the default voice-activity detection drops
+// silent frames and shifts all times), score all senones with the 8 best Gaussians of each
+// codebook (mfa-tests, BM_EvalMfaPhones/5: -topn 4 / 8 / 16 / 32 / 64 give 78.1 / 78.5 / 78.3 /
+// 78.0 / 78.2 %, noise, at 0.13 x real time for 8 and 0.23 for 16 on one thread).
 const std::vector<std::pair<std::string, std::string>> &baseArguments()
 {
     static const std::vector<std::pair<std::string, std::string>> args{
-        {"-remove_silence", "no"}, {"-beam", "1e-100"}, {"-pbeam", "1e-100"}, {"-wbeam", "1e-80"},
-        {"-lpbeam", "1e-100"},     {"-maxhmmpf", "-1"}, {"-maxwpf", "-1"},    {"-topn", "64"},
-        {"-bestpath", "no"},       {"-fwdflat", "no"},  {"-fsgusefiller", "no"}, {"-logfn", "/dev/null"},
+        {"-remove_silence", "no"}, {"-compallsen", "yes"}, {"-topn", "8"}, {"-logfn", "/dev/null"},
     };
     return args;
 }
 
-// Word i of the transcript covers phone-words [start, end) of the decoded sequence: the parse of
-// the phone sequence into the words' variants (a memoised search; the grammar guarantees one).
-std::vector<std::pair<size_t, size_t>> parseWords(const std::vector<int> &phones,
-                                                  const std::vector<std::vector<Pronunciation>> &pronunciations)
+// The transcript unrolled into HMMs (one per phone in context): a node is a phone of a word's
+// pronunciation variant with one choice of cross-word context, or an optional silence.
+struct Graph
 {
-    const size_t W = pronunciations.size(), P = phones.size();
-    std::vector<std::vector<signed char>> memo(W + 1, std::vector<signed char>(P + 1, -1));
-    std::vector<std::vector<size_t>> choice(W + 1, std::vector<size_t>(P + 1, 0));
-    std::function<bool(size_t, size_t)> fits = [&](size_t w, size_t p) -> bool {
-        if (w == W)
-            return p == P;
-        if (memo[w][p] >= 0)
-            return memo[w][p] == 1;
-        bool ok = false;
-        for (const Pronunciation &v : pronunciations[w]) {
-            if (p + v.size() > P || !std::equal(v.begin(), v.end(), phones.begin() + long(p)))
-                continue;
-            if (fits(w + 1, p + v.size())) {
-                choice[w][p] = v.size();
-                ok = true;
-                break;
+    struct Node
+    {
+        int phone = 0;  // the mdef phone whose senones it uses
+        int label = 0;  // PhoneSet index (kSilence for the optional silences)
+        int word = -1;  // transcript word, -1 for silence
+        std::vector<int> next;
+    };
+    std::vector<Node> nodes;
+    std::vector<int> entries, finals;
+};
+
+Graph buildGraph(const SphinxModelDefinition &mdef, const std::vector<std::vector<Pronunciation>> &pronunciations,
+                 const std::string &modelDir)
+{
+    using Position = SphinxModelDefinition::Position;
+    const int sil = mdef.silence();
+    // The model's CI phones of every variant; as a context, noise phones count as SIL.
+    std::vector<std::vector<std::vector<int>>> ci(pronunciations.size());
+    for (size_t w = 0; w < pronunciations.size(); ++w)
+        for (const Pronunciation &variant : pronunciations[w]) {
+            std::vector<int> phones;
+            for (int p : variant) {
+                const int id = mdef.ciPhone(sphinxPhone(p));
+                if (id < 0)
+                    throw Error("the CMU Sphinx model lacks the phone " + sphinxPhone(p), modelDir);
+                phones.push_back(id);
+            }
+            ci[w].push_back(std::move(phones));
+        }
+    auto context = [&](int id) { return mdef.isFiller(id) ? sil : id; };
+    Graph g;
+    auto add = [&](int phone, int label, int word) {
+        g.nodes.push_back({phone, label, word, {}});
+        return int(g.nodes.size()) - 1;
+    };
+    struct Exit
+    {
+        int node, phone, right; // last phone node, its CI phone and its right context
+    };
+    const int startSil = add(sil, PhoneSet::kSilence, -1);
+    g.entries.push_back(startSil);
+    std::vector<Exit> exits;       // the previous word's last phones
+    int silenceBefore = startSil; // the optional silence after it
+    const size_t W = pronunciations.size();
+    for (size_t w = 0; w < W; ++w) {
+        // The contexts across the word's edges: the neighbours' edge phones, or SIL (a pause, or
+        // the utterance's edge).
+        std::vector<int> lefts{sil}, rights{sil};
+        if (w > 0)
+            for (const auto &v : ci[w - 1])
+                if (std::find(lefts.begin(), lefts.end(), context(v.back())) == lefts.end())
+                    lefts.push_back(context(v.back()));
+        if (w + 1 < W)
+            for (const auto &v : ci[w + 1])
+                if (std::find(rights.begin(), rights.end(), context(v.front())) == rights.end())
+                    rights.push_back(context(v.front()));
+        std::vector<Exit> wordExits;
+        for (size_t v = 0; v < ci[w].size(); ++v) {
+            const std::vector<int> &phones = ci[w][v];
+            const int n = int(phones.size());
+            std::vector<int> previous; // the nodes of phone j - 1
+            for (int j = 0; j < n; ++j) {
+                const Position pos = n == 1 ? Position::Single : j == 0 ? Position::Begin : j == n - 1 ? Position::End : Position::Internal;
+                const std::vector<int> ls = j == 0 ? lefts : std::vector<int>{context(phones[size_t(j) - 1])};
+                const std::vector<int> rs = j == n - 1 ? rights : std::vector<int>{context(phones[size_t(j) + 1])};
+                std::vector<int> current;
+                for (int l : ls)
+                    for (int r : rs) {
+                        const int base = phones[size_t(j)];
+                        const int phone = mdef.isFiller(base) ? base : mdef.nearestPhone(base, l, r, pos);
+                        const int node = add(phone, pronunciations[w][v][size_t(j)], int(w));
+                        current.push_back(node);
+                        for (int p : previous)
+                            g.nodes[size_t(p)].next.push_back(node);
+                        if (j == 0) {
+                            // Entered from the previous word's last phones whose right context is
+                            // this phone and which are this node's left context; SIL-context
+                            // nodes also from the optional silence.
+                            for (const Exit &e : exits)
+                                if ((e.right == context(phones[0]) && context(e.phone) == l) || (e.right == sil && l == sil))
+                                    g.nodes[size_t(e.node)].next.push_back(node);
+                            if (l == sil)
+                                g.nodes[size_t(silenceBefore)].next.push_back(node);
+                            if (w == 0 && l == sil)
+                                g.entries.push_back(node);
+                        }
+                        if (j == n - 1) {
+                            wordExits.push_back({node, phones[size_t(j)], r});
+                            if (w + 1 == W && r == sil)
+                                g.finals.push_back(node);
+                        }
+                    }
+                previous = std::move(current);
             }
         }
-        memo[w][p] = ok ? 1 : 0;
-        return ok;
-    };
-    if (!fits(0, 0))
-        throw Error("the aligned phones do not spell the transcript (internal error)");
-    std::vector<std::pair<size_t, size_t>> spans;
-    for (size_t w = 0, p = 0; w < W; ++w) {
-        spans.emplace_back(p, p + choice[w][p]);
-        p += choice[w][p];
+        exits = std::move(wordExits);
+        silenceBefore = add(sil, PhoneSet::kSilence, -1);
+        for (const Exit &e : exits)
+            if (e.right == sil)
+                g.nodes[size_t(e.node)].next.push_back(silenceBefore);
+        if (w + 1 == W)
+            g.finals.push_back(silenceBefore);
     }
-    return spans;
+    return g;
 }
 
 } // namespace
@@ -113,14 +194,26 @@ bool SphinxAligner::available(const std::string &modelDir)
     return std::filesystem::exists(std::filesystem::path(resolveModelDir(modelDir)) / "mdef", ec);
 }
 
-SphinxAligner::SphinxAligner(Options options)
-    : m_modelDir(resolveModelDir(options.modelDir)), m_extra(std::move(options.extraArguments))
+namespace {
+
+SphinxModelDefinition readModelDefinition(const std::string &modelDir)
 {
-    if (!available(m_modelDir))
-        throw Error(std::filesystem::exists(m_modelDir)
+    if (!SphinxAligner::available(modelDir))
+        throw Error(std::filesystem::exists(modelDir)
                         ? "not a CMU Sphinx acoustic model folder (no mdef file)"
                         : "the CMU Sphinx acoustic model folder does not exist (Debian package pocketsphinx-en-us)",
-                    m_modelDir);
+                    modelDir);
+    return SphinxModelDefinition::read((std::filesystem::path(modelDir) / "mdef").string());
+}
+
+} // namespace
+
+SphinxAligner::SphinxAligner(Options options)
+    : m_modelDir(resolveModelDir(options.modelDir)), m_mdef(readModelDefinition(m_modelDir)),
+      m_extra(std::move(options.extraArguments))
+{
+    if (m_mdef.silence() < 0 || m_mdef.ciName(m_mdef.silence()) != "SIL")
+        throw Error("the CMU Sphinx model definition has no SIL phone", m_modelDir + "/mdef");
 }
 
 SphinxAligner::~SphinxAligner() = default;
@@ -148,22 +241,14 @@ SphinxAligner::Decoder *SphinxAligner::acquire() const
     cmd_ln_t *config = cmd_ln_parse_r(nullptr, ps_args(), int(argv.size()), argv.data(), FALSE);
     if (!config)
         throw Error("invalid pocketsphinx options", m_modelDir);
+    // The decoder expands the model folder into the model's files and feature options (the
+    // senone scorers are made from its configuration).
     ps_decoder_t *decoder = ps_init(config);
     cmd_ln_free_r(config); // the decoder keeps its own reference
     if (!decoder)
         throw Error("cannot load the CMU Sphinx acoustic model", m_modelDir);
-    // The phone-words, once per decoder.
-    bool ok = true;
-    for (int p = 0; p < PhoneSet::kCount; ++p)
-        ok = ok && ps_add_word(decoder, phoneWord(p).c_str(), sphinxPhone(p).c_str(), p + 1 == PhoneSet::kCount) >= 0;
-    if (!ok) {
-        ps_free(decoder);
-        throw Error("the CMU Sphinx model lacks a phone of the ARPAbet set", m_modelDir);
-    }
     auto owned = std::make_unique<Decoder>();
     owned->ps = decoder;
-    const cmn_t *cmn = ps_get_feat(decoder)->cmn_struct;
-    owned->initialMean.assign(cmn->cmn_mean, cmn->cmn_mean + cmn->veclen);
     const std::lock_guard lock(m_mutex);
     m_all.push_back(std::move(owned));
     return m_all.back().get();
@@ -181,11 +266,11 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
 {
     if (words.empty() || pronunciations.size() != words.size())
         throw Error("the transcript has no words to align");
-    // Silence tokens of a transcript ("sil", "sp": pronounced as silence) are the grammar's
+    // Silence tokens of a transcript ("sil", "sp": pronounced as silence) are the graph's
     // optional silences already, and the result's word tier marks every silence "sil".
     auto silenceOnly = [](const std::vector<Pronunciation> &variants) {
         return !variants.empty() && std::all_of(variants.begin(), variants.end(), [](const Pronunciation &v) {
-            return std::all_of(v.begin(), v.end(), [](int p) { return p == PhoneSet::kSilence; });
+            return !v.empty() && std::all_of(v.begin(), v.end(), [](int p) { return p == PhoneSet::kSilence; });
         });
     };
     if (std::any_of(pronunciations.begin(), pronunciations.end(), silenceOnly)) {
@@ -199,7 +284,8 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
         return align(samples, spokenWords, spokenPronunciations, audioDuration, feedback);
     }
     for (size_t w = 0; w < words.size(); ++w)
-        if (pronunciations[w].empty() || pronunciations[w].front().empty())
+        if (pronunciations[w].empty() ||
+            std::any_of(pronunciations[w].begin(), pronunciations[w].end(), [](const Pronunciation &p) { return p.empty(); }))
             throw Error("no pronunciation for \"" + words[w] + "\"");
     if (samples.empty())
         throw Error("the audio is empty");
@@ -210,22 +296,12 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
     if (peak < 1e-4f)
         throw Error("the audio is silent");
 
-    // The grammar: [silw] word0 [silw] word1 ... [silw], a word being its variants in parallel.
-    std::string jsgf = "#JSGF V1.0;\ngrammar align;\npublic <utterance> = [silw]";
-    for (const std::vector<Pronunciation> &variants : pronunciations) {
-        jsgf += " (";
-        for (size_t v = 0; v < variants.size(); ++v) {
-            jsgf += v ? " |" : "";
-            for (int p : variants[v])
-                jsgf += " " + phoneWord(p);
-        }
-        jsgf += " ) [silw]";
-    }
-    jsgf += ";\n";
-
+    const Graph graph = buildGraph(m_mdef, pronunciations, m_modelDir);
     std::vector<int16_t> pcm(samples.size());
     for (size_t i = 0; i < samples.size(); ++i)
         pcm[i] = int16_t(std::lround(std::clamp(samples[i], -1.0f, 1.0f) * 32767.0f));
+    if (feedback && feedback->isCanceled())
+        throw Canceled();
 
     Decoder *decoder = acquire();
     struct Lease
@@ -234,106 +310,141 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
         Decoder *decoder;
         ~Lease() { owner->release(decoder); }
     } lease{this, decoder};
-    ps_decoder_t *ps = decoder->ps;
-    // Live CMN carries its mean over from the decoder's previous utterances: start each one
-    // from the model's -cmninit, so that the result does not depend on what was aligned before.
-    cmn_live_set(ps_get_feat(ps)->cmn_struct, decoder->initialMean.data());
-
-    // The grammar through sphinxbase's JSGF parser, freed here: libpocketsphinx 5prealpha's
-    // ps_set_jsgf_string never frees the parsed grammar (a leak per utterance, found by LSan).
-    {
-        jsgf_t *grammar = jsgf_parse_string(jsgf.c_str(), nullptr);
-        jsgf_rule_t *rule = grammar ? jsgf_get_public_rule(grammar) : nullptr;
-        fsg_model_t *fsg = rule ? jsgf_build_fsg(grammar, rule, ps_get_logmath(ps),
-                                                 float32(cmd_ln_float32_r(ps_get_config(ps), "-lw")))
-                                : nullptr;
-        const bool set = fsg && ps_set_fsg(ps, "align", fsg) >= 0 && ps_set_search(ps, "align") >= 0;
-        if (fsg)
-            fsg_model_free(fsg);
-        if (grammar)
-            jsgf_grammar_free(grammar);
-        if (!set)
-            throw Error("pocketsphinx rejected the alignment grammar");
-    }
-    if (ps_start_utt(ps) < 0)
+    // A scorer with a front end of its own for each utterance: the front end's noise estimate
+    // (-remove_noise), the cepstral mean and the Gaussian selection (-topn, started from the
+    // previous frame's best) all carry over between utterances, so that a reused one gave
+    // results depending on what was aligned before (a 10 ms shift seen in the tests).
+    const std::unique_ptr<acmod_t, void (*)(acmod_t *)> scorer(
+        acmod_init(ps_get_config(decoder->ps), ps_get_logmath(decoder->ps), nullptr, nullptr), &acmod_free);
+    acmod_t *acmod = scorer.get();
+    if (!acmod)
+        throw Error("cannot load the CMU Sphinx acoustic model's senones", m_modelDir);
+    // Every frame's features stay, so that any frame can be scored after the whole utterance.
+    acmod_set_grow(acmod, TRUE);
+    if (acmod_start_utt(acmod) < 0)
         throw Error("pocketsphinx could not start the utterance");
-    // One second at a time, for progress and cancel.
-    const size_t chunk = kSampleRate;
-    for (size_t at = 0; at < pcm.size(); at += chunk) {
-        if (feedback) {
-            if (feedback->isCanceled()) {
-                ps_end_utt(ps);
-                throw Canceled();
-            }
-            feedback->setProgress(0.95 * double(at) / double(pcm.size()));
-        }
-        if (ps_process_raw(ps, pcm.data() + at, std::min(chunk, pcm.size() - at), FALSE, FALSE) < 0) {
-            ps_end_utt(ps);
-            throw Error("pocketsphinx failed to process the audio");
-        }
+    const int16 *raw = pcm.data();
+    size_t remaining = pcm.size();
+    // The whole utterance at once (full_utt), as the batch front end of a forced aligner.
+    const int processed = acmod_process_raw(acmod, &raw, &remaining, TRUE);
+    acmod_end_utt(acmod);
+    if (processed <= 0)
+        throw Error("the audio is too short to align");
+    const int T = processed;
+
+    // Viterbi over the graph's states (node * E + emitting state), left to right with self-loops
+    // and no transition probabilities; costs are the senone scores (0 = the frame's best).
+    const int E = m_mdef.statesPerPhone();
+    const size_t S = graph.nodes.size() * size_t(E);
+    constexpr int32_t kInf = INT32_MAX / 2;
+    std::vector<int32_t> cur(S, kInf), nxt(S);
+    std::vector<int32_t> back(size_t(T) * S, -1);
+    std::vector<const uint16_t *> senones(graph.nodes.size());
+    for (size_t n = 0; n < graph.nodes.size(); ++n)
+        senones[n] = m_mdef.senones(graph.nodes[n].phone);
+    auto scores = [&](int t) {
+        int frame = t;
+        const int16 *sc = acmod_score(acmod, &frame);
+        if (!sc || frame != t)
+            throw Error("pocketsphinx could not score frame " + std::to_string(t));
+        return sc;
+    };
+    {
+        const int16 *sc = scores(0);
+        for (int e : graph.entries)
+            cur[size_t(e) * size_t(E)] = sc[senones[size_t(e)][0]];
     }
-    ps_end_utt(ps);
-    int32 score = 0;
-    if (!ps_get_hyp(ps, &score))
+    for (int t = 1; t < T; ++t) {
+        if (feedback && t % 50 == 0) {
+            if (feedback->isCanceled())
+                throw Canceled();
+            feedback->setProgress(0.95 * double(t) / double(T));
+        }
+        std::fill(nxt.begin(), nxt.end(), kInf);
+        int32_t *b = &back[size_t(t) * S];
+        auto relax = [&](size_t to, int32_t cost, size_t from) {
+            if (cost < nxt[to]) {
+                nxt[to] = cost;
+                b[to] = int32_t(from);
+            }
+        };
+        for (size_t s = 0; s < S; ++s) {
+            const int32_t c = cur[s];
+            if (c >= kInf)
+                continue;
+            relax(s, c, s);
+            const size_t node = s / size_t(E), k = s % size_t(E);
+            if (k + 1 < size_t(E))
+                relax(s + 1, c, s);
+            else
+                for (int m : graph.nodes[node].next)
+                    relax(size_t(m) * size_t(E), c, s);
+        }
+        const int16 *sc = scores(t);
+        for (size_t s = 0; s < S; ++s)
+            if (nxt[s] < kInf)
+                nxt[s] += sc[senones[s / size_t(E)][s % size_t(E)]];
+        std::swap(cur, nxt);
+    }
+    int best = -1;
+    for (int f : graph.finals) {
+        const size_t s = size_t(f) * size_t(E) + size_t(E) - 1;
+        if (cur[s] < kInf && (best < 0 || cur[s] < cur[size_t(best)]))
+            best = int(s);
+    }
+    if (best < 0)
         throw Error("the transcript does not fit the audio (no alignment path reaches the end of the transcript)");
+    std::vector<int> path(static_cast<size_t>(T));
+    path[size_t(T) - 1] = best;
+    for (int t = T - 1; t > 0; --t)
+        path[size_t(t) - 1] = back[size_t(t) * S + size_t(path[size_t(t)])];
 
     struct Segment
     {
-        int phone; // PhoneSet index
+        int label; // PhoneSet index
+        int word;  // transcript word, -1 for silence
         int start; // first frame
     };
     std::vector<Segment> segments;
-    // A reused decoder numbers the frames of its FSG search on from the previous utterances
-    // (libpocketsphinx 5prealpha), but the path of a forced alignment starts at the utterance's
-    // first frame: count from there.
-    int offset = -1, frames = 0;
-    for (ps_seg_t *seg = ps_seg_iter(ps); seg; seg = ps_seg_next(seg)) {
-        int sf = 0, ef = 0;
-        ps_seg_frames(seg, &sf, &ef);
-        if (offset < 0)
-            offset = sf;
-        sf -= offset;
-        ef -= offset;
-        frames = std::max(frames, ef + 1);
-        const std::string name = ps_seg_word(seg);
-        if (ef < sf || name == "(NULL)")
+    for (int t = 0, previous = -1; t < T; ++t) {
+        const int node = path[size_t(t)] / E;
+        const Graph::Node &n = graph.nodes[size_t(node)];
+        const bool enters = node != previous && path[size_t(t)] % E == 0;
+        previous = node;
+        if (!enters)
             continue;
-        int phone = PhoneSet::kSilence;
-        if (name.rfind("ph_", 0) == 0)
-            phone = PhoneSet::index(name.substr(3));
-        if (phone == PhoneSet::kSilence && !segments.empty() && segments.back().phone == PhoneSet::kSilence)
+        if (n.word < 0 && !segments.empty() && segments.back().word < 0)
             continue; // adjacent silences are one segment
-        segments.push_back({phone, sf});
+        segments.push_back({n.label, n.word, t});
     }
-    std::vector<int> spoken; // the phone-words in order, and their segment indices
-    std::vector<size_t> segmentOf;
-    for (size_t i = 0; i < segments.size(); ++i)
-        if (segments[i].phone != PhoneSet::kSilence) {
-            spoken.push_back(segments[i].phone);
-            segmentOf.push_back(i);
-        }
-    if (spoken.empty())
-        throw Error("the transcript does not fit the audio (the alignment holds no phones)");
-    const auto spans = parseWords(spoken, pronunciations);
 
     AlignmentResult result;
-    result.frames = frames;
-    result.logLikelihood = logmath_log_to_ln(ps_get_logmath(ps), score);
+    result.frames = T;
+    // Back to natural-log likelihood: costs are in the log base's units >> 10.
+    result.logLikelihood = -double(cur[size_t(best)]) * double(1 << kSenoneShift) *
+                           std::log(logmath_get_base(ps_get_logmath(decoder->ps)));
     const double shift = 0.01; // pocketsphinx's frame rate, 100 Hz
-    const double end = std::max({audioDuration, double(samples.size()) / kSampleRate, frames * shift});
+    const double end = std::max({audioDuration, double(samples.size()) / kSampleRate, T * shift});
     // Segment i spans [its first frame, the next segment's); the first starts at 0, the last
     // ends with the audio (as ForcedAligner's HTK convention).
     auto startOf = [&](size_t i) { return i == 0 ? 0.0 : segments[i].start * shift; };
     auto endOf = [&](size_t i) { return i + 1 < segments.size() ? segments[i + 1].start * shift : end; };
     for (size_t i = 0; i < segments.size(); ++i)
-        result.phones.intervals.push_back(Interval{startOf(i), endOf(i), PhoneSet::label(segments[i].phone), false});
+        result.phones.intervals.push_back(Interval{startOf(i), endOf(i), PhoneSet::label(segments[i].label), false});
     double cursor = 0;
-    for (size_t w = 0; w < words.size(); ++w) {
-        const double a = startOf(segmentOf[spans[w].first]), b = endOf(segmentOf[spans[w].second - 1]);
-        if (a > cursor + 1e-9)
-            result.words.intervals.push_back(Interval{cursor, a, "sil", false});
-        result.words.intervals.push_back(Interval{a, b, words[w], false});
-        cursor = b;
+    for (size_t i = 0; i < segments.size();) {
+        const int word = segments[i].word;
+        size_t j = i + 1;
+        while (j < segments.size() && segments[j].word == word && word >= 0)
+            ++j;
+        if (word >= 0) {
+            const double a = startOf(i), b = endOf(j - 1);
+            if (a > cursor + 1e-9)
+                result.words.intervals.push_back(Interval{cursor, a, "sil", false});
+            result.words.intervals.push_back(Interval{a, b, words[size_t(word)], false});
+            cursor = b;
+        }
+        i = j;
     }
     if (cursor < end - 1e-9)
         result.words.intervals.push_back(Interval{cursor, end, "sil", false});

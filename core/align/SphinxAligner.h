@@ -1,17 +1,21 @@
 #pragma once
 // Forced alignment with CMU Sphinx's generic US-English triphone model (Debian's
-// pocketsphinx-en-us, BSD-2, CMU / Alpha Cephei) through libpocketsphinx's finite-state-grammar
-// search: for speakers unlike the one our own monophone models were trained on (issue 4's
-// mfa-tests target). pocketsphinx reports word segments only, so every phone is a "word" of the
-// grammar (ph_dh -> DH), the transcript's words are sequences of them (pronunciation variants in
-// parallel) with an optional silence between words, and the phone-word path is parsed back into
-// the transcript's words. The price: pocketsphinx's FSG lexicon tree models a one-phone word
-// context-independently, so the phone-words lose the triphones (README: 75.9 % of the mfa-tests
-// phone boundaries within 25 ms; scoring the triphone senones in our own Viterbi is the next step).
+// pocketsphinx-en-us, BSD-2, CMU / Alpha Cephei): for speakers unlike the one our own monophone
+// models were trained on (issue 4's mfa-tests target). libpocketsphinx scores every senone (tied
+// triphone HMM state) of every 10 ms frame; our own Viterbi runs over the transcript unrolled
+// into TRIPHONE senone sequences (each phone's base, left and right context and word position
+// looked up in the model's mdef, falling back to the CI phone): cross-word contexts as variants
+// (a word's last phone with the next word's first phone or SIL on its right, the next word's
+// first phone with the previous last phone or SIL on its left), pronunciation variants in
+// parallel, an optional silence between words and silence context at the utterance's edges.
+// Transition probabilities are left out (a self-loop penalty changed nothing on mfa-tests).
+// pocketsphinx's own FSG search cannot do this: its one-phone grammar "words" are context
+// independent in its lexicon tree (75.9 % of mfa-tests phone boundaries within 25 ms of MFA).
 // Returns the same AlignmentResult as ForcedAligner (TextGrid, frame labels and the timeline
 // work unchanged); times are on pocketsphinx's 10 ms frame grid.
 #include "align/ForcedAligner.h"
 #include "align/Lexicon.h"
+#include "align/SphinxModelDefinition.h"
 
 #include <memory>
 #include <mutex>
@@ -37,7 +41,7 @@ public:
     };
 
     // Checks that the model folder exists (lipsync::Error naming it and the Debian package if
-    // not). Decoders are created on first use.
+    // not) and reads its mdef (errors name the file). Decoders are created on first use.
     SphinxAligner() : SphinxAligner(Options{}) {}
     explicit SphinxAligner(Options options);
     ~SphinxAligner();
@@ -52,8 +56,8 @@ public:
 
     // Aligns `words` (their pronunciations, PhoneSet indices; breath becomes the model's noise
     // phone) to mono 16 kHz `samples`. Thread-safe: each concurrent call uses its own decoder
-    // (a pool, one per thread in use). `feedback` gets progress and is polled for cancel once
-    // per second of audio (throws Canceled). Throws lipsync::Error for an empty transcript or
+    // (a pool, one per thread in use). `feedback` gets progress and is polled for cancel every
+    // half second of audio (throws Canceled). Throws lipsync::Error for an empty transcript or
     // audio and when no path through the transcript reaches the end of the audio.
     AlignmentResult align(const std::vector<float> &samples, const std::vector<std::string> &words,
                           const std::vector<std::vector<Pronunciation>> &pronunciations,
@@ -64,11 +68,12 @@ public:
                           const Lexicon &lexicon, Feedback *feedback = nullptr) const;
 
 private:
-    struct Decoder; // a ps_decoder_t and its initial cepstral mean
+    struct Decoder; // a ps_decoder_t, its senone scorer and its initial cepstral mean
     Decoder *acquire() const;
     void release(Decoder *decoder) const;
 
     std::string m_modelDir;
+    SphinxModelDefinition m_mdef;
     std::vector<std::pair<std::string, std::string>> m_extra;
     mutable std::mutex m_mutex;
     mutable std::vector<Decoder *> m_free;
