@@ -98,27 +98,33 @@ int runAlign(const QStringList &args)
         projectPronunciations = Project::load(a.value("project").toStdString()).pronunciations;
     const auto lexicon = cli::makeLexicon(a.value("pronunciations"), projectPronunciations);
     const Transcript transcript = readTranscript(a.value("transcript").toStdString());
-    // Our models' features; for sphinx only the checked audio and the pronunciations matter.
-    const AcousticModel plainFeatures = featureModel(TrainerOptions{});
-    const AcousticModel &featureSource = model ? *model : plainFeatures;
-    const PreparedUtterance u = prepareUtterance(QFileInfo(media).completeBaseName().toStdString(),
-                                                 media.toStdString(), transcript.words, featureSource, *lexicon);
     AlignmentResult result;
     AdaptationReport adaptation;
-    try {
-        if (sphinx) {
+    double duration = 0;
+    if (sphinx) {
+        // The CMU Sphinx model computes its own features from 16 kHz audio (decoded once).
+        try {
+            const auto pronunciations = lexicon->pronounceAll(transcript.words);
             const AudioBuffer audio = AudioDecoder::decode(media.toStdString(), SphinxAligner::kSampleRate);
-            result = sphinx->align(audio.samples, u.words, u.pronunciations, u.duration);
-        } else {
+            duration = audio.duration();
+            result = sphinx->align(audio.samples, transcript.words, pronunciations, duration);
+        } catch (const Error &e) {
+            throw Error(e.reason(), media.toStdString());
+        }
+    } else {
+        const PreparedUtterance u = prepareUtterance(QFileInfo(media).completeBaseName().toStdString(),
+                                                     media.toStdString(), transcript.words, *model, *lexicon);
+        duration = u.duration;
+        try {
             std::optional<AcousticModel> adapted;
             if (a.flag("adapt"))
                 adapted = SpeakerAdaptation::adapt(*model, u.pronunciations, u.features, {}, nullptr, &adaptation);
             result = ForcedAligner(adapted ? *adapted : *model).align(u.features, u.words, u.pronunciations, u.duration);
+        } catch (const Error &e) {
+            throw Error(e.reason(), media.toStdString());
         }
-    } catch (const Error &e) {
-        throw Error(e.reason(), media.toStdString());
     }
-    writeTextGrid(a.value("out").toStdString(), makeTextGrid({result.words, result.phones}, u.duration));
+    writeTextGrid(a.value("out").toStdString(), makeTextGrid({result.words, result.phones}, duration));
     const double seconds = timer.elapsed() / 1000.0;
     if (a.flag("json")) {
         // Per-video-frame phone labels (models.md §0 voting) when the media has video.
@@ -135,7 +141,7 @@ int runAlign(const QStringList &args)
         for (double l : adaptation.logLikelihoodPerFrame)
             adaptationLogLikelihoods.append(l);
         QJsonArray guessed;
-        for (const auto &[word, phones] : lexicon->guessed(u.words))
+        for (const auto &[word, phones] : lexicon->guessed(transcript.words))
             guessed.append(QJsonObject{{QStringLiteral("word"), QString::fromStdString(word)},
                                        {QStringLiteral("phones"),
                                         QString::fromStdString(PronunciationDictionary::toString(phones))}});
@@ -147,7 +153,7 @@ int runAlign(const QStringList &args)
             {QStringLiteral("media"), media},
             {QStringLiteral("model"), modelName},
             {QStringLiteral("out"), a.value("out")},
-            {QStringLiteral("duration"), u.duration},
+            {QStringLiteral("duration"), duration},
             {QStringLiteral("frames"), result.frames},
             {QStringLiteral("logLikelihood"), result.logLikelihood},
             {QStringLiteral("seconds"), seconds},
