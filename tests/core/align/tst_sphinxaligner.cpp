@@ -6,7 +6,8 @@
 //  - The tiers are contiguous from 0 to the end of the audio, words hold their phones, and the
 //    phones spell the words' pronunciations; a noise token becomes one breath phone; silence
 //    tokens ("sil", "sp") are silences.
-//  - Concurrent calls and a reused decoder give the same result as a fresh one.
+//  - Concurrent calls and a reused decoder give the same result as a fresh one; scoring only the
+//    senones the search reaches, with its beam, finds the path that scoring all of them finds.
 //  - Bad input: a missing model folder, an empty transcript, a transcript too long for the audio.
 #include "align/SphinxAligner.h"
 #include "io/AudioDecoder.h"
@@ -166,6 +167,29 @@ private slots:
         for (const Interval &p : r.phones.intervals)
             breaths += PhoneSet::index(p.label) == PhoneSet::kBreath;
         QCOMPARE(breaths, 1);
+    }
+
+    // The aligner scores only the senones of the states its Viterbi reaches and drops states far
+    // behind the frame's best: the same alignment as scoring all 5,126 senones every frame
+    // (-compallsen yes makes pocketsphinx ignore the active set), on two GRID clips and a
+    // speaker of another corpus.
+    void scoringOnlyReachedSenonesFindsTheSamePath()
+    {
+        const SphinxAligner fast, all(SphinxAligner::Options{{}, {{"-compallsen", "yes"}}});
+        const Lexicon lexicon(&PronunciationDictionary::cmu());
+        for (const std::string clip : {kDemo + "bbaf2n", kDemo + "lrik4p"}) {
+            const Transcript t = readTranscript(clip + ".align");
+            const AudioBuffer audio = AudioDecoder::decode(clip + ".mpg", SphinxAligner::kSampleRate);
+            const auto pron = lexicon.pronounceAll(t.words);
+            verifySamePhoneStarts(fast.align(audio.samples, t.words, pron, audio.duration()),
+                                  all.align(audio.samples, t.words, pron, audio.duration()));
+            if (QTest::currentTestFailed())
+                return;
+        }
+        const std::vector<std::string> words{"montreal", "forced", "aligner"};
+        const AudioBuffer audio = AudioDecoder::decode(kMichael + ".flac", SphinxAligner::kSampleRate);
+        verifySamePhoneStarts(fast.align(audio.samples, words, lexicon.pronounceAll(words), audio.duration()),
+                              all.align(audio.samples, words, lexicon.pronounceAll(words), audio.duration()));
     }
 
     void concurrentCallsUseTheirOwnDecoders()
