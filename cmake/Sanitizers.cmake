@@ -26,14 +26,19 @@ if(LIPSYNC_SANITIZE)
   # GUI tests: Mesa's software GL driver is dlopen'ed with the first GL context and dlclose'd at
   # exit, before LeakSanitizer reports — its process-lifetime allocations then show as
   # "<unknown module>", which no suppression can name. Preloading it keeps it mapped, so lsan.supp's
-  # `leak:swrast_dri.so` matches them; the ASan runtime has to come first in the preload list.
-  if(LIPSYNC_SANITIZE MATCHES "address" AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-    execute_process(COMMAND ${CMAKE_CXX_COMPILER} -print-file-name=libasan.so
-                    OUTPUT_VARIABLE asan_runtime OUTPUT_STRIP_TRAILING_WHITESPACE)
+  # `leak:swrast_dri.so` matches them. gcc's ASan runtime is a shared library that has to come
+  # first in the preload list; clang links its runtime into the executable, which comes first anyway.
+  if(LIPSYNC_SANITIZE MATCHES "address")
     find_file(LIPSYNC_MESA_SWRAST swrast_dri.so PATHS /usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/dri
               /usr/lib/dri NO_DEFAULT_PATH)
+    set(preload ${LIPSYNC_MESA_SWRAST})
+    if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+      execute_process(COMMAND ${CMAKE_CXX_COMPILER} -print-file-name=libasan.so
+                      OUTPUT_VARIABLE asan_runtime OUTPUT_STRIP_TRAILING_WHITESPACE)
+      set(preload "${asan_runtime}:${LIPSYNC_MESA_SWRAST}")
+    endif()
     if(LIPSYNC_MESA_SWRAST)
-      set(LIPSYNC_SANITIZER_GUI_TEST_ENV "LD_PRELOAD=${asan_runtime}:${LIPSYNC_MESA_SWRAST}")
+      set(LIPSYNC_SANITIZER_GUI_TEST_ENV "LD_PRELOAD=${preload}")
     endif()
   endif()
   if(LIPSYNC_SANITIZE MATCHES "undefined")

@@ -22,14 +22,14 @@ namespace lipsync {
 
 namespace {
 
-QString q(const std::string &s)
+QString toQString(const std::string &s)
 {
     return QString::fromStdString(s);
 }
 
 std::string absoluteFolder(const std::string &folder)
 {
-    return QDir::cleanPath(QFileInfo(q(folder.empty() ? std::string(".") : folder)).absoluteFilePath())
+    return QDir::cleanPath(QFileInfo(toQString(folder.empty() ? std::string(".") : folder)).absoluteFilePath())
         .toStdString();
 }
 
@@ -111,7 +111,7 @@ public:
         if (root.contains("study")) {
             const std::string relative = string(root.value("study"), "study", false);
             if (m_readFeatures) {
-                const QString path = QDir::cleanPath(QDir(q(m_folder)).absoluteFilePath(q(relative)));
+                const QString path = QDir::cleanPath(QDir(toQString(m_folder)).absoluteFilePath(toQString(relative)));
                 if (!QFileInfo(path).isFile())
                     fail("study", "referenced study file '" + path.toStdString() + "' does not exist");
                 // The study file validates itself; its errors name the study file and field.
@@ -330,7 +330,7 @@ private:
     Eigen::MatrixXd readFeatures(const std::string &relative, const Sequence &s,
                                  const std::string &field) const
     {
-        const QString path = QDir::cleanPath(QDir(q(m_folder)).absoluteFilePath(q(relative)));
+        const QString path = QDir::cleanPath(QDir(toQString(m_folder)).absoluteFilePath(toQString(relative)));
         const std::string where = "sequence '" + s.id + "': ";
         if (!QFileInfo(path).isFile())
             fail(field, where + "referenced features file '" + path.toStdString()
@@ -415,7 +415,7 @@ QJsonArray tierToJson(const Tier &tier)
     for (const Interval &i : tier.intervals)
         out.append(QJsonObject{{"start", i.start},
                                {"end", i.end},
-                               {"label", q(i.label)},
+                               {"label", toQString(i.label)},
                                {"userEdited", i.userEdited}});
     return out;
 }
@@ -531,14 +531,14 @@ void writeValue(QByteArray &out, const QJsonValue &v, int indent)
 std::string rebaseRelativePath(const std::string &path, const std::string &fromFolder,
                                const std::string &toFolder)
 {
-    if (path.empty() || QDir::isAbsolutePath(q(path)))
+    if (path.empty() || QDir::isAbsolutePath(toQString(path)))
         return path;
     const std::string from = absoluteFolder(fromFolder);
     const std::string to = absoluteFolder(toFolder);
     if (from == to)
         return path;
-    const QString target = QDir::cleanPath(QDir(q(from)).absoluteFilePath(q(path)));
-    return QDir(q(to)).relativeFilePath(target).toStdString();
+    const QString target = QDir::cleanPath(QDir(toQString(from)).absoluteFilePath(toQString(path)));
+    return QDir(toQString(to)).relativeFilePath(target).toStdString();
 }
 
 QJsonObject ProjectManifest::toJson(const Project &project, const std::string &targetFolder)
@@ -547,15 +547,15 @@ QJsonObject ProjectManifest::toJson(const Project &project, const std::string &t
     const std::string from = project.folder().empty() ? targetFolder : project.folder();
     QJsonArray sequences;
     for (const Sequence &s : project.sequences) {
-        QJsonObject o{{"id", q(s.id)},
-                      {"mediaFile", q(rebaseRelativePath(s.mediaFile, from, targetFolder))},
+        QJsonObject o{{"id", toQString(s.id)},
+                      {"mediaFile", toQString(rebaseRelativePath(s.mediaFile, from, targetFolder))},
                       {"frameRate", s.frameRate},
                       {"frameCount", s.frameCount},
-                      {"transcript", q(s.transcript)},
+                      {"transcript", toQString(s.transcript)},
                       {"tiers", QJsonObject{{"words", tierToJson(s.words)},
                                             {"phones", tierToJson(s.phones)}}}};
         if (s.features.size() > 0)
-            o.insert("features", q(featureFileName(s.id)));
+            o.insert("features", toQString(featureFileName(s.id)));
         QJsonArray landmarks;
         for (const auto &[frame, set] : s.landmarks) {
             QJsonArray points;
@@ -574,12 +574,12 @@ QJsonObject ProjectManifest::toJson(const Project &project, const std::string &t
     }
     QJsonArray models;
     for (const ModelReference &m : project.models)
-        models.append(QJsonObject{{"kind", q(m.kind)},
-                                  {"name", q(m.name)},
-                                  {"file", q(rebaseRelativePath(m.file, from, targetFolder))}});
+        models.append(QJsonObject{{"kind", toQString(m.kind)},
+                                  {"name", toQString(m.name)},
+                                  {"file", toQString(rebaseRelativePath(m.file, from, targetFolder))}});
     QJsonObject manifest{{"format", kFormatName},
                          {"version", Project::kFormatVersion},
-                         {"name", q(project.name)},
+                         {"name", toQString(project.name)},
                          {"sequences", sequences},
                          {"models", models}};
     if (project.study)
@@ -588,7 +588,7 @@ QJsonObject ProjectManifest::toJson(const Project &project, const std::string &t
     if (!project.pronunciations.empty()) {
         QJsonArray pronunciations;
         for (const auto &[word, phones] : project.pronunciations)
-            pronunciations.append(QJsonObject{{"word", q(word)}, {"phones", q(phones)}});
+            pronunciations.append(QJsonObject{{"word", toQString(word)}, {"phones", toQString(phones)}});
         manifest.insert("pronunciations", pronunciations);
     }
     return manifest;

@@ -38,6 +38,17 @@
 
 #include <cmath>
 
+// Sanitizer builds (ASan + UBSan, and the fuzzers' coverage counters in the `fuzz` preset) run
+// the drawing several times slower: measured 26 frames/s there on a loaded 2-core machine. They
+// check memory, not speed; the release build checks the speed.
+#if defined(__SANITIZE_ADDRESS__)
+#define LIPSYNC_SANITIZED_BUILD 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define LIPSYNC_SANITIZED_BUILD 1
+#endif
+#endif
+
 using namespace lipsync;
 using namespace lipsync::studio;
 using lipsync::studio::testing::openDemoWindow;
@@ -187,7 +198,13 @@ private slots:
         compareImages(dpds, hmm, mean, share);
         QVERIFY2(mean > 0.05, "two models drew the same face");
 
-        // Drawing keeps up with playback by a wide margin (two models per frame).
+        // Drawing keeps up with playback by a wide margin (two models per frame); under the
+        // sanitizers it still has to stay interactive.
+#ifdef LIPSYNC_SANITIZED_BUILD
+        const double minFps = 10;
+#else
+        const double minFps = 50;
+#endif
         QElapsedTimer clock;
         clock.start();
         const int n = 100;
@@ -195,7 +212,7 @@ private slots:
             m_window->setCurrentFrame(i % 75 == 40 ? 41 : i % 75);
         const double fps = n / (clock.nsecsElapsed() * 1e-9);
         qInfo("preview: %.0f frames/s with recorded + 2 generated panels", fps);
-        QVERIFY2(fps > 50, qPrintable(QString::number(fps)));
+        QVERIFY2(fps > minFps, qPrintable(QString::number(fps)));
     }
 
     void frameStepAndScrubMoveTheSharedCursor()
