@@ -187,8 +187,9 @@ bool Autosave::saveNow()
     m_writing = m_target;
     // The copy is cheap (the document's data, no media); serialising and fsyncing is not.
     auto *job = new WriteJob(m_document->project(), m_document->folder(), m_document->isReadOnly());
-    m_write.setFuture(job->future());
+    // Hands the job over, and orders setFuture's freeing of the previous write's result after it.
     handoffFence();
+    m_write.setFuture(job->future());
     QThreadPool::globalInstance()->start(job); // the pool deletes the job after run()
     return true;
 }
@@ -226,6 +227,7 @@ void Autosave::waitForWrite()
 void Autosave::discard()
 {
     m_write.waitForFinished();
+    handoffFence(); // the finished write's result is freed with the watcher's future
     m_writing.clear();
     m_pending = false;
     if (!m_target.isEmpty())
