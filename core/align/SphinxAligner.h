@@ -68,7 +68,7 @@ public:
                           const Lexicon &lexicon, Feedback *feedback = nullptr) const;
 
 private:
-    struct Decoder; // a ps_decoder_t, its senone scorer and its initial cepstral mean
+    struct Decoder; // a ps_decoder_t: the expanded configuration and the log table for the scorers
     Decoder *acquire() const;
     void release(Decoder *decoder) const;
 
