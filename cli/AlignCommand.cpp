@@ -15,7 +15,6 @@
 #include "align/FrameLabels.h"
 #include "align/SpeakerAdaptation.h"
 #include "align/SphinxAligner.h"
-#include "io/AudioDecoder.h"
 #include "io/MediaInfo.h"
 #include "io/TextGrid.h"
 #include "io/Transcript.h"
@@ -102,15 +101,10 @@ int runAlign(const QStringList &args)
     AdaptationReport adaptation;
     double duration = 0;
     if (sphinx) {
-        // The CMU Sphinx model computes its own features from 16 kHz audio (decoded once).
-        try {
-            const auto pronunciations = lexicon->pronounceAll(transcript.words);
-            const AudioBuffer audio = AudioDecoder::decode(media.toStdString(), SphinxAligner::kSampleRate);
-            duration = audio.duration();
-            result = sphinx->align(audio.samples, transcript.words, pronunciations, duration);
-        } catch (const Error &e) {
-            throw Error(e.reason(), media.toStdString());
-        }
+        // The CMU Sphinx model computes its own features from 16 kHz audio (decoded once); its
+        // errors name the media file, and its tiers end with the audio.
+        result = sphinx->align(media.toStdString(), transcript.words, *lexicon);
+        duration = result.phones.intervals.back().end;
     } else {
         const PreparedUtterance u = prepareUtterance(QFileInfo(media).completeBaseName().toStdString(),
                                                      media.toStdString(), transcript.words, *model, *lexicon);
