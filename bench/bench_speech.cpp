@@ -4,7 +4,8 @@
 //   BM_MfccAndAlign/A       MFCC + Viterbi alignment of the 10 GRID demo clips (x8) with the
 //                           shipped model on all cores, decoding excluded; "rtf" = wall seconds
 //                           per second of audio; A = 1: with speaker adaptation (align --adapt);
-//                           A = 2: SphinxAligner (CMU Sphinx en-us triphones, one scorer per thread)
+//                           A = 2: SphinxAligner (CMU Sphinx en-us triphones, one scorer per thread);
+//                           A = 3: SphinxAligner adapted to each clip (align --model sphinx --adapt)
 //   BM_TrainGrid20min       training on all 400 GRID s1 clips (20 min of audio), features given
 //   BM_EvalGridWords/A      train on 320 GRID s1 clips, align the other 80: share of word
 //                           boundaries within 40 ms of GRID's .align ("inner": without the
@@ -16,7 +17,8 @@
 //                           those recordings, 1: on them plus GRID s1, 2: the shipped GRID s1 model,
 //                           3: the shipped model adapted to each recording (SpeakerAdaptation),
 //                           4: adapted to the three recordings together (one speaker; aligner adapt),
-//                           5: SphinxAligner (CMU Sphinx's generic en-us model, align --model sphinx)
+//                           5: SphinxAligner (CMU Sphinx's generic en-us model, align --model sphinx),
+//                           6: SphinxAligner adapted to each recording (align --model sphinx --adapt)
 // LIPSYNC_SPHINX_ARGS="-name value ..." adds pocketsphinx options to SphinxAligner's (tuning).
 // LIPSYNC_BENCH_NORMALIZE=none|mean|cmvn chooses the per-utterance feature normalisation of the
 // models trained here (default: TrainerOptions' own).
@@ -63,7 +65,7 @@ bool exists(const std::string &p)
 
 // SphinxAligner with the options of $LIPSYNC_SPHINX_ARGS; null (and the benchmark skipped) when
 // the model is not installed.
-std::unique_ptr<SphinxAligner> sphinxAligner(benchmark::State &state)
+std::unique_ptr<SphinxAligner> sphinxAligner(benchmark::State &state, bool adapt)
 {
     if (!SphinxAligner::available()) {
         state.SkipWithError("CMU Sphinx en-us model (pocketsphinx-en-us) not installed");
@@ -73,6 +75,8 @@ std::unique_ptr<SphinxAligner> sphinxAligner(benchmark::State &state)
     const QStringList args = qEnvironmentVariable("LIPSYNC_SPHINX_ARGS").split(' ', Qt::SkipEmptyParts);
     for (qsizetype i = 0; i + 1 < args.size(); i += 2)
         o.extraArguments.emplace_back(args[i].toStdString(), args[i + 1].toStdString());
+    // LIPSYNC_SPHINX_ADAPT=N: N adaptation passes instead of one (tuning).
+    o.adaptationPasses = adapt ? (qEnvironmentVariableIsSet("LIPSYNC_SPHINX_ADAPT") ? qEnvironmentVariableIntValue("LIPSYNC_SPHINX_ADAPT") : 1) : 0;
     return std::make_unique<SphinxAligner>(o);
 }
 
@@ -173,8 +177,8 @@ BENCHMARK(BM_Mfcc)->Unit(benchmark::kMillisecond);
 // Counter "rtf" = wall seconds per second of audio (target <= 0.02).
 void BM_MfccAndAlign(benchmark::State &state)
 {
-    const bool sphinx = state.range(0) == 2;
-    const std::unique_ptr<SphinxAligner> sphinxModel = sphinx ? sphinxAligner(state) : nullptr;
+    const bool sphinx = state.range(0) >= 2;
+    const std::unique_ptr<SphinxAligner> sphinxModel = sphinx ? sphinxAligner(state, state.range(0) == 3) : nullptr;
     if (sphinx && !sphinxModel)
         return;
     if (!exists(kModel)) {
@@ -223,7 +227,7 @@ void BM_MfccAndAlign(benchmark::State &state)
     state.counters["rtf"] = benchmark::Counter(state.iterations() * audioSeconds, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
     state.counters["audio_s"] = audioSeconds;
 }
-BENCHMARK(BM_MfccAndAlign)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_MfccAndAlign)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_TrainGrid20min(benchmark::State &state)
 {
@@ -374,8 +378,8 @@ void BM_EvalMfaPhones(benchmark::State &state)
         return;
     }
     const std::vector<MfaFile> files = mfaFiles();
-    if (state.range(0) == 5) {
-        const std::unique_ptr<SphinxAligner> sphinx = sphinxAligner(state);
+    if (state.range(0) >= 5) {
+        const std::unique_ptr<SphinxAligner> sphinx = sphinxAligner(state, state.range(0) == 6);
         if (!sphinx)
             return;
         int within = 0, total = 0, compared = 0, skipped = 0;
@@ -395,9 +399,9 @@ void BM_EvalMfaPhones(benchmark::State &state)
         state.counters["words_compared"] = compared;
         state.counters["words_other_pronunciation"] = skipped;
         state.counters["rtf_one_thread"] = alignSeconds / std::max(audioSeconds, 1e-9);
-        std::printf("mfa-tests (%zu files, SphinxAligner %s): %.1f%% of %d phone boundaries within 25 ms of MFA "
+        std::printf("mfa-tests (%zu files, SphinxAligner%s %s): %.1f%% of %d phone boundaries within 25 ms of MFA "
                     "(%d words compared, %d with another pronunciation)\n",
-                    files.size(), qPrintable(qEnvironmentVariable("LIPSYNC_SPHINX_ARGS")),
+                    files.size(), state.range(0) == 6 ? " adapted" : "", qPrintable(qEnvironmentVariable("LIPSYNC_SPHINX_ARGS")),
                     100.0 * within / std::max(total, 1), total, compared, skipped);
         return;
     }
@@ -434,6 +438,6 @@ void BM_EvalMfaPhones(benchmark::State &state)
                 "(%d words compared, %d with another pronunciation)\n",
                 files.size(), speakerAdapt ? "shipped GRID s1 model adapted to all three" : adapt ? "shipped GRID s1 model adapted to each" : shipped ? "shipped GRID s1 model" : withGrid ? "trained on them + GRID s1" : "trained on them", 100.0 * within / std::max(total, 1), total, compared, skipped);
 }
-BENCHMARK(BM_EvalMfaPhones)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Arg(4)->Arg(5)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK(BM_EvalMfaPhones)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Arg(4)->Arg(5)->Arg(6)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 } // namespace

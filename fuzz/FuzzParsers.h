@@ -23,14 +23,16 @@ void parsePtsBytes(const std::string &bytes);
 void parseAamBytes(const std::string &bytes);
 // fuzz/ParseAligner.cpp (lipsync_align)
 void parseAlignerBytes(const std::string &bytes);
-void parseSphinxMdefBytes(const std::string &bytes); // CMU Sphinx binary mdef
+void parseSphinxMdefBytes(const std::string &bytes);      // CMU Sphinx binary mdef
+void parseSphinxGaussiansBytes(const std::string &bytes); // Sphinx-3 means / variances
+void parseSphinxSendumpBytes(const std::string &bytes);   // pocketsphinx mixture weights
 // fuzz/ParseModelFile.cpp (lipsync_dynamics)
 void parseModelFileBytes(const std::string &bytes);
 
 using Parser = void (*)(const std::string &bytes);
 
 // By name: "aam", "aligner", "featurecsv", "gridalign", "htklabel", "modelfile", "project", "pts",
-// "sphinxmdef", "textgrid", "transcript" (fuzz/FuzzParsers.cpp, links them all).
+// "sphinxgauden", "sphinxmdef", "sphinxsendump", "textgrid", "transcript" (fuzz/FuzzParsers.cpp, links them all).
 const std::map<std::string, Parser> &parsers();
 
 } // namespace lipsync::fuzz

@@ -172,27 +172,27 @@
 <context>
     <name>lipsync::studio::Autosave</name>
     <message>
-        <location filename="../studio/app/Autosave.cpp" line="33"/>
+        <location filename="../studio/app/Autosave.cpp" line="72"/>
         <source>Recover Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../studio/app/Autosave.cpp" line="34"/>
+        <location filename="../studio/app/Autosave.cpp" line="73"/>
         <source>LipSync Studio did not close normally while %1 had unsaved changes. An autosave from %2 is newer than the saved project.</source>
         <translation>LipSync Studio wurde nicht normal beendet, während %1 ungespeicherte Änderungen hatte. Eine automatische Sicherung vom %2 ist neuer als das gespeicherte Projekt.</translation>
     </message>
     <message>
-        <location filename="../studio/app/Autosave.cpp" line="39"/>
+        <location filename="../studio/app/Autosave.cpp" line="78"/>
         <source>Recover opens the autosaved version as unsaved changes; Discard deletes the autosave.</source>
         <translation>„Wiederherstellen“ öffnet die automatisch gesicherte Fassung als ungespeicherte Änderungen; „Verwerfen“ löscht die automatische Sicherung.</translation>
     </message>
     <message>
-        <location filename="../studio/app/Autosave.cpp" line="41"/>
+        <location filename="../studio/app/Autosave.cpp" line="80"/>
         <source>Recover</source>
         <translation>Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../studio/app/Autosave.cpp" line="243"/>
+        <location filename="../studio/app/Autosave.cpp" line="280"/>
         <source>The autosaved changes could not be recovered; the saved project opens.</source>
         <translation>Die automatisch gesicherten Änderungen konnten nicht wiederhergestellt werden; das gespeicherte Projekt wird geöffnet.</translation>
     </message>
@@ -2094,22 +2094,22 @@
 <context>
     <name>lipsync::studio::TimelinePanel</name>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="165"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="166"/>
         <source>Zoom out (wheel down)</source>
         <translation>Verkleinern (Mausrad nach unten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="166"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="167"/>
         <source>Zoom in (wheel up)</source>
         <translation>Vergrößern (Mausrad nach oben)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="167"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="168"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="167"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="168"/>
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
@@ -2144,177 +2144,177 @@
         <translation>Den ausgewählten Abschnitt neu ausrichten; Wörter mit bearbeitetem Timing bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
         <source>Adapt to Speaker</source>
         <translation>An Sprecher anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
-        <source>Adapt the aligner to each recording&apos;s voice before aligning it (slower; better for speakers unlike the built-in model&apos;s)</source>
-        <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Sprecher, die dem eingebauten Modell unähnlich sind)</translation>
-    </message>
-    <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="98"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="98"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="99"/>
         <source>Align with the model shipped with the studio, trained on one GRID speaker</source>
         <translation>Mit dem mitgelieferten Modell ausrichten, trainiert auf einem GRID-Sprecher</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="99"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="100"/>
         <source>Generic US English (CMU Sphinx)</source>
         <translation>Allgemeines US-Englisch (CMU Sphinx)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="100"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="101"/>
         <source>Align with CMU Sphinx&apos;s US-English model trained on many speakers (Debian package pocketsphinx-en-us)</source>
         <translation>Mit dem US-englischen Modell von CMU Sphinx ausrichten, trainiert auf vielen Sprechern (Debian-Paket pocketsphinx-en-us)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="116"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="117"/>
         <source>Split at Cursor</source>
         <translation>Am Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="116"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="117"/>
         <source>Split the interval under the cursor</source>
         <translation>Das Intervall unter dem Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="117"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="118"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="117"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="118"/>
         <source>Join the selected interval with the next one</source>
         <translation>Das ausgewählte Intervall mit dem nächsten verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="119"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="120"/>
         <source>Relabel…</source>
         <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="119"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="120"/>
         <source>Change the label of the selected interval</source>
         <translation>Die Beschriftung des ausgewählten Intervalls ändern</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="121"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="122"/>
         <source>Insert Silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="121"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="122"/>
         <source>Make the selection a silence</source>
         <translation>Die Auswahl zur Stille machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="122"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
         <source>Insert Breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="122"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
         <source>Make the selection a breath</source>
         <translation>Die Auswahl zum Atmer machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="124"/>
         <source>Play Selection</source>
         <translation>Auswahl abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="124"/>
         <source>Play the selected stretch (Space in the timeline)</source>
         <translation>Den ausgewählten Abschnitt abspielen (Leertaste in der Zeitleiste)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="124"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
         <source>Play Word</source>
         <translation>Wort abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="124"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
         <source>Play the word under the cursor</source>
         <translation>Das Wort unter dem Cursor abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
         <source>Play All</source>
         <translation>Alles abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
         <source>Play the whole sequence</source>
         <translation>Die ganze Sequenz abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
         <source>Pronunciations…</source>
         <translation>Aussprachen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="128"/>
         <source>The project&apos;s pronunciations, and the words espeak-ng guessed</source>
         <translation>Die Aussprachen des Projekts und die von espeak-ng geschätzten Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="154"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="155"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="155"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="156"/>
         <source>The acoustic model the aligner uses</source>
         <translation>Das akustische Modell, das die Ausrichtung verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="192"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="193"/>
         <source>Show Spectrogram</source>
         <translation>Spektrogramm anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="193"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="194"/>
         <source>Show the spectrogram under the waveform in the timeline</source>
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="330"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="329"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="351"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="350"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="373"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="372"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="376"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="375"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="354"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="353"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="397"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
+        <source>Adapt the aligner to each recording&apos;s voice before aligning it (slower; better for voices unlike the model&apos;s training speakers)</source>
+        <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Stimmen, die den Trainingssprechern des Modells unähnlich sind)</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="396"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="422"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="421"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -2322,7 +2322,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="441"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="440"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -2330,47 +2330,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="480"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="479"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="480"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="479"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="488"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="487"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="498"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="497"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="530"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="529"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="530"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="529"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="589"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="588"/>
         <source>Not one of the 41 phones (ARPAbet, sil, br)</source>
         <translation>Keines der 41 Phone (ARPAbet, sil, br)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="590"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="589"/>
         <source>Enter one word</source>
         <translation>Ein einzelnes Wort eingeben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="598"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="597"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>

@@ -1,11 +1,10 @@
 #include "align/SpeakerAdaptation.h"
 
 #include "align/BaumWelch.h"
+#include "align/MllrStatistics.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 #include "util/PhoneSet.h"
-
-#include <Eigen/Cholesky>
 
 #include <array>
 #include <cmath>
@@ -26,51 +25,6 @@ int SpeakerAdaptation::regressionClass(int phone)
     return 2;
 }
 
-namespace {
-
-// MLLR statistics of one regression class for one block of coefficients [first, first + n):
-// per row i, G_i = sum_m gamma_m / var_mi xi_m xi_m^T and k_i = sum_m sum_t gamma_m(t) o_ti / var_mi xi_m,
-// with the extended mean xi_m = (1, mu_m[first..first+n)).
-struct BlockStatistics
-{
-    std::vector<Eigen::MatrixXd> g;
-    std::vector<Eigen::VectorXd> k;
-    double frames = 0;
-
-    explicit BlockStatistics(int n) : g(size_t(n), Eigen::MatrixXd::Zero(n + 1, n + 1)), k(size_t(n), Eigen::VectorXd::Zero(n + 1)) {}
-    void add(const BlockStatistics &o)
-    {
-        for (size_t i = 0; i < g.size(); ++i) {
-            g[i] += o.g[i];
-            k[i] += o.k[i];
-        }
-        frames += o.frames;
-    }
-};
-
-// The transform's rows for one block, W (n x n+1): mu'_block = W (1, mu_block). Rows whose
-// statistics are singular stay the identity.
-Eigen::MatrixXd solveBlock(const BlockStatistics &s)
-{
-    const int n = int(s.g.size());
-    Eigen::MatrixXd w = Eigen::MatrixXd::Zero(n, n + 1);
-    for (int i = 0; i < n; ++i) {
-        Eigen::VectorXd identity = Eigen::VectorXd::Zero(n + 1);
-        identity[i + 1] = 1.0;
-        // A small ridge towards the identity keeps rows with little data well posed.
-        const double ridge = 1e-4 * s.g[size_t(i)].diagonal().mean() + 1e-8;
-        const Eigen::MatrixXd g = s.g[size_t(i)] + ridge * Eigen::MatrixXd::Identity(n + 1, n + 1);
-        const Eigen::VectorXd k = s.k[size_t(i)] + ridge * identity;
-        const Eigen::LDLT<Eigen::MatrixXd> ldlt(g);
-        const Eigen::VectorXd row = ldlt.solve(k);
-        const bool solved = ldlt.info() == Eigen::Success && row.allFinite();
-        w.row(i) = (solved ? row : identity).transpose();
-    }
-    return w;
-}
-
-} // namespace
-
 AcousticModel SpeakerAdaptation::transform(const AcousticModel &si, const Accumulators &statistics,
                                            const AdaptationOptions &options)
 {
@@ -79,8 +33,8 @@ AcousticModel SpeakerAdaptation::transform(const AcousticModel &si, const Accumu
     // HTK one (each block a third); one full block otherwise.
     const int blockSize = d % 3 == 0 ? d / 3 : d;
     const int blocks = d / blockSize;
-    const std::vector<BlockStatistics> empty(size_t(blocks), BlockStatistics{blockSize});
-    std::vector<std::vector<BlockStatistics>> perClass(size_t(kClasses), empty);
+    const std::vector<MllrStatistics> empty(size_t(blocks), MllrStatistics{blockSize});
+    std::vector<std::vector<MllrStatistics>> perClass(size_t(kClasses), empty);
     for (int j = 0; j < si.stateCount(); ++j) {
         const StateAccumulator &acc = statistics.states[size_t(j)];
         if (acc.occupancy <= 0)
@@ -91,36 +45,26 @@ AcousticModel SpeakerAdaptation::transform(const AcousticModel &si, const Accumu
             const double occ = acc.componentOccupancy[m];
             if (occ <= 1e-6)
                 continue;
-            for (int b = 0; b < blocks; ++b) {
-                BlockStatistics &s = perClass[size_t(c)][size_t(b)];
-                Eigen::VectorXd xi(blockSize + 1);
-                xi[0] = 1.0;
-                for (int k = 0; k < blockSize; ++k)
-                    xi[k + 1] = g.means(m, b * blockSize + k);
-                const Eigen::MatrixXd outer = xi * xi.transpose();
-                for (int i = 0; i < blockSize; ++i) {
-                    const double precision = 1.0 / double(g.variances(m, b * blockSize + i));
-                    s.g[size_t(i)] += (occ * precision) * outer;
-                    s.k[size_t(i)] += (acc.sum(m, b * blockSize + i) * precision) * xi;
-                }
-                if (b == 0)
-                    s.frames += occ;
-            }
+            for (int b = 0; b < blocks; ++b)
+                perClass[size_t(c)][size_t(b)].add(
+                    occ, acc.sum.row(m).segment(b * blockSize, blockSize).transpose().cast<double>(),
+                    g.means.row(m).segment(b * blockSize, blockSize).transpose().cast<double>(),
+                    g.variances.row(m).segment(b * blockSize, blockSize).transpose().cast<double>());
         }
     }
     // A class with too little data shares the transform of all the data.
-    std::vector<BlockStatistics> global = empty;
+    std::vector<MllrStatistics> global = empty;
     for (int c = 0; c < kClasses; ++c)
         for (int b = 0; b < blocks; ++b)
             global[size_t(b)].add(perClass[size_t(c)][size_t(b)]);
     std::vector<Eigen::MatrixXd> globalW(static_cast<size_t>(blocks));
     for (int b = 0; b < blocks; ++b)
-        globalW[size_t(b)] = solveBlock(global[size_t(b)]);
+        globalW[size_t(b)] = global[size_t(b)].solve();
     std::vector<std::vector<Eigen::MatrixXd>> classW(static_cast<size_t>(kClasses));
     for (int c = 0; c < kClasses; ++c)
         for (int b = 0; b < blocks; ++b)
-            classW[size_t(c)].push_back(perClass[size_t(c)][0].frames >= options.minimumClassFrames
-                                            ? solveBlock(perClass[size_t(c)][size_t(b)])
+            classW[size_t(c)].push_back(perClass[size_t(c)][0].frames() >= options.minimumClassFrames
+                                            ? perClass[size_t(c)][size_t(b)].solve()
                                             : globalW[size_t(b)]);
 
     AcousticModel adapted = si;

@@ -11,6 +11,9 @@
 // Transition probabilities are left out (a self-loop penalty changed nothing on mfa-tests).
 // pocketsphinx's own FSG search cannot do this: its one-phone grammar "words" are context
 // independent in its lexicon tree (75.9 % of mfa-tests phone boundaries within 25 ms of MFA).
+// Optionally adapted to the recording's speaker (Options::adaptationPasses, align --adapt):
+// aligned, an MLLR transform of the model's Gaussians estimated from that alignment
+// (SphinxAdaptation) applied through pocketsphinx, aligned again.
 // Returns the same AlignmentResult as ForcedAligner (TextGrid, frame labels and the timeline
 // work unchanged); times are on pocketsphinx's 10 ms frame grid.
 #include "align/ForcedAligner.h"
@@ -25,6 +28,7 @@
 namespace lipsync {
 
 class Feedback;
+class SphinxCodebooks;
 
 class SphinxAligner
 {
@@ -38,6 +42,10 @@ public:
         std::string modelDir;
         // pocketsphinx options after the defaults (name, value), e.g. {"-topn", "32"}: for tuning.
         std::vector<std::pair<std::string, std::string>> extraArguments;
+        // Speaker adaptation: after the first alignment, `adaptationPasses` times an MLLR mean
+        // transform of the model's Gaussians estimated from the last alignment
+        // (SphinxAdaptation), then the alignment again under the adapted model. 0: none.
+        int adaptationPasses = 0;
     };
 
     // Checks that the model folder exists (lipsync::Error naming it and the Debian package if
@@ -71,10 +79,14 @@ private:
     struct Decoder; // a ps_decoder_t: the expanded configuration and the log table for the scorers
     Decoder *acquire() const;
     void release(Decoder *decoder) const;
+    const SphinxCodebooks &codebooks(Decoder *decoder) const;
 
     std::string m_modelDir;
     SphinxModelDefinition m_mdef;
     std::vector<std::pair<std::string, std::string>> m_extra;
+    int m_adaptationPasses = 0;
+    mutable std::once_flag m_codebooksOnce;
+    mutable std::unique_ptr<SphinxCodebooks> m_codebooks; // read on the first adaptation
     mutable std::mutex m_mutex;
     mutable std::vector<Decoder *> m_free;
     mutable std::vector<std::unique_ptr<Decoder>> m_all;

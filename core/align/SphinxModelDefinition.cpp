@@ -1,5 +1,6 @@
 #include "align/SphinxModelDefinition.h"
 
+#include "align/SphinxFileReader.h"
 #include "util/Error.h"
 
 #include <cstring>
@@ -16,70 +17,6 @@ uint32_t key(int base, int left, int right, int position)
     return ((uint32_t(base) * 256 + uint32_t(left)) * 256 + uint32_t(right)) * 4 + uint32_t(position);
 }
 
-// The file (sphinxbase's bin_mdef.c, format version 1), all integers in the writer's byte order:
-//   "BMDF" (or "FDMB" when written big-endian), int32 version 1, int32 header length, the header
-//   (a text description of the format), 10 int32 counts (n_ciphone, n_phone, n_emit_state,
-//   n_ci_sen, n_sen, n_tmat, n_sseq, n_ctx, n_cd_tree, sil), the CI phone names (NUL-terminated),
-//   padding to a 4-byte boundary, cd_tree[n_cd_tree] {int16 ctx, int16 n_down, int32 pid/down},
-//   phones[n_phone] {int32 ssid, int32 tmat, uint8 info[4]} (CI: info[0] = filler; CD: info =
-//   word position, base, left, right), then — not in the header's description — an int32 holding
-//   n_sseq * n_emit_state, and the senone sequences as uint16[n_sseq][n_emit_state].
-class Reader
-{
-public:
-    Reader(const std::string &bytes, const std::string &file) : m_bytes(bytes), m_file(file) {}
-
-    void need(uint64_t n, const char *what) const
-    {
-        if (n > m_bytes.size() - m_at)
-            throw Error(std::string("truncated CMU Sphinx model definition (") + what + ")", m_file);
-    }
-    void setSwap(bool swap) { m_swap = swap; }
-    uint32_t u32(const char *what)
-    {
-        need(4, what);
-        unsigned char b[4];
-        std::memcpy(b, m_bytes.data() + m_at, 4);
-        m_at += 4;
-        return m_swap ? uint32_t(b[3]) | uint32_t(b[2]) << 8 | uint32_t(b[1]) << 16 | uint32_t(b[0]) << 24
-                      : uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24;
-    }
-    uint16_t u16(const char *what)
-    {
-        need(2, what);
-        const auto b0 = uint16_t(uint8_t(m_bytes[m_at])), b1 = uint16_t(uint8_t(m_bytes[m_at + 1]));
-        m_at += 2;
-        return m_swap ? uint16_t(b0 << 8 | b1) : uint16_t(b1 << 8 | b0);
-    }
-    uint8_t u8(const char *what)
-    {
-        need(1, what);
-        return uint8_t(m_bytes[m_at++]);
-    }
-    std::string cstring(const char *what)
-    {
-        const size_t end = m_bytes.find('\0', m_at);
-        if (end == std::string::npos)
-            throw Error(std::string("truncated CMU Sphinx model definition (") + what + ")", m_file);
-        std::string s = m_bytes.substr(m_at, end - m_at);
-        m_at = end + 1;
-        return s;
-    }
-    void skip(uint64_t n, const char *what)
-    {
-        need(n, what);
-        m_at += size_t(n);
-    }
-    size_t position() const { return m_at; }
-    size_t remaining() const { return m_bytes.size() - m_at; }
-
-private:
-    const std::string &m_bytes;
-    const std::string &m_file;
-    size_t m_at = 0;
-    bool m_swap = false;
-};
-
 } // namespace
 
 SphinxModelDefinition SphinxModelDefinition::read(const std::string &path)
@@ -91,12 +28,20 @@ SphinxModelDefinition SphinxModelDefinition::read(const std::string &path)
     return parse(bytes, path);
 }
 
+// The file (sphinxbase's bin_mdef.c, format version 1), all integers in the writer's byte order:
+//   "BMDF" (or "FDMB" when written big-endian), int32 version 1, int32 header length, the header
+//   (a text description of the format), 10 int32 counts (n_ciphone, n_phone, n_emit_state,
+//   n_ci_sen, n_sen, n_tmat, n_sseq, n_ctx, n_cd_tree, sil), the CI phone names (NUL-terminated),
+//   padding to a 4-byte boundary, cd_tree[n_cd_tree] {int16 ctx, int16 n_down, int32 pid/down},
+//   phones[n_phone] {int32 ssid, int32 tmat, uint8 info[4]} (CI: info[0] = filler; CD: info =
+//   word position, base, left, right), then — not in the header's description — an int32 holding
+//   n_sseq * n_emit_state, and the senone sequences as uint16[n_sseq][n_emit_state].
 SphinxModelDefinition SphinxModelDefinition::parse(const std::string &bytes, const std::string &fileName)
 {
     auto fail = [&](const std::string &what) -> Error {
         return Error("invalid CMU Sphinx model definition: " + what, fileName);
     };
-    Reader r(bytes, fileName);
+    SphinxFileReader r(bytes, fileName, "CMU Sphinx model definition");
     r.need(4, "magic");
     if (bytes.compare(0, 4, "FDMB") == 0)
         r.setSwap(true);

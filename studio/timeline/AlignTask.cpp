@@ -39,14 +39,19 @@ std::shared_ptr<const AcousticModel> loadModel(const QString &path)
     return slot;
 }
 
-// One SphinxAligner per process: its decoders (a few hundred ms to load) are reused.
-std::shared_ptr<const SphinxAligner> sphinxAligner()
+// One SphinxAligner per process and choice of speaker adaptation: its decoders (a few hundred ms
+// to load) are reused.
+std::shared_ptr<const SphinxAligner> sphinxAligner(bool adapt)
 {
     static std::mutex mutex;
-    static std::shared_ptr<const SphinxAligner> aligner;
+    static std::shared_ptr<const SphinxAligner> aligners[2];
     const std::lock_guard lock(mutex);
-    if (!aligner)
-        aligner = std::make_shared<const SphinxAligner>();
+    std::shared_ptr<const SphinxAligner> &aligner = aligners[adapt ? 1 : 0];
+    if (!aligner) {
+        SphinxAligner::Options options;
+        options.adaptationPasses = adapt ? 1 : 0;
+        aligner = std::make_shared<const SphinxAligner>(options);
+    }
     return aligner;
 }
 
@@ -64,7 +69,8 @@ const AcousticModel &modelFor(const AlignJob &job, const AcousticModel &model, c
     return *adapted;
 }
 
-// The same job with CMU Sphinx's generic model (SphinxAligner).
+// The same job with CMU Sphinx's generic model (SphinxAligner), adapted to the recording
+// (SphinxAdaptation) when the job asks for it.
 TierPair alignWithSphinx(const AlignJob &job, const std::vector<std::string> &words, const Lexicon &lexicon,
                          const Realignment *realignment, Feedback &feedback)
 {
@@ -72,7 +78,7 @@ TierPair alignWithSphinx(const AlignJob &job, const std::vector<std::string> &wo
     try {
         const auto pronunciations = lexicon.pronounceAll(words);
         const AudioBuffer audio = AudioDecoder::decode(path, SphinxAligner::kSampleRate);
-        const std::shared_ptr<const SphinxAligner> aligner = sphinxAligner();
+        const std::shared_ptr<const SphinxAligner> aligner = sphinxAligner(job.adaptToSpeaker);
         const AlignmentResult r = realignment
                                       ? realignment->runPiecewise(*aligner, audio.samples, pronunciations, &feedback)
                                       : aligner->align(audio.samples, words, pronunciations, audio.duration(), &feedback);

@@ -37,7 +37,8 @@ struct AlignJob
     TierPair current;
     // The project's pronunciation overrides (Project::pronunciations).
     std::map<std::string, std::string> pronunciations;
-    // Adapt the model to the recording's speaker first (SpeakerAdaptation, `align --adapt`).
+    // Adapt the model to the recording's speaker first (`align --adapt`: SpeakerAdaptation of
+    // ours, SphinxAdaptation of CMU Sphinx's).
     bool adaptToSpeaker = false;
     AlignerChoice aligner = AlignerChoice::Shipped;
 };

@@ -83,11 +83,12 @@ TimelinePanel::TimelinePanel(QWidget *parent)
     m_alignAll = makeAction(tr("Align All"), tr("Align every sequence that has a transcript"));
     m_realign = makeAction(tr("Re-align Selection"),
                            tr("Align the selected stretch again, keeping the words whose timing you edited"));
-    // Speaker adaptation (SpeakerAdaptation): for voices unlike the GRID speaker the shipped
-    // model was trained on; about five times the alignment's time, so a choice, remembered.
+    // Speaker adaptation (SpeakerAdaptation of the built-in model, SphinxAdaptation of CMU
+    // Sphinx's): for voices unlike the models' training speakers; about five times the built-in
+    // alignment's time and twice CMU Sphinx's, so a choice, remembered.
     m_adaptAction = makeAction(tr("Adapt to Speaker"),
                                tr("Adapt the aligner to each recording's voice before aligning it (slower; "
-                                  "better for speakers unlike the built-in model's)"));
+                                  "better for voices unlike the model's training speakers)"));
     m_adaptAction->setCheckable(true);
     m_adaptAction->setChecked(QSettings().value(QStringLiteral("timeline/adaptToSpeaker"), false).toBool());
     connect(m_adaptAction, &QAction::toggled, this,
@@ -287,8 +288,6 @@ void TimelinePanel::updateActions()
     m_align->setEnabled(transcript && !aligning);
     m_alignAll->setEnabled(m_document && m_document->sequenceCount() > 0 && !aligning);
     m_realign->setEnabled(selection && !aligning && !m_waveform->words().isEmpty());
-    // Speaker adaptation adapts the built-in model; the CMU Sphinx model is used as it is.
-    m_adaptAction->setEnabled(!m_sphinxAlignerAction->isChecked());
     for (QAction *act : {m_split, m_merge, m_relabel})
         act->setEnabled(open);
     m_insertSilence->setEnabled(selection);
@@ -381,7 +380,7 @@ void TimelinePanel::startAlignment(const QString &title, std::vector<AlignJob> j
     const bool sphinx = m_sphinxAlignerAction->isChecked();
     for (AlignJob &job : jobs) {
         job.aligner = sphinx ? AlignerChoice::Sphinx : AlignerChoice::Shipped;
-        job.adaptToSpeaker = !sphinx && m_adaptAction->isChecked();
+        job.adaptToSpeaker = m_adaptAction->isChecked();
     }
     if (!m_window)
         return;

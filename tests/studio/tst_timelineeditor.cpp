@@ -403,8 +403,9 @@ private slots:
         }
     }
 
-    // "Generic US English (CMU Sphinx)": remembered in the settings, disables speaker adaptation
-    // (which adapts the built-in model), and aligns the sequence through the same task and undo.
+    // "Generic US English (CMU Sphinx)": remembered in the settings, keeps "Adapt to Speaker"
+    // (which then adapts CMU Sphinx's model: SphinxAdaptation), and aligns the sequence through
+    // the same task and undo, adapted too.
     void sphinxModelChoiceAligns()
     {
         if (!SphinxAligner::available())
@@ -414,7 +415,7 @@ private slots:
         QVERIFY(m_panel->sphinxAlignerAction()->isChecked());
         QVERIFY(!m_panel->builtInAlignerAction()->isChecked());
         QCOMPARE(QSettings().value(QStringLiteral("timeline/aligner")).toString(), QStringLiteral("sphinx"));
-        QVERIFY(!m_panel->adaptToSpeakerAction()->isEnabled());
+        QVERIFY(m_panel->adaptToSpeakerAction()->isEnabled());
         const int steps = m_window->undoStack()->index();
         QVERIFY(m_window->document()->requestTiersChange(0, Tier{"words", {}}, Tier{"phones", {}}, QStringLiteral("clear")));
         m_panel->alignAction()->trigger();
@@ -430,6 +431,18 @@ private slots:
         QVERIFY(m_view->phones() == s.phones);
         m_window->undoStack()->undo();
         m_window->undoStack()->undo();
+        // Adapted to the speaker: the same words, through the same task and undo.
+        m_panel->adaptToSpeakerAction()->setChecked(true);
+        m_panel->alignAction()->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 30000);
+        QCOMPARE(m_window->undoStack()->index(), steps + 1);
+        QStringList adapted;
+        for (const Interval &w : m_window->document()->sequence(0).words.intervals)
+            if (!tieredit::isSilenceLabel(w.label))
+                adapted << QString::fromStdString(w.label).toLower();
+        QCOMPARE(adapted, spoken);
+        m_window->undoStack()->undo();
+        m_panel->adaptToSpeakerAction()->setChecked(false);
         m_panel->builtInAlignerAction()->trigger();
         QVERIFY(m_panel->adaptToSpeakerAction()->isEnabled());
         QCOMPARE(QSettings().value(QStringLiteral("timeline/aligner")).toString(), QStringLiteral("builtin"));
