@@ -184,7 +184,7 @@ std::string num(double v)
 
 } // namespace
 
-const Tier *TextGrid::tier(const std::string &name) const
+const Tier *TextGrid::tier(const std::string &name) const &
 {
     auto lower = [](std::string s) {
         for (char &c : s)

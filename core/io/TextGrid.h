@@ -24,7 +24,10 @@ struct TextGrid
     std::vector<TextGridTier> tiers;
 
     // The interval tier named `name` (case-insensitive), or nullptr.
-    const Tier *tier(const std::string &name) const;
+    const Tier *tier(const std::string &name) const &;
+    // The pointer points into the grid: asking a temporary grid would dangle (ASan caught
+    // `for (x : readTextGrid(f).tier("words")->intervals)`), so that does not compile.
+    const Tier *tier(const std::string &name) const && = delete;
     bool operator==(const TextGrid &) const = default;
 };
 

@@ -199,7 +199,10 @@ private slots:
         QVERIFY2(missing.err.contains("/nonexistent/en-us"), missing.err.constData());
         const Run adapted = runLipsync({"align", media, "--transcript", transcript, "--model", "sphinx", "--adapt", "--out", out});
         QVERIFY2(adapted.exitCode == 0, adapted.err.constData());
-        for (const Interval &i : readTextGrid(out.toStdString()).tier("words")->intervals)
+        // Keep the grid alive: tier() points into it.
+        const TextGrid adaptedGrid = readTextGrid(out.toStdString());
+        QVERIFY(adaptedGrid.tier("words"));
+        for (const Interval &i : adaptedGrid.tier("words")->intervals)
             if (i.label == "forced")
                 QVERIFY2(std::abs(i.start - 0.55) <= 0.04, qPrintable(QString::number(i.start)));
         const Run help = runLipsync({"align", "--help"});
