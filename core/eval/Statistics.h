@@ -1,15 +1,14 @@
 #pragma once
 // Small statistics for the evaluation protocol (models.md §6.3, §6.4): Student-t quantiles for
-// 95 % intervals over folds, paired t-tests, the two-sided sign test.
+// 95 % intervals over folds, paired t-tests, the two-sided sign test. The distributions are
+// Boost.Math's (Debian libboost-dev, header-only), not our own special functions.
 #include <vector>
 
 namespace lipsync::stats {
 
-// Regularised incomplete beta I_x(a, b) (continued fraction, Numerical Recipes §6.4).
-double incompleteBeta(double a, double b, double x);
 // P(T <= t) for Student's t with dof degrees of freedom.
 double studentTCdf(double t, double dof);
-// The p-quantile of Student's t (bisection on the CDF), p in (0, 1).
+// The p-quantile of Student's t, p in (0, 1).
 double studentTQuantile(double p, double dof);
 
 struct MeanInterval
@@ -29,10 +28,8 @@ struct TTest
 // Paired t-test on a_f - b_f (§6.3).
 TTest pairedTTest(const std::vector<double> &a, const std::vector<double> &b);
 
-// Two-sided sign test ignoring ties (§6.4): p = min(1, 2 min(P(X <= nA), P(X >= nA))),
-// X ~ Bin(nA + nB, 1/2).
-double signTestPValue(int nA, int nB);
-// Holm step-down adjustment of p-values (same order as the input).
-std::vector<double> holmAdjust(const std::vector<double> &p);
+// Two-sided exact sign test (§6.4): k of n decided answers (ties removed beforehand) for one
+// side; p = min(1, 2 P(X <= min(k, n - k))), X ~ Bin(n, 1/2). 1 when n = 0.
+double signTestPValue(int k, int n);
 
 } // namespace lipsync::stats

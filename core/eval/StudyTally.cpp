@@ -1,5 +1,6 @@
 #include "eval/StudyTally.h"
 
+#include "eval/Statistics.h"
 #include "util/Error.h"
 
 #include <QJsonArray>
@@ -34,25 +35,6 @@ std::string csvField(const std::string &text)
 }
 
 } // namespace
-
-double signTestPValue(int k, int n)
-{
-    if (n <= 0)
-        return 1.0;
-    k = std::clamp(k, 0, n);
-    const int tail = std::min(k, n - k);
-    // P[X <= tail] = sum_i C(n, i) 2^-n, summed in log space (n may be in the thousands).
-    const double logHalfN = -n * std::log(2.0);
-    const double logNFact = std::lgamma(n + 1.0);
-    std::vector<double> logTerms;
-    for (int i = 0; i <= tail; ++i)
-        logTerms.push_back(logNFact - std::lgamma(i + 1.0) - std::lgamma(n - i + 1.0) + logHalfN);
-    const double top = *std::max_element(logTerms.begin(), logTerms.end());
-    double sum = 0;
-    for (double t : logTerms)
-        sum += std::exp(t - top);
-    return std::min(1.0, 2.0 * std::exp(top + std::log(sum)));
-}
 
 Eigen::VectorXd bradleyTerry(const Eigen::MatrixXd &wins, int maxIterations, double tolerance,
                              int *iterations)
@@ -153,7 +135,7 @@ void StudyTally::finalise()
     for (int i = 0; i < m; ++i)
         scores[size_t(i)].method = i;
     for (PairTally &p : pairs) {
-        p.pValue = signTestPValue(p.preferA, p.decided());
+        p.pValue = stats::signTestPValue(p.preferA, p.decided());
         wins(p.a, p.b) += p.preferA;
         wins(p.b, p.a) += p.preferB;
         scores[size_t(p.a)].wins += p.preferA;

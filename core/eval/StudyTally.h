@@ -21,9 +21,6 @@
 
 namespace lipsync {
 
-// Two-sided exact sign test: k successes out of n (ties removed beforehand).
-double signTestPValue(int k, int n);
-
 // Bradley-Terry strengths from wins(i, j) = times i beat j (diagonal ignored), by Hunter's MM
 // iteration until the largest change is below `tolerance`. Sum to 1.
 Eigen::VectorXd bradleyTerry(const Eigen::MatrixXd &wins, int maxIterations = 10000,

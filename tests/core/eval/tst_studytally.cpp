@@ -1,6 +1,7 @@
 // The study tally in the form of the paper's Table 1: exact sign-test p-values (checked against
 // binomial values computed independently with exact rational arithmetic), the Bradley-Terry
 // ranking (Hunter's MM algorithm) and the paper's own counts and ranking line.
+#include "eval/Statistics.h"
 #include "eval/StudyTally.h"
 
 #include "util/Error.h"
@@ -51,6 +52,9 @@ private slots:
         QTest::newRow("5 of 25") << 5 << 25 << 0.0040773153305053711;
         QTest::newRow("10 of 30") << 10 << 30 << 0.098737146705389023;
         QTest::newRow("20 of 29") << 20 << 29 << 0.061428345739841461;
+        // n in the thousands and a tail far below double epsilon: no cancellation, no overflow.
+        QTest::newRow("1000 of 2100") << 1000 << 2100 << 0.030720707864242296;
+        QTest::newRow("40 of 200") << 40 << 200 << 3.3840159775152892e-18;
         QTest::newRow("3 of 6 (even split)") << 3 << 6 << 1.0;
         QTest::newRow("0 of 1") << 0 << 1 << 1.0;
         QTest::newRow("no decided answers") << 0 << 0 << 1.0;
@@ -60,8 +64,8 @@ private slots:
         QFETCH(int, k);
         QFETCH(int, n);
         QFETCH(double, p);
-        QVERIFY2(close(signTestPValue(k, n), p, 1e-10),
-                 qPrintable(QString("%1 vs %2").arg(signTestPValue(k, n), 0, 'g', 17).arg(p, 0, 'g', 17)));
+        QVERIFY2(close(stats::signTestPValue(k, n), p, 1e-10),
+                 qPrintable(QString("%1 vs %2").arg(stats::signTestPValue(k, n), 0, 'g', 17).arg(p, 0, 'g', 17)));
     }
 
     // The paper reports no p-values; these are the exact ones for its counts (undecided
