@@ -1,11 +1,8 @@
 #include "tasks/TaskRunner.h"
 
+#include "tasks/FencedJob.h"
 #include "util/Error.h"
 
-#include "tasks/HandoffFence.h"
-
-#include <QPromise>
-#include <QRunnable>
 #include <QThread>
 
 #include <algorithm>
@@ -20,42 +17,6 @@ struct Outcome
     TaskRunner::Commit commit;
     Task::State state = Task::State::Finished;
     QString error;
-};
-
-// The work of one task on a pool thread. A QRunnable of ours rather than QtConcurrent::run so that
-// the first thing the pool thread does with the task's data is pass handoffFence() (see there).
-class Job : public QRunnable
-{
-public:
-    Job(TaskRunner::Work work, std::shared_ptr<Outcome> outcome, Feedback *feedback)
-        : m_work(std::move(work)), m_outcome(std::move(outcome)), m_feedback(feedback)
-    {
-        m_promise.start();
-    }
-    QFuture<void> future() { return m_promise.future(); }
-
-    void run() override
-    {
-        handoffFence();
-        try {
-            m_outcome->commit = m_work(*m_feedback);
-        } catch (const Canceled &) {
-            m_outcome->state = Task::State::Canceled;
-        } catch (const std::exception &e) {
-            m_outcome->state = Task::State::Failed;
-            m_outcome->error = QString::fromUtf8(e.what());
-        }
-        // Drop the work's captures here, on the worker, before the GUI thread is told.
-        m_work = nullptr;
-        handoffFence();
-        m_promise.finish();
-    }
-
-private:
-    TaskRunner::Work m_work;
-    std::shared_ptr<Outcome> m_outcome;
-    Feedback *m_feedback;
-    QPromise<void> m_promise;
 };
 
 } // namespace
@@ -100,10 +61,17 @@ Task *TaskRunner::start(const QString &title, Work work)
         emit taskFinished(task);
     });
 
-    auto *job = new Job(std::move(work), outcome, &task->feedback());
-    watcher->setFuture(job->future());
-    handoffFence();
-    m_pool.start(job); // the pool deletes the job after run()
+    Feedback *feedback = &task->feedback();
+    watcher->setFuture(startFenced<void>(m_pool, [work = std::move(work), outcome, feedback] {
+        try {
+            outcome->commit = work(*feedback);
+        } catch (const Canceled &) {
+            outcome->state = Task::State::Canceled;
+        } catch (const std::exception &e) {
+            outcome->state = Task::State::Failed;
+            outcome->error = QString::fromUtf8(e.what());
+        }
+    }));
     emit taskStarted(task);
     return task;
 }

@@ -3,7 +3,7 @@
 #include "app/ErrorReporter.h"
 #include "app/ProjectDocument.h"
 #include "project/ProjectManifest.h"
-#include "tasks/HandoffFence.h"
+#include "tasks/FencedJob.h"
 #include "tasks/TaskRunner.h"
 #include "util/Error.h"
 
@@ -12,9 +12,7 @@
 #include <QFileInfo>
 #include <QLocale>
 #include <QMessageBox>
-#include <QPromise>
 #include <QPushButton>
-#include <QRunnable>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QThreadPool>
@@ -25,42 +23,6 @@ namespace lipsync::studio {
 namespace {
 
 Autosave::Prompt g_prompt;
-
-// The write of one autosave on a pool thread; its result is the error message, empty on success.
-// A QRunnable of ours rather than QtConcurrent::run (as the task runner's jobs) so that both
-// hand-overs pass handoffFence(): ThreadSanitizer then checks the write itself instead of a
-// suppression hiding it (Qt orders them with locks inside uninstrumented libQt6Core).
-class WriteJob : public QRunnable
-{
-public:
-    WriteJob(Project project, QString folder, bool readOnly)
-        : m_project(std::move(project)), m_folder(std::move(folder)), m_readOnly(readOnly)
-    {
-        m_promise.start();
-    }
-    QFuture<QString> future() { return m_promise.future(); }
-
-    void run() override
-    {
-        handoffFence();
-        QString error;
-        try {
-            Autosave::write(m_project, m_folder, m_readOnly);
-        } catch (const std::exception &e) {
-            error = QString::fromUtf8(e.what());
-        }
-        m_project = Project(); // freed here, before the GUI thread is told
-        m_promise.addResult(error);
-        handoffFence();
-        m_promise.finish();
-    }
-
-private:
-    Project m_project; // a copy: the document's data without media
-    QString m_folder;
-    bool m_readOnly;
-    QPromise<QString> m_promise;
-};
 
 QString settingsKey()
 {
@@ -186,11 +148,18 @@ bool Autosave::saveNow()
     m_changed = false;
     m_writing = m_target;
     // The copy is cheap (the document's data, no media); serialising and fsyncing is not.
-    auto *job = new WriteJob(m_document->project(), m_document->folder(), m_document->isReadOnly());
-    // Hands the job over, and orders setFuture's freeing of the previous write's result after it.
-    handoffFence();
-    m_write.setFuture(job->future());
-    QThreadPool::globalInstance()->start(job); // the pool deletes the job after run()
+    // The write's result is the error message, empty on success. startFenced's hand-over also
+    // orders setFuture's freeing of the previous write's result after that write's own.
+    m_write.setFuture(startFenced<QString>(
+        *QThreadPool::globalInstance(),
+        [project = m_document->project(), folder = m_document->folder(), readOnly = m_document->isReadOnly()] {
+            try {
+                Autosave::write(project, folder, readOnly);
+            } catch (const std::exception &e) {
+                return QString::fromUtf8(e.what());
+            }
+            return QString();
+        }));
     return true;
 }
 
@@ -199,7 +168,7 @@ void Autosave::onWriteFinished()
     // Also reached from waitForWrite before the watcher's queued signal: handle each write once.
     if (m_writing.isEmpty() || !m_write.isFinished())
         return;
-    handoffFence(); // after the write's own (see WriteJob)
+    handoffFence(); // after the write's own (startFenced)
     const QString error = m_write.result();
     const QString folder = std::exchange(m_writing, QString());
     if (!error.isEmpty()) {
