@@ -32,6 +32,7 @@ public:
     bool isOnionSkinVisible() const { return m_onionVisible; }
     // Shown when there is no image ("Loading…", an error).
     void setPlaceholderText(const QString &text);
+    QString placeholderText() const { return m_placeholder; }
     // A line over the frame's top-left corner (fit error, ...).
     void setInfoText(const QString &text);
 

@@ -266,6 +266,9 @@ void PreviewPanel::prepare()
         if (state != Task::State::Finished)
             m_prepareFailed = id; // not again until the sequence is loaded again
         prepare(); // the sequence shown now may have changed meanwhile
+        // The commit rebuilt the panels while this task still counted as running: say what is
+        // missing now ("train a model"), not "tracking the head pose".
+        layoutPanels();
         if (state == Task::State::Failed && id == m_prepareFailed && m_panels.size() > 1)
             m_panels.back().view->setPlaceholderText(tr("The head could not be tracked: %1").arg(task->errorMessage()));
     });
