@@ -39,10 +39,9 @@ std::string Feedback::status() const
 
 void Feedback::reportIteration(int iteration, double objective)
 {
+    // Not forwarded to the parent (see the constructor).
     if (onIteration)
         onIteration(iteration, objective);
-    if (m_parent)
-        m_parent->reportIteration(iteration, objective);
 }
 
 void Feedback::cancel()

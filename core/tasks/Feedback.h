@@ -21,7 +21,10 @@ class Feedback
 {
 public:
     Feedback() = default;
-    // A child reporting into [from, to] of the parent's range and sharing its cancel flag.
+    // A child reporting into [from, to] of the parent's range and sharing its cancel flag. Its
+    // status reaches the parent too; its iterations do not: they belong to a sub-problem with an
+    // objective of its own (SLDS's DPDS initialisation plotted as SLDS iterations 1..30, then SLDS's
+    // own 1..200, drew a line back across the studio's objective plot).
     Feedback(Feedback &parent, double from, double to);
     Feedback(const Feedback &) = delete;
     Feedback &operator=(const Feedback &) = delete;

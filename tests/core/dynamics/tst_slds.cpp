@@ -256,10 +256,20 @@ private slots:
         for (int s = 0; s < 15; ++s)
             data.push_back(sample(rng, p, randomLabels(rng, 30, {0, 6, 21})));
         Feedback feedback;
+        // The iterations reported are SLDS's own EM iterations 1, 2, ... with its objective, not
+        // those of the DPDS it trains for its initialisation (the studio plots them per model).
+        std::vector<std::pair<int, double>> reported;
+        feedback.onIteration = [&](int i, double objective) { reported.emplace_back(i, objective); };
         SldsOptions options;
         options.maxIterations = 20;
         SldsModel own(options);
         own.train(data, feedback);
+        QCOMPARE(reported.size(), own.objectiveHistory().size());
+        for (size_t i = 0; i < reported.size(); ++i) {
+            QCOMPARE(reported[i].first, int(i) + 1);
+            QCOMPARE(reported[i].second, own.objectiveHistory()[i]);
+        }
+        feedback.onIteration = nullptr;
         DpdsOptions dpdsOptions;
         dpdsOptions.maxIterations = options.initIterations;
         auto dpds = std::make_shared<DpdsModel>(dpdsOptions);

@@ -133,7 +133,15 @@ private slots:
     void childFeedbackMapsRangeAndSharesCancel()
     {
         Feedback parent;
+        int parentIterations = 0;
+        parent.onIteration = [&](int, double) { ++parentIterations; };
         Feedback child(parent, 0.5, 1.0);
+        int childIterations = 0;
+        child.onIteration = [&](int, double) { ++childIterations; };
+        // A child's iterations are a sub-problem's: the parent's objective plot must not get them.
+        child.reportIteration(1, -3.0);
+        QCOMPARE(childIterations, 1);
+        QCOMPARE(parentIterations, 0);
         child.setProgress(0.5);
         QCOMPARE(parent.progress(), 0.75);
         QVERIFY(!child.isCanceled());
