@@ -172,27 +172,27 @@
 <context>
     <name>lipsync::studio::Autosave</name>
     <message>
-        <location filename="../studio/app/Autosave.cpp" line="72"/>
+        <location filename="../studio/app/Autosave.cpp" line="34"/>
         <source>Recover Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../studio/app/Autosave.cpp" line="73"/>
+        <location filename="../studio/app/Autosave.cpp" line="35"/>
         <source>LipSync Studio did not close normally while %1 had unsaved changes. An autosave from %2 is newer than the saved project.</source>
         <translation>LipSync Studio wurde nicht normal beendet, während %1 ungespeicherte Änderungen hatte. Eine automatische Sicherung vom %2 ist neuer als das gespeicherte Projekt.</translation>
     </message>
     <message>
-        <location filename="../studio/app/Autosave.cpp" line="78"/>
+        <location filename="../studio/app/Autosave.cpp" line="40"/>
         <source>Recover opens the autosaved version as unsaved changes; Discard deletes the autosave.</source>
         <translation>„Wiederherstellen“ öffnet die automatisch gesicherte Fassung als ungespeicherte Änderungen; „Verwerfen“ löscht die automatische Sicherung.</translation>
     </message>
     <message>
-        <location filename="../studio/app/Autosave.cpp" line="80"/>
+        <location filename="../studio/app/Autosave.cpp" line="42"/>
         <source>Recover</source>
         <translation>Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../studio/app/Autosave.cpp" line="280"/>
+        <location filename="../studio/app/Autosave.cpp" line="249"/>
         <source>The autosaved changes could not be recovered; the saved project opens.</source>
         <translation>Die automatisch gesicherten Änderungen konnten nicht wiederhergestellt werden; das gespeicherte Projekt wird geöffnet.</translation>
     </message>
@@ -1166,7 +1166,6 @@
     <name>lipsync::studio::ObjectivePlot</name>
     <message>
         <location filename="../studio/plots/ObjectivePlot.cpp" line="7"/>
-        <location filename="../studio/plots/ObjectivePlot.cpp" line="61"/>
         <source>Training objective</source>
         <translation>Trainingsziel</translation>
     </message>
@@ -1181,14 +1180,9 @@
         <translation>Zielfunktion</translation>
     </message>
     <message>
-        <location filename="../studio/plots/ObjectivePlot.cpp" line="57"/>
+        <location filename="../studio/plots/ObjectivePlot.cpp" line="59"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
-    </message>
-    <message>
-        <location filename="../studio/plots/ObjectivePlot.cpp" line="62"/>
-        <source>Training objective — %1</source>
-        <translation>Trainingsziel — %1</translation>
     </message>
 </context>
 <context>
@@ -1322,73 +1316,73 @@
         <translation>Vorschau von %1 vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="270"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="273"/>
         <source>The head could not be tracked: %1</source>
         <translation>Der Kopf konnte nicht verfolgt werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="319"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="322"/>
         <source>Recorded video</source>
         <translation>Aufgenommenes Video</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="324"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="327"/>
         <source>Generated: %1</source>
         <translation>Erzeugt: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="328"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="331"/>
         <source>Generated</source>
         <translation>Erzeugt</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="376"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="379"/>
         <source>The project has no appearance model (Faces ▸ Build AAM).</source>
         <translation>Das Projekt hat kein Erscheinungsmodell (Gesichter ▸ AAM erstellen).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="378"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="381"/>
         <source>Tracking the head pose…</source>
         <translation>Kopfhaltung wird verfolgt…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="380"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="383"/>
         <source>This sequence has no phones (align it in the Timeline).</source>
         <translation>Diese Sequenz hat keine Phoneme (in der Zeitleiste alignieren).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="382"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="385"/>
         <source>Train a dynamic model in the Models panel to see the faces it generates.</source>
         <translation>Trainieren Sie ein dynamisches Modell im Bereich „Modelle“, um die erzeugten Gesichter zu sehen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="431"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="434"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 — Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="540"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="543"/>
         <source>Faces for new speech need the project&apos;s appearance model.</source>
         <translation>Gesichter für neue Sprache brauchen das Erscheinungsmodell des Projekts.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="541"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="544"/>
         <source>Build one with Faces ▸ Build AAM.</source>
         <translation>Erstellen Sie eines mit Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="546"/>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="601"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="549"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="604"/>
         <source>No faces could be generated for this speech.</source>
         <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="547"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="550"/>
         <source>Train a dynamic model in the Models panel first.</source>
         <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="569"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="572"/>
         <source>Generate faces for %1</source>
         <translation>Gesichter für %1 erzeugen</translation>
     </message>

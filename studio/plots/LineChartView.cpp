@@ -81,6 +81,17 @@ void LineChartView::setTitle(const QString &title)
     update();
 }
 
+void LineChartView::setLegendVisible(bool visible)
+{
+    c->chart->SetShowLegend(visible);
+    vtkChartLegend *legend = c->chart->GetLegend();
+    legend->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+    legend->SetVerticalAlignment(vtkChartLegend::BOTTOM);
+    legend->GetLabelProperties()->SetFontSize(10);
+    legend->GetBrush()->SetOpacity(170);
+    update();
+}
+
 void LineChartView::setAxisTitles(const QString &x, const QString &y)
 {
     c->chart->GetAxis(vtkAxis::BOTTOM)->SetTitle(x.toUtf8().constData());
@@ -149,6 +160,7 @@ void LineChartView::updateCursor()
     c->cursorPlot->SetInputData(c->cursorTable, 0, 1);
     c->cursorPlot->SetColor(229, 57, 53, 255);
     c->cursorPlot->SetWidth(1.5f);
+    c->cursorPlot->SetLegendVisibility(false);
 }
 
 } // namespace lipsync::studio

@@ -6,6 +6,9 @@ ObjectivePlot::ObjectivePlot(QWidget *parent) : LineChartView(parent)
 {
     setTitle(tr("Training objective"));
     setAxisTitles(tr("iteration"), tr("objective"));
+    // Each model's name and latest objective in the legend: in the title they were cut off at
+    // both ends once three or four models trained in the narrow dock.
+    setLegendVisible(true);
 }
 
 void ObjectivePlot::startRun(const QString &key, const QString &name, const QColor &color)
@@ -49,17 +52,12 @@ int ObjectivePlot::totalIterations() const
 void ObjectivePlot::redraw()
 {
     clearSeries();
-    QStringList names;
+    // Models trained in closed form (Brand, HMM-mean) report no iterations and draw no line.
     for (const QString &key : m_order) {
         const Run &r = m_runs[key];
-        names.append(r.iterations.isEmpty()
-                         ? r.name
-                         : tr("%1: %2").arg(r.name).arg(r.objectives.back(), 0, 'g', 6));
         if (!r.iterations.isEmpty())
-            addSeries(r.name, r.iterations, r.objectives, r.color);
+            addSeries(tr("%1: %2").arg(r.name).arg(r.objectives.back(), 0, 'g', 6), r.iterations, r.objectives, r.color);
     }
-    setTitle(names.isEmpty() ? tr("Training objective")
-                             : tr("Training objective — %1").arg(names.join(QStringLiteral(", "))));
 }
 
 } // namespace lipsync::studio
