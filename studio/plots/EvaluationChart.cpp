@@ -194,6 +194,15 @@ void EvaluationChart::setResult(const EvaluationResult &result)
         x->SetTitle("");
         vtkAxis *y = chart->GetAxis(vtkAxis::LEFT);
         y->SetTitle("");
+        // Small enough that four model names fit side by side in a docked chart, and the value
+        // axis gets more than its zero tick.
+        x->GetLabelProperties()->SetFontSize(9);
+        y->GetLabelProperties()->SetFontSize(9);
+        // Three value ticks (bottom, middle, top) whatever the height: VTK's automatic spacing
+        // left only the zero tick in a docked chart, so the bars had no scale.
+        y->SetNumberOfTicks(3);
+        y->SetNotation(vtkAxis::PRINTF_NOTATION);
+        y->SetLabelFormat("%.3g");
         const double pad = 0.08 * std::max(hi - lo, 1e-9);
         y->SetBehavior(vtkAxis::FIXED);
         y->SetRange(lo < 0 ? lo - pad : 0.0, hi > 0 ? hi + pad : 0.0);
