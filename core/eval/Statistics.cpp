@@ -9,16 +9,25 @@
 
 namespace lipsync::stats {
 
+namespace {
+
+// NaN for arguments outside the domain (a NaN t from folds with a non-finite metric, say)
+// rather than Boost's default std::domain_error: one bad comparison must not abort an evaluation.
+using Policy = boost::math::policies::policy<boost::math::policies::domain_error<boost::math::policies::ignore_error>>;
+using StudentT = boost::math::students_t_distribution<double, Policy>;
+
+} // namespace
+
 double studentTCdf(double t, double dof)
 {
-    if (std::isinf(t))
+    if (std::isinf(t) && dof > 0)
         return t > 0 ? 1.0 : 0.0;
-    return boost::math::cdf(boost::math::students_t(dof), t);
+    return boost::math::cdf(StudentT(dof), t);
 }
 
 double studentTQuantile(double p, double dof)
 {
-    return boost::math::quantile(boost::math::students_t(dof), p);
+    return boost::math::quantile(StudentT(dof), p);
 }
 
 MeanInterval meanWithCi95(const std::vector<double> &values)
@@ -65,7 +74,7 @@ double signTestPValue(int k, int n)
         return 1.0;
     k = std::clamp(k, 0, n);
     const int tail = std::min(k, n - k);
-    return std::min(1.0, 2.0 * boost::math::cdf(boost::math::binomial(double(n), 0.5), double(tail)));
+    return std::min(1.0, 2.0 * boost::math::cdf(boost::math::binomial_distribution<double, Policy>(double(n), 0.5), double(tail)));
 }
 
 } // namespace lipsync::stats

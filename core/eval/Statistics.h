@@ -6,7 +6,7 @@
 
 namespace lipsync::stats {
 
-// P(T <= t) for Student's t with dof degrees of freedom.
+// P(T <= t) for Student's t with dof degrees of freedom; NaN for a NaN t or dof <= 0.
 double studentTCdf(double t, double dof);
 // The p-quantile of Student's t, p in (0, 1).
 double studentTQuantile(double p, double dof);

@@ -61,6 +61,12 @@ private slots:
         const stats::TTest t = stats::pairedTTest({2, 4, 6}, {1, 2, 3});
         QVERIFY(std::abs(t.t - 3.4641016) < 1e-6);
         QVERIFY(std::abs(t.p - 0.07417990) < 1e-6);
+        // A non-finite fold value gives a NaN p-value, not an exception that ends the evaluation.
+        const stats::TTest bad = stats::pairedTTest({2, -INFINITY, 6}, {1, 2, 3});
+        QVERIFY(std::isnan(bad.p));
+        QVERIFY(std::isnan(stats::studentTCdf(NAN, 4)));
+        QCOMPARE(stats::studentTCdf(INFINITY, 4), 1.0);
+        QVERIFY(std::abs(stats::studentTCdf(-2.7764451, 4) - 0.025) < 1e-7);
     }
 
     // §7.24: the paper's Table 1 counts give its sign-test p-values and Bradley-Terry order.
