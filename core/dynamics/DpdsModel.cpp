@@ -141,15 +141,34 @@ struct DimensionFit
         }
         const Eigen::LLT<Eigen::MatrixXd> llt(G);
         // Kaufman's VarPro Gauss-Newton matrix: the Schur complement.
-        const Eigen::MatrixXd reduced = Haa - Hat * llt.solve(Hat.transpose());
+        const Eigen::MatrixXd schur = Haa - Hat * llt.solve(Hat.transpose());
+        // [choice, beyond §4.8's proj(a + δ)] States held at a bound of §4.9 whose gradient
+        // points out of the box take no part in the step (projected Newton, Bertsekas 1982):
+        // projecting a full step that moves them made most candidates fail, so the damping grew
+        // and the free states crept. On the 10 demo clips 7 of 9 dimensions stopped at the
+        // 100-iteration cap with steps of 1e-5 nats; with the bound states held, 8 of 9 converge
+        // in 13-49 iterations and the objective ends higher (tst_dpds boundHeldStatesConverge).
+        const double lower = options->nonNegativeA ? 0.0 : -options->aMax;
+        std::vector<Eigen::Index> free;
+        for (Eigen::Index i = 0; i < m; ++i) {
+            const double ai = a[activeStates[i]];
+            const bool pushesUp = ai >= options->aMax - 1e-12 && gA[i] > 0.0;
+            const bool pushesDown = ai <= lower + 1e-12 && gA[i] < 0.0;
+            if (!pushesUp && !pushesDown)
+                free.push_back(i);
+        }
+        if (free.empty())
+            return false; // every active state held at a bound: a KKT point
+        const Eigen::MatrixXd reduced = schur(free, free);
+        const Eigen::VectorXd gFree = gA(free);
         const Eigen::VectorXd diag = reduced.diagonal().cwiseMax(1e-12 * reduced.diagonal().cwiseAbs().maxCoeff() + 1e-300);
         while (damp <= 1e10) {
             Eigen::MatrixXd damped = reduced;
             damped.diagonal() += damp * diag;
-            const Eigen::VectorXd delta = damped.ldlt().solve(gA);
+            const Eigen::VectorXd delta = damped.ldlt().solve(gFree);
             Eigen::VectorXd candidate = a;
-            for (Eigen::Index i = 0; i < m; ++i)
-                candidate[activeStates[i]] += delta[i];
+            for (size_t i = 0; i < free.size(); ++i)
+                candidate[activeStates[free[i]]] += delta[Eigen::Index(i)];
             candidate = project(candidate);
             if ((candidate - a).cwiseAbs().maxCoeff() < 1e-14)
                 return false;
