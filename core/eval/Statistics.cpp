@@ -20,9 +20,7 @@ using StudentT = boost::math::students_t_distribution<double, Policy>;
 
 double studentTCdf(double t, double dof)
 {
-    if (std::isinf(t) && dof > 0)
-        return t > 0 ? 1.0 : 0.0;
-    return boost::math::cdf(StudentT(dof), t);
+    return boost::math::cdf(StudentT(dof), t); // 0 and 1 at -inf and +inf
 }
 
 double studentTQuantile(double p, double dof)
