@@ -49,10 +49,12 @@ struct DimensionFit
         return w;
     }
 
+    // The lower end of the §4.9 box [lower, aMax] for a.
+    double lowerBound() const { return options->nonNegativeA ? 0.0 : -options->aMax; }
+
     Eigen::VectorXd project(Eigen::VectorXd v) const
     {
-        const double lower = options->nonNegativeA ? 0.0 : -options->aMax;
-        return v.cwiseMax(lower).cwiseMin(options->aMax);
+        return v.cwiseMax(lowerBound()).cwiseMin(options->aMax);
     }
 
     Eigen::VectorXd solveTheta(const dpds::NormalEquations &ne, const Weights &w) const
@@ -148,7 +150,7 @@ struct DimensionFit
         // and the free states crept. On the 10 demo clips 7 of 9 dimensions stopped at the
         // 100-iteration cap with steps of 1e-5 nats; with the bound states held, 8 of 9 converge
         // in 13-49 iterations and the objective ends higher (tst_dpds boundHeldStatesConverge).
-        const double lower = options->nonNegativeA ? 0.0 : -options->aMax;
+        const double lower = lowerBound();
         std::vector<Eigen::Index> free;
         for (Eigen::Index i = 0; i < m; ++i) {
             const double ai = a[activeStates[i]];
