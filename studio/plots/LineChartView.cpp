@@ -1,5 +1,7 @@
 #include "plots/LineChartView.h"
 
+#include "plots/ChartLegend.h"
+
 #include <vtkAxis.h>
 #include <vtkBrush.h>
 #include <vtkChartLegend.h>
@@ -83,12 +85,10 @@ void LineChartView::setTitle(const QString &title)
 
 void LineChartView::setLegendVisible(bool visible)
 {
-    c->chart->SetShowLegend(visible);
-    vtkChartLegend *legend = c->chart->GetLegend();
-    legend->SetHorizontalAlignment(vtkChartLegend::RIGHT);
-    legend->SetVerticalAlignment(vtkChartLegend::BOTTOM);
-    legend->GetLabelProperties()->SetFontSize(10);
-    legend->GetBrush()->SetOpacity(170);
+    if (visible)
+        showCornerLegend(*c->chart, vtkChartLegend::BOTTOM);
+    else
+        c->chart->SetShowLegend(false);
     update();
 }
 

@@ -21,7 +21,7 @@ public:
     void setTitle(const QString &title);
     void setAxisTitles(const QString &x, const QString &y);
     // A legend of the series' names in the bottom-right corner (where rising curves such as an
-    // objective per iteration leave room), translucent so that the curves stay visible beneath.
+    // objective per iteration leave room), in the style of showCornerLegend.
     void setLegendVisible(bool visible);
     // Adds a series (x and y of equal length); returns its index.
     int addSeries(const QString &name, const QVector<double> &x, const QVector<double> &y,

@@ -1,5 +1,7 @@
 #include "plots/TrajectoryView.h"
 
+#include "plots/ChartLegend.h"
+
 #include "project/Tier.h"
 
 #include <vtkAxis.h>
@@ -69,11 +71,7 @@ TrajectoryView::TrajectoryView(QWidget *parent) : VtkWidget(parent), t(std::make
     t->view->SetInteractor(interactor());
     t->view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
     t->view->GetScene()->AddItem(t->chart);
-    t->chart->SetShowLegend(true);
-    t->chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
-    t->chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
-    t->chart->GetLegend()->GetLabelProperties()->SetFontSize(9);
-    t->chart->GetLegend()->GetBrush()->SetOpacity(170); // the curves stay visible beneath
+    showCornerLegend(*t->chart, vtkChartLegend::TOP);
     t->chart->GetTitleProperties()->SetFontSize(13);
     for (int axis : {vtkAxis::BOTTOM, vtkAxis::LEFT, vtkAxis::TOP}) {
         t->chart->GetAxis(axis)->GetTitleProperties()->SetFontSize(12);

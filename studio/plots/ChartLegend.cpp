@@ -1,0 +1,20 @@
+#include "plots/ChartLegend.h"
+
+#include <vtkBrush.h>
+#include <vtkChartLegend.h>
+#include <vtkChartXY.h>
+#include <vtkTextProperty.h>
+
+namespace lipsync::studio {
+
+void showCornerLegend(vtkChartXY &chart, int verticalAlignment)
+{
+    chart.SetShowLegend(true);
+    vtkChartLegend *legend = chart.GetLegend();
+    legend->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+    legend->SetVerticalAlignment(verticalAlignment);
+    legend->GetLabelProperties()->SetFontSize(9);
+    legend->GetBrush()->SetOpacity(170);
+}
+
+} // namespace lipsync::studio
