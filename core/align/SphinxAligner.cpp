@@ -89,7 +89,7 @@ std::string sphinxPhone(int phone)
 const std::vector<std::pair<std::string, std::string>> &baseArguments()
 {
     static const std::vector<std::pair<std::string, std::string>> args{
-        {"-remove_silence", "no"}, {"-compallsen", "no"}, {"-topn", "8"}, {"-logfn", "/dev/null"},
+        {"-remove_silence", "no"}, {"-compallsen", "no"}, {"-topn", "8"},
     };
     return args;
 }
@@ -263,8 +263,13 @@ SphinxAligner::Decoder *SphinxAligner::acquire() const
     std::vector<char *> argv;
     for (std::string &a : args)
         argv.push_back(a.data());
-    // pocketsphinx logs to stderr until -logfn takes effect: silence it from the start.
-    err_set_logfp(nullptr);
+    // pocketsphinx's log is one process-wide FILE: silenced once, before the first decoder, and
+    // never touched again. Each decoder used to set it (-logfn /dev/null, after an
+    // err_set_logfp(nullptr) of its own), and err_set_logfp fcloses the FILE it replaces: one
+    // thread closed the log another thread's ps_init had just opened and was writing to, and
+    // tst_sphinxaligner's concurrent decoders hung once in CI.
+    static std::once_flag silenced;
+    std::call_once(silenced, [] { err_set_logfp(nullptr); });
     cmd_ln_t *config = cmd_ln_parse_r(nullptr, ps_args(), int(argv.size()), argv.data(), FALSE);
     if (!config)
         throw Error("invalid pocketsphinx options", m_modelDir);
