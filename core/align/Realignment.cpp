@@ -26,13 +26,28 @@ std::vector<std::string> wordsOf(const std::string &label)
     return Lexicon::splitWords(label);
 }
 
-// Replaces the intervals of `tier` inside [a, b] by those of `replacement` clipped to it.
+// Replaces [a, b] of `tier` by `replacement` clipped to it. An interval reaching into [a, b]
+// from outside keeps only its outside part(s) — a phone the user merged across a word edge
+// straddles the stretch — so the result stays sorted without overlap (Tier::defect).
 void splice(Tier &tier, double a, double b, const Tier &replacement)
 {
     std::vector<Interval> out;
-    for (const Interval &iv : tier.intervals)
-        if (!(iv.start >= a - kEps && iv.end <= b + kEps))
-            out.push_back(iv);
+    for (const Interval &iv : tier.intervals) {
+        if (iv.end <= a || iv.start >= b) {
+            out.push_back(iv); // outside, touching at most
+            continue;
+        }
+        if (iv.start < a - kEps) {
+            Interval before = iv;
+            before.end = a;
+            out.push_back(before);
+        }
+        if (iv.end > b + kEps) {
+            Interval after = iv;
+            after.start = b;
+            out.push_back(after);
+        }
+    }
     for (Interval iv : replacement.intervals) {
         iv.start = std::max(a, iv.start);
         iv.end = std::min(b, iv.end);

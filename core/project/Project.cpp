@@ -95,23 +95,8 @@ void Project::save(const std::string &folderArgument) const
     const std::string folder = absolutePath(folderArgument);
     const std::string manifest = manifestPath(folder);
 
-    // Validate everything before touching the disk: the manifest by reading back what would be
-    // written (the same checks as load), the features here since load reads them from the CSV.
+    validate(folder);
     const QJsonObject json = ProjectManifest::toJson(*this, folder);
-    ProjectManifest::fromJson(json, manifest, folder, /*readFeatures=*/false);
-    for (size_t i = 0; i < sequences.size(); ++i) {
-        const Sequence &s = sequences[i];
-        if (s.features.size() == 0)
-            continue;
-        const std::string field = "sequences[" + std::to_string(i) + "].features";
-        if (!s.features.allFinite())
-            throw Error("sequence '" + s.id + "': features contain NaN or infinite values",
-                        manifest, field);
-        if (s.features.rows() != s.frameCount)
-            throw Error("sequence '" + s.id + "': " + std::to_string(s.features.rows())
-                            + " feature rows, expected frameCount " + std::to_string(s.frameCount),
-                        manifest, field);
-    }
 
     if (!QDir().mkpath(q(folder)))
         throw Error("cannot create the project folder", folder);
@@ -166,6 +151,28 @@ void Project::save(const std::string &folderArgument) const
         writeFileAtomically(to, readWholeFile(from));
     writeManifest(manifest, json);
     QDir(dir.filePath(QString::fromLatin1(kStagingFolder))).removeRecursively();
+}
+
+void Project::validate(const std::string &folderArgument) const
+{
+    const std::string folder = absolutePath(folderArgument);
+    const std::string manifest = manifestPath(folder);
+    // The manifest by reading back what would be written (the same checks as load), the
+    // features here since load reads them from the CSV.
+    ProjectManifest::fromJson(ProjectManifest::toJson(*this, folder), manifest, folder, /*readFeatures=*/false);
+    for (size_t i = 0; i < sequences.size(); ++i) {
+        const Sequence &s = sequences[i];
+        if (s.features.size() == 0)
+            continue;
+        const std::string field = "sequences[" + std::to_string(i) + "].features";
+        if (!s.features.allFinite())
+            throw Error("sequence '" + s.id + "': features contain NaN or infinite values",
+                        manifest, field);
+        if (s.features.rows() != s.frameCount)
+            throw Error("sequence '" + s.id + "': " + std::to_string(s.features.rows())
+                            + " feature rows, expected frameCount " + std::to_string(s.frameCount),
+                        manifest, field);
+    }
 }
 
 void Project::saveAs(const std::string &folderArgument)

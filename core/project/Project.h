@@ -52,6 +52,10 @@ public:
     // point at the same files (media is never copied), absolute paths stay absolute. The object
     // itself is unchanged: use saveAs to move it to the new folder.
     void save(const std::string &folder) const;
+    // The checks of load, on the content in memory, without touching the disk: throws
+    // lipsync::Error naming the manifest and the field of the first thing that would not load
+    // again (an overlapping interval, NaN features, a bad frame rate, ...). save runs them first.
+    void validate() const { validate(m_folder.empty() ? std::string(".") : m_folder); }
     void save() const { save(m_folder); }
     // save(folder), then the project lives in `folder`: relative paths rebased, folder() set.
     void saveAs(const std::string &folder);
@@ -102,6 +106,9 @@ public:
     bool operator==(const Project &other) const; // content, not folder
 
 private:
+    // validate() as the project would be written into `folder`.
+    void validate(const std::string &folder) const;
+
     std::string m_folder;
 };
 

@@ -288,17 +288,12 @@ private:
             interval.label = string(require(o, "label", f), member(f, "label"), true);
             if (o.contains("userEdited"))
                 interval.userEdited = boolean(o.value("userEdited"), member(f, "userEdited"));
-            if (interval.start < 0)
-                fail(member(f, "start"), "must not be negative");
-            if (interval.end < interval.start)
-                fail(member(f, "end"), "is before start");
-            // The timeline and Tier::indexAt rely on sorted, non-overlapping intervals.
-            if (!intervals.empty() && interval.start < intervals.back().end)
-                fail(member(f, "start"), "overlaps the previous interval (which ends at "
-                                             + QString::number(intervals.back().end).toStdString()
-                                             + ")");
             intervals.push_back(std::move(interval));
         }
+        // The tier's one invariant (Tier::defect), which the studio's edits keep as well.
+        const Tier tier{"", intervals};
+        if (const std::optional<TierDefect> d = tier.defect())
+            fail(member(element(field, d->index), d->member.c_str()), d->message);
         return intervals;
     }
 

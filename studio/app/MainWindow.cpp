@@ -77,6 +77,10 @@ MainWindow::MainWindow(QWidget *parent)
 
     connect(m_document, &ProjectDocument::documentReset, this, &MainWindow::onDocumentReset);
     connect(m_document, &ProjectDocument::locationChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &ProjectDocument::editRefused, this, [this](const QString &edit, const QString &why) {
+        statusBar()->showMessage(tr("%1 was not applied: it would leave the project unsaveable (%2).").arg(edit, why),
+                                 15000);
+    });
     connect(m_document, &ProjectDocument::modelsChanged, this, [this] { m_models->setProject(m_document->project()); });
     connect(m_document, &ProjectDocument::sequenceChanged, this, [this](int row) {
         if (row == m_currentRow && m_media) // "Landmarks: n of m frames"

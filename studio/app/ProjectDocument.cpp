@@ -3,6 +3,7 @@
 #include "annotate/LandmarkCommands.h"
 #include "app/SetTranscriptCommand.h"
 #include "compare/StudyCommands.h"
+#include "project/ProjectManifest.h"
 #include "timeline/PronunciationCommand.h"
 #include "timeline/TierCommands.h"
 #include "util/Error.h"
@@ -11,6 +12,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QUndoStack>
+#include <QtDebug>
 
 #include <algorithm>
 
@@ -44,21 +46,90 @@ QString ProjectDocument::mediaPath(int row) const
     return QString::fromStdString(m_project.resolve(sequence(row).mediaFile));
 }
 
+namespace {
+
+// What a save created, removed again if the save fails: files copied into the target and the
+// folders made for them (the target itself included when it did not exist), so a failed save
+// leaves no half-written project behind.
+class SaveRollback
+{
+public:
+    explicit SaveRollback(const QString &folder) { makePath(folder); }
+    ~SaveRollback()
+    {
+        if (m_committed)
+            return;
+        for (auto it = m_files.rbegin(); it != m_files.rend(); ++it)
+            QFile::remove(*it);
+        for (auto it = m_folders.rbegin(); it != m_folders.rend(); ++it)
+            QDir(*it).removeRecursively();
+    }
+    // mkpath that remembers the outermost folder it created.
+    void makePath(const QString &path)
+    {
+        QString missing;
+        for (QString p = QDir::cleanPath(QFileInfo(path).absoluteFilePath()); !QFileInfo::exists(p);) {
+            missing = p;
+            const QString parent = QFileInfo(p).absolutePath();
+            if (parent == p)
+                break;
+            p = parent;
+        }
+        if (!QDir().mkpath(path))
+            throw Error("cannot create the folder", path.toStdString());
+        if (!missing.isEmpty())
+            m_folders << missing;
+    }
+    void copy(const QString &from, const QString &to, const char *what)
+    {
+        makePath(QFileInfo(to).absolutePath());
+        if (!QFile::copy(from, to))
+            throw Error(std::string("cannot copy the ") + what + " into the project", to.toStdString());
+        m_files << to;
+    }
+    // A file the save may create: removed on failure if it is not there yet.
+    void expect(const QString &file)
+    {
+        if (!QFileInfo::exists(file))
+            m_files << file;
+    }
+    void commit() { m_committed = true; }
+
+private:
+    QStringList m_files, m_folders;
+    bool m_committed = false;
+};
+
+} // namespace
+
 void ProjectDocument::saveTo(const QString &folder)
 {
+    // Nothing is written for a project that would not load again.
+    m_project.validate();
     const bool moving = QFileInfo(folder).absoluteFilePath() != QFileInfo(m_folder).absoluteFilePath();
+    SaveRollback rollback(folder);
+    // What Project::save itself writes besides the manifest (it keeps the manifest on disk
+    // consistent at every moment, but not a new folder's other files).
+    const QDir target(folder);
+    rollback.expect(target.filePath(QString::fromLatin1(Project::kManifestName)));
+    rollback.expect(target.filePath(QString::fromLatin1(Project::kStudyFileName)));
+    if (std::any_of(m_project.sequences.begin(), m_project.sequences.end(),
+                    [](const Sequence &s) { return s.features.size() > 0; })) {
+        rollback.makePath(target.filePath(QStringLiteral("features")));
+        for (const Sequence &s : m_project.sequences)
+            if (s.features.size() > 0)
+                rollback.expect(target.filePath(QString::fromStdString(ProjectManifest::featureFileName(s.id))));
+    }
     if (m_readOnly && moving) {
         // The bundled demo may move or vanish with the installation: its copy takes the
         // (small) clips along, so it stays complete on its own.
-        const QDir target(folder);
         for (const Sequence &s : m_project.sequences) {
             const QString relative = QString::fromStdString(s.mediaFile);
             const QString from = QString::fromStdString(m_project.resolve(s.mediaFile));
             const QString to = target.filePath(relative);
             if (QFileInfo(relative).isAbsolute() || !QFileInfo::exists(from) || QFileInfo::exists(to))
                 continue;
-            if (!QDir().mkpath(QFileInfo(to).absolutePath()) || !QFile::copy(from, to))
-                throw Error("cannot copy the media file into the project", to.toStdString());
+            rollback.copy(from, to, "media file");
         }
         // So do the model files it refers to (the demo's AAM); models trained in memory are
         // written by their owners on locationChanged.
@@ -68,8 +139,7 @@ void ProjectDocument::saveTo(const QString &folder)
             const QString to = target.filePath(relative);
             if (QFileInfo(relative).isAbsolute() || !QFileInfo::exists(from) || QFileInfo::exists(to))
                 continue;
-            if (!QDir().mkpath(QFileInfo(to).absolutePath()) || !QFile::copy(from, to))
-                throw Error("cannot copy the model file into the project", to.toStdString());
+            rollback.copy(from, to, "model file");
         }
         // Relative paths now hold in the new folder as they are: save from there.
         Project copy = m_project;
@@ -80,6 +150,7 @@ void ProjectDocument::saveTo(const QString &folder)
         // A user's project keeps referring to its media where they are (paths rebased).
         m_project.saveAs(folder.toStdString());
     }
+    rollback.commit();
     m_folder = QString::fromStdString(m_project.folder());
     m_readOnly = false;
     m_undo->setClean();
@@ -116,6 +187,16 @@ bool ProjectDocument::requestTiersChange(int row, const Tier &words, const Tier 
     after.phones.name = "phones";
     if (before == after)
         return false;
+    // Every command leaves a document that saves and loads again (Tier::defect is the loader's
+    // rule): an edit that would break it is refused whole, never half applied.
+    for (const Tier *tier : {&after.words, &after.phones})
+        if (const std::optional<TierDefect> d = tier->defect()) {
+            refuse(text, tr("%1 interval %2: %3")
+                             .arg(QString::fromStdString(tier->name))
+                             .arg(d->index + 1)
+                             .arg(QString::fromStdString(d->member + " " + d->message)));
+            return false;
+        }
     m_undo->push(new SetTiersCommand(this, row, std::move(before), std::move(after), text, mergeKey));
     return true;
 }
@@ -126,6 +207,12 @@ void ProjectDocument::applyTiers(int row, const Tier &words, const Tier &phones)
     s.words = words;
     s.phones = phones;
     emit sequenceChanged(row);
+}
+
+void ProjectDocument::refuse(const QString &edit, const QString &why)
+{
+    qWarning().noquote() << "edit refused:" << edit << "-" << why;
+    emit editRefused(edit, why);
 }
 
 bool ProjectDocument::requestLandmarks(int row, int frame, const std::optional<LandmarkSet> &landmarks,

@@ -92,8 +92,12 @@ signals:
     void studyChanged();
     void pronunciationsChanged();
     void locationChanged();
+    // An edit was refused because it would have left the document unsaveable (a defect of the
+    // edit, not of the user's input): `edit` names it, `why` says what was wrong.
+    void editRefused(const QString &edit, const QString &why);
 
 private:
+    void refuse(const QString &edit, const QString &why);
     void pushStudyStep(ForcedChoiceStudy study, int session);
 
     QUndoStack *m_undo;

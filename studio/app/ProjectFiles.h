@@ -30,6 +30,9 @@ public:
     // Save: to the project's folder; for the read-only demo it behaves as Save As.
     bool save();
     bool saveAs();
+    // Save As without the dialog: writes the document into `folder`. A failure is reported and
+    // leaves no new file in `folder`, the document and its autosave as they were.
+    bool saveTo(const QString &folder);
     // Before closing or replacing a modified document: save, discard or cancel. True = go on.
     bool maybeSave();
 
@@ -39,7 +42,6 @@ public slots:
     void openWithDialog();
 
 private:
-    bool saveTo(const QString &folder);
     bool openLoaded(Project project, const QString &folder, bool readOnly);
 
     ProjectDocument *m_document;

@@ -88,7 +88,9 @@ TierPair alignWithSphinx(const AlignJob &job, const std::vector<std::string> &wo
     }
 }
 
-AlignOutcome alignOne(const AlignJob &job, const AcousticModel *model, Feedback &feedback)
+} // namespace
+
+AlignOutcome alignSequence(const AlignJob &job, const AcousticModel *model, Feedback &feedback)
 {
     AlignOutcome outcome;
     outcome.row = job.row;
@@ -146,8 +148,6 @@ AlignOutcome alignOne(const AlignJob &job, const AcousticModel *model, Feedback 
     return outcome;
 }
 
-} // namespace
-
 QString alignerModelPath()
 {
 #ifdef LIPSYNC_SOURCE_DIR
@@ -177,7 +177,7 @@ Task *startAlignment(TaskRunner &runner, const QString &title, std::vector<Align
             f.setProgress(double(i) / double(jobs.size()));
             try {
                 Feedback step(f, double(i) / double(jobs.size()), double(i + 1) / double(jobs.size()));
-                outcomes->push_back(alignOne(jobs[i], model.get(), step));
+                outcomes->push_back(alignSequence(jobs[i], model.get(), step));
             } catch (const Error &e) {
                 AlignOutcome failed;
                 failed.row = jobs[i].row;

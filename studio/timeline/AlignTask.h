@@ -13,6 +13,8 @@
 #include <vector>
 
 namespace lipsync {
+class AcousticModel;
+class Feedback;
 class Task;
 class TaskRunner;
 } // namespace lipsync
@@ -60,6 +62,11 @@ struct AlignOutcome
 // next to or above the executable, in the source tree, or under <prefix>/share/lipsync. Empty
 // if none exists.
 QString alignerModelPath();
+
+// One job, on the calling thread: the work startAlignment's task does for each job. `model`
+// is the loaded aligner model (may be null for AlignerChoice::Sphinx). Throws lipsync::Error
+// naming the media file.
+AlignOutcome alignSequence(const AlignJob &job, const AcousticModel *model, Feedback &feedback);
 
 // Aligns the jobs one after the other (progress per job, cancel between them). Failures of
 // single sequences are reported in their outcome and the others go on; the task itself fails

@@ -421,6 +421,7 @@ void TimelinePanel::applyAlignment(const QString &title, std::vector<AlignOutcom
             tr("espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…", "", guessed), 8000);
     if (ok > 1)
         undo->beginMacro(title);
+    int changed = 0;
     for (const AlignOutcome &o : outcomes) {
         // The document may have changed meanwhile: find the sequence by id.
         if (!o.ok) {
@@ -432,10 +433,13 @@ void TimelinePanel::applyAlignment(const QString &title, std::vector<AlignOutcom
         if (row >= m_document->sequenceCount()
             || QString::fromStdString(m_document->sequence(row).id) != o.sequenceId)
             continue;
-        m_document->requestTiersChange(row, o.tiers.words, o.tiers.phones, title);
+        changed += m_document->requestTiersChange(row, o.tiers.words, o.tiers.phones, title) ? 1 : 0;
     }
     if (ok > 1)
         undo->endMacro();
+    if (ok > 0 && changed == 0 && m_window)
+        m_window->statusBar()->showMessage(tr("%1: the alignment came out as it was; nothing changed.").arg(title),
+                                           8000);
     if (!failed.isEmpty())
         ErrorReporter::report(m_window, tr("%n sequence(s) could not be aligned; the others were.", "", int(failed.size())),
                               failed.size() == 1 ? file : QString(), failed.join(QLatin1Char('\n')));

@@ -226,6 +226,37 @@ private slots:
         QVERIFY(!QFileInfo::exists(side));
     }
 
+    // A Save As that fails half-way (the target's manifest name is taken by a folder, so the
+    // demo's clips, AAM and features are copied first and the manifest then cannot be written)
+    // leaves the target as it was, the document unsaved and its autosave in place.
+    void aFailedSaveLeavesNothingAndKeepsTheAutosave()
+    {
+        newWindow();
+        QVERIFY(m_window->files()->openDemo());
+        idle();
+        QVERIFY(doc()->requestTranscriptChange(1, QStringLiteral("unsaved edit")));
+        QVERIFY(autosave()->saveNow());
+        autosave()->waitForWrite();
+        const QString side = Autosave::folderFor(doc()->folder(), true);
+        QVERIFY(QFileInfo::exists(side + QStringLiteral("/project.json")));
+
+        const QString target = m_dir.filePath(QStringLiteral("half-written"));
+        QVERIFY(QDir().mkpath(target + QStringLiteral("/project.json")));
+        const QStringList before = QDir(target).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden);
+        QVERIFY(!m_window->files()->saveTo(target));
+        QCOMPARE(QDir(target).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden), before);
+        QVERIFY(doc()->isReadOnly());
+        QVERIFY(doc()->isModified());
+        QVERIFY(readAll(side + QStringLiteral("/project.json")).contains("unsaved edit"));
+
+        // The same folder once nothing is in the way: saved, the autosave removed.
+        QVERIFY(QDir(target + QStringLiteral("/project.json")).removeRecursively());
+        QVERIFY(m_window->files()->saveTo(target));
+        QVERIFY(!doc()->isModified());
+        QVERIFY(readAll(target + QStringLiteral("/project.json")).contains("unsaved edit"));
+        QVERIFY(!QFileInfo::exists(side));
+    }
+
     void offersRecovery_data()
     {
         QTest::addColumn<int>("answer");

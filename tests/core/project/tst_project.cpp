@@ -12,6 +12,9 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
+
+Q_DECLARE_METATYPE(std::vector<lipsync::Interval>)
 
 using namespace lipsync;
 
@@ -123,6 +126,40 @@ private slots:
         QCOMPARE(tier.indexAt(1.1), 2);
         QCOMPARE(tier.indexAt(1.2), -1);
         QCOMPARE(tier.endTime(), 1.2);
+    }
+
+    // The tier's invariant (Tier::defect), shared by the loader and the studio's edits.
+    void tierDefects_data()
+    {
+        QTest::addColumn<std::vector<Interval>>("intervals");
+        QTest::addColumn<int>("index");
+        QTest::addColumn<QString>("member");
+        QTest::addColumn<QString>("message");
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        QTest::newRow("valid, with a gap") << std::vector<Interval>{{0, 0.5, "a"}, {0.6, 0.9, "b"}} << -1 << "" << "";
+        QTest::newRow("empty interval") << std::vector<Interval>{{0, 0.5, "a"}, {0.5, 0.5, "b"}} << -1 << "" << "";
+        QTest::newRow("overlap by an ulp")
+            << std::vector<Interval>{{0, 0.9500000000000001, "sil"}, {0.95, 1.0, "B"}} << 1 << "start"
+            << "overlaps the previous interval (which ends at 0.95)";
+        QTest::newRow("negative start") << std::vector<Interval>{{-0.1, 0.5, "a"}} << 0 << "start" << "must not be negative";
+        QTest::newRow("end before start") << std::vector<Interval>{{0, 0.5, "a"}, {0.7, 0.6, "b"}} << 1 << "end"
+                                          << "is before start";
+        QTest::newRow("NaN end") << std::vector<Interval>{{0, nan, "a"}} << 0 << "end" << "must be a finite number";
+    }
+
+    void tierDefects()
+    {
+        QFETCH(std::vector<Interval>, intervals);
+        QFETCH(int, index);
+        QFETCH(QString, member);
+        QFETCH(QString, message);
+        const std::optional<TierDefect> d = Tier{"phones", intervals}.defect();
+        QCOMPARE(d.has_value(), index >= 0);
+        if (!d)
+            return;
+        QCOMPARE(d->index, index);
+        QCOMPARE(q(d->member), member);
+        QCOMPARE(q(d->message), message);
     }
 
     void roundTrip()
@@ -444,6 +481,17 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(Error, p.save(folder));
         QVERIFY(!QFileInfo::exists(dir.filePath("p/project.json")));
         QVERIFY_THROWS_EXCEPTION(Error, Project().save()); // no folder yet
+
+        // validate() is the same check without the disk, naming the field as load would.
+        p = makeProject();
+        p.validate();
+        p.sequences[0].phones.intervals = {{0, 0.9500000000000001, "sil"}, {0.95, 1.0, "B"}};
+        try {
+            p.validate();
+            QFAIL("validated overlapping phones");
+        } catch (const Error &e) {
+            QCOMPARE(q(e.field()), QString("sequences[0].tiers.phones[1].start"));
+        }
     }
 
     void saveAsRebasesRelativePaths()
