@@ -25,7 +25,7 @@ ProjectDocument::ProjectDocument(QUndoStack *undoStack, QObject *parent)
 
 bool ProjectDocument::isModified() const
 {
-    return m_open && !m_undo->isClean();
+    return m_open && (!m_undo->isClean() || m_unsavedStudyData);
 }
 
 void ProjectDocument::reset(Project project, const QString &folder, bool readOnly)
@@ -35,6 +35,7 @@ void ProjectDocument::reset(Project project, const QString &folder, bool readOnl
     m_project.setFolder(folder.toStdString());
     m_readOnly = readOnly;
     m_open = true;
+    m_unsavedStudyData = false;
     m_undo->clear();
     m_undo->setClean();
     emit documentReset();
@@ -153,6 +154,7 @@ void ProjectDocument::saveTo(const QString &folder)
     rollback.commit();
     m_folder = QString::fromStdString(m_project.folder());
     m_readOnly = false;
+    m_unsavedStudyData = false;
     m_undo->setClean();
     emit locationChanged();
 }
@@ -303,12 +305,11 @@ void ProjectDocument::applyModels(const std::vector<ModelReference> &models)
     emit modelsChanged();
 }
 
-bool ProjectDocument::requestStudy(const std::optional<ForcedChoiceStudy> &study, const QString &text,
-                                   int mergeKey)
+bool ProjectDocument::requestStudy(const std::optional<ForcedChoiceStudy> &study, const QString &text)
 {
     if (study == m_project.study)
         return false;
-    m_undo->push(new SetStudyCommand(this, m_project.study, study, text, mergeKey));
+    m_undo->push(new SetStudyCommand(this, m_project.study, study, text));
     return true;
 }
 
@@ -324,21 +325,18 @@ bool ProjectDocument::isStudySaved() const
            && QFileInfo::exists(QString::fromStdString(m_project.studyPath()));
 }
 
-void ProjectDocument::pushStudyStep(ForcedChoiceStudy study, int session)
+void ProjectDocument::recordStudyData(ForcedChoiceStudy study)
 {
-    // Written before the step is pushed: if the disk refuses, the answer is not pretended.
-    const bool saved = isStudySaved();
-    if (saved) {
+    // Written before it is taken: if the disk refuses, the answer is not pretended.
+    if (isStudySaved()) {
         Project copy = m_project;
         copy.study = study;
         copy.saveStudy();
+    } else {
+        m_unsavedStudyData = true; // the next save writes it; closing asks first
     }
-    const QString participant = QString::fromStdString(study.sessions().at(std::size_t(session)).participant);
-    // One undo step per answer: QUndoStack never merges into the clean state, and each answer
-    // is saved, i.e. clean.
-    requestStudy(std::move(study), tr("Answer of %1").arg(participant));
-    if (saved)
-        m_undo->setClean(); // the file on disk now holds exactly this state
+    m_project.study = std::move(study);
+    emit studyChanged();
 }
 
 int ProjectDocument::addStudyParticipant(const QString &participant)
@@ -348,7 +346,7 @@ int ProjectDocument::addStudyParticipant(const QString &participant)
     ForcedChoiceStudy study = *m_project.study;
     study.addParticipant(participant.toStdString());
     const int session = int(study.sessions().size()) - 1;
-    pushStudyStep(std::move(study), session);
+    recordStudyData(std::move(study));
     return session;
 }
 
@@ -358,7 +356,7 @@ void ProjectDocument::recordStudyAnswer(int session, int trial, StudyChoice choi
         throw Error("the project has no study");
     ForcedChoiceStudy study = *m_project.study;
     study.answer(session, trial, choice, seconds);
-    pushStudyStep(std::move(study), session);
+    recordStudyData(std::move(study));
 }
 
 } // namespace lipsync::studio

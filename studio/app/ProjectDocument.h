@@ -72,14 +72,15 @@ public:
     bool requestAddModel(const ModelReference &model, const QString &text);
     void applyModels(const std::vector<ModelReference> &models);
 
-    // Blind study (compare/StudyCommands). Sets up or removes (nullopt) the study; requests with
-    // the same mergeKey >= 0 merge into one undo step.
-    bool requestStudy(const std::optional<ForcedChoiceStudy> &study, const QString &text, int mergeKey = -1);
+    // Blind study (compare/StudyCommands). Sets up or removes (nullopt) the study, one undo step.
+    bool requestStudy(const std::optional<ForcedChoiceStudy> &study, const QString &text);
     void applyStudy(const std::optional<ForcedChoiceStudy> &study);
-    // A participant's session: adding the participant and each answer are undo steps, and each
-    // is written to the project's study file at once (Project::saveStudy)
-    // so nothing is lost if the studio dies mid-session; a document that was saved stays
-    // unmodified. Returns the session index; throws lipsync::Error (no study, bad index, I/O).
+    // A participant's session. Participants and answers are data, not edits: they never go on
+    // the undo stack (Ctrl+Z must not drop a participant's answer). In a saved project each is
+    // written to the study file at once (Project::saveStudy), so nothing is lost if the studio
+    // dies mid-session and the document stays unmodified; otherwise the document is modified
+    // until the next save writes them. Returns the session index; throws lipsync::Error (no
+    // study, bad index, I/O).
     int addStudyParticipant(const QString &participant);
     void recordStudyAnswer(int session, int trial, StudyChoice choice, double seconds);
     // The study is on disk as it is in memory (saved project folder, nothing unsaved).
@@ -98,13 +99,14 @@ signals:
 
 private:
     void refuse(const QString &edit, const QString &why);
-    void pushStudyStep(ForcedChoiceStudy study, int session);
+    void recordStudyData(ForcedChoiceStudy study);
 
     QUndoStack *m_undo;
     Project m_project;
     QString m_folder;
     bool m_readOnly = false;
     bool m_open = false;
+    bool m_unsavedStudyData = false; // study data recorded while the study file could not take it
 };
 
 } // namespace lipsync::studio

@@ -5,29 +5,23 @@
 namespace lipsync::studio {
 
 SetStudyCommand::SetStudyCommand(ProjectDocument *document, std::optional<ForcedChoiceStudy> before,
-                                 std::optional<ForcedChoiceStudy> after, const QString &text, int mergeKey)
-    : m_document(document), m_before(std::move(before)), m_after(std::move(after)), m_mergeKey(mergeKey)
+                                 std::optional<ForcedChoiceStudy> after, const QString &text)
+    : m_document(document), m_before(std::move(before)), m_after(std::move(after))
 {
     setText(text);
 }
 
 void SetStudyCommand::undo()
 {
+    // This command is the latest one applied, so the study in the document is m_after with the
+    // answers recorded since: keep them for redo.
+    m_after = m_document->project().study;
     m_document->applyStudy(m_before);
 }
 
 void SetStudyCommand::redo()
 {
     m_document->applyStudy(m_after);
-}
-
-bool SetStudyCommand::mergeWith(const QUndoCommand *other)
-{
-    const auto *next = static_cast<const SetStudyCommand *>(other);
-    if (next->m_mergeKey != m_mergeKey)
-        return false;
-    m_after = next->m_after;
-    return true;
 }
 
 } // namespace lipsync::studio

@@ -216,7 +216,9 @@ private slots:
         QTRY_VERIFY(!m_study->participantSession());
         QVERIFY(study().sessions()[1].complete());
         QVERIFY(onDisk() == study());
-        QCOMPARE(m_window->undoStack()->undoText(), QStringLiteral("Answer of P02"));
+        // Answers are data, not edits: none is on the undo stack, and the project is saved.
+        QCOMPARE(m_window->undoStack()->undoText(), QStringLiteral("Set up study"));
+        QVERIFY(!m_window->document()->isModified());
     }
 
     void resultsShowTheTally()
@@ -249,9 +251,19 @@ private slots:
                  lines[1].constData());
         QVERIFY(QFile::exists(StudyResultsView::rankingPath(csv)));
 
-        // The table follows the document: undoing P02's last answer updates it.
+        // The table follows the document: a third participant's answer shows at once.
+        ProjectDocument *document = m_window->document();
+        const int p03 = document->addStudyParticipant(QStringLiteral("P03"));
+        document->recordStudyAnswer(p03, 0, StudyChoice::Left, 1.5);
+        QVERIFY(results->summary()->text().startsWith(QStringLiteral("Participants: 3, answers: 5")));
+        QVERIFY(onDisk() == study());
+
+        // Undoing the set-up takes the study with its answers away; redo brings back both.
+        const ForcedChoiceStudy answered = study();
         m_window->undoStack()->undo();
-        QVERIFY(results->summary()->text().startsWith(QStringLiteral("Participants: 2, answers: 3")));
+        QVERIFY(!document->project().study);
+        m_window->undoStack()->redo();
+        QVERIFY(document->project().study && *document->project().study == answered);
     }
 };
 
