@@ -198,6 +198,41 @@ Task *startAlignment(TaskRunner &runner, const QString &title, std::vector<Align
     });
 }
 
+SequenceAlignment alignmentFor(int row, const Sequence &sequence, const QString &mediaPath,
+                               const std::map<std::string, std::string> &pronunciations)
+{
+    SequenceAlignment out;
+    AlignJob &job = out.job;
+    job.row = row;
+    job.sequenceId = QString::fromStdString(sequence.id);
+    job.mediaPath = mediaPath;
+    job.transcript = sequence.transcript;
+    job.pronunciations = pronunciations;
+    auto edited = [](const Tier &tier) {
+        return std::any_of(tier.intervals.begin(), tier.intervals.end(), [](const Interval &iv) { return iv.userEdited; });
+    };
+    if (!edited(sequence.words) && !edited(sequence.phones))
+        return out;
+    // The tier's spoken words (breaths, "[br]", are not in a transcript) against the transcript's,
+    // as the dictionary spells them.
+    auto spelled = [](const std::vector<std::string> &words) {
+        std::vector<std::string> out;
+        for (const std::string &w : words)
+            if (const std::string n = PronunciationDictionary::normalizeWord(w); !n.empty() && w.front() != '[')
+                out.push_back(n);
+        return out;
+    };
+    if (spelled(Realignment(sequence.words, sequence.phones, {}).words()) != spelled(Lexicon::splitWords(sequence.transcript))) {
+        out.discardsEdits = true;
+        return out;
+    }
+    job.current = TierPair{sequence.words, sequence.phones};
+    job.stretches = Realignment::freeStretches(sequence.words, sequence.phones, 0.0,
+                                               std::max(sequence.words.endTime(), sequence.phones.endTime()));
+    out.nothingToAlign = job.stretches.empty();
+    return out;
+}
+
 std::vector<std::pair<double, double>> realignStretches(const TierPair &tiers, double a, double b)
 {
     return Realignment::freeStretches(tiers.words, tiers.phones, a, b);

@@ -3,6 +3,7 @@
 // the shipped GRID model (or $LIPSYNC_ALIGNER_MODEL), the project's pronunciations, the CMU
 // dictionary, and espeak-ng for other words (reported back so the user can check them). The worker only computes; the tiers reach the document in the commit, through
 // ProjectDocument::requestTiersChange, so cancel leaves the project untouched.
+#include "project/Sequence.h"
 #include "timeline/TierEdits.h"
 
 #include <QString>
@@ -73,6 +74,22 @@ AlignOutcome alignSequence(const AlignJob &job, const AcousticModel *model, Feed
 // only when every job failed (its error lists them). `apply` runs on the GUI thread.
 Task *startAlignment(TaskRunner &runner, const QString &title, std::vector<AlignJob> jobs,
                      std::function<void(std::vector<AlignOutcome>)> apply);
+
+// The job that aligns `sequence` (at `row`, media at `mediaPath`) again, keeping what the user
+// edited: when its tiers hold user-edited intervals and its word tier still spells the
+// transcript, only the free stretches are aligned (Realignment, as Re-align Selection does over
+// the whole clip); otherwise the whole sequence. `discardsEdits` (may be null) is set when the
+// job would replace user-edited intervals — the transcript changed since they were made — so
+// the caller can ask first. A job whose every word is edited has no stretch and no transcript
+// left to align (`nothingToAlign`).
+struct SequenceAlignment
+{
+    AlignJob job;
+    bool discardsEdits = false;
+    bool nothingToAlign = false;
+};
+SequenceAlignment alignmentFor(int row, const Sequence &sequence, const QString &mediaPath,
+                               const std::map<std::string, std::string> &pronunciations);
 
 // The stretches of `tiers` to re-align for the selection [a, b): runs of consecutive words
 // overlapping it whose word and phones the user has not edited (userEdited words stay fixed).

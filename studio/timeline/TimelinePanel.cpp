@@ -21,6 +21,7 @@
 #include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QScrollBar>
 #include <QSettings>
 #include <QStatusBar>
@@ -319,38 +320,60 @@ void TimelinePanel::alignSequence()
 {
     if (!m_document || m_row < 0)
         return;
-    const Sequence &s = m_document->sequence(m_row);
-    AlignJob job;
-    job.row = m_row;
-    job.sequenceId = QString::fromStdString(s.id);
-    job.mediaPath = m_document->mediaPath(m_row);
-    job.transcript = s.transcript;
-    job.pronunciations = m_document->project().pronunciations;
-    startAlignment(tr("Align %1").arg(job.sequenceId), {job});
+    std::vector<AlignJob> jobs = alignmentJobs({m_row});
+    if (jobs.empty())
+        return;
+    const QString title = tr("Align %1").arg(jobs.front().sequenceId);
+    startAlignment(title, std::move(jobs));
 }
 
 void TimelinePanel::alignAll()
 {
     if (!m_document)
         return;
-    std::vector<AlignJob> jobs;
-    for (int row = 0; row < m_document->sequenceCount(); ++row) {
-        const Sequence &s = m_document->sequence(row);
-        if (s.transcript.empty())
-            continue;
-        AlignJob job;
-        job.row = row;
-        job.sequenceId = QString::fromStdString(s.id);
-        job.mediaPath = m_document->mediaPath(row);
-        job.transcript = s.transcript;
-        job.pronunciations = m_document->project().pronunciations;
-        jobs.push_back(std::move(job));
-    }
-    if (jobs.empty()) {
+    std::vector<int> rows;
+    for (int row = 0; row < m_document->sequenceCount(); ++row)
+        if (!m_document->sequence(row).transcript.empty())
+            rows.push_back(row);
+    if (rows.empty()) {
         ErrorReporter::report(this, tr("No sequence has a transcript to align."), QString(), QString());
         return;
     }
-    startAlignment(tr("Align all sequences"), std::move(jobs));
+    std::vector<AlignJob> jobs = alignmentJobs(rows);
+    if (!jobs.empty())
+        startAlignment(tr("Align all sequences"), std::move(jobs));
+}
+
+std::vector<AlignJob> TimelinePanel::alignmentJobs(const std::vector<int> &rows)
+{
+    // Edited boundaries stay (alignmentFor): only where the transcript changed since they were
+    // made would aligning replace them, and then the user decides.
+    std::vector<SequenceAlignment> plans;
+    QStringList discarding, untouched;
+    for (int row : rows) {
+        plans.push_back(alignmentFor(row, m_document->sequence(row), m_document->mediaPath(row),
+                                     m_document->project().pronunciations));
+        if (plans.back().discardsEdits)
+            discarding << plans.back().job.sequenceId;
+        if (plans.back().nothingToAlign)
+            untouched << plans.back().job.sequenceId;
+    }
+    if (!discarding.isEmpty() && !ErrorReporter::isBatchMode()
+        && QMessageBox::question(this, tr("Align"),
+                                 tr("The transcript of %1 changed since its boundaries were edited. Aligning "
+                                    "it again replaces the edited boundaries. Align anyway?")
+                                     .arg(discarding.join(QStringLiteral(", "))))
+               != QMessageBox::Yes)
+        return {};
+    std::vector<AlignJob> jobs;
+    for (SequenceAlignment &plan : plans)
+        if (!plan.nothingToAlign)
+            jobs.push_back(std::move(plan.job));
+    if (!untouched.isEmpty() && m_window)
+        m_window->statusBar()->showMessage(
+            tr("Every word of %1 is user-edited: nothing to align there.").arg(untouched.join(QStringLiteral(", "))),
+            8000);
+    return jobs;
 }
 
 void TimelinePanel::realignSelection()

@@ -106,6 +106,8 @@ private:
     void updateActions();
     TierPair currentTiers() const;
     bool edit(const TierPair &next, const QString &text, int mergeKey = -1);
+    // The jobs that align `rows` again keeping user edits (alignmentFor); empty if the user declined.
+    std::vector<AlignJob> alignmentJobs(const std::vector<int> &rows);
     void startAlignment(const QString &title, std::vector<AlignJob> jobs);
     void applyAlignment(const QString &title, std::vector<AlignOutcome> outcomes);
     void openEditor(TierKind kind, int index);

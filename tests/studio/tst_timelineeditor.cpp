@@ -30,6 +30,7 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace lipsync;
@@ -401,6 +402,57 @@ private slots:
             m_window->undoStack()->undo();
             QVERIFY(tiers() == edited);
         }
+    }
+
+    // Align (and Align All) keep user-edited boundaries as Re-align Selection does; only where
+    // the transcript changed since the edit are they replaced (after asking; batch mode: yes).
+    void alignKeepsEditedBoundaries()
+    {
+        ProjectDocument *doc = m_window->document();
+        const TierPair aligned = tiers();
+        // An edited phone boundary inside the longest word.
+        const Interval &word = *std::max_element(aligned.words.intervals.begin(), aligned.words.intervals.end(),
+                                                 [](const Interval &x, const Interval &y) {
+                                                     return tieredit::isSilenceLabel(x.label)
+                                                            || (!tieredit::isSilenceLabel(y.label)
+                                                                && x.end - x.start < y.end - y.start);
+                                                 });
+        int b = -1;
+        for (int i = 1; i < int(aligned.phones.intervals.size()) && b < 0; ++i) {
+            const double t = aligned.phones.intervals[size_t(i)].start;
+            if (t > word.start + 0.03 && t < word.end - 0.03)
+                b = i;
+        }
+        QVERIFY(b > 0);
+        TierPair edited = aligned;
+        QVERIFY(tieredit::moveBoundary(edited, TierKind::Phones, b, aligned.phones.intervals[size_t(b)].start - 0.02));
+        QVERIFY(doc->requestTiersChange(0, edited.words, edited.phones, QStringLiteral("edit")));
+        const Interval editedPhone = tiers().phones.intervals[size_t(b)];
+        QVERIFY(editedPhone.userEdited);
+
+        for (QAction *align : {m_panel->alignAction(), m_panel->alignAllAction()}) {
+            align->trigger();
+            QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 60000);
+            const TierPair now = tiers();
+            const int at = now.phones.indexAt((editedPhone.start + editedPhone.end) / 2);
+            QVERIFY2(at >= 0 && now.phones.intervals[size_t(at)] == editedPhone, qPrintable(align->text()));
+        }
+
+        // A changed transcript: the whole clip is aligned to it, the edit replaced.
+        const QString transcript = QString::fromStdString(doc->sequence(0).transcript);
+        QVERIFY(doc->requestTranscriptChange(0, transcript + QStringLiteral(" please")));
+        m_panel->alignAction()->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 60000);
+        for (const Interval &p : tiers().phones.intervals)
+            QVERIFY(!p.userEdited);
+        QCOMPARE(tiers().words.intervals.back().label == "please"
+                     || tiers().words.intervals[tiers().words.intervals.size() - 2].label == "please",
+                 true);
+        QVERIFY(doc->requestTranscriptChange(0, transcript));
+        m_window->undoStack()->undo(); // the transcript
+        m_window->undoStack()->undo(); // the alignment
+        m_window->undoStack()->undo(); // the transcript change
+        QVERIFY(doc->requestTiersChange(0, aligned.words, aligned.phones, QStringLiteral("restore")));
     }
 
     // "Generic US English (CMU Sphinx)": remembered in the settings, keeps "Adapt to Speaker"
