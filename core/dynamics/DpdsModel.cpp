@@ -439,7 +439,7 @@ void DpdsModel::parametersFromJson(const QJsonObject &o, const std::string &file
     if ((sigma2.array() <= 0).any() || (r.array() <= 0).any())
         throw Error("variances must be positive", file, "sigma2/r");
     if ((a.array().abs() >= 1.0).any())
-        throw Error("|a| must be below 1 (models.md §4.9)", file, "a");
+        throw Error("|a| must be below 1 (docs/models.md §4.9)", file, "a");
     m_dimension = int(d);
 }
 
