@@ -477,8 +477,8 @@ private slots:
     }
 
     // States whose best a lies beyond the §4.9 bound are held there while the others take Newton
-    // steps: projecting full steps that moved them too made most LM candidates fail, and the
-    // free states crept (this data: 62 outer iterations, against 6 with them held).
+    // steps: projecting full steps that move them too makes most LM candidates fail, and the
+    // free states creep (this data: 62 outer iterations, against 6 with them held).
     void boundHeldStatesConverge()
     {
         std::mt19937 rng(21);
