@@ -1,4 +1,4 @@
-// Dynamics benchmarks (issue 5 targets):
+// Dynamics benchmarks (targets: docs/performance.md):
 //  - DPDS: VarPro/LM vs the paper's gradient ascent, time to the same log-likelihood;
 //  - DPDS training on ~20 min of GRID-like data (30000 frames, d = 32);
 //  - DPDS streaming generation, frames/s (d = 32);
@@ -7,7 +7,7 @@
 // Labels are real GRID s1 sentences: word timings from the GRID .align files
 // (../shared/data/grid-s1/align, else the 10 demo clips repeated), each word's span split evenly
 // over its CMU-dictionary phones, voted to 25 fps frames (docs/models.md §0). Features are sampled
-// from a random DPDS (a in [0.2, 0.9], noise s.d. 0.05): real AAM features do not exist yet.
+// from a random DPDS (a in [0.2, 0.9], noise s.d. 0.05) of any dimension d.
 #include "dynamics/BrandModel.h"
 #include "dynamics/DpdsModel.h"
 #include "dynamics/ModelFile.h"
