@@ -1,4 +1,4 @@
-// Dynamics benchmarks (issue 5 targets):
+// Dynamics benchmarks (targets: docs/performance.md):
 //  - DPDS: VarPro/LM vs the paper's gradient ascent, time to the same log-likelihood;
 //  - DPDS training on ~20 min of GRID-like data (30000 frames, d = 32);
 //  - DPDS streaming generation, frames/s (d = 32);
@@ -6,8 +6,8 @@
 //  - the whole 10-fold evaluation of the four models.
 // Labels are real GRID s1 sentences: word timings from the GRID .align files
 // (../shared/data/grid-s1/align, else the 10 demo clips repeated), each word's span split evenly
-// over its CMU-dictionary phones, voted to 25 fps frames (models.md §0). Features are sampled from a
-// random DPDS (a in [0.2, 0.9], noise s.d. 0.05): real AAM features do not exist yet.
+// over its CMU-dictionary phones, voted to 25 fps frames (docs/models.md §0). Features are sampled
+// from a random DPDS (a in [0.2, 0.9], noise s.d. 0.05) of any dimension d.
 #include "dynamics/BrandModel.h"
 #include "dynamics/DpdsModel.h"
 #include "dynamics/ModelFile.h"
@@ -146,8 +146,8 @@ void BM_DpdsLmVersusGradientAscent(benchmark::State &state)
     for (const auto &s : data)
         frames += s.frameCount();
     for (auto _ : state) {
-        // Both start from a = 0.5 (models.md §7.7), not from the AR(1) fit, which on data sampled
-        // from a DPDS is already close to the optimum.
+        // Both start from a = 0.5 (docs/models.md §7.7), not from the AR(1) fit, which on data
+        // sampled from a DPDS is already close to the optimum.
         DpdsOptions lmOptions;
         lmOptions.autoregressiveInit = false;
         DpdsModel lm(lmOptions);
@@ -344,9 +344,9 @@ BENCHMARK(BM_SldsTrain20Minutes)->Iterations(1)->Unit(benchmark::kSecond);
 } // namespace
 
 namespace {
-// Training and generation of each of the four models (models.md) through the model factory, on the
-// same data: 40 GRID-like sentences (3000 frames = 2 min at 25 fps), d = 32. Generation is 60 s of
-// speech (1500 frames); real-time factor = generation time / 60 s.
+// Training and generation of each of the four models (docs/models.md) through the model factory, on
+// the same data: 40 GRID-like sentences (3000 frames = 2 min at 25 fps), d = 32. Generation is 60 s
+// of speech (1500 frames); real-time factor = generation time / 60 s.
 std::vector<LabelledSequence> twoMinutes()
 {
     auto data = gridLikeData(32);

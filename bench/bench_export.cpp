@@ -1,4 +1,4 @@
-// Export speed (issue 6 target: a 3 s clip well under a second). The demo GRID clip bbaf2n
+// Export speed (target: a 3 s clip well under a second). The demo GRID clip bbaf2n
 // (75 frames 360x288, 44.1 kHz sound) is decoded once; each iteration encodes H.264 + AAC and
 // muxes an MP4 into a temporary folder, including the atomic rename.
 #include "io/AudioDecoder.h"

@@ -1,4 +1,4 @@
-// Face benchmarks (issue #3 targets):
+// Face benchmarks (targets: docs/performance.md):
 //  - BM_TrackFrame: AAM tracking of GRID frames (360x288) with the person-specific model built from
 //    the 20 committed GRID s1 frames; target >= 200 frames/s per core. Counter nme_vs_dlib: mean NME
 //    of the tracked 23 points against dlib's 68->23 points on the same frames (target <= 0.05).
@@ -184,7 +184,7 @@ void BM_HelenGeneric(benchmark::State &state)
     FaceDetectorPaths paths;
     paths.useDlib = false;
     FaceDetector detector(paths);
-    // The generic settings and fit chosen by cross-validation on helen-train (README).
+    // The generic settings and fit chosen by cross-validation on helen-train (docs/performance.md).
     AamBuildOptions options = AamBuildOptions::generic();
     options.detector = &detector;
     const AamModel model = buildAam(loadTrainingDirectory(train.toStdString()), options, feedback);

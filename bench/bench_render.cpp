@@ -1,6 +1,6 @@
-// Rendering speed (issue 6 targets: rendering >= 300 frames/s at 360x288; a 3 s clip exported well
-// under a second). The demo AAM and clip bbaf2n; an HMM-mean model trained once on the demo
-// project's features generates the parameters.
+// Rendering speed (targets: rendering >= 300 frames/s at 360x288; a 3 s clip exported well under a
+// second). The demo AAM and clip bbaf2n; an HMM-mean model trained once on the demo project's
+// features generates the parameters.
 //  - BM_RenderFrame: one generated face synthesised and composited into the clip's frame (the
 //    background copy included), the renderer's per-frame work.
 //  - BM_ExportRenderedClip: render + H.264/AAC encode + mux of the 3 s clip (generation and

@@ -1,4 +1,4 @@
-// Speech benchmarks and the aligner's accuracy evaluation (issue 4 targets). They read
+// Speech benchmarks and the aligner's accuracy evaluation (targets: docs/performance.md). They read
 // ../shared/data when present and skip otherwise.
 //   BM_Mfcc                 MFCC_0_D_A of 60 s of audio (real-time factor counter "rtf")
 //   BM_MfccAndAlign/A       MFCC + Viterbi alignment of the 10 GRID demo clips (x8) with the

@@ -1,5 +1,5 @@
 // `lipsync aam build` and `lipsync aam eval`: train an AAM from labelled images and measure how well
-// it fits held-out images from the face detector's initialisation (issue #3, items 4, 5, 7).
+// it fits held-out images from the face detector's initialisation.
 #include "Command.h"
 
 #include "aam/AamBuilder.h"

@@ -121,7 +121,7 @@ int runAlign(const QStringList &args)
     writeTextGrid(a.value("out").toStdString(), makeTextGrid({result.words, result.phones}, duration));
     const double seconds = timer.elapsed() / 1000.0;
     if (a.flag("json")) {
-        // Per-video-frame phone labels (models.md §0 voting) when the media has video.
+        // Per-video-frame phone labels (docs/models.md §0 voting) when the media has video.
         QJsonArray frameLabels;
         double frameRate = 0;
         const MediaInfo info = MediaInfo::probe(media.toStdString());

@@ -1,4 +1,4 @@
-// lipsync evaluate: k-fold cross-validation of the dynamic models (models.md §6).
+// lipsync evaluate: k-fold cross-validation of the dynamic models (docs/models.md §6).
 #include "Command.h"
 #include "TrainingData.h"
 

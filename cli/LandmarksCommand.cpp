@@ -1,6 +1,6 @@
 // `lipsync landmarks detect IMAGE|VIDEO [--frame N] --out FILE.pts`: automatic 23 points for a
-// face (issue #3, items 2 and 7). dlib's 68-point predictor when installed, else an AAM fit from
-// the detector (--model), else the template shape placed on the detection.
+// face. dlib's 68-point predictor when installed, else an AAM fit from the detector (--model), else
+// the template shape placed on the detection.
 #include "Command.h"
 
 #include "aam/AamFitter.h"

@@ -1,4 +1,4 @@
-// lipsync train: fits one dynamic model (models.md §1-4) to features + phone labels.
+// lipsync train: fits one dynamic model (docs/models.md §1-4) to features + phone labels.
 #include "Command.h"
 #include "TrainingData.h"
 

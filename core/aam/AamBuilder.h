@@ -45,9 +45,9 @@ struct AamBuildOptions
     FaceDetector *detector = nullptr;
 
     // The settings for a generic (in-the-wild) model, chosen by 5-fold cross-validation on Helen's
-    // training faces only (README, "Generic AAM"): mirrored training images and gradient-
-    // orientation textures in a larger reference frame (70 pixels between the outer eye corners).
-    // Fit it with AamFitAlgorithm::Wiberg and multiStart.
+    // training faces only (docs/performance.md, "The generic AAM on Helen"): mirrored training
+    // images and gradient-orientation textures in a larger reference frame (70 pixels between the
+    // outer eye corners). Fit it with AamFitAlgorithm::Wiberg and multiStart.
     static AamBuildOptions generic()
     {
         AamBuildOptions o;

@@ -48,9 +48,9 @@ struct AamFitOptions
     int coarsestLevel = -1;     // -1: the model's coarsest; 0 to fit the finest level only
     double shapeLimit = 3.0;    // shape parameters are clamped to this many s.d.
     // Wiberg only: weight of the shape prior against the texture residual per pixel.
-    // Neighbouring pixels' errors are strongly correlated, so the residual understates the noise
-    // of the |e - J dp|^2 sum by a large factor. Chosen on a validation split of Helen's
-    // training faces (README, "Generic AAM"), never on the test faces.
+    // Neighbouring pixels' errors are strongly correlated, so the residual understates the noise of
+    // the |e - J dp|^2 sum by a large factor. Chosen on a validation split of Helen's training
+    // faces (docs/performance.md, "The generic AAM on Helen"), never on the test faces.
     static constexpr double kDefaultShapePriorWeight = 20.0;
     double shapePriorWeight = kDefaultShapePriorWeight;
     // Also fit from the start scaled by 1 -+ 0.1 s and shifted by 6 s % of its RMS radius in four

@@ -1,10 +1,10 @@
 #pragma once
-// Automatic landmarks for a new face (issue #3, item 2): YuNet (OpenCV's cv::FaceDetectorYN with
-// the 2022mar model shipped in resources/models) finds the face box and five keypoints; a Haar
-// cascade (Debian's opencv-data) is the fallback when YuNet is missing or finds nothing; dlib's
-// 68-point shape predictor (Debian's libdlib-data) gives all 68 iBUG points when it is installed,
-// mapped to the 23-point scheme. Everything optional degrades cleanly: a missing file just
-// disables that stage (see available()).
+// Automatic landmarks for a new face: YuNet (OpenCV's cv::FaceDetectorYN with the 2022mar model
+// shipped in resources/models) finds the face box and five keypoints; a Haar cascade (Debian's
+// opencv-data) is the fallback when YuNet is missing or finds nothing; dlib's 68-point shape
+// predictor (Debian's libdlib-data) gives all 68 iBUG points when it is installed, mapped to the
+// 23-point scheme. Everything optional degrades cleanly: a missing file just disables that stage
+// (see available()).
 #include "aam/Procrustes.h"
 
 #include <Eigen/Core>

@@ -1,9 +1,8 @@
 #pragma once
-// Tracks a face through video frames with an AAM (issue #3, item 5): the previous frame's fit
-// initialises the next; the face is detected again when there is no previous fit or when the fit
-// error jumps (above `redetectFactor` x the running median and above `minRedetectError`), and
-// the better of the two fits is kept. Each tracked frame yields the combined AAM parameters, the
-// paper's y_t.
+// Tracks a face through video frames with an AAM: the previous frame's fit initialises the next;
+// the face is detected again when there is no previous fit or when the fit error jumps (above
+// `redetectFactor` x the running median and above `minRedetectError`), and the better of the two
+// fits is kept. Each tracked frame yields the combined AAM parameters, the paper's y_t.
 #include "aam/AamFitter.h"
 
 #include <Eigen/Core>

@@ -48,7 +48,7 @@ VideoTrackingResult trackVideo(const AamModel &model, const std::string &videoPa
         const cv::Mat frame = video.frame(i);
         AamFitOptions options;
         if (auto it = landmarks.find(i); it != landmarks.end()) {
-            // Points a user placed or corrected stay where they are (issue #3: fixed points).
+            // Points a user placed or corrected stay where they are (fixed points).
             options.fixedShape = shapeFromLandmarkSet(it->second);
             options.fixedMask.assign(size_t(model.pointCount()), false);
             for (int k = 0; k < model.pointCount() && k < LandmarkSet::kPointCount; ++k) {

@@ -1,9 +1,9 @@
 #pragma once
-// Feature extraction for a whole video (issue #3, item 6): tracks the face through every frame
-// with FaceTracker and returns one row of combined AAM parameters per frame — the paper's y_t,
-// what Sequence::features holds. Frames with landmarks a user placed or fixed are fitted with
-// those points held in place. Frames where no face can be found (e.g. GRID clips whose first
-// frames decode as flat grey) take the parameters of the nearest tracked frame, and are listed.
+// Feature extraction for a whole video: tracks the face through every frame with FaceTracker and
+// returns one row of combined AAM parameters per frame — the paper's y_t, what Sequence::features
+// holds. Frames with landmarks a user placed or fixed are fitted with those points held in place.
+// Frames where no face can be found (e.g. GRID clips whose first frames decode as flat grey) take
+// the parameters of the nearest tracked frame, and are listed.
 #include "aam/AamModel.h"
 #include "project/LandmarkSet.h"
 

@@ -172,8 +172,8 @@ AcousticModel AcousticModel::parse(const std::string &text, const std::string &p
         return Error(what, path, "line " + std::to_string(lineNumber));
     };
     // One stream re-filled for every line: constructing a stream per line (its locale and
-    // facets) was most of the cost of parsing a small model. A line's stream is valid until the
-    // next call.
+    // facets) would be most of the cost of parsing a small model. A line's stream is valid until
+    // the next call.
     std::istringstream fields;
     auto next = [&]() -> std::istringstream & {
         while (std::getline(in, line)) {

@@ -264,10 +264,9 @@ SphinxAligner::Decoder *SphinxAligner::acquire() const
     for (std::string &a : args)
         argv.push_back(a.data());
     // pocketsphinx's log is one process-wide FILE: silenced once, before the first decoder, and
-    // never touched again. Each decoder used to set it (-logfn /dev/null, after an
-    // err_set_logfp(nullptr) of its own), and err_set_logfp fcloses the FILE it replaces: one
-    // thread closed the log another thread's ps_init had just opened and was writing to, and
-    // tst_sphinxaligner's concurrent decoders hung once in CI.
+    // never touched again. Not per decoder (-logfn /dev/null, or an err_set_logfp of its own):
+    // err_set_logfp fcloses the FILE it replaces, so one thread could close the log another
+    // thread's ps_init has just opened and is writing to, and concurrent decoders hang.
     static std::once_flag silenced;
     std::call_once(silenced, [] { err_set_logfp(nullptr); });
     cmd_ln_t *config = cmd_ln_parse_r(nullptr, ps_args(), int(argv.size()), argv.data(), FALSE);
@@ -356,8 +355,8 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
     } lease{this, decoder};
     // A scorer with a front end of its own for each utterance: the front end's noise estimate
     // (-remove_noise), the cepstral mean and the Gaussian selection (-topn, started from the
-    // previous frame's best) all carry over between utterances, so that a reused one gave
-    // results depending on what was aligned before (a 10 ms shift seen in the tests).
+    // previous frame's best) all carry over between utterances, so a reused one would give
+    // results depending on what it aligned before (a 10 ms shift in the tests).
     const std::unique_ptr<acmod_t, void (*)(acmod_t *)> scorer(
         acmod_init(ps_get_config(decoder->ps), ps_get_logmath(decoder->ps), nullptr, nullptr), &acmod_free);
     acmod_t *acmod = scorer.get();
@@ -487,7 +486,7 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
         // transform; it reads transforms from files only), and every frame scored again. An
         // identity transform reproduces the unadapted alignment exactly (checked on mfa-tests).
         // mfa-tests: 78.5 % -> 80.7 % of phone boundaries within 25 ms of MFA with one pass;
-        // 79.5 % with two, 79.4 % with three (BM_EvalMfaPhones/6; README).
+        // 79.5 % with two, 79.4 % with three (BM_EvalMfaPhones/6; docs/performance.md).
         SphinxAdaptation statistics(codebooks(decoder));
         for (int t = 0; t < T; ++t) {
             int frame = t;

@@ -1,7 +1,7 @@
 #pragma once
 // Forced alignment with CMU Sphinx's generic US-English triphone model (Debian's
 // pocketsphinx-en-us, BSD-2, CMU / Alpha Cephei): for speakers unlike the one our own monophone
-// models were trained on (issue 4's mfa-tests target). libpocketsphinx scores the senones (tied
+// models were trained on (mfa-tests, docs/performance.md). libpocketsphinx scores the senones (tied
 // triphone HMM states) that our own Viterbi reaches in each 10 ms frame (within a beam); the Viterbi runs over the transcript unrolled
 // into TRIPHONE senone sequences (each phone's base, left and right context and word position
 // looked up in the model's mdef, falling back to the CI phone): cross-word contexts as variants

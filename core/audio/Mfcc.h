@@ -81,7 +81,7 @@ private:
     void *m_plan = nullptr;      // fftwf_plan (executed with new-array execute, thread-safe)
 };
 
-// Seconds of the centre of 100 Hz frame j (models.md §0): j * shift + window / 2.
+// Seconds of the centre of 100 Hz frame j (docs/models.md §0): j * shift + window / 2.
 inline double mfccFrameCentre(int j, const MfccOptions &o = {})
 {
     return j * o.shiftSeconds + o.windowSeconds / 2.0;

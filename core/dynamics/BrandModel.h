@@ -1,9 +1,9 @@
 #pragma once
-// Brand's Voice Puppetry as the paper uses it (models.md §2): per phone a Gaussian over static and
-// delta features o_t = [y_t; y_t - y_{t-1}], frame 1 static only; generation is the MLPG maximiser
-// (§2.2): d tridiagonal solves (diagonal covariances, the default) or one block-tridiagonal solve
-// (full 2d x 2d covariances). Streaming uses the fixed-lag truncation of §5 (diagonal only).
-// Unseen phones back off to the global static and delta statistics.
+// Brand's Voice Puppetry as the paper uses it (docs/models.md §2): per phone a Gaussian over static
+// and delta features o_t = [y_t; y_t - y_{t-1}], frame 1 static only; generation is the MLPG
+// maximiser (§2.2): d tridiagonal solves (diagonal covariances, the default) or one
+// block-tridiagonal solve (full 2d x 2d covariances). Streaming uses the fixed-lag truncation of §5
+// (diagonal only). Unseen phones back off to the global static and delta statistics.
 #include "dynamics/BrandSolver.h"
 #include "dynamics/DynamicModel.h"
 

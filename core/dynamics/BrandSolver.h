@@ -1,6 +1,6 @@
 #pragma once
-// The linear algebra of Brand / MLPG generation (models.md §2.2): the maximiser of the static +
-// delta objective solves H y = b with H = W^T Lambda W.
+// The linear algebra of Brand / MLPG generation (docs/models.md §2.2): the maximiser of the static
+// + delta objective solves H y = b with H = W^T Lambda W.
 //  - diagonal covariances: d independent symmetric tridiagonal systems, LDL^T (Thomas), O(dT);
 //  - full covariances: one block-tridiagonal system with d x d blocks, block LDL^T, O(d^3 T);
 //  - a dense reference (explicit W, Lambda) for tests and benchmarks, small T only.

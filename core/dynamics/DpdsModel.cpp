@@ -146,10 +146,11 @@ struct DimensionFit
         const Eigen::MatrixXd schur = Haa - Hat * llt.solve(Hat.transpose());
         // [choice, beyond §4.8's proj(a + δ)] States held at a bound of §4.9 whose gradient
         // points out of the box take no part in the step (projected Newton, Bertsekas 1982):
-        // projecting a full step that moves them made most candidates fail, so the damping grew
-        // and the free states crept. On the 10 demo clips 7 of 9 dimensions stopped at the
-        // 100-iteration cap with steps of 1e-5 nats; with the bound states held, 8 of 9 converge
-        // in 13-49 iterations and the objective ends higher (tst_dpds boundHeldStatesConverge).
+        // projecting a full step that moves them makes most candidates fail, so the damping grows
+        // and the free states creep: on the 10 demo clips 7 of 9 dimensions stop at the
+        // 100-iteration cap with steps of 1e-5 nats, while with the bound states held 8 of 9
+        // converge in 13-49 iterations and the objective ends higher (tst_dpds
+        // boundHeldStatesConverge).
         const double lower = lowerBound();
         std::vector<Eigen::Index> free;
         for (Eigen::Index i = 0; i < m; ++i) {
@@ -439,7 +440,7 @@ void DpdsModel::parametersFromJson(const QJsonObject &o, const std::string &file
     if ((sigma2.array() <= 0).any() || (r.array() <= 0).any())
         throw Error("variances must be positive", file, "sigma2/r");
     if ((a.array().abs() >= 1.0).any())
-        throw Error("|a| must be below 1 (models.md §4.9)", file, "a");
+        throw Error("|a| must be below 1 (docs/models.md §4.9)", file, "a");
     m_dimension = int(d);
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// DPDS, the paper's model (models.md §4): a deterministic switched linear recursion
+// DPDS, the paper's model (docs/models.md §4): a deterministic switched linear recursion
 //   x_1 = mu_{pi_1},  x_t = a_{pi_t} o x_{t-1} + nu_{pi_t},
 // observed with noise Sigma_{pi_1} at t = 1 and R (shared, diagonal) at t >= 2 (eq. 1).
 // Each dimension is fitted independently (§4.2): exact weighted ML of mu, nu given a (§4.4),

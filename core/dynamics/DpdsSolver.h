@@ -1,9 +1,9 @@
 #pragma once
-// One output dimension of the DPDS (models.md §4.2-§4.8): the state recursion x_t, the design rows
-// r_t (x_t = r_t^T theta, theta = [mu; nu]), the weighted normal equations G theta = h, the
+// One output dimension of the DPDS (docs/models.md §4.2-§4.8): the state recursion x_t, the design
+// rows r_t (x_t = r_t^T theta, theta = [mu; nu]), the weighted normal equations G theta = h, the
 // gradients with respect to a (forward mode, the paper's corrected eq. 2, and adjoint), and the
-// Gauss-Newton matrix of [s_t; r_t] used by variable projection + Levenberg-Marquardt.
-// Indices are 0-based: frame t = 0 is the paper's t = 1.
+// Gauss-Newton matrix of [s_t; r_t] used by variable projection + Levenberg-Marquardt. Indices are
+// 0-based: frame t = 0 is the paper's t = 1.
 #include <Eigen/Core>
 
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// The common interface of the four dynamic models of the paper (models.md §1-§5): train on
+// The common interface of the four dynamic models of the paper (docs/models.md §1-§5): train on
 // labelled sequences, generate the most likely trajectory for a label sequence, stream it where
 // the model allows, and score sequences by their log-likelihood. Parameters are (de)serialised to
 // JSON; ModelFile.h wraps them in the versioned model file.
@@ -39,7 +39,7 @@ public:
     // Frame-by-frame generation; equals generate() (exactly for the recursive models).
     virtual std::unique_ptr<StreamingGenerator> streamer() const = 0;
     // log p(features | labels) in nats (for Brand: the density over static + delta features,
-    // models.md §2.1).
+    // docs/models.md §2.1).
     virtual double logLikelihood(const std::vector<int> &labels,
                                  const Eigen::MatrixXd &features) const = 0;
 

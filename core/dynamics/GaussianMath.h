@@ -20,8 +20,8 @@ inline double diagonalGaussianLogPdf(const Eigen::Ref<const Eigen::VectorXd> &z,
 
 // Sum of logarithms of positive values with one std::log per block of 8: the running product is
 // renormalised by frexp (exact) after each block, so it neither overflows nor underflows for
-// values within 2^+-120. log per frame and dimension was the costliest operation of the scalar
-// Kalman filter in the SLDS E-step.
+// values within 2^+-120. A log per frame and dimension would be the costliest operation of the
+// scalar Kalman filter in the SLDS E-step.
 class LogSum
 {
 public:

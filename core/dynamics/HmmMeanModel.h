@@ -1,6 +1,6 @@
 #pragma once
-// HMM-mean baseline (models.md §1): one diagonal Gaussian per phone, frames independent given the
-// labels; generation emits the phone means. Unseen phones use the global mean and variance.
+// HMM-mean baseline (docs/models.md §1): one diagonal Gaussian per phone, frames independent given
+// the labels; generation emits the phone means. Unseen phones use the global mean and variance.
 #include "dynamics/DynamicModel.h"
 #include "dynamics/LinearRecursion.h"
 

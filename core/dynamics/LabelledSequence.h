@@ -1,6 +1,6 @@
 #pragma once
-// Training and test data of the dynamic models (models.md §0): one utterance = an integer phone
-// label per video frame (0..PhoneSet::kCount-1) and the T x d matrix of face features y_t.
+// Training and test data of the dynamic models (docs/models.md §0): one utterance = an integer
+// phone label per video frame (0..PhoneSet::kCount-1) and the T x d matrix of face features y_t.
 #include <Eigen/Core>
 
 #include <string>
@@ -33,7 +33,7 @@ struct FrameStatistics
     Eigen::VectorXi transitionCount; // N^{>=2}_n
     Eigen::VectorXd globalMean;     // d
     Eigen::VectorXd globalVariance; // d
-    Eigen::VectorXd floor;          // eps_k = 1e-6 Var(y_k) (models.md §0), at least 1e-12
+    Eigen::VectorXd floor;          // eps_k = 1e-6 Var(y_k) (docs/models.md §0), at least 1e-12
     long long frames = 0;
 };
 FrameStatistics computeFrameStatistics(const std::vector<LabelledSequence> &sequences);

@@ -1,5 +1,5 @@
 #pragma once
-// The generator shared by HMM-mean, SLDS and DPDS (models.md §3.5, §4.12, §5):
+// The generator shared by HMM-mean, SLDS and DPDS (docs/models.md §3.5, §4.12, §5):
 //   y_1 = mu_{pi_1},  y_t = A_{pi_t} y_{t-1} + nu_{pi_t},
 // with A_n diagonal (a P x d matrix of coefficients) or full (P matrices d x d). HMM-mean is the
 // case a = 0, nu = mu = m. The batch generator and the streamer run the same step function, so

@@ -65,7 +65,7 @@ std::vector<int> frameLabelsFromTier(const Tier &phones, double fps, int frameCo
         }
     if (frameCount <= 0)
         frameCount = std::max(1, int(std::ceil(phones.endTime() * fps - 1e-9)));
-    // The one voting rule (align/FrameLabels, models.md §0).
+    // The one voting rule (align/FrameLabels, docs/models.md §0).
     const std::vector<std::string> names = voteFrameLabels(phones, fps, frameCount);
     std::vector<int> labels(names.size());
     for (size_t i = 0; i < names.size(); ++i)

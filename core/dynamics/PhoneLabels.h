@@ -1,6 +1,6 @@
 #pragma once
-// Frame labels from phone alignments (models.md §0), read with the io readers and voted with the
-// align module's rule (align/FrameLabels). Accepted inputs:
+// Frame labels from phone alignments (docs/models.md §0), read with the io readers and voted with
+// the align module's rule (align/FrameLabels). Accepted inputs:
 //  - Praat TextGrid (io/TextGrid): the interval tier named "phones" (or "phone", "phonemes"; any
 //    case; a file with a single interval tier uses that one).
 //  - .lab (io/HtkLabel): one "start end phone" line per segment, times in seconds or in HTK's
@@ -19,8 +19,8 @@ Tier readPhoneTier(const std::string &path);
 Tier parseTextGridPhones(const std::string &text, const std::string &pathForErrors = {});
 Tier parseLabPhones(const std::string &text, const std::string &pathForErrors = {});
 
-// voteFrameLabels (align/FrameLabels.h, models.md §0) as PhoneSet indices; throws naming the file
-// for a phone outside the 41-phone set. frameCount <= 0: ceil(end * fps).
+// voteFrameLabels (align/FrameLabels.h, docs/models.md §0) as PhoneSet indices; throws naming the
+// file for a phone outside the 41-phone set. frameCount <= 0: ceil(end * fps).
 std::vector<int> frameLabelsFromTier(const Tier &phones, double fps, int frameCount = 0,
                                      const std::string &pathForErrors = {});
 

@@ -1,5 +1,5 @@
 #pragma once
-// SLDS with known labels and B = I (models.md §3): a time-varying linear-Gaussian state space
+// SLDS with known labels and B = I (docs/models.md §3): a time-varying linear-Gaussian state space
 //   x_1 ~ N(mu_{pi_1}, Sigma_{pi_1}),  x_t = A_{pi_t} x_{t-1} + nu_{pi_t} + w_t, w_t ~ N(0, Q_{pi_t}),
 //   y_t = x_t + v_t, v_t ~ N(0, R_{pi_t}),
 // trained by EM: Kalman filter (prediction-error log-likelihood, §3.2), RTS smoother with the

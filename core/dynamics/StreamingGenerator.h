@@ -1,7 +1,7 @@
 #pragma once
-// Frame-by-frame generation (models.md §5): labels go in one at a time, frames come out once the
-// model's look-ahead allows. Zero-latency models (HMM-mean, SLDS, DPDS) emit one frame per label;
-// fixed-lag Brand emits frame t once label t+L is known, and the rest on finish().
+// Frame-by-frame generation (docs/models.md §5): labels go in one at a time, frames come out once
+// the model's look-ahead allows. Zero-latency models (HMM-mean, SLDS, DPDS) emit one frame per
+// label; fixed-lag Brand emits frame t once label t+L is known, and the rest on finish().
 #include <Eigen/Core>
 
 namespace lipsync {

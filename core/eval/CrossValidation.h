@@ -1,5 +1,5 @@
 #pragma once
-// k-fold cross-validation split by sequence count (models.md §6.1): the sequence indices are
+// k-fold cross-validation split by sequence count (docs/models.md §6.1): the sequence indices are
 // permuted with a fixed seed (Fisher-Yates driven by std::mt19937_64, so the split is the same on
 // every platform), then fold f gets the positions i with i mod k = f.
 #include <cstdint>

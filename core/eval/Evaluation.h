@@ -1,9 +1,9 @@
 #pragma once
-// The cross-validated comparison of the dynamic models (models.md §6.1-6.3): every model is trained
-// on the same k-1 folds and tested on the held-out one; per test sequence L1, RMS, Linf (§6.2) of
-// the generated trajectory and the log-likelihood per frame; fold value = mean over the fold's
-// sequences (equal weight); reported as the mean over folds with a 95 % t interval, plus paired
-// t-tests between models. Results serialise to JSON and CSV.
+// The cross-validated comparison of the dynamic models (docs/models.md §6.1-6.3): every model is
+// trained on the same k-1 folds and tested on the held-out one; per test sequence L1, RMS, Linf
+// (§6.2) of the generated trajectory and the log-likelihood per frame; fold value = mean over the
+// fold's sequences (equal weight); reported as the mean over folds with a 95 % t interval, plus
+// paired t-tests between models. Results serialise to JSON and CSV.
 #include "dynamics/LabelledSequence.h"
 #include "dynamics/ModelFile.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Per-sequence error metrics of models.md §6.2 (AAM-parameter units, per-frame vector norms
+// Per-sequence error metrics of docs/models.md §6.2 (AAM-parameter units, per-frame vector norms
 // averaged over frames): L1 = mean_t sum_k |E|, RMS = sqrt(mean_t sum_k E^2),
 // Linf = mean_t max_k |E|, with E = generated - real.
 #include <Eigen/Core>

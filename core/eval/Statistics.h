@@ -1,5 +1,5 @@
 #pragma once
-// Small statistics for the evaluation protocol (models.md §6.3, §6.4): Student-t quantiles for
+// Small statistics for the evaluation protocol (docs/models.md §6.3, §6.4): Student-t quantiles for
 // 95 % intervals over folds, paired t-tests, the two-sided sign test. The distributions are
 // Boost.Math's (Debian libboost-dev, header-only), not our own special functions.
 #include <vector>

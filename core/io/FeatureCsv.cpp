@@ -72,7 +72,7 @@ FeatureTable parseFeatureCsv(const std::string &text, const std::string &path)
             throw Error("frame index '" + std::string(fields[0]) + "' is not a number", path, where);
         }
         // A frame index is a whole number in int range: converting anything else to int is undefined
-        // behaviour (found by fuzz/fuzz_featurecsv).
+        // behaviour (fuzz regression featurecsv-frame-index-overflow).
         if (!(first >= 0 && first <= double(std::numeric_limits<int>::max()) && first == std::floor(first)))
             throw Error("frame index '" + std::string(fields[0]) + "' is not a whole number from 0 to "
                             + std::to_string(std::numeric_limits<int>::max()), path, where);

@@ -63,7 +63,8 @@ void parseLine(const std::string &line, const std::string &path, int lineNumber,
     if (timed == 1 && inSeconds)
         throw Error("time in seconds in a file whose times are in 100 ns units", path, where);
     // from_chars, not stoll: a time too large for 64 bits is bad input (an Error naming the line),
-    // not std::out_of_range (found by fuzz/fuzz_htklabel); likewise a time in seconds that overflows.
+    // not std::out_of_range (fuzz regression htklabel-time-out-of-range); likewise a time in
+    // seconds that overflows.
     double times[2] = {0, 0};
     for (int k = 0; k < 2; ++k) {
         const std::string &text = f[size_t(k)];

@@ -25,7 +25,7 @@ struct TextGrid
 
     // The interval tier named `name` (case-insensitive), or nullptr.
     const Tier *tier(const std::string &name) const &;
-    // The pointer points into the grid: asking a temporary grid would dangle (ASan caught
+    // The pointer points into the grid: asking a temporary grid would dangle (as in
     // `for (x : readTextGrid(f).tier("words")->intervals)`), so that does not compile.
     const Tier *tier(const std::string &name) const && = delete;
     bool operator==(const TextGrid &) const = default;

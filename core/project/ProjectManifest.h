@@ -1,7 +1,8 @@
 #pragma once
-// project.json, format "lipsync-project" version 1: conversion between a Project and its manifest
-// with field-by-field validation. Every error names the manifest and the field path
-// ("sequences[2].frameRate"). See Project.h for the folder layout and README for the schema.
+// project.json, format "lipsync-project" (version Project::kFormatVersion; version 1 manifests are
+// read too): conversion between a Project and its manifest with field-by-field validation. Every
+// error names the manifest and the field path ("sequences[2].frameRate"). See Project.h for the
+// folder layout and docs/formats.md for the schema.
 #include "project/Project.h"
 
 #include <QByteArray>

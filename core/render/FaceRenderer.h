@@ -1,7 +1,7 @@
 #pragma once
-// Rendering AAM parameters (real or generated) as video frames (issue #6): the face region is
-// synthesised from the combined parameters (shape + texture, AamSynthesizer) and composited, with
-// its feathered edge, into a background frame at the pose of the face there.
+// Rendering AAM parameters (real or generated) as video frames: the face region is synthesised from
+// the combined parameters (shape + texture, AamSynthesizer) and composited, with its feathered
+// edge, into a background frame at the pose of the face there.
 //
 // Two backgrounds:
 //  - a video (the sequence's own clip): its face is tracked once with the AAM (trackVideo), and

@@ -67,7 +67,7 @@ Loaded loadInputs(const SpeechToFaceRequest &request)
     return in;
 }
 
-// Labels by the voting rule of models.md §0 (one per video frame: the clip's own frame count
+// Labels by the voting rule of docs/models.md §0 (one per video frame: the clip's own frame count
 // when rendering into its frames at its rate, else as many frames as the sound lasts), the
 // generated trajectory, and the sound for export.
 void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, double audioDuration,

@@ -1,8 +1,8 @@
 #pragma once
-// Generation from new speech (issue #6), shared by `lipsync render` and the studio's "generate
-// from new speech": any audio or video file with its transcript ->
+// Generation from new speech, shared by `lipsync render` and the studio's "generate from new
+// speech": any audio or video file with its transcript ->
 //   forced alignment (ForcedAligner with the shipped aligner model or a given one)
-//   -> phone label of every video frame (voteFrameLabels, models.md §0)
+//   -> phone label of every video frame (voteFrameLabels, docs/models.md §0)
 //   -> the most likely feature trajectory of a trained dynamic model (DynamicModel::generate)
 //   -> frames rendered by FaceRenderer (into the clip's own frames, or a neutral frame)
 //   -> MP4 (H.264 + the recording's sound as AAC) or PNGs.

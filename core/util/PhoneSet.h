@@ -1,5 +1,5 @@
 #pragma once
-// The 41 phone labels of the paper (models.md §0: P = 41): the 39 ARPAbet phonemes of the CMU
+// The 41 phone labels of the paper (docs/models.md §0: P = 41): the 39 ARPAbet phonemes of the CMU
 // pronouncing dictionary (without stress digits), silence "sil" and breath "br".
 // Shared by the aligner (HMM states) and the dynamic models (labels 0..P-1 in this order).
 #include <array>

@@ -1,10 +1,10 @@
 #pragma once
-// The faces workflow of the main window (issue #3 from the GUI side): the landmark editor on the
-// Annotate tab (the FrameView's edits become undoable document edits), and the Faces menu —
-// automatic landmarks (Ctrl+D), copy the previous frame's points (C), onion skin (O), next
-// unlabelled frame (N), next worst-fitted frame (W), Build AAM, Track Sequence / Track All, and
-// the modes-of-variation view. Detection, building and tracking run as TaskRunner tasks: the
-// worker never touches the document, the commit pushes one undo command.
+// The faces workflow of the main window: the landmark editor on the Annotate tab (the FrameView's
+// edits become undoable document edits), and the Faces menu — automatic landmarks (Ctrl+D), copy
+// the previous frame's points (C), onion skin (O), next unlabelled frame (N), next worst-fitted
+// frame (W), Build AAM, Track Sequence / Track All, and the modes-of-variation view. Detection,
+// building and tracking run as TaskRunner tasks: the worker never touches the document, the commit
+// pushes one undo command.
 #include "aam/AamModel.h"
 
 #include <QCoreApplication>

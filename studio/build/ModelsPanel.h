@@ -1,10 +1,10 @@
 #pragma once
-// The Models dock: the AAMs and dynamic models the project refers to, and the dynamics workflow
-// (issue #5): choose model kinds and options, train them as TaskRunner tasks with a live plot of
-// the objective per iteration (cancel keeps the previous model), compare them by k-fold
-// cross-validation (the paper's Figure 4), and look at the trajectories they generate for the
-// current sequence. Trained models live here (in memory) and in the document as ModelReferences
-// (kind dpds/slds/brand/hmm, file models/<kind>.model, written when the project is saved).
+// The Models dock: the AAMs and dynamic models the project refers to, and the dynamics workflow:
+// choose model kinds and options, train them as TaskRunner tasks with a live plot of the objective
+// per iteration (cancel keeps the previous model), compare them by k-fold cross-validation (the
+// paper's Figure 4), and look at the trajectories they generate for the current sequence. Trained
+// models live here (in memory) and in the document as ModelReferences (kind dpds/slds/brand/hmm,
+// file models/<kind>.model, written when the project is saved).
 #include <QColor>
 #include <QHash>
 #include <QList>

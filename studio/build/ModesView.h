@@ -1,7 +1,7 @@
 #pragma once
-// The modes of variation of an AAM (issue #3, item 4): a slider per combined mode (the first six)
-// from -3 to +3 standard deviations, and the face the model synthesises for those parameters
-// (AamSynthesizer: shape and texture together), with its 23 points drawn over it.
+// The modes of variation of an AAM: a slider per combined mode (the first six) from -3 to +3
+// standard deviations, and the face the model synthesises for those parameters (AamSynthesizer:
+// shape and texture together), with its 23 points drawn over it.
 #include "aam/AamModel.h"
 
 #include <QDialog>

@@ -2,7 +2,7 @@
 // The videos of the blind study (paper §4): for an utterance and a method, the frames a
 // participant sees. "real" is the recorded video; any other method is a trained dynamic model
 // of the project (its kind: "dpds", "slds", "brand", "hmm"), whose trajectory for the
-// utterance's frame labels (models.md §0 voting) is synthesised with the project's AAM and
+// utterance's frame labels (docs/models.md §0 voting) is synthesised with the project's AAM and
 // composited into the recorded frames at the face's tracked pose — so both sides of a trial
 // show the same person, background and head motion, and differ only in the modelled face.
 //

@@ -1,7 +1,7 @@
 #pragma once
-// File ▸ Export (issue #6): the current sequence's generated face as MP4 (H.264 + its sound as
-// AAC), real and generated side by side, or PNG frames; and its features (CSV), alignment
-// (TextGrid) and landmarks (.pts), and the project's AAM and trained dynamic model.
+// File ▸ Export: the current sequence's generated face as MP4 (H.264 + its sound as AAC), real and
+// generated side by side, or PNG frames; and its features (CSV), alignment (TextGrid) and landmarks
+// (.pts), and the project's AAM and trained dynamic model.
 //
 // Every entry asks for a path (a QFileDialog, or the prompt a test installs), then runs in the
 // background through the TaskRunner with progress and cancel. Every writer is atomic

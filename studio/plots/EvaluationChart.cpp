@@ -199,7 +199,7 @@ void EvaluationChart::setResult(const EvaluationResult &result)
         x->GetLabelProperties()->SetFontSize(9);
         y->GetLabelProperties()->SetFontSize(9);
         // Three value ticks (bottom, middle, top) whatever the height: VTK's automatic spacing
-        // left only the zero tick in a docked chart, so the bars had no scale.
+        // leaves only the zero tick in a docked chart, so the bars would have no scale.
         y->SetNumberOfTicks(3);
         y->SetNotation(vtkAxis::PRINTF_NOTATION);
         y->SetLabelFormat("%.3g");

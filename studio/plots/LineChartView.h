@@ -1,6 +1,7 @@
 #pragma once
-// A 2-D line chart (vtkContextView + vtkChartXY) in a VtkWidget. The audio envelope now, and
-// later the trajectory and objective plots, are all "one or more y(x) series plus a cursor".
+// A 2-D line chart (vtkContextView + vtkChartXY) in a VtkWidget: one or more y(x) series plus a
+// cursor. The Plots dock's audio envelope is one; the training objective plot (ObjectivePlot)
+// builds on it.
 #include "plots/VtkWidget.h"
 
 #include <QColor>

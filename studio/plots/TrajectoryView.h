@@ -1,8 +1,8 @@
 #pragma once
-// The trajectory plot (issue #5): one AAM parameter over time — the real features of a sequence
-// and each trained model's generation for the sequence's frame labels — over alternating shaded
-// bands of the phoneme segments (labelled along the top axis), with a cursor at the current frame.
-// Zoom (wheel) and pan (drag) are vtkChartXY's own interaction.
+// The trajectory plot: one AAM parameter over time — the real features of a sequence and each
+// trained model's generation for the sequence's frame labels — over alternating shaded bands of the
+// phoneme segments (labelled along the top axis), with a cursor at the current frame. Zoom (wheel)
+// and pan (drag) are vtkChartXY's own interaction.
 #include "plots/VtkWidget.h"
 
 #include <QColor>

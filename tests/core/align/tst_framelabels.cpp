@@ -1,4 +1,4 @@
-// Frame voting (models.md §0): majority of the 100 Hz frames whose centres fall in the video
+// Frame voting (docs/models.md §0): majority of the 100 Hz frames whose centres fall in the video
 // frame, ties to the phone with the audio-frame centre nearest the video-frame centre.
 #include "align/FrameLabels.h"
 

@@ -171,7 +171,7 @@ private slots:
     }
 
     // Silence tokens in a transcript ("sil", "sp", as GRID's .align word lists have them) are
-    // silences, not words: the spoken words align as without them (was: "internal error").
+    // silences, not words: the spoken words align as without them (not an "internal error").
     void silenceTokensAreSilences()
     {
         const SphinxAligner aligner;

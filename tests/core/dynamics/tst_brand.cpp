@@ -1,4 +1,4 @@
-// Brand / MLPG checks of models.md §7 (items 11-16) and the HMM-mean limit.
+// Brand / MLPG checks of docs/models.md §7 (items 11-16) and the HMM-mean limit.
 #include "SyntheticDynamics.h"
 
 #include "dynamics/BrandModel.h"

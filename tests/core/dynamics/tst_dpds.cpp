@@ -1,4 +1,4 @@
-// DPDS checks of models.md §7 (items 1-10) plus the optimiser comparison and bad input.
+// DPDS checks of docs/models.md §7 (items 1-10) plus the optimiser comparison and bad input.
 #include "SyntheticDynamics.h"
 
 #include "dynamics/DpdsModel.h"
@@ -78,7 +78,7 @@ double objective(const Problem &p, const Eigen::VectorXd &a, const Eigen::Vector
     return -dpds::weightedSquaredError(p.layout, p.y, a, theta, p.w); // L = -F
 }
 
-// The paper's Algorithm 1 (unit weights), ported with the errata of models.md §4.6 fixed.
+// The paper's Algorithm 1 (unit weights), ported with the errata of docs/models.md §4.6 fixed.
 // printedOrder = true increments C_{pi_t} after the D accumulation, as printed (erratum 4).
 void algorithmOne(const dpds::LabelLayout &layout, const dpds::Series &y, const Eigen::VectorXd &a,
                   bool printedOrder, Eigen::MatrixXd &G, Eigen::VectorXd &h)
@@ -477,8 +477,8 @@ private slots:
     }
 
     // States whose best a lies beyond the §4.9 bound are held there while the others take Newton
-    // steps: projecting full steps that moved them too made most LM candidates fail, and the
-    // free states crept (this data: 62 outer iterations, against 6 with them held).
+    // steps: projecting full steps that move them too makes most LM candidates fail, and the
+    // free states creep (this data: 62 outer iterations, against 6 with them held).
     void boundHeldStatesConverge()
     {
         std::mt19937 rng(21);

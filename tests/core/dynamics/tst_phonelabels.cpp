@@ -1,4 +1,4 @@
-// Phone set, TextGrid / .lab readers and the frame voting rule of models.md §0.
+// Phone set, TextGrid / .lab readers and the frame voting rule of docs/models.md §0.
 #include "dynamics/PhoneLabels.h"
 #include "util/PhoneSet.h"
 #include "util/Error.h"

@@ -1,4 +1,4 @@
-// SLDS checks of models.md §7 (items 17-21).
+// SLDS checks of docs/models.md §7 (items 17-21).
 #include "SyntheticDynamics.h"
 
 #include "dynamics/SldsModel.h"

@@ -1,4 +1,4 @@
-// Evaluation checks of models.md §7 (items 22-25) and the cross-validation runner.
+// Evaluation checks of docs/models.md §7 (items 22-25) and the cross-validation runner.
 #include "../dynamics/SyntheticDynamics.h"
 
 #include "eval/CrossValidation.h"
@@ -92,7 +92,7 @@ private slots:
                      qPrintable(QStringLiteral("%1 vs %2").arg(p.pValue).arg(expected[i])));
         }
         // Bradley-Terry with undecided answers dropped: log-strengths centred to sum 0 are
-        // DPDS 1.571, real 1.451, Brand -0.879, SLDS -2.143 (models.md §7.24).
+        // DPDS 1.571, real 1.451, Brand -0.879, SLDS -2.143 (docs/models.md §7.24).
         const double expectLog[4] = {-0.879, 1.571, 1.451, -2.143}; // Brand, DPDS, real, SLDS
         double meanLog = 0;
         for (const MethodScore &m : tally.ranking)

@@ -1,8 +1,8 @@
-// Generation from new speech and rendering (issue #6): a model trained on the demo project
-// generates parameters for a demo clip from its sound and transcript; the faces are rendered
-// into the clip (or onto a neutral frame for audio only) and exported with the sound. Bad input
-// (no sound, a transcript that cannot fit, another AAM's model) fails naming the file; cancel
-// leaves nothing under the final name.
+// Generation from new speech and rendering: a model trained on the demo project generates
+// parameters for a demo clip from its sound and transcript; the faces are rendered into the clip
+// (or onto a neutral frame for audio only) and exported with the sound. Bad input (no sound, a
+// transcript that cannot fit, another AAM's model) fails naming the file; cancel leaves nothing
+// under the final name.
 #include "render/FaceRenderer.h"
 #include "render/SpeechToFace.h"
 
