@@ -90,81 +90,86 @@
     <name>StudioActions</name>
     <message>
         <location filename="../studio/app/StudioActions.cpp" line="32"/>
+        <source>&amp;New Project…</source>
+        <translation>&amp;Neues Projekt…</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/StudioActions.cpp" line="33"/>
         <source>&amp;Open Project…</source>
         <translation>Projekt &amp;öffnen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="33"/>
+        <location filename="../studio/app/StudioActions.cpp" line="34"/>
         <source>Open &amp;Demo Project</source>
         <translation>&amp;Demoprojekt öffnen</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="34"/>
+        <location filename="../studio/app/StudioActions.cpp" line="35"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="35"/>
+        <location filename="../studio/app/StudioActions.cpp" line="36"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter …</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="36"/>
+        <location filename="../studio/app/StudioActions.cpp" line="37"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="38"/>
+        <location filename="../studio/app/StudioActions.cpp" line="39"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="41"/>
+        <location filename="../studio/app/StudioActions.cpp" line="42"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="47"/>
+        <location filename="../studio/app/StudioActions.cpp" line="48"/>
         <source>Previous Frame</source>
         <translation>Vorheriges Bild</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="48"/>
+        <location filename="../studio/app/StudioActions.cpp" line="49"/>
         <source>Next Frame</source>
         <translation>Nächstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="49"/>
+        <location filename="../studio/app/StudioActions.cpp" line="50"/>
         <source>First Frame</source>
         <translation>Erstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="50"/>
+        <location filename="../studio/app/StudioActions.cpp" line="51"/>
         <source>Last Frame</source>
         <translation>Letztes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="51"/>
+        <location filename="../studio/app/StudioActions.cpp" line="52"/>
         <source>Play/Pause</source>
         <translation>Wiedergabe/Pause</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="52"/>
+        <location filename="../studio/app/StudioActions.cpp" line="53"/>
         <source>Previous Sequence</source>
         <translation>Vorherige Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="53"/>
+        <location filename="../studio/app/StudioActions.cpp" line="54"/>
         <source>Next Sequence</source>
         <translation>Nächste Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="54"/>
+        <location filename="../studio/app/StudioActions.cpp" line="55"/>
         <source>Fit Frame to View</source>
         <translation>Bild einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="55"/>
+        <location filename="../studio/app/StudioActions.cpp" line="56"/>
         <source>&amp;About LipSync Studio</source>
         <translation>&amp;Über LipSync Studio</translation>
     </message>
@@ -722,93 +727,98 @@
         <translation>Vorschau &amp;&amp; Vergleich</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="99"/>
-        <location filename="../studio/app/MainWindow.cpp" line="100"/>
+        <location filename="../studio/app/MainWindow.cpp" line="81"/>
+        <source>%1 was not applied: it would leave the project unsaveable (%2).</source>
+        <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="103"/>
+        <location filename="../studio/app/MainWindow.cpp" line="104"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="151"/>
+        <location filename="../studio/app/MainWindow.cpp" line="155"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="156"/>
+        <location filename="../studio/app/MainWindow.cpp" line="160"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="166"/>
+        <location filename="../studio/app/MainWindow.cpp" line="170"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="170"/>
+        <location filename="../studio/app/MainWindow.cpp" line="174"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="182"/>
+        <location filename="../studio/app/MainWindow.cpp" line="186"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="184"/>
+        <location filename="../studio/app/MainWindow.cpp" line="189"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="196"/>
+        <location filename="../studio/app/MainWindow.cpp" line="201"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="200"/>
+        <location filename="../studio/app/MainWindow.cpp" line="205"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="211"/>
+        <location filename="../studio/app/MainWindow.cpp" line="216"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="217"/>
+        <location filename="../studio/app/MainWindow.cpp" line="222"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="220"/>
+        <location filename="../studio/app/MainWindow.cpp" line="225"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="267"/>
+        <location filename="../studio/app/MainWindow.cpp" line="273"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="312"/>
+        <location filename="../studio/app/MainWindow.cpp" line="318"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="320"/>
+        <location filename="../studio/app/MainWindow.cpp" line="326"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="354"/>
+        <location filename="../studio/app/MainWindow.cpp" line="360"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="356"/>
+        <location filename="../studio/app/MainWindow.cpp" line="362"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="360"/>
+        <location filename="../studio/app/MainWindow.cpp" line="366"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -816,43 +826,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="370"/>
+        <location filename="../studio/app/MainWindow.cpp" line="376"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="371"/>
+        <location filename="../studio/app/MainWindow.cpp" line="377"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="371"/>
+        <location filename="../studio/app/MainWindow.cpp" line="377"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="377"/>
+        <location filename="../studio/app/MainWindow.cpp" line="383"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="394"/>
+        <location filename="../studio/app/MainWindow.cpp" line="400"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="414"/>
-        <location filename="../studio/app/MainWindow.cpp" line="422"/>
+        <location filename="../studio/app/MainWindow.cpp" line="420"/>
+        <location filename="../studio/app/MainWindow.cpp" line="428"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="421"/>
+        <location filename="../studio/app/MainWindow.cpp" line="427"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="165"/>
+        <location filename="../studio/app/MainWindow.cpp" line="169"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -1390,81 +1400,112 @@
 <context>
     <name>lipsync::studio::ProjectDocument</name>
     <message>
-        <location filename="../studio/app/ProjectDocument.cpp" line="252"/>
         <source>Answer of %1</source>
-        <translation>Antwort von %1</translation>
+        <translation type="vanished">Antwort von %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ProjectDocument.cpp" line="196"/>
+        <source>%1 interval %2: %3</source>
+        <translation>%1, Intervall %2: %3</translation>
     </message>
 </context>
 <context>
     <name>lipsync::studio::ProjectFiles</name>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="31"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="33"/>
         <source>Autosave failed (unsaved changes are only in memory; the project on disk is untouched): %1</source>
         <translation>Automatisches Speichern fehlgeschlagen (ungespeicherte Änderungen sind nur im Speicher; das Projekt auf der Festplatte ist unverändert): %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="42"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="44"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="94"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="43"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="45"/>
         <source>LipSync projects (project.json)</source>
         <translation>LipSync-Projekte (project.json)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="57"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="55"/>
+        <source>New Project: the Folder of Your Clips (transcripts beside them)</source>
+        <translation>Neues Projekt: der Ordner mit Ihren Clips (Transkripte daneben)</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ProjectFiles.cpp" line="64"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="82"/>
+        <source>No new project was created.</source>
+        <translation>Es wurde kein neues Projekt angelegt.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ProjectFiles.cpp" line="65"/>
+        <source>the folder already holds a project: open it instead</source>
+        <translation>Der Ordner enthält bereits ein Projekt: Öffnen Sie es stattdessen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ProjectFiles.cpp" line="68"/>
+        <source>New project from %1</source>
+        <translation>Neues Projekt aus %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ProjectFiles.cpp" line="95"/>
+        <source>%1 holds no project. Create a new project from the clips in it?</source>
+        <translation>%1 enthält kein Projekt. Ein neues Projekt aus den Clips darin anlegen?</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ProjectFiles.cpp" line="103"/>
         <source>The project could not be opened.</source>
         <translation>Das Projekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="88"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="134"/>
         <source>The bundled demo project was not found.</source>
         <translation>Das mitgelieferte Demoprojekt wurde nicht gefunden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="89"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="135"/>
         <source>Looked in $LIPSYNC_DEMO_DIR, &lt;prefix&gt;/share/lipsync/demo and the source tree.</source>
         <translation>Gesucht in $LIPSYNC_DEMO_DIR, &lt;prefix&gt;/share/lipsync/demo und im Quellbaum.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="96"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="142"/>
         <source>The demo project could not be opened.</source>
         <translation>Das Demoprojekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="118"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="164"/>
         <source>Save Project As (a folder)</source>
         <translation>Projekt speichern unter (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="123"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="142"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="169"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="188"/>
         <source>The project could not be saved.</source>
         <translation>Das Projekt konnte nicht gespeichert werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="124"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="170"/>
         <source>a file of that name exists; a project needs a folder</source>
         <translation>es gibt eine Datei dieses Namens; ein Projekt braucht einen Ordner</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="129"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="175"/>
         <source>Replace Project</source>
         <translation>Projekt ersetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="130"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="176"/>
         <source>%1 already holds a project. Replace it?</source>
         <translation>%1 enthält bereits ein Projekt. Ersetzen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="155"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="201"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="155"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="201"/>
         <source>The project has unsaved changes. Save them?</source>
         <translation>Das Projekt hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
@@ -2088,235 +2129,251 @@
 <context>
     <name>lipsync::studio::TimelinePanel</name>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="166"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="167"/>
         <source>Zoom out (wheel down)</source>
         <translation>Verkleinern (Mausrad nach unten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="167"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="168"/>
         <source>Zoom in (wheel up)</source>
         <translation>Vergrößern (Mausrad nach oben)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="168"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="169"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="168"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="169"/>
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="82"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="83"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="362"/>
         <source>Align</source>
         <translation>Ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="82"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="83"/>
         <source>Align this sequence&apos;s transcript to its audio (words and phones)</source>
         <translation>Das Transkript dieser Sequenz am Ton ausrichten (Wörter und Phone)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="83"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="84"/>
         <source>Align All</source>
         <translation>Alle ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="83"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="84"/>
         <source>Align every sequence that has a transcript</source>
         <translation>Jede Sequenz mit Transkript ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="84"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="85"/>
         <source>Re-align Selection</source>
         <translation>Auswahl neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="85"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="86"/>
         <source>Align the selected stretch again, keeping the words whose timing you edited</source>
         <translation>Den ausgewählten Abschnitt neu ausrichten; Wörter mit bearbeitetem Timing bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
         <source>Adapt to Speaker</source>
         <translation>An Sprecher anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="98"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="99"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="99"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="100"/>
         <source>Align with the model shipped with the studio, trained on one GRID speaker</source>
         <translation>Mit dem mitgelieferten Modell ausrichten, trainiert auf einem GRID-Sprecher</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="100"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="101"/>
         <source>Generic US English (CMU Sphinx)</source>
         <translation>Allgemeines US-Englisch (CMU Sphinx)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="101"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="102"/>
         <source>Align with CMU Sphinx&apos;s US-English model trained on many speakers (Debian package pocketsphinx-en-us)</source>
         <translation>Mit dem US-englischen Modell von CMU Sphinx ausrichten, trainiert auf vielen Sprechern (Debian-Paket pocketsphinx-en-us)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="117"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="118"/>
         <source>Split at Cursor</source>
         <translation>Am Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="117"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="118"/>
         <source>Split the interval under the cursor</source>
         <translation>Das Intervall unter dem Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="118"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="119"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="118"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="119"/>
         <source>Join the selected interval with the next one</source>
         <translation>Das ausgewählte Intervall mit dem nächsten verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="120"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="121"/>
         <source>Relabel…</source>
         <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="120"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="121"/>
         <source>Change the label of the selected interval</source>
         <translation>Die Beschriftung des ausgewählten Intervalls ändern</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="122"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
         <source>Insert Silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="122"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
         <source>Make the selection a silence</source>
         <translation>Die Auswahl zur Stille machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="124"/>
         <source>Insert Breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="124"/>
         <source>Make the selection a breath</source>
         <translation>Die Auswahl zum Atmer machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="124"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
         <source>Play Selection</source>
         <translation>Auswahl abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="124"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
         <source>Play the selected stretch (Space in the timeline)</source>
         <translation>Den ausgewählten Abschnitt abspielen (Leertaste in der Zeitleiste)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
         <source>Play Word</source>
         <translation>Wort abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
         <source>Play the word under the cursor</source>
         <translation>Das Wort unter dem Cursor abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
         <source>Play All</source>
         <translation>Alles abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
         <source>Play the whole sequence</source>
         <translation>Die ganze Sequenz abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="128"/>
         <source>Pronunciations…</source>
         <translation>Aussprachen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="128"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
         <source>The project&apos;s pronunciations, and the words espeak-ng guessed</source>
         <translation>Die Aussprachen des Projekts und die von espeak-ng geschätzten Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="155"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="156"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="156"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="157"/>
         <source>The acoustic model the aligner uses</source>
         <translation>Das akustische Modell, das die Ausrichtung verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="193"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="194"/>
         <source>Show Spectrogram</source>
         <translation>Spektrogramm anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="194"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="195"/>
         <source>Show the spectrogram under the waveform in the timeline</source>
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="329"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="326"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="350"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="339"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="372"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="363"/>
+        <source>The transcript of %1 changed since its boundaries were edited. Aligning it again replaces the edited boundaries. Align anyway?</source>
+        <translation>Das Transkript von %1 wurde geändert, nachdem seine Grenzen bearbeitet wurden. Erneutes Alignieren ersetzt die bearbeiteten Grenzen. Trotzdem alignieren?</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="374"/>
+        <source>Every word of %1 is user-edited: nothing to align there.</source>
+        <translation>Jedes Wort von %1 ist von Hand bearbeitet: Dort gibt es nichts zu alignieren.</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="395"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="375"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="398"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="353"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="344"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="91"/>
         <source>Adapt the aligner to each recording&apos;s voice before aligning it (slower; better for voices unlike the model&apos;s training speakers)</source>
         <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Stimmen, die den Trainingssprechern des Modells unähnlich sind)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="396"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="419"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="421"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="444"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
         </translation>
     </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="464"/>
+        <source>%1: the alignment came out as it was; nothing changed.</source>
+        <translation>%1: Die Alignierung ist unverändert geblieben.</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="440"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="467"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -2324,47 +2381,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="479"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="506"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="479"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="506"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="487"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="514"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="497"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="524"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="529"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="556"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="529"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="556"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="588"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="615"/>
         <source>Not one of the 41 phones (ARPAbet, sil, br)</source>
         <translation>Keines der 41 Phone (ARPAbet, sil, br)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="589"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="616"/>
         <source>Enter one word</source>
         <translation>Ein einzelnes Wort eingeben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="597"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="624"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>
@@ -2372,17 +2429,17 @@
 <context>
     <name>lipsync::studio::TrajectoryView</name>
     <message>
-        <location filename="../studio/plots/TrajectoryView.cpp" line="138"/>
+        <location filename="../studio/plots/TrajectoryView.cpp" line="136"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/TrajectoryView.cpp" line="139"/>
+        <location filename="../studio/plots/TrajectoryView.cpp" line="137"/>
         <source>parameter value</source>
         <translation>Parameterwert</translation>
     </message>
     <message>
-        <location filename="../studio/plots/TrajectoryView.cpp" line="186"/>
+        <location filename="../studio/plots/TrajectoryView.cpp" line="184"/>
         <source>phonemes</source>
         <translation>Phoneme</translation>
     </message>

@@ -184,6 +184,7 @@ void MainWindow::createMenus()
     const StudioActions &a = *m_actions;
     m_files = nullptr;
     QMenu *file = menuBar()->addMenu(tr("&File"));
+    file->addAction(a.newProject);
     file->addAction(a.open);
     QMenu *recent = file->addMenu(tr("Open &Recent"));
     file->addAction(a.openDemo);
@@ -194,7 +195,7 @@ void MainWindow::createMenus()
     m_export = new ExportMenu(this, file);
     file->addSeparator();
     file->addAction(a.quit);
-    m_files = new ProjectFiles(m_document, this, recent);
+    m_files = new ProjectFiles(m_document, this, recent, m_runner);
     m_files->autosave()->watch(m_runner);
 
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
@@ -232,6 +233,7 @@ void MainWindow::createMenus()
     bar->addAction(a.nextSequence);
 
     connect(a.open, &QAction::triggered, m_files, &ProjectFiles::openWithDialog);
+    connect(a.newProject, &QAction::triggered, m_files, &ProjectFiles::newProjectWithDialog);
     connect(a.openDemo, &QAction::triggered, this, [this] {
         if (m_files->maybeSave())
             m_files->openDemo();

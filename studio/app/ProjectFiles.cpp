@@ -5,6 +5,8 @@
 #include "app/ErrorReporter.h"
 #include "app/ProjectDocument.h"
 #include "app/RecentProjects.h"
+#include "tasks/Task.h"
+#include "tasks/TaskRunner.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -16,9 +18,9 @@
 
 namespace lipsync::studio {
 
-ProjectFiles::ProjectFiles(ProjectDocument *document, QWidget *window, QMenu *recentMenu)
+ProjectFiles::ProjectFiles(ProjectDocument *document, QWidget *window, QMenu *recentMenu, TaskRunner *runner)
     : QObject(window), m_document(document), m_window(window), m_recent(new RecentProjects(recentMenu, this)),
-      m_autosave(new Autosave(document, window))
+      m_autosave(new Autosave(document, window)), m_runner(runner)
 {
     connect(m_recent, &RecentProjects::openRequested, this, [this](const QString &folder) {
         if (maybeSave())
@@ -45,11 +47,55 @@ void ProjectFiles::openWithDialog()
         open(file);
 }
 
+void ProjectFiles::newProjectWithDialog()
+{
+    if (!maybeSave())
+        return;
+    const QString folder = QFileDialog::getExistingDirectory(
+        m_window, tr("New Project: the Folder of Your Clips (transcripts beside them)"), QDir::homePath());
+    if (!folder.isEmpty())
+        createFromMediaFolder(folder, folder);
+}
+
+Task *ProjectFiles::createFromMediaFolder(const QString &mediaFolder, const QString &projectFolder)
+{
+    const QString manifest = QDir(projectFolder).filePath(QString::fromLatin1(Project::kManifestName));
+    if (QFileInfo::exists(manifest)) {
+        ErrorReporter::report(m_window, tr("No new project was created."), manifest,
+                              tr("the folder already holds a project: open it instead"));
+        return nullptr;
+    }
+    Task *task = m_runner->start(tr("New project from %1").arg(QDir::toNativeSeparators(mediaFolder)),
+                                 [this, mediaFolder, projectFolder](Feedback &) {
+                                     Project project = Project::fromMediaFolder(mediaFolder.toStdString(),
+                                                                                projectFolder.toStdString());
+                                     project.name = QFileInfo(projectFolder).fileName().toStdString();
+                                     project.save(projectFolder.toStdString());
+                                     Project saved = Project::load(projectFolder.toStdString());
+                                     return TaskRunner::Commit([this, projectFolder, saved = std::move(saved)]() mutable {
+                                         if (openLoaded(std::move(saved), projectFolder, false))
+                                             m_recent->add(projectFolder);
+                                     });
+                                 });
+    connect(task, &Task::finished, this, [this, task](Task::State state) {
+        if (state == Task::State::Failed)
+            ErrorReporter::report(m_window, tr("No new project was created."), QString(), task->errorMessage());
+    });
+    return task;
+}
+
 bool ProjectFiles::open(const QString &path)
 {
     QFileInfo info(path);
     // A project.json names its folder; anything else (even a missing path) is the folder.
     const QString folder = info.isFile() ? info.absolutePath() : info.absoluteFilePath();
+    if (info.isDir() && !QFileInfo::exists(QDir(folder).filePath(QString::fromLatin1(Project::kManifestName)))
+        && !ErrorReporter::isBatchMode()
+        && QMessageBox::question(m_window, tr("Open Project"),
+                                 tr("%1 holds no project. Create a new project from the clips in it?")
+                                     .arg(QDir::toNativeSeparators(folder)))
+               == QMessageBox::Yes)
+        return createFromMediaFolder(folder, folder) != nullptr;
     Project project;
     try {
         project = Project::load(folder.toStdString());

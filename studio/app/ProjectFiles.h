@@ -1,6 +1,6 @@
 #pragma once
-// Open / save / save as / recent projects for the main window: the dialogs, the read-only demo
-// rule and the error messages. A failed open or save changes nothing.
+// New / open / save / save as / recent projects for the main window: the dialogs, the read-only
+// demo rule and the error messages. A failed new, open or save changes nothing.
 #include "project/Project.h"
 
 #include <QObject>
@@ -8,6 +8,11 @@
 
 class QMenu;
 class QWidget;
+
+namespace lipsync {
+class Task;
+class TaskRunner;
+} // namespace lipsync
 
 namespace lipsync::studio {
 
@@ -19,7 +24,14 @@ class ProjectFiles : public QObject
 {
     Q_OBJECT
 public:
-    ProjectFiles(ProjectDocument *document, QWidget *window, QMenu *recentMenu);
+    ProjectFiles(ProjectDocument *document, QWidget *window, QMenu *recentMenu, TaskRunner *runner);
+
+    // A new project from a folder of clips with their transcripts beside them (as `lipsync
+    // project create`: Project::fromMediaFolder), written into `projectFolder` (the clips stay
+    // where they are) and opened. The clips are probed in a background task, returned (null if
+    // `projectFolder` already holds a project, which is reported); a failure is reported naming
+    // the file and leaves the open document as it was.
+    Task *createFromMediaFolder(const QString &mediaFolder, const QString &projectFolder);
 
     // Loads the project in `folder` (or the folder of a project.json). Returns false, having
     // reported why, if it cannot be loaded; the open document is then untouched. If a crash left
@@ -40,6 +52,8 @@ public:
 
 public slots:
     void openWithDialog();
+    // Asks for the folder of clips; the project is written into that folder.
+    void newProjectWithDialog();
 
 private:
     bool openLoaded(Project project, const QString &folder, bool readOnly);
@@ -48,6 +62,7 @@ private:
     QWidget *m_window;
     RecentProjects *m_recent;
     Autosave *m_autosave;
+    TaskRunner *m_runner;
 };
 
 } // namespace lipsync::studio

@@ -29,6 +29,7 @@ QAction *make(QWidget *owner, const QString &text, const QList<QKeySequence> &ke
 
 StudioActions::StudioActions(QWidget *owner, QUndoStack *undoStack)
 {
+    newProject = make(owner, tr("&New Project…"), {QKeySequence::New}, QStyle::SP_FileDialogNewFolder);
     open = make(owner, tr("&Open Project…"), {QKeySequence::Open}, QStyle::SP_DialogOpenButton);
     openDemo = make(owner, tr("Open &Demo Project"), {});
     save = make(owner, tr("&Save"), {QKeySequence::Save}, QStyle::SP_DialogSaveButton);

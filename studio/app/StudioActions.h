@@ -17,6 +17,7 @@ public:
     StudioActions(QWidget *owner, QUndoStack *undoStack);
 
     // File
+    QAction *newProject;
     QAction *open;
     QAction *openDemo;
     QAction *save;

@@ -14,6 +14,7 @@
 #include "app/StudioActions.h"
 #include "app/SurfaceFormat.h"
 #include "preview/PlaybackController.h"
+#include "tasks/Task.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/WaveformView.h"
 
@@ -22,6 +23,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QSet>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTableView>
@@ -226,6 +228,52 @@ private slots:
         QVERIFY(ErrorReporter::lastMessage().contains(QStringLiteral("/nonexistent/project")));
         QCOMPARE(m_window->sequenceView()->model()->rowCount(), rows);
         QVERIFY(m_window->media());
+    }
+
+    // File ▸ New Project… from a folder of clips with transcripts beside them (as `lipsync project
+    // create`): written there, opened, in the recent list; a folder that holds a project or no
+    // clips is refused with a message and the open document stays.
+    void newProjectFromAFolderOfClips()
+    {
+        QCOMPARE(m_window->actions().newProject->shortcut(), QKeySequence(QKeySequence::New));
+        const QString clips = dir.filePath(QStringLiteral("my-clips"));
+        QVERIFY(QDir().mkpath(clips));
+        const QString demoMedia = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media/");
+        for (const char *id : {"bbaf2n", "bgin3a"}) {
+            QVERIFY(QFile::copy(demoMedia + QLatin1String(id) + QStringLiteral(".mpg"),
+                                clips + QLatin1Char('/') + QLatin1String(id) + QStringLiteral(".mpg")));
+            QFile transcript(clips + QLatin1Char('/') + QLatin1String(id) + QStringLiteral(".txt"));
+            QVERIFY(transcript.open(QIODevice::WriteOnly));
+            transcript.write(id == std::string("bbaf2n") ? "bin blue at f two now\n" : "bin green in three again\n");
+        }
+        const QString before = m_window->document()->folder();
+
+        // No clips: the task fails, says why, and the open document stays.
+        const QString empty = dir.filePath(QStringLiteral("no-clips"));
+        QVERIFY(QDir().mkpath(empty));
+        Task *failing = m_window->files()->createFromMediaFolder(empty, empty);
+        QVERIFY(failing);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 30000);
+        QVERIFY2(ErrorReporter::lastMessage().contains(QStringLiteral("no media files")),
+                 qPrintable(ErrorReporter::lastMessage()));
+        QCOMPARE(m_window->document()->folder(), before);
+        QVERIFY(!QFileInfo::exists(empty + QStringLiteral("/project.json")));
+
+        QVERIFY(m_window->files()->createFromMediaFolder(clips, clips));
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 30000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->document()->folder(), clips, 10000);
+        QVERIFY(QFileInfo::exists(clips + QStringLiteral("/project.json")));
+        QVERIFY(!m_window->document()->isReadOnly());
+        QVERIFY(!m_window->document()->isModified());
+        QCOMPARE(m_window->sequenceView()->model()->rowCount(), 2);
+        QCOMPARE(m_window->document()->sequence(1).transcript, std::string("bin green in three again"));
+        QCOMPARE(m_window->document()->sequence(0).frameCount, 75);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() && m_window->currentSequence() == 0, 60000);
+        QCOMPARE(QSettings().value(QStringLiteral("recentProjects")).toStringList().value(0), clips);
+
+        // Again into the same folder: refused, nothing changes.
+        QVERIFY(!m_window->files()->createFromMediaFolder(clips, clips));
+        QVERIFY(ErrorReporter::lastMessage().contains(QStringLiteral("already holds a project")));
     }
 
 private:
