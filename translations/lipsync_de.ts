@@ -1400,10 +1400,6 @@
 <context>
     <name>lipsync::studio::ProjectDocument</name>
     <message>
-        <source>Answer of %1</source>
-        <translation type="vanished">Antwort von %1</translation>
-    </message>
-    <message>
         <location filename="../studio/app/ProjectDocument.cpp" line="196"/>
         <source>%1 interval %2: %3</source>
         <translation>%1, Intervall %2: %3</translation>
