@@ -177,6 +177,17 @@ bool insertInterval(TierPair &tiers, TierKind kind, double a, double b, const st
     b = std::min(b, tier.intervals.back().end);
     if (b - a < kSnap - 1e-9)
         return false;
+    // A snapped time within rounding of an existing edge is that edge (166 x 0.01 is
+    // 1.6600000000000001, a GRID edge 1.66): the neighbour kept whole must not overlap.
+    auto onEdge = [&tier](double t) {
+        for (const Interval &iv : tier.intervals)
+            for (double edge : {iv.start, iv.end})
+                if (std::abs(edge - t) <= 1e-9)
+                    return edge;
+        return t;
+    };
+    a = onEdge(a);
+    b = onEdge(b);
     std::vector<Interval> out;
     out.reserve(tier.intervals.size() + 2);
     bool inserted = false;

@@ -388,6 +388,10 @@ private slots:
         // silence phone reached 1e-16 s into the stretch and was kept whole beside the new phones.
         QTest::newRow("realign from a word edge a phone edge passes by an ulp")
             << std::vector<Op>{{OpKind::RealignSelection, 0, 0, 0, 0.35, 0.6}};
+        // Inserting a silence ending at a snapped 1.66 (166 x 0.01 = 1.6600000000000001) beside
+        // a word starting at GRID's 1.66 kept that word whole, overlapping the silence.
+        QTest::newRow("insert up to a word edge an ulp before the snapped time")
+            << std::vector<Op>{{OpKind::Insert, 1, 73476, 893529, 0.55292677544531654, 0.4282043157290184}};
     }
 
     void failingSequencesFoundBefore()
