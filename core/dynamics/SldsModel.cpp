@@ -110,6 +110,29 @@ Eigen::MatrixXd floorCovariance(const Eigen::MatrixXd &C, const Eigen::VectorXd 
     return eig.eigenvectors() * values.asDiagonal() * eig.eigenvectors().transpose();
 }
 
+// The transition sums of one state (§3.3): S^xx, the augmented S^xz = [S^x- s^x] and
+// S^zz = [S^-- s^-; s^-T N], and N = N^>=2.
+struct TransitionSums
+{
+    Eigen::MatrixXd Sxx, Sxz, Szz;
+    double N = 0.0;
+
+    // Q_n given A~ = [A nu] (§3.4 process noise), before the floor.
+    Eigen::MatrixXd processNoise(const Eigen::MatrixXd &At) const
+    {
+        return (Sxx - At * Sxz.transpose() - Sxz * At.transpose() + At * Szz * At.transpose()) / N;
+    }
+    // The transition part of the expected complete-data log-likelihood at A~, with Q at its
+    // (floored) maximiser given A~, up to a constant: -N/2 (log|Q| + tr(Q^-1 S(A~))).
+    double objective(const Eigen::MatrixXd &At, const Eigen::VectorXd &floor, bool full) const
+    {
+        const Eigen::MatrixXd S = processNoise(At);
+        const Eigen::LLT<Eigen::MatrixXd> llt(floorCovariance(S, floor, full));
+        const double logDet = 2.0 * llt.matrixLLT().diagonal().array().log().sum();
+        return -0.5 * N * (logDet + llt.solve(S).trace());
+    }
+};
+
 } // namespace
 
 void SldsModel::setParameters(const slds::Parameters &parameters)
@@ -126,7 +149,8 @@ void SldsModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &fe
     // Initialisation [choice, §3.4]: DPDS a, nu, mu; Q = R = r/2; Sigma_n = c_n.
     DpdsOptions dpdsOptions;
     dpdsOptions.maxIterations = m_options.initIterations;
-    dpdsOptions.aMax = std::min(m_options.aMax, 0.999);
+    if (m_options.boundA)
+        dpdsOptions.aMax = std::min(m_options.aMax, dpdsOptions.aMax);
     dpdsOptions.threads = m_options.threads;
     DpdsModel trainedHere(dpdsOptions);
     if (!m_initialisation || m_initialisation->dimension() != int(d)) {
@@ -277,7 +301,7 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
                     an = sol[0];
                     nun = sol[1];
                 }
-                if (std::abs(an) > m_options.aMax) {
+                if (m_options.boundA && std::abs(an) > m_options.aMax) {
                     // Constrained maximum of the concave profile: clip, then nu given a.
                     an = std::clamp(an, -m_options.aMax, m_options.aMax);
                     nun = (sx[n] - an * sm[n]) / N2[n];
@@ -376,19 +400,26 @@ double SldsModel::emMatrix(const std::vector<LabelledSequence> &sequences,
         const size_t i = size_t(n);
         if (N2[n] > 0) {
             // Augmented sums (§3.3): S^zz = [S^-- s^-; s^-T N], S^xz = [S^x- s^x].
-            Eigen::MatrixXd Szz(d + 1, d + 1), Sxz(d, d + 1);
-            Szz << Smm[i], sm.row(n).transpose(), sm.row(n), N2[n];
-            Sxz << Sxm[i], sx.row(n).transpose();
+            TransitionSums sums{Sxx[i], Eigen::MatrixXd(d, d + 1), Eigen::MatrixXd(d + 1, d + 1), N2[n]};
+            sums.Szz << Smm[i], sm.row(n).transpose(), sm.row(n), N2[n];
+            sums.Sxz << Sxm[i], sx.row(n).transpose();
+            const bool bound = m_options.boundA;
+            bool clipped = false;
             Eigen::MatrixXd At(d, d + 1);
             if (m_options.fullA) {
-                At = Szz.ldlt().solve(Sxz.transpose()).transpose();
-                // Stability: clip singular values at aMax (common Lyapunov function, §4.11).
-                Eigen::JacobiSVD<Eigen::MatrixXd> svd(At.leftCols(d), Eigen::ComputeFullU | Eigen::ComputeFullV);
-                if (svd.singularValues().maxCoeff() > m_options.aMax) {
-                    const Eigen::MatrixXd A = svd.matrixU() * svd.singularValues().cwiseMin(m_options.aMax).asDiagonal()
-                                              * svd.matrixV().transpose();
-                    At.leftCols(d) = A;
-                    At.col(d) = (sx.row(n).transpose() - A * sm.row(n).transpose()) / N2[n];
+                At = sums.Szz.ldlt().solve(sums.Sxz.transpose()).transpose();
+                // Bound: clip the singular values at aMax (common Lyapunov function, §4.11).
+                if (bound) {
+                    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(At.leftCols(d), Eigen::ComputeFullU
+                                                                                    | Eigen::ComputeFullV);
+                    if (svd.singularValues().maxCoeff() > m_options.aMax) {
+                        const Eigen::MatrixXd A = svd.matrixU()
+                                                  * svd.singularValues().cwiseMin(m_options.aMax).asDiagonal()
+                                                  * svd.matrixV().transpose();
+                        At.leftCols(d) = A;
+                        At.col(d) = (sx.row(n).transpose() - A * sm.row(n).transpose()) / N2[n];
+                        clipped = true;
+                    }
                 }
             } else if (!full) {
                 At.setZero();
@@ -396,7 +427,8 @@ double SldsModel::emMatrix(const std::vector<LabelledSequence> &sequences,
                     Eigen::Matrix2d M;
                     M << Smm[i](k, k), sm(n, k), sm(n, k), N2[n];
                     Eigen::Vector2d sol = M.lu().solve(Eigen::Vector2d(Sxm[i](k, k), sx(n, k)));
-                    if (std::abs(sol[0]) > m_options.aMax) {
+                    // Bound: the constrained maximum of the concave profile in a_k (exact).
+                    if (bound && std::abs(sol[0]) > m_options.aMax) {
                         sol[0] = std::clamp(sol[0], -m_options.aMax, m_options.aMax);
                         sol[1] = (sx(n, k) - sol[0] * sm(n, k)) / N2[n];
                     }
@@ -413,14 +445,23 @@ double SldsModel::emMatrix(const std::vector<LabelledSequence> &sequences,
                 const Eigen::VectorXd rhs = Lambda.cwiseProduct(Sxm[i].transpose()) * Eigen::VectorXd::Ones(d)
                                             - smv.asDiagonal() * (Lambda * sxv) / M;
                 Eigen::VectorXd av = lhs.ldlt().solve(rhs);
-                av = av.cwiseMax(-m_options.aMax).cwiseMin(m_options.aMax);
+                if (bound && av.cwiseAbs().maxCoeff() > m_options.aMax) {
+                    av = av.cwiseMax(-m_options.aMax).cwiseMin(m_options.aMax);
+                    clipped = true;
+                }
                 At.setZero();
                 At.leftCols(d) = av.asDiagonal();
                 At.col(d) = (sxv - av.cwiseProduct(smv)) / M;
             }
-            const Eigen::MatrixXd Q = (Sxx[i] - At * Sxz.transpose() - Sxz * At.transpose()
-                                       + At * Szz * At.transpose())
-                                      / N2[n];
+            if (clipped) {
+                // The clipped matrix is not the constrained maximiser: keep the current (feasible)
+                // A~ where it scores higher, a generalised M-step, so the likelihood cannot drop.
+                Eigen::MatrixXd current(d, d + 1);
+                current << p.A[i], p.nu.row(n).transpose();
+                if (sums.objective(current, st.floor, full) > sums.objective(At, st.floor, full))
+                    At = current;
+            }
+            const Eigen::MatrixXd Q = sums.processNoise(At);
             p.A[i] = At.leftCols(d);
             p.nu.row(n) = At.col(d).transpose();
             p.Q[i] = floorCovariance(Q, st.floor, full);

@@ -4,8 +4,9 @@
 //   y_t = x_t + v_t, v_t ~ N(0, R_{pi_t}),
 // trained by EM: Kalman filter (prediction-error log-likelihood, §3.2), RTS smoother with the
 // lag-one cross-covariance (§3.3), closed-form M-step (§3.4), initialised from the DPDS.
-// Default: everything diagonal, so the d dimensions decouple into scalar filters. Options: full A
-// (and/or full Q, R, Sigma), a shared R. Unseen phones keep their DPDS initialisation.
+// Default: everything diagonal, so the d dimensions decouple into scalar filters, and the M-step is
+// the paper's plain maximum likelihood. Options: full A (and/or full Q, R, Sigma), a shared R, a
+// bound on A for stable generation. Unseen phones keep their DPDS initialisation.
 #include "dynamics/DpdsModel.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/LinearRecursion.h"
@@ -20,7 +21,12 @@ struct SldsOptions
     double kappa = 2.0;       // MAP prior on Sigma_n as §4.5 (0: pure ML)
     int maxIterations = 200;  // §3.4 stopping
     double tolerance = 1e-7;
-    double aMax = 0.999;      // |a| (diagonal) or ||A||_2 (full) bound for stable generation
+    // Off: A is the unconstrained ML of §3.4, as in the paper. On: every M-step keeps |a|
+    // (diagonal A) or ||A||_2 (full A) <= aMax, so generation stays bounded over long dwell times
+    // (the §4.9 stability argument); the constrained step is kept only where it does not lower
+    // the expected complete-data log-likelihood, so EM stays monotone.
+    bool boundA = false;
+    double aMax = 0.999;
     int initIterations = 30;  // DPDS iterations of the initialisation
     int threads = 0;          // 0: all cores (QtConcurrent over dimensions), 1: serial
 };

@@ -7,6 +7,7 @@
 #include <QTest>
 
 #include <Eigen/Cholesky>
+#include <Eigen/SVD>
 
 using namespace lipsync;
 using namespace lipsync::test;
@@ -100,6 +101,33 @@ void denseMoments(const slds::Parameters &p, const std::vector<int> &labels, Eig
 
 double maxAbs(const Eigen::MatrixXd &m) { return m.cwiseAbs().maxCoeff(); }
 
+// A 1-d SLDS with small noise (Q = R = 0.01) and 120 sequences of 60 frames sampled from it.
+slds::Parameters quietScalarTruth(std::mt19937 &rng)
+{
+    slds::Parameters truth = randomParameters(rng, 1, true);
+    for (auto &Q : truth.Q)
+        Q(0, 0) = 0.01;
+    for (auto &R : truth.R)
+        R(0, 0) = 0.01;
+    return truth;
+}
+std::vector<LabelledSequence> scalarData(std::mt19937 &rng, const slds::Parameters &truth, int maxRun)
+{
+    std::vector<LabelledSequence> data;
+    for (int s = 0; s < 120; ++s)
+        data.push_back(sample(rng, truth, randomLabels(rng, 60, {0, 6, 21, 30}, maxRun)));
+    return data;
+}
+
+// The EM objective never decreases (up to rounding).
+bool nonDecreasing(const std::vector<double> &h)
+{
+    for (size_t i = 1; i < h.size(); ++i)
+        if (h[i] < h[i - 1] - 1e-9 * std::abs(h[i - 1]))
+            return false;
+    return true;
+}
+
 } // namespace
 
 class TestSlds : public QObject
@@ -155,15 +183,20 @@ private slots:
     {
         QTest::addColumn<bool>("fullA");
         QTest::addColumn<bool>("fullNoise");
-        QTest::newRow("diagonal A, diagonal Q R") << false << false;
-        QTest::newRow("full A, full Q R") << true << true;
-        QTest::newRow("full A, diagonal Q R") << true << false;
-        QTest::newRow("diagonal A, full Q R (ECM)") << false << true;
+        QTest::addColumn<bool>("boundA");
+        for (bool bound : {false, true}) {
+            const char *suffix = bound ? ", A bounded" : "";
+            QTest::addRow("diagonal A, diagonal Q R%s", suffix) << false << false << bound;
+            QTest::addRow("full A, full Q R%s", suffix) << true << true << bound;
+            QTest::addRow("full A, diagonal Q R%s", suffix) << true << false << bound;
+            QTest::addRow("diagonal A, full Q R (ECM)%s", suffix) << false << true << bound;
+        }
     }
     void emIsMonotone()
     {
         QFETCH(bool, fullA);
         QFETCH(bool, fullNoise);
+        QFETCH(bool, boundA);
         std::mt19937 rng(3);
         const slds::Parameters truth = randomParameters(rng, 2, false);
         std::vector<LabelledSequence> data;
@@ -175,7 +208,9 @@ private slots:
         options.kappa = 0; // pure ML: the likelihood itself must not decrease
         options.maxIterations = 25;
         options.tolerance = 0;
-        options.aMax = 10; // no clipping: exact M-steps
+        // Bounded: a bound the ML estimates of this truth exceed, so the constrained steps act.
+        options.boundA = boundA;
+        options.aMax = 0.35;
         SldsModel model(options);
         Feedback feedback;
         model.train(data, feedback);
@@ -185,20 +220,51 @@ private slots:
             QVERIFY2(h[i] >= h[i - 1] - 1e-9 * std::abs(h[i - 1]),
                      qPrintable(QStringLiteral("iteration %1: %2 < %3").arg(i).arg(h[i], 0, 'g', 15).arg(h[i - 1], 0, 'g', 15)));
         QVERIFY(h.back() > h.front());
+        double largest = 0.0; // ||A_n||_2 over the trained phones
+        for (int n : {0, 6, 21})
+            largest = std::max(largest, model.parameters().A[size_t(n)].jacobiSvd().singularValues().maxCoeff());
+        if (boundA)
+            QVERIFY2(largest <= options.aMax + 1e-12, qPrintable(QString::number(largest)));
+        else
+            QVERIFY2(largest > options.aMax, qPrintable(QString::number(largest)));
+    }
+
+    // The default M-step is the paper's plain ML (§3.4): a phone whose true a exceeds 1 (short
+    // runs keep the data bounded) is recovered above 1; boundA holds it at aMax.
+    void defaultIsUnconstrainedMaximumLikelihood()
+    {
+        std::mt19937 rng(8);
+        slds::Parameters truth = quietScalarTruth(rng);
+        truth.A[6](0, 0) = 1.1;
+        const std::vector<LabelledSequence> data = scalarData(rng, truth, 4);
+        Feedback feedback;
+        SldsModel plain;
+        QVERIFY(!plain.options().boundA);
+        plain.train(data, feedback);
+        const double a = plain.parameters().A[6](0, 0);
+        QVERIFY2(std::abs(a - 1.1) < 0.05, qPrintable(QString::number(a)));
+        const auto &h = plain.objectiveHistory();
+        QVERIFY(nonDecreasing(h));
+
+        SldsOptions options;
+        options.boundA = true;
+        SldsModel bounded(options);
+        bounded.train(data, feedback);
+        QCOMPARE(bounded.parameters().A[6](0, 0), options.aMax);
+        for (const Eigen::MatrixXd &A : bounded.parameters().A)
+            QVERIFY(std::abs(A(0, 0)) <= options.aMax);
+        const auto &hb = bounded.objectiveHistory();
+        QVERIFY(nonDecreasing(hb));
+        // The constraint costs likelihood on data that violate it.
+        QVERIFY(hb.back() < h.back());
     }
 
     // §7.20
     void recoversDiagonalDynamics()
     {
         std::mt19937 rng(4);
-        slds::Parameters truth = randomParameters(rng, 1, true);
-        for (auto &Q : truth.Q)
-            Q(0, 0) = 0.01;
-        for (auto &R : truth.R)
-            R(0, 0) = 0.01;
-        std::vector<LabelledSequence> data;
-        for (int s = 0; s < 120; ++s)
-            data.push_back(sample(rng, truth, randomLabels(rng, 60, {0, 6, 21, 30})));
+        const slds::Parameters truth = quietScalarTruth(rng);
+        const std::vector<LabelledSequence> data = scalarData(rng, truth, 6);
         SldsModel model;
         Feedback feedback;
         model.train(data, feedback);
@@ -207,9 +273,7 @@ private slots:
                      qPrintable(QStringLiteral("a[%1] %2 vs %3").arg(n).arg(model.parameters().A[size_t(n)](0, 0)).arg(truth.A[size_t(n)](0, 0))));
             QVERIFY(std::abs(model.parameters().nu(n, 0) - truth.nu(n, 0)) < 0.1 + 0.1 * std::abs(truth.nu(n, 0)));
         }
-        const auto &h = model.objectiveHistory();
-        for (size_t i = 1; i < h.size(); ++i)
-            QVERIFY(h[i] >= h[i - 1] - 1e-9 * std::abs(h[i - 1]));
+        QVERIFY(nonDecreasing(model.objectiveHistory()));
     }
 
     // §7.21
