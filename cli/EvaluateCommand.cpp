@@ -78,6 +78,7 @@ int runEvaluate(const QStringList &argv)
             std::printf(" %12.5g ± %-7.3g", m.metrics.at(metric).mean, m.metrics.at(metric).ci95);
         std::printf(" %10.3f\n", seconds);
     }
+    std::printf("%s\n", logLikelihoodNote());
     return 0;
 }
 

@@ -96,11 +96,12 @@ int runTrain(const QStringList &argv)
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     saveModel(*model, out.toStdString(), aam);
 
+    // log p(y | labels), comparable between the kinds (Brand: its trajectory density, §2.2).
     long long frames = 0;
     double ll = 0.0;
     for (const LabelledSequence &s : sequences) {
         frames += s.frameCount();
-        ll += model->logLikelihood(s.labels, s.features);
+        ll += model->trajectoryLogLikelihood(s.labels, s.features);
     }
     if (args.flag(QStringLiteral("json"))) {
         QJsonObject o;

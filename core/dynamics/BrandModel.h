@@ -28,9 +28,10 @@ public:
     // §2.1: the density over static + delta features (not comparable with the other models).
     double logLikelihood(const std::vector<int> &labels,
                          const Eigen::MatrixXd &features) const override;
-    // §2.2 optional: the normalised trajectory density N(Y; Yhat, H^-1), a true density over y.
+    // §2.2: the normalised trajectory density N(Y; Yhat, H^-1), a true density over y (the one
+    // the evaluation compares with the other models).
     double trajectoryLogLikelihood(const std::vector<int> &labels,
-                                   const Eigen::MatrixXd &features) const;
+                                   const Eigen::MatrixXd &features) const override;
 
     // The MLPG system as d x d blocks (any covariance), and its solutions by block LDL^T and by
     // the dense reference built from explicit W and Lambda (small T only).

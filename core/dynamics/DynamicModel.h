@@ -38,10 +38,18 @@ public:
     virtual Eigen::MatrixXd generate(const std::vector<int> &labels) const = 0;
     // Frame-by-frame generation; equals generate() (exactly for the recursive models).
     virtual std::unique_ptr<StreamingGenerator> streamer() const = 0;
-    // log p(features | labels) in nats (for Brand: the density over static + delta features,
-    // docs/models.md §2.1).
+    // log p(features | labels) in nats, the model's own objective (for Brand: the density over
+    // static + delta features [y; Δy], docs/models.md §2.1).
     virtual double logLikelihood(const std::vector<int> &labels,
                                  const Eigen::MatrixXd &features) const = 0;
+    // log p(y_1..y_T | labels) in nats, a density over the face trajectory alone, so the four
+    // models' values can be compared and ranked (§6.2). logLikelihood() for every model whose
+    // likelihood is over y; Brand overrides it with its trajectory-HMM density (§2.2).
+    virtual double trajectoryLogLikelihood(const std::vector<int> &labels,
+                                           const Eigen::MatrixXd &features) const
+    {
+        return logLikelihood(labels, features);
+    }
 
     // Parameters only (the model file adds kind, version, labels, AAM).
     virtual QJsonObject parametersToJson() const = 0;

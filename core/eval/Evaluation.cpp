@@ -27,6 +27,13 @@ const std::vector<std::string> &evaluationMetrics()
     return names;
 }
 
+const char *logLikelihoodNote()
+{
+    return "loglik: log p(y | labels) per frame, a density over the face trajectory for every model; "
+           "Brand's is its trajectory-HMM density N(y; MLPG mean, H^-1) (models.md §2.2), not its "
+           "training density over [y, delta y], which is not comparable with the others";
+}
+
 namespace {
 
 // CPU seconds of the calling thread: on a shared machine the wall time of a training says little.
@@ -94,7 +101,9 @@ std::vector<FoldOutcome> runFold(const std::vector<LabelledSequence> &sequences,
             o.l1 += e.l1;
             o.rms += e.rms;
             o.linf += e.linf;
-            o.loglik += model->logLikelihood(s.labels, s.features) / double(s.frameCount());
+            // A density over y for every model (Brand's trajectory density, §2.2), so the
+            // models' values are comparable.
+            o.loglik += model->trajectoryLogLikelihood(s.labels, s.features) / double(s.frameCount());
         }
         const double n = double(test.size());
         o.l1 /= n;
@@ -235,6 +244,7 @@ QJsonObject EvaluationResult::toJson() const
     o[QStringLiteral("seed")] = QString::number(seed);
     o[QStringLiteral("sequences")] = sequences;
     o[QStringLiteral("frames")] = double(frames);
+    o[QStringLiteral("loglikNote")] = QString::fromUtf8(logLikelihoodNote());
     QJsonObject modelsObject;
     for (const ModelEvaluation &m : models) {
         QJsonObject mo;

@@ -1,9 +1,11 @@
 #pragma once
 // The cross-validated comparison of the dynamic models (docs/models.md §6.1-6.3): every model is
 // trained on the same k-1 folds and tested on the held-out one; per test sequence L1, RMS, Linf
-// (§6.2) of the generated trajectory and the log-likelihood per frame; fold value = mean over the
-// fold's sequences (equal weight); reported as the mean over folds with a 95 % t interval, plus
-// paired t-tests between models. Results serialise to JSON and CSV.
+// (§6.2) of the generated trajectory and the log-likelihood per frame (log p(y | labels), a density
+// over the face trajectory for every model: Brand's trajectory-HMM density, not its [y; Δy]
+// objective, which is not comparable, §2.2 and §6.2); fold value = mean over the fold's sequences
+// (equal weight); reported as the mean over folds with a 95 % t interval, plus paired t-tests
+// between models. Results serialise to JSON and CSV.
 #include "dynamics/LabelledSequence.h"
 #include "dynamics/ModelFile.h"
 
@@ -69,6 +71,8 @@ struct EvaluationResult
 };
 
 const std::vector<std::string> &evaluationMetrics();
+// What the "loglik" metric is, for the reports (JSON, the CLI table).
+const char *logLikelihoodNote();
 
 // Throws lipsync::Error for invalid sequences (validateSequences) or too few sequences.
 EvaluationResult evaluateModels(const std::vector<LabelledSequence> &sequences,

@@ -329,7 +329,7 @@ QList<Task *> ModelsPanel::train()
                 double ll = 0.0;
                 for (const LabelledSequence &s : *data) {
                     frames += s.frameCount();
-                    ll += model->logLikelihood(s.labels, s.features);
+                    ll += model->trajectoryLogLikelihood(s.labels, s.features); // comparable (§6.2)
                 }
                 // Written on the GUI thread by the commit (a small JSON file), so a canceled
                 // training never replaces the model file either.

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <QTest>
 
+#include <algorithm>
 #include <set>
 
 using namespace lipsync;
@@ -175,6 +176,44 @@ private slots:
         options.kinds = {"hmm"};
         options.folds = 30;
         QVERIFY_THROWS_EXCEPTION(Error, evaluateModels(data, options, feedback));
+    }
+
+    // §6.2: the log-likelihood compared across models is a density over y; Brand's is its
+    // trajectory density (§2.2), not its density over [y, delta y] (§2.1).
+    void brandLogLikelihoodIsItsTrajectoryDensity()
+    {
+        const auto data = sampledData(3, 2, 8, 30);
+        EvaluationOptions options;
+        options.folds = 2;
+        options.kinds = {"brand", "hmm"};
+        options.parallelFolds = false;
+        Feedback feedback;
+        const EvaluationResult r = evaluateModels(data, options, feedback);
+        for (int f = 0; f < options.folds; ++f) {
+            std::vector<LabelledSequence> training;
+            for (size_t i = 0; i < data.size(); ++i)
+                if (std::find(r.foldMembers[size_t(f)].begin(), r.foldMembers[size_t(f)].end(), int(i))
+                    == r.foldMembers[size_t(f)].end())
+                    training.push_back(data[i]);
+            for (size_t m = 0; m < options.kinds.size(); ++m) {
+                auto model = createDynamicModel(options.kinds[m]);
+                model->train(training, feedback);
+                double trajectory = 0.0, own = 0.0;
+                for (int i : r.foldMembers[size_t(f)]) {
+                    const LabelledSequence &s = data[size_t(i)];
+                    trajectory += model->trajectoryLogLikelihood(s.labels, s.features) / double(s.frameCount());
+                    own += model->logLikelihood(s.labels, s.features) / double(s.frameCount());
+                }
+                const double n = double(r.foldMembers[size_t(f)].size());
+                const double value = r.models[m].metrics.at("loglik").folds[size_t(f)];
+                QVERIFY2(std::abs(value - trajectory / n) <= 1e-9 * std::abs(value), options.kinds[m].c_str());
+                if (options.kinds[m] == "brand")
+                    QVERIFY(std::abs(own - trajectory) > 1e-3 * std::abs(own));
+                else
+                    QCOMPARE(own, trajectory);
+            }
+        }
+        QVERIFY(r.toJson().value(QStringLiteral("loglikNote")).toString().contains(QStringLiteral("Brand")));
     }
 
     void parallelFoldsEqualSerialFolds()
