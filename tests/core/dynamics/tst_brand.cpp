@@ -238,6 +238,98 @@ private slots:
         QVERIFY(std::abs(full.trajectoryLogLikelihood(labels, Y) - fullDense) < 1e-9 * std::abs(fullDense));
     }
 
+    // §2.1 statistics by hand: Δy_t = y_t - y_{t-1} for t >= 2 takes frame t's label; the first
+    // frame of a sequence has no delta; a phone without transition frames backs off to the global
+    // delta statistics; the static statistics are the HMM-mean's over all frames.
+    void deltaStatisticsByHand()
+    {
+        // Dimension 1 is y, dimension 2 is -2 y + 1 (deltas -2x, variances 4x).
+        auto sequence = [](std::vector<int> labels, std::vector<double> y) {
+            LabelledSequence s{"hand", labels, Eigen::MatrixXd(Eigen::Index(y.size()), 2)};
+            for (size_t t = 0; t < y.size(); ++t)
+                s.features.row(Eigen::Index(t)) << y[t], -2 * y[t] + 1;
+            return s;
+        };
+        const std::vector<LabelledSequence> data{sequence({0, 0, 6, 6}, {1, 3, 4, 8}),
+                                                 sequence({6, 0, 0}, {2, 5, 4}),
+                                                 sequence({30, 0}, {7, 9})};
+        const BrandModel model = trained(data);
+        // Phone 0: deltas 2, 3, -1, 2; phone 6: deltas 1, 4 (not the 2 of its first frame);
+        // phone 30: no transition frame, so all six deltas 2, 1, 4, 3, -1, 2.
+        const struct { int phone; double mean, variance; } delta[] = {
+            {0, 1.5, 2.25}, {6, 2.5, 2.25}, {30, 11.0 / 6, 89.0 / 36}};
+        for (const auto &e : delta) {
+            QVERIFY(std::abs(model.deltaMean(e.phone, 0) - e.mean) < 1e-12);
+            QVERIFY(std::abs(model.deltaMean(e.phone, 1) + 2 * e.mean) < 1e-12);
+            QVERIFY(std::abs(model.deltaVariance(e.phone, 0) - e.variance) < 1e-12);
+            QVERIFY(std::abs(model.deltaVariance(e.phone, 1) - 4 * e.variance) < 1e-11);
+        }
+        // Static: phone 0 frames 1, 3, 5, 4, 9; phone 6 frames 4, 8, 2.
+        QVERIFY(std::abs(model.staticMean(0, 0) - 4.4) < 1e-12);
+        QVERIFY(std::abs(model.staticVariance(0, 0) - 7.04) < 1e-12);
+        QVERIFY(std::abs(model.staticMean(6, 0) - 14.0 / 3) < 1e-12);
+        QVERIFY(std::abs(model.staticVariance(6, 0) - 56.0 / 9) < 1e-12);
+        QVERIFY(std::abs(model.staticMean(6, 1) - (1 - 28.0 / 3)) < 1e-12);
+        // The §2.1 density of the first sequence from these statistics: static terms at every
+        // frame, delta terms from the second frame on.
+        auto logNormal = [](double x, double m, double v) {
+            return -0.5 * (std::log(2 * M_PI * v) + (x - m) * (x - m) / v);
+        };
+        const LabelledSequence &s = data[0];
+        double expected = 0.0;
+        for (Eigen::Index t = 0; t < s.features.rows(); ++t)
+            for (int k = 0; k < 2; ++k) {
+                const int n = s.labels[size_t(t)];
+                expected += logNormal(s.features(t, k), model.staticMean(n, k), model.staticVariance(n, k));
+                if (t > 0)
+                    expected += logNormal(s.features(t, k) - s.features(t - 1, k), model.deltaMean(n, k),
+                                          model.deltaVariance(n, k));
+            }
+        QVERIFY(std::abs(model.logLikelihood(s.labels, s.features) - expected) < 1e-10 * std::abs(expected));
+    }
+
+    // The full-covariance fit (§2.1 variant) is the ML covariance of o_t = [y_t; Δy_t] over the
+    // transition frames T_n: on data whose dimensions are correlated it is not diagonal.
+    void fullCovarianceKeepsCorrelations()
+    {
+        std::mt19937 rng(21);
+        std::normal_distribution<double> normal;
+        std::vector<LabelledSequence> data = trainingData(21, 1);
+        for (LabelledSequence &s : data) { // y2 = 0.8 y1 + small noise
+            Eigen::MatrixXd Y(s.features.rows(), 2);
+            for (Eigen::Index t = 0; t < Y.rows(); ++t)
+                Y.row(t) << s.features(t, 0), 0.8 * s.features(t, 0) + 0.01 * normal(rng);
+            s.features = Y;
+        }
+        const BrandModel full = trained(data, true);
+        QCOMPARE(full.jointCovariance.size(), size_t(PhoneSet::kCount));
+        const int n = 6;
+        Eigen::Vector4d sum = Eigen::Vector4d::Zero();
+        Eigen::Matrix4d outer = Eigen::Matrix4d::Zero();
+        int count = 0;
+        for (const LabelledSequence &s : data)
+            for (Eigen::Index t = 1; t < s.features.rows(); ++t)
+                if (s.labels[size_t(t)] == n) {
+                    Eigen::Vector4d o;
+                    o << s.features.row(t).transpose(), (s.features.row(t) - s.features.row(t - 1)).transpose();
+                    sum += o;
+                    outer += o * o.transpose();
+                    ++count;
+                }
+        QVERIFY(count > 50);
+        const Eigen::Vector4d mean = sum / count;
+        const Eigen::Matrix4d C = outer / count - mean * mean.transpose();
+        QVERIFY(maxAbs(full.jointMean.row(n).transpose() - mean) < 1e-10);
+        QVERIFY2(maxAbs(full.jointCovariance[size_t(n)] - C) < 1e-9 * maxAbs(C),
+                 qPrintable(QString::number(maxAbs(full.jointCovariance[size_t(n)] - C))));
+        const Eigen::MatrixXd &F = full.jointCovariance[size_t(n)];
+        const Eigen::MatrixXd offDiagonal = F - Eigen::MatrixXd(F.diagonal().asDiagonal());
+        QVERIFY(maxAbs(offDiagonal) > 0.5 * F.diagonal().minCoeff());
+        QVERIFY(F(0, 1) / std::sqrt(F(0, 0) * F(1, 1)) > 0.95);  // y1, y2
+        QVERIFY(F(2, 3) / std::sqrt(F(2, 2) * F(3, 3)) > 0.95);  // delta y1, delta y2
+        QVERIFY(trained(data, false).jointCovariance.empty());
+    }
+
     void unseenPhonesAndOneFrame()
     {
         const auto data = trainingData(13, 2);
