@@ -116,11 +116,14 @@ int runCreate(const QStringList &args)
 
 void printTable(const StudyTally &tally, double alpha)
 {
-    std::printf("%-12s %8s %10s %8s  %-12s %12s\n", "A", "prefer A", "undecided", "prefer B", "B",
-                "p (sign)");
+    std::printf("%-12s %8s %10s %8s  %-12s %12s %12s\n", "A", "prefer A", "undecided", "prefer B", "B",
+                "p (sign)", "p (Holm)");
     for (const PairTally &p : tally.pairs)
-        std::printf("%-12s %8d %10d %8d  %-12s %12.3g\n", tally.methods[size_t(p.a)].c_str(),
-                    p.preferA, p.undecided, p.preferB, tally.methods[size_t(p.b)].c_str(), p.pValue);
+        std::printf("%-12s %8d %10d %8d  %-12s %12.3g %12.3g\n", tally.methods[size_t(p.a)].c_str(),
+                    p.preferA, p.undecided, p.preferB, tally.methods[size_t(p.b)].c_str(), p.pValue,
+                    p.holmPValue);
+    std::printf("(p (Holm): adjusted for the %zu pairs tested together; the summary uses it)\n",
+                tally.pairs.size());
     std::printf("\nBradley-Terry ranking:\n");
     for (size_t r = 0; r < tally.ranking.size(); ++r) {
         const MethodScore &s = tally.ranking[r];

@@ -1933,6 +1933,11 @@
         <translation>p (Vorzeichentest)</translation>
     </message>
     <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="47"/>
+        <source>p (Holm)</source>
+        <translation>p (Holm)</translation>
+    </message>
+    <message>
         <location filename="../studio/compare/StudyResultsView.cpp" line="50"/>
         <source>Method</source>
         <translation>Methode</translation>

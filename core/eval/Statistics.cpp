@@ -75,4 +75,21 @@ double signTestPValue(int k, int n)
     return std::min(1.0, 2.0 * boost::math::cdf(boost::math::binomial_distribution<double, Policy>(double(n), 0.5), double(tail)));
 }
 
+std::vector<double> holmAdjusted(const std::vector<double> &p)
+{
+    const size_t m = p.size();
+    std::vector<size_t> order;
+    for (size_t i = 0; i < m; ++i)
+        if (!std::isnan(p[i]))
+            order.push_back(i);
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return p[a] < p[b]; });
+    std::vector<double> adjusted(p);
+    double running = 0.0;
+    for (size_t rank = 0; rank < order.size(); ++rank) {
+        running = std::max(running, std::min(1.0, double(m - rank) * p[order[rank]]));
+        adjusted[order[rank]] = running;
+    }
+    return adjusted;
+}
+
 } // namespace lipsync::stats

@@ -32,4 +32,10 @@ TTest pairedTTest(const std::vector<double> &a, const std::vector<double> &b);
 // side; p = min(1, 2 P(X <= min(k, n - k))), X ~ Bin(n, 1/2). 1 when n = 0.
 double signTestPValue(int k, int n);
 
+// Holm's step-down adjustment (Holm 1979, Scand. J. Statist. 6:65) of m p-values for a family of
+// m tests (§6.4 "correct for 6 comparisons"): with p_(1) <= ... <= p_(m),
+// adjusted p_(i) = min(1, max_{j <= i} (m - j + 1) p_(j)), returned in the input order. Rejecting
+// where the adjusted p < alpha controls the family-wise error rate at alpha. NaN stays NaN.
+std::vector<double> holmAdjusted(const std::vector<double> &p);
+
 } // namespace lipsync::stats

@@ -145,6 +145,12 @@ void StudyTally::finalise()
         scores[size_t(p.a)].undecided += p.undecided;
         scores[size_t(p.b)].undecided += p.undecided;
     }
+    std::vector<double> raw;
+    for (const PairTally &p : pairs)
+        raw.push_back(p.pValue);
+    const std::vector<double> adjusted = stats::holmAdjusted(raw);
+    for (size_t i = 0; i < pairs.size(); ++i)
+        pairs[i].holmPValue = adjusted[i];
     const Eigen::VectorXd strength = bradleyTerry(wins);
     for (int i = 0; i < m; ++i)
         scores[size_t(i)].strength = strength(i);
@@ -170,7 +176,7 @@ std::string StudyTally::summary(double alpha) const
     for (size_t r = 0; r < ranking.size(); ++r) {
         if (r > 0) {
             const PairTally &p = pair(ranking[r - 1].method, ranking[r].method);
-            text += p.decided() > 0 && p.pValue < alpha ? " \u227b " : " \u2248 ";
+            text += p.decided() > 0 && p.holmPValue < alpha ? " \u227b " : " \u2248 ";
         }
         text += methods[size_t(ranking[r].method)];
     }
@@ -179,12 +185,12 @@ std::string StudyTally::summary(double alpha) const
 
 std::string StudyTally::pairsCsv() const
 {
-    std::string csv = "method_a,method_b,prefer_a,undecided,prefer_b,n_decided,p_value\n";
+    std::string csv = "method_a,method_b,prefer_a,undecided,prefer_b,n_decided,p_value,p_holm\n";
     for (const PairTally &p : pairs)
         csv += csvField(methods[size_t(p.a)]) + "," + csvField(methods[size_t(p.b)]) + ","
                + std::to_string(p.preferA) + "," + std::to_string(p.undecided) + ","
                + std::to_string(p.preferB) + "," + std::to_string(p.decided()) + ","
-               + number(p.pValue) + "\n";
+               + number(p.pValue) + "," + number(p.holmPValue) + "\n";
     return csv;
 }
 
@@ -213,7 +219,8 @@ QJsonObject StudyTally::toJson() const
                                      {"undecided", p.undecided},
                                      {"preferB", p.preferB},
                                      {"decided", p.decided()},
-                                     {"pValue", p.pValue}});
+                                     {"pValue", p.pValue},
+                                     {"pValueHolm", p.holmPValue}});
     QJsonArray rankingArray;
     for (size_t r = 0; r < ranking.size(); ++r) {
         const MethodScore &s = ranking[r];

@@ -5,12 +5,15 @@
 //  - a two-sided exact sign test per pair (H0: A and B are equally often judged real). The
 //    undecided answers are ties and are excluded, as is usual for the sign test: n = preferA +
 //    preferB, p = min(1, 2 P[X <= min(preferA, preferB)]) with X ~ Binomial(n, 1/2); n = 0 gives 1.
+//    Alongside, the p-value adjusted by Holm's step-down procedure over all pairs (models.md §6.4:
+//    the pairs are tested together, so the family-wise error is what alpha must bound).
 //  - a Bradley-Terry ranking (P[i judged real over j] = g_i / (g_i + g_j)), fitted by maximum
 //    likelihood with the MM algorithm of Hunter (2004, Ann. Statist. 32:384, eq. 3); undecided
 //    answers are again left out. Strengths are normalised to sum to 1. A method never judged real
 //    gets strength 0 (the maximum-likelihood limit).
 //  - the paper's one-line summary ("DPDS ≈ reality ≻ Brand ≻ SLDS"): methods by strength, "≻"
-//    between neighbours whose direct comparison is significant at alpha, else "≈".
+//    between neighbours whose direct comparison is significant at alpha after Holm's adjustment,
+//    else "≈".
 #include "project/ForcedChoiceStudy.h"
 
 #include <Eigen/Core>
@@ -34,6 +37,7 @@ struct PairTally
     int undecided = 0;
     int preferB = 0; // B judged real
     double pValue = 1.0;
+    double holmPValue = 1.0; // pValue adjusted over all pairs (Holm-Bonferroni)
 
     int decided() const { return preferA + preferB; }
     int total() const { return preferA + undecided + preferB; }
@@ -67,7 +71,7 @@ public:
 
     const PairTally &pair(int i, int j) const; // either order; a of the result is min(i, j)
     std::string summary(double alpha = 0.05) const;
-    // CSV, one row per pair: method_a,method_b,prefer_a,undecided,prefer_b,n_decided,p_value
+    // CSV, one row per pair: method_a,method_b,prefer_a,undecided,prefer_b,n_decided,p_value,p_holm
     std::string pairsCsv() const;
     // CSV, one row per method: rank,method,strength,judged_real,judged_not_real,undecided
     std::string rankingCsv() const;

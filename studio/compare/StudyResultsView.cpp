@@ -42,9 +42,10 @@ StudyResultsView::StudyResultsView(QWidget *parent)
     setObjectName(QStringLiteral("studyResults"));
     m_summary->setWordWrap(true);
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_pairs->setColumnCount(6);
+    m_pairs->setColumnCount(7);
     m_pairs->setHorizontalHeaderLabels({tr("Method A"), tr("A judged real"), tr("Can't decide"),
-                                        tr("B judged real"), tr("Method B"), tr("p (sign test)")});
+                                        tr("B judged real"), tr("Method B"), tr("p (sign test)"),
+                                        tr("p (Holm)")});
     m_ranking->setColumnCount(5);
     m_ranking->setHorizontalHeaderLabels(
         {tr("Method"), tr("Bradley–Terry strength"), tr("Judged real"), tr("Not judged real"), tr("Can't decide")});
@@ -86,6 +87,8 @@ void StudyResultsView::setStudy(const ForcedChoiceStudy *study)
         m_pairs->setItem(r, 3, cell(QString::number(p.preferB), true));
         m_pairs->setItem(r, 4, cell(name(p.b), false));
         m_pairs->setItem(r, 5, cell(p.decided() > 0 ? pValueText(p.pValue) : QStringLiteral("–"), true));
+        // Adjusted over all pairs (Holm-Bonferroni, models.md §6.4); the summary line uses it.
+        m_pairs->setItem(r, 6, cell(p.decided() > 0 ? pValueText(p.holmPValue) : QStringLiteral("–"), true));
     }
     m_ranking->setRowCount(int(tally.ranking.size()));
     for (int r = 0; r < int(tally.ranking.size()); ++r) {

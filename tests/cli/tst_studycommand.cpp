@@ -89,8 +89,10 @@ private slots:
         QFile table(csv);
         QVERIFY(table.open(QIODevice::ReadOnly));
         const QList<QByteArray> lines = table.readAll().split('\n');
-        QCOMPARE(lines[0], QByteArray("method_a,method_b,prefer_a,undecided,prefer_b,n_decided,p_value"));
-        QCOMPARE(lines[4], QByteArray("DPDS,reality,29,11,26,55,0.787706"));
+        QCOMPARE(lines[0], QByteArray("method_a,method_b,prefer_a,undecided,prefer_b,n_decided,p_value,p_holm"));
+        QCOMPARE(lines[4], QByteArray("DPDS,reality,29,11,26,55,0.787706,0.787706"));
+        QCOMPARE(lines[1], QByteArray("Brand,DPDS,5,7,54,59,1.90674e-11,5.72021e-11"));
+        QVERIFY(std::abs(first.value("pValueHolm").toDouble() / (3 * 1.9067358802971057e-11) - 1) < 1e-9);
         QFile ranking(rankingCsv);
         QVERIFY(ranking.open(QIODevice::ReadOnly));
         QVERIFY(ranking.readAll().split('\n')[4].startsWith("4,SLDS,"));

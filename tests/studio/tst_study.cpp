@@ -243,7 +243,7 @@ private slots:
         QFile file(csv);
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QList<QByteArray> lines = file.readAll().split('\n');
-        QCOMPARE(lines[0], QByteArray("method_a,method_b,prefer_a,undecided,prefer_b,n_decided,p_value"));
+        QCOMPARE(lines[0], QByteArray("method_a,method_b,prefer_a,undecided,prefer_b,n_decided,p_value,p_holm"));
         QVERIFY2(lines[1].startsWith(QStringLiteral("real,hmm,%1,1,%2,3,")
                                          .arg(tally.pairs[0].preferA)
                                          .arg(tally.pairs[0].preferB)

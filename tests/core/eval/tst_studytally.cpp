@@ -87,6 +87,47 @@ private slots:
         QCOMPARE(tally.answered, 6 * 66); // 33 volunteers x 2 presentations per pair
     }
 
+    // Holm's step-down adjustment by hand: sorted p_(i) times m - i + 1, made non-decreasing,
+    // capped at 1, in the input order.
+    void holmAdjustmentByHand()
+    {
+        const std::vector<double> adjusted = stats::holmAdjusted({0.01, 0.04, 0.03, 0.005});
+        const std::vector<double> expected{0.03, 0.06, 0.06, 0.02}; // 3 x .01, max(2 x .03, .04), 2 x .03, 4 x .005
+        for (size_t i = 0; i < expected.size(); ++i)
+            QVERIFY2(close(adjusted[i], expected[i], 1e-14), qPrintable(QString::number(adjusted[i], 'g', 17)));
+        QCOMPARE(stats::holmAdjusted({0.5, 0.6}), (std::vector<double>{1.0, 1.0}));
+        QCOMPARE(stats::holmAdjusted({0.2}), std::vector<double>{0.2});
+        QVERIFY(stats::holmAdjusted({}).empty());
+        // The paper's Table 1 (m = 6), ranks 4, 3, 5, 6, 1, 2 of the six p-values above.
+        const StudyTally tally = paperTable1();
+        const double expectedTable[6] = {3 * 1.9067358802971057e-11, 4 * 1.6979681549678105e-12,
+                                         2 * 6.5746632458285603e-05, 0.78770618967004347,
+                                         6 * 5.377642775528102e-17,  5 * 3.2857397358476703e-14};
+        for (int i = 0; i < 6; ++i)
+            QVERIFY2(close(tally.pairs[size_t(i)].holmPValue, expectedTable[i], 1e-9),
+                     qPrintable(QString::number(tally.pairs[size_t(i)].holmPValue, 'g', 17)));
+        QVERIFY(close(tally.toJson().value("pairs").toArray()[0].toObject().value("pValueHolm").toDouble(),
+                      expectedTable[0], 1e-9));
+    }
+
+    // The summary's "≻" needs the Holm-adjusted p below alpha: A beats B 14 to 4 (sign test
+    // p = 0.0309 alone), but with A-C (20 to 0) and B-C (5 to 5) tested too, Holm gives
+    // 2 x 0.0309 = 0.0618 for A-B.
+    void summaryUsesHolmAdjustedPValues()
+    {
+        std::vector<PairTally> counts(3);
+        counts[0] = PairTally{0, 1, 14, 0, 4};
+        counts[1] = PairTally{0, 2, 20, 0, 0};
+        counts[2] = PairTally{1, 2, 5, 0, 5};
+        const StudyTally tally = StudyTally::fromCounts({"A", "B", "C"}, counts);
+        QVERIFY(close(tally.pair(0, 1).pValue, 2 * 4048.0 / 262144.0, 1e-12));
+        QVERIFY(close(tally.pair(0, 1).holmPValue, 4 * 4048.0 / 262144.0, 1e-12));
+        QVERIFY(close(tally.pair(0, 2).holmPValue, 3 * 2 * std::pow(0.5, 20), 1e-12));
+        QCOMPARE(tally.pair(1, 2).holmPValue, 1.0);
+        QCOMPARE(QString::fromStdString(tally.summary(0.05)), QString("A ≈ B ≈ C"));
+        QCOMPARE(QString::fromStdString(tally.summary(0.07)), QString("A ≻ B ≈ C"));
+    }
+
     // The paper's conclusion line under Table 1.
     void paperTable1Ranking()
     {
@@ -101,8 +142,9 @@ private slots:
             sum += s.strength;
         QVERIFY(std::abs(sum - 1.0) < 1e-12);
         const QString csv = QString::fromStdString(tally.pairsCsv());
-        QVERIFY(csv.startsWith("method_a,method_b,prefer_a,undecided,prefer_b,n_decided,p_value\n"
-                               "Brand,DPDS,5,7,54,59,1.90674e-11\n"));
+        QVERIFY2(csv.startsWith("method_a,method_b,prefer_a,undecided,prefer_b,n_decided,p_value,p_holm\n"
+                                "Brand,DPDS,5,7,54,59,1.90674e-11,5.72021e-11\n"),
+                 qPrintable(csv));
         const QString ranking = QString::fromStdString(tally.rankingCsv());
         QVERIFY2(ranking.section('\n', 1, 1).startsWith("1,DPDS,"), qPrintable(ranking));
         QVERIFY2(ranking.section('\n', 4, 4).startsWith("4,SLDS,"), qPrintable(ranking));
