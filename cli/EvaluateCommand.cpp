@@ -21,7 +21,7 @@ namespace {
 
 const char *kEvaluateUsage =
     "usage: lipsync evaluate (--project DIR | --features DIR --labels DIR) [--folds 10] [--seed 2007]\n"
-    "                        [--kinds dpds,slds,brand,hmm] [--fps 25] [--csv FILE] [--json]\n"
+    "                        [--kinds dpds,slds,brand,hmm] [--fps RATE] [--csv FILE] [--json]\n"
     "  model options as for train (--full-covariance, --full-a, --optimizer, --paper-mode, ...)";
 
 int runEvaluate(const QStringList &argv)

@@ -61,7 +61,7 @@ int runGenerate(const QStringList &argv)
     } else {
         Y = model->generate(labels);
     }
-    writeFeatureCsv(out.toStdString(), Y);
+    writeFeatureCsv(out.toStdString(), Y, {}, fps);
     if (args.flag(QStringLiteral("json"))) {
         QJsonObject o;
         o[QStringLiteral("kind")] = QString::fromStdString(model->kind());

@@ -42,7 +42,7 @@ int runTrack(const QStringList &args)
     const VideoTrackingResult r = trackVideo(model, videoPath, detector, feedback);
     const int frames = int(r.features.rows());
     const std::string out = a.value("out").toStdString();
-    writeFeatureCsv(out, r.features);
+    writeFeatureCsv(out, r.features, {}, r.frameRate); // the rate labels in seconds need
     if (a.has("points")) {
         std::ostringstream points;
         points << "frame,error";

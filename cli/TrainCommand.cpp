@@ -18,7 +18,8 @@ namespace {
 
 const char *kTrainUsage =
     "usage: lipsync train --kind dpds|slds|brand|hmm (--project DIR | --features DIR --labels DIR)\n"
-    "                     --out MODEL [--fps 25] [--aam ID] [--json]\n"
+    "                     --out MODEL [--fps RATE] [--aam ID] [--json]\n"
+    "  --fps: the video frame rate of feature files that record none (\"# fps=RATE\")\n"
     "  --aam: the identifier of the AAM the features come from (default: the project's AAM)\n"
     "  options: --full-covariance (brand), --full-a (slds), --optimizer lm|gradient (dpds),\n"
     "           --paper-mode (dpds), --max-iterations N (dpds, slds), --threads N (dpds)";

@@ -5,6 +5,8 @@
 #include "project/Project.h"
 #include "util/Error.h"
 
+#include <cmath>
+
 namespace lipsync::cli {
 
 namespace {
@@ -50,10 +52,14 @@ QString loadTrainingData(const Arguments &args, std::vector<LabelledSequence> &s
     }
     if (!args.has(QStringLiteral("features")) || !args.has(QStringLiteral("labels")))
         return QStringLiteral("--features and --labels go together");
-    bool ok = false;
-    const double fps = args.value(QStringLiteral("fps"), QStringLiteral("25")).toDouble(&ok);
-    if (!ok || !(fps > 0))
-        return QStringLiteral("--fps must be a positive number");
+    // The frame rate the feature files record; --fps only for files that record none.
+    double fps = 0.0;
+    if (args.has(QStringLiteral("fps"))) {
+        bool ok = false;
+        fps = args.value(QStringLiteral("fps")).toDouble(&ok);
+        if (!ok || !(fps > 0) || !std::isfinite(fps))
+            return QStringLiteral("--fps must be a positive number");
+    }
     sequences = loadLabelledFolder(args.value(QStringLiteral("features")).toStdString(),
                                    args.value(QStringLiteral("labels")).toStdString(), fps);
     return {};

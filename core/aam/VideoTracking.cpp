@@ -36,6 +36,7 @@ VideoTrackingResult trackVideo(const AamModel &model, const std::string &videoPa
     if (n <= 0)
         throw Error("the video holds no frames", videoPath);
     VideoTrackingResult result;
+    result.frameRate = video.frameRate();
     result.features = Eigen::MatrixXd::Zero(n, model.combinedModes());
     result.shapes = Eigen::MatrixXd::Zero(n, 2 * model.pointCount());
     result.errors = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());

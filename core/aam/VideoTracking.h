@@ -26,6 +26,7 @@ struct VideoTrackingResult
     std::vector<int> framesWithoutFace; // filled from the nearest tracked frame
     int redetections = 0;
     double trackingSeconds = 0.0;       // time spent fitting (excludes decoding)
+    double frameRate = 0.0;             // the video's frames per second
 
     // Frame indices ordered by decreasing fit error: the worst fits, for correction first.
     std::vector<int> worstFrames(int count) const;

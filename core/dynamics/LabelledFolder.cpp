@@ -7,7 +7,18 @@
 #include <QDir>
 #include <QFileInfo>
 
+#include <cmath>
+
 namespace lipsync {
+
+namespace {
+
+std::string formatRate(double rate)
+{
+    return QString::number(rate, 'g', 10).toStdString();
+}
+
+} // namespace
 
 std::vector<LabelledSequence> loadLabelledFolder(const std::string &featuresDir,
                                                  const std::string &labelsDir, double fps)
@@ -35,13 +46,26 @@ std::vector<LabelledSequence> loadLabelledFolder(const std::string &featuresDir,
             throw Error("no " + name.toStdString() + ".TextGrid or " + name.toStdString()
                             + ".lab for the features of " + name.toStdString(),
                         labelsDir);
-        const FeatureTable table = readFeatureCsv(features.filePath(csv).toStdString());
+        const std::string csvPath = features.filePath(csv).toStdString();
+        const FeatureTable table = readFeatureCsv(csvPath);
         LabelledSequence s;
         s.name = name.toStdString();
         s.features = table.values;
         if (s.features.rows() == 0)
-            throw Error("no frames", features.filePath(csv).toStdString());
-        s.labels = frameLabelsFromTier(readPhoneTier(labelFile.toStdString()), fps,
+            throw Error("no frames", csvPath);
+        // Phone times are in seconds: a wrong rate labels every frame wrongly, so no default.
+        double rate = table.frameRate;
+        if (rate > 0 && fps > 0 && std::abs(rate - fps) > 1e-9 * rate)
+            throw Error("records " + formatRate(rate) + " fps, but " + formatRate(fps)
+                            + " fps was given (--fps)",
+                        csvPath);
+        if (rate <= 0)
+            rate = fps;
+        if (rate <= 0)
+            throw Error("records no frame rate (a \"# fps=RATE\" line): give the video's rate "
+                        "with --fps",
+                        csvPath);
+        s.labels = frameLabelsFromTier(readPhoneTier(labelFile.toStdString()), rate,
                                        int(s.features.rows()), labelFile.toStdString());
         out.push_back(std::move(s));
     }

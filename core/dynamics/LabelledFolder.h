@@ -2,7 +2,8 @@
 // Training data without a project (`lipsync train --features DIR --labels DIR`): every NAME.csv in
 // the features folder (core/io/FeatureCsv.h format) is paired with NAME.TextGrid (a "phones"
 // tier) or NAME.lab ("start end phone", seconds or HTK units) in the labels folder; frame labels
-// come from the phones by the voting rule of docs/models.md §0 at `fps`, one per feature row.
+// come from the phones by the voting rule of docs/models.md §0 at the features' frame rate, one
+// per feature row. The rate is the one the CSV records ("# fps=RATE"), else `fps`.
 #include "dynamics/LabelledSequence.h"
 
 #include <string>
@@ -10,9 +11,11 @@
 
 namespace lipsync {
 
-// Sequences sorted by name. Throws lipsync::Error naming the folder or file: no CSV files, a CSV
-// without labels, unreadable files, unknown phones.
+// Sequences sorted by name. `fps` is the rate of CSVs that record none (0: not known). Throws
+// lipsync::Error naming the folder or file: no CSV files, a CSV without labels, unreadable files,
+// unknown phones, a CSV that records no rate when `fps` is 0, a CSV whose recorded rate differs
+// from a given `fps`.
 std::vector<LabelledSequence> loadLabelledFolder(const std::string &featuresDir,
-                                                 const std::string &labelsDir, double fps);
+                                                 const std::string &labelsDir, double fps = 0.0);
 
 } // namespace lipsync

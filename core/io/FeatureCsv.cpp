@@ -40,6 +40,29 @@ bool parseDouble(std::string_view text, double &value)
     return ec == std::errc() && ptr == text.data() + text.size();
 }
 
+constexpr std::string_view kFpsKey = "# fps=";
+
+// The text of a '#' comment line after the '#': "fps=RATE" records the frame rate, anything else
+// is free text.
+void parseComment(std::string_view comment, double &frameRate, const std::string &path,
+                  const std::string &where)
+{
+    while (!comment.empty() && (comment.front() == ' ' || comment.front() == '\t'))
+        comment.remove_prefix(1);
+    while (!comment.empty() && (comment.back() == ' ' || comment.back() == '\t' || comment.back() == '\r'))
+        comment.remove_suffix(1);
+    const std::string_view key = kFpsKey.substr(2);
+    if (comment.substr(0, key.size()) != key)
+        return;
+    const std::string_view text = comment.substr(key.size());
+    double rate = 0;
+    if (!parseDouble(text, rate) || !(rate > 0 && std::isfinite(rate)))
+        throw Error("frame rate '" + std::string(text) + "' is not a positive number", path, where);
+    if (frameRate > 0)
+        throw Error("a second fps comment", path, where);
+    frameRate = rate;
+}
+
 } // namespace
 
 FeatureTable readFeatureCsv(const std::string &path)
@@ -53,6 +76,8 @@ FeatureTable parseFeatureCsv(const std::string &text, const std::string &path)
     std::vector<int> frames;
     size_t columns = 0;
     int lineNumber = 0;
+    bool headerAllowed = true; // the first line that is neither blank nor a comment may be a header
+    double frameRate = 0.0;
     size_t pos = 0;
     while (pos < text.size()) {
         size_t end = text.find('\n', pos);
@@ -61,14 +86,21 @@ FeatureTable parseFeatureCsv(const std::string &text, const std::string &path)
         const std::string_view line(text.data() + pos, end - pos);
         pos = end + 1;
         ++lineNumber;
-        if (line.find_first_not_of(" \t\r") == std::string_view::npos)
+        const size_t start = line.find_first_not_of(" \t\r");
+        if (start == std::string_view::npos)
             continue;
-        const auto fields = splitFields(line);
         const std::string where = "line " + std::to_string(lineNumber);
+        if (line[start] == '#') {
+            parseComment(line.substr(start + 1), frameRate, path, where);
+            continue;
+        }
+        const auto fields = splitFields(line);
         double first = 0;
+        const bool header = headerAllowed;
+        headerAllowed = false;
         if (!parseDouble(fields[0], first)) {
-            if (rows.empty() && frames.empty() && lineNumber == 1)
-                continue; // header
+            if (header)
+                continue;
             throw Error("frame index '" + std::string(fields[0]) + "' is not a number", path, where);
         }
         // A frame index is a whole number in int range: converting anything else to int is undefined
@@ -99,6 +131,7 @@ FeatureTable parseFeatureCsv(const std::string &text, const std::string &path)
         throw Error("no feature rows", path);
     FeatureTable table;
     table.frames = std::move(frames);
+    table.frameRate = frameRate;
     table.values.resize(Eigen::Index(rows.size()), Eigen::Index(columns - 1));
     for (size_t r = 0; r < rows.size(); ++r)
         for (size_t c = 0; c + 1 < columns; ++c)
@@ -107,11 +140,18 @@ FeatureTable parseFeatureCsv(const std::string &text, const std::string &path)
 }
 
 void writeFeatureCsv(const std::string &path, const Eigen::MatrixXd &values,
-                     const std::vector<int> &frames)
+                     const std::vector<int> &frames, double frameRate)
 {
     if (!frames.empty() && frames.size() != size_t(values.rows()))
         throw Error("frame list and feature rows differ in length", path);
+    if (frameRate != 0.0 && !(frameRate > 0.0 && std::isfinite(frameRate)))
+        throw Error("frame rate " + std::to_string(frameRate) + " is not a positive number", path);
     std::ostringstream out;
+    if (frameRate > 0.0) {
+        char rate[32];
+        const auto [end, ec] = std::to_chars(rate, rate + sizeof rate, frameRate);
+        out << kFpsKey << std::string_view(rate, size_t(end - rate)) << '\n';
+    }
     out.precision(17);
     out << "frame";
     for (Eigen::Index c = 0; c < values.cols(); ++c)

@@ -2,6 +2,9 @@
 // Per-frame feature files: one row per video frame, the frame index then the d parameters,
 // comma separated, with a header line "frame,p0,p1,...". This is what `lipsync track` writes
 // and what `lipsync train --features DIR` reads.
+// Lines starting with '#' are comments. A comment "# fps=RATE" (written first, before the
+// header) records the video frame rate the rows were sampled at, which phone labels in seconds
+// need; files without it (older ones) stay readable and report no rate.
 #include <Eigen/Core>
 
 #include <string>
@@ -13,15 +16,17 @@ struct FeatureTable
 {
     std::vector<int> frames;  // frame index of each row
     Eigen::MatrixXd values;   // rows x d
+    double frameRate = 0.0;   // frames per second from "# fps=RATE"; 0: the file records none
 };
 
-// Throws lipsync::Error naming the file and line for ragged rows, non-numbers, NaN/inf values.
+// Throws lipsync::Error naming the file and line for ragged rows, non-numbers, NaN/inf values,
+// an fps comment that is not a positive finite number or that repeats.
 FeatureTable readFeatureCsv(const std::string &path);
 // The same from the file's text; `pathForErrors` only names the source in errors.
 FeatureTable parseFeatureCsv(const std::string &text, const std::string &pathForErrors = {});
 // Atomic (written to a temporary file, then renamed). Rows are numbered 0..rows-1 unless
-// `frames` is given.
+// `frames` is given. A frameRate > 0 is recorded as "# fps=RATE" (shortest exact decimal).
 void writeFeatureCsv(const std::string &path, const Eigen::MatrixXd &values,
-                     const std::vector<int> &frames = {});
+                     const std::vector<int> &frames = {}, double frameRate = 0.0);
 
 } // namespace lipsync

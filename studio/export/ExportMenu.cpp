@@ -188,7 +188,7 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path)
         }
         title = tr("Export the features of %1").arg(id);
         work = [sequence, target](Feedback &) -> TaskRunner::Commit {
-            writeFeatureCsv(target, sequence.features);
+            writeFeatureCsv(target, sequence.features, {}, sequence.frameRate);
             return {};
         };
         break;

@@ -28,14 +28,15 @@ using namespace lipsync;
 
 namespace {
 
-// .lab from per-frame labels at 25 fps: one segment per run.
-void writeLab(const std::string &path, const std::vector<int> &labels)
+// .lab from per-frame labels at `fps`: one segment per run.
+void writeLab(const std::string &path, const std::vector<int> &labels, double fps = 25.0)
 {
     std::ofstream out(path);
+    out.precision(17);
     size_t start = 0;
     for (size_t t = 1; t <= labels.size(); ++t)
         if (t == labels.size() || labels[t] != labels[start]) {
-            out << start / 25.0 << " " << t / 25.0 << " " << PhoneSet::label(labels[start]) << "\n";
+            out << double(start) / fps << " " << double(t) / fps << " " << PhoneSet::label(labels[start]) << "\n";
             start = t;
         }
 }
@@ -63,7 +64,8 @@ private slots:
         for (int s = 0; s < 12; ++s) {
             const std::string name = "clip" + std::to_string(s);
             const auto seq = test::sampleDpds(rng, truth, test::randomLabels(rng, 75, states), name);
-            writeFeatureCsv((m_features + "/" + QString::fromStdString(name) + ".csv").toStdString(), seq.features);
+            writeFeatureCsv((m_features + "/" + QString::fromStdString(name) + ".csv").toStdString(), seq.features,
+                            {}, 25.0);
             writeLab((m_labels + "/" + QString::fromStdString(name) + ".lab").toStdString(), seq.labels);
         }
         // One real phone alignment (MFA, short TextGrid form) with synthetic features.
@@ -72,7 +74,7 @@ private slots:
         const std::vector<int> realLabels =
             frameLabelsFromTier(readPhoneTier((m_labels + "/real.TextGrid").toStdString()), 25.0, 668);
         writeFeatureCsv((m_features + "/real.csv").toStdString(),
-                        test::sampleDpds(rng, truth, realLabels, "real").features);
+                        test::sampleDpds(rng, truth, realLabels, "real").features, {}, 25.0);
     }
 
     void trainsEveryKind_data()
@@ -206,6 +208,58 @@ private slots:
                              "--labels", m_labels, "--out", a}).exitCode, 2);
     }
 
+    // Phone times are in seconds, so the frame labels depend on the video's rate: train takes it
+    // from the features file ("# fps=..."), refuses a file that records none unless --fps gives
+    // it, and refuses a --fps that contradicts the file.
+    void takesTheFrameRateFromTheFeatures()
+    {
+        QTemporaryDir dir;
+        const QString features = dir.filePath("f"), labels = dir.filePath("l");
+        QDir().mkpath(features);
+        QDir().mkpath(labels);
+        // Every phone has its own constant features, so the HMM-mean reproduces the features
+        // exactly from the right frame labels and not from labels voted at another rate.
+        const double ntsc = 30000.0 / 1001.0;
+        std::mt19937 rng(11);
+        const std::vector<int> states{PhoneSet::index("B"), PhoneSet::index("IH"), PhoneSet::index("N"),
+                                      PhoneSet::index("AA")};
+        const std::vector<int> frameLabels = test::randomLabels(rng, 300, states, 3);
+        Eigen::MatrixXd Y(Eigen::Index(frameLabels.size()), 1);
+        for (size_t t = 0; t < frameLabels.size(); ++t)
+            Y(Eigen::Index(t), 0) = frameLabels[t];
+        writeFeatureCsv((features + "/clip.csv").toStdString(), Y, {}, ntsc);
+        writeLab((labels + "/clip.lab").toStdString(), frameLabels, ntsc);
+        const QString model = dir.filePath("hmm.json");
+        Run r = runLipsync({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QString out = dir.filePath("gen.csv");
+        r = runLipsync({"generate", "--model", model, "--labels", labels + "/clip.lab", "--fps", "29.97002997002997",
+                        "--frames", QString::number(Y.rows()), "--out", out});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const FeatureTable generated = readFeatureCsv(out.toStdString());
+        QCOMPARE(generated.values, Y);
+        QCOMPARE(generated.frameRate, 29.97002997002997);
+        // A contradicting --fps is refused, naming the file and both rates.
+        r = runLipsync({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model,
+                        "--fps", "25"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("clip.csv") && r.err.contains("29.97002997") && r.err.contains("25 fps"),
+                 r.err.constData());
+        // A file that records no rate: refused without --fps, trained with it.
+        writeFeatureCsv((features + "/clip.csv").toStdString(), Y);
+        r = runLipsync({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("clip.csv") && r.err.contains("no frame rate") && r.err.contains("--fps"),
+                 r.err.constData());
+        QCOMPARE(r.err.count('\n'), 1);
+        r = runLipsync({"evaluate", "--features", features, "--labels", labels, "--folds", "2"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("no frame rate"), r.err.constData());
+        r = runLipsync({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model,
+                        "--fps", "29.97002997002997"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+    }
+
     void badInput()
     {
         const QString model = m_dir.filePath(QStringLiteral("bad.json"));
@@ -227,12 +281,12 @@ private slots:
         QVERIFY(r.err.contains("nan.csv") && r.err.count('\n') == 1);
         std::ofstream((features + "/nan.csv").toStdString()) << "frame,p0\n0,1.0\n1,2.0\n";
         std::ofstream((features + "/orphan.csv").toStdString()) << "frame,p0\n0,1.0\n";
-        r = runLipsync({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model});
+        r = runLipsync({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model, "--fps", "25"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains("orphan"));
         QFile::remove(features + "/orphan.csv");
         std::ofstream((labels + "/nan.lab").toStdString()) << "0 0.08 QQ\n";
-        r = runLipsync({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model});
+        r = runLipsync({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model, "--fps", "25"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains("QQ") && r.err.contains("nan.lab"));
         // Too few sequences for the folds; a model file that is not one.
