@@ -28,7 +28,7 @@ int runEvaluate(const QStringList &argv)
 {
     const Arguments args(argv);
     const QStringList unknown = args.unknown({"project", "features", "labels", "folds", "seed", "kinds", "fps",
-                                              "csv", "json", "full-covariance", "full-a", "optimizer",
+                                              "csv", "json", "full-covariance", "full-a", "bound-a", "optimizer",
                                               "paper-mode", "max-iterations", "threads"});
     if (!unknown.isEmpty() || !args.positional().isEmpty())
         return fail(QStringLiteral("unknown argument %1\n").arg((unknown + args.positional()).first())

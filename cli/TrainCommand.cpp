@@ -9,6 +9,7 @@
 #include <QJsonArray>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 using namespace lipsync;
@@ -22,13 +23,25 @@ const char *kTrainUsage =
     "  --fps: the video frame rate of feature files that record none (\"# fps=RATE\")\n"
     "  --aam: the identifier of the AAM the features come from (default: the project's AAM)\n"
     "  options: --full-covariance (brand), --full-a (slds), --optimizer lm|gradient (dpds),\n"
-    "           --paper-mode (dpds), --max-iterations N (dpds, slds), --threads N (dpds)";
+    "           --paper-mode (dpds), --max-iterations N (dpds, slds), --threads N (dpds),\n"
+    "           --bound-a [AMAX] (slds: keep |a|, or ||A||_2 with --full-a, <= AMAX, default 0.999,\n"
+    "           for generation that stays bounded; without it, the paper's plain maximum likelihood)";
 
 // Shared by train and evaluate: model options from the command line. Returns an error or "".
 QString modelOptionsFrom(const Arguments &args, ModelOptions &options)
 {
     options.brand.fullCovariance = args.flag(QStringLiteral("full-covariance"));
     options.slds.fullA = args.flag(QStringLiteral("full-a"));
+    if (args.has(QStringLiteral("bound-a"))) {
+        options.slds.boundA = true;
+        const QString value = args.value(QStringLiteral("bound-a"));
+        if (!value.isEmpty()) {
+            bool ok = false;
+            options.slds.aMax = value.toDouble(&ok);
+            if (!ok || !(options.slds.aMax > 0) || !std::isfinite(options.slds.aMax))
+                return QStringLiteral("--bound-a must be a positive number");
+        }
+    }
     options.dpds.paperMode = args.flag(QStringLiteral("paper-mode"));
     const QString optimizer = args.value(QStringLiteral("optimizer"), QStringLiteral("lm"));
     if (optimizer == QLatin1String("gradient"))
@@ -57,8 +70,8 @@ int runTrain(const QStringList &argv)
 {
     const Arguments args(argv);
     const QStringList unknown = args.unknown({"kind", "project", "features", "labels", "out", "fps", "aam",
-                                              "json", "full-covariance", "full-a", "optimizer", "paper-mode",
-                                              "max-iterations", "threads"});
+                                              "json", "full-covariance", "full-a", "bound-a", "optimizer",
+                                              "paper-mode", "max-iterations", "threads"});
     if (!unknown.isEmpty() || !args.positional().isEmpty())
         return fail(QStringLiteral("unknown argument %1\n").arg((unknown + args.positional()).first())
                         + QString::fromLatin1(kTrainUsage),

@@ -120,6 +120,35 @@ private slots:
         QVERIFY(g.err.contains("aam-test") && g.err.contains("other-aam"));
     }
 
+    // SLDS is plain maximum likelihood unless --bound-a asks for the stability bound on a.
+    void sldsBoundOnA()
+    {
+        auto largestA = [](const QString &path) {
+            QFile file(path);
+            file.open(QIODevice::ReadOnly);
+            double largest = 0.0;
+            const QJsonArray A = QJsonDocument::fromJson(file.readAll()).object().value("parameters").toObject().value("A").toArray();
+            for (const QJsonValue &matrix : A)
+                for (const QJsonValue &row : matrix.toArray())
+                    for (const QJsonValue &x : row.toArray())
+                        largest = std::max(largest, std::abs(x.toDouble()));
+            return largest;
+        };
+        const QString plain = m_dir.filePath("slds-plain.json"), bounded = m_dir.filePath("slds-bounded.json");
+        for (const QStringList &extra : {QStringList{}, QStringList{"--bound-a", "0.5"}}) {
+            const Run r = runLipsync(QStringList{"train", "--kind", "slds", "--features", m_features, "--labels", m_labels,
+                                                 "--out", extra.isEmpty() ? plain : bounded, "--max-iterations", "20"}
+                                     + extra);
+            QVERIFY2(r.exitCode == 0, r.err.constData());
+        }
+        QVERIFY(largestA(plain) > 0.5);
+        QVERIFY2(largestA(bounded) <= 0.5, qPrintable(QString::number(largestA(bounded))));
+        const Run bad = runLipsync({"train", "--kind", "slds", "--features", m_features, "--labels", m_labels,
+                                    "--out", bounded, "--bound-a", "-1"});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY(bad.err.contains("--bound-a"));
+    }
+
     void generatesFromFrameList()
     {
         const QString list = m_dir.filePath(QStringLiteral("frames.txt"));
