@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace lipsync {
 
@@ -163,8 +164,11 @@ void SldsModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &fe
     slds::Parameters p;
     p.mu = dpds.mu;
     p.nu = dpds.nu;
+    // With the bound, EM starts inside it (a shared DPDS may have been trained with a looser
+    // one): the constrained M-steps are monotone only from a feasible A.
+    const double aLimit = m_options.boundA ? m_options.aMax : std::numeric_limits<double>::infinity();
     for (int n = 0; n < P; ++n) {
-        p.A.push_back(dpds.a.row(n).transpose().asDiagonal());
+        p.A.push_back(dpds.a.row(n).transpose().cwiseMax(-aLimit).cwiseMin(aLimit).asDiagonal());
         p.Q.push_back((0.5 * dpds.r).asDiagonal());
         p.R.push_back((0.5 * dpds.r).asDiagonal());
         p.Sigma.push_back(st.variance.row(n).transpose().asDiagonal());

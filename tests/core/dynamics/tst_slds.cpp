@@ -345,6 +345,33 @@ private slots:
         QVERIFY(shared.parameters().nu == own.parameters().nu);
     }
 
+    // A shared DPDS initialisation trained with the default bound (0.999) starts a tighter-bounded
+    // SLDS inside its bound: every a stays within it and EM stays monotone.
+    void boundHoldsFromASharedInitialisation()
+    {
+        std::mt19937 rng(9);
+        const slds::Parameters truth = quietScalarTruth(rng);
+        const std::vector<LabelledSequence> data = scalarData(rng, truth, 6);
+        Feedback feedback;
+        auto dpds = std::make_shared<DpdsModel>();
+        dpds->train(data, feedback);
+        QVERIFY(dpds->a.cwiseAbs().maxCoeff() > 0.3);
+        for (bool fullA : {false, true}) {
+            SldsOptions options;
+            options.boundA = true;
+            options.aMax = 0.3;
+            options.fullA = fullA;
+            options.maxIterations = 15;
+            options.kappa = 0;
+            SldsModel model(options);
+            model.setInitialisation(dpds);
+            model.train(data, feedback);
+            for (const Eigen::MatrixXd &A : model.parameters().A)
+                QVERIFY(A.jacobiSvd().singularValues().maxCoeff() <= options.aMax + 1e-12);
+            QVERIFY(nonDecreasing(model.objectiveHistory()));
+        }
+    }
+
     void trainsOnOneFrameSequencesAndUnseenPhones()
     {
         std::mt19937 rng(6);
