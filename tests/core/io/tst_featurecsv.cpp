@@ -39,7 +39,7 @@ private slots:
 
     void readsFilesWithoutARateAndComments()
     {
-        // A file written before the rate was recorded.
+        // A file without the fps comment: no rate.
         FeatureTable old = parseFeatureCsv("frame,p0\n0,1\n1,2\n");
         QCOMPARE(old.frameRate, 0.0);
         QCOMPARE(old.values.rows(), Eigen::Index(2));
