@@ -30,7 +30,7 @@ const std::vector<std::string> &evaluationMetrics()
 const char *logLikelihoodNote()
 {
     return "loglik: log p(y | labels) per frame, a density over the face trajectory for every model; "
-           "Brand's is its trajectory-HMM density N(y; MLPG mean, H^-1) (models.md §2.2), not its "
+           "Brand's is its trajectory-HMM density N(y; MLPG mean, H^-1) (docs/models.md §2.2), not its "
            "training density over [y, delta y], which is not comparable with the others";
 }
 

@@ -5,8 +5,9 @@
 //  - a two-sided exact sign test per pair (H0: A and B are equally often judged real). The
 //    undecided answers are ties and are excluded, as is usual for the sign test: n = preferA +
 //    preferB, p = min(1, 2 P[X <= min(preferA, preferB)]) with X ~ Binomial(n, 1/2); n = 0 gives 1.
-//    Alongside, the p-value adjusted by Holm's step-down procedure over all pairs (models.md §6.4:
-//    the pairs are tested together, so the family-wise error is what alpha must bound).
+//    Alongside, the p-value adjusted by Holm's step-down procedure over all pairs
+//    (docs/models.md §6.4: the pairs are tested together, so the family-wise error is what alpha
+//    must bound).
 //  - a Bradley-Terry ranking (P[i judged real over j] = g_i / (g_i + g_j)), fitted by maximum
 //    likelihood with the MM algorithm of Hunter (2004, Ann. Statist. 32:384, eq. 3); undecided
 //    answers are again left out. Strengths are normalised to sum to 1. A method never judged real
