@@ -2,6 +2,8 @@
 
 #include <QCommandLineParser>
 
+#include <cstring>
+
 namespace lipsync::studio {
 
 CommandLine CommandLine::parse(const QCoreApplication &app)
@@ -30,6 +32,15 @@ CommandLine CommandLine::parse(const QCoreApplication &app)
     result.language = parser.value(langOption);
     result.screenshot = parser.value(screenshotOption);
     return result;
+}
+
+bool CommandLine::asksForInformation(int argc, char *argv[])
+{
+    for (int i = 1; i < argc; ++i)
+        for (const char *option : {"-h", "-?", "--help", "--help-all", "-v", "--version"})
+            if (std::strcmp(argv[i], option) == 0)
+                return true;
+    return false;
 }
 
 } // namespace lipsync::studio

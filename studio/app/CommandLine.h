@@ -17,6 +17,9 @@ public:
 
     // Parses the application's arguments; exits for --help, --version and errors.
     static CommandLine parse(const QCoreApplication &app);
+    // The arguments ask only for --help or --version: main answers them with a QCoreApplication,
+    // before any display is needed.
+    static bool asksForInformation(int argc, char *argv[]);
 };
 
 } // namespace lipsync::studio

@@ -15,13 +15,30 @@
 
 using namespace lipsync::studio;
 
+namespace {
+
+void nameApplication()
+{
+    QCoreApplication::setOrganizationName(QStringLiteral("lipsync"));
+    QCoreApplication::setApplicationName(QStringLiteral("LipSync Studio"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(LIPSYNC_VERSION));
+}
+
+} // namespace
+
 int main(int argc, char *argv[])
 {
+    if (CommandLine::asksForInformation(argc, argv)) {
+        // --help and --version need no display: answered (and exited) by the parser.
+        QCoreApplication core(argc, argv);
+        nameApplication();
+        Translations::install();
+        CommandLine::parse(core);
+        return 0;
+    }
     setDefaultSurfaceFormat(); // VTK needs it before QApplication exists
     QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("lipsync"));
-    QApplication::setApplicationName(QStringLiteral("LipSync Studio"));
-    QApplication::setApplicationVersion(QStringLiteral(LIPSYNC_VERSION));
+    nameApplication();
     QApplication::setStyle(QStyleFactory::create(QStringLiteral("Fusion")));
     QApplication::setWindowIcon(appIcon());
 
