@@ -96,6 +96,9 @@ MainWindow::MainWindow(QWidget *parent)
         if (m_media && m_playback->mediaPath() == m_media->mediaPath) // not the preview's new speech
             setCurrentFrame(frame);
     });
+    connect(m_playback, &PlaybackController::playingSilently, this, [this](const QString &why) {
+        statusBar()->showMessage(tr("Playing without sound: %1.").arg(why), 10000);
+    });
     connect(m_playback, &PlaybackController::playingChanged, this, [this](bool playing) {
         m_actions->playPause->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
     });

@@ -94,15 +94,23 @@ void PlaybackController::startRange(double from, double to, int fromFrame)
 void PlaybackController::startClock()
 {
     m_origin = m_from;
-    if (!(m_audioEnabled && startAudio()))
+    if (!m_audioEnabled) {
         m_wallClock.start();
+        return;
+    }
+    if (const QString why = startAudio(); !why.isEmpty()) {
+        m_wallClock.start();
+        emit playingSilently(why);
+    }
 }
 
-bool PlaybackController::startAudio()
+QString PlaybackController::startAudio()
 {
+    if (m_mediaPath.isEmpty())
+        return tr("no media");
     const QAudioDevice device = QMediaDevices::defaultAudioOutput();
-    if (device.isNull() || m_mediaPath.isEmpty())
-        return false;
+    if (device.isNull())
+        return tr("no audio output device was found");
     QAudioFormat format = device.preferredFormat();
     if (format.sampleRate() <= 0)
         format.setSampleRate(48000);
@@ -111,7 +119,7 @@ bool PlaybackController::startAudio()
     if (!device.isFormatSupported(format))
         format.setSampleFormat(QAudioFormat::Int16);
     if (!device.isFormatSupported(format))
-        return false;
+        return tr("the audio device %1 takes neither float nor 16-bit samples").arg(device.description());
     if (m_audioPath != m_mediaPath || (m_audio && m_audio->sampleRate != format.sampleRate())) {
         // A GRID clip decodes in milliseconds; a minute of new speech in about a tenth of a second.
         m_audioPath = m_mediaPath;
@@ -125,7 +133,7 @@ bool PlaybackController::startAudio()
         }
     }
     if (!m_audio || m_audioFailed || m_audio->samples.empty())
-        return false;
+        return tr("the clip's sound could not be decoded");
 
     // The stretch's samples, as the device wants them. Sample 0 sounds at AudioBuffer::startTime.
     const int rate = m_audio->sampleRate;
@@ -163,9 +171,9 @@ bool PlaybackController::startAudio()
     m_sink->start(m_pcm);
     if (m_sink->error() != QAudio::NoError) {
         stopAudio();
-        return false;
+        return tr("the audio device %1 could not be opened").arg(device.description());
     }
-    return true;
+    return {};
 }
 
 void PlaybackController::stopAudio()
@@ -198,6 +206,7 @@ void PlaybackController::tick()
         stopAudio();
         m_wallClock.start();
         m_origin = at;
+        emit playingSilently(tr("the audio device stopped"));
     }
     double t = clockPosition();
     // The device drains its buffer at the end: the sink goes idle with everything played.

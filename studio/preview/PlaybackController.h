@@ -67,12 +67,16 @@ signals:
     void frameReached(int frame);
     void positionChanged(double seconds);
     void playingChanged(bool playing);
+    // Playback with sound on goes on without it (on the wall clock), and why: no output device,
+    // a format it refuses, a clip without decodable sound, a device that stopped.
+    void playingSilently(const QString &why);
 
 private:
     void startRange(double from, double to, int fromFrame);
     void tick();
     void startClock();
-    bool startAudio();
+    // Starts the sound of the range on the default output; empty, or why it cannot.
+    QString startAudio();
     void stopAudio();
     double clockPosition() const;
     int frameAt(double seconds) const;

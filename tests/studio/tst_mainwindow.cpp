@@ -22,10 +22,13 @@
 #include <QFile>
 #include <QDir>
 #include <QFileInfo>
+#include <QAudioDevice>
+#include <QMediaDevices>
 #include <QSet>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
@@ -175,6 +178,26 @@ private slots:
         const int stopped = m_window->currentFrame();
         QTest::qWait(200);
         QCOMPARE(m_window->currentFrame(), stopped);
+    }
+
+    // Sound on and no audio device (Xvfb here): playback goes on and the status bar says why.
+    void playbackWithoutADeviceSaysSo()
+    {
+        if (!QMediaDevices::defaultAudioOutput().isNull())
+            QSKIP("this machine has an audio output device");
+        PlaybackController *playback = m_window->playback();
+        playback->setAudioEnabled(true);
+        QSignalSpy silent(playback, &PlaybackController::playingSilently);
+        m_window->setCurrentFrame(0);
+        m_window->actions().playPause->trigger();
+        QVERIFY(playback->isPlaying());
+        QCOMPARE(silent.count(), 1);
+        QVERIFY(silent.first().first().toString().contains(QStringLiteral("no audio output device")));
+        const QString shown = m_window->statusBar()->currentMessage();
+        QVERIFY2(shown.startsWith(QStringLiteral("Playing without sound")), qPrintable(shown));
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->currentFrame() >= 3, 5000); // the picture still moves
+        m_window->actions().playPause->trigger();
+        playback->setAudioEnabled(false);
     }
 
     void savedCopyOfTheDemoOpens()
