@@ -46,6 +46,12 @@ void FrameView::setLandmarks(const std::optional<LandmarkSet> &landmarks)
     update();
 }
 
+void FrameView::setPointColour(const std::optional<QColor> &colour)
+{
+    m_pointColour = colour;
+    update();
+}
+
 void FrameView::setOnionSkin(const std::optional<LandmarkSet> &landmarks)
 {
     m_onion = landmarks;
@@ -238,7 +244,7 @@ void FrameView::drawShape(QPainter &p, const LandmarkSet &set, bool onion) const
             continue;
         }
         p.setPen(QPen(Qt::black, 1.0));
-        p.setBrush(stateColor(pt.state));
+        p.setBrush(m_pointColour.value_or(stateColor(pt.state)));
         p.drawEllipse(w, r, r);
         if (i == m_selected) {
             p.setPen(QPen(Qt::white, 1.5));
@@ -268,7 +274,7 @@ void FrameView::paintEvent(QPaintEvent *)
     if (m_landmarks)
         drawShape(p, *m_landmarks, false);
 
-    if (m_landmarks && m_landmarks->definedCount() > 0) {
+    if (m_landmarks && m_landmarks->definedCount() > 0 && !m_pointColour) {
         // Legend of the point states, bottom left.
         const QFontMetrics fm = p.fontMetrics();
         const std::pair<PointState, QString> states[] = {{PointState::Automatic, tr("automatic")},

@@ -27,6 +27,10 @@ public:
     void setLandmarks(const std::optional<LandmarkSet> &landmarks);
     const std::optional<LandmarkSet> &landmarks() const { return m_landmarks; }
     // The previous frame's points, drawn faintly when the onion skin is on.
+    // Draws every point in `colour` instead of its state's colour, without the state legend
+    // (the preview's panes: tracked or generated, named by the pane's title); nullopt: by state.
+    void setPointColour(const std::optional<QColor> &colour);
+    std::optional<QColor> pointColour() const { return m_pointColour; }
     void setOnionSkin(const std::optional<LandmarkSet> &landmarks);
     void setOnionSkinVisible(bool visible);
     bool isOnionSkinVisible() const { return m_onionVisible; }
@@ -87,6 +91,7 @@ private:
     std::optional<LandmarkSet> m_landmarks;
     std::optional<LandmarkSet> m_onion;
     bool m_onionVisible = false;
+    std::optional<QColor> m_pointColour;
     QString m_placeholder;
     QString m_info;
     bool m_editable = false;

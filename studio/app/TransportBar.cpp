@@ -37,7 +37,9 @@ TransportBar::TransportBar(const StudioActions &actions, QWidget *parent)
     layout->addWidget(m_time);
 
     connect(m_slider, &QSlider::valueChanged, this, &TransportBar::frameRequested);
-    connect(m_spin, &QSpinBox::valueChanged, this, &TransportBar::frameRequested);
+    // Frames are numbered from 1 wherever the studio shows them (the annotator's and the
+    // preview's captions too); the slider and the signals use indices from 0.
+    connect(m_spin, &QSpinBox::valueChanged, this, [this](int shown) { emit frameRequested(shown - 1); });
     setFrameCount(0, 25.0);
 }
 
@@ -48,7 +50,7 @@ void TransportBar::setFrameCount(int count, double frameRate)
     m_count = count;
     m_frameRate = frameRate > 0 ? frameRate : 25.0;
     m_slider->setRange(0, std::max(0, count - 1));
-    m_spin->setRange(0, std::max(0, count - 1));
+    m_spin->setRange(1, std::max(1, count));
     m_slider->setPageStep(std::max(1, int(m_frameRate)));
     setEnabled(count > 0);
     updateTime();
@@ -59,13 +61,13 @@ void TransportBar::setFrame(int frame)
     const QSignalBlocker b1(m_slider);
     const QSignalBlocker b2(m_spin);
     m_slider->setValue(frame);
-    m_spin->setValue(frame);
+    m_spin->setValue(frame + 1);
     updateTime();
 }
 
 int TransportBar::frame() const
 {
-    return m_spin->value();
+    return m_spin->value() - 1;
 }
 
 void TransportBar::updateTime()

@@ -190,9 +190,15 @@ QString PreviewPanel::panelTitle(int index) const
     return index >= 0 && index < int(m_panels.size()) ? m_panels[std::size_t(index)].title->text() : QString();
 }
 
+QString PreviewPanel::caption() const
+{
+    return m_caption->text();
+}
+
 void PreviewPanel::setFrame(const QImage &image, const QString &caption)
 {
     *m_recorded = image;
+    m_sequenceCaption = caption; // shown again by Back to Sequence
     if (m_showingSpeech)
         return;
     m_caption->setText(caption);
@@ -319,7 +325,7 @@ void PreviewPanel::layoutPanels()
     QList<QColor> colours;
     const GeneratedFaces *shown = faces();
     if (!m_showingSpeech) {
-        titles << tr("Recorded video");
+        titles << tr("Recorded video (landmarks: tracked)");
         colours << palette().color(QPalette::WindowText);
     }
     if (shown && !shown->tracks().empty()) {
@@ -368,6 +374,9 @@ void PreviewPanel::layoutPanels()
         QPalette pal = title->palette();
         pal.setColor(QPalette::WindowText, colours[i]);
         title->setPalette(pal);
+        // Each pane's landmarks in its title's colour: tracked and each model's generated points
+        // are told apart by colour, and the pane titles are their legend.
+        m_panels[std::size_t(i)].view->setPointColour(colours[i]);
     }
     // What the generated panel says while there is nothing to draw.
     if (!shown || shown->tracks().empty()) {
@@ -629,6 +638,7 @@ void PreviewPanel::showSequence()
     if (m_window)
         m_window->playback()->pause();
     m_showingSpeech = false;
+    m_caption->setText(m_sequenceCaption);
     layoutPanels();
     updateControls();
     showCurrent();

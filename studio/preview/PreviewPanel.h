@@ -71,6 +71,7 @@ public:
     QCheckBox *landmarksCheck() const { return m_landmarks; }
     QPushButton *speechButton() const { return m_speechButton; }
     QPushButton *backButton() const { return m_back; }
+    QString caption() const;
 
     // The generated faces shown (null until prepared), and the task preparing them.
     const GeneratedFaces *faces() const { return m_showingSpeech ? m_speech.get() : m_faces.get(); }
@@ -118,6 +119,7 @@ private:
 
     MainWindow *m_window = nullptr;
     QLabel *m_caption;
+    QString m_sequenceCaption; // the recorded sequence's caption, from setFrame
     QToolButton *m_play;
     QToolButton *m_stepBack;
     QToolButton *m_stepForward;

@@ -12,6 +12,7 @@
 #include "app/SequenceListModel.h"
 #include "app/SequenceMedia.h"
 #include "app/StudioActions.h"
+#include "app/TransportBar.h"
 #include "app/SurfaceFormat.h"
 #include "preview/PlaybackController.h"
 #include "tasks/Task.h"
@@ -25,6 +26,7 @@
 #include <QAudioDevice>
 #include <QMediaDevices>
 #include <QSet>
+#include <QSpinBox>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -94,6 +96,14 @@ private slots:
         QCOMPARE(m_window->currentFrame(), 1);
         a.lastFrame->trigger();
         QCOMPARE(m_window->currentFrame(), 74);
+        // The transport counts frames from 1, as every caption does; typing a frame goes there.
+        auto *spin = m_window->findChild<TransportBar *>()->findChild<QSpinBox *>();
+        QVERIFY(spin);
+        QCOMPARE(spin->value(), 75);
+        QCOMPARE(spin->maximum(), 75);
+        spin->setValue(10);
+        QCOMPARE(m_window->currentFrame(), 9);
+        a.lastFrame->trigger();
         a.nextFrame->trigger();
         QCOMPARE(m_window->currentFrame(), 74); // clamped
         a.firstFrame->trigger();

@@ -160,7 +160,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(m_preview->faces() && m_preview->faces()->tracks().size() == 2, 120000);
         QVERIFY(ready.count() >= 1);
         QCOMPARE(m_preview->panelCount(), 3);
-        QCOMPARE(m_preview->panelTitle(0), QStringLiteral("Recorded video"));
+        QVERIFY(m_preview->panelTitle(0).startsWith(QStringLiteral("Recorded video")));
         QVERIFY(m_preview->panelTitle(1).contains(QStringLiteral("DPDS")));
         QVERIFY(m_preview->panelTitle(2).contains(QStringLiteral("HMM")));
         // The three panels share one row.
@@ -298,6 +298,9 @@ private slots:
         const auto tracked = m_preview->panel(0)->landmarks();
         const auto generated = m_preview->panel(1)->landmarks();
         QVERIFY(tracked && generated);
+        // Tracked and generated points in their panes' title colours, told apart.
+        QVERIFY(m_preview->panel(0)->pointColour() && m_preview->panel(1)->pointColour());
+        QVERIFY(*m_preview->panel(0)->pointColour() != *m_preview->panel(1)->pointColour());
         if (const QString dir = qEnvironmentVariable("LIPSYNC_PREVIEW_SHOT"); !dir.isEmpty())
             m_preview->grab().save(dir + QStringLiteral("/landmarks.png"));
         QVERIFY(tracked->isComplete() && generated->isComplete());
@@ -366,9 +369,15 @@ private slots:
         QVERIFY(m_preview->panel(0)->image() != first); // the mouth moved
 
         // Back to the sequence; its own play button plays the sequence again.
+        const QString speechCaption = m_preview->caption();
         QTest::mouseClick(m_preview->backButton(), Qt::LeftButton);
         QVERIFY(!m_preview->isShowingSpeech());
         QCOMPARE(m_preview->panelCount(), 3);
+        // The caption is the sequence's again (frames counted from 1, as the transport does).
+        QVERIFY2(m_preview->caption() != speechCaption
+                     && m_preview->caption().startsWith(m_window->media()->sequenceId)
+                     && m_preview->caption().contains(QStringLiteral("frame %1 of").arg(m_window->currentFrame() + 1)),
+                 qPrintable(m_preview->caption()));
         m_window->setCurrentFrame(0);
         QTest::mouseClick(m_preview->playButton(), Qt::LeftButton);
         QCOMPARE(m_player->mediaPath(), m_window->media()->mediaPath);
