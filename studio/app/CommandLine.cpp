@@ -2,6 +2,8 @@
 
 #include <QCommandLineParser>
 
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 namespace lipsync::studio {
@@ -20,7 +22,9 @@ CommandLine CommandLine::parse(const QCoreApplication &app)
     const QCommandLineOption screenshotOption(
         QStringLiteral("screenshot"), tr("Render the main window into FILE (PNG) once the project has loaded, then exit."),
         QStringLiteral("FILE"));
-    parser.addOptions({projectOption, langOption, screenshotOption});
+    const QCommandLineOption sizeOption(QStringLiteral("size"), tr("Window size, e.g. 1920x1080."),
+                                        QStringLiteral("WxH"));
+    parser.addOptions({projectOption, langOption, screenshotOption, sizeOption});
     parser.addPositionalArgument(QStringLiteral("project"), tr("Project folder (or its project.json)."),
                                  QStringLiteral("[PROJECT]"));
     parser.process(app);
@@ -31,6 +35,15 @@ CommandLine CommandLine::parse(const QCoreApplication &app)
         result.project = parser.positionalArguments().constFirst();
     result.language = parser.value(langOption);
     result.screenshot = parser.value(screenshotOption);
+    if (parser.isSet(sizeOption)) {
+        const QStringList wh = parser.value(sizeOption).split(QLatin1Char('x'));
+        const int w = wh.value(0).toInt(), h = wh.size() == 2 ? wh.value(1).toInt() : 0;
+        if (w < 320 || h < 240) {
+            std::fprintf(stderr, "%s\n", qPrintable(tr("--size takes WIDTHxHEIGHT, at least 320x240, e.g. 1920x1080")));
+            std::exit(2);
+        }
+        result.windowSize = QSize(w, h);
+    }
     return result;
 }
 

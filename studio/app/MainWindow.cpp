@@ -37,6 +37,8 @@
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTabWidget>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QTableView>
 #include <QToolBar>
 #include <QUndoStack>
@@ -131,7 +133,11 @@ void MainWindow::createDocks()
         auto *dock = new QDockWidget(title, this);
         dock->setObjectName(name);
         dock->setWidget(content);
+        // Movable between the window's edges and closable, but never floating: a drag meant to
+        // resize near a dock's title must not tear it off the window.
+        dock->setFeatures(QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetMovable);
         addDockWidget(area, dock);
+        m_defaultDockAreas.emplace_back(dock, area);
         return dock;
     };
 
@@ -174,12 +180,47 @@ void MainWindow::createDocks()
 
     m_models = new ModelsPanel(this);
     m_models->attach(this, plotTabs);
-    QDockWidget *models = makeDock(tr("Models"), QStringLiteral("modelsDock"), m_models, Qt::RightDockWidgetArea);
+    // Scrolled rather than squeezed: the panel's controls must not set the right column's (and
+    // with it the timeline's) least height.
+    auto *modelsScroll = new QScrollArea(this);
+    modelsScroll->setWidget(m_models);
+    modelsScroll->setWidgetResizable(true);
+    modelsScroll->setFrameShape(QFrame::NoFrame);
+    modelsScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    modelsScroll->setMinimumWidth(m_models->minimumSizeHint().width()
+                                  + modelsScroll->verticalScrollBar()->sizeHint().width());
+    QDockWidget *models = makeDock(tr("Models"), QStringLiteral("modelsDock"), modelsScroll, Qt::RightDockWidgetArea);
     splitDockWidget(plots, models, Qt::Vertical);
+    applyDefaultDockSizes();
 
-    resizeDocks({sequences, plots}, {385, 310}, Qt::Horizontal);
-    resizeDocks({timeline}, {230}, Qt::Vertical);
-    resizeDocks({plots, models}, {330, 170}, Qt::Vertical);
+    // The spectrogram needs a taller timeline: ask for it (the view's least height insists).
+    connect(m_timeline->spectrogramAction(), &QAction::toggled, this, [this, timeline](bool on) {
+        if (on && timeline->height() < kSpectrogramTimelineHeight)
+            resizeDocks({timeline}, {kSpectrogramTimelineHeight}, Qt::Vertical);
+    });
+}
+
+void MainWindow::applyDefaultDockSizes()
+{
+    auto dock = [this](const char *name) { return findChild<QDockWidget *>(QLatin1String(name)); };
+    resizeDocks({dock("sequencesDock"), dock("plotsDock")}, {385, 310}, Qt::Horizontal);
+    resizeDocks({dock("timelineDock")},
+                {m_timeline->spectrogramAction()->isChecked() ? kSpectrogramTimelineHeight : 230}, Qt::Vertical);
+    // The models panel at its full height where the screen allows (its buttons in view), the
+    // plots taking the rest.
+    resizeDocks({dock("plotsDock"), dock("modelsDock")}, {330, m_models->sizeHint().height() + 24}, Qt::Vertical);
+}
+
+void MainWindow::resetLayout()
+{
+    for (const auto &[dock, area] : m_defaultDockAreas) {
+        dock->setFloating(false);
+        addDockWidget(area, dock);
+        dock->show();
+    }
+    splitDockWidget(findChild<QDockWidget *>(QStringLiteral("plotsDock")),
+                    findChild<QDockWidget *>(QStringLiteral("modelsDock")), Qt::Vertical);
+    applyDefaultDockSizes();
 }
 
 void MainWindow::createMenus()
@@ -219,6 +260,8 @@ void MainWindow::createMenus()
     QMenu *panels = view->addMenu(tr("&Panels"));
     for (QDockWidget *dock : findChildren<QDockWidget *>())
         panels->addAction(dock->toggleViewAction());
+    panels->addSeparator();
+    panels->addAction(tr("&Reset Layout"), this, &MainWindow::resetLayout);
 
     menuBar()->addMenu((new StudyController(this))->menu());
 

@@ -8,7 +8,10 @@
 #include <QPointer>
 
 #include <memory>
+#include <utility>
+#include <vector>
 
+class QDockWidget;
 class QTableView;
 class QTabWidget;
 class QUndoStack;
@@ -71,6 +74,9 @@ public slots:
     void togglePlayback();
     void showAbout();
 
+    // View > Panels > Reset Layout: every dock shown, docked where it starts, at its default size.
+    void resetLayout();
+
 signals:
     // The media of a sequence reached the views (sequenceId), or its loading ended without
     // doing so (canceled or failed).
@@ -83,7 +89,9 @@ protected:
     void closeEvent(QCloseEvent *event) override;
 
 private:
+    static constexpr int kSpectrogramTimelineHeight = 360;
     void createDocks();
+    void applyDefaultDockSizes();
     void createMenus();
     void onDocumentReset();
     void onSelectionChanged();
@@ -102,6 +110,7 @@ private:
     QTableView *m_sequenceView = nullptr;
     SequenceDetailsView *m_details = nullptr;
     QTabWidget *m_tabs = nullptr;
+    std::vector<std::pair<QDockWidget *, Qt::DockWidgetArea>> m_defaultDockAreas; // Reset Layout
     FrameView *m_frameView = nullptr;
     PreviewPanel *m_preview = nullptr;
     TransportBar *m_transport = nullptr;

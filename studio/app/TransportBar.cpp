@@ -73,7 +73,7 @@ int TransportBar::frame() const
 void TransportBar::updateTime()
 {
     m_time->setText(tr("%1 s / %2 s")
-                        .arg(QLocale().toString(m_spin->value() / m_frameRate, 'f', 2),
+                        .arg(QLocale().toString(frame() / m_frameRate, 'f', 2),
                              QLocale().toString(m_count / m_frameRate, 'f', 2)));
 }
 

@@ -51,7 +51,9 @@ int main(int argc, char *argv[])
     const bool batch = !options.screenshot.isEmpty();
     ErrorReporter::setBatchMode(batch);
     MainWindow window;
-    if (batch)
+    if (options.windowSize.isValid())
+        window.resize(options.windowSize);
+    else if (batch)
         window.resize(1280, 800); // independent of the saved geometry
     window.show();
 

@@ -72,9 +72,23 @@ QRgb spectrogramColor(float v)
 }
 } // namespace
 
+namespace {
+
+// The audio lanes' least height: the waveform alone, or the waveform and the spectrogram, each
+// tall enough to read.
+constexpr int kLegibleAudioLane = 64;
+
+int minimumViewHeight(bool spectrogram)
+{
+    return kRulerHeight + kThumbHeight / 2 + kWordsHeight + kPhonesHeight + kFrameLabelsHeight
+           + (spectrogram ? 2 * kLegibleAudioLane : 40);
+}
+
+} // namespace
+
 WaveformView::WaveformView(QWidget *parent) : QWidget(parent)
 {
-    setMinimumHeight(kRulerHeight + kThumbHeight / 2 + kWordsHeight + kPhonesHeight + kFrameLabelsHeight + 40);
+    setMinimumHeight(minimumViewHeight(false));
     setAttribute(Qt::WA_OpaquePaintEvent);
     setFocusPolicy(Qt::ClickFocus);
     setMouseTracking(true);
@@ -118,6 +132,8 @@ void WaveformView::setSpectrogram(std::shared_ptr<const Spectrogram> spectrogram
 void WaveformView::setSpectrogramVisible(bool visible)
 {
     m_showSpectrogram = visible;
+    // The timeline dock grows to keep both lanes legible (thumbnails give way first).
+    setMinimumHeight(minimumViewHeight(visible));
     update();
 }
 
@@ -296,8 +312,9 @@ QRect WaveformView::laneRect(Lane lane) const
     const int frames = height() - kFrameLabelsHeight;
     const int phones = frames - kPhonesHeight;
     const int words = phones - kWordsHeight;
-    // Thumbnails give way first when the dock is low.
-    const int thumbs = std::clamp((words - kRulerHeight) / 4, 0, kThumbHeight);
+    // Thumbnails give way first when the dock is low, more so with the spectrogram.
+    const int thumbs = std::clamp((words - kRulerHeight - (m_showSpectrogram ? 2 * kLegibleAudioLane : 0)) / 4, 0,
+                                  kThumbHeight);
     const int audio = std::max(0, words - kRulerHeight - thumbs);
     // The spectrogram, when shown, takes the lower half of the audio lanes.
     const int spectrogram = m_showSpectrogram ? audio / 2 : 0;

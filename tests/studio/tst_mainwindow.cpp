@@ -17,9 +17,11 @@
 #include "preview/PlaybackController.h"
 #include "tasks/Task.h"
 #include "tasks/TaskRunner.h"
+#include "timeline/TimelinePanel.h"
 #include "timeline/WaveformView.h"
 
 #include <QAction>
+#include <QDockWidget>
 #include <QFile>
 #include <QDir>
 #include <QFileInfo>
@@ -188,6 +190,41 @@ private slots:
         const int stopped = m_window->currentFrame();
         QTest::qWait(200);
         QCOMPARE(m_window->currentFrame(), stopped);
+    }
+
+    // At 1280 x 800 the timeline can be made tall enough for the spectrogram and the waveform
+    // to be read; docks do not float off when dragged; View > Panels > Reset Layout brings the
+    // default layout back.
+    void layoutAt1280x800()
+    {
+        QCOMPARE(m_window->size(), QSize(1280, 800));
+        auto *timeline = m_window->findChild<QDockWidget *>(QStringLiteral("timelineDock"));
+        QVERIFY(timeline);
+        for (QDockWidget *dock : m_window->findChildren<QDockWidget *>())
+            QVERIFY2(!(dock->features() & QDockWidget::DockWidgetFloatable), qPrintable(dock->objectName()));
+        m_window->resizeDocks({timeline}, {420}, Qt::Vertical);
+        QCoreApplication::processEvents();
+        qInfo("timeline dock: %d px tall when asked for 420", timeline->height());
+        QVERIFY2(timeline->height() >= 380, qPrintable(QString::number(timeline->height())));
+
+        // Showing the spectrogram at the default height leaves each lane legible.
+        m_window->resetLayout();
+        QCoreApplication::processEvents();
+        QAction *spectrogram = m_window->findChild<TimelinePanel *>()->spectrogramAction();
+        spectrogram->setChecked(true);
+        QCoreApplication::processEvents();
+        WaveformView *view = m_window->waveformView();
+        const int waveform = view->laneRect(WaveformView::Lane::Waveform).height();
+        const int spectrum = view->laneRect(WaveformView::Lane::Spectrogram).height();
+        qInfo("with the spectrogram: waveform %d px, spectrogram %d px", waveform, spectrum);
+        QVERIFY2(waveform >= 60 && spectrum >= 60, qPrintable(QStringLiteral("%1 %2").arg(waveform).arg(spectrum)));
+        spectrogram->setChecked(false);
+
+        // Reset Layout: every panel back, docked where it starts.
+        timeline->hide();
+        m_window->resetLayout();
+        QVERIFY(timeline->isVisible());
+        QCOMPARE(m_window->dockWidgetArea(timeline), Qt::BottomDockWidgetArea);
     }
 
     // Sound on and no audio device (Xvfb here): playback goes on and the status bar says why.
