@@ -24,6 +24,8 @@
 #include "timeline/TimelinePanel.h"
 #include "timeline/WaveformView.h"
 
+#include <algorithm>
+
 #include <QAction>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -41,6 +43,7 @@
 #include <QScrollBar>
 #include <QTableView>
 #include <QToolBar>
+#include <QToolButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
@@ -206,9 +209,10 @@ void MainWindow::applyDefaultDockSizes()
     resizeDocks({dock("sequencesDock"), dock("plotsDock")}, {385, 310}, Qt::Horizontal);
     resizeDocks({dock("timelineDock")},
                 {m_timeline->spectrogramAction()->isChecked() ? kSpectrogramTimelineHeight : 230}, Qt::Vertical);
-    // The models panel at its full height where the screen allows (its buttons in view), the
-    // plots taking the rest.
-    resizeDocks({dock("plotsDock"), dock("modelsDock")}, {330, m_models->sizeHint().height() + 24}, Qt::Vertical);
+    // The plots first (a trajectory needs height to be read), the models panel at up to its full
+    // height (its buttons in view where the screen allows; it scrolls otherwise).
+    resizeDocks({dock("plotsDock"), dock("modelsDock")}, {360, std::min(m_models->sizeHint().height() + 24, 240)},
+                Qt::Vertical);
 }
 
 void MainWindow::resetLayout()
@@ -274,6 +278,11 @@ void MainWindow::createMenus()
     bar->setMovable(false);
     for (QAction *act : {a.open, a.save, a.undo, a.redo})
         bar->addAction(act);
+    // Undo and redo name their step ("Undo Train DPDS"): icons here, the name in the tooltip and
+    // the Edit menu, rather than a label elided as it changes.
+    for (QAction *act : {a.undo, a.redo})
+        if (auto *button = qobject_cast<QToolButton *>(bar->widgetForAction(act)))
+            button->setToolButtonStyle(Qt::ToolButtonIconOnly);
     bar->addSeparator();
     bar->addAction(a.previousSequence);
     bar->addAction(a.nextSequence);

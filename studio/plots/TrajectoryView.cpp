@@ -71,7 +71,7 @@ TrajectoryView::TrajectoryView(QWidget *parent) : VtkWidget(parent), t(std::make
     t->view->SetInteractor(interactor());
     t->view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
     t->view->GetScene()->AddItem(t->chart);
-    showCornerLegend(*t->chart, vtkChartLegend::TOP);
+    showCornerLegend(*t->chart, vtkChartLegend::TOP, LegendPlace::BesidePlot);
     t->chart->GetTitleProperties()->SetFontSize(13);
     for (int axis : {vtkAxis::BOTTOM, vtkAxis::LEFT, vtkAxis::TOP}) {
         t->chart->GetAxis(axis)->GetTitleProperties()->SetFontSize(12);
