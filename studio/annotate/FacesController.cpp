@@ -137,6 +137,7 @@ FacesController::FacesController(MainWindow *window) : QObject(window), m_window
     connect(doc, &ProjectDocument::documentReset, this, &FacesController::onDocumentReset);
     connect(doc, &ProjectDocument::sequenceChanged, this, &FacesController::onSequenceChanged);
     connect(doc, &ProjectDocument::locationChanged, this, &FacesController::onLocationChanged);
+    connect(doc, &ProjectDocument::modelsChanged, this, &FacesController::onModelsChanged);
     connect(window, &MainWindow::currentFrameChanged, this, &FacesController::refreshFrame);
     updateActions();
 }
@@ -161,6 +162,7 @@ void FacesController::onDocumentReset()
     m_model.reset();
     m_modelName.clear();
     m_modelUnsaved = false;
+    m_shelved.clear();
     if (m_modesView)
         m_modesView->setModel(nullptr);
     updateActions();
@@ -170,6 +172,31 @@ void FacesController::onSequenceChanged(int row)
 {
     if (row == m_window->currentSequence())
         refreshFrame();
+}
+
+void FacesController::onModelsChanged()
+{
+    const ModelReference *ref = m_window->document()->project().model("aam");
+    const QString active = ref ? QString::fromStdString(ref->name) : QString();
+    if (m_model && active == m_modelName)
+        return; // the AAM in use is still the project's
+    if (m_model)
+        m_shelved[m_modelName] = Shelved{m_model, m_modelUnsaved};
+    m_model.reset();
+    m_modelName.clear();
+    m_modelUnsaved = false;
+    if (const auto it = m_shelved.find(active); ref && it != m_shelved.end()) {
+        m_model = it->second.model;
+        m_modelName = active;
+        m_modelUnsaved = it->second.unsaved;
+        m_shelved.erase(it);
+    } else if (ref) {
+        ensureModel(); // from the project's file, when it is needed again (reports a failure)
+    }
+    if (m_modesView)
+        m_modesView->setModel(m_model);
+    updateActions();
+    refreshFrame();
 }
 
 void FacesController::onLocationChanged()

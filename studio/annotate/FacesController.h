@@ -12,6 +12,7 @@
 #include <QObject>
 #include <QPointer>
 
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -64,6 +65,9 @@ private:
     void onDocumentReset();
     void onSequenceChanged(int row);
     void onLocationChanged();
+    // The project's models changed (Build AAM, its undo and redo): the AAM in use follows the
+    // project's active reference everywhere (tracking, detection, Modes of Variation).
+    void onModelsChanged();
     void refreshFrame();
     void updateActions();
     void reportFailure(Task *task, const QString &what);
@@ -84,6 +88,14 @@ private:
     std::shared_ptr<const AamModel> m_model;
     QString m_modelName;
     bool m_modelUnsaved = false; // built in the read-only demo: written when the project is saved
+    // AAMs built or loaded here that are not the active one now (an undone Build AAM), by name:
+    // a redo brings back the same model, also one that was never written to disk.
+    struct Shelved
+    {
+        std::shared_ptr<const AamModel> model;
+        bool unsaved = false;
+    };
+    std::map<QString, Shelved> m_shelved;
     int m_worstRank = -1; // where W is in the current sequence's worst-fit queue
 };
 

@@ -15,6 +15,7 @@
 #include "app/ProjectFiles.h"
 #include "app/SequenceMedia.h"
 #include "app/SurfaceFormat.h"
+#include "aam/AamModel.h"
 #include "build/ModesView.h"
 #include "tasks/Task.h"
 #include "tasks/TaskRunner.h"
@@ -301,6 +302,20 @@ private slots:
         QVERIFY(modes->face() != mean);
         if (const QByteArray dir = qgetenv("LIPSYNC_SCREENSHOT_DIR"); !dir.isEmpty())
             modes->grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("annotate-modes.png")));
+
+        // Undoing Build AAM puts the project's previous AAM back in use everywhere (Modes of
+        // Variation included); redo brings back the same built model, which exists in memory only.
+        QCOMPARE(m_window->undoStack()->undoText(), QStringLiteral("Build AAM %1").arg(QString::fromStdString(doc->project().models.back().name)));
+        m_window->undoStack()->undo();
+        const ModelReference *previous = doc->project().model("aam");
+        QVERIFY(previous);
+        const auto restored = m_window->faces()->model();
+        QVERIFY(restored && restored != model);
+        QCOMPARE(restored->combinedModes(),
+                 AamModel::load(doc->project().resolve(previous->file)).combinedModes());
+        QVERIFY(modes->face() != mean); // re-rendered with the demo's AAM
+        m_window->undoStack()->redo();
+        QCOMPARE(m_window->faces()->model(), model);
         modes->close();
     }
 
