@@ -25,6 +25,7 @@
 #include "timeline/WaveformView.h"
 
 #include <algorithm>
+#include <set>
 
 #include <QAction>
 #include <QCloseEvent>
@@ -39,6 +40,7 @@
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTabWidget>
+#include <QLabel>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QTableView>
@@ -78,6 +80,9 @@ MainWindow::MainWindow(QWidget *parent)
     m_faces = new FacesController(this);
     m_preview->attach(this);
     m_taskStatus = new TaskStatusWidget(m_runner, this);
+    m_activeModels = new QLabel(this);
+    m_activeModels->setObjectName(QStringLiteral("activeModels"));
+    statusBar()->addPermanentWidget(m_activeModels);
     statusBar()->addPermanentWidget(m_taskStatus);
 
     connect(m_document, &ProjectDocument::documentReset, this, &MainWindow::onDocumentReset);
@@ -86,7 +91,11 @@ MainWindow::MainWindow(QWidget *parent)
         statusBar()->showMessage(tr("%1 was not applied: it would leave the project unsaveable (%2).").arg(edit, why),
                                  15000);
     });
-    connect(m_document, &ProjectDocument::modelsChanged, this, [this] { m_models->setProject(m_document->project()); });
+    connect(m_document, &ProjectDocument::modelsChanged, this, [this] {
+        m_models->setProject(m_document->project());
+        updateActiveModels();
+    });
+    connect(m_document, &ProjectDocument::documentReset, this, &MainWindow::updateActiveModels);
     connect(m_document, &ProjectDocument::sequenceChanged, this, [this](int row) {
         if (row == m_currentRow && m_media) // "Landmarks: n of m frames"
             m_details->showSequence(m_document->sequence(row), m_media->mediaPath, *m_media);
@@ -201,6 +210,29 @@ void MainWindow::createDocks()
         if (on && timeline->height() < kSpectrogramTimelineHeight)
             resizeDocks({timeline}, {kSpectrogramTimelineHeight}, Qt::Vertical);
     });
+}
+
+void MainWindow::updateActiveModels()
+{
+    // The AAM and the dynamic models the project uses now (the latest reference of each kind,
+    // Project::model), always in view: undo and redo of Build AAM and Train change them.
+    const Project &project = m_document->project();
+    QStringList dynamic;
+    QString aam;
+    std::set<std::string> seen;
+    for (auto it = project.models.rbegin(); it != project.models.rend(); ++it) {
+        if (!seen.insert(it->kind).second || it->kind == "aligner")
+            continue;
+        if (it->kind == "aam")
+            aam = QString::fromStdString(it->name);
+        else
+            dynamic.prepend(QString::fromStdString(it->name));
+    }
+    const QString text = tr("AAM: %1 · Models: %2")
+                             .arg(aam.isEmpty() ? tr("none") : aam,
+                                  dynamic.isEmpty() ? tr("none trained") : dynamic.join(QStringLiteral(", ")));
+    m_activeModels->setText(m_document->isOpen() ? text : QString());
+    m_activeModels->setToolTip(tr("The appearance model and the dynamic models the project uses now"));
 }
 
 void MainWindow::applyDefaultDockSizes()

@@ -12,6 +12,7 @@
 #include <vector>
 
 class QDockWidget;
+class QLabel;
 class QTableView;
 class QTabWidget;
 class QUndoStack;
@@ -92,6 +93,7 @@ private:
     static constexpr int kSpectrogramTimelineHeight = 360;
     void createDocks();
     void applyDefaultDockSizes();
+    void updateActiveModels();
     void createMenus();
     void onDocumentReset();
     void onSelectionChanged();
@@ -118,6 +120,7 @@ private:
     LineChartView *m_chart = nullptr;
     ModelsPanel *m_models = nullptr;
     TaskStatusWidget *m_taskStatus = nullptr;
+    QLabel *m_activeModels = nullptr; // status bar: the AAM and dynamic models in use
     PlaybackController *m_playback = nullptr;
     FacesController *m_faces = nullptr;
     ExportMenu *m_export = nullptr;

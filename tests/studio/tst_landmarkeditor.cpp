@@ -22,6 +22,7 @@
 
 #include <QAction>
 #include <QDir>
+#include <QLabel>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
@@ -314,8 +315,15 @@ private slots:
         QCOMPARE(restored->combinedModes(),
                  AamModel::load(doc->project().resolve(previous->file)).combinedModes());
         QVERIFY(modes->face() != mean); // re-rendered with the demo's AAM
+        auto *active = m_window->findChild<QLabel *>(QStringLiteral("activeModels"));
+        QVERIFY(active);
+        QVERIFY2(active->text().startsWith(QStringLiteral("AAM: %1 ").arg(QString::fromStdString(previous->name))),
+                 qPrintable(active->text()));
         m_window->undoStack()->redo();
         QCOMPARE(m_window->faces()->model(), model);
+        QVERIFY2(active->text().startsWith(
+                     QStringLiteral("AAM: %1 ").arg(QString::fromStdString(doc->project().model("aam")->name))),
+                 qPrintable(active->text()));
         modes->close();
     }
 
