@@ -9,7 +9,7 @@
 // The header is optional (the shared Helen files have bare "x y" lines). Coordinates in .pts
 // files are 1-based (Matlab convention of 300-W); in memory they are 0-based pixel coordinates,
 // so reading subtracts 1 and writing adds 1.
-#include "project/LandmarkSet.h"
+#include "annotation/LandmarkSet.h"
 
 #include <Eigen/Core>
 

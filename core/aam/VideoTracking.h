@@ -5,7 +5,7 @@
 // Frames where no face can be found (e.g. GRID clips whose first frames decode as flat grey) take
 // the parameters of the nearest tracked frame, and are listed.
 #include "aam/AamModel.h"
-#include "project/LandmarkSet.h"
+#include "annotation/LandmarkSet.h"
 
 #include <Eigen/Core>
 

@@ -6,7 +6,7 @@
 #include "align/AcousticModel.h"
 #include "align/Lexicon.h"
 #include "align/UtteranceGraph.h"
-#include "project/Tier.h"
+#include "annotation/Tier.h"
 
 #include <string>
 #include <vector>

@@ -10,8 +10,9 @@ namespace lipsync {
 namespace {
 std::string labelAt(const Tier &phones, double t)
 {
-    // Tier::indexAt lives in core/project (header-only here); a local search keeps align
-    // independent of it. Intervals are [start, end).
+    // The first interval holding t ([start, end)), by a scan rather than Tier::indexAt's
+    // binary search: tiers read from outside files (TextGrid, .lab) are voted before anything
+    // has checked that they are sorted without overlap (Tier::defect).
     for (const Interval &interval : phones.intervals)
         if (t >= interval.start && t < interval.end)
             return interval.label.empty() ? std::string("sil") : interval.label;

@@ -9,7 +9,7 @@
 // frame rate above 100 Hz, or past the last audio frame) takes the phone at its own centre.
 // Times not covered by the tier are silence ("sil").
 #include "audio/Mfcc.h"
-#include "project/Tier.h"
+#include "annotation/Tier.h"
 
 #include <string>
 #include <vector>

@@ -8,7 +8,7 @@
 //  - for generation also a per-frame list: one phone name per line (any other extension).
 // Phone names are mapped by PhoneSet::index (stress digits dropped, sil/sp/spn/"" = silence).
 // Every failure throws lipsync::Error naming the file and the line or tier.
-#include "project/Tier.h"
+#include "annotation/Tier.h"
 
 #include <string>
 #include <vector>

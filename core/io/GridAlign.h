@@ -1,7 +1,7 @@
 #pragma once
 // GRID corpus word timings (.align): "start end word" per line in units of 1/25000 s (1000 units
 // = one 25 fps video frame), CRLF or LF line endings, "sil"/"sp" for silence.
-#include "project/Tier.h"
+#include "annotation/Tier.h"
 
 #include <string>
 

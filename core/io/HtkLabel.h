@@ -4,7 +4,7 @@
 // quoted pattern line, its label lines and a "." line). Only the first label level is read.
 // Also read: times in seconds (the .lab of wavesurfer, Audacity, MFA-style tools) when the first
 // timed line has a time with a decimal point, and '#' comment lines.
-#include "project/Tier.h"
+#include "annotation/Tier.h"
 
 #include <map>
 #include <string>

@@ -3,7 +3,7 @@
 // the long ("ooTextFile" with "xmin = ..." lines) and short (values only) text forms, read in
 // UTF-8 or UTF-16 (with a byte-order mark) and written in UTF-8. Interval tiers map to Tier;
 // point tiers (TextTier) are kept with start == end per point.
-#include "project/Tier.h"
+#include "annotation/Tier.h"
 
 #include <string>
 #include <vector>

@@ -4,7 +4,7 @@
 //   .txt (plain text), .TextGrid (the "words" tier, else the first interval tier),
 //   .mlf is not a per-utterance transcript and is rejected here.
 // Silence labels ("sil", "sp", "", "<sil>") are dropped from the word list.
-#include "project/Tier.h"
+#include "annotation/Tier.h"
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 #pragma once
 // One recorded utterance of the project: a media file plus everything derived from it.
-#include "project/LandmarkSet.h"
-#include "project/Tier.h"
+#include "annotation/LandmarkSet.h"
+#include "annotation/Tier.h"
 
 #include <Eigen/Core>
 

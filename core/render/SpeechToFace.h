@@ -12,7 +12,7 @@
 // file ("no audio stream"); there is no silent-audio fallback, since the labels come from the speech.
 #include "aam/AamModel.h"
 #include "io/AudioDecoder.h"
-#include "project/Tier.h"
+#include "annotation/Tier.h"
 #include "render/FaceRenderer.h"
 #include "render/VideoExporter.h"
 

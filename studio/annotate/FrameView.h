@@ -7,7 +7,7 @@
 // drag moves a point (reported once, at release: one undo step), Delete undefines the selected
 // point. Edits are reported through landmarksEdited; the owner turns them into undoable document
 // edits and sets the result back with setLandmarks.
-#include "project/LandmarkSet.h"
+#include "annotation/LandmarkSet.h"
 
 #include <QImage>
 #include <QWidget>

@@ -2,7 +2,7 @@
 
 #include "plots/ChartLegend.h"
 
-#include "project/Tier.h"
+#include "annotation/Tier.h"
 
 #include <vtkAxis.h>
 #include <vtkBrush.h>

@@ -9,7 +9,7 @@
 // Drawing one frame is one synthesis (about 0.25 ms for the GRID AAM) and a copy of the
 // background, so the preview renders on demand on the GUI thread and keeps up with playback.
 #include "aam/AamModel.h"
-#include "project/LandmarkSet.h"
+#include "annotation/LandmarkSet.h"
 #include "render/FaceRenderer.h"
 
 #include <QColor>

@@ -7,7 +7,7 @@
 // Times snap to 10 ms (the aligner's frame shift); no interval becomes shorter than 10 ms, so a
 // boundary never crosses its neighbours. Every interval an edit touches gets userEdited = true
 // (re-alignment keeps it, the view marks it).
-#include "project/Tier.h"
+#include "annotation/Tier.h"
 
 #include <QString>
 

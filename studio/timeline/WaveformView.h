@@ -15,7 +15,7 @@
 // Intervals the user edited are drawn with an orange marker and orange boundaries.
 #include "audio/Spectrogram.h"
 #include "audio/WaveformPeaks.h"
-#include "project/Tier.h"
+#include "annotation/Tier.h"
 #include "timeline/TierEdits.h"
 
 #include <QImage>

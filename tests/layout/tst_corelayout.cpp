@@ -1,9 +1,53 @@
-// Architecture rule as a test (after QGIS's test_banned_keywords.sh): core/ never includes QtGui
-// or QtWidgets, so every algorithm stays usable headless by the CLI.
+// Architecture rules as tests (after QGIS's test_banned_keywords.sh): core/ never includes QtGui
+// or QtWidgets, so every algorithm stays usable headless by the CLI; and each core module
+// includes only the modules its CMakeLists.txt names as dependencies, which form no cycle, so
+// every library links on its own and the layering is what the build files say.
+#include <QDir>
 #include <QDirIterator>
 #include <QFile>
+#include <QMap>
 #include <QRegularExpression>
+#include <QSet>
 #include <QTest>
+
+namespace {
+
+QString readText(const QString &path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
+}
+
+// Module -> the core modules its lipsync_core_module(NAME DEPS ...) names.
+QMap<QString, QSet<QString>> declaredDependencies(const QString &core)
+{
+    QMap<QString, QSet<QString>> deps;
+    const QRegularExpression call(QStringLiteral("lipsync_core_module\\(\\s*(\\w+)([^)]*)\\)"));
+    const QRegularExpression lib(QStringLiteral("\\blipsync_(\\w+)"));
+    for (const QString &module : QDir(core).entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+        const auto m = call.match(readText(core + QLatin1Char('/') + module + QStringLiteral("/CMakeLists.txt")));
+        if (!m.hasMatch())
+            continue;
+        QSet<QString> &d = deps[m.captured(1)];
+        for (auto it = lib.globalMatch(m.captured(2)); it.hasNext();)
+            d.insert(it.next().captured(1));
+    }
+    return deps;
+}
+
+// A cycle through `module` in `deps`, as "a -> b -> a", or empty.
+QString cycleFrom(const QMap<QString, QSet<QString>> &deps, const QString &module, QStringList path)
+{
+    if (path.contains(module))
+        return (path.mid(path.indexOf(module)) << module).join(QStringLiteral(" -> "));
+    path << module;
+    for (const QString &next : deps.value(module))
+        if (const QString cycle = cycleFrom(deps, next, path); !cycle.isEmpty())
+            return cycle;
+    return {};
+}
+
+} // namespace
 
 static const QRegularExpression &bannedInclude()
 {
@@ -40,6 +84,43 @@ private slots:
         }
         QVERIFY2(files > 10, "core/ sources not found");
         QVERIFY2(offenders.isEmpty(), qPrintable(offenders.join(QLatin1Char('\n'))));
+    }
+
+    void coreIncludesFollowTheDeclaredDependencies()
+    {
+        const QString core = QStringLiteral(LIPSYNC_SOURCE_DIR "/core");
+        const QMap<QString, QSet<QString>> deps = declaredDependencies(core);
+        QVERIFY2(deps.size() >= 10 && deps.contains(QStringLiteral("annotation")), "core modules not found");
+        const QRegularExpression include(QStringLiteral("^\\s*#\\s*include\\s*\"(\\w+)/"),
+                                         QRegularExpression::MultilineOption);
+        QStringList offenders;
+        for (auto module = deps.cbegin(); module != deps.cend(); ++module) {
+            QDirIterator it(core + QLatin1Char('/') + module.key(), {QStringLiteral("*.h"), QStringLiteral("*.cpp")},
+                            QDir::Files);
+            while (it.hasNext()) {
+                const QString path = it.next();
+                for (auto m = include.globalMatch(readText(path)); m.hasNext();) {
+                    const QString used = m.next().captured(1);
+                    if (used != module.key() && deps.contains(used) && !module.value().contains(used))
+                        offenders << QStringLiteral("%1 includes %2/ but lipsync_%3 does not depend on lipsync_%2")
+                                         .arg(QDir(core).relativeFilePath(path), used, module.key());
+                }
+            }
+        }
+        QVERIFY2(offenders.isEmpty(), qPrintable(offenders.join(QLatin1Char('\n'))));
+    }
+
+    void coreModulesFormNoCycle()
+    {
+        const QMap<QString, QSet<QString>> deps = declaredDependencies(QStringLiteral(LIPSYNC_SOURCE_DIR "/core"));
+        for (auto module = deps.cbegin(); module != deps.cend(); ++module) {
+            const QString cycle = cycleFrom(deps, module.key(), {});
+            QVERIFY2(cycle.isEmpty(), qPrintable(cycle));
+        }
+        // The check itself finds a cycle where there is one.
+        const QMap<QString, QSet<QString>> looped{{QStringLiteral("io"), {QStringLiteral("project")}},
+                                                  {QStringLiteral("project"), {QStringLiteral("io")}}};
+        QCOMPARE(cycleFrom(looped, QStringLiteral("io"), {}), QStringLiteral("io -> project -> io"));
     }
 
     void bannedPatternDetectsGuiInclude()

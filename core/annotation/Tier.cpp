@@ -1,4 +1,4 @@
-#include "project/Tier.h"
+#include "annotation/Tier.h"
 
 #include <algorithm>
 #include <cmath>

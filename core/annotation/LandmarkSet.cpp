@@ -1,4 +1,4 @@
-#include "project/LandmarkSet.h"
+#include "annotation/LandmarkSet.h"
 
 #include <algorithm>
 
