@@ -16,6 +16,8 @@
 #include <QAction>
 #include <QDir>
 #include <QFileDialog>
+#include <QInputDialog>
+#include <QStatusBar>
 #include <QFileInfo>
 #include <QMenu>
 
@@ -27,13 +29,24 @@ namespace lipsync::studio {
 
 namespace {
 
-// The project's trained dynamic model: the paper's DPDS when there is one, else the others.
-const ModelReference *dynamicModel(const Project &project)
+constexpr const char *kDynamicKinds[] = {"dpds", "slds", "brand", "hmm"};
+
+// The project's trained dynamic model of `kind`, or by default the paper's DPDS when there is
+// one, else the others.
+const ModelReference *dynamicModel(const Project &project, const QString &kind = {})
 {
-    for (const char *kind : {"dpds", "slds", "brand", "hmm"})
-        if (const ModelReference *m = project.model(kind))
+    if (!kind.isEmpty())
+        return project.model(kind.toStdString());
+    for (const char *k : kDynamicKinds)
+        if (const ModelReference *m = project.model(k))
             return m;
     return nullptr;
+}
+
+bool usesDynamicModel(ExportMenu::Kind kind)
+{
+    return kind == ExportMenu::Kind::Video || kind == ExportMenu::Kind::SideBySide
+           || kind == ExportMenu::Kind::Images || kind == ExportMenu::Kind::Model;
 }
 
 void copyFileAtomically(const std::string &from, const std::string &to)
@@ -60,6 +73,12 @@ ExportMenu::ExportMenu(MainWindow *window, QMenu *parentMenu)
         m_actions.append(action);
     }
     connect(m_menu, &QMenu::aboutToShow, this, &ExportMenu::updateActions);
+    m_modelPrompt = [this](const QStringList &kinds, const QStringList &names) {
+        bool ok = false;
+        const QString name = QInputDialog::getItem(m_window, tr("Export"), tr("Which trained model?"), names, 0,
+                                                   false, &ok);
+        return ok ? kinds.value(names.indexOf(name)) : QString();
+    };
     m_prompt = [this](const PathRequest &request) {
         if (request.filter.isEmpty())
             return QFileDialog::getExistingDirectory(m_window, request.title, request.suggestedPath);
@@ -97,29 +116,48 @@ Task *ExportMenu::trigger(Kind kind)
                              ? QString::fromStdString(document->sequence(row).id)
                              : QStringLiteral("export");
     const QString folder = QDir::homePath();
+    // Several trained models: the user picks one (never a silent default).
+    QString modelKind;
+    if (usesDynamicModel(kind)) {
+        QStringList kinds, names;
+        for (const char *k : kDynamicKinds)
+            if (const ModelReference *m = document->project().model(k)) {
+                kinds << QString::fromLatin1(k);
+                names << QString::fromStdString(m->name);
+            }
+        if (kinds.size() > 1) {
+            modelKind = m_modelPrompt ? m_modelPrompt(kinds, names) : QString();
+            if (modelKind.isEmpty())
+                return nullptr;
+        } else {
+            modelKind = kinds.value(0);
+        }
+    }
+    const QString modelSuffix = modelKind.isEmpty() ? QString() : QLatin1Char('-') + modelKind;
     PathRequest request{kind, action(kind)->text().remove(QLatin1Char('&')).remove(QStringLiteral("…")),
                         QString(), QString()};
     // Suggested name (after the sequence id, or alone for project-wide files) and file filter
     // (none: a folder), in Kind order.
     const std::array<std::pair<QString, QString>, 8> targets = {{
-        {stem + "-generated.mp4", tr("MP4 video (*.mp4)")},
-        {stem + "-side-by-side.mp4", tr("MP4 video (*.mp4)")},
-        {stem + "-frames", QString()},
+        {stem + "-generated" + modelSuffix + ".mp4", tr("MP4 video (*.mp4)")},
+        {stem + "-side-by-side" + modelSuffix + ".mp4", tr("MP4 video (*.mp4)")},
+        {stem + "-frames" + modelSuffix, QString()},
         {stem + ".csv", tr("Feature tables (*.csv)")},
         {stem + ".TextGrid", tr("Praat TextGrid (*.TextGrid)")},
         {stem + "-landmarks", QString()},
         {QStringLiteral("model.aam"), tr("Active appearance models (*.aam)")},
-        {QStringLiteral("dynamics.model"), tr("Dynamic models (*.model)")},
+        {(modelKind.isEmpty() ? QStringLiteral("dynamics") : modelKind) + QStringLiteral(".model"),
+         tr("Dynamic models (*.model)")},
     }};
     request.suggestedPath = folder + "/" + targets[size_t(kind)].first;
     request.filter = targets[size_t(kind)].second;
     const QString path = m_prompt ? m_prompt(request) : QString();
     if (path.isEmpty())
         return nullptr;
-    return exportTo(kind, path);
+    return exportTo(kind, path, modelKind);
 }
 
-Task *ExportMenu::exportTo(Kind kind, const QString &path)
+Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelKind)
 {
     const ProjectDocument *document = m_window->document();
     const Project &project = document->project();
@@ -132,7 +170,7 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path)
     }
     // Everything the worker needs is copied here, on the GUI thread: it never reads the document.
     const Sequence sequence = projectWide ? Sequence() : document->sequence(row);
-    const ModelReference *model = dynamicModel(project);
+    const ModelReference *model = dynamicModel(project, modelKind);
     const ModelReference *aam = project.model("aam");
     const std::string target = path.toStdString();
     const QString id = QString::fromStdString(sequence.id);
@@ -249,8 +287,10 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path)
     }
     Task *task = m_window->taskRunner()->start(title, std::move(work));
     connect(task, &Task::finished, this, [this, task, path, what](Task::State state) {
-        if (state == Task::State::Finished)
+        if (state == Task::State::Finished) {
+            m_window->statusBar()->showMessage(tr("Exported to %1").arg(QDir::toNativeSeparators(path)), 15000);
             emit exported(path);
+        }
         else if (state == Task::State::Failed)
             ErrorReporter::report(m_window, what, path, task->errorMessage());
     });

@@ -40,6 +40,9 @@ public:
     };
     // Returns the chosen path, or an empty string to cancel.
     using PathPrompt = std::function<QString(const PathRequest &)>;
+    // Which trained dynamic model to export or render with, when the project has several:
+    // `kinds` ("dpds", ...) with their user-visible `names`; returns a kind, or empty to cancel.
+    using ModelPrompt = std::function<QString(const QStringList &kinds, const QStringList &names)>;
 
     ExportMenu(MainWindow *window, QMenu *parentMenu);
 
@@ -47,12 +50,17 @@ public:
     QAction *action(Kind kind) const;
     // Replaces the file dialogs (GUI tests).
     void setPathPrompt(PathPrompt prompt) { m_prompt = std::move(prompt); }
+    void setModelPrompt(ModelPrompt prompt) { m_modelPrompt = std::move(prompt); }
 
-    // Asks for a path and starts the export; returns the task (null if nothing was started).
+    // Asks which model (when it matters and there is a choice) and for a path, then starts the
+    // export; returns the task (null if nothing was started). Where it wrote is shown in the
+    // status bar when it is done.
     Task *trigger(Kind kind);
-    // Starts the export to `path` without asking. Null (and the reason reported) when the
-    // project lacks what the export needs (a sequence, features, an alignment, a model).
-    Task *exportTo(Kind kind, const QString &path);
+    // Starts the export to `path` without asking. `modelKind` is the dynamic model to use
+    // (empty: the paper's DPDS when trained, else the first trained). Null (and the reason
+    // reported) when the project lacks what the export needs (a sequence, features, an
+    // alignment, a model).
+    Task *exportTo(Kind kind, const QString &path, const QString &modelKind = {});
 
 signals:
     // A file or folder was written completely.
@@ -65,6 +73,7 @@ private:
     QMenu *m_menu;
     QList<QAction *> m_actions; // in Kind order
     PathPrompt m_prompt;
+    ModelPrompt m_modelPrompt;
 };
 
 } // namespace lipsync::studio

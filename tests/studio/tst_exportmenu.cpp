@@ -20,6 +20,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -145,6 +146,55 @@ private slots:
         QCOMPARE(exported.count(), 1);
         QVERIFY(!QFile::exists(canceled));
         QVERIFY(QDir(m_dir.path()).entryList(QDir::Hidden | QDir::Files).filter(".part").isEmpty());
+    }
+
+    // With several trained models Export asks which one (cancel exports nothing), names the file
+    // after it, and says where it wrote.
+    void asksWhichModelAndSaysWhereItWrote()
+    {
+        const Project &project = m_window->document()->project();
+        const ModelReference *hmm = project.model("hmm");
+        QVERIFY(hmm); // trained by the test above
+        std::vector<ModelReference> models = project.models;
+        const QString other = m_dir.filePath("other.model");
+        QVERIFY(QFile::copy(QString::fromStdString(project.resolve(hmm->file)), other));
+        QFile append(other);
+        QVERIFY(append.open(QIODevice::Append));
+        append.write("\n"); // a different file than the HMM-mean one
+        append.close();
+        models.push_back({"dpds", "DPDS (test)", other.toStdString()});
+        m_window->document()->applyModels(models);
+
+        QStringList offered;
+        menu()->setModelPrompt([&](const QStringList &kinds, const QStringList &) {
+            offered = kinds;
+            return QString();
+        });
+        int asked = 0;
+        menu()->setPathPrompt([&](const ExportMenu::PathRequest &) {
+            ++asked;
+            return m_dir.filePath("never.model");
+        });
+        QVERIFY(!menu()->trigger(ExportMenu::Kind::Model));
+        QCOMPARE(offered, QStringList({QStringLiteral("dpds"), QStringLiteral("hmm")}));
+        QCOMPARE(asked, 0);
+
+        menu()->setModelPrompt([](const QStringList &, const QStringList &) { return QStringLiteral("hmm"); });
+        const QString target = m_dir.filePath("chosen.model");
+        QString suggested;
+        menu()->setPathPrompt([&](const ExportMenu::PathRequest &r) {
+            suggested = r.suggestedPath;
+            return target;
+        });
+        QSignalSpy exported(menu(), &ExportMenu::exported);
+        QVERIFY(menu()->trigger(ExportMenu::Kind::Model));
+        QTRY_COMPARE_WITH_TIMEOUT(exported.count(), 1, 30000);
+        QVERIFY2(suggested.endsWith(QStringLiteral("hmm.model")), qPrintable(suggested));
+        QFile written(target), source(QString::fromStdString(project.resolve(project.model("hmm")->file)));
+        QVERIFY(written.open(QIODevice::ReadOnly) && source.open(QIODevice::ReadOnly));
+        QCOMPARE(written.readAll(), source.readAll());
+        const QString shown = m_window->statusBar()->currentMessage();
+        QVERIFY2(shown.contains(QDir::toNativeSeparators(target)), qPrintable(shown));
     }
 };
 
