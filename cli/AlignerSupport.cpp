@@ -18,8 +18,7 @@ namespace lipsync::cli {
 
 QString defaultAlignerModel()
 {
-    return QString::fromStdString(
-        shippedAlignerModelPath(qEnvironmentVariable("LIPSYNC_SOURCE_DIR").toStdString()));
+    return QString::fromStdString(shippedAlignerModelPath());
 }
 
 QString alignerModelOrDefault(const QString &given, const QString &command)

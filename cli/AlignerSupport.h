@@ -13,10 +13,8 @@
 
 namespace lipsync::cli {
 
-// The default aligner model: $LIPSYNC_ALIGNER_MODEL if set; else resources/aligner/grid-s1.aligner
-// searched upwards from the executable's folder (the build tree, e.g. build/release/lipsync,
-// finds <source>/resources/...), then $LIPSYNC_SOURCE_DIR/resources/aligner/grid-s1.aligner,
-// then <prefix>/share/lipsync/aligner/grid-s1.aligner. Empty if none exists.
+// The default aligner model (align/ShippedAlignerModel): $LIPSYNC_ALIGNER_MODEL if set, else the
+// shipped aligner/grid-s1.aligner (util/ResourceLocator). Empty if none exists.
 QString defaultAlignerModel();
 // The model a command uses: `given` (its --model) if not empty, else defaultAlignerModel().
 // Throws lipsync::Error naming `command` when there is none.

@@ -2,6 +2,7 @@
 
 #include "aam/AamModel.h"
 #include "aam/LandmarkScheme.h"
+#include "util/ResourceLocator.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -34,22 +35,9 @@ struct FaceDetector::Impl
 
 std::string FaceDetector::findYunetModel()
 {
-    const std::string name = "face_detection_yunet_2022mar.onnx";
-    std::vector<QString> candidates;
-    if (const char *env = std::getenv("LIPSYNC_YUNET_MODEL"))
-        candidates.push_back(QString::fromLocal8Bit(env));
-    if (QCoreApplication::instance()) {
-        const QString dir = QCoreApplication::applicationDirPath();
-        candidates.push_back(dir + "/../share/lipsync/models/" + QString::fromStdString(name));
-        candidates.push_back(dir + "/models/" + QString::fromStdString(name));
-    }
-#ifdef LIPSYNC_RESOURCE_DIR
-    candidates.push_back(QStringLiteral(LIPSYNC_RESOURCE_DIR "/models/") + QString::fromStdString(name));
-#endif
-    for (const QString &c : candidates)
-        if (QFileInfo::exists(c))
-            return c.toStdString();
-    return {};
+    if (const char *env = std::getenv("LIPSYNC_YUNET_MODEL"); env && QFileInfo::exists(QString::fromLocal8Bit(env)))
+        return env;
+    return ResourceLocator::find("models/face_detection_yunet_2022mar.onnx");
 }
 
 FaceDetector::FaceDetector(const FaceDetectorPaths &paths) : m_impl(std::make_unique<Impl>())

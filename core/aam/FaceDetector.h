@@ -29,7 +29,7 @@ struct FaceDetection
 
 struct FaceDetectorPaths
 {
-    std::string yunetModel;   // empty: search (LIPSYNC_YUNET_MODEL, beside the executable, source tree)
+    std::string yunetModel;   // empty: $LIPSYNC_YUNET_MODEL, else the shipped one (util/ResourceLocator)
     std::string haarCascade;  // empty: /usr/share/opencv4/haarcascades/haarcascade_frontalface_alt2.xml
     std::string dlibPredictor; // empty: /usr/share/dlib/shape_predictor_68_face_landmarks.dat
     bool useDlib = true;

@@ -1,5 +1,7 @@
 #include "app/DemoProject.h"
 
+#include "util/ResourceLocator.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
@@ -19,15 +21,11 @@ bool isDemoFolder(const QString &folder)
 
 QString DemoProject::locate()
 {
-    QStringList candidates;
-    candidates << qEnvironmentVariable("LIPSYNC_DEMO_DIR");
-    candidates << QDir(QCoreApplication::applicationDirPath()).filePath(QStringLiteral("../share/lipsync/demo"));
-#ifdef LIPSYNC_SOURCE_DIR
-    candidates << QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo");
-#endif
-    for (const QString &c : std::as_const(candidates))
-        if (isDemoFolder(c))
-            return QDir::cleanPath(QFileInfo(c).absoluteFilePath());
+    for (const std::string &folder : ResourceLocator::folders()) {
+        const QString demo = QDir(QString::fromStdString(folder)).filePath(QStringLiteral("demo"));
+        if (isDemoFolder(demo))
+            return QDir::cleanPath(QFileInfo(demo).absoluteFilePath());
+    }
     return {};
 }
 

@@ -1,10 +1,9 @@
 #pragma once
-// The bundled demo project (ten GRID clips). Looked up, in order, in
-//   $LIPSYNC_DEMO_DIR                                  (an override for packagers and tests)
-//   <executable dir>/../share/lipsync/demo             (installed: <prefix>/bin/lipsync-studio)
-//   <LIPSYNC_SOURCE_DIR>/resources/demo                (a build tree; compile definition)
-// A folder qualifies if it holds project.json or a media/ folder. Without project.json the
-// project is built in memory from media/ (Project::fromMediaFolder).
+// The bundled demo project (ten GRID clips): demo/ among the shipped resources
+// (util/ResourceLocator: $LIPSYNC_RESOURCE_DIR, else <executable dir>/../share/lipsync, which
+// the build tree links to the sources' resources/). A folder qualifies if it holds project.json
+// or a media/ folder. Without project.json the project is built in memory from media/
+// (Project::fromMediaFolder).
 #include "project/Project.h"
 
 #include <QString>

@@ -173,8 +173,7 @@ void MainWindow::createDocks()
     sequencePanel->addWidget(m_details);
     sequencePanel->setStretchFactor(0, 1);
     sequencePanel->setChildrenCollapsible(false);
-    QDockWidget *sequences = makeDock(tr("Sequences"), QStringLiteral("sequencesDock"), sequencePanel,
-                                      Qt::LeftDockWidgetArea);
+    makeDock(tr("Sequences"), QStringLiteral("sequencesDock"), sequencePanel, Qt::LeftDockWidgetArea);
 
     m_timeline = new TimelinePanel(this);
     m_timeline->attach(this);

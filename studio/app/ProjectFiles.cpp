@@ -7,6 +7,7 @@
 #include "app/RecentProjects.h"
 #include "tasks/Task.h"
 #include "tasks/TaskRunner.h"
+#include "util/ResourceLocator.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -17,6 +18,18 @@
 #include <QUndoStack>
 
 namespace lipsync::studio {
+
+namespace {
+
+QString resourceFolders()
+{
+    QStringList folders;
+    for (const std::string &f : ResourceLocator::folders())
+        folders << QDir::toNativeSeparators(QString::fromStdString(f));
+    return folders.join(QStringLiteral(", "));
+}
+
+} // namespace
 
 ProjectFiles::ProjectFiles(ProjectDocument *document, QWidget *window, QMenu *recentMenu, TaskRunner *runner)
     : QObject(window), m_document(document), m_window(window), m_recent(new RecentProjects(recentMenu, this)),
@@ -132,7 +145,7 @@ bool ProjectFiles::openDemo()
     const QString folder = DemoProject::locate();
     if (folder.isEmpty()) {
         ErrorReporter::report(m_window, tr("The bundled demo project was not found."), QString(),
-                              tr("Looked in $LIPSYNC_DEMO_DIR, <prefix>/share/lipsync/demo and the source tree."));
+                              tr("Looked for demo/ in: %1").arg(resourceFolders()));
         return false;
     }
     Project project;

@@ -150,11 +150,7 @@ AlignOutcome alignSequence(const AlignJob &job, const AcousticModel *model, Feed
 
 QString alignerModelPath()
 {
-#ifdef LIPSYNC_SOURCE_DIR
-    return QString::fromStdString(shippedAlignerModelPath(LIPSYNC_SOURCE_DIR));
-#else
     return QString::fromStdString(shippedAlignerModelPath());
-#endif
 }
 
 Task *startAlignment(TaskRunner &runner, const QString &title, std::vector<AlignJob> jobs,

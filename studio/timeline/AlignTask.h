@@ -59,9 +59,8 @@ struct AlignOutcome
     std::vector<std::pair<std::string, std::string>> guessed;
 };
 
-// The aligner model the studio uses: $LIPSYNC_ALIGNER_MODEL, else resources/aligner/grid-s1.aligner
-// next to or above the executable, in the source tree, or under <prefix>/share/lipsync. Empty
-// if none exists.
+// The aligner model the studio uses (align/ShippedAlignerModel): $LIPSYNC_ALIGNER_MODEL, else the
+// shipped aligner/grid-s1.aligner (util/ResourceLocator). Empty if none exists.
 QString alignerModelPath();
 
 // One job, on the calling thread: the work startAlignment's task does for each job. `model`
