@@ -1,9 +1,7 @@
 #include "TrainingData.h"
 
 #include "dynamics/LabelledFolder.h"
-#include "dynamics/PhoneLabels.h"
 #include "project/Project.h"
-#include "util/Error.h"
 
 #include <cmath>
 
@@ -11,7 +9,7 @@ namespace lipsync::cli {
 
 namespace {
 
-// Frame labels by the §0 vote at each sequence's own frame rate, one per feature row.
+// The project's sequences with features and phones (core/dynamics/LabelledFolder).
 std::vector<LabelledSequence> projectSequences(const std::string &folder, std::string *projectAam)
 {
     const Project project = Project::load(folder);
@@ -19,22 +17,7 @@ std::vector<LabelledSequence> projectSequences(const std::string &folder, std::s
         const ModelReference *aam = project.model("aam");
         *projectAam = aam ? project.resolve(aam->file) : std::string();
     }
-    std::vector<LabelledSequence> sequences;
-    for (const Sequence &s : project.sequences) {
-        if (s.features.rows() == 0 || s.phones.isEmpty())
-            continue;
-        LabelledSequence ls;
-        ls.name = s.id;
-        ls.features = s.features;
-        ls.labels = frameLabelsFromTier(s.phones, s.frameRate, int(s.features.rows()),
-                                        project.manifestPath() + ": " + s.id);
-        sequences.push_back(std::move(ls));
-    }
-    if (sequences.empty())
-        throw Error("no sequence has both face features and a phone alignment "
-                    "(track the faces and align the speech first)",
-                    project.manifestPath());
-    return sequences;
+    return loadProjectSequences(project);
 }
 
 } // namespace

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <mutex>
+#include <optional>
 
 namespace lipsync {
 
@@ -163,17 +164,24 @@ std::vector<FaceDetection> FaceDetector::detect(const cv::Mat &bgrIn)
     return out;
 }
 
-Eigen::VectorXd FaceDetector::dlibLandmarks(const cv::Mat &bgr, const FaceDetection &face)
+namespace {
+cv::Mat greyImage(const cv::Mat &bgr)
 {
-#ifdef LIPSYNC_HAVE_DLIB
-    if (!m_impl->predictor || bgr.empty())
-        return {};
     cv::Mat grey;
     if (bgr.channels() == 3)
         cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
     else
         grey = bgr;
-    dlib::cv_image<unsigned char> image(grey);
+    return grey;
+}
+} // namespace
+
+std::optional<cv::Rect2d> FaceDetector::dlibFaceBox(const cv::Mat &bgr, const FaceDetection &face)
+{
+#ifdef LIPSYNC_HAVE_DLIB
+    if (!m_impl->predictor || bgr.empty())
+        return std::nullopt;
+    const cv::Mat grey = greyImage(bgr);
     // dlib's predictor was trained on the boxes of dlib's HOG detector: use that detector's box
     // for this face when it finds one (on a copy of at most 480 pixels, for speed); otherwise
     // adjust the YuNet box, which is larger and higher, towards the HOG convention.
@@ -205,6 +213,21 @@ Eigen::VectorXd FaceDetector::dlibLandmarks(const cv::Mat &bgr, const FaceDetect
         const double top = b.y + 0.17 * b.height, h = 0.86 * b.height;
         b = cv::Rect2d(cx - 0.5 * w, top, w, h);
     }
+    return b;
+#else
+    (void)bgr;
+    (void)face;
+    return std::nullopt;
+#endif
+}
+
+Eigen::VectorXd FaceDetector::dlibLandmarksInBox(const cv::Mat &bgr, const cv::Rect2d &b)
+{
+#ifdef LIPSYNC_HAVE_DLIB
+    if (!m_impl->predictor || bgr.empty())
+        return {};
+    const cv::Mat grey = greyImage(bgr);
+    dlib::cv_image<unsigned char> image(grey);
     const dlib::rectangle rect(long(std::lround(b.x)), long(std::lround(b.y)),
                                long(std::lround(b.x + b.width)), long(std::lround(b.y + b.height)));
     const dlib::full_object_detection shape = (*m_impl->predictor)(image, rect);
@@ -218,9 +241,15 @@ Eigen::VectorXd FaceDetector::dlibLandmarks(const cv::Mat &bgr, const FaceDetect
     return out;
 #else
     (void)bgr;
-    (void)face;
+    (void)b;
     return {};
 #endif
+}
+
+Eigen::VectorXd FaceDetector::dlibLandmarks(const cv::Mat &bgr, const FaceDetection &face)
+{
+    const std::optional<cv::Rect2d> box = dlibFaceBox(bgr, face);
+    return box ? dlibLandmarksInBox(bgr, *box) : Eigen::VectorXd();
 }
 
 Eigen::VectorXd keypointAnchors(const Eigen::VectorXd &shape)

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,12 @@ public:
     std::vector<FaceDetection> detect(const cv::Mat &bgr);
     // 68 iBUG points (flat, 0-based) inside `face` from dlib, or an empty vector without dlib.
     Eigen::VectorXd dlibLandmarks(const cv::Mat &bgr, const FaceDetection &face);
+    // The two halves of dlibLandmarks: the box dlib's predictor expects for `face` (its HOG
+    // detector's box overlapping the face, else the YuNet box moved towards that convention;
+    // nothing without dlib), and the 68 points predicted inside a given box. Measuring several
+    // renderings of one recorded frame (core/eval/LipOpening) reuses the recording's box.
+    std::optional<cv::Rect2d> dlibFaceBox(const cv::Mat &bgr, const FaceDetection &face);
+    Eigen::VectorXd dlibLandmarksInBox(const cv::Mat &bgr, const cv::Rect2d &box);
 
     // Where the YuNet model was found (empty if not).
     static std::string findYunetModel();

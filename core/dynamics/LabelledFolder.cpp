@@ -2,6 +2,7 @@
 
 #include "dynamics/PhoneLabels.h"
 #include "io/FeatureCsv.h"
+#include "project/Project.h"
 #include "util/Error.h"
 
 #include <QDir>
@@ -70,6 +71,31 @@ std::vector<LabelledSequence> loadLabelledFolder(const std::string &featuresDir,
         out.push_back(std::move(s));
     }
     return out;
+}
+
+std::vector<LabelledSequence> loadProjectSequences(const Project &project, std::vector<int> *projectIndex)
+{
+    std::vector<LabelledSequence> sequences;
+    if (projectIndex)
+        projectIndex->clear();
+    for (size_t i = 0; i < project.sequences.size(); ++i) {
+        const Sequence &s = project.sequences[i];
+        if (s.features.rows() == 0 || s.phones.isEmpty())
+            continue;
+        LabelledSequence ls;
+        ls.name = s.id;
+        ls.features = s.features;
+        ls.labels = frameLabelsFromTier(s.phones, s.frameRate, int(s.features.rows()),
+                                        project.manifestPath() + ": " + s.id);
+        sequences.push_back(std::move(ls));
+        if (projectIndex)
+            projectIndex->push_back(int(i));
+    }
+    if (sequences.empty())
+        throw Error("no sequence has both face features and a phone alignment "
+                    "(track the faces and align the speech first)",
+                    project.manifestPath());
+    return sequences;
 }
 
 } // namespace lipsync

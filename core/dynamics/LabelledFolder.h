@@ -18,4 +18,13 @@ namespace lipsync {
 std::vector<LabelledSequence> loadLabelledFolder(const std::string &featuresDir,
                                                  const std::string &labelsDir, double fps = 0.0);
 
+class Project;
+// Training data of a project (`--project DIR`): every sequence with both face features and a phone
+// tier, in project order, labelled by the §0 vote at the sequence's own frame rate, one label per
+// feature row. `projectIndex` (if given) receives each one's index in project.sequences. The
+// k-fold split of `lipsync evaluate` is over this list. Throws lipsync::Error naming the manifest
+// when no sequence qualifies.
+std::vector<LabelledSequence> loadProjectSequences(const Project &project,
+                                                   std::vector<int> *projectIndex = nullptr);
+
 } // namespace lipsync

@@ -57,29 +57,77 @@ std::vector<FoldOutcome> runFold(const std::vector<LabelledSequence> &sequences,
                                  const std::vector<int> &test, const EvaluationOptions &options,
                                  const ModelOptions &modelOptions, int f, Feedback &feedback)
 {
-    std::vector<bool> isTest(sequences.size(), false);
+    std::vector<double> wall, cpu;
+    const std::vector<std::shared_ptr<DynamicModel>> models
+        = trainFoldModels(trainingSequences(sequences, test), options.kinds, modelOptions, feedback,
+                          "fold " + std::to_string(f + 1) + "/" + std::to_string(options.folds) + ": ", &wall, &cpu);
+    std::vector<FoldOutcome> out(options.kinds.size());
+    for (size_t index = 0; index < models.size(); ++index) {
+        const DynamicModel &model = *models[index];
+        FoldOutcome &o = out[index];
+        o.trainingSeconds = wall[index];
+        o.trainingCpuSeconds = cpu[index];
+        // Fold value = mean over the fold's test sequences, each weighted equally (§6.3).
+        for (int i : test) {
+            const LabelledSequence &s = sequences[size_t(i)];
+            const SequenceErrors e = sequenceErrors(model.generate(s.labels), s.features);
+            o.l1 += e.l1;
+            o.rms += e.rms;
+            o.linf += e.linf;
+            // A density over y for every model (Brand's trajectory density, §2.2), so the
+            // models' values are comparable.
+            o.loglik += model.trajectoryLogLikelihood(s.labels, s.features) / double(s.frameCount());
+        }
+        const double n = double(test.size());
+        o.l1 /= n;
+        o.rms /= n;
+        o.linf /= n;
+        o.loglik /= n;
+    }
+    return out;
+}
+
+} // namespace
+
+std::vector<LabelledSequence> trainingSequences(const std::vector<LabelledSequence> &all,
+                                                const std::vector<int> &test)
+{
+    std::vector<bool> isTest(all.size(), false);
     for (int i : test)
         isTest[size_t(i)] = true;
     std::vector<LabelledSequence> training;
-    for (size_t i = 0; i < sequences.size(); ++i)
+    for (size_t i = 0; i < all.size(); ++i)
         if (!isTest[i])
-            training.push_back(sequences[i]);
+            training.push_back(all[i]);
+    return training;
+}
+
+std::vector<std::shared_ptr<DynamicModel>> trainFoldModels(const std::vector<LabelledSequence> &training,
+                                                           const std::vector<std::string> &kinds,
+                                                           const ModelOptions &modelOptions,
+                                                           Feedback &feedback, const std::string &statusPrefix,
+                                                           std::vector<double> *wallSeconds,
+                                                           std::vector<double> *cpuSeconds)
+{
     // The DPDS is trained before the SLDS, which starts from it (§3.4 initialisation) instead
     // of training its own: the SLDS training time then excludes the shared DPDS fit.
-    std::vector<size_t> order(options.kinds.size());
+    std::vector<size_t> order(kinds.size());
     for (size_t i = 0; i < order.size(); ++i)
         order[i] = i;
     std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-        return options.kinds[a] == "dpds" && options.kinds[b] != "dpds";
+        return kinds[a] == "dpds" && kinds[b] != "dpds";
     });
-    std::vector<FoldOutcome> out(options.kinds.size());
+    std::vector<std::shared_ptr<DynamicModel>> models(kinds.size());
+    if (wallSeconds)
+        wallSeconds->assign(kinds.size(), 0.0);
+    if (cpuSeconds)
+        cpuSeconds->assign(kinds.size(), 0.0);
     std::shared_ptr<const DpdsModel> foldDpds;
     for (size_t step = 0; step < order.size(); ++step) {
         const size_t index = order[step];
-        const std::string &kind = options.kinds[index];
+        const std::string &kind = kinds[index];
         feedback.throwIfCanceled();
-        feedback.setStatus("fold " + std::to_string(f + 1) + "/" + std::to_string(options.folds) + ": "
-                           + kind);
+        feedback.setStatus(statusPrefix + kind);
         std::shared_ptr<DynamicModel> model = createDynamicModel(kind, modelOptions);
         if (auto *slds = dynamic_cast<SldsModel *>(model.get()); slds && foldDpds)
             slds->setInitialisation(foldDpds);
@@ -88,34 +136,17 @@ std::vector<FoldOutcome> runFold(const std::vector<LabelledSequence> &sequences,
         const auto start = std::chrono::steady_clock::now();
         const double cpuStart = threadCpuSeconds();
         model->train(training, child);
-        const double cpuSeconds = threadCpuSeconds() - cpuStart;
+        if (cpuSeconds)
+            (*cpuSeconds)[index] = threadCpuSeconds() - cpuStart;
+        if (wallSeconds)
+            (*wallSeconds)[index] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (kind == "dpds")
             foldDpds = std::static_pointer_cast<const DpdsModel>(model);
-        FoldOutcome &o = out[index];
-        o.trainingSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        o.trainingCpuSeconds = cpuSeconds;
-        // Fold value = mean over the fold's test sequences, each weighted equally (§6.3).
-        for (int i : test) {
-            const LabelledSequence &s = sequences[size_t(i)];
-            const SequenceErrors e = sequenceErrors(model->generate(s.labels), s.features);
-            o.l1 += e.l1;
-            o.rms += e.rms;
-            o.linf += e.linf;
-            // A density over y for every model (Brand's trajectory density, §2.2), so the
-            // models' values are comparable.
-            o.loglik += model->trajectoryLogLikelihood(s.labels, s.features) / double(s.frameCount());
-        }
-        const double n = double(test.size());
-        o.l1 /= n;
-        o.rms /= n;
-        o.linf /= n;
-        o.loglik /= n;
+        models[index] = std::move(model);
         feedback.setProgress(double(step + 1) / steps);
     }
-    return out;
+    return models;
 }
-
-} // namespace
 
 EvaluationResult evaluateModels(const std::vector<LabelledSequence> &sequences,
                                 const EvaluationOptions &options, Feedback &feedback)
@@ -237,6 +268,19 @@ QJsonArray toArray(const std::vector<double> &v)
 }
 } // namespace
 
+QJsonObject MetricSummary::toJson() const
+{
+    auto number = [](double v) { return std::isfinite(v) ? QJsonValue(v) : QJsonValue(); };
+    QJsonArray values;
+    for (double v : folds)
+        values.append(number(v));
+    QJsonObject o;
+    o[QStringLiteral("mean")] = number(mean);
+    o[QStringLiteral("ci95")] = number(ci95);
+    o[QStringLiteral("folds")] = values;
+    return o;
+}
+
 QJsonObject EvaluationResult::toJson() const
 {
     QJsonObject o;
@@ -248,13 +292,8 @@ QJsonObject EvaluationResult::toJson() const
     QJsonObject modelsObject;
     for (const ModelEvaluation &m : models) {
         QJsonObject mo;
-        for (const auto &[name, summary] : m.metrics) {
-            QJsonObject so;
-            so[QStringLiteral("mean")] = summary.mean;
-            so[QStringLiteral("ci95")] = summary.ci95;
-            so[QStringLiteral("folds")] = toArray(summary.folds);
-            mo[QString::fromStdString(name)] = so;
-        }
+        for (const auto &[name, summary] : m.metrics)
+            mo[QString::fromStdString(name)] = summary.toJson();
         double total = 0;
         for (double s : m.trainingSeconds)
             total += s;

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,9 @@ struct MetricSummary
     std::vector<double> folds; // fold values e_f
     double mean = 0.0;
     double ci95 = 0.0; // half-width
+
+    // {"mean", "ci95", "folds"}; values that are not finite are null.
+    QJsonObject toJson() const;
 };
 
 struct ModelEvaluation
@@ -73,6 +77,22 @@ struct EvaluationResult
 const std::vector<std::string> &evaluationMetrics();
 // What the "loglik" metric is, for the reports (JSON, the CLI table).
 const char *logLikelihoodNote();
+
+// The sequences of `all` not in `test` (a fold's training set, in order).
+std::vector<LabelledSequence> trainingSequences(const std::vector<LabelledSequence> &all,
+                                                const std::vector<int> &test);
+
+// One fold's models, trained on `training` (§6.1): one per entry of `kinds`, in that order; the
+// DPDS is trained before the SLDS, which starts from it (§3.4). `wallSeconds` and `cpuSeconds`
+// (if given) receive each model's training time (CPU of the calling thread). The status names
+// each model after `statusPrefix`.
+std::vector<std::shared_ptr<DynamicModel>> trainFoldModels(const std::vector<LabelledSequence> &training,
+                                                           const std::vector<std::string> &kinds,
+                                                           const ModelOptions &modelOptions,
+                                                           Feedback &feedback,
+                                                           const std::string &statusPrefix = {},
+                                                           std::vector<double> *wallSeconds = nullptr,
+                                                           std::vector<double> *cpuSeconds = nullptr);
 
 // Throws lipsync::Error for invalid sequences (validateSequences) or too few sequences.
 EvaluationResult evaluateModels(const std::vector<LabelledSequence> &sequences,

@@ -297,6 +297,17 @@ private slots:
         QCOMPARE(runLipsync({"train", "--features", m_features}).exitCode, 2);
         QCOMPARE(runLipsync({"generate", "--model", model}).exitCode, 2);
         QCOMPARE(runLipsync({"evaluate", "--features", m_features, "--labels", m_labels, "--folds", "1"}).exitCode, 2);
+        // --realism renders into a project's media: features and labels alone are bad usage, and so
+        // are the options that only the error metrics have.
+        Run realism = runLipsync({"evaluate", "--realism", "--features", m_features, "--labels", m_labels});
+        QCOMPARE(realism.exitCode, 2);
+        QVERIFY2(realism.err.contains("--project"), realism.err.constData());
+        QCOMPARE(runLipsync({"evaluate", "--realism", "--project", m_dir.path(), "--csv", "x.csv"}).exitCode, 2);
+        QCOMPARE(runLipsync({"evaluate", "--realism", "--project", m_dir.path(), "--max-lag", "-1"}).exitCode, 2);
+        QCOMPARE(runLipsync({"evaluate", "--features", m_features, "--labels", m_labels, "--max-lag", "3"}).exitCode, 2);
+        realism = runLipsync({"evaluate", "--help"});
+        QCOMPARE(realism.exitCode, 0);
+        QVERIFY(realism.out.contains("--realism") && realism.out.contains("dlib"));
         QCOMPARE(runLipsync({"train", "--kind", "hmm", "--features", m_features, "--labels", m_labels, "--out", model, "--bogus"}).exitCode, 2);
         // Bad data: exit 1 with one line naming the file.
         QTemporaryDir bad;

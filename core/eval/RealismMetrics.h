@@ -1,0 +1,79 @@
+#pragma once
+// The per-sequence measures of the realism report (docs/models.md §6.5), on signals and images
+// alone so each can be checked against known answers. Openings are per video frame; NaN marks a
+// frame where no face was found, and every measure skips those frames.
+//  - innerLipOpening: from dlib's 68 iBUG points (0-based), the mean distance between the inner
+//    lips' upper and lower points (61/67, 62/66, 63/65) measured perpendicular to the line through
+//    the outer eye corners (36, 45), divided by that corner distance, so head size and roll do not
+//    matter.
+//  - closedLevel: the opening at or below which the lips count as closed in a clip, from the
+//    recording: its 10th percentile plus 30 % of its 10th-90th percentile spread (dlib's inner
+//    lips at a /p b m/ closure in running speech stay 10-40 % of that spread above their level
+//    at rest on the demo clips).
+//  - bilabial segments: the /p b m/ intervals of the phone tier as video-frame ranges, widened by
+//    a frame either way for the aligner's error (92 % of GRID boundaries within 40 ms); a segment
+//    is closed when the opening reaches the closed level in one of its frames.
+//  - avLag: the lag L in [-maxLag, maxLag] maximising the Pearson correlation of opening[t + L]
+//    with the audio energy at frame t (positive: the lips follow the sound).
+//  - gradientEnergy: mean squared Laplacian response of the grey image in a box (sharpness).
+//  - seamDeltaE: mean CIE Lab ΔE (1976) across the edge of a synthesised region.
+#include "project/Tier.h"
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include <vector>
+
+namespace lipsync {
+
+struct AudioBuffer;
+
+double innerLipOpening(const Eigen::VectorXd &ibug68);
+// The bounding box of the 20 mouth points (48-67), grown by `margin` of its size on every side.
+cv::Rect2d mouthBox(const Eigen::VectorXd &ibug68, double margin = 0.25);
+
+// Pearson correlation over the frames where both are finite; NaN with fewer than 3 such frames
+// or a constant signal.
+double pearsonOverFrames(const std::vector<double> &a, const std::vector<double> &b);
+// s.d.(generated) / s.d.(recorded) over the frames where both are finite; NaN if undefined.
+double articulationRatio(const std::vector<double> &generated, const std::vector<double> &recorded);
+
+double closedLevel(const std::vector<double> &recordedOpening, double tolerance = 0.3);
+
+struct FrameRange
+{
+    int first = 0;
+    int last = 0; // inclusive
+};
+// The /p b m/ (ARPAbet P, B, M) intervals of `phones` as the frames they overlap at `fps`,
+// widened by `margin` frames either way, clipped to [0, frames).
+std::vector<FrameRange> bilabialSegments(const Tier &phones, double fps, int frames, int margin = 1);
+// How many segments have a frame whose opening is at most `level` (frames without a face skipped).
+int closedSegments(const std::vector<double> &opening, const std::vector<FrameRange> &segments,
+                   double level);
+
+// Log energy (dB) of the audio in each video frame's interval [t/fps, (t+1)/fps).
+std::vector<double> audioEnergyPerFrame(const AudioBuffer &audio, double fps, int frames);
+// NaN when no lag has a defined correlation.
+double avLag(const std::vector<double> &opening, const std::vector<double> &energy, int maxLag = 5);
+
+// Mean squared 3x3 Laplacian of the grey image inside `box` (clipped to the image); NaN if empty.
+double gradientEnergy(const cv::Mat &bgr, const cv::Rect2d &box);
+
+// The synthesised region of a composite as an 8-bit weight (255 fully synthesised, 0 untouched):
+// the same face composited onto a black and a white frame differs by the untouched share.
+cv::Mat synthesisedWeight(const cv::Mat &onBlack, const cv::Mat &onWhite);
+
+struct SeamDeltaE
+{
+    double frame = 0.0;     // in the frame given (the composite)
+    double reference = 0.0; // at the same pixel pairs in the reference frame (the recording)
+    int pairs = 0;
+};
+// Pairs every untouched pixel within `band` pixels outside the region with the nearest fully
+// synthesised pixel within `band` pixels inside its (feathered) edge, and averages the ΔE of the
+// pairs (colours smoothed over 3x3) in `frame` and in `reference`. NaN values without pairs.
+SeamDeltaE seamDeltaE(const cv::Mat &frame, const cv::Mat &reference, const cv::Mat &weight,
+                      int band = 3);
+
+} // namespace lipsync

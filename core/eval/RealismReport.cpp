@@ -1,0 +1,390 @@
+#include "eval/RealismReport.h"
+
+#include "aam/AamModel.h"
+#include "aam/FaceDetector.h"
+#include "dynamics/LabelledFolder.h"
+#include "eval/CrossValidation.h"
+#include "eval/RealismMetrics.h"
+#include "eval/Statistics.h"
+#include "io/AudioDecoder.h"
+#include "project/Project.h"
+#include "render/FaceRenderer.h"
+#include "tasks/BlockingMap.h"
+#include "tasks/Feedback.h"
+#include "util/Error.h"
+
+#include <QJsonArray>
+
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <mutex>
+
+namespace lipsync {
+
+const std::vector<std::string> &realismMetrics()
+{
+    static const std::vector<std::string> names{"correlation", "articulation", "closure", "lag",
+                                                "sharpness", "seamDeltaE", "seamDeltaERecorded"};
+    return names;
+}
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+const std::string kTracked = "tracked";
+
+// Detectors for the worker threads: dlib's predictor takes a second or two to load, and one
+// detector must not be used by two threads at once.
+struct DetectorPool
+{
+    FaceDetectorPaths paths;
+    std::mutex mutex;
+    std::vector<std::unique_ptr<FaceDetector>> idle;
+
+    std::unique_ptr<FaceDetector> take()
+    {
+        {
+            const std::lock_guard lock(mutex);
+            if (!idle.empty()) {
+                auto d = std::move(idle.back());
+                idle.pop_back();
+                return d;
+            }
+        }
+        return std::make_unique<FaceDetector>(paths);
+    }
+    void give(std::unique_ptr<FaceDetector> d)
+    {
+        const std::lock_guard lock(mutex);
+        idle.push_back(std::move(d));
+    }
+};
+
+double meanOfFinite(const std::vector<double> &values)
+{
+    double sum = 0;
+    int n = 0;
+    for (double v : values)
+        if (std::isfinite(v)) {
+            sum += v;
+            ++n;
+        }
+    return n ? sum / n : kNaN;
+}
+
+// Mean over frames of `generated` divided by that of `recorded`, over the frames where both are finite.
+double ratioOfMeans(const std::vector<double> &generated, const std::vector<double> &recorded)
+{
+    double g = 0, r = 0;
+    for (size_t t = 0; t < std::min(generated.size(), recorded.size()); ++t)
+        if (std::isfinite(generated[t]) && std::isfinite(recorded[t])) {
+            g += generated[t];
+            r += recorded[t];
+        }
+    return r > 0 ? g / r : kNaN;
+}
+
+struct Rendering
+{
+    std::string method;
+    Eigen::MatrixXd features;
+};
+
+// Renders and measures one held-out sequence (see the header).
+RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPath, const Sequence &sequence,
+                                const std::vector<Rendering> &renderings, FaceDetector &detector,
+                                int maxLag, Feedback &feedback)
+{
+    FaceRenderer renderer(aam, mediaPath, feedback, &detector);
+    int frames = renderer.videoFrameCount();
+    for (const Rendering &r : renderings)
+        frames = std::min(frames, int(r.features.rows()));
+    RealismSequence out;
+    out.name = sequence.id;
+    out.frames = frames;
+    const size_t methods = renderings.size();
+    std::vector<double> recordedOpening(size_t(frames), kNaN), recordedSharpness(size_t(frames), kNaN);
+    std::vector<std::vector<double>> opening(methods, recordedOpening), sharpness(methods, recordedOpening),
+        seam(methods, recordedOpening), seamRecorded(methods, recordedOpening);
+    std::vector<int> skipped(methods, 0);
+    cv::Mat generated;
+    cv::Mat onBlack(renderer.frameSize(), CV_8UC3), onWhite(renderer.frameSize(), CV_8UC3);
+    for (int t = 0; t < frames; ++t) {
+        feedback.throwIfCanceled();
+        const cv::Mat recorded = renderer.background(t);
+        const std::vector<FaceDetection> faces = detector.detect(recorded);
+        const std::optional<cv::Rect2d> box
+            = faces.empty() ? std::nullopt : detector.dlibFaceBox(recorded, faces.front());
+        const Eigen::VectorXd points = box ? detector.dlibLandmarksInBox(recorded, *box) : Eigen::VectorXd();
+        if (points.size() != 136) {
+            ++out.skippedFrames;
+            continue;
+        }
+        const size_t ut = size_t(t);
+        recordedOpening[ut] = innerLipOpening(points);
+        const cv::Rect2d mouth = mouthBox(points);
+        recordedSharpness[ut] = gradientEnergy(recorded, mouth);
+        for (size_t m = 0; m < methods; ++m) {
+            const Eigen::VectorXd c = renderings[m].features.row(t).transpose();
+            recorded.copyTo(generated);
+            renderer.renderInto(t, c, generated);
+            const Eigen::VectorXd rendered = detector.dlibLandmarksInBox(generated, *box);
+            if (rendered.size() != 136)
+                ++skipped[m];
+            else
+                opening[m][ut] = innerLipOpening(rendered);
+            sharpness[m][ut] = gradientEnergy(generated, mouth);
+            onBlack.setTo(cv::Scalar::all(0));
+            onWhite.setTo(cv::Scalar::all(255));
+            renderer.renderInto(t, c, onBlack);
+            renderer.renderInto(t, c, onWhite);
+            const SeamDeltaE s = seamDeltaE(generated, recorded, synthesisedWeight(onBlack, onWhite));
+            seam[m][ut] = s.frame;
+            seamRecorded[m][ut] = s.reference;
+        }
+        feedback.setProgress(double(t + 1) / frames);
+    }
+
+    std::vector<double> energy(size_t(frames), kNaN);
+    try {
+        energy = audioEnergyPerFrame(AudioDecoder::decode(mediaPath), sequence.frameRate, frames);
+    } catch (const Error &) {
+        // No sound: the lag is undefined, everything else stands.
+    }
+    out.lagRecorded = avLag(recordedOpening, energy, maxLag);
+    out.closedLevel = closedLevel(recordedOpening);
+    const std::vector<FrameRange> bilabials = bilabialSegments(sequence.phones, sequence.frameRate, frames);
+    out.bilabials = int(bilabials.size());
+    out.closedRecorded = closedSegments(recordedOpening, bilabials, out.closedLevel);
+    out.recordedOpening = recordedOpening;
+    for (size_t m = 0; m < methods; ++m) {
+        RealismSequenceMethod r;
+        r.correlation = pearsonOverFrames(opening[m], recordedOpening);
+        r.articulation = articulationRatio(opening[m], recordedOpening);
+        r.lag = avLag(opening[m], energy, maxLag) - out.lagRecorded;
+        r.sharpness = ratioOfMeans(sharpness[m], recordedSharpness);
+        r.seamDeltaE = meanOfFinite(seam[m]);
+        r.seamDeltaERecorded = meanOfFinite(seamRecorded[m]);
+        r.closed = closedSegments(opening[m], bilabials, out.closedLevel);
+        r.skippedFrames = skipped[m];
+        r.opening = std::move(opening[m]);
+        out.methods[renderings[m].method] = r;
+    }
+    return out;
+}
+
+// The value of `metric` over one fold's sequences for one method (§6.3: the mean over the
+// sequences where it is defined; closure pools the fold's segments).
+double foldValue(const std::vector<const RealismSequence *> &fold, const std::string &method,
+                 const std::string &metric)
+{
+    if (metric == "closure") {
+        int generated = 0, recorded = 0;
+        for (const RealismSequence *s : fold) {
+            generated += s->methods.at(method).closed;
+            recorded += s->closedRecorded;
+        }
+        return recorded > 0 ? double(generated) / recorded : kNaN;
+    }
+    std::vector<double> values;
+    for (const RealismSequence *s : fold) {
+        const RealismSequenceMethod &r = s->methods.at(method);
+        values.push_back(metric == "correlation"    ? r.correlation
+                         : metric == "articulation" ? r.articulation
+                         : metric == "lag"          ? r.lag
+                         : metric == "sharpness"    ? r.sharpness
+                         : metric == "seamDeltaE"   ? r.seamDeltaE
+                                                    : r.seamDeltaERecorded);
+    }
+    return meanOfFinite(values);
+}
+
+QJsonValue number(double v)
+{
+    return std::isfinite(v) ? QJsonValue(v) : QJsonValue();
+}
+
+QJsonArray numbers(const std::vector<double> &values)
+{
+    QJsonArray a;
+    for (double v : values)
+        a.append(number(v));
+    return a;
+}
+
+} // namespace
+
+RealismResult evaluateRealism(const Project &project, const RealismOptions &options, Feedback &feedback)
+{
+    const EvaluationOptions &cv = options.crossValidation;
+    const ModelReference *aamReference = project.model("aam");
+    if (!aamReference)
+        throw Error("the project has no AAM (build or import one first)", project.manifestPath());
+    for (const std::string &kind : cv.kinds)
+        createDynamicModel(kind); // reject unknown kinds before any work
+    DetectorPool pool;
+    pool.paths.dlibPredictor = options.dlibPredictor;
+    {
+        auto first = pool.take();
+        if (!first->hasDlib())
+            throw Error("dlib's 68-point shape predictor is not available (install Debian's libdlib-data)",
+                        options.dlibPredictor.empty() ? "/usr/share/dlib/shape_predictor_68_face_landmarks.dat"
+                                                      : options.dlibPredictor);
+        pool.give(std::move(first));
+    }
+    std::vector<int> projectIndex;
+    const std::vector<LabelledSequence> sequences = loadProjectSequences(project, &projectIndex);
+    validateSequences(sequences);
+    const AamModel aam = AamModel::load(project.resolve(aamReference->file));
+
+    RealismResult result;
+    result.folds = cv.folds;
+    result.seed = cv.seed;
+    result.sequences = int(sequences.size());
+    result.foldMembers = makeFolds(int(sequences.size()), cv.folds, cv.seed);
+
+    // Training takes a small share of the time next to rendering and landmarking.
+    Feedback training(feedback, 0.0, 0.1);
+    std::vector<std::vector<std::shared_ptr<DynamicModel>>> models;
+    for (int f = 0; f < cv.folds; ++f) {
+        Feedback child(training, double(f) / cv.folds, double(f + 1) / cv.folds);
+        models.push_back(trainFoldModels(trainingSequences(sequences, result.foldMembers[size_t(f)]),
+                                         cv.kinds, cv.modelOptions, child,
+                                         "fold " + std::to_string(f + 1) + "/" + std::to_string(cv.folds) + ": "));
+    }
+
+    // Every held-out sequence on its own: rendering and landmarking are independent per sequence.
+    struct Item
+    {
+        int sequence = 0, fold = 0;
+        RealismSequence result;
+    };
+    std::vector<Item> items;
+    for (int f = 0; f < cv.folds; ++f)
+        for (int i : result.foldMembers[size_t(f)])
+            items.push_back({i, f, {}});
+    std::mutex mutex;
+    std::atomic<int> done{0};
+    std::atomic<bool> stop{false};
+    std::exception_ptr firstError;
+    feedback.setStatus("rendering and landmarking the held-out sequences");
+    lipsync::blockingMap(items, [&](Item &item) {
+        if (stop.load())
+            return;
+        std::unique_ptr<FaceDetector> detector = pool.take();
+        try {
+            Feedback own;
+            own.onProgress = [&](double) {
+                if (stop.load() || feedback.isCanceled())
+                    own.cancel();
+            };
+            const LabelledSequence &s = sequences[size_t(item.sequence)];
+            const Sequence &sequence = project.sequences[size_t(projectIndex[size_t(item.sequence)])];
+            std::vector<Rendering> renderings{{kTracked, s.features}};
+            for (size_t k = 0; k < cv.kinds.size(); ++k)
+                renderings.push_back({cv.kinds[k], models[size_t(item.fold)][k]->generate(s.labels)});
+            item.result = measureSequence(aam, project.mediaPath(sequence), sequence, renderings, *detector,
+                                          options.maxLag, own);
+            item.result.fold = item.fold;
+            feedback.setProgress(0.1 + 0.9 * double(++done) / double(items.size()));
+        } catch (...) {
+            const std::lock_guard lock(mutex);
+            if (!firstError)
+                firstError = std::current_exception();
+            stop = true;
+        }
+        pool.give(std::move(detector));
+    });
+    if (firstError)
+        std::rethrow_exception(firstError);
+    feedback.throwIfCanceled();
+
+    std::vector<std::vector<const RealismSequence *>> byFold(size_t(cv.folds));
+    for (const Item &item : items) {
+        result.frames += item.result.frames;
+        result.skippedFrames += item.result.skippedFrames;
+        result.bilabials += item.result.bilabials;
+        result.closedRecorded += item.result.closedRecorded;
+        byFold[size_t(item.fold)].push_back(&item.result);
+    }
+    std::vector<std::string> methods{kTracked};
+    methods.insert(methods.end(), cv.kinds.begin(), cv.kinds.end());
+    for (const std::string &method : methods) {
+        RealismMethod m;
+        m.kind = method;
+        for (const std::string &metric : realismMetrics()) {
+            MetricSummary &summary = m.metrics[metric];
+            std::vector<double> defined;
+            for (const auto &fold : byFold) {
+                summary.folds.push_back(foldValue(fold, method, metric));
+                if (std::isfinite(summary.folds.back()))
+                    defined.push_back(summary.folds.back());
+            }
+            const stats::MeanInterval interval = stats::meanWithCi95(defined);
+            summary.mean = defined.empty() ? kNaN : interval.mean;
+            summary.ci95 = defined.size() < 2 ? kNaN : interval.halfWidth;
+        }
+        result.methods.push_back(std::move(m));
+    }
+    // Sequences in project order.
+    std::sort(items.begin(), items.end(), [](const Item &a, const Item &b) { return a.sequence < b.sequence; });
+    for (Item &item : items)
+        result.perSequence.push_back(std::move(item.result));
+    feedback.setProgress(1.0);
+    return result;
+}
+
+QJsonObject RealismResult::toJson() const
+{
+    QJsonObject o;
+    o[QStringLiteral("folds")] = folds;
+    o[QStringLiteral("seed")] = QString::number(seed);
+    o[QStringLiteral("sequences")] = sequences;
+    o[QStringLiteral("frames")] = double(frames);
+    o[QStringLiteral("skippedFrames")] = double(skippedFrames);
+    o[QStringLiteral("bilabials")] = bilabials;
+    o[QStringLiteral("closedRecorded")] = closedRecorded;
+    QJsonObject methodsObject;
+    for (const RealismMethod &m : methods) {
+        QJsonObject mo;
+        for (const auto &[name, summary] : m.metrics)
+            mo[QString::fromStdString(name)] = summary.toJson();
+        methodsObject[QString::fromStdString(m.kind)] = mo;
+    }
+    o[QStringLiteral("methods")] = methodsObject;
+    QJsonArray sequencesArray;
+    for (const RealismSequence &s : perSequence) {
+        QJsonObject so;
+        so[QStringLiteral("name")] = QString::fromStdString(s.name);
+        so[QStringLiteral("fold")] = s.fold;
+        so[QStringLiteral("frames")] = s.frames;
+        so[QStringLiteral("skippedFrames")] = s.skippedFrames;
+        so[QStringLiteral("bilabials")] = s.bilabials;
+        so[QStringLiteral("closedRecorded")] = s.closedRecorded;
+        so[QStringLiteral("closedLevel")] = number(s.closedLevel);
+        so[QStringLiteral("lagRecorded")] = number(s.lagRecorded);
+        so[QStringLiteral("recordedOpening")] = numbers(s.recordedOpening);
+        QJsonObject mo;
+        for (const auto &[method, r] : s.methods) {
+            QJsonObject ro;
+            ro[QStringLiteral("correlation")] = number(r.correlation);
+            ro[QStringLiteral("articulation")] = number(r.articulation);
+            ro[QStringLiteral("lag")] = number(r.lag);
+            ro[QStringLiteral("sharpness")] = number(r.sharpness);
+            ro[QStringLiteral("seamDeltaE")] = number(r.seamDeltaE);
+            ro[QStringLiteral("seamDeltaERecorded")] = number(r.seamDeltaERecorded);
+            ro[QStringLiteral("closed")] = r.closed;
+            ro[QStringLiteral("skippedFrames")] = r.skippedFrames;
+            ro[QStringLiteral("opening")] = numbers(r.opening);
+            mo[QString::fromStdString(method)] = ro;
+        }
+        so[QStringLiteral("methods")] = mo;
+        sequencesArray.append(so);
+    }
+    o[QStringLiteral("perSequence")] = sequencesArray;
+    return o;
+}
+
+} // namespace lipsync

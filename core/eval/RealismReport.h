@@ -1,0 +1,101 @@
+#pragma once
+// The realism report (docs/models.md §6.5): how much rendered faces move like the recording, on
+// held-out sequences. The project's sequences are split into the folds of `lipsync evaluate`
+// (§6.1, same seed, same list); every dynamic model is trained on the other folds, generates the
+// held-out sequence from its phone labels, and is rendered into the recording's frames exactly as
+// the studio's preview and `lipsync render` draw it (core/render FaceRenderer: AAM synthesis
+// composited at the tracked head pose). "tracked" renders the sequence's own tracked parameters
+// the same way: the AAM's re-synthesis, the ceiling the AAM allows.
+//
+// The lips are measured on the pixels, with dlib's 68-point predictor, independent of the AAM: on
+// every frame of the recording the face is detected (core/aam FaceDetector) and the points
+// predicted in dlib's box; each rendering of that frame is measured in the same box (the renderer
+// draws the face at the recorded pose, so the head is where it was). A frame of the recording
+// without a face is skipped and counted. Per sequence and method (core/eval/RealismMetrics):
+//   correlation  Pearson correlation of the generated and the recorded lip opening over frames;
+//   articulation s.d. of the generated opening / s.d. of the recorded one;
+//   closure      /p b m/ segments where the lips reach the clip's closed level, generated /
+//                recorded (pooled over a fold's sequences);
+//   lag          the audio-visual lag (frames) of the generated opening minus the recording's;
+//   sharpness    mean squared Laplacian in the mouth box, generated / recorded;
+//   seamDeltaE   mean CIE Lab ΔE across the edge of the synthesised region in the render, and
+//                seamDeltaERecorded the same pixel pairs in the recording (its natural contrast).
+// Fold value = mean over the fold's sequences (those where the value is defined); reported as the
+// mean over folds with a 95 % t interval (§6.3).
+#include "dynamics/ModelFile.h"
+#include "eval/Evaluation.h"
+
+#include <QJsonObject>
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace lipsync {
+
+class Feedback;
+class Project;
+
+struct RealismOptions
+{
+    // The folds, seed, models and model options of `lipsync evaluate` (parallelFolds is not used:
+    // the held-out sequences are measured in parallel).
+    EvaluationOptions crossValidation;
+    int maxLag = 5;            // audio-visual lags searched, frames either way
+    std::string dlibPredictor; // empty: /usr/share/dlib/shape_predictor_68_face_landmarks.dat
+};
+
+struct RealismSequenceMethod
+{
+    double correlation = 0, articulation = 0, lag = 0, sharpness = 0;
+    double seamDeltaE = 0, seamDeltaERecorded = 0;
+    int closed = 0;         // bilabial segments closed in the render
+    int skippedFrames = 0;  // frames the predictor found no lips in the render
+    std::vector<double> opening; // per frame (NaN: not measured)
+};
+
+struct RealismSequence
+{
+    std::string name;
+    int fold = 0;
+    int frames = 0;
+    int skippedFrames = 0; // frames of the recording without a face
+    int bilabials = 0;     // /p b m/ segments
+    int closedRecorded = 0;
+    double closedLevel = 0; // the recording's closed lip opening
+    double lagRecorded = 0;
+    std::vector<double> recordedOpening; // per frame (NaN: no face)
+    std::map<std::string, RealismSequenceMethod> methods; // "tracked", "dpds", ...
+};
+
+struct RealismMethod
+{
+    std::string kind;
+    std::map<std::string, MetricSummary> metrics; // realismMetrics()
+};
+
+struct RealismResult
+{
+    int folds = 0;
+    std::uint64_t seed = 0;
+    int sequences = 0;
+    long long frames = 0;
+    long long skippedFrames = 0;
+    int bilabials = 0;      // /p b m/ segments of all sequences
+    int closedRecorded = 0; // of them closed in the recording
+    std::vector<std::vector<int>> foldMembers;
+    std::vector<RealismMethod> methods; // tracked first, then the options' kinds
+    std::vector<RealismSequence> perSequence;
+
+    QJsonObject toJson() const;
+};
+
+// correlation, articulation, closure, lag, sharpness, seamDeltaE, seamDeltaERecorded.
+const std::vector<std::string> &realismMetrics();
+
+// Throws lipsync::Error naming the project when it has no AAM, no sequence with features and
+// phones, a sequence without media, or when dlib's predictor is not installed; Canceled.
+RealismResult evaluateRealism(const Project &project, const RealismOptions &options, Feedback &feedback);
+
+} // namespace lipsync
