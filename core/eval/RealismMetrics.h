@@ -17,7 +17,7 @@
 //    with the audio energy at frame t (positive: the lips follow the sound).
 //  - gradientEnergy: mean squared Laplacian response of the grey image in a box (sharpness).
 //  - seamDeltaE: mean CIE Lab ΔE (1976) across the edge of a synthesised region.
-#include "project/Tier.h"
+#include "annotation/Tier.h"
 
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
