@@ -12,7 +12,7 @@ namespace lipsync {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNoMeasure = std::numeric_limits<double>::quiet_NaN();
 
 Eigen::Vector2d point(const Eigen::VectorXd &shape, int i)
 {
@@ -25,7 +25,7 @@ double percentile(std::vector<double> values, double p)
     values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }),
                  values.end());
     if (values.empty())
-        return kNaN;
+        return kNoMeasure;
     std::sort(values.begin(), values.end());
     const double x = p * double(values.size() - 1);
     const size_t i = size_t(std::floor(x));
@@ -81,7 +81,7 @@ bool negligible(double variance, double mean)
 double correlation(const PairedMoments &m)
 {
     if (m.n < 3 || negligible(m.varA, m.meanA) || negligible(m.varB, m.meanB))
-        return kNaN;
+        return kNoMeasure;
     return m.cov / std::sqrt(m.varA * m.varB);
 }
 
@@ -90,11 +90,11 @@ double correlation(const PairedMoments &m)
 double innerLipOpening(const Eigen::VectorXd &ibug68)
 {
     if (ibug68.size() != 136)
-        return kNaN;
+        return kNoMeasure;
     const Eigen::Vector2d eyes = point(ibug68, 45) - point(ibug68, 36);
     const double interocular = eyes.norm();
     if (!(interocular > 0))
-        return kNaN;
+        return kNoMeasure;
     // The face's vertical: perpendicular to the eye line, pointing down the image.
     const Eigen::Vector2d down(-eyes.y() / interocular, eyes.x() / interocular);
     double sum = 0;
@@ -127,7 +127,7 @@ double articulationRatio(const std::vector<double> &generated, const std::vector
 {
     const PairedMoments m = pairedMoments(generated, recorded);
     if (m.n < 2 || negligible(m.varB, m.meanB))
-        return kNaN;
+        return kNoMeasure;
     return std::sqrt(m.varA / m.varB);
 }
 
@@ -168,7 +168,7 @@ int closedSegments(const std::vector<double> &opening, const std::vector<FrameRa
 
 std::vector<double> audioEnergyPerFrame(const AudioBuffer &audio, double fps, int frames)
 {
-    std::vector<double> out(size_t(std::max(0, frames)), kNaN);
+    std::vector<double> out(size_t(std::max(0, frames)), kNoMeasure);
     if (audio.sampleRate <= 0 || !(fps > 0))
         return out;
     const double n = double(audio.samples.size());
@@ -188,7 +188,7 @@ std::vector<double> audioEnergyPerFrame(const AudioBuffer &audio, double fps, in
 
 double avLag(const std::vector<double> &opening, const std::vector<double> &energy, int maxLag)
 {
-    double best = -2.0, bestLag = kNaN;
+    double best = -2.0, bestLag = kNoMeasure;
     for (int lag = -maxLag; lag <= maxLag; ++lag) {
         const double r = correlation(pairedMoments(opening, energy, lag));
         // Ties go to the smallest |lag| (the loop visits -L before L, so compare strictly).
@@ -204,7 +204,7 @@ double gradientEnergy(const cv::Mat &bgr, const cv::Rect2d &box)
 {
     const cv::Rect r = cv::Rect(cv::Rect2d(box)) & cv::Rect(0, 0, bgr.cols, bgr.rows);
     if (r.area() <= 0)
-        return kNaN;
+        return kNoMeasure;
     cv::Mat grey, laplacian;
     if (bgr.channels() == 3)
         cv::cvtColor(bgr(r), grey, cv::COLOR_BGR2GRAY);
@@ -241,7 +241,7 @@ SeamDeltaE seamDeltaE(const cv::Mat &frameIn, const cv::Mat &referenceIn, const 
     const cv::Mat inner = full & (insideDistance <= band);
     const cv::Mat outer = ~touched & (outsideDistance <= band);
     if (cv::countNonZero(inner) == 0 || cv::countNonZero(outer) == 0) {
-        out.frame = out.reference = kNaN;
+        out.frame = out.reference = kNoMeasure;
         return out;
     }
     // The nearest inner pixel of every pixel: labels of the zero pixels of ~inner, one per pixel.

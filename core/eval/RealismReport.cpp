@@ -32,7 +32,7 @@ const std::vector<std::string> &realismMetrics()
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNoFigure = std::numeric_limits<double>::quiet_NaN();
 const std::string kTracked = "tracked";
 
 // Detectors for the worker threads: dlib's predictor takes a second or two to load, and one
@@ -71,7 +71,7 @@ double meanOfFinite(const std::vector<double> &values)
             sum += v;
             ++n;
         }
-    return n ? sum / n : kNaN;
+    return n ? sum / n : kNoFigure;
 }
 
 // Mean over frames of `generated` divided by that of `recorded`, over the frames where both are finite.
@@ -83,7 +83,7 @@ double ratioOfMeans(const std::vector<double> &generated, const std::vector<doub
             g += generated[t];
             r += recorded[t];
         }
-    return r > 0 ? g / r : kNaN;
+    return r > 0 ? g / r : kNoFigure;
 }
 
 struct Rendering
@@ -105,7 +105,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
     out.name = sequence.id;
     out.frames = frames;
     const size_t methods = renderings.size();
-    std::vector<double> recordedOpening(size_t(frames), kNaN), recordedSharpness(size_t(frames), kNaN);
+    std::vector<double> recordedOpening(size_t(frames), kNoFigure), recordedSharpness(size_t(frames), kNoFigure);
     std::vector<std::vector<double>> opening(methods, recordedOpening), sharpness(methods, recordedOpening),
         seam(methods, recordedOpening), seamRecorded(methods, recordedOpening);
     std::vector<int> skipped(methods, 0);
@@ -147,7 +147,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
         feedback.setProgress(double(t + 1) / frames);
     }
 
-    std::vector<double> energy(size_t(frames), kNaN);
+    std::vector<double> energy(size_t(frames), kNoFigure);
     try {
         energy = audioEnergyPerFrame(AudioDecoder::decode(mediaPath), sequence.frameRate, frames);
     } catch (const Error &) {
@@ -186,7 +186,7 @@ double foldValue(const std::vector<const RealismSequence *> &fold, const std::st
             generated += s->methods.at(method).closed;
             recorded += s->closedRecorded;
         }
-        return recorded > 0 ? double(generated) / recorded : kNaN;
+        return recorded > 0 ? double(generated) / recorded : kNoFigure;
     }
     std::vector<double> values;
     for (const RealismSequence *s : fold) {
@@ -201,7 +201,7 @@ double foldValue(const std::vector<const RealismSequence *> &fold, const std::st
     return meanOfFinite(values);
 }
 
-QJsonValue number(double v)
+QJsonValue jsonNumber(double v)
 {
     return std::isfinite(v) ? QJsonValue(v) : QJsonValue();
 }
@@ -210,7 +210,7 @@ QJsonArray numbers(const std::vector<double> &values)
 {
     QJsonArray a;
     for (double v : values)
-        a.append(number(v));
+        a.append(jsonNumber(v));
     return a;
 }
 
@@ -323,8 +323,8 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
                     defined.push_back(summary.folds.back());
             }
             const stats::MeanInterval interval = stats::meanWithCi95(defined);
-            summary.mean = defined.empty() ? kNaN : interval.mean;
-            summary.ci95 = defined.size() < 2 ? kNaN : interval.halfWidth;
+            summary.mean = defined.empty() ? kNoFigure : interval.mean;
+            summary.ci95 = defined.size() < 2 ? kNoFigure : interval.halfWidth;
         }
         result.methods.push_back(std::move(m));
     }
@@ -340,7 +340,7 @@ QJsonObject RealismResult::toJson() const
 {
     QJsonObject o;
     o[QStringLiteral("folds")] = folds;
-    o[QStringLiteral("seed")] = QString::number(seed);
+    o[QStringLiteral("seed")] = QString::jsonNumber(seed);
     o[QStringLiteral("sequences")] = sequences;
     o[QStringLiteral("frames")] = double(frames);
     o[QStringLiteral("skippedFrames")] = double(skippedFrames);
@@ -363,18 +363,18 @@ QJsonObject RealismResult::toJson() const
         so[QStringLiteral("skippedFrames")] = s.skippedFrames;
         so[QStringLiteral("bilabials")] = s.bilabials;
         so[QStringLiteral("closedRecorded")] = s.closedRecorded;
-        so[QStringLiteral("closedLevel")] = number(s.closedLevel);
-        so[QStringLiteral("lagRecorded")] = number(s.lagRecorded);
+        so[QStringLiteral("closedLevel")] = jsonNumber(s.closedLevel);
+        so[QStringLiteral("lagRecorded")] = jsonNumber(s.lagRecorded);
         so[QStringLiteral("recordedOpening")] = numbers(s.recordedOpening);
         QJsonObject mo;
         for (const auto &[method, r] : s.methods) {
             QJsonObject ro;
-            ro[QStringLiteral("correlation")] = number(r.correlation);
-            ro[QStringLiteral("articulation")] = number(r.articulation);
-            ro[QStringLiteral("lag")] = number(r.lag);
-            ro[QStringLiteral("sharpness")] = number(r.sharpness);
-            ro[QStringLiteral("seamDeltaE")] = number(r.seamDeltaE);
-            ro[QStringLiteral("seamDeltaERecorded")] = number(r.seamDeltaERecorded);
+            ro[QStringLiteral("correlation")] = jsonNumber(r.correlation);
+            ro[QStringLiteral("articulation")] = jsonNumber(r.articulation);
+            ro[QStringLiteral("lag")] = jsonNumber(r.lag);
+            ro[QStringLiteral("sharpness")] = jsonNumber(r.sharpness);
+            ro[QStringLiteral("seamDeltaE")] = jsonNumber(r.seamDeltaE);
+            ro[QStringLiteral("seamDeltaERecorded")] = jsonNumber(r.seamDeltaERecorded);
             ro[QStringLiteral("closed")] = r.closed;
             ro[QStringLiteral("skippedFrames")] = r.skippedFrames;
             ro[QStringLiteral("opening")] = numbers(r.opening);
