@@ -340,7 +340,7 @@ QJsonObject RealismResult::toJson() const
 {
     QJsonObject o;
     o[QStringLiteral("folds")] = folds;
-    o[QStringLiteral("seed")] = QString::jsonNumber(seed);
+    o[QStringLiteral("seed")] = QString::number(seed);
     o[QStringLiteral("sequences")] = sequences;
     o[QStringLiteral("frames")] = double(frames);
     o[QStringLiteral("skippedFrames")] = double(skippedFrames);
