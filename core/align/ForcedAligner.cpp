@@ -169,7 +169,7 @@ AlignmentResult ForcedAligner::alignWithBeam(const Eigen::MatrixXf &features, co
         const std::string phone = PhoneSet::label(st.phone);
         // Adjacent silences (a word-final sil variant next to an optional sil) are one segment.
         pushOrExtend(result.phones, start, stop, phone, st.phone == PhoneSet::kSilence);
-        const std::string word = st.word < 0 ? std::string("sil") : words[size_t(st.word)];
+        const std::string word = st.word < 0 ? std::string(PhoneSet::kSilenceLabel) : words[size_t(st.word)];
         if (st.word >= 0 && st.word == lastWord)
             result.words.intervals.back().end = stop;
         else

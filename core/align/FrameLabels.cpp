@@ -1,6 +1,7 @@
 #include "align/FrameLabels.h"
 
 #include "util/Error.h"
+#include "util/PhoneSet.h"
 
 #include <cmath>
 #include <map>
@@ -15,8 +16,8 @@ std::string labelAt(const Tier &phones, double t)
     // has checked that they are sorted without overlap (Tier::defect).
     for (const Interval &interval : phones.intervals)
         if (t >= interval.start && t < interval.end)
-            return interval.label.empty() ? std::string("sil") : interval.label;
-    return "sil";
+            return interval.label.empty() ? std::string(PhoneSet::kSilenceLabel) : interval.label;
+    return std::string(PhoneSet::kSilenceLabel);
 }
 } // namespace
 

@@ -39,7 +39,9 @@ std::vector<Pronunciation> Lexicon::pronounce(const std::string &word, Source *s
         set(Source::Override);
         return it->second;
     }
-    if (key == "sil" || key == "sp") {
+    // The pause tokens a transcript may hold. Narrower than PhoneSet::isSilence, which also takes
+    // "silence": in a transcript that is a spoken word.
+    if (key == PhoneSet::kSilenceLabel || key == "sp") {
         set(Source::Noise);
         return {Pronunciation{PhoneSet::kSilence}};
     }

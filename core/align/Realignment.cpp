@@ -11,17 +11,12 @@ namespace {
 
 constexpr double kEps = 1e-6;
 
-bool isSilence(const std::string &label)
-{
-    return label.empty() || PhoneSet::index(label) == PhoneSet::kSilence;
-}
-
 // The aligner's words for one word-tier label (a merged interval may hold several).
 std::vector<std::string> wordsOf(const std::string &label)
 {
-    if (isSilence(label))
+    if (PhoneSet::isSilence(label))
         return {};
-    if (PhoneSet::index(label) == PhoneSet::kBreath)
+    if (PhoneSet::isBreath(label))
         return {"[" + label + "]"};
     return Lexicon::splitWords(label);
 }
@@ -91,7 +86,7 @@ std::vector<Realignment::Stretch> Realignment::freeStretches(const Tier &words, 
             runStart = w.start;
         }
         runEnd = w.end;
-        spoken = spoken || !isSilence(w.label);
+        spoken = spoken || !PhoneSet::isSilence(w.label);
     }
     close();
     return out;

@@ -552,14 +552,14 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
         if (word >= 0) {
             const double a = startOf(i), b = endOf(j - 1);
             if (a > cursor + 1e-9)
-                result.words.intervals.push_back(Interval{cursor, a, "sil", false});
+                result.words.intervals.push_back(Interval{cursor, a, std::string(PhoneSet::kSilenceLabel), false});
             result.words.intervals.push_back(Interval{a, b, words[size_t(word)], false});
             cursor = b;
         }
         i = j;
     }
     if (cursor < end - 1e-9)
-        result.words.intervals.push_back(Interval{cursor, end, "sil", false});
+        result.words.intervals.push_back(Interval{cursor, end, std::string(PhoneSet::kSilenceLabel), false});
     if (feedback)
         feedback->setProgress(1.0);
     return result;

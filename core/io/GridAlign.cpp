@@ -2,6 +2,7 @@
 
 #include "io/AtomicFile.h"
 #include "util/Error.h"
+#include "util/PhoneSet.h"
 
 #include <cmath>
 #include <sstream>
@@ -58,7 +59,7 @@ std::string transcriptFromTier(const Tier &words)
 {
     std::string text;
     for (const Interval &i : words.intervals) {
-        if (i.label == "sil" || i.label == "sp" || i.label.empty())
+        if (PhoneSet::isSilence(i.label))
             continue;
         if (!text.empty())
             text += ' ';

@@ -4,6 +4,7 @@
 
 #include "io/AtomicFile.h"
 #include "util/Error.h"
+#include "util/PhoneSet.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -124,7 +125,7 @@ std::string formatHtkLabel(const Tier &tier)
     std::ostringstream out;
     for (const Interval &i : tier.intervals)
         out << std::llround(i.start * kHtkUnitsPerSecond) << ' ' << std::llround(i.end * kHtkUnitsPerSecond)
-            << ' ' << (i.label.empty() ? std::string("sil") : i.label) << '\n';
+            << ' ' << (i.label.empty() ? std::string(PhoneSet::kSilenceLabel) : i.label) << '\n';
     return out.str();
 }
 

@@ -5,6 +5,7 @@
 #include "io/HtkLabel.h"
 #include "io/TextGrid.h"
 #include "util/Error.h"
+#include "util/PhoneSet.h"
 
 #include <algorithm>
 #include <cctype>
@@ -13,14 +14,6 @@
 namespace lipsync {
 
 namespace {
-
-bool isSilenceLabel(const std::string &label)
-{
-    std::string l;
-    for (char c : label)
-        l += char(std::tolower(static_cast<unsigned char>(c)));
-    return l.empty() || l == "sil" || l == "sp" || l == "<sil>" || l == "sil!" || l == "silence";
-}
 
 std::string extensionOf(const std::string &path)
 {
@@ -45,7 +38,7 @@ Transcript fromTier(const Tier &tier)
     t.timing = tier;
     t.timing.name = "words";
     for (const Interval &i : tier.intervals)
-        if (!isSilenceLabel(i.label))
+        if (!PhoneSet::isSilence(i.label))
             t.words.push_back(i.label);
     return t;
 }

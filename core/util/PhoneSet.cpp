@@ -27,7 +27,9 @@ int PhoneSet::index(std::string_view label)
     for (char c : label)
         if (!std::isdigit(static_cast<unsigned char>(c)))
             s += char(std::tolower(static_cast<unsigned char>(c)));
-    if (s.empty() || s == "sil" || s == "sp" || s == "<sil>" || s == "<eps>" || s == "silence")
+    if (s.empty() && !label.empty())
+        return -1;
+    if (s.empty() || s == "sil" || s == "sp" || s == "<sil>" || s == "<eps>" || s == "silence" || s == "sil!")
         return kSilence;
     if (s == "br" || s == "spn" || s == "noise" || s == "breath" || s == "<br>")
         return kBreath;

@@ -15,13 +15,22 @@ public:
     static constexpr int kSilence = 39; // "sil"
     static constexpr int kBreath = 40;  // "br"
 
+    static constexpr std::string_view kSilenceLabel = "sil";
+    static constexpr std::string_view kBreathLabel = "br";
+
     // Labels in index order: AA AE AH ... ZH, sil, br.
     static const std::array<std::string_view, kCount> &labels();
     static std::string label(int index);
-    // Index of an ARPAbet label; case-insensitive, stress digits (AH0, IY1) stripped; "sp",
-    // "sil", "SIL", "" and "<sil>" give kSilence; "br", "spn", "noise" give kBreath. -1 if unknown.
+    // Index of an ARPAbet label; case-insensitive, stress digits (AH0, IY1) stripped; silence and
+    // breath labels as isSilence and isBreath say. -1 if unknown (also for digits alone: "2" is a
+    // word, not a phone).
     static int index(std::string_view label);
+    // The one silence test of every tier, phone or word (aligners, readers, editors, views):
+    // "", "sil", "sp", "<sil>", "<eps>", "silence", "sil!", case-insensitive, so what aligners,
+    // HTK, GRID and Praat write for a pause.
     static bool isSilence(std::string_view label) { return index(label) == kSilence; }
+    // A breath or other non-speech noise: "br", "breath", "<br>", "spn", "noise".
+    static bool isBreath(std::string_view label) { return index(label) == kBreath; }
 };
 
 } // namespace lipsync

@@ -2,6 +2,7 @@
 
 #include "app/SequenceMedia.h"
 #include "project/Sequence.h"
+#include "util/PhoneSet.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -63,7 +64,7 @@ void SequenceDetailsView::showSequence(const Sequence &sequence, const QString &
         m_audio->setText(tr("none (%1)").arg(media.audioError));
     int spoken = 0;
     for (const Interval &iv : sequence.words.intervals)
-        spoken += iv.label == "sil" || iv.label == "sp" || iv.label.empty() ? 0 : 1;
+        spoken += PhoneSet::isSilence(iv.label) ? 0 : 1;
     m_words->setText(tr("%1 timed words").arg(spoken));
     m_landmarks->setText(tr("%1 of %2 frames").arg(sequence.landmarks.size()).arg(sequence.frameCount));
 }

@@ -3,6 +3,7 @@
 #include "plots/ChartLegend.h"
 
 #include "annotation/Tier.h"
+#include "util/PhoneSet.h"
 
 #include <vtkAxis.h>
 #include <vtkBrush.h>
@@ -171,7 +172,7 @@ void TrajectoryView::rebuild()
             bands->SetValue(vtkIdType(2 * i + 1), 1, lo);
             bands->SetValue(vtkIdType(2 * i + 1), 2, top);
             tickPositions->InsertNextValue(0.5 * (p.start + p.end));
-            tickLabels->InsertNextValue(p.label.empty() ? std::string("sil") : p.label);
+            tickLabels->InsertNextValue(p.label.empty() ? std::string(PhoneSet::kSilenceLabel) : p.label);
             duration = std::max(duration, p.end);
         }
         auto *area = vtkPlotArea::SafeDownCast(t->chart->AddPlot(vtkChart::AREA));

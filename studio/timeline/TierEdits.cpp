@@ -54,11 +54,6 @@ double snap(double t)
     return std::round(t / kSnap) * kSnap;
 }
 
-bool isSilenceLabel(const std::string &label)
-{
-    return label.empty() || PhoneSet::index(label) == PhoneSet::kSilence;
-}
-
 double boundaryTime(const Tier &tier, int boundary)
 {
     return tier.intervals.at(size_t(boundary)).start;
@@ -140,9 +135,9 @@ bool mergeWithNext(TierPair &tiers, TierKind kind, int index)
     Interval &first = tier.intervals[size_t(index)];
     const Interval &next = tier.intervals[size_t(index + 1)];
     std::string label;
-    if (isSilenceLabel(first.label))
+    if (PhoneSet::isSilence(first.label))
         label = next.label;
-    else if (isSilenceLabel(next.label) || kind == TierKind::Phones)
+    else if (PhoneSet::isSilence(next.label) || kind == TierKind::Phones)
         label = first.label;
     else
         label = first.label + ' ' + next.label;

@@ -34,7 +34,6 @@ constexpr double kSnap = 0.01;
 constexpr double kSameTime = 1e-4;
 
 double snap(double t);
-bool isSilenceLabel(const std::string &label);
 
 // Time of boundary b (the start of interval b).
 double boundaryTime(const Tier &tier, int boundary);

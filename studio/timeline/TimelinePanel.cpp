@@ -537,12 +537,12 @@ void TimelinePanel::relabelSelected()
 
 void TimelinePanel::insertSilence()
 {
-    insertInterval("sil");
+    insertInterval(std::string(PhoneSet::kSilenceLabel));
 }
 
 void TimelinePanel::insertBreath()
 {
-    insertInterval("br");
+    insertInterval(std::string(PhoneSet::kBreathLabel));
 }
 
 void TimelinePanel::insertInterval(const std::string &label)
@@ -553,7 +553,7 @@ void TimelinePanel::insertInterval(const std::string &label)
     const TierKind kind = m_waveform->activeTier();
     TierPair next = currentTiers();
     if (tieredit::insertInterval(next, kind, a, b, label)
-        && edit(next, label == "br" ? tr("Insert breath") : tr("Insert silence")))
+        && edit(next, PhoneSet::isBreath(label) ? tr("Insert breath") : tr("Insert silence")))
         m_waveform->selectInterval(kind, next[kind].indexAt((tieredit::snap(a) + tieredit::snap(b)) / 2));
 }
 

@@ -27,11 +27,6 @@ const QColor kCursor(0xff, 0x52, 0x52);
 const QColor kSilence(0x33, 0x35, 0x3a);
 const QColor kBoundary(0x9e, 0xa3, 0xab);
 
-bool isSilence(const std::string &label)
-{
-    return label == "sil" || label == "sp" || label.empty();
-}
-
 // Phones coloured by class, so the strip reads at a glance: vowels, stops, fricatives and
 // affricates, nasals, liquids and glides; silence grey, breath dark green.
 QColor phoneColor(const std::string &label)
@@ -483,7 +478,7 @@ void WaveformView::drawTier(QPainter &p, const QRect &r, TierKind kind) const
         const Interval &iv = t.intervals[size_t(i)];
         const double x0 = xAt(iv.start);
         const double x1 = xAt(iv.end);
-        const bool silent = isSilence(iv.label);
+        const bool silent = PhoneSet::isSilence(iv.label);
         if (!silent)
             ++spoken;
         if (x1 < 0 || x0 > r.width())

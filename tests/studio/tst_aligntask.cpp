@@ -8,6 +8,7 @@
 #include "align/SphinxAligner.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/AlignTask.h"
+#include "util/PhoneSet.h"
 
 #include <QElapsedTimer>
 #include <QFileInfo>
@@ -67,7 +68,7 @@ QStringList spokenWords(const Tier &words)
 {
     QStringList out;
     for (const Interval &w : words.intervals)
-        if (!tieredit::isSilenceLabel(w.label))
+        if (!PhoneSet::isSilence(w.label))
             out << QString::fromStdString(w.label);
     return out;
 }

@@ -91,7 +91,7 @@ private slots:
             QVERIFY2(PhoneSet::index(p.label) >= 0, p.label.c_str());
         QStringList spoken;
         for (const Interval &w : s.words.intervals)
-            if (!tieredit::isSilenceLabel(w.label))
+            if (!PhoneSet::isSilence(w.label))
                 spoken << QString::fromStdString(w.label).toLower();
         QStringList transcript;
         for (const std::string &w : Lexicon::splitWords(s.transcript))
@@ -120,8 +120,8 @@ private slots:
         for (int i = 2; i + 1 < int(before.phones.intervals.size()) && b < 0; ++i) {
             const Interval &l = before.phones.intervals[size_t(i - 1)];
             const Interval &r = before.phones.intervals[size_t(i)];
-            if (l.end - l.start > 0.06 && r.end - r.start > 0.06 && !tieredit::isSilenceLabel(l.label)
-                && !tieredit::isSilenceLabel(r.label) && tieredit::boundaryNear(before.words, r.start, 1e-3) < 0)
+            if (l.end - l.start > 0.06 && r.end - r.start > 0.06 && !PhoneSet::isSilence(l.label)
+                && !PhoneSet::isSilence(r.label) && tieredit::boundaryNear(before.words, r.start, 1e-3) < 0)
                 b = i;
         }
         QVERIFY(b > 0);
@@ -197,8 +197,8 @@ private slots:
         for (int i = 1; i < int(before.words.intervals.size()) && w < 0; ++i) {
             const double t = before.words.intervals[size_t(i)].start;
             const int k = tieredit::boundaryNear(before.phones, t, 1e-6);
-            if (k > 0 && !tieredit::isSilenceLabel(before.words.intervals[size_t(i)].label)
-                && !tieredit::isSilenceLabel(before.words.intervals[size_t(i - 1)].label)) {
+            if (k > 0 && !PhoneSet::isSilence(before.words.intervals[size_t(i)].label)
+                && !PhoneSet::isSilence(before.words.intervals[size_t(i - 1)].label)) {
                 w = i;
                 p = k;
             }
@@ -233,7 +233,7 @@ private slots:
         // Click the middle of a long phone: selects it and puts the cursor there.
         int i = 0;
         for (int k = 1; k < int(before.phones.intervals.size()); ++k)
-            if (!tieredit::isSilenceLabel(before.phones.intervals[size_t(k)].label)
+            if (!PhoneSet::isSilence(before.phones.intervals[size_t(k)].label)
                 && before.phones.intervals[size_t(k)].end - before.phones.intervals[size_t(k)].start
                        > before.phones.intervals[size_t(i)].end - before.phones.intervals[size_t(i)].start)
                 i = k;
@@ -393,7 +393,7 @@ private slots:
         QVERIFY(tieredit::boundaryNear(now.phones, moved, 1e-6) > 0); // the edited boundary stays
         QStringList spoken;
         for (const Interval &w : now.words.intervals)
-            if (!tieredit::isSilenceLabel(w.label))
+            if (!PhoneSet::isSilence(w.label))
                 spoken << QString::fromStdString(w.label);
         QCOMPARE(spoken.size(), int(Lexicon::splitWords(m_window->document()->sequence(0).transcript).size()));
         for (std::size_t j = 1; j < now.phones.intervals.size(); ++j)
@@ -413,8 +413,8 @@ private slots:
         // An edited phone boundary inside the longest word.
         const Interval &word = *std::max_element(aligned.words.intervals.begin(), aligned.words.intervals.end(),
                                                  [](const Interval &x, const Interval &y) {
-                                                     return tieredit::isSilenceLabel(x.label)
-                                                            || (!tieredit::isSilenceLabel(y.label)
+                                                     return PhoneSet::isSilence(x.label)
+                                                            || (!PhoneSet::isSilence(y.label)
                                                                 && x.end - x.start < y.end - y.start);
                                                  });
         int b = -1;
@@ -476,7 +476,7 @@ private slots:
         const Sequence &s = m_window->document()->sequence(0);
         QStringList spoken;
         for (const Interval &w : s.words.intervals)
-            if (!tieredit::isSilenceLabel(w.label))
+            if (!PhoneSet::isSilence(w.label))
                 spoken << QString::fromStdString(w.label).toLower();
         QCOMPARE(spoken.size(), int(Lexicon::splitWords(s.transcript).size()));
         QVERIFY(s.phones.intervals.size() > 10);
@@ -490,7 +490,7 @@ private slots:
         QCOMPARE(m_window->undoStack()->index(), steps + 1);
         QStringList adapted;
         for (const Interval &w : m_window->document()->sequence(0).words.intervals)
-            if (!tieredit::isSilenceLabel(w.label))
+            if (!PhoneSet::isSilence(w.label))
                 adapted << QString::fromStdString(w.label).toLower();
         QCOMPARE(adapted, spoken);
         m_window->undoStack()->undo();
@@ -525,7 +525,7 @@ private slots:
             const Sequence &s = doc->sequence(row);
             QStringList spoken;
             for (const Interval &w : s.words.intervals)
-                if (!tieredit::isSilenceLabel(w.label))
+                if (!PhoneSet::isSilence(w.label))
                     spoken << QString::fromStdString(w.label);
             QCOMPARE(spoken.size(), int(Lexicon::splitWords(s.transcript).size()));
             QVERIFY(!s.phones.isEmpty());

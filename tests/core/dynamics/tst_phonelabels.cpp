@@ -29,6 +29,29 @@ private slots:
         QCOMPARE(PhoneSet::label(39), std::string("sil"));
     }
 
+    // The one silence predicate: every pause label of the aligners, HTK, GRID and Praat, any
+    // case; words (also "2", which has no letters to strip stress digits from) are not silence.
+    void silenceAndBreath_data()
+    {
+        QTest::addColumn<QString>("label");
+        QTest::addColumn<bool>("silence");
+        QTest::addColumn<bool>("breath");
+        for (const char *l : {"", "sil", "SIL", "sp", "<sil>", "<eps>", "silence", "sil!"})
+            QTest::newRow(l[0] ? l : "empty") << QString::fromLatin1(l) << true << false;
+        for (const char *l : {"br", "breath", "<br>", "spn", "noise"})
+            QTest::newRow(l) << QString::fromLatin1(l) << false << true;
+        for (const char *l : {"AH0", "bin", "2", "f", "silent"})
+            QTest::newRow(l) << QString::fromLatin1(l) << false << false;
+    }
+    void silenceAndBreath()
+    {
+        QFETCH(QString, label);
+        QFETCH(bool, silence);
+        QFETCH(bool, breath);
+        QCOMPARE(PhoneSet::isSilence(label.toStdString()), silence);
+        QCOMPARE(PhoneSet::isBreath(label.toStdString()), breath);
+    }
+
     void longAndShortTextGridAndLabAgree()
     {
         const Tier fromLong = readPhoneTier(kData + "short.TextGrid");
