@@ -22,9 +22,10 @@ QString dynamicModelOptionsFrom(const Arguments &args, ModelOptions &options); /
 
 namespace {
 
+// %1: the model kinds' ids.
 const char *kEvaluateUsage =
     "usage: lipsync evaluate (--project DIR | --features DIR --labels DIR) [--folds 10] [--seed 2007]\n"
-    "                        [--kinds dpds,slds,brand,hmm] [--fps RATE] [--csv FILE] [--json]\n"
+    "                        [--kinds %1] [--fps RATE] [--csv FILE] [--json]\n"
     "       lipsync evaluate --realism --project DIR [--folds 10] [--seed 2007] [--kinds ...]\n"
     "                        [--max-lag 5] [--dlib FILE] [--json]\n"
     "  model options as for train (--full-covariance, --full-a, --optimizer, --paper-mode, ...)";
@@ -37,6 +38,11 @@ const char *kRealismHelp =
     "    minus recorded, searched within --max-lag), mouth sharpness (ratio) and the colour step\n"
     "    across the seam (CIE Lab dE; the recording's at the same pixels beside it). Needs the\n"
     "    project's media and AAM and Debian's libdlib-data (or --dlib FILE). docs/models.md 6.5\n";
+
+QString evaluateUsage()
+{
+    return QString::fromLatin1(kEvaluateUsage).arg(QString::fromStdString(modelKindIdList(",", ",")));
+}
 
 void printRealism(const RealismResult &result)
 {
@@ -92,7 +98,7 @@ int runEvaluate(const QStringList &argv)
 {
     const Arguments args(argv, Arguments::defaultBooleanFlags() << QStringLiteral("realism"));
     if (args.flag(QStringLiteral("help"))) {
-        std::printf("%s\n%s", kEvaluateUsage, kRealismHelp);
+        std::printf("%s\n%s", evaluateUsage().toUtf8().constData(), kRealismHelp);
         return 0;
     }
     const bool realism = args.flag(QStringLiteral("realism"));
@@ -104,7 +110,7 @@ int runEvaluate(const QStringList &argv)
     const QStringList unknown = args.unknown(known);
     if (!unknown.isEmpty() || !args.positional().isEmpty())
         return fail(QStringLiteral("unknown argument %1\n").arg((unknown + args.positional()).first())
-                        + QString::fromLatin1(kEvaluateUsage),
+                        + evaluateUsage(),
                     2);
     EvaluationOptions options;
     bool ok = false;
@@ -117,8 +123,10 @@ int runEvaluate(const QStringList &argv)
     if (args.has(QStringLiteral("kinds"))) {
         options.kinds.clear();
         for (const QString &k : args.value(QStringLiteral("kinds")).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
-            if (!QStringList{"dpds", "slds", "brand", "hmm"}.contains(k.trimmed()))
-                return fail(QStringLiteral("--kinds: unknown model '%1' (dpds, slds, brand, hmm)").arg(k), 2);
+            if (!isDynamicModelKind(k.trimmed().toStdString()))
+                return fail(QStringLiteral("--kinds: unknown model '%1' (%2)")
+                                .arg(k, QString::fromStdString(modelKindIdList(", "))),
+                            2);
             options.kinds.push_back(k.trimmed().toStdString());
         }
         if (options.kinds.empty())
@@ -131,7 +139,7 @@ int runEvaluate(const QStringList &argv)
 
     std::vector<LabelledSequence> sequences;
     if (const QString error = loadTrainingData(args, sequences); !error.isEmpty())
-        return fail(error + QLatin1Char('\n') + QString::fromLatin1(kEvaluateUsage), 2);
+        return fail(error + QLatin1Char('\n') + evaluateUsage(), 2);
     Feedback feedback;
     const EvaluationResult result = evaluateModels(sequences, options, feedback);
     if (args.has(QStringLiteral("csv")))

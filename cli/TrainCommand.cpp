@@ -17,8 +17,9 @@ using namespace lipsync::cli;
 
 namespace {
 
+// %1: the model kinds' ids.
 const char *kTrainUsage =
-    "usage: lipsync train --kind dpds|slds|brand|hmm (--project DIR | --features DIR --labels DIR)\n"
+    "usage: lipsync train --kind %1 (--project DIR | --features DIR --labels DIR)\n"
     "                     --out MODEL [--fps RATE] [--aam ID] [--json]\n"
     "  --fps: the video frame rate of feature files that record none (\"# fps=RATE\")\n"
     "  --aam: the identifier of the AAM the features come from (default: the project's AAM)\n"
@@ -26,6 +27,11 @@ const char *kTrainUsage =
     "           --paper-mode (dpds), --max-iterations N (dpds, slds), --threads N (dpds),\n"
     "           --bound-a [AMAX] (slds: keep |a|, or ||A||_2 with --full-a, <= AMAX, default 0.999,\n"
     "           for generation that stays bounded; without it, the paper's plain maximum likelihood)";
+
+QString trainUsage()
+{
+    return QString::fromLatin1(kTrainUsage).arg(QString::fromStdString(modelKindIdList("|", "|")));
+}
 
 // Shared by train and evaluate: model options from the command line. Returns an error or "".
 QString modelOptionsFrom(const Arguments &args, ModelOptions &options)
@@ -74,23 +80,22 @@ int runTrain(const QStringList &argv)
                                               "paper-mode", "max-iterations", "threads"});
     if (!unknown.isEmpty() || !args.positional().isEmpty())
         return fail(QStringLiteral("unknown argument %1\n").arg((unknown + args.positional()).first())
-                        + QString::fromLatin1(kTrainUsage),
+                        + trainUsage(),
                     2);
     const QString kind = args.value(QStringLiteral("kind"));
     const QString out = args.value(QStringLiteral("out"));
     if (kind.isEmpty() || out.isEmpty())
-        return fail(QString::fromLatin1(kTrainUsage), 2);
+        return fail(trainUsage(), 2);
     ModelOptions options;
     if (const QString error = modelOptionsFrom(args, options); !error.isEmpty())
         return fail(error, 2);
-    if (std::find(dynamicModelKinds().begin(), dynamicModelKinds().end(), kind.toStdString())
-        == dynamicModelKinds().end())
-        return fail(QStringLiteral("--kind must be dpds, slds, brand or hmm"), 2);
+    if (!isDynamicModelKind(kind.toStdString()))
+        return fail(QStringLiteral("--kind must be %1").arg(QString::fromStdString(modelKindIdList())), 2);
 
     std::vector<LabelledSequence> sequences;
     std::string projectAam;
     if (const QString error = loadTrainingData(args, sequences, &projectAam); !error.isEmpty())
-        return fail(error + QLatin1Char('\n') + QString::fromLatin1(kTrainUsage), 2);
+        return fail(error + QLatin1Char('\n') + trainUsage(), 2);
     // The model records the AAM whose parameters it generates: --aam, else the content identifier of
     // the project's AAM (what `lipsync render` and the studio check a model against). Read before
     // training, so a broken AAM file costs no training time.
@@ -140,7 +145,9 @@ int runTrain(const QStringList &argv)
 }
 
 const CommandRegistration registration{
-    QStringLiteral("train"), QStringLiteral("train a dynamic model (dpds, slds, brand, hmm) on features + phone labels"),
+    QStringLiteral("train"),
+    QStringLiteral("train a dynamic model (%1) on features + phone labels")
+        .arg(QString::fromStdString(modelKindIdList(", "))),
     &runTrain};
 
 } // namespace

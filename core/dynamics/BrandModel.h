@@ -20,7 +20,7 @@ class BrandModel : public DynamicModel
 {
 public:
     explicit BrandModel(BrandOptions options = {}) : m_options(options) {}
-    std::string kind() const override { return "brand"; }
+    std::string kind() const override { return modelKindId(ModelKind::Brand); }
     const BrandOptions &options() const { return m_options; }
 
     Eigen::MatrixXd generate(const std::vector<int> &labels) const override;

@@ -32,7 +32,7 @@ class DpdsModel : public DynamicModel
 {
 public:
     explicit DpdsModel(DpdsOptions options = {}) : m_options(options) {}
-    std::string kind() const override { return "dpds"; }
+    std::string kind() const override { return modelKindId(ModelKind::Dpds); }
     DpdsOptions &options() { return m_options; }
 
     Eigen::MatrixXd generate(const std::vector<int> &labels) const override;

@@ -4,6 +4,7 @@
 // the model allows, and score sequences by their log-likelihood. Parameters are (de)serialised to
 // JSON; ModelFile.h wraps them in the versioned model file.
 #include "dynamics/LabelledSequence.h"
+#include "dynamics/ModelKind.h"
 #include "dynamics/StreamingGenerator.h"
 
 #include <QJsonObject>
@@ -23,7 +24,7 @@ class DynamicModel
 public:
     virtual ~DynamicModel() = default;
 
-    // "hmm", "brand", "slds" or "dpds".
+    // The kind's id (ModelKind.h).
     virtual std::string kind() const = 0;
     // Feature dimension d, 0 before training.
     int dimension() const { return m_dimension; }

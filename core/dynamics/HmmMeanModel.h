@@ -9,7 +9,7 @@ namespace lipsync {
 class HmmMeanModel : public DynamicModel
 {
 public:
-    std::string kind() const override { return "hmm"; }
+    std::string kind() const override { return modelKindId(ModelKind::HmmMean); }
     Eigen::MatrixXd generate(const std::vector<int> &labels) const override;
     std::unique_ptr<StreamingGenerator> streamer() const override;
     double logLikelihood(const std::vector<int> &labels,

@@ -10,23 +10,26 @@
 
 namespace lipsync {
 
-const std::vector<std::string> &dynamicModelKinds()
+std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOptions &options)
 {
-    static const std::vector<std::string> kinds{"hmm", "brand", "slds", "dpds"};
-    return kinds;
+    switch (kind) {
+    case ModelKind::HmmMean:
+        return std::make_unique<HmmMeanModel>();
+    case ModelKind::Brand:
+        return std::make_unique<BrandModel>(options.brand);
+    case ModelKind::Slds:
+        return std::make_unique<SldsModel>(options.slds);
+    case ModelKind::Dpds:
+        return std::make_unique<DpdsModel>(options.dpds);
+    }
+    throw Error("unknown model kind");
 }
 
 std::unique_ptr<DynamicModel> createDynamicModel(const std::string &kind, const ModelOptions &options)
 {
-    if (kind == "hmm")
-        return std::make_unique<HmmMeanModel>();
-    if (kind == "brand")
-        return std::make_unique<BrandModel>(options.brand);
-    if (kind == "slds")
-        return std::make_unique<SldsModel>(options.slds);
-    if (kind == "dpds")
-        return std::make_unique<DpdsModel>(options.dpds);
-    throw Error("unknown model kind '" + kind + "' (expected dpds, slds, brand or hmm)");
+    if (const std::optional<ModelKind> known = parseModelKind(kind))
+        return createDynamicModel(*known, options);
+    throw Error("unknown model kind '" + kind + "' (expected " + modelKindIdList() + ")");
 }
 
 void saveModel(const DynamicModel &model, const std::string &path, const std::string &aamId)

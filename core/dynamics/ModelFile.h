@@ -8,6 +8,7 @@
 #include "dynamics/BrandModel.h"
 #include "dynamics/DpdsModel.h"
 #include "dynamics/DynamicModel.h"
+#include "dynamics/ModelKind.h"
 #include "dynamics/SldsModel.h"
 
 #include <memory>
@@ -25,10 +26,10 @@ struct ModelOptions
     DpdsOptions dpds;
 };
 
-// "hmm", "brand", "slds", "dpds"; throws lipsync::Error for anything else.
+std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOptions &options = {});
+// A kind by its id (ModelKind.h); throws lipsync::Error for an unknown id.
 std::unique_ptr<DynamicModel> createDynamicModel(const std::string &kind,
                                                  const ModelOptions &options = {});
-const std::vector<std::string> &dynamicModelKinds();
 
 void saveModel(const DynamicModel &model, const std::string &path, const std::string &aamId);
 // expectedAamId empty: accept any AAM. aamId (optional) receives the file's AAM id.

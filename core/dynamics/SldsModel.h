@@ -60,7 +60,7 @@ class SldsModel : public DynamicModel
 {
 public:
     explicit SldsModel(SldsOptions options = {}) : m_options(options) {}
-    std::string kind() const override { return "slds"; }
+    std::string kind() const override { return modelKindId(ModelKind::Slds); }
     SldsOptions &options() { return m_options; }
 
     Eigen::MatrixXd generate(const std::vector<int> &labels) const override;

@@ -115,7 +115,8 @@ std::vector<std::shared_ptr<DynamicModel>> trainFoldModels(const std::vector<Lab
     for (size_t i = 0; i < order.size(); ++i)
         order[i] = i;
     std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-        return kinds[a] == "dpds" && kinds[b] != "dpds";
+        const auto isDpds = [&](size_t i) { return parseModelKind(kinds[i]) == ModelKind::Dpds; };
+        return isDpds(a) && !isDpds(b);
     });
     std::vector<std::shared_ptr<DynamicModel>> models(kinds.size());
     if (wallSeconds)
@@ -140,7 +141,7 @@ std::vector<std::shared_ptr<DynamicModel>> trainFoldModels(const std::vector<Lab
             (*cpuSeconds)[index] = threadCpuSeconds() - cpuStart;
         if (wallSeconds)
             (*wallSeconds)[index] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (kind == "dpds")
+        if (parseModelKind(kind) == ModelKind::Dpds)
             foldDpds = std::static_pointer_cast<const DpdsModel>(model);
         models[index] = std::move(model);
         feedback.setProgress(double(step + 1) / steps);

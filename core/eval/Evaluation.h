@@ -25,7 +25,7 @@ struct EvaluationOptions
 {
     int folds = 10;
     std::uint64_t seed = 2007;
-    std::vector<std::string> kinds{"hmm", "brand", "slds", "dpds"};
+    std::vector<std::string> kinds = dynamicModelKinds(); // ids (dynamics/ModelKind.h)
     ModelOptions modelOptions;
     // Folds are independent: run them concurrently on the global thread pool, each model
     // single-threaded. false: one fold at a time, models threaded as modelOptions say.

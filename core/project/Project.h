@@ -24,7 +24,7 @@ namespace lipsync {
 // A built AAM or trained dynamic model the project refers to.
 struct ModelReference
 {
-    std::string kind; // "aam", "aligner", "dpds", "slds", "brand", "hmm"
+    std::string kind; // "aam", "aligner" or a dynamic model kind's id (dynamics/ModelKind.h)
     std::string name; // user-visible name
     std::string file; // relative to the project folder
     bool operator==(const ModelReference &) const = default;

@@ -44,7 +44,7 @@ struct SpeechToFaceResult
 {
     std::string mediaPath;
     std::shared_ptr<const AamModel> aam; // FaceRenderers made for this result refer to it
-    std::string modelKind;        // "dpds", "slds", "brand", "hmm"
+    std::string modelKind;        // the model's kind id (dynamics/ModelKind.h)
     std::string alignerModelPath; // the aligner model used
     Tier words{"words", {}};      // forced alignment
     Tier phones{"phones", {}};

@@ -38,12 +38,28 @@ class TestModelFile : public QObject
 {
     Q_OBJECT
 private slots:
+    // The ids are the model files' and the CLI's vocabulary: fixed, each parsed back to its kind,
+    // and the factory builds a model that reports it.
+    void kindIds()
+    {
+        QCOMPARE(dynamicModelKinds(), (std::vector<std::string>{"hmm", "brand", "slds", "dpds"}));
+        QCOMPARE(allModelKinds().size(), dynamicModelKinds().size());
+        for (ModelKind kind : allModelKinds()) {
+            QCOMPARE(parseModelKind(modelKindId(kind)), std::optional<ModelKind>(kind));
+            QCOMPARE(createDynamicModel(kind)->kind(), std::string(modelKindId(kind)));
+        }
+        QVERIFY(!parseModelKind("DPDS"));
+        QVERIFY(!isDynamicModelKind("aam"));
+        QCOMPARE(modelKindIdList(), std::string("dpds, slds, brand or hmm"));
+        QCOMPARE(modelKindIdList("|", "|"), std::string("dpds|slds|brand|hmm"));
+    }
+
     void roundTrip_data()
     {
         QTest::addColumn<QString>("kind");
         QTest::addColumn<bool>("full");
-        for (const char *kind : {"hmm", "brand", "slds", "dpds"})
-            QTest::newRow(kind) << QString::fromLatin1(kind) << false;
+        for (const std::string &kind : dynamicModelKinds())
+            QTest::newRow(kind.c_str()) << QString::fromStdString(kind) << false;
         QTest::newRow("brand full") << QStringLiteral("brand") << true;
         QTest::newRow("slds full") << QStringLiteral("slds") << true;
     }
