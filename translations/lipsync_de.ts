@@ -61,6 +61,49 @@
     </message>
 </context>
 <context>
+    <name>ModelKinds</name>
+    <message>
+        <location filename="../studio/app/ModelKinds.cpp" line="23"/>
+        <source>DPDS</source>
+        <translation>DPDS</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ModelKinds.cpp" line="25"/>
+        <source>SLDS</source>
+        <translation>SLDS</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ModelKinds.cpp" line="27"/>
+        <source>Brand</source>
+        <translation>Brand</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ModelKinds.cpp" line="29"/>
+        <source>HMM-mean</source>
+        <translation>HMM-Mittelwert</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ModelKinds.cpp" line="49"/>
+        <source>Deterministic-process dynamical system (the paper&apos;s model)</source>
+        <translation>Dynamisches System mit deterministischem Prozess (das Modell des Artikels)</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ModelKinds.cpp" line="51"/>
+        <source>Switching linear dynamical system</source>
+        <translation>Schaltendes lineares dynamisches System</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ModelKinds.cpp" line="53"/>
+        <source>Brand&apos;s Voice Puppetry: per-phone Gaussians over position and velocity</source>
+        <translation>Brands Voice Puppetry: Gauß-Verteilungen je Phon über Position und Geschwindigkeit</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ModelKinds.cpp" line="55"/>
+        <source>Phoneme-mean baseline: one Gaussian per phone, frames independent</source>
+        <translation>Phonem-Mittelwert als Vergleich: eine Gauß-Verteilung je Phon, Bilder unabhängig</translation>
+    </message>
+</context>
+<context>
     <name>SequenceLoader</name>
     <message>
         <location filename="../studio/app/SequenceLoader.cpp" line="45"/>
@@ -205,22 +248,22 @@
 <context>
     <name>lipsync::studio::EvaluationChart</name>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="47"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="40"/>
         <source>L1 error</source>
         <translation>L1-Fehler</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="48"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="41"/>
         <source>RMS error</source>
         <translation>RMS-Fehler</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="49"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="42"/>
         <source>L-inf error</source>
         <translation>L-inf-Fehler</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="50"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="43"/>
         <source>log-likelihood per frame</source>
         <translation>Log-Likelihood pro Bild</translation>
     </message>
@@ -228,143 +271,149 @@
 <context>
     <name>lipsync::studio::ExportMenu</name>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="47"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="48"/>
         <source>E&amp;xport</source>
         <translation>E&amp;xportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="50"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="51"/>
         <source>Generated &amp;Video (MP4)…</source>
         <translation>Erzeugtes &amp;Video (MP4)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="50"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="51"/>
         <source>Real and Generated &amp;Side by Side (MP4)…</source>
         <translation>Echt und erzeugt &amp;nebeneinander (MP4)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="51"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="52"/>
         <source>Generated &amp;Frames (PNG)…</source>
         <translation>Erzeugte &amp;Einzelbilder (PNG)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="51"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="52"/>
         <source>F&amp;eatures (CSV)…</source>
         <translation>M&amp;erkmale (CSV)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="52"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="53"/>
         <source>&amp;Alignment (TextGrid)…</source>
         <translation>&amp;Alignierung (TextGrid)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="52"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="53"/>
         <source>&amp;Landmarks (.pts)…</source>
         <translation>&amp;Landmarken (.pts)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="53"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="54"/>
         <source>Active Appearance &amp;Model…</source>
         <translation>Active Appearance &amp;Model…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="53"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="54"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="93"/>
         <source>&amp;Trained Dynamic Model…</source>
         <translation>&amp;Trainiertes dynamisches Modell…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="105"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="106"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="92"/>
+        <source>&amp;Trained Dynamic Model (%1)…</source>
+        <translation>&amp;Trainiertes dynamisches Modell (%1)…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="109"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="110"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="108"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="112"/>
         <source>Feature tables (*.csv)</source>
         <translation>Merkmalstabellen (*.csv)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="109"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="113"/>
         <source>Praat TextGrid (*.TextGrid)</source>
         <translation>Praat-TextGrid (*.TextGrid)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="111"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="115"/>
         <source>Active appearance models (*.aam)</source>
         <translation>Active Appearance Models (*.aam)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="112"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="116"/>
         <source>Dynamic models (*.model)</source>
         <translation>Dynamische Modelle (*.model)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="128"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="132"/>
         <source>Cannot export</source>
         <translation>Export nicht möglich</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="130"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="134"/>
         <source>no sequence is selected</source>
         <translation>keine Sequenz ausgewählt</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="147"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="151"/>
         <source>the project has no trained dynamic model and AAM (train one in the Models panel)</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell und kein AAM (im Bereich Modelle trainieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="162"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="171"/>
         <source>Export the generated frames of %1</source>
         <translation>Erzeugte Einzelbilder von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="163"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="172"/>
         <source>Export the generated video of %1</source>
         <translation>Erzeugtes Video von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="186"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="195"/>
         <source>%1 has no face features (track it first)</source>
         <translation>%1 hat keine Gesichtsmerkmale (zuerst verfolgen)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="189"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="198"/>
         <source>Export the features of %1</source>
         <translation>Merkmale von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="197"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="206"/>
         <source>%1 has no phone alignment (align it first)</source>
         <translation>%1 hat keine Phonem-Alignierung (zuerst alignieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="200"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="209"/>
         <source>Export the alignment of %1</source>
         <translation>Alignierung von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="213"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="222"/>
         <source>%1 has no landmarks</source>
         <translation>%1 hat keine Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="216"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="225"/>
         <source>Export the landmarks of %1</source>
         <translation>Landmarken von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="237"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="246"/>
         <source>the project has no AAM</source>
         <translation>das Projekt hat kein AAM</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="238"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="247"/>
         <source>the project has no trained dynamic model</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="242"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="251"/>
         <source>Export %1</source>
         <translation>%1 exportieren</translation>
     </message>
@@ -870,181 +919,153 @@
 <context>
     <name>lipsync::studio::ModelsPanel</name>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="50"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="48"/>
         <source>Appearance model</source>
         <translation>Erscheinungsmodell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="51"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="49"/>
         <source>Phoneme aligner</source>
         <translation>Phonem-Aligner</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="52"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
-        <source>DPDS</source>
-        <translation>DPDS</translation>
-    </message>
-    <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="53"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
-        <source>SLDS</source>
-        <translation>SLDS</translation>
-    </message>
-    <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="54"/>
-        <source>Voice Puppetry</source>
-        <translation>Voice Puppetry</translation>
-    </message>
-    <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="55"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
-        <source>Phoneme-mean HMM</source>
-        <translation>Phonem-Mittelwert-HMM</translation>
-    </message>
-    <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="96"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="61"/>
         <source>Build AAM…</source>
         <translation>AAM erstellen …</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="104"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="69"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="104"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="69"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="104"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="69"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="230"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="196"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="97"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="62"/>
         <source>Train</source>
         <translation>Trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="97"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="62"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="98"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="63"/>
         <source>Evaluate (k-fold)</source>
         <translation>Evaluieren (k-fach)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
-        <source>Voice Puppetry (Brand)</source>
-        <translation>Voice Puppetry (Brand)</translation>
-    </message>
-    <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="114"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="78"/>
         <source>VarPro / Levenberg–Marquardt</source>
         <translation>VarPro / Levenberg–Marquardt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="115"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="79"/>
         <source>Gradient ascent (paper)</source>
         <translation>Gradientenaufstieg (Artikel)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="116"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
         <source>Diagonal A</source>
         <translation>Diagonales A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="117"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
         <source>Full A</source>
         <translation>Volles A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="82"/>
         <source>Diagonal covariance</source>
         <translation>Diagonale Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="119"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="83"/>
         <source>Full covariance</source>
         <translation>Volle Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="141"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="107"/>
         <source>folds: </source>
         <translation>Folds: </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="150"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="116"/>
         <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
         <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="151"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="117"/>
         <source>Train the checked models on every sequence with features and phonemes</source>
         <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="152"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
         <source>Stop training or evaluation; the previous models stay</source>
         <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="153"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="119"/>
         <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
         <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="180"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="146"/>
         <source>AAM parameter </source>
         <translation>AAM-Parameter </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="181"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="147"/>
         <source>Which AAM parameter to plot over time</source>
         <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="192"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="158"/>
         <source>Trajectory</source>
         <translation>Trajektorie</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="193"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="159"/>
         <source>Training</source>
         <translation>Training</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="194"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="160"/>
         <source>Evaluation</source>
         <translation>Evaluation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="222"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="188"/>
         <source>Trained in this session; written when the project is saved</source>
         <translation>In dieser Sitzung trainiert; wird beim Speichern des Projekts geschrieben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="266"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="232"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter verfolgen und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="320"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="356"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="286"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="322"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="322"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="288"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -1052,37 +1073,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="341"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="307"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="365"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="331"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="367"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="333"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="374"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="340"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="396"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="362"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="397"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="363"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="407"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="373"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -1090,7 +1111,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="415"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="381"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Folds.</numerusform>
@@ -1098,38 +1119,38 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="422"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="388"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="455"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="421"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="460"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="426"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="351"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="482"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="317"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="448"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="501"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="467"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter verfolgen)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="511"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="477"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="537"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="503"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>
@@ -1266,133 +1287,133 @@
 <context>
     <name>lipsync::studio::PreviewPanel</name>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="58"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="59"/>
         <source>Loop selection</source>
         <translation>Auswahl wiederholen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="58"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="59"/>
         <source>Landmarks</source>
         <translation>Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="59"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="60"/>
         <source>Generate from Speech…</source>
         <translation>Aus Sprache erzeugen…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="60"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="61"/>
         <source>Back to Sequence</source>
         <translation>Zurück zur Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="73"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="74"/>
         <source>Previous frame</source>
         <translation>Vorheriges Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="75"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="76"/>
         <source>Next frame</source>
         <translation>Nächstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="79"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="80"/>
         <source>Scrub through the frames</source>
         <translation>Durch die Bilder fahren</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="80"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="81"/>
         <source>Play the timeline&apos;s selection (or everything) over and over</source>
         <translation>Die Auswahl der Zeitleiste (oder alles) immer wieder abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="81"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="82"/>
         <source>Show the tracked points on the recorded video and the generated points on the generated faces</source>
         <translation>Die verfolgten Punkte auf dem aufgenommenen Video und die erzeugten Punkte auf den erzeugten Gesichtern zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="82"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="83"/>
         <source>Generate faces for any recording with a transcript</source>
         <translation>Gesichter für eine beliebige Aufnahme mit Transkript erzeugen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="83"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="84"/>
         <source>Show the current sequence again</source>
         <translation>Die aktuelle Sequenz wieder zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="244"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="245"/>
         <source>Prepare the preview of %1</source>
         <translation>Vorschau von %1 vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="273"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="274"/>
         <source>The head could not be tracked: %1</source>
         <translation>Der Kopf konnte nicht verfolgt werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="322"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="323"/>
         <source>Recorded video</source>
         <translation>Aufgenommenes Video</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="327"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="328"/>
         <source>Generated: %1</source>
         <translation>Erzeugt: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="331"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="332"/>
         <source>Generated</source>
         <translation>Erzeugt</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="379"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="380"/>
         <source>The project has no appearance model (Faces ▸ Build AAM).</source>
         <translation>Das Projekt hat kein Erscheinungsmodell (Gesichter ▸ AAM erstellen).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="381"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="382"/>
         <source>Tracking the head pose…</source>
         <translation>Kopfhaltung wird verfolgt…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="383"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="384"/>
         <source>This sequence has no phones (align it in the Timeline).</source>
         <translation>Diese Sequenz hat keine Phoneme (in der Zeitleiste alignieren).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="385"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="386"/>
         <source>Train a dynamic model in the Models panel to see the faces it generates.</source>
         <translation>Trainieren Sie ein dynamisches Modell im Bereich „Modelle“, um die erzeugten Gesichter zu sehen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="434"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="435"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 — Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="543"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="544"/>
         <source>Faces for new speech need the project&apos;s appearance model.</source>
         <translation>Gesichter für neue Sprache brauchen das Erscheinungsmodell des Projekts.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="544"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="545"/>
         <source>Build one with Faces ▸ Build AAM.</source>
         <translation>Erstellen Sie eines mit Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="549"/>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="604"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="550"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="605"/>
         <source>No faces could be generated for this speech.</source>
         <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="550"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="551"/>
         <source>Train a dynamic model in the Models panel first.</source>
         <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="572"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="573"/>
         <source>Generate faces for %1</source>
         <translation>Gesichter für %1 erzeugen</translation>
     </message>
@@ -1643,57 +1664,57 @@
 <context>
     <name>lipsync::studio::SequenceDetailsView</name>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="26"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="27"/>
         <source>Media:</source>
         <translation>Medien:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="27"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="28"/>
         <source>Video:</source>
         <translation>Video:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="28"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="29"/>
         <source>Audio:</source>
         <translation>Audio:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="29"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="30"/>
         <source>Words:</source>
         <translation>Wörter:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="30"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="31"/>
         <source>Landmarks:</source>
         <translation>Landmarken:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="40"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="41"/>
         <source>No sequence</source>
         <translation>Keine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="53"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="54"/>
         <source>%1 frames at %2 fps, %3 × %4</source>
         <translation>%1 Bilder mit %2 fps, %3 × %4</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="59"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="60"/>
         <source>%1 s, decoded at %2 Hz mono</source>
         <translation>%1 s, dekodiert mit %2 Hz mono</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="63"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="64"/>
         <source>none (%1)</source>
         <translation>keiner (%1)</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="67"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="68"/>
         <source>%1 timed words</source>
         <translation>%1 Wörter mit Zeitangaben</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="68"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="69"/>
         <source>%1 of %2 frames</source>
         <translation>%1 von %2 Bildern</translation>
     </message>
@@ -1897,94 +1918,94 @@
 <context>
     <name>lipsync::studio::StudyResultsView</name>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="40"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="41"/>
         <source>Export CSV…</source>
         <translation>CSV exportieren …</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="46"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="47"/>
         <source>Method A</source>
         <translation>Methode A</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="46"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="47"/>
         <source>A judged real</source>
         <translation>A als echt beurteilt</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="46"/>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="50"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="47"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="52"/>
         <source>Can&apos;t decide</source>
         <translation>Unentschieden</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="47"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="48"/>
         <source>B judged real</source>
         <translation>B als echt beurteilt</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="47"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="48"/>
         <source>Method B</source>
         <translation>Methode B</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="47"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="48"/>
         <source>p (sign test)</source>
         <translation>p (Vorzeichentest)</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="47"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="49"/>
         <source>p (Holm)</source>
         <translation>p (Holm)</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="50"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="52"/>
         <source>Method</source>
         <translation>Methode</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="50"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="52"/>
         <source>Bradley–Terry strength</source>
         <translation>Bradley-Terry-Stärke</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="50"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="52"/>
         <source>Judged real</source>
         <translation>Als echt beurteilt</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="50"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="52"/>
         <source>Not judged real</source>
         <translation>Nicht als echt beurteilt</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="57"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="59"/>
         <source>Which one is real? Pairs of methods (as in the paper&apos;s Table 1):</source>
         <translation>Welches ist echt? Methodenpaare (wie in Tabelle 1 des Artikels):</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="59"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="61"/>
         <source>Ranking:</source>
         <translation>Rangfolge:</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="75"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="77"/>
         <source>The project has no study yet: Study ▸ Set up study…</source>
         <translation>Das Projekt hat noch keine Studie: Studie ▸ Studie einrichten …</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="99"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="103"/>
         <source>Participants: %1, answers: %2 (%3 still open). %4</source>
         <translation>Teilnehmende: %1, Antworten: %2 (%3 noch offen). %4</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="124"/>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="131"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="130"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="137"/>
         <source>Export study results</source>
         <translation>Studienergebnisse exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="125"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="131"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
@@ -1992,47 +2013,47 @@
 <context>
     <name>lipsync::studio::StudySetupDialog</name>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="24"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="25"/>
         <source>Real (the recorded video)</source>
         <translation>Echt (das aufgenommene Video)</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="39"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="36"/>
         <source>Set up blind study</source>
         <translation>Blindstudie einrichten</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="54"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="51"/>
         <source>Methods to compare:</source>
         <translation>Zu vergleichende Methoden:</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="55"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="52"/>
         <source>Utterances:</source>
         <translation>Äußerungen:</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="56"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="53"/>
         <source>Each pair shown (× 2, sides swapped):</source>
         <translation>Jedes Paar gezeigt (× 2, Seiten vertauscht):</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="57"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="54"/>
         <source>Random seed:</source>
         <translation>Zufallsstartwert:</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="106"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="103"/>
         <source>Choose at least two methods (train models in the Models panel).</source>
         <translation>Mindestens zwei Methoden wählen (Modelle im Modelle-Bereich trainieren).</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="111"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="108"/>
         <source>No sequence has both features and phones yet.</source>
         <translation>Noch keine Sequenz hat sowohl Merkmale als auch Phone.</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="135"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="132"/>
         <source>%1 pairs of methods, each shown %2 times with sides swapped: %3 trials per participant, in a fresh random order for each participant.</source>
         <translation>%1 Methodenpaare, jedes %2-mal mit vertauschten Seiten gezeigt: %3 Durchgänge pro Person, für jede Person in neuer zufälliger Reihenfolge.</translation>
     </message>
@@ -2430,17 +2451,17 @@
 <context>
     <name>lipsync::studio::TrajectoryView</name>
     <message>
-        <location filename="../studio/plots/TrajectoryView.cpp" line="136"/>
+        <location filename="../studio/plots/TrajectoryView.cpp" line="145"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/TrajectoryView.cpp" line="137"/>
+        <location filename="../studio/plots/TrajectoryView.cpp" line="146"/>
         <source>parameter value</source>
         <translation>Parameterwert</translation>
     </message>
     <message>
-        <location filename="../studio/plots/TrajectoryView.cpp" line="184"/>
+        <location filename="../studio/plots/TrajectoryView.cpp" line="193"/>
         <source>phonemes</source>
         <translation>Phoneme</translation>
     </message>
@@ -2461,39 +2482,39 @@
 <context>
     <name>lipsync::studio::WaveformView</name>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="436"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="431"/>
         <source>spectrogram</source>
         <translation>Spektrogramm</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="460"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="455"/>
         <source>No phones yet: align the sequence (Align)</source>
         <translation>Noch keine Phone: Sequenz ausrichten (Ausrichten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="460"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="455"/>
         <source>No words</source>
         <translation>Keine Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="461"/>
-        <location filename="../studio/timeline/WaveformView.cpp" line="502"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="456"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="497"/>
         <source>phones</source>
         <translation>Phone</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="461"/>
-        <location filename="../studio/timeline/WaveformView.cpp" line="502"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="456"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="497"/>
         <source>words</source>
         <translation>Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="509"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="504"/>
         <source>frame labels</source>
         <translation>Bildlabels</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="530"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="525"/>
         <source>frames</source>
         <translation>Bilder</translation>
     </message>

@@ -170,7 +170,8 @@ const PairTally &StudyTally::pair(int i, int j) const
     throw Error("study tally: no pair (" + std::to_string(i) + ", " + std::to_string(j) + ")");
 }
 
-std::string StudyTally::summary(double alpha) const
+std::string StudyTally::summary(double alpha,
+                                const std::function<std::string(const std::string &)> &methodName) const
 {
     std::string text;
     for (size_t r = 0; r < ranking.size(); ++r) {
@@ -178,7 +179,8 @@ std::string StudyTally::summary(double alpha) const
             const PairTally &p = pair(ranking[r - 1].method, ranking[r].method);
             text += p.decided() > 0 && p.holmPValue < alpha ? " \u227b " : " \u2248 ";
         }
-        text += methods[size_t(ranking[r].method)];
+        const std::string &method = methods[size_t(ranking[r].method)];
+        text += methodName ? methodName(method) : method;
     }
     return text;
 }

@@ -20,6 +20,7 @@
 #include <Eigen/Core>
 #include <QJsonObject>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -71,7 +72,9 @@ public:
     int unanswered = 0;
 
     const PairTally &pair(int i, int j) const; // either order; a of the result is min(i, j)
-    std::string summary(double alpha = 0.05) const;
+    // `methodName` (optional) gives each method id the name shown, e.g. a translated one.
+    std::string summary(double alpha = 0.05,
+                        const std::function<std::string(const std::string &)> &methodName = {}) const;
     // CSV, one row per pair: method_a,method_b,prefer_a,undecided,prefer_b,n_decided,p_value,p_holm
     std::string pairsCsv() const;
     // CSV, one row per method: rank,method,strength,judged_real,judged_not_real,undecided

@@ -4,6 +4,7 @@
 
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
+#include "app/ModelKinds.h"
 #include "app/ProjectDocument.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/ModelFile.h"
@@ -42,27 +43,11 @@ namespace lipsync::studio {
 
 namespace {
 
-const QStringList kKinds{QStringLiteral("dpds"), QStringLiteral("slds"), QStringLiteral("brand"),
-                         QStringLiteral("hmm")};
-
 QString kindText(const std::string &kind)
 {
     if (kind == "aam") return ModelsPanel::tr("Appearance model");
     if (kind == "aligner") return ModelsPanel::tr("Phoneme aligner");
-    if (kind == "dpds") return ModelsPanel::tr("DPDS");
-    if (kind == "slds") return ModelsPanel::tr("SLDS");
-    if (kind == "brand") return ModelsPanel::tr("Voice Puppetry");
-    if (kind == "hmm") return ModelsPanel::tr("Phoneme-mean HMM");
-    return QString::fromStdString(kind);
-}
-
-QColor kindColor(const QString &kind)
-{
-    if (kind == QLatin1String("dpds")) return QColor(0xe5, 0x39, 0x35);
-    if (kind == QLatin1String("slds")) return QColor(0x43, 0xa0, 0x47);
-    if (kind == QLatin1String("brand")) return QColor(0xfb, 0x8c, 0x00);
-    if (kind == QLatin1String("hmm")) return QColor(0x8e, 0x24, 0xaa);
-    return QColor(0x54, 0x6e, 0x7a);
+    return ModelKinds::name(kind);
 }
 
 QString modelFile(const QString &kind)
@@ -70,27 +55,7 @@ QString modelFile(const QString &kind)
     return QStringLiteral("models/%1.model").arg(kind);
 }
 
-bool isDynamicKind(const std::string &kind)
-{
-    return kKinds.contains(QString::fromStdString(kind));
-}
-
 } // namespace
-
-const QStringList &ModelsPanel::dynamicKinds()
-{
-    return kKinds;
-}
-
-QString ModelsPanel::kindName(const QString &kind)
-{
-    return kindText(kind.toStdString());
-}
-
-QColor ModelsPanel::kindColour(const QString &kind)
-{
-    return kindColor(kind);
-}
 
 ModelsPanel::ModelsPanel(QWidget *parent)
     : QWidget(parent), m_list(new QTreeWidget(this)), m_buildAam(new QPushButton(tr("Build AAM…"), this)),
@@ -110,7 +75,6 @@ ModelsPanel::ModelsPanel(QWidget *parent)
     // Kinds with their options, one row each.
     auto *grid = new QGridLayout;
     grid->setContentsMargins(0, 0, 0, 0);
-    const QStringList labels{tr("DPDS"), tr("SLDS"), tr("Voice Puppetry (Brand)"), tr("Phoneme-mean HMM")};
     m_dpdsOptimizer->addItem(tr("VarPro / Levenberg–Marquardt"), QStringLiteral("lm"));
     m_dpdsOptimizer->addItem(tr("Gradient ascent (paper)"), QStringLiteral("gradient"));
     m_sldsA->addItem(tr("Diagonal A"), false);
@@ -118,11 +82,13 @@ ModelsPanel::ModelsPanel(QWidget *parent)
     m_brandCovariance->addItem(tr("Diagonal covariance"), false);
     m_brandCovariance->addItem(tr("Full covariance"), true);
     QWidget *options[] = {m_dpdsOptimizer, m_sldsA, m_brandCovariance, nullptr};
-    for (int i = 0; i < kKinds.size(); ++i) {
-        auto *check = new QCheckBox(labels[i], this);
-        check->setObjectName(QStringLiteral("train_%1").arg(kKinds[i]));
+    const QStringList &kinds = ModelKinds::ids();
+    for (int i = 0; i < kinds.size(); ++i) {
+        auto *check = new QCheckBox(ModelKinds::name(kinds[i]), this);
+        check->setObjectName(QStringLiteral("train_%1").arg(kinds[i]));
+        check->setToolTip(ModelKinds::description(kinds[i]));
         check->setChecked(true);
-        m_kinds.insert(kKinds[i], check);
+        m_kinds.insert(kinds[i], check);
         grid->addWidget(check, i, 0);
         if (options[i])
             grid->addWidget(options[i], i, 1);
@@ -218,12 +184,12 @@ void ModelsPanel::setProject(const Project &project)
         item->setText(2, QString::fromStdString(m.file));
         item->setData(1, Qt::UserRole, QString::fromStdString(m.kind));
         const QString kind = QString::fromStdString(m.kind);
-        if (isDynamicKind(m.kind) && m_unsaved.contains(kind))
+        if (isDynamicModelKind(m.kind) && m_unsaved.contains(kind))
             item->setToolTip(2, tr("Trained in this session; written when the project is saved"));
         else
             item->setToolTip(2, QString::fromStdString(project.resolve(m.file)));
-        if (isDynamicKind(m.kind))
-            item->setForeground(1, kindColor(kind));
+        if (isDynamicModelKind(m.kind))
+            item->setForeground(1, ModelKinds::colour(kind));
     }
     if (project.models.empty()) {
         auto *item = new QTreeWidgetItem(m_list);
@@ -309,12 +275,12 @@ QList<Task *> ModelsPanel::train()
     const std::string aamId = aamIdentifier();
     if (m_plots)
         m_plots->setCurrentWidget(m_objective);
-    for (const QString &kind : kKinds) {
+    for (const QString &kind : ModelKinds::ids()) {
         if (!m_kinds[kind]->isChecked() || !m_kinds[kind]->isEnabled())
             continue;
-        const QString name = kindText(kind.toStdString());
+        const QString name = ModelKinds::name(kind);
         const QString target = doc->isReadOnly() ? QString() : QDir(doc->folder()).filePath(modelFile(kind));
-        m_objective->startRun(kind, name, kindColor(kind));
+        m_objective->startRun(kind, name, ModelKinds::colour(kind));
         QPointer<ModelsPanel> self(this);
         Task *task = m_window->taskRunner()->start(
             tr("Train %1").arg(name),
@@ -389,7 +355,7 @@ Task *ModelsPanel::evaluate()
     EvaluationOptions options;
     options.folds = std::min(m_folds->value(), int(data->size()));
     options.kinds.clear();
-    for (const QString &kind : kKinds)
+    for (const QString &kind : ModelKinds::ids())
         if (m_kinds[kind]->isChecked() && m_kinds[kind]->isEnabled())
             options.kinds.push_back(kind.toStdString());
     if (options.kinds.empty() || options.folds < 2) {
@@ -444,7 +410,7 @@ void ModelsPanel::onDocumentReset()
     const Project &project = m_window->document()->project();
     QStringList failed;
     for (const ModelReference &m : project.models) {
-        if (!isDynamicKind(m.kind))
+        if (!isDynamicModelKind(m.kind))
             continue;
         try {
             std::shared_ptr<const DynamicModel> model = loadModel(project.resolve(m.file));
@@ -479,7 +445,7 @@ void ModelsPanel::onLocationChanged()
             saveModel(*model, target.toStdString(), aamId);
             m_unsaved.remove(kind);
         } catch (const Error &e) {
-            m_status->setText(tr("The %1 model could not be saved: %2").arg(kindText(kind.toStdString()), QString::fromUtf8(e.what())));
+            m_status->setText(tr("The %1 model could not be saved: %2").arg(ModelKinds::name(kind), QString::fromUtf8(e.what())));
         }
     }
     setProject(doc->project());
@@ -519,14 +485,14 @@ void ModelsPanel::refreshTrajectory()
         } catch (const Error &) {
         }
         // Each trained model the document refers to, in the panel's order.
-        for (const QString &kind : kKinds) {
+        for (const QString &kind : ModelKinds::ids()) {
             const auto model = m_trained.value(kind);
             const bool referenced = doc->project().model(kind.toStdString()) != nullptr;
             if (!model || !referenced || labels.empty() || model->dimension() != s.features.cols())
                 continue;
             try {
                 const Eigen::MatrixXd generated = model->generate(labels);
-                TrajectoryView::Series g{kindText(kind.toStdString()), {}, kindColor(kind)};
+                TrajectoryView::Series g{ModelKinds::name(kind), {}, ModelKinds::colour(kind)};
                 for (Eigen::Index t = 0; t < generated.rows(); ++t)
                     g.values.append(generated(t, k));
                 series.append(g);

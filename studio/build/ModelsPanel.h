@@ -5,7 +5,6 @@
 // paper's Figure 4), and look at the trajectories they generate for the current sequence. Trained
 // models live here (in memory) and in the document as ModelReferences (kind dpds/slds/brand/hmm,
 // file models/<kind>.model, written when the project is saved).
-#include <QColor>
 #include <QHash>
 #include <QList>
 #include <QPointer>
@@ -54,7 +53,7 @@ public:
     QPushButton *trainButton() const { return m_train; }
     QPushButton *cancelButton() const { return m_cancel; }
     QPushButton *evaluateButton() const { return m_evaluate; }
-    // "dpds", "slds", "brand", "hmm".
+    // By kind id (ModelKinds::ids()).
     QCheckBox *kindCheck(const QString &kind) const { return m_kinds.value(kind); }
     QComboBox *dpdsOptimizer() const { return m_dpdsOptimizer; }
     QComboBox *sldsTransition() const { return m_sldsA; }
@@ -65,12 +64,6 @@ public:
     ObjectivePlot *objectivePlot() const { return m_objective; }
     EvaluationChart *evaluationChart() const { return m_evaluation; }
     QTabWidget *plotTabs() const { return m_plots; }
-
-    // The dynamic model kinds in the panel's order ("dpds", "slds", "brand", "hmm"), their names
-    // and plot colours.
-    static const QStringList &dynamicKinds();
-    static QString kindName(const QString &kind);
-    static QColor kindColour(const QString &kind);
 
     // The trained (or loaded) model of a kind, or null.
     std::shared_ptr<const DynamicModel> model(const QString &kind) const { return m_trained.value(kind); }

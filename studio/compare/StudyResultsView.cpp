@@ -1,6 +1,7 @@
 #include "compare/StudyResultsView.h"
 
 #include "app/ErrorReporter.h"
+#include "app/ModelKinds.h"
 #include "eval/StudyTally.h"
 #include "io/AtomicFile.h"
 #include "util/Error.h"
@@ -77,7 +78,7 @@ void StudyResultsView::setStudy(const ForcedChoiceStudy *study)
         return;
     }
     const StudyTally tally = StudyTally::fromStudy(*study);
-    const auto name = [&](int method) { return QString::fromStdString(tally.methods[size_t(method)]); };
+    const auto name = [&](int method) { return ModelKinds::name(tally.methods[size_t(method)]); };
     m_pairs->setRowCount(int(tally.pairs.size()));
     for (int r = 0; r < int(tally.pairs.size()); ++r) {
         const PairTally &p = tally.pairs[size_t(r)];
@@ -103,7 +104,9 @@ void StudyResultsView::setStudy(const ForcedChoiceStudy *study)
                            .arg(tally.participants)
                            .arg(tally.answered)
                            .arg(tally.unanswered)
-                           .arg(tally.answered > 0 ? QString::fromStdString(tally.summary()) : QString()));
+                           .arg(tally.answered > 0 ? QString::fromStdString(tally.summary(0.05, [](const std::string &method) {
+                                              return ModelKinds::name(method).toStdString();
+                                          })) : QString()));
     m_pairsCsv = tally.pairsCsv();
     m_rankingCsv = tally.rankingCsv();
 }

@@ -1,5 +1,6 @@
 #include "compare/StudySetupDialog.h"
 
+#include "app/ModelKinds.h"
 #include "compare/StudyClipRenderer.h"
 #include "project/Project.h"
 #include "util/Error.h"
@@ -22,11 +23,7 @@ QString methodTitle(const std::string &method)
 {
     if (method == StudyClipRenderer::kRealMethod)
         return StudySetupDialog::tr("Real (the recorded video)");
-    if (method == "hmm")
-        return QStringLiteral("HMM-mean");
-    if (method == "brand")
-        return QStringLiteral("Brand");
-    return QString::fromStdString(method).toUpper();
+    return ModelKinds::name(method);
 }
 
 } // namespace

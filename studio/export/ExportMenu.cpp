@@ -2,6 +2,7 @@
 
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
+#include "app/ModelKinds.h"
 #include "app/ProjectDocument.h"
 
 #include "aam/PtsFile.h"
@@ -29,16 +30,14 @@ namespace lipsync::studio {
 
 namespace {
 
-constexpr const char *kDynamicKinds[] = {"dpds", "slds", "brand", "hmm"};
-
-// The project's trained dynamic model of `kind`, or by default the paper's DPDS when there is
-// one, else the others.
+// The project's trained dynamic model of `kind`, or by default the first of the studio's order
+// (the paper's DPDS first).
 const ModelReference *dynamicModel(const Project &project, const QString &kind = {})
 {
     if (!kind.isEmpty())
         return project.model(kind.toStdString());
-    for (const char *k : kDynamicKinds)
-        if (const ModelReference *m = project.model(k))
+    for (const QString &k : ModelKinds::ids())
+        if (const ModelReference *m = project.model(k.toStdString()))
             return m;
     return nullptr;
 }
@@ -120,10 +119,10 @@ Task *ExportMenu::trigger(Kind kind)
     QString modelKind;
     if (usesDynamicModel(kind)) {
         QStringList kinds, names;
-        for (const char *k : kDynamicKinds)
-            if (const ModelReference *m = document->project().model(k)) {
-                kinds << QString::fromLatin1(k);
-                names << QString::fromStdString(m->name);
+        for (const QString &k : ModelKinds::ids())
+            if (document->project().model(k.toStdString())) {
+                kinds << k;
+                names << ModelKinds::name(k);
             }
         if (kinds.size() > 1) {
             modelKind = m_modelPrompt ? m_modelPrompt(kinds, names) : QString();
@@ -195,7 +194,12 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
         options.sideBySide = kind == Kind::SideBySide;
         if (options.sideBySide) {
             options.leftLabel = "real";
-            options.rightLabel = model->kind;
+            // The panel labels are drawn in ASCII: the model's name, else its id.
+            const QString name = ModelKinds::name(model->kind);
+            bool ascii = true;
+            for (QChar c : name)
+                ascii = ascii && c.unicode() < 0x80;
+            options.rightLabel = ascii ? name.toStdString() : model->kind;
         }
         title = kind == Kind::Images ? tr("Export the generated frames of %1").arg(id)
                                      : tr("Export the generated video of %1").arg(id);

@@ -1,5 +1,7 @@
 #include "plots/EvaluationChart.h"
 
+#include "app/ModelKinds.h"
+
 #include "eval/Evaluation.h"
 
 #include <vtkAxis.h>
@@ -33,15 +35,6 @@ namespace lipsync::studio {
 
 namespace {
 
-QColor kindColor(const std::string &kind)
-{
-    if (kind == "dpds") return QColor(0xe5, 0x39, 0x35);
-    if (kind == "slds") return QColor(0x43, 0xa0, 0x47);
-    if (kind == "brand") return QColor(0xfb, 0x8c, 0x00);
-    if (kind == "hmm") return QColor(0x8e, 0x24, 0xaa);
-    return QColor(0x54, 0x6e, 0x7a);
-}
-
 QString metricTitle(const std::string &metric)
 {
     if (metric == "l1") return EvaluationChart::tr("L1 error");
@@ -49,15 +42,6 @@ QString metricTitle(const std::string &metric)
     if (metric == "linf") return EvaluationChart::tr("L-inf error");
     if (metric == "loglik") return EvaluationChart::tr("log-likelihood per frame");
     return QString::fromStdString(metric);
-}
-
-QString kindName(const std::string &kind)
-{
-    if (kind == "dpds") return QStringLiteral("DPDS");
-    if (kind == "slds") return QStringLiteral("SLDS");
-    if (kind == "brand") return QStringLiteral("Brand");
-    if (kind == "hmm") return QStringLiteral("HMM");
-    return QString::fromStdString(kind);
 }
 
 } // namespace
@@ -69,6 +53,7 @@ struct EvaluationChart::Impl
     std::vector<vtkSmartPointer<vtkTable>> tables;
     int models = 0;
     int metrics = 0;
+    QStringList names;
 };
 
 EvaluationChart::EvaluationChart(QWidget *parent) : VtkWidget(parent), e(std::make_unique<Impl>())
@@ -87,6 +72,11 @@ int EvaluationChart::modelCount() const
     return e->models;
 }
 
+QStringList EvaluationChart::modelNames() const
+{
+    return e->names;
+}
+
 int EvaluationChart::metricCount() const
 {
     return e->metrics;
@@ -97,6 +87,7 @@ void EvaluationChart::clear()
     e->matrix->SetSize(vtkVector2i(0, 0));
     e->tables.clear();
     e->models = e->metrics = 0;
+    e->names.clear();
     update();
 }
 
@@ -107,6 +98,8 @@ void EvaluationChart::setResult(const EvaluationResult &result)
     const int n = int(result.models.size());
     if (n == 0)
         return;
+    for (const ModelEvaluation &model : result.models)
+        e->names.append(ModelKinds::name(model.kind));
     e->matrix->SetSize(vtkVector2i(2, (int(metrics.size()) + 1) / 2));
     e->matrix->SetGutter(vtkVector2f(50.0f, 40.0f));
     for (size_t m = 0; m < metrics.size(); ++m) {
@@ -137,7 +130,7 @@ void EvaluationChart::setResult(const EvaluationResult &result)
         colours->SetRange(0.0, std::max(1.0, double(n - 1)));
         for (int i = 0; i < n; ++i) {
             const ModelEvaluation &model = result.models[size_t(i)];
-            const QColor color = kindColor(model.kind);
+            const QColor color = ModelKinds::colour(model.kind);
             colours->SetTableValue(i, color.redF(), color.greenF(), color.blueF(), 1.0);
             const auto found = model.metrics.find(metrics[m]);
             if (found == model.metrics.end())
@@ -146,7 +139,7 @@ void EvaluationChart::setResult(const EvaluationResult &result)
             lo = std::min({lo, mean - ci, mean});
             hi = std::max({hi, mean + ci, mean});
             ticks->InsertNextValue(i);
-            labels->InsertNextValue(kindName(model.kind).toStdString());
+            labels->InsertNextValue(e->names[i].toStdString());
             bx->InsertNextValue(i);
             by->InsertNextValue(mean);
             bc->InsertNextValue(i);

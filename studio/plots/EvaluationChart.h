@@ -4,6 +4,8 @@
 // error bar of the 95 % confidence interval.
 #include "plots/VtkWidget.h"
 
+#include <QStringList>
+
 #include <memory>
 
 namespace lipsync {
@@ -24,6 +26,8 @@ public:
     // Models and metrics drawn (0 when empty).
     int modelCount() const;
     int metricCount() const;
+    // The models' names under their bars, in order.
+    QStringList modelNames() const;
 
 private:
     struct Impl;

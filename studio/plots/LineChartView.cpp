@@ -58,6 +58,7 @@ struct LineChartView::Impl
     double yMin = 0.0;
     double yMax = 1.0;
     int seriesCount = 0;
+    QStringList names;
 };
 
 LineChartView::LineChartView(QWidget *parent) : VtkWidget(parent), c(std::make_unique<Impl>())
@@ -116,6 +117,7 @@ int LineChartView::addSeries(const QString &name, const QVector<double> &x, cons
         c->yMax = std::max(c->yMax, y[i]);
     }
     ++c->seriesCount;
+    c->names.append(name);
     updateCursor();
     update();
     return c->seriesCount - 1;
@@ -128,6 +130,7 @@ void LineChartView::clearSeries()
     c->cursorPlot = nullptr;
     c->cursorTable = nullptr;
     c->seriesCount = 0;
+    c->names.clear();
     c->yMin = 0.0;
     c->yMax = 1.0;
     update();
@@ -136,6 +139,11 @@ void LineChartView::clearSeries()
 int LineChartView::seriesCount() const
 {
     return c->seriesCount;
+}
+
+QStringList LineChartView::seriesNames() const
+{
+    return c->names;
 }
 
 void LineChartView::setCursor(double x)

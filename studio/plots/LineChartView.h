@@ -6,6 +6,7 @@
 
 #include <QColor>
 #include <QString>
+#include <QStringList>
 #include <QVector>
 
 #include <memory>
@@ -29,6 +30,8 @@ public:
                   const QColor &color, float width = 2.0f);
     void clearSeries();
     int seriesCount() const;
+    // The series' names as the legend shows them, in order.
+    QStringList seriesNames() const;
     // A vertical line at x (the current frame's time); hidden when x is NaN.
     void setCursor(double x);
 

@@ -122,6 +122,14 @@ int TrajectoryView::seriesCount() const
     return int(t->series.size());
 }
 
+QStringList TrajectoryView::seriesNames() const
+{
+    QStringList names;
+    for (const Series &s : t->series)
+        names.append(s.name);
+    return names;
+}
+
 int TrajectoryView::phoneBandCount() const
 {
     return int(t->phones.size());

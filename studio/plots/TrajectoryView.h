@@ -7,6 +7,7 @@
 
 #include <QColor>
 #include <QString>
+#include <QStringList>
 #include <QVector>
 
 #include <memory>
@@ -35,6 +36,8 @@ public:
     void setData(const QString &title, double frameRate, const Tier &phones, const QVector<Series> &series);
     void clear();
     int seriesCount() const;
+    // The series' names as the legend shows them, in order.
+    QStringList seriesNames() const;
     int phoneBandCount() const;
     // The cursor at frame `frame` (its centre); hidden for a negative frame.
     void setCurrentFrame(int frame);

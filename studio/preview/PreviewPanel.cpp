@@ -8,6 +8,7 @@
 #include "app/ProjectDocument.h"
 #include "app/SequenceMedia.h"
 #include "app/StudioActions.h"
+#include "app/ModelKinds.h"
 #include "build/ModelsPanel.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/ModelFile.h"
@@ -297,12 +298,12 @@ void PreviewPanel::rebuild()
             } catch (const Error &) {
                 // no usable phones: nothing to generate from
             }
-            for (const QString &kind : ModelsPanel::dynamicKinds()) {
+            for (const QString &kind : ModelKinds::ids()) {
                 const auto model = m_window->modelsPanel()->model(kind);
                 if (!model || labels.empty() || model->dimension() != m_aam->combinedModes())
                     continue;
                 try {
-                    faces->addTrack({kind, ModelsPanel::kindName(kind), ModelsPanel::kindColour(kind),
+                    faces->addTrack({kind, ModelKinds::name(kind), ModelKinds::colour(kind),
                                      model->generate(labels)});
                 } catch (const Error &) {
                 }
@@ -528,7 +529,7 @@ void PreviewPanel::openSpeechDialog()
     if (!m_window)
         return;
     QStringList kinds;
-    for (const QString &kind : ModelsPanel::dynamicKinds())
+    for (const QString &kind : ModelKinds::ids())
         if (m_window->modelsPanel()->model(kind))
             kinds << kind;
     const auto media = m_window->media();
@@ -604,7 +605,7 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
                 faces = std::make_shared<GeneratedFaces>(result.aam, neutral, result.frameRate);
                 faces->setFixedFrame(image.copy(), 0);
             }
-            faces->addTrack({kind, ModelsPanel::kindName(kind), ModelsPanel::kindColour(kind), result.features});
+            faces->addTrack({kind, ModelKinds::name(kind), ModelKinds::colour(kind), result.features});
             feedback.setProgress(1.0);
             return [this, faces, mediaPath, title] { showSpeech(faces, mediaPath, title); };
         });

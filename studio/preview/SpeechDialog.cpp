@@ -1,6 +1,6 @@
 #include "preview/SpeechDialog.h"
 
-#include "build/ModelsPanel.h"
+#include "app/ModelKinds.h"
 #include "io/Transcript.h"
 #include "util/Error.h"
 
@@ -50,7 +50,7 @@ SpeechDialog::SpeechDialog(const QStringList &kinds, double frameRate, QWidget *
     m_frameRate->setValue(frameRate > 0 ? frameRate : 25.0);
     form->addRow(tr("Frame rate:"), m_frameRate);
     for (const QString &kind : kinds)
-        m_model->addItem(ModelsPanel::kindName(kind), kind);
+        m_model->addItem(ModelKinds::name(kind), kind);
     form->addRow(tr("Model:"), m_model);
     layout->addLayout(form);
     m_note->setWordWrap(true);

@@ -8,6 +8,7 @@
 
 #include "annotate/FrameView.h"
 #include "app/MainWindow.h"
+#include "app/ModelKinds.h"
 #include "app/ProjectDocument.h"
 #include "app/SequenceMedia.h"
 #include "app/SurfaceFormat.h"
@@ -150,7 +151,7 @@ private slots:
         // Two small models from the demo's features: the phoneme-mean HMM and DPDS.
         QSignalSpy ready(m_preview, &PreviewPanel::facesReady);
         ModelsPanel *models = m_window->modelsPanel();
-        for (const QString &k : ModelsPanel::dynamicKinds())
+        for (const QString &k : ModelKinds::ids())
             models->kindCheck(k)->setChecked(k == QLatin1String("hmm") || k == QLatin1String("dpds"));
         QTest::mouseClick(models->trainButton(), Qt::LeftButton);
         waitIdle();

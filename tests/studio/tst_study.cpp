@@ -4,6 +4,7 @@
 // trial, that participants are kept apart, and that the results view shows the tally.
 #include "DemoWindow.h"
 
+#include "app/ModelKinds.h"
 #include "app/ProjectDocument.h"
 #include "app/SurfaceFormat.h"
 #include "build/ModelsPanel.h"
@@ -230,13 +231,14 @@ private slots:
         QTableWidget *pairs = results->pairTable();
         QCOMPARE(pairs->rowCount(), 1);
         QCOMPARE(pairs->item(0, 0)->text(), QStringLiteral("real"));
-        QCOMPARE(pairs->item(0, 4)->text(), QStringLiteral("hmm"));
+        QCOMPARE(pairs->item(0, 4)->text(), ModelKinds::name(QStringLiteral("hmm"))); // the CSV keeps the id
         QCOMPARE(pairs->item(0, 1)->text().toInt(), tally.pairs[0].preferA);
         QCOMPARE(pairs->item(0, 2)->text().toInt(), 1); // P01's "can't decide"
         QCOMPARE(pairs->item(0, 3)->text().toInt(), tally.pairs[0].preferB);
         QCOMPARE(tally.pairs[0].preferA + tally.pairs[0].preferB, 3);
         QCOMPARE(results->rankingTable()->rowCount(), 2);
         QVERIFY(results->summary()->text().startsWith(QStringLiteral("Participants: 2, answers: 4")));
+        QVERIFY(results->summary()->text().contains(ModelKinds::name(QStringLiteral("hmm"))));
 
         const QString csv = m_dir.filePath("table1.csv");
         results->exportCsv(csv);
