@@ -375,7 +375,7 @@
     <message>
         <location filename="../studio/export/ExportMenu.cpp" line="195"/>
         <source>%1 has no face features (track it first)</source>
-        <translation>%1 hat keine Gesichtsmerkmale (zuerst verfolgen)</translation>
+        <translation>%1 hat keine Gesichtsmerkmale (zuerst tracken)</translation>
     </message>
     <message>
         <location filename="../studio/export/ExportMenu.cpp" line="198"/>
@@ -433,7 +433,7 @@
     <message>
         <location filename="../studio/annotate/FacesController.cpp" line="87"/>
         <source>&amp;Onion Skin of Previous Frame</source>
-        <translation>&amp;Zwiebelschicht des vorigen Bildes</translation>
+        <translation>&amp;Onion-Skin (vorheriges Bild)</translation>
     </message>
     <message>
         <location filename="../studio/annotate/FacesController.cpp" line="89"/>
@@ -453,12 +453,12 @@
     <message>
         <location filename="../studio/annotate/FacesController.cpp" line="92"/>
         <source>&amp;Track Sequence</source>
-        <translation>Sequenz &amp;verfolgen</translation>
+        <translation>Sequenz &amp;tracken</translation>
     </message>
     <message>
         <location filename="../studio/annotate/FacesController.cpp" line="93"/>
         <source>Track &amp;All Sequences</source>
-        <translation>&amp;Alle Sequenzen verfolgen</translation>
+        <translation>&amp;Alle Sequenzen tracken</translation>
     </message>
     <message>
         <location filename="../studio/annotate/FacesController.cpp" line="94"/>
@@ -518,7 +518,7 @@
     <message>
         <location filename="../studio/annotate/FacesController.cpp" line="321"/>
         <source>Track this sequence first to rank its frames by fit error.</source>
-        <translation>Verfolgen Sie diese Sequenz zuerst, um ihre Bilder nach Anpassungsfehler zu ordnen.</translation>
+        <translation>Tracken Sie diese Sequenz zuerst, um ihre Bilder nach Anpassungsfehler zu ordnen.</translation>
     </message>
     <message>
         <location filename="../studio/annotate/FacesController.cpp" line="353"/>
@@ -574,7 +574,7 @@
     <message>
         <location filename="../studio/annotate/FacesController.cpp" line="444"/>
         <source>Tracking needs an AAM.</source>
-        <translation>Zum Verfolgen wird ein AAM benötigt.</translation>
+        <translation>Zum Tracken wird ein AAM benötigt.</translation>
     </message>
     <message>
         <location filename="../studio/annotate/FacesController.cpp" line="445"/>
@@ -584,20 +584,20 @@
     <message>
         <location filename="../studio/annotate/FacesController.cpp" line="463"/>
         <source>Track %1</source>
-        <translation>%1 verfolgen</translation>
+        <translation>%1 tracken</translation>
     </message>
     <message numerus="yes">
         <location filename="../studio/annotate/FacesController.cpp" line="463"/>
         <source>Track %n sequence(s)</source>
         <translation>
-            <numerusform>%n Sequenz verfolgen</numerusform>
-            <numerusform>%n Sequenzen verfolgen</numerusform>
+            <numerusform>%n Sequenz tracken</numerusform>
+            <numerusform>%n Sequenzen tracken</numerusform>
         </translation>
     </message>
     <message>
         <location filename="../studio/annotate/FacesController.cpp" line="533"/>
         <source>Tracking failed.</source>
-        <translation>Das Verfolgen ist fehlgeschlagen.</translation>
+        <translation>Das Tracking ist fehlgeschlagen.</translation>
     </message>
 </context>
 <context>
@@ -1001,7 +1001,7 @@
     <message>
         <location filename="../studio/build/ModelsPanel.cpp" line="107"/>
         <source>folds: </source>
-        <translation>Folds: </translation>
+        <translation>Teilmengen (k-fach): </translation>
     </message>
     <message>
         <location filename="../studio/build/ModelsPanel.cpp" line="116"/>
@@ -1056,7 +1056,7 @@
     <message>
         <location filename="../studio/build/ModelsPanel.cpp" line="232"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
-        <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter verfolgen und die Sprache alignieren.</translation>
+        <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter tracken und die Sprache alignieren.</translation>
     </message>
     <message>
         <location filename="../studio/build/ModelsPanel.cpp" line="286"/>
@@ -1114,8 +1114,8 @@
         <location filename="../studio/build/ModelsPanel.cpp" line="381"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds.</source>
         <translation>
-            <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Folds.</numerusform>
-            <numerusform>%n Modelle auf %1 Sequenzen evaluiert, %2 Folds.</numerusform>
+            <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen (k-fache Kreuzvalidierung).</numerusform>
+            <numerusform>%n Modelle auf %1 Sequenzen evaluiert, %2 Teilmengen (k-fache Kreuzvalidierung).</numerusform>
         </translation>
     </message>
     <message>
@@ -1142,7 +1142,7 @@
     <message>
         <location filename="../studio/build/ModelsPanel.cpp" line="467"/>
         <source>%1: no features yet (track the faces first)</source>
-        <translation>%1: noch keine Merkmale (zuerst die Gesichter verfolgen)</translation>
+        <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
         <location filename="../studio/build/ModelsPanel.cpp" line="477"/>
@@ -1329,7 +1329,7 @@
     <message>
         <location filename="../studio/preview/PreviewPanel.cpp" line="82"/>
         <source>Show the tracked points on the recorded video and the generated points on the generated faces</source>
-        <translation>Die verfolgten Punkte auf dem aufgenommenen Video und die erzeugten Punkte auf den erzeugten Gesichtern zeigen</translation>
+        <translation>Die getrackten Punkte auf dem aufgenommenen Video und die erzeugten Punkte auf den erzeugten Gesichtern zeigen</translation>
     </message>
     <message>
         <location filename="../studio/preview/PreviewPanel.cpp" line="83"/>
@@ -1349,7 +1349,7 @@
     <message>
         <location filename="../studio/preview/PreviewPanel.cpp" line="274"/>
         <source>The head could not be tracked: %1</source>
-        <translation>Der Kopf konnte nicht verfolgt werden: %1</translation>
+        <translation>Der Kopf konnte nicht getrackt werden: %1</translation>
     </message>
     <message>
         <location filename="../studio/preview/PreviewPanel.cpp" line="323"/>
@@ -1374,7 +1374,7 @@
     <message>
         <location filename="../studio/preview/PreviewPanel.cpp" line="382"/>
         <source>Tracking the head pose…</source>
-        <translation>Kopfhaltung wird verfolgt…</translation>
+        <translation>Kopfhaltung wird getrackt…</translation>
     </message>
     <message>
         <location filename="../studio/preview/PreviewPanel.cpp" line="384"/>
