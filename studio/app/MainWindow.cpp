@@ -5,6 +5,7 @@
 #include "app/AboutBox.h"
 #include "app/Autosave.h"
 #include "app/ErrorReporter.h"
+#include "app/ModelKinds.h"
 #include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
 #include "app/SequenceListModel.h"
@@ -225,7 +226,7 @@ void MainWindow::updateActiveModels()
         if (it->kind == "aam")
             aam = QString::fromStdString(it->name);
         else
-            dynamic.prepend(QString::fromStdString(it->name));
+            dynamic.prepend(ModelKinds::name(it->kind));
     }
     const QString text = tr("AAM: %1 · Models: %2")
                              .arg(aam.isEmpty() ? tr("none") : aam,

@@ -1,7 +1,8 @@
 // Every place the studio names a dynamic model names it as the registry (ModelKinds) does: the
-// Models panel's check boxes and list, the legends of the Training and Trajectory plots, the bars
-// of the Evaluation chart, File ▸ Export's choice of model, the Generate from Speech dialog and the
-// study set-up and results. Two panels that name a model differently fail here.
+// Models panel's check boxes and list, the status bar's models in use, the legends of the
+// Training and Trajectory plots, the bars of the Evaluation chart, File ▸ Export's choice of
+// model, the Generate from Speech dialog and the study set-up and results. Two panels that name
+// a model differently fail here.
 #include "DemoWindow.h"
 
 #include "app/MainWindow.h"
@@ -98,6 +99,19 @@ private slots:
             ++listed;
         }
         QCOMPARE(listed, 4);
+    }
+
+    void statusBar()
+    {
+        const auto *active = m_window->findChild<QLabel *>(QStringLiteral("activeModels"));
+        QVERIFY(active);
+        QStringList shown = active->text().section(QStringLiteral("Models: "), 1).split(QStringLiteral(", "));
+        shown.sort();
+        QStringList expected;
+        for (const QString &kind : ModelKinds::ids())
+            expected.append(ModelKinds::name(kind));
+        expected.sort();
+        QCOMPARE(shown, expected);
     }
 
     void trainingLegend()
