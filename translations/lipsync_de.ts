@@ -17,29 +17,39 @@
 <context>
     <name>CommandLine</name>
     <message>
-        <location filename="../studio/app/CommandLine.cpp" line="10"/>
+        <location filename="../studio/app/CommandLine.cpp" line="14"/>
         <source>LipSync Studio: realistic lip movement from speech.</source>
         <translation>LipSync Studio: realistische Lippenbewegungen aus Sprache.</translation>
     </message>
     <message>
-        <location filename="../studio/app/CommandLine.cpp" line="13"/>
+        <location filename="../studio/app/CommandLine.cpp" line="17"/>
         <source>Open the project in DIR.</source>
         <translation>Das Projekt im Ordner DIR öffnen.</translation>
     </message>
     <message>
-        <location filename="../studio/app/CommandLine.cpp" line="16"/>
+        <location filename="../studio/app/CommandLine.cpp" line="20"/>
         <source>User interface language (en, de); default: the system&apos;s.</source>
         <translation>Sprache der Benutzeroberfläche (en, de); Vorgabe: die des Systems.</translation>
     </message>
     <message>
-        <location filename="../studio/app/CommandLine.cpp" line="19"/>
+        <location filename="../studio/app/CommandLine.cpp" line="23"/>
         <source>Render the main window into FILE (PNG) once the project has loaded, then exit.</source>
         <translation>Das Hauptfenster nach dem Laden des Projekts in DATEI (PNG) speichern und beenden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/CommandLine.cpp" line="22"/>
+        <location filename="../studio/app/CommandLine.cpp" line="25"/>
+        <source>Window size, e.g. 1920x1080.</source>
+        <translation>Fenstergröße, z. B. 1920x1080.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/CommandLine.cpp" line="28"/>
         <source>Project folder (or its project.json).</source>
         <translation>Projektordner (oder dessen project.json).</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/CommandLine.cpp" line="42"/>
+        <source>--size takes WIDTHxHEIGHT, at least 320x240, e.g. 1920x1080</source>
+        <translation>--size erwartet BREITExHÖHE, mindestens 320x240, z. B. 1920x1080</translation>
     </message>
 </context>
 <context>
@@ -271,151 +281,160 @@
 <context>
     <name>lipsync::studio::ExportMenu</name>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="48"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="59"/>
         <source>E&amp;xport</source>
         <translation>E&amp;xportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="51"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="62"/>
         <source>Generated &amp;Video (MP4)…</source>
         <translation>Erzeugtes &amp;Video (MP4)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="51"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="62"/>
         <source>Real and Generated &amp;Side by Side (MP4)…</source>
         <translation>Echt und erzeugt &amp;nebeneinander (MP4)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="52"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="63"/>
         <source>Generated &amp;Frames (PNG)…</source>
         <translation>Erzeugte &amp;Einzelbilder (PNG)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="52"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="63"/>
         <source>F&amp;eatures (CSV)…</source>
         <translation>M&amp;erkmale (CSV)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="53"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="64"/>
         <source>&amp;Alignment (TextGrid)…</source>
         <translation>&amp;Alignierung (TextGrid)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="53"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="64"/>
         <source>&amp;Landmarks (.pts)…</source>
         <translation>&amp;Landmarken (.pts)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="54"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="65"/>
         <source>Active Appearance &amp;Model…</source>
         <translation>Active Appearance &amp;Model…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="54"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="93"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="65"/>
         <source>&amp;Trained Dynamic Model…</source>
         <translation>&amp;Trainiertes dynamisches Modell…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="92"/>
-        <source>&amp;Trained Dynamic Model (%1)…</source>
-        <translation>&amp;Trainiertes dynamisches Modell (%1)…</translation>
+        <location filename="../studio/export/ExportMenu.cpp" line="77"/>
+        <source>Export</source>
+        <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="109"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="110"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="77"/>
+        <source>Which trained model?</source>
+        <translation>Welches trainierte Modell?</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="141"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="142"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="112"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="144"/>
         <source>Feature tables (*.csv)</source>
         <translation>Merkmalstabellen (*.csv)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="113"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="145"/>
         <source>Praat TextGrid (*.TextGrid)</source>
         <translation>Praat-TextGrid (*.TextGrid)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="115"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="147"/>
         <source>Active appearance models (*.aam)</source>
         <translation>Active Appearance Models (*.aam)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="116"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="149"/>
         <source>Dynamic models (*.model)</source>
         <translation>Dynamische Modelle (*.model)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="132"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="165"/>
         <source>Cannot export</source>
         <translation>Export nicht möglich</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="134"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="167"/>
         <source>no sequence is selected</source>
         <translation>keine Sequenz ausgewählt</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="151"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="184"/>
         <source>the project has no trained dynamic model and AAM (train one in the Models panel)</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell und kein AAM (im Bereich Modelle trainieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="171"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="204"/>
         <source>Export the generated frames of %1</source>
         <translation>Erzeugte Einzelbilder von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="172"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="205"/>
         <source>Export the generated video of %1</source>
         <translation>Erzeugtes Video von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="195"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="228"/>
         <source>%1 has no face features (track it first)</source>
         <translation>%1 hat keine Gesichtsmerkmale (zuerst tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="198"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="231"/>
         <source>Export the features of %1</source>
         <translation>Merkmale von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="206"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="239"/>
         <source>%1 has no phone alignment (align it first)</source>
         <translation>%1 hat keine Phonem-Alignierung (zuerst alignieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="209"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="242"/>
         <source>Export the alignment of %1</source>
         <translation>Alignierung von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="222"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="255"/>
         <source>%1 has no landmarks</source>
         <translation>%1 hat keine Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="225"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="258"/>
         <source>Export the landmarks of %1</source>
         <translation>Landmarken von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="246"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="279"/>
         <source>the project has no AAM</source>
         <translation>das Projekt hat kein AAM</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="247"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="280"/>
         <source>the project has no trained dynamic model</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="251"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="284"/>
         <source>Export %1</source>
         <translation>%1 exportieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="295"/>
+        <source>Exported to %1</source>
+        <translation>Exportiert nach %1</translation>
     </message>
 </context>
 <context>
@@ -471,72 +490,72 @@
         <translation>&amp;Gesichter</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="187"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="214"/>
         <source>The AAM could not be saved with the project.</source>
         <translation>Das AAM konnte nicht mit dem Projekt gespeichert werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="210"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="237"/>
         <source>Fit error %1</source>
         <translation>Anpassungsfehler %1</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="211"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="238"/>
         <source>No face found by the tracker</source>
         <translation>Der Tracker hat kein Gesicht gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="235"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="262"/>
         <source>Detect landmarks in %1, frame %2</source>
         <translation>Landmarken in %1, Bild %2 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="237"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="264"/>
         <source>Finding the face…</source>
         <translation>Gesicht wird gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="268"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="295"/>
         <source>Detect landmarks in frame %1</source>
         <translation>Landmarken in Bild %1 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="271"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="298"/>
         <source>No landmarks were detected.</source>
         <translation>Es wurden keine Landmarken erkannt.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="292"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="319"/>
         <source>Copy points of frame %1 to frame %2</source>
         <translation>Punkte von Bild %1 nach Bild %2 kopieren</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="311"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="338"/>
         <source>Every frame of this sequence is labelled.</source>
         <translation>Alle Bilder dieser Sequenz sind beschriftet.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="321"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="348"/>
         <source>Track this sequence first to rank its frames by fit error.</source>
         <translation>Tracken Sie diese Sequenz zuerst, um ihre Bilder nach Anpassungsfehler zu ordnen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="353"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="380"/>
         <source>The project&apos;s AAM could not be loaded.</source>
         <translation>Das AAM des Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="377"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="404"/>
         <source>An AAM needs at least 3 frames with all 23 points; this project has %1.</source>
         <translation>Ein AAM braucht mindestens 3 Bilder mit allen 23 Punkten; dieses Projekt hat %1.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="379"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="406"/>
         <source>Label more frames (Detect Landmarks, then correct the points).</source>
         <translation>Beschriften Sie weitere Bilder (Landmarken erkennen, dann die Punkte korrigieren).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="386"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="413"/>
         <source>Build AAM from %n frame(s)</source>
         <translation>
             <numerusform>AAM aus %n Bild erstellen</numerusform>
@@ -544,22 +563,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="388"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="415"/>
         <source>Reading the labelled frames…</source>
         <translation>Beschriftete Bilder werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="420"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="447"/>
         <source>Build AAM %1</source>
         <translation>AAM %1 erstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="424"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="451"/>
         <source>AAM %1 built from %2 frames: %3 combined modes%4</source>
         <translation>AAM %1 aus %2 Bildern erstellt: %3 kombinierte Moden%4</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="428"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="455"/>
         <source> (%n frame(s) skipped)</source>
         <translation>
             <numerusform> (%n Bild übersprungen)</numerusform>
@@ -567,27 +586,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="433"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="460"/>
         <source>The AAM could not be built.</source>
         <translation>Das AAM konnte nicht erstellt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="444"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="471"/>
         <source>Tracking needs an AAM.</source>
         <translation>Zum Tracken wird ein AAM benötigt.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="445"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="472"/>
         <source>Label a few frames and choose Faces ▸ Build AAM first.</source>
         <translation>Beschriften Sie einige Bilder und wählen Sie zuerst Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="463"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="490"/>
         <source>Track %1</source>
         <translation>%1 tracken</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="463"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="490"/>
         <source>Track %n sequence(s)</source>
         <translation>
             <numerusform>%n Sequenz tracken</numerusform>
@@ -595,7 +614,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="533"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="560"/>
         <source>Tracking failed.</source>
         <translation>Das Tracking ist fehlgeschlagen.</translation>
     </message>
@@ -603,162 +622,162 @@
 <context>
     <name>lipsync::studio::FrameView</name>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="301"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="307"/>
         <source>Click to place %1 (%2 of %3), or press %4 to detect all points</source>
         <translation>Klicken, um %1 zu setzen (%2 von %3), oder %4 drücken, um alle Punkte zu erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="274"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="280"/>
         <source>automatic</source>
         <translation>automatisch</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="275"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="281"/>
         <source>placed</source>
         <translation>gesetzt</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="276"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="282"/>
         <source>fixed</source>
         <translation>fixiert</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="307"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="313"/>
         <source>Click to place %1 (%2 of %3)</source>
         <translation>Klicken, um %1 zu setzen (%2 von %3)</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="309"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="315"/>
         <source>Selected: %1</source>
         <translation>Ausgewählt: %1</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="351"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="357"/>
         <source>Place %1</source>
         <translation>%1 setzen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="393"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="399"/>
         <source>Move %1</source>
         <translation>%1 verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="425"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="431"/>
         <source>Remove %1</source>
         <translation>%1 entfernen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="111"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="117"/>
         <source>left eye, outer corner</source>
         <translation>linkes Auge, äußerer Winkel</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="112"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="118"/>
         <source>left eye, upper lid</source>
         <translation>linkes Auge, Oberlid</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="113"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="119"/>
         <source>left eye, inner corner</source>
         <translation>linkes Auge, innerer Winkel</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="114"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="120"/>
         <source>left eye, lower lid</source>
         <translation>linkes Auge, Unterlid</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="115"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="121"/>
         <source>right eye, inner corner</source>
         <translation>rechtes Auge, innerer Winkel</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="116"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="122"/>
         <source>right eye, upper lid</source>
         <translation>rechtes Auge, Oberlid</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="117"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="123"/>
         <source>right eye, outer corner</source>
         <translation>rechtes Auge, äußerer Winkel</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="118"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="124"/>
         <source>right eye, lower lid</source>
         <translation>rechtes Auge, Unterlid</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="119"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="125"/>
         <source>mouth, left corner</source>
         <translation>Mund, linker Winkel</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="120"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="126"/>
         <source>upper lip, left</source>
         <translation>Oberlippe, links</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="121"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="127"/>
         <source>upper lip, centre</source>
         <translation>Oberlippe, Mitte</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="122"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="128"/>
         <source>upper lip, right</source>
         <translation>Oberlippe, rechts</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="123"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="129"/>
         <source>mouth, right corner</source>
         <translation>Mund, rechter Winkel</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="124"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="130"/>
         <source>lower lip, right</source>
         <translation>Unterlippe, rechts</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="125"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="131"/>
         <source>lower lip, centre</source>
         <translation>Unterlippe, Mitte</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="126"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="132"/>
         <source>lower lip, left</source>
         <translation>Unterlippe, links</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="127"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="133"/>
         <source>inner lip, top</source>
         <translation>Innenlippe, oben</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="128"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="134"/>
         <source>inner lip, bottom</source>
         <translation>Innenlippe, unten</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="129"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="135"/>
         <source>jaw, left</source>
         <translation>Kiefer, links</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="130"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="136"/>
         <source>jaw, lower left</source>
         <translation>Kiefer, unten links</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="131"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="137"/>
         <source>chin</source>
         <translation>Kinn</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="132"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="138"/>
         <source>jaw, lower right</source>
         <translation>Kiefer, unten rechts</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FrameView.cpp" line="133"/>
+        <location filename="../studio/annotate/FrameView.cpp" line="139"/>
         <source>jaw, right</source>
         <translation>Kiefer, rechts</translation>
     </message>
@@ -766,108 +785,138 @@
 <context>
     <name>lipsync::studio::MainWindow</name>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="64"/>
+        <location filename="../studio/app/MainWindow.cpp" line="72"/>
         <source>Annotate</source>
         <translation>Annotieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="65"/>
+        <location filename="../studio/app/MainWindow.cpp" line="73"/>
         <source>Preview &amp;&amp; Compare</source>
         <translation>Vorschau &amp;&amp; Vergleich</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="81"/>
+        <location filename="../studio/app/MainWindow.cpp" line="92"/>
         <source>%1 was not applied: it would leave the project unsaveable (%2).</source>
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="103"/>
-        <location filename="../studio/app/MainWindow.cpp" line="104"/>
+        <location filename="../studio/app/MainWindow.cpp" line="115"/>
+        <source>Playing without sound: %1.</source>
+        <translation>Wiedergabe ohne Ton: %1.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="121"/>
+        <location filename="../studio/app/MainWindow.cpp" line="122"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="155"/>
+        <location filename="../studio/app/MainWindow.cpp" line="177"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="160"/>
+        <location filename="../studio/app/MainWindow.cpp" line="181"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="170"/>
+        <location filename="../studio/app/MainWindow.cpp" line="191"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="174"/>
+        <location filename="../studio/app/MainWindow.cpp" line="204"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="186"/>
+        <location filename="../studio/app/MainWindow.cpp" line="231"/>
+        <source>AAM: %1 · Models: %2</source>
+        <translation>AAM: %1 · Modelle: %2</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="232"/>
+        <source>none</source>
+        <translation>keines</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="233"/>
+        <source>none trained</source>
+        <translation>keine trainiert</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="235"/>
+        <source>The appearance model and the dynamic models the project uses now</source>
+        <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="266"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="189"/>
+        <location filename="../studio/app/MainWindow.cpp" line="269"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="201"/>
+        <location filename="../studio/app/MainWindow.cpp" line="281"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="205"/>
+        <location filename="../studio/app/MainWindow.cpp" line="285"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="216"/>
+        <location filename="../studio/app/MainWindow.cpp" line="296"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="222"/>
+        <location filename="../studio/app/MainWindow.cpp" line="300"/>
+        <source>&amp;Reset Layout</source>
+        <translation>Layout &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="304"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="225"/>
+        <location filename="../studio/app/MainWindow.cpp" line="307"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="273"/>
+        <location filename="../studio/app/MainWindow.cpp" line="360"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="318"/>
+        <location filename="../studio/app/MainWindow.cpp" line="405"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="326"/>
+        <location filename="../studio/app/MainWindow.cpp" line="413"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="360"/>
+        <location filename="../studio/app/MainWindow.cpp" line="447"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="362"/>
+        <location filename="../studio/app/MainWindow.cpp" line="449"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="366"/>
+        <location filename="../studio/app/MainWindow.cpp" line="453"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -875,43 +924,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="376"/>
+        <location filename="../studio/app/MainWindow.cpp" line="463"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="377"/>
+        <location filename="../studio/app/MainWindow.cpp" line="464"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="377"/>
+        <location filename="../studio/app/MainWindow.cpp" line="464"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="383"/>
+        <location filename="../studio/app/MainWindow.cpp" line="470"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="400"/>
+        <location filename="../studio/app/MainWindow.cpp" line="487"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="420"/>
-        <location filename="../studio/app/MainWindow.cpp" line="428"/>
+        <location filename="../studio/app/MainWindow.cpp" line="507"/>
+        <location filename="../studio/app/MainWindow.cpp" line="515"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="427"/>
+        <location filename="../studio/app/MainWindow.cpp" line="514"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="169"/>
+        <location filename="../studio/app/MainWindow.cpp" line="190"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -1285,6 +1334,39 @@
     </message>
 </context>
 <context>
+    <name>lipsync::studio::PlaybackController</name>
+    <message>
+        <location filename="../studio/preview/PlaybackController.cpp" line="110"/>
+        <source>no media</source>
+        <translation>keine Medien</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PlaybackController.cpp" line="113"/>
+        <source>no audio output device was found</source>
+        <translation>kein Audio-Ausgabegerät gefunden</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PlaybackController.cpp" line="122"/>
+        <source>the audio device %1 takes neither float nor 16-bit samples</source>
+        <translation>das Audiogerät %1 nimmt weder Float- noch 16-Bit-Samples an</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PlaybackController.cpp" line="136"/>
+        <source>the clip&apos;s sound could not be decoded</source>
+        <translation>der Ton des Clips konnte nicht dekodiert werden</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PlaybackController.cpp" line="174"/>
+        <source>the audio device %1 could not be opened</source>
+        <translation>das Audiogerät %1 konnte nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PlaybackController.cpp" line="209"/>
+        <source>the audio device stopped</source>
+        <translation>das Audiogerät hat die Wiedergabe abgebrochen</translation>
+    </message>
+</context>
+<context>
     <name>lipsync::studio::PreviewPanel</name>
     <message>
         <location filename="../studio/preview/PreviewPanel.cpp" line="59"/>
@@ -1342,78 +1424,78 @@
         <translation>Die aktuelle Sequenz wieder zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="245"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="251"/>
         <source>Prepare the preview of %1</source>
         <translation>Vorschau von %1 vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="274"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="280"/>
         <source>The head could not be tracked: %1</source>
         <translation>Der Kopf konnte nicht getrackt werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="323"/>
-        <source>Recorded video</source>
-        <translation>Aufgenommenes Video</translation>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="329"/>
+        <source>Recorded video (landmarks: tracked)</source>
+        <translation>Aufgenommenes Video (Landmarken: getrackt)</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="328"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="334"/>
         <source>Generated: %1</source>
         <translation>Erzeugt: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="332"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="338"/>
         <source>Generated</source>
         <translation>Erzeugt</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="380"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="389"/>
         <source>The project has no appearance model (Faces ▸ Build AAM).</source>
         <translation>Das Projekt hat kein Erscheinungsmodell (Gesichter ▸ AAM erstellen).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="382"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="391"/>
         <source>Tracking the head pose…</source>
         <translation>Kopfhaltung wird getrackt…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="384"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="393"/>
         <source>This sequence has no phones (align it in the Timeline).</source>
         <translation>Diese Sequenz hat keine Phoneme (in der Zeitleiste alignieren).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="386"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="395"/>
         <source>Train a dynamic model in the Models panel to see the faces it generates.</source>
         <translation>Trainieren Sie ein dynamisches Modell im Bereich „Modelle“, um die erzeugten Gesichter zu sehen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="435"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="444"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 — Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="544"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="553"/>
         <source>Faces for new speech need the project&apos;s appearance model.</source>
         <translation>Gesichter für neue Sprache brauchen das Erscheinungsmodell des Projekts.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="545"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="554"/>
         <source>Build one with Faces ▸ Build AAM.</source>
         <translation>Erstellen Sie eines mit Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="550"/>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="605"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="559"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="614"/>
         <source>No faces could be generated for this speech.</source>
         <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="551"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="560"/>
         <source>Train a dynamic model in the Models panel first.</source>
         <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="573"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="582"/>
         <source>Generate faces for %1</source>
         <translation>Gesichter für %1 erzeugen</translation>
     </message>
@@ -1429,100 +1511,100 @@
 <context>
     <name>lipsync::studio::ProjectFiles</name>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="33"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="46"/>
         <source>Autosave failed (unsaved changes are only in memory; the project on disk is untouched): %1</source>
         <translation>Automatisches Speichern fehlgeschlagen (ungespeicherte Änderungen sind nur im Speicher; das Projekt auf der Festplatte ist unverändert): %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="44"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="94"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="57"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="107"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="45"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="58"/>
         <source>LipSync projects (project.json)</source>
         <translation>LipSync-Projekte (project.json)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="55"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="68"/>
         <source>New Project: the Folder of Your Clips (transcripts beside them)</source>
         <translation>Neues Projekt: der Ordner mit Ihren Clips (Transkripte daneben)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="64"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="82"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="77"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="95"/>
         <source>No new project was created.</source>
         <translation>Es wurde kein neues Projekt angelegt.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="65"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="78"/>
         <source>the folder already holds a project: open it instead</source>
         <translation>Der Ordner enthält bereits ein Projekt: Öffnen Sie es stattdessen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="68"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="81"/>
         <source>New project from %1</source>
         <translation>Neues Projekt aus %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="95"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="108"/>
         <source>%1 holds no project. Create a new project from the clips in it?</source>
         <translation>%1 enthält kein Projekt. Ein neues Projekt aus den Clips darin anlegen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="103"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="116"/>
         <source>The project could not be opened.</source>
         <translation>Das Projekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="134"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="147"/>
         <source>The bundled demo project was not found.</source>
         <translation>Das mitgelieferte Demoprojekt wurde nicht gefunden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="135"/>
-        <source>Looked in $LIPSYNC_DEMO_DIR, &lt;prefix&gt;/share/lipsync/demo and the source tree.</source>
-        <translation>Gesucht in $LIPSYNC_DEMO_DIR, &lt;prefix&gt;/share/lipsync/demo und im Quellbaum.</translation>
+        <location filename="../studio/app/ProjectFiles.cpp" line="148"/>
+        <source>Looked for demo/ in: %1</source>
+        <translation>demo/ gesucht in: %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="142"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="155"/>
         <source>The demo project could not be opened.</source>
         <translation>Das Demoprojekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="164"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="177"/>
         <source>Save Project As (a folder)</source>
         <translation>Projekt speichern unter (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="169"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="188"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="182"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="201"/>
         <source>The project could not be saved.</source>
         <translation>Das Projekt konnte nicht gespeichert werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="170"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="183"/>
         <source>a file of that name exists; a project needs a folder</source>
         <translation>es gibt eine Datei dieses Namens; ein Projekt braucht einen Ordner</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="175"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="188"/>
         <source>Replace Project</source>
         <translation>Projekt ersetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="176"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="189"/>
         <source>%1 already holds a project. Replace it?</source>
         <translation>%1 enthält bereits ein Projekt. Ersetzen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="201"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="214"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="201"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="214"/>
         <source>The project has unsaved changes. Save them?</source>
         <translation>Das Projekt hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
@@ -2474,7 +2556,7 @@
         <translation>Bild</translation>
     </message>
     <message>
-        <location filename="../studio/app/TransportBar.cpp" line="73"/>
+        <location filename="../studio/app/TransportBar.cpp" line="75"/>
         <source>%1 s / %2 s</source>
         <translation>%1 s / %2 s</translation>
     </message>
@@ -2482,39 +2564,39 @@
 <context>
     <name>lipsync::studio::WaveformView</name>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="431"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="448"/>
         <source>spectrogram</source>
         <translation>Spektrogramm</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="455"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="472"/>
         <source>No phones yet: align the sequence (Align)</source>
         <translation>Noch keine Phone: Sequenz ausrichten (Ausrichten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="455"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="472"/>
         <source>No words</source>
         <translation>Keine Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="456"/>
-        <location filename="../studio/timeline/WaveformView.cpp" line="497"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="473"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="514"/>
         <source>phones</source>
         <translation>Phone</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="456"/>
-        <location filename="../studio/timeline/WaveformView.cpp" line="497"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="473"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="514"/>
         <source>words</source>
         <translation>Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="504"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="521"/>
         <source>frame labels</source>
         <translation>Bildlabels</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="525"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="542"/>
         <source>frames</source>
         <translation>Bilder</translation>
     </message>
