@@ -4,6 +4,7 @@
 // (timeline, trajectory plot, current frame), the timeline's selection loops, the landmarks
 // overlay toggles, and Generate from Speech turns a demo clip and its transcript into a playable
 // generated sequence at a chosen frame rate.
+#include "../SanitizedBuild.h"
 #include "DemoWindow.h"
 
 #include "annotate/FrameView.h"
@@ -39,16 +40,9 @@
 
 #include <cmath>
 
-// Sanitizer builds (ASan + UBSan, and the fuzzers' coverage counters in the `fuzz` preset) run
+// Sanitizer builds (LIPSYNC_SANITIZED_BUILD; ASan + UBSan with the fuzz preset's coverage counters) run
 // the drawing several times slower: measured 26 frames/s there on a loaded 2-core machine. They
 // check memory, not speed; the release build checks the speed.
-#if defined(__SANITIZE_ADDRESS__)
-#define LIPSYNC_SANITIZED_BUILD 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define LIPSYNC_SANITIZED_BUILD 1
-#endif
-#endif
 
 using namespace lipsync;
 using namespace lipsync::studio;

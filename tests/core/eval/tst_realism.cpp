@@ -1,6 +1,7 @@
 // The realism report (docs/models.md §6.5): each measure on signals and images with known answers,
 // and one run on the bundled demo project, where the tracked parameters' re-synthesis must follow
 // the recorded lips.
+#include "../../SanitizedBuild.h"
 #include "eval/RealismMetrics.h"
 #include "eval/RealismReport.h"
 #include "io/AudioDecoder.h"
@@ -61,15 +62,6 @@ Eigen::VectorXd face(double eyeDistance, double opening, double angle, Eigen::Ve
 }
 
 } // namespace
-
-// Sanitizer builds (ASan + UBSan in the asan and fuzz presets).
-#if defined(__SANITIZE_ADDRESS__)
-#define LIPSYNC_SANITIZED_BUILD 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define LIPSYNC_SANITIZED_BUILD 1
-#endif
-#endif
 
 class TestRealism : public QObject
 {
