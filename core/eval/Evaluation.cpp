@@ -269,16 +269,25 @@ QJsonArray toArray(const std::vector<double> &v)
 }
 } // namespace
 
+QJsonValue jsonNumber(double value)
+{
+    return std::isfinite(value) ? QJsonValue(value) : QJsonValue();
+}
+
+QJsonArray jsonNumbers(const std::vector<double> &values)
+{
+    QJsonArray a;
+    for (double v : values)
+        a.append(jsonNumber(v));
+    return a;
+}
+
 QJsonObject MetricSummary::toJson() const
 {
-    auto number = [](double v) { return std::isfinite(v) ? QJsonValue(v) : QJsonValue(); };
-    QJsonArray values;
-    for (double v : folds)
-        values.append(number(v));
     QJsonObject o;
-    o[QStringLiteral("mean")] = number(mean);
-    o[QStringLiteral("ci95")] = number(ci95);
-    o[QStringLiteral("folds")] = values;
+    o[QStringLiteral("mean")] = jsonNumber(mean);
+    o[QStringLiteral("ci95")] = jsonNumber(ci95);
+    o[QStringLiteral("folds")] = jsonNumbers(folds);
     return o;
 }
 

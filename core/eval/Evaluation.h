@@ -9,7 +9,9 @@
 #include "dynamics/LabelledSequence.h"
 #include "dynamics/ModelFile.h"
 
+#include <QJsonArray>
 #include <QJsonObject>
+#include <QJsonValue>
 
 #include <cstdint>
 #include <map>
@@ -31,6 +33,11 @@ struct EvaluationOptions
     // single-threaded. false: one fold at a time, models threaded as modelOptions say.
     bool parallelFolds = true;
 };
+
+// A figure for the JSON reports: finite values as numbers, NaN and infinities (a metric that
+// could not be computed) as null, which JSON can hold.
+QJsonValue jsonNumber(double value);
+QJsonArray jsonNumbers(const std::vector<double> &values);
 
 struct MetricSummary
 {

@@ -201,19 +201,6 @@ double foldValue(const std::vector<const RealismSequence *> &fold, const std::st
     return meanOfFinite(values);
 }
 
-QJsonValue jsonNumber(double v)
-{
-    return std::isfinite(v) ? QJsonValue(v) : QJsonValue();
-}
-
-QJsonArray numbers(const std::vector<double> &values)
-{
-    QJsonArray a;
-    for (double v : values)
-        a.append(jsonNumber(v));
-    return a;
-}
-
 } // namespace
 
 RealismResult evaluateRealism(const Project &project, const RealismOptions &options, Feedback &feedback)
@@ -365,7 +352,7 @@ QJsonObject RealismResult::toJson() const
         so[QStringLiteral("closedRecorded")] = s.closedRecorded;
         so[QStringLiteral("closedLevel")] = jsonNumber(s.closedLevel);
         so[QStringLiteral("lagRecorded")] = jsonNumber(s.lagRecorded);
-        so[QStringLiteral("recordedOpening")] = numbers(s.recordedOpening);
+        so[QStringLiteral("recordedOpening")] = jsonNumbers(s.recordedOpening);
         QJsonObject mo;
         for (const auto &[method, r] : s.methods) {
             QJsonObject ro;
@@ -377,7 +364,7 @@ QJsonObject RealismResult::toJson() const
             ro[QStringLiteral("seamDeltaERecorded")] = jsonNumber(r.seamDeltaERecorded);
             ro[QStringLiteral("closed")] = r.closed;
             ro[QStringLiteral("skippedFrames")] = r.skippedFrames;
-            ro[QStringLiteral("opening")] = numbers(r.opening);
+            ro[QStringLiteral("opening")] = jsonNumbers(r.opening);
             mo[QString::fromStdString(method)] = ro;
         }
         so[QStringLiteral("methods")] = mo;
