@@ -26,7 +26,6 @@
 #include "timeline/WaveformView.h"
 
 #include <algorithm>
-#include <set>
 
 #include <QAction>
 #include <QCloseEvent>
@@ -218,18 +217,12 @@ void MainWindow::updateActiveModels()
     // Project::model), always in view: undo and redo of Build AAM and Train change them.
     const Project &project = m_document->project();
     QStringList dynamic;
-    QString aam;
-    std::set<std::string> seen;
-    for (auto it = project.models.rbegin(); it != project.models.rend(); ++it) {
-        if (!seen.insert(it->kind).second || it->kind == "aligner")
-            continue;
-        if (it->kind == "aam")
-            aam = QString::fromStdString(it->name);
-        else
-            dynamic.prepend(ModelKinds::name(it->kind));
-    }
+    for (const QString &kind : ModelKinds::ids())
+        if (project.model(kind.toStdString()))
+            dynamic << ModelKinds::name(kind);
+    const ModelReference *aam = project.model("aam");
     const QString text = tr("AAM: %1 · Models: %2")
-                             .arg(aam.isEmpty() ? tr("none") : aam,
+                             .arg(aam ? QString::fromStdString(aam->name) : tr("none"),
                                   dynamic.isEmpty() ? tr("none trained") : dynamic.join(QStringLiteral(", ")));
     m_activeModels->setText(m_document->isOpen() ? text : QString());
     m_activeModels->setToolTip(tr("The appearance model and the dynamic models the project uses now"));
