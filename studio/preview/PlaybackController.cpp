@@ -94,8 +94,8 @@ void PlaybackController::startRange(double from, double to, int fromFrame)
 void PlaybackController::startClock()
 {
     m_origin = m_from;
-    if (!m_audioEnabled) {
-        m_wallClock.start();
+    if (!m_audioEnabled || m_mediaPath.isEmpty()) {
+        m_wallClock.start(); // no sound asked for, or none to play
         return;
     }
     if (const QString why = startAudio(); !why.isEmpty()) {
@@ -106,8 +106,6 @@ void PlaybackController::startClock()
 
 QString PlaybackController::startAudio()
 {
-    if (m_mediaPath.isEmpty())
-        return tr("no media");
     const QAudioDevice device = QMediaDevices::defaultAudioOutput();
     if (device.isNull())
         return tr("no audio output device was found");
