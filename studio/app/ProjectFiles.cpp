@@ -83,10 +83,9 @@ Task *ProjectFiles::createFromMediaFolder(const QString &mediaFolder, const QStr
                                      Project project = Project::fromMediaFolder(mediaFolder.toStdString(),
                                                                                 projectFolder.toStdString());
                                      project.name = QFileInfo(projectFolder).fileName().toStdString();
-                                     project.save(projectFolder.toStdString());
-                                     Project saved = Project::load(projectFolder.toStdString());
-                                     return TaskRunner::Commit([this, projectFolder, saved = std::move(saved)]() mutable {
-                                         if (openLoaded(std::move(saved), projectFolder, false))
+                                     project.saveAs(projectFolder.toStdString());
+                                     return TaskRunner::Commit([this, projectFolder, project = std::move(project)]() mutable {
+                                         if (openLoaded(std::move(project), projectFolder, false))
                                              m_recent->add(projectFolder);
                                      });
                                  });
