@@ -22,8 +22,10 @@ std::vector<std::string> wordsOf(const std::string &label)
 }
 
 // Replaces [a, b] of `tier` by `replacement` clipped to it. An interval reaching into [a, b]
-// from outside keeps only its outside part(s) — a phone the user merged across a word edge
-// straddles the stretch — so the result stays sorted without overlap (Tier::defect).
+// from outside keeps only its outside part(s), so the result stays sorted without overlap
+// (Tier::defect): a phone ending at the aligner's 95 x 0.01 = 0.9500000000000001 beside a GRID
+// word edge at 0.95 reaches an ulp into a stretch starting there, and a phone the user merged
+// across a word edge straddles it.
 void splice(Tier &tier, double a, double b, const Tier &replacement)
 {
     std::vector<Interval> out;
