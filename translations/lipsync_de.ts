@@ -281,158 +281,173 @@
 <context>
     <name>lipsync::studio::ExportMenu</name>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="59"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="92"/>
         <source>E&amp;xport</source>
         <translation>E&amp;xportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="62"/>
-        <source>Generated &amp;Video (MP4)…</source>
-        <translation>Erzeugtes &amp;Video (MP4)…</translation>
-    </message>
-    <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="62"/>
-        <source>Real and Generated &amp;Side by Side (MP4)…</source>
-        <translation>Echt und erzeugt &amp;nebeneinander (MP4)…</translation>
-    </message>
-    <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="63"/>
-        <source>Generated &amp;Frames (PNG)…</source>
-        <translation>Erzeugte &amp;Einzelbilder (PNG)…</translation>
-    </message>
-    <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="63"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="96"/>
         <source>F&amp;eatures (CSV)…</source>
         <translation>M&amp;erkmale (CSV)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="64"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="96"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="137"/>
+        <source>Generated &amp;Frames%1 (PNG)…</source>
+        <translation>Erzeugte &amp;Einzelbilder%1 (PNG)…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="97"/>
         <source>&amp;Alignment (TextGrid)…</source>
         <translation>&amp;Alignierung (TextGrid)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="64"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="97"/>
         <source>&amp;Landmarks (.pts)…</source>
         <translation>&amp;Landmarken (.pts)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="65"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="98"/>
         <source>Active Appearance &amp;Model…</source>
         <translation>Active Appearance &amp;Model…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="65"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="98"/>
         <source>&amp;Trained Dynamic Model…</source>
         <translation>&amp;Trainiertes dynamisches Modell…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="77"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="110"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="77"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="110"/>
         <source>Which trained model?</source>
         <translation>Welches trainierte Modell?</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="141"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="142"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="134"/>
+        <source> of %1</source>
+        <translation> von %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="183"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="184"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="144"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="186"/>
         <source>Feature tables (*.csv)</source>
         <translation>Merkmalstabellen (*.csv)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="145"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="187"/>
         <source>Praat TextGrid (*.TextGrid)</source>
         <translation>Praat-TextGrid (*.TextGrid)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="147"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="189"/>
         <source>Active appearance models (*.aam)</source>
         <translation>Active Appearance Models (*.aam)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="149"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="191"/>
         <source>Dynamic models (*.model)</source>
         <translation>Dynamische Modelle (*.model)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="165"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="207"/>
         <source>Cannot export</source>
         <translation>Export nicht möglich</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="167"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="209"/>
         <source>no sequence is selected</source>
         <translation>keine Sequenz ausgewählt</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="184"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="231"/>
+        <source>%1 has no video to put beside the generated face</source>
+        <translation>%1 hat kein Video, neben das das erzeugte Gesicht gestellt werden könnte</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="246"/>
         <source>the project has no trained dynamic model and AAM (train one in the Models panel)</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell und kein AAM (im Bereich Modelle trainieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="204"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="236"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="260"/>
         <source>Export the generated frames of %1</source>
         <translation>Erzeugte Einzelbilder von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="205"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="95"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="135"/>
+        <source>Generated &amp;Video%1 (MP4)…</source>
+        <translation>Erzeugtes &amp;Video%1 (MP4)…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="95"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="136"/>
+        <source>Real and Generated &amp;Side by Side%1 (MP4)…</source>
+        <translation>Echt und erzeugt &amp;nebeneinander%1 (MP4)…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="237"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="261"/>
         <source>Export the generated video of %1</source>
         <translation>Erzeugtes Video von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="228"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="277"/>
         <source>%1 has no face features (track it first)</source>
         <translation>%1 hat keine Gesichtsmerkmale (zuerst tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="231"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="280"/>
         <source>Export the features of %1</source>
         <translation>Merkmale von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="239"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="288"/>
         <source>%1 has no phone alignment (align it first)</source>
         <translation>%1 hat keine Phonem-Alignierung (zuerst alignieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="242"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="291"/>
         <source>Export the alignment of %1</source>
         <translation>Alignierung von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="255"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="304"/>
         <source>%1 has no landmarks</source>
         <translation>%1 hat keine Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="258"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="307"/>
         <source>Export the landmarks of %1</source>
         <translation>Landmarken von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="279"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="328"/>
         <source>the project has no AAM</source>
         <translation>das Projekt hat kein AAM</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="280"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="329"/>
         <source>the project has no trained dynamic model</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="284"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="334"/>
         <source>Export %1</source>
         <translation>%1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="295"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="362"/>
         <source>Exported to %1</source>
         <translation>Exportiert nach %1</translation>
     </message>
@@ -440,122 +455,117 @@
 <context>
     <name>lipsync::studio::FacesController</name>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="85"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="81"/>
         <source>&amp;Detect Landmarks</source>
         <translation>Landmarken &amp;erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="86"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="82"/>
         <source>&amp;Copy Previous Frame&apos;s Points</source>
         <translation>Punkte des vorigen Bildes &amp;kopieren</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="87"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="83"/>
         <source>&amp;Onion Skin of Previous Frame</source>
         <translation>&amp;Onion-Skin (vorheriges Bild)</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="89"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="85"/>
         <source>Next &amp;Unlabelled Frame</source>
         <translation>Nächstes &amp;unbeschriftetes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="90"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="86"/>
         <source>Next &amp;Worst-Fitted Frame</source>
         <translation>Nächstes &amp;schlecht angepasstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="91"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="87"/>
         <source>&amp;Build AAM</source>
         <translation>AAM &amp;erstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="92"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="88"/>
         <source>&amp;Track Sequence</source>
         <translation>Sequenz &amp;tracken</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="93"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="89"/>
         <source>Track &amp;All Sequences</source>
         <translation>&amp;Alle Sequenzen tracken</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="94"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="90"/>
         <source>&amp;Modes of Variation…</source>
         <translation>&amp;Variationsmoden…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="96"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="92"/>
         <source>Fa&amp;ces</source>
         <translation>&amp;Gesichter</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="214"/>
-        <source>The AAM could not be saved with the project.</source>
-        <translation>Das AAM konnte nicht mit dem Projekt gespeichert werden.</translation>
-    </message>
-    <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="237"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="204"/>
         <source>Fit error %1</source>
         <translation>Anpassungsfehler %1</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="238"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="205"/>
         <source>No face found by the tracker</source>
         <translation>Der Tracker hat kein Gesicht gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="262"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="229"/>
         <source>Detect landmarks in %1, frame %2</source>
         <translation>Landmarken in %1, Bild %2 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="264"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="231"/>
         <source>Finding the face…</source>
         <translation>Gesicht wird gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="295"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="262"/>
         <source>Detect landmarks in frame %1</source>
         <translation>Landmarken in Bild %1 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="298"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="265"/>
         <source>No landmarks were detected.</source>
         <translation>Es wurden keine Landmarken erkannt.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="319"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="286"/>
         <source>Copy points of frame %1 to frame %2</source>
         <translation>Punkte von Bild %1 nach Bild %2 kopieren</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="338"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="305"/>
         <source>Every frame of this sequence is labelled.</source>
         <translation>Alle Bilder dieser Sequenz sind beschriftet.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="348"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="315"/>
         <source>Track this sequence first to rank its frames by fit error.</source>
         <translation>Tracken Sie diese Sequenz zuerst, um ihre Bilder nach Anpassungsfehler zu ordnen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="380"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="344"/>
         <source>The project&apos;s AAM could not be loaded.</source>
         <translation>Das AAM des Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="404"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="368"/>
         <source>An AAM needs at least 3 frames with all 23 points; this project has %1.</source>
         <translation>Ein AAM braucht mindestens 3 Bilder mit allen 23 Punkten; dieses Projekt hat %1.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="406"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="370"/>
         <source>Label more frames (Detect Landmarks, then correct the points).</source>
         <translation>Beschriften Sie weitere Bilder (Landmarken erkennen, dann die Punkte korrigieren).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="413"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="379"/>
         <source>Build AAM from %n frame(s)</source>
         <translation>
             <numerusform>AAM aus %n Bild erstellen</numerusform>
@@ -563,22 +573,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="415"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="381"/>
         <source>Reading the labelled frames…</source>
         <translation>Beschriftete Bilder werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="447"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="411"/>
         <source>Build AAM %1</source>
         <translation>AAM %1 erstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="451"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="413"/>
         <source>AAM %1 built from %2 frames: %3 combined modes%4</source>
         <translation>AAM %1 aus %2 Bildern erstellt: %3 kombinierte Moden%4</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="455"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="417"/>
         <source> (%n frame(s) skipped)</source>
         <translation>
             <numerusform> (%n Bild übersprungen)</numerusform>
@@ -586,27 +596,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="460"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="422"/>
         <source>The AAM could not be built.</source>
         <translation>Das AAM konnte nicht erstellt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="471"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="437"/>
         <source>Tracking needs an AAM.</source>
         <translation>Zum Tracken wird ein AAM benötigt.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="472"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="438"/>
         <source>Label a few frames and choose Faces ▸ Build AAM first.</source>
         <translation>Beschriften Sie einige Bilder und wählen Sie zuerst Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="490"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="456"/>
         <source>Track %1</source>
         <translation>%1 tracken</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="490"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="456"/>
         <source>Track %n sequence(s)</source>
         <translation>
             <numerusform>%n Sequenz tracken</numerusform>
@@ -614,7 +624,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="560"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="526"/>
         <source>Tracking failed.</source>
         <translation>Das Tracking ist fehlgeschlagen.</translation>
     </message>
@@ -796,127 +806,127 @@
     </message>
     <message>
         <location filename="../studio/app/MainWindow.cpp" line="92"/>
+        <source>Models could not be written into the project&apos;s folder.</source>
+        <translation>Modelle konnten nicht in den Projektordner geschrieben werden.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="95"/>
         <source>%1 was not applied: it would leave the project unsaveable (%2).</source>
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="115"/>
+        <location filename="../studio/app/MainWindow.cpp" line="125"/>
         <source>Playing without sound: %1.</source>
         <translation>Wiedergabe ohne Ton: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="121"/>
-        <location filename="../studio/app/MainWindow.cpp" line="122"/>
+        <location filename="../studio/app/MainWindow.cpp" line="131"/>
+        <location filename="../studio/app/MainWindow.cpp" line="132"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="177"/>
+        <location filename="../studio/app/MainWindow.cpp" line="187"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="181"/>
+        <location filename="../studio/app/MainWindow.cpp" line="191"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="191"/>
+        <location filename="../studio/app/MainWindow.cpp" line="201"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="204"/>
+        <location filename="../studio/app/MainWindow.cpp" line="214"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="231"/>
+        <location filename="../studio/app/MainWindow.cpp" line="235"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="232"/>
+        <location filename="../studio/app/MainWindow.cpp" line="236"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="233"/>
+        <location filename="../studio/app/MainWindow.cpp" line="237"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="235"/>
+        <location filename="../studio/app/MainWindow.cpp" line="239"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="266"/>
+        <location filename="../studio/app/MainWindow.cpp" line="270"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="269"/>
+        <location filename="../studio/app/MainWindow.cpp" line="273"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="281"/>
+        <location filename="../studio/app/MainWindow.cpp" line="285"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="285"/>
+        <location filename="../studio/app/MainWindow.cpp" line="289"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="296"/>
+        <location filename="../studio/app/MainWindow.cpp" line="300"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="300"/>
+        <location filename="../studio/app/MainWindow.cpp" line="304"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="304"/>
+        <location filename="../studio/app/MainWindow.cpp" line="308"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="307"/>
+        <location filename="../studio/app/MainWindow.cpp" line="311"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="360"/>
+        <location filename="../studio/app/MainWindow.cpp" line="364"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="405"/>
+        <location filename="../studio/app/MainWindow.cpp" line="409"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="413"/>
+        <location filename="../studio/app/MainWindow.cpp" line="417"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
         <location filename="../studio/app/MainWindow.cpp" line="447"/>
-        <source>No audio: %1</source>
-        <translation>Kein Ton: %1</translation>
-    </message>
-    <message>
-        <location filename="../studio/app/MainWindow.cpp" line="449"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="453"/>
+        <location filename="../studio/app/MainWindow.cpp" line="451"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -924,43 +934,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="463"/>
+        <location filename="../studio/app/MainWindow.cpp" line="461"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="464"/>
+        <location filename="../studio/app/MainWindow.cpp" line="462"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="464"/>
+        <location filename="../studio/app/MainWindow.cpp" line="462"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="470"/>
+        <location filename="../studio/app/MainWindow.cpp" line="468"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="487"/>
+        <location filename="../studio/app/MainWindow.cpp" line="485"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="507"/>
-        <location filename="../studio/app/MainWindow.cpp" line="515"/>
+        <location filename="../studio/app/MainWindow.cpp" line="505"/>
+        <location filename="../studio/app/MainWindow.cpp" line="513"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="514"/>
+        <location filename="../studio/app/MainWindow.cpp" line="512"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="190"/>
+        <location filename="../studio/app/MainWindow.cpp" line="200"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -968,153 +978,153 @@
 <context>
     <name>lipsync::studio::ModelsPanel</name>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="48"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="49"/>
         <source>Appearance model</source>
         <translation>Erscheinungsmodell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="49"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="50"/>
         <source>Phoneme aligner</source>
         <translation>Phonem-Aligner</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="61"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="57"/>
         <source>Build AAM…</source>
         <translation>AAM erstellen …</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="69"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="65"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="69"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="65"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="69"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="65"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="196"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="184"/>
+        <source>Made in this session; written when the project is saved</source>
+        <translation>In dieser Sitzung erstellt; wird beim Speichern des Projekts geschrieben</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="192"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="62"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="58"/>
         <source>Train</source>
         <translation>Trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="62"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="58"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="63"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="59"/>
         <source>Evaluate (k-fold)</source>
         <translation>Evaluieren (k-fach)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="78"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="74"/>
         <source>VarPro / Levenberg–Marquardt</source>
         <translation>VarPro / Levenberg–Marquardt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="79"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="75"/>
         <source>Gradient ascent (paper)</source>
         <translation>Gradientenaufstieg (Artikel)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="76"/>
         <source>Diagonal A</source>
         <translation>Diagonales A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="77"/>
         <source>Full A</source>
         <translation>Volles A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="82"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="78"/>
         <source>Diagonal covariance</source>
         <translation>Diagonale Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="83"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="79"/>
         <source>Full covariance</source>
         <translation>Volle Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="107"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="103"/>
         <source>folds: </source>
         <translation>Teilmengen (k-fach): </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="116"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="112"/>
         <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
         <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="117"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
         <source>Train the checked models on every sequence with features and phonemes</source>
         <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="114"/>
         <source>Stop training or evaluation; the previous models stay</source>
         <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="119"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="115"/>
         <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
         <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="146"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="142"/>
         <source>AAM parameter </source>
         <translation>AAM-Parameter </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="147"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="143"/>
         <source>Which AAM parameter to plot over time</source>
         <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="158"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="154"/>
         <source>Trajectory</source>
         <translation>Trajektorie</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="159"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="155"/>
         <source>Training</source>
         <translation>Training</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="160"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="156"/>
         <source>Evaluation</source>
         <translation>Evaluation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="188"/>
-        <source>Trained in this session; written when the project is saved</source>
-        <translation>In dieser Sitzung trainiert; wird beim Speichern des Projekts geschrieben</translation>
-    </message>
-    <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="232"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="228"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter tracken und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="286"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="322"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="277"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="305"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="288"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="279"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -1122,37 +1132,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="307"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="296"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="331"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="316"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="333"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="318"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="340"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="325"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="362"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="347"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="363"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="348"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="373"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="358"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -1160,7 +1170,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="381"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="366"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen (k-fache Kreuzvalidierung).</numerusform>
@@ -1168,38 +1178,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="388"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="373"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="421"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="402"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="426"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="407"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="317"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="448"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="302"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="467"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="431"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="477"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="441"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="503"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="466"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>
@@ -1336,32 +1345,27 @@
 <context>
     <name>lipsync::studio::PlaybackController</name>
     <message>
-        <location filename="../studio/preview/PlaybackController.cpp" line="110"/>
-        <source>no media</source>
-        <translation>keine Medien</translation>
-    </message>
-    <message>
-        <location filename="../studio/preview/PlaybackController.cpp" line="113"/>
+        <location filename="../studio/preview/PlaybackController.cpp" line="111"/>
         <source>no audio output device was found</source>
         <translation>kein Audio-Ausgabegerät gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PlaybackController.cpp" line="122"/>
+        <location filename="../studio/preview/PlaybackController.cpp" line="120"/>
         <source>the audio device %1 takes neither float nor 16-bit samples</source>
         <translation>das Audiogerät %1 nimmt weder Float- noch 16-Bit-Samples an</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PlaybackController.cpp" line="136"/>
+        <location filename="../studio/preview/PlaybackController.cpp" line="134"/>
         <source>the clip&apos;s sound could not be decoded</source>
         <translation>der Ton des Clips konnte nicht dekodiert werden</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PlaybackController.cpp" line="174"/>
+        <location filename="../studio/preview/PlaybackController.cpp" line="172"/>
         <source>the audio device %1 could not be opened</source>
         <translation>das Audiogerät %1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PlaybackController.cpp" line="209"/>
+        <location filename="../studio/preview/PlaybackController.cpp" line="207"/>
         <source>the audio device stopped</source>
         <translation>das Audiogerät hat die Wiedergabe abgebrochen</translation>
     </message>
@@ -1369,133 +1373,133 @@
 <context>
     <name>lipsync::studio::PreviewPanel</name>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="59"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="61"/>
         <source>Loop selection</source>
         <translation>Auswahl wiederholen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="59"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="61"/>
         <source>Landmarks</source>
         <translation>Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="60"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="62"/>
         <source>Generate from Speech…</source>
         <translation>Aus Sprache erzeugen…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="61"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="63"/>
         <source>Back to Sequence</source>
         <translation>Zurück zur Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="74"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="76"/>
         <source>Previous frame</source>
         <translation>Vorheriges Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="76"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="78"/>
         <source>Next frame</source>
         <translation>Nächstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="80"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="82"/>
         <source>Scrub through the frames</source>
         <translation>Durch die Bilder fahren</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="81"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="83"/>
         <source>Play the timeline&apos;s selection (or everything) over and over</source>
         <translation>Die Auswahl der Zeitleiste (oder alles) immer wieder abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="82"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="84"/>
         <source>Show the tracked points on the recorded video and the generated points on the generated faces</source>
         <translation>Die getrackten Punkte auf dem aufgenommenen Video und die erzeugten Punkte auf den erzeugten Gesichtern zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="83"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="85"/>
         <source>Generate faces for any recording with a transcript</source>
         <translation>Gesichter für eine beliebige Aufnahme mit Transkript erzeugen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="84"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="86"/>
         <source>Show the current sequence again</source>
         <translation>Die aktuelle Sequenz wieder zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="251"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="257"/>
         <source>Prepare the preview of %1</source>
         <translation>Vorschau von %1 vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="280"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="286"/>
         <source>The head could not be tracked: %1</source>
         <translation>Der Kopf konnte nicht getrackt werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="329"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="335"/>
         <source>Recorded video (landmarks: tracked)</source>
         <translation>Aufgenommenes Video (Landmarken: getrackt)</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="334"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="340"/>
         <source>Generated: %1</source>
         <translation>Erzeugt: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="338"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="344"/>
         <source>Generated</source>
         <translation>Erzeugt</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="389"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="395"/>
         <source>The project has no appearance model (Faces ▸ Build AAM).</source>
         <translation>Das Projekt hat kein Erscheinungsmodell (Gesichter ▸ AAM erstellen).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="391"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="397"/>
         <source>Tracking the head pose…</source>
         <translation>Kopfhaltung wird getrackt…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="393"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="399"/>
         <source>This sequence has no phones (align it in the Timeline).</source>
         <translation>Diese Sequenz hat keine Phoneme (in der Zeitleiste alignieren).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="395"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="401"/>
         <source>Train a dynamic model in the Models panel to see the faces it generates.</source>
         <translation>Trainieren Sie ein dynamisches Modell im Bereich „Modelle“, um die erzeugten Gesichter zu sehen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="444"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="450"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 — Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="553"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="559"/>
         <source>Faces for new speech need the project&apos;s appearance model.</source>
         <translation>Gesichter für neue Sprache brauchen das Erscheinungsmodell des Projekts.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="554"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="560"/>
         <source>Build one with Faces ▸ Build AAM.</source>
         <translation>Erstellen Sie eines mit Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="559"/>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="614"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="565"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="618"/>
         <source>No faces could be generated for this speech.</source>
         <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="560"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="566"/>
         <source>Train a dynamic model in the Models panel first.</source>
         <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="582"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="589"/>
         <source>Generate faces for %1</source>
         <translation>Gesichter für %1 erzeugen</translation>
     </message>
@@ -1517,7 +1521,7 @@
     </message>
     <message>
         <location filename="../studio/app/ProjectFiles.cpp" line="57"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="107"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="106"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
@@ -1533,7 +1537,7 @@
     </message>
     <message>
         <location filename="../studio/app/ProjectFiles.cpp" line="77"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="95"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="94"/>
         <source>No new project was created.</source>
         <translation>Es wurde kein neues Projekt angelegt.</translation>
     </message>
@@ -1548,63 +1552,63 @@
         <translation>Neues Projekt aus %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="108"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="107"/>
         <source>%1 holds no project. Create a new project from the clips in it?</source>
         <translation>%1 enthält kein Projekt. Ein neues Projekt aus den Clips darin anlegen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="116"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="115"/>
         <source>The project could not be opened.</source>
         <translation>Das Projekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="147"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="146"/>
         <source>The bundled demo project was not found.</source>
         <translation>Das mitgelieferte Demoprojekt wurde nicht gefunden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="148"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="147"/>
         <source>Looked for demo/ in: %1</source>
         <translation>demo/ gesucht in: %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="155"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="154"/>
         <source>The demo project could not be opened.</source>
         <translation>Das Demoprojekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="177"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="176"/>
         <source>Save Project As (a folder)</source>
         <translation>Projekt speichern unter (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="182"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="201"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="181"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="200"/>
         <source>The project could not be saved.</source>
         <translation>Das Projekt konnte nicht gespeichert werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="183"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="182"/>
         <source>a file of that name exists; a project needs a folder</source>
         <translation>es gibt eine Datei dieses Namens; ein Projekt braucht einen Ordner</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="188"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="187"/>
         <source>Replace Project</source>
         <translation>Projekt ersetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="189"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="188"/>
         <source>%1 already holds a project. Replace it?</source>
         <translation>%1 enthält bereits ein Projekt. Ersetzen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="214"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="213"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="214"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="213"/>
         <source>The project has unsaved changes. Save them?</source>
         <translation>Das Projekt hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
@@ -2233,238 +2237,253 @@
 <context>
     <name>lipsync::studio::TimelinePanel</name>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="167"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="179"/>
         <source>Zoom out (wheel down)</source>
         <translation>Verkleinern (Mausrad nach unten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="168"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="180"/>
         <source>Zoom in (wheel up)</source>
         <translation>Vergrößern (Mausrad nach oben)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="169"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="181"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="169"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="181"/>
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="83"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="362"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="417"/>
         <source>Align</source>
         <translation>Ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="83"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
         <source>Align this sequence&apos;s transcript to its audio (words and phones)</source>
         <translation>Das Transkript dieser Sequenz am Ton ausrichten (Wörter und Phone)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="84"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
         <source>Align All</source>
         <translation>Alle ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="84"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
         <source>Align every sequence that has a transcript</source>
         <translation>Jede Sequenz mit Transkript ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="85"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
         <source>Re-align Selection</source>
         <translation>Auswahl neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="86"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="98"/>
         <source>Align the selected stretch again, keeping the words whose timing you edited</source>
         <translation>Den ausgewählten Abschnitt neu ausrichten; Wörter mit bearbeitetem Timing bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="102"/>
         <source>Adapt to Speaker</source>
         <translation>An Sprecher anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="99"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="111"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="100"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="112"/>
         <source>Align with the model shipped with the studio, trained on one GRID speaker</source>
         <translation>Mit dem mitgelieferten Modell ausrichten, trainiert auf einem GRID-Sprecher</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="101"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="113"/>
         <source>Generic US English (CMU Sphinx)</source>
         <translation>Allgemeines US-Englisch (CMU Sphinx)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="102"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="114"/>
         <source>Align with CMU Sphinx&apos;s US-English model trained on many speakers (Debian package pocketsphinx-en-us)</source>
         <translation>Mit dem US-englischen Modell von CMU Sphinx ausrichten, trainiert auf vielen Sprechern (Debian-Paket pocketsphinx-en-us)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="118"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
         <source>Split at Cursor</source>
         <translation>Am Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="118"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
         <source>Split the interval under the cursor</source>
         <translation>Das Intervall unter dem Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="119"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="119"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
         <source>Join the selected interval with the next one</source>
         <translation>Das ausgewählte Intervall mit dem nächsten verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="121"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
         <source>Relabel…</source>
         <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="121"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
         <source>Change the label of the selected interval</source>
         <translation>Die Beschriftung des ausgewählten Intervalls ändern</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
         <source>Insert Silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
         <source>Make the selection a silence</source>
         <translation>Die Auswahl zur Stille machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="124"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
         <source>Insert Breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="124"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
         <source>Make the selection a breath</source>
         <translation>Die Auswahl zum Atmer machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
         <source>Play Selection</source>
         <translation>Auswahl abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
         <source>Play the selected stretch (Space in the timeline)</source>
         <translation>Den ausgewählten Abschnitt abspielen (Leertaste in der Zeitleiste)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
         <source>Play Word</source>
         <translation>Wort abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
         <source>Play the word under the cursor</source>
         <translation>Das Wort unter dem Cursor abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
         <source>Play All</source>
         <translation>Alles abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
         <source>Play the whole sequence</source>
         <translation>Die ganze Sequenz abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="128"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="140"/>
         <source>Pronunciations…</source>
         <translation>Aussprachen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="141"/>
         <source>The project&apos;s pronunciations, and the words espeak-ng guessed</source>
         <translation>Die Aussprachen des Projekts und die von espeak-ng geschätzten Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="156"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="168"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="157"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="169"/>
         <source>The acoustic model the aligner uses</source>
         <translation>Das akustische Modell, das die Ausrichtung verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="194"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="206"/>
         <source>Show Spectrogram</source>
         <translation>Spektrogramm anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="195"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="207"/>
         <source>Show the spectrogram under the waveform in the timeline</source>
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="326"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="276"/>
+        <source>No audio: %1</source>
+        <translation>Kein Ton: %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="295"/>
+        <source>Alignment of the speech in the Preview: %1 (read-only; Back to Sequence there to edit)</source>
+        <translation>Alignierung der Sprache in der Vorschau: %1 (schreibgeschützt; dort „Zurück zur Sequenz“ zum Bearbeiten)</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="310"/>
+        <source>No audio</source>
+        <translation>Kein Ton</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="381"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="339"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="394"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="363"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="418"/>
         <source>The transcript of %1 changed since its boundaries were edited. Aligning it again replaces the edited boundaries. Align anyway?</source>
         <translation>Das Transkript von %1 wurde geändert, nachdem seine Grenzen bearbeitet wurden. Erneutes Alignieren ersetzt die bearbeiteten Grenzen. Trotzdem alignieren?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="374"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="429"/>
         <source>Every word of %1 is user-edited: nothing to align there.</source>
         <translation>Jedes Wort von %1 ist von Hand bearbeitet: Dort gibt es nichts zu alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="395"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="450"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="398"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="453"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="344"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="399"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="91"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="103"/>
         <source>Adapt the aligner to each recording&apos;s voice before aligning it (slower; better for voices unlike the model&apos;s training speakers)</source>
         <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Stimmen, die den Trainingssprechern des Modells unähnlich sind)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="419"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="474"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="444"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="499"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -2472,12 +2491,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="464"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="519"/>
         <source>%1: the alignment came out as it was; nothing changed.</source>
         <translation>%1: Die Alignierung ist unverändert geblieben.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="467"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="522"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -2485,47 +2504,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="506"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="561"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="506"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="561"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="514"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="569"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="524"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="579"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="556"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="611"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="556"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="611"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="615"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="670"/>
         <source>Not one of the 41 phones (ARPAbet, sil, br)</source>
         <translation>Keines der 41 Phone (ARPAbet, sil, br)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="616"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="671"/>
         <source>Enter one word</source>
         <translation>Ein einzelnes Wort eingeben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="624"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="679"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>

@@ -39,8 +39,8 @@ namespace {
 struct Loaded
 {
     MediaInfo info;
-    std::shared_ptr<AamModel> aam;
-    std::unique_ptr<DynamicModel> model;
+    std::shared_ptr<const AamModel> aam;
+    std::shared_ptr<const DynamicModel> model;
 };
 
 Loaded loadInputs(const SpeechToFaceRequest &request)
@@ -51,12 +51,12 @@ Loaded loadInputs(const SpeechToFaceRequest &request)
         throw Error("no audio stream: lip movements are generated from speech, so the recording "
                     "needs its sound",
                     request.mediaPath);
-    in.aam = std::make_shared<AamModel>(AamModel::load(request.aamPath));
+    in.aam = request.aam ? request.aam : std::make_shared<const AamModel>(AamModel::load(request.aamPath));
     // A model trained without naming its AAM (`lipsync train` without --aam) is accepted if its
     // dimension fits; one that names another AAM is not.
     std::string modelAam;
-    in.model = loadModel(request.modelPath, {}, &modelAam);
-    if (!modelAam.empty() && modelAam != "unspecified" && modelAam != in.aam->identifier)
+    in.model = request.model ? request.model : std::shared_ptr<const DynamicModel>(loadModel(request.modelPath, {}, &modelAam));
+    if (!request.model && !modelAam.empty() && modelAam != "unspecified" && modelAam != in.aam->identifier)
         throw Error("the model was trained for AAM '" + modelAam + "', not for " + request.aamPath
                         + " ('" + in.aam->identifier + "')",
                     request.modelPath, "aam");

@@ -25,6 +25,7 @@
 
 namespace lipsync {
 
+class DynamicModel;
 class Feedback;
 
 struct SpeechToFaceRequest
@@ -33,6 +34,10 @@ struct SpeechToFaceRequest
     std::string transcriptPath;     // what readTranscript() reads: .align, .lab, .txt, .TextGrid
     std::string modelPath;          // a trained dynamic model (ModelFile)
     std::string aamPath;            // the AAM the model's features are parameters of
+    // The same models already in memory (the studio's), used instead of the files when set; the
+    // caller then vouches that the model is the AAM's.
+    std::shared_ptr<const AamModel> aam;
+    std::shared_ptr<const DynamicModel> model;
     std::string alignerModelPath;   // empty: the shipped aligner model (ShippedAlignerModel)
     // Frames per second of the generated sequence; 0: the video's rate, 25 for audio only.
     double frameRate = 0.0;

@@ -9,6 +9,7 @@
 #include "annotate/FrameView.h"
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
+#include "app/ModelStore.h"
 #include "app/ProjectDocument.h"
 #include "app/SequenceMedia.h"
 #include "build/ModesView.h"
@@ -73,11 +74,6 @@ LandmarkSet mergeAutomatic(const std::optional<LandmarkSet> &existing, const Eig
     return set;
 }
 
-QString modelFileName(const QString &name)
-{
-    return QStringLiteral("aam/%1.aam").arg(name);
-}
-
 } // namespace
 
 FacesController::FacesController(MainWindow *window) : QObject(window), m_window(window)
@@ -136,7 +132,6 @@ FacesController::FacesController(MainWindow *window) : QObject(window), m_window
     ProjectDocument *doc = window->document();
     connect(doc, &ProjectDocument::documentReset, this, &FacesController::onDocumentReset);
     connect(doc, &ProjectDocument::sequenceChanged, this, &FacesController::onSequenceChanged);
-    connect(doc, &ProjectDocument::locationChanged, this, &FacesController::onLocationChanged);
     connect(doc, &ProjectDocument::modelsChanged, this, &FacesController::onModelsChanged);
     connect(window, &MainWindow::currentFrameChanged, this, &FacesController::refreshFrame);
     updateActions();
@@ -154,15 +149,13 @@ void FacesController::updateActions()
     for (int row = 0; open && !tracked && row < doc->sequenceCount(); ++row)
         tracked = !doc->sequence(row).fitErrors.empty();
     m_nextWorst->setEnabled(tracked);
-    m_modes->setEnabled(m_model != nullptr || open);
+    m_modes->setEnabled(open);
 }
 
 void FacesController::onDocumentReset()
 {
-    m_model.reset();
-    m_modelName.clear();
-    m_modelUnsaved = false;
-    m_shelved.clear();
+    const ModelReference *ref = m_window->document()->project().model("aam");
+    m_aamFile = ref ? ref->file : std::string();
     if (m_modesView)
         m_modesView->setModel(nullptr);
     updateActions();
@@ -177,42 +170,16 @@ void FacesController::onSequenceChanged(int row)
 void FacesController::onModelsChanged()
 {
     const ModelReference *ref = m_window->document()->project().model("aam");
-    const QString active = ref ? QString::fromStdString(ref->name) : QString();
-    if (m_model && active == m_modelName)
-        return; // the AAM in use is still the project's
-    if (m_model)
-        m_shelved[m_modelName] = Shelved{m_model, m_modelUnsaved};
-    m_model.reset();
-    m_modelName.clear();
-    m_modelUnsaved = false;
-    if (const auto it = m_shelved.find(active); ref && it != m_shelved.end()) {
-        m_model = it->second.model;
-        m_modelName = active;
-        m_modelUnsaved = it->second.unsaved;
-        m_shelved.erase(it);
-    } else if (ref) {
-        ensureModel(); // from the project's file, when it is needed again (reports a failure)
-    }
+    const std::string file = ref ? ref->file : std::string();
+    if (file == m_aamFile)
+        return; // the AAM in use is still the same
+    m_aamFile = file;
+    if (ref)
+        ensureModel(); // reports a file that does not load
     if (m_modesView)
-        m_modesView->setModel(m_model);
+        m_modesView->setModel(model());
     updateActions();
     refreshFrame();
-}
-
-void FacesController::onLocationChanged()
-{
-    // The demo's AAM lived in memory: the project now has a folder of its own to keep it in.
-    ProjectDocument *doc = m_window->document();
-    if (!m_model || !m_modelUnsaved || doc->isReadOnly() || doc->folder().isEmpty())
-        return;
-    const QString path = QDir(doc->folder()).filePath(modelFileName(m_modelName));
-    try {
-        QDir().mkpath(QFileInfo(path).absolutePath());
-        m_model->save(path.toStdString());
-        m_modelUnsaved = false;
-    } catch (const std::exception &e) {
-        ErrorReporter::report(m_window, tr("The AAM could not be saved with the project."), e);
-    }
 }
 
 void FacesController::refreshFrame()
@@ -256,7 +223,7 @@ Task *FacesController::detectLandmarks()
     if (row < 0 || !media || frame < 0 || frame >= media->frameCount())
         return nullptr;
     const cv::Mat image = toBgr(media->frames[frame]);
-    const std::shared_ptr<const AamModel> model = m_model;
+    const std::shared_ptr<const AamModel> model = this->model();
     const QString sequenceId = QString::fromStdString(m_window->document()->sequence(row).id);
     Task *task = m_window->taskRunner()->start(
         tr("Detect landmarks in %1, frame %2").arg(sequenceId).arg(frame + 1),
@@ -363,23 +330,20 @@ void FacesController::nextWorstFrame()
     m_window->setCurrentFrame(order[std::size_t(rank)]);
 }
 
+std::shared_ptr<const AamModel> FacesController::model() const
+{
+    return m_window->modelStore()->aam();
+}
+
 bool FacesController::ensureModel()
 {
-    if (m_model)
+    QString problem;
+    if (m_window->modelStore()->aam(&problem))
         return true;
-    const ProjectDocument *doc = m_window->document();
-    const ModelReference *ref = doc->project().model("aam");
-    if (!ref)
-        return false;
-    try {
-        m_model = std::make_shared<const AamModel>(AamModel::load(doc->project().resolve(ref->file)));
-        m_modelName = QString::fromStdString(ref->name);
-        updateActions();
-        return true;
-    } catch (const std::exception &e) {
-        ErrorReporter::report(m_window, tr("The project's AAM could not be loaded."), e);
-        return false;
-    }
+    if (const ModelReference *ref = m_window->document()->project().model("aam"))
+        ErrorReporter::report(m_window, tr("The project's AAM could not be loaded."),
+                              QString::fromStdString(m_window->document()->project().resolve(ref->file)), problem);
+    return false;
 }
 
 Task *FacesController::buildAam()
@@ -406,12 +370,14 @@ Task *FacesController::buildAam()
                               QString(), tr("Label more frames (Detect Landmarks, then correct the points)."));
         return nullptr;
     }
-    // One AAM per project: building again replaces it (file and reference).
+    // One AAM in use per project: building again replaces its reference, with a file of its own so
+    // that undoing the build brings back the previous AAM.
     const QString name = QStringLiteral("faces");
-    const QString target = doc->isReadOnly() ? QString() : QDir(doc->folder()).filePath(modelFileName(name));
+    const QString file = m_window->modelStore()->reserveFile(QStringLiteral("aam"));
+    const QString target = m_window->modelStore()->writablePath(file);
     Task *task = m_window->taskRunner()->start(
         tr("Build AAM from %n frame(s)", "", int(labelled.size())),
-        [this, labelled, name, target](Feedback &feedback) -> TaskRunner::Commit {
+        [this, labelled, name, file, target](Feedback &feedback) -> TaskRunner::Commit {
             feedback.setStatus(tr("Reading the labelled frames…").toStdString());
             std::vector<AamTrainingExample> examples;
             std::map<std::string, std::unique_ptr<VideoReader>> readers;
@@ -439,14 +405,10 @@ Task *FacesController::buildAam()
                 model->save(target.toStdString());
             }
             feedback.setProgress(1.0);
-            return [this, model, name, target, warnings] {
-                m_model = model;
-                m_modelName = name;
-                m_modelUnsaved = target.isEmpty();
-                m_window->document()->requestAddModel({"aam", name.toStdString(), modelFileName(name).toStdString()},
+            return [this, model, name, file, target, warnings] {
+                m_window->modelStore()->addAam(file, model, !target.isEmpty());
+                m_window->document()->requestAddModel({"aam", name.toStdString(), file.toStdString()},
                                                       tr("Build AAM %1").arg(name));
-                if (m_modesView)
-                    m_modesView->setModel(m_model);
                 m_window->statusBar()->showMessage(
                     tr("AAM %1 built from %2 frames: %3 combined modes%4")
                         .arg(name)
@@ -458,6 +420,10 @@ Task *FacesController::buildAam()
             };
         });
     reportFailure(task, tr("The AAM could not be built."));
+    connect(task, &Task::finished, this, [this, file](Task::State state) {
+        if (state != Task::State::Finished)
+            m_window->modelStore()->releaseFile(file);
+    });
     return task;
 }
 
@@ -486,7 +452,7 @@ Task *FacesController::trackSequences(const QList<int> &rows)
         const Sequence &s = doc->sequence(row);
         jobs.push_back({row, QString::fromStdString(s.id), doc->mediaPath(row).toStdString(), s.frameCount, s.landmarks});
     }
-    const std::shared_ptr<const AamModel> model = m_model;
+    const std::shared_ptr<const AamModel> model = this->model();
     const QString title = jobs.size() == 1 ? tr("Track %1").arg(jobs.front().id) : tr("Track %n sequence(s)", "", int(jobs.size()));
     Task *task = m_window->taskRunner()->start(title, [this, jobs, model, title](Feedback &feedback) -> TaskRunner::Commit {
         FaceDetectorPaths paths;
@@ -568,7 +534,7 @@ void FacesController::showModes()
         m_modesView = new ModesView(m_window);
         m_modesView->setAttribute(Qt::WA_DeleteOnClose);
     }
-    m_modesView->setModel(m_model);
+    m_modesView->setModel(model());
     m_modesView->show();
     m_modesView->raise();
 }

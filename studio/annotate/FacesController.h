@@ -46,10 +46,10 @@ public:
     QAction *trackAllAction() const { return m_trackAll; }
     QAction *modesAction() const { return m_modes; }
 
-    // The AAM in use (built this session or loaded from the project), or null.
-    std::shared_ptr<const AamModel> model() const { return m_model; }
-    // Loads the project's AAM (its latest reference) unless one is loaded; a file that does not load
-    // is reported (file and reason) and false returned.
+    // The AAM in use (the ModelStore's for the project's latest reference), or null.
+    std::shared_ptr<const AamModel> model() const;
+    // The AAM in use, loaded if need be; a file that does not load is reported (file and reason)
+    // and false returned.
     bool ensureModel();
 
     // The actions, callable directly (tests). Each returns the task started, or null.
@@ -64,7 +64,6 @@ public:
 private:
     void onDocumentReset();
     void onSequenceChanged(int row);
-    void onLocationChanged();
     // The project's models changed (Build AAM, its undo and redo): the AAM in use follows the
     // project's active reference everywhere (tracking, detection, Modes of Variation).
     void onModelsChanged();
@@ -85,17 +84,7 @@ private:
     QAction *m_modes = nullptr;
     QPointer<ModesView> m_modesView;
 
-    std::shared_ptr<const AamModel> m_model;
-    QString m_modelName;
-    bool m_modelUnsaved = false; // built in the read-only demo: written when the project is saved
-    // AAMs built or loaded here that are not the active one now (an undone Build AAM), by name:
-    // a redo brings back the same model, also one that was never written to disk.
-    struct Shelved
-    {
-        std::shared_ptr<const AamModel> model;
-        bool unsaved = false;
-    };
-    std::map<QString, Shelved> m_shelved;
+    std::string m_aamFile; // the reference file of the AAM in use, as last seen
     int m_worstRank = -1; // where W is in the current sequence's worst-fit queue
 };
 

@@ -6,6 +6,7 @@
 #include "app/Autosave.h"
 #include "app/ErrorReporter.h"
 #include "app/ModelKinds.h"
+#include "app/ModelStore.h"
 #include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
 #include "app/SequenceListModel.h"
@@ -53,7 +54,7 @@ namespace lipsync::studio {
 
 MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent), m_undo(new QUndoStack(this)), m_runner(new TaskRunner(this)),
-      m_document(new ProjectDocument(m_undo, this)), m_actions(std::make_unique<StudioActions>(this, m_undo)),
+      m_document(new ProjectDocument(m_undo, this)), m_modelStore(new ModelStore(m_document, this)), m_actions(std::make_unique<StudioActions>(this, m_undo)),
       m_playback(new PlaybackController(this))
 {
     setObjectName(QStringLiteral("MainWindow"));
@@ -87,6 +88,9 @@ MainWindow::MainWindow(QWidget *parent)
 
     connect(m_document, &ProjectDocument::documentReset, this, &MainWindow::onDocumentReset);
     connect(m_document, &ProjectDocument::locationChanged, this, &MainWindow::updateTitle);
+    connect(m_modelStore, &ModelStore::writeFailed, this, [this](const QString &problems) {
+        ErrorReporter::report(this, tr("Models could not be written into the project's folder."), QString(), problems);
+    });
     connect(m_document, &ProjectDocument::editRefused, this, [this](const QString &edit, const QString &why) {
         statusBar()->showMessage(tr("%1 was not applied: it would leave the project unsaveable (%2).").arg(edit, why),
                                  15000);
@@ -101,9 +105,16 @@ MainWindow::MainWindow(QWidget *parent)
             m_details->showSequence(m_document->sequence(row), m_media->mediaPath, *m_media);
     });
     connect(m_undo, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    // Speech generated in the Preview: the timeline shows its alignment, and its clicks move it.
+    connect(m_preview, &PreviewPanel::speechShownChanged, this,
+            [this] { m_timeline->showGeneratedSpeech(m_preview->speechResult()); });
+    connect(waveformView(), &WaveformView::timeClicked, this, [this](double t) {
+        if (m_timeline->isShowingGeneratedSpeech())
+            m_preview->seekSpeech(t);
+    });
     connect(m_transport, &TransportBar::frameRequested, this, &MainWindow::setCurrentFrame);
     connect(waveformView(), &WaveformView::timeClicked, this, [this](double t) {
-        if (m_media)
+        if (m_media && !m_timeline->isShowingGeneratedSpeech()) // else the Preview's speech is clicked
             setCurrentFrame(int(t * m_media->frameRate));
     });
     connect(m_playback, &PlaybackController::frameReached, this, [this](int frame) {
@@ -432,13 +443,7 @@ void MainWindow::applyMedia(int row, std::shared_ptr<const SequenceMedia> media)
     m_transport->setFrameCount(frames, m_media->frameRate);
     m_playback->setSequence(m_media->mediaPath, frames, m_media->frameRate);
 
-    WaveformView *wave = waveformView();
-    wave->setPeaks(m_media->peaks);
-    wave->setWords(s.words);
-    wave->setThumbnails(m_media->thumbnails, m_media->frameRate);
-    wave->setDuration(frames / m_media->frameRate);
-    wave->setPlaceholderText(m_media->peaks ? QString() : tr("No audio: %1").arg(m_media->audioError));
-    showChart();
+    showChart(); // the timeline shows the media on sequenceLoaded
     m_frameView->setPlaceholderText(frames > 0 ? QString() : tr("The video has no frames"));
     m_details->showSequence(s, m_media->mediaPath, *m_media);
     setCurrentFrame(0);

@@ -27,6 +27,7 @@ class ExportMenu;
 class FacesController;
 class FrameView;
 class LineChartView;
+class ModelStore;
 class ModelsPanel;
 class PlaybackController;
 class PreviewPanel;
@@ -50,6 +51,8 @@ public:
 
     ProjectFiles *files() const { return m_files; }
     ProjectDocument *document() const { return m_document; }
+    // The AAMs and dynamic models the project's references point at (built, trained or loaded).
+    ModelStore *modelStore() const { return m_modelStore; }
     QUndoStack *undoStack() const { return m_undo; }
     TaskRunner *taskRunner() const { return m_runner; }
     TaskStatusWidget *taskStatus() const { return m_taskStatus; }
@@ -63,6 +66,7 @@ public:
     const StudioActions &actions() const { return *m_actions; }
     FacesController *faces() const { return m_faces; }
     ExportMenu *exportMenu() const { return m_export; }
+    TimelinePanel *timeline() const { return m_timeline; }
 
     int currentSequence() const { return m_currentRow; }
     int currentFrame() const { return m_currentFrame; }
@@ -106,6 +110,7 @@ private:
     QUndoStack *m_undo;
     TaskRunner *m_runner;
     ProjectDocument *m_document;
+    ModelStore *m_modelStore;
     std::unique_ptr<StudioActions> m_actions;
     ProjectFiles *m_files = nullptr;
     SequenceListModel *m_sequenceModel = nullptr;

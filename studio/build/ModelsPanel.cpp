@@ -5,6 +5,7 @@
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
 #include "app/ModelKinds.h"
+#include "app/ModelStore.h"
 #include "app/ProjectDocument.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/ModelFile.h"
@@ -48,11 +49,6 @@ QString kindText(const std::string &kind)
     if (kind == "aam") return ModelsPanel::tr("Appearance model");
     if (kind == "aligner") return ModelsPanel::tr("Phoneme aligner");
     return ModelKinds::name(kind);
-}
-
-QString modelFile(const QString &kind)
-{
-    return QStringLiteral("models/%1.model").arg(kind);
 }
 
 } // namespace
@@ -184,8 +180,8 @@ void ModelsPanel::setProject(const Project &project)
         item->setText(2, QString::fromStdString(m.file));
         item->setData(1, Qt::UserRole, QString::fromStdString(m.kind));
         const QString kind = QString::fromStdString(m.kind);
-        if (isDynamicModelKind(m.kind) && m_unsaved.contains(kind))
-            item->setToolTip(2, tr("Trained in this session; written when the project is saved"));
+        if (m_window && m_window->modelStore()->isUnwritten(m.file))
+            item->setToolTip(2, tr("Made in this session; written when the project is saved"));
         else
             item->setToolTip(2, QString::fromStdString(project.resolve(m.file)));
         if (isDynamicModelKind(m.kind))
@@ -236,14 +232,6 @@ std::vector<LabelledSequence> ModelsPanel::trainingData(QString *problem) const
     return out;
 }
 
-// What a trained model records as its AAM: the content identifier of the project's AAM, which
-// `lipsync render` and the preview check against whichever AAM file they are given.
-std::string ModelsPanel::aamIdentifier() const
-{
-    FacesController *faces = m_window->faces();
-    return faces && faces->ensureModel() ? faces->model()->identifier : std::string("unspecified");
-}
-
 QList<Task *> ModelsPanel::runningTasks() const
 {
     QList<Task *> out;
@@ -271,20 +259,23 @@ QList<Task *> ModelsPanel::train()
     options.slds.fullA = m_sldsA->currentData().toBool();
     options.brand.fullCovariance = m_brandCovariance->currentData().toBool();
 
-    ProjectDocument *doc = m_window->document();
-    const std::string aamId = aamIdentifier();
+    // What a trained model records as its AAM: the content identifier of the project's AAM, which
+    // `lipsync render` and the preview check against whichever AAM file they are given.
+    ModelStore *store = m_window->modelStore();
+    const std::string aamId = store->aamIdentifier();
     if (m_plots)
         m_plots->setCurrentWidget(m_objective);
     for (const QString &kind : ModelKinds::ids()) {
         if (!m_kinds[kind]->isChecked() || !m_kinds[kind]->isEnabled())
             continue;
         const QString name = ModelKinds::name(kind);
-        const QString target = doc->isReadOnly() ? QString() : QDir(doc->folder()).filePath(modelFile(kind));
+        // A file of its own: undoing this training brings back the previous model's file.
+        const QString file = store->reserveFile(kind);
         m_objective->startRun(kind, name, ModelKinds::colour(kind));
         QPointer<ModelsPanel> self(this);
         Task *task = m_window->taskRunner()->start(
             tr("Train %1").arg(name),
-            [self, kind, name, target, data, options, aamId](Feedback &feedback) -> TaskRunner::Commit {
+            [self, kind, name, file, data, options, aamId](Feedback &feedback) -> TaskRunner::Commit {
                 feedback.setStatus(tr("Training %1 on %n sequence(s)…", "", int(data->size())).arg(name).toStdString());
                 std::shared_ptr<DynamicModel> model = createDynamicModel(kind.toStdString(), options);
                 const auto start = std::chrono::steady_clock::now();
@@ -299,26 +290,18 @@ QList<Task *> ModelsPanel::train()
                 }
                 // Written on the GUI thread by the commit (a small JSON file), so a canceled
                 // training never replaces the model file either.
-                return [self, kind, name, target, model, seconds, ll, frames, aamId] {
+                return [self, kind, name, file, model, seconds, ll, frames, aamId] {
                     if (!self)
                         return;
-                    self->m_trained.insert(kind, model);
-                    self->m_unsaved.insert(kind);
                     self->m_status->setText(tr("%1 trained in %2 s: log-likelihood %3 nats/frame")
                                                 .arg(name)
                                                 .arg(seconds, 0, 'f', 2)
                                                 .arg(frames > 0 ? ll / double(frames) : 0.0, 0, 'f', 3));
-                    if (!target.isEmpty()) {
-                        try {
-                            QDir().mkpath(QFileInfo(target).absolutePath());
-                            saveModel(*model, target.toStdString(), aamId);
-                            self->m_unsaved.remove(kind);
-                        } catch (const Error &e) {
-                            self->m_status->setText(tr("The %1 model could not be saved: %2").arg(name, QString::fromUtf8(e.what())));
-                        }
-                    }
+                    const QString problem = self->m_window->modelStore()->addDynamicModel(file, model, aamId);
+                    if (!problem.isEmpty())
+                        self->m_status->setText(tr("The %1 model could not be saved: %2").arg(name, problem));
                     self->m_window->document()->requestAddModel(
-                        {kind.toStdString(), name.toStdString(), modelFile(kind).toStdString()},
+                        {kind.toStdString(), name.toStdString(), file.toStdString()},
                         tr("Train %1").arg(name));
                     self->refreshTrajectory();
                     emit self->modelTrained(kind);
@@ -326,7 +309,9 @@ QList<Task *> ModelsPanel::train()
             });
         connect(task, &Task::iterationReported, m_objective,
                 [plot = m_objective, kind](int i, double value) { plot->addIteration(kind, i, value); });
-        connect(task, &Task::finished, this, [this, name, task](Task::State state) {
+        connect(task, &Task::finished, this, [this, name, task, file](Task::State state) {
+            if (state != Task::State::Finished && m_window)
+                m_window->modelStore()->releaseFile(file);
             if (state == Task::State::Canceled)
                 m_status->setText(tr("Training %1 canceled: the previous model stays.").arg(name));
             else if (state == Task::State::Failed)
@@ -402,26 +387,22 @@ void ModelsPanel::cancel()
 
 void ModelsPanel::onDocumentReset()
 {
-    // Models of the new project: load the dynamic ones it refers to (small JSON files).
-    m_trained.clear();
-    m_unsaved.clear();
+    // Models of the new project: load the dynamic ones it uses (small JSON files), so a damaged
+    // one is reported now rather than when it is first drawn.
     m_objective->clearRuns();
     m_evaluation->clear();
     const Project &project = m_window->document()->project();
     QStringList failed;
-    for (const ModelReference &m : project.models) {
-        if (!isDynamicModelKind(m.kind))
+    for (const QString &kind : ModelKinds::ids()) {
+        QString problem;
+        if (m_window->modelStore()->dynamicModel(kind, &problem) || problem.isEmpty())
             continue;
-        try {
-            std::shared_ptr<const DynamicModel> model = loadModel(project.resolve(m.file));
-            m_trained.insert(QString::fromStdString(m.kind), model);
-        } catch (const Error &e) {
-            // One message box for the first damaged model (which file, why); the rest are listed here.
-            if (failed.isEmpty())
-                ErrorReporter::report(m_window, tr("A model of this project could not be loaded."), e,
-                                      QString::fromStdString(project.resolve(m.file)));
-            failed.append(QString::fromUtf8(e.what()));
-        }
+        // One message box for the first damaged model (which file, why); the rest are listed here.
+        if (failed.isEmpty())
+            ErrorReporter::report(m_window, tr("A model of this project could not be loaded."),
+                                  QString::fromStdString(project.resolve(project.model(kind.toStdString())->file)),
+                                  problem);
+        failed.append(problem);
     }
     m_status->setText(failed.isEmpty() ? QString() : tr("Some models could not be loaded: %1").arg(failed.join(QLatin1Char('\n'))));
     refreshTrajectory();
@@ -430,25 +411,8 @@ void ModelsPanel::onDocumentReset()
 
 void ModelsPanel::onLocationChanged()
 {
-    // A read-only document (the demo) was saved somewhere: write the models trained meanwhile.
-    ProjectDocument *doc = m_window->document();
-    if (doc->isReadOnly() || m_unsaved.isEmpty())
-        return;
-    const std::string aamId = aamIdentifier();
-    for (const QString &kind : QSet<QString>(m_unsaved)) {
-        const auto model = m_trained.value(kind);
-        if (!model)
-            continue;
-        const QString target = QDir(doc->folder()).filePath(modelFile(kind));
-        try {
-            QDir().mkpath(QFileInfo(target).absolutePath());
-            saveModel(*model, target.toStdString(), aamId);
-            m_unsaved.remove(kind);
-        } catch (const Error &e) {
-            m_status->setText(tr("The %1 model could not be saved: %2").arg(ModelKinds::name(kind), QString::fromUtf8(e.what())));
-        }
-    }
-    setProject(doc->project());
+    // The store wrote the models made meanwhile into the new folder: their tooltips change.
+    setProject(m_window->document()->project());
 }
 
 void ModelsPanel::refreshTrajectory()
@@ -484,11 +448,10 @@ void ModelsPanel::refreshTrajectory()
             labels = frameLabelsFromTier(s.phones, s.frameRate, s.frameCount, s.id);
         } catch (const Error &) {
         }
-        // Each trained model the document refers to, in the panel's order.
+        // Each trained model the document uses, in the panel's order.
         for (const QString &kind : ModelKinds::ids()) {
-            const auto model = m_trained.value(kind);
-            const bool referenced = doc->project().model(kind.toStdString()) != nullptr;
-            if (!model || !referenced || labels.empty() || model->dimension() != s.features.cols())
+            const auto model = m_window->modelStore()->dynamicModel(kind);
+            if (!model || labels.empty() || model->dimension() != s.features.cols())
                 continue;
             try {
                 const Eigen::MatrixXd generated = model->generate(labels);

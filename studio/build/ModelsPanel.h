@@ -3,12 +3,11 @@
 // choose model kinds and options, train them as TaskRunner tasks with a live plot of the objective
 // per iteration (cancel keeps the previous model), compare them by k-fold cross-validation (the
 // paper's Figure 4), and look at the trajectories they generate for the current sequence. Trained
-// models live here (in memory) and in the document as ModelReferences (kind dpds/slds/brand/hmm,
-// file models/<kind>.model, written when the project is saved).
+// models live in the ModelStore and in the document as ModelReferences (kind dpds/slds/brand/hmm,
+// each training a file of its own, models/<kind>[-n].model), so Train is undone like any edit.
 #include <QHash>
 #include <QList>
 #include <QPointer>
-#include <QSet>
 #include <QWidget>
 
 #include <memory>
@@ -65,8 +64,6 @@ public:
     EvaluationChart *evaluationChart() const { return m_evaluation; }
     QTabWidget *plotTabs() const { return m_plots; }
 
-    // The trained (or loaded) model of a kind, or null.
-    std::shared_ptr<const DynamicModel> model(const QString &kind) const { return m_trained.value(kind); }
     // Training and evaluation tasks still running.
     QList<Task *> runningTasks() const;
 
@@ -83,7 +80,6 @@ signals:
 
 private:
     std::vector<LabelledSequence> trainingData(QString *problem) const;
-    std::string aamIdentifier() const;
     void onDocumentReset();
     void onLocationChanged();
     void refreshTrajectory();
@@ -109,8 +105,6 @@ private:
     EvaluationChart *m_evaluation = nullptr;
     QWidget *m_trajectoryPage = nullptr;
 
-    QHash<QString, std::shared_ptr<const DynamicModel>> m_trained;
-    QSet<QString> m_unsaved; // kinds trained into a read-only document: written on the next save
     QList<QPointer<Task>> m_tasks;
 };
 

@@ -3,14 +3,18 @@
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
 #include "app/ModelKinds.h"
+#include "app/ModelStore.h"
 #include "app/ProjectDocument.h"
+#include "preview/PreviewPanel.h"
 
+#include "aam/AamModel.h"
 #include "aam/PtsFile.h"
-#include "io/AtomicFile.h"
+#include "dynamics/ModelFile.h"
 #include "io/FeatureCsv.h"
 #include "io/TextGrid.h"
 #include "render/FaceRenderer.h"
 #include "render/SpeechToFace.h"
+#include "tasks/Feedback.h"
 #include "tasks/TaskRunner.h"
 #include "util/Error.h"
 
@@ -42,15 +46,44 @@ const ModelReference *dynamicModel(const Project &project, const QString &kind =
     return nullptr;
 }
 
-bool usesDynamicModel(ExportMenu::Kind kind)
+bool isGenerated(ExportMenu::Kind kind)
 {
-    return kind == ExportMenu::Kind::Video || kind == ExportMenu::Kind::SideBySide
-           || kind == ExportMenu::Kind::Images || kind == ExportMenu::Kind::Model;
+    return kind == ExportMenu::Kind::Video || kind == ExportMenu::Kind::SideBySide || kind == ExportMenu::Kind::Images;
 }
 
-void copyFileAtomically(const std::string &from, const std::string &to)
+bool usesDynamicModel(ExportMenu::Kind kind)
 {
-    writeFileAtomically(to, readWholeFile(from));
+    return isGenerated(kind) || kind == ExportMenu::Kind::Model;
+}
+
+// The side-by-side panels' labels are drawn in ASCII: the model's name, else its id.
+std::string panelLabel(const std::string &kind)
+{
+    const QString name = ModelKinds::name(kind);
+    for (QChar c : name)
+        if (c.unicode() >= 0x80)
+            return kind;
+    return name.toStdString();
+}
+
+// Renders a generated result into its recording's frames (or a neutral frame) and writes the
+// video or the frames: the work of the three generated exports.
+TaskRunner::Work renderWork(std::shared_ptr<const SpeechToFaceResult> result, RenderOptions options,
+                            std::string target, bool images)
+{
+    return [result = std::move(result), options, target, images](Feedback &feedback) -> TaskRunner::Commit {
+        std::unique_ptr<FaceRenderer> renderer;
+        {
+            Feedback step(feedback, 0.0, 0.25);
+            renderer = makeRenderer(*result, result->mediaPath, step);
+        }
+        Feedback step(feedback, 0.25, 1.0);
+        if (images)
+            exportRenderedImages(*result, *renderer, target, step, options);
+        else
+            exportRenderedVideo(*result, *renderer, target, step, options);
+        return {};
+    };
 }
 
 } // namespace
@@ -59,8 +92,8 @@ ExportMenu::ExportMenu(MainWindow *window, QMenu *parentMenu)
     : QObject(window), m_window(window), m_menu(parentMenu->addMenu(tr("E&xport")))
 {
     const std::array<QString, 8> titles = {
-        tr("Generated &Video (MP4)…"),          tr("Real and Generated &Side by Side (MP4)…"),
-        tr("Generated &Frames (PNG)…"),         tr("F&eatures (CSV)…"),
+        tr("Generated &Video%1 (MP4)…").arg(QString()), tr("Real and Generated &Side by Side%1 (MP4)…").arg(QString()),
+        tr("Generated &Frames%1 (PNG)…").arg(QString()), tr("F&eatures (CSV)…"),
         tr("&Alignment (TextGrid)…"),           tr("&Landmarks (.pts)…"),
         tr("Active Appearance &Model…"),        tr("&Trained Dynamic Model…")};
     for (size_t i = 0; i < titles.size(); ++i) {
@@ -96,9 +129,15 @@ void ExportMenu::updateActions()
     const int row = m_window->currentSequence();
     const bool hasSequence = row >= 0 && row < document->sequenceCount();
     const Project &project = document->project();
-    const bool canGenerate = hasSequence && dynamicModel(project) && project.model("aam");
+    // While the Preview shows faces for new speech, the generated exports write those.
+    const auto speech = m_window->preview()->speechResult();
+    const QString of = speech ? tr(" of %1").arg(m_window->preview()->speechTitle()) : QString();
+    action(Kind::Video)->setText(tr("Generated &Video%1 (MP4)…").arg(of));
+    action(Kind::SideBySide)->setText(tr("Real and Generated &Side by Side%1 (MP4)…").arg(of));
+    action(Kind::Images)->setText(tr("Generated &Frames%1 (PNG)…").arg(of));
+    const bool canGenerate = speech || (hasSequence && dynamicModel(project) && project.model("aam"));
     action(Kind::Video)->setEnabled(canGenerate);
-    action(Kind::SideBySide)->setEnabled(canGenerate);
+    action(Kind::SideBySide)->setEnabled(speech ? speech->hasVideo : canGenerate);
     action(Kind::Images)->setEnabled(canGenerate);
     action(Kind::Features)->setEnabled(hasSequence && document->sequence(row).features.rows() > 0);
     action(Kind::Alignment)->setEnabled(hasSequence && !document->sequence(row).phones.isEmpty());
@@ -111,13 +150,16 @@ Task *ExportMenu::trigger(Kind kind)
 {
     const ProjectDocument *document = m_window->document();
     const int row = m_window->currentSequence();
-    const QString stem = row >= 0 && row < document->sequenceCount()
+    const auto speech = isGenerated(kind) ? m_window->preview()->speechResult() : nullptr;
+    const QString stem = speech ? QFileInfo(QString::fromStdString(speech->mediaPath)).completeBaseName()
+                         : row >= 0 && row < document->sequenceCount()
                              ? QString::fromStdString(document->sequence(row).id)
                              : QStringLiteral("export");
     const QString folder = QDir::homePath();
-    // Several trained models: the user picks one (never a silent default).
-    QString modelKind;
-    if (usesDynamicModel(kind)) {
+    // Several trained models: the user picks one (never a silent default). New speech was
+    // generated by one already.
+    QString modelKind = speech ? QString::fromStdString(speech->modelKind) : QString();
+    if (usesDynamicModel(kind) && !speech) {
         QStringList kinds, names;
         for (const QString &k : ModelKinds::ids())
             if (document->project().model(k.toStdString())) {
@@ -168,6 +210,7 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
         return nullptr;
     }
     // Everything the worker needs is copied here, on the GUI thread: it never reads the document.
+    ModelStore *store = m_window->modelStore();
     const Sequence sequence = projectWide ? Sequence() : document->sequence(row);
     const ModelReference *model = dynamicModel(project, modelKind);
     const ModelReference *aam = project.model("aam");
@@ -179,47 +222,53 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
     case Kind::Video:
     case Kind::SideBySide:
     case Kind::Images: {
-        if (!model || !aam) {
+        RenderOptions options;
+        options.sideBySide = kind == Kind::SideBySide;
+        if (const auto speech = m_window->preview()->speechResult()) {
+            const QString name = m_window->preview()->speechTitle();
+            if (options.sideBySide && !speech->hasVideo) {
+                ErrorReporter::report(m_window, what, path,
+                                      tr("%1 has no video to put beside the generated face").arg(name));
+                return nullptr;
+            }
+            options.leftLabel = "real";
+            options.rightLabel = panelLabel(speech->modelKind);
+            title = kind == Kind::Images ? tr("Export the generated frames of %1").arg(name)
+                                         : tr("Export the generated video of %1").arg(name);
+            work = renderWork(speech, options, target, kind == Kind::Images);
+            break;
+        }
+        QString problem;
+        const auto aamModel = store->aam(&problem);
+        const auto dynamic = model ? store->dynamicModel(QString::fromStdString(model->kind), &problem) : nullptr;
+        if (!dynamic || !aamModel) {
             ErrorReporter::report(m_window, what, path,
-                                  tr("the project has no trained dynamic model and AAM (train one in the "
-                                     "Models panel)"));
+                                  problem.isEmpty() ? tr("the project has no trained dynamic model and AAM (train one "
+                                                         "in the Models panel)")
+                                                    : problem);
             return nullptr;
         }
         SpeechToFaceRequest request;
         request.mediaPath = project.mediaPath(sequence);
         request.modelPath = project.resolve(model->file);
         request.aamPath = project.resolve(aam->file);
+        request.model = dynamic;
+        request.aam = aamModel;
         request.frameRate = sequence.frameRate;
-        RenderOptions options;
-        options.sideBySide = kind == Kind::SideBySide;
-        if (options.sideBySide) {
-            options.leftLabel = "real";
-            // The panel labels are drawn in ASCII: the model's name, else its id.
-            const QString name = ModelKinds::name(model->kind);
-            bool ascii = true;
-            for (QChar c : name)
-                ascii = ascii && c.unicode() < 0x80;
-            options.rightLabel = ascii ? name.toStdString() : model->kind;
-        }
+        options.leftLabel = "real";
+        options.rightLabel = panelLabel(model->kind);
         title = kind == Kind::Images ? tr("Export the generated frames of %1").arg(id)
                                      : tr("Export the generated video of %1").arg(id);
-        work = [request, options, sequence, target, kind](Feedback &feedback) -> TaskRunner::Commit {
-            SpeechToFaceResult generated;
+        // Generated from the sequence's own alignment, then rendered as for new speech.
+        work = [request, sequence, options, target, kind](Feedback &feedback) -> TaskRunner::Commit {
+            std::shared_ptr<const SpeechToFaceResult> generated;
             {
                 Feedback step(feedback, 0.0, 0.1);
-                generated = generateFromPhones(request, sequence.phones, sequence.words, step);
+                generated = std::make_shared<const SpeechToFaceResult>(
+                    generateFromPhones(request, sequence.phones, sequence.words, step));
             }
-            std::unique_ptr<FaceRenderer> renderer;
-            {
-                Feedback step(feedback, 0.1, 0.3);
-                renderer = makeRenderer(generated, request.mediaPath, step);
-            }
-            Feedback step(feedback, 0.3, 1.0);
-            if (kind == Kind::Images)
-                exportRenderedImages(generated, *renderer, target, step, options);
-            else
-                exportRenderedVideo(generated, *renderer, target, step, options);
-            return {};
+            Feedback step(feedback, 0.1, 1.0);
+            return renderWork(generated, options, target, kind == Kind::Images)(step);
         };
         break;
     }
@@ -280,12 +329,30 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
                                                     : tr("the project has no trained dynamic model"));
             return nullptr;
         }
-        const std::string source = project.resolve(reference->file);
+        // From memory: a model made in this session may not be in any folder yet.
+        QString problem;
         title = tr("Export %1").arg(QString::fromStdString(reference->name));
-        work = [source, target](Feedback &) -> TaskRunner::Commit {
-            copyFileAtomically(source, target);
-            return {};
-        };
+        if (kind == Kind::Aam) {
+            const auto model = store->aam(&problem);
+            if (model)
+                work = [model, target](Feedback &) -> TaskRunner::Commit {
+                    model->save(target);
+                    return {};
+                };
+        } else {
+            const QString kindId = QString::fromStdString(reference->kind);
+            const auto model = store->dynamicModel(kindId, &problem);
+            const std::string aamId = store->recordedAamIdentifier(kindId);
+            if (model)
+                work = [model, aamId, target](Feedback &) -> TaskRunner::Commit {
+                    saveModel(*model, target, aamId);
+                    return {};
+                };
+        }
+        if (!work) {
+            ErrorReporter::report(m_window, what, QString::fromStdString(project.resolve(reference->file)), problem);
+            return nullptr;
+        }
         break;
     }
     }

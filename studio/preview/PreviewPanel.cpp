@@ -9,6 +9,7 @@
 #include "app/SequenceMedia.h"
 #include "app/StudioActions.h"
 #include "app/ModelKinds.h"
+#include "app/ModelStore.h"
 #include "build/ModelsPanel.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/ModelFile.h"
@@ -39,6 +40,7 @@
 #include <QVBoxLayout>
 
 #include <cmath>
+#include <utility>
 
 namespace lipsync::studio {
 
@@ -139,7 +141,7 @@ void PreviewPanel::attach(MainWindow *window)
             updateControls();
     });
     connect(window, &MainWindow::sequenceLoaded, this, [this] {
-        m_showingSpeech = false;
+        const bool wasSpeech = std::exchange(m_showingSpeech, false);
         m_faces.reset();
         m_facesSequence.clear();
         m_prepareFailed.clear();
@@ -147,6 +149,8 @@ void PreviewPanel::attach(MainWindow *window)
         layoutPanels();
         updateControls();
         showCurrent();
+        if (wasSpeech)
+            emit speechShownChanged();
     });
     // New or changed models, edited phones: generate again (the poses stay).
     auto invalidate = [this] {
@@ -172,8 +176,10 @@ void PreviewPanel::attach(MainWindow *window)
         m_faces.reset();
         m_facesSequence.clear();
         m_prepareFailed.clear();
-        m_showingSpeech = false;
+        const bool wasSpeech = std::exchange(m_showingSpeech, false);
         layoutPanels();
+        if (wasSpeech)
+            emit speechShownChanged();
     });
     connect(window->document(), &ProjectDocument::sequenceChanged, this, [this, invalidate](int row) {
         if (row == m_window->currentSequence())
@@ -299,7 +305,7 @@ void PreviewPanel::rebuild()
                 // no usable phones: nothing to generate from
             }
             for (const QString &kind : ModelKinds::ids()) {
-                const auto model = m_window->modelsPanel()->model(kind);
+                const auto model = m_window->modelStore()->dynamicModel(kind);
                 if (!model || labels.empty() || model->dimension() != m_aam->combinedModes())
                     continue;
                 try {
@@ -530,7 +536,7 @@ void PreviewPanel::openSpeechDialog()
         return;
     QStringList kinds;
     for (const QString &kind : ModelKinds::ids())
-        if (m_window->modelsPanel()->model(kind))
+        if (m_window->modelStore()->dynamicModel(kind))
             kinds << kind;
     const auto media = m_window->media();
     SpeechDialog dialog(kinds, media ? media->frameRate : 25.0, this);
@@ -554,7 +560,7 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
                               tr("Build one with Faces ▸ Build AAM."));
         return nullptr;
     }
-    const auto model = m_window->modelsPanel()->model(kind);
+    const auto model = m_window->modelStore()->dynamicModel(kind);
     if (!model) {
         ErrorReporter::report(m_window, tr("No faces could be generated for this speech."), mediaPath,
                               tr("Train a dynamic model in the Models panel first."));
@@ -563,6 +569,8 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
     SpeechToFaceRequest request;
     request.mediaPath = mediaPath.toStdString();
     request.aamPath = aamPath;
+    request.aam = m_aam ? m_aam : m_window->faces()->model();
+    request.model = model;
     request.frameRate = frameRate;
     request.pronunciations = m_window->document()->project().pronunciations;
     // The neutral frame: the first frame of the current sequence at its tracked pose, else the
@@ -575,39 +583,35 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
         if (sequence.renderer)
             background = media->frames.front();
     }
-    const std::string aamId = m_aam ? m_aam->identifier : std::string("unspecified");
     const QString title = QFileInfo(mediaPath).fileName();
     const std::string words = transcript.toStdString();
     Task *task = m_window->taskRunner()->start(
         tr("Generate faces for %1").arg(title),
-        [this, request, model, aamId, words, background, sequence, mediaPath, title, kind](Feedback &feedback) mutable
+        [this, request, words, background, sequence, mediaPath, title, kind](Feedback &feedback) mutable
         -> TaskRunner::Commit {
-            // The shared pipeline (core/render/SpeechToFace) reads the transcript and the model
-            // from files: the typed words and the model in memory (perhaps never saved) go to
-            // temporary ones.
+            // The shared pipeline (core/render/SpeechToFace) reads the transcript from a file:
+            // the typed words go to a temporary one.
             QTemporaryDir scratch;
             if (!scratch.isValid())
-                throw Error("no temporary folder for the transcript and the model", request.mediaPath);
+                throw Error("no temporary folder for the transcript", request.mediaPath);
             request.transcriptPath = scratch.filePath(QStringLiteral("transcript.txt")).toStdString();
-            request.modelPath = scratch.filePath(QStringLiteral("speech.model")).toStdString();
             writePlainTranscript(request.transcriptPath, parsePlainTranscript(words));
-            saveModel(*model, request.modelPath, aamId);
             Feedback sub(feedback, 0.0, 0.95);
-            const SpeechToFaceResult result = lipsync::generateFromSpeech(request, sub);
+            auto result = std::make_shared<const SpeechToFaceResult>(lipsync::generateFromSpeech(request, sub));
             std::shared_ptr<GeneratedFaces> faces;
             if (sequence.renderer) {
-                faces = std::make_shared<GeneratedFaces>(sequence.aam, sequence.renderer, result.frameRate);
+                faces = std::make_shared<GeneratedFaces>(sequence.aam, sequence.renderer, result->frameRate);
                 faces->setFixedFrame(background, 0);
             } else {
-                auto neutral = std::make_shared<FaceRenderer>(*result.aam);
+                auto neutral = std::make_shared<FaceRenderer>(*result->aam);
                 const cv::Mat bgr = neutral->background(0);
                 const QImage image(bgr.data, bgr.cols, bgr.rows, int(bgr.step), QImage::Format_BGR888);
-                faces = std::make_shared<GeneratedFaces>(result.aam, neutral, result.frameRate);
+                faces = std::make_shared<GeneratedFaces>(result->aam, neutral, result->frameRate);
                 faces->setFixedFrame(image.copy(), 0);
             }
-            faces->addTrack({kind, ModelKinds::name(kind), ModelKinds::colour(kind), result.features});
+            faces->addTrack({kind, ModelKinds::name(kind), ModelKinds::colour(kind), result->features});
             feedback.setProgress(1.0);
-            return [this, faces, mediaPath, title] { showSpeech(faces, mediaPath, title); };
+            return [this, faces, result, title] { showSpeech(faces, result, title); };
         });
     connect(task, &Task::finished, this, [this, task, mediaPath](Task::State state) {
         if (state == Task::State::Failed)
@@ -617,19 +621,28 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
     return task;
 }
 
-void PreviewPanel::showSpeech(std::shared_ptr<GeneratedFaces> faces, const QString &mediaPath, const QString &title)
+void PreviewPanel::showSpeech(std::shared_ptr<GeneratedFaces> faces, std::shared_ptr<const SpeechToFaceResult> result,
+                              const QString &title)
 {
     if (m_window)
         m_window->playback()->pause();
     m_speech = std::move(faces);
-    m_speechPath = mediaPath;
+    m_speechResult = std::move(result);
+    m_speechPath = QString::fromStdString(m_speechResult->mediaPath);
     m_speechTitle = title;
     m_speechFrame = 0;
     m_showingSpeech = true;
     layoutPanels();
     updateControls();
     showCurrent();
+    emit speechShownChanged();
     emit facesReady();
+}
+
+void PreviewPanel::seekSpeech(double seconds)
+{
+    if (m_showingSpeech && m_speech)
+        setCurrent(int(std::floor(seconds * m_speech->frameRate())));
 }
 
 void PreviewPanel::showSequence()
@@ -644,6 +657,7 @@ void PreviewPanel::showSequence()
     updateControls();
     showCurrent();
     prepare();
+    emit speechShownChanged();
 }
 
 } // namespace lipsync::studio

@@ -34,6 +34,7 @@ namespace lipsync {
 class AamModel;
 class FaceRenderer;
 class Task;
+struct SpeechToFaceResult;
 }
 
 namespace lipsync::studio {
@@ -79,8 +80,15 @@ public:
     bool isShowingSpeech() const { return m_showingSpeech; }
     int speechFrame() const { return m_speechFrame; }
 
-    // Shows faces generated for new speech (from the dialog); `mediaPath` is the sound.
-    void showSpeech(std::shared_ptr<GeneratedFaces> faces, const QString &mediaPath, const QString &title);
+    // Shows faces generated for new speech (from the dialog), with the result they were made from
+    // (its sound, alignment and trajectory: what the timeline shows and Export writes).
+    void showSpeech(std::shared_ptr<GeneratedFaces> faces, std::shared_ptr<const SpeechToFaceResult> result,
+                    const QString &title);
+    // The new speech shown, or null while the current sequence is.
+    std::shared_ptr<const SpeechToFaceResult> speechResult() const { return m_showingSpeech ? m_speechResult : nullptr; }
+    QString speechTitle() const { return m_speechTitle; }
+    // Moves the new speech shown to `seconds` (the timeline's clicks while it shows that speech).
+    void seekSpeech(double seconds);
     // Back to the current sequence.
     void showSequence();
     // Generate from speech without the dialog (what it starts on Generate): a TaskRunner task
@@ -96,6 +104,8 @@ public slots:
 signals:
     // Generated faces for the current sequence (or new speech) are shown.
     void facesReady();
+    // New speech is shown, or the current sequence again (speechResult()).
+    void speechShownChanged();
     // The dialog is about to run modally (tests fill it in).
     void speechDialogOpened(lipsync::studio::SpeechDialog *dialog);
 
@@ -146,6 +156,7 @@ private:
     std::shared_ptr<GeneratedFaces> m_faces;  // of the current sequence
     QString m_facesSequence;
     std::shared_ptr<GeneratedFaces> m_speech; // of new speech
+    std::shared_ptr<const SpeechToFaceResult> m_speechResult;
     QString m_speechPath;
     QString m_speechTitle;
     bool m_showingSpeech = false;

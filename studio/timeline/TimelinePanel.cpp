@@ -6,7 +6,9 @@
 #include "app/MainWindow.h"
 #include "app/ProjectDocument.h"
 #include "app/SequenceMedia.h"
+#include "audio/WaveformPeaks.h"
 #include "preview/PlaybackController.h"
+#include "render/SpeechToFace.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/AlignTask.h"
 #include "timeline/PronunciationsDialog.h"
@@ -17,9 +19,11 @@
 #include <QActionGroup>
 #include <QMenu>
 #include <QComboBox>
+#include <QFileInfo>
 #include <QFocusEvent>
 #include <QHBoxLayout>
 #include <QKeyEvent>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QScrollBar>
@@ -62,11 +66,19 @@ private:
 } // namespace
 
 TimelinePanel::TimelinePanel(QWidget *parent)
-    : QWidget(parent), m_waveform(new WaveformView(this)), m_scroll(new QScrollBar(Qt::Horizontal, this))
+    : QWidget(parent), m_banner(new QLabel(this)), m_waveform(new WaveformView(this)),
+      m_scroll(new QScrollBar(Qt::Horizontal, this))
 {
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
+    m_banner->setObjectName(QStringLiteral("timelineBanner"));
+    m_banner->setContentsMargins(6, 2, 6, 2);
+    m_banner->setAutoFillBackground(true);
+    m_banner->setBackgroundRole(QPalette::ToolTipBase);
+    m_banner->setForegroundRole(QPalette::ToolTipText);
+    m_banner->hide();
+    layout->addWidget(m_banner);
     layout->addWidget(m_waveform, 1);
 
     // Actions: buttons below the view, the editing ones in the view's context menu with keys
@@ -250,17 +262,60 @@ void TimelinePanel::attach(MainWindow *window)
 void TimelinePanel::showSequence(int row)
 {
     closeEditor();
+    m_speech.reset();
+    m_banner->hide();
+    m_waveform->setEditable(m_document != nullptr);
     m_row = m_document && row < m_document->sequenceCount() ? row : -1;
     m_dragKey = -1;
     m_mediaPath = m_row >= 0 ? m_document->mediaPath(m_row) : QString();
     const std::shared_ptr<const SequenceMedia> media = m_row >= 0 && m_window ? m_window->media() : nullptr;
+    if (media) {
+        m_waveform->setPeaks(media->peaks);
+        m_waveform->setThumbnails(media->thumbnails, media->frameRate);
+        m_waveform->setDuration(media->frameCount() / media->frameRate);
+        m_waveform->setPlaceholderText(media->peaks ? QString() : tr("No audio: %1").arg(media->audioError));
+    }
     m_waveform->setSpectrogram(media ? media->spectrogram : nullptr);
     m_waveform->clearSelection();
     refresh();
 }
 
+void TimelinePanel::showGeneratedSpeech(std::shared_ptr<const SpeechToFaceResult> speech)
+{
+    if (!speech) {
+        if (m_speech)
+            showSequence(m_window ? m_window->currentSequence() : -1);
+        return;
+    }
+    closeEditor();
+    m_speech = std::move(speech);
+    m_row = -1; // no sequence of the document is shown: nothing here can be edited
+    m_dragKey = -1;
+    m_mediaPath = QString::fromStdString(m_speech->mediaPath);
+    m_banner->setText(tr("Alignment of the speech in the Preview: %1 (read-only; Back to Sequence there to edit)")
+                          .arg(QFileInfo(m_mediaPath).fileName()));
+    m_banner->show();
+    m_waveform->setEditable(false);
+    m_waveform->clearSelection();
+    m_waveform->setSpectrogram(nullptr);
+    m_waveform->setPeaks(m_speech->audio.samples.empty()
+                             ? nullptr
+                             : std::make_shared<const WaveformPeaks>(m_speech->audio.samples, m_speech->audio.sampleRate));
+    m_waveform->setThumbnails({}, m_speech->frameRate);
+    m_waveform->setWords(m_speech->words);
+    m_waveform->setPhones(m_speech->phones);
+    m_waveform->setFrameLabels(voteFrameLabels(m_speech->phones, m_speech->frameRate, m_speech->frameCount()),
+                               m_speech->frameRate);
+    m_waveform->setDuration(m_speech->frameCount() / m_speech->frameRate);
+    m_waveform->setPlaceholderText(m_speech->audio.samples.empty() ? tr("No audio") : QString());
+    m_waveform->setCursorTime(0.0);
+    updateActions();
+}
+
 void TimelinePanel::refresh()
 {
+    if (m_speech)
+        return; // the generated speech's tiers stay until showSequence
     if (!m_document || m_row < 0) {
         m_waveform->setPhones({});
         m_waveform->setFrameLabels({}, 25.0);

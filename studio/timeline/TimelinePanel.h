@@ -15,15 +15,18 @@
 #include <QWidget>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 class QAction;
+class QLabel;
 class QScrollBar;
 class QToolButton;
 
 namespace lipsync {
 class Task;
+struct SpeechToFaceResult;
 }
 
 namespace lipsync::studio {
@@ -49,6 +52,12 @@ public:
     // shows what it is given (setWords etc. on the view).
     void attach(MainWindow *window);
     int row() const { return m_row; }
+
+    // Shows the alignment of speech generated in the Preview — its sound, words, phones and frame
+    // labels, read-only under a banner that says so — until the sequence is shown again; null
+    // returns to the current sequence.
+    void showGeneratedSpeech(std::shared_ptr<const SpeechToFaceResult> speech);
+    bool isShowingGeneratedSpeech() const { return m_speech != nullptr; }
 
     QAction *alignAction() const { return m_align; }
     QAction *alignAllAction() const { return m_alignAll; }
@@ -117,6 +126,7 @@ private:
     void onDragStarted(TierKind kind, int boundary, int drag);
     void onDragged(TierKind kind, int boundary, double time, int drag);
 
+    QLabel *m_banner;
     WaveformView *m_waveform;
     QScrollBar *m_scroll;
     PlaybackController *m_player = nullptr;
@@ -125,6 +135,7 @@ private:
     MainWindow *m_window = nullptr;
     ProjectDocument *m_document = nullptr;
     int m_row = -1;
+    std::shared_ptr<const SpeechToFaceResult> m_speech; // shown instead of the sequence, or null
     QString m_mediaPath; // of the sequence shown (the player may be playing other media)
 
     TierPair m_dragBase;

@@ -223,10 +223,11 @@ private slots:
             hasAam = hasAam || m.kind == "aam";
         if (!hasAam)
             QSKIP("the demo ships no AAM");
-        QVERIFY(!m_window->faces()->model());
+        const std::vector<ModelReference> models = doc->project().models;
         const int index = m_window->undoStack()->index();
         QVERIFY(waitFor(m_window->faces()->trackSequences({4})));
         QVERIFY(m_window->faces()->model());
+        QVERIFY(doc->project().models == models); // no AAM was built
         const Sequence &s = doc->sequence(4);
         QCOMPARE(int(s.features.rows()), s.frameCount);
         QCOMPARE(int(s.features.cols()), m_window->faces()->model()->combinedModes());
@@ -325,6 +326,19 @@ private slots:
                      QStringLiteral("AAM: %1 ").arg(QString::fromStdString(doc->project().model("aam")->name))),
                  qPrintable(active->text()));
         modes->close();
+
+        // Building again gives the AAM a file of its own, so undoing the rebuild brings back the
+        // first build (not the demo's, and not a file overwritten meanwhile).
+        const std::string firstFile = doc->project().model("aam")->file;
+        QVERIFY(waitFor(m_window->faces()->buildAam()));
+        const auto rebuilt = m_window->faces()->model();
+        QVERIFY(rebuilt && rebuilt != model);
+        QVERIFY(doc->project().model("aam")->file != firstFile);
+        m_window->undoStack()->undo();
+        QCOMPARE(doc->project().model("aam")->file, firstFile);
+        QCOMPARE(m_window->faces()->model(), model);
+        m_window->undoStack()->redo();
+        QCOMPARE(m_window->faces()->model(), rebuilt);
     }
 
     void fitErrorsSurviveReopening()

@@ -6,6 +6,7 @@
 #include "DemoWindow.h"
 
 #include "app/MainWindow.h"
+#include "app/ModelStore.h"
 #include "app/ModelKinds.h"
 #include "app/ProjectDocument.h"
 #include "app/SurfaceFormat.h"
@@ -66,7 +67,7 @@ private slots:
         QTest::mouseClick(m_panel->trainButton(), Qt::LeftButton);
         waitIdle();
         for (const QString &kind : ModelKinds::ids())
-            QVERIFY2(m_panel->model(kind), qPrintable(kind));
+            QVERIFY2(m_window->modelStore()->dynamicModel(kind), qPrintable(kind));
     }
 
     void cleanupTestCase() { delete m_window; }

@@ -7,6 +7,7 @@
 
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
+#include "app/ModelStore.h"
 #include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
 #include "app/SurfaceFormat.h"
@@ -68,6 +69,7 @@ private:
 
     MainWindow *m_window = nullptr;
     ModelsPanel *m_panel = nullptr;
+    QTemporaryDir m_dir; // the saved copy of the demo, for the tests after savingTheDemoWritesTheTrainedModels
 
 private slots:
     void initTestCase()
@@ -108,9 +110,9 @@ private slots:
         QCOMPARE(m_panel->plotTabs()->currentWidget(), static_cast<QWidget *>(m_panel->objectivePlot()));
         waitIdle();
         QCOMPARE(trained.count(), 2);
-        QVERIFY(m_panel->model("hmm"));
-        QVERIFY(m_panel->model("dpds"));
-        QCOMPARE(m_panel->model("dpds")->dimension(), int(m_window->document()->sequence(0).features.cols()));
+        QVERIFY(m_window->modelStore()->dynamicModel("hmm"));
+        QVERIFY(m_window->modelStore()->dynamicModel("dpds"));
+        QCOMPARE(m_window->modelStore()->dynamicModel("dpds")->dimension(), int(m_window->document()->sequence(0).features.cols()));
         // The live objective plot got the iterations of the iterative model (DPDS).
         QVERIFY2(m_panel->objectivePlot()->iterationCount("dpds") >= 2,
                  qPrintable(QString::number(m_panel->objectivePlot()->iterationCount("dpds"))));
@@ -132,7 +134,7 @@ private slots:
 
     void cancelKeepsThePreviousModel()
     {
-        const std::shared_ptr<const DynamicModel> before = m_panel->model("dpds");
+        const std::shared_ptr<const DynamicModel> before = m_window->modelStore()->dynamicModel("dpds");
         QVERIFY(before);
         checkOnly({QStringLiteral("dpds")});
         m_panel->dpdsOptimizer()->setCurrentIndex(1); // the paper's (slow) gradient ascent
@@ -147,7 +149,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
         QCOMPARE(finished.front().front().value<Task::State>(), Task::State::Canceled);
         QCOMPARE(trained.count(), 0);
-        QCOMPARE(m_panel->model("dpds").get(), before.get());
+        QCOMPARE(m_window->modelStore()->dynamicModel("dpds").get(), before.get());
         QVERIFY(listed(QStringLiteral("dpds")));
         m_panel->dpdsOptimizer()->setCurrentIndex(0);
     }
@@ -179,9 +181,8 @@ private slots:
 
     void savingTheDemoWritesTheTrainedModels()
     {
-        QTemporaryDir dir;
-        QVERIFY(dir.isValid());
-        const QString folder = dir.filePath(QStringLiteral("copy"));
+        QVERIFY(m_dir.isValid());
+        const QString folder = m_dir.filePath(QStringLiteral("copy"));
         m_window->document()->saveTo(folder);
         QVERIFY(!m_window->document()->isReadOnly());
         // The models trained in memory went to models/, the demo's AAM was copied along.
@@ -195,7 +196,7 @@ private slots:
         QCOMPARE(recordedAam, AamModel::load(QDir(folder).filePath("aam/demo.aam").toStdString()).identifier);
         const Sequence &s = m_window->document()->sequence(0);
         const std::vector<int> labels = frameLabelsFromTier(s.phones, s.frameRate, s.frameCount);
-        QVERIFY(loaded->generate(labels).isApprox(m_panel->model("dpds")->generate(labels)));
+        QVERIFY(loaded->generate(labels).isApprox(m_window->modelStore()->dynamicModel("dpds")->generate(labels)));
         // A project on disk: the next training writes its model file at once.
         checkOnly({QStringLiteral("brand")});
         QTest::mouseClick(m_panel->trainButton(), Qt::LeftButton);
@@ -203,6 +204,53 @@ private slots:
         QVERIFY(QFileInfo(QDir(folder).filePath("models/brand.model")).isFile());
         const Project reloaded = Project::load(folder.toStdString());
         QCOMPARE(reloaded.models.size(), size_t(3)); // the AAM, HMM and DPDS (Brand: not saved yet)
+    }
+
+    void undoingARetrainRestoresThePreviousModel()
+    {
+        // The saved copy of the demo from the test before: DPDS is trained and on disk.
+        ProjectDocument *doc = m_window->document();
+        QVERIFY(!doc->isReadOnly());
+        ModelStore *store = m_window->modelStore();
+        const std::shared_ptr<const DynamicModel> first = store->dynamicModel(QStringLiteral("dpds"));
+        QVERIFY(first);
+        const QString firstFile = QString::fromStdString(doc->project().model("dpds")->file);
+        const QString firstPath = QDir(doc->folder()).filePath(firstFile);
+        QFile firstOnDisk(firstPath);
+        QVERIFY(firstOnDisk.open(QIODevice::ReadOnly));
+        const QByteArray firstBytes = firstOnDisk.readAll();
+        firstOnDisk.close();
+
+        // Retrain with the other optimiser: a new model in a file of its own.
+        checkOnly({QStringLiteral("dpds")});
+        m_panel->dpdsOptimizer()->setCurrentIndex(1);
+        QTest::mouseClick(m_panel->trainButton(), Qt::LeftButton);
+        waitIdle();
+        m_panel->dpdsOptimizer()->setCurrentIndex(0);
+        const std::shared_ptr<const DynamicModel> second = store->dynamicModel(QStringLiteral("dpds"));
+        QVERIFY(second && second != first);
+        const QString secondFile = QString::fromStdString(doc->project().model("dpds")->file);
+        QVERIFY2(secondFile != firstFile, qPrintable(secondFile));
+        QVERIFY(QFileInfo(QDir(doc->folder()).filePath(secondFile)).isFile());
+        QVERIFY(firstOnDisk.open(QIODevice::ReadOnly));
+        QCOMPARE(firstOnDisk.readAll(), firstBytes); // the first model's file is untouched
+        firstOnDisk.close();
+        QCOMPARE(m_window->undoStack()->undoText(), QStringLiteral("Train DPDS"));
+
+        // Undo: the previous model is the one in use everywhere (trajectory plot included).
+        m_window->undoStack()->undo();
+        QCOMPARE(QString::fromStdString(doc->project().model("dpds")->file), firstFile);
+        QCOMPARE(store->dynamicModel(QStringLiteral("dpds")).get(), first.get());
+        // Redo: the retrained one again.
+        m_window->undoStack()->redo();
+        QCOMPARE(store->dynamicModel(QStringLiteral("dpds")).get(), second.get());
+
+        // Saved and opened again, the project uses the retrained model; an undo after opening
+        // is not possible, but the first file is still there for whoever wants it.
+        doc->saveTo(doc->folder());
+        const Project reloaded = Project::load(doc->folder().toStdString());
+        QCOMPARE(QString::fromStdString(reloaded.model("dpds")->file), secondFile);
+        QVERIFY(QFileInfo(firstPath).isFile());
     }
 };
 

@@ -9,6 +9,7 @@
 
 #include "annotate/FrameView.h"
 #include "app/MainWindow.h"
+#include "app/ModelStore.h"
 #include "app/ModelKinds.h"
 #include "app/ProjectDocument.h"
 #include "app/SequenceMedia.h"
@@ -20,6 +21,10 @@
 #include "preview/PreviewPanel.h"
 #include "preview/SpeechDialog.h"
 #include "tasks/TaskRunner.h"
+#include "export/ExportMenu.h"
+#include "io/VideoReader.h"
+#include "render/SpeechToFace.h"
+#include "timeline/TimelinePanel.h"
 #include "timeline/WaveformView.h"
 
 #include <QCheckBox>
@@ -27,13 +32,17 @@
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QFileInfo>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTabWidget>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 #include <QToolButton>
@@ -149,8 +158,8 @@ private slots:
             models->kindCheck(k)->setChecked(k == QLatin1String("hmm") || k == QLatin1String("dpds"));
         QTest::mouseClick(models->trainButton(), Qt::LeftButton);
         waitIdle();
-        QVERIFY(models->model(QStringLiteral("hmm")));
-        QVERIFY(models->model(QStringLiteral("dpds")));
+        QVERIFY(m_window->modelStore()->dynamicModel(QStringLiteral("hmm")));
+        QVERIFY(m_window->modelStore()->dynamicModel(QStringLiteral("dpds")));
         // The preview shows them without being asked.
         QTRY_VERIFY_WITH_TIMEOUT(m_preview->faces() && m_preview->faces()->tracks().size() == 2, 120000);
         QVERIFY(ready.count() >= 1);
@@ -363,10 +372,54 @@ private slots:
         QCOMPARE(m_preview->scrubber()->value(), m_preview->speechFrame());
         QVERIFY(m_preview->panel(0)->image() != first); // the mouth moved
 
+        // The timeline shows that speech's alignment, read-only, and a click there moves it.
+        TimelinePanel *timeline = m_window->timeline();
+        const auto speech = m_preview->speechResult();
+        QVERIFY(speech);
+        QVERIFY(timeline->isShowingGeneratedSpeech());
+        QVERIFY(timeline->findChild<QLabel *>(QStringLiteral("timelineBanner"))->isVisible());
+        WaveformView *wave = m_window->waveformView();
+        QCOMPARE(wave->phones().intervals.size(), speech->phones.intervals.size());
+        QCOMPARE(wave->words().intervals.size(), speech->words.intervals.size());
+        QVERIFY(std::abs(wave->duration() - faces->frameCount() / 30.0) < 1e-9);
+        QVERIFY(!timeline->splitAction()->isEnabled());
+        const QRect lane = wave->laneRect(WaveformView::Lane::Waveform);
+        QTest::mouseClick(wave, Qt::LeftButton, {}, QPoint(int(wave->xAt(1.5)), lane.center().y()));
+        QTRY_VERIFY2(std::abs(m_preview->speechFrame() - 45) <= 1, qPrintable(QString::number(m_preview->speechFrame())));
+        QCOMPARE(m_window->currentFrame(), sequenceFrame);
+        if (const QString dir = qEnvironmentVariable("LIPSYNC_PREVIEW_SHOT"); !dir.isEmpty())
+            m_window->grab().save(dir + QStringLiteral("/speech-timeline.png"));
+
+        // Export writes the speech's generated video, named after it, without asking for a model.
+        ExportMenu *exporter = m_window->exportMenu();
+        QTemporaryDir out;
+        QString suggested;
+        exporter->setPathPrompt([&](const ExportMenu::PathRequest &request) {
+            suggested = request.suggestedPath;
+            return out.filePath(QFileInfo(request.suggestedPath).fileName());
+        });
+        exporter->setModelPrompt([](const QStringList &, const QStringList &) -> QString {
+            QTest::qFail("no model prompt for new speech", __FILE__, __LINE__);
+            return {};
+        });
+        QSignalSpy exported(exporter, &ExportMenu::exported);
+        Task *task = exporter->trigger(ExportMenu::Kind::Video);
+        QVERIFY(task);
+        waitIdle();
+        QCOMPARE(exported.count(), 1);
+        QVERIFY2(suggested.endsWith(QStringLiteral("pbav2n-generated-dpds.mp4")), qPrintable(suggested));
+        const QString video = exported.front().front().toString();
+        QVERIFY2(std::abs(VideoReader(video.toStdString()).frameCount() - faces->frameCount()) <= 1,
+                 qPrintable(video));
+        QVERIFY(m_window->statusBar()->currentMessage().contains(QFileInfo(video).fileName()));
+
         // Back to the sequence; its own play button plays the sequence again.
         const QString speechCaption = m_preview->caption();
         QTest::mouseClick(m_preview->backButton(), Qt::LeftButton);
         QVERIFY(!m_preview->isShowingSpeech());
+        QVERIFY(!timeline->isShowingGeneratedSpeech());
+        QCOMPARE(wave->phones().intervals.size(), m_window->document()->sequence(m_window->currentSequence()).phones.intervals.size());
+        QVERIFY(timeline->splitAction()->isEnabled());
         QCOMPARE(m_preview->panelCount(), 3);
         // The caption is the sequence's again (frames counted from 1, as the transport does).
         QVERIFY2(m_preview->caption() != speechCaption

@@ -4,7 +4,9 @@
 // trial, that participants are kept apart, and that the results view shows the tally.
 #include "DemoWindow.h"
 
+#include "app/MainWindow.h"
 #include "app/ModelKinds.h"
+#include "app/ModelStore.h"
 #include "app/ProjectDocument.h"
 #include "app/SurfaceFormat.h"
 #include "build/ModelsPanel.h"
@@ -93,7 +95,7 @@ private slots:
             panel->kindCheck(kind)->setChecked(QLatin1String(kind) == QLatin1String("hmm"));
         QTest::mouseClick(panel->trainButton(), Qt::LeftButton);
         waitIdle();
-        QVERIFY(panel->model("hmm"));
+        QVERIFY(m_window->modelStore()->dynamicModel("hmm"));
         // Participants' answers go to the project on disk: work on a saved copy of the demo.
         m_folder = m_dir.filePath("demo-study");
         m_window->document()->saveTo(m_folder);
