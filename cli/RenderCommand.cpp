@@ -20,16 +20,20 @@ const char *kRenderUsage =
     "usage: lipsync render --model MODEL --aam AAM --media CLIP --transcript FILE\n"
     "                      (--out OUT.mp4 | --png-dir DIR)\n"
     "                      [--side-by-side] [--labels LEFT,RIGHT] [--aligner MODEL] [--fps F]\n"
-    "                      [--crf 20] [--json]\n"
+    "                      [--full-face] [--no-colour-match] [--crf 20] [--json]\n"
     "  CLIP: any audio or video file with speech (audio only renders onto a neutral frame).\n"
     "  FILE: the words spoken (.align, .lab, .txt or a TextGrid words tier).\n"
-    "  --side-by-side: the real clip left, the generated face right.";
+    "  --side-by-side: the real clip left, the generated face right.\n"
+    "  --full-face: synthesise the whole modelled face, eyes included (default: the lower face,\n"
+    "               the recording's eyes and upper face kept).\n"
+    "  --no-colour-match: keep the model's mean colour instead of matching the frame's lighting.";
 
 int runRender(const QStringList &argv)
 {
     const Arguments args(argv);
     const QStringList unknown = args.unknown({"model", "aam", "media", "transcript", "out", "side-by-side",
-                                              "labels", "aligner", "fps", "crf", "png-dir", "json"});
+                                              "labels", "aligner", "fps", "crf", "png-dir", "full-face",
+                                              "no-colour-match", "json"});
     if (!unknown.isEmpty() || !args.positional().isEmpty())
         return fail(QStringLiteral("render: unknown argument %1\n").arg((unknown + args.positional()).first())
                         + QString::fromLatin1(kRenderUsage),
@@ -58,6 +62,8 @@ int runRender(const QStringList &argv)
     }
     RenderOptions options;
     options.sideBySide = args.flag("side-by-side");
+    options.composite.region = args.flag("full-face") ? FaceRegion::Full : FaceRegion::Lower;
+    options.composite.matchColour = !args.flag("no-colour-match");
     options.video.crf = args.value("crf", "20").toInt(&ok);
     if (!ok || options.video.crf < 0 || options.video.crf > 51)
         return fail(QStringLiteral("render: --crf takes an integer in 0..51"), 2);
@@ -97,6 +103,8 @@ int runRender(const QStringList &argv)
             {"audioDuration", g.audio.duration()},
             {"video", g.hasVideo},
             {"sideBySide", options.sideBySide},
+            {"region", options.composite.region == FaceRegion::Full ? "full" : "lower"},
+            {"colourMatch", options.composite.matchColour},
             {"phones", int(g.phones.intervals.size())},
             {"generateSeconds", g.seconds},
             {"renderSeconds", report.renderSeconds},

@@ -1,9 +1,13 @@
 #include "aam/AamSynthesizer.h"
 
+#include "aam/LandmarkScheme.h"
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace lipsync {
 
@@ -33,6 +37,23 @@ AamSynthesizer::AamSynthesizer(const AamModel &model, double featherPixels) : m_
         for (int x = 0; x < mask.cols; ++x)
             if (mask.at<uchar>(y, x))
                 m_alpha.at<float>(y, x) = std::min(1.f, (dist.at<float>(y, x) - 0.5f) / feather + 0.1f);
+    // The lower face: opacity ramps up (smoothstep) from 35 % to 75 % of the way from the eyes'
+    // line down to the top of the upper lip, across the nose, where the face hardly moves.
+    const Eigen::VectorXd &ref = warp.referenceShape();
+    double eyes = 0.0, lip = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < scheme23::kMouthLeft; ++i)
+        eyes += ref[2 * i + 1] / scheme23::kMouthLeft;
+    for (int i = scheme23::kMouthLeft; i < scheme23::kPointCount; ++i)
+        if (landmarkDefinitions()[size_t(i)].feature == LandmarkFeature::Mouth)
+            lip = std::min(lip, ref[2 * i + 1]);
+    const double top = eyes + 0.35 * (lip - eyes), bottom = eyes + 0.75 * (lip - eyes);
+    m_alphaLower = m_alpha.clone();
+    for (int y = 0; y < mask.rows; ++y) {
+        const double u = std::clamp((y - top) / std::max(1.0, bottom - top), 0.0, 1.0);
+        const float ramp = float(u * u * (3.0 - 2.0 * u));
+        for (int x = 0; x < mask.cols; ++x)
+            m_alphaLower.at<float>(y, x) *= ramp;
+    }
     // Outside pixels next to the frame copy their nearest inside pixel, so bilinear lookups at
     // the outline do not mix in black.
     for (int y = 0; y < mask.rows; ++y) {
@@ -87,23 +108,23 @@ cv::Mat AamSynthesizer::textureImage(const Eigen::VectorXd &combined,
     return image;
 }
 
-void AamSynthesizer::composite(const Eigen::VectorXd &combined, const Similarity &pose,
-                               cv::Mat &frame) const
+void AamSynthesizer::composite(const Eigen::VectorXd &combined, const Similarity &pose, cv::Mat &frame,
+                               const CompositeOptions &options) const
 {
-    composite(combined, pose, defaultPhotometric(), frame);
+    composite(combined, pose, defaultPhotometric(), frame, options);
 }
 
-void AamSynthesizer::composite(const Eigen::VectorXd &combined, const Similarity &pose,
-                               PhotometricTransform photometric, cv::Mat &frame) const
+template <class Visit>
+void AamSynthesizer::rasterise(const Eigen::VectorXd &combined, const Similarity &pose, cv::Size size,
+                               const cv::Mat &alphaMap, const cv::Mat *texture, Visit &&visit) const
 {
-    CV_Assert(frame.type() == CV_8UC3);
-    const cv::Mat tex = textureImage(combined, photometric);
     const Eigen::VectorXd target = pose.apply(shape(combined));
     const PiecewiseAffineWarp &warp = m_model.warp(0);
     const Eigen::VectorXd &ref = warp.referenceShape();
-    const int tw = tex.cols, th = tex.rows;
-    const float *texData = tex.ptr<float>();
-    const float *alphaData = m_alpha.ptr<float>();
+    const int tw = alphaMap.cols, th = alphaMap.rows;
+    const float *texData = texture ? texture->ptr<float>() : nullptr;
+    const float *alphaData = alphaMap.ptr<float>();
+    float texel[3] = {0.f, 0.f, 0.f};
     for (const Triangle &tri : warp.triangles()) {
         // Frame -> reference affine map of this triangle.
         const Eigen::Vector2d p0 = target.segment<2>(2 * tri[0]), p1 = target.segment<2>(2 * tri[1]),
@@ -115,13 +136,12 @@ void AamSynthesizer::composite(const Eigen::VectorXd &combined, const Similarity
         if (std::abs(det) < 1e-9)
             continue;
         const int x0 = std::max(0, int(std::floor(std::min({p0.x(), p1.x(), p2.x()}))));
-        const int x1 = std::min(frame.cols - 1, int(std::ceil(std::max({p0.x(), p1.x(), p2.x()}))));
+        const int x1 = std::min(size.width - 1, int(std::ceil(std::max({p0.x(), p1.x(), p2.x()}))));
         const int y0 = std::max(0, int(std::floor(std::min({p0.y(), p1.y(), p2.y()}))));
-        const int y1 = std::min(frame.rows - 1, int(std::ceil(std::max({p0.y(), p1.y(), p2.y()}))));
+        const int y1 = std::min(size.height - 1, int(std::ceil(std::max({p0.y(), p1.y(), p2.y()}))));
         const double inv = 1.0 / det;
         const float eps = -1e-4f;
         for (int y = y0; y <= y1; ++y) {
-            uchar *row = frame.ptr<uchar>(y);
             for (int x = x0; x <= x1; ++x) {
                 const double dx = x - p0.x(), dy = y - p0.y();
                 const float b = float((dx * v.y() - dy * v.x()) * inv);
@@ -142,16 +162,72 @@ void AamSynthesizer::composite(const Eigen::VectorXd &combined, const Similarity
                                     + w10 * alphaData[i00 + tw] + w11 * alphaData[i00 + tw + 1];
                 if (alpha <= 0.f)
                     continue;
-                uchar *px = row + 3 * x;
-                for (int ch = 0; ch < 3; ++ch) {
-                    const float t = w00 * texData[3 * i00 + ch] + w01 * texData[3 * (i00 + 1) + ch]
-                                    + w10 * texData[3 * (i00 + tw) + ch]
-                                    + w11 * texData[3 * (i00 + tw + 1) + ch];
-                    px[ch] = cv::saturate_cast<uchar>(alpha * t + (1.f - alpha) * px[ch]);
-                }
+                if (texData)
+                    for (int ch = 0; ch < 3; ++ch)
+                        texel[ch] = w00 * texData[3 * i00 + ch] + w01 * texData[3 * (i00 + 1) + ch]
+                                    + w10 * texData[3 * (i00 + tw) + ch] + w11 * texData[3 * (i00 + tw + 1) + ch];
+                visit(x, y, alpha, texel);
             }
         }
     }
+}
+
+void AamSynthesizer::composite(const Eigen::VectorXd &combined, const Similarity &pose,
+                               PhotometricTransform photometric, cv::Mat &frame,
+                               const CompositeOptions &options) const
+{
+    CV_Assert(frame.type() == CV_8UC3);
+    const cv::Mat tex = textureImage(combined, photometric);
+    const cv::Mat &alphaMap = alphaOf(options.region);
+    if (!options.matchColour) {
+        rasterise(combined, pose, frame.size(), alphaMap, &tex, [&](int x, int y, float alpha, const float *t) {
+            uchar *px = frame.ptr<uchar>(y) + 3 * x;
+            for (int ch = 0; ch < 3; ++ch)
+                px[ch] = cv::saturate_cast<uchar>(alpha * t[ch] + (1.f - alpha) * px[ch]);
+        });
+        return;
+    }
+    // Two steps over the covered pixels, kept in between: the seam's mean difference (where
+    // the blend is partial), then the blend with that offset.
+    struct Covered
+    {
+        int offset;
+        float alpha;
+        float texel[3];
+    };
+    std::vector<Covered> covered;
+    covered.reserve(size_t(cv::countNonZero(alphaMap)) * 2);
+    double sum[3] = {0, 0, 0};
+    double weight = 0.0;
+    rasterise(combined, pose, frame.size(), alphaMap, &tex, [&](int x, int y, float alpha, const float *t) {
+        covered.push_back({y * int(frame.step) + 3 * x, alpha, {t[0], t[1], t[2]}});
+        if (alpha < 0.98f) {
+            const uchar *px = frame.ptr<uchar>(y) + 3 * x;
+            for (int ch = 0; ch < 3; ++ch)
+                sum[ch] += double(px[ch]) - t[ch];
+            weight += 1.0;
+        }
+    });
+    float shift[3] = {0.f, 0.f, 0.f};
+    constexpr double kMaxShift = 48.0; // a lighting correction, not a repaint
+    if (weight > 0)
+        for (int ch = 0; ch < 3; ++ch)
+            shift[ch] = float(std::clamp(sum[ch] / weight, -kMaxShift, kMaxShift));
+    uchar *data = frame.data;
+    for (const Covered &c : covered) {
+        uchar *px = data + c.offset;
+        for (int ch = 0; ch < 3; ++ch)
+            px[ch] = cv::saturate_cast<uchar>(c.alpha * (c.texel[ch] + shift[ch]) + (1.f - c.alpha) * px[ch]);
+    }
+}
+
+cv::Mat AamSynthesizer::compositeWeight(const Eigen::VectorXd &combined, const Similarity &pose, cv::Size size,
+                                        FaceRegion region) const
+{
+    cv::Mat weight(size, CV_32F, cv::Scalar(0));
+    rasterise(combined, pose, size, alphaOf(region), nullptr,
+              [&](int x, int y, float alpha, const float *) { weight.at<float>(y, x) = alpha; });
+    return weight;
 }
 
 } // namespace lipsync

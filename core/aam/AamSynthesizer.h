@@ -3,8 +3,14 @@
 // parameters back ... allows us to reconstruct the modelled part of the original image"):
 // combined parameters c -> shape x = x0 + Qs c and texture g = g0 + Qg c -> the texture drawn
 // through the piecewise-affine warp into a frame at a given pose, with its edge feathered so the
-// face blends into the surrounding frame. Everything per frame is precomputed matrices and one
-// pass over the face's pixels, so preview and export can run it at video rate.
+// face blends into the surrounding frame.
+//
+// By default only the lower face is drawn: the mouth, cheeks and jaw come from the model and the
+// recording's own eyes, brows and upper face stay, blended over a band between the eyes and the
+// upper lip (the articulators are all below it; an AAM re-synthesis of the eyes is blurred and
+// half-closed). The synthesised colour is shifted by the mean difference to the frame along the
+// blended seam, so the face's lighting matches the frame's. Everything per frame is precomputed
+// matrices and one rasterisation of the face's pixels, so preview and export run it at video rate.
 #include "aam/AamModel.h"
 #include "aam/TextureNormalisation.h"
 
@@ -14,6 +20,20 @@
 #include <vector>
 
 namespace lipsync {
+
+enum class FaceRegion
+{
+    Lower, // mouth, cheeks and jaw; the frame's eyes and upper face kept
+    Full,  // the whole modelled face (eyes included)
+};
+
+struct CompositeOptions
+{
+    FaceRegion region = FaceRegion::Lower;
+    // Offset the synthesised colour (per channel) by the mean frame-minus-synthesis difference
+    // over the blended seam, so the face's lighting follows the frame's.
+    bool matchColour = true;
+};
 
 class AamSynthesizer
 {
@@ -31,16 +51,28 @@ public:
     PhotometricTransform defaultPhotometric() const;
 
     // Draws the synthesised face into `frame` (CV_8UC3) at `pose` (model coordinates -> frame).
-    void composite(const Eigen::VectorXd &combined, const Similarity &pose, cv::Mat &frame) const;
-    void composite(const Eigen::VectorXd &combined, const Similarity &pose,
-                   PhotometricTransform photometric, cv::Mat &frame) const;
+    void composite(const Eigen::VectorXd &combined, const Similarity &pose, cv::Mat &frame,
+                   const CompositeOptions &options = {}) const;
+    void composite(const Eigen::VectorXd &combined, const Similarity &pose, PhotometricTransform photometric,
+                   cv::Mat &frame, const CompositeOptions &options = {}) const;
+    // How much of each pixel of a `size` frame composite() replaces (CV_32F, 0..1).
+    cv::Mat compositeWeight(const Eigen::VectorXd &combined, const Similarity &pose, cv::Size size,
+                            FaceRegion region = FaceRegion::Lower) const;
 
 private:
+    // Calls visit(x, y, alpha, texel) for every frame pixel the face covers (alpha > 0), where
+    // texel points at the bilinearly interpolated BGR value of `texture` (null when not wanted).
+    template <class Visit>
+    void rasterise(const Eigen::VectorXd &combined, const Similarity &pose, cv::Size size, const cv::Mat &alpha,
+                   const cv::Mat *texture, Visit &&visit) const;
+    const cv::Mat &alphaOf(FaceRegion region) const { return region == FaceRegion::Full ? m_alpha : m_alphaLower; }
+
     const AamModel &m_model;
     Eigen::MatrixXd m_shapeMatrix;   // 2k x nc
     Eigen::MatrixXf m_textureMatrix; // 3N x nc
     Eigen::VectorXf m_textureMean;
     cv::Mat m_alpha;                 // CV_32F feather mask of the reference frame
+    cv::Mat m_alphaLower;            // the same times the lower-face ramp
     std::vector<std::pair<int, int>> m_borderFill; // outside pixel offset <- inside pixel index
 };
 

@@ -214,16 +214,6 @@ double gradientEnergy(const cv::Mat &bgr, const cv::Rect2d &box)
     return cv::mean(laplacian.mul(laplacian))[0];
 }
 
-cv::Mat synthesisedWeight(const cv::Mat &onBlack, const cv::Mat &onWhite)
-{
-    cv::Mat diff, channels[3], weight;
-    cv::absdiff(onWhite, onBlack, diff);
-    cv::split(diff, channels);
-    cv::max(channels[0], channels[1], weight);
-    cv::max(weight, channels[2], weight);
-    return 255 - weight;
-}
-
 SeamDeltaE seamDeltaE(const cv::Mat &frameIn, const cv::Mat &referenceIn, const cv::Mat &weightIn, int band)
 {
     SeamDeltaE out;

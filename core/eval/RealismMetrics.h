@@ -60,16 +60,13 @@ double avLag(const std::vector<double> &opening, const std::vector<double> &ener
 // Mean squared 3x3 Laplacian of the grey image inside `box` (clipped to the image); NaN if empty.
 double gradientEnergy(const cv::Mat &bgr, const cv::Rect2d &box);
 
-// The synthesised region of a composite as an 8-bit weight (255 fully synthesised, 0 untouched):
-// the same face composited onto a black and a white frame differs by the untouched share.
-cv::Mat synthesisedWeight(const cv::Mat &onBlack, const cv::Mat &onWhite);
-
 struct SeamDeltaE
 {
     double frame = 0.0;     // in the frame given (the composite)
     double reference = 0.0; // at the same pixel pairs in the reference frame (the recording)
     int pairs = 0;
 };
+// `weight`: the synthesised share of each pixel, 8-bit (255 fully synthesised, 0 untouched).
 // Pairs every untouched pixel within `band` pixels outside the region with the nearest fully
 // synthesised pixel within `band` pixels inside its (feathered) edge, and averages the ΔE of the
 // pairs (colours smoothed over 3x3) in `frame` and in `reference`. NaN values without pairs.

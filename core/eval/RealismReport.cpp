@@ -110,7 +110,6 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
         seam(methods, recordedOpening), seamRecorded(methods, recordedOpening);
     std::vector<int> skipped(methods, 0);
     cv::Mat generated;
-    cv::Mat onBlack(renderer.frameSize(), CV_8UC3), onWhite(renderer.frameSize(), CV_8UC3);
     for (int t = 0; t < frames; ++t) {
         feedback.throwIfCanceled();
         const cv::Mat recorded = renderer.background(t);
@@ -136,11 +135,9 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
             else
                 opening[m][ut] = innerLipOpening(rendered);
             sharpness[m][ut] = gradientEnergy(generated, mouth);
-            onBlack.setTo(cv::Scalar::all(0));
-            onWhite.setTo(cv::Scalar::all(255));
-            renderer.renderInto(t, c, onBlack);
-            renderer.renderInto(t, c, onWhite);
-            const SeamDeltaE s = seamDeltaE(generated, recorded, synthesisedWeight(onBlack, onWhite));
+            cv::Mat weight;
+            renderer.synthesisedWeight(t, c).convertTo(weight, CV_8U, 255.0);
+            const SeamDeltaE s = seamDeltaE(generated, recorded, weight);
             seam[m][ut] = s.frame;
             seamRecorded[m][ut] = s.reference;
         }

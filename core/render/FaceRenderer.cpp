@@ -130,7 +130,15 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
     if (frame.type() != CV_8UC3 || frame.size() != m_size)
         throw Error("cannot render: the frame is not a " + std::to_string(m_size.width) + "x"
                     + std::to_string(m_size.height) + " BGR image");
-    m_synthesizer.composite(features, pose(index), frame);
+    m_synthesizer.composite(features, pose(index), frame, m_composite);
+}
+
+cv::Mat FaceRenderer::synthesisedWeight(int index, const Eigen::VectorXd &features) const
+{
+    if (features.size() != m_aam.combinedModes())
+        throw Error("cannot render: " + std::to_string(features.size())
+                    + " parameters given, the AAM has " + std::to_string(m_aam.combinedModes()));
+    return m_synthesizer.compositeWeight(features, pose(index), m_size, m_composite.region);
 }
 
 cv::Mat FaceRenderer::render(int index, const Eigen::VectorXd &features)

@@ -1,7 +1,8 @@
 #pragma once
 // Rendering AAM parameters (real or generated) as video frames: the face region is synthesised from
 // the combined parameters (shape + texture, AamSynthesizer) and composited, with its feathered
-// edge, into a background frame at the pose of the face there.
+// edge, into a background frame at the pose of the face there — by default the lower face only,
+// colour-matched to the frame along the seam (CompositeOptions).
 //
 // Two backgrounds:
 //  - a video (the sequence's own clip): its face is tracked once with the AAM (trackVideo), and
@@ -54,10 +55,16 @@ public:
     // Pose of the face in frame `index` (the last frame's beyond the end).
     const Similarity &pose(int index) const;
 
+    // How the face is composited (the lower face, colour-matched, unless set otherwise).
+    void setCompositeOptions(const CompositeOptions &options) { m_composite = options; }
+    const CompositeOptions &compositeOptions() const { return m_composite; }
+
     // `features` (combined AAM parameters c) drawn into the background of frame `index`.
     cv::Mat render(int index, const Eigen::VectorXd &features);
     // Same, into a caller's frame (CV_8UC3, frameSize()) already holding the background.
     void renderInto(int index, const Eigen::VectorXd &features, cv::Mat &frame) const;
+    // How much of each pixel renderInto() replaces for these features (CV_32F, 0..1).
+    cv::Mat synthesisedWeight(int index, const Eigen::VectorXd &features) const;
     // The real frame on the left and the rendered one on the right, one frame (optional labels).
     cv::Mat renderSideBySide(int index, const Eigen::VectorXd &features,
                              const std::string &leftLabel = {}, const std::string &rightLabel = {});
@@ -70,6 +77,7 @@ private:
     cv::Size m_size;
     std::vector<Similarity> m_poses;   // one per video frame, or one for the neutral frame
     Eigen::MatrixXd m_tracked;
+    CompositeOptions m_composite;
 };
 
 } // namespace lipsync

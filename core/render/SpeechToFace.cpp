@@ -170,6 +170,7 @@ cv::Mat renderFrame(const SpeechToFaceResult &result, FaceRenderer &renderer, in
 {
     const Eigen::VectorXd c = result.features.row(std::clamp<Eigen::Index>(index, 0, result.features.rows() - 1))
                                   .transpose();
+    renderer.setCompositeOptions(options.composite);
     if (options.sideBySide)
         return renderer.renderSideBySide(index, c, options.leftLabel, options.rightLabel);
     cv::Mat frame = renderer.render(index, c);

@@ -80,6 +80,7 @@ std::unique_ptr<FaceRenderer> makeRenderer(const SpeechToFaceResult &result,
 struct RenderOptions
 {
     bool sideBySide = false;  // the real clip left, the generated face right
+    CompositeOptions composite; // the lower face, colour-matched (AamSynthesizer), unless set
     std::string leftLabel;    // drawn in the panels' corners when not empty (ASCII)
     std::string rightLabel;
     VideoExportOptions video; // frame rate is set from the result

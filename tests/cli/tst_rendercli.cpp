@@ -7,6 +7,10 @@
 
 #include "aam/AamModel.h"
 #include "io/MediaInfo.h"
+#include "io/VideoReader.h"
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include <QDir>
 #include <QFile>
@@ -124,6 +128,38 @@ private slots:
         const int frames = parseJsonObject(r.out).value("frames").toInt();
         QCOMPARE(frames, 75); // every generated frame (an MP4 is fitted to the sound instead)
         QCOMPARE(QDir(folder).entryList({"*.png"}, QDir::Files).size(), frames);
+    }
+
+    // By default the lower face is drawn and the recording's eyes kept; --full-face draws the
+    // whole modelled face, so more of each frame differs from the recording.
+    void fullFaceDrawsMoreOfTheFrame()
+    {
+        auto render = [&](const QString &folder, const QStringList &extra) {
+            QStringList args = renderArgs(kClip, kTranscript, QString());
+            args.removeLast();
+            args.removeLast();
+            const Run r = runLipsync(args << "--png-dir" << folder << extra << "--json");
+            return r.exitCode == 0 ? parseJsonObject(r.out).value("region").toString() : QString::fromUtf8(r.err);
+        };
+        const QString lower = m_dir.filePath("lower"), full = m_dir.filePath("full");
+        QCOMPARE(render(lower, {}), QStringLiteral("lower"));
+        QCOMPARE(render(full, {"--full-face"}), QStringLiteral("full"));
+        lipsync::VideoReader clip(kClip.toStdString());
+        int lowerChanged = 0, fullChanged = 0;
+        for (int frame : {10, 40}) {
+            const cv::Mat real = clip.frame(frame);
+            const QString name = QStringLiteral("frame_%1.png").arg(frame, 5, 10, QLatin1Char('0'));
+            auto changed = [&](const QString &folder) {
+                cv::Mat rendered = cv::imread(QDir(folder).filePath(name).toStdString()), diff, grey;
+                cv::absdiff(rendered, real, diff);
+                cv::cvtColor(diff, grey, cv::COLOR_BGR2GRAY);
+                return cv::countNonZero(grey > 8);
+            };
+            lowerChanged += changed(lower);
+            fullChanged += changed(full);
+        }
+        QVERIFY2(lowerChanged > 200 && fullChanged > lowerChanged * 5 / 4,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(lowerChanged).arg(fullChanged)));
     }
 
     void mediaWithoutSound()
