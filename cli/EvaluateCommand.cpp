@@ -104,7 +104,7 @@ int runEvaluate(const QStringList &argv)
     const bool realism = args.flag(QStringLiteral("realism"));
     QStringList known{"project", "features", "labels", "folds", "seed", "kinds", "fps",
                       "csv", "json", "full-covariance", "full-a", "bound-a", "optimizer",
-                      "paper-mode", "max-iterations", "threads"};
+                      "paper-mode", "max-iterations", "threads", "compensate-variance"};
     if (realism)
         known << "realism" << "max-lag" << "dlib";
     const QStringList unknown = args.unknown(known);

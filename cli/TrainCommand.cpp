@@ -26,7 +26,9 @@ const char *kTrainUsage =
     "  options: --full-covariance (brand), --full-a (slds), --optimizer lm|gradient (dpds),\n"
     "           --paper-mode (dpds), --max-iterations N (dpds, slds), --threads N (dpds),\n"
     "           --bound-a [AMAX] (slds: keep |a|, or ||A||_2 with --full-a, <= AMAX, default 0.999,\n"
-    "           for generation that stays bounded; without it, the paper's plain maximum likelihood)";
+    "           for generation that stays bounded; without it, the paper's plain maximum likelihood),\n"
+    "           --compensate-variance (every kind: scale the generated trajectories' spread to the\n"
+    "           training features', docs/models.md §5.1)";
 
 QString trainUsage()
 {
@@ -37,6 +39,7 @@ QString trainUsage()
 QString modelOptionsFrom(const Arguments &args, ModelOptions &options)
 {
     options.brand.fullCovariance = args.flag(QStringLiteral("full-covariance"));
+    options.compensateVariance = args.flag(QStringLiteral("compensate-variance"));
     options.slds.fullA = args.flag(QStringLiteral("full-a"));
     if (args.has(QStringLiteral("bound-a"))) {
         options.slds.boundA = true;
@@ -77,7 +80,7 @@ int runTrain(const QStringList &argv)
     const Arguments args(argv);
     const QStringList unknown = args.unknown({"kind", "project", "features", "labels", "out", "fps", "aam",
                                               "json", "full-covariance", "full-a", "bound-a", "optimizer",
-                                              "paper-mode", "max-iterations", "threads"});
+                                              "paper-mode", "max-iterations", "threads", "compensate-variance"});
     if (!unknown.isEmpty() || !args.positional().isEmpty())
         return fail(QStringLiteral("unknown argument %1\n").arg((unknown + args.positional()).first())
                         + trainUsage(),

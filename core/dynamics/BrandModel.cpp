@@ -163,7 +163,7 @@ brand::TridiagonalSystem BrandModel::tridiagonalSystem(const std::vector<int> &l
     return brand::buildTridiagonal(p, m, q, delta);
 }
 
-Eigen::MatrixXd BrandModel::generate(const std::vector<int> &labels) const
+Eigen::MatrixXd BrandModel::generateMostLikely(const std::vector<int> &labels) const
 {
     checkGenerationInput(labels);
     if (!jointCovariance.empty())
@@ -537,7 +537,7 @@ public:
     void finish() override
     {
         if (!m_labels.empty())
-            m_frames = m_model.generate(m_labels);
+            m_frames = m_model.generateMostLikely(m_labels);
         m_labels.clear();
     }
     bool pop(Eigen::Ref<Eigen::VectorXd> frame) override
@@ -557,7 +557,7 @@ private:
 
 } // namespace
 
-std::unique_ptr<StreamingGenerator> BrandModel::streamer() const
+std::unique_ptr<StreamingGenerator> BrandModel::makeStreamer() const
 {
     checkTrained();
     if (!jointCovariance.empty())

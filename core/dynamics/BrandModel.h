@@ -23,8 +23,8 @@ public:
     std::string kind() const override { return modelKindId(ModelKind::Brand); }
     const BrandOptions &options() const { return m_options; }
 
-    Eigen::MatrixXd generate(const std::vector<int> &labels) const override;
-    std::unique_ptr<StreamingGenerator> streamer() const override;
+    Eigen::MatrixXd generateMostLikely(const std::vector<int> &labels) const override;
+    std::unique_ptr<StreamingGenerator> makeStreamer() const override;
     // §2.1: the density over static + delta features (not comparable with the other models).
     double logLikelihood(const std::vector<int> &labels,
                          const Eigen::MatrixXd &features) const override;

@@ -394,13 +394,13 @@ LinearRecursion DpdsModel::recursion() const
     return rec;
 }
 
-Eigen::MatrixXd DpdsModel::generate(const std::vector<int> &labels) const
+Eigen::MatrixXd DpdsModel::generateMostLikely(const std::vector<int> &labels) const
 {
     checkGenerationInput(labels);
     return recursion().generate(labels);
 }
 
-std::unique_ptr<StreamingGenerator> DpdsModel::streamer() const
+std::unique_ptr<StreamingGenerator> DpdsModel::makeStreamer() const
 {
     checkTrained();
     return recursion().streamer();

@@ -34,11 +34,30 @@ public:
     // per iteration, polls cancel (throws Canceled; the model is then left unchanged).
     void train(const std::vector<LabelledSequence> &sequences, Feedback &feedback);
 
-    // Most likely trajectory for the labels: T x d. Labels never seen in training use the
-    // documented back-off statistics of each model.
-    virtual Eigen::MatrixXd generate(const std::vector<int> &labels) const = 0;
+    // The trajectory for the labels: T x d — the model's most likely one, with the variance
+    // compensation applied when the model was trained with it.
+    Eigen::MatrixXd generate(const std::vector<int> &labels) const;
+    // Most likely trajectory of the model itself (the paper's generation). Labels never seen in
+    // training use the documented back-off statistics of each model.
+    virtual Eigen::MatrixXd generateMostLikely(const std::vector<int> &labels) const = 0;
     // Frame-by-frame generation; equals generate() (exactly for the recursive models).
-    virtual std::unique_ptr<StreamingGenerator> streamer() const = 0;
+    std::unique_ptr<StreamingGenerator> streamer() const;
+
+    // Variance compensation (docs/models.md §5.1), as global-variance compensation in HMM speech
+    // synthesis: the most likely trajectory of every model is smoother than the recordings it was
+    // trained on, so its deviations from the training mean m are scaled per dimension by
+    // g = s.d.(training features) / s.d.(trajectories generated for the training labels), both
+    // about m: y' = m + g (y - m). A static per-frame map, so streaming stays exact. Off unless
+    // asked for before train(); the paper's models are the ones without it.
+    static constexpr double kMinCompensationGain = 0.5;
+    static constexpr double kMaxCompensationGain = 3.0;
+    void setVarianceCompensation(bool on) { m_compensate = on; }
+    bool compensatesVariance() const { return m_gain.size() > 0; }
+    const Eigen::VectorXd &compensationMean() const { return m_mean; }
+    const Eigen::VectorXd &compensationGain() const { return m_gain; }
+    // Restores a trained compensation (model files); empty vectors turn it off. Throws
+    // lipsync::Error for sizes other than dimension() or a non-positive gain.
+    void setCompensation(const Eigen::VectorXd &mean, const Eigen::VectorXd &gain);
     // log p(features | labels) in nats, the model's own objective (for Brand: the density over
     // static + delta features [y; Δy], docs/models.md §2.1).
     virtual double logLikelihood(const std::vector<int> &labels,
@@ -59,11 +78,17 @@ public:
 
 protected:
     virtual void fit(const std::vector<LabelledSequence> &sequences, Feedback &feedback) = 0;
+    virtual std::unique_ptr<StreamingGenerator> makeStreamer() const = 0;
     void checkTrained() const;
     void checkGenerationInput(const std::vector<int> &labels) const;
     void checkScoringInput(const std::vector<int> &labels, const Eigen::MatrixXd &features) const;
 
     int m_dimension = 0;
+
+private:
+    bool m_compensate = false;
+    Eigen::VectorXd m_mean; // compensation: training mean m and gain g (empty: none)
+    Eigen::VectorXd m_gain;
 };
 
 } // namespace lipsync

@@ -26,7 +26,7 @@ LinearRecursion HmmMeanModel::recursion() const
     return r;
 }
 
-Eigen::MatrixXd HmmMeanModel::generate(const std::vector<int> &labels) const
+Eigen::MatrixXd HmmMeanModel::generateMostLikely(const std::vector<int> &labels) const
 {
     checkGenerationInput(labels);
     Eigen::MatrixXd out(Eigen::Index(labels.size()), m_dimension);
@@ -35,7 +35,7 @@ Eigen::MatrixXd HmmMeanModel::generate(const std::vector<int> &labels) const
     return out;
 }
 
-std::unique_ptr<StreamingGenerator> HmmMeanModel::streamer() const
+std::unique_ptr<StreamingGenerator> HmmMeanModel::makeStreamer() const
 {
     checkTrained();
     return recursion().streamer();

@@ -1,6 +1,7 @@
 #include "dynamics/ModelFile.h"
 
 #include "dynamics/HmmMeanModel.h"
+#include "dynamics/JsonEigen.h"
 #include "util/PhoneSet.h"
 #include "io/AtomicFile.h"
 #include "util/Error.h"
@@ -10,7 +11,9 @@
 
 namespace lipsync {
 
-std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOptions &options)
+namespace {
+
+std::unique_ptr<DynamicModel> newModelOfKind(ModelKind kind, const ModelOptions &options)
 {
     switch (kind) {
     case ModelKind::HmmMean:
@@ -23,6 +26,15 @@ std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOpti
         return std::make_unique<DpdsModel>(options.dpds);
     }
     throw Error("unknown model kind");
+}
+
+} // namespace
+
+std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOptions &options)
+{
+    std::unique_ptr<DynamicModel> model = newModelOfKind(kind, options);
+    model->setVarianceCompensation(options.compensateVariance);
+    return model;
 }
 
 std::unique_ptr<DynamicModel> createDynamicModel(const std::string &kind, const ModelOptions &options)
@@ -47,6 +59,9 @@ void saveModel(const DynamicModel &model, const std::string &path, const std::st
     o[QStringLiteral("labels")] = labels;
     o[QStringLiteral("dimension")] = model.dimension();
     o[QStringLiteral("parameters")] = model.parametersToJson();
+    if (model.compensatesVariance())
+        o[QStringLiteral("compensation")] = QJsonObject{{QStringLiteral("mean"), json::fromVector(model.compensationMean())},
+                                                        {QStringLiteral("gain"), json::fromVector(model.compensationGain())}};
     writeFileAtomically(path, QJsonDocument(o).toJson(QJsonDocument::Compact).toStdString());
 }
 
@@ -95,6 +110,15 @@ std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::str
     model->parametersFromJson(o.value(QStringLiteral("parameters")).toObject(), path);
     if (model->dimension() != o.value(QStringLiteral("dimension")).toInt(-1))
         throw Error("does not match the parameters", path, "dimension");
+    if (o.contains(QStringLiteral("compensation"))) {
+        const QJsonObject c = o.value(QStringLiteral("compensation")).toObject();
+        try {
+            model->setCompensation(json::toVector(c, "mean", model->dimension(), path),
+                                   json::toVector(c, "gain", model->dimension(), path));
+        } catch (const Error &e) {
+            throw Error(e.reason(), path, "compensation");
+        }
+    }
     if (aamId)
         *aamId = aam;
     return model;

@@ -24,6 +24,8 @@ struct ModelOptions
     BrandOptions brand;
     SldsOptions slds;
     DpdsOptions dpds;
+    // Every kind: variance compensation of the generated trajectories (DynamicModel, §5.1).
+    bool compensateVariance = false;
 };
 
 std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOptions &options = {});

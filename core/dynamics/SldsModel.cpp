@@ -511,13 +511,13 @@ LinearRecursion SldsModel::recursion() const
     return rec;
 }
 
-Eigen::MatrixXd SldsModel::generate(const std::vector<int> &labels) const
+Eigen::MatrixXd SldsModel::generateMostLikely(const std::vector<int> &labels) const
 {
     checkGenerationInput(labels);
     return recursion().generate(labels);
 }
 
-std::unique_ptr<StreamingGenerator> SldsModel::streamer() const
+std::unique_ptr<StreamingGenerator> SldsModel::makeStreamer() const
 {
     checkTrained();
     return recursion().streamer();

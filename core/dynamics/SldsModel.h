@@ -63,8 +63,8 @@ public:
     std::string kind() const override { return modelKindId(ModelKind::Slds); }
     SldsOptions &options() { return m_options; }
 
-    Eigen::MatrixXd generate(const std::vector<int> &labels) const override;
-    std::unique_ptr<StreamingGenerator> streamer() const override;
+    Eigen::MatrixXd generateMostLikely(const std::vector<int> &labels) const override;
+    std::unique_ptr<StreamingGenerator> makeStreamer() const override;
     double logLikelihood(const std::vector<int> &labels,
                          const Eigen::MatrixXd &features) const override;
     QJsonObject parametersToJson() const override;

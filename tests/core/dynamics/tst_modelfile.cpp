@@ -58,16 +58,21 @@ private slots:
     {
         QTest::addColumn<QString>("kind");
         QTest::addColumn<bool>("full");
-        for (const std::string &kind : dynamicModelKinds())
-            QTest::newRow(kind.c_str()) << QString::fromStdString(kind) << false;
-        QTest::newRow("brand full") << QStringLiteral("brand") << true;
-        QTest::newRow("slds full") << QStringLiteral("slds") << true;
+        QTest::addColumn<bool>("compensated");
+        for (const std::string &kind : dynamicModelKinds()) {
+            QTest::newRow(kind.c_str()) << QString::fromStdString(kind) << false << false;
+            QTest::newRow((kind + " compensated").c_str()) << QString::fromStdString(kind) << false << true;
+        }
+        QTest::newRow("brand full") << QStringLiteral("brand") << true << false;
+        QTest::newRow("slds full") << QStringLiteral("slds") << true << false;
     }
     void roundTrip()
     {
         QFETCH(QString, kind);
         QFETCH(bool, full);
+        QFETCH(bool, compensated);
         ModelOptions options;
+        options.compensateVariance = compensated;
         options.brand.fullCovariance = full;
         options.slds.fullA = full;
         options.slds.fullNoise = full;
@@ -84,6 +89,8 @@ private slots:
         QCOMPARE(aam, std::string("aam-1234"));
         QCOMPARE(loaded->kind(), model->kind());
         QCOMPARE(loaded->dimension(), 3);
+        QCOMPARE(loaded->compensatesVariance(), compensated);
+        QCOMPARE(loaded->compensationGain(), model->compensationGain());
         std::mt19937 rng(5);
         const std::vector<int> labels = randomLabels(rng, 40, {0, 2, 6, 11});
         QVERIFY(loaded->generate(labels) == model->generate(labels)); // exact round trip
@@ -171,10 +178,68 @@ private slots:
         }
     }
 
+    // Variance compensation (docs/models.md §5.1): trained on the training part alone, the
+    // trajectories generated for the training labels spread about the training mean as much as
+    // the training features do, per dimension (unless a gain reached its bound); without it the
+    // model generates its own most likely trajectory unchanged.
+    void varianceCompensationMatchesTheTrainingSpread()
+    {
+        for (const std::string &kind : dynamicModelKinds()) {
+            ModelOptions options;
+            options.slds.maxIterations = 5;
+            auto plain = createDynamicModel(kind, options);
+            options.compensateVariance = true;
+            auto compensated = createDynamicModel(kind, options);
+            Feedback feedback;
+            const auto training = data(4);
+            plain->train(training, feedback);
+            compensated->train(training, feedback);
+            QVERIFY(!plain->compensatesVariance());
+            QVERIFY(compensated->compensatesVariance());
+            const std::vector<int> &labels = training.front().labels;
+            QVERIFY(plain->generate(labels) == plain->generateMostLikely(labels));
+            QVERIFY(compensated->generateMostLikely(labels) == plain->generateMostLikely(labels));
+
+            const Eigen::VectorXd &m = compensated->compensationMean();
+            Eigen::VectorXd real = Eigen::VectorXd::Zero(3), generated = Eigen::VectorXd::Zero(3),
+                            raw = Eigen::VectorXd::Zero(3);
+            for (const LabelledSequence &s : training) {
+                real += (s.features.rowwise() - m.transpose()).colwise().squaredNorm().transpose();
+                generated += (compensated->generate(s.labels).rowwise() - m.transpose()).colwise().squaredNorm().transpose();
+                raw += (plain->generate(s.labels).rowwise() - m.transpose()).colwise().squaredNorm().transpose();
+            }
+            for (int k = 0; k < 3; ++k) {
+                const double gain = compensated->compensationGain()[k];
+                QVERIFY(gain >= DynamicModel::kMinCompensationGain && gain <= DynamicModel::kMaxCompensationGain);
+                QVERIFY2(std::abs(gain - std::sqrt(real[k] / raw[k])) < 1e-9
+                             || gain == DynamicModel::kMaxCompensationGain || gain == DynamicModel::kMinCompensationGain,
+                         kind.c_str());
+                if (gain < DynamicModel::kMaxCompensationGain && gain > DynamicModel::kMinCompensationGain)
+                    QVERIFY2(std::abs(generated[k] / real[k] - 1.0) < 1e-9, kind.c_str());
+            }
+        }
+        // A damaged compensation in a model file is refused, naming the field.
+        auto model = createDynamicModel("hmm", ModelOptions{{}, {}, {}, true});
+        Feedback feedback;
+        model->train(data(), feedback);
+        QTemporaryDir dir;
+        const std::string path = dir.filePath(QStringLiteral("gv.json")).toStdString();
+        saveModel(*model, path, "aam");
+        std::string text = readWholeFile(path);
+        const size_t gain = text.find("\"gain\":[");
+        QVERIFY(gain != std::string::npos);
+        text.insert(gain + 8, "-");
+        writeFileAtomically(path, text);
+        const std::string e = errorOf([&] { loadModel(path); });
+        QVERIFY2(e.find("compensation") != std::string::npos && e.find(path) != std::string::npos, e.c_str());
+    }
+
     void streamingEqualsBatchForAllKinds()
     {
         for (const std::string &kind : dynamicModelKinds()) {
-            auto model = createDynamicModel(kind);
+            ModelOptions options;
+            options.compensateVariance = kind == "dpds" || kind == "brand"; // both ways covered
+            auto model = createDynamicModel(kind, options);
             Feedback feedback;
             model->train(data(2), feedback);
             std::mt19937 rng(3);
