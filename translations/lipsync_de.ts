@@ -455,117 +455,117 @@
 <context>
     <name>lipsync::studio::FacesController</name>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="81"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="82"/>
         <source>&amp;Detect Landmarks</source>
         <translation>Landmarken &amp;erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="82"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="83"/>
         <source>&amp;Copy Previous Frame&apos;s Points</source>
         <translation>Punkte des vorigen Bildes &amp;kopieren</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="83"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="84"/>
         <source>&amp;Onion Skin of Previous Frame</source>
         <translation>&amp;Onion-Skin (vorheriges Bild)</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="85"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="86"/>
         <source>Next &amp;Unlabelled Frame</source>
         <translation>Nächstes &amp;unbeschriftetes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="86"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="87"/>
         <source>Next &amp;Worst-Fitted Frame</source>
         <translation>Nächstes &amp;schlecht angepasstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="87"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="88"/>
         <source>&amp;Build AAM</source>
         <translation>AAM &amp;erstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="88"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="89"/>
         <source>&amp;Track Sequence</source>
         <translation>Sequenz &amp;tracken</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="89"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="90"/>
         <source>Track &amp;All Sequences</source>
         <translation>&amp;Alle Sequenzen tracken</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="90"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="91"/>
         <source>&amp;Modes of Variation…</source>
         <translation>&amp;Variationsmoden…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="92"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="93"/>
         <source>Fa&amp;ces</source>
         <translation>&amp;Gesichter</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="204"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="205"/>
         <source>Fit error %1</source>
         <translation>Anpassungsfehler %1</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="205"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="206"/>
         <source>No face found by the tracker</source>
         <translation>Der Tracker hat kein Gesicht gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="229"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="230"/>
         <source>Detect landmarks in %1, frame %2</source>
         <translation>Landmarken in %1, Bild %2 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="231"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="232"/>
         <source>Finding the face…</source>
         <translation>Gesicht wird gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="262"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="263"/>
         <source>Detect landmarks in frame %1</source>
         <translation>Landmarken in Bild %1 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="265"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="266"/>
         <source>No landmarks were detected.</source>
         <translation>Es wurden keine Landmarken erkannt.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="286"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="287"/>
         <source>Copy points of frame %1 to frame %2</source>
         <translation>Punkte von Bild %1 nach Bild %2 kopieren</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="305"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="306"/>
         <source>Every frame of this sequence is labelled.</source>
         <translation>Alle Bilder dieser Sequenz sind beschriftet.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="315"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="316"/>
         <source>Track this sequence first to rank its frames by fit error.</source>
         <translation>Tracken Sie diese Sequenz zuerst, um ihre Bilder nach Anpassungsfehler zu ordnen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="344"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="345"/>
         <source>The project&apos;s AAM could not be loaded.</source>
         <translation>Das AAM des Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="368"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="369"/>
         <source>An AAM needs at least 3 frames with all 23 points; this project has %1.</source>
         <translation>Ein AAM braucht mindestens 3 Bilder mit allen 23 Punkten; dieses Projekt hat %1.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="370"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="371"/>
         <source>Label more frames (Detect Landmarks, then correct the points).</source>
         <translation>Beschriften Sie weitere Bilder (Landmarken erkennen, dann die Punkte korrigieren).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="379"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="380"/>
         <source>Build AAM from %n frame(s)</source>
         <translation>
             <numerusform>AAM aus %n Bild erstellen</numerusform>
@@ -573,22 +573,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="381"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="382"/>
         <source>Reading the labelled frames…</source>
         <translation>Beschriftete Bilder werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="411"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="412"/>
         <source>Build AAM %1</source>
         <translation>AAM %1 erstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="413"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="414"/>
         <source>AAM %1 built from %2 frames: %3 combined modes%4</source>
         <translation>AAM %1 aus %2 Bildern erstellt: %3 kombinierte Moden%4</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="417"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="418"/>
         <source> (%n frame(s) skipped)</source>
         <translation>
             <numerusform> (%n Bild übersprungen)</numerusform>
@@ -596,27 +596,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="422"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="423"/>
         <source>The AAM could not be built.</source>
         <translation>Das AAM konnte nicht erstellt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="437"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="438"/>
         <source>Tracking needs an AAM.</source>
         <translation>Zum Tracken wird ein AAM benötigt.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="438"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="439"/>
         <source>Label a few frames and choose Faces ▸ Build AAM first.</source>
         <translation>Beschriften Sie einige Bilder und wählen Sie zuerst Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="456"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="457"/>
         <source>Track %1</source>
         <translation>%1 tracken</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="456"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="457"/>
         <source>Track %n sequence(s)</source>
         <translation>
             <numerusform>%n Sequenz tracken</numerusform>
@@ -624,7 +624,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="526"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="527"/>
         <source>Tracking failed.</source>
         <translation>Das Tracking ist fehlgeschlagen.</translation>
     </message>
@@ -795,138 +795,138 @@
 <context>
     <name>lipsync::studio::MainWindow</name>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="72"/>
+        <location filename="../studio/app/MainWindow.cpp" line="75"/>
         <source>Annotate</source>
         <translation>Annotieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="73"/>
+        <location filename="../studio/app/MainWindow.cpp" line="76"/>
         <source>Preview &amp;&amp; Compare</source>
         <translation>Vorschau &amp;&amp; Vergleich</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="92"/>
+        <location filename="../studio/app/MainWindow.cpp" line="96"/>
         <source>Models could not be written into the project&apos;s folder.</source>
         <translation>Modelle konnten nicht in den Projektordner geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="95"/>
+        <location filename="../studio/app/MainWindow.cpp" line="99"/>
         <source>%1 was not applied: it would leave the project unsaveable (%2).</source>
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="125"/>
+        <location filename="../studio/app/MainWindow.cpp" line="129"/>
         <source>Playing without sound: %1.</source>
         <translation>Wiedergabe ohne Ton: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="131"/>
-        <location filename="../studio/app/MainWindow.cpp" line="132"/>
+        <location filename="../studio/app/MainWindow.cpp" line="135"/>
+        <location filename="../studio/app/MainWindow.cpp" line="136"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="187"/>
+        <location filename="../studio/app/MainWindow.cpp" line="191"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="191"/>
+        <location filename="../studio/app/MainWindow.cpp" line="195"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="201"/>
+        <location filename="../studio/app/MainWindow.cpp" line="205"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="214"/>
+        <location filename="../studio/app/MainWindow.cpp" line="218"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="235"/>
+        <location filename="../studio/app/MainWindow.cpp" line="239"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="236"/>
+        <location filename="../studio/app/MainWindow.cpp" line="240"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="237"/>
+        <location filename="../studio/app/MainWindow.cpp" line="241"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="239"/>
+        <location filename="../studio/app/MainWindow.cpp" line="243"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="270"/>
+        <location filename="../studio/app/MainWindow.cpp" line="274"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="273"/>
+        <location filename="../studio/app/MainWindow.cpp" line="277"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="285"/>
+        <location filename="../studio/app/MainWindow.cpp" line="289"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="289"/>
+        <location filename="../studio/app/MainWindow.cpp" line="293"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="300"/>
+        <location filename="../studio/app/MainWindow.cpp" line="304"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="304"/>
+        <location filename="../studio/app/MainWindow.cpp" line="308"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="308"/>
+        <location filename="../studio/app/MainWindow.cpp" line="312"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="311"/>
+        <location filename="../studio/app/MainWindow.cpp" line="315"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="364"/>
+        <location filename="../studio/app/MainWindow.cpp" line="366"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="409"/>
+        <location filename="../studio/app/MainWindow.cpp" line="411"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="417"/>
+        <location filename="../studio/app/MainWindow.cpp" line="419"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="447"/>
+        <location filename="../studio/app/MainWindow.cpp" line="448"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="451"/>
+        <location filename="../studio/app/MainWindow.cpp" line="452"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -934,43 +934,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="461"/>
+        <location filename="../studio/app/MainWindow.cpp" line="463"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="462"/>
+        <location filename="../studio/app/MainWindow.cpp" line="464"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="462"/>
+        <location filename="../studio/app/MainWindow.cpp" line="464"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="468"/>
+        <location filename="../studio/app/MainWindow.cpp" line="470"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="485"/>
+        <location filename="../studio/app/MainWindow.cpp" line="493"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="505"/>
-        <location filename="../studio/app/MainWindow.cpp" line="513"/>
+        <location filename="../studio/app/MainWindow.cpp" line="528"/>
+        <location filename="../studio/app/MainWindow.cpp" line="536"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="512"/>
+        <location filename="../studio/app/MainWindow.cpp" line="535"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="200"/>
+        <location filename="../studio/app/MainWindow.cpp" line="204"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -978,17 +978,17 @@
 <context>
     <name>lipsync::studio::ModelsPanel</name>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="49"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="48"/>
         <source>Appearance model</source>
         <translation>Erscheinungsmodell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="50"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="49"/>
         <source>Phoneme aligner</source>
         <translation>Phonem-Aligner</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="57"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="56"/>
         <source>Build AAM…</source>
         <translation>AAM erstellen …</translation>
     </message>
@@ -1008,29 +1008,34 @@
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="184"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="193"/>
         <source>Made in this session; written when the project is saved</source>
         <translation>In dieser Sitzung erstellt; wird beim Speichern des Projekts geschrieben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="192"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="201"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="58"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="57"/>
         <source>Train</source>
         <translation>Trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="58"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="57"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="59"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="58"/>
         <source>Evaluate (k-fold)</source>
         <translation>Evaluieren (k-fach)</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="60"/>
+        <source>Variance compensation</source>
+        <translation>Varianzkompensation</translation>
     </message>
     <message>
         <location filename="../studio/build/ModelsPanel.cpp" line="74"/>
@@ -1063,68 +1068,73 @@
         <translation>Volle Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="103"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="96"/>
+        <source>Scale each model&apos;s generated trajectories to the spread of the training features: lips that open and close as much as the recording&apos;s, at the cost of a larger error per frame. Off: the paper&apos;s models exactly.</source>
+        <translation>Skaliert die erzeugten Trajektorien jedes Modells auf die Streuung der Trainingsmerkmale: Lippen, die sich so weit öffnen und schließen wie in der Aufnahme, um den Preis eines größeren Fehlers je Bild. Aus: genau die Modelle des Artikels.</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="111"/>
         <source>folds: </source>
         <translation>Teilmengen (k-fach): </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="112"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="120"/>
         <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
         <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="121"/>
         <source>Train the checked models on every sequence with features and phonemes</source>
         <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="114"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="122"/>
         <source>Stop training or evaluation; the previous models stay</source>
         <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="115"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="123"/>
         <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
         <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="142"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="151"/>
         <source>AAM parameter </source>
         <translation>AAM-Parameter </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="143"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="152"/>
         <source>Which AAM parameter to plot over time</source>
         <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="154"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="163"/>
         <source>Trajectory</source>
         <translation>Trajektorie</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="155"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="164"/>
         <source>Training</source>
         <translation>Training</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="156"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="165"/>
         <source>Evaluation</source>
         <translation>Evaluation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="228"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="237"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter tracken und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="277"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="305"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="293"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="321"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="279"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="295"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -1132,37 +1142,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="296"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="312"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="316"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="332"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="318"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="334"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="325"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="341"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="347"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="363"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="348"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="364"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="358"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="370"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -1170,7 +1180,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="366"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="378"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen (k-fache Kreuzvalidierung).</numerusform>
@@ -1178,37 +1188,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="373"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="385"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="402"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="414"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="407"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="419"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="302"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="318"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="431"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="443"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="441"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="453"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="466"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="478"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>
@@ -1373,133 +1383,133 @@
 <context>
     <name>lipsync::studio::PreviewPanel</name>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="61"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="62"/>
         <source>Loop selection</source>
         <translation>Auswahl wiederholen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="61"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="62"/>
         <source>Landmarks</source>
         <translation>Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="62"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="63"/>
         <source>Generate from Speech…</source>
         <translation>Aus Sprache erzeugen…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="63"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="64"/>
         <source>Back to Sequence</source>
         <translation>Zurück zur Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="76"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="77"/>
         <source>Previous frame</source>
         <translation>Vorheriges Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="78"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="79"/>
         <source>Next frame</source>
         <translation>Nächstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="82"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="83"/>
         <source>Scrub through the frames</source>
         <translation>Durch die Bilder fahren</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="83"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="84"/>
         <source>Play the timeline&apos;s selection (or everything) over and over</source>
         <translation>Die Auswahl der Zeitleiste (oder alles) immer wieder abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="84"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="85"/>
         <source>Show the tracked points on the recorded video and the generated points on the generated faces</source>
         <translation>Die getrackten Punkte auf dem aufgenommenen Video und die erzeugten Punkte auf den erzeugten Gesichtern zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="85"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="86"/>
         <source>Generate faces for any recording with a transcript</source>
         <translation>Gesichter für eine beliebige Aufnahme mit Transkript erzeugen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="86"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="87"/>
         <source>Show the current sequence again</source>
         <translation>Die aktuelle Sequenz wieder zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="257"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="258"/>
         <source>Prepare the preview of %1</source>
         <translation>Vorschau von %1 vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="286"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="287"/>
         <source>The head could not be tracked: %1</source>
         <translation>Der Kopf konnte nicht getrackt werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="335"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="336"/>
         <source>Recorded video (landmarks: tracked)</source>
         <translation>Aufgenommenes Video (Landmarken: getrackt)</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="340"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="341"/>
         <source>Generated: %1</source>
         <translation>Erzeugt: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="344"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="345"/>
         <source>Generated</source>
         <translation>Erzeugt</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="395"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="396"/>
         <source>The project has no appearance model (Faces ▸ Build AAM).</source>
         <translation>Das Projekt hat kein Erscheinungsmodell (Gesichter ▸ AAM erstellen).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="397"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="398"/>
         <source>Tracking the head pose…</source>
         <translation>Kopfhaltung wird getrackt…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="399"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="400"/>
         <source>This sequence has no phones (align it in the Timeline).</source>
         <translation>Diese Sequenz hat keine Phoneme (in der Zeitleiste alignieren).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="401"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="402"/>
         <source>Train a dynamic model in the Models panel to see the faces it generates.</source>
         <translation>Trainieren Sie ein dynamisches Modell im Bereich „Modelle“, um die erzeugten Gesichter zu sehen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="450"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="451"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 — Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="559"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="560"/>
         <source>Faces for new speech need the project&apos;s appearance model.</source>
         <translation>Gesichter für neue Sprache brauchen das Erscheinungsmodell des Projekts.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="560"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="561"/>
         <source>Build one with Faces ▸ Build AAM.</source>
         <translation>Erstellen Sie eines mit Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="565"/>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="618"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="566"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="619"/>
         <source>No faces could be generated for this speech.</source>
         <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="566"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="567"/>
         <source>Train a dynamic model in the Models panel first.</source>
         <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="589"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="590"/>
         <source>Generate faces for %1</source>
         <translation>Gesichter für %1 erzeugen</translation>
     </message>
@@ -1507,7 +1517,7 @@
 <context>
     <name>lipsync::studio::ProjectDocument</name>
     <message>
-        <location filename="../studio/app/ProjectDocument.cpp" line="196"/>
+        <location filename="../studio/app/ProjectDocument.cpp" line="201"/>
         <source>%1 interval %2: %3</source>
         <translation>%1, Intervall %2: %3</translation>
     </message>
@@ -1515,100 +1525,100 @@
 <context>
     <name>lipsync::studio::ProjectFiles</name>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="46"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="45"/>
         <source>Autosave failed (unsaved changes are only in memory; the project on disk is untouched): %1</source>
         <translation>Automatisches Speichern fehlgeschlagen (ungespeicherte Änderungen sind nur im Speicher; das Projekt auf der Festplatte ist unverändert): %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="57"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="106"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="56"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="105"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="58"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="57"/>
         <source>LipSync projects (project.json)</source>
         <translation>LipSync-Projekte (project.json)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="68"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="67"/>
         <source>New Project: the Folder of Your Clips (transcripts beside them)</source>
         <translation>Neues Projekt: der Ordner mit Ihren Clips (Transkripte daneben)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="77"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="94"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="76"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="93"/>
         <source>No new project was created.</source>
         <translation>Es wurde kein neues Projekt angelegt.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="78"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="77"/>
         <source>the folder already holds a project: open it instead</source>
         <translation>Der Ordner enthält bereits ein Projekt: Öffnen Sie es stattdessen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="81"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="80"/>
         <source>New project from %1</source>
         <translation>Neues Projekt aus %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="107"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="106"/>
         <source>%1 holds no project. Create a new project from the clips in it?</source>
         <translation>%1 enthält kein Projekt. Ein neues Projekt aus den Clips darin anlegen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="115"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="114"/>
         <source>The project could not be opened.</source>
         <translation>Das Projekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="146"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="144"/>
         <source>The bundled demo project was not found.</source>
         <translation>Das mitgelieferte Demoprojekt wurde nicht gefunden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="147"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="145"/>
         <source>Looked for demo/ in: %1</source>
         <translation>demo/ gesucht in: %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="154"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="152"/>
         <source>The demo project could not be opened.</source>
         <translation>Das Demoprojekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="176"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="174"/>
         <source>Save Project As (a folder)</source>
         <translation>Projekt speichern unter (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="181"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="200"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="179"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="198"/>
         <source>The project could not be saved.</source>
         <translation>Das Projekt konnte nicht gespeichert werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="182"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="180"/>
         <source>a file of that name exists; a project needs a folder</source>
         <translation>es gibt eine Datei dieses Namens; ein Projekt braucht einen Ordner</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="187"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="185"/>
         <source>Replace Project</source>
         <translation>Projekt ersetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="188"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="186"/>
         <source>%1 already holds a project. Replace it?</source>
         <translation>%1 enthält bereits ein Projekt. Ersetzen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="213"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="211"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="213"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="211"/>
         <source>The project has unsaved changes. Save them?</source>
         <translation>Das Projekt hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
@@ -2237,253 +2247,253 @@
 <context>
     <name>lipsync::studio::TimelinePanel</name>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="179"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="180"/>
         <source>Zoom out (wheel down)</source>
         <translation>Verkleinern (Mausrad nach unten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="180"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="181"/>
         <source>Zoom in (wheel up)</source>
         <translation>Vergrößern (Mausrad nach oben)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="181"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="182"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="181"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="182"/>
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="417"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="418"/>
         <source>Align</source>
         <translation>Ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
         <source>Align this sequence&apos;s transcript to its audio (words and phones)</source>
         <translation>Das Transkript dieser Sequenz am Ton ausrichten (Wörter und Phone)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
         <source>Align All</source>
         <translation>Alle ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
         <source>Align every sequence that has a transcript</source>
         <translation>Jede Sequenz mit Transkript ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="98"/>
         <source>Re-align Selection</source>
         <translation>Auswahl neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="98"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="99"/>
         <source>Align the selected stretch again, keeping the words whose timing you edited</source>
         <translation>Den ausgewählten Abschnitt neu ausrichten; Wörter mit bearbeitetem Timing bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="102"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="103"/>
         <source>Adapt to Speaker</source>
         <translation>An Sprecher anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="111"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="112"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="112"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="113"/>
         <source>Align with the model shipped with the studio, trained on one GRID speaker</source>
         <translation>Mit dem mitgelieferten Modell ausrichten, trainiert auf einem GRID-Sprecher</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="113"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="114"/>
         <source>Generic US English (CMU Sphinx)</source>
         <translation>Allgemeines US-Englisch (CMU Sphinx)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="114"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="115"/>
         <source>Align with CMU Sphinx&apos;s US-English model trained on many speakers (Debian package pocketsphinx-en-us)</source>
         <translation>Mit dem US-englischen Modell von CMU Sphinx ausrichten, trainiert auf vielen Sprechern (Debian-Paket pocketsphinx-en-us)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
         <source>Split at Cursor</source>
         <translation>Am Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
         <source>Split the interval under the cursor</source>
         <translation>Das Intervall unter dem Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Join the selected interval with the next one</source>
         <translation>Das ausgewählte Intervall mit dem nächsten verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Relabel…</source>
         <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Change the label of the selected interval</source>
         <translation>Die Beschriftung des ausgewählten Intervalls ändern</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
         <source>Insert Silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
         <source>Make the selection a silence</source>
         <translation>Die Auswahl zur Stille machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
         <source>Insert Breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
         <source>Make the selection a breath</source>
         <translation>Die Auswahl zum Atmer machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
         <source>Play Selection</source>
         <translation>Auswahl abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
         <source>Play the selected stretch (Space in the timeline)</source>
         <translation>Den ausgewählten Abschnitt abspielen (Leertaste in der Zeitleiste)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
         <source>Play Word</source>
         <translation>Wort abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
         <source>Play the word under the cursor</source>
         <translation>Das Wort unter dem Cursor abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="140"/>
         <source>Play All</source>
         <translation>Alles abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="140"/>
         <source>Play the whole sequence</source>
         <translation>Die ganze Sequenz abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="140"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="141"/>
         <source>Pronunciations…</source>
         <translation>Aussprachen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="141"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="142"/>
         <source>The project&apos;s pronunciations, and the words espeak-ng guessed</source>
         <translation>Die Aussprachen des Projekts und die von espeak-ng geschätzten Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="168"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="169"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="169"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="170"/>
         <source>The acoustic model the aligner uses</source>
         <translation>Das akustische Modell, das die Ausrichtung verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="206"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="207"/>
         <source>Show Spectrogram</source>
         <translation>Spektrogramm anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="207"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="208"/>
         <source>Show the spectrogram under the waveform in the timeline</source>
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="276"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="277"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="295"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="296"/>
         <source>Alignment of the speech in the Preview: %1 (read-only; Back to Sequence there to edit)</source>
         <translation>Alignierung der Sprache in der Vorschau: %1 (schreibgeschützt; dort „Zurück zur Sequenz“ zum Bearbeiten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="310"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="311"/>
         <source>No audio</source>
         <translation>Kein Ton</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="381"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="382"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="394"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="395"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="418"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="419"/>
         <source>The transcript of %1 changed since its boundaries were edited. Aligning it again replaces the edited boundaries. Align anyway?</source>
         <translation>Das Transkript von %1 wurde geändert, nachdem seine Grenzen bearbeitet wurden. Erneutes Alignieren ersetzt die bearbeiteten Grenzen. Trotzdem alignieren?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="429"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="430"/>
         <source>Every word of %1 is user-edited: nothing to align there.</source>
         <translation>Jedes Wort von %1 ist von Hand bearbeitet: Dort gibt es nichts zu alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="450"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="451"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="453"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="454"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="399"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="400"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="103"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="104"/>
         <source>Adapt the aligner to each recording&apos;s voice before aligning it (slower; better for voices unlike the model&apos;s training speakers)</source>
         <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Stimmen, die den Trainingssprechern des Modells unähnlich sind)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="474"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="475"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="499"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="500"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -2491,12 +2501,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="519"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="520"/>
         <source>%1: the alignment came out as it was; nothing changed.</source>
         <translation>%1: Die Alignierung ist unverändert geblieben.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="522"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="523"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -2504,47 +2514,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="561"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="562"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="561"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="562"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="569"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="570"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="579"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="580"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="611"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="612"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="611"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="612"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="670"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="671"/>
         <source>Not one of the 41 phones (ARPAbet, sil, br)</source>
         <translation>Keines der 41 Phone (ARPAbet, sil, br)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="671"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="672"/>
         <source>Enter one word</source>
         <translation>Ein einzelnes Wort eingeben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="679"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="680"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>

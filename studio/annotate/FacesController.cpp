@@ -9,6 +9,7 @@
 #include "annotate/FrameView.h"
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
+#include "app/StudioContext.h"
 #include "app/ModelStore.h"
 #include "app/ProjectDocument.h"
 #include "app/SequenceMedia.h"
@@ -133,7 +134,7 @@ FacesController::FacesController(MainWindow *window) : QObject(window), m_window
     connect(doc, &ProjectDocument::documentReset, this, &FacesController::onDocumentReset);
     connect(doc, &ProjectDocument::sequenceChanged, this, &FacesController::onSequenceChanged);
     connect(doc, &ProjectDocument::modelsChanged, this, &FacesController::onModelsChanged);
-    connect(window, &MainWindow::currentFrameChanged, this, &FacesController::refreshFrame);
+    connect(window->context(), &StudioContext::currentFrameChanged, this, &FacesController::refreshFrame);
     updateActions();
 }
 

@@ -14,6 +14,7 @@
 #include "app/SequenceLoader.h"
 #include "app/SequenceMedia.h"
 #include "app/StudioActions.h"
+#include "app/StudioContext.h"
 #include "app/TransportBar.h"
 #include "build/ModelsPanel.h"
 #include "compare/StudyController.h"
@@ -53,10 +54,12 @@
 namespace lipsync::studio {
 
 MainWindow::MainWindow(QWidget *parent)
-    : QMainWindow(parent), m_undo(new QUndoStack(this)), m_runner(new TaskRunner(this)),
-      m_document(new ProjectDocument(m_undo, this)), m_modelStore(new ModelStore(m_document, this)), m_actions(std::make_unique<StudioActions>(this, m_undo)),
-      m_playback(new PlaybackController(this))
+    : QMainWindow(parent), m_context(new StudioContext(this)), m_undo(m_context->undoStack()),
+      m_runner(m_context->taskRunner()), m_document(m_context->document()), m_modelStore(m_context->modelStore()),
+      m_actions(std::make_unique<StudioActions>(this, m_undo)), m_playback(m_context->playback())
 {
+    // First, so the window's own views show a frame before the panels hear of it.
+    connect(m_context, &StudioContext::currentFrameChanged, this, &MainWindow::showFrame);
     setObjectName(QStringLiteral("MainWindow"));
     setDockNestingEnabled(true);
 
@@ -79,6 +82,7 @@ MainWindow::MainWindow(QWidget *parent)
     createDocks();
     createMenus();
     m_faces = new FacesController(this);
+    m_models->setBuildAamAction(m_faces->buildAamAction());
     m_preview->attach(this);
     m_taskStatus = new TaskStatusWidget(m_runner, this);
     m_activeModels = new QLabel(this);
@@ -101,8 +105,8 @@ MainWindow::MainWindow(QWidget *parent)
     });
     connect(m_document, &ProjectDocument::documentReset, this, &MainWindow::updateActiveModels);
     connect(m_document, &ProjectDocument::sequenceChanged, this, [this](int row) {
-        if (row == m_currentRow && m_media) // "Landmarks: n of m frames"
-            m_details->showSequence(m_document->sequence(row), m_media->mediaPath, *m_media);
+        if (row == currentSequence() && media()) // "Landmarks: n of m frames"
+            m_details->showSequence(m_document->sequence(row), media()->mediaPath, *media());
     });
     connect(m_undo, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     // Speech generated in the Preview: the timeline shows its alignment, and its clicks move it.
@@ -114,11 +118,11 @@ MainWindow::MainWindow(QWidget *parent)
     });
     connect(m_transport, &TransportBar::frameRequested, this, &MainWindow::setCurrentFrame);
     connect(waveformView(), &WaveformView::timeClicked, this, [this](double t) {
-        if (m_media && !m_timeline->isShowingGeneratedSpeech()) // else the Preview's speech is clicked
-            setCurrentFrame(int(t * m_media->frameRate));
+        if (media() && !m_timeline->isShowingGeneratedSpeech()) // else the Preview's speech is clicked
+            setCurrentFrame(int(t * media()->frameRate));
     });
     connect(m_playback, &PlaybackController::frameReached, this, [this](int frame) {
-        if (m_media && m_playback->mediaPath() == m_media->mediaPath) // not the preview's new speech
+        if (media() && m_playback->mediaPath() == media()->mediaPath) // not the preview's new speech
             setCurrentFrame(frame);
     });
     connect(m_playback, &PlaybackController::playingSilently, this, [this](const QString &why) {
@@ -201,7 +205,7 @@ void MainWindow::createDocks()
     QDockWidget *plots = makeDock(tr("Plots"), QStringLiteral("plotsDock"), plotTabs, Qt::RightDockWidgetArea);
 
     m_models = new ModelsPanel(this);
-    m_models->attach(this, plotTabs);
+    m_models->attach(m_context, plotTabs);
     // Scrolled rather than squeezed: the panel's controls must not set the right column's (and
     // with it the timeline's) least height.
     auto *modelsScroll = new QScrollArea(this);
@@ -332,19 +336,19 @@ void MainWindow::createMenus()
     connect(a.save, &QAction::triggered, m_files, &ProjectFiles::save);
     connect(a.saveAs, &QAction::triggered, m_files, &ProjectFiles::saveAs);
     connect(a.quit, &QAction::triggered, this, &QWidget::close);
-    connect(a.previousFrame, &QAction::triggered, this, [this] { setCurrentFrame(m_currentFrame - 1); });
-    connect(a.nextFrame, &QAction::triggered, this, [this] { setCurrentFrame(m_currentFrame + 1); });
+    connect(a.previousFrame, &QAction::triggered, this, [this] { setCurrentFrame(currentFrame() - 1); });
+    connect(a.nextFrame, &QAction::triggered, this, [this] { setCurrentFrame(currentFrame() + 1); });
     connect(a.firstFrame, &QAction::triggered, this, [this] { setCurrentFrame(0); });
     connect(a.lastFrame, &QAction::triggered, this, [this] {
-        if (m_media)
-            setCurrentFrame(m_media->frameCount() - 1);
+        if (media())
+            setCurrentFrame(media()->frameCount() - 1);
     });
     connect(a.playPause, &QAction::triggered, this, &MainWindow::togglePlayback);
     connect(a.previousSequence, &QAction::triggered, this, [this] {
-        selectSequence(std::max(0, (m_pendingRow >= 0 ? m_pendingRow : m_currentRow) - 1));
+        selectSequence(std::max(0, (m_pendingRow >= 0 ? m_pendingRow : currentSequence()) - 1));
     });
     connect(a.nextSequence, &QAction::triggered, this, [this] {
-        selectSequence(std::min(m_document->sequenceCount() - 1, (m_pendingRow >= 0 ? m_pendingRow : m_currentRow) + 1));
+        selectSequence(std::min(m_document->sequenceCount() - 1, (m_pendingRow >= 0 ? m_pendingRow : currentSequence()) + 1));
     });
     connect(a.fitFrame, &QAction::triggered, m_frameView, &FrameView::fitToView);
     connect(a.about, &QAction::triggered, this, &MainWindow::showAbout);
@@ -356,10 +360,8 @@ void MainWindow::onDocumentReset()
     if (m_loadTask)
         m_loadTask->cancel();
     m_playback->pause();
-    m_media.reset();
-    m_currentRow = -1;
+    m_context->clearCurrentSequence();
     m_pendingRow = -1;
-    m_currentFrame = 0;
     m_frameView->setImage({});
     m_frameView->setPlaceholderText(tr("Select a sequence"));
     m_preview->setFrame({}, {});
@@ -393,7 +395,7 @@ void MainWindow::onSelectionChanged()
     if (rows.isEmpty())
         return;
     const int row = rows.first().row();
-    if (row == m_pendingRow || (row == m_currentRow && m_pendingRow < 0))
+    if (row == m_pendingRow || (row == currentSequence() && m_pendingRow < 0))
         return;
     if (m_loadTask)
         m_loadTask->cancel(); // superseded: its result must not arrive after this one's
@@ -419,9 +421,9 @@ void MainWindow::onLoadFinished(Task *task, const QString &mediaPath)
         return; // superseded by a newer load
     // Canceled or failed: the views keep the sequence they showed; so does the list.
     m_pendingRow = -1;
-    if (m_currentRow >= 0) {
+    if (currentSequence() >= 0) {
         const QSignalBlocker block(m_sequenceView->selectionModel());
-        m_sequenceView->selectionModel()->setCurrentIndex(m_sequenceModel->index(m_currentRow, 0),
+        m_sequenceView->selectionModel()->setCurrentIndex(m_sequenceModel->index(currentSequence(), 0),
                                                           QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
         m_sequenceView->viewport()->update();
     } else {
@@ -436,67 +438,88 @@ void MainWindow::applyMedia(int row, std::shared_ptr<const SequenceMedia> media)
         return;
     const Sequence &s = m_document->sequence(row);
     m_pendingRow = -1;
-    m_currentRow = row;
-    m_media = std::move(media);
-    m_currentFrame = -1;
-    const int frames = m_media->frameCount();
-    m_transport->setFrameCount(frames, m_media->frameRate);
-    m_playback->setSequence(m_media->mediaPath, frames, m_media->frameRate);
+    m_context->setCurrentSequence(row, std::move(media));
+    const std::shared_ptr<const SequenceMedia> shown = this->media();
+    const int frames = shown->frameCount();
+    m_transport->setFrameCount(frames, shown->frameRate);
+    m_playback->setSequence(shown->mediaPath, frames, shown->frameRate);
 
     showChart(); // the timeline shows the media on sequenceLoaded
     m_frameView->setPlaceholderText(frames > 0 ? QString() : tr("The video has no frames"));
-    m_details->showSequence(s, m_media->mediaPath, *m_media);
+    m_details->showSequence(s, shown->mediaPath, *shown);
     setCurrentFrame(0);
     updateTitle();
     statusBar()->showMessage(tr("%1: %n frames at %2 fps", "", frames)
-                                 .arg(m_media->sequenceId, QLocale().toString(m_media->frameRate, 'f', 2)),
+                                 .arg(shown->sequenceId, QLocale().toString(shown->frameRate, 'f', 2)),
                              5000);
-    emit sequenceLoaded(m_media->sequenceId);
+    m_context->announceSequenceLoaded();
     emit sequenceLoadEnded(true);
 }
 
 void MainWindow::showChart()
 {
+    const std::shared_ptr<const SequenceMedia> shown = media();
     m_chart->clearSeries();
-    m_chart->setTitle(tr("Audio energy of %1").arg(m_media->sequenceId));
+    m_chart->setTitle(tr("Audio energy of %1").arg(shown->sequenceId));
     m_chart->setAxisTitles(tr("time (s)"), tr("RMS per video frame"));
-    if (m_media->frameRms.isEmpty())
+    if (shown->frameRms.isEmpty())
         return;
-    QVector<double> t(m_media->frameRms.size());
+    QVector<double> t(shown->frameRms.size());
     for (int i = 0; i < t.size(); ++i)
-        t[i] = (i + 0.5) / m_media->frameRate;
-    m_chart->addSeries(tr("RMS"), t, m_media->frameRms, QColor(0x1e, 0x88, 0xe5));
+        t[i] = (i + 0.5) / shown->frameRate;
+    m_chart->addSeries(tr("RMS"), t, shown->frameRms, QColor(0x1e, 0x88, 0xe5));
 }
 
 void MainWindow::setCurrentFrame(int frame)
 {
-    if (!m_media || m_media->frameCount() == 0)
+    if (!media() || media()->frameCount() == 0)
         return;
-    frame = std::clamp(frame, 0, m_media->frameCount() - 1);
-    if (frame == m_currentFrame)
+    frame = std::clamp(frame, 0, media()->frameCount() - 1);
+    if (frame != currentFrame())
+        m_context->setCurrentFrame(frame); // showFrame first, then the panels
+}
+
+void MainWindow::showFrame(int frame)
+{
+    const std::shared_ptr<const SequenceMedia> shown = media();
+    if (!shown || frame < 0 || frame >= shown->frameCount())
         return;
-    m_currentFrame = frame;
-    const QImage &image = m_media->frames[frame];
+    const QImage &image = shown->frames[frame];
     m_frameView->setImage(image);
-    const Sequence &s = m_document->sequence(m_currentRow);
+    const Sequence &s = m_document->sequence(currentSequence());
     const auto it = s.landmarks.find(frame);
     m_frameView->setLandmarks(it != s.landmarks.end() ? std::optional<LandmarkSet>(it->second) : std::nullopt);
-    const double t = frame / m_media->frameRate;
-    m_preview->setFrame(image, tr("%1 — frame %2 of %3").arg(m_media->sequenceId).arg(frame + 1).arg(m_media->frameCount()));
+    const double t = frame / shown->frameRate;
+    m_preview->setFrame(image, tr("%1 — frame %2 of %3").arg(shown->sequenceId).arg(frame + 1).arg(shown->frameCount()));
     m_transport->setFrame(frame);
-    waveformView()->setCursorTime(t + 0.5 / m_media->frameRate);
-    m_chart->setCursor(t + 0.5 / m_media->frameRate);
-    emit currentFrameChanged(frame);
+    waveformView()->setCursorTime(t + 0.5 / shown->frameRate);
+    m_chart->setCursor(t + 0.5 / shown->frameRate);
+}
+
+int MainWindow::currentSequence() const
+{
+    return m_context->currentSequence();
+}
+
+int MainWindow::currentFrame() const
+{
+    return m_context->currentFrame();
+}
+
+std::shared_ptr<const SequenceMedia> MainWindow::media() const
+{
+    return m_context->media();
 }
 
 void MainWindow::togglePlayback()
 {
+    const std::shared_ptr<const SequenceMedia> shown = media();
     if (m_playback->isPlaying()) {
         m_playback->pause();
-    } else if (m_media) {
-        if (m_playback->mediaPath() != m_media->mediaPath)
-            m_playback->setSequence(m_media->mediaPath, m_media->frameCount(), m_media->frameRate);
-        m_playback->play(m_currentFrame);
+    } else if (shown) {
+        if (m_playback->mediaPath() != shown->mediaPath)
+            m_playback->setSequence(shown->mediaPath, shown->frameCount(), shown->frameRate);
+        m_playback->play(currentFrame());
     }
 }
 

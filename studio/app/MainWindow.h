@@ -1,7 +1,8 @@
 #pragma once
 // The studio's main window: the workflow areas (Annotate and Preview & compare as tabs, the
-// sequence list, Timeline, Plots and Models as docks) around one ProjectDocument, one undo
-// stack and one task runner.
+// sequence list, Timeline, Plots and Models as docks), one view of the StudioContext (the
+// document with its undo stack, the task runner, the model store, the player, the current
+// sequence and frame).
 #include "tasks/Task.h"
 
 #include <QMainWindow>
@@ -35,6 +36,7 @@ class ProjectDocument;
 class ProjectFiles;
 class SequenceDetailsView;
 class SequenceListModel;
+class StudioContext;
 class TaskStatusWidget;
 class TimelinePanel;
 class TransportBar;
@@ -49,6 +51,7 @@ public:
     explicit MainWindow(QWidget *parent = nullptr);
     ~MainWindow() override;
 
+    StudioContext *context() const { return m_context; }
     ProjectFiles *files() const { return m_files; }
     ProjectDocument *document() const { return m_document; }
     // The AAMs and dynamic models the project's references point at (built, trained or loaded).
@@ -68,10 +71,10 @@ public:
     ExportMenu *exportMenu() const { return m_export; }
     TimelinePanel *timeline() const { return m_timeline; }
 
-    int currentSequence() const { return m_currentRow; }
-    int currentFrame() const { return m_currentFrame; }
+    int currentSequence() const;
+    int currentFrame() const;
     // The media shown now (null before the first sequence has loaded).
-    std::shared_ptr<const SequenceMedia> media() const { return m_media; }
+    std::shared_ptr<const SequenceMedia> media() const;
 
 public slots:
     void selectSequence(int row);
@@ -83,12 +86,9 @@ public slots:
     void resetLayout();
 
 signals:
-    // The media of a sequence reached the views (sequenceId), or its loading ended without
-    // doing so (canceled or failed).
-    void sequenceLoaded(const QString &sequenceId);
+    // The loading of a sequence's media ended: it reached the views (the context's
+    // sequenceLoaded was emitted) or not (canceled or failed).
     void sequenceLoadEnded(bool loaded);
-    // The frame shown changed (also when a sequence's media arrives).
-    void currentFrameChanged(int frame);
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -104,9 +104,12 @@ private:
     void onLoadFinished(Task *task, const QString &mediaPath);
     void applyMedia(int row, std::shared_ptr<const SequenceMedia> media);
     void showChart();
+    void showFrame(int frame); // the views of the context's current frame
     void updateTitle();
     void restoreSettings();
 
+    StudioContext *m_context;
+    // The context's parts, for brevity.
     QUndoStack *m_undo;
     TaskRunner *m_runner;
     ProjectDocument *m_document;
@@ -126,13 +129,10 @@ private:
     ModelsPanel *m_models = nullptr;
     TaskStatusWidget *m_taskStatus = nullptr;
     QLabel *m_activeModels = nullptr; // status bar: the AAM and dynamic models in use
-    PlaybackController *m_playback = nullptr;
+    PlaybackController *m_playback;
     FacesController *m_faces = nullptr;
     ExportMenu *m_export = nullptr;
 
-    std::shared_ptr<const SequenceMedia> m_media;
-    int m_currentRow = -1;
-    int m_currentFrame = 0;
     int m_pendingRow = -1;
     QPointer<Task> m_loadTask;
 };

@@ -23,6 +23,11 @@ ProjectDocument::ProjectDocument(QUndoStack *undoStack, QObject *parent)
 {
 }
 
+void ProjectDocument::markUnsaved()
+{
+    m_undo->resetClean();
+}
+
 bool ProjectDocument::isModified() const
 {
     return m_open && (!m_undo->isClean() || m_unsavedStudyData);

@@ -31,6 +31,9 @@ public:
 
     // Replaces the whole document (open, new). Clears the undo stack.
     void reset(Project project, const QString &folder, bool readOnly);
+    // The document differs from its files though nothing was edited (a recovered autosave): the
+    // undo stack has no clean state until the next save.
+    void markUnsaved();
     // Writes the project into `folder` (Project::saveAs: relative paths rebased so they still
     // reach the media). Saving the read-only demo copies its clips along instead. Throws
     // lipsync::Error. On success the document lives in `folder`.

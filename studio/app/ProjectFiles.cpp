@@ -15,7 +15,6 @@
 #include <QMainWindow>
 #include <QMessageBox>
 #include <QStatusBar>
-#include <QUndoStack>
 
 namespace lipsync::studio {
 
@@ -131,11 +130,10 @@ bool ProjectFiles::openLoaded(Project project, const QString &folder, bool readO
         m_document->reset(std::move(project), folder, readOnly);
         return true;
     }
-    // The recovered version opens as unsaved changes: the undo stack (the window's) starts
-    // without a clean state, so the title shows it, Save writes it and closing asks.
+    // The recovered version opens as unsaved changes, so the title shows it, Save writes it and
+    // closing asks.
     m_document->reset(std::move(*offer.recovered), folder, readOnly);
-    if (auto *undo = m_window->findChild<QUndoStack *>(QString(), Qt::FindDirectChildrenOnly))
-        undo->resetClean();
+    m_document->markUnsaved();
     return true;
 }
 

@@ -1,12 +1,11 @@
 #include "build/ModelsPanel.h"
 
-#include "annotate/FacesController.h"
 
 #include "app/ErrorReporter.h"
-#include "app/MainWindow.h"
 #include "app/ModelKinds.h"
 #include "app/ModelStore.h"
 #include "app/ProjectDocument.h"
+#include "app/StudioContext.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
@@ -57,7 +56,8 @@ ModelsPanel::ModelsPanel(QWidget *parent)
     : QWidget(parent), m_list(new QTreeWidget(this)), m_buildAam(new QPushButton(tr("Build AAM…"), this)),
       m_train(new QPushButton(tr("Train"), this)), m_cancel(new QPushButton(tr("Cancel"), this)),
       m_evaluate(new QPushButton(tr("Evaluate (k-fold)"), this)), m_dpdsOptimizer(new QComboBox(this)),
-      m_sldsA(new QComboBox(this)), m_brandCovariance(new QComboBox(this)), m_folds(new QSpinBox(this)),
+      m_sldsA(new QComboBox(this)), m_brandCovariance(new QComboBox(this)),
+      m_compensateVariance(new QCheckBox(tr("Variance compensation"), this)), m_folds(new QSpinBox(this)),
       m_parameter(new QSpinBox(this)), m_status(new QLabel(this))
 {
     auto *layout = new QVBoxLayout(this);
@@ -89,6 +89,14 @@ ModelsPanel::ModelsPanel(QWidget *parent)
         if (options[i])
             grid->addWidget(options[i], i, 1);
     }
+    // Every kind: generated lips that move as much as the recorded ones (docs/models.md §5.1).
+    m_compensateVariance->setObjectName(QStringLiteral("compensateVariance"));
+    m_compensateVariance->setChecked(true);
+    m_compensateVariance->setToolTip(
+        tr("Scale each model's generated trajectories to the spread of the training features: lips that "
+           "open and close as much as the recording's, at the cost of a larger error per frame. Off: the "
+           "paper's models exactly."));
+    grid->addWidget(m_compensateVariance, int(kinds.size()), 0, 1, 2);
     layout->addLayout(grid);
 
     auto *buttons = new QHBoxLayout;
@@ -121,17 +129,18 @@ ModelsPanel::ModelsPanel(QWidget *parent)
 
 ModelsPanel::~ModelsPanel() = default;
 
-void ModelsPanel::attach(MainWindow *window, QTabWidget *plots)
+void ModelsPanel::setBuildAamAction(QAction *buildAam)
 {
-    m_window = window;
-    m_plots = plots;
     // The button is another trigger of the Faces menu's action, so both stay in one state.
-    if (QAction *buildAam = window->faces() ? window->faces()->buildAamAction() : nullptr) {
-        m_buildAam->setEnabled(buildAam->isEnabled());
-        connect(buildAam, &QAction::changed, m_buildAam,
-                [this, buildAam] { m_buildAam->setEnabled(buildAam->isEnabled()); });
-        connect(m_buildAam, &QPushButton::clicked, buildAam, &QAction::trigger);
-    }
+    m_buildAam->setEnabled(buildAam->isEnabled());
+    connect(buildAam, &QAction::changed, m_buildAam, [this, buildAam] { m_buildAam->setEnabled(buildAam->isEnabled()); });
+    connect(m_buildAam, &QPushButton::clicked, buildAam, &QAction::trigger);
+}
+
+void ModelsPanel::attach(StudioContext *context, QTabWidget *plots)
+{
+    m_context = context;
+    m_plots = plots;
     m_trajectoryPage = new QWidget(plots);
     auto *page = new QVBoxLayout(m_trajectoryPage);
     page->setContentsMargins(0, 0, 0, 0);
@@ -155,17 +164,17 @@ void ModelsPanel::attach(MainWindow *window, QTabWidget *plots)
     plots->addTab(m_objective, tr("Training"));
     plots->addTab(m_evaluation, tr("Evaluation"));
 
-    ProjectDocument *doc = window->document();
+    ProjectDocument *doc = context->document();
     connect(doc, &ProjectDocument::documentReset, this, &ModelsPanel::onDocumentReset);
     connect(doc, &ProjectDocument::locationChanged, this, &ModelsPanel::onLocationChanged);
     connect(doc, &ProjectDocument::modelsChanged, this, &ModelsPanel::refreshTrajectory);
     connect(doc, &ProjectDocument::sequenceChanged, this, [this](int row) {
-        if (m_window && row == m_window->currentSequence())
+        if (m_context && row == m_context->currentSequence())
             refreshTrajectory();
         updateActions();
     });
-    connect(window, &MainWindow::sequenceLoaded, this, &ModelsPanel::refreshTrajectory);
-    connect(window, &MainWindow::currentFrameChanged, m_trajectory, &TrajectoryView::setCurrentFrame);
+    connect(context, &StudioContext::sequenceLoaded, this, &ModelsPanel::refreshTrajectory);
+    connect(context, &StudioContext::currentFrameChanged, m_trajectory, &TrajectoryView::setCurrentFrame);
     connect(m_parameter, &QSpinBox::valueChanged, this, &ModelsPanel::refreshTrajectory);
     updateActions();
 }
@@ -180,7 +189,7 @@ void ModelsPanel::setProject(const Project &project)
         item->setText(2, QString::fromStdString(m.file));
         item->setData(1, Qt::UserRole, QString::fromStdString(m.kind));
         const QString kind = QString::fromStdString(m.kind);
-        if (m_window && m_window->modelStore()->isUnwritten(m.file))
+        if (m_context && m_context->modelStore()->isUnwritten(m.file))
             item->setToolTip(2, tr("Made in this session; written when the project is saved"));
         else
             item->setToolTip(2, QString::fromStdString(project.resolve(m.file)));
@@ -199,9 +208,9 @@ void ModelsPanel::setProject(const Project &project)
 std::vector<LabelledSequence> ModelsPanel::trainingData(QString *problem) const
 {
     std::vector<LabelledSequence> out;
-    if (!m_window)
+    if (!m_context)
         return out;
-    const Project &project = m_window->document()->project();
+    const Project &project = m_context->document()->project();
     int withoutFeatures = 0, withoutPhones = 0;
     for (const Sequence &s : project.sequences) {
         if (s.features.size() == 0) {
@@ -241,10 +250,22 @@ QList<Task *> ModelsPanel::runningTasks() const
     return out;
 }
 
+ModelOptions ModelsPanel::modelOptions() const
+{
+    ModelOptions options;
+    options.dpds.optimizer = m_dpdsOptimizer->currentData().toString() == QLatin1String("gradient")
+                                 ? DpdsOptions::Optimizer::GradientAscent
+                                 : DpdsOptions::Optimizer::LevenbergMarquardt;
+    options.slds.fullA = m_sldsA->currentData().toBool();
+    options.brand.fullCovariance = m_brandCovariance->currentData().toBool();
+    options.compensateVariance = m_compensateVariance->isChecked();
+    return options;
+}
+
 QList<Task *> ModelsPanel::train()
 {
     QList<Task *> started;
-    if (!m_window || !runningTasks().isEmpty())
+    if (!m_context || !runningTasks().isEmpty())
         return started;
     QString problem;
     auto data = std::make_shared<const std::vector<LabelledSequence>>(trainingData(&problem));
@@ -252,16 +273,11 @@ QList<Task *> ModelsPanel::train()
         m_status->setText(problem);
         return started;
     }
-    ModelOptions options;
-    options.dpds.optimizer = m_dpdsOptimizer->currentData().toString() == QLatin1String("gradient")
-                                 ? DpdsOptions::Optimizer::GradientAscent
-                                 : DpdsOptions::Optimizer::LevenbergMarquardt;
-    options.slds.fullA = m_sldsA->currentData().toBool();
-    options.brand.fullCovariance = m_brandCovariance->currentData().toBool();
+    const ModelOptions options = modelOptions();
 
     // What a trained model records as its AAM: the content identifier of the project's AAM, which
     // `lipsync render` and the preview check against whichever AAM file they are given.
-    ModelStore *store = m_window->modelStore();
+    ModelStore *store = m_context->modelStore();
     const std::string aamId = store->aamIdentifier();
     if (m_plots)
         m_plots->setCurrentWidget(m_objective);
@@ -273,7 +289,7 @@ QList<Task *> ModelsPanel::train()
         const QString file = store->reserveFile(kind);
         m_objective->startRun(kind, name, ModelKinds::colour(kind));
         QPointer<ModelsPanel> self(this);
-        Task *task = m_window->taskRunner()->start(
+        Task *task = m_context->taskRunner()->start(
             tr("Train %1").arg(name),
             [self, kind, name, file, data, options, aamId](Feedback &feedback) -> TaskRunner::Commit {
                 feedback.setStatus(tr("Training %1 on %n sequence(s)…", "", int(data->size())).arg(name).toStdString());
@@ -297,10 +313,10 @@ QList<Task *> ModelsPanel::train()
                                                 .arg(name)
                                                 .arg(seconds, 0, 'f', 2)
                                                 .arg(frames > 0 ? ll / double(frames) : 0.0, 0, 'f', 3));
-                    const QString problem = self->m_window->modelStore()->addDynamicModel(file, model, aamId);
+                    const QString problem = self->m_context->modelStore()->addDynamicModel(file, model, aamId);
                     if (!problem.isEmpty())
                         self->m_status->setText(tr("The %1 model could not be saved: %2").arg(name, problem));
-                    self->m_window->document()->requestAddModel(
+                    self->m_context->document()->requestAddModel(
                         {kind.toStdString(), name.toStdString(), file.toStdString()},
                         tr("Train %1").arg(name));
                     self->refreshTrajectory();
@@ -310,8 +326,8 @@ QList<Task *> ModelsPanel::train()
         connect(task, &Task::iterationReported, m_objective,
                 [plot = m_objective, kind](int i, double value) { plot->addIteration(kind, i, value); });
         connect(task, &Task::finished, this, [this, name, task, file](Task::State state) {
-            if (state != Task::State::Finished && m_window)
-                m_window->modelStore()->releaseFile(file);
+            if (state != Task::State::Finished && m_context)
+                m_context->modelStore()->releaseFile(file);
             if (state == Task::State::Canceled)
                 m_status->setText(tr("Training %1 canceled: the previous model stays.").arg(name));
             else if (state == Task::State::Failed)
@@ -329,7 +345,7 @@ QList<Task *> ModelsPanel::train()
 
 Task *ModelsPanel::evaluate()
 {
-    if (!m_window || !runningTasks().isEmpty())
+    if (!m_context || !runningTasks().isEmpty())
         return nullptr;
     QString problem;
     auto data = std::make_shared<const std::vector<LabelledSequence>>(trainingData(&problem));
@@ -348,13 +364,9 @@ Task *ModelsPanel::evaluate()
                                                 : tr("Cross-validation needs at least two sequences."));
         return nullptr;
     }
-    options.modelOptions.dpds.optimizer = m_dpdsOptimizer->currentData().toString() == QLatin1String("gradient")
-                                              ? DpdsOptions::Optimizer::GradientAscent
-                                              : DpdsOptions::Optimizer::LevenbergMarquardt;
-    options.modelOptions.slds.fullA = m_sldsA->currentData().toBool();
-    options.modelOptions.brand.fullCovariance = m_brandCovariance->currentData().toBool();
+    options.modelOptions = modelOptions();
     QPointer<ModelsPanel> self(this);
-    Task *task = m_window->taskRunner()->run<EvaluationResult>(
+    Task *task = m_context->taskRunner()->run<EvaluationResult>(
         tr("Evaluate %n model(s) (%1-fold)", "", int(options.kinds.size())).arg(options.folds),
         [data, options](Feedback &feedback) { return evaluateModels(*data, options, feedback); },
         [self](EvaluationResult result) {
@@ -391,15 +403,15 @@ void ModelsPanel::onDocumentReset()
     // one is reported now rather than when it is first drawn.
     m_objective->clearRuns();
     m_evaluation->clear();
-    const Project &project = m_window->document()->project();
+    const Project &project = m_context->document()->project();
     QStringList failed;
     for (const QString &kind : ModelKinds::ids()) {
         QString problem;
-        if (m_window->modelStore()->dynamicModel(kind, &problem) || problem.isEmpty())
+        if (m_context->modelStore()->dynamicModel(kind, &problem) || problem.isEmpty())
             continue;
         // One message box for the first damaged model (which file, why); the rest are listed here.
         if (failed.isEmpty())
-            ErrorReporter::report(m_window, tr("A model of this project could not be loaded."),
+            ErrorReporter::report(this, tr("A model of this project could not be loaded."),
                                   QString::fromStdString(project.resolve(project.model(kind.toStdString())->file)),
                                   problem);
         failed.append(problem);
@@ -412,15 +424,15 @@ void ModelsPanel::onDocumentReset()
 void ModelsPanel::onLocationChanged()
 {
     // The store wrote the models made meanwhile into the new folder: their tooltips change.
-    setProject(m_window->document()->project());
+    setProject(m_context->document()->project());
 }
 
 void ModelsPanel::refreshTrajectory()
 {
-    if (!m_window || !m_trajectory)
+    if (!m_context || !m_trajectory)
         return;
-    const int row = m_window->currentSequence();
-    const ProjectDocument *doc = m_window->document();
+    const int row = m_context->currentSequence();
+    const ProjectDocument *doc = m_context->document();
     if (row < 0 || row >= doc->sequenceCount()) {
         m_trajectory->clear();
         return;
@@ -450,7 +462,7 @@ void ModelsPanel::refreshTrajectory()
         }
         // Each trained model the document uses, in the panel's order.
         for (const QString &kind : ModelKinds::ids()) {
-            const auto model = m_window->modelStore()->dynamicModel(kind);
+            const auto model = m_context->modelStore()->dynamicModel(kind);
             if (!model || labels.empty() || model->dimension() != s.features.cols())
                 continue;
             try {
@@ -465,13 +477,13 @@ void ModelsPanel::refreshTrajectory()
     }
     m_trajectory->setData(tr("%1 — AAM parameter %2").arg(QString::fromStdString(s.id)).arg(k), s.frameRate,
                           s.phones, series);
-    m_trajectory->setCurrentFrame(m_window->currentFrame());
+    m_trajectory->setCurrentFrame(m_context->currentFrame());
 }
 
 void ModelsPanel::updateActions()
 {
     const bool busy = !runningTasks().isEmpty();
-    const bool ready = m_window && m_window->document()->isOpen();
+    const bool ready = m_context && m_context->document()->isOpen();
     m_train->setEnabled(ready && !busy);
     m_evaluate->setEnabled(ready && !busy);
     m_cancel->setEnabled(busy);

@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+class QAction;
 class QCheckBox;
 class QComboBox;
 class QLabel;
@@ -23,6 +24,7 @@ class QTreeWidget;
 
 namespace lipsync {
 class DynamicModel;
+struct ModelOptions;
 class Project;
 class Task;
 struct LabelledSequence;
@@ -31,7 +33,7 @@ struct LabelledSequence;
 namespace lipsync::studio {
 
 class EvaluationChart;
-class MainWindow;
+class StudioContext;
 class ObjectivePlot;
 class TrajectoryView;
 
@@ -42,9 +44,11 @@ public:
     explicit ModelsPanel(QWidget *parent = nullptr);
     ~ModelsPanel() override;
 
-    // Connects the panel to the window's document, task runner and current frame, and adds the
-    // Trajectory, Training and Evaluation plots as tabs of `plots` (the Plots dock).
-    void attach(MainWindow *window, QTabWidget *plots);
+    // Connects the panel to the context's document, task runner, model store and current frame,
+    // and adds the Trajectory, Training and Evaluation plots as tabs of `plots` (the Plots dock).
+    void attach(StudioContext *context, QTabWidget *plots);
+    // The Build AAM button becomes another trigger of `buildAam` (the Faces menu's action).
+    void setBuildAamAction(QAction *buildAam);
 
     void setProject(const Project &project);
     QTreeWidget *list() const { return m_list; }
@@ -57,6 +61,7 @@ public:
     QComboBox *dpdsOptimizer() const { return m_dpdsOptimizer; }
     QComboBox *sldsTransition() const { return m_sldsA; }
     QComboBox *brandCovariance() const { return m_brandCovariance; }
+    QCheckBox *compensateVarianceCheck() const { return m_compensateVariance; }
     QSpinBox *foldsSpin() const { return m_folds; }
     QSpinBox *parameterSpin() const { return m_parameter; }
     TrajectoryView *trajectoryView() const { return m_trajectory; }
@@ -80,6 +85,7 @@ signals:
 
 private:
     std::vector<LabelledSequence> trainingData(QString *problem) const;
+    ModelOptions modelOptions() const; // the options the controls choose
     void onDocumentReset();
     void onLocationChanged();
     void refreshTrajectory();
@@ -94,11 +100,12 @@ private:
     QComboBox *m_dpdsOptimizer;
     QComboBox *m_sldsA;
     QComboBox *m_brandCovariance;
+    QCheckBox *m_compensateVariance;
     QSpinBox *m_folds;
     QSpinBox *m_parameter;
     QLabel *m_status;
 
-    MainWindow *m_window = nullptr;
+    StudioContext *m_context = nullptr;
     QPointer<QTabWidget> m_plots;
     TrajectoryView *m_trajectory = nullptr;
     ObjectivePlot *m_objective = nullptr;

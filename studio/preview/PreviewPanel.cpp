@@ -5,6 +5,7 @@
 #include "annotate/FrameView.h"
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
+#include "app/StudioContext.h"
 #include "app/ProjectDocument.h"
 #include "app/SequenceMedia.h"
 #include "app/StudioActions.h"
@@ -136,11 +137,11 @@ void PreviewPanel::attach(MainWindow *window)
         if (m_showingSpeech && m_window->playback()->mediaPath() == m_speechPath)
             setCurrent(frame);
     });
-    connect(window, &MainWindow::currentFrameChanged, this, [this] {
+    connect(window->context(), &StudioContext::currentFrameChanged, this, [this] {
         if (!m_showingSpeech)
             updateControls();
     });
-    connect(window, &MainWindow::sequenceLoaded, this, [this] {
+    connect(window->context(), &StudioContext::sequenceLoaded, this, [this] {
         const bool wasSpeech = std::exchange(m_showingSpeech, false);
         m_faces.reset();
         m_facesSequence.clear();

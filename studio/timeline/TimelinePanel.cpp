@@ -4,6 +4,7 @@
 #include "align/SphinxAligner.h"
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
+#include "app/StudioContext.h"
 #include "app/ProjectDocument.h"
 #include "app/SequenceMedia.h"
 #include "audio/WaveformPeaks.h"
@@ -247,7 +248,7 @@ void TimelinePanel::attach(MainWindow *window)
             refresh();
         updateActions();
     });
-    connect(window, &MainWindow::sequenceLoaded, this, [this] { showSequence(m_window->currentSequence()); });
+    connect(window->context(), &StudioContext::sequenceLoaded, this, [this] { showSequence(m_window->currentSequence()); });
     // The one player: the main window follows its frames; the timeline's cursor follows its
     // exact position (between frame centres), whoever started it.
     m_player = window->playback();

@@ -7,6 +7,7 @@
 #include "app/AboutBox.h"
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
+#include "app/StudioContext.h"
 #include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
 #include "app/SequenceListModel.h"
@@ -118,7 +119,7 @@ private slots:
 
     void nextSequenceLoadsIt()
     {
-        QSignalSpy loaded(m_window, &MainWindow::sequenceLoaded);
+        QSignalSpy loaded(m_window->context(), &StudioContext::sequenceLoaded);
         m_window->actions().nextSequence->trigger();
         QTRY_COMPARE_WITH_TIMEOUT(loaded.count(), 1, 60000);
         QCOMPARE(m_window->currentSequence(), 1);

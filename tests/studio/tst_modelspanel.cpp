@@ -10,6 +10,10 @@
 #include "app/ModelStore.h"
 #include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
+#include "app/DemoProject.h"
+#include "app/StudioContext.h"
+#include "annotate/FacesController.h"
+#include "app/ModelKinds.h"
 #include "app/SurfaceFormat.h"
 #include "build/ModelsPanel.h"
 #include "dynamics/DynamicModel.h"
@@ -17,6 +21,7 @@
 #include "dynamics/PhoneLabels.h"
 #include "plots/EvaluationChart.h"
 #include "plots/ObjectivePlot.h"
+#include "plots/TrajectoryView.h"
 #include "tasks/TaskRunner.h"
 
 #include <QCheckBox>
@@ -84,6 +89,37 @@ private slots:
 
     void cleanupTestCase() { delete m_window; }
 
+    // The panel needs a context, not a window: built alone on the demo project, it trains and
+    // plots what it trained for the context's current sequence.
+    void worksWithAContextAndNoWindow()
+    {
+        StudioContext context;
+        const QString demo = DemoProject::locate();
+        QVERIFY(!demo.isEmpty());
+        context.document()->reset(DemoProject::load(demo), demo, true);
+        QTabWidget plots;
+        ModelsPanel panel;
+        panel.attach(&context, &plots);
+        QCOMPARE(plots.count(), 3);
+        QVERIFY(panel.trainButton()->isEnabled());
+        QVERIFY(!panel.buildAamButton()->isEnabled()); // no Faces menu to trigger
+        for (const QString &kind : ModelKinds::ids())
+            panel.kindCheck(kind)->setChecked(kind == QLatin1String("hmm"));
+        QVERIFY(panel.compensateVarianceCheck()->isChecked()); // livelier lips unless asked otherwise
+        panel.compensateVarianceCheck()->setChecked(false); // the paper's model
+        const QList<Task *> tasks = panel.train();
+        QCOMPARE(tasks.size(), 1);
+        QTRY_COMPARE_WITH_TIMEOUT(context.taskRunner()->runningCount(), 0, 60000);
+        QVERIFY(context.modelStore()->dynamicModel(QStringLiteral("hmm")));
+        QVERIFY(!context.modelStore()->dynamicModel(QStringLiteral("hmm"))->compensatesVariance());
+        QCOMPARE(context.undoStack()->undoText(), QStringLiteral("Train HMM-mean"));
+        context.setCurrentSequence(2, nullptr);
+        context.announceSequenceLoaded();
+        QCOMPARE(panel.trajectoryView()->seriesCount(), 2); // the recording and HMM-mean
+        context.setCurrentFrame(30);
+        QVERIFY(std::abs(panel.trajectoryView()->cursorTime() - 30.5 / 25.0) < 1e-9);
+    }
+
     void demoHasTrainingData()
     {
         const Project &p = m_window->document()->project();
@@ -96,6 +132,9 @@ private slots:
         QVERIFY(!listed(QStringLiteral("hmm")));
         QVERIFY(m_panel->trainButton()->isEnabled());
         QVERIFY(!m_panel->cancelButton()->isEnabled());
+        // Build AAM here is the Faces menu's action.
+        QVERIFY(m_panel->buildAamButton()->isEnabled());
+        QVERIFY(m_window->faces()->buildAamAction()->isEnabled());
     }
 
     void trainsHmmAndDpdsFromTheButton()
@@ -113,6 +152,7 @@ private slots:
         QVERIFY(m_window->modelStore()->dynamicModel("hmm"));
         QVERIFY(m_window->modelStore()->dynamicModel("dpds"));
         QCOMPARE(m_window->modelStore()->dynamicModel("dpds")->dimension(), int(m_window->document()->sequence(0).features.cols()));
+        QVERIFY(m_window->modelStore()->dynamicModel("dpds")->compensatesVariance()); // the panel's default
         // The live objective plot got the iterations of the iterative model (DPDS).
         QVERIFY2(m_panel->objectivePlot()->iterationCount("dpds") >= 2,
                  qPrintable(QString::number(m_panel->objectivePlot()->iterationCount("dpds"))));

@@ -1,0 +1,69 @@
+#pragma once
+// The studio's shared state, owned outside any widget (as Aegisub's agi::Context): the project
+// document with its undo stack, the task runner, the model store, the one media player, and the
+// sequence and frame being worked on. Panels are given the context, not the main window, so a
+// panel can be built and driven without one; the main window is one view of the context.
+#include <QObject>
+#include <QString>
+
+#include <memory>
+
+class QUndoStack;
+
+namespace lipsync {
+class TaskRunner;
+}
+
+namespace lipsync::studio {
+
+class ModelStore;
+class PlaybackController;
+class ProjectDocument;
+struct SequenceMedia;
+
+class StudioContext : public QObject
+{
+    Q_OBJECT
+public:
+    explicit StudioContext(QObject *parent = nullptr);
+    ~StudioContext() override;
+
+    QUndoStack *undoStack() const { return m_undo; }
+    ProjectDocument *document() const { return m_document; }
+    TaskRunner *taskRunner() const { return m_runner; }
+    // The AAMs and dynamic models the project's references point at (built, trained or loaded).
+    ModelStore *modelStore() const { return m_models; }
+    PlaybackController *playback() const { return m_playback; }
+
+    // The sequence worked on (-1: none), its media (null until loaded) and the frame shown.
+    int currentSequence() const { return m_row; }
+    int currentFrame() const { return m_frame; }
+    std::shared_ptr<const SequenceMedia> media() const { return m_media; }
+
+    // Sequence `row` with its loaded media becomes the current one (frame -1 until
+    // setCurrentFrame). The views are then brought up to date and announceSequenceLoaded() called.
+    void setCurrentSequence(int row, std::shared_ptr<const SequenceMedia> media);
+    void announceSequenceLoaded();
+    // No sequence (a new document).
+    void clearCurrentSequence();
+    // Records the frame now shown and announces it.
+    void setCurrentFrame(int frame);
+
+signals:
+    // The current sequence's media reached the views (sequenceId).
+    void sequenceLoaded(const QString &sequenceId);
+    // The frame shown changed (also when a sequence's media arrives).
+    void currentFrameChanged(int frame);
+
+private:
+    QUndoStack *m_undo;
+    TaskRunner *m_runner;
+    ProjectDocument *m_document;
+    ModelStore *m_models;
+    PlaybackController *m_playback;
+    std::shared_ptr<const SequenceMedia> m_media;
+    int m_row = -1;
+    int m_frame = 0;
+};
+
+} // namespace lipsync::studio
