@@ -2,6 +2,10 @@
 
 #include "CommandLine.h"
 
+#include "aam/AamModel.h"
+
+#include <QFileInfo>
+
 namespace lipsync::cli {
 
 std::vector<CommandOption> dynamicModelOptions()
@@ -44,6 +48,19 @@ ModelOptions dynamicModelOptionsFrom(const CommandLine &args)
     if (args.isSet(QStringLiteral("threads")))
         options.dpds.threads = args.integer(QStringLiteral("threads"), 0);
     return options;
+}
+
+CommandOption modelAamOption(const QString &description)
+{
+    return {QStringLiteral("aam"), QStringLiteral("AAM|ID"), description};
+}
+
+std::string modelAamIdentifier(const CommandLine &args)
+{
+    const QString aam = args.value(QStringLiteral("aam"));
+    if (QFileInfo(aam).isFile())
+        return AamModel::load(aam.toStdString()).identifier;
+    return aam.toStdString();
 }
 
 } // namespace lipsync::cli

@@ -1,5 +1,6 @@
 // lipsync generate: the most likely feature trajectory of a trained model for a label sequence.
 #include "CommandLine.h"
+#include "DynamicModelOptions.h"
 
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
@@ -20,7 +21,7 @@ int runGenerate(const CommandLine &args)
     const double fps = args.positiveNumber(QStringLiteral("fps"));
     const int frames = args.isSet(QStringLiteral("frames")) ? args.integer(QStringLiteral("frames"), 1) : 0;
     std::string aam;
-    const auto model = loadModel(modelPath.toStdString(), args.value(QStringLiteral("aam")).toStdString(), &aam);
+    const auto model = loadModel(modelPath.toStdString(), modelAamIdentifier(args), &aam);
     const std::vector<int> labels = readFrameLabels(labelsPath.toStdString(), fps, frames);
     Eigen::MatrixXd Y;
     if (args.isSet(QStringLiteral("stream"))) {
@@ -71,8 +72,8 @@ const CommandRegistration registration{
       {QStringLiteral("fps"), QStringLiteral("RATE"), QStringLiteral("frames per second of the generated features"),
        QStringLiteral("25")},
       {QStringLiteral("frames"), QStringLiteral("N"), QStringLiteral("generate N frames (default: as the labels last)")},
-      {QStringLiteral("aam"), QStringLiteral("ID"),
-       QStringLiteral("refuse a model trained for another AAM than this identifier")},
+      modelAamOption(QStringLiteral("refuse a model trained for another AAM than this one (its file or its "
+                                    "identifier)")),
       {QStringLiteral("stream"), {}, QStringLiteral("use the frame-by-frame generator")}},
      {}},
     &runGenerate};

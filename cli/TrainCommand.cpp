@@ -29,8 +29,10 @@ int runTrain(const CommandLine &args)
     // The model records the AAM whose parameters it generates: --aam, else the content identifier of
     // the project's AAM (what `lipsync render` and the studio check a model against). Read before
     // training, so a broken AAM file costs no training time.
-    std::string aam = args.value(QStringLiteral("aam")).toStdString();
-    if (!args.isSet(QStringLiteral("aam")) && !projectAam.empty())
+    std::string aam = "unspecified";
+    if (args.isSet(QStringLiteral("aam")))
+        aam = modelAamIdentifier(args);
+    else if (!projectAam.empty())
         aam = AamModel::load(projectAam).identifier;
     auto model = createDynamicModel(kind.toStdString(), options);
     Feedback feedback;
@@ -85,10 +87,9 @@ const CommandRegistration registration{
                   QStringLiteral("the kind of model"), {}, CommandOption::Required},
                  {QStringLiteral("out"), QStringLiteral("MODEL"), QStringLiteral("the model file to write"), {},
                   CommandOption::Required},
-                 {QStringLiteral("aam"), QStringLiteral("ID"),
-                  QStringLiteral("the identifier of the AAM the features come from, recorded in the model (with "
-                                 "--project: the project's AAM)"),
-                  QStringLiteral("unspecified")}},
+                 modelAamOption(QStringLiteral("the AAM the features come from (its file or its identifier), "
+                                               "recorded in the model (default: the project's AAM with --project, "
+                                               "else unspecified)"))},
                 {}}
         .add(trainingDataOptions())
         .add(dynamicModelOptions()),

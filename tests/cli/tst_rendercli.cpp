@@ -82,6 +82,27 @@ private slots:
         QVERIFY(!QFile::exists(out));
     }
 
+    // --aam takes the AAM's file as well as its identifier (train records the file's identifier,
+    // generate checks against it).
+    void aamGivenAsAFile()
+    {
+        const QString model = m_dir.filePath("aam-file.model");
+        const Run train = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--out", model, "--aam", kAam, "--json"});
+        QVERIFY2(train.exitCode == 0, train.err.constData());
+        QCOMPARE(parseJsonObject(train.out).value("aam").toString().toStdString(),
+                 AamModel::load(kAam.toStdString()).identifier);
+        const QString labels = m_dir.filePath("frames.txt");
+        QFile list(labels);
+        QVERIFY(list.open(QIODevice::WriteOnly));
+        list.write("sil\nB\nIH1\nN\nsil\n");
+        list.close();
+        const QStringList generate{"generate", "--model", model, "--labels", labels, "--out", m_dir.filePath("g.csv")};
+        QVERIFY(runLipsync(QStringList(generate) << "--aam" << kAam).exitCode == 0);
+        const Run other = runLipsync(QStringList(generate) << "--aam" << "aam-other");
+        QCOMPARE(other.exitCode, 1);
+        QVERIFY2(other.err.contains("aam-other"), other.err.constData());
+    }
+
     void rendersADemoClipWithItsSound()
     {
         const QString out = m_dir.filePath("bbaf2n-generated.mp4");
