@@ -1,6 +1,6 @@
 // `lipsync aam build` and `lipsync aam eval`: train an AAM from labelled images and measure how well
 // it fits held-out images from the face detector's initialisation.
-#include "Command.h"
+#include "CommandLine.h"
 
 #include "aam/AamBuilder.h"
 #include "aam/AamFitter.h"
@@ -23,47 +23,28 @@ using namespace lipsync::cli;
 
 namespace {
 
-int runAamBuild(const QStringList &args)
+int runAamBuild(const CommandLine &a)
 {
-    const Arguments a(args);
-    if (const QStringList bad = a.unknown({"images", "out", "json", "shape-variance",
-                                           "texture-variance", "combined-variance", "max-modes",
-                                           "eye-distance", "levels", "no-detector", "mirror", "features",
-                                           "generic"});
-        !bad.isEmpty())
-        return fail("aam build: unknown option " + bad.join(", "), 2);
-    if (!a.has("images") || !a.has("out"))
-        return fail("usage: lipsync aam build --images DIR --out MODEL [--combined-variance F] "
-                    "[--shape-variance F] [--texture-variance F] [--max-modes N] "
-                    "[--eye-distance PX] [--levels N] [--mirror] [--features grey|igo] [--generic] "
-                    "[--no-detector] [--json]",
-                    2);
     // --generic: the cross-validated settings for in-the-wild faces; options given explicitly win.
-    AamBuildOptions options = a.flag("generic") ? AamBuildOptions::generic() : AamBuildOptions{};
-    bool ok = true;
+    AamBuildOptions options = a.isSet("generic") ? AamBuildOptions::generic() : AamBuildOptions{};
     auto number = [&](const char *name, double &target) {
-        if (a.has(name)) {
-            bool good = false;
-            target = a.value(name).toDouble(&good);
-            ok = ok && good;
-        }
+        if (a.isSet(name))
+            target = a.number(name);
     };
     number("shape-variance", options.shapeVariance);
     number("texture-variance", options.textureVariance);
     number("combined-variance", options.combinedVariance);
     number("eye-distance", options.referenceEyeDistance);
-    double maxModes = 0, levels = options.levels;
-    number("max-modes", maxModes);
-    number("levels", levels);
-    options.maxCombinedModes = int(maxModes);
-    options.levels = int(levels);
-    options.mirror = options.mirror || a.flag("mirror");
-    const QString features = a.value("features", a.flag("generic") ? "igo" : "grey");
+    options.maxCombinedModes = a.isSet("max-modes") ? a.integer("max-modes", 0) : 0;
+    if (a.isSet("levels"))
+        options.levels = a.integer("levels", 1);
+    options.mirror = options.mirror || a.isSet("mirror");
+    const QString features = a.isSet("fit-features") ? a.value("fit-features") : a.isSet("generic") ? "igo" : "grey";
     if (features != "grey" && features != "igo")
-        return fail("aam build: --features must be grey or igo", 2);
+        throw UsageError("--fit-features must be grey or igo");
     options.fitFeatures = features == "igo" ? AamFitFeatures::GradientOrientation : AamFitFeatures::Grey;
-    if (!ok || options.referenceEyeDistance < 8 || options.levels < 1)
-        return fail("aam build: bad numeric option", 2);
+    if (options.referenceEyeDistance < 8)
+        throw UsageError("--eye-distance must be at least 8 pixels");
 
     std::vector<std::string> warnings;
     const auto started = std::chrono::steady_clock::now();
@@ -73,9 +54,9 @@ int runAamBuild(const QStringList &args)
     FaceDetectorPaths paths;
     paths.useDlib = false;
     FaceDetector detector(paths);
-    if (!a.flag("no-detector") && (detector.hasYunet() || detector.hasHaar()))
+    if (!a.isSet("no-detector") && (detector.hasYunet() || detector.hasHaar()))
         options.detector = &detector;
-    const bool json = a.flag("json");
+    const bool json = a.isSet("json");
     if (!json)
         feedback.onStatus = [](const std::string &s) { std::fprintf(stderr, "aam build: %s\n", s.c_str()); };
     const AamModel model = buildAam(std::move(examples), options, feedback, &warnings);
@@ -132,34 +113,19 @@ cv::Rect2d boundingBox(const Eigen::VectorXd &shape)
     return {x0, y0, x1 - x0, y1 - y0};
 }
 
-int runAamEval(const QStringList &args)
+int runAamEval(const CommandLine &a)
 {
-    const Arguments a(args);
-    if (const QStringList bad = a.unknown({"model", "images", "json", "init", "levels", "algorithm",
-                                           "multi-start", "prior-weight", "start-spread"});
-        !bad.isEmpty())
-        return fail("aam eval: unknown option " + bad.join(", "), 2);
-    if (!a.has("model") || !a.has("images"))
-        return fail("usage: lipsync aam eval --model MODEL --images DIR [--init detector|dlib|none] "
-                    "[--algorithm project-out|wiberg] [--multi-start] [--prior-weight W] [--start-spread F] "
-                    "[--json]",
-                    2);
-    const QString init = a.value("init", "detector");
+    const QString init = a.value("init");
     if (init != "detector" && init != "dlib" && init != "none")
-        return fail("aam eval: --init must be detector, dlib or none", 2);
-    const QString algorithm = a.value("algorithm", "project-out");
+        throw UsageError("--init must be detector, dlib or none");
+    const QString algorithm = a.value("algorithm");
     if (algorithm != "project-out" && algorithm != "wiberg")
-        return fail("aam eval: --algorithm must be project-out or wiberg", 2);
-    bool priorOk = true;
-    const double priorWeight = a.has("prior-weight") ? a.value("prior-weight").toDouble(&priorOk)
-                                                     : AamFitOptions::kDefaultShapePriorWeight;
-    if (!priorOk || priorWeight < 0)
-        return fail("aam eval: --prior-weight must be a number >= 0", 2);
-    const double spread = a.has("start-spread") ? a.value("start-spread").toDouble(&priorOk)
-                                                : AamFitOptions{}.multiStartSpread;
-    if (!priorOk || spread <= 0)
-        return fail("aam eval: --start-spread must be a number > 0", 2);
-    const AamModel model = AamModel::load(a.value("model").toStdString());
+        throw UsageError("--algorithm must be project-out or wiberg");
+    const double priorWeight = a.number("prior-weight");
+    if (priorWeight < 0)
+        throw UsageError("--prior-weight must be a number >= 0");
+    const double spread = a.positiveNumber("start-spread");
+    const AamModel model = AamModel::load(a.value("aam").toStdString());
     const AamFitter fitter(model);
     FaceDetectorPaths paths;
     paths.useDlib = init == "dlib"; // loading the predictor takes seconds: only when used
@@ -217,7 +183,7 @@ int runAamEval(const QStringList &args)
             AamFitOptions fitOptions;
             if (algorithm == "wiberg")
                 fitOptions.algorithm = AamFitAlgorithm::Wiberg;
-            fitOptions.multiStart = a.flag("multi-start");
+            fitOptions.multiStart = a.isSet("multi-start");
             fitOptions.shapePriorWeight = priorWeight;
             fitOptions.multiStartSpread = spread;
             // dlib's points are already close: refine at the finest level only.
@@ -258,7 +224,7 @@ int runAamEval(const QStringList &args)
                     {"no_face", noFace},
                     {"init", init},
                     {"algorithm", algorithm},
-                    {"multi_start", a.flag("multi-start")},
+                    {"multi_start", a.isSet("multi-start")},
                     {"prior_weight", priorWeight},
                     {"start_spread", spread},
                     {"nme_mean", mean(nmes)},
@@ -271,7 +237,7 @@ int runAamEval(const QStringList &args)
                     {"detector", QString::fromStdString(detector.available())},
                     {"model", QString::fromStdString(model.identifier)},
                     {"per_image", perImage}};
-    if (a.flag("json")) {
+    if (a.isSet("json")) {
         printJson(out);
     } else {
         std::printf("%d images (%d without a face): NME mean %.4f median %.4f (init %.4f), %.1f fits/s\n",
@@ -282,9 +248,40 @@ int runAamEval(const QStringList &args)
 }
 
 const CommandRegistration buildRegistration{
-    "aam build", "train an AAM from images with .pts landmarks (--images DIR --out MODEL)", &runAamBuild};
+    {"aam build", "train an AAM from images with .pts landmarks (--images DIR --out AAM)",
+     "Trains an active appearance model from labelled images (IMAGE.pts beside each image, 68 or 23 "
+     "points): shape, texture and combined modes, resolution levels for fitting, calibrated to the face "
+     "detector.",
+     {{"images", "DIR", "the labelled images (IMAGE.pts beside each, 68 or 23 points)", {}, CommandOption::Required},
+      {"out", "AAM", "the AAM file to write", {}, CommandOption::Required},
+      {"combined-variance", "F", "the fraction of the combined variance the modes keep"},
+      {"shape-variance", "F", "the fraction of the shape variance the modes keep"},
+      {"texture-variance", "F", "the fraction of the texture variance the modes keep"},
+      {"max-modes", "N", "at most N combined modes (0: no limit)"},
+      {"eye-distance", "PX", "the reference eye distance in pixels (>= 8)"},
+      {"levels", "N", "resolution levels for fitting, each half the previous (>= 1)"},
+      {"mirror", {}, "add every image mirrored"},
+      {"fit-features", "grey|igo", "what fitting compares: grey levels or image gradient orientations "
+                                   "(default: grey, igo with --generic)", {}, CommandOption::Optional, {"features"}},
+      {"generic", {}, "the cross-validated settings for in-the-wild faces (options given explicitly win)"},
+      {"no-detector", {}, "do not calibrate the model to the face detector"}},
+     {}},
+    &runAamBuild};
 const CommandRegistration evalRegistration{
-    "aam eval", "fit an AAM to labelled images from the detector and report NME (--model --images)",
+    {"aam eval", "fit an AAM to labelled images from the detector and report NME (--aam --images)",
+     "Fits an AAM to labelled images from the face detector's initialisation and reports the normalised "
+     "mean error (NME) of the fitted points and the fitting speed.",
+     {{"aam", "AAM", "the AAM to fit", {}, CommandOption::Required, {"model"}},
+      {"images", "DIR", "the labelled images (IMAGE.pts beside each, 68 or 23 points)", {}, CommandOption::Required},
+      {"init", "detector|dlib|none", "the start: the detection, dlib's 68 points, or no fit (the start only)",
+       "detector"},
+      {"algorithm", "project-out|wiberg", "the fitting algorithm", "project-out"},
+      {"multi-start", {}, "also fit from shifted starts and keep the best fit"},
+      {"prior-weight", "W", "the weight of the shape prior (>= 0)",
+       QString::number(AamFitOptions::kDefaultShapePriorWeight)},
+      {"start-spread", "F", "how far the multi-start starts are shifted (> 0)",
+       QString::number(AamFitOptions{}.multiStartSpread)}},
+     {}},
     &runAamEval};
 
 } // namespace

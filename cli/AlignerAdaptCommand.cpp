@@ -1,13 +1,13 @@
-// lipsync aligner adapt --media DIR --transcripts DIR --out MODEL [--model MODEL]
+// lipsync aligner adapt --media DIR --transcripts DIR --out MODEL [--aligner MODEL]
 //                       [--pronunciations DICT] [--json]
 // Adapts an aligner model (default: the shipped GRID s1 model) to one speaker from a folder of
 // their transcribed recordings (SpeakerAdaptation: MLLR per regression class + MAP of the means,
 // on the recordings' own alignments, 3 passes) and writes it as a model file for
-// `align --model` or the studio ($LIPSYNC_ALIGNER_MODEL). Unlike `aligner train` it needs only
+// `--aligner` or the studio ($LIPSYNC_ALIGNER_MODEL). Unlike `aligner train` it needs only
 // a little speech (tens of seconds) and keeps what the model learnt elsewhere. Recordings that
 // cannot be used are reported and skipped.
 #include "AlignerSupport.h"
-#include "Command.h"
+#include "CommandLine.h"
 
 #include "align/SpeakerAdaptation.h"
 
@@ -21,20 +21,13 @@ using namespace lipsync;
 
 namespace {
 
-int runAlignerAdapt(const QStringList &args)
+int runAlignerAdapt(const cli::CommandLine &a)
 {
-    const cli::Arguments a(args);
-    const QStringList unknown = a.unknown({"media", "transcripts", "out", "model", "json", "pronunciations"});
-    if (!unknown.isEmpty())
-        return cli::fail(QStringLiteral("aligner adapt: unknown option %1").arg(unknown.join(' ')), 2);
-    if (a.value("media").isEmpty() || a.value("transcripts").isEmpty() || a.value("out").isEmpty() || !a.positional().isEmpty())
-        return cli::fail(QStringLiteral("usage: lipsync aligner adapt --media DIR --transcripts DIR --out MODEL "
-                                        "[--model MODEL] [--pronunciations DICT] [--json]"), 2);
-    const bool json = a.flag("json");
+    const bool json = a.isSet("json");
     for (const char *folder : {"media", "transcripts"})
         if (!QDir(a.value(folder)).exists())
             return cli::fail(QStringLiteral("%1: no such folder").arg(a.value(folder)));
-    const QString modelPath = cli::alignerModelOrDefault(a.value("model"), QStringLiteral("aligner adapt"));
+    const QString modelPath = cli::alignerModelOrDefault(a.value("aligner"), QStringLiteral("aligner adapt"));
     QElapsedTimer timer;
     timer.start();
     const AcousticModel model = AcousticModel::load(modelPath.toStdString());
@@ -72,8 +65,20 @@ int runAlignerAdapt(const QStringList &args)
     return 0;
 }
 
-const cli::CommandRegistration registration{QStringLiteral("aligner adapt"),
-                                            QStringLiteral("adapt the aligner's model to a speaker from their transcribed recordings"),
-                                            &runAlignerAdapt};
+const cli::CommandRegistration registration{
+    cli::CommandSpec{QStringLiteral("aligner adapt"),
+     QStringLiteral("adapt the aligner's model to a speaker from their transcribed recordings"),
+     QStringLiteral("Adapts an aligner model to one speaker from a folder of their transcribed recordings (MLLR per "
+                    "regression class + MAP of the means, on the recordings' own alignments, 3 passes) and writes "
+                    "it as a model file for --aligner or the studio ($LIPSYNC_ALIGNER_MODEL). Unlike `aligner "
+                    "train` it needs only tens of seconds of speech and keeps what the model learnt elsewhere."),
+     {{QStringLiteral("out"), QStringLiteral("MODEL"), QStringLiteral("the adapted aligner model to write"), {},
+       cli::CommandOption::Required},
+      {QStringLiteral("aligner"), QStringLiteral("MODEL"),
+       QStringLiteral("the aligner model to adapt (default: the shipped GRID s1 model, or $LIPSYNC_ALIGNER_MODEL)"),
+       {}, cli::CommandOption::Optional, {QStringLiteral("model")}}},
+     {}}
+        .add(cli::transcribedFolderOptions()),
+    &runAlignerAdapt};
 
 } // namespace

@@ -44,6 +44,23 @@ std::unique_ptr<Lexicon> makeLexicon(const QString &overridesPath,
     return std::make_unique<Lexicon>(&PronunciationDictionary::cmu(), overrides);
 }
 
+CommandOption pronunciationsOption()
+{
+    return {QStringLiteral("pronunciations"), QStringLiteral("DICT"),
+            QStringLiteral("a CMU-format dictionary (\"word PH ON EMES\") that wins over all other pronunciations "
+                           "(a project's, the CMU dictionary, espeak-ng)")};
+}
+
+std::vector<CommandOption> transcribedFolderOptions()
+{
+    return {{QStringLiteral("media"), QStringLiteral("DIR"), QStringLiteral("the folder of recordings (audio or video)"),
+             {}, CommandOption::Required},
+            {QStringLiteral("transcripts"), QStringLiteral("DIR"),
+             QStringLiteral("the folder of their transcripts, NAME.align, .TextGrid, .lab or .txt for media NAME"), {},
+             CommandOption::Required},
+            pronunciationsOption()};
+}
+
 QStringList alignerMediaFilters()
 {
     return {QStringLiteral("*.mpg"), QStringLiteral("*.mp4"), QStringLiteral("*.mov"), QStringLiteral("*.avi"),

@@ -1,6 +1,8 @@
 #pragma once
-// Shared by `lipsync align` and `lipsync aligner train`: the shipped model's location and the
-// pronunciation lexicon with optional project overrides.
+// Shared by the commands that align or train the aligner: the shipped model's location, the
+// pronunciation lexicon with optional project overrides, and a folder of transcribed recordings.
+#include "Command.h"
+
 #include "align/AlignerTrainer.h"
 #include "align/Lexicon.h"
 
@@ -25,6 +27,11 @@ QString alignerModelOrDefault(const QString &given, const QString &command);
 // lipsync::Error naming the file.
 std::unique_ptr<Lexicon> makeLexicon(const QString &overridesPath,
                                      const std::map<std::string, std::string> &projectPronunciations = {});
+
+// --pronunciations DICT: the CMU-format dictionary makeLexicon() reads.
+CommandOption pronunciationsOption();
+// --media DIR, --transcripts DIR and --pronunciations DICT: what loadTranscribedFolder() reads.
+std::vector<CommandOption> transcribedFolderOptions();
 
 // Media file extensions the aligner accepts in a folder.
 QStringList alignerMediaFilters();

@@ -5,7 +5,7 @@
 // Recordings that cannot be used (no transcript, unknown words, undecodable or silent audio, a
 // transcript that does not fit) are reported and skipped; the others train the model.
 #include "AlignerSupport.h"
-#include "Command.h"
+#include "CommandLine.h"
 
 #include "align/AlignerTrainer.h"
 #include "align/AlignerUtterance.h"
@@ -23,32 +23,19 @@ using namespace lipsync;
 
 namespace {
 
-int runAlignerTrain(const QStringList &args)
+int runAlignerTrain(const cli::CommandLine &a)
 {
-    const cli::Arguments a(args);
-    const QStringList unknown = a.unknown({"media", "transcripts", "out", "json", "mixtures", "iterations", "pronunciations", "normalize"});
-    if (!unknown.isEmpty())
-        return cli::fail(QStringLiteral("aligner train: unknown option %1").arg(unknown.join(' ')), 2);
-    if (a.value("media").isEmpty() || a.value("transcripts").isEmpty() || a.value("out").isEmpty() || !a.positional().isEmpty())
-        return cli::fail(QStringLiteral("usage: lipsync aligner train --media DIR --transcripts DIR --out MODEL "
-                                        "[--mixtures N] [--iterations N] [--normalize none|mean|cmvn] "
-                                        "[--pronunciations DICT] [--json]"), 2);
-    const bool json = a.flag("json");
+    const bool json = a.isSet("json");
     TrainerOptions options;
-    bool ok = true;
-    const int mixtures = a.value("mixtures", QStringLiteral("16")).toInt(&ok);
-    if (!ok || mixtures < 1 || mixtures > 64)
-        return cli::fail(QStringLiteral("aligner train: --mixtures must be 1..64"), 2);
+    const int mixtures = a.integer("mixtures", 1, 64);
     options.mixtureSchedule = {1};
     while (options.mixtureSchedule.back() < mixtures)
         options.mixtureSchedule.push_back(std::min(mixtures, options.mixtureSchedule.back() * 2));
-    const int iterations = a.value("iterations", QStringLiteral("6")).toInt(&ok);
-    if (!ok || iterations < 1 || iterations > 100)
-        return cli::fail(QStringLiteral("aligner train: --iterations must be 1..100"), 2);
+    const int iterations = a.integer("iterations", 1, 100);
     options.iterationsPerStage = iterations;
     options.firstStageIterations = iterations + 2;
     // Per-utterance feature normalisation, stored in the model (AcousticModel.h).
-    const QString normalize = a.value("normalize", QStringLiteral("mean"));
+    const QString normalize = a.value("normalize");
     if (normalize == QLatin1String("none"))
         options.normalization = CepstralNormalization::None;
     else if (normalize == QLatin1String("mean"))
@@ -56,7 +43,7 @@ int runAlignerTrain(const QStringList &args)
     else if (normalize == QLatin1String("cmvn"))
         options.normalization = CepstralNormalization::MeanAndVariance;
     else
-        return cli::fail(QStringLiteral("aligner train: --normalize must be none, mean or cmvn"), 2);
+        throw cli::UsageError(QStringLiteral("--normalize must be none, mean or cmvn"));
 
     const QDir mediaDir(a.value("media")), transcriptDir(a.value("transcripts"));
     if (!mediaDir.exists())
@@ -113,8 +100,20 @@ int runAlignerTrain(const QStringList &args)
     return 0;
 }
 
-const cli::CommandRegistration registration{QStringLiteral("aligner train"),
-                                            QStringLiteral("train the forced aligner's phone HMMs on transcribed media"),
-                                            &runAlignerTrain};
+const cli::CommandRegistration registration{
+    cli::CommandSpec{QStringLiteral("aligner train"), QStringLiteral("train the forced aligner's phone HMMs on transcribed media"),
+     QStringLiteral("Trains the aligner's monophone HMMs on transcribed recordings: every media file in the media "
+                    "folder with a transcript of the same name (.align, .TextGrid, .lab or .txt) in the "
+                    "transcripts folder. Recordings that cannot be used are reported and skipped."),
+     {{QStringLiteral("out"), QStringLiteral("MODEL"), QStringLiteral("the aligner model to write"), {},
+       cli::CommandOption::Required},
+      {QStringLiteral("mixtures"), QStringLiteral("N"), QStringLiteral("Gaussians per state (1..64)"), QStringLiteral("16")},
+      {QStringLiteral("iterations"), QStringLiteral("N"), QStringLiteral("EM iterations per mixture stage (1..100)"),
+       QStringLiteral("6")},
+      {QStringLiteral("normalize"), QStringLiteral("none|mean|cmvn"),
+       QStringLiteral("per-recording feature normalisation, stored in the model"), QStringLiteral("mean")}},
+     {}}
+        .add(cli::transcribedFolderOptions()),
+    &runAlignerTrain};
 
 } // namespace

@@ -1,5 +1,7 @@
 #include "Command.h"
 
+#include "CommandLine.h"
+
 #include <QJsonDocument>
 
 #include <cstdio>
@@ -12,10 +14,25 @@ std::map<QString, CommandInfo> &commandRegistry()
     return registry;
 }
 
-CommandRegistration::CommandRegistration(const QString &name, const QString &summary,
-                                         CommandFunction run)
+CommandRegistration::CommandRegistration(CommandSpec spec, CommandFunction run)
 {
-    commandRegistry()[name] = CommandInfo{name, summary, std::move(run)};
+    const QString name = spec.name;
+    commandRegistry()[name] = CommandInfo{std::move(spec), std::move(run)};
+}
+
+int runCommand(const CommandInfo &command, const QStringList &args)
+{
+    try {
+        const CommandLine line(command.spec, args);
+        if (line.helpRequested()) {
+            const QByteArray text = CommandLine::helpText(command.spec).toLocal8Bit();
+            std::fwrite(text.constData(), 1, size_t(text.size()), stdout);
+            return 0;
+        }
+        return command.run(line);
+    } catch (const UsageError &e) {
+        return fail(QStringLiteral("%1: %2 (usage: lipsync %1 --help)").arg(command.spec.name, e.message()), 2);
+    }
 }
 
 void printJson(const QJsonObject &object)
@@ -32,58 +49,6 @@ int fail(const QString &message, int exitCode)
     line.replace(QLatin1Char('\n'), QLatin1String("; "));
     std::fprintf(stderr, "lipsync: %s\n", line.toLocal8Bit().constData());
     return exitCode;
-}
-
-QStringList Arguments::defaultBooleanFlags()
-{
-    return {QStringLiteral("json"), QStringLiteral("force"), QStringLiteral("help"),
-            QStringLiteral("side-by-side"), QStringLiteral("verbose"), QStringLiteral("quiet")};
-}
-
-Arguments::Arguments(const QStringList &args, const QStringList &booleanFlags)
-{
-    for (int i = 0; i < args.size(); ++i) {
-        const QString &a = args[i];
-        if (a.startsWith(QLatin1String("--")) && a.size() > 2) {
-            const int eq = a.indexOf(QLatin1Char('='));
-            if (eq > 0) {
-                m_options[a.mid(2, eq - 2)] = a.mid(eq + 1);
-            } else if (!booleanFlags.contains(a.mid(2)) && i + 1 < args.size()
-                       && !args[i + 1].startsWith(QLatin1String("--"))) {
-                m_options[a.mid(2)] = args[i + 1];
-                ++i;
-            } else {
-                m_options[a.mid(2)] = QString();
-            }
-        } else {
-            m_positional << a;
-        }
-    }
-}
-
-bool Arguments::flag(const QString &name) const
-{
-    return m_options.count(name) > 0;
-}
-
-bool Arguments::has(const QString &name) const
-{
-    return m_options.count(name) > 0;
-}
-
-QString Arguments::value(const QString &name, const QString &fallback) const
-{
-    auto it = m_options.find(name);
-    return it == m_options.end() || it->second.isEmpty() ? fallback : it->second;
-}
-
-QStringList Arguments::unknown(const QStringList &known) const
-{
-    QStringList out;
-    for (const auto &[name, value] : m_options)
-        if (!known.contains(name))
-            out << QStringLiteral("--") + name;
-    return out;
 }
 
 } // namespace lipsync::cli

@@ -1,5 +1,6 @@
 // lipsync evaluate: k-fold cross-validation of the dynamic models (docs/models.md §6).
-#include "Command.h"
+#include "CommandLine.h"
+#include "DynamicModelOptions.h"
 #include "TrainingData.h"
 
 #include "eval/Evaluation.h"
@@ -16,33 +17,7 @@
 using namespace lipsync;
 using namespace lipsync::cli;
 
-namespace lipsync::cli {
-QString dynamicModelOptionsFrom(const Arguments &args, ModelOptions &options); // TrainCommand.cpp
-}
-
 namespace {
-
-// %1: the model kinds' ids.
-const char *kEvaluateUsage =
-    "usage: lipsync evaluate (--project DIR | --features DIR --labels DIR) [--folds 10] [--seed 2007]\n"
-    "                        [--kinds %1] [--fps RATE] [--csv FILE] [--json]\n"
-    "       lipsync evaluate --realism --project DIR [--folds 10] [--seed 2007] [--kinds ...]\n"
-    "                        [--max-lag 5] [--dlib FILE] [--json]\n"
-    "  model options as for train (--full-covariance, --full-a, --optimizer, --paper-mode, ...)";
-
-const char *kRealismHelp =
-    "  --realism: on the same held-out folds, render every model's generation (and the tracked\n"
-    "    parameters' re-synthesis, \"tracked\") into the recording's frames and compare the lips\n"
-    "    measured by dlib's 68-point predictor with the recording's: opening correlation,\n"
-    "    articulation (s.d. ratio), /p b m/ closures (ratio), audio-visual lag (frames, generated\n"
-    "    minus recorded, searched within --max-lag), mouth sharpness (ratio) and the colour step\n"
-    "    across the seam (CIE Lab dE; the recording's at the same pixels beside it). Needs the\n"
-    "    project's media and AAM and Debian's libdlib-data (or --dlib FILE). docs/models.md 6.5\n";
-
-QString evaluateUsage()
-{
-    return QString::fromLatin1(kEvaluateUsage).arg(QString::fromStdString(modelKindIdList(",", ",")));
-}
 
 void printRealism(const RealismResult &result)
 {
@@ -71,80 +46,55 @@ void printRealism(const RealismResult &result)
                 "same pixels)\n");
 }
 
-int runRealism(const Arguments &args, const EvaluationOptions &evaluation)
+int runRealism(const CommandLine &args, const EvaluationOptions &evaluation)
 {
-    if (args.has(QStringLiteral("csv")) || args.has(QStringLiteral("fps")))
-        return fail(QStringLiteral("--csv and --fps do not apply to --realism"), 2);
-    if (!args.has(QStringLiteral("project")) || args.has(QStringLiteral("features")) || args.has(QStringLiteral("labels")))
-        return fail(QStringLiteral("--realism needs --project DIR (the media and the AAM)"), 2);
+    if (args.isSet(QStringLiteral("csv")) || args.isSet(QStringLiteral("fps")))
+        throw UsageError(QStringLiteral("--csv and --fps do not apply to --realism"));
+    if (!args.isSet(QStringLiteral("project")) || args.isSet(QStringLiteral("features")) || args.isSet(QStringLiteral("labels")))
+        throw UsageError(QStringLiteral("--realism needs --project DIR (the media and the AAM)"));
     RealismOptions options;
     options.crossValidation = evaluation;
-    bool ok = true;
-    options.maxLag = args.value(QStringLiteral("max-lag"), QStringLiteral("5")).toInt(&ok);
-    if (!ok || options.maxLag < 0)
-        return fail(QStringLiteral("--max-lag must be a non-negative integer"), 2);
+    options.maxLag = args.integer(QStringLiteral("max-lag"), 0);
     options.dlibPredictor = args.value(QStringLiteral("dlib")).toStdString();
     const Project project = Project::load(args.value(QStringLiteral("project")).toStdString());
     Feedback feedback;
     const RealismResult result = evaluateRealism(project, options, feedback);
-    if (args.flag(QStringLiteral("json")))
+    if (args.isSet(QStringLiteral("json")))
         printJson(result.toJson());
     else
         printRealism(result);
     return 0;
 }
 
-int runEvaluate(const QStringList &argv)
+int runEvaluate(const CommandLine &args)
 {
-    const Arguments args(argv, Arguments::defaultBooleanFlags() << QStringLiteral("realism"));
-    if (args.flag(QStringLiteral("help"))) {
-        std::printf("%s\n%s", evaluateUsage().toUtf8().constData(), kRealismHelp);
-        return 0;
-    }
-    const bool realism = args.flag(QStringLiteral("realism"));
-    QStringList known{"project", "features", "labels", "folds", "seed", "kinds", "fps",
-                      "csv", "json", "full-covariance", "full-a", "bound-a", "optimizer",
-                      "paper-mode", "max-iterations", "threads", "compensate-variance"};
-    if (realism)
-        known << "realism" << "max-lag" << "dlib";
-    const QStringList unknown = args.unknown(known);
-    if (!unknown.isEmpty() || !args.positional().isEmpty())
-        return fail(QStringLiteral("unknown argument %1\n").arg((unknown + args.positional()).first())
-                        + evaluateUsage(),
-                    2);
+    const bool realism = args.isSet(QStringLiteral("realism"));
+    if (!realism && (args.isSet(QStringLiteral("max-lag")) || args.isSet(QStringLiteral("dlib"))))
+        throw UsageError(QStringLiteral("--max-lag and --dlib apply to --realism only"));
     EvaluationOptions options;
-    bool ok = false;
-    options.folds = args.value(QStringLiteral("folds"), QStringLiteral("10")).toInt(&ok);
-    if (!ok || options.folds < 2)
-        return fail(QStringLiteral("--folds must be an integer >= 2"), 2);
-    options.seed = args.value(QStringLiteral("seed"), QStringLiteral("2007")).toULongLong(&ok);
-    if (!ok)
-        return fail(QStringLiteral("--seed must be a non-negative integer"), 2);
-    if (args.has(QStringLiteral("kinds"))) {
+    options.folds = args.integer(QStringLiteral("folds"), 2);
+    options.seed = args.unsignedInteger(QStringLiteral("seed"));
+    if (args.isSet(QStringLiteral("kinds"))) {
         options.kinds.clear();
-        for (const QString &k : args.value(QStringLiteral("kinds")).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
-            if (!isDynamicModelKind(k.trimmed().toStdString()))
-                return fail(QStringLiteral("--kinds: unknown model '%1' (%2)")
-                                .arg(k, QString::fromStdString(modelKindIdList(", "))),
-                            2);
-            options.kinds.push_back(k.trimmed().toStdString());
+        for (const QString &k : args.list(QStringLiteral("kinds"))) {
+            if (!isDynamicModelKind(k.toStdString()))
+                throw UsageError(QStringLiteral("--kinds: unknown model '%1' (%2)")
+                                     .arg(k, QString::fromStdString(modelKindIdList(", "))));
+            options.kinds.push_back(k.toStdString());
         }
         if (options.kinds.empty())
-            return fail(QStringLiteral("--kinds is empty"), 2);
+            throw UsageError(QStringLiteral("--kinds is empty"));
     }
-    if (const QString error = dynamicModelOptionsFrom(args, options.modelOptions); !error.isEmpty())
-        return fail(error, 2);
+    options.modelOptions = dynamicModelOptionsFrom(args);
     if (realism)
         return runRealism(args, options);
 
-    std::vector<LabelledSequence> sequences;
-    if (const QString error = loadTrainingData(args, sequences); !error.isEmpty())
-        return fail(error + QLatin1Char('\n') + evaluateUsage(), 2);
+    const std::vector<LabelledSequence> sequences = loadTrainingData(args);
     Feedback feedback;
     const EvaluationResult result = evaluateModels(sequences, options, feedback);
-    if (args.has(QStringLiteral("csv")))
+    if (args.isSet(QStringLiteral("csv")))
         writeFileAtomically(args.value(QStringLiteral("csv")).toStdString(), result.toCsv());
-    if (args.flag(QStringLiteral("json"))) {
+    if (args.isSet(QStringLiteral("json"))) {
         printJson(result.toJson());
         return 0;
     }
@@ -165,8 +115,33 @@ int runEvaluate(const QStringList &argv)
 }
 
 const CommandRegistration registration{
-    QStringLiteral("evaluate"),
-    QStringLiteral("cross-validate the dynamic models (L1, RMS, Linf, log-likelihood; --realism: rendered lips)"),
+    CommandSpec{
+        QStringLiteral("evaluate"),
+        QStringLiteral("cross-validate the dynamic models (L1, RMS, Linf, log-likelihood; --realism: rendered lips)"),
+        QStringLiteral(
+            "k-fold cross-validation of the dynamic models, split by sequence (docs/models.md 6): the L1, RMS and "
+            "Linf error of every model's generation against the held-out features, and their log-likelihood.\n"
+            "--realism: on the same held-out folds, render every model's generation (and the tracked parameters' "
+            "re-synthesis, \"tracked\") into the recording's frames and compare the lips measured by dlib's "
+            "68-point predictor with the recording's: opening correlation, articulation (s.d. ratio), /p b m/ "
+            "closures (ratio), audio-visual lag (frames, generated minus recorded, searched within --max-lag), "
+            "mouth sharpness (ratio) and the colour step across the seam (CIE Lab dE; the recording's at the same "
+            "pixels beside it). Needs --project with its media and AAM, and Debian's libdlib-data (or --dlib "
+            "FILE). docs/models.md 6.5"),
+        {{QStringLiteral("folds"), QStringLiteral("K"), QStringLiteral("the number of folds (>= 2)"), QStringLiteral("10")},
+         {QStringLiteral("seed"), QStringLiteral("S"), QStringLiteral("the seed of the random split into folds"),
+          QStringLiteral("2007")},
+         {QStringLiteral("kinds"), QString::fromStdString(modelKindIdList(",", ",")),
+          QStringLiteral("the models to evaluate (default: all)")},
+         {QStringLiteral("csv"), QStringLiteral("FILE"), QStringLiteral("also write the results as CSV")},
+         {QStringLiteral("realism"), {}, QStringLiteral("evaluate the rendered lips instead (see above)")},
+         {QStringLiteral("max-lag"), QStringLiteral("FRAMES"),
+          QStringLiteral("--realism: the audio-visual lags searched"), QStringLiteral("5")},
+         {QStringLiteral("dlib"), QStringLiteral("FILE"),
+          QStringLiteral("--realism: dlib's 68-point shape predictor (default: Debian's libdlib-data)")}},
+        {}}
+        .add(trainingDataOptions())
+        .add(dynamicModelOptions()),
     &runEvaluate};
 
 } // namespace

@@ -1,7 +1,8 @@
 // `lipsync export video`: a clip (optionally beside a second clip, e.g. real next to generated)
 // re-encoded as MP4 (H.264 + the first clip's sound as AAC), or as a PNG sequence. The same
 // exporter backs the studio's export menu and `lipsync render`.
-#include "Command.h"
+#include "CommandLine.h"
+#include "VideoOutput.h"
 
 #include "io/AudioDecoder.h"
 #include "io/VideoReader.h"
@@ -23,41 +24,25 @@ using namespace lipsync::cli;
 
 namespace {
 
-int runExportVideo(const QStringList &args)
+int runExportVideo(const CommandLine &arguments)
 {
-    const Arguments arguments(args, Arguments::defaultBooleanFlags() << QStringLiteral("no-audio"));
-    const QStringList unknown = arguments.unknown(
-        {"media", "out", "png-dir", "beside", "labels", "crf", "no-audio", "json"});
-    if (!unknown.isEmpty())
-        return fail(QStringLiteral("export video: unknown option %1").arg(unknown.join(' ')), 2);
     const QString media = arguments.value("media");
-    const QString out = arguments.value("out");
-    const QString pngDir = arguments.value("png-dir");
-    if (media.isEmpty() || (out.isEmpty() == pngDir.isEmpty()))
-        return fail(QStringLiteral("usage: lipsync export video --media CLIP (--out OUT.mp4 | "
-                                   "--png-dir DIR) [--beside OTHER_CLIP] "
-                                   "[--labels LEFT,RIGHT] [--crf 20] [--no-audio] [--json]"),
-                    2);
-    bool ok = true;
+    const VideoOutput output = VideoOutput::from(arguments, arguments.isSet("beside") ? 2 : 1);
+    const QString &out = output.out;
+    const QString &pngDir = output.pngDir;
+    const std::vector<std::string> &labels = output.captions;
     VideoExportOptions options;
-    options.crf = arguments.value("crf", "20").toInt(&ok);
-    if (!ok || options.crf < 0 || options.crf > 51)
-        return fail(QStringLiteral("export video: --crf takes an integer in 0..51"), 2);
+    options.crf = output.crf;
 
     VideoReader reader(media.toStdString());
     std::unique_ptr<VideoReader> other;
-    if (arguments.has("beside"))
+    if (arguments.isSet("beside"))
         other = std::make_unique<VideoReader>(arguments.value("beside").toStdString());
-    std::vector<std::string> labels;
-    for (const QString &label : arguments.value("labels").split(QLatin1Char(','), Qt::SkipEmptyParts))
-        labels.push_back(label.trimmed().toStdString());
-    if (!labels.empty() && labels.size() != (other ? 2u : 1u))
-        return fail(QStringLiteral("export video: --labels takes one label per panel"), 2);
 
     options.setFrameRate(reader.frameRate());
 
     std::optional<AudioBuffer> audio;
-    if (!arguments.flag("no-audio") && !out.isEmpty()) {
+    if (!arguments.isSet("no-audio") && !out.isEmpty()) {
         try {
             // Sound and picture may start at different times in the source container.
             audio = alignAudioToVideo(AudioDecoder::decode(media.toStdString(), 0), reader.timestamp(0));
@@ -95,7 +80,7 @@ int runExportVideo(const QStringList &args)
         result["frames"] = int(paths.size());
     }
     result["seconds"] = timer.elapsed() / 1000.0;
-    if (arguments.flag("json"))
+    if (arguments.isSet("json"))
         printJson(result);
     else
         std::printf("%s: %d frames in %.2f s\n",
@@ -105,8 +90,15 @@ int runExportVideo(const QStringList &args)
 }
 
 const CommandRegistration registration{
-    QStringLiteral("export video"),
-    QStringLiteral("re-encode a clip (or two side by side) as MP4 with its sound, or as PNGs"),
+    CommandSpec{QStringLiteral("export video"),
+     QStringLiteral("re-encode a clip (or two side by side) as MP4 with its sound, or as PNGs"),
+     QStringLiteral("Re-encodes a clip, optionally beside a second clip (e.g. real next to generated), as MP4 "
+                    "(H.264 + the first clip's sound as AAC) or as a PNG sequence."),
+     {{QStringLiteral("media"), QStringLiteral("CLIP"), QStringLiteral("the clip"), {}, CommandOption::Required},
+      {QStringLiteral("beside"), QStringLiteral("OTHER_CLIP"), QStringLiteral("a second clip, shown on the right")},
+      {QStringLiteral("no-audio"), {}, QStringLiteral("export the picture only")}},
+     {}}
+        .add(VideoOutput::options()),
     &runExportVideo};
 
 } // namespace

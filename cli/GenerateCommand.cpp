@@ -1,5 +1,6 @@
 // lipsync generate: the most likely feature trajectory of a trained model for a label sequence.
-#include "Command.h"
+#include "CommandLine.h"
+#include "DynamicModelOptions.h"
 
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
@@ -12,40 +13,18 @@ using namespace lipsync::cli;
 
 namespace {
 
-const char *kGenerateUsage =
-    "usage: lipsync generate --model MODEL --labels FILE --out FEATURES.csv\n"
-    "                        [--fps 25] [--frames N] [--aam ID] [--stream] [--json]\n"
-    "  FILE: NAME.TextGrid (phones tier), NAME.lab (start end phone, seconds) or a list of one\n"
-    "  phone per frame (any other extension). --stream uses the frame-by-frame generator.";
-
-int runGenerate(const QStringList &argv)
+int runGenerate(const CommandLine &args)
 {
-    const Arguments args(argv);
-    const QStringList unknown = args.unknown({"model", "labels", "out", "fps", "frames", "aam", "stream", "json"});
-    if (!unknown.isEmpty() || !args.positional().isEmpty())
-        return fail(QStringLiteral("unknown argument %1\n").arg((unknown + args.positional()).first())
-                        + QString::fromLatin1(kGenerateUsage),
-                    2);
     const QString modelPath = args.value(QStringLiteral("model"));
     const QString labelsPath = args.value(QStringLiteral("labels"));
     const QString out = args.value(QStringLiteral("out"));
-    if (modelPath.isEmpty() || labelsPath.isEmpty() || out.isEmpty())
-        return fail(QString::fromLatin1(kGenerateUsage), 2);
-    bool ok = false;
-    const double fps = args.value(QStringLiteral("fps"), QStringLiteral("25")).toDouble(&ok);
-    if (!ok || !(fps > 0))
-        return fail(QStringLiteral("--fps must be a positive number"), 2);
-    int frames = 0;
-    if (args.has(QStringLiteral("frames"))) {
-        frames = args.value(QStringLiteral("frames")).toInt(&ok);
-        if (!ok || frames < 1)
-            return fail(QStringLiteral("--frames must be a positive integer"), 2);
-    }
+    const double fps = args.positiveNumber(QStringLiteral("fps"));
+    const int frames = args.isSet(QStringLiteral("frames")) ? args.integer(QStringLiteral("frames"), 1) : 0;
     std::string aam;
-    const auto model = loadModel(modelPath.toStdString(), args.value(QStringLiteral("aam")).toStdString(), &aam);
+    const auto model = loadModel(modelPath.toStdString(), modelAamIdentifier(args), &aam);
     const std::vector<int> labels = readFrameLabels(labelsPath.toStdString(), fps, frames);
     Eigen::MatrixXd Y;
-    if (args.flag(QStringLiteral("stream"))) {
+    if (args.isSet(QStringLiteral("stream"))) {
         auto stream = model->streamer();
         Y.resize(Eigen::Index(labels.size()), model->dimension());
         Eigen::VectorXd frame(model->dimension());
@@ -62,7 +41,7 @@ int runGenerate(const QStringList &argv)
         Y = model->generate(labels);
     }
     writeFeatureCsv(out.toStdString(), Y, {}, fps);
-    if (args.flag(QStringLiteral("json"))) {
+    if (args.isSet(QStringLiteral("json"))) {
         QJsonObject o;
         o[QStringLiteral("kind")] = QString::fromStdString(model->kind());
         o[QStringLiteral("aam")] = QString::fromStdString(aam);
@@ -78,7 +57,25 @@ int runGenerate(const QStringList &argv)
 }
 
 const CommandRegistration registration{
-    QStringLiteral("generate"), QStringLiteral("generate face features from phone labels with a trained model"),
+    {QStringLiteral("generate"),
+     QStringLiteral("generate face features from phone labels with a trained model"),
+     QStringLiteral("The most likely feature trajectory of a trained dynamic model for a sequence of phone labels, "
+                    "written as a feature CSV."),
+     {{QStringLiteral("model"), QStringLiteral("MODEL"), QStringLiteral("a trained dynamic model (lipsync train)"), {},
+       CommandOption::Required},
+      {QStringLiteral("labels"), QStringLiteral("FILE"),
+       QStringLiteral("the phones: NAME.TextGrid (phones tier), NAME.lab (start end phone, seconds) or a list of one "
+                      "phone per frame (any other extension)"),
+       {}, CommandOption::Required},
+      {QStringLiteral("out"), QStringLiteral("FEATURES.csv"), QStringLiteral("the features to write"), {},
+       CommandOption::Required},
+      {QStringLiteral("fps"), QStringLiteral("RATE"), QStringLiteral("frames per second of the generated features"),
+       QStringLiteral("25")},
+      {QStringLiteral("frames"), QStringLiteral("N"), QStringLiteral("generate N frames (default: as the labels last)")},
+      modelAamOption(QStringLiteral("refuse a model trained for another AAM than this one (its file or its "
+                                    "identifier)")),
+      {QStringLiteral("stream"), {}, QStringLiteral("use the frame-by-frame generator")}},
+     {}},
     &runGenerate};
 
 } // namespace

@@ -2,7 +2,7 @@
 //   media file:     frames, fps, duration, size, audio rate/channels/duration (decoded counts)
 //   project folder: its sequences (count, total frames and duration, per sequence id/frames/fps)
 // Bad input (missing, empty, truncated, unsupported) exits 1 with one line naming the file.
-#include "Command.h"
+#include "CommandLine.h"
 
 #include "io/MediaInfo.h"
 #include "project/Project.h"
@@ -18,7 +18,6 @@
 
 namespace {
 
-using lipsync::cli::Arguments;
 using lipsync::cli::fail;
 using lipsync::cli::printJson;
 
@@ -174,22 +173,10 @@ int infoProject(const QString &path, bool json)
     return 0;
 }
 
-int runInfo(const QStringList &args)
+int runInfo(const lipsync::cli::CommandLine &arguments)
 {
-    const Arguments arguments(args);
-    const QStringList unknown = arguments.unknown({QStringLiteral("json")});
-    if (!unknown.isEmpty())
-        return fail(QStringLiteral("info: unknown option %1 (usage: lipsync info PATH [--json])")
-                        .arg(unknown.join(QLatin1String(", "))),
-                    2);
-    // "--json PATH" parses as an option with a value: take the value as the path.
-    QStringList positional = arguments.positional();
-    if (!arguments.value(QStringLiteral("json")).isEmpty())
-        positional.prepend(arguments.value(QStringLiteral("json")));
-    if (positional.size() != 1)
-        return fail(QStringLiteral("usage: lipsync info PATH [--json]"), 2);
-    const QString path = positional.constFirst();
-    const bool json = arguments.flag(QStringLiteral("json"));
+    const QString path = arguments.positional(0);
+    const bool json = arguments.isSet(QStringLiteral("json"));
     try {
         const QFileInfo file(path);
         if (!file.exists())
@@ -209,7 +196,13 @@ int runInfo(const QStringList &args)
 }
 
 const lipsync::cli::CommandRegistration registration{
-    QStringLiteral("info"), QStringLiteral("summary of a media file or project (frames, fps, audio)"),
+    {QStringLiteral("info"),
+     QStringLiteral("summary of a media file or project (frames, fps, audio)"),
+     QStringLiteral("What a media file or a project folder holds. A media file: frames, fps, duration, size, "
+                    "audio rate, channels and duration (decoded counts). A project folder (or its project.json): "
+                    "its sequences, their frames and frame rates."),
+     {},
+     {{QStringLiteral("PATH"), QStringLiteral("a media file, a project folder or its project.json")}}},
     &runInfo};
 
 } // namespace

@@ -1,7 +1,7 @@
 // `lipsync landmarks detect IMAGE|VIDEO [--frame N] --out FILE.pts`: automatic 23 points for a
-// face. dlib's 68-point predictor when installed, else an AAM fit from the detector (--model), else
+// face. dlib's 68-point predictor when installed, else an AAM fit from the detector (--aam), else
 // the template shape placed on the detection.
-#include "Command.h"
+#include "CommandLine.h"
 
 #include "aam/AamFitter.h"
 #include "aam/FaceDetector.h"
@@ -32,30 +32,20 @@ bool isImageFile(const QString &path)
     return false;
 }
 
-int runLandmarksDetect(const QStringList &args)
+int runLandmarksDetect(const CommandLine &a)
 {
-    const Arguments a(args);
-    if (const QStringList bad = a.unknown({"frame", "out", "json", "model", "method"}); !bad.isEmpty())
-        return fail("landmarks detect: unknown option " + bad.join(", "), 2);
-    if (a.positional().size() != 1 || !a.has("out"))
-        return fail("usage: lipsync landmarks detect IMAGE|VIDEO [--frame N] --out FILE.pts "
-                    "[--method auto|dlib|aam|template] [--model MODEL] [--json]",
-                    2);
     const std::string input = a.positional().front().toStdString();
-    const QString method = a.value("method", "auto");
+    const QString method = a.value("method");
     if (!QStringList{"auto", "dlib", "aam", "template"}.contains(method))
-        return fail("landmarks detect: --method must be auto, dlib, aam or template", 2);
-    if (method == "aam" && !a.has("model"))
-        return fail("landmarks detect: --method aam needs --model MODEL", 2);
-    bool ok = true;
-    const int frameIndex = a.value("frame", "0").toInt(&ok);
-    if (!ok || frameIndex < 0)
-        return fail("landmarks detect: --frame must be a frame index >= 0", 2);
+        throw UsageError("--method must be auto, dlib, aam or template");
+    if (method == "aam" && !a.isSet("aam"))
+        throw UsageError("--method aam needs --aam AAM");
+    const int frameIndex = a.integer("frame", 0);
 
     cv::Mat image;
     if (isImageFile(QString::fromStdString(input))) {
-        if (a.has("frame") && frameIndex != 0)
-            return fail("landmarks detect: --frame applies to videos only", 2);
+        if (a.isSet("frame") && frameIndex != 0)
+            throw UsageError("--frame applies to videos only");
         image = cv::imread(input, cv::IMREAD_COLOR);
         if (image.empty())
             throw Error("cannot read the image", input);
@@ -76,13 +66,13 @@ int runLandmarksDetect(const QStringList &args)
     const std::vector<FaceDetection> faces = detector.detect(image);
     if (faces.empty())
         return fail(QString::fromStdString(input) + ": no face found"
-                    + (a.has("frame") ? QStringLiteral(" in frame %1").arg(frameIndex) : QString())
+                    + (a.isSet("frame") ? QStringLiteral(" in frame %1").arg(frameIndex) : QString())
                     + " (detectors: " + QString::fromStdString(detector.available()) + ")");
     const FaceDetection &face = faces.front();
 
     std::optional<AamModel> model;
-    if (a.has("model"))
-        model = AamModel::load(a.value("model").toStdString());
+    if (a.isSet("aam"))
+        model = AamModel::load(a.value("aam").toStdString());
 
     Eigen::VectorXd shape;
     QString used;
@@ -108,7 +98,7 @@ int runLandmarksDetect(const QStringList &args)
     const std::string out = a.value("out").toStdString();
     writePtsFile(out, shape);
 
-    if (a.flag("json")) {
+    if (a.isSet("json")) {
         QJsonArray points;
         for (int i = 0; i < scheme23::kPointCount; ++i)
             points.append(QJsonArray{shape[2 * i], shape[2 * i + 1]});
@@ -130,7 +120,15 @@ int runLandmarksDetect(const QStringList &args)
 }
 
 const CommandRegistration registration{
-    "landmarks detect", "automatic 23 face points for an image or video frame (--out FILE.pts)",
+    {"landmarks detect", "automatic 23 face points for an image or video frame (--out FILE.pts)",
+     "The 23 face points of the first face found in an image or a video frame: dlib's 68-point predictor "
+     "when installed, else an AAM fitted from the detection (--aam), else the template shape placed on the "
+     "detection.",
+     {{"out", "FILE.pts", "the points to write", {}, CommandOption::Required},
+      {"frame", "N", "the video frame (videos only)", "0"},
+      {"method", "auto|dlib|aam|template", "how the points are found (auto: the first that is available)", "auto"},
+      {"aam", "AAM", "the AAM to fit (--method aam or auto)", {}, CommandOption::Optional, {"model"}}},
+     {{"INPUT", "an image or a video (IMAGE|VIDEO)"}}},
     &runLandmarksDetect};
 
 } // namespace

@@ -1,6 +1,6 @@
 // `lipsync project create` (a project from a folder of clips) and `lipsync project check`
 // (load and validate a project, report what it holds and which media are missing).
-#include "Command.h"
+#include "CommandLine.h"
 
 #include "project/Project.h"
 #include "util/Error.h"
@@ -76,24 +76,17 @@ void printSummary(const Project &project)
     }
 }
 
-int runCreate(const QStringList &args)
+int runCreate(const CommandLine &a)
 {
-    const Arguments a(args);
-    const QString usage =
-        QStringLiteral("usage: lipsync project create --media DIR --out DIR [--force] [--json]");
-    if (!a.unknown({"media", "out", "force", "json"}).isEmpty())
-        return fail(QStringLiteral("unknown option %1; %2").arg(a.unknown({"media", "out", "force", "json"}).join(' '), usage), 2);
-    if (!a.positional().isEmpty() || a.value("media").isEmpty() || a.value("out").isEmpty())
-        return fail(usage, 2);
     const std::string out = a.value("out").toStdString();
-    if (QFileInfo(q(Project::manifestPath(out))).exists() && !a.flag("force"))
+    if (QFileInfo(q(Project::manifestPath(out))).exists() && !a.isSet("force"))
         return fail(QStringLiteral("%1 already exists; use --force to replace it (the old "
                                    "manifest is kept as project.json.bak)")
                         .arg(q(Project::manifestPath(out))));
     try {
         const Project project = Project::fromMediaFolder(a.value("media").toStdString(), out);
         project.save();
-        if (a.flag("json"))
+        if (a.isSet("json"))
             printJson(projectSummary(project));
         else
             printSummary(project);
@@ -103,19 +96,13 @@ int runCreate(const QStringList &args)
     return 0;
 }
 
-int runCheck(const QStringList &args)
+int runCheck(const CommandLine &a)
 {
-    const Arguments a(args);
-    const QString usage = QStringLiteral("usage: lipsync project check DIR [--json]");
-    if (!a.unknown({"json"}).isEmpty())
-        return fail(QStringLiteral("unknown option %1; %2").arg(a.unknown({"json"}).join(' '), usage), 2);
     const QStringList positional = a.positional();
-    if (positional.size() != 1)
-        return fail(usage, 2);
     try {
         // Missing media is reported, not an error: the clips may be on a disk not mounted now.
         const Project project = Project::load(positional[0].toStdString());
-        if (a.flag("json"))
+        if (a.isSet("json"))
             printJson(projectSummary(project));
         else
             printSummary(project);
@@ -126,8 +113,25 @@ int runCheck(const QStringList &args)
 }
 
 const CommandRegistration createRegistration{
-    "project create", "make a project from a folder of clips (--media DIR --out DIR)", &runCreate};
+    {QStringLiteral("project create"),
+     QStringLiteral("make a project from a folder of clips (--media DIR --out DIR)"),
+     QStringLiteral("Makes a project from a folder of clips: one sequence per clip, with its frames, frame rate "
+                    "and the words of a transcript NAME.align beside it."),
+     {{QStringLiteral("media"), QStringLiteral("DIR"), QStringLiteral("the folder of clips"), {},
+       CommandOption::Required},
+      {QStringLiteral("out"), QStringLiteral("DIR"), QStringLiteral("the project folder to write"), {},
+       CommandOption::Required},
+      {QStringLiteral("force"), {},
+       QStringLiteral("replace an existing project (the old manifest is kept as project.json.bak)")}},
+     {}},
+    &runCreate};
 const CommandRegistration checkRegistration{
-    "project check", "load and validate a project folder, list its sequences", &runCheck};
+    {QStringLiteral("project check"),
+     QStringLiteral("load and validate a project folder, list its sequences"),
+     QStringLiteral("Loads and validates a project, lists its sequences and models and reports which media "
+                    "files are missing (not an error: the clips may be on a disk not mounted now)."),
+     {},
+     {{QStringLiteral("DIR"), QStringLiteral("the project folder")}}},
+    &runCheck};
 
 } // namespace

@@ -1,7 +1,7 @@
-// `lipsync project import DIR [--features DIR] [--alignments DIR] [--aam FILE]`: brings the output
+// `lipsync project import DIR [--features DIR] [--alignments DIR] [--aam AAM]`: brings the output
 // of `lipsync track` (NAME.csv) and `lipsync align` (NAME.TextGrid) into a project, so a project is
 // reproducible from the CLI alone (scripts/make-demo builds the bundled demo this way).
-#include "Command.h"
+#include "CommandLine.h"
 
 #include "io/FeatureCsv.h"
 #include "io/TextGrid.h"
@@ -51,29 +51,20 @@ Eigen::MatrixXd fillFrames(const FeatureTable &table, int frameCount, const std:
     return out;
 }
 
-int runImport(const QStringList &args)
+int runImport(const CommandLine &a)
 {
-    const Arguments a(args);
-    const QString usage = QStringLiteral(
-        "usage: lipsync project import DIR [--features DIR] [--alignments DIR] [--words] "
-        "[--aam FILE [--aam-name NAME]] [--json]");
-    const QStringList known{"features", "alignments", "words", "aam", "aam-name", "json"};
-    if (!a.unknown(known).isEmpty())
-        return fail(QStringLiteral("unknown option %1; %2").arg(a.unknown(known).join(' '), usage), 2);
-    if (a.positional().size() != 1)
-        return fail(usage, 2);
     try {
         Project project = Project::load(a.positional()[0].toStdString());
         int features = 0, alignments = 0;
         for (Sequence &s : project.sequences) {
-            if (a.has("features")) {
+            if (a.isSet("features")) {
                 const QString path = QDir(a.value("features")).filePath(q(s.id) + ".csv");
                 if (QFileInfo(path).isFile()) {
                     s.features = fillFrames(readFeatureCsv(path.toStdString()), s.frameCount, path.toStdString());
                     ++features;
                 }
             }
-            if (a.has("alignments")) {
+            if (a.isSet("alignments")) {
                 const QString path = QDir(a.value("alignments")).filePath(q(s.id) + ".TextGrid");
                 if (QFileInfo(path).isFile()) {
                     const TextGrid grid = readTextGrid(path.toStdString());
@@ -82,7 +73,7 @@ int runImport(const QStringList &args)
                         throw Error("no \"phones\" tier", path.toStdString());
                     s.phones = Tier{"phones", phones->intervals};
                     // The words of the import (GRID's .align) stay unless --words asks for the aligner's.
-                    if (a.flag("words")) {
+                    if (a.isSet("words")) {
                         if (const Tier *words = grid.tier("words"))
                             s.words = Tier{"words", words->intervals};
                     }
@@ -90,9 +81,9 @@ int runImport(const QStringList &args)
                 }
             }
         }
-        if (a.has("aam")) {
+        if (a.isSet("aam")) {
             const QString aam = QDir(q(project.folder())).relativeFilePath(QFileInfo(a.value("aam")).absoluteFilePath());
-            ModelReference reference{"aam", a.value("aam-name", QStringLiteral("AAM")).toStdString(), aam.toStdString()};
+            ModelReference reference{"aam", a.value("aam-name").toStdString(), aam.toStdString()};
             bool replaced = false;
             for (ModelReference &m : project.models)
                 if (m.kind == "aam" && m.file == reference.file) {
@@ -103,7 +94,7 @@ int runImport(const QStringList &args)
                 project.models.push_back(reference);
         }
         project.save();
-        if (a.flag("json"))
+        if (a.isSet("json"))
             printJson(QJsonObject{{"project", q(project.manifestPath())},
                                   {"features", features},
                                   {"alignments", alignments},
@@ -118,8 +109,21 @@ int runImport(const QStringList &args)
 }
 
 const CommandRegistration registration{
-    "project import",
-    "add tracked features (NAME.csv) and alignments (NAME.TextGrid) to a project (DIR --features --alignments)",
+    {QStringLiteral("project import"),
+     QStringLiteral("add tracked features (NAME.csv) and alignments (NAME.TextGrid) to a project (DIR --features "
+                    "--alignments)"),
+     QStringLiteral("Brings the output of `lipsync track` (NAME.csv) and `lipsync align` (NAME.TextGrid) into a "
+                    "project, one file per sequence NAME, and references an AAM; frames the tracker lost take "
+                    "the nearest tracked frame's features."),
+     {{QStringLiteral("features"), QStringLiteral("DIR"), QStringLiteral("a folder of tracked features NAME.csv")},
+      {QStringLiteral("alignments"), QStringLiteral("DIR"),
+       QStringLiteral("a folder of alignments NAME.TextGrid (their phones tier)")},
+      {QStringLiteral("words"), {},
+       QStringLiteral("take the alignments' words tier too (default: keep the project's words)")},
+      {QStringLiteral("aam"), QStringLiteral("AAM"), QStringLiteral("an AAM file for the project to reference")},
+      {QStringLiteral("aam-name"), QStringLiteral("NAME"), QStringLiteral("the name the AAM is shown by"),
+       QStringLiteral("AAM")}},
+     {{QStringLiteral("DIR"), QStringLiteral("the project folder")}}},
     &runImport};
 
 } // namespace

@@ -1,9 +1,12 @@
 // `lipsync render`: new speech -> aligned phones -> generated face parameters -> the face rendered
 // into the clip's frames (or a neutral frame for audio only) -> MP4 with the recording's sound.
-// All of it is core/render/SpeechToFace (renderSpeechVideo), which the studio uses too.
-#include "AlignerSupport.h"
-#include "Command.h"
+// The alignment is SpeechAligner's (the options and results of `lipsync align`); generation and
+// rendering are core/render/SpeechToFace, which the studio uses too.
+#include "CommandLine.h"
+#include "SpeechAligner.h"
+#include "VideoOutput.h"
 
+#include "io/Transcript.h"
 #include "render/SpeechToFace.h"
 #include "tasks/Feedback.h"
 
@@ -16,83 +19,52 @@ using namespace lipsync::cli;
 
 namespace {
 
-const char *kRenderUsage =
-    "usage: lipsync render --model MODEL --aam AAM --media CLIP --transcript FILE\n"
-    "                      (--out OUT.mp4 | --png-dir DIR)\n"
-    "                      [--side-by-side] [--labels LEFT,RIGHT] [--aligner MODEL] [--fps F]\n"
-    "                      [--full-face] [--no-colour-match] [--crf 20] [--json]\n"
-    "  CLIP: any audio or video file with speech (audio only renders onto a neutral frame).\n"
-    "  FILE: the words spoken (.align, .lab, .txt or a TextGrid words tier).\n"
-    "  --side-by-side: the real clip left, the generated face right.\n"
-    "  --full-face: synthesise the whole modelled face, eyes included (default: the lower face,\n"
-    "               the recording's eyes and upper face kept).\n"
-    "  --no-colour-match: keep the model's mean colour instead of matching the frame's lighting.";
-
-int runRender(const QStringList &argv)
+int runRender(const CommandLine &args)
 {
-    const Arguments args(argv);
-    const QStringList unknown = args.unknown({"model", "aam", "media", "transcript", "out", "side-by-side",
-                                              "labels", "aligner", "fps", "crf", "png-dir", "full-face",
-                                              "no-colour-match", "json"});
-    if (!unknown.isEmpty() || !args.positional().isEmpty())
-        return fail(QStringLiteral("render: unknown argument %1\n").arg((unknown + args.positional()).first())
-                        + QString::fromLatin1(kRenderUsage),
-                    2);
     SpeechToFaceRequest request;
     request.modelPath = args.value("model").toStdString();
     request.aamPath = args.value("aam").toStdString();
     request.mediaPath = args.value("media").toStdString();
     request.transcriptPath = args.value("transcript").toStdString();
-    const QString out = args.value("out");
-    const QString pngDir = args.value("png-dir");
-    if (request.modelPath.empty() || request.aamPath.empty() || request.mediaPath.empty()
-        || request.transcriptPath.empty() || out.isEmpty() == pngDir.isEmpty())
-        return fail(QString::fromLatin1(kRenderUsage), 2);
-    request.alignerModelPath =
-        (args.has("aligner") ? args.value("aligner") : defaultAlignerModel()).toStdString();
-    if (request.alignerModelPath.empty())
-        return fail(QStringLiteral("render: no --aligner given and the shipped model "
-                                   "resources/aligner/grid-s1.aligner was not found "
-                                   "(set LIPSYNC_ALIGNER_MODEL)"));
-    bool ok = true;
-    if (args.has("fps")) {
-        request.frameRate = args.value("fps").toDouble(&ok);
-        if (!ok || !(request.frameRate > 0))
-            return fail(QStringLiteral("render: --fps must be a positive number"), 2);
-    }
+    if (args.isSet("fps"))
+        request.frameRate = args.positiveNumber("fps");
     RenderOptions options;
-    options.sideBySide = args.flag("side-by-side");
-    options.composite.region = args.flag("full-face") ? FaceRegion::Full : FaceRegion::Lower;
-    options.composite.matchColour = !args.flag("no-colour-match");
-    options.video.crf = args.value("crf", "20").toInt(&ok);
-    if (!ok || options.video.crf < 0 || options.video.crf > 51)
-        return fail(QStringLiteral("render: --crf takes an integer in 0..51"), 2);
-    if (args.has("labels")) {
-        const QStringList labels = args.value("labels").split(QLatin1Char(','));
-        if (labels.size() != (options.sideBySide ? 2 : 1))
-            return fail(QStringLiteral("render: --labels takes one label per panel"), 2);
-        options.leftLabel = labels.front().trimmed().toStdString();
-        options.rightLabel = labels.back().trimmed().toStdString();
+    options.sideBySide = args.isSet("side-by-side");
+    options.composite.region = args.isSet("full-face") ? FaceRegion::Full : FaceRegion::Lower;
+    options.composite.matchColour = !args.isSet("no-colour-match");
+    const VideoOutput output = VideoOutput::from(args, options.sideBySide ? 2 : 1);
+    const QString &out = output.out;
+    const QString &pngDir = output.pngDir;
+    options.video.crf = output.crf;
+    if (!output.captions.empty()) {
+        options.leftLabel = output.captions.front();
+        options.rightLabel = output.captions.back();
     }
 
+    // The shared aligner (the same choices as `lipsync align`), then generation from its phones.
+    QElapsedTimer timer;
+    timer.start();
+    const SpeechAligner aligner(args);
+    const Transcript transcript = readTranscript(request.transcriptPath);
+    const SpeechAligner::Result aligned =
+        aligner.align(args.value("media"), transcript.words, args.value("transcript"));
     Feedback feedback;
     SpeechVideoReport report;
-    if (!pngDir.isEmpty()) {
-        // The same steps as renderSpeechVideo, frames to PNGs instead of an MP4.
-        report.generated = generateFromSpeech(request, feedback);
-        QElapsedTimer timer;
-        timer.start();
-        const auto renderer = makeRenderer(report.generated, request.mediaPath, feedback);
+    report.generated = generateFromPhones(request, aligned.alignment.phones, aligned.alignment.words, feedback);
+    report.generated.alignerModelPath = aligner.modelName().toStdString();
+    report.generated.seconds = timer.elapsed() / 1000.0;
+    timer.restart();
+    const auto renderer = makeRenderer(report.generated, request.mediaPath, feedback);
+    if (!pngDir.isEmpty())
         report.framesWritten = int(
             exportRenderedImages(report.generated, *renderer, pngDir.toStdString(), feedback, options).size());
-        report.renderSeconds = timer.elapsed() / 1000.0;
-    } else {
-        report = renderSpeechVideo(request, out.toStdString(), feedback, options);
-    }
+    else
+        report.framesWritten = exportRenderedVideo(report.generated, *renderer, out.toStdString(), feedback, options);
+    report.renderSeconds = timer.elapsed() / 1000.0;
     const SpeechToFaceResult &g = report.generated;
-    if (args.flag("json")) {
+    if (args.isSet("json")) {
         printJson(QJsonObject{
-            {"out", out.isEmpty() ? pngDir : out},
+            {"out", output.path()},
             {"media", args.value("media")},
             {"model", QString::fromStdString(g.modelKind)},
             {"aligner", QString::fromStdString(g.alignerModelPath)},
@@ -110,7 +82,7 @@ int runRender(const QStringList &argv)
             {"renderSeconds", report.renderSeconds},
         });
     } else {
-        std::printf("%s: %d frames (%s model, %s) in %.2f s + %.2f s\n", qPrintable(out.isEmpty() ? pngDir : out), report.framesWritten,
+        std::printf("%s: %d frames (%s model, %s) in %.2f s + %.2f s\n", qPrintable(output.path()), report.framesWritten,
                     g.modelKind.c_str(), g.hasVideo ? "into the clip" : "neutral frame", g.seconds,
                     report.renderSeconds);
     }
@@ -118,7 +90,32 @@ int runRender(const QStringList &argv)
 }
 
 const CommandRegistration registration{
-    QStringLiteral("render"),
-    QStringLiteral("align new speech, generate the face and render it as MP4 with the sound"), &runRender};
+    CommandSpec{
+        QStringLiteral("render"),
+        QStringLiteral("align new speech, generate the face and render it as MP4 with the sound"),
+        QStringLiteral("Aligns new speech to its transcript, generates the face's parameters with a trained dynamic "
+                       "model and renders the face into the clip's frames (or onto a neutral frame for audio "
+                       "only): an MP4 with the recording's sound (--out) or PNGs (--png-dir)."),
+        {{QStringLiteral("model"), QStringLiteral("MODEL"), QStringLiteral("a trained dynamic model (lipsync train)"),
+          {}, CommandOption::Required},
+         {QStringLiteral("aam"), QStringLiteral("AAM"), QStringLiteral("the AAM the model's features are parameters of"),
+          {}, CommandOption::Required},
+         {QStringLiteral("media"), QStringLiteral("CLIP"),
+          QStringLiteral("any audio or video file with speech (audio only renders onto a neutral frame)"), {},
+          CommandOption::Required},
+         {QStringLiteral("transcript"), QStringLiteral("FILE"),
+          QStringLiteral("the words spoken (.align, .lab, .txt or a TextGrid words tier)"), {}, CommandOption::Required},
+         {QStringLiteral("side-by-side"), {}, QStringLiteral("the real clip left, the generated face right")},
+         {QStringLiteral("fps"), QStringLiteral("RATE"),
+          QStringLiteral("frames per second of the generated face (default: the video's rate, 25 for audio)")},
+         {QStringLiteral("full-face"), {},
+          QStringLiteral("synthesise the whole modelled face, eyes included (default: the lower face, the "
+                         "recording's eyes and upper face kept)")},
+         {QStringLiteral("no-colour-match"), {},
+          QStringLiteral("keep the model's mean colour instead of matching the frame's lighting")}},
+                {}}
+        .add(VideoOutput::options())
+        .add(SpeechAligner::options()),
+    &runRender};
 
 } // namespace

@@ -4,7 +4,7 @@
 //
 // A project keeps its study in the project (study.json, referenced by the manifest and saved with
 // it, see core/project/Project.h); --out / --results write and read a stand-alone study file.
-#include "Command.h"
+#include "CommandLine.h"
 
 #include "project/ForcedChoiceStudy.h"
 #include "eval/StudyTally.h"
@@ -31,7 +31,7 @@ std::vector<std::string> splitList(const QString &text)
     return out;
 }
 
-QString projectFolder(const Arguments &arguments)
+QString projectFolder(const CommandLine &arguments)
 {
     const QString folder = arguments.value(QStringLiteral("project"));
     const QString manifest = QDir(folder).filePath(QString::fromLatin1(Project::kManifestName));
@@ -42,9 +42,9 @@ QString projectFolder(const Arguments &arguments)
 }
 
 // The study of --results FILE, or the one kept in the project of --project DIR.
-ForcedChoiceStudy loadStudy(const Arguments &arguments, QString *source)
+ForcedChoiceStudy loadStudy(const CommandLine &arguments, QString *source)
 {
-    if (arguments.has("results")) {
+    if (arguments.isSet("results")) {
         *source = arguments.value("results");
         return ForcedChoiceStudy::load(source->toStdString());
     }
@@ -56,35 +56,21 @@ ForcedChoiceStudy loadStudy(const Arguments &arguments, QString *source)
     return *project.study;
 }
 
-int runCreate(const QStringList &args)
+int runCreate(const CommandLine &arguments)
 {
-    const Arguments arguments(args);
-    const QStringList unknown = arguments.unknown(
-        {"methods", "utterances", "participants", "seed", "repeats", "out", "project", "json"});
-    if (!unknown.isEmpty())
-        return fail(QStringLiteral("study create: unknown option %1").arg(unknown.join(' ')), 2);
-    if (!arguments.has("methods") || (arguments.has("out") == arguments.has("project"))
-        || (arguments.has("out") && !arguments.has("utterances")))
-        return fail(QStringLiteral("usage: lipsync study create --methods real,dpds,... "
-                                   "[--utterances ID,ID,...] (--out FILE.json | --project DIR) "
-                                   "[--participants N] [--seed S] [--repeats R] [--json]"),
-                    2);
-    bool ok = true;
-    const int participants = arguments.value("participants", "0").toInt(&ok);
-    bool seedOk = true;
-    const quint64 seed = arguments.value("seed", "1").toULongLong(&seedOk);
-    bool repeatsOk = true;
-    const int repeats = arguments.value("repeats", "1").toInt(&repeatsOk);
-    if (!ok || participants < 0 || !seedOk || !repeatsOk)
-        return fail(QStringLiteral("study create: --participants, --seed and --repeats take "
-                                   "non-negative integers"),
-                    2);
+    if (arguments.isSet("out") == arguments.isSet("project"))
+        throw UsageError(QStringLiteral("give either --out FILE.json or --project DIR"));
+    if (arguments.isSet("out") && !arguments.isSet("utterances"))
+        throw UsageError(QStringLiteral("--out needs --utterances"));
+    const int participants = arguments.integer("participants", 0);
+    const quint64 seed = arguments.unsignedInteger("seed");
+    const int repeats = arguments.integer("repeats", 1);
     // In a project the utterances are its sequences (all of them unless --utterances names some).
     std::optional<Project> project;
     std::vector<std::string> utterances = splitList(arguments.value("utterances"));
-    if (arguments.has("project")) {
+    if (arguments.isSet("project")) {
         project = Project::load(projectFolder(arguments).toStdString());
-        if (!arguments.has("utterances"))
+        if (!arguments.isSet("utterances"))
             for (const Sequence &s : project->sequences)
                 utterances.push_back(s.id);
         for (const std::string &u : utterances)
@@ -103,7 +89,7 @@ int runCreate(const QStringList &args)
     } else {
         study.save(out.toStdString());
     }
-    if (arguments.flag("json"))
+    if (arguments.isSet("json"))
         printJson(QJsonObject{{"study", out},
                               {"methods", qint64(study.methods().size())},
                               {"participants", participants},
@@ -134,34 +120,23 @@ void printTable(const StudyTally &tally, double alpha)
     std::printf("\n%s\n", tally.summary(alpha).c_str());
 }
 
-int runTally(const QStringList &args)
+int runTally(const CommandLine &arguments)
 {
-    const Arguments arguments(args);
-    const QStringList unknown =
-        arguments.unknown({"results", "project", "json", "csv", "ranking-csv", "alpha"});
-    if (!unknown.isEmpty())
-        return fail(QStringLiteral("study tally: unknown option %1").arg(unknown.join(' ')), 2);
-    if (arguments.has("results") == arguments.has("project")
-        || (arguments.has("results") && arguments.value("results").isEmpty())
-        || (arguments.has("project") && arguments.value("project").isEmpty()))
-        return fail(QStringLiteral("usage: lipsync study tally (--project DIR | --results "
-                                   "FILE.json) [--csv PAIRS.csv] [--ranking-csv RANKING.csv] "
-                                   "[--alpha 0.05] [--json]"),
-                    2);
-    bool ok = true;
-    const double alpha = arguments.value("alpha", "0.05").toDouble(&ok);
-    if (!ok || alpha <= 0 || alpha >= 1)
-        return fail(QStringLiteral("study tally: --alpha takes a number in (0, 1)"), 2);
+    if (arguments.isSet("results") == arguments.isSet("project"))
+        throw UsageError(QStringLiteral("give either --project DIR or --results FILE.json"));
+    const double alpha = arguments.number("alpha");
+    if (alpha <= 0 || alpha >= 1)
+        throw UsageError(QStringLiteral("--alpha takes a number in (0, 1)"));
 
     QString path;
     const ForcedChoiceStudy study = loadStudy(arguments, &path);
     const StudyTally tally = StudyTally::fromStudy(study);
-    if (arguments.has("csv"))
+    if (arguments.isSet("csv"))
         writeFileAtomically(arguments.value("csv").toStdString(), tally.pairsCsv());
-    if (arguments.has("ranking-csv"))
+    if (arguments.isSet("ranking-csv"))
         writeFileAtomically(arguments.value("ranking-csv").toStdString(), tally.rankingCsv());
 
-    if (arguments.flag("json")) {
+    if (arguments.isSet("json")) {
         QJsonObject json = tally.toJson();
         json["study"] = path;
         json["alpha"] = alpha;
@@ -175,13 +150,43 @@ int runTally(const QStringList &args)
     return 0;
 }
 
+// --project DIR: the study kept in a project.
+CommandOption studyProjectOption(const QString &description)
+{
+    return {QStringLiteral("project"), QStringLiteral("DIR"), description};
+}
+
 const CommandRegistration createRegistration{
-    QStringLiteral("study create"),
-    QStringLiteral("design a blind forced-choice study (every pair twice, sides swapped)"),
+    {QStringLiteral("study create"),
+     QStringLiteral("design a blind forced-choice study (every pair twice, sides swapped)"),
+     QStringLiteral("Designs a blind forced-choice study (paper section 4): every pair of methods on every "
+                    "utterance twice, sides swapped, in an order of its own for each participant. Kept in the "
+                    "project (--project) or written as a stand-alone study file (--out)."),
+     {{QStringLiteral("methods"), QStringLiteral("M,M,..."), QStringLiteral("the methods compared: real,dpds,..."), {},
+       CommandOption::Required},
+      {QStringLiteral("utterances"), QStringLiteral("ID,ID,..."),
+       QStringLiteral("the utterances shown (default with --project: all the project's sequences)")},
+      studyProjectOption(QStringLiteral("keep the study in this project")),
+      {QStringLiteral("out"), QStringLiteral("FILE.json"), QStringLiteral("instead of --project: the study file to write")},
+      {QStringLiteral("participants"), QStringLiteral("N"), QStringLiteral("participants P01..PN to add"),
+       QStringLiteral("0")},
+      {QStringLiteral("seed"), QStringLiteral("S"), QStringLiteral("the seed of the trial orders"), QStringLiteral("1")},
+      {QStringLiteral("repeats"), QStringLiteral("R"), QStringLiteral("how many times each trial is shown"),
+       QStringLiteral("1")}},
+     {}},
     &runCreate};
 const CommandRegistration tallyRegistration{
-    QStringLiteral("study tally"),
-    QStringLiteral("tally a study: Table 1 counts, sign-test p-values, Bradley-Terry ranking"),
+    {QStringLiteral("study tally"),
+     QStringLiteral("tally a study: Table 1 counts, sign-test p-values, Bradley-Terry ranking"),
+     QStringLiteral("Tallies a study's answers in the form of the paper's Table 1, with sign-test p-values (Holm-"
+                    "adjusted) and a Bradley-Terry ranking."),
+     {studyProjectOption(QStringLiteral("tally the study kept in this project")),
+      {QStringLiteral("results"), QStringLiteral("FILE.json"), QStringLiteral("instead of --project: a study file")},
+      {QStringLiteral("csv"), QStringLiteral("PAIRS.csv"), QStringLiteral("also write the pairs' counts as CSV")},
+      {QStringLiteral("ranking-csv"), QStringLiteral("RANKING.csv"), QStringLiteral("also write the ranking as CSV")},
+      {QStringLiteral("alpha"), QStringLiteral("A"), QStringLiteral("the significance level of the summary, in (0, 1)"),
+       QStringLiteral("0.05")}},
+     {}},
     &runTally};
 
 } // namespace

@@ -1,8 +1,6 @@
-// `lipsync track --model MODEL VIDEO --out FEATURES.csv`: fits the AAM to every frame (the previous
-// frame initialises the next, re-detecting when the fit error jumps) and writes one row per frame:
-// the frame index, then the combined parameters (the paper's y_t). Frames without a face take the
-// nearest tracked frame's parameters and are reported.
-#include "Command.h"
+// `lipsync track VIDEO --aam AAM --out FEATURES.csv`: an AAM fitted through a video (VideoTracking),
+// its combined parameters per frame written as CSV; the declaration at the end describes it.
+#include "CommandLine.h"
 
 #include "aam/FaceDetector.h"
 #include "aam/VideoTracking.h"
@@ -22,17 +20,10 @@ using namespace lipsync::cli;
 
 namespace {
 
-int runTrack(const QStringList &args)
+int runTrack(const CommandLine &a)
 {
-    const Arguments a(args);
-    if (const QStringList bad = a.unknown({"model", "out", "json", "points"}); !bad.isEmpty())
-        return fail("track: unknown option " + bad.join(", "), 2);
-    if (a.positional().size() != 1 || !a.has("model") || !a.has("out"))
-        return fail("usage: lipsync track --model MODEL VIDEO --out FEATURES.csv "
-                    "[--points POINTS.csv] [--json]",
-                    2);
     const std::string videoPath = a.positional().front().toStdString();
-    const AamModel model = AamModel::load(a.value("model").toStdString());
+    const AamModel model = AamModel::load(a.value("aam").toStdString());
     FaceDetectorPaths paths;
     paths.useDlib = false;
     FaceDetector detector(paths);
@@ -43,7 +34,7 @@ int runTrack(const QStringList &args)
     const int frames = int(r.features.rows());
     const std::string out = a.value("out").toStdString();
     writeFeatureCsv(out, r.features, {}, r.frameRate); // the rate labels in seconds need
-    if (a.has("points")) {
+    if (a.isSet("points")) {
         std::ostringstream points;
         points << "frame,error";
         for (int i = 0; i < model.pointCount(); ++i)
@@ -82,7 +73,7 @@ int runTrack(const QStringList &args)
                              {"parameters", model.combinedModes()},
                              {"mean_fit_error", tracked ? errorSum / tracked : 0.0},
                              {"fps", r.trackingSeconds > 0 ? frames / r.trackingSeconds : 0.0}};
-    if (a.flag("json"))
+    if (a.isSet("json"))
         printJson(result);
     else
         std::printf("tracked %d of %d frames (%d without a face), %.0f frames/s -> %s\n", tracked,
@@ -91,7 +82,19 @@ int runTrack(const QStringList &args)
 }
 
 const CommandRegistration registration{
-    "track", "fit an AAM through a video and write per-frame features (--model MODEL VIDEO --out CSV)",
+    {QStringLiteral("track"),
+     QStringLiteral("fit an AAM through a video and write per-frame features (VIDEO --aam AAM --out CSV)"),
+     QStringLiteral("Fits the AAM to every frame of a video (the previous frame initialises the next, "
+                    "re-detecting the face when the fit error jumps) and writes one row per frame: the frame "
+                    "index, then the combined parameters (the paper's y_t). Frames without a face take the "
+                    "nearest tracked frame's parameters and are reported."),
+     {{QStringLiteral("aam"), QStringLiteral("AAM"), QStringLiteral("the AAM to fit (lipsync aam build)"), {},
+       CommandOption::Required, {QStringLiteral("model")}},
+      {QStringLiteral("out"), QStringLiteral("FEATURES.csv"), QStringLiteral("the per-frame features to write"), {},
+       CommandOption::Required},
+      {QStringLiteral("points"), QStringLiteral("POINTS.csv"),
+       QStringLiteral("also write every frame's fit error and landmark points")}},
+     {{QStringLiteral("VIDEO"), QStringLiteral("the video to track")}}},
     &runTrack};
 
 } // namespace

@@ -1,5 +1,6 @@
 // lipsync train: fits one dynamic model (docs/models.md §1-4) to features + phone labels.
-#include "Command.h"
+#include "CommandLine.h"
+#include "DynamicModelOptions.h"
 #include "TrainingData.h"
 
 #include "aam/AamModel.h"
@@ -9,7 +10,6 @@
 #include <QJsonArray>
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 
 using namespace lipsync;
@@ -17,93 +17,22 @@ using namespace lipsync::cli;
 
 namespace {
 
-// %1: the model kinds' ids.
-const char *kTrainUsage =
-    "usage: lipsync train --kind %1 (--project DIR | --features DIR --labels DIR)\n"
-    "                     --out MODEL [--fps RATE] [--aam ID] [--json]\n"
-    "  --fps: the video frame rate of feature files that record none (\"# fps=RATE\")\n"
-    "  --aam: the identifier of the AAM the features come from (default: the project's AAM)\n"
-    "  options: --full-covariance (brand), --full-a (slds), --optimizer lm|gradient (dpds),\n"
-    "           --paper-mode (dpds), --max-iterations N (dpds, slds), --threads N (dpds),\n"
-    "           --bound-a [AMAX] (slds: keep |a|, or ||A||_2 with --full-a, <= AMAX, default 0.999,\n"
-    "           for generation that stays bounded; without it, the paper's plain maximum likelihood),\n"
-    "           --compensate-variance (every kind: scale the generated trajectories' spread to the\n"
-    "           training features', docs/models.md §5.1)";
-
-QString trainUsage()
+int runTrain(const CommandLine &args)
 {
-    return QString::fromLatin1(kTrainUsage).arg(QString::fromStdString(modelKindIdList("|", "|")));
-}
-
-// Shared by train and evaluate: model options from the command line. Returns an error or "".
-QString modelOptionsFrom(const Arguments &args, ModelOptions &options)
-{
-    options.brand.fullCovariance = args.flag(QStringLiteral("full-covariance"));
-    options.compensateVariance = args.flag(QStringLiteral("compensate-variance"));
-    options.slds.fullA = args.flag(QStringLiteral("full-a"));
-    if (args.has(QStringLiteral("bound-a"))) {
-        options.slds.boundA = true;
-        const QString value = args.value(QStringLiteral("bound-a"));
-        if (!value.isEmpty()) {
-            bool ok = false;
-            options.slds.aMax = value.toDouble(&ok);
-            if (!ok || !(options.slds.aMax > 0) || !std::isfinite(options.slds.aMax))
-                return QStringLiteral("--bound-a must be a positive number");
-        }
-    }
-    options.dpds.paperMode = args.flag(QStringLiteral("paper-mode"));
-    const QString optimizer = args.value(QStringLiteral("optimizer"), QStringLiteral("lm"));
-    if (optimizer == QLatin1String("gradient"))
-        options.dpds.optimizer = DpdsOptions::Optimizer::GradientAscent;
-    else if (optimizer != QLatin1String("lm"))
-        return QStringLiteral("--optimizer must be lm or gradient");
-    if (args.has(QStringLiteral("max-iterations"))) {
-        bool ok = false;
-        const int n = args.value(QStringLiteral("max-iterations")).toInt(&ok);
-        if (!ok || n < 1)
-            return QStringLiteral("--max-iterations must be a positive integer");
-        options.dpds.maxIterations = n;
-        options.slds.maxIterations = n;
-    }
-    if (args.has(QStringLiteral("threads"))) {
-        bool ok = false;
-        const int n = args.value(QStringLiteral("threads")).toInt(&ok);
-        if (!ok || n < 0)
-            return QStringLiteral("--threads must be a non-negative integer");
-        options.dpds.threads = n;
-    }
-    return {};
-}
-
-int runTrain(const QStringList &argv)
-{
-    const Arguments args(argv);
-    const QStringList unknown = args.unknown({"kind", "project", "features", "labels", "out", "fps", "aam",
-                                              "json", "full-covariance", "full-a", "bound-a", "optimizer",
-                                              "paper-mode", "max-iterations", "threads", "compensate-variance"});
-    if (!unknown.isEmpty() || !args.positional().isEmpty())
-        return fail(QStringLiteral("unknown argument %1\n").arg((unknown + args.positional()).first())
-                        + trainUsage(),
-                    2);
     const QString kind = args.value(QStringLiteral("kind"));
     const QString out = args.value(QStringLiteral("out"));
-    if (kind.isEmpty() || out.isEmpty())
-        return fail(trainUsage(), 2);
-    ModelOptions options;
-    if (const QString error = modelOptionsFrom(args, options); !error.isEmpty())
-        return fail(error, 2);
+    const ModelOptions options = dynamicModelOptionsFrom(args);
     if (!isDynamicModelKind(kind.toStdString()))
-        return fail(QStringLiteral("--kind must be %1").arg(QString::fromStdString(modelKindIdList())), 2);
-
-    std::vector<LabelledSequence> sequences;
+        throw UsageError(QStringLiteral("--kind must be %1").arg(QString::fromStdString(modelKindIdList())));
     std::string projectAam;
-    if (const QString error = loadTrainingData(args, sequences, &projectAam); !error.isEmpty())
-        return fail(error + QLatin1Char('\n') + trainUsage(), 2);
+    const std::vector<LabelledSequence> sequences = loadTrainingData(args, &projectAam);
     // The model records the AAM whose parameters it generates: --aam, else the content identifier of
     // the project's AAM (what `lipsync render` and the studio check a model against). Read before
     // training, so a broken AAM file costs no training time.
-    std::string aam = args.value(QStringLiteral("aam"), QStringLiteral("unspecified")).toStdString();
-    if (!args.has(QStringLiteral("aam")) && !projectAam.empty())
+    std::string aam = "unspecified";
+    if (args.isSet(QStringLiteral("aam")))
+        aam = modelAamIdentifier(args);
+    else if (!projectAam.empty())
         aam = AamModel::load(projectAam).identifier;
     auto model = createDynamicModel(kind.toStdString(), options);
     Feedback feedback;
@@ -125,7 +54,7 @@ int runTrain(const QStringList &argv)
         frames += s.frameCount();
         ll += model->trajectoryLogLikelihood(s.labels, s.features);
     }
-    if (args.flag(QStringLiteral("json"))) {
+    if (args.isSet(QStringLiteral("json"))) {
         QJsonObject o;
         o[QStringLiteral("kind")] = kind;
         o[QStringLiteral("model")] = out;
@@ -148,17 +77,22 @@ int runTrain(const QStringList &argv)
 }
 
 const CommandRegistration registration{
-    QStringLiteral("train"),
-    QStringLiteral("train a dynamic model (%1) on features + phone labels")
-        .arg(QString::fromStdString(modelKindIdList(", "))),
+    CommandSpec{QStringLiteral("train"),
+                QStringLiteral("train a dynamic model (%1) on features + phone labels")
+                    .arg(QString::fromStdString(modelKindIdList(", "))),
+                QStringLiteral("Fits one dynamic model (docs/models.md) to face features and their phone labels: a "
+                               "project's sequences (--project) or a features folder and a labels folder, and "
+                               "reports its log-likelihood per frame."),
+                {{QStringLiteral("kind"), QString::fromStdString(modelKindIdList("|", "|")),
+                  QStringLiteral("the kind of model"), {}, CommandOption::Required},
+                 {QStringLiteral("out"), QStringLiteral("MODEL"), QStringLiteral("the model file to write"), {},
+                  CommandOption::Required},
+                 modelAamOption(QStringLiteral("the AAM the features come from (its file or its identifier), "
+                                               "recorded in the model (default: the project's AAM with --project, "
+                                               "else unspecified)"))},
+                {}}
+        .add(trainingDataOptions())
+        .add(dynamicModelOptions()),
     &runTrain};
 
 } // namespace
-
-namespace lipsync::cli {
-// Used by EvaluateCommand.cpp.
-QString dynamicModelOptionsFrom(const Arguments &args, ModelOptions &options)
-{
-    return modelOptionsFrom(args, options);
-}
-} // namespace lipsync::cli

@@ -1,9 +1,9 @@
 #include "TrainingData.h"
 
+#include "CommandLine.h"
+
 #include "dynamics/LabelledFolder.h"
 #include "project/Project.h"
-
-#include <cmath>
 
 namespace lipsync::cli {
 
@@ -22,30 +22,32 @@ std::vector<LabelledSequence> projectSequences(const std::string &folder, std::s
 
 } // namespace
 
-QString loadTrainingData(const Arguments &args, std::vector<LabelledSequence> &sequences,
-                         std::string *projectAam)
+std::vector<CommandOption> trainingDataOptions()
 {
-    const bool project = args.has(QStringLiteral("project"));
-    const bool folders = args.has(QStringLiteral("features")) || args.has(QStringLiteral("labels"));
+    return {{QStringLiteral("project"), QStringLiteral("DIR"),
+             QStringLiteral("a project: its sequences with both face features and a phone alignment")},
+            {QStringLiteral("features"), QStringLiteral("DIR"),
+             QStringLiteral("instead of --project: a folder of feature files NAME.csv (lipsync track)")},
+            {QStringLiteral("labels"), QStringLiteral("DIR"),
+             QStringLiteral("with --features: their phone labels NAME.TextGrid or NAME.lab")},
+            {QStringLiteral("fps"), QStringLiteral("RATE"),
+             QStringLiteral("with --features: the video frame rate of feature files that record none (\"# fps=RATE\")")}};
+}
+
+std::vector<LabelledSequence> loadTrainingData(const CommandLine &args, std::string *projectAam)
+{
+    const bool project = args.isSet(QStringLiteral("project"));
+    const bool folders = args.isSet(QStringLiteral("features")) || args.isSet(QStringLiteral("labels"));
     if (project == folders)
-        return QStringLiteral("give either --project DIR or --features DIR --labels DIR");
-    if (project) {
-        sequences = projectSequences(args.value(QStringLiteral("project")).toStdString(), projectAam);
-        return {};
-    }
-    if (!args.has(QStringLiteral("features")) || !args.has(QStringLiteral("labels")))
-        return QStringLiteral("--features and --labels go together");
+        throw UsageError(QStringLiteral("give either --project DIR or --features DIR --labels DIR"));
+    if (project)
+        return projectSequences(args.value(QStringLiteral("project")).toStdString(), projectAam);
+    if (!args.isSet(QStringLiteral("features")) || !args.isSet(QStringLiteral("labels")))
+        throw UsageError(QStringLiteral("--features and --labels go together"));
     // The frame rate the feature files record; --fps only for files that record none.
-    double fps = 0.0;
-    if (args.has(QStringLiteral("fps"))) {
-        bool ok = false;
-        fps = args.value(QStringLiteral("fps")).toDouble(&ok);
-        if (!ok || !(fps > 0) || !std::isfinite(fps))
-            return QStringLiteral("--fps must be a positive number");
-    }
-    sequences = loadLabelledFolder(args.value(QStringLiteral("features")).toStdString(),
-                                   args.value(QStringLiteral("labels")).toStdString(), fps);
-    return {};
+    const double fps = args.isSet(QStringLiteral("fps")) ? args.positiveNumber(QStringLiteral("fps")) : 0.0;
+    return loadLabelledFolder(args.value(QStringLiteral("features")).toStdString(),
+                              args.value(QStringLiteral("labels")).toStdString(), fps);
 }
 
 } // namespace lipsync::cli

@@ -9,10 +9,14 @@
 
 namespace lipsync::cli {
 
-// Returns "" and fills `sequences`, or returns a usage error (exit 2). Bad files throw
-// lipsync::Error naming the file. With --project, `projectAam` (if given) receives the path of the
-// project's AAM, empty if it has none.
-QString loadTrainingData(const Arguments &args, std::vector<LabelledSequence> &sequences,
-                         std::string *projectAam = nullptr);
+class CommandLine;
+
+// --project DIR, --features DIR, --labels DIR and --fps RATE.
+std::vector<CommandOption> trainingDataOptions();
+
+// The sequences the options name. Throws UsageError for options that do not go together, and
+// lipsync::Error naming the file for bad files. With --project, `projectAam` (if given) receives
+// the path of the project's AAM, empty if it has none.
+std::vector<LabelledSequence> loadTrainingData(const CommandLine &args, std::string *projectAam = nullptr);
 
 } // namespace lipsync::cli

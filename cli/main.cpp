@@ -9,10 +9,12 @@ using namespace lipsync::cli;
 
 static void printUsage()
 {
-    std::printf("usage: lipsync COMMAND [ARGS...] [--json]\n\ncommands:\n");
+    std::printf("usage: lipsync COMMAND [ARGS...] [--json]\n"
+                "       lipsync COMMAND --help   (the command's arguments and options)\n\ncommands:\n");
+    // Two spaces at least between a command's name and its summary (tests read the list).
     for (const auto &[name, info] : commandRegistry())
-        std::printf("  %-20s %s\n", name.toLocal8Bit().constData(),
-                    info.summary.toLocal8Bit().constData());
+        std::printf("  %-18s  %s\n", name.toLocal8Bit().constData(),
+                    info.spec.summary.toLocal8Bit().constData());
 }
 
 int main(int argc, char **argv)
@@ -45,7 +47,7 @@ int main(int argc, char **argv)
         return fail(QStringLiteral("unknown command '%1'").arg(args[0]), 2);
     }
     try {
-        return best->run(args.mid(bestWords));
+        return runCommand(*best, args.mid(bestWords));
     } catch (const std::exception &e) {
         return fail(QString::fromUtf8(e.what()));
     }

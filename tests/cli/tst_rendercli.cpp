@@ -2,10 +2,11 @@
 // --project`), a demo clip and its transcript -> an MP4 read back with MediaInfo (H.264 + AAC,
 // frame count, duration within one frame of the sound); side by side; bad input (media without
 // sound, a transcript that cannot fit, an unwritable output) gives one line naming the file and
-// leaves no output file.
+// leaves no output file. The aligner is chosen as for `lipsync align` (--aligner sphinx).
 #include "CliRun.h"
 
 #include "aam/AamModel.h"
+#include "align/SphinxAligner.h"
 #include "io/MediaInfo.h"
 #include "io/VideoReader.h"
 
@@ -79,6 +80,27 @@ private slots:
         verifyOneLineError(r, model);
         QVERIFY(r.err.contains("trained for AAM 'aam-other'"));
         QVERIFY(!QFile::exists(out));
+    }
+
+    // --aam takes the AAM's file as well as its identifier (train records the file's identifier,
+    // generate checks against it).
+    void aamGivenAsAFile()
+    {
+        const QString model = m_dir.filePath("aam-file.model");
+        const Run train = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--out", model, "--aam", kAam, "--json"});
+        QVERIFY2(train.exitCode == 0, train.err.constData());
+        QCOMPARE(parseJsonObject(train.out).value("aam").toString().toStdString(),
+                 AamModel::load(kAam.toStdString()).identifier);
+        const QString labels = m_dir.filePath("frames.txt");
+        QFile list(labels);
+        QVERIFY(list.open(QIODevice::WriteOnly));
+        list.write("sil\nB\nIH1\nN\nsil\n");
+        list.close();
+        const QStringList generate{"generate", "--model", model, "--labels", labels, "--out", m_dir.filePath("g.csv")};
+        QVERIFY(runLipsync(QStringList(generate) << "--aam" << kAam).exitCode == 0);
+        const Run other = runLipsync(QStringList(generate) << "--aam" << "aam-other");
+        QCOMPARE(other.exitCode, 1);
+        QVERIFY2(other.err.contains("aam-other"), other.err.constData());
     }
 
     void rendersADemoClipWithItsSound()
@@ -192,6 +214,25 @@ private slots:
         const Run r = runLipsync(renderArgs(kClip, kTranscript, out));
         verifyOneLineError(r, out);
         QVERIFY(r.err.contains("does not exist"));
+    }
+
+    // The aligner choices of `lipsync align`: CMU Sphinx's generic model aligns the speech (slow:
+    // seconds per clip); a missing Sphinx model folder is named.
+    void sphinxAligner()
+    {
+        const QString out = m_dir.filePath("sphinx.mp4");
+        const Run missing = runLipsync(renderArgs(kClip, kTranscript, out) << "--aligner" << "sphinx:/nonexistent/en-us");
+        verifyOneLineError(missing, "/nonexistent/en-us");
+        QVERIFY(!QFile::exists(out));
+        if (!lipsync::SphinxAligner::available())
+            QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");
+        const Run r = runLipsync(renderArgs(kClip, kTranscript, out) << "--aligner" << "sphinx" << "--json");
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject report = parseJsonObject(r.out);
+        QCOMPARE(report.value("aligner").toString(),
+                 QStringLiteral("sphinx:") + lipsync::SphinxAligner::resolveModelDir({}).c_str());
+        QVERIFY(report.value("phones").toInt() > 10);
+        QVERIFY(std::abs(MediaInfo::probe(out.toStdString()).frameCount - 75) <= 1);
     }
 
     void usage()

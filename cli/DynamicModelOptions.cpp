@@ -1,0 +1,70 @@
+#include "DynamicModelOptions.h"
+
+#include "CommandLine.h"
+
+#include "aam/AamModel.h"
+
+#include <QFileInfo>
+
+namespace lipsync::cli {
+
+std::vector<CommandOption> dynamicModelOptions()
+{
+    return {
+        {QStringLiteral("full-covariance"), {}, QStringLiteral("brand: full output covariances")},
+        {QStringLiteral("full-a"), {}, QStringLiteral("slds: full dynamics matrices A (default: diagonal)")},
+        {QStringLiteral("bound-a"), {},
+         QStringLiteral("slds: keep |a|, or ||A||_2 with --full-a, <= --bound-a-max, for generation that stays "
+                        "bounded (default: the paper's plain maximum likelihood)")},
+        {QStringLiteral("bound-a-max"), QStringLiteral("AMAX"), QStringLiteral("slds: the bound of --bound-a (implies it)"),
+         QString::number(SldsOptions{}.aMax)},
+        {QStringLiteral("optimizer"), QStringLiteral("lm|gradient"),
+         QStringLiteral("dpds: Levenberg-Marquardt or gradient ascent"), QStringLiteral("lm")},
+        {QStringLiteral("paper-mode"), {}, QStringLiteral("dpds: the paper's procedure (unit weights in the mu/nu solve, only r re-estimated in the "
+                                       "loop, sigma^2 once at the end)")},
+        {QStringLiteral("max-iterations"), QStringLiteral("N"), QStringLiteral("dpds, slds: at most N iterations")},
+        {QStringLiteral("threads"), QStringLiteral("N"), QStringLiteral("dpds: threads (0: all cores, 1: serial)")},
+        {QStringLiteral("compensate-variance"), {},
+         QStringLiteral("every kind: scale the generated trajectories to the training features' spread "
+                        "(docs/models.md 5.1; default: the paper's models)")},
+    };
+}
+
+ModelOptions dynamicModelOptionsFrom(const CommandLine &args)
+{
+    ModelOptions options;
+    options.brand.fullCovariance = args.isSet(QStringLiteral("full-covariance"));
+    options.compensateVariance = args.isSet(QStringLiteral("compensate-variance"));
+    options.slds.fullA = args.isSet(QStringLiteral("full-a"));
+    options.slds.boundA = args.isSet(QStringLiteral("bound-a")) || args.isSet(QStringLiteral("bound-a-max"));
+    options.slds.aMax = args.positiveNumber(QStringLiteral("bound-a-max"));
+    options.dpds.paperMode = args.isSet(QStringLiteral("paper-mode"));
+    const QString optimizer = args.value(QStringLiteral("optimizer"));
+    if (optimizer == QLatin1String("gradient"))
+        options.dpds.optimizer = DpdsOptions::Optimizer::GradientAscent;
+    else if (optimizer != QLatin1String("lm"))
+        throw UsageError(QStringLiteral("--optimizer must be lm or gradient"));
+    if (args.isSet(QStringLiteral("max-iterations"))) {
+        const int n = args.integer(QStringLiteral("max-iterations"), 1);
+        options.dpds.maxIterations = n;
+        options.slds.maxIterations = n;
+    }
+    if (args.isSet(QStringLiteral("threads")))
+        options.dpds.threads = args.integer(QStringLiteral("threads"), 0);
+    return options;
+}
+
+CommandOption modelAamOption(const QString &description)
+{
+    return {QStringLiteral("aam"), QStringLiteral("AAM|ID"), description};
+}
+
+std::string modelAamIdentifier(const CommandLine &args)
+{
+    const QString aam = args.value(QStringLiteral("aam"));
+    if (QFileInfo(aam).isFile())
+        return AamModel::load(aam.toStdString()).identifier;
+    return aam.toStdString();
+}
+
+} // namespace lipsync::cli
