@@ -60,6 +60,8 @@ MainWindow::MainWindow(QWidget *parent)
 {
     // First, so the window's own views show a frame before the panels hear of it.
     connect(m_context, &StudioContext::currentFrameChanged, this, &MainWindow::showFrame);
+    connect(m_context, &StudioContext::statusMessage, this,
+            [this](const QString &message, int milliseconds) { statusBar()->showMessage(message, milliseconds); });
     setObjectName(QStringLiteral("MainWindow"));
     setDockNestingEnabled(true);
 
@@ -191,7 +193,7 @@ void MainWindow::createDocks()
     makeDock(tr("Sequences"), QStringLiteral("sequencesDock"), sequencePanel, Qt::LeftDockWidgetArea);
 
     m_timeline = new TimelinePanel(this);
-    m_timeline->attach(this);
+    m_timeline->attach(m_context);
     QDockWidget *timeline = makeDock(tr("Timeline"), QStringLiteral("timelineDock"), m_timeline,
                                      Qt::BottomDockWidgetArea);
 

@@ -50,3 +50,12 @@ void StudioContext::setCurrentFrame(int frame)
 }
 
 } // namespace lipsync::studio
+
+namespace lipsync::studio {
+
+void StudioContext::showStatus(const QString &message, int milliseconds)
+{
+    emit statusMessage(message, milliseconds);
+}
+
+} // namespace lipsync::studio

@@ -48,12 +48,15 @@ public:
     void clearCurrentSequence();
     // Records the frame now shown and announces it.
     void setCurrentFrame(int frame);
+    // A passing message for the user (the window's status bar), shown for `milliseconds`.
+    void showStatus(const QString &message, int milliseconds = 0);
 
 signals:
     // The current sequence's media reached the views (sequenceId).
     void sequenceLoaded(const QString &sequenceId);
     // The frame shown changed (also when a sequence's media arrives).
     void currentFrameChanged(int frame);
+    void statusMessage(const QString &message, int milliseconds);
 
 private:
     QUndoStack *m_undo;

@@ -3,7 +3,6 @@
 #include "align/FrameLabels.h"
 #include "align/SphinxAligner.h"
 #include "app/ErrorReporter.h"
-#include "app/MainWindow.h"
 #include "app/StudioContext.h"
 #include "app/ProjectDocument.h"
 #include "app/SequenceMedia.h"
@@ -29,7 +28,6 @@
 #include <QMessageBox>
 #include <QScrollBar>
 #include <QSettings>
-#include <QStatusBar>
 #include <QToolButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -237,10 +235,10 @@ void TimelinePanel::syncScrollBar()
     m_syncing = false;
 }
 
-void TimelinePanel::attach(MainWindow *window)
+void TimelinePanel::attach(StudioContext *context)
 {
-    m_window = window;
-    m_document = window->document();
+    m_context = context;
+    m_document = context->document();
     m_waveform->setEditable(true);
     connect(m_document, &ProjectDocument::documentReset, this, [this] { showSequence(-1); });
     connect(m_document, &ProjectDocument::sequenceChanged, this, [this](int row) {
@@ -248,15 +246,15 @@ void TimelinePanel::attach(MainWindow *window)
             refresh();
         updateActions();
     });
-    connect(window->context(), &StudioContext::sequenceLoaded, this, [this] { showSequence(m_window->currentSequence()); });
+    connect(context, &StudioContext::sequenceLoaded, this, [this] { showSequence(m_context->currentSequence()); });
     // The one player: the main window follows its frames; the timeline's cursor follows its
     // exact position (between frame centres), whoever started it.
-    m_player = window->playback();
+    m_player = context->playback();
     connect(m_player, &PlaybackController::positionChanged, this, [this](double t) {
         if (m_player->mediaPath() == m_mediaPath)
             m_waveform->setCursorTime(t);
     });
-    connect(window->taskRunner(), &TaskRunner::taskFinished, this, [this] { updateActions(); });
+    connect(context->taskRunner(), &TaskRunner::taskFinished, this, [this] { updateActions(); });
     updateActions();
 }
 
@@ -269,7 +267,7 @@ void TimelinePanel::showSequence(int row)
     m_row = m_document && row < m_document->sequenceCount() ? row : -1;
     m_dragKey = -1;
     m_mediaPath = m_row >= 0 ? m_document->mediaPath(m_row) : QString();
-    const std::shared_ptr<const SequenceMedia> media = m_row >= 0 && m_window ? m_window->media() : nullptr;
+    const std::shared_ptr<const SequenceMedia> media = m_row >= 0 && m_context ? m_context->media() : nullptr;
     if (media) {
         m_waveform->setPeaks(media->peaks);
         m_waveform->setThumbnails(media->thumbnails, media->frameRate);
@@ -285,7 +283,7 @@ void TimelinePanel::showGeneratedSpeech(std::shared_ptr<const SpeechToFaceResult
 {
     if (!speech) {
         if (m_speech)
-            showSequence(m_window ? m_window->currentSequence() : -1);
+            showSequence(m_context ? m_context->currentSequence() : -1);
         return;
     }
     closeEditor();
@@ -327,8 +325,8 @@ void TimelinePanel::refresh()
     m_waveform->setWords(s.words);
     m_waveform->setPhones(s.phones);
     int frames = s.frameCount;
-    if (frames <= 0 && m_window->media())
-        frames = m_window->media()->frameCount();
+    if (frames <= 0 && m_context->media())
+        frames = m_context->media()->frameCount();
     m_waveform->setFrameLabels(s.phones.isEmpty() ? std::vector<std::string>{}
                                                   : voteFrameLabels(s.phones, s.frameRate, frames),
                                s.frameRate);
@@ -425,8 +423,8 @@ std::vector<AlignJob> TimelinePanel::alignmentJobs(const std::vector<int> &rows)
     for (SequenceAlignment &plan : plans)
         if (!plan.nothingToAlign)
             jobs.push_back(std::move(plan.job));
-    if (!untouched.isEmpty() && m_window)
-        m_window->statusBar()->showMessage(
+    if (!untouched.isEmpty() && m_context)
+        m_context->showStatus(
             tr("Every word of %1 is user-edited: nothing to align there.").arg(untouched.join(QStringLiteral(", "))),
             8000);
     return jobs;
@@ -446,8 +444,8 @@ void TimelinePanel::realignSelection()
     job.pronunciations = m_document->project().pronunciations;
     job.stretches = realignStretches(tiers, a, b);
     if (job.stretches.empty()) {
-        if (m_window)
-            m_window->statusBar()->showMessage(
+        if (m_context)
+            m_context->showStatus(
                 tr("Nothing to re-align: the selection holds no words, or only words you edited."), 5000);
         return;
     }
@@ -461,10 +459,10 @@ void TimelinePanel::startAlignment(const QString &title, std::vector<AlignJob> j
         job.aligner = sphinx ? AlignerChoice::Sphinx : AlignerChoice::Shipped;
         job.adaptToSpeaker = m_adaptAction->isChecked();
     }
-    if (!m_window)
+    if (!m_context)
         return;
     QPointer<TimelinePanel> self(this);
-    Task *task = lipsync::studio::startAlignment(*m_window->taskRunner(), title, std::move(jobs),
+    Task *task = lipsync::studio::startAlignment(*m_context->taskRunner(), title, std::move(jobs),
                                                  [self, title](std::vector<AlignOutcome> outcomes) {
                                                      if (self)
                                                          self->applyAlignment(title, std::move(outcomes));
@@ -472,7 +470,7 @@ void TimelinePanel::startAlignment(const QString &title, std::vector<AlignJob> j
     m_alignTask = task;
     connect(task, &Task::finished, this, [this, task](Task::State state) {
         if (state == Task::State::Failed)
-            ErrorReporter::report(m_window, tr("The alignment failed."), QString(), task->errorMessage());
+            ErrorReporter::report(this, tr("The alignment failed."), QString(), task->errorMessage());
         updateActions();
     });
     updateActions();
@@ -485,7 +483,7 @@ void TimelinePanel::applyAlignment(const QString &title, std::vector<AlignOutcom
         return;
     QStringList failed;
     QString file;
-    QUndoStack *undo = m_window->undoStack();
+    QUndoStack *undo = m_context->undoStack();
     int ok = 0;
     int guessed = 0;
     for (const AlignOutcome &o : outcomes) {
@@ -495,8 +493,8 @@ void TimelinePanel::applyAlignment(const QString &title, std::vector<AlignOutcom
     }
     if (m_pronunciations)
         m_pronunciations->setGuesses(m_guessed);
-    if (guessed > 0 && m_window)
-        m_window->statusBar()->showMessage(
+    if (guessed > 0 && m_context)
+        m_context->showStatus(
             tr("espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…", "", guessed), 8000);
     if (ok > 1)
         undo->beginMacro(title);
@@ -516,11 +514,11 @@ void TimelinePanel::applyAlignment(const QString &title, std::vector<AlignOutcom
     }
     if (ok > 1)
         undo->endMacro();
-    if (ok > 0 && changed == 0 && m_window)
-        m_window->statusBar()->showMessage(tr("%1: the alignment came out as it was; nothing changed.").arg(title),
+    if (ok > 0 && changed == 0 && m_context)
+        m_context->showStatus(tr("%1: the alignment came out as it was; nothing changed.").arg(title),
                                            8000);
     if (!failed.isEmpty())
-        ErrorReporter::report(m_window, tr("%n sequence(s) could not be aligned; the others were.", "", int(failed.size())),
+        ErrorReporter::report(this, tr("%n sequence(s) could not be aligned; the others were.", "", int(failed.size())),
                               failed.size() == 1 ? file : QString(), failed.join(QLatin1Char('\n')));
 }
 
@@ -698,7 +696,7 @@ void TimelinePanel::closeEditor()
 
 bool TimelinePanel::preparePlayer()
 {
-    const auto media = m_window ? m_window->media() : nullptr;
+    const auto media = m_context ? m_context->media() : nullptr;
     if (!m_player || !media || media->mediaPath != m_mediaPath)
         return false;
     if (m_player->mediaPath() != m_mediaPath) // it played other media (the preview's new speech)

@@ -31,7 +31,7 @@ struct SpeechToFaceResult;
 
 namespace lipsync::studio {
 
-class MainWindow;
+class StudioContext;
 class ProjectDocument;
 class PlaybackController;
 class PronunciationsDialog;
@@ -48,9 +48,9 @@ public:
     // The main window's player, which plays the selection, a word or everything (null until attached).
     PlaybackController *player() const { return m_player; }
 
-    // Follows `window`'s document, current sequence and task runner. Until then the panel only
-    // shows what it is given (setWords etc. on the view).
-    void attach(MainWindow *window);
+    // Follows the context's document, current sequence, player and task runner. Until then the
+    // panel only shows what it is given (setWords etc. on the view).
+    void attach(StudioContext *context);
     int row() const { return m_row; }
 
     // Shows the alignment of speech generated in the Preview — its sound, words, phones and frame
@@ -132,7 +132,7 @@ private:
     PlaybackController *m_player = nullptr;
     bool m_syncing = false;
 
-    MainWindow *m_window = nullptr;
+    StudioContext *m_context = nullptr;
     ProjectDocument *m_document = nullptr;
     int m_row = -1;
     std::shared_ptr<const SpeechToFaceResult> m_speech; // shown instead of the sequence, or null

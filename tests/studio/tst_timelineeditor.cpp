@@ -13,6 +13,8 @@
 #include "app/MainWindow.h"
 #include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
+#include "app/DemoProject.h"
+#include "app/StudioContext.h"
 #include "app/SurfaceFormat.h"
 #include "preview/PlaybackController.h"
 #include "tasks/TaskRunner.h"
@@ -66,6 +68,36 @@ private slots:
     }
 
     void cleanupTestCase() { delete m_window; }
+
+    // The panel needs a context, not a window: on its own it shows the context's current
+    // sequence and turns an edit into one undo step of the context's stack.
+    void worksWithAContextAndNoWindow()
+    {
+        StudioContext context;
+        const QString demo = DemoProject::locate();
+        context.document()->reset(DemoProject::load(demo), demo, true);
+        TimelinePanel panel;
+        panel.attach(&context);
+        context.setCurrentSequence(3, nullptr);
+        context.announceSequenceLoaded();
+        QCOMPARE(panel.row(), 3);
+        const size_t before = context.document()->sequence(3).phones.intervals.size();
+        QCOMPARE(panel.waveform()->phones().intervals.size(), before);
+        // Split the phone under 1.3 s.
+        const auto &intervals = context.document()->sequence(3).phones.intervals;
+        const int index = int(std::find_if(intervals.begin(), intervals.end(),
+                                           [](const Interval &iv) { return iv.start < 1.3 && iv.end > 1.3; })
+                              - intervals.begin());
+        QVERIFY(index < int(before));
+        panel.waveform()->setCursorTime(1.3);
+        panel.waveform()->selectInterval(TierKind::Phones, index);
+        panel.splitAtCursor();
+        QCOMPARE(context.undoStack()->count(), 1);
+        QCOMPARE(context.document()->sequence(3).phones.intervals.size(), before + 1);
+        QCOMPARE(panel.waveform()->phones().intervals.size(), before + 1);
+        context.undoStack()->undo();
+        QCOMPARE(panel.waveform()->phones().intervals.size(), before);
+    }
 
     void alignSequenceFillsTiers()
     {
