@@ -85,7 +85,7 @@ MainWindow::MainWindow(QWidget *parent)
     createMenus();
     m_faces = new FacesController(this);
     m_models->setBuildAamAction(m_faces->buildAamAction());
-    m_preview->attach(this);
+    m_preview->attach(m_context);
     m_taskStatus = new TaskStatusWidget(m_runner, this);
     m_activeModels = new QLabel(this);
     m_activeModels->setObjectName(QStringLiteral("activeModels"));
@@ -474,11 +474,7 @@ void MainWindow::showChart()
 
 void MainWindow::setCurrentFrame(int frame)
 {
-    if (!media() || media()->frameCount() == 0)
-        return;
-    frame = std::clamp(frame, 0, media()->frameCount() - 1);
-    if (frame != currentFrame())
-        m_context->setCurrentFrame(frame); // showFrame first, then the panels
+    m_context->setCurrentFrame(frame); // showFrame first, then the panels
 }
 
 void MainWindow::showFrame(int frame)
@@ -515,14 +511,7 @@ std::shared_ptr<const SequenceMedia> MainWindow::media() const
 
 void MainWindow::togglePlayback()
 {
-    const std::shared_ptr<const SequenceMedia> shown = media();
-    if (m_playback->isPlaying()) {
-        m_playback->pause();
-    } else if (shown) {
-        if (m_playback->mediaPath() != shown->mediaPath)
-            m_playback->setSequence(shown->mediaPath, shown->frameCount(), shown->frameRate);
-        m_playback->play(currentFrame());
-    }
+    m_context->togglePlayback();
 }
 
 void MainWindow::updateTitle()

@@ -8,6 +8,8 @@
 
 #include <QUndoStack>
 
+#include <algorithm>
+
 namespace lipsync::studio {
 
 StudioContext::StudioContext(QObject *parent)
@@ -45,8 +47,39 @@ void StudioContext::clearCurrentSequence()
 
 void StudioContext::setCurrentFrame(int frame)
 {
+    if (!m_media || m_media->frameCount() == 0)
+        return;
+    frame = std::clamp(frame, 0, m_media->frameCount() - 1);
+    if (frame == m_frame)
+        return;
     m_frame = frame;
     emit currentFrameChanged(frame);
+}
+
+void StudioContext::togglePlayback()
+{
+    if (m_playback->isPlaying()) {
+        m_playback->pause();
+    } else if (m_media) {
+        if (m_playback->mediaPath() != m_media->mediaPath)
+            m_playback->setSequence(m_media->mediaPath, m_media->frameCount(), m_media->frameRate);
+        m_playback->play(m_frame);
+    }
+}
+
+bool StudioContext::selection(double *start, double *end) const
+{
+    if (m_selectionEnd <= m_selectionStart)
+        return false;
+    *start = m_selectionStart;
+    *end = m_selectionEnd;
+    return true;
+}
+
+void StudioContext::setSelection(double start, double end)
+{
+    m_selectionStart = start;
+    m_selectionEnd = end;
 }
 
 } // namespace lipsync::studio

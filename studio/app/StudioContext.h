@@ -46,8 +46,14 @@ public:
     void announceSequenceLoaded();
     // No sequence (a new document).
     void clearCurrentSequence();
-    // Records the frame now shown and announces it.
+    // Moves to `frame` of the current sequence (clamped to its frames) and announces it; nothing
+    // without media or when it is the frame shown.
     void setCurrentFrame(int frame);
+    // Plays the current sequence from the current frame, or pauses the player.
+    void togglePlayback();
+    // The stretch of time selected in the timeline (Loop selection plays it); false if none.
+    bool selection(double *start, double *end) const;
+    void setSelection(double start, double end); // end <= start: none
     // A passing message for the user (the window's status bar), shown for `milliseconds`.
     void showStatus(const QString &message, int milliseconds = 0);
 
@@ -67,6 +73,7 @@ private:
     std::shared_ptr<const SequenceMedia> m_media;
     int m_row = -1;
     int m_frame = 0;
+    double m_selectionStart = 0.0, m_selectionEnd = 0.0;
 };
 
 } // namespace lipsync::studio

@@ -4,14 +4,12 @@
 #include "annotate/FacesController.h"
 #include "annotate/FrameView.h"
 #include "app/ErrorReporter.h"
-#include "app/MainWindow.h"
 #include "app/StudioContext.h"
 #include "app/ProjectDocument.h"
 #include "app/SequenceMedia.h"
 #include "app/StudioActions.h"
 #include "app/ModelKinds.h"
 #include "app/ModelStore.h"
-#include "build/ModelsPanel.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
@@ -110,8 +108,8 @@ PreviewPanel::PreviewPanel(const StudioActions &actions, QWidget *parent)
     connect(m_stepBack, &QToolButton::clicked, this, [this] { step(-1); });
     connect(m_stepForward, &QToolButton::clicked, this, [this] { step(1); });
     connect(m_scrub, &QSlider::valueChanged, this, [this](int frame) {
-        if (m_window && m_window->playback()->isPlaying() && m_scrub->isSliderDown())
-            m_window->playback()->pause();
+        if (m_context && m_context->playback()->isPlaying() && m_scrub->isSliderDown())
+            m_context->playback()->pause();
         setCurrent(frame);
     });
     connect(m_loop, &QCheckBox::toggled, this, &PreviewPanel::onLoopToggled);
@@ -126,22 +124,22 @@ PreviewPanel::~PreviewPanel()
     delete m_recorded;
 }
 
-void PreviewPanel::attach(MainWindow *window)
+void PreviewPanel::attach(StudioContext *context)
 {
-    m_window = window;
-    PlaybackController *player = window->playback();
+    m_context = context;
+    PlaybackController *player = context->playback();
     connect(player, &PlaybackController::playingChanged, this, [this](bool playing) {
         m_play->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
     });
     connect(player, &PlaybackController::frameReached, this, [this](int frame) {
-        if (m_showingSpeech && m_window->playback()->mediaPath() == m_speechPath)
+        if (m_showingSpeech && m_context->playback()->mediaPath() == m_speechPath)
             setCurrent(frame);
     });
-    connect(window->context(), &StudioContext::currentFrameChanged, this, [this] {
+    connect(context, &StudioContext::currentFrameChanged, this, [this] {
         if (!m_showingSpeech)
             updateControls();
     });
-    connect(window->context(), &StudioContext::sequenceLoaded, this, [this] {
+    connect(context, &StudioContext::sequenceLoaded, this, [this] {
         const bool wasSpeech = std::exchange(m_showingSpeech, false);
         m_faces.reset();
         m_facesSequence.clear();
@@ -158,9 +156,8 @@ void PreviewPanel::attach(MainWindow *window)
         m_facesSequence.clear();
         prepare();
     };
-    connect(window->modelsPanel(), &ModelsPanel::modelTrained, this, invalidate);
-    connect(window->document(), &ProjectDocument::modelsChanged, this, [this, invalidate] {
-        if (projectAamPath(m_window->document()->project()) != m_aamPath) {
+    connect(context->document(), &ProjectDocument::modelsChanged, this, [this, invalidate] {
+        if (projectAamPath(m_context->document()->project()) != m_aamPath) {
             // Another AAM (built anew): the poses were tracked with the old one.
             ++m_epoch;
             m_aam.reset();
@@ -169,7 +166,7 @@ void PreviewPanel::attach(MainWindow *window)
         }
         invalidate();
     });
-    connect(window->document(), &ProjectDocument::documentReset, this, [this] {
+    connect(context->document(), &ProjectDocument::documentReset, this, [this] {
         ++m_epoch;
         m_aam.reset();
         m_aamPath.clear();
@@ -182,8 +179,8 @@ void PreviewPanel::attach(MainWindow *window)
         if (wasSpeech)
             emit speechShownChanged();
     });
-    connect(window->document(), &ProjectDocument::sequenceChanged, this, [this, invalidate](int row) {
-        if (row == m_window->currentSequence())
+    connect(context->document(), &ProjectDocument::sequenceChanged, this, [this, invalidate](int row) {
+        if (row == m_context->currentSequence())
             invalidate();
     });
 }
@@ -230,13 +227,13 @@ void PreviewPanel::showEvent(QShowEvent *event)
 
 void PreviewPanel::prepare()
 {
-    if (!m_window || !isVisible() || m_showingSpeech)
+    if (!m_context || !isVisible() || m_showingSpeech)
         return;
-    const int row = m_window->currentSequence();
-    const auto media = m_window->media();
+    const int row = m_context->currentSequence();
+    const auto media = m_context->media();
     if (row < 0 || !media)
         return;
-    const ProjectDocument *doc = m_window->document();
+    const ProjectDocument *doc = m_context->document();
     const Sequence &s = doc->sequence(row);
     const QString id = QString::fromStdString(s.id);
     if (m_aam && m_renderers.contains(id)) {
@@ -252,9 +249,9 @@ void PreviewPanel::prepare()
         return;
     }
     // The Faces workflow may have the AAM loaded already.
-    std::shared_ptr<const AamModel> aam = m_aam ? m_aam : m_window->faces()->model();
+    std::shared_ptr<const AamModel> aam = m_aam ? m_aam : m_context->modelStore()->aam();
     const std::string mediaPath = media->mediaPath.toStdString();
-    m_prepareTask = m_window->taskRunner()->start(
+    m_prepareTask = m_context->taskRunner()->start(
         tr("Prepare the preview of %1").arg(id),
         [this, aam, aamPath, mediaPath, id, epoch = m_epoch](Feedback &feedback) -> TaskRunner::Commit {
             feedback.setStatus("loading the appearance model");
@@ -293,9 +290,9 @@ void PreviewPanel::rebuild()
 {
     m_faces.reset();
     m_facesSequence.clear();
-    const int row = m_window ? m_window->currentSequence() : -1;
+    const int row = m_context ? m_context->currentSequence() : -1;
     if (row >= 0 && m_aam) {
-        const Sequence &s = m_window->document()->sequence(row);
+        const Sequence &s = m_context->document()->sequence(row);
         const QString id = QString::fromStdString(s.id);
         if (const Renderer r = m_renderers.value(id); r.renderer) {
             auto faces = std::make_shared<GeneratedFaces>(r.aam, r.renderer, s.frameRate);
@@ -306,7 +303,7 @@ void PreviewPanel::rebuild()
                 // no usable phones: nothing to generate from
             }
             for (const QString &kind : ModelKinds::ids()) {
-                const auto model = m_window->modelStore()->dynamicModel(kind);
+                const auto model = m_context->modelStore()->dynamicModel(kind);
                 if (!model || labels.empty() || model->dimension() != m_aam->combinedModes())
                     continue;
                 try {
@@ -389,14 +386,14 @@ void PreviewPanel::layoutPanels()
     // What the generated panel says while there is nothing to draw.
     if (!shown || shown->tracks().empty()) {
         QString why;
-        const int row = m_window ? m_window->currentSequence() : -1;
-        if (!m_window || row < 0)
+        const int row = m_context ? m_context->currentSequence() : -1;
+        if (!m_context || row < 0)
             why = m_placeholder;
-        else if (projectAamPath(m_window->document()->project()).empty())
+        else if (projectAamPath(m_context->document()->project()).empty())
             why = tr("The project has no appearance model (Faces ▸ Build AAM).");
         else if (m_prepareTask)
             why = tr("Tracking the head pose…");
-        else if (m_window->document()->sequence(row).phones.isEmpty())
+        else if (m_context->document()->sequence(row).phones.isEmpty())
             why = tr("This sequence has no phones (align it in the Timeline).");
         else
             why = tr("Train a dynamic model in the Models panel to see the faces it generates.");
@@ -422,8 +419,8 @@ void PreviewPanel::showCurrent()
     }
     if (m_panels.empty())
         return;
-    const int frame = m_window ? m_window->currentFrame() : 0;
-    const auto media = m_window ? m_window->media() : nullptr;
+    const int frame = m_context ? m_context->currentFrame() : 0;
+    const auto media = m_context ? m_context->media() : nullptr;
     if (!media || media->sequenceId != m_facesSequence)
         shown = nullptr; // generated for the sequence shown before (a new one is loading)
     FrameView *recorded = m_panels.front().view;
@@ -451,16 +448,16 @@ void PreviewPanel::updateControls()
         m_caption->setText(tr("%1 — frame %2 of %3").arg(m_speechTitle).arg(m_speechFrame + 1).arg(n));
         return;
     }
-    const auto media = m_window ? m_window->media() : nullptr;
+    const auto media = m_context ? m_context->media() : nullptr;
     m_scrub->setRange(0, media ? std::max(0, media->frameCount() - 1) : 0);
-    m_scrub->setValue(m_window ? m_window->currentFrame() : 0);
+    m_scrub->setValue(m_context ? m_context->currentFrame() : 0);
 }
 
 // --- transport ---
 
 void PreviewPanel::setCurrent(int frame)
 {
-    if (!m_window)
+    if (!m_context)
         return;
     if (m_showingSpeech) {
         const int n = m_speech ? m_speech->frameCount() : 0;
@@ -468,25 +465,25 @@ void PreviewPanel::setCurrent(int frame)
         updateControls();
         showCurrent();
     } else {
-        m_window->setCurrentFrame(frame);
+        m_context->setCurrentFrame(frame);
     }
 }
 
 void PreviewPanel::step(int frames)
 {
-    if (!m_window)
+    if (!m_context)
         return;
-    m_window->playback()->pause();
-    setCurrent((m_showingSpeech ? m_speechFrame : m_window->currentFrame()) + frames);
+    m_context->playback()->pause();
+    setCurrent((m_showingSpeech ? m_speechFrame : m_context->currentFrame()) + frames);
 }
 
 void PreviewPanel::togglePlay()
 {
-    if (!m_window)
+    if (!m_context)
         return;
-    PlaybackController *player = m_window->playback();
+    PlaybackController *player = m_context->playback();
     if (!m_showingSpeech) {
-        m_window->togglePlayback();
+        m_context->togglePlayback();
         return;
     }
     if (player->isPlaying()) {
@@ -501,9 +498,9 @@ void PreviewPanel::togglePlay()
 
 void PreviewPanel::onLoopToggled(bool on)
 {
-    if (!m_window)
+    if (!m_context)
         return;
-    PlaybackController *player = m_window->playback();
+    PlaybackController *player = m_context->playback();
     player->setLooping(on);
     if (!on)
         return;
@@ -516,13 +513,13 @@ void PreviewPanel::onLoopToggled(bool on)
         player->playRange(0.0, player->duration());
         return;
     }
-    const auto media = m_window->media();
+    const auto media = m_context->media();
     if (!media)
         return;
     if (player->mediaPath() != media->mediaPath)
         player->setSequence(media->mediaPath, media->frameCount(), media->frameRate);
     double a = 0, b = 0;
-    if (!m_window->waveformView()->selection(&a, &b)) {
+    if (!m_context->selection(&a, &b)) {
         a = 0.0;
         b = player->duration();
     }
@@ -533,13 +530,13 @@ void PreviewPanel::onLoopToggled(bool on)
 
 void PreviewPanel::openSpeechDialog()
 {
-    if (!m_window)
+    if (!m_context)
         return;
     QStringList kinds;
     for (const QString &kind : ModelKinds::ids())
-        if (m_window->modelStore()->dynamicModel(kind))
+        if (m_context->modelStore()->dynamicModel(kind))
             kinds << kind;
-    const auto media = m_window->media();
+    const auto media = m_context->media();
     SpeechDialog dialog(kinds, media ? media->frameRate : 25.0, this);
     dialog.setObjectName(QStringLiteral("speechDialog"));
     if (media)
@@ -553,40 +550,40 @@ void PreviewPanel::openSpeechDialog()
 Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcript, double frameRate,
                                 const QString &kind)
 {
-    if (!m_window)
+    if (!m_context)
         return nullptr;
-    const std::string aamPath = projectAamPath(m_window->document()->project());
+    const std::string aamPath = projectAamPath(m_context->document()->project());
     if (!m_aam && aamPath.empty()) {
-        ErrorReporter::report(m_window, tr("Faces for new speech need the project's appearance model."), QString(),
+        ErrorReporter::report(this, tr("Faces for new speech need the project's appearance model."), QString(),
                               tr("Build one with Faces ▸ Build AAM."));
         return nullptr;
     }
-    const auto model = m_window->modelStore()->dynamicModel(kind);
+    const auto model = m_context->modelStore()->dynamicModel(kind);
     if (!model) {
-        ErrorReporter::report(m_window, tr("No faces could be generated for this speech."), mediaPath,
+        ErrorReporter::report(this, tr("No faces could be generated for this speech."), mediaPath,
                               tr("Train a dynamic model in the Models panel first."));
         return nullptr;
     }
     SpeechToFaceRequest request;
     request.mediaPath = mediaPath.toStdString();
     request.aamPath = aamPath;
-    request.aam = m_aam ? m_aam : m_window->faces()->model();
+    request.aam = m_aam ? m_aam : m_context->modelStore()->aam();
     request.model = model;
     request.frameRate = frameRate;
-    request.pronunciations = m_window->document()->project().pronunciations;
+    request.pronunciations = m_context->document()->project().pronunciations;
     // The neutral frame: the first frame of the current sequence at its tracked pose, else the
     // mean face on grey.
-    const auto media = m_window->media();
+    const auto media = m_context->media();
     QImage background;
     Renderer sequence;
-    if (media && !media->frames.isEmpty() && m_window->currentSequence() >= 0) {
-        sequence = m_renderers.value(QString::fromStdString(m_window->document()->sequence(m_window->currentSequence()).id));
+    if (media && !media->frames.isEmpty() && m_context->currentSequence() >= 0) {
+        sequence = m_renderers.value(QString::fromStdString(m_context->document()->sequence(m_context->currentSequence()).id));
         if (sequence.renderer)
             background = media->frames.front();
     }
     const QString title = QFileInfo(mediaPath).fileName();
     const std::string words = transcript.toStdString();
-    Task *task = m_window->taskRunner()->start(
+    Task *task = m_context->taskRunner()->start(
         tr("Generate faces for %1").arg(title),
         [this, request, words, background, sequence, mediaPath, title, kind](Feedback &feedback) mutable
         -> TaskRunner::Commit {
@@ -616,7 +613,7 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
         });
     connect(task, &Task::finished, this, [this, task, mediaPath](Task::State state) {
         if (state == Task::State::Failed)
-            ErrorReporter::report(m_window, tr("No faces could be generated for this speech."), mediaPath,
+            ErrorReporter::report(this, tr("No faces could be generated for this speech."), mediaPath,
                                   task->errorMessage());
     });
     return task;
@@ -625,8 +622,8 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
 void PreviewPanel::showSpeech(std::shared_ptr<GeneratedFaces> faces, std::shared_ptr<const SpeechToFaceResult> result,
                               const QString &title)
 {
-    if (m_window)
-        m_window->playback()->pause();
+    if (m_context)
+        m_context->playback()->pause();
     m_speech = std::move(faces);
     m_speechResult = std::move(result);
     m_speechPath = QString::fromStdString(m_speechResult->mediaPath);
@@ -650,8 +647,8 @@ void PreviewPanel::showSequence()
 {
     if (!m_showingSpeech)
         return;
-    if (m_window)
-        m_window->playback()->pause();
+    if (m_context)
+        m_context->playback()->pause();
     m_showingSpeech = false;
     m_caption->setText(m_sequenceCaption);
     layoutPanels();

@@ -41,7 +41,7 @@ namespace lipsync::studio {
 
 class FrameView;
 class GeneratedFaces;
-class MainWindow;
+class StudioContext;
 class SpeechDialog;
 struct StudioActions;
 
@@ -52,8 +52,8 @@ public:
     PreviewPanel(const StudioActions &actions, QWidget *parent = nullptr);
     ~PreviewPanel() override;
 
-    // Follows `window`'s current sequence and frame, its player and its trained models.
-    void attach(MainWindow *window);
+    // Follows the context's current sequence and frame, its player and its models.
+    void attach(StudioContext *context);
 
     // The recorded frame the window shows now, and a caption for it.
     void setFrame(const QImage &image, const QString &caption);
@@ -127,7 +127,7 @@ private:
     void updateControls();
     void onLoopToggled(bool on);
 
-    MainWindow *m_window = nullptr;
+    StudioContext *m_context = nullptr;
     QLabel *m_caption;
     QString m_sequenceCaption; // the recorded sequence's caption, from setFrame
     QToolButton *m_play;

@@ -255,6 +255,13 @@ void TimelinePanel::attach(StudioContext *context)
             m_waveform->setCursorTime(t);
     });
     connect(context->taskRunner(), &TaskRunner::taskFinished, this, [this] { updateActions(); });
+    // The selected stretch is the context's (the preview's Loop selection plays it).
+    connect(m_waveform, &WaveformView::selectionChanged, this, [this] {
+        double a = 0, b = 0;
+        if (!m_waveform->selection(&a, &b))
+            a = b = 0.0;
+        m_context->setSelection(a, b);
+    });
     updateActions();
 }
 

@@ -12,6 +12,7 @@
 #include "app/ProjectFiles.h"
 #include "app/DemoProject.h"
 #include "app/StudioContext.h"
+#include "app/SequenceMedia.h"
 #include "annotate/FacesController.h"
 #include "app/ModelKinds.h"
 #include "app/SurfaceFormat.h"
@@ -113,7 +114,11 @@ private slots:
         QVERIFY(context.modelStore()->dynamicModel(QStringLiteral("hmm")));
         QVERIFY(!context.modelStore()->dynamicModel(QStringLiteral("hmm"))->compensatesVariance());
         QCOMPARE(context.undoStack()->undoText(), QStringLiteral("Train HMM-mean"));
-        context.setCurrentSequence(2, nullptr);
+        // The sequence's media as the window's loader gives it (frames only matter here).
+        auto media = std::make_shared<SequenceMedia>();
+        media->sequenceId = QString::fromStdString(context.document()->sequence(2).id);
+        media->frames.resize(context.document()->sequence(2).frameCount);
+        context.setCurrentSequence(2, media);
         context.announceSequenceLoaded();
         QCOMPARE(panel.trajectoryView()->seriesCount(), 2); // the recording and HMM-mean
         context.setCurrentFrame(30);
