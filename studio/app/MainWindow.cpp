@@ -111,9 +111,7 @@ MainWindow::MainWindow(QWidget *parent)
             m_details->showSequence(m_document->sequence(row), media()->mediaPath, *media());
     });
     connect(m_undo, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
-    // Speech generated in the Preview: the timeline shows its alignment, and its clicks move it.
-    connect(m_preview, &PreviewPanel::speechShownChanged, this,
-            [this] { m_timeline->showGeneratedSpeech(m_preview->speechResult()); });
+    // Speech generated in the Preview: the timeline's clicks move it.
     connect(waveformView(), &WaveformView::timeClicked, this, [this](double t) {
         if (m_timeline->isShowingGeneratedSpeech())
             m_preview->seekSpeech(t);
@@ -282,7 +280,7 @@ void MainWindow::createMenus()
     file->addAction(a.save);
     file->addAction(a.saveAs);
     file->addSeparator();
-    m_export = new ExportMenu(this, file);
+    m_export = new ExportMenu(m_context, file, this);
     file->addSeparator();
     file->addAction(a.quit);
     m_files = new ProjectFiles(m_document, this, recent, m_runner);

@@ -86,6 +86,15 @@ void StudioContext::setSelection(double start, double end)
 
 namespace lipsync::studio {
 
+void StudioContext::setShownSpeech(std::shared_ptr<const SpeechToFaceResult> speech, const QString &title)
+{
+    if (speech == m_speech)
+        return;
+    m_speech = std::move(speech);
+    m_speechTitle = m_speech ? title : QString();
+    emit shownSpeechChanged();
+}
+
 void StudioContext::showStatus(const QString &message, int milliseconds)
 {
     emit statusMessage(message, milliseconds);

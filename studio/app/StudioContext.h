@@ -12,6 +12,7 @@ class QUndoStack;
 
 namespace lipsync {
 class TaskRunner;
+struct SpeechToFaceResult;
 }
 
 namespace lipsync::studio {
@@ -54,6 +55,12 @@ public:
     // The stretch of time selected in the timeline (Loop selection plays it); false if none.
     bool selection(double *start, double *end) const;
     void setSelection(double start, double end); // end <= start: none
+
+    // Faces generated for new speech that the Preview shows instead of the current sequence
+    // (null: none): the timeline shows its alignment and Export writes it.
+    std::shared_ptr<const SpeechToFaceResult> shownSpeech() const { return m_speech; }
+    QString shownSpeechTitle() const { return m_speechTitle; }
+    void setShownSpeech(std::shared_ptr<const SpeechToFaceResult> speech, const QString &title);
     // A passing message for the user (the window's status bar), shown for `milliseconds`.
     void showStatus(const QString &message, int milliseconds = 0);
 
@@ -63,6 +70,7 @@ signals:
     // The frame shown changed (also when a sequence's media arrives).
     void currentFrameChanged(int frame);
     void statusMessage(const QString &message, int milliseconds);
+    void shownSpeechChanged();
 
 private:
     QUndoStack *m_undo;
@@ -74,6 +82,8 @@ private:
     int m_row = -1;
     int m_frame = 0;
     double m_selectionStart = 0.0, m_selectionEnd = 0.0;
+    std::shared_ptr<const SpeechToFaceResult> m_speech;
+    QString m_speechTitle;
 };
 
 } // namespace lipsync::studio

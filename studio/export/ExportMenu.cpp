@@ -1,11 +1,10 @@
 #include "export/ExportMenu.h"
 
 #include "app/ErrorReporter.h"
-#include "app/MainWindow.h"
 #include "app/ModelKinds.h"
 #include "app/ModelStore.h"
 #include "app/ProjectDocument.h"
-#include "preview/PreviewPanel.h"
+#include "app/StudioContext.h"
 
 #include "aam/AamModel.h"
 #include "aam/PtsFile.h"
@@ -22,7 +21,6 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QInputDialog>
-#include <QStatusBar>
 #include <QFileInfo>
 #include <QMenu>
 
@@ -88,8 +86,9 @@ TaskRunner::Work renderWork(std::shared_ptr<const SpeechToFaceResult> result, Re
 
 } // namespace
 
-ExportMenu::ExportMenu(MainWindow *window, QMenu *parentMenu)
-    : QObject(window), m_window(window), m_menu(parentMenu->addMenu(tr("E&xport")))
+ExportMenu::ExportMenu(StudioContext *context, QMenu *parentMenu, QWidget *dialogParent)
+    : QObject(dialogParent), m_context(context), m_dialogParent(dialogParent),
+      m_menu(parentMenu->addMenu(tr("E&xport")))
 {
     const std::array<QString, 8> titles = {
         tr("Generated &Video%1 (MP4)…").arg(QString()), tr("Real and Generated &Side by Side%1 (MP4)…").arg(QString()),
@@ -107,14 +106,14 @@ ExportMenu::ExportMenu(MainWindow *window, QMenu *parentMenu)
     connect(m_menu, &QMenu::aboutToShow, this, &ExportMenu::updateActions);
     m_modelPrompt = [this](const QStringList &kinds, const QStringList &names) {
         bool ok = false;
-        const QString name = QInputDialog::getItem(m_window, tr("Export"), tr("Which trained model?"), names, 0,
+        const QString name = QInputDialog::getItem(m_dialogParent, tr("Export"), tr("Which trained model?"), names, 0,
                                                    false, &ok);
         return ok ? kinds.value(names.indexOf(name)) : QString();
     };
     m_prompt = [this](const PathRequest &request) {
         if (request.filter.isEmpty())
-            return QFileDialog::getExistingDirectory(m_window, request.title, request.suggestedPath);
-        return QFileDialog::getSaveFileName(m_window, request.title, request.suggestedPath, request.filter);
+            return QFileDialog::getExistingDirectory(m_dialogParent, request.title, request.suggestedPath);
+        return QFileDialog::getSaveFileName(m_dialogParent, request.title, request.suggestedPath, request.filter);
     };
 }
 
@@ -125,13 +124,13 @@ QAction *ExportMenu::action(Kind kind) const
 
 void ExportMenu::updateActions()
 {
-    const ProjectDocument *document = m_window->document();
-    const int row = m_window->currentSequence();
+    const ProjectDocument *document = m_context->document();
+    const int row = m_context->currentSequence();
     const bool hasSequence = row >= 0 && row < document->sequenceCount();
     const Project &project = document->project();
     // While the Preview shows faces for new speech, the generated exports write those.
-    const auto speech = m_window->preview()->speechResult();
-    const QString of = speech ? tr(" of %1").arg(m_window->preview()->speechTitle()) : QString();
+    const auto speech = m_context->shownSpeech();
+    const QString of = speech ? tr(" of %1").arg(m_context->shownSpeechTitle()) : QString();
     action(Kind::Video)->setText(tr("Generated &Video%1 (MP4)…").arg(of));
     action(Kind::SideBySide)->setText(tr("Real and Generated &Side by Side%1 (MP4)…").arg(of));
     action(Kind::Images)->setText(tr("Generated &Frames%1 (PNG)…").arg(of));
@@ -148,9 +147,9 @@ void ExportMenu::updateActions()
 
 Task *ExportMenu::trigger(Kind kind)
 {
-    const ProjectDocument *document = m_window->document();
-    const int row = m_window->currentSequence();
-    const auto speech = isGenerated(kind) ? m_window->preview()->speechResult() : nullptr;
+    const ProjectDocument *document = m_context->document();
+    const int row = m_context->currentSequence();
+    const auto speech = isGenerated(kind) ? m_context->shownSpeech() : nullptr;
     const QString stem = speech ? QFileInfo(QString::fromStdString(speech->mediaPath)).completeBaseName()
                          : row >= 0 && row < document->sequenceCount()
                              ? QString::fromStdString(document->sequence(row).id)
@@ -200,17 +199,17 @@ Task *ExportMenu::trigger(Kind kind)
 
 Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelKind)
 {
-    const ProjectDocument *document = m_window->document();
+    const ProjectDocument *document = m_context->document();
     const Project &project = document->project();
-    const int row = m_window->currentSequence();
+    const int row = m_context->currentSequence();
     const bool projectWide = kind == Kind::Aam || kind == Kind::Model;
     const QString what = tr("Cannot export");
     if (!projectWide && (row < 0 || row >= document->sequenceCount())) {
-        ErrorReporter::report(m_window, what, path, tr("no sequence is selected"));
+        ErrorReporter::report(m_dialogParent, what, path, tr("no sequence is selected"));
         return nullptr;
     }
     // Everything the worker needs is copied here, on the GUI thread: it never reads the document.
-    ModelStore *store = m_window->modelStore();
+    ModelStore *store = m_context->modelStore();
     const Sequence sequence = projectWide ? Sequence() : document->sequence(row);
     const ModelReference *model = dynamicModel(project, modelKind);
     const ModelReference *aam = project.model("aam");
@@ -224,10 +223,10 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
     case Kind::Images: {
         RenderOptions options;
         options.sideBySide = kind == Kind::SideBySide;
-        if (const auto speech = m_window->preview()->speechResult()) {
-            const QString name = m_window->preview()->speechTitle();
+        if (const auto speech = m_context->shownSpeech()) {
+            const QString name = m_context->shownSpeechTitle();
             if (options.sideBySide && !speech->hasVideo) {
-                ErrorReporter::report(m_window, what, path,
+                ErrorReporter::report(m_dialogParent, what, path,
                                       tr("%1 has no video to put beside the generated face").arg(name));
                 return nullptr;
             }
@@ -242,7 +241,7 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
         const auto aamModel = store->aam(&problem);
         const auto dynamic = model ? store->dynamicModel(QString::fromStdString(model->kind), &problem) : nullptr;
         if (!dynamic || !aamModel) {
-            ErrorReporter::report(m_window, what, path,
+            ErrorReporter::report(m_dialogParent, what, path,
                                   problem.isEmpty() ? tr("the project has no trained dynamic model and AAM (train one "
                                                          "in the Models panel)")
                                                     : problem);
@@ -274,7 +273,7 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
     }
     case Kind::Features:
         if (sequence.features.rows() == 0) {
-            ErrorReporter::report(m_window, what, path, tr("%1 has no face features (track it first)").arg(id));
+            ErrorReporter::report(m_dialogParent, what, path, tr("%1 has no face features (track it first)").arg(id));
             return nullptr;
         }
         title = tr("Export the features of %1").arg(id);
@@ -285,7 +284,7 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
         break;
     case Kind::Alignment:
         if (sequence.phones.isEmpty()) {
-            ErrorReporter::report(m_window, what, path, tr("%1 has no phone alignment (align it first)").arg(id));
+            ErrorReporter::report(m_dialogParent, what, path, tr("%1 has no phone alignment (align it first)").arg(id));
             return nullptr;
         }
         title = tr("Export the alignment of %1").arg(id);
@@ -301,7 +300,7 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
         break;
     case Kind::Landmarks:
         if (sequence.landmarks.empty()) {
-            ErrorReporter::report(m_window, what, path, tr("%1 has no landmarks").arg(id));
+            ErrorReporter::report(m_dialogParent, what, path, tr("%1 has no landmarks").arg(id));
             return nullptr;
         }
         title = tr("Export the landmarks of %1").arg(id);
@@ -324,7 +323,7 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
     case Kind::Model: {
         const ModelReference *reference = kind == Kind::Aam ? aam : model;
         if (!reference) {
-            ErrorReporter::report(m_window, what, path,
+            ErrorReporter::report(m_dialogParent, what, path,
                                   kind == Kind::Aam ? tr("the project has no AAM")
                                                     : tr("the project has no trained dynamic model"));
             return nullptr;
@@ -350,20 +349,20 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
                 };
         }
         if (!work) {
-            ErrorReporter::report(m_window, what, QString::fromStdString(project.resolve(reference->file)), problem);
+            ErrorReporter::report(m_dialogParent, what, QString::fromStdString(project.resolve(reference->file)), problem);
             return nullptr;
         }
         break;
     }
     }
-    Task *task = m_window->taskRunner()->start(title, std::move(work));
+    Task *task = m_context->taskRunner()->start(title, std::move(work));
     connect(task, &Task::finished, this, [this, task, path, what](Task::State state) {
         if (state == Task::State::Finished) {
-            m_window->statusBar()->showMessage(tr("Exported to %1").arg(QDir::toNativeSeparators(path)), 15000);
+            m_context->showStatus(tr("Exported to %1").arg(QDir::toNativeSeparators(path)), 15000);
             emit exported(path);
         }
         else if (state == Task::State::Failed)
-            ErrorReporter::report(m_window, what, path, task->errorMessage());
+            ErrorReporter::report(m_dialogParent, what, path, task->errorMessage());
     });
     return task;
 }

@@ -14,6 +14,7 @@
 
 class QAction;
 class QMenu;
+class QWidget;
 
 namespace lipsync {
 class Task;
@@ -21,7 +22,7 @@ class Task;
 
 namespace lipsync::studio {
 
-class MainWindow;
+class StudioContext;
 
 class ExportMenu : public QObject
 {
@@ -44,7 +45,8 @@ public:
     // `kinds` ("dpds", ...) with their user-visible `names`; returns a kind, or empty to cancel.
     using ModelPrompt = std::function<QString(const QStringList &kinds, const QStringList &names)>;
 
-    ExportMenu(MainWindow *window, QMenu *parentMenu);
+    // Adds File ▸ Export to `parentMenu`; its dialogs and messages open over `dialogParent`.
+    ExportMenu(StudioContext *context, QMenu *parentMenu, QWidget *dialogParent);
 
     QMenu *menu() const { return m_menu; }
     QAction *action(Kind kind) const;
@@ -69,7 +71,8 @@ signals:
 private:
     void updateActions();
 
-    MainWindow *m_window;
+    StudioContext *m_context;
+    QWidget *m_dialogParent;
     QMenu *m_menu;
     QList<QAction *> m_actions; // in Kind order
     PathPrompt m_prompt;

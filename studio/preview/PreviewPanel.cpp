@@ -149,7 +149,7 @@ void PreviewPanel::attach(StudioContext *context)
         updateControls();
         showCurrent();
         if (wasSpeech)
-            emit speechShownChanged();
+            m_context->setShownSpeech(speechResult(), m_speechTitle);
     });
     // New or changed models, edited phones: generate again (the poses stay).
     auto invalidate = [this] {
@@ -177,7 +177,7 @@ void PreviewPanel::attach(StudioContext *context)
         const bool wasSpeech = std::exchange(m_showingSpeech, false);
         layoutPanels();
         if (wasSpeech)
-            emit speechShownChanged();
+            m_context->setShownSpeech(speechResult(), m_speechTitle);
     });
     connect(context->document(), &ProjectDocument::sequenceChanged, this, [this, invalidate](int row) {
         if (row == m_context->currentSequence())
@@ -633,7 +633,7 @@ void PreviewPanel::showSpeech(std::shared_ptr<GeneratedFaces> faces, std::shared
     layoutPanels();
     updateControls();
     showCurrent();
-    emit speechShownChanged();
+    m_context->setShownSpeech(speechResult(), m_speechTitle);
     emit facesReady();
 }
 
@@ -655,7 +655,7 @@ void PreviewPanel::showSequence()
     updateControls();
     showCurrent();
     prepare();
-    emit speechShownChanged();
+    m_context->setShownSpeech(speechResult(), m_speechTitle);
 }
 
 } // namespace lipsync::studio

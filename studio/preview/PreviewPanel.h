@@ -104,8 +104,6 @@ public slots:
 signals:
     // Generated faces for the current sequence (or new speech) are shown.
     void facesReady();
-    // New speech is shown, or the current sequence again (speechResult()).
-    void speechShownChanged();
     // The dialog is about to run modally (tests fill it in).
     void speechDialogOpened(lipsync::studio::SpeechDialog *dialog);
 

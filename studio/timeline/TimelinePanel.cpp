@@ -255,6 +255,7 @@ void TimelinePanel::attach(StudioContext *context)
             m_waveform->setCursorTime(t);
     });
     connect(context->taskRunner(), &TaskRunner::taskFinished, this, [this] { updateActions(); });
+    connect(context, &StudioContext::shownSpeechChanged, this, [this] { showGeneratedSpeech(m_context->shownSpeech()); });
     // The selected stretch is the context's (the preview's Loop selection plays it).
     connect(m_waveform, &WaveformView::selectionChanged, this, [this] {
         double a = 0, b = 0;
