@@ -23,6 +23,38 @@ using namespace lipsync::cli;
 
 namespace {
 
+// Why a PCA of the build kept the modes it did, in words.
+QString modeReason(const AamModeChoice &c, double fraction, int cap, int images)
+{
+    switch (c.limit) {
+    case PcaLimit::Variance:
+        return QStringLiteral("%1 % of the variance reached").arg(100.0 * fraction, 0, 'g', 3);
+    case PcaLimit::Cap:
+        return QStringLiteral("capped at %1 modes (%2 % of the variance)")
+            .arg(cap)
+            .arg(100.0 * c.retainedVariance, 0, 'f', 1);
+    case PcaLimit::Samples:
+        return QStringLiteral("%1 training images allow at most %2 modes (%3 % of the variance)")
+            .arg(images)
+            .arg(c.modes)
+            .arg(100.0 * c.retainedVariance, 0, 'f', 1);
+    case PcaLimit::Rank:
+        break;
+    }
+    return QStringLiteral("the remaining modes have no variance (%1 % of the variance)")
+        .arg(100.0 * c.retainedVariance, 0, 'f', 1);
+}
+
+QJsonObject modeChoiceJson(const AamModeChoice &c, double fraction, int cap, int images)
+{
+    return QJsonObject{{"modes", c.modes},
+                       {"variance_fraction", fraction},
+                       {"retained_variance", c.retainedVariance},
+                       {"limit", pcaLimitName(c.limit)},
+                       {"cap", cap > 0 ? QJsonValue(cap) : QJsonValue()},
+                       {"reason", modeReason(c, fraction, cap, images)}};
+}
+
 int runAamBuild(const QStringList &args)
 {
     const Arguments a(args);
@@ -78,7 +110,8 @@ int runAamBuild(const QStringList &args)
     const bool json = a.flag("json");
     if (!json)
         feedback.onStatus = [](const std::string &s) { std::fprintf(stderr, "aam build: %s\n", s.c_str()); };
-    const AamModel model = buildAam(std::move(examples), options, feedback, &warnings);
+    AamBuildReport report;
+    const AamModel model = buildAam(std::move(examples), options, feedback, &warnings, &report);
     model.save(a.value("out").toStdString());
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -96,6 +129,13 @@ int runAamBuild(const QStringList &args)
                     {"shape_modes", model.shapeModes()},
                     {"texture_modes", model.textureModes()},
                     {"combined_modes", model.combinedModes()},
+                    {"modes",
+                     QJsonObject{{"shape", modeChoiceJson(report.shape, options.shapeVariance, 0,
+                                                          model.trainingImages)},
+                                 {"texture", modeChoiceJson(report.texture, options.textureVariance, 0,
+                                                            model.trainingImages)},
+                                 {"combined", modeChoiceJson(report.combined, options.combinedVariance,
+                                                             options.maxCombinedModes, model.trainingImages)}}},
                     {"texture_pixels", model.warp(0).pixelCount()},
                     {"levels", int(model.levels.size())},
                     {"mirrored", options.mirror},
@@ -107,9 +147,14 @@ int runAamBuild(const QStringList &args)
     if (json)
         printJson(out);
     else
-        std::printf("built %s from %d images: %d shape, %d texture, %d combined modes (%s)\n",
+        std::printf("built %s from %d images: %d shape, %d texture, %d combined modes (%s)\n"
+                    "  combined: %s\n  shape: %s\n  texture: %s\n",
                     qPrintable(a.value("out")), model.trainingImages, model.shapeModes(),
-                    model.textureModes(), model.combinedModes(), model.identifier.c_str());
+                    model.textureModes(), model.combinedModes(), model.identifier.c_str(),
+                    qPrintable(modeReason(report.combined, options.combinedVariance,
+                                          options.maxCombinedModes, model.trainingImages)),
+                    qPrintable(modeReason(report.shape, options.shapeVariance, 0, model.trainingImages)),
+                    qPrintable(modeReason(report.texture, options.textureVariance, 0, model.trainingImages)));
     return 0;
 }
 

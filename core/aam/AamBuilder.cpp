@@ -51,6 +51,14 @@ std::string checkExample(const AamTrainingExample &e)
     return {};
 }
 
+// The combined PCA runs on data that is already centred (uncentred PCA, n-dimensional span), so
+// its last mode has no variance; n-1 modes there are the images' limit as for the others.
+AamModeChoice aamModeChoiceOf(const Pca &pca, int samples)
+{
+    const bool imageBound = pca.limit == PcaLimit::Rank && pca.modes() >= samples - 1;
+    return {pca.modes(), pca.retainedFraction(), imageBound ? PcaLimit::Samples : pca.limit};
+}
+
 } // namespace
 
 std::vector<AamTrainingExample> loadTrainingDirectory(const std::string &directory,
@@ -87,7 +95,7 @@ std::vector<AamTrainingExample> loadTrainingDirectory(const std::string &directo
 }
 
 AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOptions &options,
-                  Feedback &feedback, std::vector<std::string> *warnings)
+                  Feedback &feedback, std::vector<std::string> *warnings, AamBuildReport *report)
 {
     auto warn = [&](const std::string &w) {
         if (warnings)
@@ -246,6 +254,8 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
     const Pca combined = computePca(joint, options.combinedVariance, options.maxCombinedModes, false);
     model.combinedBasis = combined.basis;
     model.combinedVariances = combined.variances;
+    if (report)
+        *report = {aamModeChoiceOf(shapePca, n), aamModeChoiceOf(texturePca, n), aamModeChoiceOf(combined, n)};
     // 5. Detector calibration: the mean of the training shapes in the frame of the detector's
     //    keypoints, expressed where those keypoints sit on the mean shape.
     if (options.detector) {

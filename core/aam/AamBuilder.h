@@ -58,6 +58,20 @@ struct AamBuildOptions
     }
 };
 
+// How many modes one PCA of the build kept, the fraction of its variance they explain, and what
+// stopped it (the variance fraction, the mode cap, or the number of training images).
+struct AamModeChoice
+{
+    int modes = 0;
+    double retainedVariance = 0.0;
+    PcaLimit limit = PcaLimit::Rank;
+};
+
+struct AamBuildReport
+{
+    AamModeChoice shape, texture, combined;
+};
+
 // Images with a .pts of the same stem (68 or 23 points) in `directory`, sorted by name. Throws
 // lipsync::Error if the directory does not exist or holds no labelled image. `warnings` receives
 // one line per image without landmarks or with an unreadable .pts.
@@ -67,7 +81,9 @@ std::vector<AamTrainingExample> loadTrainingDirectory(const std::string &directo
 // Builds the model. Examples that cannot be used (unreadable image, points outside the image,
 // degenerate shape) are skipped with a line in `warnings`. Throws lipsync::Error when fewer than
 // 3 usable examples remain, or Canceled when `feedback` is canceled.
+// `report`, when given, receives the mode choices of the shape, texture and combined PCAs.
 AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOptions &options,
-                  Feedback &feedback, std::vector<std::string> *warnings = nullptr);
+                  Feedback &feedback, std::vector<std::string> *warnings = nullptr,
+                  AamBuildReport *report = nullptr);
 
 } // namespace lipsync

@@ -122,6 +122,21 @@ private slots:
         QVERIFY((g2 - Eigen::MatrixXd::Identity(wide.modes(), wide.modes())).cwiseAbs().maxCoeff() < 1e-9);
         // Variance retained chooses fewer modes for a lower fraction.
         QVERIFY(computePca(data, 0.5).modes() < computePca(data, 0.95).modes());
+        // What stopped it: the fraction, the cap, the samples (n-1 modes), or no variance left.
+        const Pca reached = computePca(data, 0.95);
+        QCOMPARE(reached.limit, PcaLimit::Variance);
+        QVERIFY(reached.retainedFraction() >= 0.95);
+        QVERIFY(reached.retainedFraction() - reached.variances.tail(1)[0] / reached.totalVariance < 0.95);
+        const Pca capped = computePca(data, 0.95, 2);
+        QCOMPARE(capped.modes(), 2);
+        QCOMPARE(capped.limit, PcaLimit::Cap);
+        QVERIFY(capped.retainedFraction() < 0.95);
+        QCOMPARE(computePca(data, 1.0).limit, PcaLimit::Rank); // all 30 dimensions kept
+        const Pca few = computePca(data.leftCols(6), 1.0);
+        QCOMPARE(few.modes(), 5);
+        QCOMPARE(few.limit, PcaLimit::Samples);
+        QCOMPARE(std::string(pcaLimitName(few.limit)), std::string("samples"));
+        QCOMPARE(computePca(data, 1.0, 30).limit, PcaLimit::Rank); // a cap that does not bind
     }
 
     void warpRoundTrip()
