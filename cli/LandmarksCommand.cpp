@@ -3,7 +3,8 @@
 // the template shape placed on the detection.
 #include "Command.h"
 
-#include "aam/AamFitter.h"
+#include "aam/AamModel.h"
+#include "aam/AutoLandmarks.h"
 #include "aam/FaceDetector.h"
 #include "aam/LandmarkScheme.h"
 #include "aam/PtsFile.h"
@@ -43,7 +44,7 @@ int runLandmarksDetect(const QStringList &args)
                     2);
     const std::string input = a.positional().front().toStdString();
     const QString method = a.value("method", "auto");
-    if (!QStringList{"auto", "dlib", "aam", "template"}.contains(method))
+    if (AutoLandmarkMethod parsed; !parseAutoLandmarkMethod(method.toStdString(), parsed))
         return fail("landmarks detect: --method must be auto, dlib, aam or template", 2);
     if (method == "aam" && !a.has("model"))
         return fail("landmarks detect: --method aam needs --model MODEL", 2);
@@ -83,28 +84,11 @@ int runLandmarksDetect(const QStringList &args)
     std::optional<AamModel> model;
     if (a.has("model"))
         model = AamModel::load(a.value("model").toStdString());
-
-    Eigen::VectorXd shape;
-    QString used;
-    if ((method == "auto" || method == "dlib") && detector.hasDlib()) {
-        const Eigen::VectorXd ibug = detector.dlibLandmarks(image, face);
-        if (ibug.size() == 136) {
-            shape = mapIbug68To23(ibug);
-            used = "dlib";
-        }
-    }
-    if (method == "dlib" && shape.size() == 0)
-        return fail("landmarks detect: dlib's shape predictor is not available "
-                    "(install libdlib-data)");
-    if (shape.size() == 0 && model && method != "template") {
-        const AamFitter fitter(*model);
-        shape = fitter.fit(image, initialShapeFromDetection(*model, face)).shape;
-        used = "aam";
-    }
-    if (shape.size() == 0) {
-        shape = initialShapeFromDetection(templateShape(), face);
-        used = "template";
-    }
+    AutoLandmarkMethod how = AutoLandmarkMethod::Auto;
+    parseAutoLandmarkMethod(method.toStdString(), how);
+    const AutoLandmarks found = detectAutoLandmarks(image, face, detector, how, model ? &*model : nullptr);
+    const Eigen::VectorXd &shape = found.shape;
+    const QString used = QString::fromStdString(found.method);
     const std::string out = a.value("out").toStdString();
     writePtsFile(out, shape);
 
