@@ -1,0 +1,287 @@
+// `lipsync aam select --media DIR|FILES --count N --out DIR`: frames to train a person-specific
+// AAM on, chosen to differ from each other (core/aam/FrameSelection: farthest-point sampling of
+// the detected faces' appearance), written as images with automatic 23 points (.pts beside each,
+// as `landmarks detect` places them), so that `aam build --images DIR` builds from them. The
+// frames whose points an AAM of all the picks disagrees with most are listed first for review.
+#include "Command.h"
+
+#include "aam/AamBuilder.h"
+#include "aam/AamFitter.h"
+#include "aam/AutoLandmarks.h"
+#include "aam/FaceDetector.h"
+#include "aam/FrameSelection.h"
+#include "aam/LandmarkScheme.h"
+#include "aam/PtsFile.h"
+#include "io/VideoReader.h"
+#include "tasks/Feedback.h"
+#include "util/Error.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonObject>
+#include <QSet>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <optional>
+
+using namespace lipsync;
+using namespace lipsync::cli;
+
+namespace {
+
+// Detections below this score are not candidates (flat grey frames before a keyframe, blur).
+constexpr double kMinSelectScore = 0.8;
+// Frames listed for review in the text output.
+constexpr int kReviewLines = 10;
+
+struct SelectCandidate
+{
+    int source = 0;
+    int frame = 0;
+    FaceDetection face;
+};
+
+struct SelectedFrame
+{
+    SelectCandidate candidate;
+    double distance = 0.0; // farthest-point distance when picked
+    QString image, pts, method;
+    cv::Mat pixels;
+    Eigen::VectorXd shape;
+    double disagreement = -1.0;
+};
+
+QStringList selectSources(const Arguments &a)
+{
+    QStringList sources;
+    if (a.has("media")) {
+        const QDir dir(a.value("media"));
+        if (!dir.exists())
+            throw Error("directory does not exist", a.value("media").toStdString(), "--media");
+        for (const QString &name : dir.entryList({"*.mpg", "*.mp4", "*.mov", "*.avi", "*.mkv"}, QDir::Files,
+                                                 QDir::Name))
+            sources << dir.filePath(name);
+    }
+    sources << a.positional();
+    return sources;
+}
+
+// NME between each frame's automatic points and an AAM built from all the frames fitted from
+// them (finest level): large where the points disagree with what the other frames say the face
+// looks like — a misplaced point, or an appearance no other frame shares.
+void reviewSelection(std::vector<SelectedFrame> &frames, std::vector<std::string> &warnings)
+{
+    std::vector<AamTrainingExample> examples;
+    for (const SelectedFrame &f : frames)
+        examples.push_back({f.image.toStdString(), {}, f.pixels.clone(), f.shape});
+    Feedback feedback;
+    const AamModel model = buildAam(examples, AamBuildOptions{}, feedback, &warnings);
+    const AamFitter fitter(model);
+    AamFitOptions options;
+    options.coarsestLevel = 0;
+    for (SelectedFrame &f : frames)
+        f.disagreement = normalisedMeanError(fitter.fit(f.pixels, f.shape, options).shape, f.shape);
+}
+
+int runAamSelect(const QStringList &args)
+{
+    const Arguments a(args);
+    if (const QStringList bad = a.unknown({"media", "count", "step", "out", "method", "model", "dimensions",
+                                           "no-review", "json"});
+        !bad.isEmpty())
+        return fail("aam select: unknown option " + bad.join(", "), 2);
+    const QString usage = "usage: lipsync aam select (--media DIR | VIDEO...) --out DIR [--count 150] "
+                          "[--step 5] [--method auto|dlib|aam|template] [--model MODEL] "
+                          "[--dimensions 24] [--no-review] [--json]";
+    if (!a.has("out") || (!a.has("media") && a.positional().isEmpty()))
+        return fail(usage, 2);
+    bool ok = true, good = true;
+    const int count = a.value("count", "150").toInt(&good);
+    ok = ok && good && count >= 1;
+    const int step = a.value("step", "5").toInt(&good);
+    ok = ok && good && step >= 1;
+    const int dimensions = a.value("dimensions", "24").toInt(&good);
+    ok = ok && good && dimensions >= 1;
+    if (!ok)
+        return fail("aam select: --count, --step and --dimensions must be whole numbers >= 1", 2);
+    AutoLandmarkMethod method = AutoLandmarkMethod::Auto;
+    if (!parseAutoLandmarkMethod(a.value("method", "auto").toStdString(), method))
+        return fail("aam select: --method must be auto, dlib, aam or template", 2);
+    if (method == AutoLandmarkMethod::Aam && !a.has("model"))
+        return fail("aam select: --method aam needs --model MODEL", 2);
+    const bool json = a.flag("json");
+    const auto started = std::chrono::steady_clock::now();
+
+    const QStringList sources = selectSources(a);
+    if (sources.isEmpty())
+        throw Error("no video files (*.mpg, *.mp4, *.mov, *.avi, *.mkv)", a.value("media").toStdString());
+    std::optional<AamModel> model;
+    if (a.has("model"))
+        model = AamModel::load(a.value("model").toStdString());
+    FaceDetectorPaths paths;
+    paths.useDlib = method == AutoLandmarkMethod::Auto || method == AutoLandmarkMethod::Dlib;
+    FaceDetector detector(paths);
+    if (!detector.hasYunet() && !detector.hasHaar())
+        return fail("aam select: no face detector available (YuNet model or Haar cascade)");
+
+    // 1. Candidates: every step-th frame of every clip with a confident face, described by its
+    //    appearance.
+    std::vector<SelectCandidate> candidates;
+    std::vector<Eigen::VectorXd> descriptors;
+    std::vector<std::string> warnings;
+    for (int s = 0; s < sources.size(); ++s) {
+        VideoReader video(sources[s].toStdString());
+        for (int t = step / 2; t < video.frameCount(); t += step) {
+            const cv::Mat frame = video.frame(t);
+            const std::vector<FaceDetection> faces = detector.detect(frame);
+            if (faces.empty() || faces.front().score < kMinSelectScore)
+                continue;
+            // With dlib, the face is placed in the descriptor by its eye points and its mouth
+            // and jaw points join the descriptor; YuNet's keypoints alone are a few pixels off.
+            Eigen::VectorXd points;
+            if (detector.hasDlib()) {
+                const Eigen::VectorXd ibug = detector.dlibLandmarks(frame, faces.front());
+                if (ibug.size() != 2 * scheme23::kIbugPointCount)
+                    continue;
+                points = mapIbug68To23(ibug);
+            }
+            candidates.push_back({s, t, faces.front()});
+            descriptors.push_back(faceAppearanceDescriptor(frame, faces.front(), points));
+        }
+        if (!json)
+            std::fprintf(stderr, "\raam select: %d/%d clips, %zu candidate frames", int(s + 1),
+                         int(sources.size()), candidates.size());
+    }
+    if (!json)
+        std::fprintf(stderr, "\n");
+    if (candidates.empty())
+        return fail("aam select: no face found in any candidate frame");
+    Eigen::MatrixXd descriptorMatrix(descriptors.front().size(), Eigen::Index(descriptors.size()));
+    for (size_t i = 0; i < descriptors.size(); ++i)
+        descriptorMatrix.col(Eigen::Index(i)) = descriptors[i];
+    std::vector<int> groups, excluded;
+    for (const SelectCandidate &c : candidates)
+        groups.push_back(c.source);
+    const DiverseSelection selection = selectDiverseFrames(descriptorMatrix, count, dimensions, groups, &excluded);
+
+    // 2. Write the picks with their automatic points, clip by clip.
+    std::vector<SelectedFrame> frames;
+    for (size_t k = 0; k < selection.picks.size(); ++k) {
+        SelectedFrame f;
+        f.candidate = candidates[size_t(selection.picks[k])];
+        f.distance = selection.distances[k];
+        frames.push_back(std::move(f));
+    }
+    std::stable_sort(frames.begin(), frames.end(), [](const SelectedFrame &x, const SelectedFrame &y) {
+        return std::pair(x.candidate.source, x.candidate.frame) < std::pair(y.candidate.source, y.candidate.frame);
+    });
+    const QDir out(a.value("out"));
+    if (!QDir().mkpath(out.path()))
+        throw Error("cannot create the folder", out.path().toStdString(), "--out");
+    std::map<QString, int> methods;
+    std::optional<VideoReader> video;
+    for (SelectedFrame &f : frames) {
+        const QString source = sources[f.candidate.source];
+        if (!video || video->path() != source.toStdString())
+            video.emplace(source.toStdString());
+        f.pixels = video->frame(f.candidate.frame);
+        const AutoLandmarks points =
+            detectAutoLandmarks(f.pixels, f.candidate.face, detector, method, model ? &*model : nullptr);
+        f.shape = points.shape;
+        f.method = QString::fromStdString(points.method);
+        ++methods[f.method];
+        const QString stem = QStringLiteral("%1_%2").arg(QFileInfo(source).completeBaseName()).arg(f.candidate.frame);
+        f.image = out.filePath(stem + ".png");
+        f.pts = out.filePath(stem + ".pts");
+        if (!cv::imwrite(f.image.toStdString(), f.pixels))
+            throw Error("cannot write the image", f.image.toStdString());
+        writePtsFile(f.pts.toStdString(), f.shape);
+    }
+
+    // 3. Review order.
+    const bool review = !a.flag("no-review") && frames.size() >= 3;
+    if (review)
+        reviewSelection(frames, warnings);
+    std::vector<const SelectedFrame *> worstFirst;
+    for (const SelectedFrame &f : frames)
+        worstFirst.push_back(&f);
+    std::stable_sort(worstFirst.begin(), worstFirst.end(),
+                     [](const SelectedFrame *x, const SelectedFrame *y) { return x->disagreement > y->disagreement; });
+
+    for (const auto &w : warnings)
+        std::fprintf(stderr, "lipsync: warning: %s\n", w.c_str());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    QSet<int> clipsUsed;
+    QJsonArray selected, reviewList;
+    for (const SelectedFrame &f : frames) {
+        clipsUsed.insert(f.candidate.source);
+        selected.append(QJsonObject{{"image", f.image},
+                                    {"pts", f.pts},
+                                    {"source", sources[f.candidate.source]},
+                                    {"frame", f.candidate.frame},
+                                    {"method", f.method},
+                                    {"distance", std::isfinite(f.distance) ? QJsonValue(f.distance) : QJsonValue()},
+                                    {"disagreement", review ? QJsonValue(f.disagreement) : QJsonValue()}});
+    }
+    if (review)
+        for (const SelectedFrame *f : worstFirst)
+            reviewList.append(QJsonObject{{"image", f->image}, {"disagreement", f->disagreement}});
+    QJsonObject methodCounts;
+    for (const auto &[name, n] : methods)
+        methodCounts[name] = n;
+    QJsonArray warningArray;
+    for (const auto &w : warnings)
+        warningArray.append(QString::fromStdString(w));
+    QJsonArray isolatedList;
+    for (int i : excluded)
+        isolatedList.append(QStringLiteral("%1 frame %2")
+                                .arg(QFileInfo(sources[candidates[size_t(i)].source]).fileName())
+                                .arg(candidates[size_t(i)].frame));
+    if (json) {
+        printJson(QJsonObject{{"out", a.value("out")},
+                              {"sources", int(sources.size())},
+                              {"clips_used", int(clipsUsed.size())},
+                              {"candidates", int(candidates.size())},
+                              {"isolated", isolatedList},
+                              {"count", int(frames.size())},
+                              {"step", step},
+                              {"dimensions", dimensions},
+                              {"detector", QString::fromStdString(detector.available())},
+                              {"methods", methodCounts},
+                              {"selected", selected},
+                              {"review", reviewList},
+                              {"seconds", seconds},
+                              {"warnings", warningArray}});
+        return 0;
+    }
+    std::printf("selected %d of %d candidate frames from %d of %d clips -> %s (", int(frames.size()),
+                int(candidates.size()), int(clipsUsed.size()), int(sources.size()), qPrintable(a.value("out")));
+    bool first = true;
+    for (const auto &[name, n] : methods) {
+        std::printf("%s%s %d", first ? "" : ", ", qPrintable(name), n);
+        first = false;
+    }
+    std::printf(")\n");
+    if (!excluded.empty())
+        std::printf("left out %d candidate frames unlike any frame of another clip (e.g. %s)\n",
+                    int(excluded.size()), qPrintable(isolatedList.first().toString()));
+    if (review) {
+        std::printf("review first (NME between the automatic points and an AAM of all the frames):\n");
+        for (size_t i = 0; i < worstFirst.size() && int(i) < kReviewLines; ++i)
+            std::printf("  %.4f  %s\n", worstFirst[i]->disagreement, qPrintable(worstFirst[i]->image));
+    }
+    return 0;
+}
+
+const CommandRegistration selectRegistration{
+    "aam select", "pick diverse video frames to label and auto-landmark them (--media DIR --out DIR)",
+    &runAamSelect};
+
+} // namespace
