@@ -66,8 +66,9 @@ int runAamBuild(const QStringList &args)
         return fail("aam build: unknown option " + bad.join(", "), 2);
     if (!a.has("images") || !a.has("out"))
         return fail("usage: lipsync aam build --images DIR --out MODEL [--combined-variance F] "
-                    "[--shape-variance F] [--texture-variance F] [--max-modes N] "
-                    "[--eye-distance PX] [--levels N] [--mirror] [--features grey|igo] [--generic] "
+                    "[--shape-variance F] [--texture-variance F] [--max-modes N (32; 0: no cap)] "
+                    "[--eye-distance PX (0: automatic)] [--levels N (0: automatic)] [--mirror] "
+                    "[--features grey|igo] [--generic] "
                     "[--no-detector] [--json]",
                     2);
     // --generic: the cross-validated settings for in-the-wild faces; options given explicitly win.
@@ -84,7 +85,7 @@ int runAamBuild(const QStringList &args)
     number("texture-variance", options.textureVariance);
     number("combined-variance", options.combinedVariance);
     number("eye-distance", options.referenceEyeDistance);
-    double maxModes = 0, levels = options.levels;
+    double maxModes = options.maxCombinedModes, levels = options.levels;
     number("max-modes", maxModes);
     number("levels", levels);
     options.maxCombinedModes = int(maxModes);
@@ -94,7 +95,8 @@ int runAamBuild(const QStringList &args)
     if (features != "grey" && features != "igo")
         return fail("aam build: --features must be grey or igo", 2);
     options.fitFeatures = features == "igo" ? AamFitFeatures::GradientOrientation : AamFitFeatures::Grey;
-    if (!ok || options.referenceEyeDistance < 8 || options.levels < 1)
+    // --eye-distance 0 and --levels 0: automatic (AamBuildOptions).
+    if (!ok || (options.referenceEyeDistance != 0 && options.referenceEyeDistance < 8) || options.levels < 0)
         return fail("aam build: bad numeric option", 2);
 
     std::vector<std::string> warnings;
@@ -137,6 +139,7 @@ int runAamBuild(const QStringList &args)
                                  {"combined", modeChoiceJson(report.combined, options.combinedVariance,
                                                              options.maxCombinedModes, model.trainingImages)}}},
                     {"texture_pixels", model.warp(0).pixelCount()},
+                    {"reference_eye_distance", report.referenceEyeDistance},
                     {"levels", int(model.levels.size())},
                     {"mirrored", options.mirror},
                     {"features", features},
@@ -148,9 +151,11 @@ int runAamBuild(const QStringList &args)
         printJson(out);
     else
         std::printf("built %s from %d images: %d shape, %d texture, %d combined modes (%s)\n"
+                    "  reference frame: %.0f pixels between the outer eye corners, %d levels\n"
                     "  combined: %s\n  shape: %s\n  texture: %s\n",
                     qPrintable(a.value("out")), model.trainingImages, model.shapeModes(),
                     model.textureModes(), model.combinedModes(), model.identifier.c_str(),
+                    report.referenceEyeDistance, int(model.levels.size()),
                     qPrintable(modeReason(report.combined, options.combinedVariance,
                                           options.maxCombinedModes, model.trainingImages)),
                     qPrintable(modeReason(report.shape, options.shapeVariance, 0, model.trainingImages)),

@@ -271,6 +271,51 @@ private slots:
         QVERIFY((m_model.combinedFromParts(bs, bg) - c).norm() < 1e-9);
     }
 
+    void referenceFrameAndModesFollowTheData()
+    {
+        // Automatic reference frame: 1.5 times the training faces' median outer-eye distance
+        // (about 64 pixels on GRID s1), and levels down to about 20 pixels.
+        std::vector<AamTrainingExample> examples = gridExamples(false);
+        std::vector<double> eyes;
+        for (const auto &e : examples)
+            eyes.push_back((e.shape.segment<2>(0) - e.shape.segment<2>(12)).norm());
+        std::sort(eyes.begin(), eyes.end());
+        const double median = eyes[eyes.size() / 2];
+        Feedback feedback;
+        AamBuildReport report;
+        const AamModel automatic = buildAam(examples, AamBuildOptions{}, feedback, nullptr, &report);
+        QCOMPARE(report.referenceEyeDistance, std::round(1.5 * median));
+        QCOMPARE(report.levels, 3);
+        QCOMPARE(int(automatic.levels.size()), 3);
+        const double modelEyes = automatic.referenceScale
+            * (automatic.meanShape.segment<2>(0) - automatic.meanShape.segment<2>(12)).norm();
+        QVERIFY2(std::abs(modelEyes - report.referenceEyeDistance) < 1e-6, qPrintable(QString::number(modelEyes)));
+        // The report matches the model; 18 images allow 17 modes, the paper's cap does not bind.
+        QCOMPARE(report.combined.modes, automatic.combinedModes());
+        QCOMPARE(report.shape.modes, automatic.shapeModes());
+        QCOMPARE(report.texture.modes, automatic.textureModes());
+        QCOMPARE(report.combined.limit, PcaLimit::Variance);
+        QVERIFY(report.combined.retainedVariance >= 0.98);
+        // A given size wins, and so do the levels; a cap below the variance's count binds.
+        AamBuildOptions fixed;
+        fixed.referenceEyeDistance = 40;
+        fixed.levels = 1;
+        fixed.maxCombinedModes = 3;
+        const AamModel small = buildAam(examples, fixed, feedback, nullptr, &report);
+        QCOMPARE(report.referenceEyeDistance, 40.0);
+        QCOMPARE(int(small.levels.size()), 1);
+        QVERIFY(small.warp(0).pixelCount() < automatic.warp(0).pixelCount() / 4);
+        QCOMPARE(small.combinedModes(), 3);
+        QCOMPARE(report.combined.limit, PcaLimit::Cap);
+        // All the variance: the images are the limit.
+        AamBuildOptions all;
+        all.shapeVariance = all.textureVariance = all.combinedVariance = 1.0;
+        buildAam(examples, all, feedback, nullptr, &report);
+        QCOMPARE(report.texture.limit, PcaLimit::Samples);
+        QCOMPARE(report.texture.modes, 17);
+        QCOMPARE(report.combined.limit, PcaLimit::Samples);
+    }
+
     void mirrorAugmentationDoublesTheTrainingSetAndSymmetrisesTheMean()
     {
         Feedback feedback;
