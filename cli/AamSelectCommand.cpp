@@ -2,7 +2,7 @@
 // AAM on, chosen to differ from each other (core/aam/FrameSelection: farthest-point sampling of
 // the detected faces' appearance), written as images with automatic 23 points (.pts beside each,
 // as `landmarks detect` places them), so that `aam build --images DIR` builds from them. The
-// frames whose points an AAM of all the picks disagrees with most are listed first for review.
+// frames whose points an AAM of the other picks disagrees with most are listed first for review.
 #include "Command.h"
 
 #include "aam/AamBuilder.h"
@@ -73,21 +73,34 @@ QStringList selectSources(const Arguments &a)
     return sources;
 }
 
-// NME between each frame's automatic points and an AAM built from all the frames fitted from
-// them (finest level): large where the points disagree with what the other frames say the face
-// looks like — a misplaced point, or an appearance no other frame shares.
+// Held-out folds of the review.
+constexpr int kReviewFolds = 5;
+
+// NME between each frame's automatic points and where an AAM built from the other frames (5-fold:
+// a misplaced point is not in the model that judges it), fitted from those points at the finest
+// level, moves them: large for a misplaced point, or a face none of the other frames resembles.
+// With fewer than 2 x kReviewFolds frames, one AAM of all of them judges.
 void reviewSelection(std::vector<SelectedFrame> &frames, std::vector<std::string> &warnings)
 {
-    std::vector<AamTrainingExample> examples;
-    for (const SelectedFrame &f : frames)
-        examples.push_back({f.image.toStdString(), {}, f.pixels.clone(), f.shape});
-    Feedback feedback;
-    const AamModel model = buildAam(examples, AamBuildOptions{}, feedback, &warnings);
-    const AamFitter fitter(model);
-    AamFitOptions options;
-    options.coarsestLevel = 0;
-    for (SelectedFrame &f : frames)
-        f.disagreement = normalisedMeanError(fitter.fit(f.pixels, f.shape, options).shape, f.shape);
+    const int folds = int(frames.size()) >= 2 * kReviewFolds ? kReviewFolds : 1;
+    AamBuildOptions build;
+    build.referenceEyeDistance = 50; // placement, not texture detail, is judged: the small frame is enough
+    build.levels = 1;
+    AamFitOptions fit;
+    fit.coarsestLevel = 0;
+    for (int fold = 0; fold < folds; ++fold) {
+        std::vector<AamTrainingExample> examples;
+        for (size_t i = 0; i < frames.size(); ++i)
+            if (folds == 1 || int(i) % folds != fold)
+                examples.push_back({frames[i].image.toStdString(), {}, frames[i].pixels.clone(), frames[i].shape});
+        Feedback feedback;
+        const AamModel model = buildAam(std::move(examples), build, feedback, &warnings);
+        const AamFitter fitter(model);
+        for (size_t i = 0; i < frames.size(); ++i)
+            if (folds == 1 || int(i) % folds == fold)
+                frames[i].disagreement =
+                    normalisedMeanError(fitter.fit(frames[i].pixels, frames[i].shape, fit).shape, frames[i].shape);
+    }
 }
 
 int runAamSelect(const QStringList &args)
@@ -273,7 +286,7 @@ int runAamSelect(const QStringList &args)
         std::printf("left out %d candidate frames unlike any frame of another clip (e.g. %s)\n",
                     int(excluded.size()), qPrintable(isolatedList.first().toString()));
     if (review) {
-        std::printf("review first (NME between the automatic points and an AAM of all the frames):\n");
+        std::printf("review first (NME between the automatic points and an AAM of the other frames fitted from them):\n");
         for (size_t i = 0; i < worstFirst.size() && int(i) < kReviewLines; ++i)
             std::printf("  %.4f  %s\n", worstFirst[i]->disagreement, qPrintable(worstFirst[i]->image));
     }
