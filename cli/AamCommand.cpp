@@ -23,6 +23,38 @@ using namespace lipsync::cli;
 
 namespace {
 
+// Why a PCA of the build kept the modes it did, in words.
+QString modeReason(const AamModeChoice &c, double fraction, int cap, int images)
+{
+    switch (c.limit) {
+    case PcaLimit::Variance:
+        return QStringLiteral("%1 % of the variance reached").arg(100.0 * fraction, 0, 'g', 3);
+    case PcaLimit::Cap:
+        return QStringLiteral("capped at %1 modes (%2 % of the variance)")
+            .arg(cap)
+            .arg(100.0 * c.retainedVariance, 0, 'f', 1);
+    case PcaLimit::Samples:
+        return QStringLiteral("%1 training images allow at most %2 modes (%3 % of the variance)")
+            .arg(images)
+            .arg(c.modes)
+            .arg(100.0 * c.retainedVariance, 0, 'f', 1);
+    case PcaLimit::Rank:
+        break;
+    }
+    return QStringLiteral("the remaining modes have no variance (%1 % of the variance)")
+        .arg(100.0 * c.retainedVariance, 0, 'f', 1);
+}
+
+QJsonObject modeChoiceJson(const AamModeChoice &c, double fraction, int cap, int images)
+{
+    return QJsonObject{{"modes", c.modes},
+                       {"variance_fraction", fraction},
+                       {"retained_variance", c.retainedVariance},
+                       {"limit", pcaLimitName(c.limit)},
+                       {"cap", cap > 0 ? QJsonValue(cap) : QJsonValue()},
+                       {"reason", modeReason(c, fraction, cap, images)}};
+}
+
 int runAamBuild(const CommandLine &a)
 {
     // --generic: the cross-validated settings for in-the-wild faces; options given explicitly win.
@@ -35,16 +67,18 @@ int runAamBuild(const CommandLine &a)
     number("texture-variance", options.textureVariance);
     number("combined-variance", options.combinedVariance);
     number("eye-distance", options.referenceEyeDistance);
-    options.maxCombinedModes = a.isSet("max-modes") ? a.integer("max-modes", 0) : 0;
+    if (a.isSet("max-modes"))
+        options.maxCombinedModes = a.integer("max-modes", 0);
     if (a.isSet("levels"))
-        options.levels = a.integer("levels", 1);
+        options.levels = a.integer("levels", 0);
     options.mirror = options.mirror || a.isSet("mirror");
     const QString features = a.isSet("fit-features") ? a.value("fit-features") : a.isSet("generic") ? "igo" : "grey";
     if (features != "grey" && features != "igo")
         throw UsageError("--fit-features must be grey or igo");
     options.fitFeatures = features == "igo" ? AamFitFeatures::GradientOrientation : AamFitFeatures::Grey;
-    if (options.referenceEyeDistance < 8)
-        throw UsageError("--eye-distance must be at least 8 pixels");
+    // --eye-distance 0 and --levels 0: automatic (AamBuildOptions).
+    if (options.referenceEyeDistance != 0 && options.referenceEyeDistance < 8)
+        throw UsageError("--eye-distance must be 0 (automatic) or at least 8 pixels");
 
     std::vector<std::string> warnings;
     const auto started = std::chrono::steady_clock::now();
@@ -59,7 +93,8 @@ int runAamBuild(const CommandLine &a)
     const bool json = a.isSet("json");
     if (!json)
         feedback.onStatus = [](const std::string &s) { std::fprintf(stderr, "aam build: %s\n", s.c_str()); };
-    const AamModel model = buildAam(std::move(examples), options, feedback, &warnings);
+    AamBuildReport report;
+    const AamModel model = buildAam(std::move(examples), options, feedback, &warnings, &report);
     model.save(a.value("out").toStdString());
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -77,7 +112,15 @@ int runAamBuild(const CommandLine &a)
                     {"shape_modes", model.shapeModes()},
                     {"texture_modes", model.textureModes()},
                     {"combined_modes", model.combinedModes()},
+                    {"modes",
+                     QJsonObject{{"shape", modeChoiceJson(report.shape, options.shapeVariance, 0,
+                                                          model.trainingImages)},
+                                 {"texture", modeChoiceJson(report.texture, options.textureVariance, 0,
+                                                            model.trainingImages)},
+                                 {"combined", modeChoiceJson(report.combined, options.combinedVariance,
+                                                             options.maxCombinedModes, model.trainingImages)}}},
                     {"texture_pixels", model.warp(0).pixelCount()},
+                    {"reference_eye_distance", report.referenceEyeDistance},
                     {"levels", int(model.levels.size())},
                     {"mirrored", options.mirror},
                     {"features", features},
@@ -88,9 +131,16 @@ int runAamBuild(const CommandLine &a)
     if (json)
         printJson(out);
     else
-        std::printf("built %s from %d images: %d shape, %d texture, %d combined modes (%s)\n",
+        std::printf("built %s from %d images: %d shape, %d texture, %d combined modes (%s)\n"
+                    "  reference frame: %.0f pixels between the outer eye corners, %d levels\n"
+                    "  combined: %s\n  shape: %s\n  texture: %s\n",
                     qPrintable(a.value("out")), model.trainingImages, model.shapeModes(),
-                    model.textureModes(), model.combinedModes(), model.identifier.c_str());
+                    model.textureModes(), model.combinedModes(), model.identifier.c_str(),
+                    report.referenceEyeDistance, int(model.levels.size()),
+                    qPrintable(modeReason(report.combined, options.combinedVariance,
+                                          options.maxCombinedModes, model.trainingImages)),
+                    qPrintable(modeReason(report.shape, options.shapeVariance, 0, model.trainingImages)),
+                    qPrintable(modeReason(report.texture, options.textureVariance, 0, model.trainingImages)));
     return 0;
 }
 
@@ -257,9 +307,10 @@ const CommandRegistration buildRegistration{
       {"combined-variance", "F", "the fraction of the combined variance the modes keep"},
       {"shape-variance", "F", "the fraction of the shape variance the modes keep"},
       {"texture-variance", "F", "the fraction of the texture variance the modes keep"},
-      {"max-modes", "N", "at most N combined modes (0: no limit)"},
-      {"eye-distance", "PX", "the reference eye distance in pixels (>= 8)"},
-      {"levels", "N", "resolution levels for fitting, each half the previous (>= 1)"},
+      {"max-modes", "N", "at most N combined modes (0: no limit)", QString::number(AamBuildOptions{}.maxCombinedModes)},
+      {"eye-distance", "PX", "the reference eye distance in pixels (0: 1.5 x the faces' median, 50..100; else >= 8)",
+       QStringLiteral("0")},
+      {"levels", "N", "resolution levels for fitting, each half the previous (0: automatic)", QStringLiteral("0")},
       {"mirror", {}, "add every image mirrored"},
       {"fit-features", "grey|igo", "what fitting compares: grey levels or image gradient orientations "
                                    "(default: grey, igo with --generic)", {}, CommandOption::Optional, {"features"}},

@@ -127,7 +127,9 @@ CommandLine::CommandLine(const CommandSpec &spec, const QStringList &args) : m_s
             ++required;
     if (m_positional.size() < required)
         throw UsageError(QStringLiteral("missing %1").arg(spec.arguments[size_t(m_positional.size())].name));
-    if (m_positional.size() > qsizetype(spec.arguments.size()))
+    // A last argument named "NAME..." takes any number of values.
+    const bool variadic = !spec.arguments.empty() && spec.arguments.back().name.endsWith(QLatin1String("..."));
+    if (!variadic && m_positional.size() > qsizetype(spec.arguments.size()))
         throw UsageError(QStringLiteral("unexpected argument '%1'").arg(m_positional[qsizetype(spec.arguments.size())]));
 }
 

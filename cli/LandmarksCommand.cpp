@@ -3,7 +3,8 @@
 // the template shape placed on the detection.
 #include "CommandLine.h"
 
-#include "aam/AamFitter.h"
+#include "aam/AamModel.h"
+#include "aam/AutoLandmarks.h"
 #include "aam/FaceDetector.h"
 #include "aam/LandmarkScheme.h"
 #include "aam/PtsFile.h"
@@ -36,7 +37,8 @@ int runLandmarksDetect(const CommandLine &a)
 {
     const std::string input = a.positional().front().toStdString();
     const QString method = a.value("method");
-    if (!QStringList{"auto", "dlib", "aam", "template"}.contains(method))
+    AutoLandmarkMethod how = AutoLandmarkMethod::Auto;
+    if (!parseAutoLandmarkMethod(method.toStdString(), how))
         throw UsageError("--method must be auto, dlib, aam or template");
     if (method == "aam" && !a.isSet("aam"))
         throw UsageError("--method aam needs --aam AAM");
@@ -73,28 +75,9 @@ int runLandmarksDetect(const CommandLine &a)
     std::optional<AamModel> model;
     if (a.isSet("aam"))
         model = AamModel::load(a.value("aam").toStdString());
-
-    Eigen::VectorXd shape;
-    QString used;
-    if ((method == "auto" || method == "dlib") && detector.hasDlib()) {
-        const Eigen::VectorXd ibug = detector.dlibLandmarks(image, face);
-        if (ibug.size() == 136) {
-            shape = mapIbug68To23(ibug);
-            used = "dlib";
-        }
-    }
-    if (method == "dlib" && shape.size() == 0)
-        return fail("landmarks detect: dlib's shape predictor is not available "
-                    "(install libdlib-data)");
-    if (shape.size() == 0 && model && method != "template") {
-        const AamFitter fitter(*model);
-        shape = fitter.fit(image, initialShapeFromDetection(*model, face)).shape;
-        used = "aam";
-    }
-    if (shape.size() == 0) {
-        shape = initialShapeFromDetection(templateShape(), face);
-        used = "template";
-    }
+    const AutoLandmarks found = detectAutoLandmarks(image, face, detector, how, model ? &*model : nullptr);
+    const Eigen::VectorXd &shape = found.shape;
+    const QString used = QString::fromStdString(found.method);
     const std::string out = a.value("out").toStdString();
     writePtsFile(out, shape);
 

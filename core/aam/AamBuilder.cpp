@@ -16,6 +16,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lipsync {
@@ -49,6 +50,40 @@ std::string checkExample(const AamTrainingExample &e)
                    + std::to_string(e.image.rows) + " image";
     }
     return {};
+}
+
+// The combined PCA runs on data that is already centred (uncentred PCA, n-dimensional span), so
+// its last mode has no variance; n-1 modes there are the images' limit as for the others.
+// The options' reference eye distance, or the automatic one for these examples.
+double chosenReferenceEyeDistance(const std::vector<AamTrainingExample> &examples, const AamBuildOptions &options)
+{
+    if (options.referenceEyeDistance > 0)
+        return options.referenceEyeDistance;
+    std::vector<double> sizes;
+    for (const AamTrainingExample &e : examples)
+        if (e.shape.size() == 2 * scheme23::kPointCount && e.shape.allFinite())
+            sizes.push_back(eyeDistance(e.shape));
+    if (sizes.empty())
+        return AamBuildOptions::kAutoReferenceMin;
+    std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+    return std::clamp(std::round(AamBuildOptions::kAutoReferenceScale * sizes[sizes.size() / 2]),
+                      AamBuildOptions::kAutoReferenceMin, AamBuildOptions::kAutoReferenceMax);
+}
+
+int chosenLevels(double referenceEyeDistance, const AamBuildOptions &options)
+{
+    if (options.levels > 0)
+        return std::clamp(options.levels, 1, 4);
+    int levels = 1;
+    while (levels < 4 && referenceEyeDistance * std::pow(0.5, levels) >= AamBuildOptions::kCoarsestEyeDistance)
+        ++levels;
+    return levels;
+}
+
+AamModeChoice aamModeChoiceOf(const Pca &pca, int samples)
+{
+    const bool imageBound = pca.limit == PcaLimit::Rank && pca.modes() >= samples - 1;
+    return {pca.modes(), pca.retainedFraction(), imageBound ? PcaLimit::Samples : pca.limit};
 }
 
 } // namespace
@@ -87,13 +122,14 @@ std::vector<AamTrainingExample> loadTrainingDirectory(const std::string &directo
 }
 
 AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOptions &options,
-                  Feedback &feedback, std::vector<std::string> *warnings)
+                  Feedback &feedback, std::vector<std::string> *warnings, AamBuildReport *report)
 {
     auto warn = [&](const std::string &w) {
         if (warnings)
             warnings->push_back(w);
     };
-    const int levelCount = std::clamp(options.levels, 1, 4);
+    const double referenceEyeDistance = chosenReferenceEyeDistance(examples, options);
+    const int levelCount = chosenLevels(referenceEyeDistance, options);
     feedback.setStatus("reading images");
 
     // 1. Read, check and pre-scale every image so the face is about reference size: the warp
@@ -119,7 +155,7 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
             warn(e.name + ": " + why + ", skipped");
             continue;
         }
-        const double f = options.referenceEyeDistance / eyeDistance(e.shape);
+        const double f = referenceEyeDistance / eyeDistance(e.shape);
         if (f < 0.8) {
             cv::Mat small;
             cv::resize(e.image, small, cv::Size(), f, f, cv::INTER_AREA);
@@ -160,7 +196,7 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
     model.shapeBasis = shapePca.basis;
     model.shapeVariances = shapePca.variances;
     model.triangles = delaunayTriangles(gpa.mean * 1000.0);
-    model.referenceScale = options.referenceEyeDistance / eyeDistance(gpa.mean);
+    model.referenceScale = referenceEyeDistance / eyeDistance(gpa.mean);
     for (int l = 0; l < levelCount; ++l) {
         AamTextureLevel level;
         level.scale = std::pow(0.5, l);
@@ -246,6 +282,9 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
     const Pca combined = computePca(joint, options.combinedVariance, options.maxCombinedModes, false);
     model.combinedBasis = combined.basis;
     model.combinedVariances = combined.variances;
+    if (report)
+        *report = {aamModeChoiceOf(shapePca, n), aamModeChoiceOf(texturePca, n), aamModeChoiceOf(combined, n),
+                   referenceEyeDistance, levelCount};
     // 5. Detector calibration: the mean of the training shapes in the frame of the detector's
     //    keypoints, expressed where those keypoints sit on the mean shape.
     if (options.detector) {

@@ -25,15 +25,27 @@ struct AamTrainingExample
 
 struct AamBuildOptions
 {
-    // Fractions of variance retained. The defaults give ~30 combined modes on 100 Helen faces,
-    // near the paper's 32 (§4).
+    // Fractions of variance retained. The combined model keeps 98 % up to the paper's 32 modes
+    // (§4): 150 selected GRID s1 frames reach the cap at 95 %, 20 frames allow 19 modes at most.
     double shapeVariance = 0.95;
     double textureVariance = 0.95;
-    double combinedVariance = 0.95;
-    int maxCombinedModes = 0; // 0: no cap
-    // Size of the level-0 reference frame: pixels between the outer eye corners.
-    double referenceEyeDistance = 50.0;
-    int levels = 2; // resolution levels for fitting, each half the previous
+    double combinedVariance = 0.98;
+    // The paper's 32 parameters (§4: "a 32 parameter model proves sufficient"); 0: no cap.
+    static constexpr int kPaperCombinedModes = 32;
+    int maxCombinedModes = kPaperCombinedModes;
+    // Size of the level-0 reference frame: pixels between the outer eye corners. 0: automatic,
+    // kAutoReferenceScale times the training faces' median size, within [kAutoReferenceMin,
+    // kAutoReferenceMax]: textures sampled finer than the faces were recorded keep the mouth
+    // sharp when the model draws it back into the frames (docs/performance.md, "Person AAMs from
+    // selected frames").
+    double referenceEyeDistance = 0.0;
+    static constexpr double kAutoReferenceScale = 1.5;
+    static constexpr double kAutoReferenceMin = 50.0;
+    static constexpr double kAutoReferenceMax = 100.0;
+    // Resolution levels for fitting, each half the previous. 0: automatic, as many as keep the
+    // coarsest level's eye distance at least kCoarsestEyeDistance pixels.
+    int levels = 0;
+    static constexpr double kCoarsestEyeDistance = 20.0;
     // Also train on every image flipped left to right (points renumbered by the scheme's
     // symmetric permutation, mirrorShape()): twice the shapes and textures for a generic model,
     // and a symmetric mean. Off for person-specific models, whose asymmetry is real.
@@ -54,8 +66,27 @@ struct AamBuildOptions
         o.mirror = true;
         o.fitFeatures = AamFitFeatures::GradientOrientation;
         o.referenceEyeDistance = 70.0;
+        o.levels = 2;
+        o.combinedVariance = 0.95;
+        o.maxCombinedModes = 0;
         return o;
     }
+};
+
+// How many modes one PCA of the build kept, the fraction of its variance they explain, and what
+// stopped it (the variance fraction, the mode cap, or the number of training images).
+struct AamModeChoice
+{
+    int modes = 0;
+    double retainedVariance = 0.0;
+    PcaLimit limit = PcaLimit::Rank;
+};
+
+struct AamBuildReport
+{
+    AamModeChoice shape, texture, combined;
+    double referenceEyeDistance = 0.0; // what the level-0 frame was built with
+    int levels = 0;
 };
 
 // Images with a .pts of the same stem (68 or 23 points) in `directory`, sorted by name. Throws
@@ -67,7 +98,9 @@ std::vector<AamTrainingExample> loadTrainingDirectory(const std::string &directo
 // Builds the model. Examples that cannot be used (unreadable image, points outside the image,
 // degenerate shape) are skipped with a line in `warnings`. Throws lipsync::Error when fewer than
 // 3 usable examples remain, or Canceled when `feedback` is canceled.
+// `report`, when given, receives the mode choices of the shape, texture and combined PCAs.
 AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOptions &options,
-                  Feedback &feedback, std::vector<std::string> *warnings = nullptr);
+                  Feedback &feedback, std::vector<std::string> *warnings = nullptr,
+                  AamBuildReport *report = nullptr);
 
 } // namespace lipsync

@@ -11,8 +11,6 @@
 
 namespace lipsync {
 
-namespace {
-
 cv::Mat greyFloat(const cv::Mat &image)
 {
     cv::Mat grey;
@@ -26,8 +24,6 @@ cv::Mat greyFloat(const cv::Mat &image)
     grey.convertTo(out, CV_32F);
     return out;
 }
-
-} // namespace
 
 cv::Mat smoothedForFitting(const cv::Mat &grey)
 {

@@ -25,6 +25,8 @@
 
 namespace lipsync {
 
+// A BGR, BGRA or grey image as grey CV_32F (0-255).
+cv::Mat greyFloat(const cv::Mat &image);
 // Grey images are smoothed (Gaussian, sigma 1 pixel of the level frame) before sampling, in training
 // and fitting alike: it widens the basin of convergence of the Gauss-Newton steps.
 cv::Mat smoothedForFitting(const cv::Mat &grey);

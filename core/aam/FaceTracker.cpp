@@ -52,12 +52,7 @@ bool FaceTracker::fitFromDetection(const cv::Mat &bgr, const cv::Mat &grey,
 TrackedFrame FaceTracker::track(const cv::Mat &bgr, const AamFitOptions &fitOptions)
 {
     TrackedFrame frame;
-    cv::Mat grey;
-    if (bgr.channels() == 3)
-        cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
-    else
-        grey = bgr;
-    grey.convertTo(grey, CV_32F);
+    const cv::Mat grey = greyFloat(bgr);
 
     if (m_previous.size() == 0) {
         if (!fitFromDetection(bgr, grey, fitOptions, frame.fit))

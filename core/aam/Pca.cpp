@@ -6,6 +6,21 @@
 
 namespace lipsync {
 
+const char *pcaLimitName(PcaLimit limit)
+{
+    switch (limit) {
+    case PcaLimit::Variance:
+        return "variance";
+    case PcaLimit::Cap:
+        return "cap";
+    case PcaLimit::Samples:
+        return "samples";
+    case PcaLimit::Rank:
+        break;
+    }
+    return "rank";
+}
+
 Pca computePca(const Eigen::MatrixXd &samples, double fraction, int maxModes, bool centre)
 {
     Pca pca;
@@ -38,18 +53,30 @@ Pca computePca(const Eigen::MatrixXd &samples, double fraction, int maxModes, bo
     }
     values = values.cwiseMax(0.0);
     pca.totalVariance = values.sum();
-    Eigen::Index limit = std::min<Eigen::Index>(values.size(), centre ? n - 1 : n);
-    if (maxModes > 0)
-        limit = std::min<Eigen::Index>(limit, maxModes);
+    const Eigen::Index sampleLimit = centre ? n - 1 : n;
+    const Eigen::Index available = std::min<Eigen::Index>(values.size(), sampleLimit);
+    const Eigen::Index limit = maxModes > 0 ? std::min<Eigen::Index>(available, maxModes) : available;
     // Drop numerically-zero modes.
     const double eps = 1e-12 * std::max(1.0, values.size() ? values[0] : 0.0);
     Eigen::Index keep = 0;
     double acc = 0.0;
-    while (keep < limit && values[keep] > eps) {
+    while (true) {
+        if (keep > 0 && fraction < 1.0 && acc >= fraction * pca.totalVariance) {
+            pca.limit = PcaLimit::Variance;
+            break;
+        }
+        if (keep >= limit) {
+            pca.limit = limit < available ? PcaLimit::Cap
+                        : keep >= sampleLimit ? PcaLimit::Samples
+                                              : PcaLimit::Rank;
+            break;
+        }
+        if (values[keep] <= eps) {
+            pca.limit = PcaLimit::Rank;
+            break;
+        }
         acc += values[keep];
         ++keep;
-        if (fraction < 1.0 && acc >= fraction * pca.totalVariance)
-            break;
     }
     pca.basis = vectors.leftCols(keep);
     pca.variances = values.head(keep);

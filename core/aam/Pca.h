@@ -6,12 +6,30 @@
 
 namespace lipsync {
 
+// What ended the choice of modes (reported by `aam build`, so a user knows whether more labelled
+// images or a higher variance fraction would give more modes).
+enum class PcaLimit {
+    Variance, // the requested fraction of the variance was reached
+    Cap,      // the mode cap (maxModes) was reached first
+    Samples,  // n-1 modes (n samples) were kept and the fraction still not reached
+    Rank,     // the remaining modes have numerically zero variance
+};
+
+// "variance", "cap", "samples" or "rank".
+const char *pcaLimitName(PcaLimit limit);
+
 struct Pca
 {
     Eigen::VectorXd mean;      // d
     Eigen::MatrixXd basis;     // d x m, orthonormal columns
     Eigen::VectorXd variances; // m, descending
     double totalVariance = 0.0;
+    PcaLimit limit = PcaLimit::Rank;
+    // Fraction of totalVariance the kept modes explain.
+    double retainedFraction() const
+    {
+        return totalVariance > 0 ? variances.sum() / totalVariance : 1.0;
+    }
 
     int modes() const { return int(basis.cols()); }
     Eigen::VectorXd project(const Eigen::VectorXd &x) const { return basis.transpose() * (x - mean); }

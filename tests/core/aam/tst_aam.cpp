@@ -122,6 +122,21 @@ private slots:
         QVERIFY((g2 - Eigen::MatrixXd::Identity(wide.modes(), wide.modes())).cwiseAbs().maxCoeff() < 1e-9);
         // Variance retained chooses fewer modes for a lower fraction.
         QVERIFY(computePca(data, 0.5).modes() < computePca(data, 0.95).modes());
+        // What stopped it: the fraction, the cap, the samples (n-1 modes), or no variance left.
+        const Pca reached = computePca(data, 0.95);
+        QCOMPARE(reached.limit, PcaLimit::Variance);
+        QVERIFY(reached.retainedFraction() >= 0.95);
+        QVERIFY(reached.retainedFraction() - reached.variances.tail(1)[0] / reached.totalVariance < 0.95);
+        const Pca capped = computePca(data, 0.95, 2);
+        QCOMPARE(capped.modes(), 2);
+        QCOMPARE(capped.limit, PcaLimit::Cap);
+        QVERIFY(capped.retainedFraction() < 0.95);
+        QCOMPARE(computePca(data, 1.0).limit, PcaLimit::Rank); // all 30 dimensions kept
+        const Pca few = computePca(data.leftCols(6), 1.0);
+        QCOMPARE(few.modes(), 5);
+        QCOMPARE(few.limit, PcaLimit::Samples);
+        QCOMPARE(std::string(pcaLimitName(few.limit)), std::string("samples"));
+        QCOMPARE(computePca(data, 1.0, 30).limit, PcaLimit::Rank); // a cap that does not bind
     }
 
     void warpRoundTrip()
@@ -254,6 +269,51 @@ private slots:
         Eigen::VectorXd bs, bg;
         m_model.partsFromCombined(c, bs, bg);
         QVERIFY((m_model.combinedFromParts(bs, bg) - c).norm() < 1e-9);
+    }
+
+    void referenceFrameAndModesFollowTheData()
+    {
+        // Automatic reference frame: 1.5 times the training faces' median outer-eye distance
+        // (about 64 pixels on GRID s1), and levels down to about 20 pixels.
+        std::vector<AamTrainingExample> examples = gridExamples(false);
+        std::vector<double> eyes;
+        for (const auto &e : examples)
+            eyes.push_back((e.shape.segment<2>(0) - e.shape.segment<2>(12)).norm());
+        std::sort(eyes.begin(), eyes.end());
+        const double median = eyes[eyes.size() / 2];
+        Feedback feedback;
+        AamBuildReport report;
+        const AamModel automatic = buildAam(examples, AamBuildOptions{}, feedback, nullptr, &report);
+        QCOMPARE(report.referenceEyeDistance, std::round(1.5 * median));
+        QCOMPARE(report.levels, 3);
+        QCOMPARE(int(automatic.levels.size()), 3);
+        const double modelEyes = automatic.referenceScale
+            * (automatic.meanShape.segment<2>(0) - automatic.meanShape.segment<2>(12)).norm();
+        QVERIFY2(std::abs(modelEyes - report.referenceEyeDistance) < 1e-6, qPrintable(QString::number(modelEyes)));
+        // The report matches the model; 18 images allow 17 modes, the paper's cap does not bind.
+        QCOMPARE(report.combined.modes, automatic.combinedModes());
+        QCOMPARE(report.shape.modes, automatic.shapeModes());
+        QCOMPARE(report.texture.modes, automatic.textureModes());
+        QCOMPARE(report.combined.limit, PcaLimit::Variance);
+        QVERIFY(report.combined.retainedVariance >= 0.98);
+        // A given size wins, and so do the levels; a cap below the variance's count binds.
+        AamBuildOptions fixed;
+        fixed.referenceEyeDistance = 40;
+        fixed.levels = 1;
+        fixed.maxCombinedModes = 3;
+        const AamModel small = buildAam(examples, fixed, feedback, nullptr, &report);
+        QCOMPARE(report.referenceEyeDistance, 40.0);
+        QCOMPARE(int(small.levels.size()), 1);
+        QVERIFY(small.warp(0).pixelCount() < automatic.warp(0).pixelCount() / 4);
+        QCOMPARE(small.combinedModes(), 3);
+        QCOMPARE(report.combined.limit, PcaLimit::Cap);
+        // All the variance: the images are the limit.
+        AamBuildOptions all;
+        all.shapeVariance = all.textureVariance = all.combinedVariance = 1.0;
+        buildAam(examples, all, feedback, nullptr, &report);
+        QCOMPARE(report.texture.limit, PcaLimit::Samples);
+        QCOMPARE(report.texture.modes, 17);
+        QCOMPARE(report.combined.limit, PcaLimit::Samples);
     }
 
     void mirrorAugmentationDoublesTheTrainingSetAndSymmetrisesTheMean()
