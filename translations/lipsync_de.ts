@@ -258,196 +258,231 @@
 <context>
     <name>lipsync::studio::EvaluationChart</name>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="40"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="42"/>
         <source>L1 error</source>
         <translation>L1-Fehler</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="41"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="43"/>
         <source>RMS error</source>
         <translation>RMS-Fehler</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="42"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="44"/>
         <source>L-inf error</source>
         <translation>L-inf-Fehler</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="43"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="45"/>
         <source>log-likelihood per frame</source>
         <translation>Log-Likelihood pro Bild</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="46"/>
+        <source>lip-opening correlation</source>
+        <translation>Korrelation der Lippenöffnung</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="47"/>
+        <source>articulation (s.d. ratio)</source>
+        <translation>Artikulation (Verhältnis der Standardabweichungen)</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="48"/>
+        <source>/p b m/ closures (ratio)</source>
+        <translation>Verschlüsse bei /p b m/ (Verhältnis)</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="49"/>
+        <source>audio-visual lag (frames)</source>
+        <translation>audiovisueller Versatz (Bilder)</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="50"/>
+        <source>mouth sharpness (ratio)</source>
+        <translation>Schärfe des Mundes (Verhältnis)</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="51"/>
+        <source>seam colour step (ΔE)</source>
+        <translation>Farbsprung an der Naht (ΔE)</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="115"/>
+        <source>tracked</source>
+        <translation>verfolgt</translation>
     </message>
 </context>
 <context>
     <name>lipsync::studio::ExportMenu</name>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="92"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="91"/>
         <source>E&amp;xport</source>
         <translation>E&amp;xportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="96"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="95"/>
         <source>F&amp;eatures (CSV)…</source>
         <translation>M&amp;erkmale (CSV)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="96"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="137"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="95"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="136"/>
         <source>Generated &amp;Frames%1 (PNG)…</source>
         <translation>Erzeugte &amp;Einzelbilder%1 (PNG)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="97"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="96"/>
         <source>&amp;Alignment (TextGrid)…</source>
         <translation>&amp;Alignierung (TextGrid)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="97"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="96"/>
         <source>&amp;Landmarks (.pts)…</source>
         <translation>&amp;Landmarken (.pts)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="98"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="97"/>
         <source>Active Appearance &amp;Model…</source>
         <translation>Active Appearance &amp;Model…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="98"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="97"/>
         <source>&amp;Trained Dynamic Model…</source>
         <translation>&amp;Trainiertes dynamisches Modell…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="110"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="109"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="110"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="109"/>
         <source>Which trained model?</source>
         <translation>Welches trainierte Modell?</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="134"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="133"/>
         <source> of %1</source>
         <translation> von %1</translation>
     </message>
     <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="182"/>
         <location filename="../studio/export/ExportMenu.cpp" line="183"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="184"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="186"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="185"/>
         <source>Feature tables (*.csv)</source>
         <translation>Merkmalstabellen (*.csv)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="187"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="186"/>
         <source>Praat TextGrid (*.TextGrid)</source>
         <translation>Praat-TextGrid (*.TextGrid)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="189"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="188"/>
         <source>Active appearance models (*.aam)</source>
         <translation>Active Appearance Models (*.aam)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="191"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="190"/>
         <source>Dynamic models (*.model)</source>
         <translation>Dynamische Modelle (*.model)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="207"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="206"/>
         <source>Cannot export</source>
         <translation>Export nicht möglich</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="209"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="208"/>
         <source>no sequence is selected</source>
         <translation>keine Sequenz ausgewählt</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="231"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="230"/>
         <source>%1 has no video to put beside the generated face</source>
         <translation>%1 hat kein Video, neben das das erzeugte Gesicht gestellt werden könnte</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="246"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="245"/>
         <source>the project has no trained dynamic model and AAM (train one in the Models panel)</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell und kein AAM (im Bereich Modelle trainieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="236"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="260"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="235"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="259"/>
         <source>Export the generated frames of %1</source>
         <translation>Erzeugte Einzelbilder von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="95"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="135"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="94"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="134"/>
         <source>Generated &amp;Video%1 (MP4)…</source>
         <translation>Erzeugtes &amp;Video%1 (MP4)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="95"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="136"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="94"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="135"/>
         <source>Real and Generated &amp;Side by Side%1 (MP4)…</source>
         <translation>Echt und erzeugt &amp;nebeneinander%1 (MP4)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="237"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="261"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="236"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="260"/>
         <source>Export the generated video of %1</source>
         <translation>Erzeugtes Video von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="277"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="276"/>
         <source>%1 has no face features (track it first)</source>
         <translation>%1 hat keine Gesichtsmerkmale (zuerst tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="280"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="279"/>
         <source>Export the features of %1</source>
         <translation>Merkmale von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="288"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="287"/>
         <source>%1 has no phone alignment (align it first)</source>
         <translation>%1 hat keine Phonem-Alignierung (zuerst alignieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="291"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="290"/>
         <source>Export the alignment of %1</source>
         <translation>Alignierung von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="304"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="303"/>
         <source>%1 has no landmarks</source>
         <translation>%1 hat keine Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="307"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="306"/>
         <source>Export the landmarks of %1</source>
         <translation>Landmarken von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="328"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="327"/>
         <source>the project has no AAM</source>
         <translation>das Projekt hat kein AAM</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="329"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="328"/>
         <source>the project has no trained dynamic model</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="334"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="333"/>
         <source>Export %1</source>
         <translation>%1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="362"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="361"/>
         <source>Exported to %1</source>
         <translation>Exportiert nach %1</translation>
     </message>
@@ -795,22 +830,22 @@
 <context>
     <name>lipsync::studio::MainWindow</name>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="75"/>
+        <location filename="../studio/app/MainWindow.cpp" line="77"/>
         <source>Annotate</source>
         <translation>Annotieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="76"/>
+        <location filename="../studio/app/MainWindow.cpp" line="78"/>
         <source>Preview &amp;&amp; Compare</source>
         <translation>Vorschau &amp;&amp; Vergleich</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="96"/>
+        <location filename="../studio/app/MainWindow.cpp" line="98"/>
         <source>Models could not be written into the project&apos;s folder.</source>
         <translation>Modelle konnten nicht in den Projektordner geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="99"/>
+        <location filename="../studio/app/MainWindow.cpp" line="101"/>
         <source>%1 was not applied: it would leave the project unsaveable (%2).</source>
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
@@ -954,18 +989,18 @@
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="493"/>
+        <location filename="../studio/app/MainWindow.cpp" line="489"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="528"/>
-        <location filename="../studio/app/MainWindow.cpp" line="536"/>
+        <location filename="../studio/app/MainWindow.cpp" line="517"/>
+        <location filename="../studio/app/MainWindow.cpp" line="525"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="535"/>
+        <location filename="../studio/app/MainWindow.cpp" line="524"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
@@ -978,163 +1013,173 @@
 <context>
     <name>lipsync::studio::ModelsPanel</name>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="48"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="49"/>
         <source>Appearance model</source>
         <translation>Erscheinungsmodell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="49"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="50"/>
         <source>Phoneme aligner</source>
         <translation>Phonem-Aligner</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="56"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="57"/>
         <source>Build AAM…</source>
         <translation>AAM erstellen …</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="65"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="67"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="65"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="67"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="65"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="67"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="193"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="201"/>
         <source>Made in this session; written when the project is saved</source>
         <translation>In dieser Sitzung erstellt; wird beim Speichern des Projekts geschrieben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="201"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="209"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="57"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="58"/>
         <source>Train</source>
         <translation>Trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="57"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="58"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="58"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="59"/>
         <source>Evaluate (k-fold)</source>
         <translation>Evaluieren (k-fach)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="60"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="59"/>
+        <source>Realism</source>
+        <translation>Realismus</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="62"/>
         <source>Variance compensation</source>
         <translation>Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="74"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="76"/>
         <source>VarPro / Levenberg–Marquardt</source>
         <translation>VarPro / Levenberg–Marquardt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="75"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="77"/>
         <source>Gradient ascent (paper)</source>
         <translation>Gradientenaufstieg (Artikel)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="76"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="78"/>
         <source>Diagonal A</source>
         <translation>Diagonales A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="77"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="79"/>
         <source>Full A</source>
         <translation>Volles A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="78"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
         <source>Diagonal covariance</source>
         <translation>Diagonale Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="79"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
         <source>Full covariance</source>
         <translation>Volle Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="96"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="98"/>
         <source>Scale each model&apos;s generated trajectories to the spread of the training features: lips that open and close as much as the recording&apos;s, at the cost of a larger error per frame. Off: the paper&apos;s models exactly.</source>
         <translation>Skaliert die erzeugten Trajektorien jedes Modells auf die Streuung der Trainingsmerkmale: Lippen, die sich so weit öffnen und schließen wie in der Aufnahme, um den Preis eines größeren Fehlers je Bild. Aus: genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="111"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
         <source>folds: </source>
         <translation>Teilmengen (k-fach): </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="120"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="123"/>
         <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
         <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="121"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="124"/>
         <source>Train the checked models on every sequence with features and phonemes</source>
         <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="122"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="125"/>
         <source>Stop training or evaluation; the previous models stay</source>
         <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="123"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="126"/>
         <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
         <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="151"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="131"/>
+        <source>Render the held-out sequences of the same folds into their recordings and measure the lips with dlib&apos;s landmarks: opening correlation, articulation, /p b m/ closures, lag, sharpness, seam</source>
+        <translation>Die zurückgehaltenen Sequenzen derselben Folds in ihre Aufnahmen rendern und die Lippen mit dlibs Landmarken messen: Korrelation der Öffnung, Artikulation, Verschlüsse bei /p b m/, Versatz, Schärfe, Naht</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="159"/>
         <source>AAM parameter </source>
         <translation>AAM-Parameter </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="152"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="160"/>
         <source>Which AAM parameter to plot over time</source>
         <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="163"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="171"/>
         <source>Trajectory</source>
         <translation>Trajektorie</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="164"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="172"/>
         <source>Training</source>
         <translation>Training</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="165"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="173"/>
         <source>Evaluation</source>
         <translation>Evaluation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="237"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="245"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter tracken und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="293"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="321"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="301"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="329"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="295"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="303"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -1142,37 +1187,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="312"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="320"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="332"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="340"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="334"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="342"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="341"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="349"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="363"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="366"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="364"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="367"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="370"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="387"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -1180,45 +1225,61 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="378"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="395"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen (k-fache Kreuzvalidierung).</numerusform>
             <numerusform>%n Modelle auf %1 Sequenzen evaluiert, %2 Teilmengen (k-fache Kreuzvalidierung).</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <location filename="../studio/build/ModelsPanel.cpp" line="419"/>
+        <source>Realism of %n model(s) (%1-fold)</source>
+        <translation>
+            <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
+            <numerusform>Realismus von %n Modellen (%1 Folds)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/build/ModelsPanel.cpp" line="427"/>
+        <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
+        <translation>
+            <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
+            <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modelle.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="385"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="442"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="414"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="470"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="419"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="475"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="318"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="326"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="443"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="499"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="453"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="509"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="478"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="534"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>
@@ -1383,133 +1444,133 @@
 <context>
     <name>lipsync::studio::PreviewPanel</name>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="62"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="60"/>
         <source>Loop selection</source>
         <translation>Auswahl wiederholen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="62"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="60"/>
         <source>Landmarks</source>
         <translation>Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="63"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="61"/>
         <source>Generate from Speech…</source>
         <translation>Aus Sprache erzeugen…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="64"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="62"/>
         <source>Back to Sequence</source>
         <translation>Zurück zur Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="77"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="75"/>
         <source>Previous frame</source>
         <translation>Vorheriges Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="79"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="77"/>
         <source>Next frame</source>
         <translation>Nächstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="83"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="81"/>
         <source>Scrub through the frames</source>
         <translation>Durch die Bilder fahren</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="84"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="82"/>
         <source>Play the timeline&apos;s selection (or everything) over and over</source>
         <translation>Die Auswahl der Zeitleiste (oder alles) immer wieder abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="85"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="83"/>
         <source>Show the tracked points on the recorded video and the generated points on the generated faces</source>
         <translation>Die getrackten Punkte auf dem aufgenommenen Video und die erzeugten Punkte auf den erzeugten Gesichtern zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="86"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="84"/>
         <source>Generate faces for any recording with a transcript</source>
         <translation>Gesichter für eine beliebige Aufnahme mit Transkript erzeugen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="87"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="85"/>
         <source>Show the current sequence again</source>
         <translation>Die aktuelle Sequenz wieder zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="258"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="255"/>
         <source>Prepare the preview of %1</source>
         <translation>Vorschau von %1 vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="287"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="284"/>
         <source>The head could not be tracked: %1</source>
         <translation>Der Kopf konnte nicht getrackt werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="336"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="333"/>
         <source>Recorded video (landmarks: tracked)</source>
         <translation>Aufgenommenes Video (Landmarken: getrackt)</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="341"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="338"/>
         <source>Generated: %1</source>
         <translation>Erzeugt: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="345"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="342"/>
         <source>Generated</source>
         <translation>Erzeugt</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="396"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="393"/>
         <source>The project has no appearance model (Faces ▸ Build AAM).</source>
         <translation>Das Projekt hat kein Erscheinungsmodell (Gesichter ▸ AAM erstellen).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="398"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="395"/>
         <source>Tracking the head pose…</source>
         <translation>Kopfhaltung wird getrackt…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="400"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="397"/>
         <source>This sequence has no phones (align it in the Timeline).</source>
         <translation>Diese Sequenz hat keine Phoneme (in der Zeitleiste alignieren).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="402"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="399"/>
         <source>Train a dynamic model in the Models panel to see the faces it generates.</source>
         <translation>Trainieren Sie ein dynamisches Modell im Bereich „Modelle“, um die erzeugten Gesichter zu sehen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="451"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="448"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 — Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="560"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="557"/>
         <source>Faces for new speech need the project&apos;s appearance model.</source>
         <translation>Gesichter für neue Sprache brauchen das Erscheinungsmodell des Projekts.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="561"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="558"/>
         <source>Build one with Faces ▸ Build AAM.</source>
         <translation>Erstellen Sie eines mit Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="566"/>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="619"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="563"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="616"/>
         <source>No faces could be generated for this speech.</source>
         <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="567"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="564"/>
         <source>Train a dynamic model in the Models panel first.</source>
         <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="590"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="587"/>
         <source>Generate faces for %1</source>
         <translation>Gesichter für %1 erzeugen</translation>
     </message>
@@ -2247,253 +2308,253 @@
 <context>
     <name>lipsync::studio::TimelinePanel</name>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="180"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="178"/>
         <source>Zoom out (wheel down)</source>
         <translation>Verkleinern (Mausrad nach unten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="181"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="179"/>
         <source>Zoom in (wheel up)</source>
         <translation>Vergrößern (Mausrad nach oben)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="182"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="180"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="182"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="180"/>
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="418"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="94"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="424"/>
         <source>Align</source>
         <translation>Ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="94"/>
         <source>Align this sequence&apos;s transcript to its audio (words and phones)</source>
         <translation>Das Transkript dieser Sequenz am Ton ausrichten (Wörter und Phone)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
         <source>Align All</source>
         <translation>Alle ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
         <source>Align every sequence that has a transcript</source>
         <translation>Jede Sequenz mit Transkript ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="98"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
         <source>Re-align Selection</source>
         <translation>Auswahl neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="99"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
         <source>Align the selected stretch again, keeping the words whose timing you edited</source>
         <translation>Den ausgewählten Abschnitt neu ausrichten; Wörter mit bearbeitetem Timing bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="103"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="101"/>
         <source>Adapt to Speaker</source>
         <translation>An Sprecher anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="112"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="110"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="113"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="111"/>
         <source>Align with the model shipped with the studio, trained on one GRID speaker</source>
         <translation>Mit dem mitgelieferten Modell ausrichten, trainiert auf einem GRID-Sprecher</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="114"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="112"/>
         <source>Generic US English (CMU Sphinx)</source>
         <translation>Allgemeines US-Englisch (CMU Sphinx)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="115"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="113"/>
         <source>Align with CMU Sphinx&apos;s US-English model trained on many speakers (Debian package pocketsphinx-en-us)</source>
         <translation>Mit dem US-englischen Modell von CMU Sphinx ausrichten, trainiert auf vielen Sprechern (Debian-Paket pocketsphinx-en-us)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
         <source>Split at Cursor</source>
         <translation>Am Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
         <source>Split the interval under the cursor</source>
         <translation>Das Intervall unter dem Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
         <source>Join the selected interval with the next one</source>
         <translation>Das ausgewählte Intervall mit dem nächsten verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Relabel…</source>
         <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Change the label of the selected interval</source>
         <translation>Die Beschriftung des ausgewählten Intervalls ändern</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Insert Silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Make the selection a silence</source>
         <translation>Die Auswahl zur Stille machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
         <source>Insert Breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
         <source>Make the selection a breath</source>
         <translation>Die Auswahl zum Atmer machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
         <source>Play Selection</source>
         <translation>Auswahl abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
         <source>Play the selected stretch (Space in the timeline)</source>
         <translation>Den ausgewählten Abschnitt abspielen (Leertaste in der Zeitleiste)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
         <source>Play Word</source>
         <translation>Wort abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
         <source>Play the word under the cursor</source>
         <translation>Das Wort unter dem Cursor abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="140"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
         <source>Play All</source>
         <translation>Alles abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="140"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
         <source>Play the whole sequence</source>
         <translation>Die ganze Sequenz abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="141"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
         <source>Pronunciations…</source>
         <translation>Aussprachen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="142"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="140"/>
         <source>The project&apos;s pronunciations, and the words espeak-ng guessed</source>
         <translation>Die Aussprachen des Projekts und die von espeak-ng geschätzten Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="169"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="167"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="170"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="168"/>
         <source>The acoustic model the aligner uses</source>
         <translation>Das akustische Modell, das die Ausrichtung verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="207"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="205"/>
         <source>Show Spectrogram</source>
         <translation>Spektrogramm anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="208"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="206"/>
         <source>Show the spectrogram under the waveform in the timeline</source>
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="277"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="283"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="296"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="302"/>
         <source>Alignment of the speech in the Preview: %1 (read-only; Back to Sequence there to edit)</source>
         <translation>Alignierung der Sprache in der Vorschau: %1 (schreibgeschützt; dort „Zurück zur Sequenz“ zum Bearbeiten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="311"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="317"/>
         <source>No audio</source>
         <translation>Kein Ton</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="382"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="388"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="395"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="401"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="419"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="425"/>
         <source>The transcript of %1 changed since its boundaries were edited. Aligning it again replaces the edited boundaries. Align anyway?</source>
         <translation>Das Transkript von %1 wurde geändert, nachdem seine Grenzen bearbeitet wurden. Erneutes Alignieren ersetzt die bearbeiteten Grenzen. Trotzdem alignieren?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="430"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="436"/>
         <source>Every word of %1 is user-edited: nothing to align there.</source>
         <translation>Jedes Wort von %1 ist von Hand bearbeitet: Dort gibt es nichts zu alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="451"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="457"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="454"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="460"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="400"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="406"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="104"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="102"/>
         <source>Adapt the aligner to each recording&apos;s voice before aligning it (slower; better for voices unlike the model&apos;s training speakers)</source>
         <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Stimmen, die den Trainingssprechern des Modells unähnlich sind)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="475"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="481"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="500"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="506"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -2501,12 +2562,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="520"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="526"/>
         <source>%1: the alignment came out as it was; nothing changed.</source>
         <translation>%1: Die Alignierung ist unverändert geblieben.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="523"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="529"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -2514,47 +2575,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="562"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="568"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="562"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="568"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="570"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="576"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="580"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="586"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="612"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="618"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="612"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="618"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="671"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="677"/>
         <source>Not one of the 41 phones (ARPAbet, sil, br)</source>
         <translation>Keines der 41 Phone (ARPAbet, sil, br)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="672"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="678"/>
         <source>Enter one word</source>
         <translation>Ein einzelnes Wort eingeben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="680"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="686"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>

@@ -10,6 +10,7 @@
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
 #include "eval/Evaluation.h"
+#include "eval/RealismReport.h"
 #include "plots/EvaluationChart.h"
 #include "plots/ObjectivePlot.h"
 #include "plots/TrajectoryView.h"
@@ -55,7 +56,8 @@ QString kindText(const std::string &kind)
 ModelsPanel::ModelsPanel(QWidget *parent)
     : QWidget(parent), m_list(new QTreeWidget(this)), m_buildAam(new QPushButton(tr("Build AAM…"), this)),
       m_train(new QPushButton(tr("Train"), this)), m_cancel(new QPushButton(tr("Cancel"), this)),
-      m_evaluate(new QPushButton(tr("Evaluate (k-fold)"), this)), m_dpdsOptimizer(new QComboBox(this)),
+      m_evaluate(new QPushButton(tr("Evaluate (k-fold)"), this)), m_realism(new QPushButton(tr("Realism"), this)),
+      m_dpdsOptimizer(new QComboBox(this)),
       m_sldsA(new QComboBox(this)), m_brandCovariance(new QComboBox(this)),
       m_compensateVariance(new QCheckBox(tr("Variance compensation"), this)), m_folds(new QSpinBox(this)),
       m_parameter(new QSpinBox(this)), m_status(new QLabel(this))
@@ -111,6 +113,7 @@ ModelsPanel::ModelsPanel(QWidget *parent)
     m_folds->setPrefix(tr("folds: "));
     evaluation->addWidget(m_evaluate);
     evaluation->addWidget(m_folds);
+    evaluation->addWidget(m_realism);
     evaluation->addStretch();
     layout->addLayout(evaluation);
     m_status->setWordWrap(true);
@@ -124,6 +127,11 @@ ModelsPanel::ModelsPanel(QWidget *parent)
     connect(m_train, &QPushButton::clicked, this, [this] { train(); });
     connect(m_cancel, &QPushButton::clicked, this, &ModelsPanel::cancel);
     connect(m_evaluate, &QPushButton::clicked, this, [this] { evaluate(); });
+    m_realism->setObjectName(QStringLiteral("realismButton"));
+    m_realism->setToolTip(tr("Render the held-out sequences of the same folds into their recordings and measure the lips "
+                             "with dlib's landmarks: opening correlation, articulation, /p b m/ closures, lag, sharpness, "
+                             "seam"));
+    connect(m_realism, &QPushButton::clicked, this, [this] { evaluateRealism(); });
     updateActions();
 }
 
@@ -343,32 +351,41 @@ QList<Task *> ModelsPanel::train()
     return started;
 }
 
-Task *ModelsPanel::evaluate()
+std::optional<EvaluationOptions> ModelsPanel::evaluationOptions(QString *problem) const
 {
-    if (!m_context || !runningTasks().isEmpty())
-        return nullptr;
-    QString problem;
-    auto data = std::make_shared<const std::vector<LabelledSequence>>(trainingData(&problem));
-    if (data->empty()) {
-        m_status->setText(problem);
-        return nullptr;
-    }
+    const std::vector<LabelledSequence> data = trainingData(problem);
+    if (data.empty())
+        return std::nullopt;
     EvaluationOptions options;
-    options.folds = std::min(m_folds->value(), int(data->size()));
+    options.folds = std::min(m_folds->value(), int(data.size()));
     options.kinds.clear();
     for (const QString &kind : ModelKinds::ids())
         if (m_kinds[kind]->isChecked() && m_kinds[kind]->isEnabled())
             options.kinds.push_back(kind.toStdString());
     if (options.kinds.empty() || options.folds < 2) {
-        m_status->setText(options.kinds.empty() ? tr("Check at least one model kind to evaluate.")
-                                                : tr("Cross-validation needs at least two sequences."));
-        return nullptr;
+        *problem = options.kinds.empty() ? tr("Check at least one model kind to evaluate.")
+                                         : tr("Cross-validation needs at least two sequences.");
+        return std::nullopt;
     }
     options.modelOptions = modelOptions();
+    return options;
+}
+
+Task *ModelsPanel::evaluate()
+{
+    if (!m_context || !runningTasks().isEmpty())
+        return nullptr;
+    QString problem;
+    const std::optional<EvaluationOptions> options = evaluationOptions(&problem);
+    if (!options) {
+        m_status->setText(problem);
+        return nullptr;
+    }
+    auto data = std::make_shared<const std::vector<LabelledSequence>>(trainingData(&problem));
     QPointer<ModelsPanel> self(this);
     Task *task = m_context->taskRunner()->run<EvaluationResult>(
-        tr("Evaluate %n model(s) (%1-fold)", "", int(options.kinds.size())).arg(options.folds),
-        [data, options](Feedback &feedback) { return evaluateModels(*data, options, feedback); },
+        tr("Evaluate %n model(s) (%1-fold)", "", int(options->kinds.size())).arg(options->folds),
+        [data, options = *options](Feedback &feedback) { return evaluateModels(*data, options, feedback); },
         [self](EvaluationResult result) {
             if (!self)
                 return;
@@ -380,6 +397,46 @@ Task *ModelsPanel::evaluate()
                                         .arg(result.folds));
             emit self->evaluated();
         });
+    watchEvaluation(task);
+    return task;
+}
+
+Task *ModelsPanel::evaluateRealism()
+{
+    if (!m_context || !runningTasks().isEmpty())
+        return nullptr;
+    QString problem;
+    const std::optional<EvaluationOptions> options = evaluationOptions(&problem);
+    if (!options) {
+        m_status->setText(problem);
+        return nullptr;
+    }
+    RealismOptions realism;
+    realism.crossValidation = *options;
+    auto project = std::make_shared<const Project>(m_context->document()->project());
+    QPointer<ModelsPanel> self(this);
+    Task *task = m_context->taskRunner()->run<RealismResult>(
+        tr("Realism of %n model(s) (%1-fold)", "", int(options->kinds.size())).arg(options->folds),
+        [project, realism](Feedback &feedback) { return lipsync::evaluateRealism(*project, realism, feedback); },
+        [self](RealismResult result) {
+            if (!self)
+                return;
+            self->m_evaluation->setRealism(result);
+            if (self->m_plots)
+                self->m_plots->setCurrentWidget(self->m_evaluation);
+            self->m_status->setText(tr("Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib's "
+                                       "landmarks: the AAM's re-synthesis and %n model(s).",
+                                       "", int(result.methods.size()) - 1)
+                                        .arg(result.sequences)
+                                        .arg(result.folds));
+            emit self->evaluated();
+        });
+    watchEvaluation(task);
+    return task;
+}
+
+void ModelsPanel::watchEvaluation(Task *task)
+{
     connect(task, &Task::finished, this, [this, task](Task::State state) {
         if (state == Task::State::Failed)
             m_status->setText(tr("Evaluation failed: %1").arg(task->errorMessage()));
@@ -387,7 +444,6 @@ Task *ModelsPanel::evaluate()
     });
     m_tasks.append(task);
     updateActions();
-    return task;
 }
 
 void ModelsPanel::cancel()
@@ -486,6 +542,7 @@ void ModelsPanel::updateActions()
     const bool ready = m_context && m_context->document()->isOpen();
     m_train->setEnabled(ready && !busy);
     m_evaluate->setEnabled(ready && !busy);
+    m_realism->setEnabled(ready && !busy);
     m_cancel->setEnabled(busy);
 }
 

@@ -10,7 +10,10 @@
 #include <QPointer>
 #include <QWidget>
 
+#include "eval/Evaluation.h"
+
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QAction;
@@ -56,6 +59,7 @@ public:
     QPushButton *trainButton() const { return m_train; }
     QPushButton *cancelButton() const { return m_cancel; }
     QPushButton *evaluateButton() const { return m_evaluate; }
+    QPushButton *realismButton() const { return m_realism; }
     // By kind id (ModelKinds::ids()).
     QCheckBox *kindCheck(const QString &kind) const { return m_kinds.value(kind); }
     QComboBox *dpdsOptimizer() const { return m_dpdsOptimizer; }
@@ -75,6 +79,8 @@ public:
     // The actions behind the buttons (return the tasks started; empty/null when nothing to do).
     QList<Task *> train();
     Task *evaluate();
+    // The realism report (models.md §6.5) of the checked models on the same folds, as a chart.
+    Task *evaluateRealism();
     void cancel();
 
 signals:
@@ -86,6 +92,9 @@ signals:
 private:
     std::vector<LabelledSequence> trainingData(QString *problem) const;
     ModelOptions modelOptions() const; // the options the controls choose
+    // The folds, kinds and model options of the controls, or nothing (`problem` says why).
+    std::optional<EvaluationOptions> evaluationOptions(QString *problem) const;
+    void watchEvaluation(Task *task);
     void onDocumentReset();
     void onLocationChanged();
     void refreshTrajectory();
@@ -96,6 +105,7 @@ private:
     QPushButton *m_train;
     QPushButton *m_cancel;
     QPushButton *m_evaluate;
+    QPushButton *m_realism;
     QHash<QString, QCheckBox *> m_kinds;
     QComboBox *m_dpdsOptimizer;
     QComboBox *m_sldsA;

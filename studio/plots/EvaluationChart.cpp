@@ -3,6 +3,7 @@
 #include "app/ModelKinds.h"
 
 #include "eval/Evaluation.h"
+#include "eval/RealismReport.h"
 
 #include <vtkAxis.h>
 #include <vtkChartMatrix.h>
@@ -29,6 +30,7 @@
 #include <QString>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace lipsync::studio {
@@ -41,6 +43,12 @@ QString metricTitle(const std::string &metric)
     if (metric == "rms") return EvaluationChart::tr("RMS error");
     if (metric == "linf") return EvaluationChart::tr("L-inf error");
     if (metric == "loglik") return EvaluationChart::tr("log-likelihood per frame");
+    if (metric == "correlation") return EvaluationChart::tr("lip-opening correlation");
+    if (metric == "articulation") return EvaluationChart::tr("articulation (s.d. ratio)");
+    if (metric == "closure") return EvaluationChart::tr("/p b m/ closures (ratio)");
+    if (metric == "lag") return EvaluationChart::tr("audio-visual lag (frames)");
+    if (metric == "sharpness") return EvaluationChart::tr("mouth sharpness (ratio)");
+    if (metric == "seamDeltaE") return EvaluationChart::tr("seam colour step (ΔE)");
     return QString::fromStdString(metric);
 }
 
@@ -93,13 +101,31 @@ void EvaluationChart::clear()
 
 void EvaluationChart::setResult(const EvaluationResult &result)
 {
+    std::vector<Bars> bars;
+    for (const ModelEvaluation &model : result.models)
+        bars.push_back({ModelKinds::name(model.kind), ModelKinds::colour(model.kind), model.metrics});
+    draw(bars, evaluationMetrics());
+}
+
+void EvaluationChart::setRealism(const RealismResult &result)
+{
+    std::vector<Bars> bars;
+    for (const RealismMethod &method : result.methods) {
+        const bool tracked = method.kind == "tracked";
+        bars.push_back({tracked ? tr("tracked") : ModelKinds::name(method.kind),
+                        tracked ? QColor(0x75, 0x75, 0x75) : ModelKinds::colour(method.kind), method.metrics});
+    }
+    draw(bars, {"correlation", "articulation", "closure", "lag", "sharpness", "seamDeltaE"});
+}
+
+void EvaluationChart::draw(const std::vector<Bars> &bars, const std::vector<std::string> &metrics)
+{
     clear();
-    const std::vector<std::string> &metrics = evaluationMetrics();
-    const int n = int(result.models.size());
+    const int n = int(bars.size());
     if (n == 0)
         return;
-    for (const ModelEvaluation &model : result.models)
-        e->names.append(ModelKinds::name(model.kind));
+    for (const Bars &b : bars)
+        e->names.append(b.name);
     e->matrix->SetSize(vtkVector2i(2, (int(metrics.size()) + 1) / 2));
     e->matrix->SetGutter(vtkVector2f(50.0f, 40.0f));
     for (size_t m = 0; m < metrics.size(); ++m) {
@@ -115,25 +141,24 @@ void EvaluationChart::setResult(const EvaluationResult &result)
         double lo = 0.0, hi = 0.0;
         // One bar plot per chart (vtkChartXY puts several bar plots side by side), coloured per
         // model through a lookup table on the model index.
-        auto bars = vtkSmartPointer<vtkTable>::New();
+        auto table = vtkSmartPointer<vtkTable>::New();
         vtkNew<vtkDoubleArray> bx;
         bx->SetName("model");
         vtkNew<vtkDoubleArray> by;
         by->SetName("mean");
         vtkNew<vtkDoubleArray> bc;
         bc->SetName("colour");
-        bars->AddColumn(bx);
-        bars->AddColumn(by);
-        bars->AddColumn(bc);
+        table->AddColumn(bx);
+        table->AddColumn(by);
+        table->AddColumn(bc);
         vtkNew<vtkLookupTable> colours;
         colours->SetNumberOfTableValues(n);
         colours->SetRange(0.0, std::max(1.0, double(n - 1)));
         for (int i = 0; i < n; ++i) {
-            const ModelEvaluation &model = result.models[size_t(i)];
-            const QColor color = ModelKinds::colour(model.kind);
-            colours->SetTableValue(i, color.redF(), color.greenF(), color.blueF(), 1.0);
+            const Bars &model = bars[size_t(i)];
+            colours->SetTableValue(i, model.colour.redF(), model.colour.greenF(), model.colour.blueF(), 1.0);
             const auto found = model.metrics.find(metrics[m]);
-            if (found == model.metrics.end())
+            if (found == model.metrics.end() || !std::isfinite(found->second.mean))
                 continue;
             const double mean = found->second.mean, ci = found->second.ci95;
             lo = std::min({lo, mean - ci, mean});
@@ -146,18 +171,19 @@ void EvaluationChart::setResult(const EvaluationResult &result)
         }
         colours->Build();
         auto *plot = vtkPlotBar::SafeDownCast(chart->AddPlot(vtkChart::BAR));
-        plot->SetInputData(bars, 0, 1);
+        plot->SetInputData(table, 0, 1);
         plot->SetLookupTable(colours);
         plot->SelectColorArray("colour");
         plot->ScalarVisibilityOn();
         plot->SetWidth(0.6f);
-        e->tables.push_back(bars);
+        e->tables.push_back(table);
         for (int i = 0; i < n; ++i) {
-            const ModelEvaluation &model = result.models[size_t(i)];
+            const Bars &model = bars[size_t(i)];
             const auto found = model.metrics.find(metrics[m]);
-            if (found == model.metrics.end())
+            if (found == model.metrics.end() || !std::isfinite(found->second.mean))
                 continue;
-            const double mean = found->second.mean, ci = found->second.ci95;
+            const double mean = found->second.mean;
+            const double ci = std::isfinite(found->second.ci95) ? found->second.ci95 : 0.0;
             // Error bar: cap, stem, cap as one polyline.
             const double w = 0.15;
             const double xs[] = {i - w, i + w, double(i), double(i), i - w, i + w};

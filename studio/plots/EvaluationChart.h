@@ -1,15 +1,20 @@
 #pragma once
 // The paper's Figure 4 as VTK bar charts: per metric (L1, RMS, L-infinity error, log-likelihood
 // per frame) one chart with a bar per model at the mean over the cross-validation folds and an
-// error bar of the 95 % confidence interval.
+// error bar of the 95 % confidence interval; the realism report (models.md §6.5) the same way.
+#include "eval/Evaluation.h"
 #include "plots/VtkWidget.h"
 
+#include <QColor>
 #include <QStringList>
 
+#include <map>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace lipsync {
-struct EvaluationResult;
+struct RealismResult;
 }
 
 namespace lipsync::studio {
@@ -22,6 +27,9 @@ public:
     ~EvaluationChart() override;
 
     void setResult(const EvaluationResult &result);
+    // The realism report the same way: per metric (opening correlation, articulation, closures,
+    // lag, sharpness, seam) a bar per method, "tracked" (the AAM's re-synthesis) first.
+    void setRealism(const RealismResult &result);
     void clear();
     // Models and metrics drawn (0 when empty).
     int modelCount() const;
@@ -30,6 +38,13 @@ public:
     QStringList modelNames() const;
 
 private:
+    struct Bars
+    {
+        QString name;
+        QColor colour;
+        std::map<std::string, MetricSummary> metrics;
+    };
+    void draw(const std::vector<Bars> &bars, const std::vector<std::string> &metrics);
     struct Impl;
     std::unique_ptr<Impl> e;
 };

@@ -23,6 +23,7 @@
 #include "plots/EvaluationChart.h"
 #include "plots/ObjectivePlot.h"
 #include "plots/TrajectoryView.h"
+#include "eval/RealismReport.h"
 #include "tasks/TaskRunner.h"
 
 #include <QCheckBox>
@@ -222,6 +223,38 @@ private slots:
                 orange += qAbs(c.red() - 0xfb) < 12 && qAbs(c.green() - 0x8c) < 12 && qAbs(c.blue() - 0x00) < 12;
             }
         QVERIFY2(purple > 50 && orange > 50, qPrintable(QStringLiteral("%1 %2").arg(purple).arg(orange)));
+    }
+
+    // The realism report from the panel: a background task over the same folds (cancelled here:
+    // rendering every held-out clip is the benchmark's job), and its chart.
+    void realismReportRunsAndCharts()
+    {
+        checkOnly({QStringLiteral("hmm")});
+        QVERIFY(m_panel->realismButton()->isEnabled());
+        QTest::mouseClick(m_panel->realismButton(), Qt::LeftButton);
+        const QList<Task *> tasks = m_panel->runningTasks();
+        QCOMPARE(tasks.size(), 1);
+        QVERIFY(!m_panel->realismButton()->isEnabled());
+        QTest::mouseClick(m_panel->cancelButton(), Qt::LeftButton);
+        waitIdle();
+        QVERIFY(m_panel->realismButton()->isEnabled());
+
+        RealismResult result;
+        result.sequences = 10;
+        result.folds = 2;
+        for (const char *kind : {"tracked", "brand", "hmm"}) {
+            RealismMethod method;
+            method.kind = kind;
+            for (const std::string &metric : realismMetrics())
+                method.metrics[metric] = MetricSummary{{0.4, 0.6}, 0.5, 0.1};
+            result.methods.push_back(method);
+        }
+        m_panel->evaluationChart()->setRealism(result);
+        QCOMPARE(m_panel->evaluationChart()->modelCount(), 3);
+        QCOMPARE(m_panel->evaluationChart()->metricCount(), 6);
+        QCOMPARE(m_panel->evaluationChart()->modelNames(),
+                 (QStringList{QStringLiteral("tracked"), ModelKinds::name(QStringLiteral("brand")),
+                              ModelKinds::name(QStringLiteral("hmm"))}));
     }
 
     void savingTheDemoWritesTheTrainedModels()
