@@ -294,21 +294,11 @@
     </message>
     <message>
         <location filename="../studio/plots/EvaluationChart.cpp" line="49"/>
-        <source>audio-visual lag (frames)</source>
-        <translation>audiovisueller Versatz (Bilder)</translation>
-    </message>
-    <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="50"/>
         <source>mouth sharpness (ratio)</source>
         <translation>Schärfe des Mundes (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="51"/>
-        <source>seam colour step (ΔE)</source>
-        <translation>Farbsprung an der Naht (ΔE)</translation>
-    </message>
-    <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="115"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="113"/>
         <source>tracked</source>
         <translation>verfolgt</translation>
     </message>
@@ -1217,7 +1207,7 @@
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="387"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="383"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -1225,7 +1215,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="395"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="389"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen (k-fache Kreuzvalidierung).</numerusform>
@@ -1233,7 +1223,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="419"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="407"/>
         <source>Realism of %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
@@ -1241,7 +1231,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="427"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="413"/>
         <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
         <translation>
             <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
@@ -1249,17 +1239,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="442"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="446"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="470"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="474"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="475"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="479"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
@@ -1269,17 +1259,17 @@
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="499"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="503"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="509"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="513"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="534"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="538"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>

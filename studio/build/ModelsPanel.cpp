@@ -373,14 +373,10 @@ std::optional<EvaluationOptions> ModelsPanel::evaluationOptions(QString *problem
 
 Task *ModelsPanel::evaluate()
 {
-    if (!m_context || !runningTasks().isEmpty())
+    const std::optional<EvaluationOptions> options = evaluationToStart();
+    if (!options)
         return nullptr;
     QString problem;
-    const std::optional<EvaluationOptions> options = evaluationOptions(&problem);
-    if (!options) {
-        m_status->setText(problem);
-        return nullptr;
-    }
     auto data = std::make_shared<const std::vector<LabelledSequence>>(trainingData(&problem));
     QPointer<ModelsPanel> self(this);
     Task *task = m_context->taskRunner()->run<EvaluationResult>(
@@ -390,12 +386,9 @@ Task *ModelsPanel::evaluate()
             if (!self)
                 return;
             self->m_evaluation->setResult(result);
-            if (self->m_plots)
-                self->m_plots->setCurrentWidget(self->m_evaluation);
-            self->m_status->setText(tr("Evaluated %n model(s) on %1 sequences, %2 folds.", "", int(result.models.size()))
-                                        .arg(result.sequences)
-                                        .arg(result.folds));
-            emit self->evaluated();
+            self->showEvaluation(tr("Evaluated %n model(s) on %1 sequences, %2 folds.", "", int(result.models.size()))
+                                     .arg(result.sequences)
+                                     .arg(result.folds));
         });
     watchEvaluation(task);
     return task;
@@ -403,14 +396,9 @@ Task *ModelsPanel::evaluate()
 
 Task *ModelsPanel::evaluateRealism()
 {
-    if (!m_context || !runningTasks().isEmpty())
+    const std::optional<EvaluationOptions> options = evaluationToStart();
+    if (!options)
         return nullptr;
-    QString problem;
-    const std::optional<EvaluationOptions> options = evaluationOptions(&problem);
-    if (!options) {
-        m_status->setText(problem);
-        return nullptr;
-    }
     RealismOptions realism;
     realism.crossValidation = *options;
     auto project = std::make_shared<const Project>(m_context->document()->project());
@@ -422,17 +410,33 @@ Task *ModelsPanel::evaluateRealism()
             if (!self)
                 return;
             self->m_evaluation->setRealism(result);
-            if (self->m_plots)
-                self->m_plots->setCurrentWidget(self->m_evaluation);
-            self->m_status->setText(tr("Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib's "
-                                       "landmarks: the AAM's re-synthesis and %n model(s).",
-                                       "", int(result.methods.size()) - 1)
-                                        .arg(result.sequences)
-                                        .arg(result.folds));
-            emit self->evaluated();
+            self->showEvaluation(tr("Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib's "
+                                    "landmarks: the AAM's re-synthesis and %n model(s).",
+                                    "", int(result.methods.size()) - 1)
+                                     .arg(result.sequences)
+                                     .arg(result.folds));
         });
     watchEvaluation(task);
     return task;
+}
+
+std::optional<EvaluationOptions> ModelsPanel::evaluationToStart()
+{
+    if (!m_context || !runningTasks().isEmpty())
+        return std::nullopt;
+    QString problem;
+    std::optional<EvaluationOptions> options = evaluationOptions(&problem);
+    if (!options)
+        m_status->setText(problem);
+    return options;
+}
+
+void ModelsPanel::showEvaluation(const QString &status)
+{
+    if (m_plots)
+        m_plots->setCurrentWidget(m_evaluation);
+    m_status->setText(status);
+    emit evaluated();
 }
 
 void ModelsPanel::watchEvaluation(Task *task)

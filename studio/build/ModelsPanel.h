@@ -94,6 +94,9 @@ private:
     ModelOptions modelOptions() const; // the options the controls choose
     // The folds, kinds and model options of the controls, or nothing (`problem` says why).
     std::optional<EvaluationOptions> evaluationOptions(QString *problem) const;
+    // The same when nothing runs, else nothing (the problem shown in the panel).
+    std::optional<EvaluationOptions> evaluationToStart();
+    void showEvaluation(const QString &status); // a finished evaluation's chart and status
     void watchEvaluation(Task *task);
     void onDocumentReset();
     void onLocationChanged();

@@ -28,7 +28,7 @@ public:
 
     void setResult(const EvaluationResult &result);
     // The realism report the same way: per metric (opening correlation, articulation, closures,
-    // lag, sharpness, seam) a bar per method, "tracked" (the AAM's re-synthesis) first.
+    // sharpness) a bar per method, "tracked" (the AAM's re-synthesis) first.
     void setRealism(const RealismResult &result);
     void clear();
     // Models and metrics drawn (0 when empty).
