@@ -2,7 +2,8 @@
 // The Models dock: the AAMs and dynamic models the project refers to, and the dynamics workflow:
 // choose model kinds and options, train them as TaskRunner tasks with a live plot of the objective
 // per iteration (cancel keeps the previous model), compare them by k-fold cross-validation (the
-// paper's Figure 4), and look at the trajectories they generate for the current sequence. Trained
+// paper's Figure 4, or the realism report on the rendered lips), and look at the trajectories they
+// generate for the current sequence. Trained
 // models live in the ModelStore and in the document as ModelReferences (kind dpds/slds/brand/hmm,
 // each training a file of its own, models/<kind>[-n].model), so Train is undone like any edit.
 #include <QHash>
