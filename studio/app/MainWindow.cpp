@@ -111,14 +111,12 @@ MainWindow::MainWindow(QWidget *parent)
             m_details->showSequence(m_document->sequence(row), media()->mediaPath, *media());
     });
     connect(m_undo, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
-    // Speech generated in the Preview: the timeline's clicks move it.
+    connect(m_transport, &TransportBar::frameRequested, this, &MainWindow::setCurrentFrame);
+    // A click in the timeline moves what it shows: the sequence, or the Preview's new speech.
     connect(waveformView(), &WaveformView::timeClicked, this, [this](double t) {
         if (m_timeline->isShowingGeneratedSpeech())
             m_preview->seekSpeech(t);
-    });
-    connect(m_transport, &TransportBar::frameRequested, this, &MainWindow::setCurrentFrame);
-    connect(waveformView(), &WaveformView::timeClicked, this, [this](double t) {
-        if (media() && !m_timeline->isShowingGeneratedSpeech()) // else the Preview's speech is clicked
+        else if (media())
             setCurrentFrame(int(t * media()->frameRate));
     });
     connect(m_playback, &PlaybackController::frameReached, this, [this](int frame) {

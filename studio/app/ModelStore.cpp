@@ -64,13 +64,6 @@ std::shared_ptr<const DynamicModel> ModelStore::dynamicModel(const QString &kind
     return entry ? entry->dynamic : nullptr;
 }
 
-std::shared_ptr<const DynamicModel> ModelStore::loadedDynamicModel(const QString &kind) const
-{
-    const ModelReference *ref = m_document->project().model(kind.toStdString());
-    const auto it = ref ? m_entries.find(ref->file) : m_entries.end();
-    return it != m_entries.end() ? it->second.dynamic : nullptr;
-}
-
 std::string ModelStore::aamIdentifier()
 {
     const auto model = aam();
@@ -109,11 +102,14 @@ void ModelStore::releaseFile(const QString &file)
         m_reserved.erase(file.toStdString());
 }
 
+bool ModelStore::hasWritableFolder() const
+{
+    return !m_document->isReadOnly() && !m_document->folder().isEmpty();
+}
+
 QString ModelStore::writablePath(const QString &file) const
 {
-    if (m_document->isReadOnly() || m_document->folder().isEmpty())
-        return {};
-    return QDir(m_document->folder()).filePath(file);
+    return hasWritableFolder() ? QDir(m_document->folder()).filePath(file) : QString();
 }
 
 void ModelStore::addAam(const QString &file, std::shared_ptr<const AamModel> model, bool written)
@@ -159,11 +155,11 @@ void ModelStore::onLocationChanged()
 {
     // The project has a folder of its own now (Save As): every model held here that the folder
     // lacks goes there — those made in the demo, and earlier ones an undo can bring back.
+    if (!hasWritableFolder())
+        return; // still read-only
     QStringList problems;
     for (auto &[file, entry] : m_entries) {
         const QString path = writablePath(QString::fromStdString(file));
-        if (path.isEmpty())
-            return;
         if (QFileInfo::exists(path) && !entry.unwritten)
             continue;
         try {

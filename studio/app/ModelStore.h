@@ -37,8 +37,6 @@ public:
     // file does not load (`problem` then says which file and why).
     std::shared_ptr<const AamModel> aam(QString *problem = nullptr);
     std::shared_ptr<const DynamicModel> dynamicModel(const QString &kind, QString *problem = nullptr);
-    // The same without loading anything: null unless the model is in memory.
-    std::shared_ptr<const DynamicModel> loadedDynamicModel(const QString &kind) const;
     // The identifier of the AAM in use (what a trained dynamic model records), "unspecified" without one.
     std::string aamIdentifier();
     // The AAM identifier the dynamic model of `kind` in use records (what it is written with).
@@ -78,6 +76,7 @@ private:
         bool unwritten = false;
     };
     Entry *entryFor(const std::string &kind, QString *problem);
+    bool hasWritableFolder() const;
     void onDocumentReset();
     void onLocationChanged();
 

@@ -82,10 +82,6 @@ void StudioContext::setSelection(double start, double end)
     m_selectionEnd = end;
 }
 
-} // namespace lipsync::studio
-
-namespace lipsync::studio {
-
 void StudioContext::setShownSpeech(std::shared_ptr<const SpeechToFaceResult> speech, const QString &title)
 {
     if (speech == m_speech)

@@ -351,33 +351,13 @@ QList<Task *> ModelsPanel::train()
     return started;
 }
 
-std::optional<EvaluationOptions> ModelsPanel::evaluationOptions(QString *problem) const
-{
-    const std::vector<LabelledSequence> data = trainingData(problem);
-    if (data.empty())
-        return std::nullopt;
-    EvaluationOptions options;
-    options.folds = std::min(m_folds->value(), int(data.size()));
-    options.kinds.clear();
-    for (const QString &kind : ModelKinds::ids())
-        if (m_kinds[kind]->isChecked() && m_kinds[kind]->isEnabled())
-            options.kinds.push_back(kind.toStdString());
-    if (options.kinds.empty() || options.folds < 2) {
-        *problem = options.kinds.empty() ? tr("Check at least one model kind to evaluate.")
-                                         : tr("Cross-validation needs at least two sequences.");
-        return std::nullopt;
-    }
-    options.modelOptions = modelOptions();
-    return options;
-}
-
 Task *ModelsPanel::evaluate()
 {
-    const std::optional<EvaluationOptions> options = evaluationToStart();
+    std::vector<LabelledSequence> sequences;
+    const std::optional<EvaluationOptions> options = evaluationToStart(&sequences);
     if (!options)
         return nullptr;
-    QString problem;
-    auto data = std::make_shared<const std::vector<LabelledSequence>>(trainingData(&problem));
+    auto data = std::make_shared<const std::vector<LabelledSequence>>(std::move(sequences));
     QPointer<ModelsPanel> self(this);
     Task *task = m_context->taskRunner()->run<EvaluationResult>(
         tr("Evaluate %n model(s) (%1-fold)", "", int(options->kinds.size())).arg(options->folds),
@@ -396,7 +376,8 @@ Task *ModelsPanel::evaluate()
 
 Task *ModelsPanel::evaluateRealism()
 {
-    const std::optional<EvaluationOptions> options = evaluationToStart();
+    std::vector<LabelledSequence> sequences; // the realism report takes them from the project
+    const std::optional<EvaluationOptions> options = evaluationToStart(&sequences);
     if (!options)
         return nullptr;
     RealismOptions realism;
@@ -420,14 +401,25 @@ Task *ModelsPanel::evaluateRealism()
     return task;
 }
 
-std::optional<EvaluationOptions> ModelsPanel::evaluationToStart()
+std::optional<EvaluationOptions> ModelsPanel::evaluationToStart(std::vector<LabelledSequence> *data)
 {
     if (!m_context || !runningTasks().isEmpty())
         return std::nullopt;
     QString problem;
-    std::optional<EvaluationOptions> options = evaluationOptions(&problem);
-    if (!options)
-        m_status->setText(problem);
+    *data = trainingData(&problem);
+    EvaluationOptions options;
+    options.folds = std::min(m_folds->value(), int(data->size()));
+    options.kinds.clear();
+    for (const QString &kind : ModelKinds::ids())
+        if (m_kinds[kind]->isChecked() && m_kinds[kind]->isEnabled())
+            options.kinds.push_back(kind.toStdString());
+    if (data->empty() || options.kinds.empty() || options.folds < 2) {
+        m_status->setText(data->empty()            ? problem
+                          : options.kinds.empty() ? tr("Check at least one model kind to evaluate.")
+                                                  : tr("Cross-validation needs at least two sequences."));
+        return std::nullopt;
+    }
+    options.modelOptions = modelOptions();
     return options;
 }
 

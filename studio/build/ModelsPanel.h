@@ -93,10 +93,9 @@ signals:
 private:
     std::vector<LabelledSequence> trainingData(QString *problem) const;
     ModelOptions modelOptions() const; // the options the controls choose
-    // The folds, kinds and model options of the controls, or nothing (`problem` says why).
-    std::optional<EvaluationOptions> evaluationOptions(QString *problem) const;
-    // The same when nothing runs, else nothing (the problem shown in the panel).
-    std::optional<EvaluationOptions> evaluationToStart();
+    // The folds, kinds and model options of the controls for an evaluation of `data` (set to
+    // trainingData()), or nothing when one cannot start (the reason shown in the panel).
+    std::optional<EvaluationOptions> evaluationToStart(std::vector<LabelledSequence> *data);
     void showEvaluation(const QString &status); // a finished evaluation's chart and status
     void watchEvaluation(Task *task);
     void onDocumentReset();
