@@ -1,17 +1,33 @@
 #pragma once
-// Shared set-up of the GUI tests: the studio's main window on the bundled demo project, shown,
+// Shared set-up of the GUI tests: the process (OpenGL surface format for VTK, test-mode settings
+// so the user's own are untouched), the studio's main window on the bundled demo project, shown,
 // active (window shortcuts only fire in the active window) and with its loading tasks finished.
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
 #include "app/ProjectFiles.h"
+#include "app/SurfaceFormat.h"
 #include "preview/PlaybackController.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/TimelinePanel.h"
 
 #include <QCoreApplication>
+#include <QStandardPaths>
 #include <QTest>
 
 namespace lipsync::studio::testing {
+
+// For the test class's static initMain(), before the application exists.
+inline void initStudioTest()
+{
+    setDefaultSurfaceFormat();
+    QStandardPaths::setTestModeEnabled(true);
+}
+
+// Waits until the window's background tasks (training, tracking, export) have finished.
+inline void waitForTasks(MainWindow *window, int timeoutMs = 120000)
+{
+    QTRY_COMPARE_WITH_TIMEOUT(window->taskRunner()->runningCount(), 0, timeoutMs);
+}
 
 // Creates `window`. A failed check fails the calling test: callers return when
 // QTest::currentTestFailed().
@@ -27,7 +43,7 @@ inline void openDemoWindow(MainWindow *&window)
     QVERIFY(QTest::qWaitForWindowActive(window));
     QVERIFY(window->files()->openDemo());
     QTRY_VERIFY_WITH_TIMEOUT(window->media() != nullptr, 60000);
-    QTRY_COMPARE_WITH_TIMEOUT(window->taskRunner()->runningCount(), 0, 60000);
+    waitForTasks(window, 60000);
 }
 
 // The demo window with its timeline panel found and audio playback off (the speech tests).

@@ -3,12 +3,12 @@
 // save or a clean close removes the autosave; opening a project whose autosave is newer (a crash
 // left it) offers Recover / Discard / Cancel — answered here through the injectable prompt.
 #include "../DamagedFiles.h"
+#include "DemoWindow.h"
 #include "app/Autosave.h"
 #include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
 #include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
-#include "app/SurfaceFormat.h"
 #include "tasks/TaskRunner.h"
 
 #include <QDir>
@@ -16,7 +16,6 @@
 #include <QFile>
 #include <QSettings>
 #include <QSignalSpy>
-#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
@@ -59,11 +58,7 @@ class TestAutosave : public QObject
 {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        setDefaultSurfaceFormat();
-        QStandardPaths::setTestModeEnabled(true);
-    }
+    static void initMain() { studio::testing::initStudioTest(); }
 
 private:
     MainWindow *m_window = nullptr;

@@ -14,14 +14,12 @@
 #include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
 #include "app/SequenceMedia.h"
-#include "app/SurfaceFormat.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/TimelinePanel.h"
 
 #include <QAction>
 #include <QDir>
 #include <QFile>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -80,11 +78,7 @@ class TestBadFiles : public QObject
 {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        setDefaultSurfaceFormat();
-        QStandardPaths::setTestModeEnabled(true);
-    }
+    static void initMain() { studio::testing::initStudioTest(); }
 
 private:
     MainWindow *m_window = nullptr;

@@ -6,7 +6,6 @@
 
 #include "app/MainWindow.h"
 #include "app/ProjectDocument.h"
-#include "app/SurfaceFormat.h"
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
 #include "export/ExportMenu.h"
@@ -21,7 +20,6 @@
 #include <QMenuBar>
 #include <QSignalSpy>
 #include <QStatusBar>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -33,17 +31,13 @@ class TestExportMenu : public QObject
 {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        setDefaultSurfaceFormat();
-        QStandardPaths::setTestModeEnabled(true);
-    }
+    static void initMain() { testing::initStudioTest(); }
 
 private:
     MainWindow *m_window = nullptr;
     QTemporaryDir m_dir;
 
-    void waitIdle() { QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 120000); }
+    void waitIdle() { testing::waitForTasks(m_window); }
     ExportMenu *menu() const { return m_window->exportMenu(); }
 
 private slots:

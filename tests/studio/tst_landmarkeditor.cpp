@@ -14,7 +14,6 @@
 #include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
 #include "app/SequenceMedia.h"
-#include "app/SurfaceFormat.h"
 #include "aam/AamModel.h"
 #include "build/ModesView.h"
 #include "tasks/Task.h"
@@ -25,7 +24,6 @@
 #include <QLabel>
 #include <QSignalSpy>
 #include <QSlider>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -40,11 +38,7 @@ class TestLandmarkEditor : public QObject
 {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        setDefaultSurfaceFormat();
-        QStandardPaths::setTestModeEnabled(true);
-    }
+    static void initMain() { testing::initStudioTest(); }
 
 private:
     MainWindow *m_window = nullptr;

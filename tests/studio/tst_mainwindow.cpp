@@ -14,7 +14,6 @@
 #include "app/SequenceMedia.h"
 #include "app/StudioActions.h"
 #include "app/TransportBar.h"
-#include "app/SurfaceFormat.h"
 #include "preview/PlaybackController.h"
 #include "tasks/Task.h"
 #include "tasks/TaskRunner.h"
@@ -32,7 +31,6 @@
 #include <QSpinBox>
 #include <QSettings>
 #include <QSignalSpy>
-#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -47,11 +45,7 @@ class TestMainWindow : public QObject
 {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        setDefaultSurfaceFormat();
-        QStandardPaths::setTestModeEnabled(true); // keep the user's settings and recent list
-    }
+    static void initMain() { testing::initStudioTest(); }
 
 private slots:
     void initTestCase()

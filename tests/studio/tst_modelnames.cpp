@@ -9,7 +9,6 @@
 #include "app/ModelStore.h"
 #include "app/ModelKinds.h"
 #include "app/ProjectDocument.h"
-#include "app/SurfaceFormat.h"
 #include "build/ModelsPanel.h"
 #include "compare/StudyResultsView.h"
 #include "compare/StudySetupDialog.h"
@@ -28,7 +27,6 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QSpinBox>
-#include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
 #include <QTreeWidget>
@@ -41,14 +39,10 @@ class TestModelNames : public QObject
 {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        setDefaultSurfaceFormat();
-        QStandardPaths::setTestModeEnabled(true);
-    }
+    static void initMain() { testing::initStudioTest(); }
 
 private:
-    void waitIdle() { QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 300000); }
+    void waitIdle() { testing::waitForTasks(m_window, 300000); }
 
     MainWindow *m_window = nullptr;
     ModelsPanel *m_panel = nullptr;

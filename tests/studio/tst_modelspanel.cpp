@@ -15,7 +15,6 @@
 #include "app/SequenceMedia.h"
 #include "annotate/FacesController.h"
 #include "app/ModelKinds.h"
-#include "app/SurfaceFormat.h"
 #include "build/ModelsPanel.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/ModelFile.h"
@@ -31,7 +30,6 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
-#include <QStandardPaths>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -50,11 +48,7 @@ class TestModelsPanel : public QObject
 {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        setDefaultSurfaceFormat();
-        QStandardPaths::setTestModeEnabled(true);
-    }
+    static void initMain() { testing::initStudioTest(); }
 
 private:
     void checkOnly(const QStringList &kinds)
@@ -69,10 +63,7 @@ private:
                 return true;
         return false;
     }
-    void waitIdle()
-    {
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 120000);
-    }
+    void waitIdle() { testing::waitForTasks(m_window); }
 
     MainWindow *m_window = nullptr;
     ModelsPanel *m_panel = nullptr;

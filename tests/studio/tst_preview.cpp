@@ -13,7 +13,6 @@
 #include "app/ModelKinds.h"
 #include "app/ProjectDocument.h"
 #include "app/SequenceMedia.h"
-#include "app/SurfaceFormat.h"
 #include "build/ModelsPanel.h"
 #include "plots/TrajectoryView.h"
 #include "preview/GeneratedFaces.h"
@@ -39,7 +38,6 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
-#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTemporaryDir>
@@ -107,14 +105,10 @@ class TestPreview : public QObject
 {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        setDefaultSurfaceFormat();
-        QStandardPaths::setTestModeEnabled(true);
-    }
+    static void initMain() { testing::initStudioTest(); }
 
 private:
-    void waitIdle() { QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 120000); }
+    void waitIdle() { testing::waitForTasks(m_window); }
 
     MainWindow *m_window = nullptr;
     PreviewPanel *m_preview = nullptr;

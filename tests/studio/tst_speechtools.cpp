@@ -9,7 +9,6 @@
 
 #include "app/MainWindow.h"
 #include "app/ProjectDocument.h"
-#include "app/SurfaceFormat.h"
 #include "preview/PlaybackController.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/PronunciationsDialog.h"
@@ -24,7 +23,6 @@
 #include <QSet>
 #include <QSettings>
 #include <QPushButton>
-#include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
 #include <QUndoStack>
@@ -39,11 +37,7 @@ class TestSpeechTools : public QObject
 {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        setDefaultSurfaceFormat();
-        QStandardPaths::setTestModeEnabled(true);
-    }
+    static void initMain() { testing::initStudioTest(); }
 
 private slots:
     void initTestCase()

@@ -8,7 +8,6 @@
 #include "app/ModelKinds.h"
 #include "app/ModelStore.h"
 #include "app/ProjectDocument.h"
-#include "app/SurfaceFormat.h"
 #include "build/ModelsPanel.h"
 #include "compare/ParticipantSession.h"
 #include "compare/ParticipantView.h"
@@ -28,7 +27,6 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSpinBox>
-#include <QStandardPaths>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -43,11 +41,7 @@ class TestStudy : public QObject
 {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        setDefaultSurfaceFormat();
-        QStandardPaths::setTestModeEnabled(true);
-    }
+    static void initMain() { testing::initStudioTest(); }
 
 private:
     MainWindow *m_window = nullptr;
@@ -55,7 +49,7 @@ private:
     QTemporaryDir m_dir;
     QString m_folder;
 
-    void waitIdle() { QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 120000); }
+    void waitIdle() { testing::waitForTasks(m_window); }
     const ForcedChoiceStudy &study() const { return *m_window->document()->project().study; }
     ForcedChoiceStudy onDisk() const
     {

@@ -15,7 +15,6 @@
 #include "app/ProjectFiles.h"
 #include "app/DemoProject.h"
 #include "app/StudioContext.h"
-#include "app/SurfaceFormat.h"
 #include "preview/PlaybackController.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/TierEdits.h"
@@ -27,7 +26,6 @@
 #include <QComboBox>
 #include <QElapsedTimer>
 #include <QLineEdit>
-#include <QStandardPaths>
 #include <QSettings>
 #include <QTest>
 #include <QUndoStack>
@@ -52,11 +50,7 @@ class TestTimelineEditor : public QObject
 {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        setDefaultSurfaceFormat();
-        QStandardPaths::setTestModeEnabled(true);
-    }
+    static void initMain() { testing::initStudioTest(); }
 
 private slots:
     void initTestCase()

@@ -9,7 +9,6 @@
 #include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
 #include "app/StudioActions.h"
-#include "app/SurfaceFormat.h"
 #include "build/ModelsPanel.h"
 #include "plots/TrajectoryView.h"
 #include "tasks/TaskRunner.h"
@@ -18,7 +17,6 @@
 #include <QCheckBox>
 #include <QPushButton>
 #include <QSpinBox>
-#include <QStandardPaths>
 #include <QTabWidget>
 #include <QTest>
 
@@ -53,11 +51,7 @@ class TestTrajectoryView : public QObject
 {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        setDefaultSurfaceFormat();
-        QStandardPaths::setTestModeEnabled(true);
-    }
+    static void initMain() { testing::initStudioTest(); }
 
 private:
     MainWindow *m_window = nullptr;

@@ -1,12 +1,11 @@
 // The German translation is complete (no unfinished message in the .ts) and, once loaded,
 // changes the main window's menus; English is back after removing it.
 #include "app/MainWindow.h"
-#include "app/SurfaceFormat.h"
+#include "DemoWindow.h"
 #include "app/Translations.h"
 
 #include <QFile>
 #include <QMenuBar>
-#include <QStandardPaths>
 #include <QTest>
 
 using namespace lipsync::studio;
@@ -25,11 +24,7 @@ class TestTranslation : public QObject
 {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        setDefaultSurfaceFormat();
-        QStandardPaths::setTestModeEnabled(true);
-    }
+    static void initMain() { testing::initStudioTest(); }
 
 private slots:
     void germanTranslationIsComplete()
