@@ -71,6 +71,8 @@ int runAamBuild(const CommandLine &a)
         options.maxCombinedModes = a.integer("max-modes", 0);
     if (a.isSet("levels"))
         options.levels = a.integer("levels", 0);
+    if (a.isSet("exemplars"))
+        options.maxExemplars = a.integer("exemplars", 0);
     options.mirror = options.mirror || a.isSet("mirror");
     const QString features = a.isSet("fit-features") ? a.value("fit-features") : a.isSet("generic") ? "igo" : "grey";
     if (features != "grey" && features != "igo")
@@ -120,6 +122,7 @@ int runAamBuild(const CommandLine &a)
                                  {"combined", modeChoiceJson(report.combined, options.combinedVariance,
                                                              options.maxCombinedModes, model.trainingImages)}}},
                     {"texture_pixels", model.warp(0).pixelCount()},
+                    {"exemplars", model.exemplarCount()},
                     {"reference_eye_distance", report.referenceEyeDistance},
                     {"levels", int(model.levels.size())},
                     {"mirrored", options.mirror},
@@ -132,11 +135,11 @@ int runAamBuild(const CommandLine &a)
         printJson(out);
     else
         std::printf("built %s from %d images: %d shape, %d texture, %d combined modes (%s)\n"
-                    "  reference frame: %.0f pixels between the outer eye corners, %d levels\n"
+                    "  reference frame: %.0f pixels between the outer eye corners, %d levels; %d exemplars\n"
                     "  combined: %s\n  shape: %s\n  texture: %s\n",
                     qPrintable(a.value("out")), model.trainingImages, model.shapeModes(),
                     model.textureModes(), model.combinedModes(), model.identifier.c_str(),
-                    report.referenceEyeDistance, int(model.levels.size()),
+                    report.referenceEyeDistance, int(model.levels.size()), model.exemplarCount(),
                     qPrintable(modeReason(report.combined, options.combinedVariance,
                                           options.maxCombinedModes, model.trainingImages)),
                     qPrintable(modeReason(report.shape, options.shapeVariance, 0, model.trainingImages)),
@@ -312,6 +315,8 @@ const CommandRegistration buildRegistration{
        QStringLiteral("0")},
       {"levels", "N", "resolution levels for fitting, each half the previous (0: automatic)", QStringLiteral("0")},
       {"mirror", {}, "add every image mirrored"},
+      {"exemplars", "N", "training images kept as the detail (teeth, lip highlights) synthesis adds (0: none)",
+       QString::number(AamBuildOptions{}.maxExemplars)},
       {"fit-features", "grey|igo", "what fitting compares: grey levels or image gradient orientations "
                                    "(default: grey, igo with --generic)", {}, CommandOption::Optional, {"features"}},
       {"generic", {}, "the cross-validated settings for in-the-wild faces (options given explicitly win)"},

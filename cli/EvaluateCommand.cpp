@@ -1,5 +1,6 @@
 // lipsync evaluate: k-fold cross-validation of the dynamic models (docs/models.md §6).
 #include "CommandLine.h"
+#include "Compositing.h"
 #include "DynamicModelOptions.h"
 #include "TrainingData.h"
 
@@ -56,6 +57,7 @@ int runRealism(const CommandLine &args, const EvaluationOptions &evaluation)
     options.crossValidation = evaluation;
     options.maxLag = args.integer(QStringLiteral("max-lag"), 0);
     options.dlibPredictor = args.value(QStringLiteral("dlib")).toStdString();
+    options.composite = Compositing::from(args);
     const Project project = Project::load(args.value(QStringLiteral("project")).toStdString());
     Feedback feedback;
     const RealismResult result = evaluateRealism(project, options, feedback);
@@ -69,8 +71,12 @@ int runRealism(const CommandLine &args, const EvaluationOptions &evaluation)
 int runEvaluate(const CommandLine &args)
 {
     const bool realism = args.isSet(QStringLiteral("realism"));
-    if (!realism && (args.isSet(QStringLiteral("max-lag")) || args.isSet(QStringLiteral("dlib"))))
-        throw UsageError(QStringLiteral("--max-lag and --dlib apply to --realism only"));
+    if (!realism) {
+        for (const QString &option : {QStringLiteral("max-lag"), QStringLiteral("dlib"), QStringLiteral("full-face"),
+                                      QStringLiteral("no-colour-match"), QStringLiteral("no-detail")})
+            if (args.isSet(option))
+                throw UsageError(QStringLiteral("--%1 applies to --realism only").arg(option));
+    }
     EvaluationOptions options;
     options.folds = args.integer(QStringLiteral("folds"), 2);
     options.seed = args.unsignedInteger(QStringLiteral("seed"));
@@ -141,7 +147,8 @@ const CommandRegistration registration{
           QStringLiteral("--realism: dlib's 68-point shape predictor (default: Debian's libdlib-data)")}},
         {}}
         .add(trainingDataOptions())
-        .add(dynamicModelOptions()),
+        .add(dynamicModelOptions())
+        .add(Compositing::options()),
     &runEvaluate};
 
 } // namespace

@@ -3,6 +3,7 @@
 // The alignment is SpeechAligner's (the options and results of `lipsync align`); generation and
 // rendering are core/render/SpeechToFace, which the studio uses too.
 #include "CommandLine.h"
+#include "Compositing.h"
 #include "SpeechAligner.h"
 #include "VideoOutput.h"
 
@@ -30,8 +31,7 @@ int runRender(const CommandLine &args)
         request.frameRate = args.positiveNumber("fps");
     RenderOptions options;
     options.sideBySide = args.isSet("side-by-side");
-    options.composite.region = args.isSet("full-face") ? FaceRegion::Full : FaceRegion::Lower;
-    options.composite.matchColour = !args.isSet("no-colour-match");
+    options.composite = Compositing::from(args);
     const VideoOutput output = VideoOutput::from(args, options.sideBySide ? 2 : 1);
     const QString &out = output.out;
     const QString &pngDir = output.pngDir;
@@ -77,6 +77,7 @@ int runRender(const CommandLine &args)
             {"sideBySide", options.sideBySide},
             {"region", options.composite.region == FaceRegion::Full ? "full" : "lower"},
             {"colourMatch", options.composite.matchColour},
+            {"detail", options.composite.detail},
             {"phones", int(g.phones.intervals.size())},
             {"generateSeconds", g.seconds},
             {"renderSeconds", report.renderSeconds},
@@ -107,13 +108,9 @@ const CommandRegistration registration{
           QStringLiteral("the words spoken (.align, .lab, .txt or a TextGrid words tier)"), {}, CommandOption::Required},
          {QStringLiteral("side-by-side"), {}, QStringLiteral("the real clip left, the generated face right")},
          {QStringLiteral("fps"), QStringLiteral("RATE"),
-          QStringLiteral("frames per second of the generated face (default: the video's rate, 25 for audio)")},
-         {QStringLiteral("full-face"), {},
-          QStringLiteral("synthesise the whole modelled face, eyes included (default: the lower face, the "
-                         "recording's eyes and upper face kept)")},
-         {QStringLiteral("no-colour-match"), {},
-          QStringLiteral("keep the model's mean colour instead of matching the frame's lighting")}},
+          QStringLiteral("frames per second of the generated face (default: the video's rate, 25 for audio)")}},
                 {}}
+        .add(Compositing::options())
         .add(VideoOutput::options())
         .add(SpeechAligner::options()),
     &runRender};

@@ -393,18 +393,18 @@
         <translation>keine Sequenz ausgewählt</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="230"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="231"/>
         <source>%1 has no video to put beside the generated face</source>
         <translation>%1 hat kein Video, neben das das erzeugte Gesicht gestellt werden könnte</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="245"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="246"/>
         <source>the project has no trained dynamic model and AAM (train one in the Models panel)</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell und kein AAM (im Bereich Modelle trainieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="235"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="259"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="236"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="260"/>
         <source>Export the generated frames of %1</source>
         <translation>Erzeugte Einzelbilder von %1 exportieren</translation>
     </message>
@@ -421,58 +421,58 @@
         <translation>Echt und erzeugt &amp;nebeneinander%1 (MP4)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="236"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="260"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="237"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="261"/>
         <source>Export the generated video of %1</source>
         <translation>Erzeugtes Video von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="276"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="277"/>
         <source>%1 has no face features (track it first)</source>
         <translation>%1 hat keine Gesichtsmerkmale (zuerst tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="279"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="280"/>
         <source>Export the features of %1</source>
         <translation>Merkmale von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="287"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="288"/>
         <source>%1 has no phone alignment (align it first)</source>
         <translation>%1 hat keine Phonem-Alignierung (zuerst alignieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="290"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="291"/>
         <source>Export the alignment of %1</source>
         <translation>Alignierung von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="303"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="304"/>
         <source>%1 has no landmarks</source>
         <translation>%1 hat keine Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="306"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="307"/>
         <source>Export the landmarks of %1</source>
         <translation>Landmarken von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="327"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="328"/>
         <source>the project has no AAM</source>
         <translation>das Projekt hat kein AAM</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="328"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="329"/>
         <source>the project has no trained dynamic model</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="333"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="334"/>
         <source>Export %1</source>
         <translation>%1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="361"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="362"/>
         <source>Exported to %1</source>
         <translation>Exportiert nach %1</translation>
     </message>
@@ -840,118 +840,148 @@
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="129"/>
+        <location filename="../studio/app/MainWindow.cpp" line="127"/>
         <source>Playing without sound: %1.</source>
         <translation>Wiedergabe ohne Ton: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="135"/>
-        <location filename="../studio/app/MainWindow.cpp" line="136"/>
+        <location filename="../studio/app/MainWindow.cpp" line="133"/>
+        <location filename="../studio/app/MainWindow.cpp" line="134"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="191"/>
+        <location filename="../studio/app/MainWindow.cpp" line="153"/>
+        <source>Generated &amp;Face</source>
+        <translation>Generiertes &amp;Gesicht</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="155"/>
+        <source>&amp;Whole Face (Eyes Included)</source>
+        <translation>&amp;Ganzes Gesicht (mit Augen)</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="157"/>
+        <source>Synthesise the whole modelled face; otherwise the lower face is drawn and the recording&apos;s own eyes and upper face are kept</source>
+        <translation>Das ganze modellierte Gesicht synthetisieren; sonst wird das untere Gesicht gezeichnet und die Augen und das Obergesicht der Aufnahme bleiben erhalten</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="159"/>
+        <source>&amp;Detail from Training Images</source>
+        <translation>&amp;Details aus Trainingsbildern</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="161"/>
+        <source>Add the teeth, lip highlights and skin detail of the AAM&apos;s nearest training images to the model&apos;s smooth texture</source>
+        <translation>Zähne, Glanzlichter der Lippen und Hautdetails der nächstgelegenen Trainingsbilder des AAM zur glatten Textur des Modells hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="163"/>
+        <source>&amp;Match the Frame&apos;s Lighting</source>
+        <translation>&amp;Beleuchtung an das Bild anpassen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="219"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="195"/>
+        <location filename="../studio/app/MainWindow.cpp" line="223"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="205"/>
+        <location filename="../studio/app/MainWindow.cpp" line="233"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="218"/>
+        <location filename="../studio/app/MainWindow.cpp" line="246"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="239"/>
+        <location filename="../studio/app/MainWindow.cpp" line="267"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="240"/>
+        <location filename="../studio/app/MainWindow.cpp" line="268"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="241"/>
+        <location filename="../studio/app/MainWindow.cpp" line="269"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="243"/>
+        <location filename="../studio/app/MainWindow.cpp" line="271"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="274"/>
+        <location filename="../studio/app/MainWindow.cpp" line="302"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="277"/>
+        <location filename="../studio/app/MainWindow.cpp" line="305"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="289"/>
+        <location filename="../studio/app/MainWindow.cpp" line="317"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="293"/>
+        <location filename="../studio/app/MainWindow.cpp" line="321"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="304"/>
+        <location filename="../studio/app/MainWindow.cpp" line="333"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="308"/>
+        <location filename="../studio/app/MainWindow.cpp" line="337"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="312"/>
+        <location filename="../studio/app/MainWindow.cpp" line="341"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="315"/>
+        <location filename="../studio/app/MainWindow.cpp" line="344"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="366"/>
+        <location filename="../studio/app/MainWindow.cpp" line="395"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="411"/>
+        <location filename="../studio/app/MainWindow.cpp" line="440"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="419"/>
+        <location filename="../studio/app/MainWindow.cpp" line="448"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="448"/>
+        <location filename="../studio/app/MainWindow.cpp" line="477"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="452"/>
+        <location filename="../studio/app/MainWindow.cpp" line="481"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -959,43 +989,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="463"/>
+        <location filename="../studio/app/MainWindow.cpp" line="492"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="464"/>
+        <location filename="../studio/app/MainWindow.cpp" line="493"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="464"/>
+        <location filename="../studio/app/MainWindow.cpp" line="493"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="470"/>
+        <location filename="../studio/app/MainWindow.cpp" line="499"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="489"/>
+        <location filename="../studio/app/MainWindow.cpp" line="518"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="517"/>
-        <location filename="../studio/app/MainWindow.cpp" line="525"/>
+        <location filename="../studio/app/MainWindow.cpp" line="546"/>
+        <location filename="../studio/app/MainWindow.cpp" line="554"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="524"/>
+        <location filename="../studio/app/MainWindow.cpp" line="553"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="204"/>
+        <location filename="../studio/app/MainWindow.cpp" line="232"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -1197,17 +1227,17 @@
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="366"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="418"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="367"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="419"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="383"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="363"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -1215,7 +1245,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="389"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="369"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen (k-fache Kreuzvalidierung).</numerusform>
@@ -1223,7 +1253,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="407"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="388"/>
         <source>Realism of %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
@@ -1231,7 +1261,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="413"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="394"/>
         <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
         <translation>
             <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
@@ -1239,17 +1269,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="446"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="438"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="474"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="466"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="479"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="471"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
@@ -1259,17 +1289,17 @@
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="503"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="495"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="513"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="505"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="538"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="530"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>
@@ -1489,78 +1519,78 @@
         <translation>Die aktuelle Sequenz wieder zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="255"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="261"/>
         <source>Prepare the preview of %1</source>
         <translation>Vorschau von %1 vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="284"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="290"/>
         <source>The head could not be tracked: %1</source>
         <translation>Der Kopf konnte nicht getrackt werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="333"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="340"/>
         <source>Recorded video (landmarks: tracked)</source>
         <translation>Aufgenommenes Video (Landmarken: getrackt)</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="338"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="345"/>
         <source>Generated: %1</source>
         <translation>Erzeugt: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="342"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="349"/>
         <source>Generated</source>
         <translation>Erzeugt</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="393"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="400"/>
         <source>The project has no appearance model (Faces ▸ Build AAM).</source>
         <translation>Das Projekt hat kein Erscheinungsmodell (Gesichter ▸ AAM erstellen).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="395"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="402"/>
         <source>Tracking the head pose…</source>
         <translation>Kopfhaltung wird getrackt…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="397"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="404"/>
         <source>This sequence has no phones (align it in the Timeline).</source>
         <translation>Diese Sequenz hat keine Phoneme (in der Zeitleiste alignieren).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="399"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="406"/>
         <source>Train a dynamic model in the Models panel to see the faces it generates.</source>
         <translation>Trainieren Sie ein dynamisches Modell im Bereich „Modelle“, um die erzeugten Gesichter zu sehen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="448"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="455"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 — Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="557"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="564"/>
         <source>Faces for new speech need the project&apos;s appearance model.</source>
         <translation>Gesichter für neue Sprache brauchen das Erscheinungsmodell des Projekts.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="558"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="565"/>
         <source>Build one with Faces ▸ Build AAM.</source>
         <translation>Erstellen Sie eines mit Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="563"/>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="616"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="570"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="623"/>
         <source>No faces could be generated for this speech.</source>
         <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="564"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="571"/>
         <source>Train a dynamic model in the Models panel first.</source>
         <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="587"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="594"/>
         <source>Generate faces for %1</source>
         <translation>Gesichter für %1 erzeugen</translation>
     </message>

@@ -52,8 +52,6 @@ std::string checkExample(const AamTrainingExample &e)
     return {};
 }
 
-// The combined PCA runs on data that is already centred (uncentred PCA, n-dimensional span), so
-// its last mode has no variance; n-1 modes there are the images' limit as for the others.
 // The options' reference eye distance, or the automatic one for these examples.
 double chosenReferenceEyeDistance(const std::vector<AamTrainingExample> &examples, const AamBuildOptions &options)
 {
@@ -80,10 +78,60 @@ int chosenLevels(double referenceEyeDistance, const AamBuildOptions &options)
     return levels;
 }
 
+// The combined PCA runs on data that is already centred (uncentred PCA, n-dimensional span), so
+// its last mode has no variance; n-1 modes there are the images' limit as for the others.
 AamModeChoice aamModeChoiceOf(const Pca &pca, int samples)
 {
     const bool imageBound = pca.limit == PcaLimit::Rank && pca.modes() >= samples - 1;
     return {pca.modes(), pca.retainedFraction(), imageBound ? PcaLimit::Samples : pca.limit};
+}
+
+// Keeps up to `maxCount` training images as the model's exemplar detail: each image's combined
+// parameters c_i = Q^T j_i and the part of its colour texture outside the texture modes,
+// g_i - (g0 + Pg Pg^T (g_i - g0)), quantised to 8 bits. With more images than that, a
+// farthest-point subset in the whitened combined parameters (starting from the image nearest the
+// mean face), so every region of the face space keeps its nearest real example.
+void addExemplars(AamModel &model, const Eigen::MatrixXd &joint, const Eigen::MatrixXd &colour,
+                  const Pca &texturePca, int maxCount)
+{
+    const int n = int(joint.cols());
+    if (maxCount <= 0 || n == 0 || model.combinedModes() == 0)
+        return;
+    const Eigen::MatrixXd params = model.combinedBasis.transpose() * joint; // nc x n
+    const Eigen::VectorXd invSd = model.combinedVariances.cwiseMax(1e-12).cwiseSqrt().cwiseInverse();
+    const Eigen::MatrixXd white = invSd.asDiagonal() * params;
+    std::vector<int> chosen;
+    if (n <= maxCount) {
+        for (int i = 0; i < n; ++i)
+            chosen.push_back(i);
+    } else {
+        Eigen::VectorXd nearest = white.colwise().squaredNorm().transpose();
+        Eigen::Index first = 0;
+        nearest.minCoeff(&first);
+        chosen.push_back(int(first));
+        nearest = (white.colwise() - white.col(first)).colwise().squaredNorm().transpose();
+        while (int(chosen.size()) < maxCount) {
+            Eigen::Index next = 0;
+            nearest.maxCoeff(&next);
+            chosen.push_back(int(next));
+            nearest = nearest.cwiseMin((white.colwise() - white.col(next)).colwise().squaredNorm().transpose());
+        }
+    }
+    const int e = int(chosen.size());
+    model.exemplarParams.resize(model.combinedModes(), e);
+    model.exemplarDetail.resize(colour.rows(), e);
+    model.exemplarScales.resize(e);
+    for (int k = 0; k < e; ++k) {
+        const int i = chosen[size_t(k)];
+        const Eigen::VectorXd centred = colour.col(i) - texturePca.mean;
+        const Eigen::VectorXd residual = centred - texturePca.basis * (texturePca.basis.transpose() * centred);
+        const double peak = residual.cwiseAbs().maxCoeff();
+        const double scale = peak > 0 ? peak / 127.0 : 0.0;
+        model.exemplarParams.col(k) = params.col(i);
+        model.exemplarScales[k] = scale;
+        for (Eigen::Index r = 0; r < residual.size(); ++r)
+            model.exemplarDetail(r, k) = std::int8_t(scale > 0 ? std::lround(residual[r] / scale) : 0);
+    }
 }
 
 } // namespace
@@ -282,6 +330,7 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
     const Pca combined = computePca(joint, options.combinedVariance, options.maxCombinedModes, false);
     model.combinedBasis = combined.basis;
     model.combinedVariances = combined.variances;
+    addExemplars(model, joint, colour, texturePca, options.maxExemplars);
     if (report)
         *report = {aamModeChoiceOf(shapePca, n), aamModeChoiceOf(texturePca, n), aamModeChoiceOf(combined, n),
                    referenceEyeDistance, levelCount};

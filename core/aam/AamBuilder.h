@@ -50,6 +50,10 @@ struct AamBuildOptions
     // symmetric permutation, mirrorShape()): twice the shapes and textures for a generic model,
     // and a symmetric mean. Off for person-specific models, whose asymmetry is real.
     bool mirror = false;
+    // Training images kept as exemplar detail (AamModel::exemplarDetail) for synthesis to draw
+    // real teeth and lip highlights on the model's smooth texture; when there are more, a
+    // farthest-point subset in the combined parameters. 0: none (a model only for fitting).
+    int maxExemplars = 200;
     // Texture the fitter matches: grey (person-specific tracking) or gradient orientations.
     AamFitFeatures fitFeatures = AamFitFeatures::Grey;
     // When set, the detector is run on every training image to learn where its keypoints put
@@ -69,6 +73,7 @@ struct AamBuildOptions
         o.levels = 2;
         o.combinedVariance = 0.95;
         o.maxCombinedModes = 0;
+        o.maxExemplars = 0;
         return o;
     }
 };

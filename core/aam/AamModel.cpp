@@ -40,6 +40,12 @@ public:
         i32(int(m.cols()));
         raw(m.data(), sizeof(double) * size_t(m.size()));
     }
+    template <class Matrix> void bytes(const Matrix &m)
+    {
+        i32(int(m.rows()));
+        i32(int(m.cols()));
+        raw(m.data(), size_t(m.size()));
+    }
     std::string &out() { return m_out; }
 
 private:
@@ -99,6 +105,15 @@ public:
             throw Error("corrupt AAM file (more " + std::string(what) + " than the file holds)", m_path, what);
         Eigen::MatrixXd m(r, c);
         raw(m.data(), sizeof(double) * size_t(m.size()));
+        return m;
+    }
+    Eigen::Matrix<std::int8_t, Eigen::Dynamic, Eigen::Dynamic> bytes(const char *what)
+    {
+        const int r = count(what), c = count(what);
+        if (double(r) * double(c) > double(remaining()))
+            throw Error("corrupt AAM file (more " + std::string(what) + " than the file holds)", m_path, what);
+        Eigen::Matrix<std::int8_t, Eigen::Dynamic, Eigen::Dynamic> m(r, c);
+        raw(m.data(), size_t(m.size()));
         return m;
     }
     bool atEnd() const { return m_pos == m_data.size(); }
@@ -178,8 +193,12 @@ std::string AamModel::serialise(bool withIdentifier) const
 {
     Writer w;
     w.raw(kMagic, sizeof kMagic);
-    const bool version2 = detectorRegression.size() > 0 || fitFeatures != AamFitFeatures::Grey;
-    w.i32(version2 ? kFormatVersion : 1);
+    int version = 1;
+    if (exemplarCount() > 0)
+        version = 3;
+    else if (detectorRegression.size() > 0 || fitFeatures != AamFitFeatures::Grey)
+        version = 2;
+    w.i32(version);
     w.str(withIdentifier ? identifier : std::string());
     w.i32(trainingImages);
     w.vec(meanShape);
@@ -206,10 +225,15 @@ std::string AamModel::serialise(bool withIdentifier) const
         w.vec(l.variances);
     }
     w.vec(detectorShape);
-    if (version2) {
+    if (version >= 2) {
         w.mat(detectorRegression);
         w.vec(detectorKeypointMean);
         w.i32(int(fitFeatures));
+    }
+    if (version >= 3) {
+        w.mat(exemplarParams);
+        w.bytes(exemplarDetail);
+        w.vec(exemplarScales);
     }
     return std::move(w.out());
 }
@@ -240,7 +264,7 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
     char magic[sizeof kMagic];
     r.raw(magic, sizeof magic);
     const int version = r.i32();
-    if (version != 1 && version != kFormatVersion)
+    if (version < 1 || version > kFormatVersion)
         throw Error("unsupported AAM file version " + std::to_string(version) + " (expected 1 to "
                         + std::to_string(kFormatVersion) + ")",
                     path, "version");
@@ -286,6 +310,11 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
             throw Error("unknown fitting features " + std::to_string(features), path, "features");
         m.fitFeatures = AamFitFeatures(features);
     }
+    if (version >= 3) {
+        m.exemplarParams = r.mat("exemplarParams");
+        m.exemplarDetail = r.bytes("exemplarDetail");
+        m.exemplarScales = r.vec("exemplarScales");
+    }
     if (!r.atEnd())
         throw Error("trailing data after the AAM model", path);
     // Consistency: sizes must agree or fitting would read out of bounds.
@@ -300,7 +329,14 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
                         || (m.detectorShape.size() > 0 && m.detectorRegression.rows() == m.meanShape.size()
                             && m.detectorRegression.cols() == 10 && m.detectorKeypointMean.size() == 10))
                     // Colour: 3 values per level-0 pixel; fitting: fitChannels() per pixel.
-                    && m.textureMean.size() * m.fitChannels() == 3 * m.levels[0].mean.size();
+                    && m.textureMean.size() * m.fitChannels() == 3 * m.levels[0].mean.size()
+                    && (m.exemplarCount() == 0
+                        || (m.exemplarParams.rows() == m.combinedModes()
+                            && m.exemplarDetail.rows() == m.textureMean.size()
+                            && m.exemplarDetail.cols() == m.exemplarCount()
+                            && m.exemplarScales.size() == m.exemplarCount() && m.exemplarParams.allFinite()
+                            && m.exemplarScales.allFinite() && m.exemplarScales.minCoeff() >= 0))
+                    && (version < 3 || m.exemplarCount() > 0);
     for (int l = 0; ok && l < nl; ++l) {
         const AamTextureLevel &level = m.levels[size_t(l)];
         ok = level.basis.rows() == level.mean.size() && level.variances.size() == level.basis.cols()

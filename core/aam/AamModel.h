@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -37,10 +38,10 @@ struct AamTextureLevel
 class AamModel
 {
 public:
-    // Version 2 adds the detector keypoint regression and the fitting features; version 1 files
-    // (grey, no regression) still load and are written back as version 1, so their identifiers
-    // do not change.
-    static constexpr int kFormatVersion = 2;
+    // Version 2 adds the detector keypoint regression and the fitting features, version 3 the
+    // exemplar detail; a file is written with the lowest version that holds its content, so older
+    // files load and are written back unchanged and their identifiers do not change.
+    static constexpr int kFormatVersion = 3;
 
     // Shape model, in normalised (centred, unit size) coordinates.
     Eigen::VectorXd meanShape;
@@ -80,6 +81,16 @@ public:
     // differ from the mean. Empty when not calibrated (then the mean detectorShape is the start).
     Eigen::MatrixXd detectorRegression; // 2k x 10
     Eigen::VectorXd detectorKeypointMean; // 10
+
+    // Exemplar detail: what the texture model cannot represent on E of its training images
+    // (g_i minus its projection onto the texture modes: teeth, lip highlights, skin grain), kept
+    // so that synthesis puts real detail back on the model's smooth texture (AamSynthesizer).
+    // Column i: that image's combined parameters and its residual, quantised to 8 bits with the
+    // scale exemplarScales[i]. Empty for models built without exemplars.
+    Eigen::MatrixXd exemplarParams; // nc x E
+    Eigen::Matrix<std::int8_t, Eigen::Dynamic, Eigen::Dynamic> exemplarDetail; // 3N x E
+    Eigen::VectorXd exemplarScales; // E
+    int exemplarCount() const { return int(exemplarParams.cols()); }
 
     int trainingImages = 0;
     // Stable identifier of this model (hash of its contents); dynamic models record it.

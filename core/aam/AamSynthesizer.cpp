@@ -1,5 +1,6 @@
 #include "aam/AamSynthesizer.h"
 
+#include "aam/CubicInterpolation.h"
 #include "aam/LandmarkScheme.h"
 
 #include <opencv2/imgproc.hpp>
@@ -21,6 +22,9 @@ AamSynthesizer::AamSynthesizer(const AamModel &model, double featherPixels) : m_
     m_shapeMatrix = model.shapeBasis * qs / model.shapeWeight;
     m_textureMatrix = (model.textureBasis * qg).cast<float>();
     m_textureMean = model.textureMean.cast<float>();
+    m_invSd = model.combinedVariances.cwiseMax(1e-12).cwiseSqrt().cwiseInverse();
+    if (model.exemplarCount() > 0)
+        m_exemplarsWhite = m_invSd.asDiagonal() * model.exemplarParams;
 
     const PiecewiseAffineWarp &warp = model.warp(0);
     const cv::Mat &index = warp.indexMap();
@@ -84,9 +88,48 @@ Eigen::VectorXd AamSynthesizer::shape(const Eigen::VectorXd &combined) const
     return m_model.meanShape + m_shapeMatrix * combined;
 }
 
-Eigen::VectorXf AamSynthesizer::texture(const Eigen::VectorXd &combined) const
+Eigen::VectorXf AamSynthesizer::texture(const Eigen::VectorXd &combined, bool detail) const
 {
-    return m_textureMean + m_textureMatrix * combined.cast<float>();
+    Eigen::VectorXf g = m_textureMean + m_textureMatrix * combined.cast<float>();
+    if (detail)
+        for (const auto &[k, w] : detailWeights(combined))
+            g += (w * float(m_model.exemplarScales[k])) * m_model.exemplarDetail.col(k).cast<float>();
+    return g;
+}
+
+std::vector<std::pair<int, float>> AamSynthesizer::detailWeights(const Eigen::VectorXd &combined) const
+{
+    const int e = int(m_exemplarsWhite.cols());
+    if (e == 0 || combined.size() != m_exemplarsWhite.rows())
+        return {};
+    const Eigen::VectorXd white = m_invSd.cwiseProduct(combined);
+    std::vector<std::pair<double, int>> byDistance(static_cast<size_t>(e));
+    for (int k = 0; k < e; ++k)
+        byDistance[size_t(k)] = {(m_exemplarsWhite.col(k) - white).norm(), k};
+    const size_t kNearest = std::min<size_t>(3, byDistance.size());
+    std::partial_sort(byDistance.begin(), byDistance.begin() + std::ptrdiff_t(kNearest), byDistance.end());
+    if (kNearest == 1)
+        return {{byDistance[0].second, 1.f}};
+    constexpr double kEpsilon = 1e-9;
+    const double last = 1.0 / (byDistance[kNearest - 1].first + kEpsilon);
+    std::vector<std::pair<int, float>> weights;
+    double norm = 0.0;
+    for (size_t i = 0; i + 1 < kNearest; ++i) {
+        const double w = 1.0 / (byDistance[i].first + kEpsilon) - last;
+        if (w > 0) {
+            weights.emplace_back(byDistance[i].second, float(w));
+            norm += w * w;
+        }
+    }
+    if (norm <= 0) // equidistant exemplars: the first alone
+        return {{byDistance[0].second, 1.f}};
+    // Weights that vanish next to the nearest (c at an exemplar) are left out.
+    constexpr float kNegligible = 1e-6f;
+    for (auto &[k, w] : weights)
+        w = float(w / std::sqrt(norm));
+    weights.erase(std::remove_if(weights.begin(), weights.end(), [](const auto &kw) { return kw.second < kNegligible; }),
+                  weights.end());
+    return weights;
 }
 
 PhotometricTransform AamSynthesizer::defaultPhotometric() const
@@ -94,11 +137,11 @@ PhotometricTransform AamSynthesizer::defaultPhotometric() const
     return {m_model.meanTextureOffset, m_model.meanTextureScale};
 }
 
-cv::Mat AamSynthesizer::textureImage(const Eigen::VectorXd &combined,
-                                     PhotometricTransform photometric) const
+cv::Mat AamSynthesizer::textureImage(const Eigen::VectorXd &combined, PhotometricTransform photometric,
+                                     bool detail) const
 {
     const PiecewiseAffineWarp &warp = m_model.warp(0);
-    Eigen::VectorXf g = texture(combined);
+    Eigen::VectorXf g = texture(combined, detail);
     g = (g.array() * float(photometric.scale) + float(photometric.offset)).cwiseMax(0.f).cwiseMin(255.f);
     cv::Mat image = warp.toImage(g.data(), 3, 0.f);
     float *data = image.ptr<float>();
@@ -162,10 +205,10 @@ void AamSynthesizer::rasterise(const Eigen::VectorXd &combined, const Similarity
                                     + w10 * alphaData[i00 + tw] + w11 * alphaData[i00 + tw + 1];
                 if (alpha <= 0.f)
                     continue;
-                if (texData)
-                    for (int ch = 0; ch < 3; ++ch)
-                        texel[ch] = w00 * texData[3 * i00 + ch] + w01 * texData[3 * (i00 + 1) + ch]
-                                    + w10 * texData[3 * (i00 + tw) + ch] + w11 * texData[3 * (i00 + tw + 1) + ch];
+                if (texData) {
+                    // Catmull-Rom: a bilinear lookup would blur the texture a second time.
+                    sampleCatmullRom<3>(texData, tw, th, 3 * tw, ix, iy, fx, fy, texel);
+                }
                 visit(x, y, alpha, texel);
             }
         }
@@ -177,7 +220,7 @@ void AamSynthesizer::composite(const Eigen::VectorXd &combined, const Similarity
                                const CompositeOptions &options) const
 {
     CV_Assert(frame.type() == CV_8UC3);
-    const cv::Mat tex = textureImage(combined, photometric);
+    const cv::Mat tex = textureImage(combined, photometric, options.detail);
     const cv::Mat &alphaMap = alphaOf(options.region);
     if (!options.matchColour) {
         rasterise(combined, pose, frame.size(), alphaMap, &tex, [&](int x, int y, float alpha, const float *t) {

@@ -11,6 +11,12 @@
 // half-closed). The synthesised colour is shifted by the mean difference to the frame along the
 // blended seam, so the face's lighting matches the frame's. Everything per frame is precomputed
 // matrices and one rasterisation of the face's pixels, so preview and export run it at video rate.
+//
+// A linear texture model reconstructs every frame as a blend of its modes, which smooths away
+// what is particular to each image: teeth, specular highlights on the lips, skin grain. The
+// synthesised texture gets that detail back from the model's exemplars (real training images):
+// the residual of those nearest the parameters in the whitened combined space, outside the
+// texture modes, so it adds detail without changing what the modes describe.
 #include "aam/AamModel.h"
 #include "aam/TextureNormalisation.h"
 
@@ -33,6 +39,10 @@ struct CompositeOptions
     // Offset the synthesised colour (per channel) by the mean frame-minus-synthesis difference
     // over the blended seam, so the face's lighting follows the frame's.
     bool matchColour = true;
+    // Add the exemplar detail of the training images nearest the parameters (teeth, lip
+    // highlights, skin grain the texture modes smooth away; AamModel::exemplarDetail), when the
+    // model has it.
+    bool detail = true;
 };
 
 class AamSynthesizer
@@ -43,11 +53,18 @@ public:
 
     // Shape in normalised model coordinates.
     Eigen::VectorXd shape(const Eigen::VectorXd &combined) const;
-    // Normalised colour texture (3 values per reference pixel).
-    Eigen::VectorXf texture(const Eigen::VectorXd &combined) const;
+    // Normalised colour texture (3 values per reference pixel), with the exemplar detail if
+    // `detail` and the model has exemplars.
+    Eigen::VectorXf texture(const Eigen::VectorXd &combined, bool detail = false) const;
     // The texture as a reference-frame BGR image (CV_32FC3, 0..255) with `photometric` undone;
     // the default photometric transform is the training average.
-    cv::Mat textureImage(const Eigen::VectorXd &combined, PhotometricTransform photometric) const;
+    cv::Mat textureImage(const Eigen::VectorXd &combined, PhotometricTransform photometric,
+                         bool detail = false) const;
+    // The exemplars whose detail texture(c, true) adds, and their weights: the two nearest c in
+    // the whitened combined parameters, w_k = 1/d_k - 1/d_3 (continuous as exemplars trade
+    // places, all on one exemplar at d = 0), scaled to unit Euclidean norm so a blend of two
+    // uncorrelated residuals keeps the energy of one. Empty without exemplars.
+    std::vector<std::pair<int, float>> detailWeights(const Eigen::VectorXd &combined) const;
     PhotometricTransform defaultPhotometric() const;
 
     // Draws the synthesised face into `frame` (CV_8UC3) at `pose` (model coordinates -> frame).
@@ -71,6 +88,8 @@ private:
     Eigen::MatrixXd m_shapeMatrix;   // 2k x nc
     Eigen::MatrixXf m_textureMatrix; // 3N x nc
     Eigen::VectorXf m_textureMean;
+    Eigen::MatrixXd m_exemplarsWhite; // nc x E, exemplar parameters / sqrt(combined variances)
+    Eigen::VectorXd m_invSd;          // nc
     cv::Mat m_alpha;                 // CV_32F feather mask of the reference frame
     cv::Mat m_alphaLower;            // the same times the lower-face ramp
     std::vector<std::pair<int, int>> m_borderFill; // outside pixel offset <- inside pixel index

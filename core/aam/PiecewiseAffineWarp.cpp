@@ -1,5 +1,6 @@
 #include "aam/PiecewiseAffineWarp.h"
 
+#include "aam/CubicInterpolation.h"
 #include "util/Error.h"
 
 #include <opencv2/imgproc.hpp>
@@ -268,12 +269,7 @@ void PiecewiseAffineWarp::sampleColour(const cv::Mat &image, const Eigen::Vector
         float x = std::clamp(A.m00 * px + A.m01 * py + A.m02, 0.f, maxX);
         float y = std::clamp(A.m10 * px + A.m11 * py + A.m12, 0.f, maxY);
         const int x0 = int(x), y0 = int(y);
-        const float fx = x - float(x0), fy = y - float(y0);
-        const uchar *r0 = image.ptr<uchar>(y0) + 3 * x0;
-        const uchar *r1 = image.ptr<uchar>(y0 + 1) + 3 * x0;
-        for (int c = 0; c < 3; ++c)
-            out[3 * i + c] = (1 - fy) * ((1 - fx) * r0[c] + fx * r0[3 + c])
-                             + fy * ((1 - fx) * r1[c] + fx * r1[3 + c]);
+        sampleCatmullRom<3>(image.data, w, h, int(image.step), x0, y0, x - float(x0), y - float(y0), out + 3 * i);
     }
 }
 

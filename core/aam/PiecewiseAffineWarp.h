@@ -40,7 +40,8 @@ public:
     // Samples a single-channel CV_32F image at every reference pixel warped by `shape`
     // (image coordinates), bilinear, clamped at the border.
     void sampleGrey(const cv::Mat &image, const Eigen::VectorXd &shape, float *out) const;
-    // Samples a CV_8UC3 image: out holds 3 values per pixel (B, G, R interleaved).
+    // Samples a CV_8UC3 image (Catmull-Rom, CubicInterpolation.h: the colour texture is what
+    // synthesis draws, and bilinear sampling blurs it): out holds 3 values per pixel (B, G, R).
     void sampleColour(const cv::Mat &image, const Eigen::VectorXd &shape, float *out) const;
     // Image position of every reference pixel under `shape` (2 per pixel).
     void pixelPositions(const Eigen::VectorXd &shape, float *out) const;

@@ -95,9 +95,10 @@ struct Rendering
 // Renders and measures one held-out sequence (see the header).
 RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPath, const Sequence &sequence,
                                 const std::vector<Rendering> &renderings, FaceDetector &detector,
-                                int maxLag, Feedback &feedback)
+                                const RealismOptions &options, Feedback &feedback)
 {
     FaceRenderer renderer(aam, mediaPath, feedback, &detector);
+    renderer.setCompositeOptions(options.composite);
     int frames = renderer.videoFrameCount();
     for (const Rendering &r : renderings)
         frames = std::min(frames, int(r.features.rows()));
@@ -150,7 +151,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
     } catch (const Error &) {
         // No sound: the lag is undefined, everything else stands.
     }
-    out.lagRecorded = avLag(recordedOpening, energy, maxLag);
+    out.lagRecorded = avLag(recordedOpening, energy, options.maxLag);
     out.closedLevel = closedLevel(recordedOpening);
     const std::vector<FrameRange> bilabials = bilabialSegments(sequence.phones, sequence.frameRate, frames);
     out.bilabials = int(bilabials.size());
@@ -160,7 +161,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
         RealismSequenceMethod r;
         r.correlation = pearsonOverFrames(opening[m], recordedOpening);
         r.articulation = articulationRatio(opening[m], recordedOpening);
-        r.lag = avLag(opening[m], energy, maxLag) - out.lagRecorded;
+        r.lag = avLag(opening[m], energy, options.maxLag) - out.lagRecorded;
         r.sharpness = ratioOfMeans(sharpness[m], recordedSharpness);
         r.seamDeltaE = meanOfFinite(seam[m]);
         r.seamDeltaERecorded = meanOfFinite(seamRecorded[m]);
@@ -270,7 +271,7 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
             for (size_t k = 0; k < cv.kinds.size(); ++k)
                 renderings.push_back({cv.kinds[k], models[size_t(item.fold)][k]->generate(s.labels)});
             item.result = measureSequence(aam, project.mediaPath(sequence), sequence, renderings, *detector,
-                                          options.maxLag, own);
+                                          options, own);
             item.result.fold = item.fold;
             feedback.setProgress(0.1 + 0.9 * double(++done) / double(items.size()));
         } catch (...) {

@@ -22,6 +22,7 @@
 //                seamDeltaERecorded the same pixel pairs in the recording (its natural contrast).
 // Fold value = mean over the fold's sequences (those where the value is defined); reported as the
 // mean over folds with a 95 % t interval (§6.3).
+#include "aam/AamSynthesizer.h"
 #include "dynamics/ModelFile.h"
 #include "eval/Evaluation.h"
 
@@ -44,6 +45,7 @@ struct RealismOptions
     EvaluationOptions crossValidation;
     int maxLag = 5;            // audio-visual lags searched, frames either way
     std::string dlibPredictor; // empty: /usr/share/dlib/shape_predictor_68_face_landmarks.dat
+    CompositeOptions composite; // how the renders are drawn (the preview's by default)
 };
 
 struct RealismSequenceMethod

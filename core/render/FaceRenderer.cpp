@@ -124,13 +124,19 @@ const Similarity &FaceRenderer::pose(int index) const
 
 void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Mat &frame) const
 {
+    renderInto(index, features, frame, m_composite);
+}
+
+void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Mat &frame,
+                              const CompositeOptions &options) const
+{
     if (features.size() != m_aam.combinedModes())
         throw Error("cannot render: " + std::to_string(features.size())
                     + " parameters given, the AAM has " + std::to_string(m_aam.combinedModes()));
     if (frame.type() != CV_8UC3 || frame.size() != m_size)
         throw Error("cannot render: the frame is not a " + std::to_string(m_size.width) + "x"
                     + std::to_string(m_size.height) + " BGR image");
-    m_synthesizer.composite(features, pose(index), frame, m_composite);
+    m_synthesizer.composite(features, pose(index), frame, options);
 }
 
 cv::Mat FaceRenderer::synthesisedWeight(int index, const Eigen::VectorXd &features) const

@@ -61,8 +61,11 @@ public:
 
     // `features` (combined AAM parameters c) drawn into the background of frame `index`.
     cv::Mat render(int index, const Eigen::VectorXd &features);
-    // Same, into a caller's frame (CV_8UC3, frameSize()) already holding the background.
+    // Same, into a caller's frame (CV_8UC3, frameSize()) already holding the background; with
+    // `options`, composited that way instead of compositeOptions().
     void renderInto(int index, const Eigen::VectorXd &features, cv::Mat &frame) const;
+    void renderInto(int index, const Eigen::VectorXd &features, cv::Mat &frame,
+                    const CompositeOptions &options) const;
     // How much of each pixel renderInto() replaces for these features (CV_32F, 0..1).
     cv::Mat synthesisedWeight(int index, const Eigen::VectorXd &features) const;
     // The real frame on the left and the rendered one on the right, one frame (optional labels).

@@ -147,6 +147,36 @@ MainWindow::~MainWindow()
     disconnect(m_undo, nullptr, this, nullptr);
 }
 
+void MainWindow::addGeneratedFaceMenu(QMenu *view)
+{
+    // How generated faces are drawn in the preview and in exported videos (StudioContext).
+    QMenu *face = view->addMenu(tr("Generated &Face"));
+    face->setObjectName(QStringLiteral("generatedFaceMenu"));
+    QAction *whole = face->addAction(tr("&Whole Face (Eyes Included)"));
+    whole->setObjectName(QStringLiteral("wholeFaceAction"));
+    whole->setToolTip(tr("Synthesise the whole modelled face; otherwise the lower face is drawn and the recording's "
+                         "own eyes and upper face are kept"));
+    QAction *detail = face->addAction(tr("&Detail from Training Images"));
+    detail->setObjectName(QStringLiteral("faceDetailAction"));
+    detail->setToolTip(tr("Add the teeth, lip highlights and skin detail of the AAM's nearest training images to the "
+                          "model's smooth texture"));
+    QAction *colour = face->addAction(tr("&Match the Frame's Lighting"));
+    colour->setObjectName(QStringLiteral("matchColourAction"));
+    const CompositeOptions &current = m_context->compositeOptions();
+    for (auto [action, on] : {std::pair{whole, current.region == FaceRegion::Full}, std::pair{detail, current.detail},
+                              std::pair{colour, current.matchColour}}) {
+        action->setCheckable(true);
+        action->setChecked(on);
+        connect(action, &QAction::toggled, this, [this, whole, detail, colour] {
+            CompositeOptions options;
+            options.region = whole->isChecked() ? FaceRegion::Full : FaceRegion::Lower;
+            options.detail = detail->isChecked();
+            options.matchColour = colour->isChecked();
+            m_context->setCompositeOptions(options);
+        });
+    }
+}
+
 WaveformView *MainWindow::waveformView() const
 {
     return m_timeline->waveform();
@@ -299,6 +329,7 @@ void MainWindow::createMenus()
     view->addAction(a.fitFrame);
     view->addAction(m_timeline->spectrogramAction());
     view->addSeparator();
+    addGeneratedFaceMenu(view);
     QMenu *panels = view->addMenu(tr("&Panels"));
     for (QDockWidget *dock : findChildren<QDockWidget *>())
         panels->addAction(dock->toggleViewAction());

@@ -14,6 +14,7 @@
 
 class QDockWidget;
 class QLabel;
+class QMenu;
 class QTableView;
 class QTabWidget;
 class QUndoStack;
@@ -99,6 +100,7 @@ private:
     void applyDefaultDockSizes();
     void updateActiveModels();
     void createMenus();
+    void addGeneratedFaceMenu(QMenu *view);
     void onDocumentReset();
     void onSelectionChanged();
     void onLoadFinished(Task *task, const QString &mediaPath);

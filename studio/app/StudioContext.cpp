@@ -91,6 +91,15 @@ void StudioContext::setShownSpeech(std::shared_ptr<const SpeechToFaceResult> spe
     emit shownSpeechChanged();
 }
 
+void StudioContext::setCompositeOptions(const CompositeOptions &options)
+{
+    if (options.region == m_composite.region && options.matchColour == m_composite.matchColour
+        && options.detail == m_composite.detail)
+        return;
+    m_composite = options;
+    emit compositeOptionsChanged();
+}
+
 void StudioContext::showStatus(const QString &message, int milliseconds)
 {
     emit statusMessage(message, milliseconds);

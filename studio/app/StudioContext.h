@@ -3,6 +3,8 @@
 // document with its undo stack, the task runner, the model store, the one media player, and the
 // sequence and frame being worked on. Panels are given the context, not the main window, so a
 // panel can be built and driven without one; the main window is one view of the context.
+#include "aam/AamSynthesizer.h"
+
 #include <QObject>
 #include <QString>
 
@@ -61,6 +63,10 @@ public:
     std::shared_ptr<const SpeechToFaceResult> shownSpeech() const { return m_speech; }
     QString shownSpeechTitle() const { return m_speechTitle; }
     void setShownSpeech(std::shared_ptr<const SpeechToFaceResult> speech, const QString &title);
+    // How generated faces are drawn into the frames, in the preview and in exported videos
+    // (View > Generated Face): the lower face with exemplar detail unless changed.
+    const CompositeOptions &compositeOptions() const { return m_composite; }
+    void setCompositeOptions(const CompositeOptions &options);
     // A passing message for the user (the window's status bar), shown for `milliseconds`.
     void showStatus(const QString &message, int milliseconds = 0);
 
@@ -71,6 +77,7 @@ signals:
     void currentFrameChanged(int frame);
     void statusMessage(const QString &message, int milliseconds);
     void shownSpeechChanged();
+    void compositeOptionsChanged();
 
 private:
     QUndoStack *m_undo;
@@ -84,6 +91,7 @@ private:
     double m_selectionStart = 0.0, m_selectionEnd = 0.0;
     std::shared_ptr<const SpeechToFaceResult> m_speech;
     QString m_speechTitle;
+    CompositeOptions m_composite;
 };
 
 } // namespace lipsync::studio

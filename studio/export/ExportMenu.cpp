@@ -223,6 +223,7 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
     case Kind::Images: {
         RenderOptions options;
         options.sideBySide = kind == Kind::SideBySide;
+        options.composite = m_context->compositeOptions();
         if (const auto speech = m_context->shownSpeech()) {
             const QString name = m_context->shownSpeechTitle();
             if (options.sideBySide && !speech->hasVideo) {

@@ -44,6 +44,9 @@ public:
     // Every frame drawn into `background` at the pose of the renderer's frame `poseFrame`.
     void setFixedFrame(const QImage &background, int poseFrame);
 
+    // How the faces are drawn (the renderer's options until set).
+    void setCompositeOptions(const CompositeOptions &options) { m_composite = options; }
+
     void addTrack(Track track) { m_tracks.push_back(std::move(track)); }
     const std::vector<Track> &tracks() const { return m_tracks; }
     int frameCount() const; // of the longest track
@@ -67,6 +70,7 @@ private:
     QImage m_fixed;
     int m_fixedPose = -1;
     std::vector<Track> m_tracks;
+    CompositeOptions m_composite;
 };
 
 } // namespace lipsync::studio

@@ -139,6 +139,12 @@ void PreviewPanel::attach(StudioContext *context)
         if (!m_showingSpeech)
             updateControls();
     });
+    connect(context, &StudioContext::compositeOptionsChanged, this, [this] {
+        for (GeneratedFaces *faces : {m_faces.get(), m_speech.get()})
+            if (faces)
+                faces->setCompositeOptions(m_context->compositeOptions());
+        showCurrent();
+    });
     connect(context, &StudioContext::sequenceLoaded, this, [this] {
         const bool wasSpeech = std::exchange(m_showingSpeech, false);
         m_faces.reset();
@@ -296,6 +302,7 @@ void PreviewPanel::rebuild()
         const QString id = QString::fromStdString(s.id);
         if (const Renderer r = m_renderers.value(id); r.renderer) {
             auto faces = std::make_shared<GeneratedFaces>(r.aam, r.renderer, s.frameRate);
+            faces->setCompositeOptions(m_context->compositeOptions());
             std::vector<int> labels;
             try {
                 labels = frameLabelsFromTier(s.phones, s.frameRate, s.frameCount, s.id);
@@ -625,6 +632,8 @@ void PreviewPanel::showSpeech(std::shared_ptr<GeneratedFaces> faces, std::shared
     if (m_context)
         m_context->playback()->pause();
     m_speech = std::move(faces);
+    if (m_context)
+        m_speech->setCompositeOptions(m_context->compositeOptions());
     m_speechResult = std::move(result);
     m_speechPath = QString::fromStdString(m_speechResult->mediaPath);
     m_speechTitle = title;

@@ -9,6 +9,7 @@
 
 #include "annotate/FrameView.h"
 #include "app/MainWindow.h"
+#include "app/StudioContext.h"
 #include "app/ModelStore.h"
 #include "app/ModelKinds.h"
 #include "app/ProjectDocument.h"
@@ -223,6 +224,48 @@ private slots:
         const double fps = n / (clock.nsecsElapsed() * 1e-9);
         qInfo("preview: %.0f frames/s with recorded + 2 generated panels", fps);
         QVERIFY2(fps > minFps, qPrintable(QString::number(fps)));
+    }
+
+    // View > Generated Face > Whole Face draws the model's eyes too; unchecked, the recording's
+    // eyes are back. The choice is the context's, which Export renders with as well.
+    void wholeFaceOptionRedrawsTheEyes()
+    {
+        m_window->setCurrentFrame(40);
+        const QImage recorded = m_preview->panel(0)->image().convertToFormat(QImage::Format_RGB888);
+        const auto tracked = m_preview->faces()->trackedLandmarks(40);
+        QVERIFY(tracked && tracked->isComplete());
+        // A box around the left eye's four points (0-3).
+        QRectF eye;
+        for (int i = 0; i < 4; ++i) {
+            const QRectF p(tracked->points[size_t(i)].x, tracked->points[size_t(i)].y, 1, 1);
+            eye = eye.isNull() ? p : eye.united(p);
+        }
+        auto eyeDifference = [&] {
+            const QImage drawn = m_preview->panel(1)->image().convertToFormat(QImage::Format_RGB888);
+            double sum = 0;
+            int n = 0;
+            const QRect box = eye.toAlignedRect();
+            for (int r = box.top(); r <= box.bottom(); ++r)
+                for (int c = box.left(); c <= box.right(); ++c, ++n)
+                    for (int k = 0; k < 3; ++k)
+                        sum += std::abs(int(recorded.constScanLine(r)[3 * c + k]) - int(drawn.constScanLine(r)[3 * c + k]));
+            return sum / std::max(1, 3 * n);
+        };
+        QCOMPARE(eyeDifference(), 0.0);
+        QAction *whole = m_window->findChild<QAction *>(QStringLiteral("wholeFaceAction"));
+        QVERIFY(whole && whole->isCheckable() && !whole->isChecked());
+        whole->trigger();
+        QCOMPARE(m_window->context()->compositeOptions().region, FaceRegion::Full);
+        QTRY_VERIFY2(eyeDifference() > 2.0, qPrintable(QString::number(eyeDifference())));
+        whole->trigger();
+        QCOMPARE(m_window->context()->compositeOptions().region, FaceRegion::Lower);
+        QTRY_COMPARE(eyeDifference(), 0.0);
+        QAction *detail = m_window->findChild<QAction *>(QStringLiteral("faceDetailAction"));
+        QVERIFY(detail && detail->isChecked());
+        detail->trigger();
+        QVERIFY(!m_window->context()->compositeOptions().detail);
+        detail->trigger();
+        QVERIFY(m_window->context()->compositeOptions().detail);
     }
 
     void frameStepAndScrubMoveTheSharedCursor()

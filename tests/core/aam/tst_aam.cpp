@@ -6,6 +6,7 @@
 #include "aam/FaceDetector.h"
 #include "aam/LandmarkScheme.h"
 #include "aam/PtsFile.h"
+#include "aam/TextureNormalisation.h"
 #include "aam/VideoTracking.h"
 #include "io/AtomicFile.h"
 #include "tasks/Feedback.h"
@@ -345,6 +346,7 @@ private slots:
         Feedback feedback;
         AamBuildOptions options;
         options.detector = &detector;
+        options.maxExemplars = 0; // version 2's content (exemplars make it 3)
         const AamModel model = buildAam(gridExamples(false), options, feedback);
         QCOMPARE(model.detectorShape.size(), Eigen::Index(46));
         QCOMPARE(model.detectorRegression.rows(), Eigen::Index(46));
@@ -388,8 +390,6 @@ private slots:
         const AamModel back = AamModel::load(path);
         QCOMPARE(back.identifier, model.identifier);
         QVERIFY(back.detectorRegression.isApprox(model.detectorRegression));
-        m_model.save(path);
-        QCOMPARE(int(readWholeFile(path)[8]), 1);
     }
 
     void saveLoadRoundTrip()
@@ -402,6 +402,21 @@ private slots:
         QCOMPARE(back.computeIdentifier(), m_model.identifier);
         QVERIFY(back.combinedBasis.isApprox(m_model.combinedBasis));
         QCOMPARE(back.warp(0).pixelCount(), m_model.warp(0).pixelCount());
+        QVERIFY(back.exemplarDetail == m_model.exemplarDetail);
+        QVERIFY(back.exemplarParams == m_model.exemplarParams);
+        QVERIFY(back.exemplarScales == m_model.exemplarScales);
+        // The lowest version that holds the content: 3 with exemplars, 1 for a grey model
+        // without detector calibration or exemplars (as files written before exemplars existed).
+        QCOMPARE(int(readWholeFile(path)[8]), 3);
+        AamModel plain = m_model;
+        plain.exemplarParams.resize(0, 0);
+        plain.exemplarDetail.resize(0, 0);
+        plain.exemplarScales.resize(0);
+        plain.identifier = plain.computeIdentifier();
+        plain.save(path);
+        QCOMPARE(int(readWholeFile(path)[8]), 1);
+        QCOMPARE(AamModel::load(path).exemplarCount(), 0);
+        m_model.save(path);
         // Truncated, wrong magic and wrong version are clear errors.
         std::string bytes = readWholeFile(path);
         const std::string original = bytes;
@@ -452,6 +467,7 @@ private slots:
             AamBuildOptions build;
             build.combinedVariance = 0.98;
             build.fitFeatures = AamFitFeatures::GradientOrientation;
+            build.maxExemplars = 0;
             const AamModel built = buildAam(gridExamples(false), build, feedback);
             QCOMPARE(built.levels[0].mean.size(), Eigen::Index(2 * built.warp(0).pixelCount()));
             QTemporaryDir dir;
@@ -532,6 +548,90 @@ private slots:
         cv::absdiff(real, image, diff);
         const cv::Rect box(int(fit.shape[36]) + 5, int(fit.shape[1]), 30, 40);
         QVERIFY2(cv::mean(diff(box))[1] < 25.0, qPrintable(QString::number(cv::mean(diff(box))[1])));
+    }
+
+    // The exemplar detail gives a training image back (up to its 8-bit quantisation) at its own
+    // parameters, blends continuously between exemplars, and makes the drawn mouth sharper.
+    void exemplarDetailRestoresWhatTheModesSmooth()
+    {
+        QCOMPARE(m_model.exemplarCount(), m_model.trainingImages);
+        const AamSynthesizer synth(m_model);
+        const auto training = gridExamples(false);
+        const int i = 7;
+        const cv::Mat image = cv::imread(training[size_t(i)].imagePath);
+        Eigen::VectorXf g(m_model.textureMean.size());
+        m_model.warp(0).sampleColour(image, training[size_t(i)].shape, g.data());
+        normaliseTexture(g.data(), size_t(g.size()));
+        const Eigen::VectorXd ci = m_model.exemplarParams.col(i);
+        const auto own = synth.detailWeights(ci);
+        QCOMPARE(int(own.size()), 1);
+        QCOMPARE(own.front().first, i);
+        QCOMPARE(own.front().second, 1.f);
+        // The residual outside the texture modes is all that is missing from the smooth texture;
+        // the detail restores the image but for the combined model's truncation and 8 bits.
+        const Eigen::VectorXf smooth = synth.texture(ci), detailed = synth.texture(ci, true);
+        const Eigen::VectorXd centred = g.cast<double>() - m_model.textureMean;
+        const Eigen::VectorXd outside
+            = centred - m_model.textureBasis * (m_model.textureBasis.transpose() * centred);
+        const Eigen::VectorXf added = detailed - smooth;
+        QVERIFY2((added.cast<double>() - outside).cwiseAbs().maxCoeff() <= 0.51 * m_model.exemplarScales[i] + 1e-6,
+                 qPrintable(QString::number((added.cast<double>() - outside).cwiseAbs().maxCoeff())));
+        QVERIFY2((detailed - g).norm() < 0.9 * (smooth - g).norm(),
+                 qPrintable(QString("%1 vs %2").arg((detailed - g).norm()).arg((smooth - g).norm())));
+
+        // Between two exemplars: two weights of unit norm that move continuously with c.
+        const Eigen::VectorXd cj = m_model.exemplarParams.col(3);
+        auto weightOf = [&](const std::vector<std::pair<int, float>> &w, int k) {
+            for (const auto &[index, weight] : w)
+                if (index == k)
+                    return weight;
+            return 0.f;
+        };
+        float previous = 1.f;
+        for (double t = 0.0; t <= 1.0; t += 0.05) {
+            const auto w = synth.detailWeights((1 - t) * ci + t * cj);
+            QVERIFY(!w.empty() && w.size() <= 2);
+            double norm = 0;
+            for (const auto &[k, weight] : w)
+                norm += double(weight) * weight;
+            QVERIFY2(std::abs(norm - 1.0) < 1e-5, qPrintable(QString::number(norm)));
+            const float mine = weightOf(w, i);
+            QVERIFY2(std::abs(mine - previous) < 0.35f, qPrintable(QString("t=%1: %2 after %3").arg(t).arg(mine).arg(previous)));
+            previous = mine;
+        }
+        QCOMPARE(weightOf(synth.detailWeights(cj), 3), 1.f);
+
+        // Drawn into the frame, the mouth has more of the image's fine structure (Laplacian
+        // energy) with the detail than without.
+        const Eigen::VectorXd &shape = training[size_t(i)].shape;
+        const Similarity pose = alignSimilarity(synth.shape(ci), shape);
+        auto sharpness = [&](const cv::Mat &frame) {
+            const cv::Rect box = cv::Rect(cv::Point(int(shape[2 * scheme23::kMouthLeft]), int(shape[2 * 16 + 1]) - 6),
+                                          cv::Point(int(shape[2 * scheme23::kMouthRight]), int(shape[2 * 16 + 1]) + 10));
+            cv::Mat grey, lap;
+            cv::cvtColor(frame(box), grey, cv::COLOR_BGR2GRAY);
+            cv::Laplacian(grey, lap, CV_32F);
+            return cv::mean(lap.mul(lap))[0];
+        };
+        cv::Mat plain = image.clone(), withDetail = image.clone();
+        synth.composite(ci, pose, plain, {FaceRegion::Lower, true, false});
+        synth.composite(ci, pose, withDetail, {FaceRegion::Lower, true, true});
+        qInfo("mouth sharpness: recording %.1f, with detail %.1f, without %.1f", sharpness(image),
+              sharpness(withDetail), sharpness(plain));
+        QVERIFY2(sharpness(withDetail) > 1.1 * sharpness(plain),
+                 qPrintable(QString("%1 vs %2 (recording %3)").arg(sharpness(withDetail)).arg(sharpness(plain)).arg(sharpness(image))));
+
+        // Fewer exemplars than images: a farthest-point subset of distinct images.
+        Feedback feedback;
+        AamBuildOptions options;
+        options.maxExemplars = 5;
+        const AamModel few = buildAam(gridExamples(false), options, feedback);
+        QCOMPARE(few.exemplarCount(), 5);
+        for (int a = 0; a < 5; ++a)
+            for (int b = a + 1; b < 5; ++b)
+                QVERIFY((few.exemplarParams.col(a) - few.exemplarParams.col(b)).norm() > 1e-6);
+        options.maxExemplars = 0;
+        QCOMPARE(buildAam(gridExamples(false), options, feedback).exemplarCount(), 0);
     }
 
     void lowerFaceKeepsTheEyesAndMatchesTheColour()
