@@ -480,117 +480,162 @@
 <context>
     <name>lipsync::studio::FacesController</name>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="82"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="85"/>
         <source>&amp;Detect Landmarks</source>
         <translation>Landmarken &amp;erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="83"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="86"/>
         <source>&amp;Copy Previous Frame&apos;s Points</source>
         <translation>Punkte des vorigen Bildes &amp;kopieren</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="84"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="87"/>
         <source>&amp;Onion Skin of Previous Frame</source>
         <translation>&amp;Onion-Skin (vorheriges Bild)</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="86"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="89"/>
         <source>Next &amp;Unlabelled Frame</source>
         <translation>Nächstes &amp;unbeschriftetes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="87"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="90"/>
         <source>Next &amp;Worst-Fitted Frame</source>
         <translation>Nächstes &amp;schlecht angepasstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="88"/>
-        <source>&amp;Build AAM</source>
-        <translation>AAM &amp;erstellen</translation>
+        <location filename="../studio/annotate/FacesController.cpp" line="91"/>
+        <source>&amp;Pick Frames to Label…</source>
+        <translation>Bilder zum &amp;Beschriften auswählen…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="89"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="92"/>
+        <source>Next &amp;Picked Frame to Review</source>
+        <translation>Nächstes ausgewähltes Bild &amp;prüfen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="93"/>
+        <source>&amp;Build AAM</source>
+        <translation>AAM e&amp;rstellen</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="94"/>
         <source>&amp;Track Sequence</source>
         <translation>Sequenz &amp;tracken</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="90"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="95"/>
         <source>Track &amp;All Sequences</source>
         <translation>&amp;Alle Sequenzen tracken</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="91"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="96"/>
         <source>&amp;Modes of Variation…</source>
         <translation>&amp;Variationsmoden…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="93"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="98"/>
         <source>Fa&amp;ces</source>
         <translation>&amp;Gesichter</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="205"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="129"/>
+        <source>Pick Frames to Label</source>
+        <translation>Bilder zum Beschriften auswählen</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/annotate/FacesController.cpp" line="130"/>
+        <source>Frames to pick from the %n clip(s) (an AAM with the paper&apos;s 32 parameters wants 100-200):</source>
+        <translation>
+            <numerusform>Anzahl der Bilder aus dem Clip (ein AAM mit den 32 Parametern des Artikels braucht 100–200):</numerusform>
+            <numerusform>Anzahl der Bilder aus den %n Clips (ein AAM mit den 32 Parametern des Artikels braucht 100–200):</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="238"/>
         <source>Fit error %1</source>
         <translation>Anpassungsfehler %1</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="206"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="239"/>
         <source>No face found by the tracker</source>
         <translation>Der Tracker hat kein Gesicht gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="230"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="263"/>
         <source>Detect landmarks in %1, frame %2</source>
         <translation>Landmarken in %1, Bild %2 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="232"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="265"/>
         <source>Finding the face…</source>
         <translation>Gesicht wird gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="263"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="296"/>
         <source>Detect landmarks in frame %1</source>
         <translation>Landmarken in Bild %1 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="266"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="299"/>
         <source>No landmarks were detected.</source>
         <translation>Es wurden keine Landmarken erkannt.</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../studio/annotate/FacesController.cpp" line="317"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="353"/>
+        <source>Pick %n frame(s) to label</source>
+        <translation>
+            <numerusform>%n Bild zum Beschriften auswählen</numerusform>
+            <numerusform>%n Bilder zum Beschriften auswählen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/annotate/FacesController.cpp" line="360"/>
+        <source>Picked %1 of %2 frames with a face from %n clip(s); Shift+W shows them, the most doubtful first, then Build AAM.</source>
+        <translation>
+            <numerusform>%1 von %2 Bildern mit Gesicht aus einem Clip ausgewählt; Umschalt+W zeigt sie, die zweifelhaftesten zuerst, danach AAM erstellen.</numerusform>
+            <numerusform>%1 von %2 Bildern mit Gesicht aus %n Clips ausgewählt; Umschalt+W zeigt sie, die zweifelhaftesten zuerst, danach AAM erstellen.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="287"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="368"/>
+        <source>No frames could be picked.</source>
+        <translation>Es konnten keine Bilder ausgewählt werden.</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="410"/>
         <source>Copy points of frame %1 to frame %2</source>
         <translation>Punkte von Bild %1 nach Bild %2 kopieren</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="306"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="429"/>
         <source>Every frame of this sequence is labelled.</source>
         <translation>Alle Bilder dieser Sequenz sind beschriftet.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="316"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="439"/>
         <source>Track this sequence first to rank its frames by fit error.</source>
         <translation>Tracken Sie diese Sequenz zuerst, um ihre Bilder nach Anpassungsfehler zu ordnen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="345"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="468"/>
         <source>The project&apos;s AAM could not be loaded.</source>
         <translation>Das AAM des Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="369"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="492"/>
         <source>An AAM needs at least 3 frames with all 23 points; this project has %1.</source>
         <translation>Ein AAM braucht mindestens 3 Bilder mit allen 23 Punkten; dieses Projekt hat %1.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="371"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="494"/>
         <source>Label more frames (Detect Landmarks, then correct the points).</source>
         <translation>Beschriften Sie weitere Bilder (Landmarken erkennen, dann die Punkte korrigieren).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="380"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="503"/>
         <source>Build AAM from %n frame(s)</source>
         <translation>
             <numerusform>AAM aus %n Bild erstellen</numerusform>
@@ -598,22 +643,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="382"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="505"/>
         <source>Reading the labelled frames…</source>
         <translation>Beschriftete Bilder werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="412"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="535"/>
         <source>Build AAM %1</source>
         <translation>AAM %1 erstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="414"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="537"/>
         <source>AAM %1 built from %2 frames: %3 combined modes%4</source>
         <translation>AAM %1 aus %2 Bildern erstellt: %3 kombinierte Moden%4</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="418"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="541"/>
         <source> (%n frame(s) skipped)</source>
         <translation>
             <numerusform> (%n Bild übersprungen)</numerusform>
@@ -621,27 +666,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="423"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="546"/>
         <source>The AAM could not be built.</source>
         <translation>Das AAM konnte nicht erstellt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="438"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="561"/>
         <source>Tracking needs an AAM.</source>
         <translation>Zum Tracken wird ein AAM benötigt.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="439"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="562"/>
         <source>Label a few frames and choose Faces ▸ Build AAM first.</source>
         <translation>Beschriften Sie einige Bilder und wählen Sie zuerst Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="457"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="580"/>
         <source>Track %1</source>
         <translation>%1 tracken</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="457"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="580"/>
         <source>Track %n sequence(s)</source>
         <translation>
             <numerusform>%n Sequenz tracken</numerusform>
@@ -649,7 +694,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="527"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="650"/>
         <source>Tracking failed.</source>
         <translation>Das Tracking ist fehlgeschlagen.</translation>
     </message>

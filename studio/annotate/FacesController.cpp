@@ -4,6 +4,7 @@
 #include "aam/AamFitter.h"
 #include "aam/FaceDetector.h"
 #include "aam/FaceTracker.h"
+#include "aam/FramePicking.h"
 #include "aam/LandmarkScheme.h"
 #include "aam/PtsFile.h"
 #include "annotate/FrameView.h"
@@ -22,6 +23,7 @@
 #include <QAction>
 #include <QDir>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QMenu>
 #include <QMenuBar>
 #include <QStatusBar>
@@ -31,6 +33,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <utility>
 
 namespace lipsync::studio {
 
@@ -85,6 +88,8 @@ FacesController::FacesController(MainWindow *window) : QObject(window), m_window
     m_onionSkin->setCheckable(true);
     m_nextUnlabelled = makeAction(window, tr("Next &Unlabelled Frame"), QKeySequence(Qt::Key_N));
     m_nextWorst = makeAction(window, tr("Next &Worst-Fitted Frame"), QKeySequence(Qt::Key_W));
+    m_pickFrames = makeAction(window, tr("&Pick Frames to Label…"), {});
+    m_nextPicked = makeAction(window, tr("Next &Picked Frame to Review"), QKeySequence(Qt::SHIFT | Qt::Key_W));
     m_buildAam = makeAction(window, tr("&Build AAM"), {});
     m_trackSequence = makeAction(window, tr("&Track Sequence"), QKeySequence(Qt::CTRL | Qt::Key_T));
     m_trackAll = makeAction(window, tr("Track &All Sequences"), {});
@@ -98,6 +103,9 @@ FacesController::FacesController(MainWindow *window) : QObject(window), m_window
     m_menu->addAction(m_nextUnlabelled);
     m_menu->addAction(m_nextWorst);
     m_menu->addSeparator();
+    m_menu->addAction(m_pickFrames);
+    m_menu->addAction(m_nextPicked);
+    m_menu->addSeparator();
     m_menu->addAction(m_buildAam);
     m_menu->addAction(m_trackSequence);
     m_menu->addAction(m_trackAll);
@@ -110,6 +118,26 @@ FacesController::FacesController(MainWindow *window) : QObject(window), m_window
     connect(m_onionSkin, &QAction::toggled, window->frameView(), &FrameView::setOnionSkinVisible);
     connect(m_nextUnlabelled, &QAction::triggered, this, &FacesController::nextUnlabelledFrame);
     connect(m_nextWorst, &QAction::triggered, this, &FacesController::nextWorstFrame);
+    connect(m_pickFrames, &QAction::triggered, this, [this] {
+        const ProjectDocument *doc = m_window->document();
+        int frames = 0;
+        for (int row = 0; row < doc->sequenceCount(); ++row)
+            frames += doc->sequence(row).frameCount;
+        const int candidates = std::max(3, frames / FramePickingOptions{}.step);
+        bool ok = false;
+        const int count = QInputDialog::getInt(
+            m_window, tr("Pick Frames to Label"),
+            tr("Frames to pick from the %n clip(s) (an AAM with the paper's 32 parameters wants 100-200):", nullptr,
+               doc->sequenceCount()),
+            std::min(150, candidates), 3, candidates, 1, &ok);
+        if (ok)
+            pickFramesToLabel(count);
+    });
+    connect(m_nextPicked, &QAction::triggered, this, [this] { nextPickedFrame(); });
+    connect(window->context(), &StudioContext::sequenceLoaded, this, [this] {
+        if (m_pendingFrame >= 0)
+            m_window->setCurrentFrame(std::exchange(m_pendingFrame, -1));
+    });
     connect(m_buildAam, &QAction::triggered, this, [this] { buildAam(); });
     connect(m_trackSequence, &QAction::triggered, this, [this] {
         if (m_window->currentSequence() >= 0)
@@ -143,8 +171,10 @@ FacesController::~FacesController() = default;
 void FacesController::updateActions()
 {
     const bool open = m_window->document()->isOpen();
-    for (QAction *a : {m_detect, m_copyPrevious, m_nextUnlabelled, m_buildAam, m_trackSequence, m_trackAll})
+    for (QAction *a : {m_detect, m_copyPrevious, m_nextUnlabelled, m_pickFrames, m_buildAam, m_trackSequence,
+                       m_trackAll})
         a->setEnabled(open);
+    m_nextPicked->setEnabled(open && !m_review.empty());
     const ProjectDocument *doc = m_window->document();
     bool tracked = false;
     for (int row = 0; open && !tracked && row < doc->sequenceCount(); ++row)
@@ -155,6 +185,9 @@ void FacesController::updateActions()
 
 void FacesController::onDocumentReset()
 {
+    m_review.clear();
+    m_reviewIndex = -1;
+    m_pendingFrame = -1;
     const ModelReference *ref = m_window->document()->project().model("aam");
     m_aamFile = ref ? ref->file : std::string();
     if (m_modesView)
@@ -265,6 +298,96 @@ Task *FacesController::detectLandmarks()
         });
     reportFailure(task, tr("No landmarks were detected."));
     return task;
+}
+
+Task *FacesController::pickFramesToLabel(int count)
+{
+    const ProjectDocument *doc = m_window->document();
+    std::vector<std::string> videos;
+    std::vector<int> rows;
+    for (int row = 0; row < doc->sequenceCount(); ++row)
+        if (doc->sequence(row).frameCount > 0) {
+            videos.push_back(doc->mediaPath(row).toStdString());
+            rows.push_back(row);
+        }
+    if (videos.empty())
+        return nullptr;
+    const std::shared_ptr<const AamModel> model = this->model();
+    Task *task = m_window->taskRunner()->start(
+        tr("Pick %n frame(s) to label", nullptr, count),
+        [this, videos, rows, count, model](Feedback &feedback) -> TaskRunner::Commit {
+            FramePickingOptions options;
+            options.count = count;
+            options.aam = model.get();
+            FaceDetector detector;
+            const FramePicking picked = lipsync::pickFramesToLabel(videos, options, detector, feedback);
+            struct Pick
+            {
+                int row, frame;
+                Eigen::VectorXd shape;
+            };
+            std::vector<Pick> picks;
+            for (const PickedFrame &f : picked.frames)
+                picks.push_back({rows[size_t(f.source)], f.frame, f.shape});
+            std::vector<int> order = picked.worstFirst;
+            const int candidates = picked.candidates;
+            return [this, picks, order, candidates] {
+                ProjectDocument *doc = m_window->document();
+                std::map<int, ProjectDocument::FaceData> byRow;
+                for (const Pick &p : picks) {
+                    if (p.row >= doc->sequenceCount())
+                        return; // the project changed meanwhile
+                    ProjectDocument::FaceData &data = byRow[p.row];
+                    if (data.row < 0) {
+                        const Sequence &s = doc->sequence(p.row);
+                        data = {p.row, s.landmarks, s.features, s.fitErrors};
+                    }
+                    const auto it = data.landmarks.find(p.frame);
+                    const std::optional<LandmarkSet> existing =
+                        it != data.landmarks.end() ? std::optional<LandmarkSet>(it->second) : std::nullopt;
+                    data.landmarks[p.frame] = mergeAutomatic(existing, p.shape);
+                }
+                std::vector<ProjectDocument::FaceData> faces;
+                for (auto &[row, data] : byRow)
+                    faces.push_back(std::move(data));
+                doc->requestFaces(faces, tr("Pick %n frame(s) to label", nullptr, int(picks.size())));
+                m_review.clear();
+                for (int i : order)
+                    m_review.emplace_back(doc->sequence(picks[size_t(i)].row).id, picks[size_t(i)].frame);
+                m_reviewIndex = -1;
+                updateActions();
+                m_window->context()->showStatus(
+                    tr("Picked %1 of %2 frames with a face from %n clip(s); Shift+W shows them, the most doubtful "
+                       "first, then Build AAM.",
+                       nullptr, int(faces.size()))
+                        .arg(picks.size())
+                        .arg(candidates),
+                    10000);
+            };
+        });
+    reportFailure(task, tr("No frames could be picked."));
+    return task;
+}
+
+bool FacesController::nextPickedFrame()
+{
+    if (m_review.empty())
+        return false;
+    m_reviewIndex = (m_reviewIndex + 1) % int(m_review.size());
+    const auto &[id, frame] = m_review[size_t(m_reviewIndex)];
+    const ProjectDocument *doc = m_window->document();
+    for (int row = 0; row < doc->sequenceCount(); ++row) {
+        if (doc->sequence(row).id != id)
+            continue;
+        if (row == m_window->currentSequence() && m_window->media()) {
+            m_window->setCurrentFrame(frame);
+        } else {
+            m_pendingFrame = frame;
+            m_window->selectSequence(row);
+        }
+        return true;
+    }
+    return false;
 }
 
 bool FacesController::copyPreviousFrame()

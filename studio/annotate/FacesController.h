@@ -2,7 +2,9 @@
 // The faces workflow of the main window: the landmark editor on the Annotate tab (the FrameView's
 // edits become undoable document edits), and the Faces menu — automatic landmarks (Ctrl+D), copy
 // the previous frame's points (C), onion skin (O), next unlabelled frame (N), next worst-fitted
-// frame (W), Build AAM, Track Sequence / Track All, and the modes-of-variation view. Detection,
+// frame (W), Pick Frames to Label (diverse frames of all clips with automatic points, core's
+// FramePicking) and their review, most doubtful first (Shift+W), Build AAM, Track Sequence /
+// Track All, and the modes-of-variation view. Detection,
 // building and tracking run as TaskRunner tasks: the worker never touches the document, the commit
 // pushes one undo command.
 #include "aam/AamModel.h"
@@ -41,6 +43,8 @@ public:
     QAction *onionSkinAction() const { return m_onionSkin; }
     QAction *nextUnlabelledAction() const { return m_nextUnlabelled; }
     QAction *nextWorstAction() const { return m_nextWorst; }
+    QAction *pickFramesAction() const { return m_pickFrames; }
+    QAction *nextPickedAction() const { return m_nextPicked; }
     QAction *buildAamAction() const { return m_buildAam; }
     QAction *trackSequenceAction() const { return m_trackSequence; }
     QAction *trackAllAction() const { return m_trackAll; }
@@ -54,11 +58,18 @@ public:
 
     // The actions, callable directly (tests). Each returns the task started, or null.
     Task *detectLandmarks();
+    // `count` diverse frames of the project's clips get automatic points, one undo step; the
+    // review queue then holds them, the most doubtful first.
+    Task *pickFramesToLabel(int count);
     Task *buildAam();
     Task *trackSequences(const QList<int> &rows);
     bool copyPreviousFrame();
     void nextUnlabelledFrame();
     void nextWorstFrame();
+    // The next frame of the review queue (another sequence is loaded first); false when empty.
+    bool nextPickedFrame();
+    // (sequence id, frame) of the picks, the most doubtful first.
+    const std::vector<std::pair<std::string, int>> &reviewQueue() const { return m_review; }
     void showModes();
 
 private:
@@ -78,6 +89,8 @@ private:
     QAction *m_onionSkin = nullptr;
     QAction *m_nextUnlabelled = nullptr;
     QAction *m_nextWorst = nullptr;
+    QAction *m_pickFrames = nullptr;
+    QAction *m_nextPicked = nullptr;
     QAction *m_buildAam = nullptr;
     QAction *m_trackSequence = nullptr;
     QAction *m_trackAll = nullptr;
@@ -86,6 +99,9 @@ private:
 
     std::string m_aamFile; // the reference file of the AAM in use, as last seen
     int m_worstRank = -1; // where W is in the current sequence's worst-fit queue
+    std::vector<std::pair<std::string, int>> m_review; // picked frames, most doubtful first
+    int m_reviewIndex = -1;                            // where Shift+W is in it
+    int m_pendingFrame = -1; // the frame to show once the sequence Shift+W switched to has loaded
 };
 
 } // namespace lipsync::studio

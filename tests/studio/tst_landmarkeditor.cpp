@@ -29,6 +29,7 @@
 #include <QUndoStack>
 
 #include <cmath>
+#include <set>
 
 using namespace lipsync;
 using namespace lipsync::studio;
@@ -206,6 +207,57 @@ private slots:
         m_window->setCurrentFrame(9);
         QTest::keyClick(m_window, Qt::Key_N);
         QCOMPARE(m_window->currentFrame(), 11);
+    }
+
+    // Faces > Pick Frames to Label: diverse frames across the clips get automatic points in one
+    // undo step, and Shift+W walks them, the most doubtful first, loading other clips on the way.
+    void pickedFramesAreLabelledAndReviewedWorstFirst()
+    {
+        ProjectDocument *doc = m_window->document();
+        auto labelled = [doc] {
+            std::set<std::pair<std::string, int>> out;
+            for (int row = 0; row < doc->sequenceCount(); ++row)
+                for (const auto &[frame, set] : doc->sequence(row).landmarks)
+                    out.insert({doc->sequence(row).id, frame});
+            return out;
+        };
+        const auto before = labelled();
+        const int index = m_window->undoStack()->index();
+        const int startRow = m_window->currentSequence(), startFrame = m_window->currentFrame();
+        QVERIFY(m_window->faces()->pickFramesAction()->isEnabled());
+        QVERIFY(!m_window->faces()->nextPickedAction()->isEnabled());
+        QVERIFY(waitFor(m_window->faces()->pickFramesToLabel(12), 300000));
+        QCOMPARE(m_window->undoStack()->index(), index + 1);
+        const auto &queue = m_window->faces()->reviewQueue();
+        QCOMPARE(int(queue.size()), 12);
+        std::set<std::string> clips;
+        for (const auto &[id, frame] : queue) {
+            clips.insert(id);
+            int row = 0;
+            while (row < doc->sequenceCount() && doc->sequence(row).id != id)
+                ++row;
+            QVERIFY(row < doc->sequenceCount());
+            const auto it = doc->sequence(row).landmarks.find(frame);
+            QVERIFY(it != doc->sequence(row).landmarks.end() && it->second.isComplete());
+        }
+        QVERIFY2(clips.size() >= 4, "the picks should spread over the clips");
+        QVERIFY(m_window->faces()->nextPickedAction()->isEnabled());
+        // Shift+W goes to the first and then the second of the queue, in whichever clip.
+        for (int k = 0; k < 2; ++k) {
+            QTest::keyClick(m_window, Qt::Key_W, Qt::ShiftModifier);
+            const auto &[id, frame] = queue[size_t(k)];
+            QTRY_COMPARE_WITH_TIMEOUT(doc->sequence(m_window->currentSequence()).id, id, 60000);
+            QTRY_COMPARE_WITH_TIMEOUT(m_window->currentFrame(), frame, 60000);
+        }
+        // One undo takes every picked frame's points away again (and leaves the demo as the
+        // tests after this one expect it).
+        QVERIFY(labelled().size() > before.size());
+        m_window->undoStack()->undo();
+        QCOMPARE(labelled(), before);
+        m_window->selectSequence(startRow);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->currentSequence(), startRow, 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() && m_window->currentFrame() >= 0, 60000);
+        m_window->setCurrentFrame(startFrame);
     }
 
     void tracksWithTheProjectsAam()
