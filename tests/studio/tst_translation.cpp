@@ -1,7 +1,8 @@
 // The German translation is complete (no unfinished message in the .ts) and, once loaded,
 // changes the main window's menus; English is back after removing it.
-#include "app/MainWindow.h"
 #include "DemoWindow.h"
+
+#include "app/MainWindow.h"
 #include "app/Translations.h"
 
 #include <QFile>
