@@ -4,7 +4,6 @@
 #include "aam/AamFitter.h"
 #include "aam/FaceDetector.h"
 #include "aam/FaceTracker.h"
-#include "aam/FramePicking.h"
 #include "aam/LandmarkScheme.h"
 #include "aam/PtsFile.h"
 #include "annotate/FrameView.h"
@@ -300,7 +299,7 @@ Task *FacesController::detectLandmarks()
     return task;
 }
 
-Task *FacesController::pickFramesToLabel(int count)
+Task *FacesController::pickFramesToLabel(int count, int step)
 {
     const ProjectDocument *doc = m_window->document();
     std::vector<std::string> videos;
@@ -315,9 +314,10 @@ Task *FacesController::pickFramesToLabel(int count)
     const std::shared_ptr<const AamModel> model = this->model();
     Task *task = m_window->taskRunner()->start(
         tr("Pick %n frame(s) to label", nullptr, count),
-        [this, videos, rows, count, model](Feedback &feedback) -> TaskRunner::Commit {
+        [this, videos, rows, count, step, model](Feedback &feedback) -> TaskRunner::Commit {
             FramePickingOptions options;
             options.count = count;
+            options.step = step;
             options.aam = model.get();
             FaceDetector detector;
             const FramePicking picked = lipsync::pickFramesToLabel(videos, options, detector, feedback);

@@ -8,6 +8,7 @@
 // building and tracking run as TaskRunner tasks: the worker never touches the document, the commit
 // pushes one undo command.
 #include "aam/AamModel.h"
+#include "aam/FramePicking.h"
 
 #include <QCoreApplication>
 #include <QHash>
@@ -58,9 +59,9 @@ public:
 
     // The actions, callable directly (tests). Each returns the task started, or null.
     Task *detectLandmarks();
-    // `count` diverse frames of the project's clips get automatic points, one undo step; the
-    // review queue then holds them, the most doubtful first.
-    Task *pickFramesToLabel(int count);
+    // `count` diverse frames of the project's clips (every `step`-th frame a candidate) get
+    // automatic points, one undo step; the review queue then holds them, the most doubtful first.
+    Task *pickFramesToLabel(int count, int step = FramePickingOptions{}.step);
     Task *buildAam();
     Task *trackSequences(const QList<int> &rows);
     bool copyPreviousFrame();
