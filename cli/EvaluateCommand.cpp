@@ -72,8 +72,10 @@ int runEvaluate(const CommandLine &args)
 {
     const bool realism = args.isSet(QStringLiteral("realism"));
     if (!realism) {
-        for (const QString &option : {QStringLiteral("max-lag"), QStringLiteral("dlib"), QStringLiteral("full-face"),
-                                      QStringLiteral("no-colour-match"), QStringLiteral("no-detail")})
+        QStringList realismOnly{QStringLiteral("max-lag"), QStringLiteral("dlib")};
+        for (const CommandOption &option : Compositing::options())
+            realismOnly << option.name;
+        for (const QString &option : realismOnly)
             if (args.isSet(option))
                 throw UsageError(QStringLiteral("--%1 applies to --realism only").arg(option));
     }

@@ -2,6 +2,7 @@
 
 #include "aam/AamFitter.h"
 #include "aam/FaceDetector.h"
+#include "aam/FrameSelection.h"
 
 #include "aam/LandmarkScheme.h"
 #include "aam/PtsFile.h"
@@ -89,8 +90,9 @@ AamModeChoice aamModeChoiceOf(const Pca &pca, int samples)
 // Keeps up to `maxCount` training images as the model's exemplar detail: each image's combined
 // parameters c_i = Q^T j_i and the part of its colour texture outside the texture modes,
 // g_i - (g0 + Pg Pg^T (g_i - g0)), quantised to 8 bits. With more images than that, a
-// farthest-point subset in the whitened combined parameters (starting from the image nearest the
-// mean face), so every region of the face space keeps its nearest real example.
+// farthest-point subset in the whitened combined parameters (FrameSelection's farthestPointSample,
+// from the image nearest the mean face), so every region of the face space keeps its nearest real
+// example.
 void addExemplars(AamModel &model, const Eigen::MatrixXd &joint, const Eigen::MatrixXd &colour,
                   const Pca &texturePca, int maxCount)
 {
@@ -105,17 +107,7 @@ void addExemplars(AamModel &model, const Eigen::MatrixXd &joint, const Eigen::Ma
         for (int i = 0; i < n; ++i)
             chosen.push_back(i);
     } else {
-        Eigen::VectorXd nearest = white.colwise().squaredNorm().transpose();
-        Eigen::Index first = 0;
-        nearest.minCoeff(&first);
-        chosen.push_back(int(first));
-        nearest = (white.colwise() - white.col(first)).colwise().squaredNorm().transpose();
-        while (int(chosen.size()) < maxCount) {
-            Eigen::Index next = 0;
-            nearest.maxCoeff(&next);
-            chosen.push_back(int(next));
-            nearest = nearest.cwiseMin((white.colwise() - white.col(next)).colwise().squaredNorm().transpose());
-        }
+        chosen = farthestPointSample(white, maxCount).picks;
     }
     const int e = int(chosen.size());
     model.exemplarParams.resize(model.combinedModes(), e);

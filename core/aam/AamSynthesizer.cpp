@@ -125,11 +125,11 @@ std::vector<std::pair<int, float>> AamSynthesizer::detailWeights(const Eigen::Ve
         return {{byDistance[0].second, 1.f}};
     // Weights that vanish next to the nearest (c at an exemplar) are left out.
     constexpr float kNegligible = 1e-6f;
-    for (auto &[k, w] : weights)
-        w = float(w / std::sqrt(norm));
-    weights.erase(std::remove_if(weights.begin(), weights.end(), [](const auto &kw) { return kw.second < kNegligible; }),
-                  weights.end());
-    return weights;
+    std::vector<std::pair<int, float>> normalised;
+    for (const auto &[k, w] : weights)
+        if (const float unit = float(w / std::sqrt(norm)); unit >= kNegligible)
+            normalised.emplace_back(k, unit);
+    return normalised;
 }
 
 PhotometricTransform AamSynthesizer::defaultPhotometric() const

@@ -43,6 +43,8 @@ struct CompositeOptions
     // highlights, skin grain the texture modes smooth away; AamModel::exemplarDetail), when the
     // model has it.
     bool detail = true;
+
+    bool operator==(const CompositeOptions &) const = default;
 };
 
 class AamSynthesizer

@@ -93,8 +93,7 @@ void StudioContext::setShownSpeech(std::shared_ptr<const SpeechToFaceResult> spe
 
 void StudioContext::setCompositeOptions(const CompositeOptions &options)
 {
-    if (options.region == m_composite.region && options.matchColour == m_composite.matchColour
-        && options.detail == m_composite.detail)
+    if (options == m_composite)
         return;
     m_composite = options;
     emit compositeOptionsChanged();

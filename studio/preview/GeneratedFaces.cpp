@@ -11,7 +11,7 @@ namespace lipsync::studio {
 GeneratedFaces::GeneratedFaces(std::shared_ptr<const AamModel> aam, std::shared_ptr<const FaceRenderer> renderer,
                                double frameRate)
     : m_aam(std::move(aam)), m_renderer(std::move(renderer)), m_synth(*m_aam),
-      m_frameRate(frameRate > 0 ? frameRate : 25.0), m_composite(m_renderer->compositeOptions())
+      m_frameRate(frameRate > 0 ? frameRate : 25.0)
 {
 }
 
@@ -35,7 +35,7 @@ Eigen::VectorXd GeneratedFaces::paramsAt(int track, int frame) const
     return p.row(std::clamp(frame, 0, int(p.rows()) - 1)).transpose();
 }
 
-QImage GeneratedFaces::render(int track, int frame, const QImage &background) const
+QImage GeneratedFaces::render(int track, int frame, const CompositeOptions &options, const QImage &background) const
 {
     if (track < 0 || track >= int(m_tracks.size()) || m_tracks[std::size_t(track)].params.rows() == 0)
         return {};
@@ -50,7 +50,7 @@ QImage GeneratedFaces::render(int track, int frame, const QImage &background) co
     cv::Mat rgb(out.height(), out.width(), CV_8UC3, out.bits(), std::size_t(out.bytesPerLine()));
     cv::Mat bgr;
     cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
-    m_renderer->renderInto(poseFrame(frame), paramsAt(track, frame), bgr, m_composite);
+    m_renderer->renderInto(poseFrame(frame), paramsAt(track, frame), bgr, options);
     cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
     return out;
 }

@@ -44,16 +44,13 @@ public:
     // Every frame drawn into `background` at the pose of the renderer's frame `poseFrame`.
     void setFixedFrame(const QImage &background, int poseFrame);
 
-    // How the faces are drawn (the renderer's options until set).
-    void setCompositeOptions(const CompositeOptions &options) { m_composite = options; }
-
     void addTrack(Track track) { m_tracks.push_back(std::move(track)); }
     const std::vector<Track> &tracks() const { return m_tracks; }
     int frameCount() const; // of the longest track
 
     // Track `track`'s face at `frame` drawn into `background` (the recorded frame; ignored with a
-    // fixed frame). Frames past a track's end hold its last frame.
-    QImage render(int track, int frame, const QImage &background = {}) const;
+    // fixed frame) as `options` say. Frames past a track's end hold its last frame.
+    QImage render(int track, int frame, const CompositeOptions &options, const QImage &background = {}) const;
     // Where the generated face's 23 points are in the rendered frame.
     LandmarkSet landmarks(int track, int frame) const;
     // The points tracked in the recorded frame (none for new speech).
@@ -70,7 +67,6 @@ private:
     QImage m_fixed;
     int m_fixedPose = -1;
     std::vector<Track> m_tracks;
-    CompositeOptions m_composite;
 };
 
 } // namespace lipsync::studio

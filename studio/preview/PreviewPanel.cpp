@@ -139,12 +139,7 @@ void PreviewPanel::attach(StudioContext *context)
         if (!m_showingSpeech)
             updateControls();
     });
-    connect(context, &StudioContext::compositeOptionsChanged, this, [this] {
-        for (GeneratedFaces *faces : {m_faces.get(), m_speech.get()})
-            if (faces)
-                faces->setCompositeOptions(m_context->compositeOptions());
-        showCurrent();
-    });
+    connect(context, &StudioContext::compositeOptionsChanged, this, &PreviewPanel::showCurrent);
     connect(context, &StudioContext::sequenceLoaded, this, [this] {
         const bool wasSpeech = std::exchange(m_showingSpeech, false);
         m_faces.reset();
@@ -302,7 +297,6 @@ void PreviewPanel::rebuild()
         const QString id = QString::fromStdString(s.id);
         if (const Renderer r = m_renderers.value(id); r.renderer) {
             auto faces = std::make_shared<GeneratedFaces>(r.aam, r.renderer, s.frameRate);
-            faces->setCompositeOptions(m_context->compositeOptions());
             std::vector<int> labels;
             try {
                 labels = frameLabelsFromTier(s.phones, s.frameRate, s.frameCount, s.id);
@@ -416,10 +410,11 @@ void PreviewPanel::showCurrent()
 {
     const GeneratedFaces *shown = faces();
     const bool overlay = m_landmarks->isChecked();
+    const CompositeOptions composite = m_context ? m_context->compositeOptions() : CompositeOptions();
     if (m_showingSpeech) {
         for (int i = 0; i < int(m_panels.size()) && shown && i < int(shown->tracks().size()); ++i) {
             FrameView *view = m_panels[std::size_t(i)].view;
-            view->setImage(shown->render(i, m_speechFrame));
+            view->setImage(shown->render(i, m_speechFrame, composite));
             view->setLandmarks(overlay ? std::optional<LandmarkSet>(shown->landmarks(i, m_speechFrame)) : std::nullopt);
         }
         return;
@@ -440,7 +435,7 @@ void PreviewPanel::showCurrent()
         return;
     for (int k = 0; k < int(shown->tracks().size()) && k + 1 < int(m_panels.size()); ++k) {
         FrameView *view = m_panels[std::size_t(k + 1)].view;
-        view->setImage(shown->render(k, frame, *m_recorded));
+        view->setImage(shown->render(k, frame, composite, *m_recorded));
         view->setLandmarks(overlay ? std::optional<LandmarkSet>(shown->landmarks(k, frame)) : std::nullopt);
     }
 }
@@ -632,8 +627,6 @@ void PreviewPanel::showSpeech(std::shared_ptr<GeneratedFaces> faces, std::shared
     if (m_context)
         m_context->playback()->pause();
     m_speech = std::move(faces);
-    if (m_context)
-        m_speech->setCompositeOptions(m_context->compositeOptions());
     m_speechResult = std::move(result);
     m_speechPath = QString::fromStdString(m_speechResult->mediaPath);
     m_speechTitle = title;
