@@ -27,6 +27,12 @@ std::vector<CommandOption> dynamicModelOptions()
         {QStringLiteral("compensate-variance"), {},
          QStringLiteral("every kind: scale the generated trajectories to the training features' spread "
                         "(docs/models.md 5.1; default: the paper's models)")},
+        {QStringLiteral("context-states"), {},
+         QStringLiteral("every kind: states for phones in context (neighbours, third of the segment), tied by "
+                        "decision trees (docs/models.md 5.2; default: one state per phone, as in the paper)")},
+        {QStringLiteral("min-occupancy"), QStringLiteral("FRAMES"),
+         QStringLiteral("context states: fewest training frames per state"),
+         QString::number(ContextTreeOptions{}.minOccupancy)},
     };
 }
 
@@ -35,6 +41,9 @@ ModelOptions dynamicModelOptionsFrom(const CommandLine &args)
     ModelOptions options;
     options.brand.fullCovariance = args.isSet(QStringLiteral("full-covariance"));
     options.compensateVariance = args.isSet(QStringLiteral("compensate-variance"));
+    options.contextStates = args.isSet(QStringLiteral("context-states")) || args.isSet(QStringLiteral("min-occupancy"));
+    if (args.isSet(QStringLiteral("min-occupancy")))
+        options.context.minOccupancy = args.integer(QStringLiteral("min-occupancy"), 1);
     options.slds.fullA = args.isSet(QStringLiteral("full-a"));
     options.slds.boundA = args.isSet(QStringLiteral("bound-a")) || args.isSet(QStringLiteral("bound-a-max"));
     options.slds.aMax = args.positiveNumber(QStringLiteral("bound-a-max"));

@@ -4,6 +4,7 @@
 #include "TrainingData.h"
 
 #include "aam/AamModel.h"
+#include "dynamics/ContextDependentModel.h"
 #include "dynamics/ModelFile.h"
 #include "tasks/Feedback.h"
 
@@ -54,9 +55,13 @@ int runTrain(const CommandLine &args)
         frames += s.frameCount();
         ll += model->trajectoryLogLikelihood(s.labels, s.features);
     }
+    // The phones, or the tied context states (docs/models.md §5.2).
+    const auto *context = dynamic_cast<const ContextDependentModel *>(model.get());
+    const int states = context ? context->tree().stateCount() : model->stateCount();
     if (args.isSet(QStringLiteral("json"))) {
         QJsonObject o;
         o[QStringLiteral("kind")] = kind;
+        o[QStringLiteral("states")] = states;
         o[QStringLiteral("model")] = out;
         o[QStringLiteral("aam")] = QString::fromStdString(aam);
         o[QStringLiteral("sequences")] = int(sequences.size());
@@ -68,9 +73,9 @@ int runTrain(const CommandLine &args)
         o[QStringLiteral("loglikPerFrame")] = ll / double(frames);
         printJson(o);
     } else {
-        std::printf("trained %s on %zu sequences (%lld frames, d = %d) in %.3f s; "
+        std::printf("trained %s on %zu sequences (%lld frames, d = %d, %d states) in %.3f s; "
                     "log-likelihood %.6f nats/frame; saved %s\n",
-                    kind.toUtf8().constData(), sequences.size(), frames, model->dimension(), seconds,
+                    kind.toUtf8().constData(), sequences.size(), frames, model->dimension(), states, seconds,
                     ll / double(frames), out.toUtf8().constData());
     }
     return 0;

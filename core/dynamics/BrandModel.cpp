@@ -2,7 +2,6 @@
 
 #include "dynamics/GaussianMath.h"
 #include "dynamics/JsonEigen.h"
-#include "util/PhoneSet.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
@@ -31,8 +30,8 @@ Eigen::MatrixXd floorCovariance(const Eigen::MatrixXd &C, const Eigen::VectorXd 
 void BrandModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &feedback)
 {
     feedback.throwIfCanceled();
-    const int P = PhoneSet::kCount;
-    const FrameStatistics st = computeFrameStatistics(sequences);
+    const int P = stateCount();
+    const FrameStatistics st = computeFrameStatistics(sequences, P);
     const Eigen::Index d = st.mean.cols();
     // Delta statistics over the transition frames T_n (the delta of frame t takes t's label).
     Eigen::MatrixXd dm = Eigen::MatrixXd::Zero(P, d), dv = Eigen::MatrixXd::Zero(P, d);
@@ -87,7 +86,7 @@ void BrandModel::fitFull(const std::vector<LabelledSequence> &sequences,
                          const Eigen::VectorXd &floor)
 {
     // [choice, §2.1] Mean and ML covariance of o_t over T_n only.
-    const int P = PhoneSet::kCount;
+    const int P = stateCount();
     const Eigen::Index d = m_dimension, D = 2 * d;
     Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(P, D);
     std::vector<Eigen::MatrixXd> outer(size_t(P), Eigen::MatrixXd::Zero(D, D));
@@ -210,7 +209,7 @@ brand::BlockTridiagonalSystem BrandModel::blockSystem(const std::vector<int> &la
     // §2.2, general full-covariance form, accumulated frame by frame.
     const Eigen::Index d = m_dimension;
     const size_t T = labels.size();
-    const int P = PhoneSet::kCount;
+    const int P = stateCount();
     std::vector<Eigen::MatrixXd> lambda(static_cast<size_t>(P)), lambdaStatic(static_cast<size_t>(P));
     std::vector<bool> done(size_t(P), false);
     for (int n : labels)
@@ -412,9 +411,7 @@ public:
     {
         if (m_finished)
             throw Error("streamer already finished");
-        if (label < 0 || label >= PhoneSet::kCount)
-            throw Error("label " + std::to_string(label) + " outside 0.."
-                        + std::to_string(PhoneSet::kCount - 1));
+        checkStateLabel(label, int(m_mean.rows()));
         Row row;
         row.p = m_pInv.row(label).transpose().array().inverse();
         row.pm = row.p * m_mean.row(label).transpose().array();
@@ -444,14 +441,7 @@ public:
             emitUpTo(h, h);
     }
 
-    bool pop(Eigen::Ref<Eigen::VectorXd> frame) override
-    {
-        if (m_ready.empty())
-            return false;
-        frame = m_ready.front();
-        m_ready.pop_front();
-        return true;
-    }
+    bool pop(Eigen::Ref<Eigen::VectorXd> frame) override { return m_ready.pop(frame); }
 
 private:
     struct Row
@@ -501,7 +491,7 @@ private:
             y[size_t(tau - m_next)] = row(tau).z / row(tau).pivot - lNext * y[size_t(tau + 1 - m_next)];
         }
         for (long t = m_next; t <= last; ++t)
-            m_ready.push_back(y[size_t(t - m_next)].matrix());
+            m_ready.push(y[size_t(t - m_next)].matrix());
         m_next = last + 1;
         // Rows before m_next - 2 are no longer needed (rows m_next - 2 and m_next - 1 feed the next
         // finalised row and pivot).
@@ -517,7 +507,7 @@ private:
     long m_base = 0; // frame index of m_rows.front()
     long m_next = 0; // next frame to emit
     bool m_finished = false;
-    std::deque<Eigen::VectorXd> m_ready;
+    ReadyFrames m_ready;
 };
 
 // Full covariances: exact Brand cannot stream (§5), so the whole sequence is buffered and solved
@@ -529,9 +519,7 @@ public:
     int latency() const override { return -1; }
     void push(int label) override
     {
-        if (label < 0 || label >= PhoneSet::kCount)
-            throw Error("label " + std::to_string(label) + " outside 0.."
-                        + std::to_string(PhoneSet::kCount - 1));
+        checkStateLabel(label, m_model.stateCount());
         m_labels.push_back(label);
     }
     void finish() override
@@ -587,7 +575,7 @@ QJsonObject BrandModel::parametersToJson() const
 
 void BrandModel::parametersFromJson(const QJsonObject &o, const std::string &file)
 {
-    const int P = PhoneSet::kCount;
+    const int P = stateCount();
     staticMean = json::toMatrix(o, "staticMean", P, -1, file);
     const Eigen::Index d = staticMean.cols();
     staticVariance = json::toMatrix(o, "staticVariance", P, d, file);

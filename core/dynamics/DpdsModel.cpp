@@ -3,7 +3,6 @@
 #include "dynamics/DpdsSolver.h"
 #include "dynamics/GaussianMath.h"
 #include "dynamics/JsonEigen.h"
-#include "util/PhoneSet.h"
 #include "tasks/BlockingMap.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
@@ -251,8 +250,8 @@ struct DimensionFit
 
 void DpdsModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &feedback)
 {
-    const int P = PhoneSet::kCount;
-    const FrameStatistics st = computeFrameStatistics(sequences);
+    const int P = stateCount();
+    const FrameStatistics st = computeFrameStatistics(sequences, P);
     const Eigen::Index d = st.mean.cols();
     std::vector<std::vector<int>> labels;
     for (const LabelledSequence &s : sequences)
@@ -430,7 +429,7 @@ QJsonObject DpdsModel::parametersToJson() const
 
 void DpdsModel::parametersFromJson(const QJsonObject &o, const std::string &file)
 {
-    const int P = PhoneSet::kCount;
+    const int P = stateCount();
     a = json::toMatrix(o, "a", P, -1, file);
     const Eigen::Index d = a.cols();
     mu = json::toMatrix(o, "mu", P, d, file);

@@ -37,7 +37,7 @@ private:
 
 void DynamicModel::train(const std::vector<LabelledSequence> &sequences, Feedback &feedback)
 {
-    validateSequences(sequences);
+    validateSequences(sequences, m_stateCount);
     fit(sequences, feedback);
     m_mean.resize(0);
     m_gain.resize(0);
@@ -99,6 +99,13 @@ void DynamicModel::setCompensation(const Eigen::VectorXd &mean, const Eigen::Vec
     m_gain = gain;
 }
 
+void DynamicModel::setStateCount(int states)
+{
+    if (states < 1)
+        throw Error("a model needs at least one state, not " + std::to_string(states));
+    m_stateCount = states;
+}
+
 void DynamicModel::checkTrained() const
 {
     if (!isTrained())
@@ -108,7 +115,7 @@ void DynamicModel::checkTrained() const
 void DynamicModel::checkGenerationInput(const std::vector<int> &labels) const
 {
     checkTrained();
-    validateLabels(labels);
+    validateLabels(labels, "labels", m_stateCount);
 }
 
 void DynamicModel::checkScoringInput(const std::vector<int> &labels,

@@ -28,6 +28,11 @@ public:
     virtual std::string kind() const = 0;
     // Feature dimension d, 0 before training.
     int dimension() const { return m_dimension; }
+    // P, the number of states the labels index: the 41 phones, or the tied context states when
+    // this model is the inner model of a ContextDependentModel (§5.2). Set before train() or
+    // parametersFromJson(); throws lipsync::Error for P < 1.
+    int stateCount() const { return m_stateCount; }
+    void setStateCount(int states);
     bool isTrained() const { return m_dimension > 0; }
 
     // Validates (validateSequences) and fits the parameters. Reports progress and the objective
@@ -86,6 +91,7 @@ protected:
     int m_dimension = 0;
 
 private:
+    int m_stateCount = PhoneSet::kCount;
     bool m_compensate = false;
     Eigen::VectorXd m_mean; // compensation: training mean m and gain g (empty: none)
     Eigen::VectorXd m_gain;

@@ -2,7 +2,6 @@
 
 #include "dynamics/GaussianMath.h"
 #include "dynamics/JsonEigen.h"
-#include "util/PhoneSet.h"
 #include "tasks/Feedback.h"
 
 namespace lipsync {
@@ -10,7 +9,7 @@ namespace lipsync {
 void HmmMeanModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &feedback)
 {
     feedback.throwIfCanceled();
-    const FrameStatistics st = computeFrameStatistics(sequences);
+    const FrameStatistics st = computeFrameStatistics(sequences, stateCount());
     m_mean = st.mean;
     m_variance = st.variance;
     m_dimension = int(st.mean.cols());
@@ -63,8 +62,8 @@ QJsonObject HmmMeanModel::parametersToJson() const
 
 void HmmMeanModel::parametersFromJson(const QJsonObject &o, const std::string &file)
 {
-    m_mean = json::toMatrix(o, "mean", PhoneSet::kCount, -1, file);
-    m_variance = json::toMatrix(o, "variance", PhoneSet::kCount, m_mean.cols(), file);
+    m_mean = json::toMatrix(o, "mean", stateCount(), -1, file);
+    m_variance = json::toMatrix(o, "variance", stateCount(), m_mean.cols(), file);
     m_dimension = int(m_mean.cols());
 }
 

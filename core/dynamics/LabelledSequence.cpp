@@ -1,24 +1,29 @@
 #include "dynamics/LabelledSequence.h"
 
-#include "util/PhoneSet.h"
 #include "util/Error.h"
 
 #include <cmath>
 
 namespace lipsync {
 
-void validateLabels(const std::vector<int> &labels, const std::string &what)
+void validateLabels(const std::vector<int> &labels, const std::string &what, int states)
 {
     if (labels.empty())
         throw Error("no frames", what);
     for (size_t t = 0; t < labels.size(); ++t)
-        if (labels[t] < 0 || labels[t] >= PhoneSet::kCount)
+        if (labels[t] < 0 || labels[t] >= states)
             throw Error("frame " + std::to_string(t) + ": label " + std::to_string(labels[t])
-                            + " outside 0.." + std::to_string(PhoneSet::kCount - 1),
+                            + " outside 0.." + std::to_string(states - 1),
                         what);
 }
 
-void validateSequences(const std::vector<LabelledSequence> &sequences)
+void checkStateLabel(int label, int states)
+{
+    if (label < 0 || label >= states)
+        throw Error("label " + std::to_string(label) + " outside 0.." + std::to_string(states - 1));
+}
+
+void validateSequences(const std::vector<LabelledSequence> &sequences, int states)
 {
     if (sequences.empty())
         throw Error("no training sequences");
@@ -38,7 +43,7 @@ void validateSequences(const std::vector<LabelledSequence> &sequences)
             throw Error(std::to_string(seq.labels.size()) + " frame labels but "
                             + std::to_string(seq.features.rows()) + " feature rows",
                         name);
-        validateLabels(seq.labels, name);
+        validateLabels(seq.labels, name, states);
         for (Eigen::Index t = 0; t < seq.features.rows(); ++t)
             for (Eigen::Index k = 0; k < d; ++k)
                 if (!std::isfinite(seq.features(t, k)))
@@ -48,9 +53,9 @@ void validateSequences(const std::vector<LabelledSequence> &sequences)
     }
 }
 
-FrameStatistics computeFrameStatistics(const std::vector<LabelledSequence> &sequences)
+FrameStatistics computeFrameStatistics(const std::vector<LabelledSequence> &sequences, int states)
 {
-    const int P = PhoneSet::kCount;
+    const int P = states;
     const Eigen::Index d = sequences.front().features.cols();
     FrameStatistics st;
     st.mean = Eigen::MatrixXd::Zero(P, d);

@@ -1,6 +1,9 @@
 #pragma once
 // Training and test data of the dynamic models (docs/models.md §0): one utterance = an integer
-// phone label per video frame (0..PhoneSet::kCount-1) and the T x d matrix of face features y_t.
+// label per video frame and the T x d matrix of face features y_t. Labels index the model's P
+// states: the 41 phones (PhoneSet), or the tied context states of a ContextTree (§5.2).
+#include "util/PhoneSet.h"
+
 #include <Eigen/Core>
 
 #include <string>
@@ -19,9 +22,12 @@ struct LabelledSequence
 // Checks what every model relies on and throws lipsync::Error naming the sequence: at least one
 // sequence, the same d > 0 everywhere, as many labels as feature rows, at least one frame, labels
 // in 0..P-1, finite features. Sequences of one frame are valid (they only inform the t = 1 terms).
-void validateSequences(const std::vector<LabelledSequence> &sequences);
+void validateSequences(const std::vector<LabelledSequence> &sequences, int states = PhoneSet::kCount);
 // Label checks for generation: non-empty, every label in 0..P-1.
-void validateLabels(const std::vector<int> &labels, const std::string &what = "labels");
+void validateLabels(const std::vector<int> &labels, const std::string &what = "labels",
+                    int states = PhoneSet::kCount);
+// One label of a streamer: throws lipsync::Error unless it is in 0..states-1.
+void checkStateLabel(int label, int states);
 
 // Per-state frame statistics shared by the models' closed-form estimates and back-offs.
 struct FrameStatistics
@@ -36,6 +42,7 @@ struct FrameStatistics
     Eigen::VectorXd floor;          // eps_k = 1e-6 Var(y_k) (docs/models.md §0), at least 1e-12
     long long frames = 0;
 };
-FrameStatistics computeFrameStatistics(const std::vector<LabelledSequence> &sequences);
+FrameStatistics computeFrameStatistics(const std::vector<LabelledSequence> &sequences,
+                                       int states = PhoneSet::kCount);
 
 } // namespace lipsync

@@ -1,7 +1,6 @@
 #include "dynamics/LinearRecursion.h"
 
-#include "util/PhoneSet.h"
-#include "util/Error.h"
+#include "dynamics/LabelledSequence.h"
 
 namespace lipsync {
 
@@ -43,9 +42,7 @@ public:
     int latency() const override { return 0; }
     void push(int label) override
     {
-        if (label < 0 || label >= PhoneSet::kCount)
-            throw Error("label " + std::to_string(label) + " outside 0.."
-                        + std::to_string(PhoneSet::kCount - 1));
+        checkStateLabel(label, int(m_r.mu.rows()));
         if (!m_started) {
             m_r.first(label, m_y);
             m_started = true;

@@ -1,5 +1,6 @@
 #include "dynamics/ModelFile.h"
 
+#include "dynamics/ContextDependentModel.h"
 #include "dynamics/HmmMeanModel.h"
 #include "dynamics/JsonEigen.h"
 #include "util/PhoneSet.h"
@@ -33,6 +34,8 @@ std::unique_ptr<DynamicModel> newModelOfKind(ModelKind kind, const ModelOptions 
 std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOptions &options)
 {
     std::unique_ptr<DynamicModel> model = newModelOfKind(kind, options);
+    if (options.contextStates)
+        model = std::make_unique<ContextDependentModel>(std::move(model), options.context);
     model->setVarianceCompensation(options.compensateVariance);
     return model;
 }
@@ -59,6 +62,8 @@ void saveModel(const DynamicModel &model, const std::string &path, const std::st
     o[QStringLiteral("labels")] = labels;
     o[QStringLiteral("dimension")] = model.dimension();
     o[QStringLiteral("parameters")] = model.parametersToJson();
+    if (const auto *context = dynamic_cast<const ContextDependentModel *>(&model))
+        o[QStringLiteral("context")] = context->tree().toJson();
     if (model.compensatesVariance())
         o[QStringLiteral("compensation")] = QJsonObject{{QStringLiteral("mean"), json::fromVector(model.compensationMean())},
                                                         {QStringLiteral("gain"), json::fromVector(model.compensationGain())}};
@@ -101,10 +106,14 @@ std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::str
     const std::string kind = o.value(QStringLiteral("kind")).toString().toStdString();
     std::unique_ptr<DynamicModel> model;
     try {
-        model = createDynamicModel(kind);
+        ModelOptions options;
+        options.contextStates = o.contains(QStringLiteral("context"));
+        model = createDynamicModel(kind, options);
     } catch (const Error &e) {
         throw Error(e.reason(), path, "kind");
     }
+    if (auto *context = dynamic_cast<ContextDependentModel *>(model.get()))
+        context->setTree(ContextTree::fromJson(o.value(QStringLiteral("context")).toObject(), path));
     if (!o.value(QStringLiteral("parameters")).isObject())
         throw Error("missing", path, "parameters");
     model->parametersFromJson(o.value(QStringLiteral("parameters")).toObject(), path);

@@ -3,9 +3,11 @@
 //   {"format": "lipsync-dynamic-model", "version": 1, "kind": "dpds", "aam": "<AAM id>",
 //    "labels": ["AA", ..., "sil", "br"], "dimension": 32, "parameters": {...}}
 // "labels" records the phone set the integer labels refer to, "aam" the AAM whose parameters
-// the features are. Loading rejects another format or version, an unknown kind, another label
+// the features are. A model over context-dependent states (§5.2) adds "context" (ContextTree's
+// JSON); its parameters are then indexed by the tree's states. Loading rejects another format or version, an unknown kind, another label
 // set, and (when an AAM id is expected) another AAM, with a lipsync::Error naming the file.
 #include "dynamics/BrandModel.h"
+#include "dynamics/ContextTree.h"
 #include "dynamics/DpdsModel.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/ModelKind.h"
@@ -26,6 +28,9 @@ struct ModelOptions
     DpdsOptions dpds;
     // Every kind: variance compensation of the generated trajectories (DynamicModel, §5.1).
     bool compensateVariance = false;
+    // Every kind: context-dependent states tied by decision trees (ContextDependentModel, §5.2).
+    bool contextStates = false;
+    ContextTreeOptions context;
 };
 
 std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOptions &options = {});

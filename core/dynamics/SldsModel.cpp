@@ -2,7 +2,6 @@
 
 #include "dynamics/GaussianMath.h"
 #include "dynamics/JsonEigen.h"
-#include "util/PhoneSet.h"
 #include "tasks/BlockingMap.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
@@ -144,8 +143,8 @@ void SldsModel::setParameters(const slds::Parameters &parameters)
 
 void SldsModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &feedback)
 {
-    const int P = PhoneSet::kCount;
-    const FrameStatistics st = computeFrameStatistics(sequences);
+    const int P = stateCount();
+    const FrameStatistics st = computeFrameStatistics(sequences, P);
     const Eigen::Index d = st.mean.cols();
     // Initialisation [choice, §3.4]: DPDS a, nu, mu; Q = R = r/2; Sigma_n = c_n.
     DpdsOptions dpdsOptions;
@@ -154,13 +153,15 @@ void SldsModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &fe
         dpdsOptions.aMax = std::min(m_options.aMax, dpdsOptions.aMax);
     dpdsOptions.threads = m_options.threads;
     DpdsModel trainedHere(dpdsOptions);
-    if (!m_initialisation || m_initialisation->dimension() != int(d)) {
+    trainedHere.setStateCount(P);
+    const bool given = m_initialisation && m_initialisation->dimension() == int(d)
+                       && m_initialisation->stateCount() == P;
+    if (!given) {
         Feedback child(feedback, 0.0, 0.2);
         feedback.setStatus("SLDS: DPDS initialisation");
         trainedHere.train(sequences, child);
     }
-    const DpdsModel &dpds = m_initialisation && m_initialisation->dimension() == int(d) ? *m_initialisation
-                                                                                         : trainedHere;
+    const DpdsModel &dpds = given ? *m_initialisation : trainedHere;
     slds::Parameters p;
     p.mu = dpds.mu;
     p.nu = dpds.nu;
@@ -211,7 +212,7 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
                              const FrameStatistics &st, const Eigen::VectorXd &s0)
 {
     // All-diagonal default: d independent scalar Kalman filters / RTS smoothers (§3.1).
-    const int P = PhoneSet::kCount;
+    const int P = stateCount();
     const Eigen::Index d = m_dimension;
     slds::Parameters &p = m_params;
     // Dimensions are independent: run them in parallel (each writes only its own k entries).
@@ -360,7 +361,7 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
 double SldsModel::emMatrix(const std::vector<LabelledSequence> &sequences,
                            const FrameStatistics &st, const Eigen::VectorXd &s0)
 {
-    const int P = PhoneSet::kCount;
+    const int P = stateCount();
     const Eigen::Index d = m_dimension;
     slds::Parameters &p = m_params;
     const Eigen::MatrixXd Z = Eigen::MatrixXd::Zero(d, d);
@@ -575,7 +576,7 @@ QJsonObject SldsModel::parametersToJson() const
 
 void SldsModel::parametersFromJson(const QJsonObject &o, const std::string &file)
 {
-    const int P = PhoneSet::kCount;
+    const int P = stateCount();
     slds::Parameters p;
     p.nu = json::toMatrix(o, "nu", P, -1, file);
     const Eigen::Index d = p.nu.cols();

@@ -4,7 +4,28 @@
 // label; fixed-lag Brand emits frame t once label t+L is known, and the rest on finish().
 #include <Eigen/Core>
 
+#include <deque>
+
 namespace lipsync {
+
+// The frames a streamer has made ready and not yet handed out, oldest first (for streamers that
+// make several frames ready at once).
+class ReadyFrames
+{
+public:
+    void push(const Eigen::VectorXd &frame) { m_frames.push_back(frame); }
+    bool pop(Eigen::Ref<Eigen::VectorXd> frame)
+    {
+        if (m_frames.empty())
+            return false;
+        frame = m_frames.front();
+        m_frames.pop_front();
+        return true;
+    }
+
+private:
+    std::deque<Eigen::VectorXd> m_frames;
+};
 
 class StreamingGenerator
 {

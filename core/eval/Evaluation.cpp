@@ -1,5 +1,6 @@
 #include "eval/Evaluation.h"
 
+#include "dynamics/ContextDependentModel.h"
 #include "eval/CrossValidation.h"
 #include "eval/Metrics.h"
 #include "eval/Statistics.h"
@@ -130,7 +131,12 @@ std::vector<std::shared_ptr<DynamicModel>> trainFoldModels(const std::vector<Lab
         feedback.throwIfCanceled();
         feedback.setStatus(statusPrefix + kind);
         std::shared_ptr<DynamicModel> model = createDynamicModel(kind, modelOptions);
-        if (auto *slds = dynamic_cast<SldsModel *>(model.get()); slds && foldDpds)
+        // With context states both are inner models over the same trees (grown on the same
+        // training part), so the DPDS's states are the SLDS's.
+        DynamicModel *paperModel = model.get();
+        if (auto *context = dynamic_cast<ContextDependentModel *>(paperModel))
+            paperModel = &context->inner();
+        if (auto *slds = dynamic_cast<SldsModel *>(paperModel); slds && foldDpds)
             slds->setInitialisation(foldDpds);
         const double steps = double(order.size());
         Feedback child(feedback, double(step) / steps, double(step + 1) / steps);
@@ -142,7 +148,7 @@ std::vector<std::shared_ptr<DynamicModel>> trainFoldModels(const std::vector<Lab
         if (wallSeconds)
             (*wallSeconds)[index] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (parseModelKind(kind) == ModelKind::Dpds)
-            foldDpds = std::static_pointer_cast<const DpdsModel>(model);
+            foldDpds = std::shared_ptr<const DpdsModel>(model, dynamic_cast<const DpdsModel *>(paperModel));
         models[index] = std::move(model);
         feedback.setProgress(double(step + 1) / steps);
     }

@@ -59,7 +59,8 @@ ModelsPanel::ModelsPanel(QWidget *parent)
       m_evaluate(new QPushButton(tr("Evaluate (k-fold)"), this)), m_realism(new QPushButton(tr("Realism"), this)),
       m_dpdsOptimizer(new QComboBox(this)),
       m_sldsA(new QComboBox(this)), m_brandCovariance(new QComboBox(this)),
-      m_compensateVariance(new QCheckBox(tr("Variance compensation"), this)), m_folds(new QSpinBox(this)),
+      m_compensateVariance(new QCheckBox(tr("Variance compensation"), this)),
+      m_contextStates(new QCheckBox(tr("Phones in context"), this)), m_folds(new QSpinBox(this)),
       m_parameter(new QSpinBox(this)), m_status(new QLabel(this))
 {
     auto *layout = new QVBoxLayout(this);
@@ -98,7 +99,15 @@ ModelsPanel::ModelsPanel(QWidget *parent)
         tr("Scale each model's generated trajectories to the spread of the training features: lips that "
            "open and close as much as the recording's, at the cost of a larger error per frame. Off: the "
            "paper's models exactly."));
-    grid->addWidget(m_compensateVariance, int(kinds.size()), 0, 1, 2);
+    grid->addWidget(m_compensateVariance, int(kinds.size()), 0);
+    // Every kind: states for phones in context, tied by decision trees (docs/models.md §5.2).
+    m_contextStates->setObjectName(QStringLiteral("contextStates"));
+    m_contextStates->setChecked(true);
+    m_contextStates->setToolTip(
+        tr("Train each model on states for phones in their context (the neighbouring phones and the part "
+           "of the phone), tied by decision trees: lips that anticipate the next sound. Off: one state per "
+           "phone, the paper's models exactly."));
+    grid->addWidget(m_contextStates, int(kinds.size()), 1);
     layout->addLayout(grid);
 
     auto *buttons = new QHBoxLayout;
@@ -267,6 +276,7 @@ ModelOptions ModelsPanel::modelOptions() const
     options.slds.fullA = m_sldsA->currentData().toBool();
     options.brand.fullCovariance = m_brandCovariance->currentData().toBool();
     options.compensateVariance = m_compensateVariance->isChecked();
+    options.contextStates = m_contextStates->isChecked();
     return options;
 }
 

@@ -67,6 +67,7 @@ public:
     QComboBox *sldsTransition() const { return m_sldsA; }
     QComboBox *brandCovariance() const { return m_brandCovariance; }
     QCheckBox *compensateVarianceCheck() const { return m_compensateVariance; }
+    QCheckBox *contextStatesCheck() const { return m_contextStates; }
     QSpinBox *foldsSpin() const { return m_folds; }
     QSpinBox *parameterSpin() const { return m_parameter; }
     TrajectoryView *trajectoryView() const { return m_trajectory; }
@@ -114,6 +115,7 @@ private:
     QComboBox *m_sldsA;
     QComboBox *m_brandCovariance;
     QCheckBox *m_compensateVariance;
+    QCheckBox *m_contextStates;
     QSpinBox *m_folds;
     QSpinBox *m_parameter;
     QLabel *m_status;

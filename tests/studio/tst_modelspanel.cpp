@@ -16,6 +16,7 @@
 #include "annotate/FacesController.h"
 #include "app/ModelKinds.h"
 #include "build/ModelsPanel.h"
+#include "dynamics/ContextDependentModel.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
@@ -100,11 +101,14 @@ private slots:
             panel.kindCheck(kind)->setChecked(kind == QLatin1String("hmm"));
         QVERIFY(panel.compensateVarianceCheck()->isChecked()); // livelier lips unless asked otherwise
         panel.compensateVarianceCheck()->setChecked(false); // the paper's model
+        QVERIFY(panel.contextStatesCheck()->isChecked()); // anticipating lips unless asked otherwise
+        panel.contextStatesCheck()->setChecked(false);
         const QList<Task *> tasks = panel.train();
         QCOMPARE(tasks.size(), 1);
         QTRY_COMPARE_WITH_TIMEOUT(context.taskRunner()->runningCount(), 0, 60000);
         QVERIFY(context.modelStore()->dynamicModel(QStringLiteral("hmm")));
         QVERIFY(!context.modelStore()->dynamicModel(QStringLiteral("hmm"))->compensatesVariance());
+        QVERIFY(!dynamic_cast<const ContextDependentModel *>(context.modelStore()->dynamicModel(QStringLiteral("hmm")).get()));
         QCOMPARE(context.undoStack()->undoText(), QStringLiteral("Train HMM-mean"));
         // The sequence's media as the window's loader gives it (frames only matter here).
         auto media = std::make_shared<SequenceMedia>();
@@ -148,6 +152,10 @@ private slots:
         QCOMPARE(trained.count(), 2);
         QVERIFY(m_window->modelStore()->dynamicModel("hmm"));
         QVERIFY(m_window->modelStore()->dynamicModel("dpds"));
+        // The default: phones in context, tied by trees grown on the demo's clips.
+        const auto *dpds = dynamic_cast<const ContextDependentModel *>(m_window->modelStore()->dynamicModel("dpds").get());
+        QVERIFY(dpds);
+        QCOMPARE(dpds->inner().stateCount(), dpds->tree().stateCount());
         QCOMPARE(m_window->modelStore()->dynamicModel("dpds")->dimension(), int(m_window->document()->sequence(0).features.cols()));
         QVERIFY(m_window->modelStore()->dynamicModel("dpds")->compensatesVariance()); // the panel's default
         // The live objective plot got the iterations of the iterative model (DPDS).

@@ -1,15 +1,30 @@
 #pragma once
 // Synthetic labelled data for the dynamics tests: phone sequences made of runs (like aligned
-// speech: a few frames per phone, starting in silence) and features sampled from a DPDS.
+// speech: a few frames per phone, starting in silence) and features sampled from a DPDS; the
+// message of a bad-input error.
 #include "dynamics/LabelledSequence.h"
+#include "util/Error.h"
 #include "util/PhoneSet.h"
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace lipsync::test {
+
+// What f throws as lipsync::Error, or empty if it throws nothing.
+inline std::string errorOf(const std::function<void()> &f)
+{
+    try {
+        f();
+    } catch (const Error &e) {
+        return e.what();
+    }
+    return {};
+}
 
 // Labels drawn from `states` in runs of 2..maxRun frames; the first run is silence when
 // startInSilence.

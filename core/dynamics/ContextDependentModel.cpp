@@ -1,0 +1,136 @@
+#include "dynamics/ContextDependentModel.h"
+
+#include "tasks/Feedback.h"
+#include "util/Error.h"
+
+namespace lipsync {
+
+namespace {
+
+// Phone labels in, the inner streamer's frames out: a phone's frames go to the inner streamer as
+// states once the next phone (their right context, and their count) is known.
+class ContextStreamer : public StreamingGenerator
+{
+public:
+    ContextStreamer(const ContextTree &tree, std::unique_ptr<StreamingGenerator> inner, int dimension)
+        : m_tree(tree), m_inner(std::move(inner)), m_frame(dimension)
+    {
+    }
+    // Variable: a frame waits for the next phone to start.
+    int latency() const override { return -1; }
+    void push(int label) override
+    {
+        checkStateLabel(label, PhoneSet::kCount);
+        if (!m_segment.empty() && label != m_segment.front())
+            flush(label);
+        m_segment.push_back(label);
+    }
+    void finish() override
+    {
+        flush(PhoneSet::kSilence);
+        m_inner->finish();
+        drain();
+    }
+    bool pop(Eigen::Ref<Eigen::VectorXd> frame) override { return m_ready.pop(frame); }
+
+private:
+    void flush(int next)
+    {
+        if (m_segment.empty())
+            return;
+        const int length = int(m_segment.size());
+        for (int i = 0; i < length; ++i) {
+            m_inner->push(m_tree.state({m_segment.front(), m_previous, next, segmentPosition(i, length)}));
+            drain(); // the inner streamer may hold only its latest frame
+        }
+        m_previous = m_segment.front();
+        m_segment.clear();
+    }
+    void drain()
+    {
+        while (m_inner->pop(m_frame))
+            m_ready.push(m_frame);
+    }
+
+    ContextTree m_tree; // a copy: the streamer outlives a retrained model
+    std::unique_ptr<StreamingGenerator> m_inner;
+    Eigen::VectorXd m_frame;
+    ReadyFrames m_ready;
+    std::vector<int> m_segment;
+    int m_previous = PhoneSet::kSilence;
+};
+
+} // namespace
+
+ContextDependentModel::ContextDependentModel(std::unique_ptr<DynamicModel> inner, ContextTreeOptions options)
+    : m_inner(std::move(inner)), m_options(options)
+{
+    if (!m_inner)
+        throw Error("a context-dependent model needs an inner model");
+    m_inner->setStateCount(m_tree.stateCount());
+}
+
+void ContextDependentModel::setTree(ContextTree tree)
+{
+    m_inner->setStateCount(tree.stateCount());
+    m_tree = std::move(tree);
+}
+
+void ContextDependentModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &feedback)
+{
+    Feedback growing(feedback, 0.0, 0.05);
+    growing.setStatus("growing the context trees");
+    ContextTree tree = ContextTree::grow(sequences, m_options, growing);
+    std::vector<LabelledSequence> states = sequences;
+    for (LabelledSequence &s : states)
+        s.labels = tree.states(s.labels);
+    const int previous = m_inner->stateCount();
+    m_inner->setStateCount(tree.stateCount());
+    try {
+        Feedback training(feedback, 0.05, 1.0);
+        // The inner model's iterations are this model's own.
+        training.onIteration = [&feedback](int iteration, double objective) {
+            feedback.reportIteration(iteration, objective);
+        };
+        m_inner->train(states, training);
+    } catch (...) {
+        m_inner->setStateCount(previous);
+        throw;
+    }
+    m_tree = std::move(tree);
+    m_dimension = m_inner->dimension();
+}
+
+Eigen::MatrixXd ContextDependentModel::generateMostLikely(const std::vector<int> &labels) const
+{
+    checkGenerationInput(labels);
+    return m_inner->generateMostLikely(m_tree.states(labels));
+}
+
+double ContextDependentModel::logLikelihood(const std::vector<int> &labels,
+                                            const Eigen::MatrixXd &features) const
+{
+    checkScoringInput(labels, features);
+    return m_inner->logLikelihood(m_tree.states(labels), features);
+}
+
+double ContextDependentModel::trajectoryLogLikelihood(const std::vector<int> &labels,
+                                                      const Eigen::MatrixXd &features) const
+{
+    checkScoringInput(labels, features);
+    return m_inner->trajectoryLogLikelihood(m_tree.states(labels), features);
+}
+
+void ContextDependentModel::parametersFromJson(const QJsonObject &json, const std::string &file)
+{
+    m_inner->parametersFromJson(json, file);
+    m_dimension = m_inner->dimension();
+}
+
+std::unique_ptr<StreamingGenerator> ContextDependentModel::makeStreamer() const
+{
+    checkTrained();
+    return std::make_unique<ContextStreamer>(m_tree, m_inner->streamer(), m_dimension);
+}
+
+} // namespace lipsync
