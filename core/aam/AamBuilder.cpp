@@ -370,6 +370,13 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
             warn("the face detector found too few training faces to calibrate its initialisation");
         }
     }
+    if (options.singlePrecisionBases) {
+        model.singlePrecisionBases = true;
+        const auto round = [](Eigen::MatrixXd &m) { m = m.cast<float>().cast<double>(); };
+        round(model.textureBasis);
+        for (AamTextureLevel &level : model.levels)
+            round(level.basis);
+    }
     model.identifier = model.computeIdentifier();
     feedback.setProgress(1.0);
     feedback.setStatus("done");

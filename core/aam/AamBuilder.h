@@ -54,6 +54,9 @@ struct AamBuildOptions
     // real teeth and lip highlights on the model's smooth texture; when there are more, a
     // farthest-point subset in the combined parameters. 0: none (a model only for fitting).
     int maxExemplars = 200;
+    // Texture bases rounded to single precision (AamModel::singlePrecisionBases): files half the
+    // size; the rounding (7 significant digits) is far below the pixels' own quantisation.
+    bool singlePrecisionBases = true;
     // Texture the fitter matches: grey (person-specific tracking) or gradient orientations.
     AamFitFeatures fitFeatures = AamFitFeatures::Grey;
     // When set, the detector is run on every training image to learn where its keypoints put

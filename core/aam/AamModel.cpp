@@ -34,11 +34,13 @@ public:
         i32(int(v.size()));
         raw(v.data(), sizeof(double) * size_t(v.size()));
     }
-    void mat(const Eigen::MatrixXd &m)
+    // A matrix stored as Scalar (double, or float for single-precision bases).
+    template <class Scalar = double> void mat(const Eigen::MatrixXd &m)
     {
         i32(int(m.rows()));
         i32(int(m.cols()));
-        raw(m.data(), sizeof(double) * size_t(m.size()));
+        const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> stored = m.cast<Scalar>();
+        raw(stored.data(), sizeof(Scalar) * size_t(stored.size()));
     }
     template <class Matrix> void bytes(const Matrix &m)
     {
@@ -98,14 +100,15 @@ public:
         raw(v.data(), sizeof(double) * size_t(v.size()));
         return v;
     }
-    Eigen::MatrixXd mat(const char *what)
+    // A matrix stored as Scalar (double, or float for single-precision bases).
+    template <class Scalar = double> Eigen::MatrixXd mat(const char *what)
     {
         const int r = count(what), c = count(what);
-        if (double(r) * double(c) * sizeof(double) > double(remaining()))
+        if (double(r) * double(c) * sizeof(Scalar) > double(remaining()))
             throw Error("corrupt AAM file (more " + std::string(what) + " than the file holds)", m_path, what);
-        Eigen::MatrixXd m(r, c);
-        raw(m.data(), sizeof(double) * size_t(m.size()));
-        return m;
+        Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> m(r, c);
+        raw(m.data(), sizeof(Scalar) * size_t(m.size()));
+        return m.template cast<double>();
     }
     Eigen::Matrix<std::int8_t, Eigen::Dynamic, Eigen::Dynamic> bytes(const char *what)
     {
@@ -194,7 +197,9 @@ std::string AamModel::serialise(bool withIdentifier) const
     Writer w;
     w.raw(kMagic, sizeof kMagic);
     int version = 1;
-    if (exemplarCount() > 0)
+    if (singlePrecisionBases)
+        version = 4;
+    else if (exemplarCount() > 0)
         version = 3;
     else if (detectorRegression.size() > 0 || fitFeatures != AamFitFeatures::Grey)
         version = 2;
@@ -209,8 +214,9 @@ std::string AamModel::serialise(bool withIdentifier) const
         for (int v : t)
             w.i32(v);
     w.f64(referenceScale);
+    const auto basis = [&](const Eigen::MatrixXd &m) { version >= 4 ? w.mat<float>(m) : w.mat(m); };
     w.vec(textureMean);
-    w.mat(textureBasis);
+    basis(textureBasis);
     w.vec(textureVariances);
     w.f64(meanTextureScale);
     w.f64(meanTextureOffset);
@@ -221,7 +227,7 @@ std::string AamModel::serialise(bool withIdentifier) const
     for (const auto &l : levels) {
         w.f64(l.scale);
         w.vec(l.mean);
-        w.mat(l.basis);
+        basis(l.basis);
         w.vec(l.variances);
     }
     w.vec(detectorShape);
@@ -231,6 +237,7 @@ std::string AamModel::serialise(bool withIdentifier) const
         w.i32(int(fitFeatures));
     }
     if (version >= 3) {
+        // Version 4 may have no exemplars (then three empty matrices).
         w.mat(exemplarParams);
         w.bytes(exemplarDetail);
         w.vec(exemplarScales);
@@ -269,6 +276,8 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
                         + std::to_string(kFormatVersion) + ")",
                     path, "version");
     AamModel m;
+    m.singlePrecisionBases = version >= 4;
+    const auto basis = [&](const char *what) { return version >= 4 ? r.mat<float>(what) : r.mat(what); };
     m.identifier = r.str("identifier");
     m.trainingImages = r.i32();
     m.meanShape = r.vec("meanShape");
@@ -285,7 +294,7 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
     }
     m.referenceScale = r.f64();
     m.textureMean = r.vec("textureMean");
-    m.textureBasis = r.mat("textureBasis");
+    m.textureBasis = basis("textureBasis");
     m.textureVariances = r.vec("textureVariances");
     m.meanTextureScale = r.f64();
     m.meanTextureOffset = r.f64();
@@ -297,7 +306,7 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
         AamTextureLevel l;
         l.scale = r.f64();
         l.mean = r.vec("levels");
-        l.basis = r.mat("levels");
+        l.basis = basis("levels");
         l.variances = r.vec("levels");
         m.levels.push_back(std::move(l));
     }
@@ -336,7 +345,7 @@ AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
                             && m.exemplarDetail.cols() == m.exemplarCount()
                             && m.exemplarScales.size() == m.exemplarCount() && m.exemplarParams.allFinite()
                             && m.exemplarScales.allFinite() && m.exemplarScales.minCoeff() >= 0))
-                    && (version < 3 || m.exemplarCount() > 0);
+                    && (version != 3 || m.exemplarCount() > 0);
     for (int l = 0; ok && l < nl; ++l) {
         const AamTextureLevel &level = m.levels[size_t(l)];
         ok = level.basis.rows() == level.mean.size() && level.variances.size() == level.basis.cols()

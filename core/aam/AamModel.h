@@ -39,9 +39,10 @@ class AamModel
 {
 public:
     // Version 2 adds the detector keypoint regression and the fitting features, version 3 the
-    // exemplar detail; a file is written with the lowest version that holds its content, so older
-    // files load and are written back unchanged and their identifiers do not change.
-    static constexpr int kFormatVersion = 3;
+    // exemplar detail, version 4 single-precision texture bases; a file is written with the
+    // lowest version that holds its content, so older files load and are written back unchanged
+    // and their identifiers do not change.
+    static constexpr int kFormatVersion = 4;
 
     // Shape model, in normalised (centred, unit size) coordinates.
     Eigen::VectorXd meanShape;
@@ -91,6 +92,12 @@ public:
     Eigen::Matrix<std::int8_t, Eigen::Dynamic, Eigen::Dynamic> exemplarDetail; // 3N x E
     Eigen::VectorXd exemplarScales; // E
     int exemplarCount() const { return int(exemplarParams.cols()); }
+
+    // The texture bases (colour and every fitting level) hold single-precision values, and the
+    // file stores them in 4 bytes each (version 4): half the size of a model, whose bases are
+    // nearly all of it. The builder rounds its bases so; the values stay doubles in memory, so a
+    // model and the file written from it agree exactly.
+    bool singlePrecisionBases = false;
 
     int trainingImages = 0;
     // Stable identifier of this model (hash of its contents); dynamic models record it.

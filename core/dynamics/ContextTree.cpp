@@ -15,7 +15,7 @@ namespace lipsync {
 
 namespace {
 
-constexpr int P = PhoneSet::kCount;
+constexpr int kPhones = PhoneSet::kCount;
 constexpr int kPositions = kSegmentPositions;
 
 // Phone classes by what the lips, jaw and tongue do (the left and right questions ask each of
@@ -59,7 +59,7 @@ struct Question
 {
     std::string name;
     Side side;
-    std::array<bool, P> members{}; // Left/Right: phones; Position: the first kPositions entries
+    std::array<bool, kPhones> members{}; // Left/Right: phones; Position: the first kPositions entries
     bool asks(const PhoneContext &c) const
     {
         switch (side) {
@@ -92,7 +92,7 @@ const std::vector<Question> &questions()
                     question.members[size_t(PhoneSet::index(phone))] = true;
                 q.push_back(question);
             }
-            for (int phone = 0; phone < P; ++phone) {
+            for (int phone = 0; phone < kPhones; ++phone) {
                 Question question{prefix + PhoneSet::label(phone), side, {}};
                 question.members[size_t(phone)] = true;
                 q.push_back(question);
@@ -221,11 +221,11 @@ std::vector<PhoneContext> frameContexts(const std::vector<int> &labels)
 }
 
 ContextTree::ContextTree()
-    : m_trees(size_t(P), std::vector<Node>(1))
+    : m_trees(size_t(kPhones), std::vector<Node>(1))
 {
-    for (int p = 0; p < P; ++p)
+    for (int p = 0; p < kPhones; ++p)
         m_trees[size_t(p)][0].state = p;
-    m_stateCount = P;
+    m_stateCount = kPhones;
 }
 
 ContextTree ContextTree::grow(const std::vector<LabelledSequence> &sequences,
@@ -233,14 +233,14 @@ ContextTree ContextTree::grow(const std::vector<LabelledSequence> &sequences,
 {
     const Eigen::Index d = sequences.front().features.cols();
     // Moments per phone and distinct context; the global variance for the floor (§0: 1e-6 Var).
-    std::vector<std::vector<ContextMoments>> perPhone(static_cast<size_t>(P));
-    std::vector<std::map<int, size_t>> index(static_cast<size_t>(P));
+    std::vector<std::vector<ContextMoments>> perPhone(static_cast<size_t>(kPhones));
+    std::vector<std::map<int, size_t>> index(static_cast<size_t>(kPhones));
     Moments global(d);
     for (const LabelledSequence &s : sequences) {
         const std::vector<PhoneContext> contexts = frameContexts(s.labels);
         for (size_t t = 0; t < contexts.size(); ++t) {
             const PhoneContext &c = contexts[t];
-            const int key = (c.left * P + c.right) * kPositions + c.position;
+            const int key = (c.left * kPhones + c.right) * kPositions + c.position;
             auto [it, added] = index[size_t(c.phone)].try_emplace(key, perPhone[size_t(c.phone)].size());
             if (added)
                 perPhone[size_t(c.phone)].push_back({c, Moments(d)});
@@ -260,7 +260,7 @@ ContextTree ContextTree::grow(const std::vector<LabelledSequence> &sequences,
 
     ContextTree tree;
     tree.m_stateCount = 0;
-    for (int p = 0; p < P; ++p) {
+    for (int p = 0; p < kPhones; ++p) {
         feedback.throwIfCanceled();
         std::vector<int> members(perPhone[size_t(p)].size());
         for (size_t i = 0; i < members.size(); ++i)
@@ -277,7 +277,7 @@ ContextTree ContextTree::grow(const std::vector<LabelledSequence> &sequences,
             if (questionOf[i] < 0)
                 nodes[i].state = tree.m_stateCount++;
         }
-        feedback.setProgress(double(p + 1) / P);
+        feedback.setProgress(double(p + 1) / kPhones);
     }
     return tree;
 }
@@ -304,7 +304,7 @@ std::vector<int> ContextTree::states(const std::vector<int> &phoneLabels) const
 std::string ContextTree::describe(int state) const
 {
     const std::vector<Question> &qs = questions();
-    for (int p = 0; p < P; ++p) {
+    for (int p = 0; p < kPhones; ++p) {
         const std::vector<Node> &nodes = m_trees[size_t(p)];
         // Depth-first with the path of answers.
         std::vector<std::pair<int, std::string>> stack{{0, std::string()}};
@@ -340,7 +340,7 @@ QJsonObject ContextTree::toJson() const
 {
     QJsonArray trees;
     const std::vector<Question> &qs = questions();
-    for (int p = 0; p < P; ++p) {
+    for (int p = 0; p < kPhones; ++p) {
         QJsonArray nodes;
         for (const Node &n : m_trees[size_t(p)]) {
             if (n.question < 0)
@@ -360,14 +360,14 @@ ContextTree ContextTree::fromJson(const QJsonObject &json, const std::string &fi
 {
     ContextTree tree;
     const QJsonValue states = json.value(QStringLiteral("states"));
-    if (!states.isDouble() || states.toInt() < P)
-        throw Error("expected at least " + std::to_string(P) + " states", file, "context.states");
+    if (!states.isDouble() || states.toInt() < kPhones)
+        throw Error("expected at least " + std::to_string(kPhones) + " states", file, "context.states");
     tree.m_stateCount = states.toInt();
     const QJsonArray trees = json.value(QStringLiteral("trees")).toArray();
-    if (trees.size() != P)
-        throw Error("expected one tree per phone (" + std::to_string(P) + ")", file, "context.trees");
+    if (trees.size() != kPhones)
+        throw Error("expected one tree per phone (" + std::to_string(kPhones) + ")", file, "context.trees");
     std::vector<int> seen(size_t(tree.m_stateCount), 0);
-    for (int p = 0; p < P; ++p) {
+    for (int p = 0; p < kPhones; ++p) {
         const QJsonObject t = trees[p].toObject();
         const std::string where = "context.trees[" + std::to_string(p) + "]";
         if (t.value(QStringLiteral("phone")).toString().toStdString() != PhoneSet::label(p))

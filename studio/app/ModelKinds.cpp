@@ -4,9 +4,9 @@ namespace lipsync::studio {
 
 const QStringList &ModelKinds::ids()
 {
-    static const QStringList list{QString::fromLatin1(modelKindId(ModelKind::Dpds)),
+    static const QStringList list{QString::fromLatin1(modelKindId(ModelKind::Brand)),
+                                  QString::fromLatin1(modelKindId(ModelKind::Dpds)),
                                   QString::fromLatin1(modelKindId(ModelKind::Slds)),
-                                  QString::fromLatin1(modelKindId(ModelKind::Brand)),
                                   QString::fromLatin1(modelKindId(ModelKind::HmmMean))};
     return list;
 }

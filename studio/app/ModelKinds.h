@@ -17,7 +17,9 @@ class ModelKinds
     Q_DECLARE_TR_FUNCTIONS(ModelKinds)
 
 public:
-    // The ids in the studio's order: the paper's DPDS first, then SLDS, Brand, HMM-mean.
+    // The ids in the studio's order, the default first: Brand, whose lips follow the recordings
+    // best with phones in context and variance compensation (docs/performance.md, "Phones in
+    // context"), then the paper's DPDS, SLDS and HMM-mean.
     static const QStringList &ids();
     static bool contains(const QString &id);
 

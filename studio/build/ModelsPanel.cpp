@@ -80,7 +80,9 @@ ModelsPanel::ModelsPanel(QWidget *parent)
     m_sldsA->addItem(tr("Full A"), true);
     m_brandCovariance->addItem(tr("Diagonal covariance"), false);
     m_brandCovariance->addItem(tr("Full covariance"), true);
-    QWidget *options[] = {m_dpdsOptimizer, m_sldsA, m_brandCovariance, nullptr};
+    const QHash<QString, QWidget *> options{{QString::fromLatin1(modelKindId(ModelKind::Dpds)), m_dpdsOptimizer},
+                                            {QString::fromLatin1(modelKindId(ModelKind::Slds)), m_sldsA},
+                                            {QString::fromLatin1(modelKindId(ModelKind::Brand)), m_brandCovariance}};
     const QStringList &kinds = ModelKinds::ids();
     for (int i = 0; i < kinds.size(); ++i) {
         auto *check = new QCheckBox(ModelKinds::name(kinds[i]), this);
@@ -89,8 +91,8 @@ ModelsPanel::ModelsPanel(QWidget *parent)
         check->setChecked(true);
         m_kinds.insert(kinds[i], check);
         grid->addWidget(check, i, 0);
-        if (options[i])
-            grid->addWidget(options[i], i, 1);
+        if (QWidget *option = options.value(kinds[i]))
+            grid->addWidget(option, i, 1);
     }
     // Every kind: generated lips that move as much as the recorded ones (docs/models.md §5.1).
     m_compensateVariance->setObjectName(QStringLiteral("compensateVariance"));

@@ -33,7 +33,7 @@ namespace lipsync::studio {
 namespace {
 
 // The project's trained dynamic model of `kind`, or by default the first of the studio's order
-// (the paper's DPDS first).
+// (ModelKinds::ids(), the default model first).
 const ModelReference *dynamicModel(const Project &project, const QString &kind = {})
 {
     if (!kind.isEmpty())

@@ -347,6 +347,7 @@ private slots:
         AamBuildOptions options;
         options.detector = &detector;
         options.maxExemplars = 0; // version 2's content (exemplars make it 3)
+        options.singlePrecisionBases = false; // (and single-precision bases 4)
         const AamModel model = buildAam(gridExamples(false), options, feedback);
         QCOMPARE(model.detectorShape.size(), Eigen::Index(46));
         QCOMPARE(model.detectorRegression.rows(), Eigen::Index(46));
@@ -405,10 +406,23 @@ private slots:
         QVERIFY(back.exemplarDetail == m_model.exemplarDetail);
         QVERIFY(back.exemplarParams == m_model.exemplarParams);
         QVERIFY(back.exemplarScales == m_model.exemplarScales);
+        // The builder's bases are single precision (version 4), read back exactly, in half the
+        // bytes of the same model in doubles (version 3).
+        QVERIFY(m_model.singlePrecisionBases && back.singlePrecisionBases);
+        QVERIFY(back.textureBasis == m_model.textureBasis);
+        QVERIFY(back.levels[0].basis == m_model.levels[0].basis);
+        QCOMPARE(int(readWholeFile(path)[8]), 4);
+        const size_t singleBytes = readWholeFile(path).size();
         // The lowest version that holds the content: 3 with exemplars, 1 for a grey model
         // without detector calibration or exemplars (as files written before exemplars existed).
-        QCOMPARE(int(readWholeFile(path)[8]), 3);
         AamModel plain = m_model;
+        plain.singlePrecisionBases = false;
+        plain.identifier = plain.computeIdentifier();
+        plain.save(path);
+        QCOMPARE(int(readWholeFile(path)[8]), 3);
+        QVERIFY(!AamModel::load(path).singlePrecisionBases);
+        QVERIFY(AamModel::load(path).textureBasis == m_model.textureBasis); // doubles hold floats
+        QVERIFY2(double(singleBytes) < 0.65 * double(readWholeFile(path).size()), "bases are most of the file");
         plain.exemplarParams.resize(0, 0);
         plain.exemplarDetail.resize(0, 0);
         plain.exemplarScales.resize(0);
@@ -468,6 +482,7 @@ private slots:
             build.combinedVariance = 0.98;
             build.fitFeatures = AamFitFeatures::GradientOrientation;
             build.maxExemplars = 0;
+            build.singlePrecisionBases = false;
             const AamModel built = buildAam(gridExamples(false), build, feedback);
             QCOMPARE(built.levels[0].mean.size(), Eigen::Index(2 * built.warp(0).pixelCount()));
             QTemporaryDir dir;
