@@ -8,7 +8,6 @@
 #include "aam/PtsFile.h"
 #include "annotate/FrameView.h"
 #include "app/ErrorReporter.h"
-#include "app/MainWindow.h"
 #include "app/StudioContext.h"
 #include "app/ModelStore.h"
 #include "app/ProjectDocument.h"
@@ -24,8 +23,6 @@
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QMenu>
-#include <QMenuBar>
-#include <QStatusBar>
 
 #include <opencv2/imgproc.hpp>
 
@@ -79,7 +76,8 @@ LandmarkSet mergeAutomatic(const std::optional<LandmarkSet> &existing, const Eig
 
 } // namespace
 
-FacesController::FacesController(MainWindow *window) : QObject(window), m_window(window)
+FacesController::FacesController(StudioContext *context, FrameView *view, QWidget *window)
+    : QObject(window), m_context(context), m_view(view), m_parent(window)
 {
     m_detect = makeAction(window, tr("&Detect Landmarks"), QKeySequence(Qt::CTRL | Qt::Key_D));
     m_copyPrevious = makeAction(window, tr("&Copy Previous Frame's Points"), QKeySequence(Qt::Key_C));
@@ -109,23 +107,21 @@ FacesController::FacesController(MainWindow *window) : QObject(window), m_window
     m_menu->addAction(m_trackSequence);
     m_menu->addAction(m_trackAll);
     m_menu->addAction(m_modes);
-    const QList<QAction *> top = window->menuBar()->actions();
-    window->menuBar()->insertMenu(top.isEmpty() ? nullptr : top.last(), m_menu); // before Help
 
     connect(m_detect, &QAction::triggered, this, [this] { detectLandmarks(); });
     connect(m_copyPrevious, &QAction::triggered, this, [this] { copyPreviousFrame(); });
-    connect(m_onionSkin, &QAction::toggled, window->frameView(), &FrameView::setOnionSkinVisible);
+    connect(m_onionSkin, &QAction::toggled, view, &FrameView::setOnionSkinVisible);
     connect(m_nextUnlabelled, &QAction::triggered, this, &FacesController::nextUnlabelledFrame);
     connect(m_nextWorst, &QAction::triggered, this, &FacesController::nextWorstFrame);
     connect(m_pickFrames, &QAction::triggered, this, [this] {
-        const ProjectDocument *doc = m_window->document();
+        const ProjectDocument *doc = m_context->document();
         int frames = 0;
         for (int row = 0; row < doc->sequenceCount(); ++row)
             frames += doc->sequence(row).frameCount;
         const int candidates = std::max(3, frames / FramePickingOptions{}.step);
         bool ok = false;
         const int count = QInputDialog::getInt(
-            m_window, tr("Pick Frames to Label"),
+            m_parent, tr("Pick Frames to Label"),
             tr("Frames to pick from the %n clip(s) (an AAM with the paper's 32 parameters wants 100-200):", nullptr,
                doc->sequenceCount()),
             std::min(150, candidates), 3, candidates, 1, &ok);
@@ -133,35 +129,34 @@ FacesController::FacesController(MainWindow *window) : QObject(window), m_window
             pickFramesToLabel(count);
     });
     connect(m_nextPicked, &QAction::triggered, this, [this] { nextPickedFrame(); });
-    connect(window->context(), &StudioContext::sequenceLoaded, this, [this] {
+    connect(context, &StudioContext::sequenceLoaded, this, [this] {
         if (m_pendingFrame >= 0)
-            m_window->setCurrentFrame(std::exchange(m_pendingFrame, -1));
+            m_context->setCurrentFrame(std::exchange(m_pendingFrame, -1));
     });
     connect(m_buildAam, &QAction::triggered, this, [this] { buildAam(); });
     connect(m_trackSequence, &QAction::triggered, this, [this] {
-        if (m_window->currentSequence() >= 0)
-            trackSequences({m_window->currentSequence()});
+        if (m_context->currentSequence() >= 0)
+            trackSequences({m_context->currentSequence()});
     });
     connect(m_trackAll, &QAction::triggered, this, [this] {
         QList<int> rows;
-        for (int i = 0; i < m_window->document()->sequenceCount(); ++i)
+        for (int i = 0; i < m_context->document()->sequenceCount(); ++i)
             rows << i;
         trackSequences(rows);
     });
     connect(m_modes, &QAction::triggered, this, &FacesController::showModes);
 
-    FrameView *view = window->frameView();
     view->setEditable(true);
     connect(view, &FrameView::landmarksEdited, this, [this](const LandmarkSet &set, const QString &what) {
-        const int row = m_window->currentSequence();
-        if (row < 0 || !m_window->document()->requestLandmarks(row, m_window->currentFrame(), set, what))
+        const int row = m_context->currentSequence();
+        if (row < 0 || !m_context->document()->requestLandmarks(row, m_context->currentFrame(), set, what))
             refreshFrame();
     });
-    ProjectDocument *doc = window->document();
+    ProjectDocument *doc = context->document();
     connect(doc, &ProjectDocument::documentReset, this, &FacesController::onDocumentReset);
     connect(doc, &ProjectDocument::sequenceChanged, this, &FacesController::onSequenceChanged);
     connect(doc, &ProjectDocument::modelsChanged, this, &FacesController::onModelsChanged);
-    connect(window->context(), &StudioContext::currentFrameChanged, this, &FacesController::refreshFrame);
+    connect(context, &StudioContext::currentFrameChanged, this, &FacesController::refreshFrame);
     updateActions();
 }
 
@@ -169,12 +164,12 @@ FacesController::~FacesController() = default;
 
 void FacesController::updateActions()
 {
-    const bool open = m_window->document()->isOpen();
+    const bool open = m_context->document()->isOpen();
     for (QAction *a : {m_detect, m_copyPrevious, m_nextUnlabelled, m_pickFrames, m_buildAam, m_trackSequence,
                        m_trackAll})
         a->setEnabled(open);
     m_nextPicked->setEnabled(open && !m_review.empty());
-    const ProjectDocument *doc = m_window->document();
+    const ProjectDocument *doc = m_context->document();
     bool tracked = false;
     for (int row = 0; open && !tracked && row < doc->sequenceCount(); ++row)
         tracked = !doc->sequence(row).fitErrors.empty();
@@ -187,7 +182,7 @@ void FacesController::onDocumentReset()
     m_review.clear();
     m_reviewIndex = -1;
     m_pendingFrame = -1;
-    const ModelReference *ref = m_window->document()->project().model("aam");
+    const ModelReference *ref = m_context->document()->project().model("aam");
     m_aamFile = ref ? ref->file : std::string();
     if (m_modesView)
         m_modesView->setModel(nullptr);
@@ -196,13 +191,13 @@ void FacesController::onDocumentReset()
 
 void FacesController::onSequenceChanged(int row)
 {
-    if (row == m_window->currentSequence())
+    if (row == m_context->currentSequence())
         refreshFrame();
 }
 
 void FacesController::onModelsChanged()
 {
-    const ModelReference *ref = m_window->document()->project().model("aam");
+    const ModelReference *ref = m_context->document()->project().model("aam");
     const std::string file = ref ? ref->file : std::string();
     if (file == m_aamFile)
         return; // the AAM in use is still the same
@@ -217,16 +212,16 @@ void FacesController::onModelsChanged()
 
 void FacesController::refreshFrame()
 {
-    FrameView *view = m_window->frameView();
-    const int row = m_window->currentSequence();
-    const int frame = m_window->currentFrame();
-    if (row < 0 || row >= m_window->document()->sequenceCount()) {
+    FrameView *view = m_view;
+    const int row = m_context->currentSequence();
+    const int frame = m_context->currentFrame();
+    if (row < 0 || row >= m_context->document()->sequenceCount()) {
         view->setLandmarks(std::nullopt);
         view->setOnionSkin(std::nullopt);
         view->setInfoText({});
         return;
     }
-    const Sequence &s = m_window->document()->sequence(row);
+    const Sequence &s = m_context->document()->sequence(row);
     const auto it = s.landmarks.find(frame);
     view->setLandmarks(it != s.landmarks.end() ? std::optional<LandmarkSet>(it->second) : std::nullopt);
     const auto prev = s.landmarks.find(frame - 1);
@@ -244,21 +239,21 @@ void FacesController::reportFailure(Task *task, const QString &what)
 {
     connect(task, &Task::finished, this, [this, task, what](Task::State state) {
         if (state == Task::State::Failed)
-            ErrorReporter::report(m_window, what, QString(), task->errorMessage());
+            ErrorReporter::report(m_parent, what, QString(), task->errorMessage());
     });
 }
 
 Task *FacesController::detectLandmarks()
 {
-    const int row = m_window->currentSequence();
-    const int frame = m_window->currentFrame();
-    const auto media = m_window->media();
+    const int row = m_context->currentSequence();
+    const int frame = m_context->currentFrame();
+    const auto media = m_context->media();
     if (row < 0 || !media || frame < 0 || frame >= media->frameCount())
         return nullptr;
     const cv::Mat image = toBgr(media->frames[frame]);
     const std::shared_ptr<const AamModel> model = this->model();
-    const QString sequenceId = QString::fromStdString(m_window->document()->sequence(row).id);
-    Task *task = m_window->taskRunner()->start(
+    const QString sequenceId = QString::fromStdString(m_context->document()->sequence(row).id);
+    Task *task = m_context->taskRunner()->start(
         tr("Detect landmarks in %1, frame %2").arg(sequenceId).arg(frame + 1),
         [this, image, model, row, frame, sequenceId](Feedback &feedback) -> TaskRunner::Commit {
             feedback.setStatus(tr("Finding the face…").toStdString());
@@ -284,7 +279,7 @@ Task *FacesController::detectLandmarks()
                 shape = initialShapeFromDetection(templateShape(), faces.front());
             feedback.setProgress(1.0);
             return [this, shape, row, frame] {
-                ProjectDocument *doc = m_window->document();
+                ProjectDocument *doc = m_context->document();
                 if (row >= doc->sequenceCount())
                     return;
                 const Sequence &s = doc->sequence(row);
@@ -301,7 +296,7 @@ Task *FacesController::detectLandmarks()
 
 Task *FacesController::pickFramesToLabel(int count, int step)
 {
-    const ProjectDocument *doc = m_window->document();
+    const ProjectDocument *doc = m_context->document();
     std::vector<std::string> videos;
     std::vector<int> rows;
     for (int row = 0; row < doc->sequenceCount(); ++row)
@@ -312,7 +307,7 @@ Task *FacesController::pickFramesToLabel(int count, int step)
     if (videos.empty())
         return nullptr;
     const std::shared_ptr<const AamModel> model = this->model();
-    Task *task = m_window->taskRunner()->start(
+    Task *task = m_context->taskRunner()->start(
         tr("Pick %n frame(s) to label", nullptr, count),
         [this, videos, rows, count, step, model](Feedback &feedback) -> TaskRunner::Commit {
             FramePickingOptions options;
@@ -332,7 +327,7 @@ Task *FacesController::pickFramesToLabel(int count, int step)
             std::vector<int> order = picked.worstFirst;
             const int candidates = picked.candidates;
             return [this, picks, order, candidates] {
-                ProjectDocument *doc = m_window->document();
+                ProjectDocument *doc = m_context->document();
                 std::map<int, ProjectDocument::FaceData> byRow;
                 for (const Pick &p : picks) {
                     if (p.row >= doc->sequenceCount())
@@ -356,7 +351,7 @@ Task *FacesController::pickFramesToLabel(int count, int step)
                     m_review.emplace_back(doc->sequence(picks[size_t(i)].row).id, picks[size_t(i)].frame);
                 m_reviewIndex = -1;
                 updateActions();
-                m_window->context()->showStatus(
+                m_context->showStatus(
                     tr("Picked %1 of %2 frames with a face from %n clip(s); Shift+W shows them, the most doubtful "
                        "first, then Build AAM.",
                        nullptr, int(faces.size()))
@@ -375,15 +370,15 @@ bool FacesController::nextPickedFrame()
         return false;
     m_reviewIndex = (m_reviewIndex + 1) % int(m_review.size());
     const auto &[id, frame] = m_review[size_t(m_reviewIndex)];
-    const ProjectDocument *doc = m_window->document();
+    const ProjectDocument *doc = m_context->document();
     for (int row = 0; row < doc->sequenceCount(); ++row) {
         if (doc->sequence(row).id != id)
             continue;
-        if (row == m_window->currentSequence() && m_window->media()) {
-            m_window->setCurrentFrame(frame);
+        if (row == m_context->currentSequence() && m_context->media()) {
+            m_context->setCurrentFrame(frame);
         } else {
             m_pendingFrame = frame;
-            m_window->selectSequence(row);
+            emit sequenceRequested(row);
         }
         return true;
     }
@@ -392,11 +387,11 @@ bool FacesController::nextPickedFrame()
 
 bool FacesController::copyPreviousFrame()
 {
-    const int row = m_window->currentSequence();
-    const int frame = m_window->currentFrame();
+    const int row = m_context->currentSequence();
+    const int frame = m_context->currentFrame();
     if (row < 0 || frame <= 0)
         return false;
-    const Sequence &s = m_window->document()->sequence(row);
+    const Sequence &s = m_context->document()->sequence(row);
     // The nearest labelled frame before this one.
     auto it = s.landmarks.lower_bound(frame);
     if (it == s.landmarks.begin())
@@ -406,37 +401,37 @@ bool FacesController::copyPreviousFrame()
     for (LandmarkPoint &p : copy.points)
         if (p.isDefined())
             p.state = PointState::Automatic; // not confirmed on this frame until the user touches it
-    return m_window->document()->requestLandmarks(row, frame, copy,
+    return m_context->document()->requestLandmarks(row, frame, copy,
                                                   tr("Copy points of frame %1 to frame %2").arg(it->first + 1).arg(frame + 1));
 }
 
 void FacesController::nextUnlabelledFrame()
 {
-    const int row = m_window->currentSequence();
-    const auto media = m_window->media();
+    const int row = m_context->currentSequence();
+    const auto media = m_context->media();
     if (row < 0 || !media || media->frameCount() == 0)
         return;
-    const Sequence &s = m_window->document()->sequence(row);
+    const Sequence &s = m_context->document()->sequence(row);
     const int n = media->frameCount();
     for (int k = 1; k <= n; ++k) {
-        const int f = (m_window->currentFrame() + k) % n;
+        const int f = (m_context->currentFrame() + k) % n;
         const auto it = s.landmarks.find(f);
         if (it == s.landmarks.end() || !it->second.isComplete()) {
-            m_window->setCurrentFrame(f);
+            m_context->setCurrentFrame(f);
             return;
         }
     }
-    m_window->statusBar()->showMessage(tr("Every frame of this sequence is labelled."), 4000);
+    m_context->showStatus(tr("Every frame of this sequence is labelled."), 4000);
 }
 
 void FacesController::nextWorstFrame()
 {
-    const int row = m_window->currentSequence();
+    const int row = m_context->currentSequence();
     if (row < 0)
         return;
-    const std::vector<double> &errors = m_window->document()->sequence(row).fitErrors;
+    const std::vector<double> &errors = m_context->document()->sequence(row).fitErrors;
     if (errors.empty()) {
-        m_window->statusBar()->showMessage(tr("Track this sequence first to rank its frames by fit error."), 4000);
+        m_context->showStatus(tr("Track this sequence first to rank its frames by fit error."), 4000);
         return;
     }
     // Frames by falling fit error (no face first): W starts at the worst and, pressed again on the
@@ -446,33 +441,33 @@ void FacesController::nextWorstFrame()
         order[i] = int(i);
     auto key = [&](int f) { return errors[std::size_t(f)] < 0 ? 1e300 : errors[std::size_t(f)]; };
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) > key(b); });
-    const int current = m_window->currentFrame();
+    const int current = m_context->currentFrame();
     int rank = 0;
     if (m_worstRank >= 0 && m_worstRank < int(order.size()) && order[std::size_t(m_worstRank)] == current)
         rank = (m_worstRank + 1) % int(order.size());
     m_worstRank = rank;
-    m_window->setCurrentFrame(order[std::size_t(rank)]);
+    m_context->setCurrentFrame(order[std::size_t(rank)]);
 }
 
 std::shared_ptr<const AamModel> FacesController::model() const
 {
-    return m_window->modelStore()->aam();
+    return m_context->modelStore()->aam();
 }
 
 bool FacesController::ensureModel()
 {
     QString problem;
-    if (m_window->modelStore()->aam(&problem))
+    if (m_context->modelStore()->aam(&problem))
         return true;
-    if (const ModelReference *ref = m_window->document()->project().model("aam"))
-        ErrorReporter::report(m_window, tr("The project's AAM could not be loaded."),
-                              QString::fromStdString(m_window->document()->project().resolve(ref->file)), problem);
+    if (const ModelReference *ref = m_context->document()->project().model("aam"))
+        ErrorReporter::report(m_parent, tr("The project's AAM could not be loaded."),
+                              QString::fromStdString(m_context->document()->project().resolve(ref->file)), problem);
     return false;
 }
 
 Task *FacesController::buildAam()
 {
-    ProjectDocument *doc = m_window->document();
+    ProjectDocument *doc = m_context->document();
     struct Labelled
     {
         std::string media;
@@ -489,7 +484,7 @@ Task *FacesController::buildAam()
                                     frame, shapeFromLandmarkSet(set)});
     }
     if (labelled.size() < 3) {
-        ErrorReporter::report(m_window, tr("An AAM needs at least 3 frames with all 23 points; this project has %1.")
+        ErrorReporter::report(m_parent, tr("An AAM needs at least 3 frames with all 23 points; this project has %1.")
                                             .arg(labelled.size()),
                               QString(), tr("Label more frames (Detect Landmarks, then correct the points)."));
         return nullptr;
@@ -497,9 +492,9 @@ Task *FacesController::buildAam()
     // One AAM in use per project: building again replaces its reference, with a file of its own so
     // that undoing the build brings back the previous AAM.
     const QString name = QStringLiteral("faces");
-    const QString file = m_window->modelStore()->reserveFile(QStringLiteral("aam"));
-    const QString target = m_window->modelStore()->writablePath(file);
-    Task *task = m_window->taskRunner()->start(
+    const QString file = m_context->modelStore()->reserveFile(QStringLiteral("aam"));
+    const QString target = m_context->modelStore()->writablePath(file);
+    Task *task = m_context->taskRunner()->start(
         tr("Build AAM from %n frame(s)", "", int(labelled.size())),
         [this, labelled, name, file, target](Feedback &feedback) -> TaskRunner::Commit {
             feedback.setStatus(tr("Reading the labelled frames…").toStdString());
@@ -530,10 +525,10 @@ Task *FacesController::buildAam()
             }
             feedback.setProgress(1.0);
             return [this, model, name, file, target, warnings] {
-                m_window->modelStore()->addAam(file, model, !target.isEmpty());
-                m_window->document()->requestAddModel({"aam", name.toStdString(), file.toStdString()},
+                m_context->modelStore()->addAam(file, model, !target.isEmpty());
+                m_context->document()->requestAddModel({"aam", name.toStdString(), file.toStdString()},
                                                       tr("Build AAM %1").arg(name));
-                m_window->statusBar()->showMessage(
+                m_context->showStatus(
                     tr("AAM %1 built from %2 frames: %3 combined modes%4")
                         .arg(name)
                         .arg(model->trainingImages)
@@ -546,7 +541,7 @@ Task *FacesController::buildAam()
     reportFailure(task, tr("The AAM could not be built."));
     connect(task, &Task::finished, this, [this, file](Task::State state) {
         if (state != Task::State::Finished)
-            m_window->modelStore()->releaseFile(file);
+            m_context->modelStore()->releaseFile(file);
     });
     return task;
 }
@@ -557,12 +552,12 @@ Task *FacesController::trackSequences(const QList<int> &rows)
         return nullptr;
     if (!ensureModel()) {
         // A project's AAM that failed to load has been reported (file and reason) by ensureModel.
-        if (!m_window->document()->project().model("aam"))
-            ErrorReporter::report(m_window, tr("Tracking needs an AAM."), QString(),
+        if (!m_context->document()->project().model("aam"))
+            ErrorReporter::report(m_parent, tr("Tracking needs an AAM."), QString(),
                                   tr("Label a few frames and choose Faces ▸ Build AAM first."));
         return nullptr;
     }
-    ProjectDocument *doc = m_window->document();
+    ProjectDocument *doc = m_context->document();
     struct Job
     {
         int row;
@@ -578,7 +573,7 @@ Task *FacesController::trackSequences(const QList<int> &rows)
     }
     const std::shared_ptr<const AamModel> model = this->model();
     const QString title = jobs.size() == 1 ? tr("Track %1").arg(jobs.front().id) : tr("Track %n sequence(s)", "", int(jobs.size()));
-    Task *task = m_window->taskRunner()->start(title, [this, jobs, model, title](Feedback &feedback) -> TaskRunner::Commit {
+    Task *task = m_context->taskRunner()->start(title, [this, jobs, model, title](Feedback &feedback) -> TaskRunner::Commit {
         FaceDetectorPaths paths;
         paths.useDlib = false;
         FaceDetector detector(paths);
@@ -643,7 +638,7 @@ Task *FacesController::trackSequences(const QList<int> &rows)
         }
         feedback.setProgress(1.0);
         return [this, results, title] {
-            m_window->document()->requestFaces(results, title);
+            m_context->document()->requestFaces(results, title);
             refreshFrame();
         };
     });
@@ -655,7 +650,7 @@ void FacesController::showModes()
 {
     ensureModel();
     if (!m_modesView) {
-        m_modesView = new ModesView(m_window);
+        m_modesView = new ModesView(m_parent);
         m_modesView->setAttribute(Qt::WA_DeleteOnClose);
     }
     m_modesView->setModel(model());

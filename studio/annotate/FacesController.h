@@ -28,14 +28,17 @@ class Task;
 
 namespace lipsync::studio {
 
-class MainWindow;
+class FrameView;
 class ModesView;
+class StudioContext;
 
 class FacesController : public QObject
 {
     Q_OBJECT
 public:
-    explicit FacesController(MainWindow *window);
+    // The Faces menu's actions on the context's document and current frame, drawn in `view`;
+    // `window` owns the actions (their shortcuts) and parents the dialogs.
+    FacesController(StudioContext *context, FrameView *view, QWidget *window);
     ~FacesController() override;
 
     QMenu *menu() const { return m_menu; }
@@ -73,6 +76,10 @@ public:
     const std::vector<std::pair<std::string, int>> &reviewQueue() const { return m_review; }
     void showModes();
 
+signals:
+    // The review queue's next frame is in another sequence: load it (the window's selection).
+    void sequenceRequested(int row);
+
 private:
     void onDocumentReset();
     void onSequenceChanged(int row);
@@ -83,7 +90,9 @@ private:
     void updateActions();
     void reportFailure(Task *task, const QString &what);
 
-    MainWindow *m_window;
+    StudioContext *m_context;
+    FrameView *m_view;
+    QWidget *m_parent;
     QMenu *m_menu = nullptr;
     QAction *m_detect = nullptr;
     QAction *m_copyPrevious = nullptr;

@@ -83,7 +83,10 @@ MainWindow::MainWindow(QWidget *parent)
 
     createDocks();
     createMenus();
-    m_faces = new FacesController(this);
+    m_faces = new FacesController(m_context, m_frameView, this);
+    connect(m_faces, &FacesController::sequenceRequested, this, &MainWindow::selectSequence);
+    const QList<QAction *> top = menuBar()->actions();
+    menuBar()->insertMenu(top.isEmpty() ? nullptr : top.last(), m_faces->menu()); // before Help
     m_models->setBuildAamAction(m_faces->buildAamAction());
     m_preview->attach(m_context);
     m_taskStatus = new TaskStatusWidget(m_runner, this);
@@ -336,7 +339,7 @@ void MainWindow::createMenus()
     panels->addSeparator();
     panels->addAction(tr("&Reset Layout"), this, &MainWindow::resetLayout);
 
-    menuBar()->addMenu((new StudyController(this))->menu());
+    menuBar()->addMenu((new StudyController(m_context, m_files, this))->menu());
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(a.about);

@@ -1,8 +1,8 @@
 #include "compare/ParticipantSession.h"
 
 #include "app/ErrorReporter.h"
-#include "app/MainWindow.h"
 #include "app/ProjectDocument.h"
+#include "app/StudioContext.h"
 #include "compare/ParticipantView.h"
 #include "tasks/Feedback.h"
 #include "tasks/Task.h"
@@ -13,9 +13,9 @@
 
 namespace lipsync::studio {
 
-ParticipantSession::ParticipantSession(MainWindow *window, int session, std::shared_ptr<StudyClipRenderer> renderer,
-                                       QObject *parent)
-    : QObject(parent), m_window(window), m_session(session), m_renderer(std::move(renderer)),
+ParticipantSession::ParticipantSession(StudioContext *context, QWidget *window, int session,
+                                       std::shared_ptr<StudyClipRenderer> renderer, QObject *parent)
+    : QObject(parent), m_context(context), m_window(window), m_session(session), m_renderer(std::move(renderer)),
       m_view(new ParticipantView)
 {
     m_view->setAttribute(Qt::WA_DeleteOnClose);
@@ -39,7 +39,7 @@ ParticipantView *ParticipantSession::view() const
 
 const StudySession &ParticipantSession::studySession() const
 {
-    return m_window->document()->project().study->sessions().at(std::size_t(m_session));
+    return m_context->document()->project().study->sessions().at(std::size_t(m_session));
 }
 
 void ParticipantSession::start(bool fullScreen)
@@ -64,14 +64,14 @@ void ParticipantSession::prepare(int trial)
     Prepared &slot = trial == m_trial ? m_current : m_next;
     slot = Prepared{trial, nullptr, nullptr};
     const StudySession &s = studySession();
-    const ForcedChoiceStudy &study = *m_window->document()->project().study;
+    const ForcedChoiceStudy &study = *m_context->document()->project().study;
     const StudyTrial &t = s.trials.at(std::size_t(trial));
     const std::string utterance = t.utterance;
     const std::string left = study.methods().at(std::size_t(t.left));
     const std::string right = study.methods().at(std::size_t(t.right));
     std::shared_ptr<StudyClipRenderer> renderer = m_renderer;
     // Titles stay neutral: the task list is visible to the experimenter, not the participant.
-    slot.task = m_window->taskRunner()->start(tr("Preparing study trial %1").arg(trial + 1), [=, this](Feedback &feedback) {
+    slot.task = m_context->taskRunner()->start(tr("Preparing study trial %1").arg(trial + 1), [=, this](Feedback &feedback) {
         auto clips = std::make_shared<std::pair<StudyClip, StudyClip>>();
         Feedback first(feedback, 0.0, 0.5);
         clips->first = renderer->render(utterance, left, first);
@@ -124,7 +124,7 @@ void ParticipantSession::showTrial(int trial)
 void ParticipantSession::onAnswered(StudyChoice choice, double seconds)
 {
     try {
-        m_window->document()->recordStudyAnswer(m_session, m_trial, choice, seconds);
+        m_context->document()->recordStudyAnswer(m_session, m_trial, choice, seconds);
     } catch (const Error &e) {
         ErrorReporter::report(m_view, tr("Record the answer"), e);
         m_view->showMessage(tr("The answer could not be saved. Please call the experimenter."));

@@ -18,15 +18,16 @@ class Task;
 
 namespace lipsync::studio {
 
-class MainWindow;
 class ParticipantView;
+class StudioContext;
 
 class ParticipantSession : public QObject
 {
     Q_OBJECT
 public:
-    ParticipantSession(MainWindow *window, int session, std::shared_ptr<StudyClipRenderer> renderer,
-                       QObject *parent = nullptr);
+    // Session `session` of the context's study; the view goes full screen on `window`'s screen.
+    ParticipantSession(StudioContext *context, QWidget *window, int session,
+                       std::shared_ptr<StudyClipRenderer> renderer, QObject *parent = nullptr);
     ~ParticipantSession() override;
 
     // Shows the view (full screen unless `fullScreen` is false) at the first open trial.
@@ -51,7 +52,8 @@ private:
     void onAnswered(StudyChoice choice, double seconds);
     void leave();
 
-    MainWindow *m_window;
+    StudioContext *m_context;
+    QWidget *m_window;
     int m_session;
     std::shared_ptr<StudyClipRenderer> m_renderer;
     QPointer<ParticipantView> m_view;

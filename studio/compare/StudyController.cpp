@@ -1,9 +1,9 @@
 #include "compare/StudyController.h"
 
 #include "app/ErrorReporter.h"
-#include "app/MainWindow.h"
 #include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
+#include "app/StudioContext.h"
 #include "compare/ParticipantSession.h"
 #include "compare/StudyClipRenderer.h"
 #include "compare/StudyResultsView.h"
@@ -19,8 +19,8 @@
 
 namespace lipsync::studio {
 
-StudyController::StudyController(MainWindow *window)
-    : QObject(window), m_window(window), m_menu(new QMenu(tr("&Study"), window)),
+StudyController::StudyController(StudioContext *context, ProjectFiles *files, QWidget *window)
+    : QObject(window), m_context(context), m_files(files), m_window(window), m_menu(new QMenu(tr("&Study"), window)),
       m_setUp(m_menu->addAction(tr("&Set Up Study…"))), m_run(m_menu->addAction(tr("&Run Participant…"))),
       m_results(m_menu->addAction(tr("Study &Results")))
 {
@@ -28,7 +28,7 @@ StudyController::StudyController(MainWindow *window)
     connect(m_setUp, &QAction::triggered, this, &StudyController::setUpWithDialog);
     connect(m_run, &QAction::triggered, this, &StudyController::runWithDialog);
     connect(m_results, &QAction::triggered, this, [this] { showResults(); });
-    ProjectDocument *document = m_window->document();
+    ProjectDocument *document = m_context->document();
     // The videos depend on the features, phones and models: a changed project renders afresh.
     for (auto signal : {&ProjectDocument::documentReset, &ProjectDocument::modelsChanged,
                         &ProjectDocument::locationChanged})
@@ -48,7 +48,7 @@ ParticipantSession *StudyController::participantSession() const
 
 void StudyController::refresh()
 {
-    const ProjectDocument *document = m_window->document();
+    const ProjectDocument *document = m_context->document();
     m_setUp->setEnabled(document->isOpen());
     m_run->setEnabled(document->isOpen() && document->project().study.has_value());
     if (m_resultsView)
@@ -57,7 +57,7 @@ void StudyController::refresh()
 
 QString StudyController::nextPseudonym() const
 {
-    const auto &study = m_window->document()->project().study;
+    const auto &study = m_context->document()->project().study;
     for (int n = 1;; ++n) {
         const QString name = QStringLiteral("P%1").arg(n, 2, 10, QLatin1Char('0'));
         bool taken = false;
@@ -71,7 +71,7 @@ QString StudyController::nextPseudonym() const
 
 void StudyController::setUpWithDialog()
 {
-    ProjectDocument *document = m_window->document();
+    ProjectDocument *document = m_context->document();
     if (document->project().study) {
         int answers = 0;
         for (const StudySession &s : document->project().study->sessions())
@@ -93,7 +93,7 @@ void StudyController::setUpWithDialog()
 
 bool StudyController::ensureSaved()
 {
-    ProjectDocument *document = m_window->document();
+    ProjectDocument *document = m_context->document();
     if (document->isStudySaved())
         return true;
     // Answers are written to the project's study file after every trial, so the project must
@@ -104,12 +104,12 @@ bool StudyController::ensureSaved()
                                     "(every answer is saved at once). Save now?"))
                != QMessageBox::Yes)
         return false;
-    return m_window->files()->save() && document->isStudySaved();
+    return m_files->save() && document->isStudySaved();
 }
 
 ParticipantSession *StudyController::startParticipant(const QString &pseudonym, bool fullScreen)
 {
-    ProjectDocument *document = m_window->document();
+    ProjectDocument *document = m_context->document();
     if (m_session)
         return nullptr; // one participant at a time
     if (!document->project().study) {
@@ -134,7 +134,7 @@ ParticipantSession *StudyController::startParticipant(const QString &pseudonym, 
     }
     if (!m_renderer)
         m_renderer = std::make_shared<StudyClipRenderer>(document->project());
-    m_session = new ParticipantSession(m_window, session, m_renderer, this);
+    m_session = new ParticipantSession(m_context, m_window, session, m_renderer, this);
     connect(m_session, &ParticipantSession::finished, m_session, &QObject::deleteLater);
     m_session->start(fullScreen);
     return m_session;
@@ -142,7 +142,7 @@ ParticipantSession *StudyController::startParticipant(const QString &pseudonym, 
 
 void StudyController::runWithDialog()
 {
-    const auto &study = m_window->document()->project().study;
+    const auto &study = m_context->document()->project().study;
     if (!study)
         return;
     // A new participant by default; unfinished sessions can be resumed.

@@ -14,8 +14,9 @@ class QMenu;
 
 namespace lipsync::studio {
 
-class MainWindow;
 class ParticipantSession;
+class ProjectFiles;
+class StudioContext;
 class StudyClipRenderer;
 class StudyResultsView;
 
@@ -23,7 +24,9 @@ class StudyController : public QObject
 {
     Q_OBJECT
 public:
-    explicit StudyController(MainWindow *window);
+    // The study of the context's document; `files` saves the project before a participant
+    // starts, `window` parents the menu and the dialogs.
+    StudyController(StudioContext *context, ProjectFiles *files, QWidget *window);
     ~StudyController() override;
 
     QMenu *menu() const { return m_menu; }
@@ -49,7 +52,9 @@ private:
     bool ensureSaved();
     void refresh();
 
-    MainWindow *m_window;
+    StudioContext *m_context;
+    ProjectFiles *m_files;
+    QWidget *m_window;
     QMenu *m_menu;
     QAction *m_setUp;
     QAction *m_run;
