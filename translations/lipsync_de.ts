@@ -55,17 +55,17 @@
 <context>
     <name>ErrorReporter</name>
     <message>
-        <location filename="../studio/app/ErrorReporter.cpp" line="21"/>
+        <location filename="../studio/context/ErrorReporter.cpp" line="21"/>
         <source>File: %1</source>
         <translation>Datei: %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/ErrorReporter.cpp" line="24"/>
+        <location filename="../studio/context/ErrorReporter.cpp" line="24"/>
         <source>Reason: %1</source>
         <translation>Grund: %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/ErrorReporter.cpp" line="30"/>
+        <location filename="../studio/context/ErrorReporter.cpp" line="30"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
@@ -73,42 +73,42 @@
 <context>
     <name>ModelKinds</name>
     <message>
-        <location filename="../studio/app/ModelKinds.cpp" line="23"/>
+        <location filename="../studio/context/ModelKinds.cpp" line="23"/>
         <source>DPDS</source>
         <translation>DPDS</translation>
     </message>
     <message>
-        <location filename="../studio/app/ModelKinds.cpp" line="25"/>
+        <location filename="../studio/context/ModelKinds.cpp" line="25"/>
         <source>SLDS</source>
         <translation>SLDS</translation>
     </message>
     <message>
-        <location filename="../studio/app/ModelKinds.cpp" line="27"/>
+        <location filename="../studio/context/ModelKinds.cpp" line="27"/>
         <source>Brand</source>
         <translation>Brand</translation>
     </message>
     <message>
-        <location filename="../studio/app/ModelKinds.cpp" line="29"/>
+        <location filename="../studio/context/ModelKinds.cpp" line="29"/>
         <source>HMM-mean</source>
         <translation>HMM-Mittelwert</translation>
     </message>
     <message>
-        <location filename="../studio/app/ModelKinds.cpp" line="49"/>
+        <location filename="../studio/context/ModelKinds.cpp" line="49"/>
         <source>Deterministic-process dynamical system (the paper&apos;s model)</source>
         <translation>Dynamisches System mit deterministischem Prozess (das Modell des Artikels)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ModelKinds.cpp" line="51"/>
+        <location filename="../studio/context/ModelKinds.cpp" line="51"/>
         <source>Switching linear dynamical system</source>
         <translation>Schaltendes lineares dynamisches System</translation>
     </message>
     <message>
-        <location filename="../studio/app/ModelKinds.cpp" line="53"/>
+        <location filename="../studio/context/ModelKinds.cpp" line="53"/>
         <source>Brand&apos;s Voice Puppetry: per-phone Gaussians over position and velocity</source>
         <translation>Brands Voice Puppetry: Gauß-Verteilungen je Phon über Position und Geschwindigkeit</translation>
     </message>
     <message>
-        <location filename="../studio/app/ModelKinds.cpp" line="55"/>
+        <location filename="../studio/context/ModelKinds.cpp" line="55"/>
         <source>Phoneme-mean baseline: one Gaussian per phone, frames independent</source>
         <translation>Phonem-Mittelwert als Vergleich: eine Gauß-Verteilung je Phon, Bilder unabhängig</translation>
     </message>
@@ -134,7 +134,7 @@
 <context>
     <name>SetTranscriptCommand</name>
     <message>
-        <location filename="../studio/app/SetTranscriptCommand.cpp" line="12"/>
+        <location filename="../studio/document/SetTranscriptCommand.cpp" line="12"/>
         <source>Edit transcript of %1</source>
         <translation>Transkript von %1 bearbeiten</translation>
     </message>
@@ -142,87 +142,87 @@
 <context>
     <name>StudioActions</name>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="32"/>
+        <location filename="../studio/context/StudioActions.cpp" line="32"/>
         <source>&amp;New Project…</source>
         <translation>&amp;Neues Projekt…</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="33"/>
+        <location filename="../studio/context/StudioActions.cpp" line="33"/>
         <source>&amp;Open Project…</source>
         <translation>Projekt &amp;öffnen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="34"/>
+        <location filename="../studio/context/StudioActions.cpp" line="34"/>
         <source>Open &amp;Demo Project</source>
         <translation>&amp;Demoprojekt öffnen</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="35"/>
+        <location filename="../studio/context/StudioActions.cpp" line="35"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="36"/>
+        <location filename="../studio/context/StudioActions.cpp" line="36"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter …</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="37"/>
+        <location filename="../studio/context/StudioActions.cpp" line="37"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="39"/>
+        <location filename="../studio/context/StudioActions.cpp" line="39"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="42"/>
+        <location filename="../studio/context/StudioActions.cpp" line="42"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="48"/>
+        <location filename="../studio/context/StudioActions.cpp" line="48"/>
         <source>Previous Frame</source>
         <translation>Vorheriges Bild</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="49"/>
+        <location filename="../studio/context/StudioActions.cpp" line="49"/>
         <source>Next Frame</source>
         <translation>Nächstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="50"/>
+        <location filename="../studio/context/StudioActions.cpp" line="50"/>
         <source>First Frame</source>
         <translation>Erstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="51"/>
+        <location filename="../studio/context/StudioActions.cpp" line="51"/>
         <source>Last Frame</source>
         <translation>Letztes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="52"/>
+        <location filename="../studio/context/StudioActions.cpp" line="52"/>
         <source>Play/Pause</source>
         <translation>Wiedergabe/Pause</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="53"/>
+        <location filename="../studio/context/StudioActions.cpp" line="53"/>
         <source>Previous Sequence</source>
         <translation>Vorherige Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="54"/>
+        <location filename="../studio/context/StudioActions.cpp" line="54"/>
         <source>Next Sequence</source>
         <translation>Nächste Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="55"/>
+        <location filename="../studio/context/StudioActions.cpp" line="55"/>
         <source>Fit Frame to View</source>
         <translation>Bild einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/StudioActions.cpp" line="56"/>
+        <location filename="../studio/context/StudioActions.cpp" line="56"/>
         <source>&amp;About LipSync Studio</source>
         <translation>&amp;Über LipSync Studio</translation>
     </message>
@@ -480,72 +480,72 @@
 <context>
     <name>lipsync::studio::FacesController</name>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="84"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="82"/>
         <source>&amp;Detect Landmarks</source>
         <translation>Landmarken &amp;erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="85"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="83"/>
         <source>&amp;Copy Previous Frame&apos;s Points</source>
         <translation>Punkte des vorigen Bildes &amp;kopieren</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="86"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="84"/>
         <source>&amp;Onion Skin of Previous Frame</source>
         <translation>&amp;Onion-Skin (vorheriges Bild)</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="88"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="86"/>
         <source>Next &amp;Unlabelled Frame</source>
         <translation>Nächstes &amp;unbeschriftetes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="89"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="87"/>
         <source>Next &amp;Worst-Fitted Frame</source>
         <translation>Nächstes &amp;schlecht angepasstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="90"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="88"/>
         <source>&amp;Pick Frames to Label…</source>
         <translation>Bilder zum &amp;Beschriften auswählen…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="91"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="89"/>
         <source>Next &amp;Picked Frame to Review</source>
         <translation>Nächstes ausgewähltes Bild &amp;prüfen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="92"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="90"/>
         <source>&amp;Build AAM</source>
         <translation>AAM e&amp;rstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="93"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="91"/>
         <source>&amp;Track Sequence</source>
         <translation>Sequenz &amp;tracken</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="94"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="92"/>
         <source>Track &amp;All Sequences</source>
         <translation>&amp;Alle Sequenzen tracken</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="95"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="93"/>
         <source>&amp;Modes of Variation…</source>
         <translation>&amp;Variationsmoden…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="97"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="95"/>
         <source>Fa&amp;ces</source>
         <translation>&amp;Gesichter</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="128"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="124"/>
         <source>Pick Frames to Label</source>
         <translation>Bilder zum Beschriften auswählen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="129"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="125"/>
         <source>Frames to pick from the %n clip(s) (an AAM with the paper&apos;s 32 parameters wants 100-200):</source>
         <translation>
             <numerusform>Anzahl der Bilder aus dem Clip (ein AAM mit den 32 Parametern des Artikels braucht 100–200):</numerusform>
@@ -553,38 +553,38 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="237"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="232"/>
         <source>Fit error %1</source>
         <translation>Anpassungsfehler %1</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="238"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="233"/>
         <source>No face found by the tracker</source>
         <translation>Der Tracker hat kein Gesicht gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="262"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="257"/>
         <source>Detect landmarks in %1, frame %2</source>
         <translation>Landmarken in %1, Bild %2 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="264"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="259"/>
         <source>Finding the face…</source>
         <translation>Gesicht wird gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="295"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="290"/>
         <source>Detect landmarks in frame %1</source>
         <translation>Landmarken in Bild %1 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="298"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="293"/>
         <source>No landmarks were detected.</source>
         <translation>Es wurden keine Landmarken erkannt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="316"/>
-        <location filename="../studio/annotate/FacesController.cpp" line="353"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="311"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="348"/>
         <source>Pick %n frame(s) to label</source>
         <translation>
             <numerusform>%n Bild zum Beschriften auswählen</numerusform>
@@ -592,7 +592,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="360"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="355"/>
         <source>Picked %1 of %2 frames with a face from %n clip(s); Shift+W shows them, the most doubtful first, then Build AAM.</source>
         <translation>
             <numerusform>%1 von %2 Bildern mit Gesicht aus einem Clip ausgewählt; Umschalt+W zeigt sie, die zweifelhaftesten zuerst, danach AAM erstellen.</numerusform>
@@ -600,42 +600,42 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="368"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="363"/>
         <source>No frames could be picked.</source>
         <translation>Es konnten keine Bilder ausgewählt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="410"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="405"/>
         <source>Copy points of frame %1 to frame %2</source>
         <translation>Punkte von Bild %1 nach Bild %2 kopieren</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="429"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="424"/>
         <source>Every frame of this sequence is labelled.</source>
         <translation>Alle Bilder dieser Sequenz sind beschriftet.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="439"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="434"/>
         <source>Track this sequence first to rank its frames by fit error.</source>
         <translation>Tracken Sie diese Sequenz zuerst, um ihre Bilder nach Anpassungsfehler zu ordnen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="468"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="463"/>
         <source>The project&apos;s AAM could not be loaded.</source>
         <translation>Das AAM des Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="492"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="487"/>
         <source>An AAM needs at least 3 frames with all 23 points; this project has %1.</source>
         <translation>Ein AAM braucht mindestens 3 Bilder mit allen 23 Punkten; dieses Projekt hat %1.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="494"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="489"/>
         <source>Label more frames (Detect Landmarks, then correct the points).</source>
         <translation>Beschriften Sie weitere Bilder (Landmarken erkennen, dann die Punkte korrigieren).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="503"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="498"/>
         <source>Build AAM from %n frame(s)</source>
         <translation>
             <numerusform>AAM aus %n Bild erstellen</numerusform>
@@ -643,22 +643,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="505"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="500"/>
         <source>Reading the labelled frames…</source>
         <translation>Beschriftete Bilder werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="535"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="530"/>
         <source>Build AAM %1</source>
         <translation>AAM %1 erstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="537"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="532"/>
         <source>AAM %1 built from %2 frames: %3 combined modes%4</source>
         <translation>AAM %1 aus %2 Bildern erstellt: %3 kombinierte Moden%4</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="541"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="536"/>
         <source> (%n frame(s) skipped)</source>
         <translation>
             <numerusform> (%n Bild übersprungen)</numerusform>
@@ -666,27 +666,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="546"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="541"/>
         <source>The AAM could not be built.</source>
         <translation>Das AAM konnte nicht erstellt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="561"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="556"/>
         <source>Tracking needs an AAM.</source>
         <translation>Zum Tracken wird ein AAM benötigt.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="562"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="557"/>
         <source>Label a few frames and choose Faces ▸ Build AAM first.</source>
         <translation>Beschriften Sie einige Bilder und wählen Sie zuerst Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="580"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="575"/>
         <source>Track %1</source>
         <translation>%1 tracken</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="580"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="575"/>
         <source>Track %n sequence(s)</source>
         <translation>
             <numerusform>%n Sequenz tracken</numerusform>
@@ -694,7 +694,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="650"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="645"/>
         <source>Tracking failed.</source>
         <translation>Das Tracking ist fehlgeschlagen.</translation>
     </message>
@@ -875,158 +875,158 @@
         <translation>Vorschau &amp;&amp; Vergleich</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="98"/>
+        <location filename="../studio/app/MainWindow.cpp" line="101"/>
         <source>Models could not be written into the project&apos;s folder.</source>
         <translation>Modelle konnten nicht in den Projektordner geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="101"/>
+        <location filename="../studio/app/MainWindow.cpp" line="104"/>
         <source>%1 was not applied: it would leave the project unsaveable (%2).</source>
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="127"/>
+        <location filename="../studio/app/MainWindow.cpp" line="130"/>
         <source>Playing without sound: %1.</source>
         <translation>Wiedergabe ohne Ton: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="133"/>
-        <location filename="../studio/app/MainWindow.cpp" line="134"/>
+        <location filename="../studio/app/MainWindow.cpp" line="136"/>
+        <location filename="../studio/app/MainWindow.cpp" line="137"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="153"/>
+        <location filename="../studio/app/MainWindow.cpp" line="156"/>
         <source>Generated &amp;Face</source>
         <translation>Generiertes &amp;Gesicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="155"/>
+        <location filename="../studio/app/MainWindow.cpp" line="158"/>
         <source>&amp;Whole Face (Eyes Included)</source>
         <translation>&amp;Ganzes Gesicht (mit Augen)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="157"/>
+        <location filename="../studio/app/MainWindow.cpp" line="160"/>
         <source>Synthesise the whole modelled face; otherwise the lower face is drawn and the recording&apos;s own eyes and upper face are kept</source>
         <translation>Das ganze modellierte Gesicht synthetisieren; sonst wird das untere Gesicht gezeichnet und die Augen und das Obergesicht der Aufnahme bleiben erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="159"/>
+        <location filename="../studio/app/MainWindow.cpp" line="162"/>
         <source>&amp;Detail from Training Images</source>
         <translation>&amp;Details aus Trainingsbildern</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="161"/>
+        <location filename="../studio/app/MainWindow.cpp" line="164"/>
         <source>Add the teeth, lip highlights and skin detail of the AAM&apos;s nearest training images to the model&apos;s smooth texture</source>
         <translation>Zähne, Glanzlichter der Lippen und Hautdetails der nächstgelegenen Trainingsbilder des AAM zur glatten Textur des Modells hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="163"/>
+        <location filename="../studio/app/MainWindow.cpp" line="166"/>
         <source>&amp;Match the Frame&apos;s Lighting</source>
         <translation>&amp;Beleuchtung an das Bild anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="219"/>
+        <location filename="../studio/app/MainWindow.cpp" line="222"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="223"/>
+        <location filename="../studio/app/MainWindow.cpp" line="226"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="233"/>
+        <location filename="../studio/app/MainWindow.cpp" line="236"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="246"/>
+        <location filename="../studio/app/MainWindow.cpp" line="249"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="267"/>
+        <location filename="../studio/app/MainWindow.cpp" line="270"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="268"/>
+        <location filename="../studio/app/MainWindow.cpp" line="271"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="269"/>
+        <location filename="../studio/app/MainWindow.cpp" line="272"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="271"/>
+        <location filename="../studio/app/MainWindow.cpp" line="274"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="302"/>
+        <location filename="../studio/app/MainWindow.cpp" line="305"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="305"/>
+        <location filename="../studio/app/MainWindow.cpp" line="308"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="317"/>
+        <location filename="../studio/app/MainWindow.cpp" line="320"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="321"/>
+        <location filename="../studio/app/MainWindow.cpp" line="324"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="333"/>
+        <location filename="../studio/app/MainWindow.cpp" line="336"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="337"/>
+        <location filename="../studio/app/MainWindow.cpp" line="340"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="341"/>
+        <location filename="../studio/app/MainWindow.cpp" line="344"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="344"/>
+        <location filename="../studio/app/MainWindow.cpp" line="347"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="395"/>
+        <location filename="../studio/app/MainWindow.cpp" line="398"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="440"/>
+        <location filename="../studio/app/MainWindow.cpp" line="443"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="448"/>
+        <location filename="../studio/app/MainWindow.cpp" line="451"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="477"/>
+        <location filename="../studio/app/MainWindow.cpp" line="480"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="481"/>
+        <location filename="../studio/app/MainWindow.cpp" line="484"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1034,43 +1034,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="492"/>
+        <location filename="../studio/app/MainWindow.cpp" line="495"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="493"/>
+        <location filename="../studio/app/MainWindow.cpp" line="496"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="493"/>
+        <location filename="../studio/app/MainWindow.cpp" line="496"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="499"/>
+        <location filename="../studio/app/MainWindow.cpp" line="502"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="518"/>
+        <location filename="../studio/app/MainWindow.cpp" line="521"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="546"/>
-        <location filename="../studio/app/MainWindow.cpp" line="554"/>
+        <location filename="../studio/app/MainWindow.cpp" line="549"/>
+        <location filename="../studio/app/MainWindow.cpp" line="557"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="553"/>
+        <location filename="../studio/app/MainWindow.cpp" line="556"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="232"/>
+        <location filename="../studio/app/MainWindow.cpp" line="235"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -1108,12 +1108,12 @@
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="210"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="212"/>
         <source>Made in this session; written when the project is saved</source>
         <translation>In dieser Sitzung erstellt; wird beim Speichern des Projekts geschrieben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="218"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="220"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
@@ -1178,83 +1178,83 @@
         <translation>Volle Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="99"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="101"/>
         <source>Scale each model&apos;s generated trajectories to the spread of the training features: lips that open and close as much as the recording&apos;s, at the cost of a larger error per frame. Off: the paper&apos;s models exactly.</source>
         <translation>Skaliert die erzeugten Trajektorien jedes Modells auf die Streuung der Trainingsmerkmale: Lippen, die sich so weit öffnen und schließen wie in der Aufnahme, um den Preis eines größeren Fehlers je Bild. Aus: genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="107"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="109"/>
         <source>Train each model on states for phones in their context (the neighbouring phones and the part of the phone), tied by decision trees: lips that anticipate the next sound. Off: one state per phone, the paper&apos;s models exactly.</source>
         <translation>Jedes Modell auf Zuständen für Phoneme in ihrem Kontext trainieren (die benachbarten Phoneme und der Teil des Phonems), durch Entscheidungsbäume gebündelt: Lippen, die den nächsten Laut vorwegnehmen. Aus: ein Zustand je Phonem, genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="122"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="124"/>
         <source>folds: </source>
         <translation>Teilmengen (k-fach): </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="132"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="134"/>
         <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
         <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="133"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="135"/>
         <source>Train the checked models on every sequence with features and phonemes</source>
         <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="134"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="136"/>
         <source>Stop training or evaluation; the previous models stay</source>
         <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="135"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="137"/>
         <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
         <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="140"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="142"/>
         <source>Render the held-out sequences of the same folds into their recordings and measure the lips with dlib&apos;s landmarks: opening correlation, articulation, /p b m/ closures, lag, sharpness, seam</source>
         <translation>Die zurückgehaltenen Sequenzen derselben Folds in ihre Aufnahmen rendern und die Lippen mit dlibs Landmarken messen: Korrelation der Öffnung, Artikulation, Verschlüsse bei /p b m/, Versatz, Schärfe, Naht</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="168"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="170"/>
         <source>AAM parameter </source>
         <translation>AAM-Parameter </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="169"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="171"/>
         <source>Which AAM parameter to plot over time</source>
         <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="180"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="182"/>
         <source>Trajectory</source>
         <translation>Trajektorie</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="181"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="183"/>
         <source>Training</source>
         <translation>Training</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="182"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="184"/>
         <source>Evaluation</source>
         <translation>Evaluation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="254"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="256"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter tracken und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="311"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="339"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="313"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="341"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="313"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="315"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -1262,37 +1262,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="330"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="332"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="350"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="352"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="352"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="354"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="359"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="361"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="428"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="430"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="429"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="431"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="373"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="375"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -1300,7 +1300,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="379"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="381"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen (k-fache Kreuzvalidierung).</numerusform>
@@ -1308,7 +1308,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="398"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="400"/>
         <source>Realism of %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
@@ -1316,7 +1316,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="404"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="406"/>
         <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
         <translation>
             <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
@@ -1324,37 +1324,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="448"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="450"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="476"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="478"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="481"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="483"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="336"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="338"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="505"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="507"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="515"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="517"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="540"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="542"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>
@@ -1491,27 +1491,27 @@
 <context>
     <name>lipsync::studio::PlaybackController</name>
     <message>
-        <location filename="../studio/preview/PlaybackController.cpp" line="111"/>
+        <location filename="../studio/context/PlaybackController.cpp" line="111"/>
         <source>no audio output device was found</source>
         <translation>kein Audio-Ausgabegerät gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PlaybackController.cpp" line="120"/>
+        <location filename="../studio/context/PlaybackController.cpp" line="120"/>
         <source>the audio device %1 takes neither float nor 16-bit samples</source>
         <translation>das Audiogerät %1 nimmt weder Float- noch 16-Bit-Samples an</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PlaybackController.cpp" line="134"/>
+        <location filename="../studio/context/PlaybackController.cpp" line="134"/>
         <source>the clip&apos;s sound could not be decoded</source>
         <translation>der Ton des Clips konnte nicht dekodiert werden</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PlaybackController.cpp" line="172"/>
+        <location filename="../studio/context/PlaybackController.cpp" line="172"/>
         <source>the audio device %1 could not be opened</source>
         <translation>das Audiogerät %1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PlaybackController.cpp" line="207"/>
+        <location filename="../studio/context/PlaybackController.cpp" line="207"/>
         <source>the audio device stopped</source>
         <translation>das Audiogerät hat die Wiedergabe abgebrochen</translation>
     </message>
@@ -1653,7 +1653,7 @@
 <context>
     <name>lipsync::studio::ProjectDocument</name>
     <message>
-        <location filename="../studio/app/ProjectDocument.cpp" line="201"/>
+        <location filename="../studio/document/ProjectDocument.cpp" line="201"/>
         <source>%1 interval %2: %3</source>
         <translation>%1, Intervall %2: %3</translation>
     </message>
@@ -2075,33 +2075,33 @@
 <context>
     <name>lipsync::studio::StudyController</name>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="23"/>
+        <location filename="../studio/compare/StudyController.cpp" line="22"/>
         <source>&amp;Study</source>
         <translation>&amp;Studie</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="24"/>
+        <location filename="../studio/compare/StudyController.cpp" line="23"/>
         <source>&amp;Set Up Study…</source>
         <translation>Studie &amp;einrichten …</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="24"/>
+        <location filename="../studio/compare/StudyController.cpp" line="23"/>
         <source>&amp;Run Participant…</source>
         <translation>&amp;Teilnehmende Person starten …</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="25"/>
+        <location filename="../studio/compare/StudyController.cpp" line="24"/>
         <source>Study &amp;Results</source>
         <translation>Studien&amp;ergebnisse</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="80"/>
-        <location filename="../studio/compare/StudyController.cpp" line="91"/>
+        <location filename="../studio/compare/StudyController.cpp" line="79"/>
+        <location filename="../studio/compare/StudyController.cpp" line="90"/>
         <source>Set up study</source>
         <translation>Studie einrichten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/compare/StudyController.cpp" line="81"/>
+        <location filename="../studio/compare/StudyController.cpp" line="80"/>
         <source>The current study has %n answer(s). Replace it with a new study? (Edit ▸ Undo brings it back.)</source>
         <translation>
             <numerusform>Die aktuelle Studie hat %n Antwort(en). Durch eine neue Studie ersetzen? (Bearbeiten ▸ Rückgängig holt sie zurück.)</numerusform>
@@ -2109,40 +2109,40 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="102"/>
-        <location filename="../studio/compare/StudyController.cpp" line="116"/>
-        <location filename="../studio/compare/StudyController.cpp" line="132"/>
-        <location filename="../studio/compare/StudyController.cpp" line="160"/>
+        <location filename="../studio/compare/StudyController.cpp" line="101"/>
+        <location filename="../studio/compare/StudyController.cpp" line="115"/>
+        <location filename="../studio/compare/StudyController.cpp" line="131"/>
+        <location filename="../studio/compare/StudyController.cpp" line="159"/>
         <source>Run participant</source>
         <translation>Teilnehmende Person starten</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="103"/>
+        <location filename="../studio/compare/StudyController.cpp" line="102"/>
         <source>The project must be saved with the study before a participant starts (every answer is saved at once). Save now?</source>
         <translation>Das Projekt muss mit der Studie gespeichert sein, bevor eine Person beginnt (jede Antwort wird sofort gespeichert). Jetzt speichern?</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="116"/>
+        <location filename="../studio/compare/StudyController.cpp" line="115"/>
         <source>The project has no study yet.</source>
         <translation>Das Projekt hat noch keine Studie.</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="149"/>
+        <location filename="../studio/compare/StudyController.cpp" line="148"/>
         <source>New participant: %1</source>
         <translation>Neue teilnehmende Person: %1</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="153"/>
+        <location filename="../studio/compare/StudyController.cpp" line="152"/>
         <source>Continue %1 (%2 of %3 answered)</source>
         <translation>%1 fortsetzen (%2 von %3 beantwortet)</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="160"/>
+        <location filename="../studio/compare/StudyController.cpp" line="159"/>
         <source>Participant:</source>
         <translation>Teilnehmende Person:</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="170"/>
+        <location filename="../studio/compare/StudyController.cpp" line="169"/>
         <source>Study results</source>
         <translation>Studienergebnisse</translation>
     </message>

@@ -2,7 +2,7 @@
 // The four dynamic model kinds (docs/models.md §1-§5) and their ids, the vocabulary of model files
 // ("kind"), project model references, `lipsync train --kind` and `lipsync evaluate --kinds`.
 // createDynamicModel (ModelFile.h) builds a model of each kind; the studio's user-visible names and
-// colours are in studio/app/ModelKinds.h.
+// colours are in studio/context/ModelKinds.h.
 #include <optional>
 #include <string>
 #include <string_view>

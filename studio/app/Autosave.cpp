@@ -1,7 +1,7 @@
 #include "app/Autosave.h"
 
-#include "app/ErrorReporter.h"
-#include "app/ProjectDocument.h"
+#include "context/ErrorReporter.h"
+#include "document/ProjectDocument.h"
 #include "project/ProjectManifest.h"
 #include "tasks/FencedJob.h"
 #include "tasks/TaskRunner.h"

@@ -4,23 +4,23 @@
 #include "annotate/FrameView.h"
 #include "app/AboutBox.h"
 #include "app/Autosave.h"
-#include "app/ErrorReporter.h"
-#include "app/ModelKinds.h"
-#include "app/ModelStore.h"
-#include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
-#include "app/SequenceListModel.h"
 #include "app/SequenceDetailsView.h"
+#include "app/SequenceListModel.h"
 #include "app/SequenceLoader.h"
-#include "app/SequenceMedia.h"
-#include "app/StudioActions.h"
-#include "app/StudioContext.h"
 #include "app/TransportBar.h"
 #include "build/ModelsPanel.h"
 #include "compare/StudyController.h"
+#include "context/ErrorReporter.h"
+#include "context/ModelKinds.h"
+#include "context/ModelStore.h"
+#include "context/PlaybackController.h"
+#include "context/SequenceMedia.h"
+#include "context/StudioActions.h"
+#include "context/StudioContext.h"
+#include "document/ProjectDocument.h"
 #include "export/ExportMenu.h"
 #include "plots/LineChartView.h"
-#include "preview/PlaybackController.h"
 #include "preview/PreviewPanel.h"
 #include "tasks/TaskRunner.h"
 #include "tasks/TaskStatusWidget.h"
@@ -339,7 +339,7 @@ void MainWindow::createMenus()
     panels->addSeparator();
     panels->addAction(tr("&Reset Layout"), this, &MainWindow::resetLayout);
 
-    menuBar()->addMenu((new StudyController(m_context, m_files, this))->menu());
+    menuBar()->addMenu((new StudyController(m_context, [this] { return m_files->save(); }, this))->menu());
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(a.about);

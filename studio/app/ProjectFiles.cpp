@@ -2,9 +2,9 @@
 
 #include "app/Autosave.h"
 #include "app/DemoProject.h"
-#include "app/ErrorReporter.h"
-#include "app/ProjectDocument.h"
 #include "app/RecentProjects.h"
+#include "context/ErrorReporter.h"
+#include "document/ProjectDocument.h"
 #include "tasks/Task.h"
 #include "tasks/TaskRunner.h"
 #include "util/ResourceLocator.h"

@@ -1,6 +1,6 @@
 #include "app/SequenceDetailsView.h"
 
-#include "app/SequenceMedia.h"
+#include "context/SequenceMedia.h"
 #include "project/Sequence.h"
 #include "util/PhoneSet.h"
 

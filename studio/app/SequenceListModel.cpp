@@ -1,6 +1,6 @@
 #include "app/SequenceListModel.h"
 
-#include "app/ProjectDocument.h"
+#include "document/ProjectDocument.h"
 
 #include <QLocale>
 

@@ -3,7 +3,7 @@
 // and video frames (full size and thumbnails). The work only reads the media file; its result
 // reaches the GUI through `apply`, which the task runner calls on the GUI thread unless the
 // task was canceled or failed.
-#include "app/SequenceMedia.h"
+#include "context/SequenceMedia.h"
 
 #include <QString>
 

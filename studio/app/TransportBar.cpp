@@ -1,6 +1,6 @@
 #include "app/TransportBar.h"
 
-#include "app/StudioActions.h"
+#include "context/StudioActions.h"
 
 #include <QHBoxLayout>
 #include <QLocale>

@@ -3,12 +3,12 @@
 // Without a project it opens the bundled demo (see DemoProject.h for where it is looked up).
 #include "app/AppIcon.h"
 #include "app/CommandLine.h"
-#include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
 #include "app/ProjectFiles.h"
 #include "app/ScreenshotRunner.h"
 #include "app/SurfaceFormat.h"
 #include "app/Translations.h"
+#include "context/ErrorReporter.h"
 
 #include <QApplication>
 #include <QStyleFactory>

@@ -1,11 +1,11 @@
 #include "build/ModelsPanel.h"
 
 
-#include "app/ErrorReporter.h"
-#include "app/ModelKinds.h"
-#include "app/ModelStore.h"
-#include "app/ProjectDocument.h"
-#include "app/StudioContext.h"
+#include "context/ErrorReporter.h"
+#include "context/ModelKinds.h"
+#include "context/ModelStore.h"
+#include "context/StudioContext.h"
+#include "document/ProjectDocument.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"

@@ -1,9 +1,9 @@
 #include "compare/ParticipantSession.h"
 
-#include "app/ErrorReporter.h"
-#include "app/ProjectDocument.h"
-#include "app/StudioContext.h"
 #include "compare/ParticipantView.h"
+#include "context/ErrorReporter.h"
+#include "context/StudioContext.h"
+#include "document/ProjectDocument.h"
 #include "tasks/Feedback.h"
 #include "tasks/Task.h"
 #include "tasks/TaskRunner.h"

@@ -1,13 +1,12 @@
 #include "compare/StudyController.h"
 
-#include "app/ErrorReporter.h"
-#include "app/ProjectDocument.h"
-#include "app/ProjectFiles.h"
-#include "app/StudioContext.h"
 #include "compare/ParticipantSession.h"
 #include "compare/StudyClipRenderer.h"
 #include "compare/StudyResultsView.h"
 #include "compare/StudySetupDialog.h"
+#include "context/ErrorReporter.h"
+#include "context/StudioContext.h"
+#include "document/ProjectDocument.h"
 #include "util/Error.h"
 
 #include <QAction>
@@ -19,8 +18,8 @@
 
 namespace lipsync::studio {
 
-StudyController::StudyController(StudioContext *context, ProjectFiles *files, QWidget *window)
-    : QObject(window), m_context(context), m_files(files), m_window(window), m_menu(new QMenu(tr("&Study"), window)),
+StudyController::StudyController(StudioContext *context, std::function<bool()> saveProject, QWidget *window)
+    : QObject(window), m_context(context), m_saveProject(std::move(saveProject)), m_window(window), m_menu(new QMenu(tr("&Study"), window)),
       m_setUp(m_menu->addAction(tr("&Set Up Study…"))), m_run(m_menu->addAction(tr("&Run Participant…"))),
       m_results(m_menu->addAction(tr("Study &Results")))
 {
@@ -104,7 +103,7 @@ bool StudyController::ensureSaved()
                                     "(every answer is saved at once). Save now?"))
                != QMessageBox::Yes)
         return false;
-    return m_files->save() && document->isStudySaved();
+    return m_saveProject() && document->isStudySaved();
 }
 
 ParticipantSession *StudyController::startParticipant(const QString &pseudonym, bool fullScreen)

@@ -6,6 +6,7 @@
 #include <QPointer>
 #include <QString>
 
+#include <functional>
 #include <memory>
 
 class QAction;
@@ -15,7 +16,6 @@ class QMenu;
 namespace lipsync::studio {
 
 class ParticipantSession;
-class ProjectFiles;
 class StudioContext;
 class StudyClipRenderer;
 class StudyResultsView;
@@ -24,9 +24,9 @@ class StudyController : public QObject
 {
     Q_OBJECT
 public:
-    // The study of the context's document; `files` saves the project before a participant
-    // starts, `window` parents the menu and the dialogs.
-    StudyController(StudioContext *context, ProjectFiles *files, QWidget *window);
+    // The study of the context's document; `saveProject` saves it before a participant starts
+    // (true once saved), `window` parents the menu and the dialogs.
+    StudyController(StudioContext *context, std::function<bool()> saveProject, QWidget *window);
     ~StudyController() override;
 
     QMenu *menu() const { return m_menu; }
@@ -53,7 +53,7 @@ private:
     void refresh();
 
     StudioContext *m_context;
-    ProjectFiles *m_files;
+    std::function<bool()> m_saveProject;
     QWidget *m_window;
     QMenu *m_menu;
     QAction *m_setUp;

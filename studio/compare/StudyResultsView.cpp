@@ -1,7 +1,7 @@
 #include "compare/StudyResultsView.h"
 
-#include "app/ErrorReporter.h"
-#include "app/ModelKinds.h"
+#include "context/ErrorReporter.h"
+#include "context/ModelKinds.h"
 #include "eval/StudyTally.h"
 #include "io/AtomicFile.h"
 #include "util/Error.h"

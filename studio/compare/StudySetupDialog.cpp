@@ -1,7 +1,7 @@
 #include "compare/StudySetupDialog.h"
 
-#include "app/ModelKinds.h"
 #include "compare/StudyClipRenderer.h"
+#include "context/ModelKinds.h"
 #include "project/Project.h"
 #include "util/Error.h"
 

@@ -1,10 +1,10 @@
 #include "export/ExportMenu.h"
 
-#include "app/ErrorReporter.h"
-#include "app/ModelKinds.h"
-#include "app/ModelStore.h"
-#include "app/ProjectDocument.h"
-#include "app/StudioContext.h"
+#include "context/ErrorReporter.h"
+#include "context/ModelKinds.h"
+#include "context/ModelStore.h"
+#include "context/StudioContext.h"
+#include "document/ProjectDocument.h"
 
 #include "aam/AamModel.h"
 #include "aam/PtsFile.h"

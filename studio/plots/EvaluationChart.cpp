@@ -1,6 +1,6 @@
 #include "plots/EvaluationChart.h"
 
-#include "app/ModelKinds.h"
+#include "context/ModelKinds.h"
 
 #include "eval/Evaluation.h"
 #include "eval/RealismReport.h"

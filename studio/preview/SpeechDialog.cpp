@@ -1,6 +1,6 @@
 #include "preview/SpeechDialog.h"
 
-#include "app/ModelKinds.h"
+#include "context/ModelKinds.h"
 #include "io/Transcript.h"
 #include "util/Error.h"
 

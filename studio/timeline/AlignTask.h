@@ -3,8 +3,8 @@
 // the shipped GRID model (or $LIPSYNC_ALIGNER_MODEL), the project's pronunciations, the CMU
 // dictionary, and espeak-ng for other words (reported back so the user can check them). The worker only computes; the tiers reach the document in the commit, through
 // ProjectDocument::requestTiersChange, so cancel leaves the project untouched.
+#include "document/TierEdits.h"
 #include "project/Sequence.h"
-#include "timeline/TierEdits.h"
 
 #include <QString>
 

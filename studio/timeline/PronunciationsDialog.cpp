@@ -1,7 +1,7 @@
 #include "timeline/PronunciationsDialog.h"
 
 #include "align/PronunciationDictionary.h"
-#include "app/ProjectDocument.h"
+#include "document/ProjectDocument.h"
 #include "util/PhoneSet.h"
 
 #include <QDialogButtonBox>

@@ -9,7 +9,7 @@
 // project's pronunciations, edited in the Pronunciations dialog it opens, which also lists the
 // words espeak-ng had to guess. It follows the
 // current sequence of the main window and redraws the tiers whenever the document changes them.
-#include "timeline/TierEdits.h"
+#include "document/TierEdits.h"
 
 #include <QPointer>
 #include <QWidget>

@@ -13,10 +13,10 @@
 // selection, Tab / Shift+Tab select the next / previous interval, Esc clears the selection.
 // The view only reports intentions (signals); TimelinePanel turns them into document edits.
 // Intervals the user edited are drawn with an orange marker and orange boundaries.
+#include "annotation/Tier.h"
 #include "audio/Spectrogram.h"
 #include "audio/WaveformPeaks.h"
-#include "annotation/Tier.h"
-#include "timeline/TierEdits.h"
+#include "document/TierEdits.h"
 
 #include <QImage>
 #include <QVector>

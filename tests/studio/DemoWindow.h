@@ -2,11 +2,11 @@
 // Shared set-up of the GUI tests: the process (OpenGL surface format for VTK, test-mode settings
 // so the user's own are untouched), the studio's main window on the bundled demo project, shown,
 // active (window shortcuts only fire in the active window) and with its loading tasks finished.
-#include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
 #include "app/ProjectFiles.h"
 #include "app/SurfaceFormat.h"
-#include "preview/PlaybackController.h"
+#include "context/ErrorReporter.h"
+#include "context/PlaybackController.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/TimelinePanel.h"
 

@@ -3,12 +3,12 @@
 // save or a clean close removes the autosave; opening a project whose autosave is newer (a crash
 // left it) offers Recover / Discard / Cancel — answered here through the injectable prompt.
 #include "../DamagedFiles.h"
-#include "DemoWindow.h"
 #include "app/Autosave.h"
-#include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
-#include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
+#include "context/ErrorReporter.h"
+#include "DemoWindow.h"
+#include "document/ProjectDocument.h"
 #include "tasks/TaskRunner.h"
 
 #include <QDir>

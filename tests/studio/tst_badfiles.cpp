@@ -5,15 +5,15 @@
 // message while the document keeps its edits and stays modified. Every message is checked
 // through ErrorReporter's log (batch mode: no box waits for a click). Damaged inputs are made
 // here from repo data.
-#include "DemoWindow.h"
 #include "../DamagedFiles.h"
+#include "DemoWindow.h"
 
 #include "annotate/FacesController.h"
-#include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
-#include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
-#include "app/SequenceMedia.h"
+#include "context/ErrorReporter.h"
+#include "context/SequenceMedia.h"
+#include "document/ProjectDocument.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/TimelinePanel.h"
 

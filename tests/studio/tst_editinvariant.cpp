@@ -7,12 +7,12 @@
 // failing sequence is shrunk to a minimal one (greedy removal of ops) and printed as a
 // regression row for failingSequencesFoundBefore.
 #include "../SanitizedBuild.h"
-#include "app/DemoProject.h"
-#include "app/ProjectDocument.h"
 #include "align/AcousticModel.h"
+#include "app/DemoProject.h"
+#include "document/ProjectDocument.h"
+#include "document/TierEdits.h"
 #include "tasks/Feedback.h"
 #include "timeline/AlignTask.h"
-#include "timeline/TierEdits.h"
 #include "util/Error.h"
 #include "util/PhoneSet.h"
 

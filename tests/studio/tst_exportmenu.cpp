@@ -5,7 +5,7 @@
 #include "DemoWindow.h"
 
 #include "app/MainWindow.h"
-#include "app/ProjectDocument.h"
+#include "document/ProjectDocument.h"
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
 #include "export/ExportMenu.h"

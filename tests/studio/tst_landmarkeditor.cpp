@@ -6,16 +6,16 @@
 // in one step; W walks the worst fits; the modes view synthesises a face per mode.
 #include "DemoWindow.h"
 
+#include "aam/AamModel.h"
 #include "aam/PtsFile.h"
 #include "annotate/FacesController.h"
 #include "annotate/FrameView.h"
-#include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
-#include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
-#include "app/SequenceMedia.h"
-#include "aam/AamModel.h"
 #include "build/ModesView.h"
+#include "context/ErrorReporter.h"
+#include "context/SequenceMedia.h"
+#include "document/ProjectDocument.h"
 #include "tasks/Task.h"
 #include "tasks/TaskRunner.h"
 

@@ -8,8 +8,8 @@
 #include "DemoWindow.h"
 
 #include "app/MainWindow.h"
-#include "app/ProjectDocument.h"
-#include "preview/PlaybackController.h"
+#include "context/PlaybackController.h"
+#include "document/ProjectDocument.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/PronunciationsDialog.h"
 #include "timeline/TimelinePanel.h"

@@ -4,12 +4,12 @@
 // frame of the main window (the transport's next-frame action); the wheel zooms.
 #include "DemoWindow.h"
 
-#include "app/ErrorReporter.h"
 #include "app/MainWindow.h"
-#include "app/ProjectDocument.h"
 #include "app/ProjectFiles.h"
-#include "app/StudioActions.h"
 #include "build/ModelsPanel.h"
+#include "context/ErrorReporter.h"
+#include "context/StudioActions.h"
+#include "document/ProjectDocument.h"
 #include "plots/TrajectoryView.h"
 #include "tasks/TaskRunner.h"
 

@@ -1,6 +1,6 @@
-#include "timeline/TierCommands.h"
+#include "document/TierCommands.h"
 
-#include "app/ProjectDocument.h"
+#include "document/ProjectDocument.h"
 
 namespace lipsync::studio {
 

@@ -1,7 +1,10 @@
 // Architecture rules as tests (after QGIS's test_banned_keywords.sh): core/ never includes QtGui
-// or QtWidgets, so every algorithm stays usable headless by the CLI; and each core module
-// includes only the modules its CMakeLists.txt names as dependencies, which form no cycle, so
-// every library links on its own and the layering is what the build files say.
+// or QtWidgets, so every algorithm stays usable headless by the CLI; each core module includes
+// only the modules its CMakeLists.txt names as dependencies, which form no cycle, so every library
+// links on its own and the layering is what the build files say; and the studio's folders include
+// each other without a cycle: app/ (the window) on top, the panels' folders below it, context/
+// (StudioContext and what panels share) and document/ (the project document and its undo
+// commands) at the bottom, so a panel builds with a context and no window.
 #include <QDir>
 #include <QDirIterator>
 #include <QFile>
@@ -47,6 +50,27 @@ QString cycleFrom(const QMap<QString, QSet<QString>> &deps, const QString &modul
     return {};
 }
 
+// Studio folder -> the studio folders its files include: "x/Y.h" counts when studio/x/Y.h exists
+// (core has folders of the same names, tasks/ among them).
+QMap<QString, QSet<QString>> studioIncludes(const QString &studio)
+{
+    const QRegularExpression include(QStringLiteral("^\\s*#\\s*include\\s*\"((\\w+)/[\\w.]+)\""),
+                                     QRegularExpression::MultilineOption);
+    QMap<QString, QSet<QString>> deps;
+    for (const QString &folder : QDir(studio).entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+        QSet<QString> &d = deps[folder];
+        QDirIterator it(studio + QLatin1Char('/') + folder, {QStringLiteral("*.h"), QStringLiteral("*.cpp")}, QDir::Files);
+        while (it.hasNext()) {
+            for (auto m = include.globalMatch(readText(it.next())); m.hasNext();) {
+                const auto match = m.next();
+                if (match.captured(2) != folder && QFile::exists(studio + QLatin1Char('/') + match.captured(1)))
+                    d.insert(match.captured(2));
+            }
+        }
+    }
+    return deps;
+}
+
 } // namespace
 
 static const QRegularExpression &bannedInclude()
@@ -58,7 +82,7 @@ static const QRegularExpression &bannedInclude()
     return banned;
 }
 
-class TestCoreLayout : public QObject
+class TestLayout : public QObject
 {
     Q_OBJECT
 private slots:
@@ -123,6 +147,23 @@ private slots:
         QCOMPARE(cycleFrom(looped, QStringLiteral("io"), {}), QStringLiteral("io -> project -> io"));
     }
 
+    void studioFoldersFormNoCycle()
+    {
+        const QMap<QString, QSet<QString>> deps = studioIncludes(QStringLiteral(LIPSYNC_SOURCE_DIR "/studio"));
+        QVERIFY2(deps.size() >= 10 && deps.value(QStringLiteral("app")).contains(QStringLiteral("context")),
+                 "studio folders not found");
+        for (auto folder = deps.cbegin(); folder != deps.cend(); ++folder) {
+            const QString cycle = cycleFrom(deps, folder.key(), {});
+            QVERIFY2(cycle.isEmpty(), qPrintable(cycle));
+        }
+        // Only the window's folder includes app/, and the shared layers include no panel.
+        for (auto folder = deps.cbegin(); folder != deps.cend(); ++folder)
+            QVERIFY2(folder.key() == QLatin1String("app") || !folder.value().contains(QStringLiteral("app")),
+                     qPrintable(folder.key() + QStringLiteral(" includes app/")));
+        QCOMPARE(deps.value(QStringLiteral("document")), QSet<QString>());
+        QCOMPARE(deps.value(QStringLiteral("context")), QSet<QString>{QStringLiteral("document")});
+    }
+
     void bannedPatternDetectsGuiInclude()
     {
         // Guard against a pattern that silently matches nothing.
@@ -135,5 +176,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCoreLayout)
-#include "tst_corelayout.moc"
+QTEST_GUILESS_MAIN(TestLayout)
+#include "tst_layout.moc"

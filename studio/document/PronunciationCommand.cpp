@@ -1,6 +1,6 @@
-#include "timeline/PronunciationCommand.h"
+#include "document/PronunciationCommand.h"
 
-#include "app/ProjectDocument.h"
+#include "document/ProjectDocument.h"
 
 namespace lipsync::studio {
 

@@ -1,9 +1,9 @@
-#include "app/StudioContext.h"
+#include "context/StudioContext.h"
 
-#include "app/ModelStore.h"
-#include "app/ProjectDocument.h"
-#include "app/SequenceMedia.h"
-#include "preview/PlaybackController.h"
+#include "context/ModelStore.h"
+#include "context/PlaybackController.h"
+#include "context/SequenceMedia.h"
+#include "document/ProjectDocument.h"
 #include "tasks/TaskRunner.h"
 
 #include <QUndoStack>

@@ -1,4 +1,4 @@
-#include "app/StudioActions.h"
+#include "context/StudioActions.h"
 
 #include <QAction>
 #include <QStyle>

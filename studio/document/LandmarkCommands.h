@@ -1,7 +1,7 @@
 #pragma once
 // Undoable face edits: one frame's landmarks (a click, a whole drag, copy-previous, a detection),
 // whole sequences' tracked landmarks and features, and the project's model references.
-#include "app/ProjectDocument.h"
+#include "document/ProjectDocument.h"
 
 #include <QUndoCommand>
 

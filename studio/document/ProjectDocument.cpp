@@ -1,11 +1,11 @@
-#include "app/ProjectDocument.h"
+#include "document/ProjectDocument.h"
 
-#include "annotate/LandmarkCommands.h"
-#include "app/SetTranscriptCommand.h"
-#include "compare/StudyCommands.h"
+#include "document/LandmarkCommands.h"
+#include "document/PronunciationCommand.h"
+#include "document/SetTranscriptCommand.h"
+#include "document/StudyCommands.h"
+#include "document/TierCommands.h"
 #include "project/ProjectManifest.h"
-#include "timeline/PronunciationCommand.h"
-#include "timeline/TierCommands.h"
 #include "util/Error.h"
 
 #include <QDir>

@@ -1,6 +1,6 @@
-#include "compare/StudyCommands.h"
+#include "document/StudyCommands.h"
 
-#include "app/ProjectDocument.h"
+#include "document/ProjectDocument.h"
 
 namespace lipsync::studio {
 

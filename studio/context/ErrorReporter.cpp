@@ -1,4 +1,4 @@
-#include "app/ErrorReporter.h"
+#include "context/ErrorReporter.h"
 
 #include "util/Error.h"
 

@@ -1,6 +1,6 @@
-#include "app/SetTranscriptCommand.h"
+#include "document/SetTranscriptCommand.h"
 
-#include "app/ProjectDocument.h"
+#include "document/ProjectDocument.h"
 
 #include <QCoreApplication>
 

@@ -1,4 +1,4 @@
-#include "preview/PlaybackController.h"
+#include "context/PlaybackController.h"
 
 #include "io/AudioDecoder.h"
 #include "util/Error.h"

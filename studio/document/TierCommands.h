@@ -3,7 +3,7 @@
 // stores the tiers before and after. Commands pushed with the same merge key (one boundary drag:
 // the timeline pushes one per mouse move) merge into one undo step; a drag that ends where it
 // started leaves no step at all.
-#include "timeline/TierEdits.h"
+#include "document/TierEdits.h"
 
 #include <QUndoCommand>
 

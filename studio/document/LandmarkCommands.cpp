@@ -1,4 +1,4 @@
-#include "annotate/LandmarkCommands.h"
+#include "document/LandmarkCommands.h"
 
 namespace lipsync::studio {
 

@@ -1,7 +1,7 @@
-#include "app/ModelStore.h"
+#include "context/ModelStore.h"
 
 #include "aam/AamModel.h"
-#include "app/ProjectDocument.h"
+#include "document/ProjectDocument.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/ModelFile.h"
 #include "dynamics/ModelKind.h"

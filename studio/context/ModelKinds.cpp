@@ -1,4 +1,4 @@
-#include "app/ModelKinds.h"
+#include "context/ModelKinds.h"
 
 namespace lipsync::studio {
 

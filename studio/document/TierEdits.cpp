@@ -1,4 +1,4 @@
-#include "timeline/TierEdits.h"
+#include "document/TierEdits.h"
 
 #include "util/PhoneSet.h"
 
