@@ -90,7 +90,7 @@ const cli::CommandRegistration registration{
                        "and \"phones\". Words are pronounced from --pronunciations, the project's pronunciations "
                        "(--project), the CMU dictionary, then espeak-ng; --json lists the words espeak-ng guessed."),
         {{QStringLiteral("transcript"), QStringLiteral("FILE"),
-          QStringLiteral("the words spoken (.align, .lab, .txt or a TextGrid words tier)"), {}, cli::CommandOption::Required},
+          QStringLiteral("the words spoken (.align, .lab, .txt, a TextGrid words tier, or .srt/.vtt subtitles)"), {}, cli::CommandOption::Required},
          {QStringLiteral("out"), QStringLiteral("FILE.TextGrid"), QStringLiteral("the TextGrid to write"), {},
           cli::CommandOption::Required}},
         {{QStringLiteral("MEDIA"), QStringLiteral("the recording: any audio or video file with speech")}}}

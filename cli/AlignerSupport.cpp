@@ -56,7 +56,7 @@ std::vector<CommandOption> transcribedFolderOptions()
     return {{QStringLiteral("media"), QStringLiteral("DIR"), QStringLiteral("the folder of recordings (audio or video)"),
              {}, CommandOption::Required},
             {QStringLiteral("transcripts"), QStringLiteral("DIR"),
-             QStringLiteral("the folder of their transcripts, NAME.align, .TextGrid, .lab or .txt for media NAME"), {},
+             QStringLiteral("the folder of their transcripts, NAME.align, .TextGrid, .lab, .txt, .srt or .vtt for media NAME"), {},
              CommandOption::Required},
             pronunciationsOption()};
 }

@@ -1,7 +1,7 @@
 // lipsync aligner train --media DIR --transcripts DIR --out MODEL [--mixtures N] [--iterations N]
 //                       [--normalize none|mean|cmvn] [--pronunciations DICT] [--json]
 // Trains the aligner's monophone HMMs on transcribed recordings: every media file in DIR with a
-// transcript of the same name (.align, .TextGrid, .lab or .txt) in the transcripts folder.
+// transcript of the same name (.align, .TextGrid, .lab, .txt, .srt or .vtt) in the transcripts folder.
 // Recordings that cannot be used (no transcript, unknown words, undecodable or silent audio, a
 // transcript that does not fit) are reported and skipped; the others train the model.
 #include "AlignerSupport.h"
@@ -103,7 +103,7 @@ int runAlignerTrain(const cli::CommandLine &a)
 const cli::CommandRegistration registration{
     cli::CommandSpec{QStringLiteral("aligner train"), QStringLiteral("train the forced aligner's phone HMMs on transcribed media"),
      QStringLiteral("Trains the aligner's monophone HMMs on transcribed recordings: every media file in the media "
-                    "folder with a transcript of the same name (.align, .TextGrid, .lab or .txt) in the "
+                    "folder with a transcript of the same name (.align, .TextGrid, .lab, .txt, .srt or .vtt) in the "
                     "transcripts folder. Recordings that cannot be used are reported and skipped."),
      {{QStringLiteral("out"), QStringLiteral("MODEL"), QStringLiteral("the aligner model to write"), {},
        cli::CommandOption::Required},

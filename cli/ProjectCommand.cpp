@@ -116,7 +116,8 @@ const CommandRegistration createRegistration{
     {QStringLiteral("project create"),
      QStringLiteral("make a project from a folder of clips (--media DIR --out DIR)"),
      QStringLiteral("Makes a project from a folder of clips: one sequence per clip, with its frames, frame rate "
-                    "and the words of a transcript NAME.align beside it."),
+                    "and the words of a transcript beside it: NAME.align (with word times), NAME.lab, NAME.txt, "
+                    "or subtitles NAME.srt / NAME.vtt."),
      {{QStringLiteral("media"), QStringLiteral("DIR"), QStringLiteral("the folder of clips"), {},
        CommandOption::Required},
       {QStringLiteral("out"), QStringLiteral("DIR"), QStringLiteral("the project folder to write"), {},

@@ -105,7 +105,7 @@ const CommandRegistration registration{
           QStringLiteral("any audio or video file with speech (audio only renders onto a neutral frame)"), {},
           CommandOption::Required},
          {QStringLiteral("transcript"), QStringLiteral("FILE"),
-          QStringLiteral("the words spoken (.align, .lab, .txt or a TextGrid words tier)"), {}, CommandOption::Required},
+          QStringLiteral("the words spoken (.align, .lab, .txt, a TextGrid words tier, or .srt/.vtt subtitles)"), {}, CommandOption::Required},
          {QStringLiteral("side-by-side"), {}, QStringLiteral("the real clip left, the generated face right")},
          {QStringLiteral("fps"), QStringLiteral("RATE"),
           QStringLiteral("frames per second of the generated face (default: the video's rate, 25 for audio)")}},

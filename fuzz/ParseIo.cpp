@@ -25,10 +25,10 @@ void parseTranscriptBytes(const std::string &bytes)
 {
     // The first byte picks the format (readTranscript dispatches on the extension); the rest is
     // the file.
-    static const char *const names[] = {"fuzz.align", "fuzz.TextGrid", "fuzz.lab", "fuzz.txt"};
+    static const char *const names[] = {"fuzz.align", "fuzz.TextGrid", "fuzz.lab", "fuzz.txt", "fuzz.srt", "fuzz.vtt"};
     if (bytes.empty())
         return;
-    parseTranscript(bytes.substr(1), names[static_cast<unsigned char>(bytes[0]) % 4]);
+    parseTranscript(bytes.substr(1), names[static_cast<unsigned char>(bytes[0]) % 6]);
 }
 
 void parseFeatureCsvBytes(const std::string &bytes) { parseFeatureCsv(bytes, "fuzz.csv"); }

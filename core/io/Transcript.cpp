@@ -3,6 +3,7 @@
 #include "io/AtomicFile.h"
 #include "io/GridAlign.h"
 #include "io/HtkLabel.h"
+#include "io/Subtitles.h"
 #include "io/TextGrid.h"
 #include "util/Error.h"
 #include "util/PhoneSet.h"
@@ -29,7 +30,7 @@ std::string extensionOf(const std::string &path)
 
 Error unsupportedFormat(const std::string &ext, const std::string &path)
 {
-    return Error("unsupported transcript format '" + ext + "' (use .align, .lab, .txt or .TextGrid)", path);
+    return Error("unsupported transcript format '" + ext + "' (use .align, .lab, .txt, .TextGrid, .srt or .vtt)", path);
 }
 
 Transcript fromTier(const Tier &tier)
@@ -55,7 +56,7 @@ std::string Transcript::text() const
 
 const std::vector<std::string> &transcriptExtensions()
 {
-    static const std::vector<std::string> list{".align", ".textgrid", ".lab", ".txt"};
+    static const std::vector<std::string> list{".align", ".textgrid", ".lab", ".txt", ".srt", ".vtt"};
     return list;
 }
 
@@ -72,7 +73,8 @@ Transcript parsePlainTranscript(const std::string &text)
 Transcript readTranscript(const std::string &path)
 {
     const std::string ext = extensionOf(path);
-    if (ext != ".align" && ext != ".textgrid" && ext != ".lab" && ext != ".txt" && !ext.empty())
+    const std::vector<std::string> &known = transcriptExtensions();
+    if (!ext.empty() && std::find(known.begin(), known.end(), ext) == known.end())
         throw unsupportedFormat(ext, path);
     return parseTranscript(readWholeFile(path), path);
 }
@@ -108,6 +110,11 @@ Transcript parseTranscript(const std::string &bytes, const std::string &path)
         }
     } else if (ext == ".txt" || ext.empty()) {
         t = parsePlainTranscript(bytes);
+    } else if (ext == ".srt" || ext == ".vtt") {
+        t.cues = parseSubtitles(bytes, path);
+        for (const Interval &cue : t.cues.intervals)
+            for (std::string &word : parsePlainTranscript(cue.label).words)
+                t.words.push_back(std::move(word));
     } else {
         throw unsupportedFormat(ext, path);
     }

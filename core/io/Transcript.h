@@ -2,6 +2,7 @@
 // Word transcripts for alignment and training, from any of the formats the CLI accepts:
 //   .align (GRID word timings), .lab (HTK timed labels, or MFA-style plain text),
 //   .txt (plain text), .TextGrid (the "words" tier, else the first interval tier),
+//   .srt and .vtt (subtitles: io/Subtitles, the cues' spoken words and their times);
 //   .mlf is not a per-utterance transcript and is rejected here.
 // Silence labels ("sil", "sp", "", "<sil>") are dropped from the word list.
 #include "annotation/Tier.h"
@@ -16,6 +17,8 @@ struct Transcript
     std::vector<std::string> words;
     Tier timing{"words", {}}; // reference word timings when the file has them (.align, timed .lab, TextGrid)
     bool hasTiming() const { return !timing.intervals.empty(); }
+    // Subtitles: one interval per cue (its words, its times), anchors for a long recording.
+    Tier cues{"cues", {}};
     std::string text() const;
 };
 

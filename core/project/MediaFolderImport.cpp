@@ -4,6 +4,7 @@
 #include "io/AtomicFile.h"
 #include "io/GridAlign.h"
 #include "io/MediaInfo.h"
+#include "io/Transcript.h"
 #include "util/Error.h"
 
 #include <QDir>
@@ -18,8 +19,9 @@ namespace {
 
 const QStringList kMediaSuffixes{"mpg", "mp4", "mov", "avi", "mkv", "wav"};
 
-// Reads <stem>.align (words with timings) or else <stem>.lab / <stem>.txt (plain words).
-void readTranscript(const QDir &dir, const QString &stem, Sequence &sequence)
+// Reads <stem>.align (words with timings), else <stem>.lab / <stem>.txt (plain words), else the
+// spoken words of <stem>.srt / <stem>.vtt (subtitles).
+void readSequenceTranscript(const QDir &dir, const QString &stem, Sequence &sequence)
 {
     const QString align = dir.filePath(stem + QLatin1String(".align"));
     if (QFileInfo(align).isFile()) {
@@ -35,6 +37,13 @@ void readTranscript(const QDir &dir, const QString &stem, Sequence &sequence)
             sequence.transcript = QString::fromUtf8(text.data(), qsizetype(text.size()))
                                       .simplified()
                                       .toStdString();
+            return;
+        }
+    }
+    for (const char *suffix : {".srt", ".vtt"}) {
+        const QString path = dir.filePath(stem + QLatin1String(suffix));
+        if (QFileInfo(path).isFile()) {
+            sequence.transcript = readTranscript(path.toStdString()).text();
             return;
         }
     }
@@ -82,7 +91,7 @@ Project Project::fromMediaFolder(const std::string &mediaFolder, const std::stri
         }
         if (!(s.frameRate > 0) || !std::isfinite(s.frameRate))
             throw Error("no usable frame rate", path);
-        readTranscript(dir, file.completeBaseName(), s);
+        readSequenceTranscript(dir, file.completeBaseName(), s);
         project.sequences.push_back(std::move(s));
     }
     if (project.sequences.empty())

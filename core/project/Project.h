@@ -63,7 +63,8 @@ public:
     // Creates a project (not yet saved) in `projectFolder` from a folder of media files (*.mpg,
     // *.mp4, *.mov, *.avi, *.mkv, *.wav; sorted by name, id = file stem), probing each for frame
     // rate and count and reading a transcript and word tier from a sibling <stem>.align (GRID
-    // word timings) or a plain-text transcript <stem>.lab / <stem>.txt when present. Media paths
+    // word timings), a plain-text transcript <stem>.lab / <stem>.txt or the spoken words of
+    // subtitles <stem>.srt / <stem>.vtt when present. Media paths
     // are relative to projectFolder. Audio-only files get kAudioOnlyFrameRate. Throws
     // lipsync::Error naming the file for unreadable media or transcripts.
     static Project fromMediaFolder(const std::string &mediaFolder, const std::string &projectFolder);

@@ -654,7 +654,7 @@ void TimelinePanel::openEditor(TierKind kind, int index)
     auto *filter = new EditorFilter(m_editor, [this] { closeEditor(); });
     line->installEventFilter(filter);
     connect(line, &QLineEdit::returnPressed, this, &TimelinePanel::commitEditor);
-    connect(line, &QLineEdit::textEdited, this, [this, line] {
+    connect(line, &QLineEdit::textEdited, this, [line] {
         line->setStyleSheet(QString());
         line->setToolTip(QString());
     });

@@ -634,6 +634,27 @@ private slots:
         QCOMPARE(p.sequences[0].frameCount, 75);
     }
 
+    // Subtitles beside a clip give its transcript (their spoken words) when nothing else does.
+    void fromMediaFolderSubtitles()
+    {
+        QTemporaryDir dir;
+        const QString media = dir.filePath("media");
+        QVERIFY(QDir().mkpath(media));
+        for (const char *name : {"/a.mpg", "/b.mpg"})
+            QVERIFY(QFile::copy(QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg"), media + name));
+        writeBytes(media + "/a.srt", "1\n00:00:00,900 --> 00:00:02,100\n[Music] <i>bin blue</i>\nat f two now\n");
+        writeBytes(media + "/b.vtt", "WEBVTT\n\n00:00.900 --> 00:02.100\n<v S1>bin blue at f</v>\n\n"
+                                     "00:02.2 --> 00:02.9\n(sighs) two now\n");
+        writeBytes(media + "/b.txt", "set white"); // a plain transcript wins over subtitles
+        const Project p = Project::fromMediaFolder(media.toStdString(), dir.filePath("project").toStdString());
+        QCOMPARE(p.sequences.size(), size_t(2));
+        QCOMPARE(p.sequences[0].transcript, std::string("bin blue at f two now"));
+        QCOMPARE(p.sequences[1].transcript, std::string("set white"));
+        QFile::remove(media + "/b.txt");
+        const Project q = Project::fromMediaFolder(media.toStdString(), dir.filePath("project").toStdString());
+        QCOMPARE(q.sequences[1].transcript, std::string("bin blue at f two now"));
+    }
+
     void fromMediaFolderAudioOnly()
     {
         // 1.2 s of 16 kHz mono silence: no video, so the nominal frame grid applies.
