@@ -6,6 +6,7 @@
 #include "context/ModelStore.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
+#include "dynamics/ContextDependentModel.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
@@ -49,6 +50,18 @@ QString kindText(const std::string &kind)
     if (kind == "aam") return ModelsPanel::tr("Appearance model");
     if (kind == "aligner") return ModelsPanel::tr("Phoneme aligner");
     return ModelKinds::name(kind);
+}
+
+// What a trained dynamic model is beyond its kind: its states and its compensation.
+QString modelSummary(const DynamicModel &model)
+{
+    const auto *context = dynamic_cast<const ContextDependentModel *>(&model);
+    // At least one state per phone, so always a plural.
+    const QString states = context ? ModelsPanel::tr("%1 states for phones in context").arg(context->tree().stateCount())
+                                   : ModelsPanel::tr("one state per phone");
+    return model.compensatesVariance()
+               ? ModelsPanel::tr("%1 parameters, %2, variance compensation").arg(model.dimension()).arg(states)
+               : ModelsPanel::tr("%1 parameters, %2").arg(model.dimension()).arg(states);
 }
 
 } // namespace
@@ -212,8 +225,12 @@ void ModelsPanel::setProject(const Project &project)
             item->setToolTip(2, tr("Made in this session; written when the project is saved"));
         else
             item->setToolTip(2, QString::fromStdString(project.resolve(m.file)));
-        if (isDynamicModelKind(m.kind))
+        if (isDynamicModelKind(m.kind)) {
             item->setForeground(1, ModelKinds::colour(kind));
+            if (m_context)
+                if (const auto model = m_context->modelStore()->dynamicModel(kind))
+                    item->setToolTip(1, modelSummary(*model));
+        }
     }
     if (project.models.empty()) {
         auto *item = new QTreeWidgetItem(m_list);

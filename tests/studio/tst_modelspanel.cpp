@@ -156,6 +156,14 @@ private slots:
         const auto *dpds = dynamic_cast<const ContextDependentModel *>(m_window->modelStore()->dynamicModel("dpds").get());
         QVERIFY(dpds);
         QCOMPARE(dpds->inner().stateCount(), dpds->tree().stateCount());
+        // The list says so.
+        QString tip;
+        for (int i = 0; i < m_panel->list()->topLevelItemCount(); ++i)
+            if (m_panel->list()->topLevelItem(i)->data(1, Qt::UserRole).toString() == QLatin1String("dpds"))
+                tip = m_panel->list()->topLevelItem(i)->toolTip(1);
+        QVERIFY2(tip.contains(QStringLiteral("%1 states for phones in context").arg(dpds->tree().stateCount()))
+                     && tip.contains(QStringLiteral("variance compensation")),
+                 qPrintable(tip));
         QCOMPARE(m_window->modelStore()->dynamicModel("dpds")->dimension(), int(m_window->document()->sequence(0).features.cols()));
         QVERIFY(m_window->modelStore()->dynamicModel("dpds")->compensatesVariance()); // the panel's default
         // The live objective plot got the iterations of the iterative model (DPDS).
