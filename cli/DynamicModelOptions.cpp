@@ -33,6 +33,9 @@ std::vector<CommandOption> dynamicModelOptions()
         {QStringLiteral("min-occupancy"), QStringLiteral("FRAMES"),
          QStringLiteral("context states: fewest training frames per state"),
          QString::number(ContextTreeOptions{}.minOccupancy)},
+        {QStringLiteral("mdl-weight"), QStringLiteral("W"),
+         QStringLiteral("context states: scale of the MDL splitting threshold d log N (smaller: more states)"),
+         QString::number(ContextTreeOptions{}.mdlWeight)},
     };
 }
 
@@ -41,9 +44,12 @@ ModelOptions dynamicModelOptionsFrom(const CommandLine &args)
     ModelOptions options;
     options.brand.fullCovariance = args.isSet(QStringLiteral("full-covariance"));
     options.compensateVariance = args.isSet(QStringLiteral("compensate-variance"));
-    options.contextStates = args.isSet(QStringLiteral("context-states")) || args.isSet(QStringLiteral("min-occupancy"));
+    options.contextStates = args.isSet(QStringLiteral("context-states")) || args.isSet(QStringLiteral("min-occupancy"))
+                            || args.isSet(QStringLiteral("mdl-weight"));
     if (args.isSet(QStringLiteral("min-occupancy")))
         options.context.minOccupancy = args.integer(QStringLiteral("min-occupancy"), 1);
+    if (args.isSet(QStringLiteral("mdl-weight")))
+        options.context.mdlWeight = args.positiveNumber(QStringLiteral("mdl-weight"));
     options.slds.fullA = args.isSet(QStringLiteral("full-a"));
     options.slds.boundA = args.isSet(QStringLiteral("bound-a")) || args.isSet(QStringLiteral("bound-a-max"));
     options.slds.aMax = args.positiveNumber(QStringLiteral("bound-a-max"));

@@ -94,7 +94,7 @@ private slots:
         QStringList train{"train", "--kind", kind, "--features", m_features, "--labels", m_labels,
                           "--out", model, "--aam", "aam-test", "--json"};
         if (context)
-            train << "--context-states" << "--min-occupancy" << "20";
+            train << "--context-states" << "--min-occupancy" << "20" << "--mdl-weight" << "0.5";
         const Run r = runLipsync(train);
         QVERIFY2(r.exitCode == 0, r.err.constData());
         const QJsonObject o = QJsonDocument::fromJson(r.out).object();
