@@ -1,5 +1,6 @@
 #include "aam/AamFitter.h"
 
+#include "aam/AamFitStep.h"
 #include "aam/TextureNormalisation.h"
 
 #include <Eigen/Cholesky>
@@ -75,7 +76,7 @@ AamFitter::AamFitter(const AamModel &model) : m_model(model)
 
 void AamFitter::prepareLevel(int l)
 {
-    Level &level = m_levels[size_t(l)];
+    AamFitLevel &level = m_levels[size_t(l)];
     const PiecewiseAffineWarp &warp = m_model.warp(l);
     const AamTextureLevel &tex = m_model.levels[size_t(l)];
     const Similarity toRef = m_model.referenceTransform(l);
@@ -135,44 +136,6 @@ void AamFitter::prepareLevel(int l)
     Eigen::MatrixXd hessian = sdd.transpose() * sdd;
     hessian.diagonal().array() += 1e-6 * hessian.diagonal().mean();
     level.update = hessian.ldlt().solve(sdd.transpose()).cast<float>();
-}
-
-Eigen::MatrixXf AamFitter::steepestDescent(const Level &level, const PiecewiseAffineWarp &warp,
-                                           const Eigen::VectorXf &texture) const
-{
-    // Texture gradient by central differences inside the frame (one-sided at its edge), per
-    // channel; the channels' rows are stacked.
-    const int N = warp.pixelCount();
-    const int channels = int(texture.size() / N);
-    const cv::Mat &index = warp.indexMap();
-    Eigen::MatrixXf sd(texture.size(), level.warpX.cols());
-    for (int c = 0; c < channels; ++c) {
-        const float *t = texture.data() + size_t(c) * size_t(N);
-        auto valueAt = [&](int x, int y, float &v) {
-            if (x < 0 || y < 0 || x >= index.cols || y >= index.rows)
-                return false;
-            const int j = index.at<int>(y, x);
-            if (j < 0)
-                return false;
-            v = t[j];
-            return true;
-        };
-        Eigen::VectorXf gx(N), gy(N);
-        for (int i = 0; i < N; ++i) {
-            const int x = warp.pixelX(i), y = warp.pixelY(i);
-            const float v0 = t[i];
-            float a = 0, b = 0;
-            const bool l = valueAt(x - 1, y, a), r = valueAt(x + 1, y, b);
-            gx[i] = l && r ? 0.5f * (b - a) : r ? b - v0 : l ? v0 - a : 0.f;
-            const bool u = valueAt(x, y - 1, a), d = valueAt(x, y + 1, b);
-            gy[i] = u && d ? 0.5f * (b - a) : d ? b - v0 : u ? v0 - a : 0.f;
-        }
-        sd.middleRows(Eigen::Index(c) * N, N) = gx.asDiagonal() * level.warpX + gy.asDiagonal() * level.warpY;
-    }
-    // Project out the appearance variation (Matthews & Baker §4.2, eq. 40).
-    if (level.appearance.cols() > 0)
-        sd -= level.appearance * (level.appearance.transpose() * sd);
-    return sd;
 }
 
 Eigen::VectorXd AamFitter::modelShape(const Similarity &pose, const Eigen::VectorXd &params) const
@@ -267,11 +230,12 @@ AamFitResult AamFitter::fitOnce(const cv::Mat &grey, const Eigen::VectorXd &init
     pinFixed(start);
     result.shape = projectShape(start, result.pose, result.shapeParams, options.shapeLimit, weights);
 
+    const std::unique_ptr<AamFitStep> algorithm = makeAamFitStep(m_model, options);
     const int levels = int(m_levels.size());
     const int first = options.coarsestLevel < 0 ? levels - 1 : std::min(options.coarsestLevel, levels - 1);
     std::vector<float> sample;
     for (int l = first; l >= 0; --l) {
-        const Level &level = m_levels[size_t(l)];
+        const AamFitLevel &level = m_levels[size_t(l)];
         const PiecewiseAffineWarp &warp = m_model.warp(l);
         // Sample an image whose scale matches the level's reference frame (downscale only: the
         // warp interpolates when the face is smaller than the frame).
@@ -335,31 +299,8 @@ AamFitResult AamFitter::fitOnce(const cv::Mat &grey, const Eigen::VectorXd &init
         for (int it = 0; it < options.maxIterations; ++it) {
             ++result.iterations;
             const Eigen::VectorXd current = toLevel(result.shape);
-            if (fullStep.size() == 0) {
-                if (options.algorithm == AamFitAlgorithm::Wiberg) {
-                    // Steepest descent from the appearance instance that best explains the
-                    // current sample, A0 + A A^T (i - A0), appearance projected out (Tzimiropoulos
-                    // & Pantic 2013, §4); `error` is i - A0, and its appearance part is orthogonal
-                    // to the projected-out Jacobian, so it needs no removing.
-                    const Eigen::VectorXf instance =
-                        level.templateMean + level.appearance * (level.appearance.transpose() * error);
-                    const Eigen::MatrixXf sd = steepestDescent(level, warp, instance);
-                    Eigen::MatrixXd hessian = (sd.transpose() * sd).cast<double>();
-                    Eigen::VectorXd gradient = (sd.transpose() * error).cast<double>();
-                    // Shape prior: minimise |e - J dp|^2 + s2 (b - M dp)^T L^-1 (b - M dp), with
-                    // s2 the texture noise per pixel (the current residual, weighted) and L the
-                    // shape variances; b - M dp is the shape after the inverse compositional update.
-                    const Eigen::MatrixXd &M = level.toShapeParams;
-                    const Eigen::VectorXd inverseVar = m_model.shapeVariances.cwiseMax(1e-12).cwiseInverse();
-                    const double s2 = options.shapePriorWeight * residual;
-                    hessian += s2 * M.transpose() * inverseVar.asDiagonal() * M;
-                    gradient += s2 * M.transpose() * (inverseVar.asDiagonal() * result.shapeParams);
-                    hessian.diagonal().array() += 1e-6 * hessian.diagonal().mean();
-                    fullStep = hessian.ldlt().solve(gradient);
-                } else {
-                    fullStep = (level.update * error).cast<double>();
-                }
-            }
+            if (fullStep.size() == 0)
+                fullStep = algorithm->step(level, warp, error, residual, result.shapeParams);
             const Eigen::VectorXd dp = step * fullStep;
             // Inverse compositional update: W(x; p) <- W(x; p) o W(x; dp)^-1, with the inverse
             // approximated by -dp and the composition done on the mesh vertices (§4.1.2).

@@ -15,7 +15,9 @@
 // "Optimization problems for fast AAM fitting in-the-wild", ICCV 2013, §4): a (params x params)
 // solve per iteration instead of a product with a precomputed matrix. It also weighs the shape
 // model's Gaussian prior against the texture residual (the MAP form of their eq. 15), which keeps
-// in-the-wild fits to plausible shapes.
+// in-the-wild fits to plausible shapes. The two differ only in how an iteration computes its step
+// (aam/AamFitStep.h); the iteration around it is the same.
+#include "aam/AamFitLevel.h"
 #include "aam/AamModel.h"
 
 #include <Eigen/Core>
@@ -105,24 +107,10 @@ public:
 private:
     AamFitResult fitOnce(const cv::Mat &grey, const Eigen::VectorXd &initialShape,
                          const AamFitOptions &options) const;
-    struct Level
-    {
-        Eigen::VectorXd reference;    // s0 in reference pixels
-        Eigen::VectorXf templateMean; // A0
-        Eigen::MatrixXf appearance;   // A (pixels x m)
-        Eigen::MatrixXd basis;        // B (2k x P), orthonormal: similarity + shape
-        Eigen::MatrixXf update;       // (SD^T SD)^-1 SD^T  (P x pixels)
-        Eigen::MatrixXf warpX, warpY; // dW/dp per pixel, x and y components (pixels x P)
-        Eigen::MatrixXd toShapeParams; // M: change of the shape parameters b per unit of p (ns x P)
-    };
     void prepareLevel(int level);
-    // Steepest-descent images (pixels x P) of a texture on the level's frame, with the appearance
-    // subspace projected out.
-    Eigen::MatrixXf steepestDescent(const Level &level, const PiecewiseAffineWarp &warp,
-                                    const Eigen::VectorXf &texture) const;
 
     const AamModel &m_model;
-    std::vector<Level> m_levels;
+    std::vector<AamFitLevel> m_levels;
 };
 
 } // namespace lipsync
