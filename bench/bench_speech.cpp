@@ -10,7 +10,12 @@
 //   BM_EvalGridWords/A      train on 320 GRID s1 clips, align the other 80: share of word
 //                           boundaries within 40 ms of GRID's .align ("inner": without the
 //                           boundaries between the leading/trailing silence and the first/last word);
-//                           A = 1: each clip aligned after speaker adaptation to itself
+//                           A = 1: each clip aligned after speaker adaptation to itself. The 80 are
+//                           the last by name, all "set ..." sentences: a split by name, kept as the
+//                           historical row
+//   BM_EvalGridWordsKFold   the same measure by 5-fold cross-validation over a random split of the
+//                           400 clips (seed 2007, eval/CrossValidation): every clip aligned once by a
+//                           model trained on the 320 of the other folds
 //   BM_EvalMfaPhones/N      phone boundaries within 25 ms of the Montreal Forced Aligner's on
 //                           ../shared/data/speech/mfa-tests (the 3 files with an ARPAbet phone
 //                           tier), for words whose phones agree with MFA's; N = 0: model trained on
@@ -27,6 +32,7 @@
 #include "align/ForcedAligner.h"
 #include "align/SpeakerAdaptation.h"
 #include "align/SphinxAligner.h"
+#include "eval/CrossValidation.h"
 #include "util/PhoneSet.h"
 #include "io/AudioDecoder.h"
 #include "io/TextGrid.h"
@@ -253,6 +259,42 @@ void BM_TrainGrid20min(benchmark::State &state)
 }
 BENCHMARK(BM_TrainGrid20min)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
+// Word boundaries within 40 ms of the reference, over all boundaries and over the inner ones
+// (not between the leading/trailing silence and the first/last word).
+struct BoundaryScore
+{
+    int within = 0, total = 0, innerWithin = 0, inner = 0, mismatched = 0;
+    void add(const Tier &reference, const Tier &aligned)
+    {
+        const std::vector<Interval> ref = nonSilence(reference), hyp = nonSilence(aligned);
+        if (ref.size() != hyp.size()) {
+            ++mismatched;
+            return;
+        }
+        for (size_t w = 0; w < ref.size(); ++w)
+            for (int edge = 0; edge < 2; ++edge) {
+                const double d = edge ? hyp[w].end - ref[w].end : hyp[w].start - ref[w].start;
+                const bool ok = std::abs(d) <= 0.040 + 1e-6;
+                within += ok;
+                ++total;
+                const bool silenceEdge = (w == 0 && edge == 0) || (w + 1 == ref.size() && edge == 1);
+                if (!silenceEdge) {
+                    innerWithin += ok;
+                    ++inner;
+                }
+            }
+    }
+    double innerPercent() const { return 100.0 * innerWithin / std::max(inner, 1); }
+    double allPercent() const { return 100.0 * within / std::max(total, 1); }
+    void report(benchmark::State &state) const
+    {
+        state.counters["inner_within_40ms_pct"] = innerPercent();
+        state.counters["all_within_40ms_pct"] = allPercent();
+        state.counters["boundaries"] = inner;
+        state.counters["mismatched"] = mismatched;
+    }
+};
+
 void BM_EvalGridWords(benchmark::State &state)
 {
     if (!exists(kGrid)) {
@@ -261,41 +303,62 @@ void BM_EvalGridWords(benchmark::State &state)
     }
     const auto &clips = gridClips();
     const std::vector<TrainingUtterance> train = trainingSet(clips, 0, 320);
-    int within = 0, total = 0, innerWithin = 0, inner = 0, mismatched = 0;
+    BoundaryScore score;
     for (auto _ : state) {
         Feedback feedback;
         const AcousticModel model = AlignerTrainer::train(train, benchOptions(), feedback);
         for (size_t k = 320; k < clips.size(); ++k) {
             const PreparedUtterance &u = clips[k].utterance;
             const AlignmentResult r = alignUtterance(model, u.features, u.words, u.pronunciations, u.duration, state.range(0) == 1);
-            const std::vector<Interval> ref = nonSilence(clips[k].reference), hyp = nonSilence(r.words);
-            if (ref.size() != hyp.size()) {
-                ++mismatched;
-                continue;
-            }
-            for (size_t w = 0; w < ref.size(); ++w)
-                for (int edge = 0; edge < 2; ++edge) {
-                    const double d = edge ? hyp[w].end - ref[w].end : hyp[w].start - ref[w].start;
-                    const bool ok = std::abs(d) <= 0.040 + 1e-6;
-                    within += ok;
-                    ++total;
-                    const bool silenceEdge = (w == 0 && edge == 0) || (w + 1 == ref.size() && edge == 1);
-                    if (!silenceEdge) {
-                        innerWithin += ok;
-                        ++inner;
-                    }
-                }
+            score.add(clips[k].reference, r.words);
         }
     }
-    state.counters["inner_within_40ms_pct"] = 100.0 * innerWithin / std::max(inner, 1);
-    state.counters["all_within_40ms_pct"] = 100.0 * within / std::max(total, 1);
-    state.counters["boundaries"] = inner;
-    state.counters["mismatched"] = mismatched;
+    score.report(state);
     std::printf("GRID s1 (train 320, align 80%s): %.1f%% of %d inner word boundaries within 40 ms "
                 "(%.1f%% of %d with the silence edges)\n", state.range(0) == 1 ? ", adapted" : "",
-                100.0 * innerWithin / std::max(inner, 1), inner, 100.0 * within / std::max(total, 1), total);
+                score.innerPercent(), score.inner, score.allPercent(), score.total);
 }
 BENCHMARK(BM_EvalGridWords)->Arg(0)->Arg(1)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+void BM_EvalGridWordsKFold(benchmark::State &state)
+{
+    if (!exists(kGrid)) {
+        state.SkipWithError("../shared/data/grid-s1 not present");
+        return;
+    }
+    const auto &clips = gridClips();
+    const std::vector<std::vector<int>> folds = makeFolds(int(clips.size()), 5);
+    BoundaryScore score;
+    double lowest = 100.0, highest = 0.0;
+    for (auto _ : state) {
+        for (size_t f = 0; f < folds.size(); ++f) {
+            std::vector<TrainingUtterance> train;
+            for (size_t g = 0; g < folds.size(); ++g)
+                if (g != f)
+                    for (int i : folds[g])
+                        train.push_back({clips[size_t(i)].utterance.id, clips[size_t(i)].utterance.features,
+                                         clips[size_t(i)].utterance.pronunciations});
+            Feedback feedback;
+            const AcousticModel model = AlignerTrainer::train(train, benchOptions(), feedback);
+            BoundaryScore fold;
+            for (int i : folds[f]) {
+                const PreparedUtterance &u = clips[size_t(i)].utterance;
+                const AlignmentResult r = alignUtterance(model, u.features, u.words, u.pronunciations, u.duration, false);
+                fold.add(clips[size_t(i)].reference, r.words);
+                score.add(clips[size_t(i)].reference, r.words);
+            }
+            lowest = std::min(lowest, fold.allPercent());
+            highest = std::max(highest, fold.allPercent());
+        }
+    }
+    score.report(state);
+    state.counters["fold_all_min_pct"] = lowest;
+    state.counters["fold_all_max_pct"] = highest;
+    std::printf("GRID s1, 5-fold random split of 400 clips: %.1f%% of all %d word boundaries within 40 ms "
+                "(folds %.1f-%.1f%%), %.1f%% of %d inner\n",
+                score.allPercent(), score.total, lowest, highest, score.innerPercent(), score.inner);
+}
+BENCHMARK(BM_EvalGridWordsKFold)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 struct MfaFile
 {
