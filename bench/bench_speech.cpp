@@ -134,11 +134,16 @@ const std::vector<GridClip> &gridClips()
     return clips;
 }
 
+TrainingUtterance trainingUtterance(const GridClip &clip)
+{
+    return {clip.utterance.id, clip.utterance.features, clip.utterance.pronunciations};
+}
+
 std::vector<TrainingUtterance> trainingSet(const std::vector<GridClip> &clips, size_t from, size_t to)
 {
     std::vector<TrainingUtterance> out;
     for (size_t i = from; i < to && i < clips.size(); ++i)
-        out.push_back({clips[i].utterance.id, clips[i].utterance.features, clips[i].utterance.pronunciations});
+        out.push_back(trainingUtterance(clips[i]));
     return out;
 }
 
@@ -336,8 +341,7 @@ void BM_EvalGridWordsKFold(benchmark::State &state)
             for (size_t g = 0; g < folds.size(); ++g)
                 if (g != f)
                     for (int i : folds[g])
-                        train.push_back({clips[size_t(i)].utterance.id, clips[size_t(i)].utterance.features,
-                                         clips[size_t(i)].utterance.pronunciations});
+                        train.push_back(trainingUtterance(clips[size_t(i)]));
             Feedback feedback;
             const AcousticModel model = AlignerTrainer::train(train, benchOptions(), feedback);
             BoundaryScore fold;

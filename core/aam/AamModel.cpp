@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 
 namespace lipsync {
 
@@ -39,8 +40,12 @@ public:
     {
         i32(int(m.rows()));
         i32(int(m.cols()));
-        const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> stored = m.cast<Scalar>();
-        raw(stored.data(), sizeof(Scalar) * size_t(stored.size()));
+        if constexpr (std::is_same_v<Scalar, double>) {
+            raw(m.data(), sizeof(double) * size_t(m.size()));
+        } else {
+            const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> stored = m.cast<Scalar>();
+            raw(stored.data(), sizeof(Scalar) * size_t(stored.size()));
+        }
     }
     template <class Matrix> void bytes(const Matrix &m)
     {
@@ -108,7 +113,10 @@ public:
             throw Error("corrupt AAM file (more " + std::string(what) + " than the file holds)", m_path, what);
         Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> m(r, c);
         raw(m.data(), sizeof(Scalar) * size_t(m.size()));
-        return m.template cast<double>();
+        if constexpr (std::is_same_v<Scalar, double>)
+            return m;
+        else
+            return m.template cast<double>();
     }
     Eigen::Matrix<std::int8_t, Eigen::Dynamic, Eigen::Dynamic> bytes(const char *what)
     {

@@ -11,17 +11,6 @@ namespace lipsync {
 
 namespace {
 
-std::string lowerExtension(const std::string &path)
-{
-    const size_t dot = path.find_last_of('.');
-    const size_t slash = path.find_last_of('/');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-        return {};
-    std::string ext = path.substr(dot);
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
-
 std::vector<std::string> splitLines(const std::string &bytes)
 {
     std::vector<std::string> lines;
@@ -142,12 +131,9 @@ std::string subtitleSpeech(const std::string &cueText)
     return out;
 }
 
-Tier parseSubtitles(const std::string &bytes, const std::string &path)
+Tier parseSubtitles(const std::string &bytes, SubtitleFormat format, const std::string &path)
 {
-    const std::string ext = lowerExtension(path);
-    const bool vtt = ext == ".vtt";
-    if (!vtt && ext != ".srt")
-        throw Error("not a subtitle file (expected .srt or .vtt)", path);
+    const bool vtt = format == SubtitleFormat::WebVtt;
     const std::vector<std::string> lines = splitLines(bytes);
     size_t i = 0;
     if (vtt) {

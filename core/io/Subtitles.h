@@ -17,10 +17,12 @@
 
 namespace lipsync {
 
+enum class SubtitleFormat { SubRip, WebVtt };
+
 // One interval per cue with speech (label: its words, single-spaced), in time order. Throws
-// lipsync::Error naming the file and line for a malformed time line, an end before its start
-// or a WebVTT file without its header; `path`'s extension (.srt or .vtt) picks the format.
-Tier parseSubtitles(const std::string &bytes, const std::string &path);
+// lipsync::Error naming `pathForErrors` and the line for a malformed time line, an end before
+// its start or a WebVTT file without its header. readTranscript() picks the format by extension.
+Tier parseSubtitles(const std::string &bytes, SubtitleFormat format, const std::string &pathForErrors);
 
 // The spoken words of one cue's text (the cleaning above), single-spaced.
 std::string subtitleSpeech(const std::string &cueText);

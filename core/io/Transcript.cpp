@@ -111,7 +111,7 @@ Transcript parseTranscript(const std::string &bytes, const std::string &path)
     } else if (ext == ".txt" || ext.empty()) {
         t = parsePlainTranscript(bytes);
     } else if (ext == ".srt" || ext == ".vtt") {
-        t.cues = parseSubtitles(bytes, path);
+        t.cues = parseSubtitles(bytes, ext == ".vtt" ? SubtitleFormat::WebVtt : SubtitleFormat::SubRip, path);
         for (const Interval &cue : t.cues.intervals)
             for (std::string &word : parsePlainTranscript(cue.label).words)
                 t.words.push_back(std::move(word));

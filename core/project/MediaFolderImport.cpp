@@ -30,22 +30,18 @@ void readSequenceTranscript(const QDir &dir, const QString &stem, Sequence &sequ
         sequence.transcript = transcriptFromTier(sequence.words);
         return;
     }
-    for (const char *suffix : {".lab", ".txt"}) {
-        const QString path = dir.filePath(stem + QLatin1String(suffix));
-        if (QFileInfo(path).isFile()) {
+    for (const QString suffix : {QStringLiteral(".lab"), QStringLiteral(".txt"), QStringLiteral(".srt"),
+                                 QStringLiteral(".vtt")}) {
+        const QString path = dir.filePath(stem + suffix);
+        if (!QFileInfo(path).isFile())
+            continue;
+        if (suffix == QLatin1String(".srt") || suffix == QLatin1String(".vtt")) {
+            sequence.transcript = readTranscript(path.toStdString()).text(); // the cues' spoken words
+        } else {
             const std::string text = readWholeFile(path.toStdString());
-            sequence.transcript = QString::fromUtf8(text.data(), qsizetype(text.size()))
-                                      .simplified()
-                                      .toStdString();
-            return;
+            sequence.transcript = QString::fromUtf8(text.data(), qsizetype(text.size())).simplified().toStdString();
         }
-    }
-    for (const char *suffix : {".srt", ".vtt"}) {
-        const QString path = dir.filePath(stem + QLatin1String(suffix));
-        if (QFileInfo(path).isFile()) {
-            sequence.transcript = readTranscript(path.toStdString()).text();
-            return;
-        }
+        return;
     }
 }
 

@@ -42,7 +42,7 @@ private slots:
         const std::string srt = "\xEF\xBB\xBF" "1\r\n00:00:01,000 --> 00:00:02,500\r\n<i>Set white</i> with\r\np two now\r\n\r\n"
                                 "2\r\n00:00:03,250 --> 00:00:04,000 X1:10 X2:20\r\n[Music]\r\n\r\n"
                                 "3\r\n01:00:05.5 --> 01:00:07.25\r\n- Bin blue &amp; green.\r\n- (laughs) Again!\r\n";
-        const Tier cues = parseSubtitles(srt, "clip.srt");
+        const Tier cues = parseTranscript(srt, "clip.srt").cues;
         QCOMPARE(cues.intervals.size(), size_t(2)); // the music-only cue has no speech
         QCOMPARE(cues.intervals[0].start, 1.0);
         QCOMPARE(cues.intervals[0].end, 2.5);
@@ -54,7 +54,7 @@ private slots:
         const std::string vtt = "WEBVTT - a header\nKind: captions\n\nNOTE this is\na comment\n\n"
                                 "intro\n00:01.000 --> 00:02.000 align:start position:10%\n<v Anna>lay red</v> "
                                 "<00:01.500><c.loud>at</c>\n\n00:00:02.500 --> 00:00:03.000\n\u266A la la \u266A now {\\an8}\n";
-        const Tier webvtt = parseSubtitles(vtt, "clip.VTT");
+        const Tier webvtt = parseTranscript(vtt, "clip.VTT").cues;
         QCOMPARE(webvtt.intervals.size(), size_t(2));
         QCOMPARE(webvtt.intervals[0].label, std::string("lay red at"));
         QCOMPARE(webvtt.intervals[0].start, 1.0);
@@ -75,7 +75,7 @@ private slots:
     {
         const auto error = [](const std::string &bytes, const std::string &path) -> std::string {
             try {
-                parseSubtitles(bytes, path);
+                parseTranscript(bytes, path);
             } catch (const Error &e) {
                 return e.what();
             }
