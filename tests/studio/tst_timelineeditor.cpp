@@ -13,6 +13,7 @@
 #include "app/MainWindow.h"
 #include "app/ProjectFiles.h"
 #include "context/ErrorReporter.h"
+#include "context/ModelStore.h"
 #include "context/PlaybackController.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
@@ -91,6 +92,18 @@ private slots:
         QCOMPARE(panel.waveform()->phones().intervals.size(), before + 1);
         context.undoStack()->undo();
         QCOMPARE(panel.waveform()->phones().intervals.size(), before);
+
+        // The Speech menu's aligner is the studio's (the preview's generation aligns with it too).
+        panel.adaptToSpeakerAction()->setChecked(true);
+        QVERIFY(context.modelStore()->alignerChoice().adapt);
+        if (SphinxAligner::available()) {
+            panel.sphinxAlignerAction()->setChecked(true);
+            QVERIFY(context.modelStore()->alignerChoice().isSphinx());
+            panel.builtInAlignerAction()->setChecked(true);
+            QVERIFY(!context.modelStore()->alignerChoice().isSphinx());
+        }
+        panel.adaptToSpeakerAction()->setChecked(false);
+        QVERIFY(!context.modelStore()->alignerChoice().adapt);
     }
 
     void alignSequenceFillsTiers()

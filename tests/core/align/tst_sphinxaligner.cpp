@@ -141,7 +141,7 @@ private slots:
         std::vector<std::string> list;
         for (const Interval &i : spoken(*words))
             list.push_back(i.label);
-        const AlignmentResult r = aligner.align(kMichael + ".flac", list, lexicon);
+        const AlignmentResult r = aligner.align(kMichael + ".flac", list, lexicon).alignment;
         verifyTiers(r, list, AudioDecoder::decode(kMichael + ".flac", 16000).duration(), lexicon);
         const std::vector<Interval> ref = spoken(*words), hyp = spoken(r.words);
         // Inner boundaries (MFA puts the edges at the file's ends; there is no leading silence).
@@ -165,7 +165,7 @@ private slots:
         std::vector<std::string> list;
         for (const Interval &i : spoken(*grid.tier("words")))
             list.push_back(i.label);
-        const std::vector<Interval> ref = spoken(*grid.tier("words")), hyp = spoken(aligner.align(kMichael + ".flac", list, lexicon).words);
+        const std::vector<Interval> ref = spoken(*grid.tier("words")), hyp = spoken(aligner.align(kMichael + ".flac", list, lexicon).alignment.words);
         for (size_t w = 1; w < ref.size(); ++w)
             QVERIFY(std::abs(hyp[w].start - ref[w].start) <= 0.04 + 1e-6);
     }

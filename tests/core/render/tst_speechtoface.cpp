@@ -82,7 +82,7 @@ private:
         r.transcriptPath = kTranscript;
         r.modelPath = m_model;
         r.aamPath = kAam;
-        r.alignerModelPath = kAligner;
+        r.aligner.model = kAligner;
         return r;
     }
 

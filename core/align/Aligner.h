@@ -1,0 +1,87 @@
+#pragma once
+// The forced aligners behind one interface, chosen the same way everywhere an aligner is used
+// (`lipsync align`, `render`, the studio's timeline and its generation from new speech):
+//   - ours (MonophoneAligner): monophone HMMs trained on the speaker (`lipsync aligner train`),
+//     by default the shipped GRID s1 model, ForcedAligner's Viterbi;
+//   - CMU Sphinx's generic US-English triphone model (SphinxAligner), for other speakers.
+// Both can adapt to the recording's speaker first, and both re-align stretches of an alignment
+// while keeping the rest (Realignment).
+#include "align/ForcedAligner.h"
+#include "align/SpeakerAdaptation.h"
+#include "audio/Mfcc.h"
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace lipsync {
+
+class AcousticModel;
+class Feedback;
+class Lexicon;
+class Realignment;
+
+// Which aligner: `model` is "sphinx" or "sphinx:DIR" (CMU Sphinx's model, at its Debian folder
+// or at DIR), the path of an aligner model of ours, or empty for the shipped one
+// ($LIPSYNC_ALIGNER_MODEL, else resources/aligner/grid-s1.aligner).
+struct AlignerChoice
+{
+    std::string model;
+    bool adapt = false; // adapt the model to the recording's speaker first
+
+    bool isSphinx() const;
+    bool operator<(const AlignerChoice &o) const { return std::tie(model, adapt) < std::tie(o.model, o.adapt); }
+};
+
+struct AlignerOutput
+{
+    AlignmentResult alignment;
+    double duration = 0;         // seconds of audio
+    MfccOptions audioFrames;     // the aligner's audio frames (voteFrameLabels)
+    AdaptationReport adaptation; // ours with adaptation: log-likelihood per frame per pass
+};
+
+class Aligner
+{
+public:
+    virtual ~Aligner() = default;
+
+    // What aligns: "sphinx:DIR" or the path of our model file.
+    virtual std::string name() const = 0;
+    // Our acoustic model, null for CMU Sphinx's.
+    virtual const AcousticModel *acousticModel() const { return nullptr; }
+
+    // Aligns the recording at `mediaPath` to `words`, pronounced by `lexicon`. Errors name the
+    // media (and `transcriptPath`, when given, if the words do not fit the audio); `feedback` gets
+    // progress and is polled for cancel (Canceled). Thread-safe.
+    virtual AlignerOutput align(const std::string &mediaPath, const std::vector<std::string> &words,
+                                const Lexicon &lexicon, Feedback *feedback = nullptr,
+                                const std::string &transcriptPath = {}) const = 0;
+    // Aligns the stretches of `realignment` again in the recording at `mediaPath`, everything
+    // else kept. Errors as align().
+    virtual AlignerOutput realign(const std::string &mediaPath, const Realignment &realignment,
+                                  const Lexicon &lexicon, Feedback *feedback = nullptr) const = 0;
+};
+
+// The aligner `choice` names, loaded. Throws lipsync::Error naming the model file or folder (or
+// saying that no shipped model exists).
+std::unique_ptr<Aligner> createAligner(const AlignerChoice &choice);
+
+// Aligners kept for reuse by every job that asks for the same choice (a model's or CMU Sphinx's
+// decoders take up to a second to load). Thread-safe.
+class AlignerCache
+{
+public:
+    // The aligner of `choice`, created on first use (createAligner's errors; a failed creation is
+    // not kept, so a later call tries again).
+    std::shared_ptr<const Aligner> get(const AlignerChoice &choice);
+
+private:
+    std::mutex m_mutex;
+    std::map<AlignerChoice, std::shared_ptr<const Aligner>> m_aligners;
+};
+
+} // namespace lipsync

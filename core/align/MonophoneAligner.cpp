@@ -1,0 +1,90 @@
+#include "align/MonophoneAligner.h"
+
+#include "align/AlignerUtterance.h"
+#include "align/Realignment.h"
+#include "util/Error.h"
+
+#include <filesystem>
+#include <optional>
+
+namespace lipsync {
+
+namespace {
+
+// An error of aligning the words to the recording: it names the media, and the transcript if given.
+Error misfit(const Error &e, const std::string &mediaPath, const std::string &transcriptPath)
+{
+    return Error(transcriptPath.empty() ? e.reason() : e.reason() + " (transcript " + transcriptPath + ")", mediaPath);
+}
+
+// The decoded recording, and the model to align it with: `model`, or when `adapt` asks for it
+// `model` moved to the recording's speaker (kept in `adapted`).
+struct Prepared
+{
+    PreparedUtterance utterance;
+    std::optional<AcousticModel> adapted;
+    AdaptationReport report;
+};
+
+Prepared prepare(const std::string &mediaPath, const std::vector<std::string> &words, const AcousticModel &model,
+                 const Lexicon &lexicon, bool adapt, Feedback *feedback, const std::string &transcriptPath = {})
+{
+    Prepared p{prepareUtterance(std::filesystem::path(mediaPath).stem().string(), mediaPath, words, model, lexicon),
+               std::nullopt, {}};
+    if (adapt) {
+        try {
+            p.adapted = SpeakerAdaptation::adapt(model, p.utterance.pronunciations, p.utterance.features, {},
+                                                 feedback, &p.report);
+        } catch (const Error &e) {
+            throw misfit(e, mediaPath, transcriptPath);
+        }
+    }
+    return p;
+}
+
+} // namespace
+
+MonophoneAligner::MonophoneAligner(const std::string &path, bool adapt)
+    : m_path(path), m_model(AcousticModel::load(path)), m_adapt(adapt)
+{
+}
+
+AlignerOutput MonophoneAligner::align(const std::string &mediaPath, const std::vector<std::string> &words,
+                                      const Lexicon &lexicon, Feedback *feedback,
+                                      const std::string &transcriptPath) const
+{
+    if (words.empty())
+        throw Error("the transcript has no words to align", transcriptPath.empty() ? mediaPath : transcriptPath);
+    const Prepared p = prepare(mediaPath, words, m_model, lexicon, m_adapt, feedback, transcriptPath);
+    AlignerOutput out;
+    out.duration = p.utterance.duration;
+    out.audioFrames = m_model.featureOptions();
+    out.adaptation = p.report;
+    try {
+        out.alignment = ForcedAligner(p.adapted ? *p.adapted : m_model)
+                            .align(p.utterance.features, p.utterance.words, p.utterance.pronunciations,
+                                   p.utterance.duration);
+    } catch (const Error &e) {
+        throw misfit(e, mediaPath, transcriptPath);
+    }
+    return out;
+}
+
+AlignerOutput MonophoneAligner::realign(const std::string &mediaPath, const Realignment &realignment,
+                                        const Lexicon &lexicon, Feedback *feedback) const
+{
+    const Prepared p = prepare(mediaPath, realignment.words(), m_model, lexicon, m_adapt, feedback);
+    AlignerOutput out;
+    out.duration = p.utterance.duration;
+    out.audioFrames = m_model.featureOptions();
+    out.adaptation = p.report;
+    try {
+        out.alignment = realignment.run(ForcedAligner(p.adapted ? *p.adapted : m_model), p.utterance.features,
+                                        p.utterance.pronunciations, p.utterance.duration);
+    } catch (const Error &e) {
+        throw misfit(e, mediaPath, {});
+    }
+    return out;
+}
+
+} // namespace lipsync

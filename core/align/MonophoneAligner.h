@@ -1,0 +1,31 @@
+#pragma once
+// Our aligner (Aligner): the speaker's monophone HMMs (AcousticModel, `lipsync aligner train`)
+// and ForcedAligner's Viterbi over the transcript, on the model's own features of the decoded
+// audio. With adaptation the model is first moved to the recording's speaker (SpeakerAdaptation:
+// MLLR then MAP of the means, as HTK and Kaldi do). Re-alignment is one constrained Viterbi over
+// the whole recording with every kept boundary fixed (Realignment::run).
+#include "align/AcousticModel.h"
+#include "align/Aligner.h"
+
+namespace lipsync {
+
+class MonophoneAligner : public Aligner
+{
+public:
+    // `path`: the model file (named in the errors of loading it).
+    MonophoneAligner(const std::string &path, bool adapt);
+
+    std::string name() const override { return m_path; }
+    const AcousticModel *acousticModel() const override { return &m_model; }
+    AlignerOutput align(const std::string &mediaPath, const std::vector<std::string> &words, const Lexicon &lexicon,
+                        Feedback *feedback = nullptr, const std::string &transcriptPath = {}) const override;
+    AlignerOutput realign(const std::string &mediaPath, const Realignment &realignment, const Lexicon &lexicon,
+                          Feedback *feedback = nullptr) const override;
+
+private:
+    std::string m_path;
+    AcousticModel m_model;
+    bool m_adapt = false;
+};
+
+} // namespace lipsync

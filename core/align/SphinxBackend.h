@@ -1,0 +1,68 @@
+#pragma once
+// The one file pair that touches libpocketsphinx (Debian's 0.8+5prealpha): what SphinxAligner
+// needs of it, in its own types.
+//  - SphinxDecoder: a decoder configuration (ps_init) for a model folder — the expanded model
+//    files and feature options, and the log table senone scores are in.
+//  - SphinxUtterance: one utterance's features and senone scorer (pocketsphinx's acmod, whose
+//    functions the library exports but declares only in a private header; the signatures and
+//    the start of its struct are pinned in the .cpp and checked at run time).
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lipsync {
+
+class SphinxDecoder
+{
+public:
+    // Senone scores are costs in the log base's units shifted right by this (SENSCR_SHIFT).
+    static constexpr int kScoreShift = 10;
+
+    // `arguments`: pocketsphinx options (name, value) after "-hmm modelDir". Throws
+    // lipsync::Error naming the folder when the options or the model do not load.
+    SphinxDecoder(const std::string &modelDir, const std::vector<std::pair<std::string, std::string>> &arguments);
+    ~SphinxDecoder();
+    SphinxDecoder(const SphinxDecoder &) = delete;
+    SphinxDecoder &operator=(const SphinxDecoder &) = delete;
+
+    // The base of the log table (1.0001): a cost c is a log-likelihood of -c * 2^kScoreShift * ln(base).
+    double logBase() const;
+    // The model's variance floor (-varfloor).
+    float varianceFloor() const;
+
+private:
+    friend class SphinxUtterance;
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+class SphinxUtterance
+{
+public:
+    // Computes the features of all of 16 kHz `pcm` at once (as a batch front end), every frame
+    // kept. A scorer of its own per utterance: pocketsphinx's front end carries its noise
+    // estimate, cepstral mean and Gaussian selection over from one utterance to the next.
+    // Throws lipsync::Error (an unsupported library, audio too short for one frame).
+    SphinxUtterance(const SphinxDecoder &decoder, const std::vector<short> &pcm);
+    ~SphinxUtterance();
+    SphinxUtterance(const SphinxUtterance &) = delete;
+    SphinxUtterance &operator=(const SphinxUtterance &) = delete;
+
+    int frames() const { return m_frames; }
+    // The scores of frame t for `senones` (only those are computed; the array holds every
+    // senone's slot): costs, 0 for the best senone scored.
+    const short *score(int t, const std::vector<int> &senones);
+    // The feature vectors of frame t, one array per stream.
+    const float *const *features(int t);
+    // Transforms the model's Gaussians by a speaker adaptation in pocketsphinx's MLLR text form
+    // (SphinxAdaptation::pocketsphinxText); frames are scored under it from then on.
+    void applyTransform(const std::string &pocketsphinxText);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+    int m_frames = 0;
+};
+
+} // namespace lipsync

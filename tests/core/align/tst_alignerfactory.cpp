@@ -1,0 +1,156 @@
+// The Aligner interface and its factory (align/Aligner.h): every choice the CLI and the studio
+// offer creates its aligner, and both aligners do the same things through the interface.
+//  - The shipped model (empty choice), a model file of ours, CMU Sphinx's model; a missing model
+//    file or folder is an Error naming it.
+//  - align() spells the transcript over a GRID demo clip with contiguous tiers; a transcript
+//    that cannot fit names the media and the transcript; realign() keeps a word the user fixed.
+//  - AlignerCache hands out one aligner per choice and does not keep a failed one.
+#include "align/Aligner.h"
+#include "align/Lexicon.h"
+#include "align/Realignment.h"
+#include "align/SphinxAligner.h"
+#include "io/Transcript.h"
+#include "util/Error.h"
+#include "util/PhoneSet.h"
+
+#include <QTest>
+
+#include <cmath>
+
+using namespace lipsync;
+
+namespace {
+
+const std::string kClip = LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n";
+const std::string kShippedModel = LIPSYNC_SOURCE_DIR "/resources/aligner/grid-s1.aligner";
+
+std::vector<std::string> spokenWords(const Tier &words)
+{
+    std::vector<std::string> out;
+    for (const Interval &i : words.intervals)
+        if (!PhoneSet::isSilence(i.label))
+            out.push_back(i.label);
+    return out;
+}
+
+void checkContiguous(const Tier &tier, double end)
+{
+    QVERIFY(!tier.intervals.empty());
+    QCOMPARE(tier.intervals.front().start, 0.0);
+    for (size_t i = 1; i < tier.intervals.size(); ++i)
+        QCOMPARE(tier.intervals[i].start, tier.intervals[i - 1].end);
+    QVERIFY(std::abs(tier.intervals.back().end - end) < 0.02);
+}
+
+// The choice of the current data row of choices_data().
+AlignerChoice rowChoice()
+{
+    QFETCH(QString, model);
+    QFETCH(bool, adapt);
+    return AlignerChoice{model.toStdString(), adapt};
+}
+
+} // namespace
+
+class TestAlignerFactory : public QObject
+{
+    Q_OBJECT
+private slots:
+    void choices_data()
+    {
+        QTest::addColumn<QString>("model");
+        QTest::addColumn<bool>("adapt");
+        QTest::newRow("shipped") << QString() << false;
+        QTest::newRow("model file, adapted") << QString::fromStdString(kShippedModel) << true;
+        QTest::newRow("sphinx") << QStringLiteral("sphinx") << false;
+        QTest::newRow("sphinx, adapted") << QStringLiteral("sphinx:") + SphinxAligner::kDefaultModelDir << true;
+    }
+
+    void choices()
+    {
+        const AlignerChoice choice = rowChoice();
+        if (choice.isSphinx() && !SphinxAligner::available())
+            QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");
+        const std::unique_ptr<Aligner> aligner = createAligner(choice);
+        if (choice.isSphinx()) {
+            QCOMPARE(aligner->name(), std::string("sphinx:") + SphinxAligner::kDefaultModelDir);
+            QVERIFY(!aligner->acousticModel());
+        } else {
+            QVERIFY2(aligner->name().size() >= 15 && aligner->name().substr(aligner->name().size() - 15) == "grid-s1.aligner",
+                     aligner->name().c_str());
+            QVERIFY(aligner->acousticModel());
+        }
+
+        const Transcript transcript = readTranscript(kClip + ".align");
+        const Lexicon lexicon(&PronunciationDictionary::cmu());
+        const AlignerOutput out = aligner->align(kClip + ".mpg", transcript.words, lexicon);
+        QCOMPARE(spokenWords(out.alignment.words), spokenWords(transcript.timing));
+        QVERIFY(std::abs(out.duration - 2.96) < 0.02);
+        checkContiguous(out.alignment.words, out.duration);
+        checkContiguous(out.alignment.phones, out.duration);
+        QCOMPARE(out.adaptation.logLikelihoodPerFrame.empty(), !choice.adapt || choice.isSphinx());
+
+        // The user fixed "at" (one word of the six): re-aligning everything else keeps it.
+        AlignmentResult edited = out.alignment;
+        Interval fixed;
+        for (Interval &i : edited.words.intervals)
+            if (i.label == "at") {
+                i.userEdited = true;
+                fixed = i;
+            }
+        QVERIFY(fixed.userEdited);
+        const Realignment realignment(edited.words, edited.phones,
+                                      Realignment::freeStretches(edited.words, edited.phones, 0.0, 3.0));
+        const AlignerOutput again = aligner->realign(kClip + ".mpg", realignment, lexicon);
+        QCOMPARE(spokenWords(again.alignment.words), spokenWords(transcript.timing));
+        bool kept = false;
+        for (const Interval &i : again.alignment.words.intervals)
+            kept = kept || (i.label == "at" && i.start == fixed.start && i.end == fixed.end);
+        QVERIFY(kept);
+        checkContiguous(again.alignment.phones, out.duration);
+    }
+
+    void aTranscriptThatCannotFitNamesMediaAndTranscript_data() { choices_data(); }
+    void aTranscriptThatCannotFitNamesMediaAndTranscript()
+    {
+        const AlignerChoice choice = rowChoice();
+        if (choice.isSphinx() && !SphinxAligner::available())
+            QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");
+        const std::unique_ptr<Aligner> aligner = createAligner(choice);
+        std::vector<std::string> words;
+        for (int i = 0; i < 40; ++i)
+            words.insert(words.end(), {"bin", "blue", "at", "f", "two", "now"});
+        try {
+            aligner->align(kClip + ".mpg", words, Lexicon(&PronunciationDictionary::cmu()), nullptr, "long.txt");
+            QFAIL("240 words fit 3 s");
+        } catch (const Error &e) {
+            QCOMPARE(e.file(), kClip + ".mpg");
+            QVERIFY2(e.reason().find("(transcript long.txt)") != std::string::npos, e.what());
+        }
+    }
+
+    void missingModelsAreNamed()
+    {
+        for (const std::string &model : {std::string("/nonexistent/x.aligner"), std::string("sphinx:/nonexistent/en-us")}) {
+            try {
+                createAligner(AlignerChoice{model, false});
+                QFAIL(model.c_str());
+            } catch (const Error &e) {
+                QVERIFY2(e.file().find("/nonexistent/") == 0, e.what());
+            }
+        }
+    }
+
+    void cacheSharesOneAlignerPerChoiceAndRetriesFailures()
+    {
+        AlignerCache cache;
+        const std::shared_ptr<const Aligner> a = cache.get(AlignerChoice{});
+        QCOMPARE(cache.get(AlignerChoice{}).get(), a.get());
+        QVERIFY(cache.get(AlignerChoice{"", true}).get() != a.get());
+        for (int attempt = 0; attempt < 2; ++attempt)
+            QVERIFY_THROWS_EXCEPTION(Error, cache.get(AlignerChoice{"/nonexistent/x.aligner", false}));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestAlignerFactory)
+#include "tst_alignerfactory.moc"
