@@ -1,17 +1,25 @@
 // lipsync align MEDIA --transcript FILE --out FILE.TextGrid [--aligner MODEL|sphinx[:DIR]] [--adapt]
 //               [--project DIR] [--pronunciations DICT] [--json]
+// lipsync align FOLDER|PROJECT --out DIR [--transcript DIR] [-j N] [--force] [...]
 // Forced alignment of one recording: writes a TextGrid with tiers "words" and "phones". The aligner
 // and the pronunciations are SpeechAligner's shared options (the same as `lipsync render`'s);
-// --json adds per-video-frame labels and the words espeak-ng guessed.
+// --json adds per-video-frame labels and the words espeak-ng guessed. The folder form aligns every
+// recording of a media folder or project into DIR/ID.TextGrid (BatchRunner), for `lipsync project
+// import --alignments DIR`.
+#include "BatchRunner.h"
 #include "CommandLine.h"
 #include "SpeechAligner.h"
 
 #include "align/FrameLabels.h"
+#include "align/Lexicon.h"
 #include "io/MediaInfo.h"
 #include "io/TextGrid.h"
 #include "io/Transcript.h"
+#include "util/Error.h"
 
+#include <QDir>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QJsonArray>
 
 #include <cstdio>
@@ -29,55 +37,104 @@ QJsonArray tierJson(const Tier &tier)
     return out;
 }
 
-int runAlign(const cli::CommandLine &a)
+// Aligns `media` to `words` and writes the TextGrid `out`; the --json report of one recording.
+QJsonObject alignOne(const cli::SpeechAligner &aligner, const QString &media, const std::vector<std::string> &words,
+                     const QString &transcriptPath, const QString &out, Feedback *feedback)
 {
-    const QString media = a.positional().front();
     QElapsedTimer timer;
     timer.start();
-    const cli::SpeechAligner aligner(a);
-    const Transcript transcript = readTranscript(a.value("transcript").toStdString());
-    const AlignerOutput aligned = aligner.align(media, transcript.words, a.value("transcript"));
+    const AlignerOutput aligned = aligner.align(media, words, transcriptPath, feedback);
     const AlignmentResult &result = aligned.alignment;
-    const double duration = aligned.duration;
-    writeTextGrid(a.value("out").toStdString(), makeTextGrid({result.words, result.phones}, duration));
-    const double seconds = timer.elapsed() / 1000.0;
+    // Per-video-frame phone labels (docs/models.md §0 voting) when the media has a readable video
+    // stream (the sound of a damaged video may still align).
+    QJsonArray frameLabels;
+    double frameRate = 0;
+    MediaInfo info;
+    try {
+        info = MediaInfo::probe(media.toStdString());
+    } catch (const Error &) {
+        info.hasVideo = false;
+    }
+    if (info.hasVideo && info.frameRate > 0) {
+        frameRate = info.frameRate;
+        for (const std::string &label : voteFrameLabels(result.phones, info.frameRate, info.frameCount, aligned.audioFrames))
+            frameLabels.append(QString::fromStdString(label));
+    }
+    writeTextGrid(out.toStdString(), makeTextGrid({result.words, result.phones}, aligned.duration));
+    QJsonArray adaptationLogLikelihoods;
+    for (double l : aligned.adaptation.logLikelihoodPerFrame)
+        adaptationLogLikelihoods.append(l);
+    QJsonArray guessed;
+    for (const auto &[word, phones] : aligner.lexicon().guessed(words))
+        guessed.append(QJsonObject{{QStringLiteral("word"), QString::fromStdString(word)},
+                                   {QStringLiteral("phones"), QString::fromStdString(PronunciationDictionary::toString(phones))}});
+    return QJsonObject{
+        {QStringLiteral("guessed"), guessed},
+        {QStringLiteral("adaptationLogLikelihoodPerFrame"), adaptationLogLikelihoods},
+        {QStringLiteral("frameRate"), frameRate},
+        {QStringLiteral("frameLabels"), frameLabels},
+        {QStringLiteral("media"), media},
+        {QStringLiteral("model"), aligner.modelName()},
+        {QStringLiteral("out"), out},
+        {QStringLiteral("duration"), aligned.duration},
+        {QStringLiteral("frames"), result.frames},
+        {QStringLiteral("logLikelihood"), result.logLikelihood},
+        {QStringLiteral("seconds"), timer.elapsed() / 1000.0},
+        {QStringLiteral("wordCount"), int(words.size())},
+        {QStringLiteral("words"), tierJson(result.words)},
+        {QStringLiteral("phones"), tierJson(result.phones)},
+    };
+}
+
+// Every recording of a media folder or a project, into `--out` DIR/ID.TextGrid.
+int alignFolder(const cli::CommandLine &a, const cli::SpeechAligner &aligner)
+{
+    const QString folder = a.positional().front();
+    const QString transcripts = a.value("transcript");
+    if (!transcripts.isEmpty() && !QFileInfo(transcripts).isDir())
+        throw cli::UsageError(QStringLiteral("with a folder to align, --transcript names the folder of the transcripts"));
+    const QDir out = cli::batchOutputFolder(a);
+    const std::vector<cli::BatchRecording> recordings = cli::batchRecordings(folder, transcripts);
+    std::vector<cli::BatchJob> jobs;
+    for (const cli::BatchRecording &r : recordings) {
+        const QString transcript = r.transcriptFile.isEmpty() ? r.project : r.transcriptFile;
+        jobs.push_back({r.id, r.media, {r.media, transcript, aligner.modelFile()}, out.filePath(r.id + ".TextGrid")});
+    }
+    const cli::BatchRunner runner(a);
+    const QJsonObject summary = runner.run(jobs, [&](const cli::BatchJob &job, Feedback &feedback) {
+        const cli::BatchRecording &r = recordings[size_t(&job - jobs.data())];
+        if (r.transcriptFile.isEmpty() && r.transcript.empty())
+            throw Error(r.project.isEmpty() ? "no transcript of the same name (.align, .TextGrid, .lab, .txt, .srt, .vtt)"
+                                            : "the sequence has no transcript",
+                        r.media.toStdString());
+        const std::vector<std::string> words = r.transcriptFile.isEmpty()
+                                                   ? Lexicon::splitWords(r.transcript)
+                                                   : readTranscript(r.transcriptFile.toStdString()).words;
+        QJsonObject result = alignOne(aligner, r.media, words, r.transcriptFile, job.output, &feedback);
+        // The summary keeps what a project import needs, not every interval.
+        for (const char *key : {"words", "phones", "frameLabels", "adaptationLogLikelihoodPerFrame"})
+            result.remove(QLatin1String(key));
+        return result;
+    });
+    return runner.finish(summary, QStringLiteral("aligned"));
+}
+
+int runAlign(const cli::CommandLine &a)
+{
+    const cli::SpeechAligner aligner(a);
+    if (cli::isBatchInput(a.positional().front()))
+        return alignFolder(a, aligner);
+    const QString media = a.positional().front();
+    if (!a.isSet("transcript"))
+        throw cli::UsageError(QStringLiteral("--transcript FILE is needed to align one recording"));
+    const Transcript transcript = readTranscript(a.value("transcript").toStdString());
+    const QJsonObject result = alignOne(aligner, media, transcript.words, a.value("transcript"), a.value("out"), nullptr);
     if (a.isSet("json")) {
-        // Per-video-frame phone labels (docs/models.md §0 voting) when the media has video.
-        QJsonArray frameLabels;
-        double frameRate = 0;
-        const MediaInfo info = MediaInfo::probe(media.toStdString());
-        if (info.hasVideo && info.frameRate > 0) {
-            frameRate = info.frameRate;
-            for (const std::string &label :
-                 voteFrameLabels(result.phones, info.frameRate, info.frameCount, aligned.audioFrames))
-                frameLabels.append(QString::fromStdString(label));
-        }
-        QJsonArray adaptationLogLikelihoods;
-        for (double l : aligned.adaptation.logLikelihoodPerFrame)
-            adaptationLogLikelihoods.append(l);
-        QJsonArray guessed;
-        for (const auto &[word, phones] : aligner.lexicon().guessed(transcript.words))
-            guessed.append(QJsonObject{{QStringLiteral("word"), QString::fromStdString(word)},
-                                       {QStringLiteral("phones"),
-                                        QString::fromStdString(PronunciationDictionary::toString(phones))}});
-        cli::printJson(QJsonObject{
-            {QStringLiteral("guessed"), guessed},
-            {QStringLiteral("adaptationLogLikelihoodPerFrame"), adaptationLogLikelihoods},
-            {QStringLiteral("frameRate"), frameRate},
-            {QStringLiteral("frameLabels"), frameLabels},
-            {QStringLiteral("media"), media},
-            {QStringLiteral("model"), aligner.modelName()},
-            {QStringLiteral("out"), a.value("out")},
-            {QStringLiteral("duration"), duration},
-            {QStringLiteral("frames"), result.frames},
-            {QStringLiteral("logLikelihood"), result.logLikelihood},
-            {QStringLiteral("seconds"), seconds},
-            {QStringLiteral("words"), tierJson(result.words)},
-            {QStringLiteral("phones"), tierJson(result.phones)},
-        });
+        cli::printJson(result);
     } else {
-        std::printf("aligned %zu words, %zu phones of %s in %.2f s -> %s\n", transcript.words.size(),
-                    result.phones.intervals.size(), qPrintable(media), seconds, qPrintable(a.value("out")));
+        std::printf("aligned %zu words, %lld phones of %s in %.2f s -> %s\n", transcript.words.size(),
+                    static_cast<long long>(result.value("phones").toArray().size()), qPrintable(media), result.value("seconds").toDouble(),
+                    qPrintable(a.value("out")));
     }
     return 0;
 }
@@ -88,13 +145,22 @@ const cli::CommandRegistration registration{
         QStringLiteral("forced alignment of a recording to its transcript (TextGrid)"),
         QStringLiteral("Forced alignment of one recording to its transcript; writes a TextGrid with tiers \"words\" "
                        "and \"phones\". Words are pronounced from --pronunciations, the project's pronunciations "
-                       "(--project), the CMU dictionary, then espeak-ng; --json lists the words espeak-ng guessed."),
-        {{QStringLiteral("transcript"), QStringLiteral("FILE"),
-          QStringLiteral("the words spoken (.align, .lab, .txt, a TextGrid words tier, or .srt/.vtt subtitles)"), {}, cli::CommandOption::Required},
-         {QStringLiteral("out"), QStringLiteral("FILE.TextGrid"), QStringLiteral("the TextGrid to write"), {},
+                       "(--project), the CMU dictionary, then espeak-ng; --json lists the words espeak-ng guessed.\n"
+                       "Given a folder of recordings (transcripts of the same name beside them, or in the folder "
+                       "--transcript names) or a project folder, aligns every one in this process into --out "
+                       "DIR/NAME.TextGrid, for `lipsync project import PROJECT --alignments DIR`: -j at a time, "
+                       "skipping those whose TextGrid is newer than their media, transcript and aligner model, "
+                       "with progress on stderr and a list of the failures at the end (exit code 1 if any)."),
+        {{QStringLiteral("transcript"), QStringLiteral("FILE|DIR"),
+          QStringLiteral("the words spoken (.align, .lab, .txt, a TextGrid words tier, or .srt/.vtt subtitles); "
+                         "with a folder to align, the folder of the transcripts (default: beside the media)")},
+         {QStringLiteral("out"), QStringLiteral("FILE.TextGrid|DIR"),
+          QStringLiteral("the TextGrid to write; with a folder to align, the folder of the TextGrids"), {},
           cli::CommandOption::Required}},
-        {{QStringLiteral("MEDIA"), QStringLiteral("the recording: any audio or video file with speech")}}}
-        .add(cli::SpeechAligner::options({QStringLiteral("model")})),
+        {{QStringLiteral("MEDIA"), QStringLiteral("the recording (any audio or video file with speech), or a folder of "
+                                                  "them, or a project folder")}}}
+        .add(cli::SpeechAligner::options({QStringLiteral("model")}))
+        .add(cli::batchOptions()),
     &runAlign};
 
 } // namespace

@@ -2,6 +2,7 @@
 
 #include "align/AlignerUtterance.h"
 #include "align/ShippedAlignerModel.h"
+#include "io/MediaFolder.h"
 #include "io/Transcript.h"
 #include "util/Error.h"
 
@@ -61,22 +62,7 @@ std::vector<CommandOption> transcribedFolderOptions()
             pronunciationsOption()};
 }
 
-QStringList alignerMediaFilters()
-{
-    return {QStringLiteral("*.mpg"), QStringLiteral("*.mp4"), QStringLiteral("*.mov"), QStringLiteral("*.avi"),
-            QStringLiteral("*.mkv"), QStringLiteral("*.wav"), QStringLiteral("*.flac"), QStringLiteral("*.mp3"),
-            QStringLiteral("*.ogg"), QStringLiteral("*.m4a")};
-}
-
 namespace {
-
-QString findTranscript(const QDir &dir, const QString &stem)
-{
-    for (const std::string &ext : transcriptExtensions())
-        for (const QString &candidate : dir.entryList({stem + QString::fromStdString(ext)}, QDir::Files))
-            return dir.filePath(candidate); // entryList matches case-insensitively on the pattern
-    return {};
-}
 
 struct Job
 {
@@ -93,19 +79,18 @@ std::vector<TrainingUtterance> loadTranscribedFolder(const QString &mediaPath, c
                                                      const AcousticModel &model, const Lexicon &lexicon,
                                                      bool quiet, QJsonArray &skipped)
 {
-    const QDir mediaDir(mediaPath), transcriptDir(transcriptPath);
     std::vector<Job> jobs;
-    for (const QString &name : mediaDir.entryList(alignerMediaFilters(), QDir::Files, QDir::Name)) {
+    for (const MediaFile &file : listMediaFolder(mediaPath.toStdString(), transcriptPath.toStdString())) {
         Job job;
-        job.id = QFileInfo(name).completeBaseName();
-        job.media = mediaDir.filePath(name);
-        job.transcript = findTranscript(transcriptDir, job.id);
+        job.id = QString::fromStdString(file.id);
+        job.media = QString::fromStdString(file.path);
+        job.transcript = QString::fromStdString(file.transcript);
         if (job.transcript.isEmpty())
-            job.error = QStringLiteral("no transcript %1.{align,TextGrid,lab,txt} in %2").arg(job.id, transcriptDir.path());
+            job.error = QStringLiteral("no transcript %1.{align,TextGrid,lab,txt,srt,vtt} in %2").arg(job.id, transcriptPath);
         jobs.push_back(std::move(job));
     }
     if (jobs.empty())
-        throw Error("no media files", mediaDir.path().toStdString());
+        throw Error("no media files (" + mediaExtensionList() + ")", mediaPath.toStdString());
     // Decoding and features in parallel; each failure stays with its recording.
     QtConcurrent::blockingMap(jobs, [&](Job &job) {
         if (!job.error.isEmpty())

@@ -33,12 +33,9 @@ CommandOption pronunciationsOption();
 // --media DIR, --transcripts DIR and --pronunciations DICT: what loadTranscribedFolder() reads.
 std::vector<CommandOption> transcribedFolderOptions();
 
-// Media file extensions the aligner accepts in a folder.
-QStringList alignerMediaFilters();
-
 // The transcribed recordings of a folder (`aligner train`, `aligner adapt`): every media file in
-// `mediaDir` with a transcript of the same name (.align, .TextGrid, .lab or .txt) in
-// `transcriptDir`, decoded and turned into features as `model` computes them, in parallel.
+// `mediaDir` (io/MediaFolder) with a transcript of the same name in `transcriptDir`, decoded and
+// turned into features as `model` computes them, in parallel.
 // Recordings that cannot be used (no transcript, unknown words, undecodable or silent audio) go
 // to `skipped` ({id, reason}), also printed to stderr unless `quiet`. Throws lipsync::Error naming
 // the folder when it has no media files.

@@ -40,7 +40,11 @@ QString dashed(const QString &name)
 
 QString optionSyntax(const CommandOption &option)
 {
-    QString syntax = option.name == QLatin1String("help") ? QStringLiteral("-h, --help") : dashed(option.name);
+    // A one-letter alias goes first: "-h, --help", "-j, --jobs N".
+    QString syntax = dashed(option.name);
+    for (const QString &alias : option.aliases)
+        if (alias.size() == 1)
+            syntax = dashed(alias) + QStringLiteral(", ") + syntax;
     if (!option.valueName.isEmpty())
         syntax += QLatin1Char(' ') + option.valueName;
     return syntax;

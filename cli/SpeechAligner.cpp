@@ -39,10 +39,16 @@ SpeechAligner::SpeechAligner(const CommandLine &args)
 
 SpeechAligner::~SpeechAligner() = default;
 
-AlignerOutput SpeechAligner::align(const QString &mediaPath, const std::vector<std::string> &words,
-                                   const QString &transcriptPath) const
+QString SpeechAligner::modelFile() const
 {
-    return m_aligner->align(mediaPath.toStdString(), words, *m_lexicon, nullptr, transcriptPath.toStdString());
+    const QString name = modelName();
+    return name.startsWith(QLatin1String("sphinx:")) ? name.mid(7) + QStringLiteral("/mdef") : name;
+}
+
+AlignerOutput SpeechAligner::align(const QString &mediaPath, const std::vector<std::string> &words,
+                                   const QString &transcriptPath, Feedback *feedback) const
+{
+    return m_aligner->align(mediaPath.toStdString(), words, *m_lexicon, feedback, transcriptPath.toStdString());
 }
 
 } // namespace lipsync::cli

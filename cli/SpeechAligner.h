@@ -30,12 +30,14 @@ public:
 
     // "sphinx:DIR" or the path of our model file.
     QString modelName() const { return QString::fromStdString(m_aligner->name()); }
+    // The file the model is read from (CMU Sphinx's: its folder's mdef), for up-to-date checks.
+    QString modelFile() const;
     const Lexicon &lexicon() const { return *m_lexicon; }
 
     // Aligns the recording at `mediaPath` to `words`. Throws lipsync::Error naming the media (and
     // `transcriptPath` when the words do not fit the audio).
     AlignerOutput align(const QString &mediaPath, const std::vector<std::string> &words,
-                        const QString &transcriptPath) const;
+                        const QString &transcriptPath, Feedback *feedback = nullptr) const;
 
 private:
     std::unique_ptr<Aligner> m_aligner;

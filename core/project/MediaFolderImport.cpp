@@ -3,6 +3,7 @@
 
 #include "io/AtomicFile.h"
 #include "io/GridAlign.h"
+#include "io/MediaFolder.h"
 #include "io/MediaInfo.h"
 #include "io/Transcript.h"
 #include "util/Error.h"
@@ -17,31 +18,20 @@ namespace lipsync {
 
 namespace {
 
-const QStringList kMediaSuffixes{"mpg", "mp4", "mov", "avi", "mkv", "wav"};
-
-// Reads <stem>.align (words with timings), else <stem>.lab / <stem>.txt (plain words), else the
-// spoken words of <stem>.srt / <stem>.vtt (subtitles).
-void readSequenceTranscript(const QDir &dir, const QString &stem, Sequence &sequence)
+// The transcript of a sequence: an .align file's words with their timings; an .lab or .txt file's
+// text as it is; the spoken words of subtitles or a TextGrid's word tier.
+void readSequenceTranscript(const std::string &path, Sequence &sequence)
 {
-    const QString align = dir.filePath(stem + QLatin1String(".align"));
-    if (QFileInfo(align).isFile()) {
-        sequence.words = readGridAlign(align.toStdString());
+    const QString suffix = QFileInfo(QString::fromStdString(path)).suffix().toLower();
+    if (suffix == QLatin1String("align")) {
+        sequence.words = readGridAlign(path);
         sequence.words.name = "words";
         sequence.transcript = transcriptFromTier(sequence.words);
-        return;
-    }
-    for (const QString suffix : {QStringLiteral(".lab"), QStringLiteral(".txt"), QStringLiteral(".srt"),
-                                 QStringLiteral(".vtt")}) {
-        const QString path = dir.filePath(stem + suffix);
-        if (!QFileInfo(path).isFile())
-            continue;
-        if (suffix == QLatin1String(".srt") || suffix == QLatin1String(".vtt")) {
-            sequence.transcript = readTranscript(path.toStdString()).text(); // the cues' spoken words
-        } else {
-            const std::string text = readWholeFile(path.toStdString());
-            sequence.transcript = QString::fromUtf8(text.data(), qsizetype(text.size())).simplified().toStdString();
-        }
-        return;
+    } else if (suffix == QLatin1String("lab") || suffix == QLatin1String("txt")) {
+        const std::string text = readWholeFile(path);
+        sequence.transcript = QString::fromUtf8(text.data(), qsizetype(text.size())).simplified().toStdString();
+    } else {
+        sequence.transcript = readTranscript(path).text();
     }
 }
 
@@ -60,24 +50,21 @@ Project Project::fromMediaFolder(const std::string &mediaFolder, const std::stri
     project.name = QFileInfo(projectDir).fileName().toStdString();
 
     std::set<std::string> ids;
-    const QFileInfoList files = dir.entryInfoList(QDir::Files, QDir::Name);
-    for (const QFileInfo &file : files) {
-        // Hidden files would give ids starting with '.', which the manifest rejects.
-        if (!kMediaSuffixes.contains(file.suffix().toLower()) || file.fileName().startsWith('.'))
-            continue;
-        const std::string path = file.absoluteFilePath().toStdString();
+    for (const MediaFile &file : listMediaFolder(mediaFolder)) {
+        const std::string &path = file.path;
         const MediaInfo info = MediaInfo::probe(path);
+        const QFileInfo fileInfo(QString::fromStdString(path));
 
         Sequence s;
-        s.id = file.completeBaseName().toStdString();
+        s.id = file.id;
         // clip.mpg and clip.wav side by side: the second becomes "clip_wav".
         if (!ids.insert(s.id).second) {
             s.id += '_';
-            s.id += file.suffix().toLower().toStdString();
+            s.id += fileInfo.suffix().toLower().toStdString();
             if (!ids.insert(s.id).second)
                 throw Error("two media files give the sequence id '" + s.id + "'", path);
         }
-        s.mediaFile = QDir(projectDir).relativeFilePath(file.absoluteFilePath()).toStdString();
+        s.mediaFile = QDir(projectDir).relativeFilePath(fileInfo.absoluteFilePath()).toStdString();
         if (info.hasVideo) {
             s.frameRate = info.frameRate;
             s.frameCount = info.frameCount;
@@ -87,11 +74,12 @@ Project Project::fromMediaFolder(const std::string &mediaFolder, const std::stri
         }
         if (!(s.frameRate > 0) || !std::isfinite(s.frameRate))
             throw Error("no usable frame rate", path);
-        readSequenceTranscript(dir, file.completeBaseName(), s);
+        if (!file.transcript.empty())
+            readSequenceTranscript(file.transcript, s);
         project.sequences.push_back(std::move(s));
     }
     if (project.sequences.empty())
-        throw Error("no media files (*.mpg, *.mp4, *.mov, *.avi, *.mkv, *.wav)", mediaFolder);
+        throw Error("no media files (" + mediaExtensionList() + ")", mediaFolder);
     return project;
 }
 

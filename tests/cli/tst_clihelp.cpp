@@ -47,7 +47,7 @@ struct HelpOption
 QList<HelpOption> helpOptions(const QString &help)
 {
     QList<HelpOption> options;
-    static const QRegularExpression start(QStringLiteral("^  (?:-h, )?(--[a-z0-9-]+)( \\S+)?"));
+    static const QRegularExpression start(QStringLiteral("^  (?:-[a-z], )?(--[a-z0-9-]+)( \\S+)?"));
     bool inOptions = false;
     for (const QString &line : help.split(QLatin1Char('\n'))) {
         if (line == QLatin1String("options:")) {

@@ -1,0 +1,214 @@
+// The folder and project forms of `align`, `track` and `landmarks detect` (cli/BatchRunner), as a
+// user runs them over a folder of clips: every recording in one process, -j at a time; outputs
+// that are newer than their inputs are skipped and --force redoes them; a clip without a
+// transcript, a truncated video and a file that is not media are failures named in the summary
+// (exit code 1) while the others go on; progress lines on stderr when it is not a terminal.
+#include "CliRun.h"
+
+#include "io/FeatureCsv.h"
+#include "io/GridAlign.h"
+#include "io/TextGrid.h"
+#include "io/Transcript.h"
+#include "project/Project.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <thread>
+
+using lipsync::testing::Run;
+using lipsync::testing::parseJsonObject;
+using lipsync::testing::runLipsync;
+
+using namespace lipsync;
+
+namespace {
+
+const QString kDemo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo");
+const QString kMedia = QStringLiteral(LIPSYNC_TEST_DATA "/media");
+
+bool copy(const QString &from, const QString &to)
+{
+    return QFile::copy(from, to);
+}
+
+// Two demo clips with transcripts, one without, a truncated video with a transcript and a text
+// file named .wav.
+bool makeClipFolder(const QDir &dir)
+{
+    bool ok = true;
+    for (const char *id : {"bbaf2n", "lrik4p"})
+        ok = ok && copy(kDemo + "/media/" + id + ".mpg", dir.filePath(QString(id) + ".mpg"))
+             && copy(kDemo + "/media/" + id + ".align", dir.filePath(QString(id) + ".align"));
+    ok = ok && copy(kDemo + "/media/bgin3a.mpg", dir.filePath("untranscribed.mpg"));
+    ok = ok && copy(kMedia + "/truncated_30pct.mpg", dir.filePath("truncated.mpg"))
+         && copy(kDemo + "/media/bbaf2n.align", dir.filePath("truncated.align"));
+    ok = ok && copy(kMedia + "/text_renamed.mpg", dir.filePath("notmedia.wav"))
+         && copy(kDemo + "/media/bbaf2n.align", dir.filePath("notmedia.align"));
+    return ok;
+}
+
+QStringList failedFiles(const QJsonObject &summary)
+{
+    QStringList out;
+    for (const QJsonValue &f : summary.value("failures").toArray())
+        out << QFileInfo(f["file"].toString()).fileName();
+    out.sort();
+    return out;
+}
+
+// Sets the file's modification time `seconds` from now (for up-to-date checks that do not depend
+// on the file system's time resolution).
+void setModified(const QString &path, int seconds)
+{
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadWrite));
+    QVERIFY(f.setFileTime(QDateTime::currentDateTime().addSecs(seconds), QFileDevice::FileModificationTime));
+}
+
+} // namespace
+
+class TestBatchCli : public QObject
+{
+    Q_OBJECT
+private slots:
+    void alignsAFolderResumesAndNamesFailures()
+    {
+        QTemporaryDir dir;
+        const QDir clips(dir.filePath("clips"));
+        QVERIFY(clips.mkpath(".") && makeClipFolder(clips));
+        const QString out = dir.filePath("aligned");
+        Run r = runLipsync({"align", clips.path(), "--out", out, "-j", "2", "--json"});
+        QCOMPARE(r.exitCode, 1);
+        QJsonObject summary = parseJsonObject(r.out);
+        QCOMPARE(summary.value("jobs").toInt(), 5);
+        QCOMPARE(summary.value("done").toInt(), 2);
+        QCOMPARE(summary.value("failed").toInt(), 3);
+        QCOMPARE(summary.value("threads").toInt(), 2);
+        QCOMPARE(failedFiles(summary), (QStringList{"notmedia.wav", "truncated.mpg", "untranscribed.mpg"}));
+        for (const QJsonValue &f : summary.value("failures").toArray())
+            QVERIFY2(!f["reason"].toString().isEmpty(), qPrintable(f["file"].toString()));
+        // Not a terminal: one line per finished recording.
+        QCOMPARE(r.err.count("\n"), 5);
+        QVERIFY2(r.err.contains("[5/5] "), r.err.constData());
+        for (const char *id : {"bbaf2n", "lrik4p"}) {
+            const TextGrid grid = readTextGrid(QDir(out).filePath(QString(id) + ".TextGrid").toStdString());
+            QVERIFY(grid.tier("words") && grid.tier("phones"));
+            QCOMPARE(transcriptFromTier(*grid.tier("words")),
+                     transcriptFromTier(readTranscript((kDemo + "/media/" + id + ".align").toStdString()).timing));
+        }
+        QVERIFY(!QFile::exists(QDir(out).filePath("truncated.TextGrid")));
+
+        // Again: the two aligned are up to date, the failures are tried again.
+        r = runLipsync({"align", clips.path(), "--out", out, "--json"});
+        summary = parseJsonObject(r.out);
+        QCOMPARE(summary.value("skipped").toInt(), 2);
+        QCOMPARE(summary.value("done").toInt(), 0);
+        QCOMPARE(summary.value("failed").toInt(), 3);
+        // A TextGrid older than its transcript (edited since) is out of date; --force redoes everything.
+        setModified(QDir(out).filePath("lrik4p.TextGrid"), -3600);
+        summary = parseJsonObject(runLipsync({"align", clips.path(), "--out", out, "--json"}).out);
+        QCOMPARE(summary.value("done").toInt(), 1);
+        QCOMPARE(summary.value("results").toArray().at(0)["media"].toString(), clips.filePath("lrik4p.mpg"));
+        summary = parseJsonObject(runLipsync({"align", clips.path(), "--out", out, "--force", "--json"}).out);
+        QCOMPARE(summary.value("done").toInt(), 2);
+
+        // Without failures the exit code is 0, and the plain summary says what was done.
+        for (const char *bad : {"untranscribed.mpg", "truncated.mpg", "notmedia.wav"})
+            QVERIFY(QFile::remove(clips.filePath(bad)));
+        r = runLipsync({"align", clips.path(), "--out", out});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.startsWith("aligned 0 of 2 (2 up to date, 0 failed)"), r.out.constData());
+    }
+
+    // A project's sequences with their transcripts; the TextGrids go back in by `project import`.
+    void alignsAProjectForImport()
+    {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("aligned");
+        const Run r = runLipsync({"align", kDemo, "--out", out, "--aligner", "sphinx", "--json"});
+        if (r.exitCode != 0 && r.err.contains("pocketsphinx-en-us"))
+            QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const Project demo = Project::load(kDemo.toStdString());
+        QCOMPARE(parseJsonObject(r.out).value("done").toInt(), int(demo.sequences.size()));
+        for (const Sequence &s : demo.sequences) {
+            const TextGrid grid = readTextGrid(QDir(out).filePath(QString::fromStdString(s.id) + ".TextGrid").toStdString());
+            QCOMPARE(transcriptFromTier(*grid.tier("words")), s.transcript);
+        }
+    }
+
+    void tracksAFolder()
+    {
+        QTemporaryDir dir;
+        const QDir clips(dir.filePath("clips"));
+        QVERIFY(clips.mkpath(".") && makeClipFolder(clips));
+        const QString out = dir.filePath("features");
+        const QString aam = kDemo + "/aam/demo.aam";
+        Run r = runLipsync({"track", clips.path(), "--aam", aam, "--out", out, "-j", "2", "--json"});
+        QCOMPARE(r.exitCode, 1);
+        QJsonObject summary = parseJsonObject(r.out);
+        QCOMPARE(summary.value("done").toInt(), 3); // a transcript is not needed
+        QCOMPARE(failedFiles(summary), (QStringList{"notmedia.wav", "truncated.mpg"}));
+        for (const char *id : {"bbaf2n", "lrik4p", "untranscribed"}) {
+            const FeatureTable table = readFeatureCsv(QDir(out).filePath(QString(id) + ".csv").toStdString());
+            QCOMPARE(int(table.frames.size()), 75);
+        }
+        // An output older than its video is tracked again.
+        setModified(QDir(out).filePath("bbaf2n.csv"), -3600);
+        summary = parseJsonObject(runLipsync({"track", clips.path(), "--aam", aam, "--out", out, "--json"}).out);
+        QCOMPARE(summary.value("skipped").toInt(), 2);
+        QCOMPARE(summary.value("done").toInt(), 1);
+        r = runLipsync({"track", clips.path(), "--aam", aam, "--out", out, "--points", dir.filePath("p.csv")});
+        QCOMPARE(r.exitCode, 2);
+    }
+
+    void landmarksAFolderOfImagesAndVideos()
+    {
+        QTemporaryDir dir;
+        const QDir input(dir.filePath("input"));
+        QVERIFY(input.mkpath("."));
+        const QDir faces(QStringLiteral(LIPSYNC_TEST_DATA "/faces/grid"));
+        const QStringList images = faces.entryList({"*.jpg"}, QDir::Files, QDir::Name).mid(0, 3);
+        for (const QString &image : images)
+            QVERIFY(copy(faces.filePath(image), input.filePath(image)));
+        QVERIFY(copy(kDemo + "/media/bbaf2n.mpg", input.filePath("bbaf2n.mpg")));
+        const QString out = dir.filePath("points");
+        const Run r = runLipsync({"landmarks", "detect", input.path(), "--out", out, "--frame", "10", "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject summary = parseJsonObject(r.out);
+        QCOMPARE(summary.value("done").toInt(), 4);
+        QStringList written = QDir(out).entryList({"*.pts"}, QDir::Files, QDir::Name);
+        QStringList expected{"bbaf2n.pts"};
+        for (const QString &image : images)
+            expected << QFileInfo(image).completeBaseName() + ".pts";
+        expected.sort();
+        QCOMPARE(written, expected);
+        for (const QJsonValue &result : summary.value("results").toArray())
+            if (result["input"].toString().endsWith(".mpg"))
+                QCOMPARE(result["frame"].toInt(), 10);
+    }
+
+    void helpNamesTheFolderForms_data()
+    {
+        QTest::addColumn<QStringList>("command");
+        QTest::newRow("align") << QStringList{"align"};
+        QTest::newRow("track") << QStringList{"track"};
+        QTest::newRow("landmarks detect") << QStringList{"landmarks", "detect"};
+    }
+
+    void helpNamesTheFolderForms()
+    {
+        QFETCH(QStringList, command);
+        const Run r = runLipsync(command + QStringList{"--help"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.contains("-j, --jobs N") && r.out.contains("--force") && r.out.contains("project folder"),
+                 r.out.constData());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestBatchCli)
+#include "tst_batchcli.moc"
