@@ -3,34 +3,112 @@
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
+#include <algorithm>
 #include <cmath>
+#include <deque>
 
 namespace lipsync {
 
 namespace {
 
-// The compensation y' = m + g (y - m) applied to each frame another streamer emits.
+// The slow part of frame t of a T-frame trajectory whose frames `frame(k)` returns: the mean of
+// the `window` frames centred on it, frames beyond either end taken as the end frame (§5.1). One
+// function for the whole-trajectory and the streaming forms, so both sum in the same order.
+template<class Frame>
+Eigen::VectorXd slowPart(const Frame &frame, Eigen::Index t, Eigen::Index T, int window)
+{
+    const int half = window / 2;
+    Eigen::VectorXd sum = frame(std::clamp<Eigen::Index>(t - half, 0, T - 1));
+    for (int k = -half + 1; k <= half; ++k)
+        sum += frame(std::clamp<Eigen::Index>(t + k, 0, T - 1));
+    return sum / double(window);
+}
+
+// y' = m + g (s - m) + h (y - s) for one frame y with slow part s; window 0: m + g (y - m).
+Eigen::VectorXd compensateFrame(const Eigen::VectorXd &y, const Eigen::VectorXd &slow, const Eigen::VectorXd &mean,
+                                const Eigen::VectorXd &gain, const Eigen::VectorXd &detailGain)
+{
+    if (detailGain.size() == 0)
+        return mean + gain.cwiseProduct(y - mean);
+    return mean + gain.cwiseProduct(slow - mean) + detailGain.cwiseProduct(y - slow);
+}
+
+// The slow parts of every frame of `y` (T x d).
+Eigen::MatrixXd slowParts(const Eigen::MatrixXd &y, int window)
+{
+    Eigen::MatrixXd s(y.rows(), y.cols());
+    auto frame = [&](Eigen::Index k) -> Eigen::VectorXd { return y.row(k).transpose(); };
+    for (Eigen::Index t = 0; t < y.rows(); ++t)
+        s.row(t) = slowPart(frame, t, y.rows(), window).transpose();
+    return s;
+}
+
+// s.d.(a) / s.d.(b) per dimension from their sums of squares, clipped to the gain bounds.
+Eigen::VectorXd gainOf(const Eigen::VectorXd &real, const Eigen::VectorXd &generated)
+{
+    Eigen::VectorXd gain(real.size());
+    for (Eigen::Index k = 0; k < real.size(); ++k)
+        gain[k] = generated[k] > 0.0 ? std::sqrt(real[k] / generated[k]) : 1.0;
+    // A scale of the trajectory, not a new one: bounded both ways.
+    return gain.cwiseMax(DynamicModel::kMinCompensationGain).cwiseMin(DynamicModel::kMaxCompensationGain);
+}
+
+// The compensation applied to each frame another streamer emits. With a window, frame t leaves
+// once the inner streamer has emitted frame t + window / 2 (or has finished).
 class CompensatedStreamer : public StreamingGenerator
 {
 public:
-    CompensatedStreamer(std::unique_ptr<StreamingGenerator> inner, Eigen::VectorXd mean, Eigen::VectorXd gain)
-        : m_inner(std::move(inner)), m_mean(std::move(mean)), m_gain(std::move(gain))
+    CompensatedStreamer(std::unique_ptr<StreamingGenerator> inner, Eigen::VectorXd mean, Eigen::VectorXd gain,
+                        Eigen::VectorXd detailGain, int window)
+        : m_inner(std::move(inner)), m_mean(std::move(mean)), m_gain(std::move(gain)),
+          m_detailGain(std::move(detailGain)), m_half(window / 2), m_window(window), m_frame(m_mean.size())
     {
     }
-    int latency() const override { return m_inner->latency(); }
-    void push(int label) override { m_inner->push(label); }
-    void finish() override { m_inner->finish(); }
-    bool pop(Eigen::Ref<Eigen::VectorXd> frame) override
+    int latency() const override { return m_inner->latency() < 0 ? -1 : m_inner->latency() + m_half; }
+    void push(int label) override
     {
-        if (!m_inner->pop(frame))
-            return false;
-        frame = m_mean + m_gain.cwiseProduct(frame - m_mean);
-        return true;
+        m_inner->push(label);
+        drain();
     }
+    void finish() override
+    {
+        m_inner->finish();
+        m_finished = true;
+        drain();
+    }
+    bool pop(Eigen::Ref<Eigen::VectorXd> frame) override { return m_ready.pop(frame); }
 
 private:
+    // Takes the inner streamer's frames and releases every frame whose window is complete.
+    void drain()
+    {
+        while (m_inner->pop(m_frame)) {
+            m_frames.push_back(m_frame);
+            ++m_received;
+        }
+        while (m_next < m_received && (m_next + m_half < m_received || m_finished)) {
+            const Eigen::Index T = m_finished ? m_received : m_received + m_half + 1; // frames beyond are not needed
+            auto frame = [&](Eigen::Index k) -> Eigen::VectorXd { return m_frames[size_t(k - m_first)]; };
+            const Eigen::VectorXd slow = m_detailGain.size() ? slowPart(frame, m_next, T, m_window) : Eigen::VectorXd();
+            m_ready.push(compensateFrame(frame(m_next), slow, m_mean, m_gain, m_detailGain));
+            ++m_next;
+            // Frames before next - half are no longer in any window (frame 0 stays while it is
+            // the clamped edge).
+            while (m_first < m_next - m_half && m_first + 1 < m_received) {
+                m_frames.pop_front();
+                ++m_first;
+            }
+        }
+    }
+
     std::unique_ptr<StreamingGenerator> m_inner;
-    Eigen::VectorXd m_mean, m_gain;
+    Eigen::VectorXd m_mean, m_gain, m_detailGain;
+    const int m_half, m_window;
+    Eigen::VectorXd m_frame;
+    std::deque<Eigen::VectorXd> m_frames; // inner frames m_first .. m_received - 1
+    Eigen::Index m_first = 0, m_received = 0, m_next = 0;
+    bool m_finished = false;
+    ReadyFrames m_ready;
 };
 
 } // namespace
@@ -41,9 +119,11 @@ void DynamicModel::train(const std::vector<LabelledSequence> &sequences, Feedbac
     fit(sequences, feedback);
     m_mean.resize(0);
     m_gain.resize(0);
+    m_detailGain.resize(0);
+    m_window = 0;
     if (!m_compensate)
         return;
-    // Both spreads about the training mean, pooled over every training frame (§5.1).
+    // The spreads of both bands, about the training mean, pooled over every training frame (§5.1).
     const Eigen::Index d = m_dimension;
     Eigen::VectorXd mean = Eigen::VectorXd::Zero(d);
     double frames = 0.0;
@@ -52,27 +132,42 @@ void DynamicModel::train(const std::vector<LabelledSequence> &sequences, Feedbac
         frames += double(s.features.rows());
     }
     mean /= frames;
-    Eigen::VectorXd real = Eigen::VectorXd::Zero(d), generated = Eigen::VectorXd::Zero(d);
+    const int window = kCompensationWindow;
+    Eigen::VectorXd realSlow = Eigen::VectorXd::Zero(d), generatedSlow = realSlow, realDetail = realSlow,
+                    generatedDetail = realSlow;
     for (const LabelledSequence &s : sequences) {
         feedback.throwIfCanceled();
-        real += (s.features.rowwise() - mean.transpose()).colwise().squaredNorm().transpose();
-        generated += (generateMostLikely(s.labels).rowwise() - mean.transpose()).colwise().squaredNorm().transpose();
+        const Eigen::MatrixXd generated = generateMostLikely(s.labels);
+        const Eigen::MatrixXd real = s.features;
+        const Eigen::MatrixXd sr = slowParts(real, window), sg = slowParts(generated, window);
+        realSlow += (sr.rowwise() - mean.transpose()).colwise().squaredNorm().transpose();
+        generatedSlow += (sg.rowwise() - mean.transpose()).colwise().squaredNorm().transpose();
+        realDetail += (real - sr).colwise().squaredNorm().transpose();
+        generatedDetail += (generated - sg).colwise().squaredNorm().transpose();
     }
-    Eigen::VectorXd gain(d);
-    for (Eigen::Index k = 0; k < d; ++k)
-        gain[k] = generated[k] > 0.0 ? std::sqrt(real[k] / generated[k]) : 1.0;
-    // A scale of the trajectory, not a new one: bounded both ways.
-    m_gain = gain.cwiseMax(kMinCompensationGain).cwiseMin(kMaxCompensationGain);
     m_mean = mean;
+    m_gain = gainOf(realSlow, generatedSlow);
+    m_detailGain = gainOf(realDetail, generatedDetail);
+    m_window = window;
+}
+
+Eigen::MatrixXd DynamicModel::compensate(const Eigen::MatrixXd &y) const
+{
+    if (m_gain.size() == 0)
+        return y;
+    const Eigen::MatrixXd slow = m_window > 0 ? slowParts(y, m_window) : Eigen::MatrixXd();
+    Eigen::MatrixXd out(y.rows(), y.cols());
+    for (Eigen::Index t = 0; t < y.rows(); ++t)
+        out.row(t) = compensateFrame(y.row(t).transpose(), m_window > 0 ? Eigen::VectorXd(slow.row(t).transpose())
+                                                                        : Eigen::VectorXd(),
+                                     m_mean, m_gain, m_detailGain)
+                         .transpose();
+    return out;
 }
 
 Eigen::MatrixXd DynamicModel::generate(const std::vector<int> &labels) const
 {
-    Eigen::MatrixXd y = generateMostLikely(labels);
-    if (m_gain.size() == 0)
-        return y;
-    y = ((y.rowwise() - m_mean.transpose()).array().rowwise() * m_gain.transpose().array()).matrix();
-    return y.rowwise() + m_mean.transpose();
+    return compensate(generateMostLikely(labels));
 }
 
 std::unique_ptr<StreamingGenerator> DynamicModel::streamer() const
@@ -80,16 +175,24 @@ std::unique_ptr<StreamingGenerator> DynamicModel::streamer() const
     std::unique_ptr<StreamingGenerator> inner = makeStreamer();
     if (m_gain.size() == 0)
         return inner;
-    return std::make_unique<CompensatedStreamer>(std::move(inner), m_mean, m_gain);
+    return std::make_unique<CompensatedStreamer>(std::move(inner), m_mean, m_gain, m_detailGain, m_window);
 }
 
-void DynamicModel::setCompensation(const Eigen::VectorXd &mean, const Eigen::VectorXd &gain)
+void DynamicModel::setCompensation(const Eigen::VectorXd &mean, const Eigen::VectorXd &gain,
+                                   const Eigen::VectorXd &detailGain, int window)
 {
     if (mean.size() == 0 && gain.size() == 0) {
         m_mean.resize(0);
         m_gain.resize(0);
+        m_detailGain.resize(0);
+        m_window = 0;
         return;
     }
+    if ((detailGain.size() == 0) != (window == 0) || (window != 0 && (window < 3 || window % 2 == 0)))
+        throw Error("the variance compensation's window must be an odd number of frames from 3, with a detail "
+                    "gain for each dimension (or neither)");
+    if (detailGain.size() != 0 && (detailGain.size() != m_dimension || !detailGain.allFinite() || (detailGain.array() <= 0.0).any()))
+        throw Error("the variance compensation's detail gains must be positive and finite, one per dimension");
     if (mean.size() != m_dimension || gain.size() != m_dimension)
         throw Error("the variance compensation has " + std::to_string(gain.size()) + " gains for "
                     + std::to_string(m_dimension) + " dimensions");
@@ -97,6 +200,8 @@ void DynamicModel::setCompensation(const Eigen::VectorXd &mean, const Eigen::Vec
         throw Error("the variance compensation's gains must be positive and finite");
     m_mean = mean;
     m_gain = gain;
+    m_detailGain = detailGain;
+    m_window = window;
 }
 
 void DynamicModel::setStateCount(int states)

@@ -48,21 +48,33 @@ public:
     // Frame-by-frame generation; equals generate() (exactly for the recursive models).
     std::unique_ptr<StreamingGenerator> streamer() const;
 
-    // Variance compensation (docs/models.md §5.1), as global-variance compensation in HMM speech
-    // synthesis: the most likely trajectory of every model is smoother than the recordings it was
-    // trained on, so its deviations from the training mean m are scaled per dimension by
-    // g = s.d.(training features) / s.d.(trajectories generated for the training labels), both
-    // about m: y' = m + g (y - m). A static per-frame map, so streaming stays exact. Off unless
-    // asked for before train(); the paper's models are the ones without it.
+    // Variance compensation (docs/models.md §5.1), as global-variance compensation and the
+    // modulation-spectrum post-filter of HMM speech synthesis: the most likely trajectory of every
+    // model is smoother than the recordings it was trained on. It is split into its slow part s
+    // (the centred moving average over `window` frames, about a syllable) and the detail y - s;
+    // each is scaled per dimension to the spread the training features have in that band:
+    //   y' = m + g (s - m) + h (y - s),
+    // g = s.d.(slow part of the training features) / s.d.(slow part of the trajectories generated
+    // for the training labels), both about the training mean m, and h likewise for the detail.
+    // Streaming holds window / 2 frames back. Models read from files without `h` (window 0) scale
+    // the whole trajectory by g. Off unless asked for before train(); the paper's models are the
+    // ones without it.
     static constexpr double kMinCompensationGain = 0.5;
     static constexpr double kMaxCompensationGain = 3.0;
+    static constexpr int kCompensationWindow = 7; // frames: 0.28 s at 25 frames/s
     void setVarianceCompensation(bool on) { m_compensate = on; }
     bool compensatesVariance() const { return m_gain.size() > 0; }
     const Eigen::VectorXd &compensationMean() const { return m_mean; }
     const Eigen::VectorXd &compensationGain() const { return m_gain; }
-    // Restores a trained compensation (model files); empty vectors turn it off. Throws
-    // lipsync::Error for sizes other than dimension() or a non-positive gain.
-    void setCompensation(const Eigen::VectorXd &mean, const Eigen::VectorXd &gain);
+    const Eigen::VectorXd &compensationDetailGain() const { return m_detailGain; }
+    int compensationWindow() const { return m_window; }
+    // Restores a trained compensation (model files); empty vectors turn it off, an empty
+    // `detailGain` with window 0 scales the whole trajectory by `gain`. Throws lipsync::Error for
+    // sizes other than dimension(), a non-positive gain or a window that is not odd and > 1.
+    void setCompensation(const Eigen::VectorXd &mean, const Eigen::VectorXd &gain,
+                         const Eigen::VectorXd &detailGain = {}, int window = 0);
+    // The compensation applied to a trajectory (T x d); the identity without one.
+    Eigen::MatrixXd compensate(const Eigen::MatrixXd &trajectory) const;
     // log p(features | labels) in nats, the model's own objective (for Brand: the density over
     // static + delta features [y; Δy], docs/models.md §2.1).
     virtual double logLikelihood(const std::vector<int> &labels,
@@ -95,6 +107,8 @@ private:
     bool m_compensate = false;
     Eigen::VectorXd m_mean; // compensation: training mean m and gain g (empty: none)
     Eigen::VectorXd m_gain;
+    Eigen::VectorXd m_detailGain; // h, empty with m_window 0
+    int m_window = 0;
 };
 
 } // namespace lipsync

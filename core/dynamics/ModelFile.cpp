@@ -64,9 +64,15 @@ void saveModel(const DynamicModel &model, const std::string &path, const std::st
     o[QStringLiteral("parameters")] = model.parametersToJson();
     if (const auto *context = dynamic_cast<const ContextDependentModel *>(&model))
         o[QStringLiteral("context")] = context->tree().toJson();
-    if (model.compensatesVariance())
-        o[QStringLiteral("compensation")] = QJsonObject{{QStringLiteral("mean"), json::fromVector(model.compensationMean())},
-                                                        {QStringLiteral("gain"), json::fromVector(model.compensationGain())}};
+    if (model.compensatesVariance()) {
+        QJsonObject c{{QStringLiteral("mean"), json::fromVector(model.compensationMean())},
+                      {QStringLiteral("gain"), json::fromVector(model.compensationGain())}};
+        if (model.compensationWindow() > 0) {
+            c[QStringLiteral("window")] = model.compensationWindow();
+            c[QStringLiteral("detailGain")] = json::fromVector(model.compensationDetailGain());
+        }
+        o[QStringLiteral("compensation")] = c;
+    }
     writeFileAtomically(path, QJsonDocument(o).toJson(QJsonDocument::Compact).toStdString());
 }
 
@@ -122,8 +128,11 @@ std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::str
     if (o.contains(QStringLiteral("compensation"))) {
         const QJsonObject c = o.value(QStringLiteral("compensation")).toObject();
         try {
+            const bool bands = c.contains(QStringLiteral("window"));
             model->setCompensation(json::toVector(c, "mean", model->dimension(), path),
-                                   json::toVector(c, "gain", model->dimension(), path));
+                                   json::toVector(c, "gain", model->dimension(), path),
+                                   bands ? json::toVector(c, "detailGain", model->dimension(), path) : Eigen::VectorXd(),
+                                   bands ? c.value(QStringLiteral("window")).toInt(0) : 0);
         } catch (const Error &e) {
             throw Error(e.reason(), path, "compensation");
         }

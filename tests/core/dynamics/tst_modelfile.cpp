@@ -8,8 +8,12 @@
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <algorithm>
 
 using namespace lipsync;
 using namespace lipsync::test;
@@ -87,6 +91,8 @@ private slots:
         QCOMPARE(loaded->dimension(), 3);
         QCOMPARE(loaded->compensatesVariance(), compensated);
         QCOMPARE(loaded->compensationGain(), model->compensationGain());
+        QCOMPARE(loaded->compensationDetailGain(), model->compensationDetailGain());
+        QCOMPARE(loaded->compensationWindow(), model->compensationWindow());
         if (context) {
             const auto *trained = dynamic_cast<const ContextDependentModel *>(model.get());
             const auto *read = dynamic_cast<const ContextDependentModel *>(loaded.get());
@@ -182,12 +188,25 @@ private slots:
         }
     }
 
-    // Variance compensation (docs/models.md §5.1): trained on the training part alone, the
-    // trajectories generated for the training labels spread about the training mean as much as
-    // the training features do, per dimension (unless a gain reached its bound); without it the
-    // model generates its own most likely trajectory unchanged.
+    // Variance compensation (docs/models.md §5.1), trained on the training part alone: the slow
+    // part (7-frame centred mean, edges clamped) and the detail of the trajectories generated for
+    // the training labels are scaled by the ratio of the training features' spread in that band to
+    // theirs (unless a gain reached its bound), and the generated trajectory is m + g (s - m) +
+    // h (y - s); without it the model generates its own most likely trajectory unchanged.
     void varianceCompensationMatchesTheTrainingSpread()
     {
+        // The slow part as the documentation states it, written out separately from the model's.
+        auto slow = [](const Eigen::MatrixXd &y) {
+            Eigen::MatrixXd s = Eigen::MatrixXd::Zero(y.rows(), y.cols());
+            for (Eigen::Index t = 0; t < y.rows(); ++t)
+                for (Eigen::Index k = t - 3; k <= t + 3; ++k)
+                    s.row(t) += y.row(std::min(std::max<Eigen::Index>(k, 0), y.rows() - 1)) / 7.0;
+            return s;
+        };
+        auto bounded = [](double gain) {
+            return std::clamp(gain, DynamicModel::kMinCompensationGain, DynamicModel::kMaxCompensationGain);
+        };
+        QCOMPARE(DynamicModel::kCompensationWindow, 7);
         for (const std::string &kind : dynamicModelKinds()) {
             ModelOptions options;
             options.slds.maxIterations = 5;
@@ -200,26 +219,36 @@ private slots:
             compensated->train(training, feedback);
             QVERIFY(!plain->compensatesVariance());
             QVERIFY(compensated->compensatesVariance());
+            QCOMPARE(compensated->compensationWindow(), 7);
             const std::vector<int> &labels = training.front().labels;
             QVERIFY(plain->generate(labels) == plain->generateMostLikely(labels));
             QVERIFY(compensated->generateMostLikely(labels) == plain->generateMostLikely(labels));
 
             const Eigen::VectorXd &m = compensated->compensationMean();
-            Eigen::VectorXd real = Eigen::VectorXd::Zero(3), generated = Eigen::VectorXd::Zero(3),
-                            raw = Eigen::VectorXd::Zero(3);
+            Eigen::VectorXd realSlow = Eigen::VectorXd::Zero(3), rawSlow = realSlow, realDetail = realSlow,
+                            rawDetail = realSlow;
             for (const LabelledSequence &s : training) {
-                real += (s.features.rowwise() - m.transpose()).colwise().squaredNorm().transpose();
-                generated += (compensated->generate(s.labels).rowwise() - m.transpose()).colwise().squaredNorm().transpose();
-                raw += (plain->generate(s.labels).rowwise() - m.transpose()).colwise().squaredNorm().transpose();
+                const Eigen::MatrixXd raw = plain->generate(s.labels);
+                const Eigen::MatrixXd sr = slow(s.features), sg = slow(raw);
+                realSlow += (sr.rowwise() - m.transpose()).colwise().squaredNorm().transpose();
+                rawSlow += (sg.rowwise() - m.transpose()).colwise().squaredNorm().transpose();
+                realDetail += (s.features - sr).colwise().squaredNorm().transpose();
+                rawDetail += (raw - sg).colwise().squaredNorm().transpose();
+                const Eigen::VectorXd &g = compensated->compensationGain(), &h = compensated->compensationDetailGain();
+                const Eigen::MatrixXd expected =
+                    (((sg.rowwise() - m.transpose()).array().rowwise() * g.transpose().array())
+                     + ((raw - sg).array().rowwise() * h.transpose().array()))
+                        .matrix()
+                        .rowwise()
+                    + m.transpose();
+                QVERIFY2((compensated->generate(s.labels) - expected).cwiseAbs().maxCoeff() < 1e-9, kind.c_str());
             }
             for (int k = 0; k < 3; ++k) {
-                const double gain = compensated->compensationGain()[k];
-                QVERIFY(gain >= DynamicModel::kMinCompensationGain && gain <= DynamicModel::kMaxCompensationGain);
-                QVERIFY2(std::abs(gain - std::sqrt(real[k] / raw[k])) < 1e-9
-                             || gain == DynamicModel::kMaxCompensationGain || gain == DynamicModel::kMinCompensationGain,
+                QVERIFY2(std::abs(compensated->compensationGain()[k] - bounded(std::sqrt(realSlow[k] / rawSlow[k]))) < 1e-9,
                          kind.c_str());
-                if (gain < DynamicModel::kMaxCompensationGain && gain > DynamicModel::kMinCompensationGain)
-                    QVERIFY2(std::abs(generated[k] / real[k] - 1.0) < 1e-9, kind.c_str());
+                QVERIFY2(std::abs(compensated->compensationDetailGain()[k]
+                                  - bounded(std::sqrt(realDetail[k] / rawDetail[k]))) < 1e-9,
+                         kind.c_str());
             }
         }
         // A damaged compensation in a model file is refused, naming the field.
@@ -229,13 +258,35 @@ private slots:
         QTemporaryDir dir;
         const std::string path = dir.filePath(QStringLiteral("gv.json")).toStdString();
         saveModel(*model, path, "aam");
-        std::string text = readWholeFile(path);
-        const size_t gain = text.find("\"gain\":[");
-        QVERIFY(gain != std::string::npos);
-        text.insert(gain + 8, "-");
-        writeFileAtomically(path, text);
-        const std::string e = errorOf([&] { loadModel(path); });
-        QVERIFY2(e.find("compensation") != std::string::npos && e.find(path) != std::string::npos, e.c_str());
+        const std::string saved = readWholeFile(path);
+        for (const auto &[field, damage] : std::vector<std::pair<std::string, std::string>>{
+                 {"\"gain\":[", "-"}, {"\"detailGain\":[", "-"}, {"\"window\":", "-"}}) {
+            std::string text = saved;
+            const size_t at = text.find(field);
+            QVERIFY2(at != std::string::npos, field.c_str());
+            text.insert(at + field.size(), damage); // a negative gain or window
+            writeFileAtomically(path, text);
+            const std::string e = errorOf([&] { loadModel(path); });
+            QVERIFY2(e.find("compensation") != std::string::npos && e.find(path) != std::string::npos, e.c_str());
+        }
+        // A file with the whole-trajectory compensation alone (mean and gain) scales by the gain.
+        QJsonObject o = QJsonDocument::fromJson(QByteArray::fromStdString(saved)).object();
+        QJsonObject c = o.value("compensation").toObject();
+        c.remove("window");
+        c.remove("detailGain");
+        o["compensation"] = c;
+        writeFileAtomically(path, QJsonDocument(o).toJson().toStdString());
+        const auto single = loadModel(path);
+        QCOMPARE(single->compensationWindow(), 0);
+        const std::vector<int> labels = data().front().labels;
+        const Eigen::MatrixXd y = single->generateMostLikely(labels);
+        const Eigen::MatrixXd expected =
+            ((y.rowwise() - single->compensationMean().transpose()).array().rowwise()
+             * single->compensationGain().transpose().array())
+                .matrix()
+                .rowwise()
+            + single->compensationMean().transpose();
+        QVERIFY((single->generate(labels) - expected).cwiseAbs().maxCoeff() < 1e-12);
     }
 
     void streamingEqualsBatchForAllKinds()
@@ -256,10 +307,18 @@ private slots:
                 Eigen::MatrixXd streamed(batch.rows(), batch.cols());
                 Eigen::VectorXd frame(batch.cols());
                 Eigen::Index next = 0;
-                for (int label : labels) {
-                    stream->push(label);
+                // Without contexts, frame t is out once label t + latency is in (the compensation
+                // holds 3 frames back, Brand's lag more).
+                const int latency = stream->latency();
+                QCOMPARE(latency < 0, context);
+                if (!context && options.compensateVariance)
+                    QVERIFY(latency >= DynamicModel::kCompensationWindow / 2);
+                for (int pushed = 1; pushed <= int(labels.size()); ++pushed) {
+                    stream->push(labels[size_t(pushed) - 1]);
                     while (stream->pop(frame))
                         streamed.row(next++) = frame.transpose();
+                    if (!context)
+                        QCOMPARE(next, Eigen::Index(std::max(0, pushed - latency)));
                 }
                 stream->finish();
                 while (stream->pop(frame))
