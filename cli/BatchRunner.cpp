@@ -133,6 +133,9 @@ std::vector<CommandOption> batchOptions()
          CommandOption::Optional, {QStringLiteral("j")}},
         {QStringLiteral("force"), {},
          QStringLiteral("with a folder: redo recordings whose output is newer than their inputs (skipped otherwise)")},
+        {QStringLiteral("shard"), QStringLiteral("I/N"),
+         QStringLiteral("with a folder: only every N-th recording from the I-th (I = 1..N), for N machines or the "
+                        "tasks of a cluster job array (scripts/cluster)")},
     };
 }
 
@@ -141,17 +144,29 @@ BatchRunner::BatchRunner(const CommandLine &args)
                                                      : std::max(1, int(std::thread::hardware_concurrency()))),
       m_force(args.isSet(QStringLiteral("force"))), m_json(args.isSet(QStringLiteral("json")))
 {
+    if (args.isSet(QStringLiteral("shard"))) {
+        const QStringList parts = args.value(QStringLiteral("shard")).split(QLatin1Char('/'));
+        bool okIndex = false, okCount = false;
+        const int index = parts.size() == 2 ? parts[0].toInt(&okIndex) : 0;
+        const int count = parts.size() == 2 ? parts[1].toInt(&okCount) : 0;
+        if (!okIndex || !okCount || count < 1 || index < 1 || index > count)
+            throw UsageError(QStringLiteral("--shard must be I/N with 1 <= I <= N, not %1").arg(args.value(QStringLiteral("shard"))));
+        m_shard = index - 1;
+        m_shards = count;
+    }
 }
 
 QJsonObject BatchRunner::run(const std::vector<BatchJob> &jobs, const Work &work) const
 {
     const auto start = std::chrono::steady_clock::now();
-    std::vector<size_t> todo;
-    for (size_t i = 0; i < jobs.size(); ++i)
+    std::vector<size_t> mine, todo;
+    for (size_t i = size_t(m_shard); i < jobs.size(); i += size_t(m_shards))
+        mine.push_back(i);
+    for (size_t i : mine)
         if (m_force || !upToDate(jobs[i]))
             todo.push_back(i);
-    const int skipped = int(jobs.size() - todo.size());
-    Progress progress(int(jobs.size()), skipped);
+    const int skipped = int(mine.size() - todo.size());
+    Progress progress(int(mine.size()), skipped);
     std::vector<QJsonObject> results(jobs.size());
     std::vector<QString> problems(jobs.size());
     std::atomic<size_t> next{0};
@@ -189,7 +204,7 @@ QJsonObject BatchRunner::run(const std::vector<BatchJob> &jobs, const Work &work
             done.append(results[i]);
     }
     return QJsonObject{
-        {QStringLiteral("jobs"), int(jobs.size())},
+        {QStringLiteral("jobs"), int(mine.size())},
         {QStringLiteral("done"), int(done.size())},
         {QStringLiteral("skipped"), skipped},
         {QStringLiteral("failed"), int(failures.size())},

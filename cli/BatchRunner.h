@@ -5,6 +5,8 @@
 //    folder of media files (io/MediaFolder, transcripts of the same stem beside them or in
 //    another folder).
 //  - -j N worker threads (default: one per core), each job on one of them.
+//  - --shard I/N: only every N-th recording from the I-th (1-based), for N machines or the
+//    tasks of a cluster job array sharing one folder (scripts/cluster).
 //  - Resumable: a job whose output exists and is newer than every one of its inputs is skipped
 //    (--force redoes it); outputs are written atomically, so a killed run leaves no half files.
 //  - Progress on stderr: a bar with the ETA on a terminal, one line per finished job otherwise.
@@ -57,7 +59,7 @@ struct BatchJob
 // The folder --out names, created if need be; lipsync::Error naming it if it cannot be.
 QDir batchOutputFolder(const CommandLine &args);
 
-// -j/--jobs N and --force, for a command's CommandSpec.
+// -j/--jobs N, --force and --shard I/N, for a command's CommandSpec.
 std::vector<CommandOption> batchOptions();
 
 class BatchRunner
@@ -68,7 +70,7 @@ public:
     // Reads -j, --force and --json from `args`.
     explicit BatchRunner(const CommandLine &args);
 
-    // Runs `work` for every job that is not up to date, `threads()` at a time. `work` throws
+    // Runs `work` for every job of this shard that is not up to date, `threads()` at a time. `work` throws
     // lipsync::Error (or any std::exception) for a failed job; the others go on. Returns
     // {jobs, done, skipped, failed, seconds, failures: [{name, file, reason}], results: [...]}.
     QJsonObject run(const std::vector<BatchJob> &jobs, const Work &work) const;
@@ -80,6 +82,7 @@ public:
 private:
     int m_threads = 1;
     bool m_force = false;
+    int m_shard = 0, m_shards = 1; // 0-based
     bool m_json = false;
 };
 

@@ -3,6 +3,8 @@
 // that are newer than their inputs are skipped and --force redoes them; a clip without a
 // transcript, a truncated video and a file that is not media are failures named in the summary
 // (exit code 1) while the others go on; progress lines on stderr when it is not a terminal.
+// The cluster recipes (scripts/cluster): shards run by GNU parallel, and the tasks of a Slurm job
+// array, give the same files as one run, which `project import` gathers into a project.
 #include "CliRun.h"
 
 #include "io/FeatureCsv.h"
@@ -14,6 +16,8 @@
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
+#include <QProcess>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -190,6 +194,67 @@ private slots:
         for (const QJsonValue &result : summary.value("results").toArray())
             if (result["input"].toString().endsWith(".mpg"))
                 QCOMPARE(result["frame"].toInt(), 10);
+    }
+
+    void shardsOfAClusterGiveTheSameFilesAsOneRun()
+    {
+        QTemporaryDir dir;
+        const QDir clips(dir.filePath("clips"));
+        QVERIFY(clips.mkpath("."));
+        for (const char *id : {"bbaf2n", "lrik4p", "bgin3a", "bwbg8n"})
+            QVERIFY(copy(kDemo + "/media/" + id + ".mpg", clips.filePath(QString(id) + ".mpg"))
+                    && copy(kDemo + "/media/" + id + ".align", clips.filePath(QString(id) + ".align")));
+        const QString whole = dir.filePath("whole");
+        QCOMPARE(runLipsync({"align", clips.path(), "--out", whole}).exitCode, 0);
+        auto sameFiles = [&](const QString &folder) {
+            const QStringList names = QDir(whole).entryList(QDir::Files, QDir::Name);
+            if (names.size() != 4 || QDir(folder).entryList(QDir::Files, QDir::Name) != names)
+                return false;
+            for (const QString &name : names) {
+                QFile a(QDir(whole).filePath(name)), b(QDir(folder).filePath(name));
+                if (!a.open(QIODevice::ReadOnly) || !b.open(QIODevice::ReadOnly) || a.readAll() != b.readAll())
+                    return false;
+            }
+            return true;
+        };
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("LIPSYNC", LIPSYNC_CLI);
+        auto script = [&](const QString &name, const QStringList &args, const QProcessEnvironment &e) {
+            QProcess p;
+            p.setProcessEnvironment(e);
+            p.start("bash", QStringList{QStringLiteral(LIPSYNC_SOURCE_DIR "/scripts/cluster/") + name} + args);
+            p.waitForFinished(120000);
+            return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+        };
+
+        // GNU parallel, 3 shards on this machine, into a folder whose name has a space.
+        if (QStandardPaths::findExecutable("parallel").isEmpty())
+            QSKIP("GNU parallel is not installed (scripts/setup installs it)");
+        const QString parallel = dir.filePath("by parallel");
+        QCOMPARE(script("parallel-batch", {"3", "align", clips.path(), "--out", parallel}, env), 0);
+        QVERIFY(sameFiles(parallel));
+
+        // The 3 tasks of a Slurm job array (what sbatch --array=1-3 sets), one after the other.
+        const QString slurm = dir.filePath("slurm");
+        QVERIFY(script("slurm-batch.sbatch", {"align", clips.path(), "--out", slurm}, env) != 0); // not in an array
+        for (int task = 1; task <= 3; ++task) {
+            QProcessEnvironment e = env;
+            e.insert("SLURM_ARRAY_TASK_ID", QString::number(task));
+            e.insert("SLURM_ARRAY_TASK_COUNT", "3");
+            QCOMPARE(script("slurm-batch.sbatch", {"align", clips.path(), "--out", slurm}, e), 0);
+        }
+        QVERIFY(sameFiles(slurm));
+
+        // A shard out of range is a usage error.
+        QCOMPARE(runLipsync({"align", clips.path(), "--out", slurm, "--shard", "4/3"}).exitCode, 2);
+
+        // Gathered into a project.
+        const QString project = dir.filePath("project");
+        QCOMPARE(runLipsync({"project", "create", "--media", clips.path(), "--out", project}).exitCode, 0);
+        const Run imported = runLipsync({"project", "import", project, "--alignments", slurm});
+        QVERIFY2(imported.exitCode == 0, imported.err.constData());
+        for (const Sequence &s : Project::load(project.toStdString()).sequences)
+            QVERIFY2(!s.phones.intervals.empty(), s.id.c_str());
     }
 
     void helpNamesTheFolderForms_data()
