@@ -116,17 +116,17 @@
 <context>
     <name>SequenceLoader</name>
     <message>
-        <location filename="../studio/app/SequenceLoader.cpp" line="45"/>
+        <location filename="../studio/app/SequenceLoader.cpp" line="46"/>
         <source>Decoding audio</source>
         <translation>Audio wird dekodiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceLoader.cpp" line="60"/>
+        <location filename="../studio/app/SequenceLoader.cpp" line="74"/>
         <source>Reading video frames</source>
         <translation>Videobilder werden gelesen</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceLoader.cpp" line="85"/>
+        <location filename="../studio/app/SequenceLoader.cpp" line="99"/>
         <source>Loading %1</source>
         <translation>%1 wird geladen</translation>
     </message>
@@ -553,38 +553,38 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="232"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="237"/>
         <source>Fit error %1</source>
         <translation>Anpassungsfehler %1</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="233"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="238"/>
         <source>No face found by the tracker</source>
         <translation>Der Tracker hat kein Gesicht gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="257"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="262"/>
         <source>Detect landmarks in %1, frame %2</source>
         <translation>Landmarken in %1, Bild %2 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="259"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="264"/>
         <source>Finding the face…</source>
         <translation>Gesicht wird gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="290"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="295"/>
         <source>Detect landmarks in frame %1</source>
         <translation>Landmarken in Bild %1 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="293"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="298"/>
         <source>No landmarks were detected.</source>
         <translation>Es wurden keine Landmarken erkannt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="311"/>
-        <location filename="../studio/annotate/FacesController.cpp" line="348"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="316"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="353"/>
         <source>Pick %n frame(s) to label</source>
         <translation>
             <numerusform>%n Bild zum Beschriften auswählen</numerusform>
@@ -592,7 +592,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="355"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="360"/>
         <source>Picked %1 of %2 frames with a face from %n clip(s); Shift+W shows them, the most doubtful first, then Build AAM.</source>
         <translation>
             <numerusform>%1 von %2 Bildern mit Gesicht aus einem Clip ausgewählt; Umschalt+W zeigt sie, die zweifelhaftesten zuerst, danach AAM erstellen.</numerusform>
@@ -600,42 +600,42 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="363"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="368"/>
         <source>No frames could be picked.</source>
         <translation>Es konnten keine Bilder ausgewählt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="405"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="410"/>
         <source>Copy points of frame %1 to frame %2</source>
         <translation>Punkte von Bild %1 nach Bild %2 kopieren</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="424"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="429"/>
         <source>Every frame of this sequence is labelled.</source>
         <translation>Alle Bilder dieser Sequenz sind beschriftet.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="434"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="439"/>
         <source>Track this sequence first to rank its frames by fit error.</source>
         <translation>Tracken Sie diese Sequenz zuerst, um ihre Bilder nach Anpassungsfehler zu ordnen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="463"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="468"/>
         <source>The project&apos;s AAM could not be loaded.</source>
         <translation>Das AAM des Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="487"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="492"/>
         <source>An AAM needs at least 3 frames with all 23 points; this project has %1.</source>
         <translation>Ein AAM braucht mindestens 3 Bilder mit allen 23 Punkten; dieses Projekt hat %1.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="489"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="494"/>
         <source>Label more frames (Detect Landmarks, then correct the points).</source>
         <translation>Beschriften Sie weitere Bilder (Landmarken erkennen, dann die Punkte korrigieren).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="498"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="503"/>
         <source>Build AAM from %n frame(s)</source>
         <translation>
             <numerusform>AAM aus %n Bild erstellen</numerusform>
@@ -643,22 +643,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="500"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="505"/>
         <source>Reading the labelled frames…</source>
         <translation>Beschriftete Bilder werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="530"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="535"/>
         <source>Build AAM %1</source>
         <translation>AAM %1 erstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="532"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="537"/>
         <source>AAM %1 built from %2 frames: %3 combined modes%4</source>
         <translation>AAM %1 aus %2 Bildern erstellt: %3 kombinierte Moden%4</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="536"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="541"/>
         <source> (%n frame(s) skipped)</source>
         <translation>
             <numerusform> (%n Bild übersprungen)</numerusform>
@@ -666,27 +666,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="541"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="546"/>
         <source>The AAM could not be built.</source>
         <translation>Das AAM konnte nicht erstellt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="556"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="561"/>
         <source>Tracking needs an AAM.</source>
         <translation>Zum Tracken wird ein AAM benötigt.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="557"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="562"/>
         <source>Label a few frames and choose Faces ▸ Build AAM first.</source>
         <translation>Beschriften Sie einige Bilder und wählen Sie zuerst Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="575"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="580"/>
         <source>Track %1</source>
         <translation>%1 tracken</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="575"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="580"/>
         <source>Track %n sequence(s)</source>
         <translation>
             <numerusform>%n Sequenz tracken</numerusform>
@@ -694,7 +694,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="645"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="650"/>
         <source>Tracking failed.</source>
         <translation>Das Tracking ist fehlgeschlagen.</translation>
     </message>
@@ -1022,11 +1022,16 @@
     </message>
     <message>
         <location filename="../studio/app/MainWindow.cpp" line="480"/>
+        <source>Sound only: no video to show</source>
+        <translation>Nur Ton: kein Video zu zeigen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="482"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="484"/>
+        <location filename="../studio/app/MainWindow.cpp" line="486"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1034,38 +1039,38 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="495"/>
+        <location filename="../studio/app/MainWindow.cpp" line="497"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="496"/>
+        <location filename="../studio/app/MainWindow.cpp" line="498"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="496"/>
+        <location filename="../studio/app/MainWindow.cpp" line="498"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="502"/>
+        <location filename="../studio/app/MainWindow.cpp" line="504"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="521"/>
+        <location filename="../studio/app/MainWindow.cpp" line="523"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="549"/>
-        <location filename="../studio/app/MainWindow.cpp" line="557"/>
+        <location filename="../studio/app/MainWindow.cpp" line="551"/>
+        <location filename="../studio/app/MainWindow.cpp" line="559"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="556"/>
+        <location filename="../studio/app/MainWindow.cpp" line="558"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
@@ -1539,133 +1544,138 @@
 <context>
     <name>lipsync::studio::PreviewPanel</name>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="60"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="67"/>
         <source>Loop selection</source>
         <translation>Auswahl wiederholen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="60"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="67"/>
         <source>Landmarks</source>
         <translation>Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="61"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="68"/>
         <source>Generate from Speech…</source>
         <translation>Aus Sprache erzeugen…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="62"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="69"/>
         <source>Back to Sequence</source>
         <translation>Zurück zur Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="75"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="82"/>
         <source>Previous frame</source>
         <translation>Vorheriges Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="77"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="84"/>
         <source>Next frame</source>
         <translation>Nächstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="81"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="88"/>
         <source>Scrub through the frames</source>
         <translation>Durch die Bilder fahren</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="82"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="89"/>
         <source>Play the timeline&apos;s selection (or everything) over and over</source>
         <translation>Die Auswahl der Zeitleiste (oder alles) immer wieder abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="83"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="90"/>
         <source>Show the tracked points on the recorded video and the generated points on the generated faces</source>
         <translation>Die getrackten Punkte auf dem aufgenommenen Video und die erzeugten Punkte auf den erzeugten Gesichtern zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="84"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="91"/>
         <source>Generate faces for any recording with a transcript</source>
         <translation>Gesichter für eine beliebige Aufnahme mit Transkript erzeugen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="85"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="92"/>
         <source>Show the current sequence again</source>
         <translation>Die aktuelle Sequenz wieder zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="256"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="264"/>
         <source>Prepare the preview of %1</source>
         <translation>Vorschau von %1 vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="285"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="301"/>
         <source>The head could not be tracked: %1</source>
         <translation>Der Kopf konnte nicht getrackt werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="334"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="352"/>
         <source>Recorded video (landmarks: tracked)</source>
         <translation>Aufgenommenes Video (Landmarken: getrackt)</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="339"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="357"/>
         <source>Generated: %1</source>
         <translation>Erzeugt: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="343"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="361"/>
         <source>Generated</source>
         <translation>Erzeugt</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="394"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="412"/>
         <source>The project has no appearance model (Faces ▸ Build AAM).</source>
         <translation>Das Projekt hat kein Erscheinungsmodell (Gesichter ▸ AAM erstellen).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="396"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="414"/>
         <source>Tracking the head pose…</source>
         <translation>Kopfhaltung wird getrackt…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="398"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="416"/>
         <source>This sequence has no phones (align it in the Timeline).</source>
         <translation>Diese Sequenz hat keine Phoneme (in der Zeitleiste alignieren).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="400"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="418"/>
         <source>Train a dynamic model in the Models panel to see the faces it generates.</source>
         <translation>Trainieren Sie ein dynamisches Modell im Bereich „Modelle“, um die erzeugten Gesichter zu sehen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="450"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="424"/>
+        <source>Sound only: no video to show</source>
+        <translation>Nur Ton: kein Video zu zeigen</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="472"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 — Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="559"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="581"/>
         <source>Faces for new speech need the project&apos;s appearance model.</source>
         <translation>Gesichter für neue Sprache brauchen das Erscheinungsmodell des Projekts.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="560"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="582"/>
         <source>Build one with Faces ▸ Build AAM.</source>
         <translation>Erstellen Sie eines mit Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="565"/>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="618"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="587"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="642"/>
         <source>No faces could be generated for this speech.</source>
         <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="566"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="588"/>
         <source>Train a dynamic model in the Models panel first.</source>
         <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="589"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="614"/>
         <source>Generate faces for %1</source>
         <translation>Gesichter für %1 erzeugen</translation>
     </message>
@@ -1946,27 +1956,32 @@
         <translation>Keine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="54"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="55"/>
+        <source>none; %1 frames at %2 fps over the sound</source>
+        <translation>keines; %1 Bilder mit %2 fps über dem Ton</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="59"/>
         <source>%1 frames at %2 fps, %3 × %4</source>
         <translation>%1 Bilder mit %2 fps, %3 × %4</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="60"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="65"/>
         <source>%1 s, decoded at %2 Hz mono</source>
         <translation>%1 s, dekodiert mit %2 Hz mono</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="64"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="69"/>
         <source>none (%1)</source>
         <translation>keiner (%1)</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="68"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="73"/>
         <source>%1 timed words</source>
         <translation>%1 Wörter mit Zeitangaben</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="69"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="74"/>
         <source>%1 of %2 frames</source>
         <translation>%1 von %2 Bildern</translation>
     </message>
@@ -2403,253 +2418,253 @@
 <context>
     <name>lipsync::studio::TimelinePanel</name>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="178"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="182"/>
         <source>Zoom out (wheel down)</source>
         <translation>Verkleinern (Mausrad nach unten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="179"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="183"/>
         <source>Zoom in (wheel up)</source>
         <translation>Vergrößern (Mausrad nach oben)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="180"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="184"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="180"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="184"/>
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="94"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="424"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="429"/>
         <source>Align</source>
         <translation>Ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="94"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
         <source>Align this sequence&apos;s transcript to its audio (words and phones)</source>
         <translation>Das Transkript dieser Sequenz am Ton ausrichten (Wörter und Phone)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
         <source>Align All</source>
         <translation>Alle ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
         <source>Align every sequence that has a transcript</source>
         <translation>Jede Sequenz mit Transkript ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
         <source>Re-align Selection</source>
         <translation>Auswahl neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="98"/>
         <source>Align the selected stretch again, keeping the words whose timing you edited</source>
         <translation>Den ausgewählten Abschnitt neu ausrichten; Wörter mit bearbeitetem Timing bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="101"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="102"/>
         <source>Adapt to Speaker</source>
         <translation>An Sprecher anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="110"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="113"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="111"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="114"/>
         <source>Align with the model shipped with the studio, trained on one GRID speaker</source>
         <translation>Mit dem mitgelieferten Modell ausrichten, trainiert auf einem GRID-Sprecher</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="112"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="115"/>
         <source>Generic US English (CMU Sphinx)</source>
         <translation>Allgemeines US-Englisch (CMU Sphinx)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="113"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="116"/>
         <source>Align with CMU Sphinx&apos;s US-English model trained on many speakers (Debian package pocketsphinx-en-us)</source>
         <translation>Mit dem US-englischen Modell von CMU Sphinx ausrichten, trainiert auf vielen Sprechern (Debian-Paket pocketsphinx-en-us)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
         <source>Split at Cursor</source>
         <translation>Am Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
         <source>Split the interval under the cursor</source>
         <translation>Das Intervall unter dem Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Join the selected interval with the next one</source>
         <translation>Das ausgewählte Intervall mit dem nächsten verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
         <source>Relabel…</source>
         <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
         <source>Change the label of the selected interval</source>
         <translation>Die Beschriftung des ausgewählten Intervalls ändern</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
         <source>Insert Silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
         <source>Make the selection a silence</source>
         <translation>Die Auswahl zur Stille machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
         <source>Insert Breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
         <source>Make the selection a breath</source>
         <translation>Die Auswahl zum Atmer machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="140"/>
         <source>Play Selection</source>
         <translation>Auswahl abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="140"/>
         <source>Play the selected stretch (Space in the timeline)</source>
         <translation>Den ausgewählten Abschnitt abspielen (Leertaste in der Zeitleiste)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="141"/>
         <source>Play Word</source>
         <translation>Wort abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="141"/>
         <source>Play the word under the cursor</source>
         <translation>Das Wort unter dem Cursor abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="142"/>
         <source>Play All</source>
         <translation>Alles abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="142"/>
         <source>Play the whole sequence</source>
         <translation>Die ganze Sequenz abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="143"/>
         <source>Pronunciations…</source>
         <translation>Aussprachen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="140"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="144"/>
         <source>The project&apos;s pronunciations, and the words espeak-ng guessed</source>
         <translation>Die Aussprachen des Projekts und die von espeak-ng geschätzten Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="167"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="171"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="168"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="172"/>
         <source>The acoustic model the aligner uses</source>
         <translation>Das akustische Modell, das die Ausrichtung verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="205"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="209"/>
         <source>Show Spectrogram</source>
         <translation>Spektrogramm anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="206"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="210"/>
         <source>Show the spectrogram under the waveform in the timeline</source>
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="283"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="288"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="302"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="307"/>
         <source>Alignment of the speech in the Preview: %1 (read-only; Back to Sequence there to edit)</source>
         <translation>Alignierung der Sprache in der Vorschau: %1 (schreibgeschützt; dort „Zurück zur Sequenz“ zum Bearbeiten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="317"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="322"/>
         <source>No audio</source>
         <translation>Kein Ton</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="388"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="393"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="401"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="406"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="425"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="430"/>
         <source>The transcript of %1 changed since its boundaries were edited. Aligning it again replaces the edited boundaries. Align anyway?</source>
         <translation>Das Transkript von %1 wurde geändert, nachdem seine Grenzen bearbeitet wurden. Erneutes Alignieren ersetzt die bearbeiteten Grenzen. Trotzdem alignieren?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="436"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="441"/>
         <source>Every word of %1 is user-edited: nothing to align there.</source>
         <translation>Jedes Wort von %1 ist von Hand bearbeitet: Dort gibt es nichts zu alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="457"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="462"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="460"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="465"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="406"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="411"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="102"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="103"/>
         <source>Adapt the aligner to each recording&apos;s voice before aligning it (slower; better for voices unlike the model&apos;s training speakers)</source>
         <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Stimmen, die den Trainingssprechern des Modells unähnlich sind)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="481"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="491"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="506"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="516"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -2657,12 +2672,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="526"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="536"/>
         <source>%1: the alignment came out as it was; nothing changed.</source>
         <translation>%1: Die Alignierung ist unverändert geblieben.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="529"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="539"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -2670,47 +2685,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="568"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="578"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="568"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="578"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="576"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="586"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="586"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="596"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="618"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="628"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="618"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="628"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="677"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="687"/>
         <source>Not one of the 41 phones (ARPAbet, sil, br)</source>
         <translation>Keines der 41 Phone (ARPAbet, sil, br)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="678"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="688"/>
         <source>Enter one word</source>
         <translation>Ein einzelnes Wort eingeben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="686"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="696"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>

@@ -54,8 +54,13 @@ FaceRenderer::FaceRenderer(const AamModel &aam, cv::Size size)
     const Eigen::Vector2d centre = shapeCentroid(mean);
     m_poses = {Similarity{scale, 0.0, 0.5 * size.width - scale * centre.x(),
                           0.5 * size.height - scale * centre.y()}};
+    // The whole mean face (eyes included, no frame to take them from), then each frame's lower
+    // face over it as into a video.
     m_neutral = cv::Mat(size, CV_8UC3, cv::Scalar(128, 128, 128));
-    m_synthesizer.composite(Eigen::VectorXd::Zero(aam.combinedModes()), m_poses[0], m_neutral);
+    CompositeOptions whole;
+    whole.region = FaceRegion::Full;
+    whole.matchColour = false;
+    m_synthesizer.composite(Eigen::VectorXd::Zero(aam.combinedModes()), m_poses[0], m_neutral, whole);
 }
 
 FaceRenderer::FaceRenderer(const AamModel &aam, const std::string &videoPath, Feedback &feedback,

@@ -157,6 +157,7 @@ FacesController::FacesController(StudioContext *context, FrameView *view, QWidge
     connect(doc, &ProjectDocument::sequenceChanged, this, &FacesController::onSequenceChanged);
     connect(doc, &ProjectDocument::modelsChanged, this, &FacesController::onModelsChanged);
     connect(context, &StudioContext::currentFrameChanged, this, &FacesController::refreshFrame);
+    connect(context, &StudioContext::sequenceLoaded, this, &FacesController::updateActions);
     updateActions();
 }
 
@@ -165,9 +166,13 @@ FacesController::~FacesController() = default;
 void FacesController::updateActions()
 {
     const bool open = m_context->document()->isOpen();
-    for (QAction *a : {m_detect, m_copyPrevious, m_nextUnlabelled, m_pickFrames, m_buildAam, m_trackSequence,
-                       m_trackAll})
+    for (QAction *a : {m_pickFrames, m_buildAam, m_trackAll})
         a->setEnabled(open);
+    // A sequence of sound alone has no face to point at or track.
+    const auto media = m_context->media();
+    const bool video = open && !(media && media->audioOnly);
+    for (QAction *a : {m_detect, m_copyPrevious, m_nextUnlabelled, m_trackSequence})
+        a->setEnabled(video);
     m_nextPicked->setEnabled(open && !m_review.empty());
     const ProjectDocument *doc = m_context->document();
     bool tracked = false;
@@ -248,7 +253,7 @@ Task *FacesController::detectLandmarks()
     const int row = m_context->currentSequence();
     const int frame = m_context->currentFrame();
     const auto media = m_context->media();
-    if (row < 0 || !media || frame < 0 || frame >= media->frameCount())
+    if (row < 0 || !media || media->audioOnly || frame < 0 || frame >= media->frameCount())
         return nullptr;
     const cv::Mat image = toBgr(media->frames[frame]);
     const std::shared_ptr<const AamModel> model = this->model();

@@ -477,7 +477,9 @@ void MainWindow::applyMedia(int row, std::shared_ptr<const SequenceMedia> media)
     m_playback->setSequence(shown->mediaPath, frames, shown->frameRate);
 
     showChart(); // the timeline shows the media on sequenceLoaded
-    m_frameView->setPlaceholderText(frames > 0 ? QString() : tr("The video has no frames"));
+    m_frameView->setPlaceholderText(shown->audioOnly ? tr("Sound only: no video to show")
+                                    : frames > 0      ? QString()
+                                                      : tr("The video has no frames"));
     m_details->showSequence(s, shown->mediaPath, *shown);
     setCurrentFrame(0);
     updateTitle();

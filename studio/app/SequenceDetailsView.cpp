@@ -51,11 +51,16 @@ void SequenceDetailsView::showSequence(const Sequence &sequence, const QString &
     m_media->setText(QFileInfo(mediaPath).fileName());
     m_media->setToolTip(QDir::toNativeSeparators(mediaPath));
     const QSize size = media.frames.isEmpty() ? QSize() : media.frames.front().size();
-    m_video->setText(tr("%1 frames at %2 fps, %3 × %4")
-                         .arg(media.frameCount())
-                         .arg(locale.toString(media.frameRate, 'f', 2))
-                         .arg(size.width())
-                         .arg(size.height()));
+    if (media.audioOnly)
+        m_video->setText(tr("none; %1 frames at %2 fps over the sound")
+                             .arg(media.frameCount())
+                             .arg(locale.toString(media.frameRate, 'f', 2)));
+    else
+        m_video->setText(tr("%1 frames at %2 fps, %3 × %4")
+                             .arg(media.frameCount())
+                             .arg(locale.toString(media.frameRate, 'f', 2))
+                             .arg(size.width())
+                             .arg(size.height()));
     if (media.peaks)
         m_audio->setText(tr("%1 s, decoded at %2 Hz mono")
                              .arg(locale.toString(media.peaks->duration(), 'f', 2))

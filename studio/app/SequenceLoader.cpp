@@ -1,6 +1,7 @@
 #include "app/SequenceLoader.h"
 
 #include "io/AudioDecoder.h"
+#include "io/MediaInfo.h"
 #include "io/VideoReader.h"
 #include "tasks/TaskRunner.h"
 #include "util/Error.h"
@@ -57,8 +58,21 @@ void decodeAudio(SequenceMedia &media, Feedback &feedback)
 
 void decodeVideo(SequenceMedia &media, Feedback &feedback)
 {
+    const std::string path = media.mediaPath.toStdString();
+    if (!MediaInfo::probe(path).hasVideo) {
+        // Sound alone (a WAV, an interview's audio track): frames of nothing at the sequence's
+        // rate, so the timeline, the alignment and generated faces work as for a video.
+        if (!media.peaks)
+            throw Error("neither a video stream nor readable sound (" + media.audioError.toStdString() + ")", path);
+        const double seconds = double(media.peaks->samples().size()) / media.peaks->sampleRate();
+        const int count = std::max(1, int(std::lround(seconds * media.frameRate)));
+        media.frames = QVector<QImage>(count);
+        media.audioOnly = true;
+        feedback.setProgress(1.0);
+        return;
+    }
     feedback.setStatus(QCoreApplication::translate("SequenceLoader", "Reading video frames").toStdString());
-    VideoReader reader(media.mediaPath.toStdString());
+    VideoReader reader(path);
     if (reader.frameRate() > 0)
         media.frameRate = reader.frameRate();
     const int count = reader.frameCount();

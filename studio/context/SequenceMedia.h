@@ -18,7 +18,10 @@ struct SequenceMedia
     QString sequenceId;
     QString mediaPath;
     double frameRate = 25.0;
-    QVector<QImage> frames;     // every video frame (downscaled only if the sequence is huge)
+    // Every video frame (downscaled only if the sequence is huge). A recording without video
+    // (audioOnly) has null images at the sequence's frame rate over its sound.
+    QVector<QImage> frames;
+    bool audioOnly = false;
     QVector<QImage> thumbnails; // the same frames, small, for the timeline strip
     std::shared_ptr<const WaveformPeaks> peaks; // null if the file has no readable audio
     std::shared_ptr<const Spectrogram> spectrogram; // of the same audio (timeline lane), or null

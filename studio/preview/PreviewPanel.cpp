@@ -45,6 +45,13 @@ namespace lipsync::studio {
 
 namespace {
 
+// The frame a renderer without a recording draws into: the AAM's mean face on grey.
+QImage neutralFrame(FaceRenderer &renderer)
+{
+    const cv::Mat bgr = renderer.background(0);
+    return QImage(bgr.data, bgr.cols, bgr.rows, int(bgr.step), QImage::Format_BGR888).copy();
+}
+
 // The AAM the project refers to (its file), or "" if it has none.
 std::string projectAamPath(const Project &project)
 {
@@ -252,22 +259,31 @@ void PreviewPanel::prepare()
     // The Faces workflow may have the AAM loaded already.
     std::shared_ptr<const AamModel> aam = m_aam ? m_aam : m_context->modelStore()->aam();
     const std::string mediaPath = media->mediaPath.toStdString();
+    const bool audioOnly = media->audioOnly;
     m_prepareTask = m_context->taskRunner()->start(
         tr("Prepare the preview of %1").arg(id),
-        [this, aam, aamPath, mediaPath, id, epoch = m_epoch](Feedback &feedback) -> TaskRunner::Commit {
+        [this, aam, aamPath, mediaPath, audioOnly, id, epoch = m_epoch](Feedback &feedback) -> TaskRunner::Commit {
             feedback.setStatus("loading the appearance model");
             auto model = aam ? aam : std::make_shared<const AamModel>(AamModel::load(aamPath));
-            FaceDetectorPaths paths;
-            paths.useDlib = false;
-            FaceDetector detector(paths);
-            feedback.setStatus("tracking the head pose");
-            auto renderer = std::make_shared<const FaceRenderer>(*model, mediaPath, feedback, &detector);
-            return [this, model, renderer, id, epoch, aamPath] {
+            std::shared_ptr<FaceRenderer> renderer;
+            QImage fixedFrame;
+            if (audioOnly) {
+                // No head to track: the mean face on grey.
+                renderer = std::make_shared<FaceRenderer>(*model);
+                fixedFrame = neutralFrame(*renderer);
+            } else {
+                FaceDetectorPaths paths;
+                paths.useDlib = false;
+                FaceDetector detector(paths);
+                feedback.setStatus("tracking the head pose");
+                renderer = std::make_shared<FaceRenderer>(*model, mediaPath, feedback, &detector);
+            }
+            return [this, model, renderer, fixedFrame, id, epoch, aamPath] {
                 if (epoch != m_epoch)
                     return; // another document or AAM since
                 m_aam = model;
                 m_aamPath = aamPath;
-                m_renderers.insert(id, {model, renderer});
+                m_renderers.insert(id, {model, renderer, fixedFrame});
                 m_facesSequence.clear();
                 prepare();
             };
@@ -297,6 +313,8 @@ void PreviewPanel::rebuild()
         const QString id = QString::fromStdString(s.id);
         if (const Renderer r = m_renderers.value(id); r.renderer) {
             auto faces = std::make_shared<GeneratedFaces>(r.aam, r.renderer, s.frameRate);
+            if (!r.fixedFrame.isNull())
+                faces->setFixedFrame(r.fixedFrame, 0);
             std::vector<int> labels;
             try {
                 labels = frameLabelsFromTier(s.phones, s.frameRate, s.frameCount, s.id);
@@ -401,8 +419,11 @@ void PreviewPanel::layoutPanels()
         m_panels.back().view->setImage({});
         m_panels.back().view->setPlaceholderText(why);
     }
-    if (!m_showingSpeech)
-        m_panels.front().view->setPlaceholderText(m_placeholder);
+    if (!m_showingSpeech) {
+        const auto media = m_context ? m_context->media() : nullptr;
+        m_panels.front().view->setPlaceholderText(media && media->audioOnly ? tr("Sound only: no video to show")
+                                                                            : m_placeholder);
+    }
     m_back->setVisible(m_showingSpeech);
 }
 
@@ -431,7 +452,8 @@ void PreviewPanel::showCurrent()
     if (overlay && shown && !m_recorded->isNull())
         tracked = shown->trackedLandmarks(frame);
     recorded->setLandmarks(tracked);
-    if (!shown || m_recorded->isNull())
+    // A sequence of sound alone has no recorded frame; its faces have a frame of their own.
+    if (!shown || (m_recorded->isNull() && !media->audioOnly))
         return;
     for (int k = 0; k < int(shown->tracks().size()) && k + 1 < int(m_panels.size()); ++k) {
         FrameView *view = m_panels[std::size_t(k + 1)].view;
@@ -608,10 +630,8 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
                 faces->setFixedFrame(background, 0);
             } else {
                 auto neutral = std::make_shared<FaceRenderer>(*result->aam);
-                const cv::Mat bgr = neutral->background(0);
-                const QImage image(bgr.data, bgr.cols, bgr.rows, int(bgr.step), QImage::Format_BGR888);
                 faces = std::make_shared<GeneratedFaces>(result->aam, neutral, result->frameRate);
-                faces->setFixedFrame(image.copy(), 0);
+                faces->setFixedFrame(neutralFrame(*neutral), 0);
             }
             faces->addTrack({kind, ModelKinds::name(kind), ModelKinds::colour(kind), result->features});
             feedback.setProgress(1.0);

@@ -149,6 +149,8 @@ private:
     {
         std::shared_ptr<const AamModel> aam;
         std::shared_ptr<const FaceRenderer> renderer;
+        // A sequence of sound alone: every generated frame drawn on the AAM's mean face on grey.
+        QImage fixedFrame;
     };
     QHash<QString, Renderer> m_renderers; // by sequence id
     std::shared_ptr<GeneratedFaces> m_faces;  // of the current sequence

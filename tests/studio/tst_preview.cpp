@@ -6,6 +6,7 @@
 // generated sequence at a chosen frame rate.
 #include "../SanitizedBuild.h"
 #include "DemoWindow.h"
+#include "ImageStats.h"
 
 #include "annotate/FrameView.h"
 #include "app/MainWindow.h"
@@ -81,19 +82,6 @@ void compareImages(const QImage &a, const QImage &b, double &meanDiff, double &c
     changedShare = changed / n;
 }
 
-double greyStdDev(const QImage &image)
-{
-    const QImage g = image.convertToFormat(QImage::Format_Grayscale8);
-    double s = 0, s2 = 0;
-    for (int r = 0; r < g.height(); ++r)
-        for (int c = 0; c < g.width(); ++c) {
-            const double v = g.constScanLine(r)[c];
-            s += v;
-            s2 += v * v;
-        }
-    const double n = double(g.width()) * g.height();
-    return std::sqrt(std::max(0.0, s2 / n - (s / n) * (s / n)));
-}
 
 bool near(double a, double b, double tolerance = 1e-3)
 {
@@ -204,7 +192,7 @@ private slots:
         qInfo("recorded vs DPDS at frame 40: %d pixels differ by more than 8 inside the face box, %d outside", inside, outside);
         QVERIFY2(inside > 200, qPrintable(QString::number(inside)));
         QCOMPARE(outside, 0);
-        QVERIFY2(greyStdDev(dpds) > 10.0, "the generated panel is blank");
+        QVERIFY2(testing::greyStdDev(dpds) > 10.0, "the generated panel is blank");
         double mean = 0, share = 0;
         compareImages(dpds, hmm, mean, share);
         QVERIFY2(mean > 0.05, "two models drew the same face");
@@ -393,7 +381,7 @@ private slots:
         QCOMPARE(m_preview->scrubber()->maximum(), faces->frameCount() - 1);
         const QImage first = m_preview->panel(0)->image();
         QVERIFY(!first.isNull());
-        QVERIFY(greyStdDev(first) > 10.0);
+        QVERIFY(testing::greyStdDev(first) > 10.0);
         if (const QString dir = qEnvironmentVariable("LIPSYNC_PREVIEW_SHOT"); !dir.isEmpty())
             m_window->grab().save(dir + QStringLiteral("/speech.png"));
 

@@ -148,6 +148,14 @@ private slots:
         QCOMPARE(mean.at<cv::Vec3b>(2, 2), cv::Vec3b(128, 128, 128)); // background
         const cv::Vec3b centre = mean.at<cv::Vec3b>(144, 180);
         QVERIFY(centre != cv::Vec3b(128, 128, 128)); // the face is there
+        // The whole mean face, eyes included (with no recording to keep the eyes from): the top of
+        // the face (it fills the middle half of the frame's height) is not left grey.
+        const cv::Mat background = renderer.background(0);
+        int face = 0, all = 0;
+        for (int r = 80; r < 110; ++r)
+            for (int c = 150; c < 210; ++c, ++all)
+                face += background.at<cv::Vec3b>(r, c) != cv::Vec3b(128, 128, 128);
+        QVERIFY2(face > all * 3 / 4, qPrintable(QStringLiteral("%1 of %2").arg(face).arg(all)));
     }
 
     void generatesFromSpeechAndExports()
