@@ -77,10 +77,14 @@ struct Job
 
 std::vector<TrainingUtterance> loadTranscribedFolder(const QString &mediaPath, const QString &transcriptPath,
                                                      const AcousticModel &model, const Lexicon &lexicon,
-                                                     bool quiet, QJsonArray &skipped)
+                                                     bool quiet, QJsonArray &skipped, int shard, int shards)
 {
     std::vector<Job> jobs;
-    for (const MediaFile &file : listMediaFolder(mediaPath.toStdString(), transcriptPath.toStdString())) {
+    const std::vector<MediaFile> files = listMediaFolder(mediaPath.toStdString(), transcriptPath.toStdString());
+    if (files.empty())
+        throw Error("no media files (" + mediaExtensionList() + ")", mediaPath.toStdString());
+    for (size_t i = size_t(shard); i < files.size(); i += size_t(std::max(1, shards))) {
+        const MediaFile &file = files[i];
         Job job;
         job.id = QString::fromStdString(file.id);
         job.media = QString::fromStdString(file.path);
@@ -89,8 +93,7 @@ std::vector<TrainingUtterance> loadTranscribedFolder(const QString &mediaPath, c
             job.error = QStringLiteral("no transcript %1.{align,TextGrid,lab,txt,srt,vtt} in %2").arg(job.id, transcriptPath);
         jobs.push_back(std::move(job));
     }
-    if (jobs.empty())
-        throw Error("no media files (" + mediaExtensionList() + ")", mediaPath.toStdString());
+
     // Decoding and features in parallel; each failure stays with its recording.
     QtConcurrent::blockingMap(jobs, [&](Job &job) {
         if (!job.error.isEmpty())

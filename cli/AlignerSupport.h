@@ -39,8 +39,9 @@ std::vector<CommandOption> transcribedFolderOptions();
 // Recordings that cannot be used (no transcript, unknown words, undecodable or silent audio) go
 // to `skipped` ({id, reason}), also printed to stderr unless `quiet`. Throws lipsync::Error naming
 // the folder when it has no media files.
+// With `shards` > 1 only every shards-th recording from the shard-th (0-based) is used.
 std::vector<TrainingUtterance> loadTranscribedFolder(const QString &mediaDir, const QString &transcriptDir,
                                                      const AcousticModel &model, const Lexicon &lexicon,
-                                                     bool quiet, QJsonArray &skipped);
+                                                     bool quiet, QJsonArray &skipped, int shard = 0, int shards = 1);
 
 } // namespace lipsync::cli

@@ -125,6 +125,27 @@ QDir batchOutputFolder(const CommandLine &args)
     return out;
 }
 
+CommandOption shardOption()
+{
+    return {QStringLiteral("shard"), QStringLiteral("I/N"),
+            QStringLiteral("only every N-th recording from the I-th (I = 1..N), for N machines or the tasks of a "
+                           "cluster job array (scripts/cluster)")};
+}
+
+Shard shardOf(const CommandLine &args)
+{
+    if (!args.isSet(QStringLiteral("shard")))
+        return {};
+    const QString value = args.value(QStringLiteral("shard"));
+    const QStringList parts = value.split(QLatin1Char('/'));
+    bool okIndex = false, okCount = false;
+    const int index = parts.size() == 2 ? parts[0].toInt(&okIndex) : 0;
+    const int count = parts.size() == 2 ? parts[1].toInt(&okCount) : 0;
+    if (!okIndex || !okCount || count < 1 || index < 1 || index > count)
+        throw UsageError(QStringLiteral("--shard must be I/N with 1 <= I <= N, not %1").arg(value));
+    return {index - 1, count};
+}
+
 std::vector<CommandOption> batchOptions()
 {
     return {
@@ -133,9 +154,7 @@ std::vector<CommandOption> batchOptions()
          CommandOption::Optional, {QStringLiteral("j")}},
         {QStringLiteral("force"), {},
          QStringLiteral("with a folder: redo recordings whose output is newer than their inputs (skipped otherwise)")},
-        {QStringLiteral("shard"), QStringLiteral("I/N"),
-         QStringLiteral("with a folder: only every N-th recording from the I-th (I = 1..N), for N machines or the "
-                        "tasks of a cluster job array (scripts/cluster)")},
+        shardOption(),
     };
 }
 
@@ -144,23 +163,14 @@ BatchRunner::BatchRunner(const CommandLine &args)
                                                      : std::max(1, int(std::thread::hardware_concurrency()))),
       m_force(args.isSet(QStringLiteral("force"))), m_json(args.isSet(QStringLiteral("json")))
 {
-    if (args.isSet(QStringLiteral("shard"))) {
-        const QStringList parts = args.value(QStringLiteral("shard")).split(QLatin1Char('/'));
-        bool okIndex = false, okCount = false;
-        const int index = parts.size() == 2 ? parts[0].toInt(&okIndex) : 0;
-        const int count = parts.size() == 2 ? parts[1].toInt(&okCount) : 0;
-        if (!okIndex || !okCount || count < 1 || index < 1 || index > count)
-            throw UsageError(QStringLiteral("--shard must be I/N with 1 <= I <= N, not %1").arg(args.value(QStringLiteral("shard"))));
-        m_shard = index - 1;
-        m_shards = count;
-    }
+    m_shard = shardOf(args);
 }
 
 QJsonObject BatchRunner::run(const std::vector<BatchJob> &jobs, const Work &work) const
 {
     const auto start = std::chrono::steady_clock::now();
     std::vector<size_t> mine, todo;
-    for (size_t i = size_t(m_shard); i < jobs.size(); i += size_t(m_shards))
+    for (size_t i = size_t(m_shard.index); i < jobs.size(); i += size_t(m_shard.count))
         mine.push_back(i);
     for (size_t i : mine)
         if (m_force || !upToDate(jobs[i]))

@@ -59,6 +59,16 @@ struct BatchJob
 // The folder --out names, created if need be; lipsync::Error naming it if it cannot be.
 QDir batchOutputFolder(const CommandLine &args);
 
+// --shard I/N: this process's share of the recordings, every N-th from the I-th.
+struct Shard
+{
+    int index = 0; // 0-based
+    int count = 1;
+};
+CommandOption shardOption();
+// UsageError for a malformed value; {0, 1} without the option.
+Shard shardOf(const CommandLine &args);
+
 // -j/--jobs N, --force and --shard I/N, for a command's CommandSpec.
 std::vector<CommandOption> batchOptions();
 
@@ -82,7 +92,7 @@ public:
 private:
     int m_threads = 1;
     bool m_force = false;
-    int m_shard = 0, m_shards = 1; // 0-based
+    Shard m_shard;
     bool m_json = false;
 };
 

@@ -7,6 +7,7 @@ const std::map<std::string, Parser> &parsers()
     static const std::map<std::string, Parser> table{
         {"aam", &parseAamBytes},
         {"aligner", &parseAlignerBytes},
+        {"trainingstats", &parseTrainingStatisticsBytes},
         {"featurecsv", &parseFeatureCsvBytes},
         {"gridalign", &parseGridAlignBytes},
         {"htklabel", &parseHtkLabelBytes},

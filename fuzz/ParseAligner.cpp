@@ -3,10 +3,13 @@
 #include "align/AcousticModel.h"
 #include "align/SphinxCodebooks.h"
 #include "align/SphinxModelDefinition.h"
+#include "align/TrainingStatistics.h"
 
 namespace lipsync::fuzz {
 
 void parseAlignerBytes(const std::string &bytes) { AcousticModel::parse(bytes, "fuzz.aligner"); }
+
+void parseTrainingStatisticsBytes(const std::string &bytes) { parseTrainingStatistics(bytes, "fuzz.stats"); }
 
 void parseSphinxMdefBytes(const std::string &bytes) { SphinxModelDefinition::parse(bytes, "fuzz.mdef"); }
 

@@ -116,11 +116,16 @@ Eigen::MatrixXf AcousticModel::features(const AudioBuffer &audio) const
 
 void AcousticModel::save(const std::string &path) const
 {
+    writeFileAtomically(path, text());
+}
+
+std::string AcousticModel::text() const
+{
     std::string out;
     out.reserve(1 << 20);
     char buffer[64];
     auto number = [&](double v) {
-        std::snprintf(buffer, sizeof buffer, " %.7g", v);
+        std::snprintf(buffer, sizeof buffer, " %.9g", v); // every float exactly
         out += buffer;
     };
     const MfccOptions &f = m_features;
@@ -140,7 +145,8 @@ void AcousticModel::save(const std::string &path) const
             const int index = stateIndex(p, s);
             const GaussianMixture &g = m_states[size_t(index)];
             out += "state " + std::to_string(s) + " mixtures " + std::to_string(g.size()) + " selfloop";
-            number(m_selfLoop[size_t(index)]);
+            std::snprintf(buffer, sizeof buffer, " %.17g", m_selfLoop[size_t(index)]); // a double
+            out += buffer;
             out += "\n";
             for (int m = 0; m < g.size(); ++m) {
                 out += "w";
@@ -155,7 +161,7 @@ void AcousticModel::save(const std::string &path) const
             }
         }
     }
-    writeFileAtomically(path, out);
+    return out;
 }
 
 AcousticModel AcousticModel::load(const std::string &path)

@@ -82,6 +82,8 @@ public:
 
     // Throws lipsync::Error naming the file (and line for malformed content).
     void save(const std::string &path) const;
+    // What save() writes: every number exactly (floats to 9 digits, self-loops to 17).
+    std::string text() const;
     static AcousticModel load(const std::string &path);
     // The same from the file's text; `pathForErrors` only names the source in errors.
     static AcousticModel parse(const std::string &text, const std::string &pathForErrors = {});

@@ -16,23 +16,40 @@
 
 namespace lipsync {
 
-AcousticModel AlignerTrainer::flatStart(const std::vector<TrainingUtterance> &utterances,
-                                        const TrainerOptions &options)
+void FlatStartStatistics::add(const FlatStartStatistics &other)
+{
+    for (int k = 0; k < 2; ++k) {
+        if (other.sum[k].size() == 0)
+            continue;
+        if (sum[k].size() == 0) {
+            sum[k] = other.sum[k];
+            sumSquares[k] = other.sumSquares[k];
+        } else {
+            if (sum[k].size() != other.sum[k].size())
+                throw Error("flat-start statistics of features of another dimension");
+            sum[k] += other.sum[k];
+            sumSquares[k] += other.sumSquares[k];
+        }
+        frames[k] += other.frames[k];
+    }
+}
+
+FlatStartStatistics AlignerTrainer::flatStartStatistics(const std::vector<TrainingUtterance> &utterances,
+                                                        const TrainerOptions &options)
 {
     // HCompV's global mean and variance, with one refinement: the quietest frames of every
     // utterance (by C0, the last static coefficient) seed the silence model and the others the
     // phones. Without it the flat start lets the first and last phones of every transcript
     // absorb the long leading and trailing silences, and re-estimation never recovers.
     const int c0 = options.features.cepstra;
-    Eigen::VectorXd sum[2], sumSquares[2];
-    long long frames[2] = {0, 0};
+    FlatStartStatistics st;
     for (const TrainingUtterance &u : utterances) {
         if (u.features.rows() == 0)
             continue;
-        if (sum[0].size() == 0)
-            for (int k = 0; k < 2; ++k) {
-                sum[k] = Eigen::VectorXd::Zero(u.features.cols());
-                sumSquares[k] = Eigen::VectorXd::Zero(u.features.cols());
+        for (int k = 0; k < 2; ++k)
+            if (st.sum[k].size() == 0) {
+                st.sum[k] = Eigen::VectorXd::Zero(u.features.cols());
+                st.sumSquares[k] = Eigen::VectorXd::Zero(u.features.cols());
             }
         std::vector<float> energy(u.features.col(c0).data(), u.features.col(c0).data() + u.features.rows());
         const size_t quiet = energy.size() * size_t(options.silenceSeedPercent) / 100;
@@ -41,22 +58,36 @@ AcousticModel AlignerTrainer::flatStart(const std::vector<TrainingUtterance> &ut
         for (int t = 0; t < u.features.rows(); ++t) {
             const Eigen::VectorXd x = u.features.row(t).transpose().cast<double>();
             const int k = u.features(t, c0) < threshold ? 1 : 0;
-            sum[k] += x;
-            sumSquares[k] += x.cwiseAbs2();
-            ++frames[k];
+            st.sum[k] += x;
+            st.sumSquares[k] += x.cwiseAbs2();
+            ++st.frames[k];
         }
     }
-    if (frames[0] + frames[1] < 2)
+    return st;
+}
+
+AcousticModel AlignerTrainer::flatStart(const std::vector<TrainingUtterance> &utterances,
+                                        const TrainerOptions &options)
+{
+    return flatStart(flatStartStatistics(utterances, options), options);
+}
+
+AcousticModel AlignerTrainer::flatStart(const FlatStartStatistics &st, const TrainerOptions &options)
+{
+    if (st.frames[0] + st.frames[1] < 2 || st.sum[0].size() == 0)
         throw Error("no audio frames to train the aligner on");
-    const Eigen::VectorXd mean = (sum[0] + sum[1]) / double(frames[0] + frames[1]);
-    const Eigen::VectorXd variance = ((sumSquares[0] + sumSquares[1]) / double(frames[0] + frames[1])
-                                      - mean.cwiseAbs2()).cwiseMax(1e-6);
+    const double all = double(st.frames[0] + st.frames[1]);
+    const Eigen::VectorXd mean = (st.sum[0] + st.sum[1]) / all;
+    const Eigen::VectorXd variance = ((st.sumSquares[0] + st.sumSquares[1]) / all - mean.cwiseAbs2()).cwiseMax(1e-6);
     AcousticModel model(options.features, options.normalization, mean.cast<float>(), variance.cast<float>());
+    if (mean.size() != model.dimension())
+        throw Error("flat-start statistics of " + std::to_string(mean.size()) + " dimensions for features of "
+                    + std::to_string(model.dimension()));
     for (int k = 0; k < 2; ++k) {
-        if (frames[k] < 10)
+        if (st.frames[k] < 10)
             continue;
-        const Eigen::VectorXd m = sum[k] / double(frames[k]);
-        const Eigen::VectorXd v = (sumSquares[k] / double(frames[k]) - m.cwiseAbs2()).cwiseMax(0.01 * variance);
+        const Eigen::VectorXd m = st.sum[k] / double(st.frames[k]);
+        const Eigen::VectorXd v = (st.sumSquares[k] / double(st.frames[k]) - m.cwiseAbs2()).cwiseMax(0.01 * variance);
         for (int p = 0; p < PhoneSet::kCount; ++p) {
             if ((k == 1) != (p == PhoneSet::kSilence))
                 continue;
@@ -74,6 +105,13 @@ AcousticModel AlignerTrainer::flatStart(const std::vector<TrainingUtterance> &ut
 double AlignerTrainer::reestimate(AcousticModel &model, const std::vector<TrainingUtterance> &utterances,
                                   const TrainerOptions &options, std::vector<std::string> *failed,
                                   std::vector<double> *occupancy)
+{
+    const Accumulators total = accumulate(model, utterances, options, failed);
+    return update(model, total, options, occupancy);
+}
+
+Accumulators AlignerTrainer::accumulate(const AcousticModel &model, const std::vector<TrainingUtterance> &utterances,
+                                        const TrainerOptions &options, std::vector<std::string> *failed)
 {
     // Utterances are shared out to one accumulator per worker (QtConcurrent), then summed.
     const int workers = options.parallel ? std::max(1, QThread::idealThreadCount()) : 1;
@@ -107,8 +145,22 @@ double AlignerTrainer::reestimate(AcousticModel &model, const std::vector<Traini
         for (size_t i : failedIndices)
             failed->push_back(utterances[i].id);
     }
+    return total;
+}
+
+double AlignerTrainer::update(AcousticModel &model, const Accumulators &total, const TrainerOptions &options,
+                              std::vector<double> *occupancy)
+{
     if (total.frames == 0)
         throw Error("no utterance could be aligned to its transcript");
+    if (int(total.states.size()) != model.stateCount())
+        throw Error("statistics of " + std::to_string(total.states.size()) + " states for a model of "
+                    + std::to_string(model.stateCount()));
+    for (int j = 0; j < model.stateCount(); ++j) {
+        const StateAccumulator &acc = total.states[size_t(j)];
+        if (acc.componentOccupancy.size() != model.state(j).size() || acc.sum.cols() != model.dimension())
+            throw Error("statistics of another model's mixtures (state " + std::to_string(j) + ")");
+    }
 
     // M-step (HERest): means, variances (floored), weights, self-loops.
     const Eigen::VectorXd floor = model.varianceFloor().cast<double>();

@@ -57,6 +57,22 @@ struct TrainingReport
     long long frames = 0;
 };
 
+// The statistics of the flat start (HCompV): sums and sums of squares of every frame's features,
+// apart for the quietest frames of each utterance (which seed silence) and the others.
+struct FlatStartStatistics
+{
+    Eigen::VectorXd sum[2], sumSquares[2]; // [0] speech, [1] the quiet frames
+    long long frames[2] = {0, 0};
+    void add(const FlatStartStatistics &other);
+};
+
+struct Accumulators;
+
+// Training by parts, as HTK's HERest -p does on a cluster: each machine computes the statistics
+// of its share of the utterances (flatStartStatistics, then accumulate under the current model),
+// the statistics are summed (FlatStartStatistics::add, Accumulators::add) and one step updates
+// the model (flatStart, update). The sums make the same model as train()'s loop over all the
+// utterances at once (up to the order of floating-point additions).
 class AlignerTrainer
 {
 public:
@@ -69,6 +85,10 @@ public:
     // A flat-start model from the global statistics of the utterances.
     static AcousticModel flatStart(const std::vector<TrainingUtterance> &utterances,
                                    const TrainerOptions &options);
+    static FlatStartStatistics flatStartStatistics(const std::vector<TrainingUtterance> &utterances,
+                                                   const TrainerOptions &options);
+    // Throws lipsync::Error when the statistics hold fewer than 2 frames.
+    static AcousticModel flatStart(const FlatStartStatistics &statistics, const TrainerOptions &options);
 
     // One Baum-Welch iteration; updates `model` in place and returns the total log-likelihood
     // per frame under the model before the update. Utterances that cannot be aligned are
@@ -77,6 +97,15 @@ public:
     static double reestimate(AcousticModel &model, const std::vector<TrainingUtterance> &utterances,
                              const TrainerOptions &options, std::vector<std::string> *failed = nullptr,
                              std::vector<double> *occupancy = nullptr);
+    // reestimate() in its two halves: the expected statistics of the utterances under `model`
+    // (E-step; utterances that cannot be aligned are appended to `failed`), and the update of the
+    // model from statistics summed over any number of parts (M-step; returns the log-likelihood
+    // per frame they were collected at). update() throws lipsync::Error for empty statistics or
+    // statistics of another model's shape.
+    static Accumulators accumulate(const AcousticModel &model, const std::vector<TrainingUtterance> &utterances,
+                                   const TrainerOptions &options, std::vector<std::string> *failed = nullptr);
+    static double update(AcousticModel &model, const Accumulators &statistics, const TrainerOptions &options,
+                         std::vector<double> *occupancy = nullptr);
 
     // Splits the heaviest components of every state until it has `mixtures`, for states whose
     // occupancy allows `minimumPerComponent` frames per component.

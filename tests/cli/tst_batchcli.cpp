@@ -4,7 +4,9 @@
 // transcript, a truncated video and a file that is not media are failures named in the summary
 // (exit code 1) while the others go on; progress lines on stderr when it is not a terminal.
 // The cluster recipes (scripts/cluster): shards run by GNU parallel, and the tasks of a Slurm job
-// array, give the same files as one run, which `project import` gathers into a project.
+// array, give the same files as one run, which `project import` gathers into a project; aligner
+// training in 4 parts per pass (aligner-train: --accumulate-only, --merge) makes the model one
+// `aligner train` makes.
 #include "CliRun.h"
 
 #include "io/FeatureCsv.h"
@@ -255,6 +257,43 @@ private slots:
         QVERIFY2(imported.exitCode == 0, imported.err.constData());
         for (const Sequence &s : Project::load(project.toStdString()).sequences)
             QVERIFY2(!s.phones.intervals.empty(), s.id.c_str());
+    }
+
+    void alignerTrainedInPartsIsTheModelOfOneRun()
+    {
+        if (QStandardPaths::findExecutable("parallel").isEmpty())
+            QSKIP("GNU parallel is not installed (scripts/setup installs it)");
+        QTemporaryDir dir;
+        const QString media = kDemo + "/media";
+        const QString single = dir.filePath("single.aligner"), parts = dir.filePath("parts.aligner");
+        const Run one = runLipsync({"aligner", "train", "--media", media, "--transcripts", media, "--mixtures", "2",
+                                    "--iterations", "1", "--out", single});
+        QVERIFY2(one.exitCode == 0, one.err.constData());
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("LIPSYNC", LIPSYNC_CLI);
+        p.setProcessEnvironment(env);
+        p.start("bash", {QStringLiteral(LIPSYNC_SOURCE_DIR "/scripts/cluster/aligner-train"), "4", media, media, parts,
+                         "--mixtures", "2", "--iterations", "1", "--work", dir.filePath("work")});
+        QVERIFY(p.waitForFinished(300000));
+        QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+        // Flat start, 3 passes with one Gaussian, a split, 1 pass with two: 5 merges of 4 parts.
+        QCOMPARE(QDir(dir.filePath("work/m4")).entryList({"*.stats"}, QDir::Files).size(), 4);
+        QFile a(single), b(parts);
+        QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+        const QList<QByteArray> x = a.readAll().simplified().split(' '), y = b.readAll().simplified().split(' ');
+        QCOMPARE(x.size(), y.size());
+        double worst = 0;
+        for (qsizetype i = 0; i < x.size(); ++i) {
+            bool okX = false, okY = false;
+            const double u = x[i].toDouble(&okX), v = y[i].toDouble(&okY);
+            QCOMPARE(okX, okY);
+            if (!okX)
+                QCOMPARE(x[i], y[i]);
+            else
+                worst = std::max(worst, std::abs(u - v) / std::max(1e-6, std::abs(u)));
+        }
+        QVERIFY2(worst < 1e-9, qPrintable(QString::number(worst)));
     }
 
     void helpNamesTheFolderForms_data()
