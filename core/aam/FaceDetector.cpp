@@ -41,6 +41,16 @@ std::string FaceDetector::findYunetModel()
     return ResourceLocator::find("models/face_detection_yunet_2022mar.onnx");
 }
 
+std::string FaceDetectorPaths::haarCascadeFile() const
+{
+    return haarCascade.empty() ? "/usr/share/opencv4/haarcascades/haarcascade_frontalface_alt2.xml" : haarCascade;
+}
+
+std::string FaceDetectorPaths::dlibPredictorFile() const
+{
+    return dlibPredictor.empty() ? "/usr/share/dlib/shape_predictor_68_face_landmarks.dat" : dlibPredictor;
+}
+
 FaceDetector::FaceDetector(const FaceDetectorPaths &paths) : m_impl(std::make_unique<Impl>())
 {
     const std::string yunetPath = paths.yunetModel.empty() ? findYunetModel() : paths.yunetModel;
@@ -51,15 +61,11 @@ FaceDetector::FaceDetector(const FaceDetectorPaths &paths) : m_impl(std::make_un
             m_impl->yunet.release();
         }
     }
-    const std::string haarPath = paths.haarCascade.empty()
-                                     ? "/usr/share/opencv4/haarcascades/haarcascade_frontalface_alt2.xml"
-                                     : paths.haarCascade;
+    const std::string haarPath = paths.haarCascadeFile();
     if (QFileInfo::exists(QString::fromStdString(haarPath)))
         m_impl->haarLoaded = m_impl->haar.load(haarPath);
 #ifdef LIPSYNC_HAVE_DLIB
-    const std::string dlibPath = paths.dlibPredictor.empty()
-                                     ? "/usr/share/dlib/shape_predictor_68_face_landmarks.dat"
-                                     : paths.dlibPredictor;
+    const std::string dlibPath = paths.dlibPredictorFile();
     if (paths.useDlib && QFileInfo::exists(QString::fromStdString(dlibPath))) {
         try {
             auto predictor = std::make_unique<dlib::shape_predictor>();

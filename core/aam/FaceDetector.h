@@ -34,6 +34,11 @@ struct FaceDetectorPaths
     std::string haarCascade;  // empty: /usr/share/opencv4/haarcascades/haarcascade_frontalface_alt2.xml
     std::string dlibPredictor; // empty: /usr/share/dlib/shape_predictor_68_face_landmarks.dat
     bool useDlib = true;
+
+    // The files the detectors are read from: the given ones, else Debian's (opencv-data,
+    // libdlib-data).
+    std::string haarCascadeFile() const;
+    std::string dlibPredictorFile() const;
 };
 
 class FaceDetector

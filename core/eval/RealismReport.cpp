@@ -215,8 +215,7 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
         auto first = pool.take();
         if (!first->hasDlib())
             throw Error("dlib's 68-point shape predictor is not available (install Debian's libdlib-data)",
-                        options.dlibPredictor.empty() ? "/usr/share/dlib/shape_predictor_68_face_landmarks.dat"
-                                                      : options.dlibPredictor);
+                        pool.paths.dlibPredictorFile());
         pool.give(std::move(first));
     }
     std::vector<int> projectIndex;
