@@ -23,9 +23,16 @@ struct PreparedUtterance
 // Decodes `mediaPath`, computes features as `model` expects and pronounces `words`.
 // Throws lipsync::Error naming the file for undecodable or silent audio and for words without a
 // pronunciation (all of them named).
+// `transcriptPath`, when given, is named too when the words cannot fit the audio.
 PreparedUtterance prepareUtterance(const std::string &id, const std::string &mediaPath,
                                    const std::vector<std::string> &words, const AcousticModel &model,
-                                   const Lexicon &lexicon);
+                                   const Lexicon &lexicon, const std::string &transcriptPath = {});
+
+// Throws lipsync::Error naming `mediaPath` (and `transcriptPath` if given) when the spoken words
+// (silence tokens aside) cannot fit `audioSeconds` even at one phone of three `frameShift` frames
+// each: checked before the words are pronounced, so a wrong, huge transcript costs no memory.
+void checkWordsFitAudio(const std::vector<std::string> &words, double audioSeconds, double frameShift,
+                        const std::string &mediaPath, const std::string &transcriptPath = {});
 
 // The feature configuration of a model to be trained, as an AcousticModel that only computes
 // features (no trained states).

@@ -29,7 +29,8 @@ struct Prepared
 Prepared prepare(const std::string &mediaPath, const std::vector<std::string> &words, const AcousticModel &model,
                  const Lexicon &lexicon, bool adapt, Feedback *feedback, const std::string &transcriptPath = {})
 {
-    Prepared p{prepareUtterance(std::filesystem::path(mediaPath).stem().string(), mediaPath, words, model, lexicon),
+    Prepared p{prepareUtterance(std::filesystem::path(mediaPath).stem().string(), mediaPath, words, model, lexicon,
+                                transcriptPath),
                std::nullopt, {}};
     if (adapt) {
         try {

@@ -1,5 +1,6 @@
 #include "align/SphinxAligner.h"
 
+#include "align/AlignerUtterance.h"
 #include "align/Realignment.h"
 #include "align/SphinxAdaptation.h"
 #include "align/SphinxBackend.h"
@@ -516,8 +517,9 @@ AlignerOutput SphinxAligner::align(const std::string &mediaPath, const std::vect
     std::vector<std::vector<Pronunciation>> pronunciations;
     AudioBuffer audio;
     try {
-        pronunciations = lexicon.pronounceAll(words);
         audio = AudioDecoder::decode(mediaPath, kSampleRate);
+        checkWordsFitAudio(words, audio.duration(), 0.01, mediaPath, transcriptPath); // 10 ms frames
+        pronunciations = lexicon.pronounceAll(words);
     } catch (const Error &e) {
         throw Error(e.reason(), mediaPath, e.field());
     }

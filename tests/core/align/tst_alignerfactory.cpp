@@ -3,7 +3,8 @@
 //  - The shipped model (empty choice), a model file of ours, CMU Sphinx's model; a missing model
 //    file or folder is an Error naming it.
 //  - align() spells the transcript over a GRID demo clip with contiguous tiers; a transcript
-//    that cannot fit names the media and the transcript; realign() keeps a word the user fixed.
+//    that cannot fit names the media and the transcript (a huge one is refused by its word count
+//    before its words are pronounced); realign() keeps a word the user fixed.
 //  - AlignerCache hands out one aligner per choice and does not keep a failed one.
 #include "align/Aligner.h"
 #include "align/Lexicon.h"
@@ -126,6 +127,15 @@ private slots:
         } catch (const Error &e) {
             QCOMPARE(e.file(), kClip + ".mpg");
             QVERIFY2(e.reason().find("(transcript long.txt)") != std::string::npos, e.what());
+        }
+        // 100 000 words that no dictionary knows: refused by their count before any is pronounced
+        // (espeak-ng would take minutes, and the pronunciations hundreds of megabytes).
+        const std::vector<std::string> huge(100000, "zqxwvy");
+        try {
+            aligner->align(kClip + ".mpg", huge, Lexicon(&PronunciationDictionary::cmu()), nullptr, "huge.srt");
+            QFAIL("100 000 words fit 3 s");
+        } catch (const Error &e) {
+            QVERIFY2(e.reason().find("100000 words need at least 3000.00 s") != std::string::npos, e.what());
         }
     }
 
