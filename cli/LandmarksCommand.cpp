@@ -8,7 +8,7 @@
 
 #include "aam/AamModel.h"
 #include "aam/AutoLandmarks.h"
-#include "aam/FaceDetector.h"
+#include "aam/FaceDetectorPool.h"
 #include "aam/LandmarkScheme.h"
 #include "aam/PtsFile.h"
 #include "io/MediaFolder.h"
@@ -48,6 +48,13 @@ struct DetectOptions
     const AamModel *model = nullptr;
 };
 
+FaceDetectorPaths detectorPaths(const DetectOptions &o)
+{
+    FaceDetectorPaths paths;
+    paths.useDlib = o.useDlib;
+    return paths;
+}
+
 // The image `input` is, or its video's frame; errors name the file.
 cv::Mat readInput(const std::string &input, const DetectOptions &o)
 {
@@ -68,13 +75,14 @@ cv::Mat readInput(const std::string &input, const DetectOptions &o)
     return image;
 }
 
-// Finds the points of the first face of `input` and writes them to `out`; the --json report.
-QJsonObject detectOne(const std::string &input, const std::string &out, const DetectOptions &o)
+// Finds the points of the first face of `input` with a detector of `detectors` and writes them to
+// `out`; the --json report.
+QJsonObject detectOne(const std::string &input, const std::string &out, const DetectOptions &o,
+                      FaceDetectorPool &detectors)
 {
     const cv::Mat image = readInput(input, o);
-    FaceDetectorPaths paths;
-    paths.useDlib = o.useDlib;
-    FaceDetector detector(paths);
+    const FaceDetectorPool::Lease lease(detectors);
+    FaceDetector &detector = *lease;
     const std::vector<FaceDetection> faces = detector.detect(image);
     if (faces.empty())
         throw Error("no face found" + (o.frameGiven ? " in frame " + std::to_string(o.frame) : std::string())
@@ -123,10 +131,11 @@ int detectFolder(const CommandLine &a, const DetectOptions &o, const QString &mo
             depends << modelFile;
         jobs.push_back({name, file, depends, out.filePath(name + QStringLiteral(".pts"))});
     }
+    FaceDetectorPool detectors(detectorPaths(o));
     const BatchRunner runner(a);
     return runner.finish(runner.run(jobs,
                                     [&](const BatchJob &job, Feedback &) {
-                                        return detectOne(job.file.toStdString(), job.output.toStdString(), o);
+                                        return detectOne(job.file.toStdString(), job.output.toStdString(), o, detectors);
                                     }),
                          QStringLiteral("landmarked"));
 }
@@ -151,7 +160,8 @@ int runLandmarksDetect(const CommandLine &a)
         return detectFolder(a, o, a.value("aam"));
     if (isImageFile(input) && o.frameGiven && o.frame != 0)
         throw UsageError("--frame applies to videos only");
-    const QJsonObject result = detectOne(input.toStdString(), a.value("out").toStdString(), o);
+    FaceDetectorPool detectors(detectorPaths(o));
+    const QJsonObject result = detectOne(input.toStdString(), a.value("out").toStdString(), o, detectors);
     if (a.isSet("json"))
         printJson(result);
     else

@@ -5,7 +5,7 @@
 #include "BatchRunner.h"
 #include "CommandLine.h"
 
-#include "aam/FaceDetector.h"
+#include "aam/FaceDetectorPool.h"
 #include "aam/VideoTracking.h"
 #include "io/AtomicFile.h"
 #include "io/FeatureCsv.h"
@@ -26,17 +26,15 @@ using namespace lipsync::cli;
 
 namespace {
 
-// Tracks `videoPath`, writes its features to `out` (and every frame's points to `pointsPath` if
-// not empty); the --json report.
+// Tracks `videoPath` with a detector of `detectors`, writes its features to `out` (and every
+// frame's points to `pointsPath` if not empty); the --json report.
 QJsonObject trackOne(const AamModel &model, const std::string &videoPath, const std::string &out,
-                     const std::string &pointsPath, Feedback &feedback)
+                     const std::string &pointsPath, FaceDetectorPool &detectors, Feedback &feedback)
 {
-    FaceDetectorPaths paths;
-    paths.useDlib = false;
-    FaceDetector detector(paths);
-    if (!detector.hasYunet() && !detector.hasHaar())
+    const FaceDetectorPool::Lease detector(detectors);
+    if (!detector->hasYunet() && !detector->hasHaar())
         throw Error("no face detector available (YuNet model or Haar cascade)");
-    const VideoTrackingResult r = trackVideo(model, videoPath, detector, feedback);
+    const VideoTrackingResult r = trackVideo(model, videoPath, *detector, feedback);
     const int frames = int(r.features.rows());
     writeFeatureCsv(out, r.features, {}, r.frameRate); // the rate labels in seconds need
     if (!pointsPath.empty()) {
@@ -83,6 +81,9 @@ QJsonObject trackOne(const AamModel &model, const std::string &videoPath, const 
 int runTrack(const CommandLine &a)
 {
     const AamModel model = AamModel::load(a.value("aam").toStdString());
+    FaceDetectorPaths paths;
+    paths.useDlib = false; // tracking needs boxes, not points
+    FaceDetectorPool detectors(paths);
     const QString input = a.positional().front();
     if (isBatchInput(input)) {
         if (a.isSet("points"))
@@ -95,13 +96,13 @@ int runTrack(const CommandLine &a)
         return runner.finish(runner.run(jobs,
                                         [&](const BatchJob &job, Feedback &feedback) {
                                             return trackOne(model, job.file.toStdString(), job.output.toStdString(),
-                                                            {}, feedback);
+                                                            {}, detectors, feedback);
                                         }),
                              QStringLiteral("tracked"));
     }
     Feedback feedback;
     const QJsonObject result = trackOne(model, input.toStdString(), a.value("out").toStdString(),
-                                        a.value("points").toStdString(), feedback);
+                                        a.value("points").toStdString(), detectors, feedback);
     if (a.isSet("json"))
         printJson(result);
     else

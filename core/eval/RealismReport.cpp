@@ -1,7 +1,7 @@
 #include "eval/RealismReport.h"
 
 #include "aam/AamModel.h"
-#include "aam/FaceDetector.h"
+#include "aam/FaceDetectorPool.h"
 #include "dynamics/LabelledFolder.h"
 #include "eval/CrossValidation.h"
 #include "eval/RealismMetrics.h"
@@ -37,31 +37,6 @@ const std::string kTracked = "tracked";
 
 // Detectors for the worker threads: dlib's predictor takes a second or two to load, and one
 // detector must not be used by two threads at once.
-struct DetectorPool
-{
-    FaceDetectorPaths paths;
-    std::mutex mutex;
-    std::vector<std::unique_ptr<FaceDetector>> idle;
-
-    std::unique_ptr<FaceDetector> take()
-    {
-        {
-            const std::lock_guard lock(mutex);
-            if (!idle.empty()) {
-                auto d = std::move(idle.back());
-                idle.pop_back();
-                return d;
-            }
-        }
-        return std::make_unique<FaceDetector>(paths);
-    }
-    void give(std::unique_ptr<FaceDetector> d)
-    {
-        const std::lock_guard lock(mutex);
-        idle.push_back(std::move(d));
-    }
-};
-
 double meanOfFinite(const std::vector<double> &values)
 {
     double sum = 0;
@@ -209,15 +184,12 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
         throw Error("the project has no AAM (build or import one first)", project.manifestPath());
     for (const std::string &kind : cv.kinds)
         createDynamicModel(kind); // reject unknown kinds before any work
-    DetectorPool pool;
-    pool.paths.dlibPredictor = options.dlibPredictor;
-    {
-        auto first = pool.take();
-        if (!first->hasDlib())
-            throw Error("dlib's 68-point shape predictor is not available (install Debian's libdlib-data)",
-                        pool.paths.dlibPredictorFile());
-        pool.give(std::move(first));
-    }
+    FaceDetectorPaths paths;
+    paths.dlibPredictor = options.dlibPredictor;
+    FaceDetectorPool pool(paths);
+    if (!FaceDetectorPool::Lease(pool)->hasDlib())
+        throw Error("dlib's 68-point shape predictor is not available (install Debian's libdlib-data)",
+                    pool.paths().dlibPredictorFile());
     std::vector<int> projectIndex;
     const std::vector<LabelledSequence> sequences = loadProjectSequences(project, &projectIndex);
     validateSequences(sequences);
