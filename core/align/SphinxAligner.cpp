@@ -188,37 +188,18 @@ SphinxModelDefinition readModelDefinition(const std::string &modelDir)
 
 SphinxAligner::SphinxAligner(Options options)
     : m_modelDir(resolveModelDir(options.modelDir)), m_mdef(readModelDefinition(m_modelDir)),
-      m_extra(std::move(options.extraArguments)), m_adaptationPasses(std::max(0, options.adaptationPasses))
+      m_extra(std::move(options.extraArguments)), m_adaptationPasses(std::max(0, options.adaptationPasses)),
+      m_decoders([this] {
+          std::vector<std::pair<std::string, std::string>> arguments = baseArguments();
+          arguments.insert(arguments.end(), m_extra.begin(), m_extra.end());
+          return std::make_unique<SphinxDecoder>(m_modelDir, arguments);
+      })
 {
     if (m_mdef.silence() < 0 || m_mdef.ciName(m_mdef.silence()) != "SIL")
         throw Error("the CMU Sphinx model definition has no SIL phone", m_modelDir + "/mdef");
 }
 
 SphinxAligner::~SphinxAligner() = default;
-
-SphinxDecoder *SphinxAligner::acquire() const
-{
-    {
-        const std::lock_guard lock(m_mutex);
-        if (!m_free.empty()) {
-            SphinxDecoder *d = m_free.back();
-            m_free.pop_back();
-            return d;
-        }
-    }
-    std::vector<std::pair<std::string, std::string>> arguments = baseArguments();
-    arguments.insert(arguments.end(), m_extra.begin(), m_extra.end());
-    auto decoder = std::make_unique<SphinxDecoder>(m_modelDir, arguments);
-    const std::lock_guard lock(m_mutex);
-    m_all.push_back(std::move(decoder));
-    return m_all.back().get();
-}
-
-void SphinxAligner::release(SphinxDecoder *decoder) const
-{
-    const std::lock_guard lock(m_mutex);
-    m_free.push_back(decoder);
-}
 
 const SphinxCodebooks &SphinxAligner::codebooks(const SphinxDecoder &decoder) const
 {
@@ -450,13 +431,7 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
     if (feedback && feedback->isCanceled())
         throw Canceled();
 
-    SphinxDecoder *decoder = acquire();
-    struct Lease
-    {
-        const SphinxAligner *owner;
-        SphinxDecoder *decoder;
-        ~Lease() { owner->release(decoder); }
-    } lease{this, decoder};
+    const ObjectPool<SphinxDecoder>::Lease decoder(m_decoders);
     SphinxUtterance utterance(*decoder, pcm);
     GraphViterbi viterbi(graph, m_mdef, utterance);
     const int E = viterbi.statesPerPhone();

@@ -20,6 +20,7 @@
 #include "align/Aligner.h"
 #include "align/Lexicon.h"
 #include "align/SphinxModelDefinition.h"
+#include "util/ObjectPool.h"
 
 #include <memory>
 #include <mutex>
@@ -83,8 +84,6 @@ public:
                           Feedback *feedback = nullptr) const override;
 
 private:
-    SphinxDecoder *acquire() const;
-    void release(SphinxDecoder *decoder) const;
     const SphinxCodebooks &codebooks(const SphinxDecoder &decoder) const;
 
     std::string m_modelDir;
@@ -93,9 +92,8 @@ private:
     int m_adaptationPasses = 0;
     mutable std::once_flag m_codebooksOnce;
     mutable std::unique_ptr<SphinxCodebooks> m_codebooks; // read on the first adaptation
-    mutable std::mutex m_mutex;
-    mutable std::vector<SphinxDecoder *> m_free;
-    mutable std::vector<std::unique_ptr<SphinxDecoder>> m_all;
+    // Decoders (a few hundred ms to load), one per concurrent alignment.
+    mutable ObjectPool<SphinxDecoder> m_decoders;
 };
 
 } // namespace lipsync

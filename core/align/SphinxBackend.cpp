@@ -99,6 +99,30 @@ float SphinxDecoder::varianceFloor() const
     return cmd_ln_float32_r(ps_get_config(m_impl->ps), "-varfloor");
 }
 
+std::vector<SphinxDecoder::Word> SphinxDecoder::recognize(const std::vector<short> &pcm) const
+{
+    ps_decoder_t *ps = m_impl->ps;
+    if (ps_start_utt(ps) < 0)
+        throw Error("pocketsphinx could not start the utterance");
+    if (ps_process_raw(ps, pcm.data(), pcm.size(), FALSE, TRUE) < 0) {
+        ps_end_utt(ps);
+        throw Error("pocketsphinx could not decode the audio");
+    }
+    ps_end_utt(ps);
+    std::vector<Word> words;
+    for (ps_seg_t *seg = ps_seg_iter(ps); seg; seg = ps_seg_next(seg)) {
+        const std::string word = ps_seg_word(seg);
+        if (word.empty() || word.front() == '<' || word.front() == '[')
+            continue; // sentence marks, silence, noise
+        Word w;
+        // Alternative pronunciations are spelt "word(2)".
+        w.word = word.substr(0, word.find('('));
+        ps_seg_frames(seg, &w.first, &w.last);
+        words.push_back(std::move(w));
+    }
+    return words;
+}
+
 struct SphinxUtterance::Impl
 {
     std::unique_ptr<acmod_t, void (*)(acmod_t *)> acmod{nullptr, &acmod_free};

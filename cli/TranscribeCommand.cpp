@@ -1,0 +1,104 @@
+// `lipsync transcribe MEDIA --out FILE.txt` / `lipsync transcribe FOLDER|PROJECT --out DIR`: a
+// proposed transcript for recordings that have none (SpeechRecognizer: CMU Sphinx's generic
+// US-English model and language model), written as plain text for the user to correct, then to
+// align (`project create` takes NAME.txt beside the clip). The folder form proposes one for every
+// recording without a transcript (BatchRunner: -j, resumable, failures listed).
+#include "BatchRunner.h"
+#include "CommandLine.h"
+
+#include "align/SpeechRecognizer.h"
+#include "io/Transcript.h"
+#include "tasks/Feedback.h"
+#include "util/Error.h"
+#include "util/ObjectPool.h"
+
+#include <QElapsedTimer>
+#include <QJsonArray>
+
+#include <cstdio>
+#include <memory>
+
+using namespace lipsync;
+using namespace lipsync::cli;
+
+namespace {
+
+// Recognizers for the worker threads: each holds a decoder with its language model (about a second
+// to load) and decodes one recording at a time.
+using RecognizerPool = ObjectPool<SpeechRecognizer>;
+
+QJsonObject transcribeOne(RecognizerPool &pool, const QString &media, const QString &out, Feedback &feedback)
+{
+    QElapsedTimer timer;
+    timer.start();
+    const SpeechRecognizer::Result r = RecognizerPool::Lease(pool)->recognize(media.toStdString(), &feedback);
+    if (r.words.empty())
+        throw Error("no speech recognised", media.toStdString());
+    Transcript t;
+    t.words = r.words;
+    writePlainTranscript(out.toStdString(), t);
+    QJsonArray timing;
+    for (const Interval &i : r.timing.intervals)
+        timing.append(QJsonObject{{QStringLiteral("start"), i.start}, {QStringLiteral("end"), i.end},
+                                  {QStringLiteral("label"), QString::fromStdString(i.label)}});
+    QStringList words;
+    for (const std::string &w : r.words)
+        words << QString::fromStdString(w);
+    return QJsonObject{{QStringLiteral("media"), media},
+                       {QStringLiteral("out"), out},
+                       {QStringLiteral("transcript"), words.join(QLatin1Char(' '))},
+                       {QStringLiteral("verified"), false},
+                       {QStringLiteral("timing"), timing},
+                       {QStringLiteral("duration"), r.duration},
+                       {QStringLiteral("seconds"), timer.elapsed() / 1000.0}};
+}
+
+int runTranscribe(const CommandLine &a)
+{
+    const std::string modelDir = a.value("model").toStdString();
+    RecognizerPool pool([modelDir] { return std::make_unique<SpeechRecognizer>(modelDir); });
+    pool.give(pool.take()); // a missing model fails here, once
+    const QString input = a.positional().front();
+    if (isBatchInput(input)) {
+        const QDir out = batchOutputFolder(a);
+        std::vector<BatchJob> jobs;
+        for (const BatchRecording &r : batchRecordings(input))
+            if (r.transcriptFile.isEmpty() && r.transcript.empty()) // only those without words
+                jobs.push_back({r.id, r.media, {r.media}, out.filePath(r.id + QStringLiteral(".txt"))});
+        const BatchRunner runner(a);
+        return runner.finish(runner.run(jobs,
+                                        [&](const BatchJob &job, Feedback &feedback) {
+                                            return transcribeOne(pool, job.file, job.output, feedback);
+                                        }),
+                             QStringLiteral("transcribed"));
+    }
+    Feedback feedback;
+    const QJsonObject result = transcribeOne(pool, input, a.value("out"), feedback);
+    if (a.isSet("json"))
+        printJson(result);
+    else
+        std::printf("%s (proposed, check it) -> %s\n", qPrintable(result["transcript"].toString()),
+                    qPrintable(a.value("out")));
+    return 0;
+}
+
+const CommandRegistration registration{
+    CommandSpec{QStringLiteral("transcribe"),
+                QStringLiteral("propose a transcript for a recording that has none (CMU Sphinx's US-English models)"),
+                QStringLiteral("Decodes the speech with CMU Sphinx's generic US-English acoustic and language models "
+                               "(Debian package pocketsphinx-en-us) and writes the words as a plain transcript: a "
+                               "proposal to check and correct before aligning with it, not a reference. Recordings "
+                               "up to 2 minutes.\nGiven a folder of recordings or a project folder, proposes a "
+                               "transcript for each one that has none (no transcript of the same name beside it, "
+                               "or an empty one in the project) into --out DIR/NAME.txt, -j at a time."),
+                {{QStringLiteral("out"), QStringLiteral("FILE.txt|DIR"),
+                  QStringLiteral("the transcript to write; with a folder, the folder of the transcripts"), {},
+                  CommandOption::Required},
+                 {QStringLiteral("model"), QStringLiteral("DIR"),
+                  QStringLiteral("CMU Sphinx's en-us acoustic model folder, its language model and dictionary beside "
+                                 "it (default: Debian's, or $LIPSYNC_SPHINX_MODEL)")}},
+                {{QStringLiteral("MEDIA"), QStringLiteral("the recording, or a folder of them, or a project folder")}}}
+        .add(batchOptions()),
+    &runTranscribe};
+
+} // namespace

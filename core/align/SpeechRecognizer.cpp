@@ -1,0 +1,67 @@
+#include "align/SpeechRecognizer.h"
+
+#include "align/SphinxAligner.h"
+#include "align/SphinxBackend.h"
+#include "io/AudioDecoder.h"
+#include "tasks/Feedback.h"
+#include "util/Error.h"
+#include "util/PhoneSet.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace lipsync {
+
+SpeechRecognizer::SpeechRecognizer(const std::string &modelDir)
+{
+    const std::string hmm = SphinxAligner::resolveModelDir(modelDir);
+    const std::filesystem::path folder = std::filesystem::path(hmm).parent_path();
+    const std::string lm = (folder / "en-us.lm.bin").string(), dict = (folder / "cmudict-en-us.dict").string();
+    for (const std::string &file : {hmm + "/mdef", lm, dict})
+        if (!std::filesystem::exists(file))
+            throw Error("not found: CMU Sphinx's US-English models (Debian package pocketsphinx-en-us)", file);
+    m_decoder = std::make_unique<SphinxDecoder>(
+        hmm, std::vector<std::pair<std::string, std::string>>{{"-lm", lm}, {"-dict", dict}});
+}
+
+SpeechRecognizer::~SpeechRecognizer() = default;
+
+SpeechRecognizer::Result SpeechRecognizer::recognize(const std::string &mediaPath, Feedback *feedback) const
+{
+    const AudioBuffer audio = AudioDecoder::decode(mediaPath, SphinxAligner::kSampleRate);
+    Result result;
+    result.duration = audio.duration();
+    if (result.duration > kMaxSeconds)
+        throw Error("too long to transcribe in one piece (" + std::to_string(int(result.duration))
+                        + " s; at most " + std::to_string(int(kMaxSeconds)) + " s)",
+                    mediaPath);
+    if (feedback && feedback->isCanceled())
+        throw Canceled();
+    std::vector<short> pcm(audio.samples.size());
+    for (size_t i = 0; i < pcm.size(); ++i)
+        pcm[i] = short(std::lround(std::clamp(audio.samples[i], -1.0f, 1.0f) * 32767.0f));
+    std::vector<SphinxDecoder::Word> words;
+    try {
+        words = m_decoder->recognize(pcm);
+    } catch (const Error &e) {
+        throw Error(e.reason(), mediaPath);
+    }
+    double cursor = 0;
+    for (const SphinxDecoder::Word &w : words) {
+        const double start = std::max(cursor, w.first * 0.01), end = std::max(start, (w.last + 1) * 0.01);
+        if (start > cursor + 1e-9)
+            result.timing.intervals.push_back(Interval{cursor, start, std::string(PhoneSet::kSilenceLabel), false});
+        result.timing.intervals.push_back(Interval{start, end, w.word, false});
+        result.words.push_back(w.word);
+        cursor = end;
+    }
+    if (cursor < result.duration - 1e-9)
+        result.timing.intervals.push_back(
+            Interval{cursor, result.duration, std::string(PhoneSet::kSilenceLabel), false});
+    if (feedback)
+        feedback->setProgress(1.0);
+    return result;
+}
+
+} // namespace lipsync
