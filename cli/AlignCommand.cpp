@@ -100,6 +100,7 @@ int alignFolder(const cli::CommandLine &a, const cli::SpeechAligner &aligner)
         const QString transcript = r.transcriptFile.isEmpty() ? r.project : r.transcriptFile;
         jobs.push_back({r.id, r.media, {r.media, transcript, aligner.modelFile()}, out.filePath(r.id + ".TextGrid")});
     }
+    cli::makeOutputsUnique(jobs);
     const cli::BatchRunner runner(a);
     const QJsonObject summary = runner.run(jobs, [&](const cli::BatchJob &job, Feedback &feedback) {
         const cli::BatchRecording &r = recordings[size_t(&job - jobs.data())];

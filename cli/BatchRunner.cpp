@@ -10,6 +10,7 @@
 #include <QDateTime>
 #include <QDir>
 #include <QFileInfo>
+#include <QSet>
 
 #include <algorithm>
 #include <atomic>
@@ -91,6 +92,20 @@ private:
 
 } // namespace
 
+void makeOutputsUnique(std::vector<BatchJob> &jobs)
+{
+    QSet<QString> seen;
+    for (BatchJob &job : jobs) {
+        if (seen.contains(job.output)) {
+            const QString ext = QFileInfo(job.file).suffix().toLower();
+            const QFileInfo out(job.output);
+            job.name += QLatin1Char('_') + ext;
+            job.output = out.dir().filePath(out.completeBaseName() + QLatin1Char('_') + ext + QLatin1Char('.') + out.suffix());
+        }
+        seen.insert(job.output);
+    }
+}
+
 bool isBatchInput(const QString &path)
 {
     return QFileInfo(path).isDir();
@@ -112,6 +127,7 @@ std::vector<BatchRecording> batchRecordings(const QString &folder, const QString
     for (const MediaFile &file : listMediaFolder(folder.toStdString(), transcriptFolder.toStdString()))
         out.push_back({QString::fromStdString(file.id), QString::fromStdString(file.path),
                        QString::fromStdString(file.transcript), {}, {}});
+
     if (out.empty())
         throw Error("no media files (" + mediaExtensionList() + ") and no project.json", folder.toStdString());
     return out;

