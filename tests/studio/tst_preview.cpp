@@ -82,7 +82,6 @@ void compareImages(const QImage &a, const QImage &b, double &meanDiff, double &c
     changedShare = changed / n;
 }
 
-
 bool near(double a, double b, double tolerance = 1e-3)
 {
     return std::abs(a - b) < tolerance;
