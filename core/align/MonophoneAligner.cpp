@@ -17,13 +17,24 @@ Error misfit(const Error &e, const std::string &mediaPath, const std::string &tr
     return Error(transcriptPath.empty() ? e.reason() : e.reason() + " (transcript " + transcriptPath + ")", mediaPath);
 }
 
-// The decoded recording, and the model to align it with: `model`, or when `adapt` asks for it
-// `model` moved to the recording's speaker (kept in `adapted`).
+// The decoded recording, and what to align it with: the model, or when adaptation is asked for
+// the model moved to the recording's speaker (`adapted`).
 struct Prepared
 {
     PreparedUtterance utterance;
     std::optional<AcousticModel> adapted;
     AdaptationReport report;
+
+    const AcousticModel &modelOr(const AcousticModel &model) const { return adapted ? *adapted : model; }
+    // The output without its alignment.
+    AlignerOutput output(const AcousticModel &model) const
+    {
+        AlignerOutput out;
+        out.duration = utterance.duration;
+        out.audioFrames = model.featureOptions();
+        out.adaptation = report;
+        return out;
+    }
 };
 
 Prepared prepare(const std::string &mediaPath, const std::vector<std::string> &words, const AcousticModel &model,
@@ -57,12 +68,9 @@ AlignerOutput MonophoneAligner::align(const std::string &mediaPath, const std::v
     if (words.empty())
         throw Error("the transcript has no words to align", transcriptPath.empty() ? mediaPath : transcriptPath);
     const Prepared p = prepare(mediaPath, words, m_model, lexicon, m_adapt, feedback, transcriptPath);
-    AlignerOutput out;
-    out.duration = p.utterance.duration;
-    out.audioFrames = m_model.featureOptions();
-    out.adaptation = p.report;
+    AlignerOutput out = p.output(m_model);
     try {
-        out.alignment = ForcedAligner(p.adapted ? *p.adapted : m_model)
+        out.alignment = ForcedAligner(p.modelOr(m_model))
                             .align(p.utterance.features, p.utterance.words, p.utterance.pronunciations,
                                    p.utterance.duration);
     } catch (const Error &e) {
@@ -75,12 +83,9 @@ AlignerOutput MonophoneAligner::realign(const std::string &mediaPath, const Real
                                         const Lexicon &lexicon, Feedback *feedback) const
 {
     const Prepared p = prepare(mediaPath, realignment.words(), m_model, lexicon, m_adapt, feedback);
-    AlignerOutput out;
-    out.duration = p.utterance.duration;
-    out.audioFrames = m_model.featureOptions();
-    out.adaptation = p.report;
+    AlignerOutput out = p.output(m_model);
     try {
-        out.alignment = realignment.run(ForcedAligner(p.adapted ? *p.adapted : m_model), p.utterance.features,
+        out.alignment = realignment.run(ForcedAligner(p.modelOr(m_model)), p.utterance.features,
                                         p.utterance.pronunciations, p.utterance.duration);
     } catch (const Error &e) {
         throw misfit(e, mediaPath, {});

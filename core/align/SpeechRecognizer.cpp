@@ -38,18 +38,16 @@ SpeechRecognizer::Result SpeechRecognizer::recognize(const std::string &mediaPat
                     mediaPath);
     if (feedback && feedback->isCanceled())
         throw Canceled();
-    std::vector<short> pcm(audio.samples.size());
-    for (size_t i = 0; i < pcm.size(); ++i)
-        pcm[i] = short(std::lround(std::clamp(audio.samples[i], -1.0f, 1.0f) * 32767.0f));
     std::vector<SphinxDecoder::Word> words;
     try {
-        words = m_decoder->recognize(pcm);
+        words = m_decoder->recognize(toPcm16(audio.samples));
     } catch (const Error &e) {
         throw Error(e.reason(), mediaPath);
     }
     double cursor = 0;
     for (const SphinxDecoder::Word &w : words) {
-        const double start = std::max(cursor, w.first * 0.01), end = std::max(start, (w.last + 1) * 0.01);
+        const double start = std::max(cursor, w.first * SphinxDecoder::kFrameSeconds);
+        const double end = std::max(start, (w.last + 1) * SphinxDecoder::kFrameSeconds);
         if (start > cursor + 1e-9)
             result.timing.intervals.push_back(Interval{cursor, start, std::string(PhoneSet::kSilenceLabel), false});
         result.timing.intervals.push_back(Interval{start, end, w.word, false});

@@ -225,7 +225,7 @@ bool silenceOnly(const std::vector<Pronunciation> &variants)
 
 // `samples` as pocketsphinx's 16-bit PCM. Throws for empty or silent audio (below -80 dBFS, as
 // prepareUtterance: nothing to align words to).
-std::vector<short> toPcm(const std::vector<float> &samples)
+std::vector<short> checkedPcm(const std::vector<float> &samples)
 {
     if (samples.empty())
         throw Error("the audio is empty");
@@ -234,10 +234,7 @@ std::vector<short> toPcm(const std::vector<float> &samples)
         peak = std::max(peak, std::abs(v));
     if (peak < 1e-4f)
         throw Error("the audio is silent");
-    std::vector<short> pcm(samples.size());
-    for (size_t i = 0; i < samples.size(); ++i)
-        pcm[i] = short(std::lround(std::clamp(samples[i], -1.0f, 1.0f) * 32767.0f));
-    return pcm;
+    return toPcm16(samples);
 }
 
 // Viterbi over the graph's states (node * E + emitting state), left to right with self-loops and
@@ -378,7 +375,7 @@ AlignmentResult tiersOfPath(const Graph &graph, int E, const std::vector<int> &p
             continue;
         segments.push_back({n.label, n.word, t});
     }
-    const double shift = 0.01; // pocketsphinx's frame rate, 100 Hz
+    const double shift = SphinxDecoder::kFrameSeconds;
     auto startOf = [&](size_t i) { return i == 0 ? 0.0 : segments[i].start * shift; };
     auto endOf = [&](size_t i) { return i + 1 < segments.size() ? segments[i + 1].start * shift : end; };
     AlignmentResult result;
@@ -426,7 +423,7 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
         if (pronunciations[w].empty() ||
             std::any_of(pronunciations[w].begin(), pronunciations[w].end(), [](const Pronunciation &p) { return p.empty(); }))
             throw Error("no pronunciation for \"" + words[w] + "\"");
-    const std::vector<short> pcm = toPcm(samples);
+    const std::vector<short> pcm = checkedPcm(samples);
     const Graph graph = buildGraph(m_mdef, pronunciations, m_modelDir);
     if (feedback && feedback->isCanceled())
         throw Canceled();
@@ -474,7 +471,7 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
         path = viterbi.path(best);
     }
 
-    const double end = std::max({audioDuration, double(samples.size()) / kSampleRate, utterance.frames() * 0.01});
+    const double end = std::max({audioDuration, double(samples.size()) / kSampleRate, utterance.frames() * SphinxDecoder::kFrameSeconds});
     AlignmentResult result = tiersOfPath(graph, E, path, words, end);
     result.frames = utterance.frames();
     // Back to natural-log likelihood (costs are in the log base's units >> 10), relative to the
@@ -493,7 +490,7 @@ AlignerOutput SphinxAligner::align(const std::string &mediaPath, const std::vect
     AudioBuffer audio;
     try {
         audio = AudioDecoder::decode(mediaPath, kSampleRate);
-        checkWordsFitAudio(words, audio.duration(), 0.01, mediaPath, transcriptPath); // 10 ms frames
+        checkWordsFitAudio(words, audio.duration(), SphinxDecoder::kFrameSeconds, mediaPath, transcriptPath);
         pronunciations = lexicon.pronounceAll(words);
     } catch (const Error &e) {
         throw Error(e.reason(), mediaPath, e.field());

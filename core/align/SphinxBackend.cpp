@@ -8,6 +8,9 @@
 
 #include <QTemporaryFile>
 
+#include <algorithm>
+#include <cmath>
+
 #include <mutex>
 #include <type_traits>
 
@@ -53,6 +56,14 @@ struct AcmodPrefix
 } // namespace
 
 namespace lipsync {
+
+std::vector<short> toPcm16(const std::vector<float> &samples)
+{
+    std::vector<short> pcm(samples.size());
+    for (size_t i = 0; i < samples.size(); ++i)
+        pcm[i] = short(std::lround(std::clamp(samples[i], -1.0f, 1.0f) * 32767.0f));
+    return pcm;
+}
 
 struct SphinxDecoder::Impl
 {

@@ -13,11 +13,16 @@
 
 namespace lipsync {
 
+// Samples in [-1, 1] (clipped beyond) as the 16-bit PCM pocketsphinx reads.
+std::vector<short> toPcm16(const std::vector<float> &samples);
+
 class SphinxDecoder
 {
 public:
     // Senone scores are costs in the log base's units shifted right by this (SENSCR_SHIFT).
     static constexpr int kScoreShift = 10;
+    // pocketsphinx's frames: 10 ms apart.
+    static constexpr double kFrameSeconds = 0.01;
 
     // `arguments`: pocketsphinx options (name, value) after "-hmm modelDir". Throws
     // lipsync::Error naming the folder when the options or the model do not load.
