@@ -129,24 +129,19 @@ void ProjectDocument::saveTo(const QString &folder)
     if (m_readOnly && moving) {
         // The bundled demo may move or vanish with the installation: its copy takes the
         // (small) clips along, so it stays complete on its own.
-        for (const Sequence &s : m_project.sequences) {
-            const QString relative = QString::fromStdString(s.mediaFile);
-            const QString from = QString::fromStdString(m_project.resolve(s.mediaFile));
+        auto takeAlong = [&](const std::string &file, const char *what) {
+            const QString relative = QString::fromStdString(file);
+            const QString from = QString::fromStdString(m_project.resolve(file));
             const QString to = target.filePath(relative);
-            if (QFileInfo(relative).isAbsolute() || !QFileInfo::exists(from) || QFileInfo::exists(to))
-                continue;
-            rollback.copy(from, to, "media file");
-        }
+            if (!QFileInfo(relative).isAbsolute() && QFileInfo::exists(from) && !QFileInfo::exists(to))
+                rollback.copy(from, to, what);
+        };
+        for (const Sequence &s : m_project.sequences)
+            takeAlong(s.mediaFile, "media file");
         // So do the model files it refers to (the demo's AAM); models trained in memory are
         // written by their owners on locationChanged.
-        for (const ModelReference &m : m_project.models) {
-            const QString relative = QString::fromStdString(m.file);
-            const QString from = QString::fromStdString(m_project.resolve(m.file));
-            const QString to = target.filePath(relative);
-            if (QFileInfo(relative).isAbsolute() || !QFileInfo::exists(from) || QFileInfo::exists(to))
-                continue;
-            rollback.copy(from, to, "model file");
-        }
+        for (const ModelReference &m : m_project.models)
+            takeAlong(m.file, "model file");
         // Relative paths now hold in the new folder as they are: save from there.
         Project copy = m_project;
         copy.setFolder(folder.toStdString());
