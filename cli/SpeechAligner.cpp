@@ -5,11 +5,13 @@
 
 #include "project/Project.h"
 
+#include <algorithm>
+
 namespace lipsync::cli {
 
-std::vector<CommandOption> SpeechAligner::options(const QStringList &alignerAliases)
+std::vector<CommandOption> SpeechAligner::options(const QStringList &alignerAliases, bool withProject)
 {
-    return {
+    std::vector<CommandOption> options{
         {QStringLiteral("aligner"), QStringLiteral("MODEL|sphinx[:DIR]"),
          QStringLiteral("the forced aligner: an aligner model of ours (lipsync aligner train/adapt; default: the "
                         "shipped GRID s1 model, one speaker, or $LIPSYNC_ALIGNER_MODEL), or sphinx: CMU Sphinx's "
@@ -23,17 +25,26 @@ std::vector<CommandOption> SpeechAligner::options(const QStringList &alignerAlia
          QStringLiteral("pronounce words with the project's pronunciations first")},
         pronunciationsOption(),
     };
+    if (!withProject)
+        options.erase(std::remove_if(options.begin(), options.end(),
+                                     [](const CommandOption &o) { return o.name == QLatin1String("project"); }),
+                      options.end());
+    return options;
 }
 
-SpeechAligner::SpeechAligner(const CommandLine &args)
+SpeechAligner::SpeechAligner(const CommandLine &args) : SpeechAligner(args, args.value(QStringLiteral("project")))
+{
+}
+
+SpeechAligner::SpeechAligner(const CommandLine &args, const QString &projectFolder)
 {
     AlignerChoice choice{args.value(QStringLiteral("aligner")).toStdString(), args.isSet(QStringLiteral("adapt"))};
     if (!choice.isSphinx())
         choice.model = alignerModelOrDefault(QString::fromStdString(choice.model), args.spec().name).toStdString();
     m_aligner = createAligner(choice);
     std::map<std::string, std::string> projectPronunciations;
-    if (!args.value(QStringLiteral("project")).isEmpty())
-        projectPronunciations = Project::load(args.value(QStringLiteral("project")).toStdString()).pronunciations;
+    if (!projectFolder.isEmpty())
+        projectPronunciations = Project::load(projectFolder.toStdString()).pronunciations;
     m_lexicon = makeLexicon(args.value(QStringLiteral("pronunciations")), projectPronunciations);
 }
 

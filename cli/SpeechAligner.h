@@ -20,12 +20,15 @@ class SpeechAligner
 {
 public:
     // The shared options, to add to a command's CommandSpec; `alignerAliases`: other spellings of
-    // --aligner the command accepts.
-    static std::vector<CommandOption> options(const QStringList &alignerAliases = {});
+    // --aligner the command accepts. `withProject`: --project DIR among them.
+    static std::vector<CommandOption> options(const QStringList &alignerAliases = {}, bool withProject = true);
 
     // Loads the aligner and the lexicon the options choose. Throws lipsync::Error naming the model
     // file or folder, the project or the dictionary at fault.
     explicit SpeechAligner(const CommandLine &args);
+    // The same with the pronunciations of the project at `projectFolder` (a command whose project
+    // is an argument rather than --project).
+    SpeechAligner(const CommandLine &args, const QString &projectFolder);
     ~SpeechAligner();
 
     // "sphinx:DIR" or the path of our model file.
@@ -33,6 +36,7 @@ public:
     // The file the model is read from (CMU Sphinx's: its folder's mdef), for up-to-date checks.
     QString modelFile() const;
     const Lexicon &lexicon() const { return *m_lexicon; }
+    const Aligner &aligner() const { return *m_aligner; }
 
     // Aligns the recording at `mediaPath` to `words`. Throws lipsync::Error naming the media (and
     // `transcriptPath` when the words do not fit the audio).

@@ -15,12 +15,23 @@ PreparedUtterance prepareUtterance(const std::string &id, const std::string &med
                                    const std::vector<std::string> &words, const AcousticModel &model,
                                    const Lexicon &lexicon, const std::string &transcriptPath)
 {
+    const AudioBuffer audio = AudioDecoder::decode(mediaPath, model.featureOptions().sampleRate);
+    PreparedUtterance u = pronounceUtterance(id, mediaPath, audio, words, model, lexicon, transcriptPath);
+    u.features = model.features(audio);
+    if (u.features.rows() == 0)
+        throw Error("the audio is shorter than one analysis window", mediaPath);
+    return u;
+}
+
+PreparedUtterance pronounceUtterance(const std::string &id, const std::string &mediaPath, const AudioBuffer &audio,
+                                     const std::vector<std::string> &words, const AcousticModel &model,
+                                     const Lexicon &lexicon, const std::string &transcriptPath)
+{
     PreparedUtterance u;
     u.id = id;
     u.words = words;
     // The audio first: a transcript far too long for it is refused before its words are
     // pronounced (a subtitle file of 100 000 cues against a 3 s clip).
-    const AudioBuffer audio = AudioDecoder::decode(mediaPath, model.featureOptions().sampleRate);
     u.duration = audio.duration();
     checkWordsFitAudio(words, u.duration, model.featureOptions().shiftSeconds, mediaPath, transcriptPath);
     try {
@@ -34,9 +45,6 @@ PreparedUtterance prepareUtterance(const std::string &id, const std::string &med
     // -80 dBFS: nothing to align words to.
     if (peak < 1e-4f)
         throw Error("the audio is silent", mediaPath);
-    u.features = model.features(audio);
-    if (u.features.rows() == 0)
-        throw Error("the audio is shorter than one analysis window", mediaPath);
     return u;
 }
 

@@ -28,6 +28,12 @@ PreparedUtterance prepareUtterance(const std::string &id, const std::string &med
                                    const std::vector<std::string> &words, const AcousticModel &model,
                                    const Lexicon &lexicon, const std::string &transcriptPath = {});
 
+// The same from audio already decoded at the model's rate, without the features: the checks and
+// the pronunciations (a long recording's features are computed window by window, LongAlignment).
+PreparedUtterance pronounceUtterance(const std::string &id, const std::string &mediaPath, const AudioBuffer &audio,
+                                     const std::vector<std::string> &words, const AcousticModel &model,
+                                     const Lexicon &lexicon, const std::string &transcriptPath = {});
+
 // Throws lipsync::Error naming `mediaPath` (and `transcriptPath` if given) when the spoken words
 // (silence tokens aside) cannot fit `audioSeconds` even at one phone of three `frameShift` frames
 // each: checked before the words are pronounced, so a wrong, huge transcript costs no memory.

@@ -1,7 +1,11 @@
 #include "align/MonophoneAligner.h"
 
 #include "align/AlignerUtterance.h"
+#include "align/LongAlignment.h"
 #include "align/Realignment.h"
+#include "io/AudioDecoder.h"
+#include "io/MediaInfo.h"
+#include "io/Transcript.h"
 #include "util/Error.h"
 
 #include <filesystem>
@@ -67,12 +71,47 @@ AlignerOutput MonophoneAligner::align(const std::string &mediaPath, const std::v
 {
     if (words.empty())
         throw Error("the transcript has no words to align", transcriptPath.empty() ? mediaPath : transcriptPath);
+    if (MediaInfo::probe(mediaPath).audioDuration > kLongRecordingSeconds)
+        return alignLong(mediaPath, words, lexicon, feedback, transcriptPath);
     const Prepared p = prepare(mediaPath, words, m_model, lexicon, m_adapt, feedback, transcriptPath);
     AlignerOutput out = p.output(m_model);
     try {
         out.alignment = ForcedAligner(p.modelOr(m_model))
                             .align(p.utterance.features, p.utterance.words, p.utterance.pronunciations,
                                    p.utterance.duration);
+    } catch (const Error &e) {
+        throw misfit(e, mediaPath, transcriptPath);
+    }
+    return out;
+}
+
+AlignerOutput MonophoneAligner::alignLong(const std::string &mediaPath, const std::vector<std::string> &words,
+                                          const Lexicon &lexicon, Feedback *feedback,
+                                          const std::string &transcriptPath) const
+{
+    const double seconds = MediaInfo::probe(mediaPath).audioDuration;
+    if (seconds > kMaxRecordingSeconds)
+        throw Error("the recording is " + std::to_string(int(seconds / 60)) + " min long; up to "
+                        + std::to_string(int(kMaxRecordingSeconds / 60))
+                        + " min are aligned in one go: split it into parts (ffmpeg -f segment)",
+                    mediaPath);
+    if (m_adapt)
+        throw Error("speaker adaptation needs a recording of at most " + std::to_string(int(kLongRecordingSeconds / 60))
+                        + " min: align this one without it, or split it into utterances first (lipsync project "
+                          "import-long) and adapt to those",
+                    mediaPath);
+    const AudioBuffer audio = AudioDecoder::decode(mediaPath, m_model.featureOptions().sampleRate);
+    const PreparedUtterance u = pronounceUtterance(std::filesystem::path(mediaPath).stem().string(), mediaPath, audio,
+                                                   words, m_model, lexicon, transcriptPath);
+    // Subtitles' cue times choose the words of each window.
+    std::vector<Interval> cues;
+    if (!transcriptPath.empty())
+        cues = readTranscript(transcriptPath).cues.intervals;
+    AlignerOutput out;
+    out.duration = u.duration;
+    out.audioFrames = m_model.featureOptions();
+    try {
+        out.alignment = alignLongRecording(m_model, audio.samples, u.words, u.pronunciations, cues, feedback);
     } catch (const Error &e) {
         throw misfit(e, mediaPath, transcriptPath);
     }

@@ -2,7 +2,8 @@
 // Our aligner (Aligner): the speaker's monophone HMMs (AcousticModel, `lipsync aligner train`)
 // and ForcedAligner's Viterbi over the transcript, on the model's own features of the decoded
 // audio. With adaptation the model is first moved to the recording's speaker (SpeakerAdaptation:
-// MLLR then MAP of the means, as HTK and Kaldi do). Re-alignment is one constrained Viterbi over
+// MLLR then MAP of the means, as HTK and Kaldi do). A recording longer than three minutes is
+// aligned window by window in bounded memory (LongAlignment). Re-alignment is one constrained Viterbi over
 // the whole recording with every kept boundary fixed (Realignment::run).
 #include "align/AcousticModel.h"
 #include "align/Aligner.h"
@@ -23,6 +24,11 @@ public:
                           Feedback *feedback = nullptr) const override;
 
 private:
+    // Recordings longer than kLongRecordingSeconds: window by window (LongAlignment), without
+    // adaptation; longer than kMaxRecordingSeconds: refused.
+    AlignerOutput alignLong(const std::string &mediaPath, const std::vector<std::string> &words, const Lexicon &lexicon,
+                            Feedback *feedback, const std::string &transcriptPath) const;
+
     std::string m_path;
     AcousticModel m_model;
     bool m_adapt = false;

@@ -2,10 +2,12 @@
 
 #include "align/AlignerUtterance.h"
 #include "align/Realignment.h"
+#include "align/LongAlignment.h"
 #include "align/SphinxAdaptation.h"
 #include "align/SphinxBackend.h"
 #include "align/SphinxCodebooks.h"
 #include "io/AudioDecoder.h"
+#include "io/MediaInfo.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 #include "util/PhoneSet.h"
@@ -489,6 +491,12 @@ AlignerOutput SphinxAligner::align(const std::string &mediaPath, const std::vect
     std::vector<std::vector<Pronunciation>> pronunciations;
     AudioBuffer audio;
     try {
+        // Its Viterbi holds the whole recording's trellis (20 minutes took 24 GB).
+        if (const double seconds = MediaInfo::probe(mediaPath).audioDuration; seconds > kLongRecordingSeconds)
+            throw Error("CMU Sphinx aligns recordings of up to " + std::to_string(int(kLongRecordingSeconds / 60))
+                        + " min, this one has " + std::to_string(int(seconds / 60))
+                        + " min: align it with our aligner (the default, any length), or split it into "
+                          "utterances first (lipsync project import-long)");
         audio = AudioDecoder::decode(mediaPath, kSampleRate);
         checkWordsFitAudio(words, audio.duration(), SphinxDecoder::kFrameSeconds, mediaPath, transcriptPath);
         pronunciations = lexicon.pronounceAll(words);

@@ -82,6 +82,9 @@ UtteranceGraph::UtteranceGraph(const std::vector<std::vector<Pronunciation>> &pr
     for (const GraphEdge &e : frontier.exits)
         if (e.from >= 0)
             m_states[size_t(e.from)].exitExtra = e.extra;
+    if (options.openEnd)
+        for (GraphState &s : m_states)
+            s.exitExtra = std::isfinite(s.exitExtra) ? s.exitExtra : 0.0;
 }
 
 double UtteranceGraph::logSelf(const AcousticModel &model, int s) const

@@ -39,6 +39,9 @@ public:
     {
         double silenceProbability = 0.5; // of an optional silence between words
         bool optionalEdgeSilence = true;  // leading/trailing silence may be skipped
+        // Any state may end the utterance: for a window cut out of a longer recording, whose
+        // last frame can fall anywhere in the words (LongAlignment).
+        bool openEnd = false;
     };
 
     // `pronunciations[w]` holds the variants of word w (at least one each).

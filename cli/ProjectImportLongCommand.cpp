@@ -1,0 +1,123 @@
+// `lipsync project import-long PROJECT MEDIA --transcript FILE`: a long recording into a project
+// as utterance sequences (render/LongRecordingImport): aligned in bounded memory, cut at its
+// pauses, one clip per utterance with its words and alignment.
+#include "CommandLine.h"
+#include "SpeechAligner.h"
+
+#include "io/Transcript.h"
+#include "project/Project.h"
+#include "render/LongRecordingImport.h"
+#include "tasks/Feedback.h"
+#include "util/Error.h"
+
+#include <QElapsedTimer>
+#include <QJsonArray>
+#include <QJsonObject>
+
+#include <cstdio>
+#include <unistd.h>
+
+using namespace lipsync;
+using namespace lipsync::cli;
+
+namespace {
+
+// Progress on stderr: a percentage rewritten in place on a terminal, a line per tenth otherwise.
+void showProgress(Feedback &feedback)
+{
+    const bool terminal = isatty(fileno(stderr)) != 0;
+    feedback.onProgress = [terminal, shown = -1](double fraction) mutable {
+        const int percent = int(fraction * 100.0);
+        if (terminal ? percent == shown : percent / 10 == shown / 10)
+            return;
+        shown = percent;
+        if (terminal)
+            std::fprintf(stderr, "\r\033[Kimporting: %3d %%", percent);
+        else
+            std::fprintf(stderr, "importing: %d %%\n", percent);
+        std::fflush(stderr);
+    };
+}
+
+double positiveNumber(const CommandLine &a, const char *name)
+{
+    const double v = a.number(QString::fromLatin1(name));
+    if (!(v > 0))
+        throw UsageError(QStringLiteral("--%1 must be a number > 0").arg(QString::fromLatin1(name)));
+    return v;
+}
+
+int runImportLong(const CommandLine &a)
+{
+    const QString projectFolder = a.positional(0);
+    const QString media = a.positional(1);
+    LongRecordingImportOptions options;
+    options.split.minimumPause = positiveNumber(a, "min-pause");
+    options.split.shortest = positiveNumber(a, "shortest");
+    options.split.longest = positiveNumber(a, "longest");
+    if (options.split.longest < options.split.shortest)
+        throw UsageError(QStringLiteral("--longest must be at least --shortest"));
+    try {
+        Project project = Project::load(projectFolder.toStdString());
+        const SpeechAligner aligner(a, projectFolder);
+        const Transcript transcript = readTranscript(a.value("transcript").toStdString());
+        Feedback feedback;
+        if (!a.isSet("json"))
+            showProgress(feedback);
+        QElapsedTimer timer;
+        timer.start();
+        const LongRecordingImportResult r =
+            importLongRecording(project, media.toStdString(), transcript.words, a.value("transcript").toStdString(),
+                                aligner.aligner(), aligner.lexicon(), options, &feedback);
+        project.save();
+        const double seconds = timer.elapsed() / 1000.0;
+        if (a.isSet("json")) {
+            QJsonArray ids;
+            for (const std::string &id : r.sequenceIds)
+                ids.append(QString::fromStdString(id));
+            printJson(QJsonObject{{QStringLiteral("project"), projectFolder},
+                                  {QStringLiteral("media"), media},
+                                  {QStringLiteral("aligner"), aligner.modelName()},
+                                  {QStringLiteral("duration"), r.duration},
+                                  {QStringLiteral("utteranceSeconds"), r.spokenSeconds},
+                                  {QStringLiteral("words"), r.words},
+                                  {QStringLiteral("sequences"), ids},
+                                  {QStringLiteral("seconds"), seconds}});
+        } else {
+            std::fprintf(stderr, "\r\033[K");
+            std::printf("imported %zu utterances (%d words, %.1f of %.1f s) of %s into %s in %.1f s\n",
+                        r.sequenceIds.size(), r.words, r.spokenSeconds, r.duration, qPrintable(media),
+                        qPrintable(projectFolder), seconds);
+        }
+    } catch (const Error &e) {
+        return fail(QString::fromUtf8(e.what()));
+    }
+    return 0;
+}
+
+const CommandRegistration registration{
+    CommandSpec{
+        QStringLiteral("project import-long"),
+        QStringLiteral("a long recording into a project as utterance sequences, aligned and cut at its pauses"),
+        QStringLiteral("Aligns a long recording (up to 3 hours: a broadcast, a lecture) to its transcript in bounded "
+                       "memory, a window at a time (subtitle cue times, if the transcript is .srt or .vtt, choose "
+                       "the words of each window), cuts it at its pauses into utterances and adds each to the "
+                       "project as a sequence of its own: a clip in PROJECT/clips (MP4 from a video, WAV from "
+                       "sound alone; the sound mono at 16 kHz) with its words and alignment. The project is saved."),
+        {{QStringLiteral("transcript"), QStringLiteral("FILE"),
+          QStringLiteral("the words spoken (.txt, .srt, .vtt, .lab, .align or a TextGrid words tier)"), {},
+          CommandOption::Required},
+         {QStringLiteral("min-pause"), QStringLiteral("S"),
+          QStringLiteral("a silence this long (seconds) ends an utterance once it lasts --shortest"),
+          QStringLiteral("0.3")},
+         {QStringLiteral("shortest"), QStringLiteral("S"), QStringLiteral("seconds an utterance lasts before a pause ends it"),
+          QStringLiteral("2")},
+         {QStringLiteral("longest"), QStringLiteral("S"),
+          QStringLiteral("seconds after which the longest silence so far (or a word boundary) ends it"),
+          QStringLiteral("12")}},
+        {{QStringLiteral("PROJECT"), QStringLiteral("the project folder")},
+         {QStringLiteral("MEDIA"), QStringLiteral("the recording (any audio or video file)")}}}
+        .add(SpeechAligner::options({}, false)),
+    &runImportLong};
+
+} // namespace

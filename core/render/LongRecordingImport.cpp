@@ -1,0 +1,153 @@
+#include "render/LongRecordingImport.h"
+
+#include "io/AudioDecoder.h"
+#include "io/MediaInfo.h"
+#include "io/VideoReader.h"
+#include "io/WavWriter.h"
+#include "project/Project.h"
+#include "render/VideoExporter.h"
+#include "tasks/Feedback.h"
+#include "util/Error.h"
+#include "util/PhoneSet.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+namespace lipsync {
+
+namespace {
+
+// The sound the clips get: mono at the aligner's rate.
+constexpr int kClipSampleRate = 16000;
+// Share of the progress bar the alignment takes; writing the clips takes the rest.
+constexpr double kAligningShare = 0.3;
+
+Tier shifted(Tier tier, double offset)
+{
+    for (Interval &i : tier.intervals) {
+        i.start += offset;
+        i.end += offset;
+    }
+    return tier;
+}
+
+std::string numbered(const std::string &stem, size_t index)
+{
+    char suffix[16];
+    std::snprintf(suffix, sizeof suffix, "_%04zu", index + 1);
+    return stem + suffix;
+}
+
+} // namespace
+
+LongRecordingImportResult importLongRecording(Project &project, const std::string &mediaPath,
+                                              const std::vector<std::string> &words,
+                                              const std::string &transcriptPath, const Aligner &aligner,
+                                              const Lexicon &lexicon, const LongRecordingImportOptions &options,
+                                              Feedback *feedback)
+{
+    const MediaInfo info = MediaInfo::probe(mediaPath);
+    if (!info.hasAudio)
+        throw Error("no audio stream", mediaPath);
+    AlignerOutput aligned;
+    {
+        Feedback dummy;
+        Feedback part(feedback ? *feedback : dummy, 0.0, kAligningShare);
+        aligned = aligner.align(mediaPath, words, lexicon, &part, transcriptPath);
+    }
+
+    // The clips follow the video's frames; times of the alignment are the audio's.
+    AudioBuffer audio = AudioDecoder::decode(mediaPath, kClipSampleRate);
+    std::unique_ptr<VideoReader> video;
+    double offset = 0.0;
+    UtteranceSplitOptions split = options.split;
+    if (info.hasVideo) {
+        video = std::make_unique<VideoReader>(mediaPath);
+        offset = audio.startTime - video->timestamp(0);
+        audio = alignAudioToVideo(audio, video->timestamp(0));
+        split.frameRate = video->frameRate();
+    } else {
+        split.frameRate = Project::kAudioOnlyFrameRate;
+    }
+    const double duration = info.hasVideo ? video->frameCount() / video->frameRate() : audio.duration();
+    const std::vector<UtteranceSpan> spans = splitAtPauses(shifted(aligned.alignment.words, offset),
+                                                           shifted(aligned.alignment.phones, offset), duration, split);
+
+    const std::string stem = QFileInfo(QString::fromStdString(mediaPath)).completeBaseName().toStdString();
+    std::set<std::string> taken;
+    for (const Sequence &s : project.sequences)
+        taken.insert(s.id);
+    for (size_t k = 0; k < spans.size(); ++k)
+        if (taken.count(numbered(stem, k)))
+            throw Error("the project already has a sequence " + numbered(stem, k)
+                            + " (was this recording imported before?)",
+                        mediaPath);
+    const QDir projectDir(QString::fromStdString(project.folder().empty() ? "." : project.folder()));
+    const QString clipDir = projectDir.filePath(QString::fromStdString(options.clipFolder));
+    if (!QDir().mkpath(clipDir))
+        throw Error("cannot create the clip folder", clipDir.toStdString());
+
+    LongRecordingImportResult result;
+    result.duration = aligned.duration;
+    std::vector<Sequence> added;
+    std::vector<QString> written;
+    try {
+        Feedback dummy;
+        Feedback part(feedback ? *feedback : dummy, kAligningShare, 1.0);
+        for (size_t k = 0; k < spans.size(); ++k) {
+            part.throwIfCanceled();
+            part.setProgress(double(k) / double(spans.size()));
+            const UtteranceSpan &span = spans[k];
+            Sequence s;
+            s.id = numbered(stem, k);
+            s.frameRate = split.frameRate;
+            const int firstFrame = int(std::lround(span.start * s.frameRate));
+            const int endFrame = int(std::lround(span.end * s.frameRate));
+            s.frameCount = endFrame - firstFrame;
+            const size_t begin = size_t(std::lround(firstFrame / s.frameRate * kClipSampleRate));
+            const size_t end = std::min(audio.samples.size(), size_t(std::lround(endFrame / s.frameRate * kClipSampleRate)));
+            const QString file = QDir(clipDir).filePath(QString::fromStdString(s.id) + (video ? ".mp4" : ".wav"));
+            if (video) {
+                AudioBuffer clipAudio;
+                clipAudio.sampleRate = kClipSampleRate;
+                clipAudio.samples.assign(audio.samples.begin() + long(std::min(begin, end)), audio.samples.begin() + long(end));
+                VideoExportOptions v;
+                v.setFrameRate(s.frameRate);
+                v.crf = options.crf;
+                VideoExporter exporter(file.toStdString(), v, clipAudio.samples.empty() ? nullptr : &clipAudio);
+                for (int f = firstFrame; f < endFrame && f < video->frameCount(); ++f)
+                    exporter.addFrame(video->frame(f));
+                exporter.finish();
+            } else {
+                writeWav(file.toStdString(), audio.samples, begin, end, kClipSampleRate);
+            }
+            written.push_back(file);
+            s.mediaFile = projectDir.relativeFilePath(file).toStdString();
+            s.transcript = span.transcript;
+            s.words = span.words;
+            s.phones = span.phones;
+            for (const Interval &i : span.words.intervals)
+                result.words += PhoneSet::isSilence(i.label) ? 0 : 1;
+            result.spokenSeconds += span.end - span.start;
+            added.push_back(std::move(s));
+        }
+    } catch (...) {
+        for (const QString &file : written)
+            QFile::remove(file);
+        throw;
+    }
+    for (Sequence &s : added) {
+        result.sequenceIds.push_back(s.id);
+        project.sequences.push_back(std::move(s));
+    }
+    if (feedback)
+        feedback->setProgress(1.0);
+    return result;
+}
+
+} // namespace lipsync

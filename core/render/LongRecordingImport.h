@@ -1,0 +1,48 @@
+#pragma once
+// A long recording (a broadcast, a lecture, an hour of one speaker) brought into a project as
+// utterance sequences (docs/pipeline.md, "Long recordings"): aligned to its transcript in bounded
+// memory (the aligner's LongAlignment for recordings over three minutes), cut at its pauses
+// (UtteranceSplit), each utterance written as a clip of its own — H.264 + AAC MP4 from a video
+// (VideoExporter), 16-bit WAV from a sound-only file (WavWriter), both with the sound at the
+// aligner's 16 kHz — and added to the project with its words and its alignment. The recording is
+// read once, front to back, and every clip is written as soon as its frames are read.
+#include "align/Aligner.h"
+#include "project/UtteranceSplit.h"
+
+#include <string>
+#include <vector>
+
+namespace lipsync {
+
+class Feedback;
+class Lexicon;
+class Project;
+
+struct LongRecordingImportOptions
+{
+    UtteranceSplitOptions split;    // frameRate is the recording's own
+    std::string clipFolder = "clips"; // relative to the project folder
+    int crf = 18;                   // x264 quality of the video clips
+};
+
+struct LongRecordingImportResult
+{
+    std::vector<std::string> sequenceIds; // added to the project, in time order
+    double duration = 0.0;                // seconds of audio aligned
+    double spokenSeconds = 0.0;           // of it inside the utterances
+    int words = 0;
+};
+
+// Adds the utterances of `mediaPath` to `project` (which the caller saves) with ids
+// "<stem>_0001"..., clips written into the project's `clipFolder`. `words` are the transcript's
+// (`transcriptPath` names it in errors and gives subtitle cues). Throws lipsync::Error naming the
+// file for media that cannot be read, words that do not fit, a clip that cannot be written, and
+// ids the project already has (nothing added then); Canceled on cancel, the clips written so far
+// removed.
+LongRecordingImportResult importLongRecording(Project &project, const std::string &mediaPath,
+                                              const std::vector<std::string> &words,
+                                              const std::string &transcriptPath, const Aligner &aligner,
+                                              const Lexicon &lexicon, const LongRecordingImportOptions &options = {},
+                                              Feedback *feedback = nullptr);
+
+} // namespace lipsync
