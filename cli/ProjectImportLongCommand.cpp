@@ -66,15 +66,18 @@ int runImportLong(const CommandLine &a)
             showProgress(feedback);
         QElapsedTimer timer;
         timer.start();
-        const LongRecordingImportResult r =
+        LongRecordingImportResult r =
             importLongRecording(project, media.toStdString(), transcript.words, a.value("transcript").toStdString(),
                                 aligner.aligner(), aligner.lexicon(), options, &feedback);
+        const size_t imported = r.sequences.size();
+        QJsonArray ids;
+        for (Sequence &s : r.sequences) {
+            ids.append(QString::fromStdString(s.id));
+            project.sequences.push_back(std::move(s));
+        }
         project.save();
         const double seconds = timer.elapsed() / 1000.0;
         if (a.isSet("json")) {
-            QJsonArray ids;
-            for (const std::string &id : r.sequenceIds)
-                ids.append(QString::fromStdString(id));
             printJson(QJsonObject{{QStringLiteral("project"), projectFolder},
                                   {QStringLiteral("media"), media},
                                   {QStringLiteral("aligner"), aligner.modelName()},
@@ -86,7 +89,7 @@ int runImportLong(const CommandLine &a)
         } else {
             std::fprintf(stderr, "\r\033[K");
             std::printf("imported %zu utterances (%d words, %.1f of %.1f s) of %s into %s in %.1f s\n",
-                        r.sequenceIds.size(), r.words, r.spokenSeconds, r.duration, qPrintable(media),
+                        imported, r.words, r.spokenSeconds, r.duration, qPrintable(media),
                         qPrintable(projectFolder), seconds);
         }
     } catch (const Error &e) {

@@ -45,7 +45,7 @@ std::string numbered(const std::string &stem, size_t index)
 
 } // namespace
 
-LongRecordingImportResult importLongRecording(Project &project, const std::string &mediaPath,
+LongRecordingImportResult importLongRecording(const Project &project, const std::string &mediaPath,
                                               const std::vector<std::string> &words,
                                               const std::string &transcriptPath, const Aligner &aligner,
                                               const Lexicon &lexicon, const LongRecordingImportOptions &options,
@@ -94,7 +94,6 @@ LongRecordingImportResult importLongRecording(Project &project, const std::strin
 
     LongRecordingImportResult result;
     result.duration = aligned.duration;
-    std::vector<Sequence> added;
     std::vector<QString> written;
     try {
         Feedback dummy;
@@ -134,16 +133,12 @@ LongRecordingImportResult importLongRecording(Project &project, const std::strin
             for (const Interval &i : span.words.intervals)
                 result.words += PhoneSet::isSilence(i.label) ? 0 : 1;
             result.spokenSeconds += span.end - span.start;
-            added.push_back(std::move(s));
+            result.sequences.push_back(std::move(s));
         }
     } catch (...) {
         for (const QString &file : written)
             QFile::remove(file);
         throw;
-    }
-    for (Sequence &s : added) {
-        result.sequenceIds.push_back(s.id);
-        project.sequences.push_back(std::move(s));
     }
     if (feedback)
         feedback->setProgress(1.0);

@@ -7,6 +7,7 @@
 // aligner's 16 kHz — and added to the project with its words and its alignment. The recording is
 // read once, front to back, and every clip is written as soon as its frames are read.
 #include "align/Aligner.h"
+#include "project/Sequence.h"
 #include "project/UtteranceSplit.h"
 
 #include <string>
@@ -27,19 +28,19 @@ struct LongRecordingImportOptions
 
 struct LongRecordingImportResult
 {
-    std::vector<std::string> sequenceIds; // added to the project, in time order
+    std::vector<Sequence> sequences;      // to add to the project, in time order
     double duration = 0.0;                // seconds of audio aligned
     double spokenSeconds = 0.0;           // of it inside the utterances
     int words = 0;
 };
 
-// Adds the utterances of `mediaPath` to `project` (which the caller saves) with ids
-// "<stem>_0001"..., clips written into the project's `clipFolder`. `words` are the transcript's
+// The utterances of `mediaPath` as sequences for `project` (the caller adds them) with ids
+// "<stem>_0001"..., their clips written into the project's `clipFolder`. `words` are the transcript's
 // (`transcriptPath` names it in errors and gives subtitle cues). Throws lipsync::Error naming the
 // file for media that cannot be read, words that do not fit, a clip that cannot be written, and
-// ids the project already has (nothing added then); Canceled on cancel, the clips written so far
+// ids the project already has; Canceled on cancel. On any error the clips written so far are
 // removed.
-LongRecordingImportResult importLongRecording(Project &project, const std::string &mediaPath,
+LongRecordingImportResult importLongRecording(const Project &project, const std::string &mediaPath,
                                               const std::vector<std::string> &words,
                                               const std::string &transcriptPath, const Aligner &aligner,
                                               const Lexicon &lexicon, const LongRecordingImportOptions &options = {},
