@@ -5,7 +5,9 @@
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
 #include "io/FeatureCsv.h"
+#include "util/Error.h"
 
+#include <cmath>
 #include <cstdio>
 
 using namespace lipsync;
@@ -18,10 +20,25 @@ int runGenerate(const CommandLine &args)
     const QString modelPath = args.value(QStringLiteral("model"));
     const QString labelsPath = args.value(QStringLiteral("labels"));
     const QString out = args.value(QStringLiteral("out"));
-    const double fps = args.positiveNumber(QStringLiteral("fps"));
     const int frames = args.isSet(QStringLiteral("frames")) ? args.integer(QStringLiteral("frames"), 1) : 0;
     std::string aam;
     const auto model = loadModel(modelPath.toStdString(), modelAamIdentifier(args), &aam);
+    // The model's dynamics are per frame: it generates at the rate it was trained at.
+    double fps = model->frameRate();
+    if (args.isSet(QStringLiteral("fps"))) {
+        const double given = args.positiveNumber(QStringLiteral("fps"));
+        if (fps > 0 && std::abs(given - fps) > 1e-6 * fps)
+            throw Error(QStringLiteral("the model was trained at %1 frames/s: its dynamics are per frame, so "
+                                       "generating at %2 would change their timing (leave out --fps)")
+                            .arg(fps)
+                            .arg(given)
+                            .toStdString(),
+                        modelPath.toStdString());
+        fps = given;
+    }
+    if (!(fps > 0))
+        throw Error("the model records no frame rate: give the rate it was trained at with --fps",
+                    modelPath.toStdString());
     const std::vector<int> labels = readFrameLabels(labelsPath.toStdString(), fps, frames);
     Eigen::MatrixXd Y;
     if (args.isSet(QStringLiteral("stream"))) {
@@ -69,8 +86,9 @@ const CommandRegistration registration{
        {}, CommandOption::Required},
       {QStringLiteral("out"), QStringLiteral("FEATURES.csv"), QStringLiteral("the features to write"), {},
        CommandOption::Required},
-      {QStringLiteral("fps"), QStringLiteral("RATE"), QStringLiteral("frames per second of the generated features"),
-       QStringLiteral("25")},
+      {QStringLiteral("fps"), QStringLiteral("RATE"),
+       QStringLiteral("frames per second of the generated features, for a model file that records none (the "
+                      "rate the model was trained at)")},
       {QStringLiteral("frames"), QStringLiteral("N"), QStringLiteral("generate N frames (default: as the labels last)")},
       modelAamOption(QStringLiteral("refuse a model trained for another AAM than this one (its file or its "
                                     "identifier)")),

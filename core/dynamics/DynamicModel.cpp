@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <deque>
 
 namespace lipsync {
@@ -116,7 +117,18 @@ private:
 void DynamicModel::train(const std::vector<LabelledSequence> &sequences, Feedback &feedback)
 {
     validateSequences(sequences, m_stateCount);
+    double rate = 0.0;
+    for (const LabelledSequence &s : sequences) {
+        if (s.frameRate > 0 && rate > 0 && std::abs(s.frameRate - rate) > 1e-6 * rate) {
+            char rates[96];
+            std::snprintf(rates, sizeof rates, "%.6g and %.6g frames/s", rate, s.frameRate);
+            throw Error(std::string("the training sequences have different frame rates (") + rates + ", " + s.name
+                        + "): a model's dynamics are per frame, so train it on one rate");
+        }
+        rate = s.frameRate > 0 ? s.frameRate : rate;
+    }
     fit(sequences, feedback);
+    m_frameRate = rate;
     m_mean.resize(0);
     m_gain.resize(0);
     m_detailGain.resize(0);

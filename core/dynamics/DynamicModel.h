@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -36,8 +37,13 @@ public:
     bool isTrained() const { return m_dimension > 0; }
 
     // Validates (validateSequences) and fits the parameters. Reports progress and the objective
-    // per iteration, polls cancel (throws Canceled; the model is then left unchanged).
+    // per iteration, polls cancel (throws Canceled; the model is then left unchanged). Records the
+    // sequences' frame rate; sequences at different rates are an Error (the dynamics are per frame).
     void train(const std::vector<LabelledSequence> &sequences, Feedback &feedback);
+    // Frames per second of the features it was trained on, the rate it generates at (0: not
+    // known, e.g. model files that record none).
+    double frameRate() const { return m_frameRate; }
+    void setFrameRate(double fps) { m_frameRate = fps > 0 && std::isfinite(fps) ? fps : 0.0; }
 
     // The trajectory for the labels: T x d — the model's most likely one, with the variance
     // compensation applied when the model was trained with it.
@@ -104,6 +110,7 @@ protected:
 
 private:
     int m_stateCount = PhoneSet::kCount;
+    double m_frameRate = 0.0;
     bool m_compensate = false;
     Eigen::VectorXd m_mean; // compensation: training mean m and gain g (empty: none)
     Eigen::VectorXd m_gain;

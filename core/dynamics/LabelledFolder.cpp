@@ -66,6 +66,7 @@ std::vector<LabelledSequence> loadLabelledFolder(const std::string &featuresDir,
             throw Error("records no frame rate (a \"# fps=RATE\" line): give the video's rate "
                         "with --fps",
                         csvPath);
+        s.frameRate = rate;
         s.labels = frameLabelsFromTier(readPhoneTier(labelFile.toStdString()), rate,
                                        int(s.features.rows()), labelFile.toStdString());
         out.push_back(std::move(s));
@@ -85,6 +86,7 @@ std::vector<LabelledSequence> loadProjectSequences(const Project &project, std::
         LabelledSequence ls;
         ls.name = s.id;
         ls.features = s.features;
+        ls.frameRate = s.frameRate;
         ls.labels = frameLabelsFromTier(s.phones, s.frameRate, int(s.features.rows()),
                                         project.manifestPath() + ": " + s.id);
         sequences.push_back(std::move(ls));

@@ -16,6 +16,7 @@ struct LabelledSequence
     std::string name;        // used in error messages ("bbaf2n")
     std::vector<int> labels; // one per frame
     Eigen::MatrixXd features; // frames x d
+    double frameRate = 0.0;   // frames per second (0: not known)
     int frameCount() const { return int(labels.size()); }
 };
 

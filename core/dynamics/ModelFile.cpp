@@ -10,6 +10,8 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 
+#include <cmath>
+
 namespace lipsync {
 
 namespace {
@@ -61,6 +63,8 @@ void saveModel(const DynamicModel &model, const std::string &path, const std::st
         labels.append(QString::fromLatin1(name.data(), qsizetype(name.size())));
     o[QStringLiteral("labels")] = labels;
     o[QStringLiteral("dimension")] = model.dimension();
+    if (model.frameRate() > 0)
+        o[QStringLiteral("frameRate")] = model.frameRate();
     o[QStringLiteral("parameters")] = model.parametersToJson();
     if (const auto *context = dynamic_cast<const ContextDependentModel *>(&model))
         o[QStringLiteral("context")] = context->tree().toJson();
@@ -125,6 +129,12 @@ std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::str
     model->parametersFromJson(o.value(QStringLiteral("parameters")).toObject(), path);
     if (model->dimension() != o.value(QStringLiteral("dimension")).toInt(-1))
         throw Error("does not match the parameters", path, "dimension");
+    if (o.contains(QStringLiteral("frameRate"))) {
+        const double fps = o.value(QStringLiteral("frameRate")).toDouble(-1.0);
+        if (!(fps > 0) || !std::isfinite(fps) || fps > 1000)
+            throw Error("must be a number of frames per second in (0, 1000]", path, "frameRate");
+        model->setFrameRate(fps);
+    }
     if (o.contains(QStringLiteral("compensation"))) {
         const QJsonObject c = o.value(QStringLiteral("compensation")).toObject();
         try {

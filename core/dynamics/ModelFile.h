@@ -3,7 +3,7 @@
 //   {"format": "lipsync-dynamic-model", "version": 1, "kind": "dpds", "aam": "<AAM id>",
 //    "labels": ["AA", ..., "sil", "br"], "dimension": 32, "parameters": {...}}
 // "labels" records the phone set the integer labels refer to, "aam" the AAM whose parameters
-// the features are. A model over context-dependent states (§5.2) adds "context" (ContextTree's
+// the features are, "frameRate" (optional) the frames per second it was trained at. A model over context-dependent states (§5.2) adds "context" (ContextTree's
 // JSON); its parameters are then indexed by the tree's states. Loading rejects another format or version, an unknown kind, another label
 // set, and (when an AAM id is expected) another AAM, with a lipsync::Error naming the file.
 #include "dynamics/BrandModel.h"

@@ -7,6 +7,7 @@
 #include "io/MediaInfo.h"
 #include "io/Transcript.h"
 #include "io/VideoReader.h"
+#include "project/Project.h"
 #include "render/FaceRenderer.h"
 #include "render/FrameComposition.h"
 #include "render/ImageSequenceExporter.h"
@@ -14,6 +15,7 @@
 #include "util/Error.h"
 #include "util/PhoneSet.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -74,9 +76,11 @@ void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, doub
     result.aam = in.aam;
     result.modelKind = in.model->kind();
     result.hasVideo = in.info.hasVideo && in.info.frameCount > 0;
-    result.frameRate = request.frameRate > 0 ? request.frameRate
+    const double modelRate = in.model->frameRate();
+    result.frameRate = request.frameRate > 0                      ? request.frameRate
                        : result.hasVideo && in.info.frameRate > 0 ? in.info.frameRate
-                                                                  : 25.0;
+                       : modelRate > 0                            ? modelRate
+                                                                  : Project::kAudioOnlyFrameRate;
     const bool ownFrames = result.hasVideo && std::abs(result.frameRate - in.info.frameRate) < 1e-6;
     const int frames = ownFrames ? in.info.frameCount
                                  : std::max(1, int(std::lround(audioDuration * result.frameRate)));
@@ -85,7 +89,26 @@ void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, doub
         const int index = PhoneSet::index(label);
         result.labels.push_back(index >= 0 ? index : int(PhoneSet::kSilence));
     }
-    result.features = in.model->generate(result.labels);
+    if (modelRate > 0 && std::abs(modelRate - result.frameRate) > 1e-6 * modelRate) {
+        // The model's dynamics are per frame of its own rate: generate at that rate, then sample
+        // the trajectory at the output's frame times (linear interpolation).
+        const int modelFrames = std::max(1, int(std::lround(frames * modelRate / result.frameRate)));
+        std::vector<int> modelLabels;
+        for (const std::string &label : voteFrameLabels(result.phones, modelRate, modelFrames, audioFrames)) {
+            const int index = PhoneSet::index(label);
+            modelLabels.push_back(index >= 0 ? index : int(PhoneSet::kSilence));
+        }
+        const Eigen::MatrixXd generated = in.model->generate(modelLabels);
+        result.features.resize(frames, generated.cols());
+        for (int t = 0; t < frames; ++t) {
+            const double at = std::clamp(t * modelRate / result.frameRate, 0.0, double(modelFrames - 1));
+            const int a = int(at);
+            const int b = std::min(a + 1, modelFrames - 1);
+            result.features.row(t) = (1.0 - (at - a)) * generated.row(a) + (at - a) * generated.row(b);
+        }
+    } else {
+        result.features = in.model->generate(result.labels);
+    }
     feedback.throwIfCanceled();
     // The sound at its own rate, its first sample with the first video frame.
     const AudioBuffer audio = AudioDecoder::decode(request.mediaPath, 0);

@@ -42,7 +42,9 @@ struct SpeechToFaceRequest
     AlignerChoice aligner;          // default: the shipped aligner model (ShippedAlignerModel)
     // The aligner already loaded (the studio's AlignerCache), used instead of `aligner` when set.
     std::shared_ptr<const Aligner> loadedAligner;
-    // Frames per second of the generated sequence; 0: the video's rate, 25 for audio only.
+    // Frames per second of the generated sequence; 0: the video's rate, for audio only the
+    // model's (25 if it records none). A model trained at another rate generates at its own and
+    // is sampled at these frames.
     double frameRate = 0.0;
     // Pronunciation overrides (a project's Project::pronunciations), before CMU and espeak-ng.
     std::map<std::string, std::string> pronunciations;

@@ -249,7 +249,8 @@ private slots:
 
     // Phone times are in seconds, so the frame labels depend on the video's rate: train takes it
     // from the features file ("# fps=..."), refuses a file that records none unless --fps gives
-    // it, and refuses a --fps that contradicts the file.
+    // it, and refuses a --fps that contradicts the file; the model records the rate, and generate
+    // generates at it.
     void takesTheFrameRateFromTheFeatures()
     {
         QTemporaryDir dir;
@@ -272,12 +273,17 @@ private slots:
         Run r = runLipsync({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         const QString out = dir.filePath("gen.csv");
-        r = runLipsync({"generate", "--model", model, "--labels", labels + "/clip.lab", "--fps", "29.97002997002997",
-                        "--frames", QString::number(Y.rows()), "--out", out});
+        // The model records the rate, and generate takes it from the model.
+        r = runLipsync({"generate", "--model", model, "--labels", labels + "/clip.lab", "--frames",
+                        QString::number(Y.rows()), "--out", out});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         const FeatureTable generated = readFeatureCsv(out.toStdString());
         QCOMPARE(generated.values, Y);
         QCOMPARE(generated.frameRate, 29.97002997002997);
+        r = runLipsync({"generate", "--model", model, "--labels", labels + "/clip.lab", "--fps", "25", "--out", out});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("hmm.json") && r.err.contains("trained at 29.97") && r.err.contains("at 25 "),
+                 r.err.constData());
         // A contradicting --fps is refused, naming the file and both rates.
         r = runLipsync({"train", "--kind", "hmm", "--features", features, "--labels", labels, "--out", model,
                         "--fps", "25"});

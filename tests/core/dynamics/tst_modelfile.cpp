@@ -112,6 +112,38 @@ private slots:
         QCOMPARE(readWholeFile(again), readWholeFile(path));
     }
 
+    // The model records the frame rate of its training sequences and keeps it through its file;
+    // sequences at two rates are refused, a rate in the file that is not one too.
+    void frameRate()
+    {
+        std::vector<LabelledSequence> training = data();
+        for (LabelledSequence &s : training)
+            s.frameRate = 29.97;
+        HmmMeanModel model;
+        Feedback feedback;
+        model.train(training, feedback);
+        QCOMPARE(model.frameRate(), 29.97);
+        QTemporaryDir dir;
+        const std::string path = dir.filePath(QStringLiteral("m.json")).toStdString();
+        saveModel(model, path, "aam");
+        QCOMPARE(loadModel(path)->frameRate(), 29.97);
+        std::string text = readWholeFile(path);
+        text.replace(text.find("\"frameRate\":29.97"), 17, "\"frameRate\":-25");
+        writeFileAtomically(path, text);
+        const std::string e = errorOf([&] { loadModel(path); });
+        QVERIFY2(e.find("frameRate") != std::string::npos && e.find(path) != std::string::npos, e.c_str());
+
+        training.back().frameRate = 25.0;
+        const std::string mixed = errorOf([&] { HmmMeanModel().train(training, feedback); });
+        QVERIFY2(mixed.find("29.97 and 25 frames/s") != std::string::npos, mixed.c_str());
+        // Sequences that say nothing of their rate (synthetic ones) leave it unknown, and unsaved.
+        HmmMeanModel unknown;
+        unknown.train(data(), feedback);
+        QCOMPARE(unknown.frameRate(), 0.0);
+        saveModel(unknown, path, "aam");
+        QVERIFY(readWholeFile(path).find("frameRate") == std::string::npos);
+    }
+
     void rejectsOtherVersionAamAndLabels()
     {
         HmmMeanModel model;

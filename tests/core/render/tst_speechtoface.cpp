@@ -10,6 +10,7 @@
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
 #include "io/AudioDecoder.h"
+#include "io/WavWriter.h"
 #include "project/Project.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
@@ -23,8 +24,6 @@
 #include <opencv2/imgproc.hpp>
 
 #include <cmath>
-#include <cstdint>
-#include <fstream>
 
 using namespace lipsync;
 
@@ -35,29 +34,6 @@ const std::string kClip = kDemo + "/media/bbaf2n.mpg";
 const std::string kTranscript = kDemo + "/media/bbaf2n.align";
 const std::string kAam = kDemo + "/aam/demo.aam";
 const std::string kAligner = std::string(LIPSYNC_SOURCE_DIR) + "/resources/aligner/grid-s1.aligner";
-
-// 16-bit PCM mono WAV (the audio-only case: no video stream).
-void writeWav(const std::string &path, const AudioBuffer &audio)
-{
-    std::ofstream out(path, std::ios::binary);
-    auto u32 = [&](uint32_t v) { out.write(reinterpret_cast<const char *>(&v), 4); };
-    auto u16 = [&](uint16_t v) { out.write(reinterpret_cast<const char *>(&v), 2); };
-    const uint32_t bytes = uint32_t(audio.samples.size() * 2);
-    out.write("RIFF", 4);
-    u32(36 + bytes);
-    out.write("WAVEfmt ", 8);
-    u32(16);
-    u16(1);
-    u16(1);
-    u32(uint32_t(audio.sampleRate));
-    u32(uint32_t(audio.sampleRate * 2));
-    u16(2);
-    u16(16);
-    out.write("data", 4);
-    u32(bytes);
-    for (float s : audio.samples)
-        u16(uint16_t(int16_t(std::lround(std::clamp(s, -1.f, 1.f) * 32767))));
-}
 
 bool noHiddenFiles(const QString &folder)
 {
@@ -202,10 +178,35 @@ private slots:
                  result.frameCount());
     }
 
+    // A model trained at another rate (here 12.5 frames/s) generates at its own and is sampled at
+    // the clip's 25: every odd frame lies half-way between its neighbours, also where the phone
+    // (and so the HMM-mean's output) changes.
+    void generatesAtTheModelsOwnRate()
+    {
+        std::shared_ptr<DynamicModel> model = loadModel(m_model);
+        model->setFrameRate(12.5);
+        SpeechToFaceRequest r = request();
+        r.model = model;
+        r.aam = std::make_shared<const AamModel>(m_aam);
+        Feedback feedback;
+        const SpeechToFaceResult result = generateFromSpeech(r, feedback);
+        QCOMPARE(result.frameRate, 25.0);
+        QCOMPARE(result.frameCount(), 75);
+        QCOMPARE(int(result.labels.size()), 75);
+        int halfWay = 0;
+        for (int t = 1; t + 1 < 74; t += 2) {
+            const Eigen::RowVectorXd mid = 0.5 * (result.features.row(t - 1) + result.features.row(t + 1));
+            QVERIFY2((result.features.row(t) - mid).cwiseAbs().maxCoeff() < 1e-9, qPrintable(QString::number(t)));
+            halfWay += (result.features.row(t) - result.features.row(t - 1)).cwiseAbs().maxCoeff() > 1e-6;
+        }
+        QVERIFY2(halfWay >= 5, qPrintable(QString::number(halfWay)));
+    }
+
     void audioOnlyRendersOntoANeutralFrame()
     {
         const std::string wav = m_dir.filePath("speech.wav").toStdString();
-        writeWav(wav, AudioDecoder::decode(kClip, 16000));
+        const AudioBuffer sound = AudioDecoder::decode(kClip, 16000);
+        writeWav(wav, sound.samples, 0, sound.samples.size(), sound.sampleRate); // no video stream
         Feedback feedback;
         const QString out = m_dir.filePath("audio-only.mp4");
         const SpeechVideoReport report = renderSpeechVideo(request(wav), out.toStdString(), feedback);
