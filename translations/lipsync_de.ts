@@ -863,175 +863,328 @@
     </message>
 </context>
 <context>
+    <name>lipsync::studio::ImportLongRecordingDialog</name>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="25"/>
+        <source>Import Long Recording</source>
+        <translation>Lange Aufnahme importieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="28"/>
+        <source>A long recording of one speaker is aligned to its transcript and cut at its pauses into utterances. Each becomes a sequence of the project with its words and alignment; its clip is written into the project&apos;s clips folder.</source>
+        <translation>Eine lange Aufnahme eines Sprechers wird an ihrem Transkript aligniert und an ihren Pausen in Äußerungen geschnitten. Jede wird eine Sequenz des Projekts mit ihren Wörtern und ihrem Alignment; ihr Clip wird in den Clip-Ordner des Projekts geschrieben.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="41"/>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="49"/>
+        <source>&amp;Recording:</source>
+        <translation>&amp;Aufnahme:</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="49"/>
+        <source>A video or sound file</source>
+        <translation>Eine Video- oder Tondatei</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="50"/>
+        <source>&amp;Transcript:</source>
+        <translation>&amp;Transkript:</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="51"/>
+        <source>The words spoken: .txt, .srt, .vtt, .lab, .align or .TextGrid</source>
+        <translation>Die gesprochenen Wörter: .txt, .srt, .vtt, .lab, .align oder .TextGrid</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="57"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="62"/>
+        <source>A silence this long ends an utterance once it is long enough</source>
+        <translation>Eine so lange Stille beendet eine Äußerung, sobald diese lang genug ist</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="63"/>
+        <source>How long an utterance lasts before a pause ends it</source>
+        <translation>Wie lange eine Äußerung dauert, bevor eine Pause sie beendet</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="65"/>
+        <source>Beyond this, the longest silence so far (or else a word boundary) ends an utterance</source>
+        <translation>Darüber hinaus beendet die bisher längste Stille (sonst eine Wortgrenze) eine Äußerung</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="66"/>
+        <source>&amp;Pause that ends an utterance:</source>
+        <translation>&amp;Pause, die eine Äußerung beendet:</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="67"/>
+        <source>&amp;Shortest utterance:</source>
+        <translation>&amp;Kürzeste Äußerung:</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="68"/>
+        <source>L&amp;ongest utterance:</source>
+        <translation>&amp;Längste Äußerung:</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="73"/>
+        <source>Import</source>
+        <translation>Importieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="131"/>
+        <source>Choose the Recording</source>
+        <translation>Aufnahme wählen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="132"/>
+        <source>Video and sound (*.mp4 *.mov *.mkv *.avi *.webm *.mpg *.wav *.flac *.mp3 *.ogg *.m4a);;All files (*)</source>
+        <translation>Video und Ton (*.mp4 *.mov *.mkv *.avi *.webm *.mpg *.wav *.flac *.mp3 *.ogg *.m4a);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="141"/>
+        <source>Choose the Transcript</source>
+        <translation>Transkript wählen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="142"/>
+        <source>Transcripts (*.txt *.srt *.vtt *.lab *.align *.TextGrid);;All files (*)</source>
+        <translation>Transkripte (*.txt *.srt *.vtt *.lab *.align *.TextGrid);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="151"/>
+        <source>Choose the recording: a video or sound file.</source>
+        <translation>Wählen Sie die Aufnahme: eine Video- oder Tondatei.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ImportLongRecordingDialog.cpp" line="153"/>
+        <source>Choose the transcript of the recording.</source>
+        <translation>Wählen Sie das Transkript der Aufnahme.</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::LongRecordingImporter</name>
+    <message>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="43"/>
+        <source>Import &amp;Long Recording…</source>
+        <translation>&amp;Lange Aufnahme importieren…</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="47"/>
+        <source>Align a long recording of one speaker to its transcript and add its utterances to the project as sequences</source>
+        <translation>Eine lange Aufnahme eines Sprechers an ihrem Transkript alignieren und ihre Äußerungen dem Projekt als Sequenzen hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="77"/>
+        <source>Import Long Recording</source>
+        <translation>Lange Aufnahme importieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="78"/>
+        <source>The recording&apos;s clips are written into the project&apos;s folder, and the bundled demo is read-only. Save the project in a folder of your own first?</source>
+        <translation>Die Clips der Aufnahme werden in den Ordner des Projekts geschrieben, und das mitgelieferte Demo ist schreibgeschützt. Das Projekt zuerst in einem eigenen Ordner speichern?</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="100"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="162"/>
+        <source>The long recording could not be imported.</source>
+        <translation>Die lange Aufnahme konnte nicht importiert werden.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="101"/>
+        <source>The bundled demo is read-only: save the project in a folder of your own first.</source>
+        <translation>Das mitgelieferte Demo ist schreibgeschützt: Speichern Sie das Projekt zuerst in einem eigenen Ordner.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="125"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="152"/>
+        <source>Import %1</source>
+        <translation>%1 importieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="155"/>
+        <source>Imported from %1: %2 sequences, %3 words.</source>
+        <translation>Aus %1 importiert: %2 Sequenzen, %3 Wörter.</translation>
+    </message>
+</context>
+<context>
     <name>lipsync::studio::MainWindow</name>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="77"/>
+        <location filename="../studio/app/MainWindow.cpp" line="78"/>
         <source>Annotate</source>
         <translation>Annotieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="78"/>
+        <location filename="../studio/app/MainWindow.cpp" line="79"/>
         <source>Preview &amp;&amp; Compare</source>
         <translation>Vorschau &amp;&amp; Vergleich</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="101"/>
+        <location filename="../studio/app/MainWindow.cpp" line="103"/>
         <source>Models could not be written into the project&apos;s folder.</source>
         <translation>Modelle konnten nicht in den Projektordner geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="104"/>
+        <location filename="../studio/app/MainWindow.cpp" line="106"/>
         <source>%1 was not applied: it would leave the project unsaveable (%2).</source>
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="130"/>
+        <location filename="../studio/app/MainWindow.cpp" line="132"/>
         <source>Playing without sound: %1.</source>
         <translation>Wiedergabe ohne Ton: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="136"/>
-        <location filename="../studio/app/MainWindow.cpp" line="137"/>
+        <location filename="../studio/app/MainWindow.cpp" line="138"/>
+        <location filename="../studio/app/MainWindow.cpp" line="139"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="156"/>
+        <location filename="../studio/app/MainWindow.cpp" line="158"/>
         <source>Generated &amp;Face</source>
         <translation>Generiertes &amp;Gesicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="158"/>
+        <location filename="../studio/app/MainWindow.cpp" line="160"/>
         <source>&amp;Whole Face (Eyes Included)</source>
         <translation>&amp;Ganzes Gesicht (mit Augen)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="160"/>
+        <location filename="../studio/app/MainWindow.cpp" line="162"/>
         <source>Synthesise the whole modelled face; otherwise the lower face is drawn and the recording&apos;s own eyes and upper face are kept</source>
         <translation>Das ganze modellierte Gesicht synthetisieren; sonst wird das untere Gesicht gezeichnet und die Augen und das Obergesicht der Aufnahme bleiben erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="162"/>
+        <location filename="../studio/app/MainWindow.cpp" line="164"/>
         <source>&amp;Detail from Training Images</source>
         <translation>&amp;Details aus Trainingsbildern</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="164"/>
+        <location filename="../studio/app/MainWindow.cpp" line="166"/>
         <source>Add the teeth, lip highlights and skin detail of the AAM&apos;s nearest training images to the model&apos;s smooth texture</source>
         <translation>Zähne, Glanzlichter der Lippen und Hautdetails der nächstgelegenen Trainingsbilder des AAM zur glatten Textur des Modells hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="166"/>
+        <location filename="../studio/app/MainWindow.cpp" line="168"/>
         <source>&amp;Match the Frame&apos;s Lighting</source>
         <translation>&amp;Beleuchtung an das Bild anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="222"/>
+        <location filename="../studio/app/MainWindow.cpp" line="224"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="226"/>
+        <location filename="../studio/app/MainWindow.cpp" line="228"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="236"/>
+        <location filename="../studio/app/MainWindow.cpp" line="238"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="249"/>
+        <location filename="../studio/app/MainWindow.cpp" line="251"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="270"/>
+        <location filename="../studio/app/MainWindow.cpp" line="272"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="271"/>
+        <location filename="../studio/app/MainWindow.cpp" line="273"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="272"/>
+        <location filename="../studio/app/MainWindow.cpp" line="274"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="274"/>
+        <location filename="../studio/app/MainWindow.cpp" line="276"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="305"/>
+        <location filename="../studio/app/MainWindow.cpp" line="307"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="308"/>
+        <location filename="../studio/app/MainWindow.cpp" line="310"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="320"/>
+        <location filename="../studio/app/MainWindow.cpp" line="325"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="324"/>
+        <location filename="../studio/app/MainWindow.cpp" line="329"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="336"/>
+        <location filename="../studio/app/MainWindow.cpp" line="341"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="340"/>
+        <location filename="../studio/app/MainWindow.cpp" line="345"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="344"/>
+        <location filename="../studio/app/MainWindow.cpp" line="349"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="347"/>
+        <location filename="../studio/app/MainWindow.cpp" line="352"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="398"/>
+        <location filename="../studio/app/MainWindow.cpp" line="402"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="443"/>
+        <location filename="../studio/app/MainWindow.cpp" line="465"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="451"/>
+        <location filename="../studio/app/MainWindow.cpp" line="473"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="480"/>
+        <location filename="../studio/app/MainWindow.cpp" line="502"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="482"/>
+        <location filename="../studio/app/MainWindow.cpp" line="504"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="486"/>
+        <location filename="../studio/app/MainWindow.cpp" line="508"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1039,43 +1192,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="497"/>
+        <location filename="../studio/app/MainWindow.cpp" line="519"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="498"/>
+        <location filename="../studio/app/MainWindow.cpp" line="520"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="498"/>
+        <location filename="../studio/app/MainWindow.cpp" line="520"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="504"/>
+        <location filename="../studio/app/MainWindow.cpp" line="526"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="523"/>
+        <location filename="../studio/app/MainWindow.cpp" line="545"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="551"/>
-        <location filename="../studio/app/MainWindow.cpp" line="559"/>
+        <location filename="../studio/app/MainWindow.cpp" line="573"/>
+        <location filename="../studio/app/MainWindow.cpp" line="581"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="558"/>
+        <location filename="../studio/app/MainWindow.cpp" line="580"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="235"/>
+        <location filename="../studio/app/MainWindow.cpp" line="237"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -1683,7 +1836,12 @@
 <context>
     <name>lipsync::studio::ProjectDocument</name>
     <message>
-        <location filename="../studio/document/ProjectDocument.cpp" line="201"/>
+        <location filename="../studio/document/ProjectDocument.cpp" line="175"/>
+        <source>the project already has a sequence %1</source>
+        <translation>das Projekt hat bereits eine Sequenz %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/document/ProjectDocument.cpp" line="246"/>
         <source>%1 interval %2: %3</source>
         <translation>%1, Intervall %2: %3</translation>
     </message>
@@ -1989,37 +2147,37 @@
 <context>
     <name>lipsync::studio::SequenceListModel</name>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="42"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="48"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="48"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="54"/>
         <source>Double-click to edit the transcript</source>
         <translation>Doppelklicken, um das Transkript zu bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="49"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="55"/>
         <source>%1 — %2 frames at %3 fps</source>
         <translation>%1 – %2 Bilder mit %3 fps</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="77"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="83"/>
         <source>Sequence</source>
         <translation>Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="78"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="84"/>
         <source>Frames</source>
         <translation>Bilder</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="79"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="85"/>
         <source>Duration</source>
         <translation>Dauer</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="80"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="86"/>
         <source>Transcript</source>
         <translation>Transkript</translation>
     </message>

@@ -4,6 +4,7 @@
 #include "annotate/FrameView.h"
 #include "app/AboutBox.h"
 #include "app/Autosave.h"
+#include "app/LongRecordingImporter.h"
 #include "app/ProjectFiles.h"
 #include "app/SequenceDetailsView.h"
 #include "app/SequenceListModel.h"
@@ -97,6 +98,7 @@ MainWindow::MainWindow(QWidget *parent)
 
     connect(m_document, &ProjectDocument::documentReset, this, &MainWindow::onDocumentReset);
     connect(m_document, &ProjectDocument::locationChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &ProjectDocument::sequencesRemoved, this, &MainWindow::onSequencesRemoved);
     connect(m_modelStore, &ModelStore::writeFailed, this, [this](const QString &problems) {
         ErrorReporter::report(this, tr("Models could not be written into the project's folder."), QString(), problems);
     });
@@ -311,6 +313,9 @@ void MainWindow::createMenus()
     file->addAction(a.save);
     file->addAction(a.saveAs);
     file->addSeparator();
+    m_importer = new LongRecordingImporter(m_context, [this] { return m_files->save(); }, this);
+    file->addAction(m_importer->action());
+    connect(m_importer, &LongRecordingImporter::imported, this, [this](int first) { selectSequence(first); });
     m_export = new ExportMenu(m_context, file, this);
     file->addSeparator();
     file->addAction(a.quit);
@@ -386,9 +391,8 @@ void MainWindow::createMenus()
     connect(a.about, &QAction::triggered, this, &MainWindow::showAbout);
 }
 
-void MainWindow::onDocumentReset()
+void MainWindow::clearSequence()
 {
-    // A new document: drop the old one's media and any load still running for it.
     if (m_loadTask)
         m_loadTask->cancel();
     m_playback->pause();
@@ -402,11 +406,29 @@ void MainWindow::onDocumentReset()
     m_chart->clearSeries();
     m_details->clear();
     m_transport->setFrameCount(0, 25.0);
+}
+
+void MainWindow::onDocumentReset()
+{
+    // A new document: drop the old one's media and any load still running for it.
+    clearSequence();
     m_models->setProject(m_document->project());
     m_sequenceView->resizeColumnsToContents();
     m_sequenceView->horizontalHeader()->setStretchLastSection(true);
     if (m_document->sequenceCount() > 0)
         selectSequence(0);
+}
+
+void MainWindow::onSequencesRemoved(int first)
+{
+    // The rows before `first` stay where they were. When the sequence shown (or loading) was
+    // among the removed ones, the panels let it go (sequenceLoaded without media: none shown)
+    // and the last remaining sequence takes its place.
+    if (currentSequence() < first && m_pendingRow < first)
+        return;
+    clearSequence();
+    m_context->announceSequenceLoaded();
+    selectSequence(first - 1);
 }
 
 void MainWindow::selectSequence(int row)

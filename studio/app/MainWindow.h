@@ -29,6 +29,7 @@ class ExportMenu;
 class FacesController;
 class FrameView;
 class LineChartView;
+class LongRecordingImporter;
 class ModelStore;
 class ModelsPanel;
 class PlaybackController;
@@ -70,6 +71,7 @@ public:
     const StudioActions &actions() const { return *m_actions; }
     FacesController *faces() const { return m_faces; }
     ExportMenu *exportMenu() const { return m_export; }
+    LongRecordingImporter *longRecordingImporter() const { return m_importer; }
     TimelinePanel *timeline() const { return m_timeline; }
 
     int currentSequence() const;
@@ -101,7 +103,10 @@ private:
     void updateActiveModels();
     void createMenus();
     void addGeneratedFaceMenu(QMenu *view);
+    // No sequence shown: its media dropped, any load still running for one canceled.
+    void clearSequence();
     void onDocumentReset();
+    void onSequencesRemoved(int first);
     void onSelectionChanged();
     void onLoadFinished(Task *task, const QString &mediaPath);
     void applyMedia(int row, std::shared_ptr<const SequenceMedia> media);
@@ -134,6 +139,7 @@ private:
     PlaybackController *m_playback;
     FacesController *m_faces = nullptr;
     ExportMenu *m_export = nullptr;
+    LongRecordingImporter *m_importer = nullptr;
 
     int m_pendingRow = -1;
     QPointer<Task> m_loadTask;

@@ -16,6 +16,12 @@ SequenceListModel::SequenceListModel(ProjectDocument *document, QObject *parent)
     connect(document, &ProjectDocument::sequenceChanged, this, [this](int row) {
         emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
     });
+    connect(document, &ProjectDocument::sequencesAboutToBeAdded, this,
+            [this](int first, int count) { beginInsertRows({}, first, first + count - 1); });
+    connect(document, &ProjectDocument::sequencesAdded, this, [this] { endInsertRows(); });
+    connect(document, &ProjectDocument::sequencesAboutToBeRemoved, this,
+            [this](int first, int count) { beginRemoveRows({}, first, first + count - 1); });
+    connect(document, &ProjectDocument::sequencesRemoved, this, [this] { endRemoveRows(); });
 }
 
 int SequenceListModel::rowCount(const QModelIndex &parent) const

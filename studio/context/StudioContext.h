@@ -71,7 +71,8 @@ public:
     void showStatus(const QString &message, int milliseconds = 0);
 
 signals:
-    // The current sequence's media reached the views (sequenceId).
+    // The current sequence's media reached the views (sequenceId); empty when no sequence is
+    // current any more (the one shown was removed).
     void sequenceLoaded(const QString &sequenceId);
     // The frame shown changed (also when a sequence's media arrives).
     void currentFrameChanged(int frame);

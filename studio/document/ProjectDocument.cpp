@@ -1,5 +1,6 @@
 #include "document/ProjectDocument.h"
 
+#include "document/AddSequencesCommand.h"
 #include "document/LandmarkCommands.h"
 #include "document/PronunciationCommand.h"
 #include "document/SetTranscriptCommand.h"
@@ -15,6 +16,7 @@
 #include <QtDebug>
 
 #include <algorithm>
+#include <set>
 
 namespace lipsync::studio {
 
@@ -157,6 +159,54 @@ void ProjectDocument::saveTo(const QString &folder)
     m_unsavedStudyData = false;
     m_undo->setClean();
     emit locationChanged();
+}
+
+bool ProjectDocument::requestAddSequences(std::vector<Sequence> sequences, const QString &text)
+{
+    if (!m_open || sequences.empty())
+        return false;
+    // Every command leaves a document that saves and loads again: the new sequences get the
+    // loader's checks (Project::validate), their ids must be new.
+    std::set<std::string> ids;
+    for (const Sequence &s : m_project.sequences)
+        ids.insert(s.id);
+    for (const Sequence &s : sequences)
+        if (!ids.insert(s.id).second) {
+            refuse(text, tr("the project already has a sequence %1").arg(QString::fromStdString(s.id)));
+            return false;
+        }
+    Project added;
+    added.setFolder(m_project.folder());
+    added.sequences = sequences;
+    try {
+        added.validate();
+    } catch (const Error &e) {
+        refuse(text, QString::fromUtf8(e.what()));
+        return false;
+    }
+    m_undo->push(new AddSequencesCommand(this, std::move(sequences), text));
+    return true;
+}
+
+void ProjectDocument::applyAddSequences(std::vector<Sequence> sequences)
+{
+    const int first = sequenceCount();
+    const int count = int(sequences.size());
+    emit sequencesAboutToBeAdded(first, count);
+    for (Sequence &s : sequences)
+        m_project.sequences.push_back(std::move(s));
+    emit sequencesAdded(first, count);
+}
+
+std::vector<Sequence> ProjectDocument::applyRemoveLastSequences(int count)
+{
+    const int first = sequenceCount() - count;
+    emit sequencesAboutToBeRemoved(first, count);
+    const auto from = m_project.sequences.begin() + first;
+    std::vector<Sequence> removed(std::make_move_iterator(from), std::make_move_iterator(m_project.sequences.end()));
+    m_project.sequences.erase(from, m_project.sequences.end());
+    emit sequencesRemoved(first, count);
+    return removed;
 }
 
 bool ProjectDocument::requestTranscriptChange(int row, const QString &transcript)

@@ -43,6 +43,14 @@ public:
     const Sequence &sequence(int row) const { return m_project.sequences.at(std::size_t(row)); }
     QString mediaPath(int row) const;
 
+    // New sequences (an imported long recording, AddSequencesCommand) appended to the list as one
+    // undo step; the undo removes them from its end again. Rows before them never move. Refused
+    // (false) when there are none, an id is taken or they would not load again.
+    bool requestAddSequences(std::vector<Sequence> sequences, const QString &text);
+    void applyAddSequences(std::vector<Sequence> sequences);
+    // Removes the last `count` sequences and returns them (for redo), as they are now.
+    std::vector<Sequence> applyRemoveLastSequences(int count);
+
     bool requestTranscriptChange(int row, const QString &transcript);
     void applyTranscript(int row, const QString &transcript);
 
@@ -92,6 +100,12 @@ public:
 signals:
     void documentReset();
     void sequenceChanged(int row);
+    // Rows [first, first + count) around applyAddSequences and applyRemoveLastSequences, before
+    // and after the list changes (as QAbstractItemModel's begin/end rows, for the sequence list).
+    void sequencesAboutToBeAdded(int first, int count);
+    void sequencesAdded(int first, int count);
+    void sequencesAboutToBeRemoved(int first, int count);
+    void sequencesRemoved(int first, int count);
     void modelsChanged();
     void studyChanged();
     void pronunciationsChanged();
