@@ -24,11 +24,18 @@ std::string labelAt(const Tier &phones, double t)
 std::vector<std::string> voteFrameLabels(const Tier &phones, double frameRate, int frameCount,
                                          const MfccOptions &o)
 {
+    return voteFrameLabels(phones, frameRate, 0, frameCount, o);
+}
+
+std::vector<std::string> voteFrameLabels(const Tier &phones, double frameRate, int firstFrame, int frameCount,
+                                         const MfccOptions &o)
+{
     if (!(frameRate > 0))
         throw Error("frame voting needs a positive video frame rate");
     std::vector<std::string> labels(size_t(std::max(frameCount, 0)));
     const double end = phones.endTime();
-    for (int i = 0; i < frameCount; ++i) {
+    for (int n = 0; n < frameCount; ++n) {
+        const int i = firstFrame + n;
         const double from = i / frameRate, to = (i + 1) / frameRate, centre = (i + 0.5) / frameRate;
         // Audio frames j with c_j in [from, to).
         int j = std::max(0, int(std::ceil((from - o.windowSeconds / 2) / o.shiftSeconds - 1e-9)));
@@ -54,7 +61,7 @@ std::vector<std::string> voteFrameLabels(const Tier &phones, double frameRate, i
             }
         }
         if (votes.empty()) {
-            labels[size_t(i)] = labelAt(phones, centre);
+            labels[size_t(n)] = labelAt(phones, centre);
             continue;
         }
         const std::string *best = nullptr;
@@ -67,7 +74,7 @@ std::vector<std::string> voteFrameLabels(const Tier &phones, double frameRate, i
                 best = &label;
                 bestVote = v;
             }
-        labels[size_t(i)] = *best;
+        labels[size_t(n)] = *best;
     }
     return labels;
 }

@@ -18,5 +18,9 @@ namespace lipsync {
 
 std::vector<std::string> voteFrameLabels(const Tier &phones, double frameRate, int frameCount,
                                          const MfccOptions &audioFrames = {});
+// The labels of video frames [firstFrame, firstFrame + frameCount) alone (streaming: the frames
+// whose audio frames are labelled so far, from a tier of those audio frames).
+std::vector<std::string> voteFrameLabels(const Tier &phones, double frameRate, int firstFrame, int frameCount,
+                                         const MfccOptions &audioFrames);
 
 } // namespace lipsync
