@@ -16,6 +16,8 @@
 //   BM_EvalGridWordsKFold   the same measure by 5-fold cross-validation over a random split of the
 //                           400 clips (seed 2007, eval/CrossValidation): every clip aligned once by a
 //                           model trained on the 320 of the other folds
+//   BM_LivePhonesKFold      live phone recognition (StreamingPhoneRecognizer) by the same 5 folds:
+//                           phone error rate and frames with the forced alignment's phone
 //   BM_EvalMfaPhones/N      phone boundaries within 25 ms of the Montreal Forced Aligner's on
 //                           ../shared/data/speech/mfa-tests (the 3 files with an ARPAbet phone
 //                           tier), for words whose phones agree with MFA's; N = 0: model trained on
@@ -30,6 +32,10 @@
 #include "align/AlignerTrainer.h"
 #include "align/AlignerUtterance.h"
 #include "align/ForcedAligner.h"
+#include "align/FrameLabels.h"
+#include "align/PhoneBigram.h"
+#include "align/PhoneErrorRate.h"
+#include "align/StreamingPhoneRecognizer.h"
 #include "align/SpeakerAdaptation.h"
 #include "align/SphinxAligner.h"
 #include "eval/CrossValidation.h"
@@ -363,6 +369,116 @@ void BM_EvalGridWordsKFold(benchmark::State &state)
                 score.allPercent(), score.total, lowest, highest, score.innerPercent(), score.inner);
 }
 BENCHMARK(BM_EvalGridWordsKFold)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+// Live recognition (StreamingPhoneRecognizer) by 5-fold cross-validation over the same random
+// split: each fold's aligner model is trained on the 320 clips of the other folds, its phone bigram
+// counted from that model's forced alignments of them, and the held-out 80 clips' sound fed in
+// 10 ms blocks. Against the held-out clips' forced alignments (same model, known words): phone
+// error rate, and the share of 100 Hz frames and of 25 fps video frames (the §0 vote) with the
+// aligned phone. LIPSYNC_LIVE_LAG, _LW, _INS, _MEAN, _PRIOR override the recogniser's options;
+// LIPSYNC_LIVE_TRAINING=1 scores 80 of the training clips of fold 1 instead (to choose them on
+// training data); LIPSYNC_LIVE_FOLDS=N runs only the first N folds.
+void BM_LivePhonesKFold(benchmark::State &state)
+{
+    if (!exists(kGrid)) {
+        state.SkipWithError("../shared/data/grid-s1 not present");
+        return;
+    }
+    const auto &clips = gridClips();
+    const std::vector<std::vector<int>> folds = makeFolds(int(clips.size()), 5);
+    PhoneRecognizerOptions options;
+    auto setting = [](const char *name, double fallback) {
+        return qEnvironmentVariableIsSet(name) ? qEnvironmentVariable(name).toDouble() : fallback;
+    };
+    options.lagFrames = int(setting("LIPSYNC_LIVE_LAG", options.lagFrames));
+    options.languageWeight = setting("LIPSYNC_LIVE_LW", options.languageWeight);
+    options.phoneInsertion = setting("LIPSYNC_LIVE_INS", options.phoneInsertion);
+    options.meanSeconds = setting("LIPSYNC_LIVE_MEAN", options.meanSeconds);
+    options.priorFrames = setting("LIPSYNC_LIVE_PRIOR", options.priorFrames);
+    const bool onTraining = qEnvironmentVariableIntValue("LIPSYNC_LIVE_TRAINING") == 1;
+    const size_t foldCount = std::min(folds.size(), size_t(setting("LIPSYNC_LIVE_FOLDS", double(folds.size()))));
+    double errors = 0, referencePhones = 0, frames = 0, framesRight = 0, video = 0, videoRight = 0;
+    for (auto _ : state) {
+        for (size_t f = 0; f < foldCount; ++f) {
+            std::vector<TrainingUtterance> train;
+            std::vector<int> trainIds;
+            for (size_t g = 0; g < folds.size(); ++g)
+                if (g != f)
+                    for (int i : folds[g]) {
+                        train.push_back(trainingUtterance(clips[size_t(i)]));
+                        trainIds.push_back(i);
+                    }
+            Feedback feedback;
+            const AcousticModel model = AlignerTrainer::train(train, benchOptions(), feedback);
+            std::vector<Tier> aligned(clips.size());
+            for (size_t i = 0; i < clips.size(); ++i) {
+                const PreparedUtterance &u = clips[i].utterance;
+                aligned[i] = alignUtterance(model, u.features, u.words, u.pronunciations, u.duration, false).phones;
+            }
+            std::vector<Tier> trainingTiers;
+            for (int i : trainIds)
+                trainingTiers.push_back(aligned[size_t(i)]);
+            const PhoneBigram bigram = PhoneBigram::fromTiers(trainingTiers);
+            std::vector<int> scored = folds[f];
+            if (onTraining)
+                scored.assign(trainIds.begin(), trainIds.begin() + long(std::min<size_t>(80, trainIds.size())));
+            std::mutex mutex;
+            QtConcurrent::blockingMap(scored, [&](int i) {
+                const std::vector<float> sound =
+                    AudioDecoder::decode(kGrid + "/video/" + clips[size_t(i)].utterance.id + ".mpg", 16000).samples;
+                StreamingPhoneRecognizer r(model, bigram, options);
+                std::vector<int> decided;
+                for (size_t at = 0; at < sound.size(); at += 160) {
+                    r.push(sound.data() + at, std::min<size_t>(160, sound.size() - at));
+                    for (int p : r.takeDecided())
+                        decided.push_back(p);
+                }
+                r.finish();
+                for (int p : r.takeDecided())
+                    decided.push_back(p);
+                Tier recognised{"phones", {}};
+                const MfccOptions &o = model.featureOptions();
+                for (size_t j = 0; j < decided.size(); ++j) {
+                    const double end = mfccFrameCentre(int(j), o) + o.shiftSeconds / 2;
+                    const std::string label = PhoneSet::label(decided[j]);
+                    if (!recognised.intervals.empty() && recognised.intervals.back().label == label)
+                        recognised.intervals.back().end = end;
+                    else
+                        recognised.intervals.push_back(
+                            {recognised.intervals.empty() ? 0.0 : recognised.intervals.back().end, end, label, false});
+                }
+                const Tier &reference = aligned[size_t(i)];
+                const std::vector<int> ref = spokenPhones(reference);
+                const double per = phoneErrorRate(ref, spokenPhones(recognised));
+                int right = 0;
+                for (size_t j = 0; j < decided.size(); ++j) {
+                    const int at = reference.indexAt(mfccFrameCentre(int(j), o));
+                    const int phone = at < 0 ? int(PhoneSet::kSilence) : PhoneSet::index(reference.intervals[size_t(at)].label);
+                    right += phone == decided[j];
+                }
+                const int videoFrames = int(std::lround(clips[size_t(i)].utterance.duration * 25));
+                const std::vector<std::string> truth = voteFrameLabels(reference, 25.0, videoFrames, o);
+                const std::vector<std::string> guess = voteFrameLabels(recognised, 25.0, videoFrames, o);
+                int videoSame = 0;
+                for (int k = 0; k < videoFrames; ++k)
+                    videoSame += truth[size_t(k)] == guess[size_t(k)];
+                std::lock_guard lock(mutex);
+                errors += per * double(ref.size());
+                referencePhones += double(ref.size());
+                frames += double(decided.size());
+                framesRight += right;
+                video += videoFrames;
+                videoRight += videoSame;
+            });
+        }
+    }
+    state.counters["phone_error_rate_pct"] = 100.0 * errors / referencePhones;
+    state.counters["frames_right_pct"] = 100.0 * framesRight / frames;
+    state.counters["video_frames_right_pct"] = 100.0 * videoRight / video;
+    const AcousticModel shipped = AcousticModel::load(kModel);
+    state.counters["latency_ms"] = 1000.0 * StreamingPhoneRecognizer(shipped, PhoneBigram(), options).latencySeconds();
+}
+BENCHMARK(BM_LivePhonesKFold)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 struct MfaFile
 {

@@ -13,4 +13,9 @@ std::string shippedAlignerModelPath()
     return ResourceLocator::find("aligner/grid-s1.aligner");
 }
 
+std::string shippedPhoneBigramPath()
+{
+    return ResourceLocator::find("aligner/grid-s1.bigram");
+}
+
 } // namespace lipsync

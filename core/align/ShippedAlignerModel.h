@@ -8,5 +8,8 @@ namespace lipsync {
 
 // The absolute path, or "" when no model is found.
 std::string shippedAlignerModelPath();
+// The phone bigram shipped beside it for live recognition (aligner/grid-s1.bigram: counted from
+// the shipped model's alignments of the 400 GRID s1 clips), or "" when there is none.
+std::string shippedPhoneBigramPath();
 
 } // namespace lipsync

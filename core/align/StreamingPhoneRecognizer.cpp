@@ -47,7 +47,13 @@ StreamingPhoneRecognizer::StreamingPhoneRecognizer(const AcousticModel &model, c
         for (int q = 0; q < P; ++q)
             m_enter(p, q) = m_logNext[size_t(p * E + E - 1)] + m_options.languageWeight * m_bigram.logProbability(p, q)
                             + m_options.phoneInsertion;
-    m_meanSum = Eigen::VectorXd::Zero(m_mfcc->staticDimension());
+    const int d = m_mfcc->staticDimension();
+    m_silenceMean = Eigen::VectorXd::Zero(d);
+    for (int k = 0; k < E; ++k) {
+        const GaussianMixture &g = model.state(AcousticModel::stateIndex(PhoneSet::kSilence, k));
+        m_silenceMean += (g.weights.transpose() * g.means.leftCols(d)).transpose().cast<double>() / E;
+    }
+    m_startSum = Eigen::VectorXd::Zero(d);
 }
 
 StreamingPhoneRecognizer::~StreamingPhoneRecognizer() = default;
@@ -98,6 +104,10 @@ void StreamingPhoneRecognizer::addStaticFrame(const Eigen::VectorXf &statics)
 {
     m_statics.push_back(statics);
     ++m_staticFrames;
+    if (m_startFrames < m_options.silenceFrames) {
+        m_startSum += statics.cast<double>();
+        ++m_startFrames;
+    }
     // Kept: the running mean's window and what the deltas of undecoded frames read.
     const long meanFrames = std::max(1L, std::lround(m_options.meanSeconds / m_model.featureOptions().shiftSeconds));
     const long keep = std::max(meanFrames, long(2 * lookAhead(m_model.featureOptions()) + 1)) + 1;
@@ -142,7 +152,14 @@ void StreamingPhoneRecognizer::featuresOf(long f, bool atEnd)
             Eigen::VectorXd sum = Eigen::VectorXd::Zero(d);
             for (long r = begin; r <= end; ++r)
                 sum += m_statics[size_t(r - m_staticsFirst)].cast<double>();
-            features.head(d) -= (sum / double(end - begin + 1)).cast<float>();
+            double count = double(end - begin + 1);
+            // The prior from the first frames and the silence model, fading over the first window.
+            const double weight = m_options.priorFrames * std::max(0.0, 1.0 - double(end + 1) / double(meanFrames));
+            if (weight > 0 && m_startFrames > 0) {
+                sum += weight * (m_startSum / m_startFrames - m_silenceMean);
+                count += weight;
+            }
+            features.head(d) -= (sum / count).cast<float>();
         }
     }
     if (m_keepHistory)

@@ -7,7 +7,10 @@
 // a 100 Hz frame's deltas and accelerations need the statics of the 4 frames after it, so a
 // frame's features exist 4 frames (+ half a window) after its centre. The per-utterance cepstral
 // mean normalisation the model was trained with becomes a running one: the mean of the statics
-// over the last `meanSeconds` (all there are at the start).
+// over the last `meanSeconds`. At the start, when those are a few frames of (usually) silence, it
+// leans on a prior: the first `silenceFrames` are taken to be silence, so the utterance mean is
+// their mean less the silence model's own (normalised) mean; the prior counts as `priorFrames`
+// frames, a weight that fades to nothing once `meanSeconds` of sound have come in.
 //
 // Fixed-lag Viterbi: after frame t the best partial path is traced back `lagFrames` frames and
 // the phone it holds at frame t - lag is decided; a decision is never revised (the path found
@@ -27,10 +30,12 @@ namespace lipsync {
 
 struct PhoneRecognizerOptions
 {
-    int lagFrames = 8;              // 100 Hz frames between a frame's features and its decision
-    double languageWeight = 1.0;    // scale of the bigram's log-probabilities
+    int lagFrames = 6;              // 100 Hz frames between a frame's features and its decision
+    double languageWeight = 2.0;    // scale of the bigram's log-probabilities
     double phoneInsertion = -4.0;   // log weight of entering a phone (fewer, longer phones when negative)
     double meanSeconds = 3.0;       // window of the running cepstral mean
+    int silenceFrames = 10;         // the first frames, taken as silence for the mean's prior
+    double priorFrames = 100.0;     // the prior's weight at the start, in frames
 };
 
 class StreamingPhoneRecognizer
@@ -76,7 +81,6 @@ private:
     long m_staticFrames = 0;      // statics computed so far
     std::deque<Eigen::VectorXf> m_statics; // the last ones (for deltas and the running mean)
     long m_staticsFirst = 0;      // frame index of m_statics.front()
-    Eigen::VectorXd m_meanSum;    // over the running mean's window
     long m_featureFrames = 0;     // frames whose features have been decoded
 
     Eigen::VectorXd m_delta;      // Viterbi scores of the 123 states, best = 0
@@ -89,6 +93,9 @@ private:
     bool m_keepHistory = false;
     std::vector<Eigen::VectorXf> m_history;
     Eigen::VectorXf m_fixedMean;
+    Eigen::VectorXd m_silenceMean;  // the silence phone's statics mean, normalised
+    Eigen::VectorXd m_startSum;     // statics of the first silenceFrames
+    int m_startFrames = 0;
 };
 
 } // namespace lipsync

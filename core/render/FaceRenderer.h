@@ -42,6 +42,7 @@ public:
     FaceRenderer(const FaceRenderer &) = delete;
     FaceRenderer &operator=(const FaceRenderer &) = delete;
 
+    const AamModel &aam() const { return m_aam; }
     bool hasVideo() const;
     // Frames of the background video (0 for the neutral background).
     int videoFrameCount() const;

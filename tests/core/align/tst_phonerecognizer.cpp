@@ -159,7 +159,7 @@ private slots:
         const int clips = int(aligned.size());
         const double mean = total / clips;
         qInfo("frames labelled as the forced alignment does: %.1f %% (mean of %d clips)", 100 * mean, clips);
-        QVERIFY2(mean >= 0.5, qPrintable(QString::number(mean)));
+        QVERIFY2(mean >= 0.85, qPrintable(QString::number(mean)));
     }
 
     void bigram()

@@ -1,0 +1,215 @@
+// `lipsync live --input FILE --model M --aam A [--out OUT.mp4]`: the studio's Live view without a
+// microphone (render/LiveSession): the file's sound fed block by block at real-time pace (or as
+// fast as possible) through streaming phone recognition, streaming generation and rendering;
+// reports the latency from sound to rendered frame, the recognised phones and, given the
+// transcript, their error against a forced alignment.
+#include "AlignerSupport.h"
+#include "CommandLine.h"
+#include "DynamicModelOptions.h"
+
+#include "aam/AamModel.h"
+#include "align/Aligner.h"
+#include "align/FrameLabels.h"
+#include "align/Lexicon.h"
+#include "align/PhoneErrorRate.h"
+#include "align/ShippedAlignerModel.h"
+#include "dynamics/ModelFile.h"
+#include "io/AudioDecoder.h"
+#include "io/MediaInfo.h"
+#include "io/Transcript.h"
+#include "render/FaceRenderer.h"
+#include "render/LiveSession.h"
+#include "render/VideoExporter.h"
+#include "tasks/Feedback.h"
+#include "util/Error.h"
+#include "util/PhoneSet.h"
+
+#include <QJsonArray>
+
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+using namespace lipsync;
+using namespace lipsync::cli;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsBetween(Clock::time_point a, Clock::time_point b)
+{
+    return std::chrono::duration<double>(b - a).count();
+}
+
+// The reference of --transcript: the forced alignment's phones, by the same acoustic model.
+Tier referencePhones(const QString &aligner, const QString &input, const QString &transcriptPath,
+                     const QString &pronunciations)
+{
+    const std::unique_ptr<Aligner> forced = createAligner(AlignerChoice{aligner.toStdString(), false});
+    const auto lexicon = makeLexicon(pronunciations);
+    const Transcript transcript = readTranscript(transcriptPath.toStdString());
+    return forced->align(input.toStdString(), transcript.words, *lexicon, nullptr, transcriptPath.toStdString())
+        .alignment.phones;
+}
+
+int runLive(const CommandLine &a)
+{
+    const QString input = a.value("input");
+    const QString alignerPath = alignerModelOrDefault(a.value("aligner"), QStringLiteral("live"));
+    if (alignerPath.startsWith(QLatin1String("sphinx")))
+        throw UsageError(QStringLiteral("live recognition runs on an aligner model of ours, not on CMU Sphinx's"));
+    QString bigramPath = a.value("bigram");
+    if (bigramPath.isEmpty())
+        bigramPath = QString::fromStdString(shippedPhoneBigramPath());
+    if (bigramPath.isEmpty())
+        throw Error("no phone bigram: give one with --bigram (lipsync aligner bigram)");
+    const double blockSeconds = a.positiveNumber("block-ms") / 1000.0;
+    const bool fast = a.isSet("as-fast-as-possible");
+
+    const AcousticModel acoustic = AcousticModel::load(alignerPath.toStdString());
+    const PhoneBigram bigram = PhoneBigram::load(bigramPath.toStdString());
+    const AamModel aam = AamModel::load(a.value("aam").toStdString());
+    const std::shared_ptr<DynamicModel> model = loadModel(a.value("model").toStdString(), aam.identifier);
+    LiveOptions options;
+    options.recognizer.lagFrames = a.integer("lag", 0);
+    options.stillBackground = a.isSet("still");
+    if (a.isSet("fps"))
+        options.frameRate = a.positiveNumber("fps");
+
+    // The background: --background, else the input's own video, else the mean face on grey.
+    const QString background = a.isSet("background") ? a.value("background")
+                               : MediaInfo::probe(input.toStdString()).hasVideo ? input
+                                                                                 : QString();
+    Feedback tracking;
+    const std::unique_ptr<FaceRenderer> renderer =
+        background.isEmpty() ? std::make_unique<FaceRenderer>(aam)
+                             : std::make_unique<FaceRenderer>(aam, background.toStdString(), tracking);
+    const AudioBuffer sound = AudioDecoder::decode(input.toStdString(), acoustic.featureOptions().sampleRate);
+    LiveSession session(acoustic, bigram, *model, renderer.get(), options);
+
+    std::unique_ptr<VideoExporter> exporter;
+    if (a.isSet("out")) {
+        VideoExportOptions v;
+        v.setFrameRate(session.frameRate());
+        exporter = std::make_unique<VideoExporter>(a.value("out").toStdString(), v, &sound);
+    }
+    std::vector<double> latencies;
+    int frames = 0;
+    // A frame's latency: from the moment the newest sound it shows was spoken to the moment it is
+    // rendered. Spoken at start + soundEnd when fed at real-time pace; as fast as possible, the
+    // sound fed so far stands for the time, plus the processing of the block that made it ready.
+    auto take = [&](const std::vector<LiveFrame> &ready, double fedSeconds, double processing, double now) {
+        for (const LiveFrame &f : ready) {
+            latencies.push_back(fast ? fedSeconds - f.soundEnd + processing : now - f.soundEnd);
+            if (exporter)
+                exporter->addFrame(f.image);
+            ++frames;
+        }
+    };
+    const size_t block = std::max<size_t>(1, size_t(std::lround(blockSeconds * sound.sampleRate)));
+    const Clock::time_point start = Clock::now();
+    for (size_t at = 0; at < sound.samples.size(); at += block) {
+        const size_t n = std::min(block, sound.samples.size() - at);
+        const double fed = double(at + n) / sound.sampleRate;
+        if (!fast)
+            std::this_thread::sleep_until(start + std::chrono::duration_cast<Clock::duration>(
+                                                      std::chrono::duration<double>(fed)));
+        const Clock::time_point before = Clock::now();
+        const std::vector<LiveFrame> ready = session.push(sound.samples.data() + at, n);
+        const Clock::time_point after = Clock::now();
+        take(ready, fed, secondsBetween(before, after), secondsBetween(start, after));
+    }
+    const Clock::time_point before = Clock::now();
+    const std::vector<LiveFrame> rest = session.finish();
+    take(rest, sound.duration(), secondsBetween(before, Clock::now()), secondsBetween(start, Clock::now()));
+    const double seconds = secondsBetween(start, Clock::now());
+    if (exporter)
+        exporter->finish();
+
+    double mean = 0, worst = 0;
+    for (double l : latencies) {
+        mean += l;
+        worst = std::max(worst, l);
+    }
+    mean /= std::max<size_t>(1, latencies.size());
+    const std::vector<int> recognised = spokenPhones(session.phones());
+    QJsonArray phones;
+    for (int p : recognised)
+        phones.append(QString::fromStdString(PhoneSet::label(p)));
+    QJsonObject o{{QStringLiteral("input"), input},
+                  {QStringLiteral("frames"), frames},
+                  {QStringLiteral("frameRate"), session.frameRate()},
+                  {QStringLiteral("soundSeconds"), sound.duration()},
+                  {QStringLiteral("seconds"), seconds},
+                  {QStringLiteral("fps"), frames / std::max(seconds, 1e-9)},
+                  {QStringLiteral("latency_ms_mean"), 1000 * mean},
+                  {QStringLiteral("latency_ms_max"), 1000 * worst},
+                  {QStringLiteral("latency_ms_algorithmic"), 1000 * session.latencySeconds()},
+                  {QStringLiteral("phones"), phones}};
+    if (a.isSet("transcript")) {
+        const Tier reference = referencePhones(alignerPath, input, a.value("transcript"), a.value("pronunciations"));
+        o[QStringLiteral("phone_error_rate")] = phoneErrorRate(spokenPhones(reference), recognised);
+        const std::vector<std::string> truth =
+            voteFrameLabels(reference, session.frameRate(), frames, acoustic.featureOptions());
+        int same = 0;
+        for (int i = 0; i < frames; ++i)
+            same += PhoneSet::index(truth[size_t(i)]) == session.frameLabels()[size_t(i)];
+        o[QStringLiteral("frame_accuracy")] = frames ? double(same) / frames : 0.0;
+    }
+    if (exporter)
+        o[QStringLiteral("out")] = a.value("out");
+    if (a.isSet("json")) {
+        printJson(o);
+    } else {
+        std::printf("%d frames at %.3g frames/s in %.2f s (%.0f frames/s); latency from sound to frame %.0f ms mean, "
+                    "%.0f ms max; %zu phones recognised",
+                    frames, session.frameRate(), seconds, o.value("fps").toDouble(), 1000 * mean, 1000 * worst,
+                    recognised.size());
+        if (o.contains(QStringLiteral("phone_error_rate")))
+            std::printf("; phone error rate %.1f %%, frame labels %.1f %% right",
+                        100 * o.value("phone_error_rate").toDouble(), 100 * o.value("frame_accuracy").toDouble());
+        std::printf("\n");
+    }
+    return 0;
+}
+
+const CommandRegistration registration{
+    CommandSpec{
+        QStringLiteral("live"),
+        QStringLiteral("speech to a moving face as the sound comes in, from a file (the Live view, headless)"),
+        QStringLiteral("Feeds the sound of a file block by block, at real-time pace unless --as-fast-as-possible, "
+                       "through what the studio's Live view runs on the microphone: phone recognition without a "
+                       "transcript (the aligner's HMMs in a phone loop with a phone bigram, fixed-lag Viterbi), "
+                       "the dynamic model's frame-by-frame generation and the AAM face rendered into the "
+                       "background. Reports the latency from sound to rendered frame (the newest sound a frame "
+                       "shows to the frame drawn) and the recognised phones; with --transcript, their error "
+                       "rate against the forced alignment and the share of frames with the right phone."),
+        {{QStringLiteral("input"), QStringLiteral("FILE"), QStringLiteral("the sound (any audio or video file)"), {},
+          CommandOption::Required},
+         {QStringLiteral("model"), QStringLiteral("MODEL"), QStringLiteral("a trained dynamic model (lipsync train)"),
+          {}, CommandOption::Required},
+         {QStringLiteral("aam"), QStringLiteral("AAM"), QStringLiteral("the AAM the model generates parameters of"), {},
+          CommandOption::Required},
+         {QStringLiteral("out"), QStringLiteral("OUT.mp4"), QStringLiteral("record the session (frames and sound)")},
+         {QStringLiteral("aligner"), QStringLiteral("MODEL"),
+          QStringLiteral("the aligner model whose HMMs recognise (default: the shipped GRID s1 model)")},
+         {QStringLiteral("bigram"), QStringLiteral("FILE"),
+          QStringLiteral("the phone bigram (lipsync aligner bigram; default: the shipped GRID s1 one)")},
+         {QStringLiteral("transcript"), QStringLiteral("FILE"),
+          QStringLiteral("the words spoken, to measure the recognised phones against their forced alignment")},
+         {QStringLiteral("background"), QStringLiteral("MEDIA"),
+          QStringLiteral("the video to draw the face into (default: the input's video, else the mean face on grey)")},
+         {QStringLiteral("still"), {}, QStringLiteral("draw every frame into the background's first frame")},
+         {QStringLiteral("lag"), QStringLiteral("FRAMES"),
+          QStringLiteral("100 Hz frames the phone decisions wait for (latency against accuracy)"), QStringLiteral("6")},
+         {QStringLiteral("block-ms"), QStringLiteral("MS"), QStringLiteral("milliseconds of sound per block fed"),
+          QStringLiteral("10")},
+         {QStringLiteral("fps"), QStringLiteral("RATE"),
+          QStringLiteral("frames per second (default: the rate the model was trained at)")},
+         {QStringLiteral("as-fast-as-possible"), {}, QStringLiteral("feed the sound without waiting for real time")},
+         pronunciationsOption()},
+        {}},
+    &runLive};
+
+} // namespace

@@ -1,0 +1,127 @@
+#include "render/LiveSession.h"
+
+#include "align/AcousticModel.h"
+#include "align/FrameLabels.h"
+#include "dynamics/DynamicModel.h"
+#include "render/FaceRenderer.h"
+#include "util/Error.h"
+#include "util/PhoneSet.h"
+
+#include <cmath>
+
+namespace lipsync {
+
+LiveSession::LiveSession(const AcousticModel &acoustic, const PhoneBigram &bigram, const DynamicModel &model,
+                         FaceRenderer *renderer, const LiveOptions &options)
+    : m_model(model), m_renderer(renderer), m_recognizer(acoustic, bigram, options.recognizer),
+      m_audio(acoustic.featureOptions())
+{
+    if (!model.isTrained())
+        throw Error("the dynamic model is not trained");
+    if (renderer && renderer->aam().combinedModes() != model.dimension())
+        throw Error("the model generates " + std::to_string(model.dimension()) + " parameters, the AAM has "
+                    + std::to_string(renderer->aam().combinedModes()));
+    m_frameRate = options.frameRate > 0 ? options.frameRate : model.frameRate() > 0 ? model.frameRate() : 25.0;
+    m_generator = model.streamer();
+    m_still = options.stillBackground;
+}
+
+LiveSession::~LiveSession() = default;
+
+double LiveSession::soundSeconds() const
+{
+    return double(m_samples) / m_audio.sampleRate;
+}
+
+double LiveSession::latencySeconds() const
+{
+    // The decision a frame waits for is that of the first audio frame centred past its end.
+    return m_recognizer.latencySeconds() + m_audio.shiftSeconds + m_generator->latency() / m_frameRate;
+}
+
+std::vector<LiveFrame> LiveSession::push(const float *samples, size_t count)
+{
+    std::vector<LiveFrame> out;
+    m_recognizer.push(samples, count);
+    m_samples += long(count);
+    takeDecisions();
+    labelReadyFrames(false, out);
+    return out;
+}
+
+std::vector<LiveFrame> LiveSession::finish()
+{
+    std::vector<LiveFrame> out;
+    m_recognizer.finish();
+    takeDecisions();
+    labelReadyFrames(true, out);
+    m_generator->finish();
+    drain(out);
+    return out;
+}
+
+void LiveSession::takeDecisions()
+{
+    const double half = m_audio.shiftSeconds / 2;
+    for (int phone : m_recognizer.takeDecided()) {
+        const double centre = mfccFrameCentre(int(m_decided), m_audio);
+        const std::string label = PhoneSet::label(phone);
+        if (!m_phones.intervals.empty() && m_phones.intervals.back().label == label)
+            m_phones.intervals.back().end = centre + half;
+        else
+            m_phones.intervals.push_back(
+                Interval{m_phones.intervals.empty() ? 0.0 : m_phones.intervals.back().end, centre + half, label, false});
+        m_recent.push_back(phone);
+        ++m_decided;
+    }
+}
+
+void LiveSession::labelReadyFrames(bool final, std::vector<LiveFrame> &out)
+{
+    const double half = m_audio.shiftSeconds / 2;
+    const int total = int(std::lround(soundSeconds() * m_frameRate));
+    for (;;) {
+        const int i = m_labelled;
+        const double end = (i + 1) / m_frameRate;
+        if (final ? i >= total : mfccFrameCentre(int(m_decided), m_audio) < end - 1e-12)
+            return;
+        // The decided audio frames this frame's vote reads, as a tier (docs/models.md §0).
+        Tier recent{"phones", {}};
+        for (size_t k = 0; k < m_recent.size(); ++k) {
+            const double c = mfccFrameCentre(int(m_recentFirst + long(k)), m_audio);
+            recent.intervals.push_back(Interval{c - half, c + half, PhoneSet::label(m_recent[k]), false});
+        }
+        const int label = PhoneSet::index(voteFrameLabels(recent, m_frameRate, i, 1, m_audio).front());
+        ++m_labelled;
+        m_labels.push_back(label < 0 ? int(PhoneSet::kSilence) : label);
+        // The next frame's vote starts at its own interval.
+        while (!m_recent.empty() && mfccFrameCentre(int(m_recentFirst), m_audio) < end - m_audio.shiftSeconds) {
+            m_recent.pop_front();
+            ++m_recentFirst;
+        }
+        generate(m_labels.back(), out);
+    }
+}
+
+void LiveSession::generate(int label, std::vector<LiveFrame> &out)
+{
+    m_generator->push(label);
+    drain(out);
+}
+
+void LiveSession::drain(std::vector<LiveFrame> &out)
+{
+    Eigen::VectorXd y(m_model.dimension());
+    while (m_generator->pop(y)) {
+        LiveFrame frame;
+        frame.index = m_generated++;
+        frame.label = m_labels[size_t(frame.index)];
+        frame.features = y;
+        if (m_renderer)
+            frame.image = m_renderer->render(m_still ? 0 : frame.index, y);
+        frame.soundEnd = (frame.index + 1) / m_frameRate;
+        out.push_back(std::move(frame));
+    }
+}
+
+} // namespace lipsync
