@@ -438,15 +438,7 @@ void BM_LivePhonesKFold(benchmark::State &state)
                     decided.push_back(p);
                 Tier recognised{"phones", {}};
                 const MfccOptions &o = model.featureOptions();
-                for (size_t j = 0; j < decided.size(); ++j) {
-                    const double end = mfccFrameCentre(int(j), o) + o.shiftSeconds / 2;
-                    const std::string label = PhoneSet::label(decided[j]);
-                    if (!recognised.intervals.empty() && recognised.intervals.back().label == label)
-                        recognised.intervals.back().end = end;
-                    else
-                        recognised.intervals.push_back(
-                            {recognised.intervals.empty() ? 0.0 : recognised.intervals.back().end, end, label, false});
-                }
+                StreamingPhoneRecognizer::appendToTier(recognised, 0, decided, o);
                 const Tier &reference = aligned[size_t(i)];
                 const std::vector<int> ref = spokenPhones(reference);
                 const double per = phoneErrorRate(ref, spokenPhones(recognised));

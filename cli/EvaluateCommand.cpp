@@ -1,14 +1,17 @@
 // lipsync evaluate: k-fold cross-validation of the dynamic models (docs/models.md §6).
+#include "AlignerSupport.h"
 #include "CommandLine.h"
 #include "Compositing.h"
 #include "DynamicModelOptions.h"
 #include "TrainingData.h"
 
+#include "align/ShippedAlignerModel.h"
 #include "eval/Evaluation.h"
 #include "eval/RealismReport.h"
 #include "io/AtomicFile.h"
 #include "project/Project.h"
 #include "tasks/Feedback.h"
+#include "util/Error.h"
 
 #include <QJsonArray>
 
@@ -58,6 +61,12 @@ int runRealism(const CommandLine &args, const EvaluationOptions &evaluation)
     options.maxLag = args.integer(QStringLiteral("max-lag"), 0);
     options.dlibPredictor = args.value(QStringLiteral("dlib")).toStdString();
     options.composite = Compositing::from(args);
+    if (args.isSet(QStringLiteral("live"))) {
+        options.liveAcousticModel = alignerModelOrDefault({}, QStringLiteral("evaluate --live")).toStdString();
+        options.liveBigram = shippedPhoneBigramPath();
+        if (options.liveBigram.empty())
+            throw Error("no shipped phone bigram for --live (resources/aligner/grid-s1.bigram)");
+    }
     const Project project = Project::load(args.value(QStringLiteral("project")).toStdString());
     Feedback feedback;
     const RealismResult result = evaluateRealism(project, options, feedback);
@@ -72,7 +81,7 @@ int runEvaluate(const CommandLine &args)
 {
     const bool realism = args.isSet(QStringLiteral("realism"));
     if (!realism) {
-        QStringList realismOnly{QStringLiteral("max-lag"), QStringLiteral("dlib")};
+        QStringList realismOnly{QStringLiteral("max-lag"), QStringLiteral("dlib"), QStringLiteral("live")};
         for (const CommandOption &option : Compositing::options())
             realismOnly << option.name;
         for (const QString &option : realismOnly)
@@ -146,7 +155,11 @@ const CommandRegistration registration{
          {QStringLiteral("max-lag"), QStringLiteral("FRAMES"),
           QStringLiteral("--realism: the audio-visual lags searched"), QStringLiteral("5")},
          {QStringLiteral("dlib"), QStringLiteral("FILE"),
-          QStringLiteral("--realism: dlib's 68-point shape predictor (default: Debian's libdlib-data)")}},
+          QStringLiteral("--realism: dlib's 68-point shape predictor (default: Debian's libdlib-data)")},
+         {QStringLiteral("live"), {},
+          QStringLiteral("--realism: also every model driven live, its phones recognised from the sound as it "
+                         "streams in (the shipped aligner model and phone bigram, as `lipsync live`), reported as "
+                         "\"live KIND\"")}},
         {}}
         .add(trainingDataOptions())
         .add(dynamicModelOptions())

@@ -95,6 +95,19 @@ void StreamingPhoneRecognizer::finish()
     decide(true);
 }
 
+void StreamingPhoneRecognizer::appendToTier(Tier &tier, int firstFrame, const std::vector<int> &phones,
+                                            const MfccOptions &frames)
+{
+    for (size_t k = 0; k < phones.size(); ++k) {
+        const double end = mfccFrameCentre(firstFrame + int(k), frames) + frames.shiftSeconds / 2;
+        const std::string label = PhoneSet::label(phones[k]);
+        if (!tier.intervals.empty() && tier.intervals.back().label == label)
+            tier.intervals.back().end = end;
+        else
+            tier.intervals.push_back(Interval{tier.intervals.empty() ? 0.0 : tier.intervals.back().end, end, label, false});
+    }
+}
+
 std::vector<int> StreamingPhoneRecognizer::takeDecided()
 {
     return std::exchange(m_ready, {});

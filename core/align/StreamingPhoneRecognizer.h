@@ -19,6 +19,7 @@
 // any length of sound.
 #include "align/AcousticModel.h"
 #include "align/PhoneBigram.h"
+#include "annotation/Tier.h"
 
 #include <Eigen/Core>
 
@@ -54,6 +55,9 @@ public:
     // indices); frame j of the sound is the j-th label handed out overall.
     std::vector<int> takeDecided();
     int decidedFrames() const { return m_decided; }
+    // Appends decided phones to a phone tier: audio frame j (the first of them `firstFrame`) spans
+    // its centre +- half a shift, runs of one phone are one interval, the tier starts at 0.
+    static void appendToTier(Tier &tier, int firstFrame, const std::vector<int> &phones, const MfccOptions &frames);
 
     // Sound a decision waits for after its frame's centre: the lag and the features' look-ahead.
     double latencySeconds() const;

@@ -2,6 +2,8 @@
 
 #include "aam/AamModel.h"
 #include "aam/FaceDetectorPool.h"
+#include "align/FrameLabels.h"
+#include "align/StreamingPhoneRecognizer.h"
 #include "dynamics/LabelledFolder.h"
 #include "eval/CrossValidation.h"
 #include "eval/RealismMetrics.h"
@@ -12,6 +14,7 @@
 #include "tasks/BlockingMap.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
+#include "util/PhoneSet.h"
 
 #include <QJsonArray>
 
@@ -34,6 +37,25 @@ namespace {
 
 constexpr double kNoFigure = std::numeric_limits<double>::quiet_NaN();
 const std::string kTracked = "tracked";
+const std::string kLive = "live ";
+
+// The phone of each of `frames` video frames as live recognition hears the sequence's sound.
+std::vector<int> liveLabels(const AcousticModel &acoustic, const PhoneBigram &bigram, const std::string &mediaPath,
+                            double frameRate, int frames)
+{
+    const AudioBuffer sound = AudioDecoder::decode(mediaPath, acoustic.featureOptions().sampleRate);
+    StreamingPhoneRecognizer recognizer(acoustic, bigram);
+    constexpr size_t kBlock = 160;
+    for (size_t at = 0; at < sound.samples.size(); at += kBlock)
+        recognizer.push(sound.samples.data() + at, std::min(kBlock, sound.samples.size() - at));
+    recognizer.finish();
+    Tier phones{"phones", {}};
+    StreamingPhoneRecognizer::appendToTier(phones, 0, recognizer.takeDecided(), acoustic.featureOptions());
+    std::vector<int> labels;
+    for (const std::string &label : voteFrameLabels(phones, frameRate, frames, acoustic.featureOptions()))
+        labels.push_back(PhoneSet::index(label));
+    return labels;
+}
 
 // Detectors for the worker threads: dlib's predictor takes a second or two to load, and one
 // detector must not be used by two threads at once.
@@ -203,6 +225,9 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
 
     // Training takes a small share of the time next to rendering and landmarking.
     Feedback training(feedback, 0.0, 0.1);
+    const bool live = !options.liveAcousticModel.empty();
+    const AcousticModel liveAcoustic = live ? AcousticModel::load(options.liveAcousticModel) : AcousticModel();
+    const PhoneBigram liveBigram = live ? PhoneBigram::load(options.liveBigram) : PhoneBigram();
     std::vector<std::vector<std::shared_ptr<DynamicModel>>> models;
     for (int f = 0; f < cv.folds; ++f) {
         Feedback child(training, double(f) / cv.folds, double(f + 1) / cv.folds);
@@ -241,6 +266,12 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
             std::vector<Rendering> renderings{{kTracked, s.features}};
             for (size_t k = 0; k < cv.kinds.size(); ++k)
                 renderings.push_back({cv.kinds[k], models[size_t(item.fold)][k]->generate(s.labels)});
+            if (live) {
+                const std::vector<int> heard = liveLabels(liveAcoustic, liveBigram, project.mediaPath(sequence),
+                                                          sequence.frameRate, s.frameCount());
+                for (size_t k = 0; k < cv.kinds.size(); ++k)
+                    renderings.push_back({kLive + cv.kinds[k], models[size_t(item.fold)][k]->generate(heard)});
+            }
             item.result = measureSequence(aam, project.mediaPath(sequence), sequence, renderings, *detector,
                                           options, own);
             item.result.fold = item.fold;
@@ -267,6 +298,9 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
     }
     std::vector<std::string> methods{kTracked};
     methods.insert(methods.end(), cv.kinds.begin(), cv.kinds.end());
+    if (live)
+        for (const std::string &kind : cv.kinds)
+            methods.push_back(kLive + kind);
     for (const std::string &method : methods) {
         RealismMethod m;
         m.kind = method;

@@ -46,6 +46,12 @@ struct RealismOptions
     int maxLag = 5;            // audio-visual lags searched, frames either way
     std::string dlibPredictor; // empty: /usr/share/dlib/shape_predictor_68_face_landmarks.dat
     CompositeOptions composite; // how the renders are drawn (the preview's by default)
+    // Also every model driven live (render/LiveSession): each held-out sequence's phones
+    // recognised from its sound as it streams in (StreamingPhoneRecognizer with this aligner
+    // model and phone bigram), not taken from its forced alignment; reported as "live <kind>".
+    // Empty: not measured.
+    std::string liveAcousticModel;
+    std::string liveBigram;
 };
 
 struct RealismSequenceMethod

@@ -62,18 +62,10 @@ std::vector<LiveFrame> LiveSession::finish()
 
 void LiveSession::takeDecisions()
 {
-    const double half = m_audio.shiftSeconds / 2;
-    for (int phone : m_recognizer.takeDecided()) {
-        const double centre = mfccFrameCentre(int(m_decided), m_audio);
-        const std::string label = PhoneSet::label(phone);
-        if (!m_phones.intervals.empty() && m_phones.intervals.back().label == label)
-            m_phones.intervals.back().end = centre + half;
-        else
-            m_phones.intervals.push_back(
-                Interval{m_phones.intervals.empty() ? 0.0 : m_phones.intervals.back().end, centre + half, label, false});
-        m_recent.push_back(phone);
-        ++m_decided;
-    }
+    const std::vector<int> decided = m_recognizer.takeDecided();
+    StreamingPhoneRecognizer::appendToTier(m_phones, int(m_decided), decided, m_audio);
+    m_recent.insert(m_recent.end(), decided.begin(), decided.end());
+    m_decided += long(decided.size());
 }
 
 void LiveSession::labelReadyFrames(bool final, std::vector<LiveFrame> &out)

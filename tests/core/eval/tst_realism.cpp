@@ -240,8 +240,9 @@ private slots:
     }
 
     // One small run on the bundled demo: 2 folds, the HMM-mean model besides the tracked
-    // re-synthesis. The tracked parameters re-synthesised by the AAM must follow the recorded
-    // lips closely; generation from phones alone follows them less. Sanitizer builds render
+    // re-synthesis, and driven live (phones recognised from the sound). The tracked parameters
+    // re-synthesised by the AAM must follow the recorded lips closely; generation from phones
+    // alone follows them less, and from recognised phones it still follows them. Sanitizer builds render
     // and run dlib many times slower (over 300 s for the ten clips): they check memory on two.
     void demoProject()
     {
@@ -255,11 +256,16 @@ private slots:
         RealismOptions options;
         options.crossValidation.folds = 2;
         options.crossValidation.kinds = {"hmm"};
+        options.liveAcousticModel = LIPSYNC_SOURCE_DIR "/resources/aligner/grid-s1.aligner";
+        options.liveBigram = LIPSYNC_SOURCE_DIR "/resources/aligner/grid-s1.bigram";
         Feedback feedback;
         const RealismResult r = evaluateRealism(project, options, feedback);
         QCOMPARE(r.sequences, n);
-        QCOMPARE(r.methods.size(), size_t(2));
+        QCOMPARE(r.methods.size(), size_t(3));
         QCOMPARE(r.methods[0].kind, std::string("tracked"));
+        QCOMPARE(r.methods[2].kind, std::string("live hmm"));
+        QVERIFY2(r.methods[2].metrics.at("correlation").mean > 0.3,
+                 qPrintable(QString::number(r.methods[2].metrics.at("correlation").mean)));
         QCOMPARE(r.perSequence.size(), size_t(n));
         QVERIFY(r.frames >= 70 * n);
         QVERIFY(r.skippedFrames < r.frames / 10);
