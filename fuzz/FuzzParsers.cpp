@@ -12,6 +12,7 @@ const std::map<std::string, Parser> &parsers()
         {"gridalign", &parseGridAlignBytes},
         {"htklabel", &parseHtkLabelBytes},
         {"modelfile", &parseModelFileBytes},
+        {"phonebigram", &parsePhoneBigramBytes},
         {"project", &parseProjectBytes},
         {"sphinxgauden", &parseSphinxGaussiansBytes},
         {"sphinxmdef", &parseSphinxMdefBytes},

@@ -24,6 +24,7 @@ void parseAamBytes(const std::string &bytes);
 // fuzz/ParseAligner.cpp (lipsync_align)
 void parseAlignerBytes(const std::string &bytes);
 void parseTrainingStatisticsBytes(const std::string &bytes); // aligner train --accumulate-only
+void parsePhoneBigramBytes(const std::string &bytes);       // live recognition's phone bigram
 void parseSphinxMdefBytes(const std::string &bytes);      // CMU Sphinx binary mdef
 void parseSphinxGaussiansBytes(const std::string &bytes); // Sphinx-3 means / variances
 void parseSphinxSendumpBytes(const std::string &bytes);   // pocketsphinx mixture weights
@@ -32,8 +33,8 @@ void parseModelFileBytes(const std::string &bytes);
 
 using Parser = void (*)(const std::string &bytes);
 
-// By name: "aam", "aligner", "featurecsv", "gridalign", "htklabel", "modelfile", "project", "pts",
-// "sphinxgauden", "sphinxmdef", "sphinxsendump", "textgrid", "trainingstats", "transcript" (fuzz/FuzzParsers.cpp, links them all).
+// By name: "aam", "aligner", "featurecsv", "gridalign", "htklabel", "modelfile", "phonebigram",
+// "project", "pts", "sphinxgauden", "sphinxmdef", "sphinxsendump", "textgrid", "trainingstats", "transcript" (fuzz/FuzzParsers.cpp, links them all).
 const std::map<std::string, Parser> &parsers();
 
 } // namespace lipsync::fuzz

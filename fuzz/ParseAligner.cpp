@@ -1,6 +1,7 @@
 #include "FuzzParsers.h"
 
 #include "align/AcousticModel.h"
+#include "align/PhoneBigram.h"
 #include "align/SphinxCodebooks.h"
 #include "align/SphinxModelDefinition.h"
 #include "align/TrainingStatistics.h"
@@ -8,6 +9,8 @@
 namespace lipsync::fuzz {
 
 void parseAlignerBytes(const std::string &bytes) { AcousticModel::parse(bytes, "fuzz.aligner"); }
+
+void parsePhoneBigramBytes(const std::string &bytes) { PhoneBigram::parse(bytes, "fuzz.bigram"); }
 
 void parseTrainingStatisticsBytes(const std::string &bytes) { parseTrainingStatistics(bytes, "fuzz.stats"); }
 
