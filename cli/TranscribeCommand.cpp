@@ -2,17 +2,20 @@
 // proposed transcript for recordings that have none (SpeechRecognizer: CMU Sphinx's generic
 // US-English model and language model), written as plain text for the user to correct, then to
 // align (`project create` takes NAME.txt beside the clip). The folder form proposes one for every
-// recording without a transcript (BatchRunner: -j, resumable, failures listed).
+// recording without a transcript (BatchRunner: -j, resumable, failures listed); given a project,
+// its sequences get the proposals, marked as proposed (Sequence::transcriptProposed).
 #include "BatchRunner.h"
 #include "CommandLine.h"
 
 #include "align/SpeechRecognizer.h"
 #include "io/Transcript.h"
+#include "project/Project.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 #include "util/ObjectPool.h"
 
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QJsonArray>
 
 #include <cstdio>
@@ -62,16 +65,32 @@ int runTranscribe(const CommandLine &a)
     if (isBatchInput(input)) {
         const QDir out = batchOutputFolder(a);
         std::vector<BatchJob> jobs;
+        QString manifest;
         for (const BatchRecording &r : batchRecordings(input))
-            if (r.transcriptFile.isEmpty() && r.transcript.empty()) // only those without words
+            if (r.transcriptFile.isEmpty() && r.transcript.empty()) { // only those without words
                 jobs.push_back({r.id, r.media, {r.media}, out.filePath(r.id + QStringLiteral(".txt"))});
+                manifest = r.project;
+            }
         makeOutputsUnique(jobs);
         const BatchRunner runner(a);
-        return runner.finish(runner.run(jobs,
-                                        [&](const BatchJob &job, Feedback &feedback) {
-                                            return transcribeOne(pool, job.file, job.output, feedback);
-                                        }),
-                             QStringLiteral("transcribed"));
+        const QJsonObject summary = runner.run(jobs, [&](const BatchJob &job, Feedback &feedback) {
+            return transcribeOne(pool, job.file, job.output, feedback);
+        });
+        if (!manifest.isEmpty()) {
+            // A project's sequences get their proposals, marked as such until someone checks them.
+            Project project = Project::load(QFileInfo(manifest).absolutePath().toStdString());
+            int proposed = 0;
+            for (const BatchJob &job : jobs)
+                if (Sequence *s = project.sequence(job.name.toStdString());
+                    s && s->transcript.empty() && QFileInfo::exists(job.output)) {
+                    s->transcript = readTranscript(job.output.toStdString()).text();
+                    s->transcriptProposed = true;
+                    ++proposed;
+                }
+            if (proposed > 0)
+                project.save();
+        }
+        return runner.finish(summary, QStringLiteral("transcribed"));
     }
     Feedback feedback;
     const QJsonObject result = transcribeOne(pool, input, a.value("out"), feedback);
@@ -91,7 +110,9 @@ const CommandRegistration registration{
                                "proposal to check and correct before aligning with it, not a reference. Recordings "
                                "up to 2 minutes.\nGiven a folder of recordings or a project folder, proposes a "
                                "transcript for each one that has none (no transcript of the same name beside it, "
-                               "or an empty one in the project) into --out DIR/NAME.txt, -j at a time."),
+                               "or an empty one in the project) into --out DIR/NAME.txt, -j at a time; a project's "
+                               "sequences also get them, marked as proposed (unverified in the studio until edited "
+                               "or accepted)."),
                 {{QStringLiteral("out"), QStringLiteral("FILE.txt|DIR"),
                   QStringLiteral("the transcript to write; with a folder, the folder of the transcripts"), {},
                   CommandOption::Required},

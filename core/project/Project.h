@@ -33,8 +33,9 @@ struct ModelReference
 class Project
 {
 public:
-    // 2: sequences may carry per-frame fitErrors. Version 1 manifests still load.
-    static constexpr int kFormatVersion = 2;
+    // 2: sequences may carry per-frame fitErrors; 3: and transcriptProposed. Older manifests
+    // still load.
+    static constexpr int kFormatVersion = 3;
     static constexpr const char *kManifestName = "project.json";
     static constexpr const char *kStudyFileName = "study.json";
 

@@ -196,8 +196,8 @@ private:
 
     Sequence readSequence(const QJsonObject &o, const std::string &field) const
     {
-        checkKeys(o, field, {"id", "mediaFile", "frameRate", "frameCount", "transcript", "features",
-                             "tiers", "landmarks", "fitErrors"});
+        checkKeys(o, field, {"id", "mediaFile", "frameRate", "frameCount", "transcript", "transcriptProposed",
+                             "features", "tiers", "landmarks", "fitErrors"});
         Sequence s;
         s.id = string(require(o, "id", field), member(field, "id"), false);
         // The id names files (features/<id>.csv), so it must stay inside the project folder.
@@ -214,6 +214,8 @@ private:
         s.frameCount = integer(require(o, "frameCount", field), member(field, "frameCount"), 0);
         if (o.contains("transcript"))
             s.transcript = string(o.value("transcript"), member(field, "transcript"), true);
+        if (o.contains("transcriptProposed"))
+            s.transcriptProposed = boolean(o.value("transcriptProposed"), member(field, "transcriptProposed"));
 
         if (o.contains("tiers")) {
             const std::string tiersField = member(field, "tiers");
@@ -421,7 +423,7 @@ const QStringList &keyOrder()
     static const QStringList order{"format",     "version",   "kind",      "name",
                                    "sequences",  "models",    "pronunciations", "word",
                                    "id",         "mediaFile", "frameRate", "frameCount",
-                                   "transcript", "features",  "tiers",     "words",
+                                   "transcript", "transcriptProposed", "features", "tiers", "words",
                                    "phones",     "landmarks", "fitErrors", "frame",
                                    "points",     "start",     "end",       "label",
                                    "userEdited", "file",      "study"};
@@ -549,6 +551,8 @@ QJsonObject ProjectManifest::toJson(const Project &project, const std::string &t
                       {"transcript", toQString(s.transcript)},
                       {"tiers", QJsonObject{{"words", tierToJson(s.words)},
                                             {"phones", tierToJson(s.phones)}}}};
+        if (s.transcriptProposed)
+            o.insert("transcriptProposed", true);
         if (s.features.size() > 0)
             o.insert("features", toQString(featureFileName(s.id)));
         QJsonArray landmarks;

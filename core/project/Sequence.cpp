@@ -10,7 +10,8 @@ bool Sequence::operator==(const Sequence &other) const
                               && (features.size() == 0 || features == other.features);
     return sameFeatures && id == other.id && mediaFile == other.mediaFile
            && frameRate == other.frameRate && frameCount == other.frameCount
-           && transcript == other.transcript && landmarks == other.landmarks
+           && transcript == other.transcript
+           && transcriptProposed == other.transcriptProposed && landmarks == other.landmarks
            && words == other.words && phones == other.phones && fitErrors == other.fitErrors;
 }
 

@@ -18,6 +18,10 @@ struct Sequence
     double frameRate = 25.0; // video frames per second
     int frameCount = 0;
     std::string transcript;  // plain words
+    // The transcript is a speech recogniser's proposal (`lipsync transcribe`, the timeline's
+    // Propose Transcript) that nobody has checked: shown as unverified until it is edited or
+    // accepted.
+    bool transcriptProposed = false;
 
     std::map<int, LandmarkSet> landmarks; // video frame index -> 23 points
     Tier words{"words", {}};

@@ -40,7 +40,7 @@ class TestAlignCli : public QObject
 private slots:
     // No transcript: `transcribe` proposes one with CMU Sphinx's US-English models, for the
     // speaker of tests/data/speech ("montreal forced aligner"); the folder form only for the
-    // recordings without one.
+    // recordings without one; the project form also puts them, marked as proposed, into the project.
     void transcribeProposesATranscript()
     {
         if (!SphinxAligner::available())
@@ -68,6 +68,17 @@ private slots:
         QVERIFY(QFile::exists(dir.filePath("clips/michael.txt")));
         QVERIFY(!QFile::exists(dir.filePath("clips/bbaf2n.txt")));
         QCOMPARE(runLipsync({"transcribe", kDemo + "bbaf2n.align", "--out", out}).exitCode, 1); // not media
+
+        // A project: the sequence without words gets the proposal, marked as proposed.
+        QVERIFY(QFile::remove(dir.filePath("clips/michael.txt")));
+        const QString project = dir.filePath("project");
+        QCOMPARE(runLipsync({"project", "create", "--media", dir.filePath("clips"), "--out", project}).exitCode, 0);
+        const Run proposed = runLipsync({"transcribe", project, "--out", dir.filePath("proposals")});
+        QVERIFY2(proposed.exitCode == 0, proposed.err.constData());
+        const Project p = Project::load(project.toStdString());
+        QVERIFY(QString::fromStdString(p.sequence("michael")->transcript).startsWith("montreal "));
+        QVERIFY(p.sequence("michael")->transcriptProposed);
+        QVERIFY(!p.sequence("bbaf2n")->transcriptProposed);
     }
 
     void alignWritesWordsAndPhonesTiers()

@@ -75,6 +75,8 @@ Project makeProject()
     bare.mediaFile = "/somewhere/else/s2.wav";
     bare.frameRate = 25;
     bare.frameCount = 0;
+    bare.transcript = "set blue at a one please";
+    bare.transcriptProposed = true;
     p.sequences.push_back(bare);
 
     p.models = {{"aam", "face model", "aam/face.aam"}, {"slds", "dynamics", "models/slds.json"}};
@@ -181,7 +183,7 @@ private slots:
         QVERIFY(!QFileInfo(dir.filePath("project.json.bak")).exists());
         const QByteArray text = readBytes(dir.filePath("project.json"));
         QVERIFY(text.contains("\"format\": \"lipsync-project\""));
-        QVERIFY(text.contains("\"version\": 2"));
+        QVERIFY(text.contains("\"version\": 3"));
         QVERIFY(text.contains("\"features\": \"features/s1.csv\""));
 
         const Project loaded = Project::load(dir.path().toStdString());
@@ -193,6 +195,8 @@ private slots:
         QVERIFY(loaded.sequences[0].features == original.sequences[0].features);
         QCOMPARE(loaded.sequences[0].fitErrors, original.sequences[0].fitErrors);
         QVERIFY(loaded.sequences[1].fitErrors.empty());
+        QVERIFY(loaded.sequences[1].transcriptProposed && !loaded.sequences[0].transcriptProposed);
+        QCOMPARE(text.count("transcriptProposed"), 1); // written only when true
         QCOMPARE(loaded.models, original.models);
         QCOMPARE(loaded.pronunciations, original.pronunciations);
         QVERIFY(text.contains("{\"word\": \"lipsync\", \"phones\": \"L IH1 P S IH2 NG K\"}"));
@@ -201,6 +205,9 @@ private slots:
         // Equality must notice a change, or the comparison above proves nothing.
         Project changed = loaded;
         changed.sequences[0].landmarks[3].points[22].state = PointState::Placed;
+        QVERIFY(!(changed == original));
+        changed = loaded;
+        changed.sequences[1].transcriptProposed = false;
         QVERIFY(!(changed == original));
         changed = loaded;
         changed.sequences[0].features(2, 1) += 1e-9;
@@ -302,7 +309,7 @@ private slots:
         row("wrong_format", "format", "is 'praat-textgrid', expected 'lipsync-project'");
         row("missing_version", "version", "missing");
         row("version_not_integer", "version", "must be an integer, found 1.5");
-        row("future_version", "version", "version 3 is newer than this build");
+        row("future_version", "version", "version 4 is newer than this build");
         row("version_zero", "version", "must be at least 1");
         row("name_not_string", "name", "must be a string, found an array");
         row("unknown_field", "sequences[1].framerate", "unknown field");
@@ -575,7 +582,7 @@ private slots:
         // A landmark frame is one line, and keys come in reading order.
         const QByteArray text =
             ProjectManifest::serialize(ProjectManifest::toJson(makeProject(), "/tmp/x"));
-        QVERIFY(text.startsWith("{\n  \"format\": \"lipsync-project\",\n  \"version\": 2,\n"));
+        QVERIFY(text.startsWith("{\n  \"format\": \"lipsync-project\",\n  \"version\": 3,\n"));
         const qsizetype points = text.indexOf("\"points\": [[");
         QVERIFY(points > 0);
         QVERIFY(text.indexOf('\n', points) > text.indexOf("]]", points));
