@@ -26,8 +26,13 @@
 
 #include <QJsonArray>
 
+#include <algorithm>
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
+#include <deque>
+#include <exception>
+#include <mutex>
 #include <thread>
 
 using namespace lipsync;
@@ -41,6 +46,75 @@ double secondsBetween(Clock::time_point a, Clock::time_point b)
 {
     return std::chrono::duration<double>(b - a).count();
 }
+
+// Encodes the recorded frames on a thread of its own, so that H.264 encoding never holds up the
+// next block of sound (the frames wait in a queue; a live session makes 25 a second).
+class FrameRecorder
+{
+public:
+    explicit FrameRecorder(std::unique_ptr<VideoExporter> exporter)
+        : m_exporter(std::move(exporter)), m_thread([this] { run(); })
+    {
+    }
+    ~FrameRecorder()
+    {
+        stop();
+    }
+    void add(const cv::Mat &frame)
+    {
+        const std::lock_guard lock(m_mutex);
+        m_frames.push_back(frame);
+        m_ready.notify_one();
+    }
+    // Writes what is queued and the file's end; rethrows an encoding error.
+    void finish()
+    {
+        stop();
+        if (m_error)
+            std::rethrow_exception(m_error);
+        m_exporter->finish();
+    }
+
+private:
+    void stop()
+    {
+        {
+            const std::lock_guard lock(m_mutex);
+            m_done = true;
+            m_ready.notify_one();
+        }
+        if (m_thread.joinable())
+            m_thread.join();
+    }
+    void run()
+    {
+        for (;;) {
+            cv::Mat frame;
+            {
+                std::unique_lock lock(m_mutex);
+                m_ready.wait(lock, [this] { return m_done || !m_frames.empty(); });
+                if (m_frames.empty())
+                    return;
+                frame = std::move(m_frames.front());
+                m_frames.pop_front();
+            }
+            try {
+                if (!m_error)
+                    m_exporter->addFrame(frame);
+            } catch (...) {
+                m_error = std::current_exception();
+            }
+        }
+    }
+
+    std::unique_ptr<VideoExporter> m_exporter;
+    std::mutex m_mutex;
+    std::condition_variable m_ready;
+    std::deque<cv::Mat> m_frames;
+    bool m_done = false;
+    std::exception_ptr m_error;
+    std::thread m_thread;
+};
 
 // The reference of --transcript: the forced alignment's phones, by the same acoustic model.
 Tier referencePhones(const QString &aligner, const QString &input, const QString &transcriptPath,
@@ -88,11 +162,11 @@ int runLive(const CommandLine &a)
     const AudioBuffer sound = AudioDecoder::decode(input.toStdString(), acoustic.featureOptions().sampleRate);
     LiveSession session(acoustic, bigram, *model, renderer.get(), options);
 
-    std::unique_ptr<VideoExporter> exporter;
+    std::unique_ptr<FrameRecorder> recorder;
     if (a.isSet("out")) {
         VideoExportOptions v;
         v.setFrameRate(session.frameRate());
-        exporter = std::make_unique<VideoExporter>(a.value("out").toStdString(), v, &sound);
+        recorder = std::make_unique<FrameRecorder>(std::make_unique<VideoExporter>(a.value("out").toStdString(), v, &sound));
     }
     std::vector<double> latencies;
     int frames = 0;
@@ -102,8 +176,8 @@ int runLive(const CommandLine &a)
     auto take = [&](const std::vector<LiveFrame> &ready, double fedSeconds, double processing, double now) {
         for (const LiveFrame &f : ready) {
             latencies.push_back(fast ? fedSeconds - f.soundEnd + processing : now - f.soundEnd);
-            if (exporter)
-                exporter->addFrame(f.image);
+            if (recorder)
+                recorder->add(f.image);
             ++frames;
         }
     };
@@ -124,8 +198,8 @@ int runLive(const CommandLine &a)
     const std::vector<LiveFrame> rest = session.finish();
     take(rest, sound.duration(), secondsBetween(before, Clock::now()), secondsBetween(start, Clock::now()));
     const double seconds = secondsBetween(start, Clock::now());
-    if (exporter)
-        exporter->finish();
+    if (recorder)
+        recorder->finish();
 
     double mean = 0, worst = 0;
     for (double l : latencies) {
@@ -133,6 +207,9 @@ int runLive(const CommandLine &a)
         worst = std::max(worst, l);
     }
     mean /= std::max<size_t>(1, latencies.size());
+    std::vector<double> sorted = latencies;
+    std::sort(sorted.begin(), sorted.end());
+    const double p95 = sorted.empty() ? 0.0 : sorted[std::min(sorted.size() - 1, sorted.size() * 95 / 100)];
     const std::vector<int> recognised = spokenPhones(session.phones());
     QJsonArray phones;
     for (int p : recognised)
@@ -145,6 +222,7 @@ int runLive(const CommandLine &a)
                   {QStringLiteral("fps"), frames / std::max(seconds, 1e-9)},
                   {QStringLiteral("latency_ms_mean"), 1000 * mean},
                   {QStringLiteral("latency_ms_max"), 1000 * worst},
+                  {QStringLiteral("latency_ms_p95"), 1000 * p95},
                   {QStringLiteral("latency_ms_algorithmic"), 1000 * session.latencySeconds()},
                   {QStringLiteral("phones"), phones}};
     if (a.isSet("transcript")) {
@@ -157,7 +235,7 @@ int runLive(const CommandLine &a)
             same += PhoneSet::index(truth[size_t(i)]) == session.frameLabels()[size_t(i)];
         o[QStringLiteral("frame_accuracy")] = frames ? double(same) / frames : 0.0;
     }
-    if (exporter)
+    if (recorder)
         o[QStringLiteral("out")] = a.value("out");
     if (a.isSet("json")) {
         printJson(o);
