@@ -971,6 +971,314 @@
     </message>
 </context>
 <context>
+    <name>lipsync::studio::LiveController</name>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="76"/>
+        <source>Open a project to go live: the face is drawn with its appearance model and animated by its trained dynamic model.</source>
+        <translation>Öffnen Sie ein Projekt, um live zu gehen: Das Gesicht wird mit seinem Erscheinungsmodell gezeichnet und von seinem trainierten dynamischen Modell bewegt.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="80"/>
+        <source>The project has no appearance model. Build one (Faces ▸ Build AAM), then train a dynamic model in the Models panel.</source>
+        <translation>Das Projekt hat kein Erscheinungsmodell. Erstellen Sie eines (Gesichter ▸ AAM erstellen) und trainieren Sie dann ein dynamisches Modell im Bereich „Modelle“.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="85"/>
+        <source>The project&apos;s appearance model could not be loaded: %1</source>
+        <translation>Das Erscheinungsmodell des Projekts konnte nicht geladen werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="87"/>
+        <source>No dynamic model is trained yet. Train one in the Models panel (DPDS follows live speech best), then start again.</source>
+        <translation>Es ist noch kein dynamisches Modell trainiert. Trainieren Sie eines im Bereich „Modelle“ (DPDS folgt Live-Sprache am besten) und starten Sie dann erneut.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="91"/>
+        <source>Choose a trained model.</source>
+        <translation>Wählen Sie ein trainiertes Modell.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="93"/>
+        <source>The %1 model was trained with another appearance model: train it again in the Models panel.</source>
+        <translation>Das Modell %1 wurde mit einem anderen Erscheinungsmodell trainiert: Trainieren Sie es im Bereich „Modelle“ erneut.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="96"/>
+        <source>The studio&apos;s aligner model, which recognises the phones, was not found. Reinstall the studio or point LIPSYNC_ALIGNER_MODEL at an aligner model.</source>
+        <translation>Das Aligner-Modell des Studios, das die Phone erkennt, wurde nicht gefunden. Installieren Sie das Studio neu oder lassen Sie LIPSYNC_ALIGNER_MODEL auf ein Aligner-Modell zeigen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="99"/>
+        <source>The phone bigram for live recognition (aligner/grid-s1.bigram) was not found. Reinstall the studio.</source>
+        <translation>Das Phon-Bigramm für die Live-Erkennung (aligner/grid-s1.bigram) wurde nicht gefunden. Installieren Sie das Studio neu.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="120"/>
+        <source>A live session is running already.</source>
+        <translation>Es läuft bereits eine Live-Sitzung.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="122"/>
+        <source>Wait until the video export has ended.</source>
+        <translation>Warten Sie, bis der Videoexport beendet ist.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="126"/>
+        <source>Choose a microphone.</source>
+        <translation>Wählen Sie ein Mikrofon.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="154"/>
+        <source>Prepare the live view</source>
+        <translation>Live-Ansicht vorbereiten</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="191"/>
+        <source>No face was found in %1: the live face is drawn on grey.</source>
+        <translation>In %1 wurde kein Gesicht gefunden: Das Live-Gesicht wird auf Grau gezeichnet.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="201"/>
+        <source>The live view could not be prepared: %1</source>
+        <translation>Die Live-Ansicht konnte nicht vorbereitet werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="249"/>
+        <source>The microphone could not be opened: %1.</source>
+        <translation>Das Mikrofon konnte nicht geöffnet werden: %1.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="333"/>
+        <source>The live session stopped: %1</source>
+        <translation>Die Live-Sitzung wurde abgebrochen: %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="426"/>
+        <location filename="../studio/live/LiveController.cpp" line="487"/>
+        <source>Nothing is recorded yet: start a session and stop it first.</source>
+        <translation>Es ist noch nichts aufgenommen: Starten und beenden Sie zuerst eine Sitzung.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="428"/>
+        <source>No project is open.</source>
+        <translation>Es ist kein Projekt geöffnet.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="430"/>
+        <source>The bundled demo is read-only: save the project in a folder of your own first.</source>
+        <translation>Das mitgelieferte Demo ist schreibgeschützt: Speichern Sie das Projekt zuerst in einem eigenen Ordner.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="432"/>
+        <source>The project&apos;s appearance model changed since the recording: its features no longer fit.</source>
+        <translation>Das Erscheinungsmodell des Projekts hat sich seit der Aufnahme geändert: Ihre Merkmale passen nicht mehr dazu.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="451"/>
+        <source>The sound could not be written: %1</source>
+        <translation>Der Ton konnte nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="472"/>
+        <source>Save Live Session as %1</source>
+        <translation>Live-Sitzung als %1 speichern</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="474"/>
+        <source>The project refused the new sequence (the status bar says why).</source>
+        <translation>Das Projekt hat die neue Sequenz abgelehnt (die Statusleiste nennt den Grund).</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="489"/>
+        <source>Stop the session first.</source>
+        <translation>Beenden Sie zuerst die Sitzung.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="491"/>
+        <source>A video export is running already.</source>
+        <translation>Es läuft bereits ein Videoexport.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="503"/>
+        <source>Export the live session to %1</source>
+        <translation>Live-Sitzung nach %1 exportieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="514"/>
+        <source>The live session was written to %1.</source>
+        <translation>Die Live-Sitzung wurde nach %1 geschrieben.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="522"/>
+        <source>The video could not be written: %1</source>
+        <translation>Das Video konnte nicht geschrieben werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::LiveView</name>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="35"/>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="36"/>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="36"/>
+        <location filename="../studio/live/LiveView.cpp" line="326"/>
+        <source>Save as Sequence</source>
+        <translation>Als Sequenz speichern</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="37"/>
+        <source>Export Video…</source>
+        <translation>Video exportieren…</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="47"/>
+        <source>Microphone:</source>
+        <translation>Mikrofon:</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="49"/>
+        <source>Model:</source>
+        <translation>Modell:</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="54"/>
+        <source>The microphone the face listens to</source>
+        <translation>Das Mikrofon, dem das Gesicht zuhört</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="56"/>
+        <source>The trained dynamic model that moves the face</source>
+        <translation>Das trainierte dynamische Modell, das das Gesicht bewegt</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="59"/>
+        <source>Listen to the microphone and move the face as you speak</source>
+        <translation>Dem Mikrofon zuhören und das Gesicht bewegen, während Sie sprechen</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="62"/>
+        <source>Stop listening; the session is kept for Save and Export</source>
+        <translation>Nicht mehr zuhören; die Sitzung bleibt zum Speichern und Exportieren erhalten</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="64"/>
+        <source>Add the last session to the project as a sequence: its sound, generated faces and recognised phones</source>
+        <translation>Die letzte Sitzung als Sequenz zum Projekt hinzufügen: ihren Ton, die erzeugten Gesichter und die erkannten Phone</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="67"/>
+        <source>Write the last session&apos;s faces with its sound as an MP4 video</source>
+        <translation>Die Gesichter der letzten Sitzung mit ihrem Ton als MP4-Video schreiben</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="82"/>
+        <source>The phones recognised in the last seconds, the newest on the right</source>
+        <translation>Die in den letzten Sekunden erkannten Phone, die neuesten rechts</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="88"/>
+        <source>Time from the sound to the frame that shows it, over the last %1 seconds</source>
+        <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="158"/>
+        <source>No microphone found</source>
+        <translation>Kein Mikrofon gefunden</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="178"/>
+        <source>No trained model</source>
+        <translation>Kein trainiertes Modell</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="207"/>
+        <source>No microphone was found. Connect one: the list above follows the devices as they come and go.</source>
+        <translation>Es wurde kein Mikrofon gefunden. Schließen Sie eines an: Die Liste oben folgt den Geräten, wie sie kommen und gehen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="219"/>
+        <source>Preparing: loading the phone recogniser and finding the face in the current sequence…</source>
+        <translation>Vorbereitung: Die Phon-Erkennung wird geladen und das Gesicht in der aktuellen Sequenz gesucht…</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="222"/>
+        <source>Listening. Speak, and the face follows.</source>
+        <translation>Hört zu. Sprechen Sie, und das Gesicht folgt.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="225"/>
+        <source>Finishing the last frames…</source>
+        <translation>Die letzten Bilder werden fertiggestellt…</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="231"/>
+        <source>Writing the video…</source>
+        <translation>Das Video wird geschrieben…</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="233"/>
+        <source>The last session (%1 s) is kept: save it as a sequence, export it as a video, or start again.</source>
+        <translation>Die letzte Sitzung (%1 s) ist erhalten: Speichern Sie sie als Sequenz, exportieren Sie sie als Video oder starten Sie erneut.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="239"/>
+        <source>Press Start and speak: the face moves with your voice.</source>
+        <translation>Drücken Sie „Start“ und sprechen Sie: Das Gesicht bewegt sich mit Ihrer Stimme.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="244"/>
+        <source>Only the first %1 minutes are kept for saving; the face went on moving after that.</source>
+        <translation>Nur die ersten %1 Minuten bleiben zum Speichern erhalten; das Gesicht hat sich danach weiterbewegt.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="264"/>
+        <source>Latency: %1 ms mean, %2 ms max</source>
+        <translation>Latenz: %1 ms im Mittel, %2 ms maximal</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="267"/>
+        <source>Time from the sound to the frame that shows it, over the last %1 seconds; %2 ms of it the phone recogniser and the model wait for the sound that follows</source>
+        <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden; %2 ms davon warten die Phon-Erkennung und das Modell auf den folgenden Ton</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="272"/>
+        <source>Latency: –</source>
+        <translation>Latenz: –</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="274"/>
+        <source>%1 s, frame %2 at %3 fps</source>
+        <translation>%1 s, Bild %2 bei %3 fps</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="327"/>
+        <source>The session&apos;s sound is written into the project&apos;s folder, and the bundled demo is read-only. Save the project in a folder of your own first?</source>
+        <translation>Der Ton der Sitzung wird in den Ordner des Projekts geschrieben, und das mitgelieferte Demo ist schreibgeschützt. Das Projekt zuerst in einem eigenen Ordner speichern?</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="340"/>
+        <source>The live session is sequence %1, at the end of the list.</source>
+        <translation>Die Live-Sitzung ist jetzt die Sequenz %1 am Ende der Liste.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="349"/>
+        <source>Export Live Session</source>
+        <translation>Live-Sitzung exportieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="351"/>
+        <source>MP4 video (*.mp4)</source>
+        <translation>MP4-Video (*.mp4)</translation>
+    </message>
+</context>
+<context>
     <name>lipsync::studio::LongRecordingImporter</name>
     <message>
         <location filename="../studio/app/LongRecordingImporter.cpp" line="43"/>
@@ -1018,173 +1326,188 @@
 <context>
     <name>lipsync::studio::MainWindow</name>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="78"/>
+        <location filename="../studio/app/MainWindow.cpp" line="79"/>
         <source>Annotate</source>
         <translation>Annotieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="79"/>
+        <location filename="../studio/app/MainWindow.cpp" line="80"/>
         <source>Preview &amp;&amp; Compare</source>
         <translation>Vorschau &amp;&amp; Vergleich</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="103"/>
+        <location filename="../studio/app/MainWindow.cpp" line="82"/>
+        <source>Live</source>
+        <translation>Live</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="106"/>
         <source>Models could not be written into the project&apos;s folder.</source>
         <translation>Modelle konnten nicht in den Projektordner geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="106"/>
+        <location filename="../studio/app/MainWindow.cpp" line="109"/>
         <source>%1 was not applied: it would leave the project unsaveable (%2).</source>
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="132"/>
+        <location filename="../studio/app/MainWindow.cpp" line="135"/>
         <source>Playing without sound: %1.</source>
         <translation>Wiedergabe ohne Ton: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="138"/>
-        <location filename="../studio/app/MainWindow.cpp" line="139"/>
+        <location filename="../studio/app/MainWindow.cpp" line="141"/>
+        <location filename="../studio/app/MainWindow.cpp" line="142"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="158"/>
+        <location filename="../studio/app/MainWindow.cpp" line="161"/>
         <source>Generated &amp;Face</source>
         <translation>Generiertes &amp;Gesicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="160"/>
+        <location filename="../studio/app/MainWindow.cpp" line="163"/>
         <source>&amp;Whole Face (Eyes Included)</source>
         <translation>&amp;Ganzes Gesicht (mit Augen)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="162"/>
+        <location filename="../studio/app/MainWindow.cpp" line="165"/>
         <source>Synthesise the whole modelled face; otherwise the lower face is drawn and the recording&apos;s own eyes and upper face are kept</source>
         <translation>Das ganze modellierte Gesicht synthetisieren; sonst wird das untere Gesicht gezeichnet und die Augen und das Obergesicht der Aufnahme bleiben erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="164"/>
+        <location filename="../studio/app/MainWindow.cpp" line="167"/>
         <source>&amp;Detail from Training Images</source>
         <translation>&amp;Details aus Trainingsbildern</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="166"/>
+        <location filename="../studio/app/MainWindow.cpp" line="169"/>
         <source>Add the teeth, lip highlights and skin detail of the AAM&apos;s nearest training images to the model&apos;s smooth texture</source>
         <translation>Zähne, Glanzlichter der Lippen und Hautdetails der nächstgelegenen Trainingsbilder des AAM zur glatten Textur des Modells hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="168"/>
+        <location filename="../studio/app/MainWindow.cpp" line="171"/>
         <source>&amp;Match the Frame&apos;s Lighting</source>
         <translation>&amp;Beleuchtung an das Bild anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="224"/>
+        <location filename="../studio/app/MainWindow.cpp" line="227"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="228"/>
+        <location filename="../studio/app/MainWindow.cpp" line="231"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="238"/>
+        <location filename="../studio/app/MainWindow.cpp" line="241"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="251"/>
+        <location filename="../studio/app/MainWindow.cpp" line="254"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="272"/>
+        <location filename="../studio/app/MainWindow.cpp" line="275"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="273"/>
+        <location filename="../studio/app/MainWindow.cpp" line="276"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="274"/>
+        <location filename="../studio/app/MainWindow.cpp" line="277"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="276"/>
+        <location filename="../studio/app/MainWindow.cpp" line="279"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="307"/>
+        <location filename="../studio/app/MainWindow.cpp" line="310"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="310"/>
+        <location filename="../studio/app/MainWindow.cpp" line="313"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="325"/>
+        <location filename="../studio/app/MainWindow.cpp" line="328"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="329"/>
+        <location filename="../studio/app/MainWindow.cpp" line="332"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="341"/>
+        <location filename="../studio/app/MainWindow.cpp" line="343"/>
+        <source>&amp;Live: Speak and Watch the Face</source>
+        <translation>&amp;Live: Sprechen und das Gesicht beobachten</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="345"/>
+        <source>Speak into the microphone and watch the face move</source>
+        <translation>Ins Mikrofon sprechen und dem Gesicht beim Bewegen zusehen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="349"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="345"/>
+        <location filename="../studio/app/MainWindow.cpp" line="353"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="349"/>
+        <location filename="../studio/app/MainWindow.cpp" line="357"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="352"/>
+        <location filename="../studio/app/MainWindow.cpp" line="360"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="402"/>
+        <location filename="../studio/app/MainWindow.cpp" line="410"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="465"/>
+        <location filename="../studio/app/MainWindow.cpp" line="473"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="473"/>
+        <location filename="../studio/app/MainWindow.cpp" line="481"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="502"/>
+        <location filename="../studio/app/MainWindow.cpp" line="510"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="504"/>
+        <location filename="../studio/app/MainWindow.cpp" line="512"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="508"/>
+        <location filename="../studio/app/MainWindow.cpp" line="516"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1192,45 +1515,63 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="519"/>
+        <location filename="../studio/app/MainWindow.cpp" line="527"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="520"/>
+        <location filename="../studio/app/MainWindow.cpp" line="528"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="520"/>
+        <location filename="../studio/app/MainWindow.cpp" line="528"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="526"/>
+        <location filename="../studio/app/MainWindow.cpp" line="534"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="545"/>
+        <location filename="../studio/app/MainWindow.cpp" line="553"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="573"/>
         <location filename="../studio/app/MainWindow.cpp" line="581"/>
+        <location filename="../studio/app/MainWindow.cpp" line="589"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="580"/>
+        <location filename="../studio/app/MainWindow.cpp" line="588"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="237"/>
+        <location filename="../studio/app/MainWindow.cpp" line="240"/>
         <source>Audio</source>
         <translation>Audio</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::MicrophoneInput</name>
+    <message>
+        <location filename="../studio/live/MicrophoneInput.cpp" line="21"/>
+        <source>no microphone was chosen</source>
+        <translation>es wurde kein Mikrofon gewählt</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/MicrophoneInput.cpp" line="31"/>
+        <source>the microphone %1 offers no sound format the studio can read</source>
+        <translation>das Mikrofon %1 bietet kein Tonformat, das das Studio lesen kann</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/MicrophoneInput.cpp" line="39"/>
+        <source>the microphone %1 could not be opened</source>
+        <translation>das Mikrofon %1 konnte nicht geöffnet werden</translation>
     </message>
 </context>
 <context>

@@ -21,6 +21,7 @@
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "export/ExportMenu.h"
+#include "live/LiveView.h"
 #include "plots/LineChartView.h"
 #include "preview/PreviewPanel.h"
 #include "tasks/TaskRunner.h"
@@ -77,6 +78,8 @@ MainWindow::MainWindow(QWidget *parent)
     m_preview = new PreviewPanel(*m_actions, m_tabs);
     m_tabs->addTab(m_frameView, tr("Annotate"));
     m_tabs->addTab(m_preview, tr("Preview && Compare"));
+    m_live = new LiveView(m_context, [this] { return m_files->save(); }, m_tabs);
+    m_tabs->addTab(m_live, tr("Live"));
     m_transport = new TransportBar(*m_actions, central);
     layout->addWidget(m_tabs, 1);
     layout->addWidget(m_transport);
@@ -336,6 +339,11 @@ void MainWindow::createMenus()
     view->addAction(a.nextSequence);
     view->addAction(a.fitFrame);
     view->addAction(m_timeline->spectrogramAction());
+    view->addSeparator();
+    QAction *live = view->addAction(tr("&Live: Speak and Watch the Face"));
+    live->setObjectName(QStringLiteral("showLiveAction"));
+    live->setToolTip(tr("Speak into the microphone and watch the face move"));
+    connect(live, &QAction::triggered, this, [this] { m_tabs->setCurrentWidget(m_live); });
     view->addSeparator();
     addGeneratedFaceMenu(view);
     QMenu *panels = view->addMenu(tr("&Panels"));

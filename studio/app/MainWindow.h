@@ -1,5 +1,5 @@
 #pragma once
-// The studio's main window: the workflow areas (Annotate and Preview & compare as tabs, the
+// The studio's main window: the workflow areas (Annotate, Preview & compare and Live as tabs, the
 // sequence list, Timeline, Plots and Models as docks), one view of the StudioContext (the
 // document with its undo stack, the task runner, the model store, the player, the current
 // sequence and frame).
@@ -29,6 +29,7 @@ class ExportMenu;
 class FacesController;
 class FrameView;
 class LineChartView;
+class LiveView;
 class LongRecordingImporter;
 class ModelStore;
 class ModelsPanel;
@@ -67,6 +68,7 @@ public:
     LineChartView *chartView() const { return m_chart; }
     PlaybackController *playback() const { return m_playback; }
     PreviewPanel *preview() const { return m_preview; }
+    LiveView *liveView() const { return m_live; }
     ModelsPanel *modelsPanel() const { return m_models; }
     const StudioActions &actions() const { return *m_actions; }
     FacesController *faces() const { return m_faces; }
@@ -130,6 +132,7 @@ private:
     std::vector<std::pair<QDockWidget *, Qt::DockWidgetArea>> m_defaultDockAreas; // Reset Layout
     FrameView *m_frameView = nullptr;
     PreviewPanel *m_preview = nullptr;
+    LiveView *m_live = nullptr;
     TransportBar *m_transport = nullptr;
     TimelinePanel *m_timeline = nullptr;
     LineChartView *m_chart = nullptr;
