@@ -11,6 +11,10 @@
 #include "timeline/TimelinePanel.h"
 
 #include <QCoreApplication>
+#include <QDir>
+#include <QDirIterator>
+#include <QFile>
+#include <QFileInfo>
 #include <QStandardPaths>
 #include <QTest>
 
@@ -21,6 +25,19 @@ inline void initStudioTest()
 {
     setDefaultSurfaceFormat();
     QStandardPaths::setTestModeEnabled(true);
+}
+
+// Copies every file under `from` into `to`, subfolders included (a writable copy of the demo).
+inline bool copyFolder(const QString &from, const QString &to)
+{
+    QDirIterator it(from, QDir::Files, QDirIterator::Subdirectories);
+    while (it.hasNext()) {
+        const QString file = it.next();
+        const QString target = QDir(to).filePath(QDir(from).relativeFilePath(file));
+        if (!QDir().mkpath(QFileInfo(target).absolutePath()) || !QFile::copy(file, target))
+            return false;
+    }
+    return true;
 }
 
 // Waits until the window's background tasks (training, tracking, export) have finished.

@@ -7,6 +7,7 @@
 // failing sequence is shrunk to a minimal one (greedy removal of ops) and printed as a
 // regression row for failingSequencesFoundBefore.
 #include "../SanitizedBuild.h"
+#include "DemoWindow.h"
 #include "align/Aligner.h"
 #include "app/DemoProject.h"
 #include "document/ProjectDocument.h"
@@ -78,18 +79,6 @@ QString describe(const Op &op)
         .arg(op.v, 0, 'g', 17);
 }
 
-bool copyFolder(const QString &from, const QString &to)
-{
-    QDirIterator it(from, QDir::Files, QDirIterator::Subdirectories);
-    while (it.hasNext()) {
-        const QString file = it.next();
-        const QString target = QDir(to).filePath(QDir(from).relativeFilePath(file));
-        if (!QDir().mkpath(QFileInfo(target).absolutePath()) || !QFile::copy(file, target))
-            return false;
-    }
-    return true;
-}
-
 const std::vector<std::string> kWords = {"bin", "blue", "at", "f", "two", "now", "place", "red", "lipsync"};
 
 // A run of ops on a fresh copy of the demo project. check() returns the first violation.
@@ -99,7 +88,7 @@ public:
     Session(const QString &demo, std::shared_ptr<const Aligner> model)
         : m_model(std::move(model)), m_document(&m_undo)
     {
-        m_ok = m_dir.isValid() && copyFolder(demo, m_dir.path());
+        m_ok = m_dir.isValid() && testing::copyFolder(demo, m_dir.path());
         if (!m_ok)
             return;
         m_document.reset(Project::load(m_dir.path().toStdString()), m_dir.path(), false);

@@ -56,18 +56,6 @@ UtteranceSplitOptions clipSplit()
     return split;
 }
 
-bool copyFolder(const QString &from, const QString &to)
-{
-    QDirIterator it(from, QDir::Files, QDirIterator::Subdirectories);
-    while (it.hasNext()) {
-        const QString file = it.next();
-        const QString target = QDir(to).filePath(QDir(from).relativeFilePath(file));
-        if (!QDir().mkpath(QFileInfo(target).absolutePath()) || !QFile::copy(file, target))
-            return false;
-    }
-    return true;
-}
-
 // Spins the event loop until the task has ended (its result applied or dropped).
 void waitFor(Task *task)
 {
@@ -103,7 +91,7 @@ private slots:
 
         // A copy of the demo the import may write into.
         m_project = m_dir.filePath(QStringLiteral("project"));
-        QVERIFY(copyFolder(kDemo, m_project));
+        QVERIFY(testing::copyFolder(kDemo, m_project));
         testing::openDemoWindow(m_window);
         if (QTest::currentTestFailed())
             return;

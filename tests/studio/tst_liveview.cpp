@@ -55,18 +55,6 @@ namespace {
 
 const QString kDemo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo");
 
-bool copyFolder(const QString &from, const QString &to)
-{
-    QDirIterator it(from, QDir::Files, QDirIterator::Subdirectories);
-    while (it.hasNext()) {
-        const QString file = it.next();
-        const QString target = QDir(to).filePath(QDir(from).relativeFilePath(file));
-        if (!QDir().mkpath(QFileInfo(target).absolutePath()) || !QFile::copy(file, target))
-            return false;
-    }
-    return true;
-}
-
 void saveShot(QWidget *window, const QString &name)
 {
     if (const QString dir = qEnvironmentVariable("LIPSYNC_PREVIEW_SHOT"); !dir.isEmpty())
@@ -117,7 +105,7 @@ private slots:
         m_sound = AudioDecoder::decode((kDemo + "/media/pbav2n.mpg").toStdString(), 16000).samples;
         QVERIFY(m_sound.size() > 40000);
         m_project = m_dir.filePath(QStringLiteral("project"));
-        QVERIFY(copyFolder(kDemo, m_project));
+        QVERIFY(testing::copyFolder(kDemo, m_project));
         testing::openDemoWindow(m_window);
         if (QTest::currentTestFailed())
             return;
