@@ -224,6 +224,8 @@ int runLive(const CommandLine &a)
                   {QStringLiteral("latency_ms_max"), 1000 * worst},
                   {QStringLiteral("latency_ms_p95"), 1000 * p95},
                   {QStringLiteral("latency_ms_algorithmic"), 1000 * session.latencySeconds()},
+                  // -1: the model's face waits for each phone to end (phones in context).
+                  {QStringLiteral("generator_latency_frames"), session.generatorLatencyFrames()},
                   {QStringLiteral("phones"), phones}};
     if (a.isSet("transcript")) {
         const Tier reference = referencePhones(alignerPath, input, a.value("transcript"), a.value("pronunciations"));

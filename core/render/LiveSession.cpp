@@ -7,6 +7,7 @@
 #include "util/Error.h"
 #include "util/PhoneSet.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lipsync {
@@ -36,7 +37,12 @@ double LiveSession::soundSeconds() const
 double LiveSession::latencySeconds() const
 {
     // The decision a frame waits for is that of the first audio frame centred past its end.
-    return m_recognizer.latencySeconds() + m_audio.shiftSeconds + m_generator->latency() / m_frameRate;
+    return m_recognizer.latencySeconds() + m_audio.shiftSeconds + std::max(0, m_generator->latency()) / m_frameRate;
+}
+
+int LiveSession::generatorLatencyFrames() const
+{
+    return m_generator->latency();
 }
 
 std::vector<LiveFrame> LiveSession::push(const float *samples, size_t count)

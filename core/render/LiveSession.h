@@ -65,8 +65,12 @@ public:
     const Tier &phones() const { return m_phones; }
     // The phone of every frame handed out so far.
     const std::vector<int> &frameLabels() const { return m_labels; }
-    // Sound a frame waits for after its interval's end: recogniser and generator look-ahead.
+    // Sound a frame waits for after its interval's end: the recogniser's look-ahead and the
+    // generator's when it is fixed (generatorLatencyFrames() >= 0).
     double latencySeconds() const;
+    // The generator's look-ahead in frames, -1 when it varies: a model over phones in context
+    // (§5.2) holds each phone's frames until the next phone starts.
+    int generatorLatencyFrames() const;
 
 private:
     void takeDecisions();

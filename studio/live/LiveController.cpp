@@ -69,6 +69,12 @@ QStringList LiveController::trainedKinds() const
     return kinds;
 }
 
+bool LiveController::waitsForPhones(const QString &kind) const
+{
+    const std::shared_ptr<const DynamicModel> model = m_context->modelStore()->dynamicModel(kind);
+    return model && model->isTrained() && model->streamer()->latency() < 0;
+}
+
 QString LiveController::problem(const QString &kind) const
 {
     const ProjectDocument *document = m_context->document();

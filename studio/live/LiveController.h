@@ -61,6 +61,9 @@ public:
     // What stands in the way of going live with the model of `kind` (a sentence saying what to
     // do instead), or empty.
     QString problem(const QString &kind) const;
+    // Whether the model's face waits for each phone to end (phones in context): live, a few
+    // hundred milliseconds more than the recogniser's delay.
+    bool waitsForPhones(const QString &kind) const;
     // The dynamic model kinds the project has trained, in the studio's order.
     QStringList trainedKinds() const;
 

@@ -239,6 +239,10 @@ void LiveView::updateControls()
             message = tr("Press Start and speak: the face moves with your voice.");
         break;
     }
+    if (m_controller->waitsForPhones(chosenKind()))
+        message += (message.isEmpty() ? QString() : QStringLiteral(" "))
+                   + tr("This model uses phones in context, so its face waits for each phone to end: a few hundred "
+                        "milliseconds more. For the quickest face, train it without Phones in context.");
     if (m_controller->recordingTruncated())
         message += QLatin1Char(' ')
                    + tr("Only the first %1 minutes are kept for saving; the face went on moving after that.")

@@ -168,6 +168,11 @@ private slots:
         QCOMPARE(live()->modelCombo()->count(), 2);
         QCOMPARE(live()->chosenKind(), QStringLiteral("dpds"));
         QVERIFY(controller()->problem(QStringLiteral("dpds")).isEmpty());
+        // Trained with phones in context (the panel's default), its face waits for each phone to
+        // end, and the view says so.
+        QVERIFY(controller()->waitsForPhones(QStringLiteral("dpds")));
+        QVERIFY2(live()->face()->placeholderText().contains(QStringLiteral("phones in context")),
+                 qPrintable(live()->face()->placeholderText()));
     }
 
     void showsTheFaceAsTheSoundComes()
