@@ -267,7 +267,9 @@ const CommandRegistration registration{
                        "rate against the forced alignment and the share of frames with the right phone."),
         {{QStringLiteral("input"), QStringLiteral("FILE"), QStringLiteral("the sound (any audio or video file)"), {},
           CommandOption::Required},
-         {QStringLiteral("model"), QStringLiteral("MODEL"), QStringLiteral("a trained dynamic model (lipsync train)"),
+         {QStringLiteral("model"), QStringLiteral("MODEL"),
+          QStringLiteral("a trained dynamic model (lipsync train); one trained with --context-states waits for each "
+                         "phone to end (generator_latency_frames -1, a few hundred ms more)"),
           {}, CommandOption::Required},
          {QStringLiteral("aam"), QStringLiteral("AAM"), QStringLiteral("the AAM the model generates parameters of"), {},
           CommandOption::Required},
