@@ -134,7 +134,17 @@
 <context>
     <name>SetTranscriptCommand</name>
     <message>
-        <location filename="../studio/document/SetTranscriptCommand.cpp" line="12"/>
+        <location filename="../studio/document/SetTranscriptCommand.cpp" line="15"/>
+        <source>Propose transcript of %1</source>
+        <translation>Transkript von %1 vorschlagen</translation>
+    </message>
+    <message>
+        <location filename="../studio/document/SetTranscriptCommand.cpp" line="17"/>
+        <source>Accept transcript of %1</source>
+        <translation>Transkript von %1 übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../studio/document/SetTranscriptCommand.cpp" line="20"/>
         <source>Edit transcript of %1</source>
         <translation>Transkript von %1 bearbeiten</translation>
     </message>
@@ -973,143 +983,143 @@
 <context>
     <name>lipsync::studio::LiveController</name>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="76"/>
+        <location filename="../studio/live/LiveController.cpp" line="82"/>
         <source>Open a project to go live: the face is drawn with its appearance model and animated by its trained dynamic model.</source>
         <translation>Öffnen Sie ein Projekt, um live zu gehen: Das Gesicht wird mit seinem Erscheinungsmodell gezeichnet und von seinem trainierten dynamischen Modell bewegt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="80"/>
+        <location filename="../studio/live/LiveController.cpp" line="86"/>
         <source>The project has no appearance model. Build one (Faces ▸ Build AAM), then train a dynamic model in the Models panel.</source>
         <translation>Das Projekt hat kein Erscheinungsmodell. Erstellen Sie eines (Gesichter ▸ AAM erstellen) und trainieren Sie dann ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="85"/>
+        <location filename="../studio/live/LiveController.cpp" line="91"/>
         <source>The project&apos;s appearance model could not be loaded: %1</source>
         <translation>Das Erscheinungsmodell des Projekts konnte nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="87"/>
+        <location filename="../studio/live/LiveController.cpp" line="93"/>
         <source>No dynamic model is trained yet. Train one in the Models panel (DPDS follows live speech best), then start again.</source>
         <translation>Es ist noch kein dynamisches Modell trainiert. Trainieren Sie eines im Bereich „Modelle“ (DPDS folgt Live-Sprache am besten) und starten Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="91"/>
+        <location filename="../studio/live/LiveController.cpp" line="97"/>
         <source>Choose a trained model.</source>
         <translation>Wählen Sie ein trainiertes Modell.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="93"/>
+        <location filename="../studio/live/LiveController.cpp" line="99"/>
         <source>The %1 model was trained with another appearance model: train it again in the Models panel.</source>
         <translation>Das Modell %1 wurde mit einem anderen Erscheinungsmodell trainiert: Trainieren Sie es im Bereich „Modelle“ erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="96"/>
+        <location filename="../studio/live/LiveController.cpp" line="102"/>
         <source>The studio&apos;s aligner model, which recognises the phones, was not found. Reinstall the studio or point LIPSYNC_ALIGNER_MODEL at an aligner model.</source>
         <translation>Das Aligner-Modell des Studios, das die Phone erkennt, wurde nicht gefunden. Installieren Sie das Studio neu oder lassen Sie LIPSYNC_ALIGNER_MODEL auf ein Aligner-Modell zeigen.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="99"/>
+        <location filename="../studio/live/LiveController.cpp" line="105"/>
         <source>The phone bigram for live recognition (aligner/grid-s1.bigram) was not found. Reinstall the studio.</source>
         <translation>Das Phon-Bigramm für die Live-Erkennung (aligner/grid-s1.bigram) wurde nicht gefunden. Installieren Sie das Studio neu.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="120"/>
+        <location filename="../studio/live/LiveController.cpp" line="126"/>
         <source>A live session is running already.</source>
         <translation>Es läuft bereits eine Live-Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="122"/>
+        <location filename="../studio/live/LiveController.cpp" line="128"/>
         <source>Wait until the video export has ended.</source>
         <translation>Warten Sie, bis der Videoexport beendet ist.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="126"/>
+        <location filename="../studio/live/LiveController.cpp" line="132"/>
         <source>Choose a microphone.</source>
         <translation>Wählen Sie ein Mikrofon.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="154"/>
+        <location filename="../studio/live/LiveController.cpp" line="160"/>
         <source>Prepare the live view</source>
         <translation>Live-Ansicht vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="191"/>
+        <location filename="../studio/live/LiveController.cpp" line="197"/>
         <source>No face was found in %1: the live face is drawn on grey.</source>
         <translation>In %1 wurde kein Gesicht gefunden: Das Live-Gesicht wird auf Grau gezeichnet.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="201"/>
+        <location filename="../studio/live/LiveController.cpp" line="207"/>
         <source>The live view could not be prepared: %1</source>
         <translation>Die Live-Ansicht konnte nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="249"/>
+        <location filename="../studio/live/LiveController.cpp" line="255"/>
         <source>The microphone could not be opened: %1.</source>
         <translation>Das Mikrofon konnte nicht geöffnet werden: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="333"/>
+        <location filename="../studio/live/LiveController.cpp" line="339"/>
         <source>The live session stopped: %1</source>
         <translation>Die Live-Sitzung wurde abgebrochen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="426"/>
-        <location filename="../studio/live/LiveController.cpp" line="487"/>
+        <location filename="../studio/live/LiveController.cpp" line="432"/>
+        <location filename="../studio/live/LiveController.cpp" line="493"/>
         <source>Nothing is recorded yet: start a session and stop it first.</source>
         <translation>Es ist noch nichts aufgenommen: Starten und beenden Sie zuerst eine Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="428"/>
+        <location filename="../studio/live/LiveController.cpp" line="434"/>
         <source>No project is open.</source>
         <translation>Es ist kein Projekt geöffnet.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="430"/>
+        <location filename="../studio/live/LiveController.cpp" line="436"/>
         <source>The bundled demo is read-only: save the project in a folder of your own first.</source>
         <translation>Das mitgelieferte Demo ist schreibgeschützt: Speichern Sie das Projekt zuerst in einem eigenen Ordner.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="432"/>
+        <location filename="../studio/live/LiveController.cpp" line="438"/>
         <source>The project&apos;s appearance model changed since the recording: its features no longer fit.</source>
         <translation>Das Erscheinungsmodell des Projekts hat sich seit der Aufnahme geändert: Ihre Merkmale passen nicht mehr dazu.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="451"/>
+        <location filename="../studio/live/LiveController.cpp" line="457"/>
         <source>The sound could not be written: %1</source>
         <translation>Der Ton konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="472"/>
+        <location filename="../studio/live/LiveController.cpp" line="478"/>
         <source>Save Live Session as %1</source>
         <translation>Live-Sitzung als %1 speichern</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="474"/>
+        <location filename="../studio/live/LiveController.cpp" line="480"/>
         <source>The project refused the new sequence (the status bar says why).</source>
         <translation>Das Projekt hat die neue Sequenz abgelehnt (die Statusleiste nennt den Grund).</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="489"/>
+        <location filename="../studio/live/LiveController.cpp" line="495"/>
         <source>Stop the session first.</source>
         <translation>Beenden Sie zuerst die Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="491"/>
+        <location filename="../studio/live/LiveController.cpp" line="497"/>
         <source>A video export is running already.</source>
         <translation>Es läuft bereits ein Videoexport.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="503"/>
+        <location filename="../studio/live/LiveController.cpp" line="509"/>
         <source>Export the live session to %1</source>
         <translation>Live-Sitzung nach %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="514"/>
+        <location filename="../studio/live/LiveController.cpp" line="520"/>
         <source>The live session was written to %1.</source>
         <translation>Die Live-Sitzung wurde nach %1 geschrieben.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="522"/>
+        <location filename="../studio/live/LiveController.cpp" line="528"/>
         <source>The video could not be written: %1</source>
         <translation>Das Video konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -1128,7 +1138,7 @@
     </message>
     <message>
         <location filename="../studio/live/LiveView.cpp" line="36"/>
-        <location filename="../studio/live/LiveView.cpp" line="326"/>
+        <location filename="../studio/live/LiveView.cpp" line="330"/>
         <source>Save as Sequence</source>
         <translation>Als Sequenz speichern</translation>
     </message>
@@ -1234,46 +1244,51 @@
     </message>
     <message>
         <location filename="../studio/live/LiveView.cpp" line="244"/>
+        <source>This model uses phones in context, so its face waits for each phone to end: a few hundred milliseconds more. For the quickest face, train it without Phones in context.</source>
+        <translation>Dieses Modell verwendet Phoneme im Kontext, daher wartet sein Gesicht, bis jedes Phonem zu Ende ist: einige hundert Millisekunden mehr. Für das schnellste Gesicht trainieren Sie es ohne „Phoneme im Kontext“.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="248"/>
         <source>Only the first %1 minutes are kept for saving; the face went on moving after that.</source>
         <translation>Nur die ersten %1 Minuten bleiben zum Speichern erhalten; das Gesicht hat sich danach weiterbewegt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="264"/>
+        <location filename="../studio/live/LiveView.cpp" line="268"/>
         <source>Latency: %1 ms mean, %2 ms max</source>
         <translation>Latenz: %1 ms im Mittel, %2 ms maximal</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="267"/>
+        <location filename="../studio/live/LiveView.cpp" line="271"/>
         <source>Time from the sound to the frame that shows it, over the last %1 seconds; %2 ms of it the phone recogniser and the model wait for the sound that follows</source>
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden; %2 ms davon warten die Phon-Erkennung und das Modell auf den folgenden Ton</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="272"/>
+        <location filename="../studio/live/LiveView.cpp" line="276"/>
         <source>Latency: –</source>
         <translation>Latenz: –</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="274"/>
+        <location filename="../studio/live/LiveView.cpp" line="278"/>
         <source>%1 s, frame %2 at %3 fps</source>
         <translation>%1 s, Bild %2 bei %3 fps</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="327"/>
+        <location filename="../studio/live/LiveView.cpp" line="331"/>
         <source>The session&apos;s sound is written into the project&apos;s folder, and the bundled demo is read-only. Save the project in a folder of your own first?</source>
         <translation>Der Ton der Sitzung wird in den Ordner des Projekts geschrieben, und das mitgelieferte Demo ist schreibgeschützt. Das Projekt zuerst in einem eigenen Ordner speichern?</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="340"/>
+        <location filename="../studio/live/LiveView.cpp" line="344"/>
         <source>The live session is sequence %1, at the end of the list.</source>
         <translation>Die Live-Sitzung ist jetzt die Sequenz %1 am Ende der Liste.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="349"/>
+        <location filename="../studio/live/LiveView.cpp" line="353"/>
         <source>Export Live Session</source>
         <translation>Live-Sitzung exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="351"/>
+        <location filename="../studio/live/LiveView.cpp" line="355"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
@@ -1326,188 +1341,188 @@
 <context>
     <name>lipsync::studio::MainWindow</name>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="79"/>
+        <location filename="../studio/app/MainWindow.cpp" line="80"/>
         <source>Annotate</source>
         <translation>Annotieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="80"/>
+        <location filename="../studio/app/MainWindow.cpp" line="81"/>
         <source>Preview &amp;&amp; Compare</source>
         <translation>Vorschau &amp;&amp; Vergleich</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="82"/>
+        <location filename="../studio/app/MainWindow.cpp" line="83"/>
         <source>Live</source>
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="106"/>
+        <location filename="../studio/app/MainWindow.cpp" line="107"/>
         <source>Models could not be written into the project&apos;s folder.</source>
         <translation>Modelle konnten nicht in den Projektordner geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="109"/>
+        <location filename="../studio/app/MainWindow.cpp" line="110"/>
         <source>%1 was not applied: it would leave the project unsaveable (%2).</source>
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="135"/>
+        <location filename="../studio/app/MainWindow.cpp" line="136"/>
         <source>Playing without sound: %1.</source>
         <translation>Wiedergabe ohne Ton: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="141"/>
         <location filename="../studio/app/MainWindow.cpp" line="142"/>
+        <location filename="../studio/app/MainWindow.cpp" line="143"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="161"/>
+        <location filename="../studio/app/MainWindow.cpp" line="162"/>
         <source>Generated &amp;Face</source>
         <translation>Generiertes &amp;Gesicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="163"/>
+        <location filename="../studio/app/MainWindow.cpp" line="164"/>
         <source>&amp;Whole Face (Eyes Included)</source>
         <translation>&amp;Ganzes Gesicht (mit Augen)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="165"/>
+        <location filename="../studio/app/MainWindow.cpp" line="166"/>
         <source>Synthesise the whole modelled face; otherwise the lower face is drawn and the recording&apos;s own eyes and upper face are kept</source>
         <translation>Das ganze modellierte Gesicht synthetisieren; sonst wird das untere Gesicht gezeichnet und die Augen und das Obergesicht der Aufnahme bleiben erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="167"/>
+        <location filename="../studio/app/MainWindow.cpp" line="168"/>
         <source>&amp;Detail from Training Images</source>
         <translation>&amp;Details aus Trainingsbildern</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="169"/>
+        <location filename="../studio/app/MainWindow.cpp" line="170"/>
         <source>Add the teeth, lip highlights and skin detail of the AAM&apos;s nearest training images to the model&apos;s smooth texture</source>
         <translation>Zähne, Glanzlichter der Lippen und Hautdetails der nächstgelegenen Trainingsbilder des AAM zur glatten Textur des Modells hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="171"/>
+        <location filename="../studio/app/MainWindow.cpp" line="172"/>
         <source>&amp;Match the Frame&apos;s Lighting</source>
         <translation>&amp;Beleuchtung an das Bild anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="227"/>
+        <location filename="../studio/app/MainWindow.cpp" line="228"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="231"/>
+        <location filename="../studio/app/MainWindow.cpp" line="232"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="241"/>
+        <location filename="../studio/app/MainWindow.cpp" line="242"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="254"/>
+        <location filename="../studio/app/MainWindow.cpp" line="255"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="275"/>
+        <location filename="../studio/app/MainWindow.cpp" line="276"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="276"/>
+        <location filename="../studio/app/MainWindow.cpp" line="277"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="277"/>
+        <location filename="../studio/app/MainWindow.cpp" line="278"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="279"/>
+        <location filename="../studio/app/MainWindow.cpp" line="280"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="310"/>
+        <location filename="../studio/app/MainWindow.cpp" line="311"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="313"/>
+        <location filename="../studio/app/MainWindow.cpp" line="314"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="328"/>
+        <location filename="../studio/app/MainWindow.cpp" line="329"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="332"/>
+        <location filename="../studio/app/MainWindow.cpp" line="341"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="343"/>
+        <location filename="../studio/app/MainWindow.cpp" line="352"/>
         <source>&amp;Live: Speak and Watch the Face</source>
         <translation>&amp;Live: Sprechen und das Gesicht beobachten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="345"/>
+        <location filename="../studio/app/MainWindow.cpp" line="354"/>
         <source>Speak into the microphone and watch the face move</source>
         <translation>Ins Mikrofon sprechen und dem Gesicht beim Bewegen zusehen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="349"/>
+        <location filename="../studio/app/MainWindow.cpp" line="358"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="353"/>
+        <location filename="../studio/app/MainWindow.cpp" line="362"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="357"/>
+        <location filename="../studio/app/MainWindow.cpp" line="366"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="360"/>
+        <location filename="../studio/app/MainWindow.cpp" line="369"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="410"/>
+        <location filename="../studio/app/MainWindow.cpp" line="419"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="473"/>
+        <location filename="../studio/app/MainWindow.cpp" line="482"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="481"/>
+        <location filename="../studio/app/MainWindow.cpp" line="490"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="510"/>
+        <location filename="../studio/app/MainWindow.cpp" line="519"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="512"/>
+        <location filename="../studio/app/MainWindow.cpp" line="521"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="516"/>
+        <location filename="../studio/app/MainWindow.cpp" line="525"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1515,43 +1530,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="527"/>
+        <location filename="../studio/app/MainWindow.cpp" line="536"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="528"/>
+        <location filename="../studio/app/MainWindow.cpp" line="537"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="528"/>
+        <location filename="../studio/app/MainWindow.cpp" line="537"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="534"/>
+        <location filename="../studio/app/MainWindow.cpp" line="543"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="553"/>
+        <location filename="../studio/app/MainWindow.cpp" line="562"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="581"/>
-        <location filename="../studio/app/MainWindow.cpp" line="589"/>
+        <location filename="../studio/app/MainWindow.cpp" line="590"/>
+        <location filename="../studio/app/MainWindow.cpp" line="598"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="588"/>
+        <location filename="../studio/app/MainWindow.cpp" line="597"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="240"/>
+        <location filename="../studio/app/MainWindow.cpp" line="241"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -2182,7 +2197,7 @@
         <translation>das Projekt hat bereits eine Sequenz %1</translation>
     </message>
     <message>
-        <location filename="../studio/document/ProjectDocument.cpp" line="246"/>
+        <location filename="../studio/document/ProjectDocument.cpp" line="273"/>
         <source>%1 interval %2: %3</source>
         <translation>%1, Intervall %2: %3</translation>
     </message>
@@ -2425,62 +2440,87 @@
 <context>
     <name>lipsync::studio::SequenceDetailsView</name>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="27"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="28"/>
         <source>Media:</source>
         <translation>Medien:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="28"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="29"/>
         <source>Video:</source>
         <translation>Video:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="29"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="30"/>
         <source>Audio:</source>
         <translation>Audio:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="30"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="32"/>
+        <source>Transcript:</source>
+        <translation>Transkript:</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="33"/>
         <source>Words:</source>
         <translation>Wörter:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="31"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="34"/>
         <source>Landmarks:</source>
         <translation>Landmarken:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="41"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="44"/>
         <source>No sequence</source>
         <translation>Keine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="55"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="58"/>
         <source>none; %1 frames at %2 fps over the sound</source>
         <translation>keines; %1 Bilder mit %2 fps über dem Ton</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="59"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="62"/>
         <source>%1 frames at %2 fps, %3 × %4</source>
         <translation>%1 Bilder mit %2 fps, %3 × %4</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="65"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="68"/>
         <source>%1 s, decoded at %2 Hz mono</source>
         <translation>%1 s, dekodiert mit %2 Hz mono</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="69"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="72"/>
         <source>none (%1)</source>
         <translation>keiner (%1)</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="73"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="75"/>
+        <source>none</source>
+        <translation>keines</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="76"/>
+        <source>proposed, not checked</source>
+        <translation>vorgeschlagen, nicht geprüft</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="77"/>
+        <source>%1 words</source>
+        <translation>%1 Wörter</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="81"/>
+        <source>Proposed by speech recognition: edit it in the list&apos;s Transcript column, or accept it as it is</source>
+        <translation>Von der Spracherkennung vorgeschlagen: in der Spalte Transkript der Liste bearbeiten oder so übernehmen, wie es ist</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="87"/>
         <source>%1 timed words</source>
         <translation>%1 Wörter mit Zeitangaben</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="74"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="88"/>
         <source>%1 of %2 frames</source>
         <translation>%1 von %2 Bildern</translation>
     </message>
@@ -2488,37 +2528,42 @@
 <context>
     <name>lipsync::studio::SequenceListModel</name>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="48"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="51"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="54"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="67"/>
+        <source>Proposed by speech recognition and not checked yet: double-click to edit it, or accept it as it is (Accept Proposed Transcript, in the Edit menu or on right-click)</source>
+        <translation>Von der Spracherkennung vorgeschlagen und noch nicht geprüft: doppelklicken, um es zu bearbeiten, oder so übernehmen, wie es ist (Vorgeschlagenes Transkript übernehmen, im Menü Bearbeiten oder per Rechtsklick)</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/SequenceListModel.cpp" line="70"/>
         <source>Double-click to edit the transcript</source>
         <translation>Doppelklicken, um das Transkript zu bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="55"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="71"/>
         <source>%1 — %2 frames at %3 fps</source>
         <translation>%1 – %2 Bilder mit %3 fps</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="83"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="99"/>
         <source>Sequence</source>
         <translation>Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="84"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="100"/>
         <source>Frames</source>
         <translation>Bilder</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="85"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="101"/>
         <source>Duration</source>
         <translation>Dauer</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="86"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="102"/>
         <source>Transcript</source>
         <translation>Transkript</translation>
     </message>
@@ -3245,6 +3290,69 @@
         <location filename="../studio/plots/TrajectoryView.cpp" line="193"/>
         <source>phonemes</source>
         <translation>Phoneme</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::TranscriptProposer</name>
+    <message>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="23"/>
+        <source>&amp;Propose Transcript</source>
+        <translation>Transkript &amp;vorschlagen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="24"/>
+        <source>&amp;Accept Proposed Transcript</source>
+        <translation>Vorgeschlagenes Transkript &amp;übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="29"/>
+        <source>Propose a transcript of this sequence by speech recognition (CMU Sphinx&apos;s US-English models), marked as not checked until you edit or accept it</source>
+        <translation>Ein Transkript dieser Sequenz per Spracherkennung vorschlagen (die US-englischen Modelle von CMU Sphinx), als nicht geprüft markiert, bis Sie es bearbeiten oder übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="31"/>
+        <source>Needs CMU Sphinx&apos;s US-English model (Debian package pocketsphinx-en-us)</source>
+        <translation>Benötigt das US-englische Modell von CMU Sphinx (Debian-Paket pocketsphinx-en-us)</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="33"/>
+        <source>Take the proposed transcript of this sequence as checked, as it is</source>
+        <translation>Das vorgeschlagene Transkript dieser Sequenz unverändert als geprüft übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="88"/>
+        <source>Propose Transcript</source>
+        <translation>Transkript vorschlagen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="89"/>
+        <source>%1 has a transcript. Proposing one replaces it with the words speech recognition hears. Propose anyway?</source>
+        <translation>%1 hat ein Transkript. Ein Vorschlag ersetzt es durch die Wörter, die die Spracherkennung hört. Trotzdem vorschlagen?</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="97"/>
+        <source>Propose transcript of %1</source>
+        <translation>Transkript von %1 vorschlagen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="116"/>
+        <source>No transcript could be proposed.</source>
+        <translation>Es konnte kein Transkript vorgeschlagen werden.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="136"/>
+        <source>The transcript of %1 changed while its speech was recognised: the proposal was not applied.</source>
+        <translation>Das Transkript von %1 wurde geändert, während seine Sprache erkannt wurde: Der Vorschlag wurde nicht übernommen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="143"/>
+        <source>Speech recognition proposes the transcript %1 has: nothing changed.</source>
+        <translation>Die Spracherkennung schlägt das Transkript vor, das %1 schon hat: Nichts wurde geändert.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="147"/>
+        <source>Transcript of %1 proposed: check it, then edit or accept it.</source>
+        <translation>Transkript von %1 vorgeschlagen: Prüfen Sie es, dann bearbeiten oder übernehmen Sie es.</translation>
     </message>
 </context>
 <context>

@@ -9,6 +9,7 @@
 #include "app/SequenceDetailsView.h"
 #include "app/SequenceListModel.h"
 #include "app/SequenceLoader.h"
+#include "app/TranscriptProposer.h"
 #include "app/TransportBar.h"
 #include "build/ModelsPanel.h"
 #include "compare/StudyController.h"
@@ -328,6 +329,14 @@ void MainWindow::createMenus()
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
     edit->addAction(a.undo);
     edit->addAction(a.redo);
+    // The current sequence's transcript: also on the sequence list, where it is shown and edited.
+    m_proposer = new TranscriptProposer(m_context, this);
+    edit->addSeparator();
+    for (QAction *act : {m_proposer->proposeAction(), m_proposer->acceptAction()}) {
+        edit->addAction(act);
+        m_sequenceView->addAction(act);
+    }
+    m_sequenceView->setContextMenuPolicy(Qt::ActionsContextMenu);
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
     for (QAction *act : {a.previousFrame, a.nextFrame, a.firstFrame, a.lastFrame})

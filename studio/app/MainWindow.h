@@ -42,6 +42,7 @@ class SequenceListModel;
 class StudioContext;
 class TaskStatusWidget;
 class TimelinePanel;
+class TranscriptProposer;
 class TransportBar;
 class WaveformView;
 struct SequenceMedia;
@@ -74,6 +75,9 @@ public:
     FacesController *faces() const { return m_faces; }
     ExportMenu *exportMenu() const { return m_export; }
     LongRecordingImporter *longRecordingImporter() const { return m_importer; }
+    // Edit ▸ Propose Transcript and Accept Proposed Transcript (also in the sequence list's
+    // context menu).
+    TranscriptProposer *transcriptProposer() const { return m_proposer; }
     TimelinePanel *timeline() const { return m_timeline; }
 
     int currentSequence() const;
@@ -143,6 +147,7 @@ private:
     FacesController *m_faces = nullptr;
     ExportMenu *m_export = nullptr;
     LongRecordingImporter *m_importer = nullptr;
+    TranscriptProposer *m_proposer = nullptr;
 
     int m_pendingRow = -1;
     QPointer<Task> m_loadTask;

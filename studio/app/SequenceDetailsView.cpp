@@ -1,5 +1,6 @@
 #include "app/SequenceDetailsView.h"
 
+#include "align/Lexicon.h"
 #include "context/SequenceMedia.h"
 #include "project/Sequence.h"
 #include "util/PhoneSet.h"
@@ -14,7 +15,7 @@ namespace lipsync::studio {
 
 SequenceDetailsView::SequenceDetailsView(QWidget *parent)
     : QWidget(parent), m_title(new QLabel(this)), m_media(new QLabel(this)), m_video(new QLabel(this)),
-      m_audio(new QLabel(this)), m_words(new QLabel(this)), m_landmarks(new QLabel(this))
+      m_audio(new QLabel(this)), m_transcript(new QLabel(this)), m_words(new QLabel(this)), m_landmarks(new QLabel(this))
 {
     auto *form = new QFormLayout(this);
     form->setContentsMargins(8, 8, 8, 8);
@@ -27,9 +28,11 @@ SequenceDetailsView::SequenceDetailsView(QWidget *parent)
     form->addRow(tr("Media:"), m_media);
     form->addRow(tr("Video:"), m_video);
     form->addRow(tr("Audio:"), m_audio);
+    m_transcript->setObjectName(QStringLiteral("transcriptDetails"));
+    form->addRow(tr("Transcript:"), m_transcript);
     form->addRow(tr("Words:"), m_words);
     form->addRow(tr("Landmarks:"), m_landmarks);
-    for (QLabel *l : {m_media, m_video, m_audio, m_words, m_landmarks}) {
+    for (QLabel *l : {m_media, m_video, m_audio, m_transcript, m_words, m_landmarks}) {
         l->setWordWrap(true);
         l->setTextInteractionFlags(Qt::TextSelectableByMouse);
     }
@@ -39,7 +42,7 @@ SequenceDetailsView::SequenceDetailsView(QWidget *parent)
 void SequenceDetailsView::clear()
 {
     m_title->setText(tr("No sequence"));
-    for (QLabel *l : {m_media, m_video, m_audio, m_words, m_landmarks})
+    for (QLabel *l : {m_media, m_video, m_audio, m_transcript, m_words, m_landmarks})
         l->clear();
 }
 
@@ -67,6 +70,17 @@ void SequenceDetailsView::showSequence(const Sequence &sequence, const QString &
                              .arg(media.peaks->sampleRate()));
     else
         m_audio->setText(tr("none (%1)").arg(media.audioError));
+    const std::size_t words = Lexicon::splitWords(sequence.transcript).size();
+    const bool proposed = words > 0 && sequence.transcriptProposed;
+    m_transcript->setText(words == 0 ? tr("none")
+                          : proposed ? tr("proposed, not checked")
+                                     : tr("%1 words").arg(words));
+    QFont font = m_transcript->font();
+    font.setItalic(proposed);
+    m_transcript->setFont(font);
+    m_transcript->setToolTip(proposed ? tr("Proposed by speech recognition: edit it in the list's Transcript column, "
+                                           "or accept it as it is")
+                                      : QString());
     int spoken = 0;
     for (const Interval &iv : sequence.words.intervals)
         spoken += PhoneSet::isSilence(iv.label) ? 0 : 1;

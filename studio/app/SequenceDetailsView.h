@@ -1,6 +1,7 @@
 #pragma once
 // Facts about the current sequence under the sequence list: media file, frames and rate,
-// duration, audio, words, and how many frames carry landmarks.
+// duration, audio, its transcript (how many words, or proposed and not checked yet), timed words,
+// and how many frames carry landmarks.
 #include <QWidget>
 
 class QLabel;
@@ -27,6 +28,7 @@ private:
     QLabel *m_media;
     QLabel *m_video;
     QLabel *m_audio;
+    QLabel *m_transcript;
     QLabel *m_words;
     QLabel *m_landmarks;
 };

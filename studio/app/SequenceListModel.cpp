@@ -2,7 +2,10 @@
 
 #include "document/ProjectDocument.h"
 
+#include <QFont>
+#include <QGuiApplication>
 #include <QLocale>
+#include <QPalette>
 
 namespace lipsync::studio {
 
@@ -49,7 +52,20 @@ QVariant SequenceListModel::data(const QModelIndex &index, int role) const
         case TranscriptColumn: return QString::fromStdString(s.transcript);
         }
     }
+    // A proposed transcript (speech recognition's words, Sequence::transcriptProposed) is shown
+    // as unverified until the user edits or accepts it.
+    const bool proposed = index.column() == TranscriptColumn && s.transcriptProposed;
+    if (role == Qt::FontRole && proposed) {
+        QFont font;
+        font.setItalic(true);
+        return font;
+    }
+    if (role == Qt::ForegroundRole && proposed)
+        return QGuiApplication::palette().brush(QPalette::PlaceholderText);
     if (role == Qt::ToolTipRole) {
+        if (proposed)
+            return tr("Proposed by speech recognition and not checked yet: double-click to edit it, or accept it as "
+                      "it is (Accept Proposed Transcript, in the Edit menu or on right-click)");
         if (index.column() == TranscriptColumn)
             return tr("Double-click to edit the transcript");
         return tr("%1 — %2 frames at %3 fps")

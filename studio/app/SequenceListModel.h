@@ -1,6 +1,8 @@
 #pragma once
 // The project's sequences as a table (id, frames, duration, transcript). The transcript column
 // is editable; edits go through ProjectDocument::requestTranscriptChange, so they are undoable.
+// A transcript proposed by speech recognition is shown as unverified (italic, muted, a tooltip
+// saying so) until edited or accepted.
 #include <QAbstractTableModel>
 
 namespace lipsync::studio {

@@ -213,17 +213,44 @@ bool ProjectDocument::requestTranscriptChange(int row, const QString &transcript
 {
     if (row < 0 || row >= sequenceCount())
         return false;
-    const QString trimmed = transcript.simplified();
-    const QString old = QString::fromStdString(sequence(row).transcript);
-    if (trimmed == old)
+    const Sequence &s = sequence(row);
+    const TranscriptState before{QString::fromStdString(s.transcript), s.transcriptProposed};
+    const TranscriptState after{transcript.simplified(), false};
+    // The same words are no edit: a proposal stays proposed until edited or accepted.
+    if (after.text == before.text)
         return false;
-    m_undo->push(new SetTranscriptCommand(this, row, old, trimmed));
+    m_undo->push(new SetTranscriptCommand(this, row, before, after, SetTranscriptCommand::Kind::Edit));
     return true;
 }
 
-void ProjectDocument::applyTranscript(int row, const QString &transcript)
+bool ProjectDocument::requestProposedTranscript(int row, const QString &transcript)
 {
-    m_project.sequences.at(std::size_t(row)).transcript = transcript.toStdString();
+    if (row < 0 || row >= sequenceCount())
+        return false;
+    const Sequence &s = sequence(row);
+    const TranscriptState before{QString::fromStdString(s.transcript), s.transcriptProposed};
+    const TranscriptState after{transcript.simplified(), true};
+    if (after.text.isEmpty() || after == before)
+        return false;
+    m_undo->push(new SetTranscriptCommand(this, row, before, after, SetTranscriptCommand::Kind::Propose));
+    return true;
+}
+
+bool ProjectDocument::requestAcceptTranscript(int row)
+{
+    if (row < 0 || row >= sequenceCount() || !sequence(row).transcriptProposed)
+        return false;
+    const TranscriptState before{QString::fromStdString(sequence(row).transcript), true};
+    m_undo->push(new SetTranscriptCommand(this, row, before, TranscriptState{before.text, false},
+                                          SetTranscriptCommand::Kind::Accept));
+    return true;
+}
+
+void ProjectDocument::applyTranscript(int row, const QString &transcript, bool proposed)
+{
+    Sequence &s = m_project.sequences.at(std::size_t(row));
+    s.transcript = transcript.toStdString();
+    s.transcriptProposed = proposed;
     emit sequenceChanged(row);
 }
 

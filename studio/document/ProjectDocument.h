@@ -51,8 +51,15 @@ public:
     // Removes the last `count` sequences and returns them (for redo), as they are now.
     std::vector<Sequence> applyRemoveLastSequences(int count);
 
+    // Transcripts (SetTranscriptCommand), each request one undo step. The user's edit (the
+    // sequence list's Transcript column): whitespace simplified, and the transcript no longer
+    // proposed. A proposal by speech recognition: the words marked proposed (not checked by the
+    // user; Sequence::transcriptProposed). Accepting a proposal: the same words, the mark cleared.
+    // False when nothing would change (accepting a transcript that is not proposed included).
     bool requestTranscriptChange(int row, const QString &transcript);
-    void applyTranscript(int row, const QString &transcript);
+    bool requestProposedTranscript(int row, const QString &transcript);
+    bool requestAcceptTranscript(int row);
+    void applyTranscript(int row, const QString &transcript, bool proposed);
 
     // Speech (timeline/TierCommands): the word and phone tiers of one sequence (alignment,
     // timeline edits). Requests with the same mergeKey >= 0 (one boundary drag) merge into one

@@ -1,5 +1,7 @@
 #pragma once
-// Undoable edit of one sequence's transcript.
+// Undoable change of one sequence's transcript and of its proposed mark
+// (Sequence::transcriptProposed): a user's edit, a proposal by speech recognition, or the user's
+// acceptance of a proposal. Undo restores both.
 #include <QString>
 #include <QUndoCommand>
 
@@ -7,10 +9,21 @@ namespace lipsync::studio {
 
 class ProjectDocument;
 
+// A sequence's transcript as the command sets it.
+struct TranscriptState
+{
+    QString text;
+    bool proposed = false; // by speech recognition, not checked by the user yet
+    bool operator==(const TranscriptState &) const = default;
+};
+
 class SetTranscriptCommand : public QUndoCommand
 {
 public:
-    SetTranscriptCommand(ProjectDocument *document, int row, QString before, QString after);
+    // What the step is called in the Edit menu.
+    enum class Kind { Edit, Propose, Accept };
+
+    SetTranscriptCommand(ProjectDocument *document, int row, TranscriptState before, TranscriptState after, Kind kind);
 
     void undo() override;
     void redo() override;
@@ -18,8 +31,8 @@ public:
 private:
     ProjectDocument *m_document;
     int m_row;
-    QString m_before;
-    QString m_after;
+    TranscriptState m_before;
+    TranscriptState m_after;
 };
 
 } // namespace lipsync::studio

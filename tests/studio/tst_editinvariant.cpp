@@ -1,11 +1,11 @@
 // Every command on the document leaves it valid: random edit sequences go through the studio's
 // real undo commands (ProjectDocument's requests, the timeline's tier edits, the annotator's
 // landmark edits, alignment and re-alignment of a selection through the alignment job, the
-// pronunciation and transcript edits, undo and redo), and after every step the project is
-// saved in place, loaded again and compared with the document. At the end of each sequence,
-// undoing everything gives back the project as opened and redoing everything the last state. A
-// failing sequence is shrunk to a minimal one (greedy removal of ops) and printed as a
-// regression row for failingSequencesFoundBefore.
+// pronunciation and transcript edits (proposals and their acceptance included), undo and redo),
+// and after every step the project is saved in place, loaded again and compared with the
+// document. At the end of each sequence, undoing everything gives back the project as opened and
+// redoing everything the last state. A failing sequence is shrunk to a minimal one (greedy
+// removal of ops) and printed as a regression row for failingSequencesFoundBefore.
 #include "../SanitizedBuild.h"
 #include "DemoWindow.h"
 #include "align/Aligner.h"
@@ -280,11 +280,17 @@ private:
             m_document.requestPronunciations(pronunciations, QStringLiteral("Pronunciations"));
             break;
         }
-        case OpKind::Transcript: {
+        case OpKind::Transcript: { // the sequence list's edit, Propose Transcript's proposal, or Accept
             QStringList words;
             for (int k = 0; k < 1 + op.j % 6; ++k)
                 words << QString::fromStdString(kWords[std::size_t(op.i + 7 * k) % kWords.size()]);
-            m_document.requestTranscriptChange(row, (op.j % 5 == 0) ? QString() : words.join(QLatin1Char(' ')));
+            const QString text = (op.j % 5 == 0) ? QString() : words.join(QLatin1Char(' '));
+            if (op.j % 7 == 1)
+                m_document.requestProposedTranscript(row, text);
+            else if (op.j % 7 == 2)
+                m_document.requestAcceptTranscript(row);
+            else
+                m_document.requestTranscriptChange(row, text);
             break;
         }
         case OpKind::Undo:
