@@ -2476,13 +2476,13 @@
     </message>
     <message>
         <location filename="../studio/app/SequenceDetailsView.cpp" line="58"/>
-        <source>none; %1 frames at %2 fps over the sound</source>
-        <translation>keines; %1 Bilder mit %2 fps über dem Ton</translation>
+        <source>sound only, %1 frames at %2 fps</source>
+        <translation>nur Ton, %1 Bilder mit %2 fps</translation>
     </message>
     <message>
         <location filename="../studio/app/SequenceDetailsView.cpp" line="62"/>
-        <source>%1 frames at %2 fps, %3 × %4</source>
-        <translation>%1 Bilder mit %2 fps, %3 × %4</translation>
+        <source>%1 frames, %2 fps, %3×%4</source>
+        <translation>%1 Bilder, %2 fps, %3×%4</translation>
     </message>
     <message>
         <location filename="../studio/app/SequenceDetailsView.cpp" line="68"/>

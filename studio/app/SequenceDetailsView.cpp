@@ -55,11 +55,11 @@ void SequenceDetailsView::showSequence(const Sequence &sequence, const QString &
     m_media->setToolTip(QDir::toNativeSeparators(mediaPath));
     const QSize size = media.frames.isEmpty() ? QSize() : media.frames.front().size();
     if (media.audioOnly)
-        m_video->setText(tr("none; %1 frames at %2 fps over the sound")
+        m_video->setText(tr("sound only, %1 frames at %2 fps")
                              .arg(media.frameCount())
                              .arg(locale.toString(media.frameRate, 'f', 2)));
     else
-        m_video->setText(tr("%1 frames at %2 fps, %3 × %4")
+        m_video->setText(tr("%1 frames, %2 fps, %3×%4")
                              .arg(media.frameCount())
                              .arg(locale.toString(media.frameRate, 'f', 2))
                              .arg(size.width())
