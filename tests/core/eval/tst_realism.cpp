@@ -256,16 +256,21 @@ private slots:
         RealismOptions options;
         options.crossValidation.folds = 2;
         options.crossValidation.kinds = {"hmm"};
+#ifndef LIPSYNC_SANITIZED_BUILD // the live path's memory is checked by tst_livesession there
         options.liveAcousticModel = LIPSYNC_SOURCE_DIR "/resources/aligner/grid-s1.aligner";
         options.liveBigram = LIPSYNC_SOURCE_DIR "/resources/aligner/grid-s1.bigram";
+#endif
+        const bool live = !options.liveAcousticModel.empty();
         Feedback feedback;
         const RealismResult r = evaluateRealism(project, options, feedback);
         QCOMPARE(r.sequences, n);
-        QCOMPARE(r.methods.size(), size_t(3));
+        QCOMPARE(r.methods.size(), size_t(live ? 3 : 2));
         QCOMPARE(r.methods[0].kind, std::string("tracked"));
-        QCOMPARE(r.methods[2].kind, std::string("live hmm"));
-        QVERIFY2(r.methods[2].metrics.at("correlation").mean > 0.3,
-                 qPrintable(QString::number(r.methods[2].metrics.at("correlation").mean)));
+        if (live) {
+            QCOMPARE(r.methods[2].kind, std::string("live hmm"));
+            QVERIFY2(r.methods[2].metrics.at("correlation").mean > 0.3,
+                     qPrintable(QString::number(r.methods[2].metrics.at("correlation").mean)));
+        }
         QCOMPARE(r.perSequence.size(), size_t(n));
         QVERIFY(r.frames >= 70 * n);
         QVERIFY(r.skippedFrames < r.frames / 10);
