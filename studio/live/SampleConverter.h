@@ -1,12 +1,14 @@
 #pragma once
 // Microphone bytes to what the live session takes: mono float samples at one rate. Any
 // QAudioFormat a device offers (unsigned 8-bit, 16- and 32-bit integer or float, any number of
-// interleaved channels, any rate) is read, its channels averaged, and its rate changed by linear
-// interpolation, carried across blocks so that the blocks join without a seam. Linear
-// interpolation is enough here: the recogniser reads MFCCs up to 8 kHz and a microphone's
-// preferred rate (44.1 or 48 kHz) is far above it.
+// interleaved channels, any rate) is read as float; its channels are averaged and its rate changed
+// by libswresample (core/io/SoundResampler), across blocks without a seam. Only for a device that
+// cannot deliver mono at the session's rate itself (MicrophoneInput asks for that first).
+#include "io/SoundResampler.h"
+
 #include <QAudioFormat>
 
+#include <memory>
 #include <vector>
 
 namespace lipsync::studio {
@@ -21,14 +23,11 @@ public:
     std::vector<float> convert(const char *bytes, qsizetype count);
 
 private:
-    float monoSample(const char *frame) const;
+    float sample(const char *p) const;
 
     QAudioFormat m_input;
-    int m_outputRate;
-    double m_step;           // input samples per output sample
-    double m_position = 0.0; // of the next output sample, in input samples after m_previous
-    float m_previous = 0.0f; // the last input sample of the block before
     std::vector<char> m_partial; // bytes of a frame split between blocks
+    std::unique_ptr<SoundResampler> m_resampler; // null when the input is mono at the output rate
 };
 
 } // namespace lipsync::studio
