@@ -71,8 +71,8 @@ AlignerOutput MonophoneAligner::align(const std::string &mediaPath, const std::v
 {
     if (words.empty())
         throw Error("the transcript has no words to align", transcriptPath.empty() ? mediaPath : transcriptPath);
-    if (MediaInfo::probe(mediaPath).audioDuration > kLongRecordingSeconds)
-        return alignLong(mediaPath, words, lexicon, feedback, transcriptPath);
+    if (const double seconds = MediaInfo::probe(mediaPath).audioDuration; seconds > kLongRecordingSeconds)
+        return alignLong(mediaPath, seconds, words, lexicon, feedback, transcriptPath);
     const Prepared p = prepare(mediaPath, words, m_model, lexicon, m_adapt, feedback, transcriptPath);
     AlignerOutput out = p.output(m_model);
     try {
@@ -85,11 +85,11 @@ AlignerOutput MonophoneAligner::align(const std::string &mediaPath, const std::v
     return out;
 }
 
-AlignerOutput MonophoneAligner::alignLong(const std::string &mediaPath, const std::vector<std::string> &words,
+AlignerOutput MonophoneAligner::alignLong(const std::string &mediaPath, double seconds,
+                                          const std::vector<std::string> &words,
                                           const Lexicon &lexicon, Feedback *feedback,
                                           const std::string &transcriptPath) const
 {
-    const double seconds = MediaInfo::probe(mediaPath).audioDuration;
     if (seconds > kMaxRecordingSeconds)
         throw Error("the recording is " + std::to_string(int(seconds / 60)) + " min long; up to "
                         + std::to_string(int(kMaxRecordingSeconds / 60))

@@ -24,10 +24,10 @@ public:
                           Feedback *feedback = nullptr) const override;
 
 private:
-    // Recordings longer than kLongRecordingSeconds: window by window (LongAlignment), without
-    // adaptation; longer than kMaxRecordingSeconds: refused.
-    AlignerOutput alignLong(const std::string &mediaPath, const std::vector<std::string> &words, const Lexicon &lexicon,
-                            Feedback *feedback, const std::string &transcriptPath) const;
+    // Recordings longer than kLongRecordingSeconds (`seconds` of sound): window by window
+    // (LongAlignment), without adaptation; longer than kMaxRecordingSeconds: refused.
+    AlignerOutput alignLong(const std::string &mediaPath, double seconds, const std::vector<std::string> &words,
+                            const Lexicon &lexicon, Feedback *feedback, const std::string &transcriptPath) const;
 
     std::string m_path;
     AcousticModel m_model;
