@@ -7,6 +7,7 @@
 #include "app/SurfaceFormat.h"
 #include "context/ErrorReporter.h"
 #include "context/PlaybackController.h"
+#include "document/ProjectDocument.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/TimelinePanel.h"
 
@@ -27,7 +28,8 @@ inline void initStudioTest()
     QStandardPaths::setTestModeEnabled(true);
 }
 
-// Copies every file under `from` into `to`, subfolders included (a writable copy of the demo).
+// Copies every file under `from` into `to`, subfolders included, each writable by the owner (a
+// writable copy of the demo, wherever it is installed).
 inline bool copyFolder(const QString &from, const QString &to)
 {
     QDirIterator it(from, QDir::Files, QDirIterator::Subdirectories);
@@ -36,6 +38,7 @@ inline bool copyFolder(const QString &from, const QString &to)
         const QString target = QDir(to).filePath(QDir(from).relativeFilePath(file));
         if (!QDir().mkpath(QFileInfo(target).absolutePath()) || !QFile::copy(file, target))
             return false;
+        QFile::setPermissions(target, QFile::permissions(target) | QFileDevice::WriteOwner);
     }
     return true;
 }
@@ -61,6 +64,16 @@ inline void openDemoWindow(MainWindow *&window)
     QVERIFY(window->files()->openDemo());
     QTRY_VERIFY_WITH_TIMEOUT(window->media() != nullptr, 60000);
     waitForTasks(window, 60000);
+}
+
+// Opens the project in `folder` (a writable copy, see copyFolder) in the window and waits until its
+// first sequence and its loading tasks are done. Callers return when QTest::currentTestFailed().
+inline void openProjectFolder(MainWindow *window, const QString &folder)
+{
+    QVERIFY(window->files()->open(folder));
+    QTRY_VERIFY_WITH_TIMEOUT(window->media() != nullptr, 60000);
+    waitForTasks(window);
+    QVERIFY(!window->document()->isReadOnly());
 }
 
 // The demo window with its timeline panel found and audio playback off (the speech tests).

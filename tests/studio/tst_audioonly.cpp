@@ -18,7 +18,6 @@
 
 #include <QAction>
 #include <QCheckBox>
-#include <QDirIterator>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -39,15 +38,8 @@ namespace {
 // recording (1.4 s of another speaker) and its transcript.
 bool demoWithSpeech(const QString &to)
 {
-    const QString demo = DemoProject::locate();
-    QDirIterator it(demo, QDir::Files, QDirIterator::Subdirectories);
-    while (it.hasNext()) {
-        const QString file = it.next();
-        const QString target = QDir(to).filePath(QDir(demo).relativeFilePath(file));
-        if (!QDir().mkpath(QFileInfo(target).absolutePath()) || !QFile::copy(file, target))
-            return false;
-        QFile::setPermissions(target, QFile::permissions(target) | QFileDevice::WriteOwner);
-    }
+    if (!testing::copyFolder(DemoProject::locate(), to))
+        return false;
     QFile manifest(QDir(to).filePath("project.json"));
     if (!manifest.open(QIODevice::ReadOnly))
         return false;

@@ -18,7 +18,6 @@
 #include "util/PhoneSet.h"
 
 #include <QDir>
-#include <QDirIterator>
 #include <QFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>

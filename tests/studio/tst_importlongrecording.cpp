@@ -27,7 +27,6 @@
 #include <QAction>
 #include <QDialogButtonBox>
 #include <QDir>
-#include <QDirIterator>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QLineEdit>
@@ -96,10 +95,9 @@ private slots:
         if (QTest::currentTestFailed())
             return;
         m_window->playback()->setAudioEnabled(false);
-        QVERIFY(m_window->files()->open(m_project));
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() != nullptr, 60000);
-        testing::waitForTasks(m_window);
-        QVERIFY(!m_window->document()->isReadOnly());
+        testing::openProjectFolder(m_window, m_project);
+        if (QTest::currentTestFailed())
+            return;
         m_demoCount = m_window->document()->sequenceCount();
         QCOMPARE(m_demoCount, 10);
     }

@@ -33,7 +33,6 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
-#include <QDirIterator>
 #include <QFile>
 #include <QLabel>
 #include <QMenuBar>
@@ -110,10 +109,7 @@ private slots:
         if (QTest::currentTestFailed())
             return;
         m_window->playback()->setAudioEnabled(false);
-        QVERIFY(m_window->files()->open(m_project));
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() != nullptr, 60000);
-        testing::waitForTasks(m_window);
-        QVERIFY(!m_window->document()->isReadOnly());
+        testing::openProjectFolder(m_window, m_project);
     }
 
     void cleanupTestCase()

@@ -284,10 +284,9 @@ private:
 
     void openProject()
     {
-        QVERIFY(m_window->files()->open(m_project));
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() != nullptr, 60000);
-        testing::waitForTasks(m_window);
-        QVERIFY(!doc()->isReadOnly());
+        testing::openProjectFolder(m_window, m_project);
+        if (QTest::currentTestFailed())
+            return;
         QCOMPARE(doc()->sequenceCount(), 11);
     }
 
