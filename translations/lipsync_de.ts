@@ -1127,168 +1127,168 @@
 <context>
     <name>lipsync::studio::LiveView</name>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="35"/>
+        <location filename="../studio/live/LiveView.cpp" line="34"/>
         <source>Start</source>
         <translation>Start</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="36"/>
+        <location filename="../studio/live/LiveView.cpp" line="35"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="36"/>
-        <location filename="../studio/live/LiveView.cpp" line="330"/>
+        <location filename="../studio/live/LiveView.cpp" line="35"/>
+        <location filename="../studio/live/LiveView.cpp" line="327"/>
         <source>Save as Sequence</source>
         <translation>Als Sequenz speichern</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="37"/>
+        <location filename="../studio/live/LiveView.cpp" line="36"/>
         <source>Export Video…</source>
         <translation>Video exportieren…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="47"/>
+        <location filename="../studio/live/LiveView.cpp" line="46"/>
         <source>Microphone:</source>
         <translation>Mikrofon:</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="49"/>
+        <location filename="../studio/live/LiveView.cpp" line="48"/>
         <source>Model:</source>
         <translation>Modell:</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="54"/>
+        <location filename="../studio/live/LiveView.cpp" line="53"/>
         <source>The microphone the face listens to</source>
         <translation>Das Mikrofon, dem das Gesicht zuhört</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="56"/>
+        <location filename="../studio/live/LiveView.cpp" line="55"/>
         <source>The trained dynamic model that moves the face</source>
         <translation>Das trainierte dynamische Modell, das das Gesicht bewegt</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="59"/>
+        <location filename="../studio/live/LiveView.cpp" line="58"/>
         <source>Listen to the microphone and move the face as you speak</source>
         <translation>Dem Mikrofon zuhören und das Gesicht bewegen, während Sie sprechen</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="62"/>
+        <location filename="../studio/live/LiveView.cpp" line="61"/>
         <source>Stop listening; the session is kept for Save and Export</source>
         <translation>Nicht mehr zuhören; die Sitzung bleibt zum Speichern und Exportieren erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="64"/>
+        <location filename="../studio/live/LiveView.cpp" line="63"/>
         <source>Add the last session to the project as a sequence: its sound, generated faces and recognised phones</source>
         <translation>Die letzte Sitzung als Sequenz zum Projekt hinzufügen: ihren Ton, die erzeugten Gesichter und die erkannten Phone</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="67"/>
+        <location filename="../studio/live/LiveView.cpp" line="66"/>
         <source>Write the last session&apos;s faces with its sound as an MP4 video</source>
         <translation>Die Gesichter der letzten Sitzung mit ihrem Ton als MP4-Video schreiben</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="82"/>
+        <location filename="../studio/live/LiveView.cpp" line="81"/>
         <source>The phones recognised in the last seconds, the newest on the right</source>
         <translation>Die in den letzten Sekunden erkannten Phone, die neuesten rechts</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="88"/>
+        <location filename="../studio/live/LiveView.cpp" line="87"/>
         <source>Time from the sound to the frame that shows it, over the last %1 seconds</source>
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="158"/>
+        <location filename="../studio/live/LiveView.cpp" line="157"/>
         <source>No microphone found</source>
         <translation>Kein Mikrofon gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="178"/>
+        <location filename="../studio/live/LiveView.cpp" line="177"/>
         <source>No trained model</source>
         <translation>Kein trainiertes Modell</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="207"/>
+        <location filename="../studio/live/LiveView.cpp" line="206"/>
         <source>No microphone was found. Connect one: the list above follows the devices as they come and go.</source>
         <translation>Es wurde kein Mikrofon gefunden. Schließen Sie eines an: Die Liste oben folgt den Geräten, wie sie kommen und gehen.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="219"/>
+        <location filename="../studio/live/LiveView.cpp" line="218"/>
         <source>Preparing: loading the phone recogniser and finding the face in the current sequence…</source>
         <translation>Vorbereitung: Die Phon-Erkennung wird geladen und das Gesicht in der aktuellen Sequenz gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="222"/>
+        <location filename="../studio/live/LiveView.cpp" line="221"/>
         <source>Listening. Speak, and the face follows.</source>
         <translation>Hört zu. Sprechen Sie, und das Gesicht folgt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="225"/>
+        <location filename="../studio/live/LiveView.cpp" line="224"/>
         <source>Finishing the last frames…</source>
         <translation>Die letzten Bilder werden fertiggestellt…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="231"/>
+        <location filename="../studio/live/LiveView.cpp" line="230"/>
         <source>Writing the video…</source>
         <translation>Das Video wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="233"/>
+        <location filename="../studio/live/LiveView.cpp" line="232"/>
         <source>The last session (%1 s) is kept: save it as a sequence, export it as a video, or start again.</source>
         <translation>Die letzte Sitzung (%1 s) ist erhalten: Speichern Sie sie als Sequenz, exportieren Sie sie als Video oder starten Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="239"/>
+        <location filename="../studio/live/LiveView.cpp" line="238"/>
         <source>Press Start and speak: the face moves with your voice.</source>
         <translation>Drücken Sie „Start“ und sprechen Sie: Das Gesicht bewegt sich mit Ihrer Stimme.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="244"/>
+        <location filename="../studio/live/LiveView.cpp" line="243"/>
         <source>This model uses phones in context, so its face waits for each phone to end: a few hundred milliseconds more. For the quickest face, train it without Phones in context.</source>
         <translation>Dieses Modell verwendet Phoneme im Kontext, daher wartet sein Gesicht, bis jedes Phonem zu Ende ist: einige hundert Millisekunden mehr. Für das schnellste Gesicht trainieren Sie es ohne „Phoneme im Kontext“.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="248"/>
+        <location filename="../studio/live/LiveView.cpp" line="247"/>
         <source>Only the first %1 minutes are kept for saving; the face went on moving after that.</source>
         <translation>Nur die ersten %1 Minuten bleiben zum Speichern erhalten; das Gesicht hat sich danach weiterbewegt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="268"/>
+        <location filename="../studio/live/LiveView.cpp" line="267"/>
         <source>Latency: %1 ms mean, %2 ms max</source>
         <translation>Latenz: %1 ms im Mittel, %2 ms maximal</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="271"/>
+        <location filename="../studio/live/LiveView.cpp" line="270"/>
         <source>Time from the sound to the frame that shows it, over the last %1 seconds; %2 ms of it the phone recogniser and the model wait for the sound that follows</source>
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden; %2 ms davon warten die Phon-Erkennung und das Modell auf den folgenden Ton</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="276"/>
+        <location filename="../studio/live/LiveView.cpp" line="275"/>
         <source>Latency: –</source>
         <translation>Latenz: –</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="278"/>
+        <location filename="../studio/live/LiveView.cpp" line="277"/>
         <source>%1 s, frame %2 at %3 fps</source>
         <translation>%1 s, Bild %2 bei %3 fps</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="331"/>
+        <location filename="../studio/live/LiveView.cpp" line="328"/>
         <source>The session&apos;s sound is written into the project&apos;s folder, and the bundled demo is read-only. Save the project in a folder of your own first?</source>
         <translation>Der Ton der Sitzung wird in den Ordner des Projekts geschrieben, und das mitgelieferte Demo ist schreibgeschützt. Das Projekt zuerst in einem eigenen Ordner speichern?</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="344"/>
+        <location filename="../studio/live/LiveView.cpp" line="337"/>
         <source>The live session is sequence %1, at the end of the list.</source>
         <translation>Die Live-Sitzung ist jetzt die Sequenz %1 am Ende der Liste.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="353"/>
+        <location filename="../studio/live/LiveView.cpp" line="346"/>
         <source>Export Live Session</source>
         <translation>Live-Sitzung exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="355"/>
+        <location filename="../studio/live/LiveView.cpp" line="348"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
@@ -1306,34 +1306,34 @@
         <translation>Eine lange Aufnahme eines Sprechers an ihrem Transkript alignieren und ihre Äußerungen dem Projekt als Sequenzen hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="77"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="75"/>
         <source>Import Long Recording</source>
         <translation>Lange Aufnahme importieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="78"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="76"/>
         <source>The recording&apos;s clips are written into the project&apos;s folder, and the bundled demo is read-only. Save the project in a folder of your own first?</source>
         <translation>Die Clips der Aufnahme werden in den Ordner des Projekts geschrieben, und das mitgelieferte Demo ist schreibgeschützt. Das Projekt zuerst in einem eigenen Ordner speichern?</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="100"/>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="162"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="94"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="156"/>
         <source>The long recording could not be imported.</source>
         <translation>Die lange Aufnahme konnte nicht importiert werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="101"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="95"/>
         <source>The bundled demo is read-only: save the project in a folder of your own first.</source>
         <translation>Das mitgelieferte Demo ist schreibgeschützt: Speichern Sie das Projekt zuerst in einem eigenen Ordner.</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="125"/>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="152"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="119"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="146"/>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="155"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="149"/>
         <source>Imported from %1: %2 sequences, %3 words.</source>
         <translation>Aus %1 importiert: %2 Sequenzen, %3 Wörter.</translation>
     </message>

@@ -2,6 +2,7 @@
 
 #include "app/ImportLongRecordingDialog.h"
 #include "context/ErrorReporter.h"
+#include "context/WritableProject.h"
 #include "context/ModelStore.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
@@ -17,7 +18,6 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QMessageBox>
 
 #include <memory>
 #include <utility>
@@ -72,16 +72,10 @@ void LongRecordingImporter::importWithDialog()
     ProjectDocument *document = m_context->document();
     if (!document->isOpen() || isImporting())
         return;
-    if (document->isReadOnly()) {
-        if (!ErrorReporter::isBatchMode()
-            && QMessageBox::question(m_window, tr("Import Long Recording"),
-                                     tr("The recording's clips are written into the project's folder, and the "
-                                        "bundled demo is read-only. Save the project in a folder of your own first?"))
-                   != QMessageBox::Yes)
-            return;
-        if (!m_saveProject() || document->isReadOnly())
-            return;
-    }
+    if (!ensureWritableProject(m_window, *document, m_saveProject, tr("Import Long Recording"),
+                               tr("The recording's clips are written into the project's folder, and the "
+                                  "bundled demo is read-only. Save the project in a folder of your own first?")))
+        return;
     ImportLongRecordingDialog dialog(m_window);
     dialog.setObjectName(QStringLiteral("importLongRecordingDialog"));
     emit dialogOpened(&dialog);

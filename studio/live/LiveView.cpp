@@ -1,7 +1,7 @@
 #include "live/LiveView.h"
 
 #include "annotate/FrameView.h"
-#include "context/ErrorReporter.h"
+#include "context/WritableProject.h"
 #include "context/ModelKinds.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
@@ -17,7 +17,6 @@
 #include <QHideEvent>
 #include <QLabel>
 #include <QLocale>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QStyle>
@@ -325,16 +324,10 @@ void LiveView::say(const QString &message)
 void LiveView::saveAsSequence()
 {
     ProjectDocument *document = m_context->document();
-    if (document->isOpen() && document->isReadOnly()) {
-        if (!ErrorReporter::isBatchMode()
-            && QMessageBox::question(this, tr("Save as Sequence"),
-                                     tr("The session's sound is written into the project's folder, and the bundled "
-                                        "demo is read-only. Save the project in a folder of your own first?"))
-                   != QMessageBox::Yes)
-            return;
-        if (!m_saveProject || !m_saveProject() || document->isReadOnly())
-            return;
-    }
+    if (!ensureWritableProject(this, *document, m_saveProject, tr("Save as Sequence"),
+                               tr("The session's sound is written into the project's folder, and the bundled "
+                                  "demo is read-only. Save the project in a folder of your own first?")))
+        return;
     QString why;
     const QString id = m_controller->saveAsSequence(&why);
     if (id.isEmpty()) {
