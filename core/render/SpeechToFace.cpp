@@ -84,21 +84,21 @@ void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, doub
     const bool ownFrames = result.hasVideo && std::abs(result.frameRate - in.info.frameRate) < 1e-6;
     const int frames = ownFrames ? in.info.frameCount
                                  : std::max(1, int(std::lround(audioDuration * result.frameRate)));
-    result.labels.clear();
-    for (const std::string &label : voteFrameLabels(result.phones, result.frameRate, frames, audioFrames)) {
-        const int index = PhoneSet::index(label);
-        result.labels.push_back(index >= 0 ? index : int(PhoneSet::kSilence));
-    }
+    // The §0 vote at `rate` for `count` frames, a label outside the phone set taken as silence.
+    auto labelsAt = [&](double rate, int count) {
+        std::vector<int> labels;
+        for (const std::string &label : voteFrameLabels(result.phones, rate, count, audioFrames)) {
+            const int index = PhoneSet::index(label);
+            labels.push_back(index >= 0 ? index : int(PhoneSet::kSilence));
+        }
+        return labels;
+    };
+    result.labels = labelsAt(result.frameRate, frames);
     if (modelRate > 0 && std::abs(modelRate - result.frameRate) > 1e-6 * modelRate) {
         // The model's dynamics are per frame of its own rate: generate at that rate, then sample
         // the trajectory at the output's frame times (linear interpolation).
         const int modelFrames = std::max(1, int(std::lround(frames * modelRate / result.frameRate)));
-        std::vector<int> modelLabels;
-        for (const std::string &label : voteFrameLabels(result.phones, modelRate, modelFrames, audioFrames)) {
-            const int index = PhoneSet::index(label);
-            modelLabels.push_back(index >= 0 ? index : int(PhoneSet::kSilence));
-        }
-        const Eigen::MatrixXd generated = in.model->generate(modelLabels);
+        const Eigen::MatrixXd generated = in.model->generate(labelsAt(modelRate, modelFrames));
         result.features.resize(frames, generated.cols());
         for (int t = 0; t < frames; ++t) {
             const double at = std::clamp(t * modelRate / result.frameRate, 0.0, double(modelFrames - 1));
