@@ -1,6 +1,7 @@
 #include "aam/FaceDetector.h"
 
 #include "aam/AamModel.h"
+#include "aam/DlibFaceModels.h"
 #include "aam/LandmarkScheme.h"
 #include "util/ResourceLocator.h"
 
@@ -9,12 +10,6 @@
 
 #include <opencv2/imgproc.hpp>
 #include <opencv2/objdetect.hpp>
-
-#ifdef LIPSYNC_HAVE_DLIB
-#include <dlib/image_processing.h>
-#include <dlib/image_processing/frontal_face_detector.h>
-#include <dlib/opencv/cv_image.h>
-#endif
 
 #include <algorithm>
 #include <cstdlib>
@@ -28,10 +23,7 @@ struct FaceDetector::Impl
     cv::Ptr<cv::FaceDetectorYN> yunet;
     cv::CascadeClassifier haar;
     bool haarLoaded = false;
-#ifdef LIPSYNC_HAVE_DLIB
-    std::unique_ptr<dlib::shape_predictor> predictor;
-    std::unique_ptr<dlib::frontal_face_detector> hog;
-#endif
+    DlibFaceModels dlib;
 };
 
 std::string FaceDetector::findYunetModel()
@@ -64,17 +56,9 @@ FaceDetector::FaceDetector(const FaceDetectorPaths &paths) : m_impl(std::make_un
     const std::string haarPath = paths.haarCascadeFile();
     if (QFileInfo::exists(QString::fromStdString(haarPath)))
         m_impl->haarLoaded = m_impl->haar.load(haarPath);
-#ifdef LIPSYNC_HAVE_DLIB
     const std::string dlibPath = paths.dlibPredictorFile();
-    if (paths.useDlib && QFileInfo::exists(QString::fromStdString(dlibPath))) {
-        try {
-            auto predictor = std::make_unique<dlib::shape_predictor>();
-            dlib::deserialize(dlibPath) >> *predictor;
-            m_impl->predictor = std::move(predictor);
-        } catch (const std::exception &) {
-        }
-    }
-#endif
+    if (paths.useDlib && DlibFaceModels::available() && QFileInfo::exists(QString::fromStdString(dlibPath)))
+        m_impl->dlib.loadPredictor(dlibPath);
 }
 
 FaceDetector::~FaceDetector() = default;
@@ -91,19 +75,18 @@ bool FaceDetector::hasHaar() const
 
 bool FaceDetector::hasDlib() const
 {
-#ifdef LIPSYNC_HAVE_DLIB
-    return m_impl->predictor != nullptr;
-#else
-    return false;
-#endif
+    return m_impl->dlib.hasPredictor();
 }
 
 std::string FaceDetector::available() const
 {
     std::string s;
     auto add = [&](bool on, const char *name) {
-        if (on)
-            s += (s.empty() ? "" : ",") + std::string(name);
+        if (!on)
+            return;
+        if (!s.empty())
+            s += ',';
+        s += name;
     };
     add(hasYunet(), "yunet");
     add(hasHaar(), "haar");
@@ -184,8 +167,7 @@ cv::Mat greyImage(const cv::Mat &bgr)
 
 std::optional<cv::Rect2d> FaceDetector::dlibFaceBox(const cv::Mat &bgr, const FaceDetection &face)
 {
-#ifdef LIPSYNC_HAVE_DLIB
-    if (!m_impl->predictor || bgr.empty())
+    if (!m_impl->dlib.hasPredictor() || bgr.empty())
         return std::nullopt;
     const cv::Mat grey = greyImage(bgr);
     // dlib's predictor was trained on the boxes of dlib's HOG detector: use that detector's box
@@ -193,25 +175,19 @@ std::optional<cv::Rect2d> FaceDetector::dlibFaceBox(const cv::Mat &bgr, const Fa
     // adjust the YuNet box, which is larger and higher, towards the HOG convention.
     cv::Rect2d b = face.box;
     bool fromHog = false;
-    {
-        if (!m_impl->hog)
-            m_impl->hog = std::make_unique<dlib::frontal_face_detector>(dlib::get_frontal_face_detector());
-        const double f = std::min(1.0, 480.0 / std::max(grey.cols, grey.rows));
-        cv::Mat small = grey;
-        if (f < 1.0)
-            cv::resize(grey, small, cv::Size(), f, f, cv::INTER_AREA);
-        dlib::cv_image<unsigned char> smallImage(small);
-        const std::vector<dlib::rectangle> boxes = (*m_impl->hog)(smallImage);
-        double best = 0.0;
-        for (const auto &r : boxes) {
-            const cv::Rect2d candidate(r.left() / f, r.top() / f, (r.width()) / f, (r.height()) / f);
-            const double inter = (candidate & face.box).area();
-            const double iou = inter / (candidate.area() + face.box.area() - inter);
-            if (iou > best && iou > 0.3) {
-                best = iou;
-                b = candidate;
-                fromHog = true;
-            }
+    const double f = std::min(1.0, 480.0 / std::max(grey.cols, grey.rows));
+    cv::Mat small = grey;
+    if (f < 1.0)
+        cv::resize(grey, small, cv::Size(), f, f, cv::INTER_AREA);
+    double best = 0.0;
+    for (const cv::Rect2d &r : m_impl->dlib.hogFaces(small)) {
+        const cv::Rect2d candidate(r.x / f, r.y / f, r.width / f, r.height / f);
+        const double inter = (candidate & face.box).area();
+        const double iou = inter / (candidate.area() + face.box.area() - inter);
+        if (iou > best && iou > 0.3) {
+            best = iou;
+            b = candidate;
+            fromHog = true;
         }
     }
     if (!fromHog && face.source == "yunet") {
@@ -220,36 +196,13 @@ std::optional<cv::Rect2d> FaceDetector::dlibFaceBox(const cv::Mat &bgr, const Fa
         b = cv::Rect2d(cx - 0.5 * w, top, w, h);
     }
     return b;
-#else
-    (void)bgr;
-    (void)face;
-    return std::nullopt;
-#endif
 }
 
 Eigen::VectorXd FaceDetector::dlibLandmarksInBox(const cv::Mat &bgr, const cv::Rect2d &b)
 {
-#ifdef LIPSYNC_HAVE_DLIB
-    if (!m_impl->predictor || bgr.empty())
+    if (!m_impl->dlib.hasPredictor() || bgr.empty())
         return {};
-    const cv::Mat grey = greyImage(bgr);
-    dlib::cv_image<unsigned char> image(grey);
-    const dlib::rectangle rect(long(std::lround(b.x)), long(std::lround(b.y)),
-                               long(std::lround(b.x + b.width)), long(std::lround(b.y + b.height)));
-    const dlib::full_object_detection shape = (*m_impl->predictor)(image, rect);
-    if (shape.num_parts() != 68)
-        return {};
-    Eigen::VectorXd out(136);
-    for (unsigned long i = 0; i < 68; ++i) {
-        out[2 * long(i)] = double(shape.part(i).x());
-        out[2 * long(i) + 1] = double(shape.part(i).y());
-    }
-    return out;
-#else
-    (void)bgr;
-    (void)b;
-    return {};
-#endif
+    return m_impl->dlib.landmarks68(greyImage(bgr), b);
 }
 
 Eigen::VectorXd FaceDetector::dlibLandmarks(const cv::Mat &bgr, const FaceDetection &face)

@@ -355,7 +355,7 @@ private slots:
         lm.train(data, feedback);
         DpdsOptions gaOptions;
         gaOptions.optimizer = DpdsOptions::Optimizer::GradientAscent;
-        gaOptions.maxIterations = 5000;
+        gaOptions.maxIterations = 500;
         gaOptions.tolerance = 1e-13;
         DpdsModel ga(gaOptions);
         ga.train(data, feedback);
