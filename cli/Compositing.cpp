@@ -13,7 +13,9 @@ std::vector<CommandOption> Compositing::options()
              QStringLiteral("keep the model's mean colour instead of matching the frame's lighting")},
             {QStringLiteral("no-detail"), {},
              QStringLiteral("draw the model's smooth texture only, without the detail (teeth, lip highlights) "
-                            "of the AAM's nearest training images")}};
+                            "of the AAM's nearest training images")},
+            {QStringLiteral("no-lip-closure"), {},
+             QStringLiteral("draw the model's trajectory as generated, without closing the lips on /p b m/")}};
 }
 
 CompositeOptions Compositing::from(const CommandLine &args)
@@ -23,6 +25,11 @@ CompositeOptions Compositing::from(const CommandLine &args)
     options.matchColour = !args.isSet(QStringLiteral("no-colour-match"));
     options.detail = !args.isSet(QStringLiteral("no-detail"));
     return options;
+}
+
+bool Compositing::closesLips(const CommandLine &args)
+{
+    return !args.isSet(QStringLiteral("no-lip-closure"));
 }
 
 } // namespace lipsync::cli

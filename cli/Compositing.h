@@ -1,7 +1,7 @@
 #pragma once
-// How `lipsync render` and `lipsync evaluate --realism` draw the synthesised face into the frames,
-// from their shared options: --full-face, --no-colour-match and --no-detail (AamSynthesizer's
-// CompositeOptions).
+// How `lipsync render`, `lipsync live` and `lipsync evaluate --realism` draw the synthesised face
+// into the frames, from their shared options: --full-face, --no-colour-match and --no-detail
+// (AamSynthesizer's CompositeOptions), and --no-lip-closure (render/BilabialClosure).
 #include "Command.h"
 
 #include "aam/AamSynthesizer.h"
@@ -16,6 +16,8 @@ struct Compositing
 {
     static std::vector<CommandOption> options();
     static CompositeOptions from(const CommandLine &args);
+    // Whether the generated lips are closed on /p b m/ (not --no-lip-closure).
+    static bool closesLips(const CommandLine &args);
 };
 
 } // namespace lipsync::cli

@@ -61,6 +61,7 @@ int runRealism(const CommandLine &args, const EvaluationOptions &evaluation)
     options.maxLag = args.integer(QStringLiteral("max-lag"), 0);
     options.dlibPredictor = args.value(QStringLiteral("dlib")).toStdString();
     options.composite = Compositing::from(args);
+    options.closeBilabials = Compositing::closesLips(args);
     if (args.isSet(QStringLiteral("live"))) {
         options.liveAcousticModel = alignerModelOrDefault({}, QStringLiteral("evaluate --live")).toStdString();
         options.liveBigram = shippedPhoneBigramPath();

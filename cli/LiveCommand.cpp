@@ -5,6 +5,7 @@
 // transcript, their error against a forced alignment.
 #include "AlignerSupport.h"
 #include "CommandLine.h"
+#include "Compositing.h"
 #include "DynamicModelOptions.h"
 
 #include "aam/AamModel.h"
@@ -148,6 +149,7 @@ int runLive(const CommandLine &a)
     LiveOptions options;
     options.recognizer.lagFrames = a.integer("lag", 0);
     options.stillBackground = a.isSet("still");
+    options.closeBilabials = Compositing::closesLips(a);
     if (a.isSet("fps"))
         options.frameRate = a.positiveNumber("fps");
 
@@ -159,6 +161,7 @@ int runLive(const CommandLine &a)
     const std::unique_ptr<FaceRenderer> renderer =
         background.isEmpty() ? std::make_unique<FaceRenderer>(aam)
                              : std::make_unique<FaceRenderer>(aam, background.toStdString(), tracking);
+    renderer->setCompositeOptions(Compositing::from(a));
     const AudioBuffer sound = AudioDecoder::decode(input.toStdString(), acoustic.featureOptions().sampleRate);
     LiveSession session(acoustic, bigram, *model, renderer.get(), options);
 
@@ -291,7 +294,8 @@ const CommandRegistration registration{
           QStringLiteral("frames per second (default: the rate the model was trained at)")},
          {QStringLiteral("as-fast-as-possible"), {}, QStringLiteral("feed the sound without waiting for real time")},
          pronunciationsOption()},
-        {}},
+        {}}
+        .add(Compositing::options()),
     &runLive};
 
 } // namespace

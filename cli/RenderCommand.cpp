@@ -32,6 +32,7 @@ int runRender(const CommandLine &args)
     RenderOptions options;
     options.sideBySide = args.isSet("side-by-side");
     options.composite = Compositing::from(args);
+    request.closeBilabials = Compositing::closesLips(args);
     const VideoOutput output = VideoOutput::from(args, options.sideBySide ? 2 : 1);
     const QString &out = output.out;
     const QString &pngDir = output.pngDir;

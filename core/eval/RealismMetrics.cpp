@@ -1,6 +1,7 @@
 #include "eval/RealismMetrics.h"
 
 #include "io/AudioDecoder.h"
+#include "util/PhoneSet.h"
 
 #include <opencv2/imgproc.hpp>
 
@@ -142,7 +143,7 @@ std::vector<FrameRange> bilabialSegments(const Tier &phones, double fps, int fra
 {
     std::vector<FrameRange> out;
     for (const Interval &i : phones.intervals) {
-        if (i.label != "P" && i.label != "B" && i.label != "M")
+        if (!PhoneSet::isBilabial(i.label))
             continue;
         // Frame t shows the interval [t/fps, (t+1)/fps).
         const int first = std::max(0, int(std::floor(i.start * fps + 1e-9)) - margin);

@@ -10,6 +10,7 @@
 #include "eval/Statistics.h"
 #include "io/AudioDecoder.h"
 #include "project/Project.h"
+#include "render/BilabialClosure.h"
 #include "render/FaceRenderer.h"
 #include "tasks/BlockingMap.h"
 #include "tasks/Feedback.h"
@@ -23,6 +24,7 @@
 #include <exception>
 #include <limits>
 #include <mutex>
+#include <optional>
 
 namespace lipsync {
 
@@ -246,6 +248,9 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
     for (int f = 0; f < cv.folds; ++f)
         for (int i : result.foldMembers[size_t(f)])
             items.push_back({i, f, {}});
+    const std::optional<BilabialClosure> closure
+        = options.closeBilabials && BilabialClosure::applies(aam) ? std::optional<BilabialClosure>(std::in_place, aam)
+                                                                  : std::nullopt;
     std::mutex mutex;
     std::atomic<int> done{0};
     std::atomic<bool> stop{false};
@@ -264,13 +269,21 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
             const LabelledSequence &s = sequences[size_t(item.sequence)];
             const Sequence &sequence = project.sequences[size_t(projectIndex[size_t(item.sequence)])];
             std::vector<Rendering> renderings{{kTracked, s.features}};
+            const std::vector<double> closing
+                = BilabialClosure::weights(sequence.phones, sequence.frameRate, s.frameCount());
+            auto closed = [&](Eigen::MatrixXd trajectory, const std::vector<double> &weights) {
+                return closure ? closure->apply(trajectory, weights) : trajectory;
+            };
             for (size_t k = 0; k < cv.kinds.size(); ++k)
-                renderings.push_back({cv.kinds[k], models[size_t(item.fold)][k]->generate(s.labels)});
+                renderings.push_back(
+                    {cv.kinds[k], closed(models[size_t(item.fold)][k]->generate(s.labels), closing)});
             if (live) {
                 const std::vector<int> heard = liveLabels(liveAcoustic, liveBigram, project.mediaPath(sequence),
                                                           sequence.frameRate, s.frameCount());
                 for (size_t k = 0; k < cv.kinds.size(); ++k)
-                    renderings.push_back({kLive + cv.kinds[k], models[size_t(item.fold)][k]->generate(heard)});
+                    renderings.push_back({kLive + cv.kinds[k],
+                                          closed(models[size_t(item.fold)][k]->generate(heard),
+                                                 BilabialClosure::weights(heard))});
             }
             item.result = measureSequence(aam, project.mediaPath(sequence), sequence, renderings, *detector,
                                           options, own);

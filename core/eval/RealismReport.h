@@ -46,6 +46,9 @@ struct RealismOptions
     int maxLag = 5;            // audio-visual lags searched, frames either way
     std::string dlibPredictor; // empty: /usr/share/dlib/shape_predictor_68_face_landmarks.dat
     CompositeOptions composite; // how the renders are drawn (the preview's by default)
+    // Close the lips on /p b m/ in the models' trajectories (render/BilabialClosure), as renders
+    // do by default; the tracked re-synthesis is never changed.
+    bool closeBilabials = true;
     // Also every model driven live (render/LiveSession): each held-out sequence's phones
     // recognised from its sound as it streams in (StreamingPhoneRecognizer with this aligner
     // model and phone bigram), not taken from its forced alignment; reported as "live <kind>".

@@ -25,6 +25,8 @@ LiveSession::LiveSession(const AcousticModel &acoustic, const PhoneBigram &bigra
     m_frameRate = options.frameRate > 0 ? options.frameRate : model.frameRate() > 0 ? model.frameRate() : 25.0;
     m_generator = model.streamer();
     m_still = options.stillBackground;
+    if (renderer && options.closeBilabials && BilabialClosure::applies(renderer->aam()))
+        m_closure.emplace(renderer->aam());
 }
 
 LiveSession::~LiveSession() = default;
@@ -115,8 +117,10 @@ void LiveSession::drain(std::vector<LiveFrame> &out)
         frame.index = m_generated++;
         frame.label = m_labels[size_t(frame.index)];
         frame.features = y;
+        if (m_closure && PhoneSet::isBilabial(frame.label))
+            frame.features = m_closure->apply(y.transpose(), {1.0}).transpose();
         if (m_renderer)
-            frame.image = m_renderer->render(m_still ? 0 : frame.index, y);
+            frame.image = m_renderer->render(m_still ? 0 : frame.index, frame.features);
         frame.soundEnd = (frame.index + 1) / m_frameRate;
         out.push_back(std::move(frame));
     }

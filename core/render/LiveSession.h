@@ -13,12 +13,14 @@
 #include "align/PhoneBigram.h"
 #include "align/StreamingPhoneRecognizer.h"
 #include "annotation/Tier.h"
+#include "render/BilabialClosure.h"
 
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
 #include <deque>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace lipsync {
@@ -32,6 +34,9 @@ struct LiveOptions
 {
     double frameRate = 0.0; // video frames per second; 0: the dynamic model's (25 if it records none)
     bool stillBackground = false; // every frame into the background's first frame (a still of the person)
+    // Close the lips on frames heard as /p b m/ (render/BilabialClosure, with the renderer's AAM;
+    // features-only sessions have no AAM and are left as generated).
+    bool closeBilabials = true;
     PhoneRecognizerOptions recognizer;
 };
 
@@ -39,7 +44,7 @@ struct LiveFrame
 {
     int index = 0;
     int label = 0;            // the frame's phone (PhoneSet index)
-    Eigen::VectorXd features; // generated AAM parameters
+    Eigen::VectorXd features; // generated AAM parameters (as rendered: lips closed on /p b m/)
     cv::Mat image;            // rendered (empty without a renderer)
     double soundEnd = 0.0;    // seconds: the newest sound the frame shows, (index + 1) / frameRate
 };
@@ -85,6 +90,7 @@ private:
     MfccOptions m_audio;
     double m_frameRate = 25.0;
     bool m_still = false;
+    std::optional<BilabialClosure> m_closure;
     long m_samples = 0;
     std::deque<int> m_recent;   // decided audio frames not yet needed by every later frame's vote
     long m_recentFirst = 0;     // audio frame index of m_recent.front()

@@ -8,6 +8,7 @@
 #include "io/Transcript.h"
 #include "io/VideoReader.h"
 #include "project/Project.h"
+#include "render/BilabialClosure.h"
 #include "render/FaceRenderer.h"
 #include "render/FrameComposition.h"
 #include "render/ImageSequenceExporter.h"
@@ -109,6 +110,9 @@ void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, doub
     } else {
         result.features = in.model->generate(result.labels);
     }
+    if (request.closeBilabials && BilabialClosure::applies(*in.aam))
+        result.features = BilabialClosure(*in.aam).apply(
+            result.features, BilabialClosure::weights(result.phones, result.frameRate, frames));
     feedback.throwIfCanceled();
     // The sound at its own rate, its first sample with the first video frame.
     const AudioBuffer audio = AudioDecoder::decode(request.mediaPath, 0);

@@ -48,6 +48,9 @@ struct SpeechToFaceRequest
     double frameRate = 0.0;
     // Pronunciation overrides (a project's Project::pronunciations), before CMU and espeak-ng.
     std::map<std::string, std::string> pronunciations;
+    // Close the lips on /p b m/ (render/BilabialClosure, when it applies to the AAM); false: the
+    // model's trajectory as it is.
+    bool closeBilabials = true;
 };
 
 struct SpeechToFaceResult
@@ -60,7 +63,7 @@ struct SpeechToFaceResult
     Tier phones{"phones", {}};
     double frameRate = 25.0;
     std::vector<int> labels;      // PhoneSet index of every frame
-    Eigen::MatrixXd features;     // generated parameters, frames x d
+    Eigen::MatrixXd features;     // generated parameters, frames x d (lips closed on /p b m/ if asked)
     AudioBuffer audio;            // the recording's sound (own rate), first sample with frame 0
     bool hasVideo = false;        // the media has a video stream (render into its frames)
     double seconds = 0.0;         // wall time of generateFromSpeech

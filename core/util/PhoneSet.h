@@ -31,6 +31,11 @@ public:
     static bool isSilence(std::string_view label) { return index(label) == kSilence; }
     // A breath or other non-speech noise: "br", "breath", "<br>", "spn", "noise".
     static bool isBreath(std::string_view label) { return index(label) == kBreath; }
+    // /p b m/: the phones whose articulation closes the lips (BilabialClosure, the realism
+    // report's closure measure).
+    static bool isBilabial(int index) { return index == kB || index == kM || index == kP; }
+    static bool isBilabial(std::string_view label) { return isBilabial(index(label)); }
+    static constexpr int kB = 6, kM = 21, kP = 26;
 };
 
 } // namespace lipsync

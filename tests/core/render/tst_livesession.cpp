@@ -15,6 +15,7 @@
 #include "dynamics/ModelFile.h"
 #include "io/AudioDecoder.h"
 #include "project/Project.h"
+#include "render/BilabialClosure.h"
 #include "render/FaceRenderer.h"
 #include "render/LiveSession.h"
 #include "tasks/Feedback.h"
@@ -145,6 +146,25 @@ private slots:
             QCOMPARE(f.image.size(), renderer.frameSize());
             QCOMPARE(f.image.type(), CV_8UC3);
         }
+        // The lips close on the frames heard as /p b m/ (the /p/ of "please") and only there.
+        LiveSession closing(m_acoustic, m_bigram, *model, &renderer, options);
+        const Fed closed = feed(closing, m_sound, 4000);
+        options.closeBilabials = false;
+        LiveSession asGenerated(m_acoustic, m_bigram, *model, &renderer, options);
+        const Fed open = feed(asGenerated, m_sound, 4000);
+        QCOMPARE(open.frames.size(), closed.frames.size());
+        const BilabialClosure closure(m_aam);
+        int bilabial = 0;
+        for (size_t i = 0; i < closed.frames.size(); ++i) {
+            QCOMPARE(closed.frames[i].label, open.frames[i].label);
+            if (PhoneSet::isBilabial(closed.frames[i].label)) {
+                ++bilabial;
+                QVERIFY(closure.opening(closed.frames[i].features) < 1e-9);
+            } else {
+                QCOMPARE(closed.frames[i].features, open.frames[i].features);
+            }
+        }
+        QVERIFY(bilabial >= 1);
     }
 
     void refusesAModelForAnotherAam()

@@ -3,6 +3,7 @@
 // (or onto a neutral frame for audio only) and exported with the sound. Bad input (no sound, a
 // transcript that cannot fit, another AAM's model) fails naming the file; cancel leaves nothing
 // under the final name.
+#include "render/BilabialClosure.h"
 #include "render/FaceRenderer.h"
 #include "render/SpeechToFace.h"
 
@@ -188,6 +189,7 @@ private slots:
         SpeechToFaceRequest r = request();
         r.model = model;
         r.aam = std::make_shared<const AamModel>(m_aam);
+        r.closeBilabials = false; // the model's own trajectory, sampled
         Feedback feedback;
         const SpeechToFaceResult result = generateFromSpeech(r, feedback);
         QCOMPARE(result.frameRate, 25.0);
@@ -200,6 +202,35 @@ private slots:
             halfWay += (result.features.row(t) - result.features.row(t - 1)).cwiseAbs().maxCoeff() > 1e-6;
         }
         QVERIFY2(halfWay >= 5, qPrintable(QString::number(halfWay)));
+    }
+
+    // "bin blue": the generated lips close on the frames of the two /b/s (BilabialClosure), and
+    // only there; without closure the model's own trajectory leaves them apart.
+    void closesTheLipsOnBilabials()
+    {
+        Feedback feedback;
+        const SpeechToFaceResult closed = generateFromSpeech(request(), feedback);
+        SpeechToFaceRequest off = request();
+        off.closeBilabials = false;
+        const SpeechToFaceResult open = generateFromSpeech(off, feedback);
+        QCOMPARE(closed.phones, open.phones);
+        const BilabialClosure closure(m_aam);
+        const std::vector<double> w = BilabialClosure::weights(closed.phones, closed.frameRate, closed.frameCount());
+        int full = 0, wereOpen = 0;
+        for (int t = 0; t < closed.frameCount(); ++t) {
+            const Eigen::VectorXd c = closed.features.row(t).transpose(), g = open.features.row(t).transpose();
+            if (w[size_t(t)] == 0.0) {
+                QCOMPARE(c, g);
+                continue;
+            }
+            if (w[size_t(t)] == 1.0) {
+                ++full;
+                QVERIFY2(closure.opening(c) < 1e-9, qPrintable(QString::number(t)));
+                wereOpen += closure.opening(g) > 1e-3;
+            }
+        }
+        QVERIFY2(full >= 2, qPrintable(QString::number(full)));
+        QVERIFY2(wereOpen >= 1, qPrintable(QString::number(wereOpen)));
     }
 
     void audioOnlyRendersOntoANeutralFrame()
