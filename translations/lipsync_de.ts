@@ -414,7 +414,7 @@
     </message>
     <message>
         <location filename="../studio/export/ExportMenu.cpp" line="236"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="260"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="261"/>
         <source>Export the generated frames of %1</source>
         <translation>Erzeugte Einzelbilder von %1 exportieren</translation>
     </message>
@@ -432,57 +432,57 @@
     </message>
     <message>
         <location filename="../studio/export/ExportMenu.cpp" line="237"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="261"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="262"/>
         <source>Export the generated video of %1</source>
         <translation>Erzeugtes Video von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="277"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="278"/>
         <source>%1 has no face features (track it first)</source>
         <translation>%1 hat keine Gesichtsmerkmale (zuerst tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="280"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="281"/>
         <source>Export the features of %1</source>
         <translation>Merkmale von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="288"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="289"/>
         <source>%1 has no phone alignment (align it first)</source>
         <translation>%1 hat keine Phonem-Alignierung (zuerst alignieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="291"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="292"/>
         <source>Export the alignment of %1</source>
         <translation>Alignierung von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="304"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="305"/>
         <source>%1 has no landmarks</source>
         <translation>%1 hat keine Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="307"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="308"/>
         <source>Export the landmarks of %1</source>
         <translation>Landmarken von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="328"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="329"/>
         <source>the project has no AAM</source>
         <translation>das Projekt hat kein AAM</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="329"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="330"/>
         <source>the project has no trained dynamic model</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="334"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="335"/>
         <source>Export %1</source>
         <translation>%1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="362"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="363"/>
         <source>Exported to %1</source>
         <translation>Exportiert nach %1</translation>
     </message>
@@ -1053,73 +1053,73 @@
         <translation>Die Live-Ansicht konnte nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="255"/>
+        <location filename="../studio/live/LiveController.cpp" line="256"/>
         <source>The microphone could not be opened: %1.</source>
         <translation>Das Mikrofon konnte nicht geöffnet werden: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="339"/>
+        <location filename="../studio/live/LiveController.cpp" line="340"/>
         <source>The live session stopped: %1</source>
         <translation>Die Live-Sitzung wurde abgebrochen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="432"/>
-        <location filename="../studio/live/LiveController.cpp" line="493"/>
+        <location filename="../studio/live/LiveController.cpp" line="433"/>
+        <location filename="../studio/live/LiveController.cpp" line="494"/>
         <source>Nothing is recorded yet: start a session and stop it first.</source>
         <translation>Es ist noch nichts aufgenommen: Starten und beenden Sie zuerst eine Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="434"/>
+        <location filename="../studio/live/LiveController.cpp" line="435"/>
         <source>No project is open.</source>
         <translation>Es ist kein Projekt geöffnet.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="436"/>
+        <location filename="../studio/live/LiveController.cpp" line="437"/>
         <source>The bundled demo is read-only: save the project in a folder of your own first.</source>
         <translation>Das mitgelieferte Demo ist schreibgeschützt: Speichern Sie das Projekt zuerst in einem eigenen Ordner.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="438"/>
+        <location filename="../studio/live/LiveController.cpp" line="439"/>
         <source>The project&apos;s appearance model changed since the recording: its features no longer fit.</source>
         <translation>Das Erscheinungsmodell des Projekts hat sich seit der Aufnahme geändert: Ihre Merkmale passen nicht mehr dazu.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="457"/>
+        <location filename="../studio/live/LiveController.cpp" line="458"/>
         <source>The sound could not be written: %1</source>
         <translation>Der Ton konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="478"/>
+        <location filename="../studio/live/LiveController.cpp" line="479"/>
         <source>Save Live Session as %1</source>
         <translation>Live-Sitzung als %1 speichern</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="480"/>
+        <location filename="../studio/live/LiveController.cpp" line="481"/>
         <source>The project refused the new sequence (the status bar says why).</source>
         <translation>Das Projekt hat die neue Sequenz abgelehnt (die Statusleiste nennt den Grund).</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="495"/>
+        <location filename="../studio/live/LiveController.cpp" line="496"/>
         <source>Stop the session first.</source>
         <translation>Beenden Sie zuerst die Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="497"/>
+        <location filename="../studio/live/LiveController.cpp" line="498"/>
         <source>A video export is running already.</source>
         <translation>Es läuft bereits ein Videoexport.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="509"/>
+        <location filename="../studio/live/LiveController.cpp" line="510"/>
         <source>Export the live session to %1</source>
         <translation>Live-Sitzung nach %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="520"/>
+        <location filename="../studio/live/LiveController.cpp" line="521"/>
         <source>The live session was written to %1.</source>
         <translation>Die Live-Sitzung wurde nach %1 geschrieben.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="528"/>
+        <location filename="../studio/live/LiveController.cpp" line="529"/>
         <source>The video could not be written: %1</source>
         <translation>Das Video konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -1377,152 +1377,162 @@
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="162"/>
+        <location filename="../studio/app/MainWindow.cpp" line="163"/>
         <source>Generated &amp;Face</source>
         <translation>Generiertes &amp;Gesicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="164"/>
+        <location filename="../studio/app/MainWindow.cpp" line="165"/>
         <source>&amp;Whole Face (Eyes Included)</source>
         <translation>&amp;Ganzes Gesicht (mit Augen)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="166"/>
+        <location filename="../studio/app/MainWindow.cpp" line="167"/>
         <source>Synthesise the whole modelled face; otherwise the lower face is drawn and the recording&apos;s own eyes and upper face are kept</source>
         <translation>Das ganze modellierte Gesicht synthetisieren; sonst wird das untere Gesicht gezeichnet und die Augen und das Obergesicht der Aufnahme bleiben erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="168"/>
+        <location filename="../studio/app/MainWindow.cpp" line="169"/>
         <source>&amp;Detail from Training Images</source>
         <translation>&amp;Details aus Trainingsbildern</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="170"/>
+        <location filename="../studio/app/MainWindow.cpp" line="171"/>
         <source>Add the teeth, lip highlights and skin detail of the AAM&apos;s nearest training images to the model&apos;s smooth texture</source>
         <translation>Zähne, Glanzlichter der Lippen und Hautdetails der nächstgelegenen Trainingsbilder des AAM zur glatten Textur des Modells hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="172"/>
+        <location filename="../studio/app/MainWindow.cpp" line="173"/>
         <source>&amp;Match the Frame&apos;s Lighting</source>
         <translation>&amp;Beleuchtung an das Bild anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="228"/>
+        <location filename="../studio/app/MainWindow.cpp" line="189"/>
+        <source>&amp;Close the Lips on /p b m/</source>
+        <translation>&amp;Lippen bei /p b m/ schließen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="191"/>
+        <source>Close the generated lips on the bilabials /p b m/, as speakers do; off: the model&apos;s trajectory as generated</source>
+        <translation>Die erzeugten Lippen bei den Bilabialen /p b m/ schließen, wie Sprecher es tun; aus: die Trajektorie des Modells, wie sie erzeugt wurde</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="237"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="232"/>
+        <location filename="../studio/app/MainWindow.cpp" line="241"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="242"/>
+        <location filename="../studio/app/MainWindow.cpp" line="251"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="255"/>
+        <location filename="../studio/app/MainWindow.cpp" line="264"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="276"/>
+        <location filename="../studio/app/MainWindow.cpp" line="285"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="277"/>
+        <location filename="../studio/app/MainWindow.cpp" line="286"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="278"/>
+        <location filename="../studio/app/MainWindow.cpp" line="287"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="280"/>
+        <location filename="../studio/app/MainWindow.cpp" line="289"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="311"/>
+        <location filename="../studio/app/MainWindow.cpp" line="320"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="314"/>
+        <location filename="../studio/app/MainWindow.cpp" line="323"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="329"/>
+        <location filename="../studio/app/MainWindow.cpp" line="338"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="341"/>
+        <location filename="../studio/app/MainWindow.cpp" line="350"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="352"/>
+        <location filename="../studio/app/MainWindow.cpp" line="361"/>
         <source>&amp;Live: Speak and Watch the Face</source>
         <translation>&amp;Live: Sprechen und das Gesicht beobachten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="354"/>
+        <location filename="../studio/app/MainWindow.cpp" line="363"/>
         <source>Speak into the microphone and watch the face move</source>
         <translation>Ins Mikrofon sprechen und dem Gesicht beim Bewegen zusehen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="358"/>
+        <location filename="../studio/app/MainWindow.cpp" line="367"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="362"/>
+        <location filename="../studio/app/MainWindow.cpp" line="371"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="366"/>
+        <location filename="../studio/app/MainWindow.cpp" line="375"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="369"/>
+        <location filename="../studio/app/MainWindow.cpp" line="378"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="419"/>
+        <location filename="../studio/app/MainWindow.cpp" line="428"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="482"/>
+        <location filename="../studio/app/MainWindow.cpp" line="491"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="490"/>
+        <location filename="../studio/app/MainWindow.cpp" line="499"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="519"/>
+        <location filename="../studio/app/MainWindow.cpp" line="528"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="521"/>
+        <location filename="../studio/app/MainWindow.cpp" line="530"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="525"/>
+        <location filename="../studio/app/MainWindow.cpp" line="534"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1530,43 +1540,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="536"/>
+        <location filename="../studio/app/MainWindow.cpp" line="545"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="537"/>
+        <location filename="../studio/app/MainWindow.cpp" line="546"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="537"/>
+        <location filename="../studio/app/MainWindow.cpp" line="546"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="543"/>
+        <location filename="../studio/app/MainWindow.cpp" line="552"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="562"/>
+        <location filename="../studio/app/MainWindow.cpp" line="571"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="590"/>
-        <location filename="../studio/app/MainWindow.cpp" line="598"/>
+        <location filename="../studio/app/MainWindow.cpp" line="599"/>
+        <location filename="../studio/app/MainWindow.cpp" line="607"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="597"/>
+        <location filename="../studio/app/MainWindow.cpp" line="606"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="241"/>
+        <location filename="../studio/app/MainWindow.cpp" line="250"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -1816,12 +1826,12 @@
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="447"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="448"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="448"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="449"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
@@ -1842,7 +1852,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="417"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="418"/>
         <source>Realism of %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
@@ -1850,7 +1860,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="423"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="424"/>
         <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
         <translation>
             <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
@@ -1858,17 +1868,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="467"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="468"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="495"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="496"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="500"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="501"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
@@ -1878,17 +1888,17 @@
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="524"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="525"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="534"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="535"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="559"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="560"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>
@@ -2053,138 +2063,138 @@
 <context>
     <name>lipsync::studio::PreviewPanel</name>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="67"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="69"/>
         <source>Loop selection</source>
         <translation>Auswahl wiederholen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="67"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="69"/>
         <source>Landmarks</source>
         <translation>Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="68"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="70"/>
         <source>Generate from Speech…</source>
         <translation>Aus Sprache erzeugen…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="69"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="71"/>
         <source>Back to Sequence</source>
         <translation>Zurück zur Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="82"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="84"/>
         <source>Previous frame</source>
         <translation>Vorheriges Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="84"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="86"/>
         <source>Next frame</source>
         <translation>Nächstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="88"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="90"/>
         <source>Scrub through the frames</source>
         <translation>Durch die Bilder fahren</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="89"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="91"/>
         <source>Play the timeline&apos;s selection (or everything) over and over</source>
         <translation>Die Auswahl der Zeitleiste (oder alles) immer wieder abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="90"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="92"/>
         <source>Show the tracked points on the recorded video and the generated points on the generated faces</source>
         <translation>Die getrackten Punkte auf dem aufgenommenen Video und die erzeugten Punkte auf den erzeugten Gesichtern zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="91"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="93"/>
         <source>Generate faces for any recording with a transcript</source>
         <translation>Gesichter für eine beliebige Aufnahme mit Transkript erzeugen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="92"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="94"/>
         <source>Show the current sequence again</source>
         <translation>Die aktuelle Sequenz wieder zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="264"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="267"/>
         <source>Prepare the preview of %1</source>
         <translation>Vorschau von %1 vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="301"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="304"/>
         <source>The head could not be tracked: %1</source>
         <translation>Der Kopf konnte nicht getrackt werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="352"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="367"/>
         <source>Recorded video (landmarks: tracked)</source>
         <translation>Aufgenommenes Video (Landmarken: getrackt)</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="357"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="372"/>
         <source>Generated: %1</source>
         <translation>Erzeugt: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="361"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="376"/>
         <source>Generated</source>
         <translation>Erzeugt</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="412"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="427"/>
         <source>The project has no appearance model (Faces ▸ Build AAM).</source>
         <translation>Das Projekt hat kein Erscheinungsmodell (Gesichter ▸ AAM erstellen).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="414"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="429"/>
         <source>Tracking the head pose…</source>
         <translation>Kopfhaltung wird getrackt…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="416"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="431"/>
         <source>This sequence has no phones (align it in the Timeline).</source>
         <translation>Diese Sequenz hat keine Phoneme (in der Zeitleiste alignieren).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="418"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="433"/>
         <source>Train a dynamic model in the Models panel to see the faces it generates.</source>
         <translation>Trainieren Sie ein dynamisches Modell im Bereich „Modelle“, um die erzeugten Gesichter zu sehen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="424"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="439"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="472"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="487"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 — Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="581"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="596"/>
         <source>Faces for new speech need the project&apos;s appearance model.</source>
         <translation>Gesichter für neue Sprache brauchen das Erscheinungsmodell des Projekts.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="582"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="597"/>
         <source>Build one with Faces ▸ Build AAM.</source>
         <translation>Erstellen Sie eines mit Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="587"/>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="642"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="602"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="658"/>
         <source>No faces could be generated for this speech.</source>
         <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="588"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="603"/>
         <source>Train a dynamic model in the Models panel first.</source>
         <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="614"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="630"/>
         <source>Generate faces for %1</source>
         <translation>Gesichter für %1 erzeugen</translation>
     </message>
@@ -2674,13 +2684,13 @@
         <translation>Studien&amp;ergebnisse</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="79"/>
-        <location filename="../studio/compare/StudyController.cpp" line="90"/>
+        <location filename="../studio/compare/StudyController.cpp" line="80"/>
+        <location filename="../studio/compare/StudyController.cpp" line="91"/>
         <source>Set up study</source>
         <translation>Studie einrichten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/compare/StudyController.cpp" line="80"/>
+        <location filename="../studio/compare/StudyController.cpp" line="81"/>
         <source>The current study has %n answer(s). Replace it with a new study? (Edit ▸ Undo brings it back.)</source>
         <translation>
             <numerusform>Die aktuelle Studie hat %n Antwort(en). Durch eine neue Studie ersetzen? (Bearbeiten ▸ Rückgängig holt sie zurück.)</numerusform>
@@ -2688,40 +2698,40 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="101"/>
-        <location filename="../studio/compare/StudyController.cpp" line="115"/>
-        <location filename="../studio/compare/StudyController.cpp" line="131"/>
-        <location filename="../studio/compare/StudyController.cpp" line="159"/>
+        <location filename="../studio/compare/StudyController.cpp" line="102"/>
+        <location filename="../studio/compare/StudyController.cpp" line="116"/>
+        <location filename="../studio/compare/StudyController.cpp" line="132"/>
+        <location filename="../studio/compare/StudyController.cpp" line="160"/>
         <source>Run participant</source>
         <translation>Teilnehmende Person starten</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="102"/>
+        <location filename="../studio/compare/StudyController.cpp" line="103"/>
         <source>The project must be saved with the study before a participant starts (every answer is saved at once). Save now?</source>
         <translation>Das Projekt muss mit der Studie gespeichert sein, bevor eine Person beginnt (jede Antwort wird sofort gespeichert). Jetzt speichern?</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="115"/>
+        <location filename="../studio/compare/StudyController.cpp" line="116"/>
         <source>The project has no study yet.</source>
         <translation>Das Projekt hat noch keine Studie.</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="148"/>
+        <location filename="../studio/compare/StudyController.cpp" line="149"/>
         <source>New participant: %1</source>
         <translation>Neue teilnehmende Person: %1</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="152"/>
+        <location filename="../studio/compare/StudyController.cpp" line="153"/>
         <source>Continue %1 (%2 of %3 answered)</source>
         <translation>%1 fortsetzen (%2 von %3 beantwortet)</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="159"/>
+        <location filename="../studio/compare/StudyController.cpp" line="160"/>
         <source>Participant:</source>
         <translation>Teilnehmende Person:</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="169"/>
+        <location filename="../studio/compare/StudyController.cpp" line="170"/>
         <source>Study results</source>
         <translation>Studienergebnisse</translation>
     </message>

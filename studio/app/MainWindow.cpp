@@ -158,7 +158,8 @@ MainWindow::~MainWindow()
 
 void MainWindow::addGeneratedFaceMenu(QMenu *view)
 {
-    // How generated faces are drawn in the preview and in exported videos (StudioContext).
+    // How generated faces are drawn in the preview and in exported videos, and whether their lips
+    // close on /p b m/ (StudioContext).
     QMenu *face = view->addMenu(tr("Generated &Face"));
     face->setObjectName(QStringLiteral("generatedFaceMenu"));
     QAction *whole = face->addAction(tr("&Whole Face (Eyes Included)"));
@@ -184,6 +185,14 @@ void MainWindow::addGeneratedFaceMenu(QMenu *view)
             m_context->setCompositeOptions(options);
         });
     }
+    face->addSeparator();
+    QAction *closure = face->addAction(tr("&Close the Lips on /p b m/"));
+    closure->setObjectName(QStringLiteral("lipClosureAction"));
+    closure->setToolTip(tr("Close the generated lips on the bilabials /p b m/, as speakers do; off: the model's "
+                           "trajectory as generated"));
+    closure->setCheckable(true);
+    closure->setChecked(m_context->closesLips());
+    connect(closure, &QAction::toggled, m_context, &StudioContext::setClosesLips);
 }
 
 WaveformView *MainWindow::waveformView() const

@@ -411,6 +411,7 @@ Task *ModelsPanel::evaluateRealism()
         return nullptr;
     RealismOptions realism;
     realism.crossValidation = *options;
+    realism.closeBilabials = m_context->closesLips(); // the models' faces as the studio renders them
     auto project = std::make_shared<const Project>(m_context->document()->project());
     QPointer<ModelsPanel> self(this);
     Task *task = m_context->taskRunner()->run<RealismResult>(

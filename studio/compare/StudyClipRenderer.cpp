@@ -5,6 +5,7 @@
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
 #include "io/VideoReader.h"
+#include "render/BilabialClosure.h"
 #include "render/FaceRenderer.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
@@ -26,7 +27,10 @@ QImage toImage(const cv::Mat &bgr)
 
 } // namespace
 
-StudyClipRenderer::StudyClipRenderer(Project project) : m_project(std::move(project)) {}
+StudyClipRenderer::StudyClipRenderer(Project project, bool closeLips)
+    : m_project(std::move(project)), m_closeLips(closeLips)
+{
+}
 
 StudyClipRenderer::~StudyClipRenderer() = default;
 
@@ -110,6 +114,9 @@ StudyClip StudyClipRenderer::render(const std::string &utterance, const std::str
         const std::shared_ptr<const DynamicModel> dynamics = model(method);
         // Labels on the video's own frame grid, so frame t of the trajectory is frame t of the clip.
         generated = dynamics->generate(frameLabelsFromTier(sequence->phones, clip.frameRate, frames));
+        if (m_closeLips && BilabialClosure::applies(*aam()))
+            generated = BilabialClosure(*aam()).apply(
+                generated, BilabialClosure::weights(sequence->phones, clip.frameRate, frames));
         Feedback tracking(feedback, 0.0, 0.7);
         renderer = faces(*sequence, tracking);
     }

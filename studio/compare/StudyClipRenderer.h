@@ -4,7 +4,8 @@
 // of the project (its kind: "dpds", "slds", "brand", "hmm"), whose trajectory for the
 // utterance's frame labels (docs/models.md §0 voting) is synthesised with the project's AAM and
 // composited into the recorded frames at the face's tracked pose — so both sides of a trial
-// show the same person, background and head motion, and differ only in the modelled face.
+// show the same person, background and head motion, and differ only in the modelled face. The
+// lips close on /p b m/ (render/BilabialClosure) as in the studio's preview, unless turned off.
 //
 // Thread-safe: render() runs in worker tasks; the AAM, the models and the per-utterance face renderers (the tracked poses)
 // are loaded or tracked once and shared.
@@ -40,7 +41,7 @@ class StudyClipRenderer
 public:
     static constexpr const char *kRealMethod = "real";
 
-    explicit StudyClipRenderer(Project project);
+    explicit StudyClipRenderer(Project project, bool closeLips = true);
     ~StudyClipRenderer();
 
     // Throws lipsync::Error naming the file for unreadable media, a missing AAM or model, or an
@@ -56,6 +57,7 @@ private:
     std::shared_ptr<const FaceRenderer> faces(const Sequence &sequence, Feedback &feedback);
 
     const Project m_project;
+    const bool m_closeLips;
     std::mutex m_mutex;
     std::shared_ptr<const AamModel> m_aam;
     std::map<std::string, std::shared_ptr<const DynamicModel>> m_models;

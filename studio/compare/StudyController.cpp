@@ -28,11 +28,12 @@ StudyController::StudyController(StudioContext *context, std::function<bool()> s
     connect(m_run, &QAction::triggered, this, &StudyController::runWithDialog);
     connect(m_results, &QAction::triggered, this, [this] { showResults(); });
     ProjectDocument *document = m_context->document();
-    // The videos depend on the features, phones and models: a changed project renders afresh.
+    // The videos depend on the features, phones, models and lip closure: a change renders afresh.
     for (auto signal : {&ProjectDocument::documentReset, &ProjectDocument::modelsChanged,
                         &ProjectDocument::locationChanged})
         connect(document, signal, this, [this] { m_renderer.reset(); });
     connect(document, &ProjectDocument::sequenceChanged, this, [this] { m_renderer.reset(); });
+    connect(m_context, &StudioContext::lipClosureChanged, this, [this] { m_renderer.reset(); });
     connect(document, &ProjectDocument::studyChanged, this, &StudyController::refresh);
     connect(document, &ProjectDocument::documentReset, this, &StudyController::refresh);
     refresh();
@@ -132,7 +133,7 @@ ParticipantSession *StudyController::startParticipant(const QString &pseudonym, 
         return nullptr;
     }
     if (!m_renderer)
-        m_renderer = std::make_shared<StudyClipRenderer>(document->project());
+        m_renderer = std::make_shared<StudyClipRenderer>(document->project(), m_context->closesLips());
     m_session = new ParticipantSession(m_context, m_window, session, m_renderer, this);
     connect(m_session, &ParticipantSession::finished, m_session, &QObject::deleteLater);
     m_session->start(fullScreen);

@@ -99,6 +99,14 @@ void StudioContext::setCompositeOptions(const CompositeOptions &options)
     emit compositeOptionsChanged();
 }
 
+void StudioContext::setClosesLips(bool close)
+{
+    if (close == m_closesLips)
+        return;
+    m_closesLips = close;
+    emit lipClosureChanged();
+}
+
 void StudioContext::showStatus(const QString &message, int milliseconds)
 {
     emit statusMessage(message, milliseconds);

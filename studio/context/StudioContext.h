@@ -67,6 +67,10 @@ public:
     // (View > Generated Face): the lower face with exemplar detail unless changed.
     const CompositeOptions &compositeOptions() const { return m_composite; }
     void setCompositeOptions(const CompositeOptions &options);
+    // Whether generated lips close on /p b m/ (render/BilabialClosure) in the preview, exported
+    // videos, study clips and the live view (View > Generated Face): on unless changed.
+    bool closesLips() const { return m_closesLips; }
+    void setClosesLips(bool close);
     // A passing message for the user (the window's status bar), shown for `milliseconds`.
     void showStatus(const QString &message, int milliseconds = 0);
 
@@ -79,6 +83,7 @@ signals:
     void statusMessage(const QString &message, int milliseconds);
     void shownSpeechChanged();
     void compositeOptionsChanged();
+    void lipClosureChanged();
 
 private:
     QUndoStack *m_undo;
@@ -93,6 +98,7 @@ private:
     std::shared_ptr<const SpeechToFaceResult> m_speech;
     QString m_speechTitle;
     CompositeOptions m_composite;
+    bool m_closesLips = true;
 };
 
 } // namespace lipsync::studio

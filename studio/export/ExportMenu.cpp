@@ -255,6 +255,7 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
         request.model = dynamic;
         request.aam = aamModel;
         request.frameRate = sequence.frameRate;
+        request.closeBilabials = m_context->closesLips();
         options.leftLabel = "real";
         options.rightLabel = panelLabel(model->kind);
         title = kind == Kind::Images ? tr("Export the generated frames of %1").arg(id)

@@ -212,6 +212,7 @@ bool LiveController::start(const QString &kind, Input input, const QAudioDevice 
 void LiveController::launch(LiveSetup setup)
 {
     setup.renderer->setCompositeOptions(m_context->compositeOptions());
+    setup.options.closeBilabials = m_context->closesLips();
     m_sampleRate = setup.acoustic->featureOptions().sampleRate;
     m_recording = Recording{};
     m_recording.sampleRate = m_sampleRate;

@@ -18,6 +18,7 @@
 #include "preview/GeneratedFaces.h"
 #include "preview/SpeechDialog.h"
 #include "project/Project.h"
+#include "render/BilabialClosure.h"
 #include "render/FaceRenderer.h"
 #include "render/SpeechToFace.h"
 #include "tasks/Feedback.h"
@@ -39,6 +40,7 @@
 #include <QVBoxLayout>
 
 #include <cmath>
+#include <optional>
 #include <utility>
 
 namespace lipsync::studio {
@@ -147,6 +149,7 @@ void PreviewPanel::attach(StudioContext *context)
             updateControls();
     });
     connect(context, &StudioContext::compositeOptionsChanged, this, &PreviewPanel::showCurrent);
+    connect(context, &StudioContext::lipClosureChanged, this, &PreviewPanel::rebuild);
     connect(context, &StudioContext::sequenceLoaded, this, [this] {
         const bool wasSpeech = std::exchange(m_showingSpeech, false);
         m_faces.reset();
@@ -321,13 +324,20 @@ void PreviewPanel::rebuild()
             } catch (const Error &) {
                 // no usable phones: nothing to generate from
             }
+            // Lips closed on /p b m/ as exported videos close them.
+            std::optional<BilabialClosure> closure;
+            if (m_context->closesLips() && BilabialClosure::applies(*m_aam))
+                closure.emplace(*m_aam);
             for (const QString &kind : ModelKinds::ids()) {
                 const auto model = m_context->modelStore()->dynamicModel(kind);
                 if (!model || labels.empty() || model->dimension() != m_aam->combinedModes())
                     continue;
                 try {
-                    faces->addTrack({kind, ModelKinds::name(kind), ModelKinds::colour(kind),
-                                     model->generate(labels)});
+                    Eigen::MatrixXd generated = model->generate(labels);
+                    if (closure)
+                        generated = closure->apply(
+                            generated, BilabialClosure::weights(s.phones, s.frameRate, s.frameCount));
+                    faces->addTrack({kind, ModelKinds::name(kind), ModelKinds::colour(kind), std::move(generated)});
                 } catch (const Error &) {
                 }
             }
@@ -595,6 +605,7 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
     request.model = model;
     request.frameRate = frameRate;
     request.pronunciations = m_context->document()->project().pronunciations;
+    request.closeBilabials = m_context->closesLips();
     // The neutral frame: the first frame of the current sequence at its tracked pose, else the
     // mean face on grey.
     const auto media = m_context->media();

@@ -2,7 +2,8 @@
 // features, the preview shows the recorded video beside the faces each model generates (drawn
 // into the recorded frames at the tracked pose), frame step and scrub move the shared cursor
 // (timeline, trajectory plot, current frame), the timeline's selection loops, the landmarks
-// overlay toggles, and Generate from Speech turns a demo clip and its transcript into a playable
+// overlay toggles, View > Generated Face > Close the Lips on /p b m/ closes the generated lips on
+// bilabials, and Generate from Speech turns a demo clip and its transcript into a playable
 // generated sequence at a chosen frame rate.
 #include "../SanitizedBuild.h"
 #include "DemoWindow.h"
@@ -23,6 +24,7 @@
 #include "preview/GeneratedFaces.h"
 #include "preview/PreviewPanel.h"
 #include "preview/SpeechDialog.h"
+#include "render/BilabialClosure.h"
 #include "render/SpeechToFace.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/TimelinePanel.h"
@@ -47,6 +49,7 @@
 #include <QTimer>
 #include <QToolButton>
 
+#include <algorithm>
 #include <cmath>
 
 // Sanitizer builds (LIPSYNC_SANITIZED_BUILD; ASan + UBSan with the fuzz preset's coverage counters) run
@@ -255,6 +258,54 @@ private slots:
         QVERIFY(m_window->context()->compositeOptions().detail);
     }
 
+    // View > Generated Face > Close the Lips on /p b m/ (on by default) closes the generated lips
+    // on the frames of bilabial phones; off, the preview shows the models' trajectories as
+    // generated, where the lips stay apart on some of those frames.
+    void lipClosureOptionClosesBilabials()
+    {
+        const auto aam = m_window->modelStore()->aam();
+        QVERIFY(aam);
+        const BilabialClosure closure(*aam);
+        const Sequence &s = m_window->document()->sequence(m_window->currentSequence());
+        const std::vector<double> w = BilabialClosure::weights(s.phones, s.frameRate, s.frameCount);
+        std::vector<int> bilabial;
+        for (int t = 0; t < int(w.size()); ++t)
+            if (w[size_t(t)] == 1.0)
+                bilabial.push_back(t);
+        QVERIFY2(!bilabial.empty(), "the demo sequence has no /p b m/");
+        auto openings = [&](const GeneratedFaces *faces) {
+            std::vector<double> o; // per track and bilabial frame
+            for (const GeneratedFaces::Track &track : faces->tracks())
+                for (int t : bilabial)
+                    o.push_back(closure.opening(track.params.row(t).transpose()));
+            return o;
+        };
+
+        QAction *action = m_window->findChild<QAction *>(QStringLiteral("lipClosureAction"));
+        QVERIFY(action && action->isCheckable() && action->isChecked());
+        QVERIFY(m_window->context()->closesLips());
+        const GeneratedFaces *closedFaces = m_preview->faces();
+        QVERIFY(closedFaces && closedFaces->tracks().size() == 2);
+        const std::vector<double> closed = openings(closedFaces);
+        for (double o : closed)
+            QVERIFY2(o < 1e-6, qPrintable(QString::number(o)));
+
+        QSignalSpy rebuilt(m_preview, &PreviewPanel::facesReady);
+        action->trigger();
+        QVERIFY(!m_window->context()->closesLips());
+        QTRY_COMPARE(rebuilt.count(), 1);
+        QVERIFY(m_preview->faces() && m_preview->faces()->tracks().size() == 2);
+        const std::vector<double> open = openings(m_preview->faces());
+        QVERIFY2(*std::max_element(open.begin(), open.end()) > 1e-3,
+                 qPrintable(QString::number(*std::max_element(open.begin(), open.end()))));
+
+        action->trigger(); // back to the default, which the tests below expect
+        QVERIFY(m_window->context()->closesLips());
+        QTRY_COMPARE(rebuilt.count(), 2);
+        QVERIFY(m_preview->faces() && m_preview->faces()->tracks().size() == 2);
+        QCOMPARE(openings(m_preview->faces()), closed);
+    }
+
     void frameStepAndScrubMoveTheSharedCursor()
     {
         TrajectoryView *trajectory = m_window->modelsPanel()->trajectoryView();
@@ -378,6 +429,21 @@ private slots:
         QVERIFY(m_preview->panelTitle(0).contains(QStringLiteral("DPDS")));
         QVERIFY(m_preview->backButton()->isVisible());
         QCOMPARE(m_preview->scrubber()->maximum(), faces->frameCount() - 1);
+        // The lips close on the clip's /p b/ (place blue), as the View menu's setting asks.
+        {
+            const auto speech = m_preview->speechResult();
+            QVERIFY(speech && speech->aam);
+            const BilabialClosure closure(*speech->aam);
+            const std::vector<double> w
+                = BilabialClosure::weights(speech->phones, speech->frameRate, int(speech->features.rows()));
+            int bilabial = 0;
+            for (int t = 0; t < int(w.size()); ++t)
+                if (w[size_t(t)] == 1.0) {
+                    ++bilabial;
+                    QVERIFY2(closure.opening(speech->features.row(t).transpose()) < 1e-6, qPrintable(QString::number(t)));
+                }
+            QVERIFY(bilabial > 0);
+        }
         const QImage first = m_preview->panel(0)->image();
         QVERIFY(!first.isNull());
         QVERIFY(testing::greyStdDev(first) > 10.0);
