@@ -1,14 +1,22 @@
-// lipsync info PATH [--json]: what a media file or a project folder holds.
+// lipsync info PATH [--json]: what a media file, a project folder, an AAM or a model file holds.
 //   media file:     frames, fps, duration, size, audio rate/channels/duration (decoded counts)
 //   project folder: its sequences (count, total frames and duration, per sequence id/frames/fps)
-// Bad input (missing, empty, truncated, unsupported) exits 1 with one line naming the file.
+//   AAM (.aam):     points, modes (shape, texture, combined), texture pixels, training images
+//   dynamic model:  kind, dimension, states, frame rate, compensation, the AAM it is for
+// The kind of a file is read from its first bytes (an AAM's magic, a model's JSON), never
+// from its name: FFmpeg takes almost any bytes for some audio format. Bad input (missing, empty,
+// truncated, unsupported) exits 1 with one line naming the file.
 #include "CommandLine.h"
 
+#include "aam/AamModel.h"
+#include "dynamics/ContextDependentModel.h"
+#include "dynamics/ModelFile.h"
 #include "io/MediaInfo.h"
 #include "project/Project.h"
 #include "util/Error.h"
 
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QTextStream>
@@ -92,6 +100,79 @@ int infoMedia(const QString &path, bool json)
     }
     printRows(rows);
     return 0;
+}
+
+// Prints `rows` as aligned text, or as one JSON object with the keys in snake case.
+int printFacts(const QString &path, const QString &kind, const QList<QPair<QString, QJsonValue>> &facts, bool json)
+{
+    if (json) {
+        QJsonObject o;
+        o[QStringLiteral("path")] = path;
+        o[QStringLiteral("kind")] = kind;
+        for (const auto &[key, value] : facts)
+            o[QString(key).replace(QLatin1Char(' '), QLatin1Char('_'))] = value;
+        printJson(o);
+        return 0;
+    }
+    QList<QPair<QString, QString>> rows{{QStringLiteral("path"), path}, {QStringLiteral("kind"), kind}};
+    for (const auto &[key, value] : facts)
+        rows << qMakePair(key, value.isString() ? value.toString()
+                               : value.isBool() ? (value.toBool() ? QStringLiteral("yes") : QStringLiteral("no"))
+                               : value.isNull() ? QStringLiteral("-")
+                                                : QString::number(value.toDouble(), 'g', 6));
+    printRows(rows);
+    return 0;
+}
+
+int infoAam(const QString &path, bool json)
+{
+    const lipsync::AamModel aam = lipsync::AamModel::load(path.toStdString());
+    return printFacts(path, QStringLiteral("aam"),
+                      {{QStringLiteral("identifier"), QString::fromStdString(aam.identifier)},
+                       {QStringLiteral("points"), aam.pointCount()},
+                       {QStringLiteral("shape modes"), aam.shapeModes()},
+                       {QStringLiteral("texture modes"), aam.textureModes()},
+                       {QStringLiteral("combined modes"), aam.combinedModes()},
+                       {QStringLiteral("texture pixels"), int(aam.textureMean.size() / 3)},
+                       {QStringLiteral("reference scale"), aam.referenceScale},
+                       {QStringLiteral("training images"), aam.trainingImages},
+                       {QStringLiteral("exemplars"), aam.exemplarCount()},
+                       {QStringLiteral("fit features"), aam.fitFeatures == lipsync::AamFitFeatures::Grey
+                                                            ? QStringLiteral("grey")
+                                                            : QStringLiteral("gradient orientation")}},
+                      json);
+}
+
+int infoModel(const QString &path, bool json)
+{
+    std::string aamId;
+    const std::unique_ptr<lipsync::DynamicModel> model = lipsync::loadModel(path.toStdString(), {}, &aamId);
+    const auto *context = dynamic_cast<const lipsync::ContextDependentModel *>(model.get());
+    return printFacts(path, QStringLiteral("model"),
+                      {{QStringLiteral("model kind"), QString::fromStdString(model->kind())},
+                       {QStringLiteral("dimension"), model->dimension()},
+                       // Phones in context: the tied states of the trees (§5.2), else one per phone.
+                       {QStringLiteral("states"), context ? context->inner().stateCount() : model->stateCount()},
+                       {QStringLiteral("phones in context"), context != nullptr},
+                       {QStringLiteral("variance compensation"), model->compensatesVariance()},
+                       {QStringLiteral("fps"), model->frameRate() > 0 ? QJsonValue(model->frameRate()) : QJsonValue()},
+                       {QStringLiteral("aam"), QString::fromStdString(aamId)}},
+                      json);
+}
+
+// What the file's first bytes say it is: "aam", "model" (JSON) or "" (anything else: media).
+QString fileKind(const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    const QByteArray head = file.read(256);
+    if (head.startsWith(QByteArray("LSAAM\n\x1a", 7)))
+        return QStringLiteral("aam");
+    // JSON is never media; model files are the JSON `info` reads (loadModel names other JSON).
+    if (head.trimmed().startsWith('{'))
+        return QStringLiteral("model");
+    return {};
 }
 
 int infoProject(const QString &path, bool json)
@@ -189,6 +270,11 @@ int runInfo(const lipsync::cli::CommandLine &arguments)
         }
         if (file.fileName() == QLatin1String(lipsync::Project::kManifestName))
             return infoProject(file.absolutePath(), json);
+        const QString kind = fileKind(path);
+        if (kind == QLatin1String("aam"))
+            return infoAam(path, json);
+        if (kind == QLatin1String("model"))
+            return infoModel(path, json);
         return infoMedia(path, json);
     } catch (const lipsync::Error &e) {
         return fail(QString::fromUtf8(e.what()));
@@ -197,12 +283,15 @@ int runInfo(const lipsync::cli::CommandLine &arguments)
 
 const lipsync::cli::CommandRegistration registration{
     {QStringLiteral("info"),
-     QStringLiteral("summary of a media file or project (frames, fps, audio)"),
-     QStringLiteral("What a media file or a project folder holds. A media file: frames, fps, duration, size, "
-                    "audio rate, channels and duration (decoded counts). A project folder (or its project.json): "
-                    "its sequences, their frames and frame rates."),
+     QStringLiteral("summary of a media file, project, AAM or model (frames, fps, audio, modes)"),
+     QStringLiteral("What a media file, a project folder, an AAM or a dynamic model holds. A media file: frames, "
+                    "fps, duration, size, audio rate, channels and duration (decoded counts). A project folder (or "
+                    "its project.json): its sequences, their frames and frame rates. An AAM: its points, shape, "
+                    "texture and combined modes, texture pixels and training images. A model file: its kind, "
+                    "dimension, states, frame rate, compensation and the AAM it generates parameters of."),
      {},
-     {{QStringLiteral("PATH"), QStringLiteral("a media file, a project folder or its project.json")}}},
+     {{QStringLiteral("PATH"), QStringLiteral("a media file, a project folder or its project.json, an AAM or a model "
+                                              "file")}}},
     &runInfo};
 
 } // namespace

@@ -2,6 +2,7 @@
 // errors with exit code 1 for bad files.
 #include "CliRun.h"
 
+#include "aam/AamModel.h"
 #include "project/Project.h"
 
 #include <QJsonArray>
@@ -168,6 +169,48 @@ private slots:
                                                  QRegularExpression::MultilineOption)));
         QVERIFY(text.contains(QRegularExpression(QStringLiteral("^ntsc\\s+15\\s+29\\.97\\s"),
                                                  QRegularExpression::MultilineOption)));
+    }
+
+    // An AAM and a model file are told by their first bytes, not taken for audio (FFmpeg reads
+    // an AAM as AMR sound).
+    void aamAndModel()
+    {
+        const QString aam = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/aam/demo.aam");
+        const lipsync::AamModel model = lipsync::AamModel::load(aam.toStdString());
+        const Run run = runLipsync({QStringLiteral("info"), aam, QStringLiteral("--json")});
+        QVERIFY2(run.exitCode == 0, run.err.constData());
+        const QJsonObject o = parseJsonObject(run.out);
+        QCOMPARE(o[QStringLiteral("kind")].toString(), QStringLiteral("aam"));
+        QCOMPARE(o[QStringLiteral("points")].toInt(), 23);
+        QCOMPARE(o[QStringLiteral("combined_modes")].toInt(), model.combinedModes());
+        QCOMPARE(o[QStringLiteral("identifier")].toString(), QString::fromStdString(model.identifier));
+        const Run table = runLipsync({QStringLiteral("info"), aam});
+        QVERIFY(table.out.contains("combined modes"));
+        QVERIFY(!table.out.contains("audio"));
+
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("hmm.model"));
+        const Run train = runLipsync({"train", "--kind", "hmm", "--project", LIPSYNC_SOURCE_DIR "/resources/demo",
+                                      "--out", file, "--context-states"});
+        QVERIFY2(train.exitCode == 0, train.err.constData());
+        const Run info = runLipsync({QStringLiteral("info"), file, QStringLiteral("--json")});
+        QVERIFY2(info.exitCode == 0, info.err.constData());
+        const QJsonObject m = parseJsonObject(info.out);
+        QCOMPARE(m[QStringLiteral("kind")].toString(), QStringLiteral("model"));
+        QCOMPARE(m[QStringLiteral("model_kind")].toString(), QStringLiteral("hmm"));
+        QCOMPARE(m[QStringLiteral("dimension")].toInt(), model.combinedModes());
+        QCOMPARE(m[QStringLiteral("fps")].toDouble(), 25.0);
+        QVERIFY(m[QStringLiteral("phones_in_context")].toBool());
+        QVERIFY(m[QStringLiteral("states")].toInt() > 41); // the trees' tied states
+        QCOMPARE(m[QStringLiteral("aam")].toString(), QString::fromStdString(model.identifier));
+        // A model file cut short is named, not probed as media.
+        QFile whole(file), cut(dir.filePath(QStringLiteral("cut.model")));
+        QVERIFY(whole.open(QIODevice::ReadOnly) && cut.open(QIODevice::WriteOnly));
+        cut.write(whole.read(whole.size() / 2));
+        cut.close();
+        const Run bad = runLipsync({QStringLiteral("info"), cut.fileName()});
+        QCOMPARE(bad.exitCode, 1);
+        QVERIFY2(bad.err.contains("cut.model") && !bad.err.contains("media"), bad.err.constData());
     }
 
     void corruptProject()
