@@ -232,7 +232,8 @@ void LiveView::updateControls()
             message = tr("The last session (%1 s) is kept: save it as a sequence, export it as a video, or start "
                          "again.")
                           .arg(QLocale().toString(m_controller->recordedSeconds(), 'f', 1));
-        if (!problem.isEmpty())
+        // A start refused for this problem left it as the last problem: say it once.
+        if (!problem.isEmpty() && problem != m_lastProblem)
             message = message.isEmpty() ? problem : message + QLatin1Char(' ') + problem;
         else if (message.isEmpty())
             message = tr("Press Start and speak: the face moves with your voice.");

@@ -149,6 +149,8 @@ private slots:
         QVERIFY(live()->face()->image().isNull());
         QVERIFY(!live()->startWithFedSound());
         QCOMPARE(controller()->state(), LiveController::State::Idle);
+        // The refused start says why once, not the problem twice.
+        QCOMPARE(live()->face()->placeholderText().count(QStringLiteral("Train one in the Models panel")), 1);
         saveShot(m_window, QStringLiteral("live-untrained.png"));
     }
 
