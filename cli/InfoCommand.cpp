@@ -102,7 +102,8 @@ int infoMedia(const QString &path, bool json)
     return 0;
 }
 
-// Prints `rows` as aligned text, or as one JSON object with the keys in snake case.
+// Prints the path, the kind and `facts` as aligned rows, or as one JSON object whose keys are
+// the facts' names in snake case.
 int printFacts(const QString &path, const QString &kind, const QList<QPair<QString, QJsonValue>> &facts, bool json)
 {
     if (json) {
@@ -167,7 +168,7 @@ QString fileKind(const QString &path)
     if (!file.open(QIODevice::ReadOnly))
         return {};
     const QByteArray head = file.read(256);
-    if (head.startsWith(QByteArray("LSAAM\n\x1a", 7)))
+    if (lipsync::AamModel::hasMagic(std::string_view(head.constData(), size_t(head.size()))))
         return QStringLiteral("aam");
     // JSON is never media; model files are the JSON `info` reads (loadModel names other JSON).
     if (head.trimmed().startsWith('{'))

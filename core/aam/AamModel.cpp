@@ -253,6 +253,11 @@ std::string AamModel::serialise(bool withIdentifier) const
     return std::move(w.out());
 }
 
+bool AamModel::hasMagic(std::string_view firstBytes)
+{
+    return firstBytes.size() >= sizeof kMagic && std::memcmp(firstBytes.data(), kMagic, sizeof kMagic) == 0;
+}
+
 std::string AamModel::computeIdentifier() const
 {
     const std::string bytes = serialise(false);
@@ -273,7 +278,7 @@ AamModel AamModel::load(const std::string &path)
 
 AamModel AamModel::fromBytes(const std::string &data, const std::string &path)
 {
-    if (data.size() < sizeof kMagic || std::memcmp(data.data(), kMagic, sizeof kMagic) != 0)
+    if (!hasMagic(data))
         throw Error("not an AAM model file (bad magic)", path);
     Reader r(data, path);
     char magic[sizeof kMagic];

@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lipsync {
@@ -129,6 +130,8 @@ public:
     static AamModel load(const std::string &path);
     // The same from the file's bytes; `pathForErrors` only names the source in errors.
     static AamModel fromBytes(const std::string &data, const std::string &pathForErrors = {});
+    // Whether a file's first bytes are an AAM file's magic (what load() checks first).
+    static bool hasMagic(std::string_view firstBytes);
     // Hash of the model contents (what `identifier` holds after building).
     std::string computeIdentifier() const;
 
