@@ -118,4 +118,12 @@ Eigen::MatrixXd BilabialClosure::apply(const Eigen::MatrixXd &trajectory, const 
     return out;
 }
 
+Eigen::MatrixXd BilabialClosure::closeOnPhones(const AamModel &aam, const Eigen::MatrixXd &trajectory,
+                                               const Tier &phones, double fps)
+{
+    if (!applies(aam))
+        return trajectory;
+    return BilabialClosure(aam).apply(trajectory, weights(phones, fps, int(trajectory.rows())));
+}
+
 } // namespace lipsync

@@ -45,6 +45,11 @@ public:
     // non-finite rows are unchanged.
     Eigen::MatrixXd apply(const Eigen::MatrixXd &trajectory, const std::vector<double> &weights) const;
 
+    // What a renderer draws for a generated trajectory at `fps` frames per second: closed on the
+    // /p b m/ of `phones` when the AAM applies(), else unchanged.
+    static Eigen::MatrixXd closeOnPhones(const AamModel &aam, const Eigen::MatrixXd &trajectory, const Tier &phones,
+                                         double fps);
+
 private:
     Eigen::VectorXd m_gradient; // a
     double m_offset = 0.0;      // o_0

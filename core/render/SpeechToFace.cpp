@@ -110,9 +110,8 @@ void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, doub
     } else {
         result.features = in.model->generate(result.labels);
     }
-    if (request.closeBilabials && BilabialClosure::applies(*in.aam))
-        result.features = BilabialClosure(*in.aam).apply(
-            result.features, BilabialClosure::weights(result.phones, result.frameRate, frames));
+    if (request.closeBilabials)
+        result.features = BilabialClosure::closeOnPhones(*in.aam, result.features, result.phones, result.frameRate);
     feedback.throwIfCanceled();
     // The sound at its own rate, its first sample with the first video frame.
     const AudioBuffer audio = AudioDecoder::decode(request.mediaPath, 0);

@@ -114,9 +114,8 @@ StudyClip StudyClipRenderer::render(const std::string &utterance, const std::str
         const std::shared_ptr<const DynamicModel> dynamics = model(method);
         // Labels on the video's own frame grid, so frame t of the trajectory is frame t of the clip.
         generated = dynamics->generate(frameLabelsFromTier(sequence->phones, clip.frameRate, frames));
-        if (m_closeLips && BilabialClosure::applies(*aam()))
-            generated = BilabialClosure(*aam()).apply(
-                generated, BilabialClosure::weights(sequence->phones, clip.frameRate, frames));
+        if (m_closeLips)
+            generated = BilabialClosure::closeOnPhones(*aam(), generated, sequence->phones, clip.frameRate);
         Feedback tracking(feedback, 0.0, 0.7);
         renderer = faces(*sequence, tracking);
     }

@@ -324,19 +324,15 @@ void PreviewPanel::rebuild()
             } catch (const Error &) {
                 // no usable phones: nothing to generate from
             }
-            // Lips closed on /p b m/ as exported videos close them.
-            std::optional<BilabialClosure> closure;
-            if (m_context->closesLips() && BilabialClosure::applies(*m_aam))
-                closure.emplace(*m_aam);
             for (const QString &kind : ModelKinds::ids()) {
                 const auto model = m_context->modelStore()->dynamicModel(kind);
                 if (!model || labels.empty() || model->dimension() != m_aam->combinedModes())
                     continue;
                 try {
                     Eigen::MatrixXd generated = model->generate(labels);
-                    if (closure)
-                        generated = closure->apply(
-                            generated, BilabialClosure::weights(s.phones, s.frameRate, s.frameCount));
+                    // Lips closed on /p b m/ as exported videos close them.
+                    if (m_context->closesLips())
+                        generated = BilabialClosure::closeOnPhones(*m_aam, generated, s.phones, s.frameRate);
                     faces->addTrack({kind, ModelKinds::name(kind), ModelKinds::colour(kind), std::move(generated)});
                 } catch (const Error &) {
                 }

@@ -129,6 +129,19 @@ private slots:
         }
     }
 
+    // What renderers draw: the tier's weights applied, or the trajectory as it is for an AAM the
+    // rule does not apply to.
+    void closesOnAPhoneTier()
+    {
+        const Tier phones{"phones", {{0.0, 0.5, "sil"}, {0.5, 0.62, "B"}, {0.62, 3.0, "IH"}}};
+        const Eigen::MatrixXd closed = BilabialClosure::closeOnPhones(m_aam, m_tracked, phones, 25.0);
+        QCOMPARE(closed, BilabialClosure(m_aam).apply(m_tracked, BilabialClosure::weights(phones, 25.0,
+                                                                                          int(m_tracked.rows()))));
+        QVERIFY(BilabialClosure(m_aam).opening(closed.row(13).transpose()) < 1e-9); // [0.52, 0.56) s
+        QVERIFY(!BilabialClosure::applies(AamModel{}));
+        QCOMPARE(BilabialClosure::closeOnPhones(AamModel{}, m_tracked, phones, 25.0), m_tracked);
+    }
+
     void refusesWhatItCannotClose()
     {
         const BilabialClosure closure(m_aam);
