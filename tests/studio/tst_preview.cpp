@@ -46,6 +46,7 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QMenu>
 #include <QTimer>
 #include <QToolButton>
 
@@ -283,6 +284,15 @@ private slots:
 
         QAction *action = m_window->findChild<QAction *>(QStringLiteral("lipClosureAction"));
         QVERIFY(action && action->isCheckable() && action->isChecked());
+        // LIPSYNC_PREVIEW_SHOT=DIR keeps a picture of the menu that holds it.
+        if (const QString dir = qEnvironmentVariable("LIPSYNC_PREVIEW_SHOT"); !dir.isEmpty()) {
+            auto *menu = m_window->findChild<QMenu *>(QStringLiteral("generatedFaceMenu"));
+            QVERIFY(menu && menu->actions().contains(action));
+            menu->popup(m_window->mapToGlobal(QPoint(40, 40)));
+            QVERIFY(QTest::qWaitForWindowExposed(menu));
+            menu->grab().save(dir + QStringLiteral("/generated-face-menu.png"));
+            menu->hide();
+        }
         QVERIFY(m_window->context()->closesLips());
         const GeneratedFaces *closedFaces = m_preview->faces();
         QVERIFY(closedFaces && closedFaces->tracks().size() == 2);
