@@ -249,8 +249,7 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
         for (int i : result.foldMembers[size_t(f)])
             items.push_back({i, f, {}});
     const std::optional<BilabialClosure> closure
-        = options.closeBilabials && BilabialClosure::applies(aam) ? std::optional<BilabialClosure>(std::in_place, aam)
-                                                                  : std::nullopt;
+        = options.closeBilabials ? BilabialClosure::forAam(aam) : std::nullopt;
     std::mutex mutex;
     std::atomic<int> done{0};
     std::atomic<bool> stop{false};

@@ -14,13 +14,12 @@ constexpr int kInnerLipTop = 16;    // scheme23: iBUG 62
 constexpr int kInnerLipBottom = 17; // scheme23: iBUG 66
 } // namespace
 
-bool BilabialClosure::applies(const AamModel &aam)
+std::optional<BilabialClosure> BilabialClosure::forAam(const AamModel &aam)
 {
     try {
-        BilabialClosure{aam};
-        return true;
+        return BilabialClosure(aam);
     } catch (const Error &) {
-        return false;
+        return std::nullopt;
     }
 }
 
@@ -121,9 +120,8 @@ Eigen::MatrixXd BilabialClosure::apply(const Eigen::MatrixXd &trajectory, const 
 Eigen::MatrixXd BilabialClosure::closeOnPhones(const AamModel &aam, const Eigen::MatrixXd &trajectory,
                                                const Tier &phones, double fps)
 {
-    if (!applies(aam))
-        return trajectory;
-    return BilabialClosure(aam).apply(trajectory, weights(phones, fps, int(trajectory.rows())));
+    const std::optional<BilabialClosure> closure = forAam(aam);
+    return closure ? closure->apply(trajectory, weights(phones, fps, int(trajectory.rows()))) : trajectory;
 }
 
 } // namespace lipsync

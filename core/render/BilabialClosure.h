@@ -20,6 +20,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <vector>
 
 namespace lipsync {
@@ -27,11 +28,12 @@ namespace lipsync {
 class BilabialClosure
 {
 public:
-    // Whether `aam` has what closing needs: the 23-point scheme's inner-lip points, a combined
-    // model, and modes that move the inner lips. Renders with other AAMs are drawn as generated.
-    static bool applies(const AamModel &aam);
-    // Throws lipsync::Error for an AAM that applies() rejects.
+    // Throws lipsync::Error for an AAM without what closing needs: the 23-point scheme's
+    // inner-lip points, a combined model, and modes that move the inner lips.
     explicit BilabialClosure(const AamModel &aam);
+    // The closure for `aam`, or none for an AAM the constructor refuses: renders with such AAMs
+    // are drawn as generated.
+    static std::optional<BilabialClosure> forAam(const AamModel &aam);
 
     // o(c): the inner-lip opening of the shape of combined parameters c.
     double opening(const Eigen::VectorXd &c) const;
@@ -46,7 +48,7 @@ public:
     Eigen::MatrixXd apply(const Eigen::MatrixXd &trajectory, const std::vector<double> &weights) const;
 
     // What a renderer draws for a generated trajectory at `fps` frames per second: closed on the
-    // /p b m/ of `phones` when the AAM applies(), else unchanged.
+    // /p b m/ of `phones` when forAam() has a closure for the AAM, else unchanged.
     static Eigen::MatrixXd closeOnPhones(const AamModel &aam, const Eigen::MatrixXd &trajectory, const Tier &phones,
                                          double fps);
 

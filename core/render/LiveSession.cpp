@@ -25,8 +25,8 @@ LiveSession::LiveSession(const AcousticModel &acoustic, const PhoneBigram &bigra
     m_frameRate = options.frameRate > 0 ? options.frameRate : model.frameRate() > 0 ? model.frameRate() : 25.0;
     m_generator = model.streamer();
     m_still = options.stillBackground;
-    if (renderer && options.closeBilabials && BilabialClosure::applies(renderer->aam()))
-        m_closure.emplace(renderer->aam());
+    if (renderer && options.closeBilabials)
+        m_closure = BilabialClosure::forAam(renderer->aam());
 }
 
 LiveSession::~LiveSession() = default;

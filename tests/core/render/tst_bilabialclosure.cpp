@@ -138,7 +138,8 @@ private slots:
         QCOMPARE(closed, BilabialClosure(m_aam).apply(m_tracked, BilabialClosure::weights(phones, 25.0,
                                                                                           int(m_tracked.rows()))));
         QVERIFY(BilabialClosure(m_aam).opening(closed.row(13).transpose()) < 1e-9); // [0.52, 0.56) s
-        QVERIFY(!BilabialClosure::applies(AamModel{}));
+        QVERIFY(!BilabialClosure::forAam(AamModel{}));
+        QVERIFY(BilabialClosure::forAam(m_aam));
         QCOMPARE(BilabialClosure::closeOnPhones(AamModel{}, m_tracked, phones, 25.0), m_tracked);
     }
 
