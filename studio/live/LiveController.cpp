@@ -136,12 +136,7 @@ bool LiveController::start(const QString &kind, Input input, const QAudioDevice 
     m_input = input;
     m_device = device;
     const int epoch = ++m_epoch;
-    m_pending.clear();
-    m_framesShown = 0;
-    m_soundSeconds = 0.0;
-    m_lastImage = QImage();
-    m_recentPhones.intervals.clear();
-    m_latencies.clear();
+    clearShown();
 
     // The face goes into a still of the person: the first frame of the sequence shown, when it
     // has a video; else the AAM's mean face on grey.
@@ -375,6 +370,16 @@ void LiveController::endThread(bool abandon)
     m_worker = nullptr;
 }
 
+void LiveController::clearShown()
+{
+    m_pending.clear();
+    m_framesShown = 0;
+    m_soundSeconds = 0.0;
+    m_lastImage = QImage();
+    m_recentPhones.intervals.clear();
+    m_latencies.clear();
+}
+
 void LiveController::reset()
 {
     m_microphone->stop();
@@ -382,15 +387,10 @@ void LiveController::reset()
     if (m_prepareTask)
         m_prepareTask->cancel();
     endThread(true);
-    m_pending.clear();
+    clearShown();
     m_renderer.reset();
     m_rendererAam.reset();
     m_rendererMedia.clear();
-    m_framesShown = 0;
-    m_soundSeconds = 0.0;
-    m_lastImage = QImage();
-    m_recentPhones.intervals.clear();
-    m_latencies.clear();
     m_recording = Recording{};
     setState(State::Idle);
     emit framesShownChanged();

@@ -142,6 +142,9 @@ private:
     void onFrames(const LiveFrames &frames);
     void onWorkerFailed(const QString &why);
     void endThread(bool abandon);
+    // Forgets what the last session showed: frames waiting, counts, the last image, phones and
+    // latencies (a new session starts, or the controller resets).
+    void clearShown();
     void reset();
     QString alignerModelPath() const;
 
