@@ -76,6 +76,17 @@ inline void openProjectFolder(MainWindow *window, const QString &folder)
     QVERIFY(!window->document()->isReadOnly());
 }
 
+// The demo window, audio playback off, then the project in `folder` opened in it (openProjectFolder).
+// Callers return when QTest::currentTestFailed().
+inline void openWindowOnProject(MainWindow *&window, const QString &folder)
+{
+    openDemoWindow(window);
+    if (QTest::currentTestFailed())
+        return;
+    window->playback()->setAudioEnabled(false);
+    openProjectFolder(window, folder);
+}
+
 // The demo window with its timeline panel found and audio playback off (the speech tests).
 inline void openDemoTimeline(MainWindow *&window, TimelinePanel *&panel)
 {

@@ -91,11 +91,7 @@ private slots:
         // A copy of the demo the import may write into.
         m_project = m_dir.filePath(QStringLiteral("project"));
         QVERIFY(testing::copyFolder(kDemo, m_project));
-        testing::openDemoWindow(m_window);
-        if (QTest::currentTestFailed())
-            return;
-        m_window->playback()->setAudioEnabled(false);
-        testing::openProjectFolder(m_window, m_project);
+        testing::openWindowOnProject(m_window, m_project);
         if (QTest::currentTestFailed())
             return;
         m_demoCount = m_window->document()->sequenceCount();

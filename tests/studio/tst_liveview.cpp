@@ -105,11 +105,7 @@ private slots:
         QVERIFY(m_sound.size() > 40000);
         m_project = m_dir.filePath(QStringLiteral("project"));
         QVERIFY(testing::copyFolder(kDemo, m_project));
-        testing::openDemoWindow(m_window);
-        if (QTest::currentTestFailed())
-            return;
-        m_window->playback()->setAudioEnabled(false);
-        testing::openProjectFolder(m_window, m_project);
+        testing::openWindowOnProject(m_window, m_project);
     }
 
     void cleanupTestCase()

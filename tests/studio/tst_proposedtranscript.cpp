@@ -81,11 +81,10 @@ private slots:
         QVERIFY(m_dir.isValid());
         m_project = m_dir.filePath(QStringLiteral("project"));
         QVERIFY(prepareProject(m_project));
-        testing::openDemoWindow(m_window);
+        testing::openWindowOnProject(m_window, m_project);
         if (QTest::currentTestFailed())
             return;
-        m_window->playback()->setAudioEnabled(false);
-        openProject();
+        QCOMPARE(doc()->sequenceCount(), 11);
     }
 
     void cleanupTestCase() { delete m_window; }
