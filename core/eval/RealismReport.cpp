@@ -59,8 +59,6 @@ std::vector<int> liveLabels(const AcousticModel &acoustic, const PhoneBigram &bi
     return labels;
 }
 
-// Detectors for the worker threads: dlib's predictor takes a second or two to load, and one
-// detector must not be used by two threads at once.
 double meanOfFinite(const std::vector<double> &values)
 {
     double sum = 0;
@@ -210,6 +208,8 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
         createDynamicModel(kind); // reject unknown kinds before any work
     FaceDetectorPaths paths;
     paths.dlibPredictor = options.dlibPredictor;
+    // Detectors for the worker threads: dlib's predictor takes a second or two to load, and one
+    // detector must not be used by two threads at once.
     FaceDetectorPool pool(paths);
     if (!FaceDetectorPool::Lease(pool)->hasDlib())
         throw Error("dlib's 68-point shape predictor is not available (install Debian's libdlib-data)",
