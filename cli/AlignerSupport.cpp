@@ -70,6 +70,7 @@ struct Job
     QString media;
     QString transcript;
     std::optional<PreparedUtterance> prepared;
+    Tier timing{"words", {}};
     QString error;
 };
 
@@ -101,6 +102,7 @@ std::vector<TrainingUtterance> loadTranscribedFolder(const QString &mediaPath, c
         try {
             const Transcript t = readTranscript(job.transcript.toStdString());
             job.prepared = prepareUtterance(job.id.toStdString(), job.media.toStdString(), t.words, model, lexicon);
+            job.timing = t.timing;
         } catch (const std::exception &e) {
             job.error = QString::fromUtf8(e.what());
         }
@@ -108,7 +110,8 @@ std::vector<TrainingUtterance> loadTranscribedFolder(const QString &mediaPath, c
     std::vector<TrainingUtterance> utterances;
     for (Job &job : jobs) {
         if (job.prepared) {
-            utterances.push_back({job.prepared->id, std::move(job.prepared->features), std::move(job.prepared->pronunciations)});
+            utterances.push_back({job.prepared->id, std::move(job.prepared->features),
+                                  std::move(job.prepared->pronunciations), std::move(job.timing)});
         } else {
             skipped.append(QJsonObject{{QStringLiteral("id"), job.id}, {QStringLiteral("reason"), job.error}});
             if (!quiet)

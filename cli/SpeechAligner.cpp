@@ -13,7 +13,7 @@ std::vector<CommandOption> SpeechAligner::options(const QStringList &alignerAlia
 {
     std::vector<CommandOption> options{
         {QStringLiteral("aligner"), QStringLiteral("MODEL|sphinx[:DIR]"),
-         QStringLiteral("the forced aligner: an aligner model of ours (lipsync aligner train/adapt; default: the "
+         QStringLiteral("the forced aligner: an aligner model of ours (lipsync aligner train/adapt/calibrate; default: the "
                         "shipped GRID s1 model, one speaker, or $LIPSYNC_ALIGNER_MODEL), or sphinx: CMU Sphinx's "
                         "generic US-English triphone model (many speakers; Debian package pocketsphinx-en-us) at "
                         "its Debian folder, or at DIR"),

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 namespace lipsync {
 
@@ -129,7 +130,7 @@ std::string AcousticModel::text() const
         out += buffer;
     };
     const MfccOptions &f = m_features;
-    out += "lipsync-aligner " + std::to_string(kFormatVersion) + "\n";
+    out += "lipsync-aligner " + std::to_string(m_boundaries.empty() ? 1 : kFormatVersion) + "\n";
     out += "# Monophone HMMs (3 emitting states, diagonal GMMs) over MFCC_0_D_A; see core/align/AcousticModel.h\n";
     out += "features";
     number(f.sampleRate), number(f.windowSeconds), number(f.shiftSeconds), number(f.preemphasis);
@@ -160,6 +161,13 @@ std::string AcousticModel::text() const
                 out += "\n";
             }
         }
+    }
+    if (!m_boundaries.empty()) {
+        const std::vector<std::string> lines = m_boundaries.lines();
+        out += "boundaries minimum " + std::to_string(m_boundaries.minimumCount()) + " entries "
+               + std::to_string(lines.size()) + "\n";
+        for (const std::string &line : lines)
+            out += "b " + line + "\n";
     }
     return out;
 }
@@ -201,13 +209,13 @@ AcousticModel AcousticModel::parse(const std::string &text, const std::string &p
             throw fail("expected '" + key + "'");
     };
     AcousticModel model;
+    int version = 0;
     {
         std::istringstream &s = next();
         std::string magic;
-        int version = 0;
         if (!(s >> magic >> version) || magic != "lipsync-aligner")
             throw fail("not a lipsync aligner model");
-        if (version != kFormatVersion)
+        if (version < 1 || version > kFormatVersion)
             throw fail("unsupported aligner model version " + std::to_string(version));
     }
     {
@@ -270,6 +278,26 @@ AcousticModel AcousticModel::parse(const std::string &text, const std::string &p
                 g.variances.row(m) = readVector("v", d).transpose();
                 if (!(g.variances.row(m).array() > 0).all())
                     throw fail("variances must be positive");
+            }
+        }
+    }
+    if (version >= 2) {
+        std::istringstream &s = next();
+        std::string k1, k2, k3;
+        int minimum = 0, entries = -1;
+        if (!(s >> k1 >> k2 >> minimum >> k3 >> entries) || k1 != "boundaries" || k2 != "minimum"
+            || k3 != "entries" || minimum < 1 || entries < 1 || entries > 1000000)
+            throw fail("expected 'boundaries minimum M entries N'");
+        model.m_boundaries.setMinimumCount(minimum);
+        for (int i = 0; i < entries; ++i) {
+            std::istringstream &b = next();
+            expectKey(b, "b");
+            std::string rest;
+            std::getline(b, rest);
+            try {
+                model.m_boundaries.addLine(rest);
+            } catch (const std::invalid_argument &e) {
+                throw fail(e.what());
             }
         }
     }

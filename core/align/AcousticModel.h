@@ -5,7 +5,10 @@
 // probability a_k or on to k+1 (the third state leaves the phone).
 //
 // Saved as a versioned text file ("lipsync-aligner 1"), which also records the feature
-// configuration so alignment computes exactly the features the model was trained on.
+// configuration so alignment computes exactly the features the model was trained on; version 2
+// adds the word-boundary correction learned against reference timings (BoundaryCorrection). A
+// file is written with the lowest version that holds its content.
+#include "align/BoundaryCorrection.h"
 #include "audio/Mfcc.h"
 
 #include <Eigen/Core>
@@ -51,7 +54,7 @@ enum class CepstralNormalization { None = 0, Mean = 1, MeanAndVariance = 2 };
 class AcousticModel
 {
 public:
-    static constexpr int kFormatVersion = 1;
+    static constexpr int kFormatVersion = 2;
     static constexpr int kStatesPerPhone = 3;
 
     AcousticModel() = default;
@@ -70,6 +73,10 @@ public:
     // Probability that state `index` stays in itself for one more frame.
     double selfLoop(int index) const { return m_selfLoop[size_t(index)]; }
     void setSelfLoop(int index, double p) { m_selfLoop[size_t(index)] = p; }
+    // Offsets subtracted from the word boundaries the model's Viterbi alignment places (empty
+    // unless learned: `lipsync aligner calibrate`).
+    const BoundaryCorrection &boundaryCorrection() const { return m_boundaries; }
+    void setBoundaryCorrection(const BoundaryCorrection &c) { m_boundaries = c; }
     // Variance floor applied by re-estimation (HCompV -f 0.01: 1% of the global variance).
     const Eigen::VectorXf &varianceFloor() const { return m_varianceFloor; }
     void setVarianceFloor(const Eigen::VectorXf &floor) { m_varianceFloor = floor; }
@@ -95,6 +102,7 @@ private:
     std::vector<GaussianMixture> m_states;
     std::vector<double> m_selfLoop;
     Eigen::VectorXf m_varianceFloor;
+    BoundaryCorrection m_boundaries;
     std::shared_ptr<const Mfcc> m_mfcc; // shared by copies; compute() is thread-safe
 };
 

@@ -1,6 +1,7 @@
 #include "align/AlignerTrainer.h"
 
 #include "align/BaumWelch.h"
+#include "align/ForcedAligner.h"
 #include "util/PhoneSet.h"
 #include "align/UtteranceGraph.h"
 #include "tasks/BlockingMap.h"
@@ -108,6 +109,38 @@ double AlignerTrainer::reestimate(AcousticModel &model, const std::vector<Traini
 {
     const Accumulators total = accumulate(model, utterances, options, failed);
     return update(model, total, options, occupancy);
+}
+
+BoundaryCorrection AlignerTrainer::calibrate(const AcousticModel &model, const std::vector<TrainingUtterance> &utterances,
+                                             const BoundaryCorrection::Options &options,
+                                             BoundaryCorrectionReport *report)
+{
+    std::vector<std::vector<BoundaryError>> errors(utterances.size());
+    std::vector<size_t> timed;
+    for (size_t i = 0; i < utterances.size(); ++i)
+        if (!utterances[i].reference.intervals.empty())
+            timed.push_back(i);
+    const ForcedAligner aligner(model);
+    lipsync::blockingMap(timed, [&](size_t i) {
+        const TrainingUtterance &u = utterances[i];
+        std::vector<std::string> words;
+        for (const Interval &w : u.reference.intervals)
+            if (!PhoneSet::isSilence(w.label) && !PhoneSet::isBreath(w.label))
+                words.push_back(w.label);
+        if (words.size() != u.pronunciations.size())
+            return;
+        try {
+            const double duration = double(u.features.rows()) * model.featureOptions().shiftSeconds;
+            errors[i] = BoundaryCorrection::errors(aligner.align(u.features, words, u.pronunciations, duration),
+                                                   u.reference);
+        } catch (const Error &) {
+            // The transcript does not fit the audio: nothing to learn from it.
+        }
+    });
+    std::vector<std::vector<BoundaryError>> learned;
+    for (size_t i : timed)
+        learned.push_back(std::move(errors[i]));
+    return BoundaryCorrection::learn(learned, options, report);
 }
 
 Accumulators AlignerTrainer::accumulate(const AcousticModel &model, const std::vector<TrainingUtterance> &utterances,

@@ -27,6 +27,9 @@ struct TrainingUtterance
     std::string id;                  // for messages ("bbaf2n")
     Eigen::MatrixXf features;        // AcousticModel::features()
     std::vector<std::vector<Pronunciation>> pronunciations; // per word, variants
+    // Reference word timings when the transcript has them (GRID .align, a timed .lab, a TextGrid
+    // a user corrected): what calibrate() learns the boundary correction from.
+    Tier reference{"words", {}};
 };
 
 struct TrainerOptions
@@ -106,6 +109,14 @@ public:
                                    const TrainerOptions &options, std::vector<std::string> *failed = nullptr);
     static double update(AcousticModel &model, const Accumulators &statistics, const TrainerOptions &options,
                          std::vector<double> *occupancy = nullptr);
+
+    // The word-boundary correction of `model` (BoundaryCorrection): the utterances with a
+    // reference timing are aligned by the model (in parallel) and its boundaries compared with the
+    // reference's. Utterances whose transcript does not fit their audio, or whose reference has
+    // other words, are left out (counted in the report).
+    static BoundaryCorrection calibrate(const AcousticModel &model, const std::vector<TrainingUtterance> &utterances,
+                                        const BoundaryCorrection::Options &options,
+                                        BoundaryCorrectionReport *report = nullptr);
 
     // Splits the heaviest components of every state until it has `mixtures`, for states whose
     // occupancy allows `minimumPerComponent` frames per component.

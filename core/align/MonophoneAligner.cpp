@@ -82,6 +82,7 @@ AlignerOutput MonophoneAligner::align(const std::string &mediaPath, const std::v
     } catch (const Error &e) {
         throw misfit(e, mediaPath, transcriptPath);
     }
+    m_model.boundaryCorrection().apply(out.alignment);
     return out;
 }
 
@@ -115,6 +116,7 @@ AlignerOutput MonophoneAligner::alignLong(const std::string &mediaPath, double s
     } catch (const Error &e) {
         throw misfit(e, mediaPath, transcriptPath);
     }
+    m_model.boundaryCorrection().apply(out.alignment);
     return out;
 }
 
@@ -129,6 +131,10 @@ AlignerOutput MonophoneAligner::realign(const std::string &mediaPath, const Real
     } catch (const Error &e) {
         throw misfit(e, mediaPath, {});
     }
+    std::vector<double> fixed;
+    for (const FixedBoundary &b : realignment.fixed())
+        fixed.push_back(b.time);
+    m_model.boundaryCorrection().apply(out.alignment, fixed);
     return out;
 }
 

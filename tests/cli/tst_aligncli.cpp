@@ -164,6 +164,54 @@ private slots:
         QCOMPARE(runLipsync({"aligner", "adapt", "--media", dir.filePath("none"), "--transcripts", dir.path(), "--out", model}).exitCode, 1);
     }
 
+    // aligner calibrate: the demo clips' .align timings give the shipped model a word-boundary
+    // correction (a version-2 model), which `align --aligner` then uses and which moves the
+    // uncalibrated model's boundaries; transcripts without timings are refused, naming the folder.
+    void calibrateLearnsTheBoundaryCorrection()
+    {
+        QTemporaryDir dir;
+        const QString plain = dir.filePath("plain.aligner"), calibrated = dir.filePath("calibrated.aligner");
+        {
+            // The shipped model's Gaussians without its correction: the model `aligner train` writes.
+            QFile in(QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/aligner/grid-s1.aligner")), out(plain);
+            QVERIFY(in.open(QIODevice::ReadOnly) && out.open(QIODevice::WriteOnly));
+            QByteArray text = in.readAll();
+            const qsizetype section = text.indexOf("\nboundaries ");
+            if (section >= 0)
+                text.truncate(section + 1);
+            text.replace("lipsync-aligner 2\n", "lipsync-aligner 1\n");
+            out.write(text);
+        }
+        const Run r = runLipsync({"aligner", "calibrate", "--media", kDemo, "--transcripts", kDemo, "--aligner", plain,
+                                  "--out", calibrated, "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject json = parseJsonObject(r.out);
+        QCOMPARE(json.value("recordings").toInt(), 10);
+        QCOMPARE(json.value("boundaries").toInt(), 120);
+        QVERIFY(json.value("minimumCount").toInt() > 0);
+        QVERIFY(json.value("withinToleranceAfter").toDouble() > json.value("withinToleranceBefore").toDouble());
+        QFile model(calibrated);
+        QVERIFY(model.open(QIODevice::ReadOnly));
+        QVERIFY(model.readLine().startsWith("lipsync-aligner 2"));
+        // Both models align; the calibrated one's word boundaries differ.
+        auto words = [&](const QString &aligner) {
+            const Run a = runLipsync({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bbaf2n.align", "--aligner",
+                                      aligner, "--out", dir.filePath("x.TextGrid"), "--json"});
+            return a.exitCode == 0 ? parseJsonObject(a.out).value("words").toArray() : QJsonArray{};
+        };
+        const QJsonArray before = words(plain), after = words(calibrated);
+        QVERIFY(!before.isEmpty() && before.size() == after.size());
+        QVERIFY(before != after);
+        // No timings to learn from.
+        QVERIFY(QDir().mkpath(dir.filePath("txt")));
+        QVERIFY(QFile::copy(kDemo + "bbaf2n.mpg", dir.filePath("txt/bbaf2n.mpg")));
+        writeText(dir.filePath("txt/bbaf2n.txt"), "bin blue at f two now\n");
+        const Run untimed = runLipsync({"aligner", "calibrate", "--media", dir.filePath("txt"), "--transcripts",
+                                        dir.filePath("txt"), "--out", calibrated});
+        QCOMPARE(untimed.exitCode, 1);
+        QVERIFY2(untimed.err.contains("word timings") && untimed.err.contains("txt"), untimed.err.constData());
+    }
+
     // A word outside the CMU dictionary: espeak-ng guesses it (listed in --json), and the
     // project's pronunciation (--project) overrides the guess.
     void projectPronunciationsOverrideEspeak()

@@ -349,8 +349,12 @@ private slots:
     void insertSilenceOnASelectedStretch()
     {
         const TierPair before = tiers();
-        // Select the phones tier, then drag a stretch over the waveform and press I.
-        const Interval iv = before.phones.intervals[before.phones.intervals.size() / 2];
+        // Select the phones tier (a click inside its longest interval, away from any boundary),
+        // then drag a stretch over the waveform and press I.
+        const Interval iv = *std::max_element(before.phones.intervals.begin(), before.phones.intervals.end(),
+                                              [](const Interval &x, const Interval &y) {
+                                                  return x.end - x.start < y.end - y.start;
+                                              });
         const int py = m_view->laneRect(WaveformView::Lane::Phones).center().y();
         QTest::mouseClick(m_view, Qt::LeftButton, {}, QPoint(int(m_view->xAt((iv.start + iv.end) / 2)), py));
         const int wy = m_view->laneRect(WaveformView::Lane::Waveform).center().y();
