@@ -88,8 +88,7 @@ AamModeChoice aamModeChoiceOf(const Pca &pca, int samples)
 }
 
 // Keeps up to `maxCount` training images as the model's exemplar detail: each image's combined
-// parameters c_i = Q^T j_i and the part of its colour texture outside the texture modes,
-// g_i - (g0 + Pg Pg^T (g_i - g0)), quantised to 8 bits. With more images than that, a
+// parameters c_i = Q^T j_i and its textureDetail(), quantised to 8 bits. With more images than that, a
 // farthest-point subset in the whitened combined parameters (FrameSelection's farthestPointSample,
 // from the image nearest the mean face), so every region of the face space keeps its nearest real
 // example.
@@ -116,7 +115,8 @@ void addExemplars(AamModel &model, const Eigen::MatrixXd &joint, const Eigen::Ma
     for (int k = 0; k < e; ++k) {
         const int i = chosen[size_t(k)];
         const Eigen::VectorXd centred = colour.col(i) - texturePca.mean;
-        const Eigen::VectorXd residual = centred - texturePca.basis * (texturePca.basis.transpose() * centred);
+        const Eigen::VectorXd residual = textureDetail(
+            model.warp(0), centred - texturePca.basis * (model.combinedBasis.bottomRows(model.textureModes()) * params.col(i)));
         const double peak = residual.cwiseAbs().maxCoeff();
         const double scale = peak > 0 ? peak / 127.0 : 0.0;
         model.exemplarParams.col(k) = params.col(i);
@@ -127,6 +127,23 @@ void addExemplars(AamModel &model, const Eigen::MatrixXd &joint, const Eigen::Ma
 }
 
 } // namespace
+
+Eigen::VectorXd textureDetail(const PiecewiseAffineWarp &warp, const Eigen::VectorXd &residual)
+{
+    const Eigen::VectorXf r = residual.cast<float>();
+    const Eigen::VectorXf ones = Eigen::VectorXf::Ones(warp.pixelCount());
+    cv::Mat blurred = warp.toImage(r.data(), 3, 0.f), weight = warp.toImage(ones.data(), 1, 0.f);
+    cv::GaussianBlur(blurred, blurred, cv::Size(), kDetailSigma);
+    cv::GaussianBlur(weight, weight, cv::Size(), kDetailSigma);
+    Eigen::VectorXd detail = residual;
+    for (int i = 0; i < warp.pixelCount(); ++i) {
+        const int x = warp.pixelX(i), y = warp.pixelY(i);
+        const float w = std::max(1e-6f, weight.at<float>(y, x));
+        for (int c = 0; c < 3; ++c)
+            detail[3 * i + c] -= double(blurred.at<cv::Vec3f>(y, x)[c] / w);
+    }
+    return detail;
+}
 
 std::vector<AamTrainingExample> loadTrainingDirectory(const std::string &directory,
                                                       std::vector<std::string> *warnings)

@@ -103,6 +103,15 @@ struct AamBuildReport
 std::vector<AamTrainingExample> loadTrainingDirectory(const std::string &directory,
                                                       std::vector<std::string> *warnings = nullptr);
 
+// The exemplar detail of training image i (AamModel::exemplarDetail): what the model's synthesis
+// at the image's own parameters misses of its colour texture, r_i = g_i - (g0 + Pg Qg c_i), high-
+// passed — less its blur by a Gaussian of kDetailSigma reference pixels, normalised over the face's
+// pixels so the outline does not leak in. The fine structure the modes smooth away (teeth, lip
+// highlights, skin grain) stays; the coarse shape of the image's mouth, which the parameters set,
+// does not travel with it onto other parameters. `residual`: 3 values per pixel of `warp`.
+constexpr double kDetailSigma = 2.0;
+Eigen::VectorXd textureDetail(const PiecewiseAffineWarp &warp, const Eigen::VectorXd &residual);
+
 // Builds the model. Examples that cannot be used (unreadable image, points outside the image,
 // degenerate shape) are skipped with a line in `warnings`. Throws lipsync::Error when fewer than
 // 3 usable examples remain, or Canceled when `feedback` is canceled.

@@ -84,9 +84,9 @@ public:
     Eigen::MatrixXd detectorRegression; // 2k x 10
     Eigen::VectorXd detectorKeypointMean; // 10
 
-    // Exemplar detail: what the texture model cannot represent on E of its training images
-    // (g_i minus its projection onto the texture modes: teeth, lip highlights, skin grain), kept
-    // so that synthesis puts real detail back on the model's smooth texture (AamSynthesizer).
+    // Exemplar detail: the fine structure the model's synthesis misses on E of its training images
+    // (teeth, lip highlights, skin grain: textureDetail() in AamBuilder.h), kept so that synthesis
+    // puts real detail back on the model's smooth texture (AamSynthesizer).
     // Column i: that image's combined parameters and its residual, quantised to 8 bits with the
     // scale exemplarScales[i]. Empty for models built without exemplars.
     Eigen::MatrixXd exemplarParams; // nc x E

@@ -15,8 +15,9 @@
 // A linear texture model reconstructs every frame as a blend of its modes, which smooths away
 // what is particular to each image: teeth, specular highlights on the lips, skin grain. The
 // synthesised texture gets that detail back from the model's exemplars (real training images):
-// the residual of those nearest the parameters in the whitened combined space, outside the
-// texture modes, so it adds detail without changing what the modes describe.
+// the fine part of what the synthesis missed on those nearest the parameters in the whitened
+// combined space (AamModel::exemplarDetail), so it adds detail without moving the mouth's coarse
+// shape, which the parameters set.
 #include "aam/AamModel.h"
 #include "aam/TextureNormalisation.h"
 
