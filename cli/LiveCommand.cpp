@@ -18,6 +18,8 @@
 #include "io/AudioDecoder.h"
 #include "io/MediaInfo.h"
 #include "io/Transcript.h"
+#include "io/VideoReader.h"
+#include "render/CameraCompositor.h"
 #include "render/FaceRenderer.h"
 #include "render/LiveSession.h"
 #include "render/VideoExporter.h"
@@ -26,6 +28,8 @@
 #include "util/PhoneSet.h"
 
 #include <QJsonArray>
+
+#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -153,15 +157,28 @@ int runLive(const CommandLine &a)
     if (a.isSet("fps"))
         options.frameRate = a.positiveNumber("fps");
 
-    // The background: --background, else the input's own video, else the mean face on grey.
-    const QString background = a.isSet("background") ? a.value("background")
+    if (a.isSet("camera") && (a.isSet("background") || a.isSet("still")))
+        throw UsageError(QStringLiteral("--camera is the background: not with --background or --still"));
+    // The background: --background, else the input's own video, else the mean face on grey;
+    // with --camera, each frame is drawn again into that video's frame as it comes (the Live
+    // view's camera), the session's own rendering standing for the frames without a face.
+    const QString background = a.isSet("camera")       ? QString()
+                               : a.isSet("background") ? a.value("background")
                                : MediaInfo::probe(input.toStdString()).hasVideo ? input
                                                                                  : QString();
+    std::unique_ptr<VideoReader> camera;
+    std::unique_ptr<CameraCompositor> cameraCompositor;
+    if (a.isSet("camera")) {
+        camera = std::make_unique<VideoReader>(a.value("camera").toStdString());
+        cameraCompositor = std::make_unique<CameraCompositor>(aam);
+    }
+    int cameraFaces = 0;
     Feedback tracking;
     const std::unique_ptr<FaceRenderer> renderer =
         background.isEmpty() ? std::make_unique<FaceRenderer>(aam)
                              : std::make_unique<FaceRenderer>(aam, background.toStdString(), tracking);
-    renderer->setCompositeOptions(Compositing::from(a));
+    const CompositeOptions composite = Compositing::from(a);
+    renderer->setCompositeOptions(composite);
     const AudioBuffer sound = AudioDecoder::decode(input.toStdString(), acoustic.featureOptions().sampleRate);
     LiveSession session(acoustic, bigram, *model, renderer.get(), options);
 
@@ -178,9 +195,24 @@ int runLive(const CommandLine &a)
     // sound fed so far stands for the time, plus the processing of the block that made it ready.
     auto take = [&](const std::vector<LiveFrame> &ready, double fedSeconds, double processing, double now) {
         for (const LiveFrame &f : ready) {
-            latencies.push_back(fast ? fedSeconds - f.soundEnd + processing : now - f.soundEnd);
+            cv::Mat image = f.image;
+            double composing = 0.0;
+            if (camera) {
+                // The camera's frame of this moment (its last one once it has ended).
+                const Clock::time_point t0 = Clock::now();
+                cv::Mat frame = camera->frame(std::min(f.index, camera->frameCount() - 1)).clone();
+                if (cameraCompositor->compose(frame, f.features, composite)) {
+                    ++cameraFaces;
+                    image = frame;
+                } else {
+                    cv::resize(f.image, image, frame.size());
+                }
+                composing = secondsBetween(t0, Clock::now());
+            }
+            latencies.push_back(fast ? fedSeconds - f.soundEnd + processing + composing
+                                     : now + composing - f.soundEnd);
             if (recorder)
-                recorder->add(f.image);
+                recorder->add(image);
             ++frames;
         }
     };
@@ -242,6 +274,8 @@ int runLive(const CommandLine &a)
     }
     if (recorder)
         o[QStringLiteral("out")] = a.value("out");
+    if (camera)
+        o[QStringLiteral("camera_frames_with_face")] = cameraFaces;
     if (a.isSet("json")) {
         printJson(o);
     } else {
@@ -286,6 +320,9 @@ const CommandRegistration registration{
          {QStringLiteral("background"), QStringLiteral("MEDIA"),
           QStringLiteral("the video to draw the face into (default: the input's video, else the mean face on grey)")},
          {QStringLiteral("still"), {}, QStringLiteral("draw every frame into the background's first frame")},
+         {QStringLiteral("camera"), QStringLiteral("VIDEO"),
+          QStringLiteral("a video standing for a camera: each frame's face is found as the frame comes, not "
+                         "tracked beforehand, and the generated face drawn over it (the Live view's camera)")},
          {QStringLiteral("lag"), QStringLiteral("FRAMES"),
           QStringLiteral("100 Hz frames the phone decisions wait for (latency against accuracy)"), QStringLiteral("6")},
          {QStringLiteral("block-ms"), QStringLiteral("MS"), QStringLiteral("milliseconds of sound per block fed"),

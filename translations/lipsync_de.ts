@@ -266,6 +266,24 @@
     </message>
 </context>
 <context>
+    <name>lipsync::studio::CameraFeed</name>
+    <message>
+        <location filename="../studio/live/CameraFeed.cpp" line="27"/>
+        <source>No such camera.</source>
+        <translation>Diese Kamera gibt es nicht.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/CameraFeed.cpp" line="36"/>
+        <source>The camera stopped: %1</source>
+        <translation>Die Kamera hat angehalten: %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/CameraFeed.cpp" line="41"/>
+        <source>The camera %1 could not be opened: %2</source>
+        <translation>Die Kamera %1 ließ sich nicht öffnen: %2</translation>
+    </message>
+</context>
+<context>
     <name>lipsync::studio::EvaluationChart</name>
     <message>
         <location filename="../studio/plots/EvaluationChart.cpp" line="42"/>
@@ -983,143 +1001,143 @@
 <context>
     <name>lipsync::studio::LiveController</name>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="82"/>
+        <location filename="../studio/live/LiveController.cpp" line="84"/>
         <source>Open a project to go live: the face is drawn with its appearance model and animated by its trained dynamic model.</source>
         <translation>Öffnen Sie ein Projekt, um live zu gehen: Das Gesicht wird mit seinem Erscheinungsmodell gezeichnet und von seinem trainierten dynamischen Modell bewegt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="86"/>
+        <location filename="../studio/live/LiveController.cpp" line="88"/>
         <source>The project has no appearance model. Build one (Faces ▸ Build AAM), then train a dynamic model in the Models panel.</source>
         <translation>Das Projekt hat kein Erscheinungsmodell. Erstellen Sie eines (Gesichter ▸ AAM erstellen) und trainieren Sie dann ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="91"/>
+        <location filename="../studio/live/LiveController.cpp" line="93"/>
         <source>The project&apos;s appearance model could not be loaded: %1</source>
         <translation>Das Erscheinungsmodell des Projekts konnte nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="93"/>
+        <location filename="../studio/live/LiveController.cpp" line="95"/>
         <source>No dynamic model is trained yet. Train one in the Models panel (DPDS follows live speech best), then start again.</source>
         <translation>Es ist noch kein dynamisches Modell trainiert. Trainieren Sie eines im Bereich „Modelle“ (DPDS folgt Live-Sprache am besten) und starten Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="97"/>
+        <location filename="../studio/live/LiveController.cpp" line="99"/>
         <source>Choose a trained model.</source>
         <translation>Wählen Sie ein trainiertes Modell.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="99"/>
+        <location filename="../studio/live/LiveController.cpp" line="101"/>
         <source>The %1 model was trained with another appearance model: train it again in the Models panel.</source>
         <translation>Das Modell %1 wurde mit einem anderen Erscheinungsmodell trainiert: Trainieren Sie es im Bereich „Modelle“ erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="102"/>
+        <location filename="../studio/live/LiveController.cpp" line="104"/>
         <source>The studio&apos;s aligner model, which recognises the phones, was not found. Reinstall the studio or point LIPSYNC_ALIGNER_MODEL at an aligner model.</source>
         <translation>Das Aligner-Modell des Studios, das die Phone erkennt, wurde nicht gefunden. Installieren Sie das Studio neu oder lassen Sie LIPSYNC_ALIGNER_MODEL auf ein Aligner-Modell zeigen.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="105"/>
+        <location filename="../studio/live/LiveController.cpp" line="107"/>
         <source>The phone bigram for live recognition (aligner/grid-s1.bigram) was not found. Reinstall the studio.</source>
         <translation>Das Phon-Bigramm für die Live-Erkennung (aligner/grid-s1.bigram) wurde nicht gefunden. Installieren Sie das Studio neu.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="126"/>
+        <location filename="../studio/live/LiveController.cpp" line="128"/>
         <source>A live session is running already.</source>
         <translation>Es läuft bereits eine Live-Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="128"/>
+        <location filename="../studio/live/LiveController.cpp" line="130"/>
         <source>Wait until the video export has ended.</source>
         <translation>Warten Sie, bis der Videoexport beendet ist.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="132"/>
+        <location filename="../studio/live/LiveController.cpp" line="134"/>
         <source>Choose a microphone.</source>
         <translation>Wählen Sie ein Mikrofon.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="160"/>
+        <location filename="../studio/live/LiveController.cpp" line="157"/>
         <source>Prepare the live view</source>
         <translation>Live-Ansicht vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="197"/>
+        <location filename="../studio/live/LiveController.cpp" line="194"/>
         <source>No face was found in %1: the live face is drawn on grey.</source>
         <translation>In %1 wurde kein Gesicht gefunden: Das Live-Gesicht wird auf Grau gezeichnet.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="207"/>
+        <location filename="../studio/live/LiveController.cpp" line="204"/>
         <source>The live view could not be prepared: %1</source>
         <translation>Die Live-Ansicht konnte nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="256"/>
+        <location filename="../studio/live/LiveController.cpp" line="254"/>
         <source>The microphone could not be opened: %1.</source>
         <translation>Das Mikrofon konnte nicht geöffnet werden: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="340"/>
+        <location filename="../studio/live/LiveController.cpp" line="338"/>
         <source>The live session stopped: %1</source>
         <translation>Die Live-Sitzung wurde abgebrochen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="433"/>
-        <location filename="../studio/live/LiveController.cpp" line="494"/>
+        <location filename="../studio/live/LiveController.cpp" line="436"/>
+        <location filename="../studio/live/LiveController.cpp" line="497"/>
         <source>Nothing is recorded yet: start a session and stop it first.</source>
         <translation>Es ist noch nichts aufgenommen: Starten und beenden Sie zuerst eine Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="435"/>
+        <location filename="../studio/live/LiveController.cpp" line="438"/>
         <source>No project is open.</source>
         <translation>Es ist kein Projekt geöffnet.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="437"/>
+        <location filename="../studio/live/LiveController.cpp" line="440"/>
         <source>The bundled demo is read-only: save the project in a folder of your own first.</source>
         <translation>Das mitgelieferte Demo ist schreibgeschützt: Speichern Sie das Projekt zuerst in einem eigenen Ordner.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="439"/>
+        <location filename="../studio/live/LiveController.cpp" line="442"/>
         <source>The project&apos;s appearance model changed since the recording: its features no longer fit.</source>
         <translation>Das Erscheinungsmodell des Projekts hat sich seit der Aufnahme geändert: Ihre Merkmale passen nicht mehr dazu.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="458"/>
+        <location filename="../studio/live/LiveController.cpp" line="461"/>
         <source>The sound could not be written: %1</source>
         <translation>Der Ton konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="479"/>
+        <location filename="../studio/live/LiveController.cpp" line="482"/>
         <source>Save Live Session as %1</source>
         <translation>Live-Sitzung als %1 speichern</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="481"/>
+        <location filename="../studio/live/LiveController.cpp" line="484"/>
         <source>The project refused the new sequence (the status bar says why).</source>
         <translation>Das Projekt hat die neue Sequenz abgelehnt (die Statusleiste nennt den Grund).</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="496"/>
+        <location filename="../studio/live/LiveController.cpp" line="499"/>
         <source>Stop the session first.</source>
         <translation>Beenden Sie zuerst die Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="498"/>
+        <location filename="../studio/live/LiveController.cpp" line="501"/>
         <source>A video export is running already.</source>
         <translation>Es läuft bereits ein Videoexport.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="510"/>
+        <location filename="../studio/live/LiveController.cpp" line="513"/>
         <source>Export the live session to %1</source>
         <translation>Live-Sitzung nach %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="521"/>
+        <location filename="../studio/live/LiveController.cpp" line="524"/>
         <source>The live session was written to %1.</source>
         <translation>Die Live-Sitzung wurde nach %1 geschrieben.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="529"/>
+        <location filename="../studio/live/LiveController.cpp" line="532"/>
         <source>The video could not be written: %1</source>
         <translation>Das Video konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -1127,168 +1145,183 @@
 <context>
     <name>lipsync::studio::LiveView</name>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="34"/>
+        <location filename="../studio/live/LiveView.cpp" line="37"/>
         <source>Start</source>
         <translation>Start</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="35"/>
+        <location filename="../studio/live/LiveView.cpp" line="38"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="35"/>
-        <location filename="../studio/live/LiveView.cpp" line="327"/>
+        <location filename="../studio/live/LiveView.cpp" line="38"/>
+        <location filename="../studio/live/LiveView.cpp" line="386"/>
         <source>Save as Sequence</source>
         <translation>Als Sequenz speichern</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="36"/>
+        <location filename="../studio/live/LiveView.cpp" line="39"/>
         <source>Export Video…</source>
         <translation>Video exportieren…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="46"/>
+        <location filename="../studio/live/LiveView.cpp" line="49"/>
         <source>Microphone:</source>
         <translation>Mikrofon:</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="48"/>
+        <location filename="../studio/live/LiveView.cpp" line="51"/>
         <source>Model:</source>
         <translation>Modell:</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="53"/>
+        <location filename="../studio/live/LiveView.cpp" line="56"/>
         <source>The microphone the face listens to</source>
         <translation>Das Mikrofon, dem das Gesicht zuhört</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="55"/>
+        <location filename="../studio/live/LiveView.cpp" line="60"/>
+        <source>Draw the face over a camera&apos;s picture of you, wherever your face is in it, or into the still of the person (No camera)</source>
+        <translation>Das Gesicht über das Kamerabild von Ihnen zeichnen, wo immer Ihr Gesicht darin ist, oder in das Standbild der Person (Keine Kamera)</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="63"/>
         <source>The trained dynamic model that moves the face</source>
         <translation>Das trainierte dynamische Modell, das das Gesicht bewegt</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="58"/>
+        <location filename="../studio/live/LiveView.cpp" line="66"/>
         <source>Listen to the microphone and move the face as you speak</source>
         <translation>Dem Mikrofon zuhören und das Gesicht bewegen, während Sie sprechen</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="61"/>
+        <location filename="../studio/live/LiveView.cpp" line="69"/>
         <source>Stop listening; the session is kept for Save and Export</source>
         <translation>Nicht mehr zuhören; die Sitzung bleibt zum Speichern und Exportieren erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="63"/>
+        <location filename="../studio/live/LiveView.cpp" line="71"/>
         <source>Add the last session to the project as a sequence: its sound, generated faces and recognised phones</source>
         <translation>Die letzte Sitzung als Sequenz zum Projekt hinzufügen: ihren Ton, die erzeugten Gesichter und die erkannten Phone</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="66"/>
+        <location filename="../studio/live/LiveView.cpp" line="74"/>
         <source>Write the last session&apos;s faces with its sound as an MP4 video</source>
         <translation>Die Gesichter der letzten Sitzung mit ihrem Ton als MP4-Video schreiben</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="81"/>
+        <location filename="../studio/live/LiveView.cpp" line="90"/>
         <source>The phones recognised in the last seconds, the newest on the right</source>
         <translation>Die in den letzten Sekunden erkannten Phone, die neuesten rechts</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="87"/>
+        <location filename="../studio/live/LiveView.cpp" line="96"/>
         <source>Time from the sound to the frame that shows it, over the last %1 seconds</source>
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="157"/>
+        <location filename="../studio/live/LiveView.cpp" line="173"/>
         <source>No microphone found</source>
         <translation>Kein Mikrofon gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="177"/>
+        <location filename="../studio/live/LiveView.cpp" line="181"/>
+        <source>No camera</source>
+        <translation>Keine Kamera</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="182"/>
+        <source>The face is drawn into a still of the person</source>
+        <translation>Das Gesicht wird in ein Standbild der Person gezeichnet</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="230"/>
         <source>No trained model</source>
         <translation>Kein trainiertes Modell</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="206"/>
+        <location filename="../studio/live/LiveView.cpp" line="263"/>
         <source>No microphone was found. Connect one: the list above follows the devices as they come and go.</source>
         <translation>Es wurde kein Mikrofon gefunden. Schließen Sie eines an: Die Liste oben folgt den Geräten, wie sie kommen und gehen.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="218"/>
+        <location filename="../studio/live/LiveView.cpp" line="276"/>
         <source>Preparing: loading the phone recogniser and finding the face in the current sequence…</source>
         <translation>Vorbereitung: Die Phon-Erkennung wird geladen und das Gesicht in der aktuellen Sequenz gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="221"/>
+        <location filename="../studio/live/LiveView.cpp" line="279"/>
         <source>Listening. Speak, and the face follows.</source>
         <translation>Hört zu. Sprechen Sie, und das Gesicht folgt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="224"/>
+        <location filename="../studio/live/LiveView.cpp" line="282"/>
         <source>Finishing the last frames…</source>
         <translation>Die letzten Bilder werden fertiggestellt…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="230"/>
+        <location filename="../studio/live/LiveView.cpp" line="288"/>
         <source>Writing the video…</source>
         <translation>Das Video wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="232"/>
+        <location filename="../studio/live/LiveView.cpp" line="290"/>
         <source>The last session (%1 s) is kept: save it as a sequence, export it as a video, or start again.</source>
         <translation>Die letzte Sitzung (%1 s) ist erhalten: Speichern Sie sie als Sequenz, exportieren Sie sie als Video oder starten Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="238"/>
+        <location filename="../studio/live/LiveView.cpp" line="297"/>
         <source>Press Start and speak: the face moves with your voice.</source>
         <translation>Drücken Sie „Start“ und sprechen Sie: Das Gesicht bewegt sich mit Ihrer Stimme.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="243"/>
+        <location filename="../studio/live/LiveView.cpp" line="302"/>
         <source>This model uses phones in context, so its face waits for each phone to end: a few hundred milliseconds more. For the quickest face, train it without Phones in context.</source>
         <translation>Dieses Modell verwendet Phoneme im Kontext, daher wartet sein Gesicht, bis jedes Phonem zu Ende ist: einige hundert Millisekunden mehr. Für das schnellste Gesicht trainieren Sie es ohne „Phoneme im Kontext“.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="247"/>
+        <location filename="../studio/live/LiveView.cpp" line="306"/>
         <source>Only the first %1 minutes are kept for saving; the face went on moving after that.</source>
         <translation>Nur die ersten %1 Minuten bleiben zum Speichern erhalten; das Gesicht hat sich danach weiterbewegt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="267"/>
+        <location filename="../studio/live/LiveView.cpp" line="326"/>
         <source>Latency: %1 ms mean, %2 ms max</source>
         <translation>Latenz: %1 ms im Mittel, %2 ms maximal</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="270"/>
+        <location filename="../studio/live/LiveView.cpp" line="329"/>
         <source>Time from the sound to the frame that shows it, over the last %1 seconds; %2 ms of it the phone recogniser and the model wait for the sound that follows</source>
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden; %2 ms davon warten die Phon-Erkennung und das Modell auf den folgenden Ton</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="275"/>
+        <location filename="../studio/live/LiveView.cpp" line="334"/>
         <source>Latency: –</source>
         <translation>Latenz: –</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="277"/>
+        <location filename="../studio/live/LiveView.cpp" line="336"/>
         <source>%1 s, frame %2 at %3 fps</source>
         <translation>%1 s, Bild %2 bei %3 fps</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="328"/>
+        <location filename="../studio/live/LiveView.cpp" line="387"/>
         <source>The session&apos;s sound is written into the project&apos;s folder, and the bundled demo is read-only. Save the project in a folder of your own first?</source>
         <translation>Der Ton der Sitzung wird in den Ordner des Projekts geschrieben, und das mitgelieferte Demo ist schreibgeschützt. Das Projekt zuerst in einem eigenen Ordner speichern?</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="337"/>
+        <location filename="../studio/live/LiveView.cpp" line="396"/>
         <source>The live session is sequence %1, at the end of the list.</source>
         <translation>Die Live-Sitzung ist jetzt die Sequenz %1 am Ende der Liste.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="346"/>
+        <location filename="../studio/live/LiveView.cpp" line="405"/>
         <source>Export Live Session</source>
         <translation>Live-Sitzung exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="348"/>
+        <location filename="../studio/live/LiveView.cpp" line="407"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
@@ -2128,73 +2161,73 @@
         <translation>Der Kopf konnte nicht getrackt werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="367"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="358"/>
         <source>Recorded video (landmarks: tracked)</source>
         <translation>Aufgenommenes Video (Landmarken: getrackt)</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="372"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="363"/>
         <source>Generated: %1</source>
         <translation>Erzeugt: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="376"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="367"/>
         <source>Generated</source>
         <translation>Erzeugt</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="427"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="418"/>
         <source>The project has no appearance model (Faces ▸ Build AAM).</source>
         <translation>Das Projekt hat kein Erscheinungsmodell (Gesichter ▸ AAM erstellen).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="429"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="420"/>
         <source>Tracking the head pose…</source>
         <translation>Kopfhaltung wird getrackt…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="431"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="422"/>
         <source>This sequence has no phones (align it in the Timeline).</source>
         <translation>Diese Sequenz hat keine Phoneme (in der Zeitleiste alignieren).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="433"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="424"/>
         <source>Train a dynamic model in the Models panel to see the faces it generates.</source>
         <translation>Trainieren Sie ein dynamisches Modell im Bereich „Modelle“, um die erzeugten Gesichter zu sehen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="439"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="430"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="487"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="478"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 — Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="596"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="587"/>
         <source>Faces for new speech need the project&apos;s appearance model.</source>
         <translation>Gesichter für neue Sprache brauchen das Erscheinungsmodell des Projekts.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="597"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="588"/>
         <source>Build one with Faces ▸ Build AAM.</source>
         <translation>Erstellen Sie eines mit Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="602"/>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="658"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="593"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="649"/>
         <source>No faces could be generated for this speech.</source>
         <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="603"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="594"/>
         <source>Train a dynamic model in the Models panel first.</source>
         <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="630"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="621"/>
         <source>Generate faces for %1</source>
         <translation>Gesichter für %1 erzeugen</translation>
     </message>

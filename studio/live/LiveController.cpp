@@ -5,6 +5,7 @@
 #include "context/SequenceMedia.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
+#include "live/CameraFeed.h"
 #include "live/MicrophoneInput.h"
 
 #include "aam/AamModel.h"
@@ -32,7 +33,8 @@
 namespace lipsync::studio {
 
 LiveController::LiveController(StudioContext *context, QObject *parent)
-    : QObject(parent), m_context(context), m_microphone(new MicrophoneInput(this))
+    : QObject(parent), m_context(context), m_microphone(new MicrophoneInput(this)),
+      m_camera(std::make_shared<CameraFeed>())
 {
     qRegisterMetaType<LiveFrames>();
     connect(m_microphone, &MicrophoneInput::captured, this, &LiveController::take);
@@ -207,6 +209,7 @@ bool LiveController::start(const QString &kind, Input input, const QAudioDevice 
 void LiveController::launch(LiveSetup setup)
 {
     setup.renderer->setCompositeOptions(m_context->compositeOptions());
+    setup.camera = m_camera;
     setup.options.closeBilabials = m_context->closesLips();
     m_sampleRate = setup.acoustic->featureOptions().sampleRate;
     m_recording = Recording{};

@@ -40,6 +40,7 @@ class Task;
 
 namespace lipsync::studio {
 
+class CameraFeed;
 class MicrophoneInput;
 class StudioContext;
 
@@ -92,6 +93,11 @@ public:
     double algorithmicLatency() const { return m_algorithmicLatency; }
     // Latency from sound to frame over the last kLatencyWindowSeconds: false before any frame.
     bool latency(double *meanSeconds, double *maxSeconds) const;
+
+    // The camera the face is drawn over while it delivers pictures with a face in them (else the
+    // still of the person). Its pictures are not recorded: the recording's video is drawn into
+    // the still.
+    CameraFeed *camera() const { return m_camera.get(); }
 
     // The last finished session's recording (sound, features and phones), kept for Save and Export.
     bool hasRecording() const;
@@ -167,6 +173,7 @@ private:
     std::shared_ptr<const AamModel> m_rendererAam;
     QString m_rendererMedia;
     std::shared_ptr<FaceRenderer> m_renderer;
+    std::shared_ptr<CameraFeed> m_camera;
 
     int m_sampleRate = 16000;
     double m_frameRate = 25.0;

@@ -5,11 +5,13 @@
 #include "context/ModelKinds.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
+#include "live/CameraFeed.h"
 #include "live/LiveController.h"
 #include "live/PhoneStrip.h"
 #include "tasks/Task.h"
 
 #include <QAudioDevice>
+#include <QCameraDevice>
 #include <QComboBox>
 #include <QDir>
 #include <QFileDialog>
@@ -31,7 +33,8 @@ namespace lipsync::studio {
 LiveView::LiveView(StudioContext *context, std::function<bool()> saveProject, QWidget *parent)
     : QWidget(parent), m_context(context), m_saveProject(std::move(saveProject)),
       m_controller(new LiveController(context, this)), m_devices(new QMediaDevices(this)),
-      m_microphones(new QComboBox(this)), m_models(new QComboBox(this)), m_start(new QPushButton(tr("Start"), this)),
+      m_microphones(new QComboBox(this)), m_models(new QComboBox(this)), m_cameras(new QComboBox(this)),
+      m_start(new QPushButton(tr("Start"), this)),
       m_stop(new QPushButton(tr("Stop"), this)), m_save(new QPushButton(tr("Save as Sequence"), this)),
       m_export(new QPushButton(tr("Export Video…"), this)), m_face(new FrameView(this)), m_strip(new PhoneStrip(this)),
       m_latency(new QLabel(this)), m_progress(new QLabel(this)), m_message(new QLabel(this))
@@ -49,8 +52,13 @@ LiveView::LiveView(StudioContext *context, std::function<bool()> saveProject, QW
     modelLabel->setBuddy(m_models);
     m_microphones->setObjectName(QStringLiteral("liveMicrophone"));
     m_microphones->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_microphones->setMinimumContentsLength(12);
+    m_microphones->setMinimumContentsLength(8);
     m_microphones->setToolTip(tr("The microphone the face listens to"));
+    m_cameras->setObjectName(QStringLiteral("liveCamera"));
+    m_cameras->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_cameras->setMinimumContentsLength(8);
+    m_cameras->setToolTip(tr("Draw the face over a camera's picture of you, wherever your face is in it, or into "
+                             "the still of the person (No camera)"));
     m_models->setObjectName(QStringLiteral("liveModel"));
     m_models->setToolTip(tr("The trained dynamic model that moves the face"));
     m_start->setObjectName(QStringLiteral("liveStart"));
@@ -68,6 +76,7 @@ LiveView::LiveView(StudioContext *context, std::function<bool()> saveProject, QW
     header->addWidget(m_microphones, 2);
     header->addWidget(modelLabel);
     header->addWidget(m_models, 1);
+    header->addWidget(m_cameras, 1);
     header->addWidget(m_start);
     header->addWidget(m_stop);
     header->addStretch(1);
@@ -108,6 +117,13 @@ LiveView::LiveView(StudioContext *context, std::function<bool()> saveProject, QW
     connect(m_devices, &QMediaDevices::audioInputsChanged, this, [this] {
         fillMicrophones();
         updateControls();
+    });
+    connect(m_devices, &QMediaDevices::videoInputsChanged, this, &LiveView::fillCameras);
+    connect(m_cameras, &QComboBox::activated, this, &LiveView::useChosenCamera);
+    connect(m_controller->camera(), &CameraFeed::failed, this, [this](const QString &why) {
+        m_lastProblem = why;
+        m_cameras->setCurrentIndex(0);
+        useChosenCamera();
     });
     connect(m_controller, &LiveController::stateChanged, this, &LiveView::updateControls);
     connect(m_controller, &LiveController::recordingChanged, this, &LiveView::updateControls);
@@ -157,6 +173,43 @@ void LiveView::fillMicrophones()
         m_microphones->addItem(tr("No microphone found"));
 }
 
+void LiveView::fillCameras()
+{
+    const QByteArray current = m_cameras->currentData().toByteArray();
+    const QSignalBlocker block(m_cameras);
+    m_cameras->clear();
+    m_cameras->addItem(tr("No camera"));
+    m_cameras->setItemData(0, tr("The face is drawn into a still of the person"), Qt::ToolTipRole);
+    for (const QCameraDevice &device : QMediaDevices::videoInputs()) {
+        m_cameras->addItem(device.description(), device.id());
+        if (device.id() == current)
+            m_cameras->setCurrentIndex(m_cameras->count() - 1);
+    }
+    // The camera in use went away.
+    if (!current.isEmpty() && m_cameras->currentData().toByteArray() != current)
+        useChosenCamera();
+}
+
+void LiveView::useChosenCamera()
+{
+    CameraFeed *camera = m_controller->camera();
+    const QByteArray id = m_cameras->currentData().toByteArray();
+    camera->close();
+    if (id.isEmpty() || !isVisible())
+        return;
+    for (const QCameraDevice &device : QMediaDevices::videoInputs())
+        if (device.id() == id) {
+            QString why;
+            if (!camera->open(device, &why)) {
+                m_lastProblem = why;
+                const QSignalBlocker block(m_cameras);
+                m_cameras->setCurrentIndex(0);
+                updateControls();
+            }
+            return;
+        }
+}
+
 void LiveView::fillModels()
 {
     const QString current = chosenKind();
@@ -183,14 +236,18 @@ void LiveView::showEvent(QShowEvent *event)
     // The devices and models are looked at when the view is seen (the AAM loads then, not at startup).
     fillMicrophones();
     fillModels();
+    fillCameras();
+    useChosenCamera();
     updateControls();
 }
 
 void LiveView::hideEvent(QHideEvent *event)
 {
     // Another tab or a closed panel, not a minimised window: the microphone stops with the view.
-    if (!event->spontaneous())
+    if (!event->spontaneous()) {
         m_controller->stop();
+        m_controller->camera()->close();
+    }
     QWidget::hideEvent(event);
 }
 
@@ -208,6 +265,7 @@ void LiveView::updateControls()
     m_stop->setEnabled(state == State::Preparing || state == State::Running);
     m_microphones->setEnabled(idle && hasMicrophone);
     m_models->setEnabled(idle && !m_controller->trainedKinds().isEmpty());
+    m_cameras->setEnabled(m_cameras->count() > 1);
     const bool recorded = idle && m_controller->hasRecording();
     m_save->setEnabled(recorded && !exporting);
     m_export->setEnabled(recorded && !exporting);

@@ -8,6 +8,10 @@
 //
 // Hiding the view (another tab, a closed panel) stops a running session: the microphone is
 // never left listening unseen.
+//
+// The face is drawn into a still of the person, or over a camera chosen in the camera list: each
+// frame over the camera's newest picture, wherever the face is found in it (LiveController::camera).
+// Hiding the view closes the camera too.
 #include <QMediaDevices>
 #include <QWidget>
 
@@ -36,6 +40,7 @@ public:
     LiveController *controller() const { return m_controller; }
     QComboBox *microphoneCombo() const { return m_microphones; }
     QComboBox *modelCombo() const { return m_models; }
+    QComboBox *cameraCombo() const { return m_cameras; }
     QPushButton *startButton() const { return m_start; }
     QPushButton *stopButton() const { return m_stop; }
     QPushButton *saveButton() const { return m_save; }
@@ -67,6 +72,9 @@ protected:
 private:
     void fillMicrophones();
     void fillModels();
+    void fillCameras();
+    // Opens the camera chosen in the list (none: closes it).
+    void useChosenCamera();
     void updateControls();
     void showFrames();
     void say(const QString &message);
@@ -77,6 +85,7 @@ private:
     QMediaDevices *m_devices;
     QComboBox *m_microphones;
     QComboBox *m_models;
+    QComboBox *m_cameras;
     QPushButton *m_start;
     QPushButton *m_stop;
     QPushButton *m_save;

@@ -3,6 +3,8 @@
 #include "align/AcousticModel.h"
 #include "align/PhoneBigram.h"
 #include "dynamics/DynamicModel.h"
+#include "live/CameraFeed.h"
+#include "render/CameraCompositor.h"
 #include "render/FaceRenderer.h"
 
 #include <cmath>
@@ -56,9 +58,22 @@ void LiveWorker::finish()
     m_session.reset();
 }
 
+void LiveWorker::drawOverCamera(LiveFrame &frame)
+{
+    cv::Mat picture = m_setup.camera && m_setup.aam ? m_setup.camera->latest() : cv::Mat();
+    if (picture.empty())
+        return;
+    if (!m_camera)
+        m_camera = std::make_unique<CameraCompositor>(*m_setup.aam);
+    if (m_camera->compose(picture, frame.features, m_setup.renderer->compositeOptions()))
+        frame.image = picture;
+}
+
 LiveFrames LiveWorker::collect(std::vector<LiveFrame> ready, double fed, Clock::time_point captured, bool last)
 {
     LiveFrames out;
+    for (LiveFrame &f : ready)
+        drawOverCamera(f);
     const Clock::time_point drawn = Clock::now();
     const double sinceCapture = std::chrono::duration<double>(drawn - captured).count();
     for (LiveFrame &f : ready) {

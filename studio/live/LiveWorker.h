@@ -6,6 +6,10 @@
 // thread by queued signals: the frames that became ready, as images, with their features,
 // phones and latency, and the recognised phones of the last seconds for the phone strip.
 //
+// With a camera (LiveSetup::camera), each frame is drawn again over the camera's newest picture
+// (render/CameraCompositor tracks the face there); a picture without a face, or no picture yet,
+// leaves the frame as the session drew it into the still.
+//
 // A frame's latency is the wall time from the capture of the newest sound it shows to the
 // moment it is drawn: the block's last sample was captured at `captured`, the frame's newest
 // sound (soundEnd) lies (fed - soundEnd) seconds before it, and the frame is drawn when push()
@@ -27,12 +31,15 @@
 namespace lipsync {
 class AamModel;
 class AcousticModel;
+class CameraCompositor;
 class DynamicModel;
 class FaceRenderer;
 class PhoneBigram;
 }
 
 namespace lipsync::studio {
+
+class CameraFeed;
 
 // What a session runs on, kept alive by the worker for as long as the session lives.
 struct LiveSetup
@@ -42,6 +49,7 @@ struct LiveSetup
     std::shared_ptr<const DynamicModel> model;
     std::shared_ptr<const AamModel> aam; // the renderer's
     std::shared_ptr<FaceRenderer> renderer;
+    std::shared_ptr<CameraFeed> camera; // null: the still of the person
     LiveOptions options;
 };
 
@@ -84,9 +92,12 @@ signals:
 
 private:
     LiveFrames collect(std::vector<LiveFrame> ready, double fed, Clock::time_point captured, bool last);
+    // Draws the frame again over the camera's newest picture when there is one with a face.
+    void drawOverCamera(LiveFrame &frame);
 
     LiveSetup m_setup;
     std::unique_ptr<LiveSession> m_session;
+    std::unique_ptr<CameraCompositor> m_camera;
     std::atomic<bool> m_abandoned{false};
 };
 

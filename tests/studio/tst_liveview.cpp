@@ -8,6 +8,8 @@
 //    phone tier, its sound as a WAV in the project's live folder) as one undo step; Undo
 //    removes it.
 //  - Export Video writes an MP4 of 74 frames with sound.
+//  - Over a camera's pictures the face is drawn where the face is found in them; without, into the
+//    still again.
 //  - Hiding the view stops a running session; closing the window with a session running
 //    neither hangs nor crashes.
 // LIPSYNC_PREVIEW_SHOT=DIR keeps pictures of the window with the Live view (at its 1280x800 and,
@@ -27,6 +29,8 @@
 #include "aam/AamModel.h"
 #include "io/AudioDecoder.h"
 #include "io/MediaInfo.h"
+#include "io/VideoReader.h"
+#include "live/CameraFeed.h"
 #include "tasks/TaskRunner.h"
 
 #include <QAction>
@@ -46,6 +50,8 @@
 #include <QUndoStack>
 
 #include <cmath>
+
+#include <opencv2/imgproc.hpp>
 
 using namespace lipsync;
 using namespace lipsync::studio;
@@ -279,6 +285,47 @@ private slots:
         QCOMPARE(info.frameCount, m_frames);
         QVERIFY(info.hasAudio);
         QVERIFY(live()->exportButton()->isEnabled());
+    }
+
+    // A camera's pictures (here a GRID frame of another clip at twice the size, handed in as a
+    // camera delivers them): the face is drawn over each picture where the face is found in it,
+    // the picture left as it is away from the face; without pictures, into the still again.
+    void drawsOverTheCamerasPicture()
+    {
+        QVERIFY(live()->cameraCombo()->count() >= 1);
+        QCOMPARE(live()->cameraCombo()->itemText(0), QStringLiteral("No camera"));
+        VideoReader clip((kDemo + "/media/bbaf2n.mpg").toStdString());
+        cv::Mat frame;
+        cv::resize(clip.frame(30), frame, cv::Size(), 2.0, 2.0, cv::INTER_CUBIC);
+        const QImage picture =
+            QImage(frame.data, frame.cols, frame.rows, int(frame.step), QImage::Format_BGR888).copy();
+        controller()->camera()->setFrame(picture);
+        QVERIFY(startFed());
+        feedAtRealTime(m_sound, m_sound.size() / 2);
+        QTRY_VERIFY_WITH_TIMEOUT(controller()->framesShown() > 20, 20000);
+        const QImage shown = controller()->lastImage().convertToFormat(QImage::Format_BGR888);
+        QCOMPARE(shown.size(), picture.size());
+        QCOMPARE(shown.pixel(10, 10), picture.pixel(10, 10)); // the background, untouched
+        // Around the mouth (the lower middle of the face) the generated face differs from the
+        // camera's own.
+        const QRect mouth(300, 400, 120, 60);
+        double difference = 0;
+        for (int y = mouth.top(); y <= mouth.bottom(); ++y)
+            for (int x = mouth.left(); x <= mouth.right(); ++x)
+                difference += std::abs(qGray(shown.pixel(x, y)) - qGray(picture.pixel(x, y)));
+        difference /= mouth.width() * mouth.height();
+        QVERIFY2(difference > 1.0, qPrintable(QString::number(difference)));
+        saveShot(m_window, QStringLiteral("live-camera.png"));
+        live()->stopButton()->click();
+        QTRY_COMPARE_WITH_TIMEOUT(controller()->state(), LiveController::State::Idle, 30000);
+        // No camera: the still of the person (the demo's 360 x 288) again.
+        controller()->camera()->close();
+        QVERIFY(startFed());
+        feedAtRealTime(m_sound, 16000);
+        QTRY_VERIFY_WITH_TIMEOUT(controller()->framesShown() > 5, 20000);
+        QCOMPARE(controller()->lastImage().size(), QSize(360, 288));
+        live()->stopButton()->click();
+        QTRY_COMPARE_WITH_TIMEOUT(controller()->state(), LiveController::State::Idle, 30000);
     }
 
     void hidingTheViewStopsTheSession()
