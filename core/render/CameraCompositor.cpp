@@ -24,8 +24,8 @@ std::unique_ptr<FaceDetector> detectorUnless(FaceDetector *given)
 CameraCompositor::CameraCompositor(const AamModel &aam, FaceDetector *detector)
     : m_aam(aam),
       m_ownDetector(detectorUnless(detector)),
-      m_synthesizer(aam),
       m_detector(detector ? detector : m_ownDetector.get()),
+      m_synthesizer(aam),
       m_tracker(aam, m_detector)
 {
 }
