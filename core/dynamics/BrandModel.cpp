@@ -63,8 +63,10 @@ void BrandModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &f
     else
         gv = 2.0 * st.globalVariance;
     for (int n = 0; n < P; ++n) {
-        if (st.transitionCount[n] > 0) {
+        if (st.transitionCount[n] >= kMinimumVarianceFrames) {
             dv.row(n) = (dv.row(n) / double(st.transitionCount[n])).cwiseMax(st.floor.transpose());
+        } else if (st.transitionCount[n] > 0) {
+            dv.row(n) = gv.transpose(); // a rare phone (§0): its own delta mean, the global variance
         } else {
             dm.row(n) = gm.transpose();
             dv.row(n) = gv.transpose();

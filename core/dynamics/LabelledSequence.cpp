@@ -93,9 +93,12 @@ FrameStatistics computeFrameStatistics(const std::vector<LabelledSequence> &sequ
     st.floor = (1e-6 * st.globalVariance).cwiseMax(1e-12);
     st.globalVariance = st.globalVariance.cwiseMax(st.floor);
     for (int n = 0; n < P; ++n) {
-        if (st.count[n] > 0) {
+        if (st.count[n] >= kMinimumVarianceFrames) {
             st.variance.row(n) /= double(st.count[n]);
             st.variance.row(n) = st.variance.row(n).cwiseMax(st.floor.transpose());
+        } else if (st.count[n] > 0) {
+            // A rare phone (§0): its own mean, the global variance.
+            st.variance.row(n) = st.globalVariance.transpose();
         } else {
             // Unseen state (§1 [choice]): global mean and variance.
             st.mean.row(n) = st.globalMean.transpose();

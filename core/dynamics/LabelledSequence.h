@@ -30,11 +30,18 @@ void validateLabels(const std::vector<int> &labels, const std::string &what = "l
 // One label of a streamer: throws lipsync::Error unless it is in 0..states-1.
 void checkStateLabel(int label, int states);
 
+// Fewest frames a state's variance is estimated from (docs/models.md §0, "Rare phones"): from
+// fewer, the estimate can sit near the floor by chance and make every later frame of that phone
+// improbable beyond measure, so the global variance stands in, as for an unseen phone. With 10
+// frames a variance under 1 % of the true one has odds of about 1e-6 per dimension.
+constexpr int kMinimumVarianceFrames = 10;
+
 // Per-state frame statistics shared by the models' closed-form estimates and back-offs.
 struct FrameStatistics
 {
     Eigen::MatrixXd mean;       // P x d: m_n (§1), the global mean for unseen states
-    Eigen::MatrixXd variance;   // P x d: c_n (§1) floored, the global variance for unseen states
+    Eigen::MatrixXd variance;   // P x d: c_n (§1) floored; the global variance for states with fewer
+                                // than kMinimumVarianceFrames frames (unseen ones included)
     Eigen::VectorXi count;      // N_n
     Eigen::VectorXi startCount; // N^(1)_n
     Eigen::VectorXi transitionCount; // N^{>=2}_n

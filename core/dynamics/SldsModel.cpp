@@ -316,7 +316,10 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
                 const double qn = (Sxx[n] - 2 * an * Sxm[n] - 2 * nun * sx[n] + an * an * Smm[n]
                                    + 2 * an * nun * sm[n] + nun * nun * N2[n])
                                   / N2[n];
-                q[n] = std::max(qn, floor);
+                // A rare phone (§0) keeps its process noise: from a handful of frames it could
+                // sit at the floor by chance.
+                if (N2[n] >= kMinimumVarianceFrames)
+                    q[n] = std::max(qn, floor);
             }
         }
         if (m_options.sharedR) {
@@ -324,7 +327,7 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
             r.setConstant(shared);
         } else {
             for (int n = 0; n < P; ++n)
-                if (Rn[n] > 0)
+                if (Rn[n] >= kMinimumVarianceFrames)
                     r[n] = std::max(Rsum[n] / Rn[n], floor);
         }
         for (int n = 0; n < P; ++n) {
@@ -469,9 +472,10 @@ double SldsModel::emMatrix(const std::vector<LabelledSequence> &sequences,
             const Eigen::MatrixXd Q = sums.processNoise(At);
             p.A[i] = At.leftCols(d);
             p.nu.row(n) = At.col(d).transpose();
-            p.Q[i] = floorCovariance(Q, st.floor, full);
+            if (N2[n] >= kMinimumVarianceFrames) // a rare phone (§0) keeps its process noise
+                p.Q[i] = floorCovariance(Q, st.floor, full);
         }
-        if (!m_options.sharedR && Rn[n] > 0)
+        if (!m_options.sharedR && Rn[n] >= kMinimumVarianceFrames)
             p.R[i] = floorCovariance(Rsum[i] / Rn[n], st.floor, full);
         if (N1[n] > 0) {
             const Eigen::VectorXd m = x1.row(n).transpose() / N1[n];
