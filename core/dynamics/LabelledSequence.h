@@ -33,7 +33,7 @@ void checkStateLabel(int label, int states);
 // Fewest frames a state's variance is estimated from (docs/models.md §0, "Rare phones"): from
 // fewer, the estimate can sit near the floor by chance and make every later frame of that phone
 // improbable beyond measure, so the global variance stands in, as for an unseen phone. With 10
-// frames a variance under 1 % of the true one has odds of about 1e-6 per dimension.
+// frames an estimate under 1 % of the true variance has odds of about 3e-8 per dimension.
 constexpr int kMinimumVarianceFrames = 10;
 
 // Per-state frame statistics shared by the models' closed-form estimates and back-offs.
