@@ -11,7 +11,6 @@
 
 #include "align/SpeakerAdaptation.h"
 
-#include <QDir>
 #include <QElapsedTimer>
 #include <QJsonArray>
 
@@ -24,9 +23,6 @@ namespace {
 int runAlignerAdapt(const cli::CommandLine &a)
 {
     const bool json = a.isSet("json");
-    for (const char *folder : {"media", "transcripts"})
-        if (!QDir(a.value(folder)).exists())
-            return cli::fail(QStringLiteral("%1: no such folder").arg(a.value(folder)));
     const QString modelPath = cli::alignerModelOrDefault(a.value("aligner"), QStringLiteral("aligner adapt"));
     QElapsedTimer timer;
     timer.start();

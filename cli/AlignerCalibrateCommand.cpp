@@ -12,7 +12,6 @@
 #include "align/AlignerTrainer.h"
 #include "util/Error.h"
 
-#include <QDir>
 #include <QElapsedTimer>
 #include <QJsonArray>
 
@@ -25,9 +24,6 @@ namespace {
 int runAlignerCalibrate(const cli::CommandLine &a)
 {
     const bool json = a.isSet("json");
-    for (const char *folder : {"media", "transcripts"})
-        if (!QDir(a.value(folder)).exists())
-            return cli::fail(QStringLiteral("%1: no such folder").arg(a.value(folder)));
     const QString modelPath = cli::alignerModelOrDefault(a.value("aligner"), QStringLiteral("aligner calibrate"));
     QElapsedTimer timer;
     timer.start();

@@ -81,6 +81,9 @@ std::vector<TrainingUtterance> loadTranscribedFolder(const QString &mediaPath, c
                                                      bool quiet, QJsonArray &skipped, int shard, int shards)
 {
     std::vector<Job> jobs;
+    // listMediaFolder names a missing media folder; a missing transcript folder is named here.
+    if (!QDir(transcriptPath).exists())
+        throw Error("no such folder", transcriptPath.toStdString());
     const std::vector<MediaFile> files = listMediaFolder(mediaPath.toStdString(), transcriptPath.toStdString());
     if (files.empty())
         throw Error("no media files (" + mediaExtensionList() + ")", mediaPath.toStdString());

@@ -33,12 +33,12 @@ CommandOption pronunciationsOption();
 // --media DIR, --transcripts DIR and --pronunciations DICT: what loadTranscribedFolder() reads.
 std::vector<CommandOption> transcribedFolderOptions();
 
-// The transcribed recordings of a folder (`aligner train`, `aligner adapt`): every media file in
+// The transcribed recordings of a folder (`aligner train`, `adapt`, `calibrate`): every media file in
 // `mediaDir` (io/MediaFolder) with a transcript of the same name in `transcriptDir`, decoded and
 // turned into features as `model` computes them, in parallel.
 // Recordings that cannot be used (no transcript, unknown words, undecodable or silent audio) go
 // to `skipped` ({id, reason}), also printed to stderr unless `quiet`. Throws lipsync::Error naming
-// the folder when it has no media files.
+// the folder when either folder does not exist or the media folder has no media files.
 // With `shards` > 1 only every shards-th recording from the shard-th (0-based) is used.
 std::vector<TrainingUtterance> loadTranscribedFolder(const QString &mediaDir, const QString &transcriptDir,
                                                      const AcousticModel &model, const Lexicon &lexicon,

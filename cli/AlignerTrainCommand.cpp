@@ -85,9 +85,6 @@ std::vector<TrainingUtterance> loadFolder(const cli::CommandLine &a, const Acous
 {
     if (!a.isSet("media") || !a.isSet("transcripts"))
         throw cli::UsageError(QStringLiteral("--media DIR and --transcripts DIR name the recordings to train on"));
-    for (const char *folder : {"media", "transcripts"})
-        if (!QDir(a.value(folder)).exists())
-            throw Error("no such folder", a.value(folder).toStdString());
     const auto lexicon = cli::makeLexicon(a.value("pronunciations"));
     const cli::Shard shard = cli::shardOf(a);
     std::vector<TrainingUtterance> utterances = cli::loadTranscribedFolder(
