@@ -57,11 +57,6 @@ void CameraFeed::close()
     m_latest.release();
 }
 
-bool CameraFeed::isOpen() const
-{
-    return m_camera != nullptr;
-}
-
 void CameraFeed::onVideoFrame(const QVideoFrame &frame)
 {
     if (frame.isValid())
@@ -76,11 +71,8 @@ void CameraFeed::setFrame(const QImage &image)
     const cv::Mat view(bgr.height(), bgr.width(), CV_8UC3, const_cast<uchar *>(bgr.constBits()),
                        size_t(bgr.bytesPerLine()));
     cv::Mat copy = view.clone();
-    {
-        const std::lock_guard lock(m_mutex);
-        m_latest = std::move(copy);
-    }
-    ++m_frames;
+    const std::lock_guard lock(m_mutex);
+    m_latest = std::move(copy);
 }
 
 cv::Mat CameraFeed::latest() const

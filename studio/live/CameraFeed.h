@@ -9,7 +9,6 @@
 
 #include <opencv2/core.hpp>
 
-#include <atomic>
 #include <memory>
 #include <mutex>
 
@@ -33,13 +32,11 @@ public:
     bool open(const QCameraDevice &device, QString *why = nullptr);
     // Stops the camera and forgets its frames.
     void close();
-    bool isOpen() const;
 
     // The newest frame from any source (any thread may call these).
     void setFrame(const QImage &image);
     // A copy of the newest frame (8-bit BGR), empty before the first one.
     cv::Mat latest() const;
-    quint64 framesReceived() const { return m_frames.load(); }
 
 signals:
     // The camera stopped with an error (it was unplugged, or another program holds it).
@@ -50,7 +47,6 @@ private:
 
     mutable std::mutex m_mutex;
     cv::Mat m_latest;
-    std::atomic<quint64> m_frames{0};
     std::unique_ptr<QCamera> m_camera;
     std::unique_ptr<QMediaCaptureSession> m_capture;
     QVideoSink *m_sink = nullptr;
