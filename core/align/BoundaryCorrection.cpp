@@ -85,13 +85,14 @@ std::string lowerCase(std::string s)
     return s;
 }
 
-BoundaryError describe(const AlignmentResult &r, const Edge &e)
+// The boundary `e` of `r`, whose phones on either side are `phones` (phonesAt).
+BoundaryError describe(const AlignmentResult &r, const Edge &e, std::pair<int, int> phones)
 {
     BoundaryError b;
     b.kind = e.kind;
     b.leftWord = lowerCase(labelOr(r.words.intervals, e.leftInterval, e.kind, true));
     b.rightWord = lowerCase(labelOr(r.words.intervals, e.rightInterval, e.kind, false));
-    const auto [lp, rp] = phonesAt(r.phones, e.time);
+    const auto [lp, rp] = phones;
     b.leftPhone = labelOr(r.phones.intervals, lp, e.kind, true);
     b.rightPhone = labelOr(r.phones.intervals, rp, e.kind, false);
     return b;
@@ -171,7 +172,7 @@ std::vector<BoundaryError> BoundaryCorrection::errors(const AlignmentResult &ali
         return {};
     std::vector<BoundaryError> out;
     for (const Edge &e : edges) {
-        BoundaryError b = describe(aligned, e);
+        BoundaryError b = describe(aligned, e, phonesAt(aligned.phones, e.time));
         const Interval &own = *ref[size_t(e.word)];
         switch (e.kind) {
         case BoundaryKind::Onset:
@@ -275,10 +276,10 @@ void BoundaryCorrection::apply(AlignmentResult &alignment, const std::vector<dou
     for (const Edge &e : edgesOf(alignment.words)) {
         if (std::any_of(keep.begin(), keep.end(), [&](double t) { return std::abs(t - e.time) < kSameTime; }))
             continue;
-        const double shift = offset(describe(alignment, e));
+        const auto [lp, rp] = phonesAt(alignment.phones, e.time);
+        const double shift = offset(describe(alignment, e, {lp, rp}));
         if (shift == 0.0)
             continue;
-        const auto [lp, rp] = phonesAt(alignment.phones, e.time);
         // Within the phones (or, at the ends of the recording, the one phone) on either side.
         const double lo = lp >= 0 ? phones[size_t(lp)].start + kMinimumPhone : e.time;
         const double hi = rp >= 0 ? phones[size_t(rp)].end - kMinimumPhone : e.time;
