@@ -123,9 +123,11 @@ BoundaryCorrection AlignerTrainer::calibrate(const AcousticModel &model, const s
     const ForcedAligner aligner(model);
     lipsync::blockingMap(timed, [&](size_t i) {
         const TrainingUtterance &u = utterances[i];
+        // The transcript's words, as io/Transcript takes them from a timed tier: every interval
+        // but the silences (a breath is a word the aligner pronounces).
         std::vector<std::string> words;
         for (const Interval &w : u.reference.intervals)
-            if (!PhoneSet::isSilence(w.label) && !PhoneSet::isBreath(w.label))
+            if (!PhoneSet::isSilence(w.label))
                 words.push_back(w.label);
         if (words.size() != u.pronunciations.size())
             return;

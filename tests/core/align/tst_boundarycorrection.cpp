@@ -8,7 +8,7 @@
 //  - the model file keeps the correction exactly (version 2; version 1 without one), and damaged
 //    correction lines are errors naming the file and line;
 //  - calibrate() on the demo's GRID clips and their .align timings, with the shipped model: the
-//    recordings without timing or with other words are left out, and the correction learned
+//    recordings without timing or with other words are left out, one with a breath is used, and the correction learned
 //    brings the clips' boundaries closer to their timings.
 #include "align/AcousticModel.h"
 #include "align/AlignerTrainer.h"
@@ -17,6 +17,7 @@
 #include "align/ForcedAligner.h"
 #include "io/Transcript.h"
 #include "util/Error.h"
+#include "util/PhoneSet.h"
 
 #include <QTest>
 
@@ -238,14 +239,29 @@ private slots:
         utterances.back().reference.intervals.erase(utterances.back().reference.intervals.begin() + 1); // other words
         utterances.push_back(utterances[1]);
         utterances.back().reference = {};                          // no timing: not used
+        {
+            // A breath in the leading silence: a word of the transcript (io/Transcript keeps it),
+            // pronounced and aligned, a pause for the boundaries.
+            const char *id = "bwbg8n";
+            Transcript t = readTranscript(kDemo + id + ".align");
+            std::vector<Interval> &iv = t.timing.intervals;
+            QVERIFY(!iv.empty() && PhoneSet::isSilence(iv.front().label));
+            const double start = iv.front().end;
+            iv.front().end = start / 3;
+            iv.insert(iv.begin() + 1, {{start / 3, 2 * start / 3, "br"}, {2 * start / 3, start, "sil"}});
+            std::vector<std::string> words{"br"};
+            words.insert(words.end(), t.words.begin(), t.words.end());
+            const PreparedUtterance u = prepareUtterance(id, kDemo + id + ".mpg", words, model, lexicon);
+            utterances.push_back({id, u.features, u.pronunciations, t.timing});
+        }
         BoundaryCorrection::Options options;
         options.minimumCounts = {3, 6};
         options.folds = 2;
         BoundaryCorrectionReport report;
         const BoundaryCorrection c = AlignerTrainer::calibrate(model, utterances, options, &report);
-        QCOMPARE(report.utterances, 10);
+        QCOMPARE(report.utterances, 11);
         QCOMPARE(report.skipped, 1);
-        QCOMPARE(report.boundaries, 120); // 6 words a clip: 2 silence edges and 5 junctions of 2
+        QCOMPARE(report.boundaries, 132); // 6 words a clip: 2 silence edges and 5 junctions of 2
         QVERIFY(report.withinBefore > 0.5 && report.withinBefore <= 1.0);
         QVERIFY(report.withinAfter >= report.withinBefore);
         QCOMPARE(c.empty(), report.minimumCount == 0);
