@@ -25,13 +25,17 @@ Eigen::VectorXd slowPart(const Frame &frame, Eigen::Index t, Eigen::Index T, int
     return sum / double(window);
 }
 
-// y' = m + g (s - m) + h (y - s) for one frame y with slow part s; window 0: m + g (y - m).
-Eigen::VectorXd compensateFrame(const Eigen::VectorXd &y, const Eigen::VectorXd &slow, const Eigen::VectorXd &mean,
-                                const Eigen::VectorXd &gain, const Eigen::VectorXd &detailGain)
+// One frame y with slow part s and fast-window mean f: y' = m + g (s - m) + h (f - s) + (y - f);
+// without a fast window y' = m + g (s - m) + h (y - s); window 0: y' = m + g (y - m) (§5.1).
+Eigen::VectorXd compensateFrame(const Eigen::VectorXd &y, const Eigen::VectorXd &slow, const Eigen::VectorXd &fast,
+                                const Eigen::VectorXd &mean, const Eigen::VectorXd &gain,
+                                const Eigen::VectorXd &detailGain)
 {
     if (detailGain.size() == 0)
         return mean + gain.cwiseProduct(y - mean);
-    return mean + gain.cwiseProduct(slow - mean) + detailGain.cwiseProduct(y - slow);
+    if (fast.size() == 0)
+        return mean + gain.cwiseProduct(slow - mean) + detailGain.cwiseProduct(y - slow);
+    return mean + gain.cwiseProduct(slow - mean) + detailGain.cwiseProduct(fast - slow) + (y - fast);
 }
 
 // The slow parts of every frame of `y` (T x d).
@@ -60,9 +64,10 @@ class CompensatedStreamer : public StreamingGenerator
 {
 public:
     CompensatedStreamer(std::unique_ptr<StreamingGenerator> inner, Eigen::VectorXd mean, Eigen::VectorXd gain,
-                        Eigen::VectorXd detailGain, int window)
+                        Eigen::VectorXd detailGain, int window, int fastWindow)
         : m_inner(std::move(inner)), m_mean(std::move(mean)), m_gain(std::move(gain)),
-          m_detailGain(std::move(detailGain)), m_half(window / 2), m_window(window), m_frame(m_mean.size())
+          m_detailGain(std::move(detailGain)), m_half(window / 2), m_window(window), m_fastWindow(fastWindow),
+          m_frame(m_mean.size())
     {
     }
     int latency() const override { return m_inner->latency() < 0 ? -1 : m_inner->latency() + m_half; }
@@ -91,7 +96,10 @@ private:
             const Eigen::Index T = m_finished ? m_received : m_received + m_half + 1; // frames beyond are not needed
             auto frame = [&](Eigen::Index k) -> Eigen::VectorXd { return m_frames[size_t(k - m_first)]; };
             const Eigen::VectorXd slow = m_detailGain.size() ? slowPart(frame, m_next, T, m_window) : Eigen::VectorXd();
-            m_ready.push(compensateFrame(frame(m_next), slow, m_mean, m_gain, m_detailGain));
+            const Eigen::VectorXd fast = m_detailGain.size() && m_fastWindow > 0
+                                             ? slowPart(frame, m_next, T, m_fastWindow)
+                                             : Eigen::VectorXd();
+            m_ready.push(compensateFrame(frame(m_next), slow, fast, m_mean, m_gain, m_detailGain));
             ++m_next;
             // Frames before next - half are no longer in any window (frame 0 stays while it is
             // the clamped edge).
@@ -104,7 +112,7 @@ private:
 
     std::unique_ptr<StreamingGenerator> m_inner;
     Eigen::VectorXd m_mean, m_gain, m_detailGain;
-    const int m_half, m_window;
+    const int m_half, m_window, m_fastWindow;
     Eigen::VectorXd m_frame;
     std::deque<Eigen::VectorXd> m_frames; // inner frames m_first .. m_received - 1
     Eigen::Index m_first = 0, m_received = 0, m_next = 0;
@@ -133,6 +141,7 @@ void DynamicModel::train(const std::vector<LabelledSequence> &sequences, Feedbac
     m_gain.resize(0);
     m_detailGain.resize(0);
     m_window = 0;
+    m_fastWindow = 0;
     if (!m_compensate)
         return;
     // The spreads of both bands, about the training mean, pooled over every training frame (§5.1).
@@ -144,7 +153,7 @@ void DynamicModel::train(const std::vector<LabelledSequence> &sequences, Feedbac
         frames += double(s.features.rows());
     }
     mean /= frames;
-    const int window = kCompensationWindow;
+    const int window = kCompensationWindow, fastWindow = kCompensationFastWindow;
     Eigen::VectorXd realSlow = Eigen::VectorXd::Zero(d), generatedSlow = realSlow, realDetail = realSlow,
                     generatedDetail = realSlow;
     for (const LabelledSequence &s : sequences) {
@@ -154,13 +163,14 @@ void DynamicModel::train(const std::vector<LabelledSequence> &sequences, Feedbac
         const Eigen::MatrixXd sr = slowParts(real, window), sg = slowParts(generated, window);
         realSlow += (sr.rowwise() - mean.transpose()).colwise().squaredNorm().transpose();
         generatedSlow += (sg.rowwise() - mean.transpose()).colwise().squaredNorm().transpose();
-        realDetail += (real - sr).colwise().squaredNorm().transpose();
-        generatedDetail += (generated - sg).colwise().squaredNorm().transpose();
+        realDetail += (slowParts(real, fastWindow) - sr).colwise().squaredNorm().transpose();
+        generatedDetail += (slowParts(generated, fastWindow) - sg).colwise().squaredNorm().transpose();
     }
     m_mean = mean;
     m_gain = gainOf(realSlow, generatedSlow);
     m_detailGain = gainOf(realDetail, generatedDetail);
     m_window = window;
+    m_fastWindow = fastWindow;
 }
 
 Eigen::MatrixXd DynamicModel::compensate(const Eigen::MatrixXd &y) const
@@ -168,11 +178,13 @@ Eigen::MatrixXd DynamicModel::compensate(const Eigen::MatrixXd &y) const
     if (m_gain.size() == 0)
         return y;
     const Eigen::MatrixXd slow = m_window > 0 ? slowParts(y, m_window) : Eigen::MatrixXd();
+    const Eigen::MatrixXd fast = m_fastWindow > 0 ? slowParts(y, m_fastWindow) : Eigen::MatrixXd();
+    auto row = [](const Eigen::MatrixXd &m, Eigen::Index t) {
+        return m.size() ? Eigen::VectorXd(m.row(t).transpose()) : Eigen::VectorXd();
+    };
     Eigen::MatrixXd out(y.rows(), y.cols());
     for (Eigen::Index t = 0; t < y.rows(); ++t)
-        out.row(t) = compensateFrame(y.row(t).transpose(), m_window > 0 ? Eigen::VectorXd(slow.row(t).transpose())
-                                                                        : Eigen::VectorXd(),
-                                     m_mean, m_gain, m_detailGain)
+        out.row(t) = compensateFrame(y.row(t).transpose(), row(slow, t), row(fast, t), m_mean, m_gain, m_detailGain)
                          .transpose();
     return out;
 }
@@ -187,22 +199,27 @@ std::unique_ptr<StreamingGenerator> DynamicModel::streamer() const
     std::unique_ptr<StreamingGenerator> inner = makeStreamer();
     if (m_gain.size() == 0)
         return inner;
-    return std::make_unique<CompensatedStreamer>(std::move(inner), m_mean, m_gain, m_detailGain, m_window);
+    return std::make_unique<CompensatedStreamer>(std::move(inner), m_mean, m_gain, m_detailGain, m_window,
+                                                 m_fastWindow);
 }
 
 void DynamicModel::setCompensation(const Eigen::VectorXd &mean, const Eigen::VectorXd &gain,
-                                   const Eigen::VectorXd &detailGain, int window)
+                                   const Eigen::VectorXd &detailGain, int window, int fastWindow)
 {
     if (mean.size() == 0 && gain.size() == 0) {
         m_mean.resize(0);
         m_gain.resize(0);
         m_detailGain.resize(0);
         m_window = 0;
+        m_fastWindow = 0;
         return;
     }
     if ((detailGain.size() == 0) != (window == 0) || (window != 0 && (window < 3 || window % 2 == 0)))
         throw Error("the variance compensation's window must be an odd number of frames from 3, with a detail "
                     "gain for each dimension (or neither)");
+    if (fastWindow != 0 && (window == 0 || fastWindow < 3 || fastWindow % 2 == 0 || fastWindow >= window))
+        throw Error("the variance compensation's fast window must be an odd number of frames from 3, shorter "
+                    "than its window");
     if (detailGain.size() != 0 && (detailGain.size() != m_dimension || !detailGain.allFinite() || (detailGain.array() <= 0.0).any()))
         throw Error("the variance compensation's detail gains must be positive and finite, one per dimension");
     if (mean.size() != m_dimension || gain.size() != m_dimension)
@@ -214,6 +231,7 @@ void DynamicModel::setCompensation(const Eigen::VectorXd &mean, const Eigen::Vec
     m_gain = gain;
     m_detailGain = detailGain;
     m_window = window;
+    m_fastWindow = fastWindow;
 }
 
 void DynamicModel::setStateCount(int states)

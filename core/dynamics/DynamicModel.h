@@ -57,28 +57,33 @@ public:
     // Variance compensation (docs/models.md §5.1), as global-variance compensation and the
     // modulation-spectrum post-filter of HMM speech synthesis: the most likely trajectory of every
     // model is smoother than the recordings it was trained on. It is split into its slow part s
-    // (the centred moving average over `window` frames, about a syllable) and the detail y - s;
-    // each is scaled per dimension to the spread the training features have in that band:
-    //   y' = m + g (s - m) + h (y - s),
+    // (the centred moving average over `window` frames, about a syllable), its detail f - s (f the
+    // centred mean over `fastWindow` frames) and the fastest part y - f; the first two are scaled
+    // per dimension to the spread the training features have in that band, the fastest is kept
+    // as generated (in the training features it is mostly the tracker's frame-to-frame noise):
+    //   y' = m + g (s - m) + h (f - s) + (y - f),
     // g = s.d.(slow part of the training features) / s.d.(slow part of the trajectories generated
     // for the training labels), both about the training mean m, and h likewise for the detail.
-    // Streaming holds window / 2 frames back. Models read from files without `h` (window 0) scale
-    // the whole trajectory by g. Off unless asked for before train(); the paper's models are the
-    // ones without it.
+    // Streaming holds window / 2 frames back. Models read from files without a fast window
+    // (fastWindow 0) scale all of y - s by h, those without `h` (window 0) the whole trajectory by
+    // g. Off unless asked for before train(); the paper's models are the ones without it.
     static constexpr double kMinCompensationGain = 0.5;
     static constexpr double kMaxCompensationGain = 3.0;
     static constexpr int kCompensationWindow = 7; // frames: 0.28 s at 25 frames/s
+    static constexpr int kCompensationFastWindow = 3; // frames: periods under 0.12 s (above 8 Hz)
     void setVarianceCompensation(bool on) { m_compensate = on; }
     bool compensatesVariance() const { return m_gain.size() > 0; }
     const Eigen::VectorXd &compensationMean() const { return m_mean; }
     const Eigen::VectorXd &compensationGain() const { return m_gain; }
     const Eigen::VectorXd &compensationDetailGain() const { return m_detailGain; }
     int compensationWindow() const { return m_window; }
+    int compensationFastWindow() const { return m_fastWindow; }
     // Restores a trained compensation (model files); empty vectors turn it off, an empty
-    // `detailGain` with window 0 scales the whole trajectory by `gain`. Throws lipsync::Error for
-    // sizes other than dimension(), a non-positive gain or a window that is not odd and > 1.
+    // `detailGain` with window 0 scales the whole trajectory by `gain`, fastWindow 0 scales all of
+    // the detail. Throws lipsync::Error for sizes other than dimension(), a non-positive gain, a
+    // window that is not odd and > 1 or a fast window that is not odd, > 1 and below the window.
     void setCompensation(const Eigen::VectorXd &mean, const Eigen::VectorXd &gain,
-                         const Eigen::VectorXd &detailGain = {}, int window = 0);
+                         const Eigen::VectorXd &detailGain = {}, int window = 0, int fastWindow = 0);
     // The compensation applied to a trajectory (T x d); the identity without one.
     Eigen::MatrixXd compensate(const Eigen::MatrixXd &trajectory) const;
     // log p(features | labels) in nats, the model's own objective (for Brand: the density over
@@ -116,6 +121,7 @@ private:
     Eigen::VectorXd m_gain;
     Eigen::VectorXd m_detailGain; // h, empty with m_window 0
     int m_window = 0;
+    int m_fastWindow = 0; // 0: the detail band reaches to the frame rate
 };
 
 } // namespace lipsync

@@ -74,6 +74,8 @@ void saveModel(const DynamicModel &model, const std::string &path, const std::st
         if (model.compensationWindow() > 0) {
             c[QStringLiteral("window")] = model.compensationWindow();
             c[QStringLiteral("detailGain")] = json::fromVector(model.compensationDetailGain());
+            if (model.compensationFastWindow() > 0)
+                c[QStringLiteral("fastWindow")] = model.compensationFastWindow();
         }
         o[QStringLiteral("compensation")] = c;
     }
@@ -142,7 +144,10 @@ std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::str
             model->setCompensation(json::toVector(c, "mean", model->dimension(), path),
                                    json::toVector(c, "gain", model->dimension(), path),
                                    bands ? json::toVector(c, "detailGain", model->dimension(), path) : Eigen::VectorXd(),
-                                   bands ? c.value(QStringLiteral("window")).toInt(0) : 0);
+                                   bands ? c.value(QStringLiteral("window")).toInt(0) : 0,
+                                   c.contains(QStringLiteral("fastWindow"))
+                                       ? c.value(QStringLiteral("fastWindow")).toInt(-1)
+                                       : 0);
         } catch (const Error &e) {
             throw Error(e.reason(), path, "compensation");
         }

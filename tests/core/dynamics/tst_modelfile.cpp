@@ -221,24 +221,28 @@ private slots:
     }
 
     // Variance compensation (docs/models.md §5.1), trained on the training part alone: the slow
-    // part (7-frame centred mean, edges clamped) and the detail of the trajectories generated for
-    // the training labels are scaled by the ratio of the training features' spread in that band to
-    // theirs (unless a gain reached its bound), and the generated trajectory is m + g (s - m) +
-    // h (y - s); without it the model generates its own most likely trajectory unchanged.
+    // part s (7-frame centred mean, edges clamped) and the detail f - s (f the 3-frame centred
+    // mean) of the trajectories generated for the training labels are scaled by the ratio of the
+    // training features' spread in that band to theirs (unless a gain reached its bound), and the
+    // generated trajectory is m + g (s - m) + h (f - s) + (y - f); without it the model generates
+    // its own most likely trajectory unchanged.
     void varianceCompensationMatchesTheTrainingSpread()
     {
-        // The slow part as the documentation states it, written out separately from the model's.
-        auto slow = [](const Eigen::MatrixXd &y) {
+        // The moving means as the documentation states them, written out separately from the model's.
+        auto centredMean = [](const Eigen::MatrixXd &y, int half) {
             Eigen::MatrixXd s = Eigen::MatrixXd::Zero(y.rows(), y.cols());
             for (Eigen::Index t = 0; t < y.rows(); ++t)
-                for (Eigen::Index k = t - 3; k <= t + 3; ++k)
-                    s.row(t) += y.row(std::min(std::max<Eigen::Index>(k, 0), y.rows() - 1)) / 7.0;
+                for (Eigen::Index k = t - half; k <= t + half; ++k)
+                    s.row(t) += y.row(std::min(std::max<Eigen::Index>(k, 0), y.rows() - 1)) / double(2 * half + 1);
             return s;
         };
+        auto slow = [&](const Eigen::MatrixXd &y) { return centredMean(y, 3); };
+        auto fast = [&](const Eigen::MatrixXd &y) { return centredMean(y, 1); };
         auto bounded = [](double gain) {
             return std::clamp(gain, DynamicModel::kMinCompensationGain, DynamicModel::kMaxCompensationGain);
         };
         QCOMPARE(DynamicModel::kCompensationWindow, 7);
+        QCOMPARE(DynamicModel::kCompensationFastWindow, 3);
         for (const std::string &kind : dynamicModelKinds()) {
             ModelOptions options;
             options.slds.maxIterations = 5;
@@ -252,6 +256,7 @@ private slots:
             QVERIFY(!plain->compensatesVariance());
             QVERIFY(compensated->compensatesVariance());
             QCOMPARE(compensated->compensationWindow(), 7);
+            QCOMPARE(compensated->compensationFastWindow(), 3);
             const std::vector<int> &labels = training.front().labels;
             QVERIFY(plain->generate(labels) == plain->generateMostLikely(labels));
             QVERIFY(compensated->generateMostLikely(labels) == plain->generateMostLikely(labels));
@@ -261,15 +266,15 @@ private slots:
                             rawDetail = realSlow;
             for (const LabelledSequence &s : training) {
                 const Eigen::MatrixXd raw = plain->generate(s.labels);
-                const Eigen::MatrixXd sr = slow(s.features), sg = slow(raw);
+                const Eigen::MatrixXd sr = slow(s.features), sg = slow(raw), fr = fast(s.features), fg = fast(raw);
                 realSlow += (sr.rowwise() - m.transpose()).colwise().squaredNorm().transpose();
                 rawSlow += (sg.rowwise() - m.transpose()).colwise().squaredNorm().transpose();
-                realDetail += (s.features - sr).colwise().squaredNorm().transpose();
-                rawDetail += (raw - sg).colwise().squaredNorm().transpose();
+                realDetail += (fr - sr).colwise().squaredNorm().transpose();
+                rawDetail += (fg - sg).colwise().squaredNorm().transpose();
                 const Eigen::VectorXd &g = compensated->compensationGain(), &h = compensated->compensationDetailGain();
                 const Eigen::MatrixXd expected =
                     (((sg.rowwise() - m.transpose()).array().rowwise() * g.transpose().array())
-                     + ((raw - sg).array().rowwise() * h.transpose().array()))
+                     + ((fg - sg).array().rowwise() * h.transpose().array()) + (raw - fg).array())
                         .matrix()
                         .rowwise()
                     + m.transpose();
@@ -292,7 +297,8 @@ private slots:
         saveModel(*model, path, "aam");
         const std::string saved = readWholeFile(path);
         for (const auto &[field, damage] : std::vector<std::pair<std::string, std::string>>{
-                 {"\"gain\":[", "-"}, {"\"detailGain\":[", "-"}, {"\"window\":", "-"}}) {
+                 {"\"gain\":[", "-"}, {"\"detailGain\":[", "-"}, {"\"window\":", "-"}, {"\"fastWindow\":", "-"},
+                 {"\"fastWindow\":", "1"}}) { // negative; 13, not below the window
             std::string text = saved;
             const size_t at = text.find(field);
             QVERIFY2(at != std::string::npos, field.c_str());
@@ -301,16 +307,34 @@ private slots:
             const std::string e = errorOf([&] { loadModel(path); });
             QVERIFY2(e.find("compensation") != std::string::npos && e.find(path) != std::string::npos, e.c_str());
         }
-        // A file with the whole-trajectory compensation alone (mean and gain) scales by the gain.
+        const std::vector<int> labels = data().front().labels;
+        // A file with two bands (no fast window) scales all of the detail y - s by h.
         QJsonObject o = QJsonDocument::fromJson(QByteArray::fromStdString(saved)).object();
         QJsonObject c = o.value("compensation").toObject();
+        c.remove("fastWindow");
+        o["compensation"] = c;
+        writeFileAtomically(path, QJsonDocument(o).toJson().toStdString());
+        const auto twoBands = loadModel(path);
+        QCOMPARE(twoBands->compensationFastWindow(), 0);
+        {
+            const Eigen::MatrixXd y = twoBands->generateMostLikely(labels), s = slow(y);
+            const Eigen::VectorXd &m = twoBands->compensationMean(), &g = twoBands->compensationGain(),
+                                  &h = twoBands->compensationDetailGain();
+            const Eigen::MatrixXd expected = (((s.rowwise() - m.transpose()).array().rowwise() * g.transpose().array())
+                                              + ((y - s).array().rowwise() * h.transpose().array()))
+                                                 .matrix()
+                                                 .rowwise()
+                                             + m.transpose();
+            QVERIFY((twoBands->generate(labels) - expected).cwiseAbs().maxCoeff() < 1e-12);
+            QVERIFY((twoBands->generate(labels) - model->generate(labels)).cwiseAbs().maxCoeff() > 1e-6);
+        }
+        // A file with the whole-trajectory compensation alone (mean and gain) scales by the gain.
         c.remove("window");
         c.remove("detailGain");
         o["compensation"] = c;
         writeFileAtomically(path, QJsonDocument(o).toJson().toStdString());
         const auto single = loadModel(path);
         QCOMPARE(single->compensationWindow(), 0);
-        const std::vector<int> labels = data().front().labels;
         const Eigen::MatrixXd y = single->generateMostLikely(labels);
         const Eigen::MatrixXd expected =
             ((y.rowwise() - single->compensationMean().transpose()).array().rowwise()
