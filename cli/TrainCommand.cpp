@@ -4,6 +4,7 @@
 #include "TrainingData.h"
 
 #include "aam/AamModel.h"
+#include "dynamics/BrandModel.h"
 #include "dynamics/ContextDependentModel.h"
 #include "dynamics/ModelFile.h"
 #include "tasks/Feedback.h"
@@ -58,6 +59,8 @@ int runTrain(const CommandLine &args)
     // The phones, or the tied context states (docs/models.md §5.2).
     const auto *context = dynamic_cast<const ContextDependentModel *>(model.get());
     const int states = context ? context->tree().stateCount() : model->stateCount();
+    // Brand: its covariance, and the held-out errors that chose it (docs/models.md §2.1).
+    const auto *brand = dynamic_cast<const BrandModel *>(context ? &context->inner() : model.get());
     if (args.isSet(QStringLiteral("json"))) {
         QJsonObject o;
         o[QStringLiteral("kind")] = kind;
@@ -71,12 +74,23 @@ int runTrain(const CommandLine &args)
         o[QStringLiteral("iterations")] = iterations;
         o[QStringLiteral("objective")] = objective;
         o[QStringLiteral("loglikPerFrame")] = ll / double(frames);
+        if (brand) {
+            o[QStringLiteral("covariance")] = brand->fullCovariance() ? QStringLiteral("full") : QStringLiteral("diagonal");
+            if (const BrandModel::CovarianceChoice &c = brand->covarianceChoice(); c.folds > 0)
+                o[QStringLiteral("covarianceChoice")] = QJsonObject{{QStringLiteral("folds"), c.folds},
+                                                                    {QStringLiteral("diagonalL1"), c.diagonalL1},
+                                                                    {QStringLiteral("fullL1"), c.fullL1}};
+        }
         printJson(o);
     } else {
         std::printf("trained %s on %zu sequences (%lld frames, d = %d, %d states) in %.3f s; "
                     "log-likelihood %.6f nats/frame; saved %s\n",
                     kind.toUtf8().constData(), sequences.size(), frames, model->dimension(), states, seconds,
                     ll / double(frames), out.toUtf8().constData());
+        if (brand && brand->covarianceChoice().folds > 0)
+            std::printf("covariance: %s (held-out L1 in %d folds: diagonal %.4g, full %.4g)\n",
+                        brand->fullCovariance() ? "full" : "diagonal", brand->covarianceChoice().folds,
+                        brand->covarianceChoice().diagonalL1, brand->covarianceChoice().fullL1);
     }
     return 0;
 }

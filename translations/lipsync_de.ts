@@ -1635,203 +1635,213 @@
 <context>
     <name>lipsync::studio::ModelsPanel</name>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="50"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="51"/>
         <source>Appearance model</source>
         <translation>Erscheinungsmodell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="51"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="52"/>
         <source>Phoneme aligner</source>
         <translation>Phonem-Aligner</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="70"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="75"/>
         <source>Build AAM…</source>
         <translation>AAM erstellen …</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="86"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="86"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="86"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="225"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="236"/>
         <source>Made in this session; written when the project is saved</source>
         <translation>In dieser Sitzung erstellt; wird beim Speichern des Projekts geschrieben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="237"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="248"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="71"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="76"/>
         <source>Train</source>
         <translation>Trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="60"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="62"/>
         <source>%1 states for phones in context</source>
         <translation>%1 Zustände für Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="61"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="63"/>
         <source>one state per phone</source>
         <translation>ein Zustand je Phonem</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="63"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="66"/>
+        <source>%1, full covariances</source>
+        <translation>%1, volle Kovarianzen</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="68"/>
         <source>%1 parameters, %2, variance compensation</source>
         <translation>%1 Parameter, %2, Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="64"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="69"/>
         <source>%1 parameters, %2</source>
         <translation>%1 Parameter, %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="71"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="76"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="72"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="77"/>
         <source>Evaluate (k-fold)</source>
         <translation>Evaluieren (k-fach)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="72"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="77"/>
         <source>Realism</source>
         <translation>Realismus</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="75"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
         <source>Variance compensation</source>
         <translation>Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="76"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
         <source>Phones in context</source>
         <translation>Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="90"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="95"/>
         <source>VarPro / Levenberg–Marquardt</source>
         <translation>VarPro / Levenberg–Marquardt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="91"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="96"/>
         <source>Gradient ascent (paper)</source>
         <translation>Gradientenaufstieg (Artikel)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="92"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="97"/>
         <source>Diagonal A</source>
         <translation>Diagonales A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="93"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="98"/>
         <source>Full A</source>
         <translation>Volles A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="94"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="101"/>
+        <source>Covariance by CV</source>
+        <translation>Kovarianz per KV</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="102"/>
         <source>Diagonal covariance</source>
         <translation>Diagonale Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="95"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="103"/>
         <source>Full covariance</source>
         <translation>Volle Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="114"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="125"/>
         <source>Scale each model&apos;s generated trajectories to the spread of the training features: lips that open and close as much as the recording&apos;s, at the cost of a larger error per frame. Off: the paper&apos;s models exactly.</source>
         <translation>Skaliert die erzeugten Trajektorien jedes Modells auf die Streuung der Trainingsmerkmale: Lippen, die sich so weit öffnen und schließen wie in der Aufnahme, um den Preis eines größeren Fehlers je Bild. Aus: genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="122"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="133"/>
         <source>Train each model on states for phones in their context (the neighbouring phones and the part of the phone), tied by decision trees: lips that anticipate the next sound. Off: one state per phone, the paper&apos;s models exactly.</source>
         <translation>Jedes Modell auf Zuständen für Phoneme in ihrem Kontext trainieren (die benachbarten Phoneme und der Teil des Phonems), durch Entscheidungsbäume gebündelt: Lippen, die den nächsten Laut vorwegnehmen. Aus: ein Zustand je Phonem, genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="137"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="148"/>
         <source>folds: </source>
         <translation>Teilmengen (k-fach): </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="147"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="158"/>
         <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
         <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="148"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="159"/>
         <source>Train the checked models on every sequence with features and phonemes</source>
         <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="149"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="160"/>
         <source>Stop training or evaluation; the previous models stay</source>
         <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="150"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="161"/>
         <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
         <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="155"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="166"/>
         <source>Render the held-out sequences of the same folds into their recordings and measure the lips with dlib&apos;s landmarks: opening correlation, articulation, /p b m/ closures, lag, sharpness, seam</source>
         <translation>Die zurückgehaltenen Sequenzen derselben Folds in ihre Aufnahmen rendern und die Lippen mit dlibs Landmarken messen: Korrelation der Öffnung, Artikulation, Verschlüsse bei /p b m/, Versatz, Schärfe, Naht</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="183"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="194"/>
         <source>AAM parameter </source>
         <translation>AAM-Parameter </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="184"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="195"/>
         <source>Which AAM parameter to plot over time</source>
         <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="195"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="206"/>
         <source>Trajectory</source>
         <translation>Trajektorie</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="196"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="207"/>
         <source>Training</source>
         <translation>Training</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="197"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="208"/>
         <source>Evaluation</source>
         <translation>Evaluation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="273"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="284"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter tracken und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="330"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="358"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="341"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="369"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="332"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="343"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -1839,45 +1849,50 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="349"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="360"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="369"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="380"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="371"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="382"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="378"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="389"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="448"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="459"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="449"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="460"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="392"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="403"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
             <numerusform>%n Modelle evaluieren (%1-fach)</numerusform>
         </translation>
     </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="105"/>
+        <source>Brand&apos;s output covariances. By CV: diagonal or full, whichever of the two generates held-out training sequences more closely (cross-validation). Diagonal: the paper&apos;s model.</source>
+        <translation>Brands Ausgabekovarianzen. Per KV: diagonal oder voll, je nachdem, welche der beiden zurückgehaltene Trainingssequenzen genauer erzeugt (Kreuzvalidierung). Diagonal: das Modell der Veröffentlichung.</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="398"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="409"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen (k-fache Kreuzvalidierung).</numerusform>
@@ -1885,7 +1900,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="418"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="429"/>
         <source>Realism of %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
@@ -1893,7 +1908,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="424"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="435"/>
         <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
         <translation>
             <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
@@ -1901,37 +1916,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="468"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="479"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="496"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="507"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="501"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="512"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="355"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="366"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="525"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="536"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="535"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="546"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="560"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="571"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>

@@ -8,8 +8,13 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
+#include <memory>
+#include <numeric>
+#include <optional>
+#include <random>
 
 namespace lipsync {
 
@@ -79,9 +84,51 @@ void BrandModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &f
     jointMean.resize(0, 0);
     jointCovariance.clear();
     m_dimension = int(d);
-    if (m_options.fullCovariance)
+    bool full = m_options.covariance == BrandCovariance::Full;
+    if (m_options.covariance == BrandCovariance::CrossValidated) {
+        m_choice = crossValidateCovariance(sequences, feedback);
+        full = m_choice.folds > 0 && m_choice.fullL1 < m_choice.diagonalL1;
+    }
+    if (full)
         fitFull(sequences, st.floor);
     feedback.setProgress(1.0);
+}
+
+BrandModel::CovarianceChoice BrandModel::crossValidateCovariance(const std::vector<LabelledSequence> &sequences,
+                                                                  Feedback &feedback) const
+{
+    CovarianceChoice choice;
+    const int S = int(sequences.size());
+    choice.folds = std::min(kCovarianceFolds, S);
+    if (choice.folds < 2) {
+        choice.folds = 0; // nothing to hold out: the paper's diagonal
+        return choice;
+    }
+    std::vector<int> order(static_cast<size_t>(S));
+    std::iota(order.begin(), order.end(), 0);
+    std::mt19937 random(kCovarianceSeed);
+    std::shuffle(order.begin(), order.end(), random);
+    // Mean over held-out sequences of their mean per-frame L1 (§6.2, sequences weigh equally).
+    double l1[2] = {0.0, 0.0};
+    for (int fold = 0; fold < choice.folds; ++fold) {
+        std::vector<LabelledSequence> training, heldOut;
+        for (int i = 0; i < S; ++i)
+            (i % choice.folds == fold ? heldOut : training).push_back(sequences[size_t(order[size_t(i)])]);
+        for (int full = 0; full < 2; ++full) {
+            const double step = 1.0 / double(2 * choice.folds + 1), from = double(2 * fold + full) * step;
+            Feedback part(feedback, from, from + step);
+            BrandOptions options = m_options;
+            options.covariance = full ? BrandCovariance::Full : BrandCovariance::Diagonal;
+            BrandModel model(options);
+            model.setStateCount(stateCount());
+            model.train(training, part);
+            for (const LabelledSequence &s : heldOut)
+                l1[full] += (model.generateMostLikely(s.labels) - s.features).cwiseAbs().rowwise().sum().mean();
+        }
+    }
+    choice.diagonalL1 = l1[0] / double(S);
+    choice.fullL1 = l1[1] / double(S);
+    return choice;
 }
 
 void BrandModel::fitFull(const std::vector<LabelledSequence> &sequences,
@@ -206,43 +253,61 @@ Eigen::MatrixXd BrandModel::generateMostLikely(const std::vector<int> &labels) c
     return y.matrix().transpose();
 }
 
+brand::BlockTerms BrandModel::blockTerms(int n, bool first) const
+{
+    // §2.2, general full-covariance form: the static term of y_t and the delta term of
+    // y_t - y_{t-1}, both under state n's precision.
+    const Eigen::Index d = m_dimension;
+    const Eigen::VectorXd my = jointCovariance.empty() ? Eigen::VectorXd(staticMean.row(n).transpose())
+                                                       : Eigen::VectorXd(jointMean.row(n).head(d).transpose());
+    brand::BlockTerms terms;
+    if (first) {
+        terms.diagonal = staticPrecision(n);
+        terms.rhs = terms.diagonal * my;
+        terms.previousDiagonal = Eigen::MatrixXd::Zero(d, d);
+        terms.lower = Eigen::MatrixXd::Zero(d, d);
+        terms.previousRhs = Eigen::VectorXd::Zero(d);
+        return terms;
+    }
+    const Eigen::VectorXd md = jointCovariance.empty() ? Eigen::VectorXd(deltaMean.row(n).transpose())
+                                                       : Eigen::VectorXd(jointMean.row(n).tail(d).transpose());
+    const Eigen::MatrixXd L = jointPrecision(n);
+    const auto Lyy = L.topLeftCorner(d, d), LyD = L.topRightCorner(d, d);
+    const auto LDy = L.bottomLeftCorner(d, d), LDD = L.bottomRightCorner(d, d);
+    terms.diagonal = Lyy + LyD + LDy + LDD;
+    terms.previousDiagonal = LDD;
+    terms.lower = -(LyD + LDD); // H_{t,t-1}
+    terms.rhs = (Lyy + LDy) * my + (LyD + LDD) * md;
+    terms.previousRhs = -(LDy * my + LDD * md);
+    return terms;
+}
+
 brand::BlockTridiagonalSystem BrandModel::blockSystem(const std::vector<int> &labels) const
 {
-    // §2.2, general full-covariance form, accumulated frame by frame.
+    // §2.2, accumulated frame by frame from each state's terms (computed once per state).
     const Eigen::Index d = m_dimension;
     const size_t T = labels.size();
-    const int P = stateCount();
-    std::vector<Eigen::MatrixXd> lambda(static_cast<size_t>(P)), lambdaStatic(static_cast<size_t>(P));
-    std::vector<bool> done(size_t(P), false);
-    for (int n : labels)
-        if (!done[size_t(n)]) {
-            lambda[size_t(n)] = jointPrecision(n);
-            lambdaStatic[size_t(n)] = staticPrecision(n);
-            done[size_t(n)] = true;
-        }
+    std::vector<std::optional<brand::BlockTerms>> terms(static_cast<size_t>(stateCount()));
     brand::BlockTridiagonalSystem s;
     s.diagonal.assign(T, Eigen::MatrixXd::Zero(d, d));
     s.lower.assign(T > 0 ? T - 1 : 0, Eigen::MatrixXd::Zero(d, d));
     s.rhs = Eigen::MatrixXd::Zero(d, Eigen::Index(T));
     for (size_t t = 0; t < T; ++t) {
         const int n = labels[t];
-        const Eigen::VectorXd my = jointCovariance.empty() ? Eigen::VectorXd(staticMean.row(n).transpose())
-                                                           : Eigen::VectorXd(jointMean.row(n).head(d).transpose());
         if (t == 0) {
-            s.diagonal[0] += lambdaStatic[size_t(n)];
-            s.rhs.col(0) += lambdaStatic[size_t(n)] * my;
+            const brand::BlockTerms first = blockTerms(n, true);
+            s.diagonal[0] += first.diagonal;
+            s.rhs.col(0) += first.rhs;
             continue;
         }
-        const Eigen::VectorXd md = jointCovariance.empty() ? Eigen::VectorXd(deltaMean.row(n).transpose())
-                                                           : Eigen::VectorXd(jointMean.row(n).tail(d).transpose());
-        const Eigen::MatrixXd &L = lambda[size_t(n)];
-        const auto Lyy = L.topLeftCorner(d, d), LyD = L.topRightCorner(d, d);
-        const auto LDy = L.bottomLeftCorner(d, d), LDD = L.bottomRightCorner(d, d);
-        s.diagonal[t] += Lyy + LyD + LDy + LDD;
-        s.diagonal[t - 1] += LDD;
-        s.lower[t - 1] -= LyD + LDD; // H_{t,t-1}
-        s.rhs.col(Eigen::Index(t)) += (Lyy + LDy) * my + (LyD + LDD) * md;
-        s.rhs.col(Eigen::Index(t - 1)) -= LDy * my + LDD * md;
+        if (!terms[size_t(n)])
+            terms[size_t(n)] = blockTerms(n, false);
+        const brand::BlockTerms &f = *terms[size_t(n)];
+        s.diagonal[t] += f.diagonal;
+        s.diagonal[t - 1] += f.previousDiagonal;
+        s.lower[t - 1] += f.lower;
+        s.rhs.col(Eigen::Index(t)) += f.rhs;
+        s.rhs.col(Eigen::Index(t - 1)) += f.previousRhs;
     }
     return s;
 }
@@ -397,41 +462,15 @@ int BrandModel::streamingLag() const
 
 namespace {
 
-// Fixed-lag MLPG for diagonal covariances (§5): the causal forward LDL^T sweep, a truncated last
-// pivot at h = t + L, back substitution down to t. Vectorised over the d dimensions.
-class FixedLagBrandStreamer : public StreamingGenerator
+// What both fixed-lag streamers share (§5): one row per label, row t of the forward LDL^T sweep
+// finalised once label t+1 is in; frame t emitted once label h = t + L is in, from the solve
+// truncated at h (row h closed as if it ended the sequence); rows no longer needed dropped.
+template<class Row>
+class FixedLagStreamer : public StreamingGenerator
 {
 public:
-    FixedLagBrandStreamer(const BrandModel &model, int lag)
-        : m_pInv(model.staticVariance), m_mean(model.staticMean), m_qInv(model.deltaVariance),
-          m_delta(model.deltaMean), m_lag(lag)
-    {
-    }
+    explicit FixedLagStreamer(int lag) : m_lag(lag) {}
     int latency() const override { return m_lag; }
-
-    void push(int label) override
-    {
-        if (m_finished)
-            throw Error("streamer already finished");
-        checkStateLabel(label, int(m_mean.rows()));
-        Row row;
-        row.p = m_pInv.row(label).transpose().array().inverse();
-        row.pm = row.p * m_mean.row(label).transpose().array();
-        const bool first = m_rows.empty() && m_base == 0;
-        if (first) {
-            row.q = Eigen::ArrayXd::Zero(row.p.size());
-            row.qd = row.q;
-        } else {
-            row.q = m_qInv.row(label).transpose().array().inverse();
-            row.qd = row.q * m_delta.row(label).transpose().array();
-        }
-        m_rows.push_back(std::move(row));
-        const long h = m_base + long(m_rows.size()) - 1;
-        if (h > 0)
-            finaliseRow(h - 1);
-        if (h - m_lag >= m_next)
-            emitUpTo(h, m_next);
-    }
 
     void finish() override
     {
@@ -445,55 +484,35 @@ public:
 
     bool pop(Eigen::Ref<Eigen::VectorXd> frame) override { return m_ready.pop(frame); }
 
-private:
-    struct Row
+protected:
+    void checkOpen() const
     {
-        Eigen::ArrayXd p, pm, q, qd; // p_t, p_t mbar_t, q_t, q_t deltabar_t
-        Eigen::ArrayXd pivot, l, z;  // set once row t+1's label is known
-    };
+        if (m_finished)
+            throw Error("streamer already finished");
+    }
+    bool atFirstFrame() const { return m_rows.empty() && m_base == 0; }
+    void append(Row row)
+    {
+        m_rows.push_back(std::move(row));
+        const long h = m_base + long(m_rows.size()) - 1;
+        if (h > 0)
+            finaliseRow(h - 1);
+        if (h - m_lag >= m_next)
+            emitUpTo(h, m_next);
+    }
     Row &row(long t) { return m_rows[size_t(t - m_base)]; }
 
-    // Row t of H needs q_{t+1}: alpha_t = p_t + q_t + q_{t+1}, beta_t = -q_{t+1}.
-    void finaliseRow(long t)
-    {
-        Row &r = row(t);
-        const Row &next = row(t + 1);
-        const Eigen::ArrayXd alpha = r.p + r.q + next.q;
-        const Eigen::ArrayXd b = r.pm + r.qd - next.qd;
-        if (t == 0) {
-            r.l = Eigen::ArrayXd::Zero(r.p.size());
-            r.pivot = alpha;
-            r.z = b;
-        } else {
-            const Row &prev = row(t - 1);
-            const Eigen::ArrayXd beta = -r.q; // beta_{t-1}
-            r.l = beta / prev.pivot;
-            r.pivot = alpha - r.l * beta;
-            r.z = b - r.l * prev.z;
-        }
-    }
+    // Row t gets what label t+1 adds to it, and the sweep's step through it.
+    virtual void finaliseRow(long t) = 0;
+    // Frames from..h of the solve truncated at h.
+    virtual std::vector<Eigen::VectorXd> truncatedSolve(long h, long from) = 0;
 
-    // Treat h as the end of the sequence (truncated last pivot), back-substitute, emit frames
-    // m_next..last.
+private:
     void emitUpTo(long h, long last)
     {
-        const Row &end = row(h);
-        Eigen::ArrayXd pivot = end.p + end.q, z = end.pm + end.qd, lEnd;
-        if (h > 0) {
-            const Row &prev = row(h - 1);
-            const Eigen::ArrayXd beta = -end.q;
-            lEnd = beta / prev.pivot;
-            pivot -= lEnd * beta;
-            z -= lEnd * prev.z;
-        }
-        std::vector<Eigen::ArrayXd> y(size_t(h - m_next + 1));
-        y.back() = z / pivot;
-        for (long tau = h - 1; tau >= m_next; --tau) {
-            const Eigen::ArrayXd &lNext = tau + 1 == h ? lEnd : row(tau + 1).l;
-            y[size_t(tau - m_next)] = row(tau).z / row(tau).pivot - lNext * y[size_t(tau + 1 - m_next)];
-        }
+        const std::vector<Eigen::VectorXd> y = truncatedSolve(h, m_next);
         for (long t = m_next; t <= last; ++t)
-            m_ready.push(y[size_t(t - m_next)].matrix());
+            m_ready.push(y[size_t(t - m_next)]);
         m_next = last + 1;
         // Rows before m_next - 2 are no longer needed (rows m_next - 2 and m_next - 1 feed the next
         // finalised row and pivot).
@@ -503,7 +522,6 @@ private:
         }
     }
 
-    Eigen::MatrixXd m_pInv, m_mean, m_qInv, m_delta; // variances and means (P x d)
     int m_lag;
     std::deque<Row> m_rows;
     long m_base = 0; // frame index of m_rows.front()
@@ -512,37 +530,164 @@ private:
     ReadyFrames m_ready;
 };
 
-// Full covariances: exact Brand cannot stream (§5), so the whole sequence is buffered and solved
-// on finish(). latency() = -1 says "whole sequence".
-class BufferedBrandStreamer : public StreamingGenerator
+struct DiagonalRow
+{
+    Eigen::ArrayXd p, pm, q, qd; // p_t, p_t mbar_t, q_t, q_t deltabar_t
+    Eigen::ArrayXd pivot, l, z;  // set once row t+1's label is known
+};
+
+// Fixed-lag MLPG for diagonal covariances: the tridiagonal sweep of §2.2, vectorised over the d
+// dimensions.
+class FixedLagBrandStreamer : public FixedLagStreamer<DiagonalRow>
 {
 public:
-    explicit BufferedBrandStreamer(const BrandModel &model) : m_model(model) {}
-    int latency() const override { return -1; }
+    FixedLagBrandStreamer(const BrandModel &model, int lag)
+        : FixedLagStreamer(lag), m_pInv(model.staticVariance), m_mean(model.staticMean),
+          m_qInv(model.deltaVariance), m_delta(model.deltaMean)
+    {
+    }
+
     void push(int label) override
     {
-        checkStateLabel(label, m_model.stateCount());
-        m_labels.push_back(label);
-    }
-    void finish() override
-    {
-        if (!m_labels.empty())
-            m_frames = m_model.generateMostLikely(m_labels);
-        m_labels.clear();
-    }
-    bool pop(Eigen::Ref<Eigen::VectorXd> frame) override
-    {
-        if (m_next >= m_frames.rows())
-            return false;
-        frame = m_frames.row(m_next++).transpose();
-        return true;
+        checkOpen();
+        checkStateLabel(label, int(m_mean.rows()));
+        DiagonalRow r;
+        r.p = m_pInv.row(label).transpose().array().inverse();
+        r.pm = r.p * m_mean.row(label).transpose().array();
+        if (atFirstFrame()) {
+            r.q = Eigen::ArrayXd::Zero(r.p.size());
+            r.qd = r.q;
+        } else {
+            r.q = m_qInv.row(label).transpose().array().inverse();
+            r.qd = r.q * m_delta.row(label).transpose().array();
+        }
+        append(std::move(r));
     }
 
 private:
-    BrandModel m_model;
-    std::vector<int> m_labels;
-    Eigen::MatrixXd m_frames;
-    Eigen::Index m_next = 0;
+    // Row t of H needs q_{t+1}: alpha_t = p_t + q_t + q_{t+1}, beta_t = -q_{t+1}.
+    void finaliseRow(long t) override
+    {
+        DiagonalRow &r = row(t);
+        const DiagonalRow &next = row(t + 1);
+        const Eigen::ArrayXd alpha = r.p + r.q + next.q;
+        const Eigen::ArrayXd b = r.pm + r.qd - next.qd;
+        if (t == 0) {
+            r.l = Eigen::ArrayXd::Zero(r.p.size());
+            r.pivot = alpha;
+            r.z = b;
+        } else {
+            const DiagonalRow &prev = row(t - 1);
+            const Eigen::ArrayXd beta = -r.q; // beta_{t-1}
+            r.l = beta / prev.pivot;
+            r.pivot = alpha - r.l * beta;
+            r.z = b - r.l * prev.z;
+        }
+    }
+
+    std::vector<Eigen::VectorXd> truncatedSolve(long h, long from) override
+    {
+        const DiagonalRow &end = row(h);
+        Eigen::ArrayXd pivot = end.p + end.q, z = end.pm + end.qd, lEnd;
+        if (h > 0) {
+            const DiagonalRow &prev = row(h - 1);
+            const Eigen::ArrayXd beta = -end.q;
+            lEnd = beta / prev.pivot;
+            pivot -= lEnd * beta;
+            z -= lEnd * prev.z;
+        }
+        std::vector<Eigen::VectorXd> y(size_t(h - from + 1));
+        y.back() = (z / pivot).matrix();
+        for (long tau = h - 1; tau >= from; --tau) {
+            const Eigen::ArrayXd &lNext = tau + 1 == h ? lEnd : row(tau + 1).l;
+            y[size_t(tau - from)] =
+                (row(tau).z / row(tau).pivot - lNext * y[size_t(tau + 1 - from)].array()).matrix();
+        }
+        return y;
+    }
+
+    Eigen::MatrixXd m_pInv, m_mean, m_qInv, m_delta; // variances and means (P x d)
+};
+
+struct BlockRow
+{
+    std::shared_ptr<const brand::BlockTerms> terms;
+    Eigen::LLT<Eigen::MatrixXd> pivot; // D_t, once row t+1's label is known
+    Eigen::MatrixXd l;                 // L_t = H_{t,t-1} D_{t-1}^{-1} (t >= 1), with D_{t-1}
+    Eigen::VectorXd z;
+};
+
+// Fixed-lag MLPG for full covariances: the block LDL^T sweep of §2.2 (a Cholesky factor per pivot
+// block), L_{t+1} computed with D_t. O(L d^2) per frame after one d x d factorisation.
+class FixedLagBlockBrandStreamer : public FixedLagStreamer<BlockRow>
+{
+public:
+    FixedLagBlockBrandStreamer(const BrandModel &model, int lag)
+        : FixedLagStreamer(lag), m_model(model), m_terms(static_cast<size_t>(model.stateCount()))
+    {
+    }
+
+    void push(int label) override
+    {
+        checkOpen();
+        checkStateLabel(label, m_model.stateCount());
+        BlockRow r;
+        if (atFirstFrame()) {
+            r.terms = std::make_shared<const brand::BlockTerms>(m_model.blockTerms(label, true));
+        } else {
+            std::shared_ptr<const brand::BlockTerms> &cached = m_terms[size_t(label)];
+            if (!cached)
+                cached = std::make_shared<const brand::BlockTerms>(m_model.blockTerms(label, false));
+            r.terms = cached;
+        }
+        append(std::move(r));
+    }
+
+private:
+    static void checkPivot(const Eigen::LLT<Eigen::MatrixXd> &pivot, long t)
+    {
+        if (pivot.info() != Eigen::Success)
+            throw Error("block pivot " + std::to_string(t) + " is not positive definite");
+    }
+
+    // Row t gets frame t+1's terms: H_tt = its own + next's previousDiagonal, likewise the rhs.
+    void finaliseRow(long t) override
+    {
+        BlockRow &r = row(t);
+        BlockRow &next = row(t + 1);
+        const Eigen::MatrixXd H = r.terms->diagonal + next.terms->previousDiagonal;
+        const Eigen::VectorXd b = r.terms->rhs + next.terms->previousRhs;
+        if (t == 0) {
+            r.pivot.compute(H);
+            r.z = b;
+        } else {
+            r.pivot.compute(H - r.l * r.terms->lower.transpose());
+            r.z = b - r.l * row(t - 1).z;
+        }
+        checkPivot(r.pivot, t);
+        next.l = r.pivot.solve(next.terms->lower.transpose()).transpose();
+    }
+
+    std::vector<Eigen::VectorXd> truncatedSolve(long h, long from) override
+    {
+        const BlockRow &end = row(h);
+        Eigen::MatrixXd pivot = end.terms->diagonal;
+        Eigen::VectorXd z = end.terms->rhs;
+        if (h > 0) {
+            pivot -= end.l * end.terms->lower.transpose();
+            z -= end.l * row(h - 1).z;
+        }
+        const Eigen::LLT<Eigen::MatrixXd> closing(pivot);
+        checkPivot(closing, h);
+        std::vector<Eigen::VectorXd> y(size_t(h - from + 1));
+        y.back() = closing.solve(z);
+        for (long tau = h - 1; tau >= from; --tau)
+            y[size_t(tau - from)] = row(tau).pivot.solve(row(tau).z) - row(tau + 1).l.transpose() * y[size_t(tau + 1 - from)];
+        return y;
+    }
+
+    BrandModel m_model; // a copy: the streamer outlives a retrained model
+    std::vector<std::shared_ptr<const brand::BlockTerms>> m_terms; // per state, once seen after frame 1
 };
 
 } // namespace
@@ -551,7 +696,7 @@ std::unique_ptr<StreamingGenerator> BrandModel::makeStreamer() const
 {
     checkTrained();
     if (!jointCovariance.empty())
-        return std::make_unique<BufferedBrandStreamer>(*this);
+        return std::make_unique<FixedLagBlockBrandStreamer>(*this, streamingLag());
     return std::make_unique<FixedLagBrandStreamer>(*this, streamingLag());
 }
 
@@ -561,6 +706,10 @@ QJsonObject BrandModel::parametersToJson() const
     o[QStringLiteral("covariance")] = jointCovariance.empty() ? QStringLiteral("diagonal")
                                                               : QStringLiteral("full");
     o[QStringLiteral("lag")] = m_options.lag;
+    if (m_choice.folds > 0)
+        o[QStringLiteral("covarianceChoice")] = QJsonObject{{QStringLiteral("folds"), m_choice.folds},
+                                                            {QStringLiteral("diagonalL1"), m_choice.diagonalL1},
+                                                            {QStringLiteral("fullL1"), m_choice.fullL1}};
     o[QStringLiteral("staticMean")] = json::fromMatrix(staticMean);
     o[QStringLiteral("staticVariance")] = json::fromMatrix(staticVariance);
     o[QStringLiteral("deltaMean")] = json::fromMatrix(deltaMean);
@@ -586,11 +735,21 @@ void BrandModel::parametersFromJson(const QJsonObject &o, const std::string &fil
     if ((staticVariance.array() <= 0).any() || (deltaVariance.array() <= 0).any())
         throw Error("variances must be positive", file, "staticVariance/deltaVariance");
     m_options.lag = o.value(QStringLiteral("lag")).toInt(0);
+    m_choice = {};
+    if (o.contains(QStringLiteral("covarianceChoice"))) {
+        const QJsonObject c = o.value(QStringLiteral("covarianceChoice")).toObject();
+        m_choice.folds = c.value(QStringLiteral("folds")).toInt(0);
+        m_choice.diagonalL1 = c.value(QStringLiteral("diagonalL1")).toDouble(-1.0);
+        m_choice.fullL1 = c.value(QStringLiteral("fullL1")).toDouble(-1.0);
+        if (m_choice.folds < 2 || !(m_choice.diagonalL1 >= 0.0) || !(m_choice.fullL1 >= 0.0))
+            throw Error("needs folds (2 or more) and the non-negative diagonalL1 and fullL1", file,
+                        "covarianceChoice");
+    }
     const QString covariance = o.value(QStringLiteral("covariance")).toString();
     jointMean.resize(0, 0);
     jointCovariance.clear();
     if (covariance == QLatin1String("full")) {
-        m_options.fullCovariance = true;
+        m_options.covariance = BrandCovariance::Full;
         jointMean = json::toMatrix(o, "jointMean", P, 2 * d, file);
         const QJsonArray covariances = o.value(QStringLiteral("jointCovariance")).toArray();
         if (covariances.size() != P)
@@ -605,7 +764,7 @@ void BrandModel::parametersFromJson(const QJsonObject &o, const std::string &fil
             jointCovariance.push_back(std::move(C));
         }
     } else if (covariance == QLatin1String("diagonal")) {
-        m_options.fullCovariance = false;
+        m_options.covariance = BrandCovariance::Diagonal;
     } else {
         throw Error("must be \"diagonal\" or \"full\"", file, "covariance");
     }

@@ -37,6 +37,15 @@ struct BlockTridiagonalSystem
     Eigen::MatrixXd rhs;
 };
 
+// What frame t, in state n, adds to the system (§2.2): to its own diagonal block and right-hand
+// side, to frame t-1's diagonal block and right-hand side, and the sub-diagonal block H_{t,t-1}
+// (zero for the first frame, which has no delta term).
+struct BlockTerms
+{
+    Eigen::MatrixXd diagonal, previousDiagonal, lower;
+    Eigen::VectorXd rhs, previousRhs;
+};
+
 // Block LDL^T with a Cholesky factor of every pivot block (§2.2). Returns d x T.
 // Throws lipsync::Error if a pivot block is not positive definite.
 Eigen::MatrixXd solveBlockTridiagonal(const BlockTridiagonalSystem &system);

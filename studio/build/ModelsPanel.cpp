@@ -6,6 +6,7 @@
 #include "context/ModelStore.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
+#include "dynamics/BrandModel.h"
 #include "dynamics/ContextDependentModel.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/ModelFile.h"
@@ -52,13 +53,17 @@ QString kindText(const std::string &kind)
     return ModelKinds::name(kind);
 }
 
-// What a trained dynamic model is beyond its kind: its states and its compensation.
+// What a trained dynamic model is beyond its kind: its states, Brand's full covariances and its
+// compensation.
 QString modelSummary(const DynamicModel &model)
 {
     const auto *context = dynamic_cast<const ContextDependentModel *>(&model);
     // At least one state per phone, so always a plural.
-    const QString states = context ? ModelsPanel::tr("%1 states for phones in context").arg(context->tree().stateCount())
-                                   : ModelsPanel::tr("one state per phone");
+    QString states = context ? ModelsPanel::tr("%1 states for phones in context").arg(context->tree().stateCount())
+                             : ModelsPanel::tr("one state per phone");
+    const auto *brand = dynamic_cast<const BrandModel *>(context ? &context->inner() : &model);
+    if (brand && brand->fullCovariance())
+        states = ModelsPanel::tr("%1, full covariances").arg(states);
     return model.compensatesVariance()
                ? ModelsPanel::tr("%1 parameters, %2, variance compensation").arg(model.dimension()).arg(states)
                : ModelsPanel::tr("%1 parameters, %2").arg(model.dimension()).arg(states);
@@ -91,8 +96,14 @@ ModelsPanel::ModelsPanel(QWidget *parent)
     m_dpdsOptimizer->addItem(tr("Gradient ascent (paper)"), QStringLiteral("gradient"));
     m_sldsA->addItem(tr("Diagonal A"), false);
     m_sldsA->addItem(tr("Full A"), true);
-    m_brandCovariance->addItem(tr("Diagonal covariance"), false);
-    m_brandCovariance->addItem(tr("Full covariance"), true);
+    // Brand: the covariance chosen by cross-validation on the training sequences (docs/models.md §2.1).
+    m_brandCovariance->setObjectName(QStringLiteral("brandCovariance"));
+    m_brandCovariance->addItem(tr("Covariance by CV"), int(BrandCovariance::CrossValidated));
+    m_brandCovariance->addItem(tr("Diagonal covariance"), int(BrandCovariance::Diagonal));
+    m_brandCovariance->addItem(tr("Full covariance"), int(BrandCovariance::Full));
+    m_brandCovariance->setToolTip(
+        tr("Brand's output covariances. By CV: diagonal or full, whichever of the two generates held-out "
+           "training sequences more closely (cross-validation). Diagonal: the paper's model."));
     const QHash<QString, QWidget *> options{{QString::fromLatin1(modelKindId(ModelKind::Dpds)), m_dpdsOptimizer},
                                             {QString::fromLatin1(modelKindId(ModelKind::Slds)), m_sldsA},
                                             {QString::fromLatin1(modelKindId(ModelKind::Brand)), m_brandCovariance}};
@@ -293,7 +304,7 @@ ModelOptions ModelsPanel::modelOptions() const
                                  ? DpdsOptions::Optimizer::GradientAscent
                                  : DpdsOptions::Optimizer::LevenbergMarquardt;
     options.slds.fullA = m_sldsA->currentData().toBool();
-    options.brand.fullCovariance = m_brandCovariance->currentData().toBool();
+    options.brand.covariance = BrandCovariance(m_brandCovariance->currentData().toInt());
     options.compensateVariance = m_compensateVariance->isChecked();
     options.contextStates = m_contextStates->isChecked();
     return options;

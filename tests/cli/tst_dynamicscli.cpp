@@ -228,6 +228,28 @@ private slots:
         const Run evaluation = runLipsync({"evaluate", "--project", folder, "--folds", "3", "--kinds", "hmm", "--json"});
         QVERIFY2(evaluation.exitCode == 0, evaluation.err.constData());
 
+        // Brand's covariance chosen by cross-validation: the report says which, and the held-out
+        // errors that chose it; the model file keeps the same.
+        const QString cv = m_dir.filePath(QStringLiteral("brand-cv.model"));
+        const Run chosen = runLipsync({"train", "--kind", "brand", "--project", folder, "--covariance", "cv", "--out", cv,
+                                       "--json"});
+        QVERIFY2(chosen.exitCode == 0, chosen.err.constData());
+        const QJsonObject c = QJsonDocument::fromJson(chosen.out).object();
+        const QJsonObject choice = c.value("covarianceChoice").toObject();
+        QVERIFY2(choice.value("folds").toInt() >= 2, chosen.out.constData());
+        QVERIFY(choice.value("diagonalL1").toDouble() > 0 && choice.value("fullL1").toDouble() > 0);
+        QCOMPARE(c.value("covariance").toString(),
+                 choice.value("fullL1").toDouble() < choice.value("diagonalL1").toDouble() ? "full" : "diagonal");
+        QFile file(cv);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QJsonObject saved = QJsonDocument::fromJson(file.readAll()).object().value("parameters").toObject();
+        QCOMPARE(saved.value("covariance").toString(), c.value("covariance").toString());
+        QCOMPARE(saved.value("covarianceChoice").toObject(), choice);
+        const Run diagonal = runLipsync({"train", "--kind", "brand", "--project", folder, "--out", cv, "--json"});
+        QCOMPARE(QJsonDocument::fromJson(diagonal.out).object().value("covariance").toString(), "diagonal");
+        QVERIFY(!QJsonDocument::fromJson(diagonal.out).object().contains("covarianceChoice"));
+        QCOMPARE(runLipsync({"train", "--kind", "brand", "--project", folder, "--covariance", "both", "--out", cv}).exitCode, 2);
+
         // A project without features: exit 1, one line naming the manifest.
         Project empty;
         Sequence bare;

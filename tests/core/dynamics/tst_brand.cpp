@@ -7,7 +7,14 @@
 
 #include <QTest>
 
+#include "util/Error.h"
+
+#include <QJsonObject>
+
 #include <Eigen/Cholesky>
+
+#include <numeric>
+#include <random>
 
 using namespace lipsync;
 using namespace lipsync::test;
@@ -24,7 +31,7 @@ std::vector<LabelledSequence> trainingData(unsigned seed, int d, int sequences =
 BrandModel trained(const std::vector<LabelledSequence> &data, bool full = false, int lag = 0)
 {
     BrandOptions options;
-    options.fullCovariance = full;
+    options.covariance = full ? BrandCovariance::Full : BrandCovariance::Diagonal;
     options.lag = lag;
     BrandModel model(options);
     Feedback feedback;
@@ -33,6 +40,28 @@ BrandModel trained(const std::vector<LabelledSequence> &data, bool full = false,
 }
 
 double maxAbs(const Eigen::MatrixXd &m) { return m.cwiseAbs().maxCoeff(); }
+
+// Streams `labels` through the model's fixed-lag streamer; *onTime turns false if frame t is not
+// out exactly when label t + L is in.
+Eigen::MatrixXd streamed(const BrandModel &model, const std::vector<int> &labels, int lag, bool *onTime)
+{
+    auto stream = model.streamer();
+    *onTime = stream->latency() == lag;
+    Eigen::MatrixXd out(Eigen::Index(labels.size()), model.dimension());
+    Eigen::VectorXd frame(model.dimension());
+    Eigen::Index next = 0;
+    for (size_t t = 0; t < labels.size(); ++t) {
+        stream->push(labels[t]);
+        while (stream->pop(frame))
+            out.row(next++) = frame.transpose();
+        *onTime = *onTime && next == std::max<Eigen::Index>(0, Eigen::Index(t) - lag + 1);
+    }
+    stream->finish();
+    while (stream->pop(frame))
+        out.row(next++) = frame.transpose();
+    *onTime = *onTime && next == out.rows();
+    return out;
+}
 
 } // namespace
 
@@ -160,22 +189,9 @@ private slots:
         double previousError = INFINITY;
         for (int lag : {2, 5, 10, 20}) {
             const BrandModel model = trained(data, false, lag);
-            auto stream = model.streamer();
-            QCOMPARE(stream->latency(), lag);
-            Eigen::MatrixXd streamed(exact.rows(), exact.cols());
-            Eigen::VectorXd frame(3);
-            Eigen::Index next = 0;
-            for (size_t t = 0; t < labels.size(); ++t) {
-                stream->push(labels[t]);
-                while (stream->pop(frame))
-                    streamed.row(next++) = frame.transpose();
-                // Frame t is ready once label t + L is known.
-                QCOMPARE(next, std::max<Eigen::Index>(0, Eigen::Index(t) - lag + 1));
-            }
-            stream->finish();
-            while (stream->pop(frame))
-                streamed.row(next++) = frame.transpose();
-            QCOMPARE(next, exact.rows());
+            bool onTime = false;
+            const Eigen::MatrixXd streamed = ::streamed(model, labels, lag, &onTime);
+            QVERIFY(onTime); // frame t is ready once label t + L is known
             // Error bound rho^{h-t} x end error; exact when h = T.
             const double rho = model.contraction();
             double maxError = 0;
@@ -207,6 +223,41 @@ private slots:
         }
         const BrandModel model = trained(data, false, 5);
         QVERIFY(model.streamingLag() == 5);
+    }
+
+    // §5, full covariances: the same truncation on the block system. Frame t comes out once label
+    // t + L is in, and it is frame t of the exact solve of the prefix 1..t+L (the last L frames:
+    // of the whole sequence); the error against the whole solve shrinks with the lag.
+    void fixedLagStreamingFullCovariance()
+    {
+        const auto data = trainingData(9, 3);
+        const BrandModel reference = trained(data, true);
+        QVERIFY(reference.fullCovariance());
+        std::mt19937 rng(10);
+        const std::vector<int> labels = randomLabels(rng, 90, {0, 2, 6, 9, 21, 26, 35});
+        const Eigen::MatrixXd exact = reference.generateMostLikely(labels);
+        const Eigen::Index T = exact.rows();
+        double previousError = INFINITY;
+        for (int lag : {1, 2, 5, 10, 20}) {
+            const BrandModel model = trained(data, true, lag);
+            bool onTime = false;
+            const Eigen::MatrixXd streamed = ::streamed(model, labels, lag, &onTime);
+            QVERIFY(onTime);
+            double maxError = 0;
+            for (Eigen::Index t = 0; t < T; ++t) {
+                const Eigen::Index h = std::min(t + lag, T - 1);
+                const std::vector<int> prefix(labels.begin(), labels.begin() + h + 1);
+                const Eigen::MatrixXd truncated = reference.generateMostLikely(prefix);
+                QVERIFY2(maxAbs(streamed.row(t) - truncated.row(t)) < 1e-9,
+                         qPrintable(QString("lag %1, frame %2").arg(lag).arg(t)));
+                maxError = std::max(maxError, maxAbs(streamed.row(t) - exact.row(t)));
+            }
+            qInfo("lag %d: max error %.3g", lag, maxError);
+            QVERIFY(maxError <= previousError + 1e-15);
+            previousError = maxError;
+        }
+        QVERIFY(previousError < 1e-3);
+        QVERIFY_THROWS_EXCEPTION(Error, trained(data, true, 3).streamer()->push(99));
     }
 
     // §7.16
@@ -332,6 +383,88 @@ private slots:
         QVERIFY(F(0, 1) / std::sqrt(F(0, 0) * F(1, 1)) > 0.95);  // y1, y2
         QVERIFY(F(2, 3) / std::sqrt(F(2, 2) * F(3, 3)) > 0.95);  // delta y1, delta y2
         QVERIFY(trained(data, false).jointCovariance.empty());
+    }
+
+    // §2.1, the covariance chosen by cross-validation: the choice re-computed from its documented
+    // split (shuffled by mt19937(kCovarianceSeed), sequence i of the order in fold i mod 5), both
+    // covariances trained on the other folds and scored by the held-out sequences' mean per-frame
+    // L1; the model is then the chosen covariance trained on everything. The choice depends on the
+    // data: coupled dimensions with many frames per phone, and few frames per phone in more
+    // dimensions than they support, are decided differently.
+    void covarianceChosenByCrossValidation()
+    {
+        std::mt19937 rng(5);
+        std::normal_distribution<double> normal;
+        std::vector<LabelledSequence> coupled = trainingData(21, 1, 30, 60);
+        for (LabelledSequence &s : coupled) {
+            Eigen::MatrixXd Y(s.features.rows(), 2);
+            for (Eigen::Index t = 0; t < Y.rows(); ++t)
+                Y.row(t) << s.features(t, 0), 0.8 * s.features(t, 0) + 0.01 * normal(rng);
+            s.features = Y;
+        }
+        std::vector<LabelledSequence> sparse = trainingData(22, 6, 8, 16);
+        std::vector<bool> chosen;
+        for (const std::vector<LabelledSequence> *data : {&coupled, &sparse}) {
+            BrandOptions options;
+            options.covariance = BrandCovariance::CrossValidated;
+            BrandModel model(options);
+            Feedback feedback;
+            model.train(*data, feedback);
+
+            const int S = int(data->size()), folds = std::min(BrandModel::kCovarianceFolds, S);
+            std::vector<int> order(static_cast<size_t>(S));
+            std::iota(order.begin(), order.end(), 0);
+            std::mt19937 shuffle(BrandModel::kCovarianceSeed);
+            std::shuffle(order.begin(), order.end(), shuffle);
+            double l1[2] = {0.0, 0.0};
+            for (int fold = 0; fold < folds; ++fold) {
+                std::vector<LabelledSequence> training, heldOut;
+                for (int i = 0; i < S; ++i)
+                    (i % folds == fold ? heldOut : training).push_back((*data)[size_t(order[size_t(i)])]);
+                for (int full = 0; full < 2; ++full) {
+                    const BrandModel part = trained(training, full == 1);
+                    for (const LabelledSequence &h : heldOut)
+                        for (Eigen::Index t = 0; t < h.features.rows(); ++t)
+                            l1[full] += (part.generateMostLikely(h.labels).row(t) - h.features.row(t)).cwiseAbs().sum()
+                                        / double(h.features.rows() * S);
+                }
+            }
+            const BrandModel::CovarianceChoice &choice = model.covarianceChoice();
+            QCOMPARE(choice.folds, 5);
+            QVERIFY2(std::abs(choice.diagonalL1 - l1[0]) < 1e-9 * l1[0], qPrintable(QString::number(choice.diagonalL1)));
+            QVERIFY2(std::abs(choice.fullL1 - l1[1]) < 1e-9 * l1[1], qPrintable(QString::number(choice.fullL1)));
+            qInfo("diagonal L1 %.6f, full L1 %.6f", l1[0], l1[1]);
+            const bool full = l1[1] < l1[0];
+            QCOMPARE(model.fullCovariance(), full);
+            const std::vector<int> &labels = data->front().labels;
+            QVERIFY(maxAbs(model.generateMostLikely(labels) - trained(*data, full).generateMostLikely(labels)) < 1e-12);
+            chosen.push_back(full);
+
+            // The choice travels with the parameters; a damaged one is refused, naming the field.
+            QJsonObject json = model.parametersToJson();
+            BrandModel loaded;
+            loaded.parametersFromJson(json, "brand.model");
+            QCOMPARE(loaded.covarianceChoice().folds, 5);
+            QCOMPARE(loaded.covarianceChoice().fullL1, choice.fullL1);
+            QCOMPARE(loaded.fullCovariance(), full);
+            json[QStringLiteral("covarianceChoice")] = QJsonObject{{QStringLiteral("folds"), 1}};
+            try {
+                loaded.parametersFromJson(json, "brand.model");
+                QFAIL("a damaged covariance choice was accepted");
+            } catch (const Error &e) {
+                QVERIFY2(std::string(e.what()).find("covarianceChoice") != std::string::npos, e.what());
+            }
+        }
+        QVERIFY2(chosen[0] != chosen[1], "both data sets got the same covariance");
+
+        // One sequence: nothing to hold out, the paper's diagonal.
+        BrandOptions options;
+        options.covariance = BrandCovariance::CrossValidated;
+        BrandModel single(options);
+        Feedback feedback;
+        single.train({sparse.front()}, feedback);
+        QCOMPARE(single.covarianceChoice().folds, 0);
+        QVERIFY(!single.fullCovariance());
     }
 
     void unseenPhonesAndOneFrame()

@@ -73,7 +73,7 @@ private slots:
         options.compensateVariance = compensated;
         options.contextStates = context;
         options.context.minOccupancy = 10;
-        options.brand.fullCovariance = full;
+        options.brand.covariance = full ? BrandCovariance::Full : BrandCovariance::Diagonal;
         options.slds.fullA = full;
         options.slds.fullNoise = full;
         options.slds.maxIterations = 5;
