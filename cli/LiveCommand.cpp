@@ -14,6 +14,8 @@
 #include "align/Lexicon.h"
 #include "align/PhoneErrorRate.h"
 #include "align/ShippedAlignerModel.h"
+#include "align/SphinxPhoneRecognizer.h"
+#include "align/StreamingPhoneRecognizer.h"
 #include "dynamics/ModelFile.h"
 #include "io/AudioDecoder.h"
 #include "io/MediaInfo.h"
@@ -38,6 +40,7 @@
 #include <deque>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 using namespace lipsync;
@@ -53,10 +56,14 @@ double secondsBetween(Clock::time_point a, Clock::time_point b)
 }
 
 // Encodes the recorded frames on a thread of its own, so that H.264 encoding never holds up the
-// next block of sound (the frames wait in a queue; a live session makes 25 a second).
+// next block of sound (the frames wait in a queue; a live session makes 25 a second). The queue
+// holds at most kMaxQueued frames: fed faster than the encoder writes (--as-fast-as-possible),
+// add() waits for room, so memory stays bounded whatever the input's length.
 class FrameRecorder
 {
 public:
+    static constexpr size_t kMaxQueued = 50; // 2 s at 25 frames/s
+
     explicit FrameRecorder(std::unique_ptr<VideoExporter> exporter)
         : m_exporter(std::move(exporter)), m_thread([this] { run(); })
     {
@@ -67,7 +74,8 @@ public:
     }
     void add(const cv::Mat &frame)
     {
-        const std::lock_guard lock(m_mutex);
+        std::unique_lock lock(m_mutex);
+        m_room.wait(lock, [this] { return m_frames.size() < kMaxQueued || m_done; });
         m_frames.push_back(frame);
         m_ready.notify_one();
     }
@@ -102,6 +110,7 @@ private:
                     return;
                 frame = std::move(m_frames.front());
                 m_frames.pop_front();
+                m_room.notify_one();
             }
             try {
                 if (!m_error)
@@ -114,7 +123,7 @@ private:
 
     std::unique_ptr<VideoExporter> m_exporter;
     std::mutex m_mutex;
-    std::condition_variable m_ready;
+    std::condition_variable m_ready, m_room;
     std::deque<cv::Mat> m_frames;
     bool m_done = false;
     std::exception_ptr m_error;
@@ -136,22 +145,40 @@ int runLive(const CommandLine &a)
 {
     const QString input = a.value("input");
     const QString alignerPath = alignerModelOrDefault(a.value("aligner"), QStringLiteral("live"));
-    if (alignerPath.startsWith(QLatin1String("sphinx")))
-        throw UsageError(QStringLiteral("live recognition runs on an aligner model of ours, not on CMU Sphinx's"));
-    QString bigramPath = a.value("bigram");
-    if (bigramPath.isEmpty())
-        bigramPath = QString::fromStdString(shippedPhoneBigramPath());
-    if (bigramPath.isEmpty())
-        throw Error("no phone bigram: give one with --bigram (lipsync aligner bigram)");
+    const bool sphinx = alignerPath == QLatin1String("sphinx") || alignerPath.startsWith(QLatin1String("sphinx:"));
     const double blockSeconds = a.positiveNumber("block-ms") / 1000.0;
     const bool fast = a.isSet("as-fast-as-possible");
 
-    const AcousticModel acoustic = AcousticModel::load(alignerPath.toStdString());
-    const PhoneBigram bigram = PhoneBigram::load(bigramPath.toStdString());
+    // The recogniser: our HMMs of the speaker with a phone bigram, or CMU Sphinx's for anyone.
+    std::optional<AcousticModel> acoustic;
+    PhoneBigram bigram;
+    std::unique_ptr<PhoneStream> recognizer;
+    if (sphinx) {
+        if (a.isSet("bigram"))
+            throw UsageError(QStringLiteral("--bigram is for our aligner models; CMU Sphinx has its own phone "
+                                            "language model"));
+        SphinxPhoneOptions sphinxOptions;
+        sphinxOptions.modelDir = alignerPath.section(QLatin1Char(':'), 1).toStdString();
+        if (a.isSet("lag"))
+            sphinxOptions.lagFrames = a.integer("lag", 0);
+        recognizer = std::make_unique<SphinxPhoneRecognizer>(sphinxOptions);
+    } else {
+        QString bigramPath = a.value("bigram");
+        if (bigramPath.isEmpty())
+            bigramPath = QString::fromStdString(shippedPhoneBigramPath());
+        if (bigramPath.isEmpty())
+            throw Error("no phone bigram: give one with --bigram (lipsync aligner bigram)");
+        acoustic = AcousticModel::load(alignerPath.toStdString());
+        bigram = PhoneBigram::load(bigramPath.toStdString());
+        PhoneRecognizerOptions ours;
+        if (a.isSet("lag"))
+            ours.lagFrames = a.integer("lag", 0);
+        recognizer = std::make_unique<StreamingPhoneRecognizer>(*acoustic, bigram, ours);
+    }
+    const int sampleRate = recognizer->frameOptions().sampleRate;
     const AamModel aam = AamModel::load(a.value("aam").toStdString());
     const std::shared_ptr<DynamicModel> model = loadModel(a.value("model").toStdString(), aam.identifier);
     LiveOptions options;
-    options.recognizer.lagFrames = a.integer("lag", 0);
     options.stillBackground = a.isSet("still");
     options.closeBilabials = Compositing::closesLips(a);
     if (a.isSet("fps"))
@@ -179,8 +206,8 @@ int runLive(const CommandLine &a)
                              : std::make_unique<FaceRenderer>(aam, background.toStdString(), tracking);
     const CompositeOptions composite = Compositing::from(a);
     renderer->setCompositeOptions(composite);
-    const AudioBuffer sound = AudioDecoder::decode(input.toStdString(), acoustic.featureOptions().sampleRate);
-    LiveSession session(acoustic, bigram, *model, renderer.get(), options);
+    const AudioBuffer sound = AudioDecoder::decode(input.toStdString(), sampleRate);
+    LiveSession session(std::move(recognizer), *model, renderer.get(), options);
 
     std::unique_ptr<FrameRecorder> recorder;
     if (a.isSet("out")) {
@@ -266,7 +293,7 @@ int runLive(const CommandLine &a)
         const Tier reference = referencePhones(alignerPath, input, a.value("transcript"), a.value("pronunciations"));
         o[QStringLiteral("phone_error_rate")] = phoneErrorRate(spokenPhones(reference), recognised);
         const std::vector<std::string> truth =
-            voteFrameLabels(reference, session.frameRate(), frames, acoustic.featureOptions());
+            voteFrameLabels(reference, session.frameRate(), frames, session.audioFrames());
         int same = 0;
         for (int i = 0; i < frames; ++i)
             same += PhoneSet::index(truth[size_t(i)]) == session.frameLabels()[size_t(i)];
@@ -311,10 +338,12 @@ const CommandRegistration registration{
          {QStringLiteral("aam"), QStringLiteral("AAM"), QStringLiteral("the AAM the model generates parameters of"), {},
           CommandOption::Required},
          {QStringLiteral("out"), QStringLiteral("OUT.mp4"), QStringLiteral("record the session (frames and sound)")},
-         {QStringLiteral("aligner"), QStringLiteral("MODEL"),
-          QStringLiteral("the aligner model whose HMMs recognise (default: the shipped GRID s1 model)")},
+         {QStringLiteral("aligner"), QStringLiteral("MODEL|sphinx[:DIR]"),
+          QStringLiteral("the aligner model whose HMMs recognise (default: the shipped GRID s1 model), or sphinx for "
+                         "CMU Sphinx's US-English phone recogniser, for any speaker (Debian's pocketsphinx-en-us)")},
          {QStringLiteral("bigram"), QStringLiteral("FILE"),
-          QStringLiteral("the phone bigram (lipsync aligner bigram; default: the shipped GRID s1 one)")},
+          QStringLiteral("the phone bigram of our aligner models (lipsync aligner bigram; default: the shipped GRID s1 "
+                         "one)")},
          {QStringLiteral("transcript"), QStringLiteral("FILE"),
           QStringLiteral("the words spoken, to measure the recognised phones against their forced alignment")},
          {QStringLiteral("background"), QStringLiteral("MEDIA"),
@@ -324,7 +353,8 @@ const CommandRegistration registration{
           QStringLiteral("a video standing for a camera: each frame's face is found as the frame comes, not "
                          "tracked beforehand, and the generated face drawn over it (the Live view's camera)")},
          {QStringLiteral("lag"), QStringLiteral("FRAMES"),
-          QStringLiteral("100 Hz frames the phone decisions wait for (latency against accuracy)"), QStringLiteral("6")},
+          QStringLiteral("100 Hz frames the phone decisions wait for (latency against accuracy; default: 6 with our "
+                         "models, 10 with sphinx)")},
          {QStringLiteral("block-ms"), QStringLiteral("MS"), QStringLiteral("milliseconds of sound per block fed"),
           QStringLiteral("10")},
          {QStringLiteral("fps"), QStringLiteral("RATE"),

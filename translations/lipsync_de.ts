@@ -1001,143 +1001,148 @@
 <context>
     <name>lipsync::studio::LiveController</name>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="84"/>
+        <location filename="../studio/live/LiveController.cpp" line="100"/>
         <source>Open a project to go live: the face is drawn with its appearance model and animated by its trained dynamic model.</source>
         <translation>Öffnen Sie ein Projekt, um live zu gehen: Das Gesicht wird mit seinem Erscheinungsmodell gezeichnet und von seinem trainierten dynamischen Modell bewegt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="88"/>
+        <location filename="../studio/live/LiveController.cpp" line="104"/>
         <source>The project has no appearance model. Build one (Faces ▸ Build AAM), then train a dynamic model in the Models panel.</source>
         <translation>Das Projekt hat kein Erscheinungsmodell. Erstellen Sie eines (Gesichter ▸ AAM erstellen) und trainieren Sie dann ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="93"/>
+        <location filename="../studio/live/LiveController.cpp" line="109"/>
         <source>The project&apos;s appearance model could not be loaded: %1</source>
         <translation>Das Erscheinungsmodell des Projekts konnte nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="95"/>
+        <location filename="../studio/live/LiveController.cpp" line="111"/>
         <source>No dynamic model is trained yet. Train one in the Models panel (DPDS follows live speech best), then start again.</source>
         <translation>Es ist noch kein dynamisches Modell trainiert. Trainieren Sie eines im Bereich „Modelle“ (DPDS folgt Live-Sprache am besten) und starten Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="99"/>
+        <location filename="../studio/live/LiveController.cpp" line="115"/>
         <source>Choose a trained model.</source>
         <translation>Wählen Sie ein trainiertes Modell.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="101"/>
+        <location filename="../studio/live/LiveController.cpp" line="117"/>
         <source>The %1 model was trained with another appearance model: train it again in the Models panel.</source>
         <translation>Das Modell %1 wurde mit einem anderen Erscheinungsmodell trainiert: Trainieren Sie es im Bereich „Modelle“ erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="104"/>
+        <location filename="../studio/live/LiveController.cpp" line="122"/>
+        <source>CMU Sphinx&apos;s US-English models, which recognise the phones when the timeline aligns with CMU Sphinx, were not found. Install the Debian package pocketsphinx-en-us, or choose the built-in model in the timeline&apos;s Model menu.</source>
+        <translation>Die US-englischen Modelle von CMU Sphinx, die die Phone erkennen, wenn die Zeitleiste mit CMU Sphinx ausrichtet, wurden nicht gefunden. Installieren Sie das Debian-Paket pocketsphinx-en-us oder wählen Sie im Modell-Menü der Zeitleiste das eingebaute Modell.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveController.cpp" line="126"/>
         <source>The studio&apos;s aligner model, which recognises the phones, was not found. Reinstall the studio or point LIPSYNC_ALIGNER_MODEL at an aligner model.</source>
         <translation>Das Aligner-Modell des Studios, das die Phone erkennt, wurde nicht gefunden. Installieren Sie das Studio neu oder lassen Sie LIPSYNC_ALIGNER_MODEL auf ein Aligner-Modell zeigen.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="107"/>
+        <location filename="../studio/live/LiveController.cpp" line="129"/>
         <source>The phone bigram for live recognition (aligner/grid-s1.bigram) was not found. Reinstall the studio.</source>
         <translation>Das Phon-Bigramm für die Live-Erkennung (aligner/grid-s1.bigram) wurde nicht gefunden. Installieren Sie das Studio neu.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="128"/>
+        <location filename="../studio/live/LiveController.cpp" line="150"/>
         <source>A live session is running already.</source>
         <translation>Es läuft bereits eine Live-Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="130"/>
+        <location filename="../studio/live/LiveController.cpp" line="152"/>
         <source>Wait until the video export has ended.</source>
         <translation>Warten Sie, bis der Videoexport beendet ist.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="134"/>
+        <location filename="../studio/live/LiveController.cpp" line="156"/>
         <source>Choose a microphone.</source>
         <translation>Wählen Sie ein Mikrofon.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="157"/>
+        <location filename="../studio/live/LiveController.cpp" line="183"/>
         <source>Prepare the live view</source>
         <translation>Live-Ansicht vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="194"/>
+        <location filename="../studio/live/LiveController.cpp" line="234"/>
         <source>No face was found in %1: the live face is drawn on grey.</source>
         <translation>In %1 wurde kein Gesicht gefunden: Das Live-Gesicht wird auf Grau gezeichnet.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="204"/>
+        <location filename="../studio/live/LiveController.cpp" line="244"/>
         <source>The live view could not be prepared: %1</source>
         <translation>Die Live-Ansicht konnte nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="254"/>
+        <location filename="../studio/live/LiveController.cpp" line="294"/>
         <source>The microphone could not be opened: %1.</source>
         <translation>Das Mikrofon konnte nicht geöffnet werden: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="338"/>
+        <location filename="../studio/live/LiveController.cpp" line="378"/>
         <source>The live session stopped: %1</source>
         <translation>Die Live-Sitzung wurde abgebrochen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="436"/>
-        <location filename="../studio/live/LiveController.cpp" line="497"/>
+        <location filename="../studio/live/LiveController.cpp" line="476"/>
+        <location filename="../studio/live/LiveController.cpp" line="537"/>
         <source>Nothing is recorded yet: start a session and stop it first.</source>
         <translation>Es ist noch nichts aufgenommen: Starten und beenden Sie zuerst eine Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="438"/>
+        <location filename="../studio/live/LiveController.cpp" line="478"/>
         <source>No project is open.</source>
         <translation>Es ist kein Projekt geöffnet.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="440"/>
+        <location filename="../studio/live/LiveController.cpp" line="480"/>
         <source>The bundled demo is read-only: save the project in a folder of your own first.</source>
         <translation>Das mitgelieferte Demo ist schreibgeschützt: Speichern Sie das Projekt zuerst in einem eigenen Ordner.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="442"/>
+        <location filename="../studio/live/LiveController.cpp" line="482"/>
         <source>The project&apos;s appearance model changed since the recording: its features no longer fit.</source>
         <translation>Das Erscheinungsmodell des Projekts hat sich seit der Aufnahme geändert: Ihre Merkmale passen nicht mehr dazu.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="461"/>
+        <location filename="../studio/live/LiveController.cpp" line="501"/>
         <source>The sound could not be written: %1</source>
         <translation>Der Ton konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="482"/>
+        <location filename="../studio/live/LiveController.cpp" line="522"/>
         <source>Save Live Session as %1</source>
         <translation>Live-Sitzung als %1 speichern</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="484"/>
+        <location filename="../studio/live/LiveController.cpp" line="524"/>
         <source>The project refused the new sequence (the status bar says why).</source>
         <translation>Das Projekt hat die neue Sequenz abgelehnt (die Statusleiste nennt den Grund).</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="499"/>
+        <location filename="../studio/live/LiveController.cpp" line="539"/>
         <source>Stop the session first.</source>
         <translation>Beenden Sie zuerst die Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="501"/>
+        <location filename="../studio/live/LiveController.cpp" line="541"/>
         <source>A video export is running already.</source>
         <translation>Es läuft bereits ein Videoexport.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="513"/>
+        <location filename="../studio/live/LiveController.cpp" line="553"/>
         <source>Export the live session to %1</source>
         <translation>Live-Sitzung nach %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="524"/>
+        <location filename="../studio/live/LiveController.cpp" line="564"/>
         <source>The live session was written to %1.</source>
         <translation>Die Live-Sitzung wurde nach %1 geschrieben.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="532"/>
+        <location filename="../studio/live/LiveController.cpp" line="572"/>
         <source>The video could not be written: %1</source>
         <translation>Das Video konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -1145,183 +1150,198 @@
 <context>
     <name>lipsync::studio::LiveView</name>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="37"/>
+        <location filename="../studio/live/LiveView.cpp" line="38"/>
         <source>Start</source>
         <translation>Start</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="38"/>
+        <location filename="../studio/live/LiveView.cpp" line="39"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="38"/>
-        <location filename="../studio/live/LiveView.cpp" line="386"/>
+        <location filename="../studio/live/LiveView.cpp" line="39"/>
+        <location filename="../studio/live/LiveView.cpp" line="401"/>
         <source>Save as Sequence</source>
         <translation>Als Sequenz speichern</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="39"/>
+        <location filename="../studio/live/LiveView.cpp" line="40"/>
         <source>Export Video…</source>
         <translation>Video exportieren…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="49"/>
+        <location filename="../studio/live/LiveView.cpp" line="50"/>
         <source>Microphone:</source>
         <translation>Mikrofon:</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="51"/>
+        <location filename="../studio/live/LiveView.cpp" line="52"/>
         <source>Model:</source>
         <translation>Modell:</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="56"/>
+        <location filename="../studio/live/LiveView.cpp" line="57"/>
         <source>The microphone the face listens to</source>
         <translation>Das Mikrofon, dem das Gesicht zuhört</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="60"/>
+        <location filename="../studio/live/LiveView.cpp" line="61"/>
         <source>Draw the face over a camera&apos;s picture of you, wherever your face is in it, or into the still of the person (No camera)</source>
         <translation>Das Gesicht über das Kamerabild von Ihnen zeichnen, wo immer Ihr Gesicht darin ist, oder in das Standbild der Person (Keine Kamera)</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="63"/>
+        <location filename="../studio/live/LiveView.cpp" line="64"/>
         <source>The trained dynamic model that moves the face</source>
         <translation>Das trainierte dynamische Modell, das das Gesicht bewegt</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="66"/>
+        <location filename="../studio/live/LiveView.cpp" line="67"/>
         <source>Listen to the microphone and move the face as you speak</source>
         <translation>Dem Mikrofon zuhören und das Gesicht bewegen, während Sie sprechen</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="69"/>
+        <location filename="../studio/live/LiveView.cpp" line="70"/>
         <source>Stop listening; the session is kept for Save and Export</source>
         <translation>Nicht mehr zuhören; die Sitzung bleibt zum Speichern und Exportieren erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="71"/>
+        <location filename="../studio/live/LiveView.cpp" line="72"/>
         <source>Add the last session to the project as a sequence: its sound, generated faces and recognised phones</source>
         <translation>Die letzte Sitzung als Sequenz zum Projekt hinzufügen: ihren Ton, die erzeugten Gesichter und die erkannten Phone</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="74"/>
+        <location filename="../studio/live/LiveView.cpp" line="75"/>
         <source>Write the last session&apos;s faces with its sound as an MP4 video</source>
         <translation>Die Gesichter der letzten Sitzung mit ihrem Ton als MP4-Video schreiben</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="90"/>
+        <location filename="../studio/live/LiveView.cpp" line="96"/>
+        <source>What recognises the phones: CMU Sphinx&apos;s US-English model when the timeline aligns with CMU Sphinx (its Model menu), else the HMMs of the studio&apos;s aligner model, trained on one speaker</source>
+        <translation>Was die Phone erkennt: das US-englische Modell von CMU Sphinx, wenn die Zeitleiste mit CMU Sphinx ausrichtet (ihr Modell-Menü), sonst die HMMs des Ausrichtungsmodells des Studios, auf einen Sprecher trainiert</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="100"/>
         <source>The phones recognised in the last seconds, the newest on the right</source>
         <translation>Die in den letzten Sekunden erkannten Phone, die neuesten rechts</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="96"/>
+        <location filename="../studio/live/LiveView.cpp" line="106"/>
         <source>Time from the sound to the frame that shows it, over the last %1 seconds</source>
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="173"/>
+        <location filename="../studio/live/LiveView.cpp" line="185"/>
         <source>No microphone found</source>
         <translation>Kein Mikrofon gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="181"/>
+        <location filename="../studio/live/LiveView.cpp" line="193"/>
         <source>No camera</source>
         <translation>Keine Kamera</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="182"/>
+        <location filename="../studio/live/LiveView.cpp" line="194"/>
         <source>The face is drawn into a still of the person</source>
         <translation>Das Gesicht wird in ein Standbild der Person gezeichnet</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="230"/>
+        <location filename="../studio/live/LiveView.cpp" line="242"/>
         <source>No trained model</source>
         <translation>Kein trainiertes Modell</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="263"/>
+        <location filename="../studio/live/LiveView.cpp" line="275"/>
         <source>No microphone was found. Connect one: the list above follows the devices as they come and go.</source>
         <translation>Es wurde kein Mikrofon gefunden. Schließen Sie eines an: Die Liste oben folgt den Geräten, wie sie kommen und gehen.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="276"/>
+        <location filename="../studio/live/LiveView.cpp" line="284"/>
+        <source>Phones: CMU Sphinx US English (any speaker)</source>
+        <translation>Phone: CMU Sphinx US-Englisch (jeder Sprecher)</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="285"/>
+        <source>Phones: the aligner model&apos;s HMMs</source>
+        <translation>Phone: die HMMs des Ausrichtungsmodells</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="291"/>
         <source>Preparing: loading the phone recogniser and finding the face in the current sequence…</source>
         <translation>Vorbereitung: Die Phon-Erkennung wird geladen und das Gesicht in der aktuellen Sequenz gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="279"/>
+        <location filename="../studio/live/LiveView.cpp" line="294"/>
         <source>Listening. Speak, and the face follows.</source>
         <translation>Hört zu. Sprechen Sie, und das Gesicht folgt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="282"/>
+        <location filename="../studio/live/LiveView.cpp" line="297"/>
         <source>Finishing the last frames…</source>
         <translation>Die letzten Bilder werden fertiggestellt…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="288"/>
+        <location filename="../studio/live/LiveView.cpp" line="303"/>
         <source>Writing the video…</source>
         <translation>Das Video wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="290"/>
+        <location filename="../studio/live/LiveView.cpp" line="305"/>
         <source>The last session (%1 s) is kept: save it as a sequence, export it as a video, or start again.</source>
         <translation>Die letzte Sitzung (%1 s) ist erhalten: Speichern Sie sie als Sequenz, exportieren Sie sie als Video oder starten Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="297"/>
+        <location filename="../studio/live/LiveView.cpp" line="312"/>
         <source>Press Start and speak: the face moves with your voice.</source>
         <translation>Drücken Sie „Start“ und sprechen Sie: Das Gesicht bewegt sich mit Ihrer Stimme.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="302"/>
+        <location filename="../studio/live/LiveView.cpp" line="317"/>
         <source>This model uses phones in context, so its face waits for each phone to end: a few hundred milliseconds more. For the quickest face, train it without Phones in context.</source>
         <translation>Dieses Modell verwendet Phoneme im Kontext, daher wartet sein Gesicht, bis jedes Phonem zu Ende ist: einige hundert Millisekunden mehr. Für das schnellste Gesicht trainieren Sie es ohne „Phoneme im Kontext“.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="306"/>
+        <location filename="../studio/live/LiveView.cpp" line="321"/>
         <source>Only the first %1 minutes are kept for saving; the face went on moving after that.</source>
         <translation>Nur die ersten %1 Minuten bleiben zum Speichern erhalten; das Gesicht hat sich danach weiterbewegt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="326"/>
+        <location filename="../studio/live/LiveView.cpp" line="341"/>
         <source>Latency: %1 ms mean, %2 ms max</source>
         <translation>Latenz: %1 ms im Mittel, %2 ms maximal</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="329"/>
+        <location filename="../studio/live/LiveView.cpp" line="344"/>
         <source>Time from the sound to the frame that shows it, over the last %1 seconds; %2 ms of it the phone recogniser and the model wait for the sound that follows</source>
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden; %2 ms davon warten die Phon-Erkennung und das Modell auf den folgenden Ton</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="334"/>
+        <location filename="../studio/live/LiveView.cpp" line="349"/>
         <source>Latency: –</source>
         <translation>Latenz: –</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="336"/>
+        <location filename="../studio/live/LiveView.cpp" line="351"/>
         <source>%1 s, frame %2 at %3 fps</source>
         <translation>%1 s, Bild %2 bei %3 fps</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="387"/>
+        <location filename="../studio/live/LiveView.cpp" line="402"/>
         <source>The session&apos;s sound is written into the project&apos;s folder, and the bundled demo is read-only. Save the project in a folder of your own first?</source>
         <translation>Der Ton der Sitzung wird in den Ordner des Projekts geschrieben, und das mitgelieferte Demo ist schreibgeschützt. Das Projekt zuerst in einem eigenen Ordner speichern?</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="396"/>
+        <location filename="../studio/live/LiveView.cpp" line="411"/>
         <source>The live session is sequence %1, at the end of the list.</source>
         <translation>Die Live-Sitzung ist jetzt die Sequenz %1 am Ende der Liste.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="405"/>
+        <location filename="../studio/live/LiveView.cpp" line="420"/>
         <source>Export Live Session</source>
         <translation>Live-Sitzung exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="407"/>
+        <location filename="../studio/live/LiveView.cpp" line="422"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>

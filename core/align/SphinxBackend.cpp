@@ -203,4 +203,98 @@ void SphinxUtterance::applyTransform(const std::string &pocketsphinxText)
     acmod_update_mllr(m_impl->acmod.get(), mllr);
 }
 
+struct SphinxPhoneLoop::Impl
+{
+    ps_decoder_t *ps = nullptr;
+    std::string phoneLm;
+    int utterances = 0;
+    bool running = false;
+    ~Impl()
+    {
+        if (running)
+            ps_end_utt(ps);
+        ps_free(ps);
+    }
+};
+
+SphinxPhoneLoop::SphinxPhoneLoop(const std::string &modelDir, const std::string &phoneLm,
+                                 const std::vector<std::pair<std::string, std::string>> &arguments)
+    : m_impl(std::make_unique<Impl>())
+{
+    std::vector<std::pair<std::string, std::string>> all{
+        {"-allphone", phoneLm}, {"-allphone_ci", "yes"}, {"-remove_silence", "no"}, {"-remove_noise", "no"},
+        {"-cmn", "prior"}};
+    all.insert(all.end(), arguments.begin(), arguments.end());
+    // The same configuration as SphinxDecoder's (log silenced once, the model folder expanded).
+    SphinxDecoder probe(modelDir, all);
+    std::swap(m_impl->ps, probe.m_impl->ps);
+    m_impl->phoneLm = phoneLm;
+}
+
+SphinxPhoneLoop::~SphinxPhoneLoop() = default;
+
+void SphinxPhoneLoop::start()
+{
+    if (m_impl->running)
+        ps_end_utt(m_impl->ps);
+    m_impl->running = false;
+    // Debian's pocketsphinx (5prealpha) keeps an all-phone search's history over all of its
+    // utterances, so memory and time would grow with the session: each utterance after the first
+    // gets a new search, and the one before is freed.
+    if (m_impl->utterances > 0) {
+        const std::string previous = ps_get_search(m_impl->ps);
+        const std::string next = "allphone" + std::to_string(m_impl->utterances % 2);
+        if (ps_set_allphone_file(m_impl->ps, next.c_str(), m_impl->phoneLm.c_str()) < 0
+            || ps_set_search(m_impl->ps, next.c_str()) < 0)
+            throw Error("pocketsphinx could not load the phone language model", m_impl->phoneLm);
+        ps_unset_search(m_impl->ps, previous.c_str());
+    }
+    ++m_impl->utterances;
+    m_impl->running = ps_start_utt(m_impl->ps) >= 0;
+    if (!m_impl->running)
+        throw Error("pocketsphinx could not start the utterance");
+}
+
+void SphinxPhoneLoop::process(const short *pcm, size_t count)
+{
+    if (!m_impl->running)
+        start();
+    if (count > 0 && ps_process_raw(m_impl->ps, pcm, count, FALSE, FALSE) < 0)
+        throw Error("pocketsphinx could not decode the audio");
+}
+
+void SphinxPhoneLoop::end()
+{
+    if (m_impl->running)
+        ps_end_utt(m_impl->ps);
+    m_impl->running = false;
+}
+
+int SphinxPhoneLoop::frames() const
+{
+    return ps_get_n_frames(m_impl->ps);
+}
+
+std::vector<SphinxPhoneLoop::Segment> SphinxPhoneLoop::segments() const
+{
+    std::vector<Segment> out;
+    for (ps_seg_t *seg = ps_seg_iter(m_impl->ps); seg; seg = ps_seg_next(seg)) {
+        Segment s;
+        s.phone = ps_seg_word(seg);
+        ps_seg_frames(seg, &s.first, &s.last);
+        out.push_back(std::move(s));
+    }
+    // Debian's pocketsphinx (5prealpha) numbers an utterance's frames on from the decoder's
+    // earlier utterances (a new search too); the path starts at the utterance's first frame.
+    if (!out.empty() && out.front().first != 0) {
+        const int offset = out.front().first;
+        for (Segment &s : out) {
+            s.first -= offset;
+            s.last -= offset;
+        }
+    }
+    return out;
+}
+
 } // namespace lipsync
+

@@ -6,6 +6,8 @@
 //  - SphinxUtterance: one utterance's features and senone scorer (pocketsphinx's acmod, whose
 //    functions the library exports but declares only in a private header; the signatures and
 //    the start of its struct are pinned in the .cpp and checked at run time).
+//  - SphinxPhoneLoop: pocketsphinx's all-phone search (a phone loop under a phone language
+//    model) fed block by block, with the best phone path so far.
 #include <memory>
 #include <string>
 #include <utility>
@@ -49,6 +51,7 @@ public:
 
 private:
     friend class SphinxUtterance;
+    friend class SphinxPhoneLoop;
     struct Impl;
     std::unique_ptr<Impl> m_impl;
 };
@@ -79,6 +82,42 @@ private:
     struct Impl;
     std::unique_ptr<Impl> m_impl;
     int m_frames = 0;
+};
+
+class SphinxPhoneLoop
+{
+public:
+    struct Segment
+    {
+        std::string phone; // the model's phone: "AA" ... "ZH", "SIL", fillers such as "+NSN+"
+        int first = 0;     // first 10 ms frame of the utterance
+        int last = 0;      // last, inclusive
+    };
+
+    // The all-phone search of the acoustic model's context-independent phones in `modelDir` under
+    // the phone language model `phoneLm` (-allphone, -allphone_ci), with further pocketsphinx
+    // options. Frames keep the sound's timing:
+    // no silence or noise removal. Throws lipsync::Error naming the file that does not load.
+    SphinxPhoneLoop(const std::string &modelDir, const std::string &phoneLm,
+                    const std::vector<std::pair<std::string, std::string>> &arguments);
+    ~SphinxPhoneLoop();
+    SphinxPhoneLoop(const SphinxPhoneLoop &) = delete;
+    SphinxPhoneLoop &operator=(const SphinxPhoneLoop &) = delete;
+
+    // Starts an utterance (ending one that runs); the cepstral mean carries over ("-cmn prior").
+    void start();
+    // Feeds 16 kHz PCM to the running utterance.
+    void process(const short *pcm, size_t count);
+    // Ends the utterance: its last frames are searched.
+    void end();
+    // Frames of the utterance searched so far.
+    int frames() const;
+    // The best phone path through the frames searched so far.
+    std::vector<Segment> segments() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
 };
 
 } // namespace lipsync

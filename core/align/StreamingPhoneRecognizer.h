@@ -19,6 +19,7 @@
 // any length of sound.
 #include "align/AcousticModel.h"
 #include "align/PhoneBigram.h"
+#include "align/PhoneStream.h"
 #include "annotation/Tier.h"
 
 #include <Eigen/Core>
@@ -39,29 +40,29 @@ struct PhoneRecognizerOptions
     double priorFrames = 100.0;     // the prior's weight at the start, in frames
 };
 
-class StreamingPhoneRecognizer
+class StreamingPhoneRecognizer : public PhoneStream
 {
 public:
     // Throws lipsync::Error for a model whose states are not the 41 phones x 3.
     StreamingPhoneRecognizer(const AcousticModel &model, const PhoneBigram &bigram,
                              const PhoneRecognizerOptions &options = {});
-    ~StreamingPhoneRecognizer();
+    ~StreamingPhoneRecognizer() override;
 
     // Feeds mono samples at the model's sample rate ([-1, 1]).
-    void push(const float *samples, size_t count);
+    void push(const float *samples, size_t count) override;
     // No more sound: every frame left is decided (traced back from the best final state).
-    void finish();
+    void finish() override;
     // The phones decided since the last call, one per 100 Hz audio frame, in order (PhoneSet
     // indices); frame j of the sound is the j-th label handed out overall.
-    std::vector<int> takeDecided();
-    int decidedFrames() const { return m_decided; }
+    std::vector<int> takeDecided() override;
+    int decidedFrames() const override { return m_decided; }
     // Appends decided phones to a phone tier: audio frame j (the first of them `firstFrame`) spans
     // its centre +- half a shift, runs of one phone are one interval, the tier starts at 0.
     static void appendToTier(Tier &tier, int firstFrame, const std::vector<int> &phones, const MfccOptions &frames);
 
     // Sound a decision waits for after its frame's centre: the lag and the features' look-ahead.
-    double latencySeconds() const;
-    const MfccOptions &frameOptions() const { return m_model.featureOptions(); }
+    double latencySeconds() const override;
+    const MfccOptions &frameOptions() const override { return m_model.featureOptions(); }
 
     // The features of the frames so far, as the decoder saw them (for tests): with a fixed mean
     // set by useFixedMean they equal AcousticModel::features() of the whole sound with that mean.

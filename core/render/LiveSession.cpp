@@ -14,8 +14,15 @@ namespace lipsync {
 
 LiveSession::LiveSession(const AcousticModel &acoustic, const PhoneBigram &bigram, const DynamicModel &model,
                          FaceRenderer *renderer, const LiveOptions &options)
-    : m_model(model), m_renderer(renderer), m_recognizer(acoustic, bigram, options.recognizer),
-      m_audio(acoustic.featureOptions())
+    : LiveSession(std::make_unique<StreamingPhoneRecognizer>(acoustic, bigram, options.recognizer), model, renderer,
+                  options)
+{
+}
+
+LiveSession::LiveSession(std::unique_ptr<PhoneStream> recognizer, const DynamicModel &model, FaceRenderer *renderer,
+                         const LiveOptions &options)
+    : m_model(model), m_renderer(renderer), m_recognizer(std::move(recognizer)),
+      m_audio(m_recognizer->frameOptions())
 {
     if (!model.isTrained())
         throw Error("the dynamic model is not trained");
@@ -39,7 +46,7 @@ double LiveSession::soundSeconds() const
 double LiveSession::latencySeconds() const
 {
     // The decision a frame waits for is that of the first audio frame centred past its end.
-    return m_recognizer.latencySeconds() + m_audio.shiftSeconds + std::max(0, m_generator->latency()) / m_frameRate;
+    return m_recognizer->latencySeconds() + m_audio.shiftSeconds + std::max(0, m_generator->latency()) / m_frameRate;
 }
 
 int LiveSession::generatorLatencyFrames() const
@@ -50,7 +57,7 @@ int LiveSession::generatorLatencyFrames() const
 std::vector<LiveFrame> LiveSession::push(const float *samples, size_t count)
 {
     std::vector<LiveFrame> out;
-    m_recognizer.push(samples, count);
+    m_recognizer->push(samples, count);
     m_samples += long(count);
     takeDecisions();
     labelReadyFrames(false, out);
@@ -60,7 +67,7 @@ std::vector<LiveFrame> LiveSession::push(const float *samples, size_t count)
 std::vector<LiveFrame> LiveSession::finish()
 {
     std::vector<LiveFrame> out;
-    m_recognizer.finish();
+    m_recognizer->finish();
     takeDecisions();
     labelReadyFrames(true, out);
     m_generator->finish();
@@ -70,7 +77,7 @@ std::vector<LiveFrame> LiveSession::finish()
 
 void LiveSession::takeDecisions()
 {
-    const std::vector<int> decided = m_recognizer.takeDecided();
+    const std::vector<int> decided = m_recognizer->takeDecided();
     StreamingPhoneRecognizer::appendToTier(m_phones, int(m_decided), decided, m_audio);
     m_recent.insert(m_recent.end(), decided.begin(), decided.end());
     m_decided += long(decided.size());

@@ -1,13 +1,14 @@
 #pragma once
 // Speech to a moving face as the sound comes in (docs/pipeline.md, "Live"): sound in blocks ->
-// StreamingPhoneRecognizer (no transcript) -> the phone of each video frame by the vote of
+// a PhoneStream (no transcript: the speaker's own HMMs in StreamingPhoneRecognizer, or CMU
+// Sphinx's in SphinxPhoneRecognizer) -> the phone of each video frame by the vote of
 // docs/models.md §0 as soon as all its 100 Hz audio frames are decided -> the dynamic model's
 // streaming generator (DPDS, SLDS and HMM-mean at once, Brand after its fixed lag) -> the AAM
 // face rendered into its background (FaceRenderer: a still frame of the person, a video, or the
 // mean face on grey), frame by frame.
 //
 // Frame i shows the sound of [i/f, (i+1)/f); it is ready once the recogniser has decided the
-// audio frames up to that interval's end, which is StreamingPhoneRecognizer::latencySeconds()
+// audio frames up to that interval's end, which is PhoneStream::latencySeconds()
 // after it, plus the generator's own look-ahead. Memory does not grow with the session beyond
 // the recognised phones kept for phones().
 #include "align/PhoneBigram.h"
@@ -57,6 +58,10 @@ public:
     // model the recogniser cannot use.
     LiveSession(const AcousticModel &acoustic, const PhoneBigram &bigram, const DynamicModel &model,
                 FaceRenderer *renderer, const LiveOptions &options = {});
+    // The same with another recogniser (options.recognizer is then not used); push() takes sound
+    // at its frameOptions().sampleRate.
+    LiveSession(std::unique_ptr<PhoneStream> recognizer, const DynamicModel &model, FaceRenderer *renderer,
+                const LiveOptions &options = {});
     ~LiveSession();
 
     // Feeds mono sound at the acoustic model's sample rate; returns the frames that became ready.
@@ -65,6 +70,8 @@ public:
     std::vector<LiveFrame> finish();
 
     double frameRate() const { return m_frameRate; }
+    // The recogniser's audio frames (their timing, and the sample rate push() takes).
+    const MfccOptions &audioFrames() const { return m_audio; }
     double soundSeconds() const;
     // The recognised phones so far, one interval per run of 100 Hz frames with the same phone.
     const Tier &phones() const { return m_phones; }
@@ -85,7 +92,7 @@ private:
 
     const DynamicModel &m_model;
     FaceRenderer *m_renderer;
-    StreamingPhoneRecognizer m_recognizer;
+    std::unique_ptr<PhoneStream> m_recognizer;
     std::unique_ptr<StreamingGenerator> m_generator;
     MfccOptions m_audio;
     double m_frameRate = 25.0;

@@ -11,8 +11,9 @@
 // written.
 //
 // The forced aligners are here too: the studio's choice (the timeline's Speech menu sets it, the
-// timeline's alignment and the preview's generation from new speech use it) and the aligners
-// loaded so far, which background tasks share.
+// timeline's alignment and the preview's generation from new speech use it, and the Live view
+// recognises with CMU Sphinx when it is CMU Sphinx) and the aligners loaded so far, which
+// background tasks share.
 #include "align/Aligner.h"
 
 #include <QObject>
@@ -70,11 +71,17 @@ public:
     bool isUnwritten(const std::string &file) const;
 
     const AlignerChoice &alignerChoice() const { return m_alignerChoice; }
-    void setAlignerChoice(const AlignerChoice &choice) { m_alignerChoice = choice; }
+    void setAlignerChoice(const AlignerChoice &choice)
+    {
+        m_alignerChoice = choice;
+        emit alignerChoiceChanged();
+    }
     // The aligners loaded so far (for background tasks: thread-safe, and kept alive by them).
     std::shared_ptr<AlignerCache> aligners() const { return m_aligners; }
 
 signals:
+    // setAlignerChoice was called (the Live view shows which recogniser its phones come from).
+    void alignerChoiceChanged();
     // Models could not be written into the project's new folder (file: reason, one per line).
     void writeFailed(const QString &problems);
 

@@ -13,6 +13,8 @@
 #include "align/AcousticModel.h"
 #include "align/PhoneBigram.h"
 #include "align/ShippedAlignerModel.h"
+#include "align/SphinxAligner.h"
+#include "align/SphinxPhoneRecognizer.h"
 #include "dynamics/DynamicModel.h"
 #include "io/WavWriter.h"
 #include "render/FaceRenderer.h"
@@ -51,10 +53,24 @@ LiveController::~LiveController()
     endThread(true);
 }
 
+bool LiveController::sphinxChosen(std::string *modelDir) const
+{
+    // "sphinx" or "sphinx:DIR" (AlignerChoice).
+    const AlignerChoice &choice = m_context->modelStore()->alignerChoice();
+    if (modelDir)
+        *modelDir = choice.model.size() > 7 ? choice.model.substr(7) : std::string();
+    return choice.isSphinx();
+}
+
+bool LiveController::recognisesWithSphinx() const
+{
+    return isActive() ? m_sessionSphinx : sphinxChosen();
+}
+
 QString LiveController::alignerModelPath() const
 {
-    // Live recognition runs on an aligner model of ours: the timeline's choice when it is one,
-    // else the shipped one (also when the timeline aligns with CMU Sphinx).
+    // Our HMMs recognise with the timeline's aligner model when it is one of ours, else with the
+    // shipped one.
     const AlignerChoice &choice = m_context->modelStore()->alignerChoice();
     const std::string path = choice.model.empty() || choice.isSphinx() ? shippedAlignerModelPath() : choice.model;
     return !path.empty() && QFileInfo::exists(QString::fromStdString(path)) ? QString::fromStdString(path) : QString();
@@ -100,6 +116,12 @@ QString LiveController::problem(const QString &kind) const
     if (model->dimension() != aam->combinedModes())
         return tr("The %1 model was trained with another appearance model: train it again in the Models panel.")
             .arg(ModelKinds::name(kind));
+    if (std::string sphinxDir; sphinxChosen(&sphinxDir))
+        return SphinxAligner::available(sphinxDir)
+                   ? QString()
+                   : tr("CMU Sphinx's US-English models, which recognise the phones when the timeline aligns with "
+                        "CMU Sphinx, were not found. Install the Debian package pocketsphinx-en-us, or choose the "
+                        "built-in model in the timeline's Model menu.");
     if (alignerModelPath().isEmpty())
         return tr("The studio's aligner model, which recognises the phones, was not found. Reinstall the studio or "
                   "point LIPSYNC_ALIGNER_MODEL at an aligner model.");
@@ -146,7 +168,11 @@ bool LiveController::start(const QString &kind, Input input, const QAudioDevice 
     const QString background = media && !media->audioOnly ? media->mediaPath : QString();
     std::shared_ptr<FaceRenderer> renderer =
         m_renderer && m_rendererAam == aam && m_rendererMedia == background ? m_renderer : nullptr;
-    const std::string acousticPath = alignerModelPath().toStdString();
+    // The phones: CMU Sphinx's recogniser when the timeline aligns with it, else our HMMs.
+    std::string sphinxDir;
+    const bool sphinx = sphinxChosen(&sphinxDir);
+    m_sessionSphinx = sphinx;
+    const std::string acousticPath = sphinx ? std::string() : alignerModelPath().toStdString();
     std::shared_ptr<const AcousticModel> acoustic = m_acousticPath == acousticPath ? m_acoustic : nullptr;
     std::shared_ptr<const PhoneBigram> bigram = m_bigram;
     const std::string bigramPath = shippedPhoneBigramPath();
@@ -155,14 +181,26 @@ bool LiveController::start(const QString &kind, Input input, const QAudioDevice 
     QPointer<LiveController> self(this);
     m_prepareTask = m_context->taskRunner()->start(
         tr("Prepare the live view"),
-        [self, epoch, aam, model, renderer, acoustic, bigram, acousticPath, bigramPath,
+        [self, epoch, aam, model, renderer, sphinx, sphinxDir, acoustic, bigram, acousticPath, bigramPath,
          background](Feedback &feedback) -> TaskRunner::Commit {
             LiveSetup setup;
             setup.aam = aam;
             setup.model = model;
-            feedback.setStatus("loading the aligner model");
-            setup.acoustic = acoustic ? acoustic : std::make_shared<const AcousticModel>(AcousticModel::load(acousticPath));
-            setup.bigram = bigram ? bigram : std::make_shared<const PhoneBigram>(PhoneBigram::load(bigramPath));
+            if (sphinx) {
+                // A recogniser of its own for each session: it holds the session's search.
+                feedback.setStatus("loading CMU Sphinx's phone models");
+                SphinxPhoneOptions options;
+                options.modelDir = sphinxDir;
+                setup.sphinx = std::make_shared<std::unique_ptr<PhoneStream>>(
+                    std::make_unique<SphinxPhoneRecognizer>(options));
+                setup.sampleRate = (*setup.sphinx)->frameOptions().sampleRate;
+            } else {
+                feedback.setStatus("loading the aligner model");
+                setup.acoustic =
+                    acoustic ? acoustic : std::make_shared<const AcousticModel>(AcousticModel::load(acousticPath));
+                setup.bigram = bigram ? bigram : std::make_shared<const PhoneBigram>(PhoneBigram::load(bigramPath));
+                setup.sampleRate = setup.acoustic->featureOptions().sampleRate;
+            }
             setup.renderer = renderer;
             bool tracked = !background.isEmpty();
             if (!setup.renderer && tracked) {
@@ -182,9 +220,11 @@ bool LiveController::start(const QString &kind, Input input, const QAudioDevice 
             return [self, epoch, setup, acousticPath, background, tracked] {
                 if (!self || self->m_epoch != epoch || self->m_state != State::Preparing)
                     return;
-                self->m_acoustic = setup.acoustic;
-                self->m_acousticPath = acousticPath;
-                self->m_bigram = setup.bigram;
+                if (setup.acoustic) {
+                    self->m_acoustic = setup.acoustic;
+                    self->m_acousticPath = acousticPath;
+                    self->m_bigram = setup.bigram;
+                }
                 self->m_renderer = setup.renderer;
                 self->m_rendererAam = setup.aam;
                 // A clip whose face could not be tracked is not tried again for this AAM.
@@ -211,7 +251,7 @@ void LiveController::launch(LiveSetup setup)
     setup.renderer->setCompositeOptions(m_context->compositeOptions());
     setup.camera = m_camera;
     setup.options.closeBilabials = m_context->closesLips();
-    m_sampleRate = setup.acoustic->featureOptions().sampleRate;
+    m_sampleRate = setup.sampleRate;
     m_recording = Recording{};
     m_recording.sampleRate = m_sampleRate;
     m_recording.aam = setup.aam;

@@ -4,11 +4,12 @@
 // GUI thread, and the session's recording, saved as a project sequence or exported as MP4.
 //
 // A session: start() loads what it needs in the background through the studio's task runner
-// (our aligner model and its phone bigram, and the face's background: the current sequence's
-// video tracked with the project's AAM, its first frame a still of the person, or the AAM's
-// mean face on grey without one), then opens the microphone and starts the worker. Blocks of
-// sound go to the worker as they are captured; frames come back as they are ready. stop() ends
-// the session cleanly: the worker flushes the last frames and the whole phone tier.
+// (the phone recogniser: CMU Sphinx's when the timeline aligns with CMU Sphinx, else our aligner
+// model and its phone bigram; and the face's background: the current sequence's video tracked
+// with the project's AAM, its first frame a still of the person, or the AAM's mean face on grey
+// without one), then opens the microphone and starts the worker. Blocks of sound go to the
+// worker as they are captured; frames come back as they are ready. stop() ends the session
+// cleanly: the worker flushes the last frames and the whole phone tier.
 //
 // The recording (sound, generated features and phone labels per frame, the phone tier) is kept
 // for up to kMaxRecordedSeconds; later sound still animates the face but is not kept. Another
@@ -78,8 +79,12 @@ public:
 
     State state() const { return m_state; }
     bool isActive() const { return m_state != State::Idle; }
-    // The acoustic model's sample rate (what feed() takes).
+    // The phone recogniser's sample rate (what feed() takes).
     int sampleRate() const { return m_sampleRate; }
+    // Whether CMU Sphinx's US-English phone recogniser (any speaker) recognises the phones, not our
+    // HMMs: the running session's recogniser, else the one the next session takes (Sphinx's when
+    // the timeline aligns with CMU Sphinx).
+    bool recognisesWithSphinx() const;
 
     // This session's frames shown so far, the newest of them, the sound fed and the frame rate.
     int framesShown() const { return m_framesShown; }
@@ -153,6 +158,8 @@ private:
     void clearShown();
     void reset();
     QString alignerModelPath() const;
+    // The timeline aligns with CMU Sphinx, whose model folder (empty: the default) goes in `modelDir`.
+    bool sphinxChosen(std::string *modelDir = nullptr) const;
 
     StudioContext *m_context;
     State m_state = State::Idle;
@@ -170,6 +177,7 @@ private:
     std::shared_ptr<const AcousticModel> m_acoustic;
     std::string m_acousticPath;
     std::shared_ptr<const PhoneBigram> m_bigram;
+    bool m_sessionSphinx = false; // the session's recogniser is CMU Sphinx's
     std::shared_ptr<const AamModel> m_rendererAam;
     QString m_rendererMedia;
     std::shared_ptr<FaceRenderer> m_renderer;

@@ -3,6 +3,7 @@
 #include "annotate/FrameView.h"
 #include "context/WritableProject.h"
 #include "context/ModelKinds.h"
+#include "context/ModelStore.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "live/CameraFeed.h"
@@ -86,6 +87,15 @@ LiveView::LiveView(StudioContext *context, std::function<bool()> saveProject, QW
     m_face->setEditable(false);
     m_face->setMinimumSize(160, 120); // as the preview's panes: the timeline below keeps its height
     layout->addWidget(m_face, 1);
+    // Which recogniser hears the phones, in the face's corner: the rows around it have no room at
+    // the smallest window.
+    m_recogniser = new QLabel(m_face);
+    m_recogniser->setObjectName(QStringLiteral("liveRecogniser"));
+    m_recogniser->setStyleSheet(QStringLiteral("background: rgba(0, 0, 0, 140); color: white; padding: 1px 5px;"));
+    m_recogniser->move(6, 6);
+    m_recogniser->setToolTip(tr("What recognises the phones: CMU Sphinx's US-English model when the timeline aligns "
+                                "with CMU Sphinx (its Model menu), else the HMMs of the studio's aligner model, "
+                                "trained on one speaker"));
     m_strip->setObjectName(QStringLiteral("livePhones"));
     m_strip->setToolTip(tr("The phones recognised in the last seconds, the newest on the right"));
     layout->addWidget(m_strip);
@@ -134,6 +144,8 @@ LiveView::LiveView(StudioContext *context, std::function<bool()> saveProject, QW
     });
     connect(m_controller, &LiveController::exportStarted, this, &LiveView::updateControls);
     connect(m_controller, &LiveController::exportEnded, this, &LiveView::updateControls);
+    // The next session's recogniser, and whether it is installed.
+    connect(context->modelStore(), &ModelStore::alignerChoiceChanged, this, &LiveView::updateControls);
     connect(m_models, &QComboBox::activated, this, [this] { m_modelChosen = true; });
     ProjectDocument *document = context->document();
     for (auto signal : {&ProjectDocument::documentReset, &ProjectDocument::modelsChanged})
@@ -269,6 +281,9 @@ void LiveView::updateControls()
     const bool recorded = idle && m_controller->hasRecording();
     m_save->setEnabled(recorded && !exporting);
     m_export->setEnabled(recorded && !exporting);
+    m_recogniser->setText(m_controller->recognisesWithSphinx() ? tr("Phones: CMU Sphinx US English (any speaker)")
+                                                               : tr("Phones: the aligner model's HMMs"));
+    m_recogniser->adjustSize();
 
     QString message;
     switch (state) {

@@ -1,10 +1,11 @@
 #pragma once
 // Live: speak into the microphone and watch the face move. The view of a LiveController: a
 // microphone and a trained dynamic model to choose (DPDS first when trained), Start and Stop, the
-// rendered face as its frames come, the recognised phones scrolling by, and the latency from
-// sound to frame. After Stop the session can be saved as a new sequence of the project (one undo
-// step) or exported as MP4 with its sound. Whatever is missing (a project, an AAM, a trained
-// model, a microphone) the view says what to do instead of offering Start.
+// rendered face as its frames come, the recognised phones scrolling by (and which recogniser
+// hears them: our aligner model's HMMs, or CMU Sphinx's when the timeline aligns with it), and
+// the latency from sound to frame. After Stop the session can be saved as a new sequence of the
+// project (one undo step) or exported as MP4 with its sound. Whatever is missing (a project, an
+// AAM, a trained model, a microphone) the view says what to do instead of offering Start.
 //
 // Hiding the view (another tab, a closed panel) stops a running session: the microphone is
 // never left listening unseen.
@@ -48,6 +49,8 @@ public:
     FrameView *face() const { return m_face; }
     PhoneStrip *phoneStrip() const { return m_strip; }
     QLabel *latencyLabel() const { return m_latency; }
+    // Which recogniser hears the phones (LiveController::recognisesWithSphinx).
+    QLabel *recogniserLabel() const { return m_recogniser; }
     QLabel *messageLabel() const { return m_message; }
     // The model kind chosen ("dpds"), or empty.
     QString chosenKind() const;
@@ -93,6 +96,7 @@ private:
     FrameView *m_face;
     PhoneStrip *m_strip;
     QLabel *m_latency;
+    QLabel *m_recogniser;
     QLabel *m_progress;
     QLabel *m_message;
     QString m_lastProblem; // the latest failure, shown until the next start

@@ -22,8 +22,12 @@ LiveWorker::~LiveWorker() = default;
 void LiveWorker::begin()
 {
     try {
-        m_session = std::make_unique<LiveSession>(*m_setup.acoustic, *m_setup.bigram, *m_setup.model,
-                                                  m_setup.renderer.get(), m_setup.options);
+        if (m_setup.sphinx)
+            m_session = std::make_unique<LiveSession>(std::move(*m_setup.sphinx), *m_setup.model,
+                                                      m_setup.renderer.get(), m_setup.options);
+        else
+            m_session = std::make_unique<LiveSession>(*m_setup.acoustic, *m_setup.bigram, *m_setup.model,
+                                                      m_setup.renderer.get(), m_setup.options);
     } catch (const std::exception &e) {
         emit failed(QString::fromUtf8(e.what()));
         return;

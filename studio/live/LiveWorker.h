@@ -44,8 +44,13 @@ class CameraFeed;
 // What a session runs on, kept alive by the worker for as long as the session lives.
 struct LiveSetup
 {
+    // The phone recogniser: our HMMs with the phone bigram, or (both null) CMU Sphinx's, loaded
+    // by the preparation and taken over by the session as it begins (shared only to be copied
+    // along until then).
     std::shared_ptr<const AcousticModel> acoustic;
     std::shared_ptr<const PhoneBigram> bigram;
+    std::shared_ptr<std::unique_ptr<PhoneStream>> sphinx;
+    int sampleRate = 16000; // the recogniser's: what push() takes
     std::shared_ptr<const DynamicModel> model;
     std::shared_ptr<const AamModel> aam; // the renderer's
     std::shared_ptr<FaceRenderer> renderer;
@@ -78,7 +83,8 @@ public:
 
     // On the worker's thread. Creates the session: started(), or failed() with the reason.
     void begin();
-    // Sound at the acoustic model's rate whose last sample was captured at `captured`.
+    // Sound at the recogniser's rate (LiveSetup::sampleRate) whose last sample was captured at
+    // `captured`.
     void push(const std::vector<float> &samples, Clock::time_point captured);
     // The sound has ended: the remaining frames and the whole phone tier (LiveFrames::last).
     void finish();

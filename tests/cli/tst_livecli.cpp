@@ -10,6 +10,7 @@
 
 #include "align/PhoneBigram.h"
 #include "io/MediaInfo.h"
+#include "util/PhoneSet.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -84,10 +85,28 @@ private slots:
         QCOMPARE(parseJsonObject(r.out).value("frames").toInt(), 74);
     }
 
+    // CMU Sphinx's US-English recogniser (Debian's pocketsphinx-en-us) in place of the aligner
+    // model's HMMs: the same report, every frame, phones from its set.
+    void recognisesWithSphinx()
+    {
+        const Run r = runLipsync({"live", "--input", kClip + ".mpg", "--model", m_model, "--aam",
+                                  kDemo + "/aam/demo.aam", "--aligner", "sphinx", "--transcript", kClip + ".align",
+                                  "--as-fast-as-possible", "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject o = parseJsonObject(r.out);
+        QCOMPARE(o.value("frames").toInt(), 74);
+        QVERIFY(o.value("latency_ms_algorithmic").toDouble() > 150.0); // a 10-frame lag, 4 frames of deltas
+        const QJsonArray phones = o.value("phones").toArray();
+        QVERIFY(phones.size() > 5);
+        for (const QJsonValue &p : phones)
+            QVERIFY2(PhoneSet::index(p.toString().toStdString()) >= 0, qPrintable(p.toString()));
+        QVERIFY(o.value("frame_accuracy").toDouble() > 0.3); // silences at least
+    }
+
     void refusals()
     {
         Run r = runLipsync({"live", "--input", kClip + ".mpg", "--model", m_model, "--aam", kDemo + "/aam/demo.aam",
-                            "--aligner", "sphinx"});
+                            "--aligner", "sphinx", "--bigram", m_dir.filePath(QStringLiteral("none.bigram"))});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("CMU Sphinx"), r.err.constData());
         r = runLipsync({"live", "--input", kClip + ".mpg", "--model", m_model, "--aam", kDemo + "/aam/demo.aam",

@@ -12,6 +12,10 @@
 //    still again.
 //  - Hiding the view stops a running session; closing the window with a session running
 //    neither hangs nor crashes.
+//  - With the timeline aligning with CMU Sphinx, its US-English recogniser hears the phones (the
+//    view says so): the same clip gives its 74 frames and recognised phones, some of them speech;
+//    a Sphinx model folder that is not there is said instead of offering Start. Skipped without
+//    pocketsphinx-en-us.
 // LIPSYNC_PREVIEW_SHOT=DIR keeps pictures of the window with the Live view (at its 1280x800 and,
 // where the screen is large enough, at 1920x1080).
 #include "DemoWindow.h"
@@ -27,6 +31,7 @@
 #include "live/PhoneStrip.h"
 
 #include "aam/AamModel.h"
+#include "align/SphinxAligner.h"
 #include "io/AudioDecoder.h"
 #include "io/MediaInfo.h"
 #include "io/VideoReader.h"
@@ -42,6 +47,7 @@
 #include <QMenuBar>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScopeGuard>
 #include <QScreen>
 #include <QSignalSpy>
 #include <QTabWidget>
@@ -145,6 +151,8 @@ private slots:
         QVERIFY(!live()->startButton()->isEnabled());
         QVERIFY(!live()->saveButton()->isEnabled());
         QVERIFY(!live()->exportButton()->isEnabled());
+        QVERIFY2(live()->recogniserLabel()->text().contains(QStringLiteral("HMMs")),
+                 qPrintable(live()->recogniserLabel()->text()));
         // Said where the face would be.
         QVERIFY2(live()->face()->placeholderText().contains(QStringLiteral("Train one in the Models panel")),
                  qPrintable(live()->face()->placeholderText()));
@@ -339,6 +347,51 @@ private slots:
         QCOMPARE(controller()->recordedFrames(), 13); // 0.5 s at 25 fps
         tabs->setCurrentWidget(live());
         QVERIFY(live()->isVisible());
+    }
+
+    void recognisesWithSphinxWhenTheTimelineAlignsWithIt()
+    {
+        if (!SphinxAligner::available({}))
+            QSKIP("CMU Sphinx's US-English models are not installed (Debian package pocketsphinx-en-us)");
+        ModelStore *store = m_window->modelStore();
+        const AlignerChoice before = store->alignerChoice();
+        QVERIFY(!before.isSphinx());
+        const auto restore = qScopeGuard([store, before] { store->setAlignerChoice(before); });
+        const QString kind = QStringLiteral("dpds");
+
+        // A model folder that is not there: said instead of offering Start.
+        const std::string missing = m_dir.filePath(QStringLiteral("no-sphinx")).toStdString();
+        store->setAlignerChoice(AlignerChoice{"sphinx:" + missing, false});
+        QVERIFY2(controller()->problem(kind).contains(QStringLiteral("pocketsphinx-en-us")),
+                 qPrintable(controller()->problem(kind)));
+        QVERIFY(!live()->startButton()->isEnabled());
+
+        store->setAlignerChoice(AlignerChoice{"sphinx", false});
+        QVERIFY2(controller()->problem(kind).isEmpty(), qPrintable(controller()->problem(kind)));
+        QVERIFY(controller()->recognisesWithSphinx());
+        QVERIFY2(live()->recogniserLabel()->text().contains(QStringLiteral("CMU Sphinx")),
+                 qPrintable(live()->recogniserLabel()->text()));
+        QVERIFY(startFed());
+        QCOMPARE(controller()->sampleRate(), 16000);
+        feedAtRealTime(m_sound, m_sound.size());
+        QTRY_VERIFY_WITH_TIMEOUT(controller()->framesShown() > 20, 20000);
+        saveShot(m_window, QStringLiteral("live-sphinx.png"));
+        live()->stopButton()->click();
+        QTRY_COMPARE_WITH_TIMEOUT(controller()->state(), LiveController::State::Idle, 30000);
+        QCOMPARE(controller()->framesShown(), 74);
+        QCOMPARE(controller()->recordedFrames(), 74);
+        QVERIFY(!live()->face()->image().isNull());
+        const QStringList phones = live()->phoneStrip()->visibleLabels();
+        QVERIFY2(phones.size() >= 5, qPrintable(phones.join(u' ')));
+        QVERIFY2(phones.size() > phones.count(QStringLiteral("sil")) + 2, qPrintable(phones.join(u' ')));
+        qInfo("Sphinx: %s; %s", qPrintable(phones.join(u' ')), qPrintable(live()->latencyLabel()->text()));
+        QVERIFY2(live()->recogniserLabel()->text().contains(QStringLiteral("CMU Sphinx")),
+                 qPrintable(live()->recogniserLabel()->text()));
+
+        store->setAlignerChoice(before);
+        QVERIFY(!controller()->recognisesWithSphinx());
+        QVERIFY2(live()->recogniserLabel()->text().contains(QStringLiteral("HMMs")),
+                 qPrintable(live()->recogniserLabel()->text()));
     }
 };
 
