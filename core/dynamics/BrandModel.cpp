@@ -85,6 +85,7 @@ void BrandModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &f
     jointCovariance.clear();
     m_dimension = int(d);
     bool full = m_options.covariance == BrandCovariance::Full;
+    m_choice = {};
     if (m_options.covariance == BrandCovariance::CrossValidated) {
         m_choice = crossValidateCovariance(sequences, feedback);
         full = m_choice.folds > 0 && m_choice.fullL1 < m_choice.diagonalL1;
