@@ -3,15 +3,15 @@
 // pocketsphinx-en-us: the en-us acoustic model and its phone language model en-us-phone.lm.bin):
 // pocketsphinx's all-phone search over its context-independent phones (-allphone_ci: with the
 // triphones the search ran at 1-7 x real time on one core, here 18 x faster) fed block by block
-// (SphinxBackend's SphinxPhoneLoop). After each
-// block the best phone path so far is read, and the frames `lagFrames` behind the newest frame
-// searched are decided from it, never revised (as StreamingPhoneRecognizer's fixed lag).
+// (SphinxBackend's SphinxPhoneLoop). After each block the best phone path so far is read, and the
+// frames `lagFrames` behind the newest frame searched are decided from it, never revised (as
+// StreamingPhoneRecognizer's fixed lag).
 //
 // The search keeps every frame of its utterance, so memory would grow with the session: once
 // `restartSeconds` have been decided and the newest decision is silence (or three times that
 // without one), the utterance is ended and a new search is started on the sound from the first
-// undecided frame on (kept for that), the cepstral mean carried over. The model's phones map to PhoneSet's 39 ARPAbet labels; SIL is
-// silence, the fillers (+NSN+, +SPN+, ...) breath/noise.
+// undecided frame on (kept for that), the cepstral mean carried over. The model's phones map to
+// PhoneSet's 39 ARPAbet labels; SIL is silence, the fillers (+NSN+, +SPN+, ...) breath/noise.
 #include "align/PhoneStream.h"
 
 #include <deque>
