@@ -206,8 +206,6 @@ void SphinxUtterance::applyTransform(const std::string &pocketsphinxText)
 struct SphinxPhoneLoop::Impl
 {
     ps_decoder_t *ps = nullptr;
-    std::string phoneLm;
-    int utterances = 0;
     bool running = false;
     ~Impl()
     {
@@ -228,7 +226,6 @@ SphinxPhoneLoop::SphinxPhoneLoop(const std::string &modelDir, const std::string 
     // The same configuration as SphinxDecoder's (log silenced once, the model folder expanded).
     SphinxDecoder probe(modelDir, all);
     std::swap(m_impl->ps, probe.m_impl->ps);
-    m_impl->phoneLm = phoneLm;
 }
 
 SphinxPhoneLoop::~SphinxPhoneLoop() = default;
@@ -237,19 +234,6 @@ void SphinxPhoneLoop::start()
 {
     if (m_impl->running)
         ps_end_utt(m_impl->ps);
-    m_impl->running = false;
-    // Debian's pocketsphinx (5prealpha) keeps an all-phone search's history over all of its
-    // utterances, so memory and time would grow with the session: each utterance after the first
-    // gets a new search, and the one before is freed.
-    if (m_impl->utterances > 0) {
-        const std::string previous = ps_get_search(m_impl->ps);
-        const std::string next = "allphone" + std::to_string(m_impl->utterances % 2);
-        if (ps_set_allphone_file(m_impl->ps, next.c_str(), m_impl->phoneLm.c_str()) < 0
-            || ps_set_search(m_impl->ps, next.c_str()) < 0)
-            throw Error("pocketsphinx could not load the phone language model", m_impl->phoneLm);
-        ps_unset_search(m_impl->ps, previous.c_str());
-    }
-    ++m_impl->utterances;
     m_impl->running = ps_start_utt(m_impl->ps) >= 0;
     if (!m_impl->running)
         throw Error("pocketsphinx could not start the utterance");
@@ -285,7 +269,7 @@ std::vector<SphinxPhoneLoop::Segment> SphinxPhoneLoop::segments() const
         out.push_back(std::move(s));
     }
     // Debian's pocketsphinx (5prealpha) numbers an utterance's frames on from the decoder's
-    // earlier utterances (a new search too); the path starts at the utterance's first frame.
+    // earlier utterances; the path starts at the utterance's first frame.
     if (!out.empty() && out.front().first != 0) {
         const int offset = out.front().first;
         for (Segment &s : out) {

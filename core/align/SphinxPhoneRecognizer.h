@@ -9,8 +9,9 @@
 //
 // The search keeps every frame of its utterance, so memory would grow with the session: once
 // `restartSeconds` have been decided and the newest decision is silence (or three times that
-// without one), the utterance is ended and a new search is started on the sound from the first
-// undecided frame on (kept for that), the cepstral mean carried over. The model's phones map to
+// without one), the utterance is ended and a new one is started on the sound from the first
+// undecided frame on (kept for that), the cepstral mean carried over; the ended utterance's freed
+// blocks are handed back to the system. The model's phones map to
 // PhoneSet's 39 ARPAbet labels; SIL is silence, the fillers (+NSN+, +SPN+, ...) breath/noise.
 #include "align/PhoneStream.h"
 
