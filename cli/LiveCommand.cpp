@@ -145,7 +145,8 @@ int runLive(const CommandLine &a)
 {
     const QString input = a.value("input");
     const QString alignerPath = alignerModelOrDefault(a.value("aligner"), QStringLiteral("live"));
-    const bool sphinx = alignerPath == QLatin1String("sphinx") || alignerPath.startsWith(QLatin1String("sphinx:"));
+    const AlignerChoice alignerChoice{alignerPath.toStdString()};
+    const bool sphinx = alignerChoice.isSphinx();
     const double blockSeconds = a.positiveNumber("block-ms") / 1000.0;
     const bool fast = a.isSet("as-fast-as-possible");
 
@@ -158,7 +159,7 @@ int runLive(const CommandLine &a)
             throw UsageError(QStringLiteral("--bigram is for our aligner models; CMU Sphinx has its own phone "
                                             "language model"));
         SphinxPhoneOptions sphinxOptions;
-        sphinxOptions.modelDir = alignerPath.section(QLatin1Char(':'), 1).toStdString();
+        sphinxOptions.modelDir = alignerChoice.sphinxModelDir();
         if (a.isSet("lag"))
             sphinxOptions.lagFrames = a.integer("lag", 0);
         recognizer = std::make_unique<SphinxPhoneRecognizer>(sphinxOptions);

@@ -18,11 +18,17 @@ bool AlignerChoice::isSphinx() const
     return model == kSphinx || model.rfind(std::string(kSphinx) + ":", 0) == 0;
 }
 
+std::string AlignerChoice::sphinxModelDir() const
+{
+    const size_t prefix = std::string(kSphinx).size() + 1; // "sphinx:"
+    return model.size() > prefix ? model.substr(prefix) : std::string();
+}
+
 std::unique_ptr<Aligner> createAligner(const AlignerChoice &choice)
 {
     if (choice.isSphinx()) {
         SphinxAligner::Options options;
-        options.modelDir = choice.model.size() > 7 ? choice.model.substr(7) : std::string();
+        options.modelDir = choice.sphinxModelDir();
         options.adaptationPasses = choice.adapt ? 1 : 0;
         return std::make_unique<SphinxAligner>(options);
     }

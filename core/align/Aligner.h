@@ -33,6 +33,8 @@ struct AlignerChoice
     bool adapt = false; // adapt the model to the recording's speaker first
 
     bool isSphinx() const;
+    // With isSphinx(): DIR of "sphinx:DIR", empty for "sphinx" (Debian's folder).
+    std::string sphinxModelDir() const;
     bool operator<(const AlignerChoice &o) const { return std::tie(model, adapt) < std::tie(o.model, o.adapt); }
 };
 

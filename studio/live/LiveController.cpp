@@ -55,10 +55,9 @@ LiveController::~LiveController()
 
 bool LiveController::sphinxChosen(std::string *modelDir) const
 {
-    // "sphinx" or "sphinx:DIR" (AlignerChoice).
     const AlignerChoice &choice = m_context->modelStore()->alignerChoice();
     if (modelDir)
-        *modelDir = choice.model.size() > 7 ? choice.model.substr(7) : std::string();
+        *modelDir = choice.sphinxModelDir();
     return choice.isSphinx();
 }
 
