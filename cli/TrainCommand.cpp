@@ -75,11 +75,9 @@ int runTrain(const CommandLine &args)
         o[QStringLiteral("objective")] = objective;
         o[QStringLiteral("loglikPerFrame")] = ll / double(frames);
         if (brand) {
-            o[QStringLiteral("covariance")] = brand->fullCovariance() ? QStringLiteral("full") : QStringLiteral("diagonal");
-            if (const BrandModel::CovarianceChoice &c = brand->covarianceChoice(); c.folds > 0)
-                o[QStringLiteral("covarianceChoice")] = QJsonObject{{QStringLiteral("folds"), c.folds},
-                                                                    {QStringLiteral("diagonalL1"), c.diagonalL1},
-                                                                    {QStringLiteral("fullL1"), c.fullL1}};
+            const QJsonObject covariance = brand->covarianceJson();
+            for (auto it = covariance.begin(); it != covariance.end(); ++it)
+                o[it.key()] = it.value();
         }
         printJson(o);
     } else {

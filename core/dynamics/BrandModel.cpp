@@ -701,16 +701,20 @@ std::unique_ptr<StreamingGenerator> BrandModel::makeStreamer() const
     return std::make_unique<FixedLagBrandStreamer>(*this, streamingLag());
 }
 
-QJsonObject BrandModel::parametersToJson() const
+QJsonObject BrandModel::covarianceJson() const
 {
-    QJsonObject o;
-    o[QStringLiteral("covariance")] = jointCovariance.empty() ? QStringLiteral("diagonal")
-                                                              : QStringLiteral("full");
-    o[QStringLiteral("lag")] = m_options.lag;
+    QJsonObject o{{QStringLiteral("covariance"), fullCovariance() ? QStringLiteral("full") : QStringLiteral("diagonal")}};
     if (m_choice.folds > 0)
         o[QStringLiteral("covarianceChoice")] = QJsonObject{{QStringLiteral("folds"), m_choice.folds},
                                                             {QStringLiteral("diagonalL1"), m_choice.diagonalL1},
                                                             {QStringLiteral("fullL1"), m_choice.fullL1}};
+    return o;
+}
+
+QJsonObject BrandModel::parametersToJson() const
+{
+    QJsonObject o = covarianceJson();
+    o[QStringLiteral("lag")] = m_options.lag;
     o[QStringLiteral("staticMean")] = json::fromMatrix(staticMean);
     o[QStringLiteral("staticVariance")] = json::fromMatrix(staticVariance);
     o[QStringLiteral("deltaMean")] = json::fromMatrix(deltaMean);

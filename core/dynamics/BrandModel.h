@@ -70,6 +70,9 @@ public:
         double diagonalL1 = 0.0, fullL1 = 0.0;
     };
     const CovarianceChoice &covarianceChoice() const { return m_choice; }
+    // "covariance" ("diagonal" or "full") and, when cross-validated, "covarianceChoice" ({folds,
+    // diagonalL1, fullL1}), as in the model file's parameters.
+    QJsonObject covarianceJson() const;
 
     QJsonObject parametersToJson() const override;
     void parametersFromJson(const QJsonObject &json, const std::string &file) override;
