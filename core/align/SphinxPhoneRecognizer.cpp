@@ -64,9 +64,13 @@ void SphinxPhoneRecognizer::finish()
     decide(true);
     // Ending an utterance does not always search its last frames (the deltas' look-ahead): those
     // keep the last decision, so every 10 ms of the sound has one.
-    const long shift = std::lround(m_frames.shiftSeconds * m_frames.sampleRate);
-    for (; m_decided < m_samples / shift; ++m_decided)
+    for (; m_decided < m_samples / shiftSamples(); ++m_decided)
         m_ready.push_back(m_last < 0 ? int(PhoneSet::kSilence) : m_last);
+}
+
+long SphinxPhoneRecognizer::shiftSamples() const
+{
+    return std::lround(m_frames.shiftSeconds * m_frames.sampleRate);
 }
 
 std::vector<int> SphinxPhoneRecognizer::takeDecided()
@@ -90,10 +94,10 @@ void SphinxPhoneRecognizer::decide(bool all)
         m_ready.push_back(m_last);
     }
     // The sound before the first undecided frame is not needed again.
-    const long keepFrom = long(m_decided) * long(std::lround(m_frames.shiftSeconds * m_frames.sampleRate));
-    while (!m_pcm.empty() && m_pcmFirst < keepFrom) {
-        m_pcm.pop_front();
-        ++m_pcmFirst;
+    const long drop = std::min(long(m_decided) * shiftSamples() - m_pcmFirst, long(m_pcm.size()));
+    if (drop > 0) {
+        m_pcm.erase(m_pcm.begin(), m_pcm.begin() + drop);
+        m_pcmFirst += drop;
     }
     // A restart at a silence costs nothing; speech that never pauses is cut at three times that.
     const double running = (m_decided - m_utteranceStart) * m_frames.shiftSeconds;

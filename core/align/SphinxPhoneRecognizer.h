@@ -56,6 +56,7 @@ public:
 
 private:
     void decide(bool all);
+    long shiftSamples() const; // samples between frames
     void restart();
 
     SphinxPhoneOptions m_options;
