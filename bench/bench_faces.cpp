@@ -34,9 +34,7 @@ const AamModel &gridModel()
 {
     static const AamModel model = [] {
         Feedback feedback;
-        FaceDetectorPaths paths;
-        paths.useDlib = false;
-        FaceDetector detector(paths);
+        FaceDetector detector(FaceDetectorPaths::boxesOnly());
         AamBuildOptions options;
         options.combinedVariance = 0.98;
         options.detector = &detector;
@@ -181,9 +179,7 @@ void BM_HelenGeneric(benchmark::State &state)
         return;
     }
     Feedback feedback;
-    FaceDetectorPaths paths;
-    paths.useDlib = false;
-    FaceDetector detector(paths);
+    FaceDetector detector(FaceDetectorPaths::boxesOnly());
     // The generic settings and fit chosen by cross-validation on helen-train (docs/performance.md).
     AamBuildOptions options = AamBuildOptions::generic();
     options.detector = &detector;

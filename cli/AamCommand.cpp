@@ -87,9 +87,7 @@ int runAamBuild(const CommandLine &a)
     std::vector<AamTrainingExample> examples =
         loadTrainingDirectory(a.value("images").toStdString(), &warnings);
     Feedback feedback;
-    FaceDetectorPaths paths;
-    paths.useDlib = false;
-    FaceDetector detector(paths);
+    FaceDetector detector(FaceDetectorPaths::boxesOnly());
     if (!a.isSet("no-detector") && (detector.hasYunet() || detector.hasHaar()))
         options.detector = &detector;
     const bool json = a.isSet("json");

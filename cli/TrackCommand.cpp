@@ -81,9 +81,7 @@ QJsonObject trackOne(const AamModel &model, const std::string &videoPath, const 
 int runTrack(const CommandLine &a)
 {
     const AamModel model = AamModel::load(a.value("aam").toStdString());
-    FaceDetectorPaths paths;
-    paths.useDlib = false; // tracking needs boxes, not points
-    FaceDetectorPool detectors(paths);
+    FaceDetectorPool detectors(FaceDetectorPaths::boxesOnly());
     const QString input = a.positional().front();
     if (isBatchInput(input)) {
         if (a.isSet("points"))

@@ -33,6 +33,13 @@ std::string FaceDetector::findYunetModel()
     return ResourceLocator::find("models/face_detection_yunet_2022mar.onnx");
 }
 
+FaceDetectorPaths FaceDetectorPaths::boxesOnly()
+{
+    FaceDetectorPaths paths;
+    paths.useDlib = false;
+    return paths;
+}
+
 std::string FaceDetectorPaths::haarCascadeFile() const
 {
     return haarCascade.empty() ? "/usr/share/opencv4/haarcascades/haarcascade_frontalface_alt2.xml" : haarCascade;

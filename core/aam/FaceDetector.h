@@ -35,6 +35,10 @@ struct FaceDetectorPaths
     std::string dlibPredictor; // empty: /usr/share/dlib/shape_predictor_68_face_landmarks.dat
     bool useDlib = true;
 
+    // Face boxes with their five keypoints only (YuNet, else Haar), for fitting and tracking:
+    // dlib's 68-point predictor takes seconds to load and the AAM fit refines the points anyway.
+    static FaceDetectorPaths boxesOnly();
+
     // The files the detectors are read from: the given ones, else Debian's (opencv-data,
     // libdlib-data).
     std::string haarCascadeFile() const;

@@ -14,9 +14,7 @@ std::unique_ptr<FaceDetector> detectorUnless(FaceDetector *given)
 {
     if (given)
         return nullptr;
-    FaceDetectorPaths paths;
-    paths.useDlib = false;
-    return std::make_unique<FaceDetector>(paths);
+    return std::make_unique<FaceDetector>(FaceDetectorPaths::boxesOnly());
 }
 
 } // namespace

@@ -71,11 +71,7 @@ FaceRenderer::FaceRenderer(const AamModel &aam, const std::string &videoPath, Fe
     m_size = cv::Size(m_video->width(), m_video->height());
     std::unique_ptr<FaceDetector> ownDetector;
     if (!detector) {
-        // YuNet (or Haar) only: dlib's 68-point predictor takes seconds to load and the AAM
-        // fit refines the points anyway.
-        FaceDetectorPaths paths;
-        paths.useDlib = false;
-        ownDetector = std::make_unique<FaceDetector>(paths);
+        ownDetector = std::make_unique<FaceDetector>(FaceDetectorPaths::boxesOnly());
         detector = ownDetector.get();
     }
     feedback.setStatus("Tracking the face in " + videoPath);

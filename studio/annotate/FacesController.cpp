@@ -515,9 +515,7 @@ Task *FacesController::buildAam()
                 feedback.setProgress(0.2 * double(i + 1) / double(labelled.size()));
             }
             readers.clear();
-            FaceDetectorPaths paths;
-            paths.useDlib = false;
-            FaceDetector detector(paths);
+            FaceDetector detector(FaceDetectorPaths::boxesOnly());
             AamBuildOptions options;
             if (detector.hasYunet() || detector.hasHaar())
                 options.detector = &detector;
@@ -579,9 +577,7 @@ Task *FacesController::trackSequences(const QList<int> &rows)
     const std::shared_ptr<const AamModel> model = this->model();
     const QString title = jobs.size() == 1 ? tr("Track %1").arg(jobs.front().id) : tr("Track %n sequence(s)", "", int(jobs.size()));
     Task *task = m_context->taskRunner()->start(title, [this, jobs, model, title](Feedback &feedback) -> TaskRunner::Commit {
-        FaceDetectorPaths paths;
-        paths.useDlib = false;
-        FaceDetector detector(paths);
+        FaceDetector detector(FaceDetectorPaths::boxesOnly());
         std::vector<ProjectDocument::FaceData> results;
         for (std::size_t j = 0; j < jobs.size(); ++j) {
             const Job &job = jobs[j];

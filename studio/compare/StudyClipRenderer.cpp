@@ -86,9 +86,7 @@ std::shared_ptr<const FaceRenderer> StudyClipRenderer::faces(const Sequence &seq
     // The face is tracked in the recording once (core/render/FaceRenderer); both sides of a trial
     // then share its pose, so they differ only in the modelled face.
     const std::shared_ptr<const AamModel> model = aam();
-    FaceDetectorPaths paths;
-    paths.useDlib = false;
-    FaceDetector detector(paths);
+    FaceDetector detector(FaceDetectorPaths::boxesOnly());
     auto renderer = std::make_shared<const FaceRenderer>(*model, m_project.mediaPath(sequence), feedback, &detector);
     std::lock_guard lock(m_mutex);
     return m_faces.emplace(sequence.id, std::move(renderer)).first->second;

@@ -204,9 +204,7 @@ bool LiveController::start(const QString &kind, Input input, const QAudioDevice 
             bool tracked = !background.isEmpty();
             if (!setup.renderer && tracked) {
                 feedback.setStatus("tracking the head pose");
-                FaceDetectorPaths paths;
-                paths.useDlib = false;
-                FaceDetector detector(paths);
+                FaceDetector detector(FaceDetectorPaths::boxesOnly());
                 try {
                     setup.renderer = std::make_shared<FaceRenderer>(*aam, background.toStdString(), feedback, &detector);
                 } catch (const Error &) {

@@ -275,9 +275,7 @@ void PreviewPanel::prepare()
                 renderer = std::make_shared<FaceRenderer>(*model);
                 fixedFrame = neutralFrame(*renderer);
             } else {
-                FaceDetectorPaths paths;
-                paths.useDlib = false;
-                FaceDetector detector(paths);
+                FaceDetector detector(FaceDetectorPaths::boxesOnly());
                 feedback.setStatus("tracking the head pose");
                 renderer = std::make_shared<FaceRenderer>(*model, mediaPath, feedback, &detector);
             }

@@ -339,9 +339,7 @@ private slots:
 
     void detectorRegressionStartsFromAllFiveKeypoints()
     {
-        FaceDetectorPaths paths;
-        paths.useDlib = false;
-        FaceDetector detector(paths);
+        FaceDetector detector(FaceDetectorPaths::boxesOnly());
         QVERIFY2(detector.hasYunet(), "the YuNet model in resources/models was not found");
         Feedback feedback;
         AamBuildOptions options;
@@ -716,9 +714,7 @@ private slots:
 
     void tracksAVideoWithFixedPoints()
     {
-        FaceDetectorPaths paths;
-        paths.useDlib = false;
-        FaceDetector detector(paths);
+        FaceDetector detector(FaceDetectorPaths::boxesOnly());
         const std::string clip = LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg";
         Feedback feedback;
         const VideoTrackingResult plain = trackVideo(m_model, clip, detector, feedback);

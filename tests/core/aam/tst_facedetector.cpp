@@ -50,9 +50,8 @@ private slots:
 
     void haarFallbackFindsTheFace()
     {
-        FaceDetectorPaths paths;
+        FaceDetectorPaths paths = FaceDetectorPaths::boxesOnly();
         paths.yunetModel = "/nonexistent/yunet.onnx";
-        paths.useDlib = false;
         FaceDetector detector(paths);
         QVERIFY(!detector.hasYunet());
         if (!detector.hasHaar())

@@ -176,9 +176,7 @@ private slots:
     void descriptorWithoutPointsUsesTheKeypoints()
     {
         VideoReader video(LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg");
-        FaceDetectorPaths paths;
-        paths.useDlib = false;
-        FaceDetector detector(paths);
+        FaceDetector detector(FaceDetectorPaths::boxesOnly());
         const cv::Mat frame = video.frame(20);
         const std::vector<FaceDetection> faces = detector.detect(frame);
         QVERIFY(!faces.empty());
