@@ -204,7 +204,8 @@ int runLive(const CommandLine &a)
     Feedback tracking;
     const std::unique_ptr<FaceRenderer> renderer =
         background.isEmpty() ? std::make_unique<FaceRenderer>(aam)
-                             : std::make_unique<FaceRenderer>(aam, background.toStdString(), tracking);
+                             : std::make_unique<FaceRenderer>(aam, background.toStdString(), tracking, nullptr,
+                                                              options.stillBackground ? 1 : 0);
     const CompositeOptions composite = Compositing::from(a);
     renderer->setCompositeOptions(composite);
     const AudioBuffer sound = AudioDecoder::decode(input.toStdString(), sampleRate);

@@ -29,10 +29,10 @@ std::vector<int> VideoTrackingResult::worstFrames(int count) const
 
 VideoTrackingResult trackVideo(const AamModel &model, const std::string &videoPath,
                                FaceDetector &detector, Feedback &feedback,
-                               const std::map<int, LandmarkSet> &landmarks)
+                               const std::map<int, LandmarkSet> &landmarks, int frames)
 {
     VideoReader video(videoPath);
-    const int n = video.frameCount();
+    const int n = frames > 0 ? std::min(frames, video.frameCount()) : video.frameCount();
     if (n <= 0)
         throw Error("the video holds no frames", videoPath);
     VideoTrackingResult result;

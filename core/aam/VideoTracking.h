@@ -32,10 +32,11 @@ struct VideoTrackingResult
     std::vector<int> worstFrames(int count) const;
 };
 
-// Throws lipsync::Error naming the file if the video cannot be read or no frame holds a face;
-// Canceled when `feedback` is canceled.
+// The video's first `frames` frames when that is above 0, else all of them. Throws
+// lipsync::Error naming the file if the video cannot be read or no frame holds a face; Canceled
+// when `feedback` is canceled.
 VideoTrackingResult trackVideo(const AamModel &model, const std::string &videoPath,
                                FaceDetector &detector, Feedback &feedback,
-                               const std::map<int, LandmarkSet> &landmarks = {});
+                               const std::map<int, LandmarkSet> &landmarks = {}, int frames = 0);
 
 } // namespace lipsync

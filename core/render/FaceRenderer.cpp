@@ -64,18 +64,19 @@ FaceRenderer::FaceRenderer(const AamModel &aam, cv::Size size)
 }
 
 FaceRenderer::FaceRenderer(const AamModel &aam, const std::string &videoPath, Feedback &feedback,
-                           FaceDetector *detector)
+                           FaceDetector *detector, int frames)
     : m_aam(aam), m_synthesizer(aam)
 {
     m_video = std::make_unique<VideoReader>(videoPath);
     m_size = cv::Size(m_video->width(), m_video->height());
+    m_frameCount = frames > 0 ? std::min(frames, m_video->frameCount()) : m_video->frameCount();
     std::unique_ptr<FaceDetector> ownDetector;
     if (!detector) {
         ownDetector = std::make_unique<FaceDetector>(FaceDetectorPaths::boxesOnly());
         detector = ownDetector.get();
     }
     feedback.setStatus("Tracking the face in " + videoPath);
-    const VideoTrackingResult tracked = trackVideo(aam, videoPath, *detector, feedback);
+    const VideoTrackingResult tracked = trackVideo(aam, videoPath, *detector, feedback, {}, m_frameCount);
     m_tracked = tracked.features;
     // The pose of each frame: the similarity taking the shape the tracked parameters imply (in
     // model coordinates) onto the fitted points.
@@ -97,7 +98,7 @@ bool FaceRenderer::hasVideo() const
 
 int FaceRenderer::videoFrameCount() const
 {
-    return m_video ? m_video->frameCount() : 0;
+    return m_video ? m_frameCount : 0;
 }
 
 double FaceRenderer::videoFrameRate() const
@@ -114,8 +115,12 @@ cv::Mat FaceRenderer::background(int index)
 {
     if (!m_video)
         return m_neutral.clone();
-    const int last = m_video->frameCount() - 1;
-    return m_video->frame(std::clamp(index, 0, last)).clone();
+    const int clamped = std::clamp(index, 0, m_frameCount - 1);
+    if (clamped != m_lastIndex) {
+        m_last = m_video->frame(clamped);
+        m_lastIndex = clamped;
+    }
+    return m_last.clone();
 }
 
 const Similarity &FaceRenderer::pose(int index) const

@@ -34,22 +34,25 @@ class FaceRenderer
 public:
     // Neutral background of `size` pixels.
     explicit FaceRenderer(const AamModel &aam, cv::Size size = cv::Size(360, 288));
-    // The frames of `videoPath`, the face tracked with `detector` (null: a default FaceDetector).
-    // Throws lipsync::Error naming the file if it cannot be read or holds no face; Canceled.
+    // The frames of `videoPath`, the face tracked with `detector` (null: a default FaceDetector);
+    // only its first `frames` when that is above 0 (1: a still of the person, drawn into again
+    // and again). Throws lipsync::Error naming the file if it cannot be read or holds no face;
+    // Canceled.
     FaceRenderer(const AamModel &aam, const std::string &videoPath, Feedback &feedback,
-                 FaceDetector *detector = nullptr);
+                 FaceDetector *detector = nullptr, int frames = 0);
     ~FaceRenderer();
     FaceRenderer(const FaceRenderer &) = delete;
     FaceRenderer &operator=(const FaceRenderer &) = delete;
 
     const AamModel &aam() const { return m_aam; }
     bool hasVideo() const;
-    // Frames of the background video (0 for the neutral background).
+    // Frames of the background video used (0 for the neutral background).
     int videoFrameCount() const;
     double videoFrameRate() const; // 0 for the neutral background
     cv::Size frameSize() const;
 
-    // The untouched background of frame `index` (BGR 8-bit; a copy).
+    // The untouched background of frame `index` (BGR 8-bit; a copy). The frame last asked for is
+    // kept, so a still asked for frame by frame is decoded once, not sought again each time.
     cv::Mat background(int index);
     // Parameters tracked in the background video (frames x d; empty for the neutral background).
     const Eigen::MatrixXd &trackedFeatures() const { return m_tracked; }
@@ -77,7 +80,10 @@ private:
     const AamModel &m_aam;
     AamSynthesizer m_synthesizer;
     std::unique_ptr<VideoReader> m_video;
+    int m_frameCount = 0;              // the video's frames used
     cv::Mat m_neutral;                 // the neutral background (no video)
+    int m_lastIndex = -1;              // the background frame last decoded, and its image
+    cv::Mat m_last;
     cv::Size m_size;
     std::vector<Similarity> m_poses;   // one per video frame, or one for the neutral frame
     Eigen::MatrixXd m_tracked;

@@ -206,7 +206,9 @@ bool LiveController::start(const QString &kind, Input input, const QAudioDevice 
                 feedback.setStatus("tracking the head pose");
                 FaceDetector detector(FaceDetectorPaths::boxesOnly());
                 try {
-                    setup.renderer = std::make_shared<FaceRenderer>(*aam, background.toStdString(), feedback, &detector);
+                    // The Live view draws into the clip's first frame: only that one is tracked.
+                    setup.renderer = std::make_shared<FaceRenderer>(*aam, background.toStdString(), feedback,
+                                                                    &detector, 1);
                 } catch (const Error &) {
                     tracked = false; // no face found in the clip: the mean face on grey instead
                 }

@@ -114,6 +114,21 @@ private slots:
         QVERIFY(cv::mean(diff(face))[0] > 1.0);
         // Wrong dimension: a clear error.
         QVERIFY_THROWS_EXCEPTION(Error, renderer.render(i, Eigen::VectorXd::Zero(3)));
+
+        // A still of the person (Live): only the first frame is tracked and drawn into, the same
+        // pixels and pose however often and whatever frame is asked for.
+        FaceRenderer still(m_aam, kClip, feedback, nullptr, 1);
+        QCOMPARE(still.videoFrameCount(), 1);
+        QCOMPARE(still.trackedFeatures().rows(), Eigen::Index(1));
+        QCOMPARE(still.trackedFeatures().row(0), renderer.trackedFeatures().row(0));
+        const cv::Mat first = renderer.background(0);
+        const Eigen::VectorXd params = renderer.trackedFeatures().row(i).transpose();
+        const cv::Mat once = still.render(0, params);
+        for (int k : {0, 12, 0, 74, 500}) {
+            QCOMPARE(cv::norm(still.background(k), first, cv::NORM_INF), 0.0);
+            QCOMPARE(cv::norm(still.render(k, params), once, cv::NORM_INF), 0.0);
+        }
+        QVERIFY(cv::norm(once, first, cv::NORM_INF) > 0.0);
     }
 
     void neutralFrameWithoutVideo()
