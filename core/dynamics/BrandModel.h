@@ -21,7 +21,7 @@ enum class BrandCovariance
 struct BrandOptions
 {
     BrandCovariance covariance = BrandCovariance::Diagonal;
-    // Fixed lag L of the streamer (§5); 0 = the smallest L with rho^L <= 1e-3 (at most 500).
+    // Fixed lag L of the streamer (§5); 0 = chosen on the training sequences (streamingLag()).
     int lag = 0;
 };
 
@@ -53,8 +53,14 @@ public:
     Eigen::MatrixXd generateDenseReference(const std::vector<int> &labels) const;
     // The tridiagonal system of dimension k (diagonal covariances).
     brand::TridiagonalSystem tridiagonalSystem(const std::vector<int> &labels, int k) const;
-    // rho = q_max / (q_max + p_min) of §2.2 and the streamer's lag.
+    // rho = q_max / (q_max + p_min) of §2.2.
     double contraction() const;
+    // The streamer's lag (§5): BrandOptions::lag when set; else the smallest lag at which the
+    // streamed frames of the training sequences lie, in mean L1, within kStreamingShare of the
+    // exact solve's own distance from the recorded frames (chosen when trained); else, for a
+    // model file without that choice, the smallest L with rho^L <= 1e-3 (at most kMaximumLag).
+    static constexpr double kStreamingShare = 0.02;
+    static constexpr int kMaximumLag = 500;
     int streamingLag() const;
     bool fullCovariance() const { return !jointCovariance.empty(); }
 
@@ -90,11 +96,14 @@ private:
     void fitFull(const std::vector<LabelledSequence> &sequences, const Eigen::VectorXd &floor);
     CovarianceChoice crossValidateCovariance(const std::vector<LabelledSequence> &sequences,
                                              Feedback &feedback) const;
+    std::unique_ptr<StreamingGenerator> makeStreamer(int lag) const;
+    int chooseStreamingLag(const std::vector<LabelledSequence> &sequences, Feedback &feedback) const;
     // Precision of o_t (t >= 2) and of y_1, per phone.
     Eigen::MatrixXd jointPrecision(int n) const;
     Eigen::MatrixXd staticPrecision(int n) const;
     BrandOptions m_options;
     CovarianceChoice m_choice;
+    int m_chosenLag = 0; // 0: not chosen (a model file written without it)
 };
 
 } // namespace lipsync

