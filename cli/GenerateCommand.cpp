@@ -40,23 +40,8 @@ int runGenerate(const CommandLine &args)
         throw Error("the model records no frame rate: give the rate it was trained at with --fps",
                     modelPath.toStdString());
     const std::vector<int> labels = readFrameLabels(labelsPath.toStdString(), fps, frames);
-    Eigen::MatrixXd Y;
-    if (args.isSet(QStringLiteral("stream"))) {
-        auto stream = model->streamer();
-        Y.resize(Eigen::Index(labels.size()), model->dimension());
-        Eigen::VectorXd frame(model->dimension());
-        Eigen::Index next = 0;
-        for (int label : labels) {
-            stream->push(label);
-            while (stream->pop(frame))
-                Y.row(next++) = frame.transpose();
-        }
-        stream->finish();
-        while (stream->pop(frame))
-            Y.row(next++) = frame.transpose();
-    } else {
-        Y = model->generate(labels);
-    }
+    const Eigen::MatrixXd Y =
+        args.isSet(QStringLiteral("stream")) ? model->generateStreamed(labels) : model->generate(labels);
     writeFeatureCsv(out.toStdString(), Y, {}, fps);
     if (args.isSet(QStringLiteral("json"))) {
         QJsonObject o;

@@ -288,7 +288,8 @@ int runLive(const CommandLine &a)
                   {QStringLiteral("latency_ms_max"), 1000 * worst},
                   {QStringLiteral("latency_ms_p95"), 1000 * p95},
                   {QStringLiteral("latency_ms_algorithmic"), 1000 * session.latencySeconds()},
-                  // -1: the model's face waits for each phone to end (phones in context).
+                  // -1: the model's face waits for each phone to end (phones in context, a model file
+                  // without the guess of them).
                   {QStringLiteral("generator_latency_frames"), session.generatorLatencyFrames()},
                   {QStringLiteral("phones"), phones}};
     if (a.isSet("transcript")) {
@@ -334,8 +335,9 @@ const CommandRegistration registration{
         {{QStringLiteral("input"), QStringLiteral("FILE"), QStringLiteral("the sound (any audio or video file)"), {},
           CommandOption::Required},
          {QStringLiteral("model"), QStringLiteral("MODEL"),
-          QStringLiteral("a trained dynamic model (lipsync train); one trained with --context-states waits for each "
-                         "phone to end (generator_latency_frames -1, a few hundred ms more)"),
+          QStringLiteral("a trained dynamic model (lipsync train); phones in context (--context-states) wait "
+                         "for their phone to end 4 frames at most, then are guessed (a model file written without "
+                         "that guess waits for each phone to end: generator_latency_frames -1)"),
           {}, CommandOption::Required},
          {QStringLiteral("aam"), QStringLiteral("AAM"), QStringLiteral("the AAM the model generates parameters of"), {},
           CommandOption::Required},

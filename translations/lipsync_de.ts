@@ -676,17 +676,17 @@
         <translation>Beschriftete Bilder werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="535"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="533"/>
         <source>Build AAM %1</source>
         <translation>AAM %1 erstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="537"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="535"/>
         <source>AAM %1 built from %2 frames: %3 combined modes%4</source>
         <translation>AAM %1 aus %2 Bildern erstellt: %3 kombinierte Moden%4</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="541"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="539"/>
         <source> (%n frame(s) skipped)</source>
         <translation>
             <numerusform> (%n Bild übersprungen)</numerusform>
@@ -694,27 +694,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="546"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="544"/>
         <source>The AAM could not be built.</source>
         <translation>Das AAM konnte nicht erstellt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="561"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="559"/>
         <source>Tracking needs an AAM.</source>
         <translation>Zum Tracken wird ein AAM benötigt.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="562"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="560"/>
         <source>Label a few frames and choose Faces ▸ Build AAM first.</source>
         <translation>Beschriften Sie einige Bilder und wählen Sie zuerst Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="580"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="578"/>
         <source>Track %1</source>
         <translation>%1 tracken</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="580"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="578"/>
         <source>Track %n sequence(s)</source>
         <translation>
             <numerusform>%n Sequenz tracken</numerusform>
@@ -722,7 +722,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="650"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="646"/>
         <source>Tracking failed.</source>
         <translation>Das Tracking ist fehlgeschlagen.</translation>
     </message>
@@ -1001,148 +1001,148 @@
 <context>
     <name>lipsync::studio::LiveController</name>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="100"/>
+        <location filename="../studio/live/LiveController.cpp" line="99"/>
         <source>Open a project to go live: the face is drawn with its appearance model and animated by its trained dynamic model.</source>
         <translation>Öffnen Sie ein Projekt, um live zu gehen: Das Gesicht wird mit seinem Erscheinungsmodell gezeichnet und von seinem trainierten dynamischen Modell bewegt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="104"/>
+        <location filename="../studio/live/LiveController.cpp" line="103"/>
         <source>The project has no appearance model. Build one (Faces ▸ Build AAM), then train a dynamic model in the Models panel.</source>
         <translation>Das Projekt hat kein Erscheinungsmodell. Erstellen Sie eines (Gesichter ▸ AAM erstellen) und trainieren Sie dann ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="109"/>
+        <location filename="../studio/live/LiveController.cpp" line="108"/>
         <source>The project&apos;s appearance model could not be loaded: %1</source>
         <translation>Das Erscheinungsmodell des Projekts konnte nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="111"/>
+        <location filename="../studio/live/LiveController.cpp" line="110"/>
         <source>No dynamic model is trained yet. Train one in the Models panel (DPDS follows live speech best), then start again.</source>
         <translation>Es ist noch kein dynamisches Modell trainiert. Trainieren Sie eines im Bereich „Modelle“ (DPDS folgt Live-Sprache am besten) und starten Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="115"/>
+        <location filename="../studio/live/LiveController.cpp" line="114"/>
         <source>Choose a trained model.</source>
         <translation>Wählen Sie ein trainiertes Modell.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="117"/>
+        <location filename="../studio/live/LiveController.cpp" line="116"/>
         <source>The %1 model was trained with another appearance model: train it again in the Models panel.</source>
         <translation>Das Modell %1 wurde mit einem anderen Erscheinungsmodell trainiert: Trainieren Sie es im Bereich „Modelle“ erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="122"/>
+        <location filename="../studio/live/LiveController.cpp" line="121"/>
         <source>CMU Sphinx&apos;s US-English models, which recognise the phones when the timeline aligns with CMU Sphinx, were not found. Install the Debian package pocketsphinx-en-us, or choose the built-in model in the timeline&apos;s Model menu.</source>
         <translation>Die US-englischen Modelle von CMU Sphinx, die die Phone erkennen, wenn die Zeitleiste mit CMU Sphinx ausrichtet, wurden nicht gefunden. Installieren Sie das Debian-Paket pocketsphinx-en-us oder wählen Sie im Modell-Menü der Zeitleiste das eingebaute Modell.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="126"/>
+        <location filename="../studio/live/LiveController.cpp" line="125"/>
         <source>The studio&apos;s aligner model, which recognises the phones, was not found. Reinstall the studio or point LIPSYNC_ALIGNER_MODEL at an aligner model.</source>
         <translation>Das Aligner-Modell des Studios, das die Phone erkennt, wurde nicht gefunden. Installieren Sie das Studio neu oder lassen Sie LIPSYNC_ALIGNER_MODEL auf ein Aligner-Modell zeigen.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="129"/>
+        <location filename="../studio/live/LiveController.cpp" line="128"/>
         <source>The phone bigram for live recognition (aligner/grid-s1.bigram) was not found. Reinstall the studio.</source>
         <translation>Das Phon-Bigramm für die Live-Erkennung (aligner/grid-s1.bigram) wurde nicht gefunden. Installieren Sie das Studio neu.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="150"/>
+        <location filename="../studio/live/LiveController.cpp" line="149"/>
         <source>A live session is running already.</source>
         <translation>Es läuft bereits eine Live-Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="152"/>
+        <location filename="../studio/live/LiveController.cpp" line="151"/>
         <source>Wait until the video export has ended.</source>
         <translation>Warten Sie, bis der Videoexport beendet ist.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="156"/>
+        <location filename="../studio/live/LiveController.cpp" line="155"/>
         <source>Choose a microphone.</source>
         <translation>Wählen Sie ein Mikrofon.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="183"/>
+        <location filename="../studio/live/LiveController.cpp" line="182"/>
         <source>Prepare the live view</source>
         <translation>Live-Ansicht vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="234"/>
+        <location filename="../studio/live/LiveController.cpp" line="233"/>
         <source>No face was found in %1: the live face is drawn on grey.</source>
         <translation>In %1 wurde kein Gesicht gefunden: Das Live-Gesicht wird auf Grau gezeichnet.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="244"/>
+        <location filename="../studio/live/LiveController.cpp" line="243"/>
         <source>The live view could not be prepared: %1</source>
         <translation>Die Live-Ansicht konnte nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="294"/>
+        <location filename="../studio/live/LiveController.cpp" line="293"/>
         <source>The microphone could not be opened: %1.</source>
         <translation>Das Mikrofon konnte nicht geöffnet werden: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="378"/>
+        <location filename="../studio/live/LiveController.cpp" line="377"/>
         <source>The live session stopped: %1</source>
         <translation>Die Live-Sitzung wurde abgebrochen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="476"/>
-        <location filename="../studio/live/LiveController.cpp" line="537"/>
+        <location filename="../studio/live/LiveController.cpp" line="475"/>
+        <location filename="../studio/live/LiveController.cpp" line="536"/>
         <source>Nothing is recorded yet: start a session and stop it first.</source>
         <translation>Es ist noch nichts aufgenommen: Starten und beenden Sie zuerst eine Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="478"/>
+        <location filename="../studio/live/LiveController.cpp" line="477"/>
         <source>No project is open.</source>
         <translation>Es ist kein Projekt geöffnet.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="480"/>
+        <location filename="../studio/live/LiveController.cpp" line="479"/>
         <source>The bundled demo is read-only: save the project in a folder of your own first.</source>
         <translation>Das mitgelieferte Demo ist schreibgeschützt: Speichern Sie das Projekt zuerst in einem eigenen Ordner.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="482"/>
+        <location filename="../studio/live/LiveController.cpp" line="481"/>
         <source>The project&apos;s appearance model changed since the recording: its features no longer fit.</source>
         <translation>Das Erscheinungsmodell des Projekts hat sich seit der Aufnahme geändert: Ihre Merkmale passen nicht mehr dazu.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="501"/>
+        <location filename="../studio/live/LiveController.cpp" line="500"/>
         <source>The sound could not be written: %1</source>
         <translation>Der Ton konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="522"/>
+        <location filename="../studio/live/LiveController.cpp" line="521"/>
         <source>Save Live Session as %1</source>
         <translation>Live-Sitzung als %1 speichern</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="524"/>
+        <location filename="../studio/live/LiveController.cpp" line="523"/>
         <source>The project refused the new sequence (the status bar says why).</source>
         <translation>Das Projekt hat die neue Sequenz abgelehnt (die Statusleiste nennt den Grund).</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="539"/>
+        <location filename="../studio/live/LiveController.cpp" line="538"/>
         <source>Stop the session first.</source>
         <translation>Beenden Sie zuerst die Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="541"/>
+        <location filename="../studio/live/LiveController.cpp" line="540"/>
         <source>A video export is running already.</source>
         <translation>Es läuft bereits ein Videoexport.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="553"/>
+        <location filename="../studio/live/LiveController.cpp" line="552"/>
         <source>Export the live session to %1</source>
         <translation>Live-Sitzung nach %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="564"/>
+        <location filename="../studio/live/LiveController.cpp" line="563"/>
         <source>The live session was written to %1.</source>
         <translation>Die Live-Sitzung wurde nach %1 geschrieben.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="572"/>
+        <location filename="../studio/live/LiveController.cpp" line="571"/>
         <source>The video could not be written: %1</source>
         <translation>Das Video konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -1297,8 +1297,8 @@
     </message>
     <message>
         <location filename="../studio/live/LiveView.cpp" line="317"/>
-        <source>This model uses phones in context, so its face waits for each phone to end: a few hundred milliseconds more. For the quickest face, train it without Phones in context.</source>
-        <translation>Dieses Modell verwendet Phoneme im Kontext, daher wartet sein Gesicht, bis jedes Phonem zu Ende ist: einige hundert Millisekunden mehr. Für das schnellste Gesicht trainieren Sie es ohne „Phoneme im Kontext“.</translation>
+        <source>This model&apos;s file predates Live&apos;s guess of phones in context, so its face waits for each phone to end, in pauses for seconds. Train it again for a face that follows at once.</source>
+        <translation>Die Datei dieses Modells ist älter als Lives Schätzung der Phone im Kontext, daher wartet sein Gesicht auf das Ende jedes Phons, in Pausen sekundenlang. Trainieren Sie es neu, damit das Gesicht sofort folgt.</translation>
     </message>
     <message>
         <location filename="../studio/live/LiveView.cpp" line="321"/>
@@ -2191,78 +2191,78 @@
         <translation>Vorschau von %1 vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="304"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="302"/>
         <source>The head could not be tracked: %1</source>
         <translation>Der Kopf konnte nicht getrackt werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="358"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="356"/>
         <source>Recorded video (landmarks: tracked)</source>
         <translation>Aufgenommenes Video (Landmarken: getrackt)</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="363"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="361"/>
         <source>Generated: %1</source>
         <translation>Erzeugt: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="367"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="365"/>
         <source>Generated</source>
         <translation>Erzeugt</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="418"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="416"/>
         <source>The project has no appearance model (Faces ▸ Build AAM).</source>
         <translation>Das Projekt hat kein Erscheinungsmodell (Gesichter ▸ AAM erstellen).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="420"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="418"/>
         <source>Tracking the head pose…</source>
         <translation>Kopfhaltung wird getrackt…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="422"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="420"/>
         <source>This sequence has no phones (align it in the Timeline).</source>
         <translation>Diese Sequenz hat keine Phoneme (in der Zeitleiste alignieren).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="424"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="422"/>
         <source>Train a dynamic model in the Models panel to see the faces it generates.</source>
         <translation>Trainieren Sie ein dynamisches Modell im Bereich „Modelle“, um die erzeugten Gesichter zu sehen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="430"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="428"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="478"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="476"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 — Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="587"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="585"/>
         <source>Faces for new speech need the project&apos;s appearance model.</source>
         <translation>Gesichter für neue Sprache brauchen das Erscheinungsmodell des Projekts.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="588"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="586"/>
         <source>Build one with Faces ▸ Build AAM.</source>
         <translation>Erstellen Sie eines mit Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="593"/>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="649"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="591"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="647"/>
         <source>No faces could be generated for this speech.</source>
         <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="594"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="592"/>
         <source>Train a dynamic model in the Models panel first.</source>
         <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="621"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="619"/>
         <source>Generate faces for %1</source>
         <translation>Gesichter für %1 erzeugen</translation>
     </message>

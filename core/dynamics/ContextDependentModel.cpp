@@ -60,6 +60,72 @@ private:
     int m_previous = PhoneSet::kSilence;
 };
 
+// Phone labels in, the inner streamer's frames out at most `wait` labels after their own: a frame
+// whose phone ends within that takes its true context; one whose phone runs longer (a pause, a
+// long vowel) takes the context ContextTree::predicted guesses, its segment at least as long as
+// seen so far (Live).
+class PromptContextStreamer : public StreamingGenerator
+{
+public:
+    PromptContextStreamer(const ContextTree &tree, std::unique_ptr<StreamingGenerator> inner, int dimension,
+                          int wait)
+        : m_tree(tree), m_inner(std::move(inner)), m_frame(dimension), m_wait(wait)
+    {
+    }
+    int latency() const override { return m_inner->latency() < 0 ? -1 : m_wait + m_inner->latency(); }
+    void push(int label) override
+    {
+        checkStateLabel(label, PhoneSet::kCount);
+        if (m_length > 0 && label != m_phone)
+            endSegment(label);
+        m_phone = label;
+        ++m_length;
+        // Frames that have waited long enough leave with the guess.
+        for (; m_length - m_sent > m_wait; ++m_sent) {
+            PhoneContext c = m_tree.predicted(m_phone, m_previous, m_sent);
+            const int length = std::max(m_tree.predictedLength(m_phone), m_length);
+            c.position = segmentPosition(m_sent, length);
+            send(c);
+        }
+    }
+    void finish() override
+    {
+        if (m_length > 0)
+            endSegment(PhoneSet::kSilence);
+        m_inner->finish();
+        drain();
+    }
+    bool pop(Eigen::Ref<Eigen::VectorXd> frame) override { return m_ready.pop(frame); }
+
+private:
+    // The segment has ended before `next`: its frames still held go with their true context.
+    void endSegment(int next)
+    {
+        for (; m_sent < m_length; ++m_sent)
+            send({m_phone, m_previous, next, segmentPosition(m_sent, m_length)});
+        m_previous = m_phone;
+        m_length = m_sent = 0;
+    }
+    void send(const PhoneContext &context)
+    {
+        m_inner->push(m_tree.state(context));
+        drain();
+    }
+    void drain()
+    {
+        while (m_inner->pop(m_frame))
+            m_ready.push(m_frame);
+    }
+
+    ContextTree m_tree; // a copy: the streamer outlives a retrained model
+    std::unique_ptr<StreamingGenerator> m_inner;
+    Eigen::VectorXd m_frame;
+    const int m_wait;
+    ReadyFrames m_ready;
+    int m_phone = -1, m_previous = PhoneSet::kSilence;
+    int m_length = 0, m_sent = 0; // frames of the running segment pushed, and sent on
+};
+
 } // namespace
 
 ContextDependentModel::ContextDependentModel(std::unique_ptr<DynamicModel> inner, ContextTreeOptions options)
@@ -131,6 +197,14 @@ std::unique_ptr<StreamingGenerator> ContextDependentModel::makeStreamer() const
 {
     checkTrained();
     return std::make_unique<ContextStreamer>(m_tree, m_inner->streamer(), m_dimension);
+}
+
+std::unique_ptr<StreamingGenerator> ContextDependentModel::makePromptStreamer() const
+{
+    checkTrained();
+    if (!m_tree.hasPrediction())
+        return makeStreamer();
+    return std::make_unique<PromptContextStreamer>(m_tree, m_inner->streamer(), m_dimension, kPromptWait);
 }
 
 } // namespace lipsync

@@ -3,7 +3,9 @@
 // grows a ContextTree on the phone-labelled sequences and trains the inner model on the tree's
 // states; generation and scoring map the phone labels to states first. The inner model is one of
 // the paper's four, unchanged, with P = the tree's state count instead of the 41 phones. Streaming
-// holds each phone's frames until the next phone starts (its right context and its length).
+// holds each phone's frames until the next phone starts (its right context and its length); the
+// prompt streamer (Live) holds a frame kPromptWait labels at most, then guesses both
+// (ContextTree::predicted).
 #include "dynamics/ContextTree.h"
 #include "dynamics/DynamicModel.h"
 
@@ -15,6 +17,9 @@ class ContextDependentModel : public DynamicModel
 {
 public:
     ContextDependentModel(std::unique_ptr<DynamicModel> inner, ContextTreeOptions options = {});
+    // Labels the prompt streamer holds a frame for at most, waiting for its phone to end: most
+    // phones last fewer video frames (GRID s1's median phone: 2 frames at 25 fps).
+    static constexpr int kPromptWait = 4;
 
     std::string kind() const override { return m_inner->kind(); }
     const DynamicModel &inner() const { return *m_inner; }
@@ -34,6 +39,7 @@ public:
 protected:
     void fit(const std::vector<LabelledSequence> &sequences, Feedback &feedback) override;
     std::unique_ptr<StreamingGenerator> makeStreamer() const override;
+    std::unique_ptr<StreamingGenerator> makePromptStreamer() const override;
 
 private:
     std::unique_ptr<DynamicModel> m_inner;

@@ -6,6 +6,7 @@
 
 #include <QJsonArray>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -279,7 +280,43 @@ ContextTree ContextTree::grow(const std::vector<LabelledSequence> &sequences,
         }
         feedback.setProgress(double(p + 1) / kPhones);
     }
+    // The prediction: successors counted and segment lengths gathered per phone; a phone never
+    // seen is followed by silence and lasts the median segment.
+    std::vector<std::vector<int>> successors(size_t(kPhones), std::vector<int>(size_t(kPhones), 0));
+    std::vector<std::vector<int>> lengths(static_cast<size_t>(kPhones));
+    std::vector<int> all;
+    for (const LabelledSequence &s : sequences)
+        for (size_t start = 0; start < s.labels.size();) {
+            size_t end = start;
+            while (end < s.labels.size() && s.labels[end] == s.labels[start])
+                ++end;
+            const int phone = s.labels[start];
+            ++successors[size_t(phone)][size_t(end < s.labels.size() ? s.labels[end] : PhoneSet::kSilence)];
+            lengths[size_t(phone)].push_back(int(end - start));
+            all.push_back(int(end - start));
+            start = end;
+        }
+    auto median = [](std::vector<int> v) {
+        std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+        return v[v.size() / 2];
+    };
+    const int typical = all.empty() ? 1 : median(all);
+    tree.m_next.assign(size_t(kPhones), PhoneSet::kSilence);
+    tree.m_length.assign(size_t(kPhones), typical);
+    for (int p = 0; p < kPhones; ++p) {
+        const std::vector<int> &counts = successors[size_t(p)];
+        if (lengths[size_t(p)].empty())
+            continue;
+        tree.m_next[size_t(p)] = int(std::max_element(counts.begin(), counts.end()) - counts.begin());
+        tree.m_length[size_t(p)] = median(lengths[size_t(p)]);
+    }
     return tree;
+}
+
+PhoneContext ContextTree::predicted(int phone, int left, int i) const
+{
+    const int length = predictedLength(phone);
+    return {phone, left, m_next[size_t(phone)], segmentPosition(std::min(i, length - 1), length)};
 }
 
 int ContextTree::state(const PhoneContext &context) const
@@ -353,7 +390,17 @@ QJsonObject ContextTree::toJson() const
         trees.append(QJsonObject{{QStringLiteral("phone"), QString::fromStdString(PhoneSet::label(p))},
                                  {QStringLiteral("nodes"), nodes}});
     }
-    return QJsonObject{{QStringLiteral("states"), m_stateCount}, {QStringLiteral("trees"), trees}};
+    QJsonObject o{{QStringLiteral("states"), m_stateCount}, {QStringLiteral("trees"), trees}};
+    if (hasPrediction()) {
+        QJsonArray next, length;
+        for (int p = 0; p < kPhones; ++p) {
+            next.append(QString::fromStdString(PhoneSet::label(m_next[size_t(p)])));
+            length.append(m_length[size_t(p)]);
+        }
+        o[QStringLiteral("next")] = next;
+        o[QStringLiteral("length")] = length;
+    }
+    return o;
 }
 
 ContextTree ContextTree::fromJson(const QJsonObject &json, const std::string &file)
@@ -401,6 +448,22 @@ ContextTree ContextTree::fromJson(const QJsonObject &json, const std::string &fi
     for (size_t s = 0; s < seen.size(); ++s)
         if (!seen[s])
             throw Error("state " + std::to_string(s) + " is no tree's leaf", file, "context.states");
+    if (json.contains(QStringLiteral("next")) || json.contains(QStringLiteral("length"))) {
+        const QJsonArray next = json.value(QStringLiteral("next")).toArray();
+        const QJsonArray length = json.value(QStringLiteral("length")).toArray();
+        if (next.size() != kPhones || length.size() != kPhones)
+            throw Error("expected a successor and a length per phone (" + std::to_string(kPhones) + " each)", file,
+                        "context.next/length");
+        for (int p = 0; p < kPhones; ++p) {
+            const int phone = PhoneSet::index(next[p].toString().toStdString());
+            const int frames = length[p].toInt(0);
+            if (phone < 0 || frames < 1)
+                throw Error("expected a phone label and a length of 1 frame or more", file,
+                            "context.next/length[" + std::to_string(p) + "]");
+            tree.m_next.push_back(phone);
+            tree.m_length.push_back(frames);
+        }
+    }
     return tree;
 }
 

@@ -13,6 +13,7 @@
 
 #include <QJsonObject>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -60,11 +61,21 @@ public:
     int state(const PhoneContext &context) const;
     // The state of every frame of a phone label sequence.
     std::vector<int> states(const std::vector<int> &phoneLabels) const;
+    // A frame's most likely context while its segment is still running (Live, which cannot wait
+    // for the next phone): frame i of a segment of `phone` after `left`, the right context the
+    // phone's most frequent successor in training and the third from its median segment length
+    // there (the last third once the segment has run longer). Trees of model files written
+    // without it have none.
+    bool hasPrediction() const { return !m_next.empty(); }
+    PhoneContext predicted(int phone, int left, int i) const;
+    int predictedLength(int phone) const { return std::max(1, m_length[size_t(phone)]); }
+
     // "AA: L-bilabial, not pos-last" — the questions answered on the way to a state.
     std::string describe(int state) const;
 
     // {"states": K, "trees": [{"phone": "AA", "nodes": [{"ask": "L-bilabial", "yes": 1, "no": 2},
-    //  {"state": 0}, ...]}, ...]}, one tree per phone in PhoneSet order.
+    //  {"state": 0}, ...]}, ...], "next": ["B", ...], "length": [7, ...]}, one tree, successor and
+    //  median length per phone in PhoneSet order.
     QJsonObject toJson() const;
     // Throws lipsync::Error naming `file` for unknown questions, broken node links or states.
     static ContextTree fromJson(const QJsonObject &json, const std::string &file);
@@ -81,6 +92,7 @@ private:
     };
     std::vector<std::vector<Node>> m_trees; // per phone; node 0 is the root
     int m_stateCount = 0;
+    std::vector<int> m_next, m_length;      // per phone (predicted()); empty: no prediction
 };
 
 } // namespace lipsync

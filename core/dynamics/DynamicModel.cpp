@@ -196,11 +196,37 @@ Eigen::MatrixXd DynamicModel::generate(const std::vector<int> &labels) const
 
 std::unique_ptr<StreamingGenerator> DynamicModel::streamer() const
 {
-    std::unique_ptr<StreamingGenerator> inner = makeStreamer();
+    return compensated(makeStreamer());
+}
+
+std::unique_ptr<StreamingGenerator> DynamicModel::promptStreamer() const
+{
+    return compensated(makePromptStreamer());
+}
+
+std::unique_ptr<StreamingGenerator> DynamicModel::compensated(std::unique_ptr<StreamingGenerator> inner) const
+{
     if (m_gain.size() == 0)
         return inner;
     return std::make_unique<CompensatedStreamer>(std::move(inner), m_mean, m_gain, m_detailGain, m_window,
                                                  m_fastWindow);
+}
+
+Eigen::MatrixXd DynamicModel::generateStreamed(const std::vector<int> &labels, bool prompt) const
+{
+    const std::unique_ptr<StreamingGenerator> stream = prompt ? promptStreamer() : streamer();
+    Eigen::MatrixXd Y(Eigen::Index(labels.size()), m_dimension);
+    Eigen::VectorXd frame(m_dimension);
+    Eigen::Index next = 0;
+    for (int label : labels) {
+        stream->push(label);
+        while (stream->pop(frame))
+            Y.row(next++) = frame.transpose();
+    }
+    stream->finish();
+    while (stream->pop(frame))
+        Y.row(next++) = frame.transpose();
+    return Y;
 }
 
 void DynamicModel::setCompensation(const Eigen::VectorXd &mean, const Eigen::VectorXd &gain,

@@ -53,6 +53,14 @@ public:
     virtual Eigen::MatrixXd generateMostLikely(const std::vector<int> &labels) const = 0;
     // Frame-by-frame generation; equals generate() (exactly for the recursive models).
     std::unique_ptr<StreamingGenerator> streamer() const;
+    // Frame-by-frame generation that never waits for a phone to end, what Live draws: streamer(),
+    // except that a model over phones in context guesses each frame's right context and segment
+    // third as the frame comes (ContextTree::predicted) instead of holding the phone's frames
+    // until the next phone starts.
+    std::unique_ptr<StreamingGenerator> promptStreamer() const;
+    // The labels pushed one by one through streamer() (generate()'s frames for the recursive
+    // models, Brand's fixed-lag approximation of them), or through promptStreamer().
+    Eigen::MatrixXd generateStreamed(const std::vector<int> &labels, bool prompt = false) const;
 
     // Variance compensation (docs/models.md §5.1), as global-variance compensation and the
     // modulation-spectrum post-filter of HMM speech synthesis: the most likely trajectory of every
@@ -107,6 +115,7 @@ public:
 protected:
     virtual void fit(const std::vector<LabelledSequence> &sequences, Feedback &feedback) = 0;
     virtual std::unique_ptr<StreamingGenerator> makeStreamer() const = 0;
+    virtual std::unique_ptr<StreamingGenerator> makePromptStreamer() const { return makeStreamer(); }
     void checkTrained() const;
     void checkGenerationInput(const std::vector<int> &labels) const;
     void checkScoringInput(const std::vector<int> &labels, const Eigen::MatrixXd &features) const;
@@ -114,6 +123,8 @@ protected:
     int m_dimension = 0;
 
 private:
+    // `inner` with the variance compensation the model was trained with, if any.
+    std::unique_ptr<StreamingGenerator> compensated(std::unique_ptr<StreamingGenerator> inner) const;
     int m_stateCount = PhoneSet::kCount;
     double m_frameRate = 0.0;
     bool m_compensate = false;

@@ -281,7 +281,7 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
                                                           sequence.frameRate, s.frameCount());
                 for (size_t k = 0; k < cv.kinds.size(); ++k)
                     renderings.push_back({kLive + cv.kinds[k],
-                                          closed(models[size_t(item.fold)][k]->generate(heard),
+                                          closed(models[size_t(item.fold)][k]->generateStreamed(heard, true),
                                                  BilabialClosure::weights(heard))});
             }
             item.result = measureSequence(aam, project.mediaPath(sequence), sequence, renderings, *detector,

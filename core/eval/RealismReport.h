@@ -51,7 +51,9 @@ struct RealismOptions
     bool closeBilabials = true;
     // Also every model driven live (render/LiveSession): each held-out sequence's phones
     // recognised from its sound as it streams in (StreamingPhoneRecognizer with this aligner
-    // model and phone bigram), not taken from its forced alignment; reported as "live <kind>".
+    // model and phone bigram), not taken from its forced alignment, and the face generated from
+    // them frame by frame as Live does (DynamicModel::promptStreamer: Brand at its fixed lag,
+    // phones in context guessed as they come); reported as "live <kind>".
     // Empty: not measured.
     std::string liveAcousticModel;
     std::string liveBigram;

@@ -30,7 +30,7 @@ LiveSession::LiveSession(std::unique_ptr<PhoneStream> recognizer, const DynamicM
         throw Error("the model generates " + std::to_string(model.dimension()) + " parameters, the AAM has "
                     + std::to_string(renderer->aam().combinedModes()));
     m_frameRate = options.frameRate > 0 ? options.frameRate : model.frameRate() > 0 ? model.frameRate() : 25.0;
-    m_generator = model.streamer();
+    m_generator = model.promptStreamer();
     m_still = options.stillBackground;
     if (renderer && options.closeBilabials)
         m_closure = BilabialClosure::forAam(renderer->aam());

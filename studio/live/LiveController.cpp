@@ -89,7 +89,7 @@ QStringList LiveController::trainedKinds() const
 bool LiveController::waitsForPhones(const QString &kind) const
 {
     const std::shared_ptr<const DynamicModel> model = m_context->modelStore()->dynamicModel(kind);
-    return model && model->isTrained() && model->streamer()->latency() < 0;
+    return model && model->isTrained() && model->promptStreamer()->latency() < 0;
 }
 
 QString LiveController::problem(const QString &kind) const

@@ -63,8 +63,8 @@ public:
     // What stands in the way of going live with the model of `kind` (a sentence saying what to
     // do instead), or empty.
     QString problem(const QString &kind) const;
-    // Whether the model's face waits for each phone to end (phones in context): live, a few
-    // hundred milliseconds more than the recogniser's delay.
+    // Whether the model's face waits for each phone to end (phones in context from a model file
+    // without the guess Live streams them with): in pauses, seconds behind the sound.
     bool waitsForPhones(const QString &kind) const;
     // The dynamic model kinds the project has trained, in the studio's order.
     QStringList trainedKinds() const;

@@ -314,8 +314,8 @@ void LiveView::updateControls()
     }
     if (m_controller->waitsForPhones(chosenKind()))
         message += (message.isEmpty() ? QString() : QStringLiteral(" "))
-                   + tr("This model uses phones in context, so its face waits for each phone to end: a few hundred "
-                        "milliseconds more. For the quickest face, train it without Phones in context.");
+                   + tr("This model's file predates Live's guess of phones in context, so its face waits for each "
+                        "phone to end, in pauses for seconds. Train it again for a face that follows at once.");
     if (m_controller->recordingTruncated())
         message += QLatin1Char(' ')
                    + tr("Only the first %1 minutes are kept for saving; the face went on moving after that.")

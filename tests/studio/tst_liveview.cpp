@@ -176,10 +176,11 @@ private slots:
         QCOMPARE(live()->modelCombo()->count(), 2);
         QCOMPARE(live()->chosenKind(), QStringLiteral("dpds"));
         QVERIFY(controller()->problem(QStringLiteral("dpds")).isEmpty());
-        // Trained with phones in context (the panel's default), its face waits for each phone to
-        // end, and the view says so.
-        QVERIFY(controller()->waitsForPhones(QStringLiteral("dpds")));
-        QVERIFY2(live()->face()->placeholderText().contains(QStringLiteral("phones in context")),
+        // Trained with phones in context (the panel's default), its face does not wait for every
+        // phone to end (Live guesses the context of a phone that runs long), and the view has no
+        // warning.
+        QVERIFY(controller()->waitsForPhones(QStringLiteral("dpds")) == false);
+        QVERIFY2(!live()->face()->placeholderText().contains(QStringLiteral("phones in context")),
                  qPrintable(live()->face()->placeholderText()));
     }
 

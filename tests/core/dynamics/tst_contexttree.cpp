@@ -9,8 +9,15 @@
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
+#include <QFile>
 #include <QJsonArray>
+#include <QJsonDocument>
+#include <QTemporaryDir>
 #include <QTest>
+
+#include <algorithm>
+#include <functional>
+#include <map>
 
 using namespace lipsync;
 using namespace lipsync::test;
@@ -189,6 +196,122 @@ private slots:
         QVERIFY2(e.find("at least 41") != std::string::npos, e.c_str());
         e = broken([](QJsonObject &json) { json[QStringLiteral("trees")] = QJsonArray(); });
         QVERIFY2(e.find("one tree per phone") != std::string::npos, e.c_str());
+    }
+
+    // Live cannot wait for the next phone: the prompt streamer takes each frame's context from the
+    // tree's prediction (each phone's most frequent successor and median segment length in
+    // training) and emits every frame as its label comes. A tree without a prediction (an older
+    // model file) keeps waiting; a damaged prediction is refused.
+    void promptStreamingGuessesTheContext()
+    {
+        std::mt19937 rng(17);
+        const auto training = anticipation(rng, 40);
+        // The prediction counted here, independently.
+        std::map<int, std::map<int, int>> successors;
+        std::map<int, std::vector<int>> lengths;
+        for (const LabelledSequence &s : training)
+            for (size_t start = 0, end = 0; start < s.labels.size(); start = end) {
+                for (end = start; end < s.labels.size() && s.labels[end] == s.labels[start]; ++end) {
+                }
+                ++successors[s.labels[start]][end < s.labels.size() ? s.labels[end] : ph("sil")];
+                lengths[s.labels[start]].push_back(int(end - start));
+            }
+        Feedback feedback;
+        ContextDependentModel model(std::make_unique<HmmMeanModel>());
+        model.train(training, feedback);
+        const ContextTree &tree = model.tree();
+        QVERIFY(tree.hasPrediction());
+        for (const char *phone : {"AA", "B", "T", "IY"}) {
+            const int p = ph(phone);
+            std::vector<int> &l = lengths[p];
+            std::sort(l.begin(), l.end());
+            const int median = l[l.size() / 2];
+            int next = -1, most = -1;
+            for (const auto &[q, count] : successors[p])
+                if (count > most) {
+                    most = count;
+                    next = q;
+                }
+            for (int i : {0, median / 2, median - 1, median, 3 * median}) {
+                const PhoneContext c = tree.predicted(p, ph("sil"), i);
+                QCOMPARE(c.right, next);
+                QCOMPARE(c.position, segmentPosition(std::min(i, median - 1), median));
+            }
+        }
+        // Each frame out at most kPromptWait labels after its own: with its true context when its
+        // phone has ended by then, else with the guessed one, its segment at least as long as seen.
+        const std::vector<int> labels = anticipation(rng, 1).front().labels;
+        constexpr int K = ContextDependentModel::kPromptWait;
+        std::vector<int> expected;
+        const std::vector<PhoneContext> truth = frameContexts(labels);
+        for (size_t t = 0, i = 0; t < labels.size(); ++t, ++i) {
+            if (t > 0 && labels[t] != labels[t - 1])
+                i = 0;
+            size_t n = 0; // the segment's length
+            while (t - i + n < labels.size() && labels[t - i + n] == labels[t])
+                ++n;
+            if (n >= i + K + 1) {
+                PhoneContext c = tree.predicted(labels[t], truth[t].left, int(i));
+                c.position = segmentPosition(int(i), std::max(tree.predictedLength(labels[t]), int(i) + K + 1));
+                expected.push_back(tree.state(c));
+            } else {
+                expected.push_back(tree.state(truth[t]));
+            }
+        }
+        auto prompt = model.promptStreamer();
+        QCOMPARE(prompt->latency(), K);
+        Eigen::VectorXd frame(2);
+        int out = 0;
+        for (size_t t = 0; t < labels.size(); ++t) {
+            prompt->push(labels[t]);
+            while (prompt->pop(frame))
+                ++out;
+            QVERIFY(int(t) + 1 - out <= K);
+        }
+        // With long silences some frames were guessed, and some guesses differ from the truth.
+        QVERIFY(expected != tree.states(labels));
+        QVERIFY((model.generateStreamed(labels, true) - model.inner().generate(expected)).cwiseAbs().maxCoeff() < 1e-12);
+        QVERIFY(model.streamer()->latency() < 0); // the exact streamer still waits
+
+        // The prediction travels in the model file; a model file without it waits for each phone
+        // to end in Live too.
+        QTemporaryDir dir;
+        const std::string path = dir.filePath(QStringLiteral("context.model")).toStdString();
+        saveModel(model, path, "aam-test");
+        QVERIFY((loadModel(path)->generateStreamed(labels, true) - model.generateStreamed(labels, true)).cwiseAbs().maxCoeff()
+                < 1e-12);
+        QFile file(QString::fromStdString(path));
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QJsonObject o = QJsonDocument::fromJson(file.readAll()).object();
+        file.close();
+        QJsonObject context = o[QStringLiteral("context")].toObject();
+        context.remove(QStringLiteral("next"));
+        context.remove(QStringLiteral("length"));
+        o[QStringLiteral("context")] = context;
+        QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        file.write(QJsonDocument(o).toJson());
+        file.close();
+        const auto older = loadModel(path);
+        QVERIFY(older->promptStreamer()->latency() < 0);
+        QVERIFY((older->generateStreamed(labels, true) - model.generate(labels)).cwiseAbs().maxCoeff() < 1e-12);
+        for (const auto &edit : std::vector<std::function<void(QJsonObject &)>>{
+                 [](QJsonObject &j) { j[QStringLiteral("next")] = QJsonArray{QStringLiteral("B")}; },
+                 [](QJsonObject &j) {
+                     QJsonArray next = j[QStringLiteral("next")].toArray();
+                     next[0] = QStringLiteral("martian");
+                     j[QStringLiteral("next")] = next;
+                 },
+                 [](QJsonObject &j) {
+                     QJsonArray length = j[QStringLiteral("length")].toArray();
+                     length[3] = 0;
+                     j[QStringLiteral("length")] = length;
+                 }}) {
+            QJsonObject damaged = tree.toJson();
+            edit(damaged);
+            const std::string e = errorOf([&] { ContextTree::fromJson(damaged, "m.json"); });
+            QVERIFY2(e.find("context.next/length") != std::string::npos && e.find("m.json") != std::string::npos,
+                     e.c_str());
+        }
     }
 
     // Training canceled inside the inner model leaves the context model untrained and its inner

@@ -380,6 +380,7 @@ private slots:
                 while (stream->pop(frame))
                     streamed.row(next++) = frame.transpose();
                 QCOMPARE(next, batch.rows());
+                QVERIFY(model->generateStreamed(labels) == streamed); // the same, in one call
                 // Exact for the recursive models; Brand's fixed-lag frames stay within a few
                 // percent of the trajectory's own spread (its lag is chosen for that, §5).
                 if (kind == "brand") {
