@@ -7,72 +7,19 @@ namespace lipsync {
 
 namespace {
 
-// Phone labels in, the inner streamer's frames out: a phone's frames go to the inner streamer as
-// states once the next phone (their right context, and their count) is known.
+// Phone labels in, the inner streamer's frames out once their phone has ended (its right context
+// and its length known), or, with a `wait` of 0 or more, at most that many labels after their
+// own: a frame whose phone runs longer (a pause, a long vowel) then takes the context
+// ContextTree::predicted guesses, its segment at least as long as seen so far (Live).
 class ContextStreamer : public StreamingGenerator
 {
 public:
-    ContextStreamer(const ContextTree &tree, std::unique_ptr<StreamingGenerator> inner, int dimension)
-        : m_tree(tree), m_inner(std::move(inner)), m_frame(dimension)
-    {
-    }
-    // Variable: a frame waits for the next phone to start.
-    int latency() const override { return -1; }
-    void push(int label) override
-    {
-        checkStateLabel(label, PhoneSet::kCount);
-        if (!m_segment.empty() && label != m_segment.front())
-            flush(label);
-        m_segment.push_back(label);
-    }
-    void finish() override
-    {
-        flush(PhoneSet::kSilence);
-        m_inner->finish();
-        drain();
-    }
-    bool pop(Eigen::Ref<Eigen::VectorXd> frame) override { return m_ready.pop(frame); }
-
-private:
-    void flush(int next)
-    {
-        if (m_segment.empty())
-            return;
-        const int length = int(m_segment.size());
-        for (int i = 0; i < length; ++i) {
-            m_inner->push(m_tree.state({m_segment.front(), m_previous, next, segmentPosition(i, length)}));
-            drain(); // the inner streamer may hold only its latest frame
-        }
-        m_previous = m_segment.front();
-        m_segment.clear();
-    }
-    void drain()
-    {
-        while (m_inner->pop(m_frame))
-            m_ready.push(m_frame);
-    }
-
-    ContextTree m_tree; // a copy: the streamer outlives a retrained model
-    std::unique_ptr<StreamingGenerator> m_inner;
-    Eigen::VectorXd m_frame;
-    ReadyFrames m_ready;
-    std::vector<int> m_segment;
-    int m_previous = PhoneSet::kSilence;
-};
-
-// Phone labels in, the inner streamer's frames out at most `wait` labels after their own: a frame
-// whose phone ends within that takes its true context; one whose phone runs longer (a pause, a
-// long vowel) takes the context ContextTree::predicted guesses, its segment at least as long as
-// seen so far (Live).
-class PromptContextStreamer : public StreamingGenerator
-{
-public:
-    PromptContextStreamer(const ContextTree &tree, std::unique_ptr<StreamingGenerator> inner, int dimension,
-                          int wait)
+    ContextStreamer(const ContextTree &tree, std::unique_ptr<StreamingGenerator> inner, int dimension, int wait)
         : m_tree(tree), m_inner(std::move(inner)), m_frame(dimension), m_wait(wait)
     {
     }
-    int latency() const override { return m_inner->latency() < 0 ? -1 : m_wait + m_inner->latency(); }
+    // -1: variable, a frame waits for the next phone to start.
+    int latency() const override { return m_wait < 0 || m_inner->latency() < 0 ? -1 : m_wait + m_inner->latency(); }
     void push(int label) override
     {
         checkStateLabel(label, PhoneSet::kCount);
@@ -81,7 +28,7 @@ public:
         m_phone = label;
         ++m_length;
         // Frames that have waited long enough leave with the guess.
-        for (; m_length - m_sent > m_wait; ++m_sent) {
+        for (; m_wait >= 0 && m_length - m_sent > m_wait; ++m_sent) {
             PhoneContext c = m_tree.predicted(m_phone, m_previous, m_sent);
             const int length = std::max(m_tree.predictedLength(m_phone), m_length);
             c.position = segmentPosition(m_sent, length);
@@ -120,7 +67,7 @@ private:
     ContextTree m_tree; // a copy: the streamer outlives a retrained model
     std::unique_ptr<StreamingGenerator> m_inner;
     Eigen::VectorXd m_frame;
-    const int m_wait;
+    const int m_wait; // -1: until the phone ends
     ReadyFrames m_ready;
     int m_phone = -1, m_previous = PhoneSet::kSilence;
     int m_length = 0, m_sent = 0; // frames of the running segment pushed, and sent on
@@ -196,7 +143,7 @@ void ContextDependentModel::parametersFromJson(const QJsonObject &json, const st
 std::unique_ptr<StreamingGenerator> ContextDependentModel::makeStreamer() const
 {
     checkTrained();
-    return std::make_unique<ContextStreamer>(m_tree, m_inner->streamer(), m_dimension);
+    return std::make_unique<ContextStreamer>(m_tree, m_inner->streamer(), m_dimension, -1);
 }
 
 std::unique_ptr<StreamingGenerator> ContextDependentModel::makePromptStreamer() const
@@ -204,7 +151,7 @@ std::unique_ptr<StreamingGenerator> ContextDependentModel::makePromptStreamer() 
     checkTrained();
     if (!m_tree.hasPrediction())
         return makeStreamer();
-    return std::make_unique<PromptContextStreamer>(m_tree, m_inner->streamer(), m_dimension, kPromptWait);
+    return std::make_unique<ContextStreamer>(m_tree, m_inner->streamer(), m_dimension, kPromptWait);
 }
 
 } // namespace lipsync
