@@ -316,7 +316,8 @@ ContextTree ContextTree::grow(const std::vector<LabelledSequence> &sequences,
 PhoneContext ContextTree::predicted(int phone, int left, int i) const
 {
     const int length = predictedLength(phone);
-    return {phone, left, m_next[size_t(phone)], segmentPosition(std::min(i, length - 1), length)};
+    const int next = m_next.empty() ? int(PhoneSet::kSilence) : m_next[size_t(phone)];
+    return {phone, left, next, segmentPosition(std::min(i, length - 1), length)};
 }
 
 int ContextTree::state(const PhoneContext &context) const

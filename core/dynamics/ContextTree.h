@@ -62,13 +62,13 @@ public:
     // The state of every frame of a phone label sequence.
     std::vector<int> states(const std::vector<int> &phoneLabels) const;
     // A frame's most likely context while its segment is still running (Live, which cannot wait
-    // for the next phone): frame i of a segment of `phone` after `left`, the right context the
-    // phone's most frequent successor in training and the third from its median segment length
-    // there (the last third once the segment has run longer). Trees of model files written
-    // without it have none.
+    // long for the next phone): frame i of a segment of `phone` after `left`, the right context
+    // the phone's most frequent successor in training and the third from its median segment
+    // length there (the last third once the segment has run longer). Trees of model files
+    // written without it have none (silence next, 1-frame segments).
     bool hasPrediction() const { return !m_next.empty(); }
     PhoneContext predicted(int phone, int left, int i) const;
-    int predictedLength(int phone) const { return std::max(1, m_length[size_t(phone)]); }
+    int predictedLength(int phone) const { return m_length.empty() ? 1 : std::max(1, m_length[size_t(phone)]); }
 
     // "AA: L-bilabial, not pos-last" — the questions answered on the way to a state.
     std::string describe(int state) const;

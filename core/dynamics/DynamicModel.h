@@ -53,10 +53,10 @@ public:
     virtual Eigen::MatrixXd generateMostLikely(const std::vector<int> &labels) const = 0;
     // Frame-by-frame generation; equals generate() (exactly for the recursive models).
     std::unique_ptr<StreamingGenerator> streamer() const;
-    // Frame-by-frame generation that never waits for a phone to end, what Live draws: streamer(),
-    // except that a model over phones in context guesses each frame's right context and segment
-    // third as the frame comes (ContextTree::predicted) instead of holding the phone's frames
-    // until the next phone starts.
+    // Frame-by-frame generation that does not wait long for a phone to end, what Live draws:
+    // streamer(), except that a model over phones in context holds a frame a few labels at most
+    // (ContextDependentModel::kPromptWait) and then guesses its right context and segment third
+    // (ContextTree::predicted) instead of holding it until the next phone starts.
     std::unique_ptr<StreamingGenerator> promptStreamer() const;
     // The labels pushed one by one through streamer() (generate()'s frames for the recursive
     // models, Brand's fixed-lag approximation of them), or through promptStreamer().
