@@ -57,12 +57,17 @@ struct AcmodPrefix
 
 namespace lipsync {
 
-std::vector<short> toPcm16(const std::vector<float> &samples)
+std::vector<short> toPcm16(const float *samples, size_t count)
 {
-    std::vector<short> pcm(samples.size());
-    for (size_t i = 0; i < samples.size(); ++i)
+    std::vector<short> pcm(count);
+    for (size_t i = 0; i < count; ++i)
         pcm[i] = short(std::lround(std::clamp(samples[i], -1.0f, 1.0f) * 32767.0f));
     return pcm;
+}
+
+std::vector<short> toPcm16(const std::vector<float> &samples)
+{
+    return toPcm16(samples.data(), samples.size());
 }
 
 struct SphinxDecoder::Impl

@@ -8,6 +8,7 @@
 //    the start of its struct are pinned in the .cpp and checked at run time).
 //  - SphinxPhoneLoop: pocketsphinx's all-phone search (a phone loop under a phone language
 //    model) fed block by block, with the best phone path so far.
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <utility>
@@ -16,6 +17,7 @@
 namespace lipsync {
 
 // Samples in [-1, 1] (clipped beyond) as the 16-bit PCM pocketsphinx reads.
+std::vector<short> toPcm16(const float *samples, size_t count);
 std::vector<short> toPcm16(const std::vector<float> &samples);
 
 class SphinxDecoder

@@ -27,8 +27,7 @@ SphinxPhoneRecognizer::SphinxPhoneRecognizer(const SphinxPhoneOptions &options) 
             throw Error("not found: CMU Sphinx's US-English phone models (Debian package pocketsphinx-en-us)", file);
     m_loop = std::make_unique<SphinxPhoneLoop>(
         hmm, lm,
-        std::vector<std::pair<std::string, std::string>>{{"-lw", std::to_string(m_options.languageWeight)},
-                                                         {"-pip", std::to_string(m_options.phoneInsertion)}});
+        std::vector<std::pair<std::string, std::string>>{{"-lw", std::to_string(m_options.languageWeight)}});
     m_loop->start();
 }
 
@@ -49,9 +48,7 @@ double SphinxPhoneRecognizer::latencySeconds() const
 
 void SphinxPhoneRecognizer::push(const float *samples, size_t count)
 {
-    std::vector<short> pcm(count);
-    for (size_t i = 0; i < count; ++i)
-        pcm[i] = short(std::lround(std::clamp(samples[i], -1.0f, 1.0f) * 32767.0f));
+    const std::vector<short> pcm = toPcm16(samples, count);
     m_pcm.insert(m_pcm.end(), pcm.begin(), pcm.end());
     m_samples += long(count);
     m_loop->process(pcm.data(), pcm.size());

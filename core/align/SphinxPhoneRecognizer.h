@@ -29,7 +29,6 @@ struct SphinxPhoneOptions
     std::string modelDir;          // empty: SphinxAligner::resolveModelDir (Debian's en-us)
     int lagFrames = 10;            // 10 ms frames between the newest searched and a decision
     double languageWeight = 2.0;   // pocketsphinx -lw: the phone language model's weight
-    double phoneInsertion = 1.0;   // pocketsphinx -pip: the phone insertion probability
     double restartSeconds = 20.0;  // decided sound after which the search restarts at a silence
 };
 
