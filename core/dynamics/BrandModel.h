@@ -96,7 +96,6 @@ private:
     void fitFull(const std::vector<LabelledSequence> &sequences, const Eigen::VectorXd &floor);
     CovarianceChoice crossValidateCovariance(const std::vector<LabelledSequence> &sequences,
                                              Feedback &feedback) const;
-    std::unique_ptr<StreamingGenerator> makeStreamer(int lag) const;
     int chooseStreamingLag(const std::vector<LabelledSequence> &sequences, Feedback &feedback) const;
     // Precision of o_t (t >= 2) and of y_1, per phone.
     Eigen::MatrixXd jointPrecision(int n) const;
