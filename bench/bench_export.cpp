@@ -40,7 +40,6 @@ void BM_ExportMp4ThreeSeconds(benchmark::State &state)
     QTemporaryDir dir;
     const std::string path = dir.filePath("bench.mp4").toStdString();
     lipsync::VideoExportOptions options;
-    options.fitVideoToAudio = false; // all 75 frames, as the target states
     options.threads = int(state.range(0));
     const lipsync::AudioBuffer *audio = state.range(1) ? &clip.audio : nullptr;
     // std::clock() is the CPU time of the whole process (every encoder thread): the wall time an

@@ -463,8 +463,8 @@ void BM_LivePhonesKFold(benchmark::State &state)
                     right += phone == decided[j];
                 }
                 const int videoFrames = int(std::lround(clips[size_t(i)].utterance.duration * 25));
-                const std::vector<std::string> truth = voteFrameLabels(reference, 25.0, videoFrames, o);
-                const std::vector<std::string> guess = voteFrameLabels(recognised, 25.0, videoFrames, o);
+                const std::vector<std::string> truth = voteFrameLabels(reference, lipsync::FrameClock::uniform(25.0, videoFrames), o);
+                const std::vector<std::string> guess = voteFrameLabels(recognised, lipsync::FrameClock::uniform(25.0, videoFrames), o);
                 int videoSame = 0;
                 for (int k = 0; k < videoFrames; ++k)
                     videoSame += truth[size_t(k)] == guess[size_t(k)];

@@ -57,7 +57,7 @@ QJsonObject alignOne(const cli::SpeechAligner &aligner, const QString &media, co
     }
     if (info.hasVideo && info.frameRate > 0) {
         frameRate = info.frameRate;
-        for (const std::string &label : voteFrameLabels(result.phones, info.frameRate, info.frameCount, aligned.audioFrames))
+        for (const std::string &label : voteFrameLabels(result.phones, info.frames, aligned.audioFrames))
             frameLabels.append(QString::fromStdString(label));
     }
     writeTextGrid(out.toStdString(), makeTextGrid({result.words, result.phones}, aligned.duration));

@@ -39,7 +39,9 @@ int runExportVideo(const CommandLine &arguments)
     if (arguments.isSet("beside"))
         other = std::make_unique<VideoReader>(arguments.value("beside").toStdString());
 
-    options.setFrameRate(reader.frameRate());
+    const int frames = other ? std::min(reader.frameCount(), other->frameCount()) : reader.frameCount();
+    // The source's frames at their own times (variable frame rates and 29.97 kept).
+    options.setFrames(reader.clock().slice(0, frames));
 
     std::optional<AudioBuffer> audio;
     if (!arguments.isSet("no-audio") && !out.isEmpty()) {
@@ -50,7 +52,6 @@ int runExportVideo(const CommandLine &arguments)
             throw Error(e.reason() + " (use --no-audio to export the picture only)", e.file(), e.field());
         }
     }
-    const int frames = other ? std::min(reader.frameCount(), other->frameCount()) : reader.frameCount();
     auto frameAt = [&](int i) {
         const cv::Mat frame = reader.frame(i);
         if (other)
@@ -70,10 +71,10 @@ int runExportVideo(const CommandLine &arguments)
                                         audio ? &*audio : nullptr, feedback, options);
         result["out"] = out;
         result["frames"] = written;
-        result["duration"] = written / options.frameRate();
+        result["duration"] = options.frames.duration();
         result["audio"] = bool(audio);
         if (audio)
-            result["audioDuration"] = audio->duration();
+            result["audioDuration"] = options.frames.duration(); // fitted to the frames
     } else {
         const std::vector<std::string> paths = exportImageSequence(pngDir.toStdString(), frames, frameAt, feedback);
         result["pngDir"] = pngDir;

@@ -71,6 +71,30 @@ int infoMedia(const QString &path, bool json)
         o[QStringLiteral("audio_channels")] = info.audioChannels;
         o[QStringLiteral("audio_duration")] = info.audioDuration;
         o[QStringLiteral("audio_codec")] = QString::fromStdString(info.audioCodec);
+        // The media timeline (seconds from the file's start, as a player presents it).
+        if (info.hasVideo) {
+            o[QStringLiteral("fps_fraction")] = QStringLiteral("%1/%2").arg(info.frameRateNum).arg(info.frameRateDen);
+            o[QStringLiteral("variable_frame_rate")] = info.variableFrameRate;
+            o[QStringLiteral("video_start")] = info.videoStartTime();
+            o[QStringLiteral("video_end")] = info.videoEndTime();
+        }
+        if (info.hasAudio) {
+            o[QStringLiteral("audio_start")] = info.audioStartTime;
+            o[QStringLiteral("audio_end")] = info.audioEndTime;
+            o[QStringLiteral("audio_gaps")] = info.audioGaps;
+            o[QStringLiteral("audio_gap_seconds")] = info.audioGapSeconds;
+            o[QStringLiteral("audio_overlaps")] = info.audioOverlaps;
+            o[QStringLiteral("audio_overlap_seconds")] = info.audioOverlapSeconds;
+            o[QStringLiteral("audio_discontinuities")] = info.audioDiscontinuities;
+            QJsonArray gaps;
+            for (const lipsync::AudioGap &g : info.audioGapList)
+                gaps.append(QJsonObject{{QStringLiteral("at"), g.at}, {QStringLiteral("length"), g.length}});
+            o[QStringLiteral("audio_gap_list")] = gaps;
+        }
+        if (info.hasAudio && info.hasVideo) {
+            o[QStringLiteral("audio_video_start_difference")] = info.audioStartTime - info.videoStartTime();
+            o[QStringLiteral("audio_video_end_difference")] = info.audioVideoEndDifference();
+        }
         printJson(o);
         return 0;
     }
@@ -80,11 +104,17 @@ int infoMedia(const QString &path, bool json)
                       QStringLiteral("media (%1)").arg(QString::fromStdString(info.format)));
     if (info.hasVideo) {
         rows << qMakePair(QStringLiteral("frames"), QString::number(info.frameCount));
-        rows << qMakePair(QStringLiteral("fps"), rate(info.frameRate));
+        rows << qMakePair(QStringLiteral("fps"),
+                          rate(info.frameRate)
+                              + (info.frameRateDen > 1 ? QStringLiteral(" (%1/%2)").arg(info.frameRateNum).arg(info.frameRateDen)
+                                                       : QString())
+                              + (info.variableFrameRate ? QStringLiteral(", variable") : QString()));
         rows << qMakePair(QStringLiteral("duration"), number(duration, 3) + QStringLiteral(" s"));
         rows << qMakePair(QStringLiteral("size"),
                           QStringLiteral("%1 x %2").arg(info.width).arg(info.height));
         rows << qMakePair(QStringLiteral("video codec"), QString::fromStdString(info.videoCodec));
+        rows << qMakePair(QStringLiteral("video from"), QStringLiteral("%1 to %2 s").arg(number(info.videoStartTime(), 3),
+                                                                                     number(info.videoEndTime(), 3)));
     } else {
         rows << qMakePair(QStringLiteral("video"), QStringLiteral("none"));
     }
@@ -95,6 +125,27 @@ int infoMedia(const QString &path, bool json)
         rows << qMakePair(QStringLiteral("audio duration"),
                           number(info.audioDuration, 3) + QStringLiteral(" s"));
         rows << qMakePair(QStringLiteral("audio codec"), QString::fromStdString(info.audioCodec));
+        rows << qMakePair(QStringLiteral("audio from"), QStringLiteral("%1 to %2 s").arg(number(info.audioStartTime, 3),
+                                                                                     number(info.audioEndTime, 3)));
+        if (info.audioGaps > 0)
+            rows << qMakePair(QStringLiteral("audio gaps"), QStringLiteral("%1, %2 s of silence filled")
+                                                                .arg(info.audioGaps)
+                                                                .arg(number(info.audioGapSeconds, 3)));
+        if (info.audioOverlaps > 0)
+            rows << qMakePair(QStringLiteral("audio overlaps"), QStringLiteral("%1, %2 s dropped")
+                                                                    .arg(info.audioOverlaps)
+                                                                    .arg(number(info.audioOverlapSeconds, 3)));
+        if (info.audioDiscontinuities > 0)
+            rows << qMakePair(QStringLiteral("audio jumps"),
+                              QStringLiteral("%1 timestamp jumps past the end, not filled").arg(info.audioDiscontinuities));
+        if (info.hasVideo) {
+            const double start = info.audioStartTime - info.videoStartTime();
+            const double end = info.audioVideoEndDifference();
+            rows << qMakePair(QStringLiteral("audio vs video"),
+                              QStringLiteral("starts %1 s %2, ends %3 s %4")
+                                  .arg(number(std::abs(start), 3), start >= 0 ? QStringLiteral("later") : QStringLiteral("earlier"),
+                                       number(std::abs(end), 3), end >= 0 ? QStringLiteral("later") : QStringLiteral("earlier")));
+        }
     } else {
         rows << qMakePair(QStringLiteral("audio"), QStringLiteral("none"));
     }

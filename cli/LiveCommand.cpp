@@ -213,8 +213,10 @@ int runLive(const CommandLine &a)
 
     std::unique_ptr<FrameRecorder> recorder;
     if (a.isSet("out")) {
+        // The frames Live draws (one per 1 / rate for as long as the sound lasts), the sound
+        // fitted to them.
         VideoExportOptions v;
-        v.setFrameRate(session.frameRate());
+        v.setFrames(FrameClock::uniform(session.frameRate(), int(std::lround(sound.duration() * session.frameRate()))));
         recorder = std::make_unique<FrameRecorder>(std::make_unique<VideoExporter>(a.value("out").toStdString(), v, &sound));
     }
     std::vector<double> latencies;
@@ -227,9 +229,10 @@ int runLive(const CommandLine &a)
             cv::Mat image = f.image;
             double composing = 0.0;
             if (camera) {
-                // The camera's frame of this moment (its last one once it has ended).
+                // The camera's frame on screen at this frame's time (its last one once it has ended).
                 const Clock::time_point t0 = Clock::now();
-                cv::Mat frame = camera->frame(std::min(f.index, camera->frameCount() - 1)).clone();
+                const double shown = FrameClock::uniform(session.frameRate(), f.index + 1).time(f.index);
+                cv::Mat frame = camera->frame(camera->clock().frameAt(shown)).clone();
                 if (cameraCompositor->compose(frame, f.features, composite)) {
                     ++cameraFaces;
                     image = frame;
@@ -296,7 +299,7 @@ int runLive(const CommandLine &a)
         const Tier reference = referencePhones(alignerPath, input, a.value("transcript"), a.value("pronunciations"));
         o[QStringLiteral("phone_error_rate")] = phoneErrorRate(spokenPhones(reference), recognised);
         const std::vector<std::string> truth =
-            voteFrameLabels(reference, session.frameRate(), frames, session.audioFrames());
+            voteFrameLabels(reference, FrameClock::uniform(session.frameRate(), frames), session.audioFrames());
         int same = 0;
         for (int i = 0; i < frames; ++i)
             same += PhoneSet::index(truth[size_t(i)]) == session.frameLabels()[size_t(i)];

@@ -73,7 +73,7 @@ int runRender(const CommandLine &args)
             {"frames", report.framesWritten},
             {"generatedFrames", g.frameCount()},
             {"dimension", int(g.features.cols())},
-            {"audioDuration", g.audio.duration()},
+            {"audioDuration", g.frames.duration()}, // the sound as written: fitted to the frames
             {"video", g.hasVideo},
             {"sideBySide", options.sideBySide},
             {"region", options.composite.region == FaceRegion::Full ? "full" : "lower"},

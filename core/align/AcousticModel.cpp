@@ -91,17 +91,33 @@ void AcousticModel::prepare()
 Eigen::MatrixXf AcousticModel::features(const std::vector<float> &samples) const
 {
     Eigen::MatrixXf f = m_mfcc->compute(samples);
+    // Digital silence (every filter bank at the log floor, so every static coefficient exactly 0)
+    // is no recording at all: the stretch before a stream starts late or a timestamp gap the
+    // decoder filled (AudioTimeline). It says nothing about the speaker or the channel, so the
+    // per-utterance statistics are taken over the other frames.
+    const int s = m_mfcc->staticDimension();
+    std::vector<Eigen::Index> recorded;
+    for (Eigen::Index t = 0; t < f.rows(); ++t)
+        if (!(f.row(t).leftCols(s).array() == 0.0f).all())
+            recorded.push_back(t);
+    auto columnMean = [&](const Eigen::MatrixXf &m) -> Eigen::RowVectorXf {
+        if (recorded.empty() || recorded.size() == size_t(m.rows()))
+            return m.colwise().mean();
+        Eigen::RowVectorXf sum = Eigen::RowVectorXf::Zero(m.cols());
+        for (Eigen::Index t : recorded)
+            sum += m.row(t);
+        return sum / float(recorded.size());
+    };
     if (m_normalization != CepstralNormalization::None && f.rows() > 0) {
-        const int s = m_mfcc->staticDimension();
-        const Eigen::RowVectorXf mean = f.leftCols(s).colwise().mean();
+        const Eigen::RowVectorXf mean = columnMean(f.leftCols(s));
         f.leftCols(s).rowwise() -= mean;
     }
     if (m_normalization == CepstralNormalization::MeanAndVariance && f.rows() > 1) {
         // Deltas and accelerations have (near) zero mean already; scale every column to unit
         // variance about its mean, with a floor so a constant column stays finite.
-        const Eigen::RowVectorXf mean = f.colwise().mean();
+        const Eigen::RowVectorXf mean = columnMean(f);
         const Eigen::RowVectorXf sd =
-            ((f.rowwise() - mean).array().square().colwise().sum() / float(f.rows())).sqrt().max(1e-3f);
+            columnMean((f.rowwise() - mean).array().square().matrix()).array().sqrt().max(1e-3f);
         f.array().rowwise() /= sd.array();
     }
     return f;

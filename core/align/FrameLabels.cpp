@@ -21,22 +21,21 @@ std::string labelAt(const Tier &phones, double t)
 }
 } // namespace
 
-std::vector<std::string> voteFrameLabels(const Tier &phones, double frameRate, int frameCount,
-                                         const MfccOptions &o)
+std::vector<std::string> voteFrameLabels(const Tier &phones, const FrameClock &frames, const MfccOptions &o)
 {
-    return voteFrameLabels(phones, frameRate, 0, frameCount, o);
+    return voteFrameLabels(phones, frames, 0, frames.count(), o);
 }
 
-std::vector<std::string> voteFrameLabels(const Tier &phones, double frameRate, int firstFrame, int frameCount,
-                                         const MfccOptions &o)
+std::vector<std::string> voteFrameLabels(const Tier &phones, const FrameClock &frames, int firstFrame,
+                                         int frameCount, const MfccOptions &o)
 {
-    if (!(frameRate > 0))
+    if (!(frames.rate() > 0))
         throw Error("frame voting needs a positive video frame rate");
     std::vector<std::string> labels(size_t(std::max(frameCount, 0)));
     const double end = phones.endTime();
     for (int n = 0; n < frameCount; ++n) {
         const int i = firstFrame + n;
-        const double from = i / frameRate, to = (i + 1) / frameRate, centre = (i + 0.5) / frameRate;
+        const double from = frames.time(i), to = frames.endTime(i), centre = 0.5 * (from + to);
         // Audio frames j with c_j in [from, to).
         int j = std::max(0, int(std::ceil((from - o.windowSeconds / 2) / o.shiftSeconds - 1e-9)));
         struct Vote

@@ -87,7 +87,8 @@ std::vector<LabelledSequence> loadProjectSequences(const Project &project, std::
         ls.name = s.id;
         ls.features = s.features;
         ls.frameRate = s.frameRate;
-        ls.labels = frameLabelsFromTier(s.phones, s.frameRate, int(s.features.rows()),
+        // The frames at their own times (the project records the media's timestamps).
+        ls.labels = frameLabelsFromTier(s.phones, s.clock().slice(0, int(s.features.rows())),
                                         project.manifestPath() + ": " + s.id);
         sequences.push_back(std::move(ls));
         if (projectIndex)

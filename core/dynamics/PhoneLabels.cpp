@@ -56,6 +56,15 @@ std::vector<int> frameLabelsFromTier(const Tier &phones, double fps, int frameCo
 {
     if (!(fps > 0))
         throw Error("frame rate must be positive", path);
+    if (frameCount <= 0)
+        frameCount = std::max(1, int(std::ceil(phones.endTime() * fps - 1e-9)));
+    return frameLabelsFromTier(phones, FrameClock::uniform(fps, frameCount), path);
+}
+
+std::vector<int> frameLabelsFromTier(const Tier &phones, const FrameClock &frames, const std::string &path)
+{
+    if (!(frames.rate() > 0))
+        throw Error("frame rate must be positive", path);
     for (const Interval &interval : phones.intervals)
         if (PhoneSet::index(interval.label) < 0) {
             std::ostringstream where;
@@ -63,10 +72,8 @@ std::vector<int> frameLabelsFromTier(const Tier &phones, double fps, int frameCo
                   << " s is not in the 41-phone set (ARPAbet, sil, br)";
             throw Error(where.str(), path, phones.name);
         }
-    if (frameCount <= 0)
-        frameCount = std::max(1, int(std::ceil(phones.endTime() * fps - 1e-9)));
     // The one voting rule (align/FrameLabels, docs/models.md §0).
-    const std::vector<std::string> names = voteFrameLabels(phones, fps, frameCount);
+    const std::vector<std::string> names = voteFrameLabels(phones, frames);
     std::vector<int> labels(names.size());
     for (size_t i = 0; i < names.size(); ++i)
         labels[i] = PhoneSet::index(names[i]);

@@ -139,15 +139,18 @@ double closedLevel(const std::vector<double> &recordedOpening, double tolerance)
     return p10 + tolerance * (p90 - p10);
 }
 
-std::vector<FrameRange> bilabialSegments(const Tier &phones, double fps, int frames, int margin)
+std::vector<FrameRange> bilabialSegments(const Tier &phones, const FrameClock &clock, int margin)
 {
     std::vector<FrameRange> out;
+    const int frames = clock.count();
     for (const Interval &i : phones.intervals) {
-        if (!PhoneSet::isBilabial(i.label))
+        if (!PhoneSet::isBilabial(i.label) || frames == 0 || !(i.end > i.start))
             continue;
-        // Frame t shows the interval [t/fps, (t+1)/fps).
-        const int first = std::max(0, int(std::floor(i.start * fps + 1e-9)) - margin);
-        const int last = std::min(frames - 1, int(std::ceil(i.end * fps - 1e-9)) - 1 + margin);
+        if (i.end <= clock.startTime() + 1e-9 || i.start >= clock.endTime() - 1e-9)
+            continue;
+        // Frame t shows the interval [time(t), endTime(t)).
+        const int first = std::max(0, clock.frameAt(i.start) - margin);
+        const int last = std::min(frames - 1, clock.frameAt(i.end - 1e-9) + margin);
         if (last >= first)
             out.push_back({first, last});
     }
@@ -167,15 +170,16 @@ int closedSegments(const std::vector<double> &opening, const std::vector<FrameRa
     return closed;
 }
 
-std::vector<double> audioEnergyPerFrame(const AudioBuffer &audio, double fps, int frames)
+std::vector<double> audioEnergyPerFrame(const AudioBuffer &audio, const FrameClock &clock)
 {
-    std::vector<double> out(size_t(std::max(0, frames)), kNoMeasure);
-    if (audio.sampleRate <= 0 || !(fps > 0))
+    const int frames = clock.count();
+    std::vector<double> out(size_t(frames), kNoMeasure);
+    if (audio.sampleRate <= 0 || !(clock.rate() > 0))
         return out;
     const double n = double(audio.samples.size());
     for (int t = 0; t < frames; ++t) {
-        const double from = std::clamp((t / fps - audio.startTime) * audio.sampleRate, 0.0, n);
-        const double to = std::clamp(((t + 1) / fps - audio.startTime) * audio.sampleRate, 0.0, n);
+        const double from = std::clamp((clock.time(t) - audio.startTime) * audio.sampleRate, 0.0, n);
+        const double to = std::clamp((clock.endTime(t) - audio.startTime) * audio.sampleRate, 0.0, n);
         const size_t a = size_t(from), b = size_t(to);
         if (b <= a)
             continue;

@@ -17,6 +17,7 @@
 //    with the audio energy at frame t (positive: the lips follow the sound).
 //  - gradientEnergy: mean squared Laplacian response of the grey image in a box (sharpness).
 //  - seamDeltaE: mean CIE Lab ΔE (1976) across the edge of a synthesised region.
+#include "annotation/FrameClock.h"
 #include "annotation/Tier.h"
 
 #include <Eigen/Core>
@@ -45,15 +46,15 @@ struct FrameRange
     int first = 0;
     int last = 0; // inclusive
 };
-// The /p b m/ (ARPAbet P, B, M) intervals of `phones` as the frames they overlap at `fps`,
-// widened by `margin` frames either way, clipped to [0, frames).
-std::vector<FrameRange> bilabialSegments(const Tier &phones, double fps, int frames, int margin = 1);
+// The /p b m/ (ARPAbet P, B, M) intervals of `phones` as the frames of `frames` they overlap,
+// widened by `margin` frames either way, clipped to [0, frames.count()).
+std::vector<FrameRange> bilabialSegments(const Tier &phones, const FrameClock &frames, int margin = 1);
 // How many segments have a frame whose opening is at most `level` (frames without a face skipped).
 int closedSegments(const std::vector<double> &opening, const std::vector<FrameRange> &segments,
                    double level);
 
-// Log energy (dB) of the audio in each video frame's interval [t/fps, (t+1)/fps).
-std::vector<double> audioEnergyPerFrame(const AudioBuffer &audio, double fps, int frames);
+// Log energy (dB) of the audio in each video frame's interval [time(t), endTime(t)).
+std::vector<double> audioEnergyPerFrame(const AudioBuffer &audio, const FrameClock &frames);
 // NaN when no lag has a defined correlation.
 double avLag(const std::vector<double> &opening, const std::vector<double> &energy, int maxLag = 5);
 

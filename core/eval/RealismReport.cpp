@@ -43,7 +43,7 @@ const std::string kLive = "live ";
 
 // The phone of each of `frames` video frames as live recognition hears the sequence's sound.
 std::vector<int> liveLabels(const AcousticModel &acoustic, const PhoneBigram &bigram, const std::string &mediaPath,
-                            double frameRate, int frames)
+                            const FrameClock &frames)
 {
     const AudioBuffer sound = AudioDecoder::decode(mediaPath, acoustic.featureOptions().sampleRate);
     StreamingPhoneRecognizer recognizer(acoustic, bigram);
@@ -54,7 +54,7 @@ std::vector<int> liveLabels(const AcousticModel &acoustic, const PhoneBigram &bi
     Tier phones{"phones", {}};
     StreamingPhoneRecognizer::appendToTier(phones, 0, recognizer.takeDecided(), acoustic.featureOptions());
     std::vector<int> labels;
-    for (const std::string &label : voteFrameLabels(phones, frameRate, frames, acoustic.featureOptions()))
+    for (const std::string &label : voteFrameLabels(phones, frames, acoustic.featureOptions()))
         labels.push_back(PhoneSet::index(label));
     return labels;
 }
@@ -144,13 +144,13 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
 
     std::vector<double> energy(size_t(frames), kNoFigure);
     try {
-        energy = audioEnergyPerFrame(AudioDecoder::decode(mediaPath), sequence.frameRate, frames);
+        energy = audioEnergyPerFrame(AudioDecoder::decode(mediaPath), sequence.clock().slice(0, frames));
     } catch (const Error &) {
         // No sound: the lag is undefined, everything else stands.
     }
     out.lagRecorded = avLag(recordedOpening, energy, options.maxLag);
     out.closedLevel = closedLevel(recordedOpening);
-    const std::vector<FrameRange> bilabials = bilabialSegments(sequence.phones, sequence.frameRate, frames);
+    const std::vector<FrameRange> bilabials = bilabialSegments(sequence.phones, sequence.clock().slice(0, frames));
     out.bilabials = int(bilabials.size());
     out.closedRecorded = closedSegments(recordedOpening, bilabials, out.closedLevel);
     out.recordedOpening = recordedOpening;
@@ -269,7 +269,7 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
             const Sequence &sequence = project.sequences[size_t(projectIndex[size_t(item.sequence)])];
             std::vector<Rendering> renderings{{kTracked, s.features}};
             const std::vector<double> closing
-                = BilabialClosure::weights(sequence.phones, sequence.frameRate, s.frameCount());
+                = BilabialClosure::weights(sequence.phones, sequence.clock().slice(0, s.frameCount()));
             auto closed = [&](Eigen::MatrixXd trajectory, const std::vector<double> &weights) {
                 return closure ? closure->apply(trajectory, weights) : trajectory;
             };
@@ -278,7 +278,7 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
                     {cv.kinds[k], closed(models[size_t(item.fold)][k]->generate(s.labels), closing)});
             if (live) {
                 const std::vector<int> heard = liveLabels(liveAcoustic, liveBigram, project.mediaPath(sequence),
-                                                          sequence.frameRate, s.frameCount());
+                                                          sequence.clock().slice(0, s.frameCount()));
                 for (size_t k = 0; k < cv.kinds.size(); ++k)
                     renderings.push_back({kLive + cv.kinds[k],
                                           closed(models[size_t(item.fold)][k]->generateStreamed(heard, true),

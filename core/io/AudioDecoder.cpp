@@ -8,7 +8,10 @@ extern "C" {
 #include <libavutil/opt.h>
 }
 
+#include "io/AudioTimeline.h"
+
 #include <algorithm>
+#include <cmath>
 
 namespace lipsync {
 
@@ -24,20 +27,32 @@ public:
     MonoResampler(const MonoResampler &) = delete;
     MonoResampler &operator=(const MonoResampler &) = delete;
 
-    void push(const AVFrame *frame, std::vector<float> &out)
+    // Converts the frame's samples from `skip` on.
+    void push(const AVFrame *frame, long long skip, std::vector<float> &out)
     {
         if (!m_swr || frame->format != m_inFormat || frame->sample_rate != m_inRate
             || av_channel_layout_compare(&frame->ch_layout, &m_inLayout) != 0) {
             flush(out);
             setup(frame);
         }
-        convert(const_cast<const uint8_t **>(frame->extended_data), frame->nb_samples, out);
+        skip = std::clamp<long long>(skip, 0, frame->nb_samples);
+        const AVSampleFormat format = AVSampleFormat(frame->format);
+        const int bytes = av_get_bytes_per_sample(format);
+        const bool planar = av_sample_fmt_is_planar(format);
+        const int channels = std::max(1, frame->ch_layout.nb_channels);
+        std::vector<const uint8_t *> planes(size_t(planar ? channels : 1));
+        for (size_t c = 0; c < planes.size(); ++c)
+            planes[c] = frame->extended_data[c] + skip * bytes * (planar ? 1 : channels);
+        convert(planes.data(), int(frame->nb_samples - skip), out);
     }
 
+    // Drains what the resampler holds; the next push starts afresh (after a gap: the sound
+    // before and after it are resampled as two pieces).
     void flush(std::vector<float> &out)
     {
         if (m_swr)
             convert(nullptr, 0, out);
+        m_swr.reset();
     }
 
     int outRate() const { return m_outRate; }
@@ -126,19 +141,32 @@ AudioBuffer AudioDecoder::decode(const std::string &path, int sampleRate)
     libav::CodecPtr decoder = libav::openDecoder(path, fc, stream);
 
     AudioBuffer buffer;
-    buffer.startTime = scan->audioStartTime;
-    if (scan->audioSampleRate > 0 && scan->audioSamples > 0) {
-        const int outRate = sampleRate > 0 ? sampleRate : scan->audioSampleRate;
-        buffer.samples.reserve(size_t(double(scan->audioSamples) * outRate / scan->audioSampleRate)
-                               + 64);
-    }
+    const int outRate = sampleRate > 0 ? sampleRate : scan->audioSampleRate;
+    if (outRate > 0)
+        buffer.samples.reserve(size_t(scan->audioEndTime * outRate) + 64);
     MonoResampler resampler(path, sampleRate);
+    // Sample k sounds at k / rate on the timeline: frames are placed by their timestamps, the
+    // sound before the stream starts and in its gaps is silence (AudioTimeline).
+    AudioTimeline timeline(scan->containerDuration);
+    const AVRational timeBase = fc->streams[stream]->time_base;
+    const double fileStart = fc->start_time != AV_NOPTS_VALUE ? double(fc->start_time) / AV_TIME_BASE : 0.0;
     libav::PacketPtr packet(av_packet_alloc());
     libav::FramePtr frame(av_frame_alloc());
     auto receive = [&] {
         // Stops at EAGAIN/EOF, and at a decoding error: that packet is skipped.
         while (avcodec_receive_frame(decoder.get(), frame.get()) >= 0) {
-            resampler.push(frame.get(), buffer.samples);
+            const double pts = frame->best_effort_timestamp != AV_NOPTS_VALUE
+                                   ? double(frame->best_effort_timestamp) * av_q2d(timeBase) - fileStart
+                                   : NAN;
+            const AudioTimeline::Placement p = timeline.place(pts, frame->nb_samples, frame->sample_rate);
+            if (p.silenceBefore) {
+                resampler.flush(buffer.samples);
+                const int rate = resampler.outRate() > 0 ? resampler.outRate() : frame->sample_rate;
+                const size_t at = size_t(std::max(0LL, std::llround(p.start * rate)));
+                buffer.samples.resize(at, 0.0f); // silence up to the frame (or the flush's tail cut)
+            }
+            if (p.skip < frame->nb_samples)
+                resampler.push(frame.get(), p.skip, buffer.samples);
             av_frame_unref(frame.get());
         }
     };

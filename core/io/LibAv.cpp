@@ -6,6 +6,7 @@ extern "C" {
 #include <libavutil/log.h>
 }
 
+#include <cmath>
 #include <cstdarg>
 #include <cstdlib>
 #include <cstring>
@@ -221,6 +222,10 @@ std::shared_ptr<MediaScan> scanUncached(const std::string &path)
         scan->height = st->codecpar->height;
         const AVRational rate = av_guess_frame_rate(fc, st, nullptr);
         scan->frameRate = rate.num > 0 && rate.den > 0 ? av_q2d(rate) : 0.0;
+        if (scan->frameRate > 0) {
+            scan->frameRateNum = rate.num;
+            scan->frameRateDen = rate.den;
+        }
         if (st->start_time != AV_NOPTS_VALUE)
             scan->videoStreamStart = seconds(st->start_time, st->time_base) - fileStart;
     }
@@ -242,7 +247,7 @@ std::shared_ptr<MediaScan> scanUncached(const std::string &path)
     PacketPtr packet(av_packet_alloc());
     FramePtr frame(av_frame_alloc());
     bool lastVideoDamaged = false;
-    bool firstAudio = true;
+    scan->audioTimeline = AudioTimeline(scan->containerDuration);
     bool lastPacketCorrupt = false;
     int videoPackets = 0;
     bool lastAudioPacketShort = false;
@@ -271,11 +276,11 @@ std::shared_ptr<MediaScan> scanUncached(const std::string &path)
     };
     auto receiveAudio = [&] {
         while (avcodec_receive_frame(audio.get(), frame.get()) >= 0) {
-            if (firstAudio && frame->best_effort_timestamp != AV_NOPTS_VALUE) {
-                const AVStream *st = fc->streams[scan->audioStream];
-                scan->audioStartTime = seconds(frame->best_effort_timestamp, st->time_base) - fileStart;
-            }
-            firstAudio = false;
+            const AVStream *st = fc->streams[scan->audioStream];
+            const double pts = frame->best_effort_timestamp != AV_NOPTS_VALUE
+                                   ? seconds(frame->best_effort_timestamp, st->time_base) - fileStart
+                                   : NAN;
+            scan->audioTimeline.place(pts, frame->nb_samples, frame->sample_rate);
             scan->audioSamples += frame->nb_samples;
             if (frame->sample_rate > 0)
                 scan->audioSampleRate = frame->sample_rate;
@@ -320,6 +325,8 @@ std::shared_ptr<MediaScan> scanUncached(const std::string &path)
 
     if (video && scan->frameTimes.empty())
         throw Error("no decodable video frame (corrupt or truncated file)", path);
+    scan->audioStartTime = scan->audioTimeline.firstTime();
+    scan->audioEndTime = scan->audioTimeline.endTime();
 
     // Truncation: the file ends inside a packet. MPEG program streams carry no length, so the
     // signs are the decoder concealing damage in the very last picture, a last MPEG audio
@@ -345,7 +352,10 @@ std::shared_ptr<MediaScan> scanUncached(const std::string &path)
             return declared > 0 && decoded < declared - std::max(0.1, 0.02 * declared);
         };
         if (video && scan->frameRate > 0) {
-            const double decoded = double(scan->frameTimes.size()) / scan->frameRate;
+            // The frames' span by their timestamps (a variable frame rate has fewer frames than
+            // duration x rate), one nominal period for the last.
+            const double decoded = scan->frameTimes.back() - scan->frameTimes.front()
+                                   + 1.0 / scan->frameRate;
             const double declared = declaredDuration(fc, fc->streams[scan->videoStream]);
             if (shortOf(decoded, declared)) {
                 scan->truncated = true;

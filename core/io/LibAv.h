@@ -8,6 +8,8 @@ extern "C" {
 #include <libswresample/swresample.h>
 }
 
+#include "io/AudioTimeline.h"
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -64,6 +66,7 @@ struct MediaScan
     int width = 0;
     int height = 0;
     double frameRate = 0.0;              // the stream's frame rate (avg/r_frame_rate)
+    int frameRateNum = 0, frameRateDen = 0; // the same as a fraction (30000/1001)
     std::vector<double> frameTimes;      // decoded frames' presentation times, seconds from the file start
     int damagedFrames = 0;               // frames the decoder had to conceal
     double videoStreamStart = 0.0;       // the video stream's start_time, seconds from the file start
@@ -74,6 +77,8 @@ struct MediaScan
     int audioChannels = 0;
     long long audioSamples = 0;          // decoded samples per channel
     double audioStartTime = 0.0;         // first audio sample, seconds from the file start
+    double audioEndTime = 0.0;           // end of the last sample on the timeline (gaps included)
+    AudioTimeline audioTimeline;         // the decoded frames placed by their timestamps
 
     bool truncated = false;
     std::string truncatedReason;

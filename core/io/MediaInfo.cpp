@@ -14,13 +14,14 @@ MediaInfo MediaInfo::probe(const std::string &path)
     if (info.hasVideo) {
         info.videoCodec = scan->videoCodec;
         info.frameCount = int(scan->frameTimes.size());
-        info.frameRate = scan->frameRate;
-        if (info.frameRate <= 0 && info.frameCount > 1)
-            info.frameRate = (info.frameCount - 1)
-                             / (scan->frameTimes.back() - scan->frameTimes.front());
+        info.frames = FrameClock::fromTimes(scan->frameTimes, scan->frameRate);
+        info.frameRate = info.frames.rate();
+        info.frameRateNum = scan->frameRateNum;
+        info.frameRateDen = scan->frameRateDen;
+        info.variableFrameRate = info.frames.isVariable();
         info.width = scan->width;
         info.height = scan->height;
-        info.videoDuration = info.frameRate > 0 ? info.frameCount / info.frameRate : 0.0;
+        info.videoDuration = info.frames.duration();
         info.damagedFrames = scan->damagedFrames;
     }
     info.hasAudio = scan->audioStream >= 0;
@@ -32,6 +33,14 @@ MediaInfo MediaInfo::probe(const std::string &path)
                                  ? double(scan->audioSamples) / scan->audioSampleRate
                                  : 0.0;
         info.audioStartTime = scan->audioStartTime;
+        info.audioEndTime = scan->audioEndTime;
+        const AudioTimeline &t = scan->audioTimeline;
+        info.audioGaps = t.gapCount();
+        info.audioGapSeconds = t.gapSeconds();
+        info.audioOverlaps = t.overlapCount();
+        info.audioOverlapSeconds = t.overlapSeconds();
+        info.audioDiscontinuities = t.discontinuities();
+        info.audioGapList = t.gaps();
     }
     return info;
 }

@@ -25,8 +25,8 @@ VideoReader::VideoReader(const std::string &path) : m_path(path)
     m_height = scan->height;
     m_frameRate = scan->frameRate;
     m_videoStart = scan->videoStreamStart;
-    if (m_frameRate <= 0 && m_frameCount > 1)
-        m_frameRate = (m_frameCount - 1) / (m_frameTimes.back() - m_frameTimes.front());
+    m_clock = FrameClock::fromTimes(m_frameTimes, m_frameRate);
+    m_frameRate = m_clock.rate();
     m_capture = std::make_unique<cv::VideoCapture>();
     reopen();
     if (m_width <= 0 || m_height <= 0) {
@@ -104,10 +104,7 @@ double VideoReader::timestamp(int index) const
 {
     if (index >= 0 && index < m_frameCount)
         return m_frameTimes[size_t(index)];
-    const double step = m_frameRate > 0 ? 1.0 / m_frameRate : 0.0;
-    if (index < 0 || m_frameTimes.empty())
-        return (m_frameTimes.empty() ? 0.0 : m_frameTimes.front()) + index * step;
-    return m_frameTimes.back() + (index - (m_frameCount - 1)) * step;
+    return m_clock.time(index);
 }
 
 } // namespace lipsync

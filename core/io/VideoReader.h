@@ -8,6 +8,8 @@
 // returned as the decoder produces them (often flat grey), not skipped.
 // Truncated files (cut inside a packet) are rejected by the constructor, as by MediaInfo::probe
 // and AudioDecoder::decode. One reader is not thread-safe; use one per thread.
+#include "annotation/FrameClock.h"
+
 #include <opencv2/core.hpp>
 
 #include <memory>
@@ -40,6 +42,8 @@ public:
     double timestamp(int index) const;
     // All frames' presentation times (frameCount() entries).
     const std::vector<double> &timestamps() const { return m_frameTimes; }
+    // The same as a clock (frame <-> time both ways).
+    const FrameClock &clock() const { return m_clock; }
 
 private:
     void reopen();
@@ -54,6 +58,7 @@ private:
     int m_height = 0;
     int m_nextIndex = 0; // index of the frame the next read() returns
     std::vector<double> m_frameTimes;
+    FrameClock m_clock;
     double m_videoStart = 0.0; // video stream start, seconds from the file start (OpenCV's zero)
 };
 

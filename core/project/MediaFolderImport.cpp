@@ -66,11 +66,10 @@ Project Project::fromMediaFolder(const std::string &mediaFolder, const std::stri
         }
         s.mediaFile = QDir(projectDir).relativeFilePath(fileInfo.absoluteFilePath()).toStdString();
         if (info.hasVideo) {
-            s.frameRate = info.frameRate;
-            s.frameCount = info.frameCount;
+            s.setClock(info.frames);
         } else {
             s.frameRate = kAudioOnlyFrameRate;
-            s.frameCount = int(std::lround(info.audioDuration * kAudioOnlyFrameRate));
+            s.frameCount = int(std::lround(info.audioEndTime * kAudioOnlyFrameRate));
         }
         if (!(s.frameRate > 0) || !std::isfinite(s.frameRate))
             throw Error("no usable frame rate", path);

@@ -194,9 +194,32 @@ private:
         return value.toBool();
     }
 
+    // A variable frame rate's presentation times: frameCount increasing seconds >= 0.
+    std::vector<double> readFrameTimes(const QJsonValue &value, const std::string &field, int frameCount) const
+    {
+        if (!value.isArray())
+            fail(field, "must be an array of seconds, found " + describe(value));
+        const QJsonArray array = value.toArray();
+        if (array.size() != frameCount)
+            fail(field, "has " + std::to_string(array.size()) + " times, expected frameCount "
+                            + std::to_string(frameCount));
+        std::vector<double> times;
+        times.reserve(size_t(array.size()));
+        for (qsizetype i = 0; i < array.size(); ++i) {
+            const QJsonValue t = array.at(i);
+            if (!t.isDouble() || !std::isfinite(t.toDouble()) || t.toDouble() < 0
+                || (!times.empty() && t.toDouble() <= times.back()))
+                fail(field + "[" + std::to_string(i) + "]",
+                     "must be a time in seconds after the one before, found " + describe(t));
+            times.push_back(t.toDouble());
+        }
+        return times;
+    }
+
     Sequence readSequence(const QJsonObject &o, const std::string &field) const
     {
-        checkKeys(o, field, {"id", "mediaFile", "frameRate", "frameCount", "transcript", "transcriptProposed",
+        checkKeys(o, field, {"id", "mediaFile", "frameRate", "frameCount", "firstFrameTime", "frameTimes",
+                             "transcript", "transcriptProposed",
                              "features", "tiers", "landmarks", "fitErrors"});
         Sequence s;
         s.id = string(require(o, "id", field), member(field, "id"), false);
@@ -212,6 +235,14 @@ private:
             fail(member(field, "frameRate"), "must be a positive number, found " + describe(rate));
         s.frameRate = rate.toDouble();
         s.frameCount = integer(require(o, "frameCount", field), member(field, "frameCount"), 0);
+        if (o.contains("firstFrameTime")) {
+            const QJsonValue first = o.value("firstFrameTime");
+            if (!first.isDouble() || !std::isfinite(first.toDouble()) || first.toDouble() < 0)
+                fail(member(field, "firstFrameTime"), "must be a number of seconds >= 0, found " + describe(first));
+            s.firstFrameTime = first.toDouble();
+        }
+        if (o.contains("frameTimes"))
+            s.frameTimes = readFrameTimes(o.value("frameTimes"), member(field, "frameTimes"), s.frameCount);
         if (o.contains("transcript"))
             s.transcript = string(o.value("transcript"), member(field, "transcript"), true);
         if (o.contains("transcriptProposed"))
@@ -423,6 +454,7 @@ const QStringList &keyOrder()
     static const QStringList order{"format",     "version",   "kind",      "name",
                                    "sequences",  "models",    "pronunciations", "word",
                                    "id",         "mediaFile", "frameRate", "frameCount",
+                                   "firstFrameTime", "frameTimes",
                                    "transcript", "transcriptProposed", "features", "tiers", "words",
                                    "phones",     "landmarks", "fitErrors", "frame",
                                    "points",     "start",     "end",       "label",
@@ -553,6 +585,14 @@ QJsonObject ProjectManifest::toJson(const Project &project, const std::string &t
                                             {"phones", tierToJson(s.phones)}}}};
         if (s.transcriptProposed)
             o.insert("transcriptProposed", true);
+        if (s.firstFrameTime != 0.0)
+            o.insert("firstFrameTime", s.firstFrameTime);
+        if (!s.frameTimes.empty()) {
+            QJsonArray times;
+            for (double t : s.frameTimes)
+                times.append(t);
+            o.insert("frameTimes", times);
+        }
         if (s.features.size() > 0)
             o.insert("features", toQString(featureFileName(s.id)));
         QJsonArray landmarks;

@@ -10,9 +10,25 @@ bool Sequence::operator==(const Sequence &other) const
                               && (features.size() == 0 || features == other.features);
     return sameFeatures && id == other.id && mediaFile == other.mediaFile
            && frameRate == other.frameRate && frameCount == other.frameCount
+           && firstFrameTime == other.firstFrameTime && frameTimes == other.frameTimes
            && transcript == other.transcript
            && transcriptProposed == other.transcriptProposed && landmarks == other.landmarks
            && words == other.words && phones == other.phones && fitErrors == other.fitErrors;
+}
+
+FrameClock Sequence::clock() const
+{
+    if (!frameTimes.empty() && int(frameTimes.size()) == frameCount)
+        return FrameClock::fromTimes(frameTimes, frameRate);
+    return FrameClock::uniform(frameRate, frameCount, firstFrameTime);
+}
+
+void Sequence::setClock(const FrameClock &clock)
+{
+    frameRate = clock.rate();
+    frameCount = clock.count();
+    firstFrameTime = clock.startTime();
+    frameTimes = clock.isVariable() ? clock.times() : std::vector<double>{};
 }
 
 } // namespace lipsync

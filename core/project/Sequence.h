@@ -1,5 +1,6 @@
 #pragma once
 // One recorded utterance of the project: a media file plus everything derived from it.
+#include "annotation/FrameClock.h"
 #include "annotation/LandmarkSet.h"
 #include "annotation/Tier.h"
 
@@ -15,8 +16,13 @@ struct Sequence
 {
     std::string id;          // unique within the project, used for file names ("bbaf2n")
     std::string mediaFile;   // relative to the project folder (or absolute)
-    double frameRate = 25.0; // video frames per second
+    double frameRate = 25.0; // video frames per second (the stream's nominal rate)
     int frameCount = 0;
+    // When each frame is on screen, on the media timeline (seconds from the file's start, the
+    // time base of the tiers): frame 0 at firstFrameTime and then every 1 / frameRate, or, for a
+    // variable frame rate, at frameTimes (frameCount entries; empty when evenly spaced).
+    double firstFrameTime = 0.0;
+    std::vector<double> frameTimes;
     std::string transcript;  // plain words
     // The transcript is a speech recogniser's proposal (`lipsync transcribe`, the timeline's
     // Propose Transcript) that nobody has checked: shown as unverified until it is edited or
@@ -36,7 +42,11 @@ struct Sequence
     std::vector<double> fitErrors;
     static constexpr double kNoFace = -1.0;
 
-    double duration() const { return frameRate > 0 ? frameCount / frameRate : 0.0; }
+    FrameClock clock() const;
+    // Sets frameRate, frameCount, firstFrameTime and frameTimes from `clock`.
+    void setClock(const FrameClock &clock);
+    // How long the frames are on screen (first frame to the end of the last).
+    double duration() const { return clock().duration(); }
     bool operator==(const Sequence &other) const;
 };
 

@@ -81,9 +81,8 @@ std::vector<UtteranceSpan> splitAtPauses(const Tier &words, const Tier &phones, 
         groups.push_back({first, all.size() - 1});
 
     std::vector<UtteranceSpan> out;
-    const double grid = options.frameRate > 0 ? 1.0 / options.frameRate : 0.0;
-    auto snapDown = [&](double t) { return grid > 0 ? std::floor(t / grid + 1e-6) * grid : t; };
-    auto snapUp = [&](double t) { return grid > 0 ? std::ceil(t / grid - 1e-6) * grid : t; };
+    auto snapDown = [&](double t) { return options.frames.boundaryAtOrBefore(t); };
+    auto snapUp = [&](double t) { return options.frames.boundaryAtOrAfter(t); };
     for (size_t g = 0; g < groups.size(); ++g) {
         size_t last = groups[g].second;
         while (last > groups[g].first && isSilence(all[last]))

@@ -3,6 +3,7 @@
 // of a project (docs/pipeline.md, "Long recordings"): each utterance runs from a pause to a pause,
 // at least `shortest` seconds where pauses allow and at most `longest` where words allow, holds a
 // little of the silence either side (`margin`) and none of a long stretch without words.
+#include "annotation/FrameClock.h"
 #include "annotation/Tier.h"
 
 #include <string>
@@ -16,7 +17,7 @@ struct UtteranceSplitOptions
     double shortest = 2.0;     // ...once it has lasted this long
     double longest = 12.0;     // beyond this, the longest silence (or else a word boundary) ends it
     double margin = 0.25;      // silence kept before the first word and after the last
-    double frameRate = 0.0;    // > 0: start and end fall on this frame grid (video frames)
+    FrameClock frames;         // not empty: start and end fall on these frames' boundaries
 };
 
 struct UtteranceSpan

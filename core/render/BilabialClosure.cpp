@@ -62,21 +62,25 @@ double BilabialClosure::opening(const Eigen::VectorXd &c) const
     return m_offset + m_gradient.dot(c);
 }
 
-std::vector<double> BilabialClosure::weights(const Tier &phones, double fps, int frames)
+std::vector<double> BilabialClosure::weights(const Tier &phones, const FrameClock &frames)
 {
-    std::vector<double> w(size_t(std::max(0, frames)), 0.0);
-    if (!(fps > 0))
+    const int count = frames.count();
+    std::vector<double> w(size_t(count), 0.0);
+    if (!(frames.rate() > 0) || count == 0)
         return w;
     for (const Interval &i : phones.intervals) {
         if (!PhoneSet::isBilabial(i.label) || !(i.end > i.start))
             continue;
-        const int first = std::max(0, int(std::floor(i.start * fps)));
-        const int last = std::min(frames - 1, int(std::ceil(i.end * fps)) - 1);
+        if (i.end <= frames.startTime() || i.start >= frames.endTime())
+            continue;
+        const int first = frames.frameAt(i.start);
+        const int last = frames.frameAt(std::nextafter(i.end, -INFINITY));
         int most = -1;
         double mostShare = 0.0;
         for (int t = first; t <= last; ++t) {
-            const double inside = std::min(i.end, (t + 1) / fps) - std::max(i.start, t / fps);
-            const double share = std::clamp(inside * fps, 0.0, 1.0);
+            const double length = frames.endTime(t) - frames.time(t);
+            const double inside = std::min(i.end, frames.endTime(t)) - std::max(i.start, frames.time(t));
+            const double share = length > 0 ? std::clamp(inside / length, 0.0, 1.0) : 0.0;
             w[size_t(t)] = std::max(w[size_t(t)], share);
             if (share > mostShare) {
                 mostShare = share;
@@ -118,10 +122,10 @@ Eigen::MatrixXd BilabialClosure::apply(const Eigen::MatrixXd &trajectory, const 
 }
 
 Eigen::MatrixXd BilabialClosure::closeOnPhones(const AamModel &aam, const Eigen::MatrixXd &trajectory,
-                                               const Tier &phones, double fps)
+                                               const Tier &phones, const FrameClock &frames)
 {
     const std::optional<BilabialClosure> closure = forAam(aam);
-    return closure ? closure->apply(trajectory, weights(phones, fps, int(trajectory.rows()))) : trajectory;
+    return closure ? closure->apply(trajectory, weights(phones, frames)) : trajectory;
 }
 
 } // namespace lipsync

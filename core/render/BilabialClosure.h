@@ -16,6 +16,7 @@
 // w_t is the share of frame t inside a bilabial phone (1 for the frame most inside it), so the
 // lips close and release within the phone's own frames. Frames already closed are unchanged.
 #include "aam/AamModel.h"
+#include "annotation/FrameClock.h"
 #include "annotation/Tier.h"
 
 #include <Eigen/Core>
@@ -38,8 +39,8 @@ public:
     // o(c): the inner-lip opening of the shape of combined parameters c.
     double opening(const Eigen::VectorXd &c) const;
 
-    // w_t for `frames` frames at `fps` from a phone tier (frame t shows [t/fps, (t+1)/fps)).
-    static std::vector<double> weights(const Tier &phones, double fps, int frames);
+    // w_t for the frames of `frames` from a phone tier (frame t shows [time(t), endTime(t))).
+    static std::vector<double> weights(const Tier &phones, const FrameClock &frames);
     // w_t from per-frame phone labels (PhoneSet indices): 1 on bilabial frames.
     static std::vector<double> weights(const std::vector<int> &labels);
 
@@ -47,10 +48,10 @@ public:
     // non-finite rows are unchanged.
     Eigen::MatrixXd apply(const Eigen::MatrixXd &trajectory, const std::vector<double> &weights) const;
 
-    // What a renderer draws for a generated trajectory at `fps` frames per second: closed on the
-    // /p b m/ of `phones` when forAam() has a closure for the AAM, else unchanged.
+    // What a renderer draws for a generated trajectory shown at `frames`: closed on the /p b m/
+    // of `phones` when forAam() has a closure for the AAM, else unchanged.
     static Eigen::MatrixXd closeOnPhones(const AamModel &aam, const Eigen::MatrixXd &trajectory, const Tier &phones,
-                                         double fps);
+                                         const FrameClock &frames);
 
 private:
     Eigen::VectorXd m_gradient; // a

@@ -89,7 +89,9 @@ void LiveSession::labelReadyFrames(bool final, std::vector<LiveFrame> &out)
     const int total = int(std::lround(soundSeconds() * m_frameRate));
     for (;;) {
         const int i = m_labelled;
-        const double end = (i + 1) / m_frameRate;
+        // Live frames are shown every 1 / rate from the first sound.
+        const FrameClock clock = FrameClock::uniform(m_frameRate, i + 1);
+        const double end = clock.endTime(i);
         if (final ? i >= total : mfccFrameCentre(int(m_decided), m_audio) < end - 1e-12)
             return;
         // The decided audio frames this frame's vote reads, as a tier (docs/models.md §0).
@@ -98,7 +100,7 @@ void LiveSession::labelReadyFrames(bool final, std::vector<LiveFrame> &out)
             const double c = mfccFrameCentre(int(m_recentFirst + long(k)), m_audio);
             recent.intervals.push_back(Interval{c - half, c + half, PhoneSet::label(m_recent[k]), false});
         }
-        const int label = PhoneSet::index(voteFrameLabels(recent, m_frameRate, i, 1, m_audio).front());
+        const int label = PhoneSet::index(voteFrameLabels(recent, clock, i, 1, m_audio).front());
         ++m_labelled;
         m_labels.push_back(label < 0 ? int(PhoneSet::kSilence) : label);
         // The next frame's vote starts at its own interval.

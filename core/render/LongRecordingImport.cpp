@@ -27,15 +27,6 @@ constexpr int kClipSampleRate = 16000;
 // Share of the progress bar the alignment takes; writing the clips takes the rest.
 constexpr double kAligningShare = 0.3;
 
-Tier shifted(Tier tier, double offset)
-{
-    for (Interval &i : tier.intervals) {
-        i.start += offset;
-        i.end += offset;
-    }
-    return tier;
-}
-
 std::string numbered(const std::string &stem, size_t index)
 {
     char suffix[16];
@@ -61,22 +52,21 @@ LongRecordingImportResult importLongRecording(const Project &project, const std:
         aligned = aligner.align(mediaPath, words, lexicon, &part, transcriptPath);
     }
 
-    // The clips follow the video's frames; times of the alignment are the audio's.
-    AudioBuffer audio = AudioDecoder::decode(mediaPath, kClipSampleRate);
+    // The alignment, the sound and the frames share the media timeline: the clips are cut at frame
+    // boundaries, and each clip's times start from 0 at its first frame.
+    const AudioBuffer audio = AudioDecoder::decode(mediaPath, kClipSampleRate);
     std::unique_ptr<VideoReader> video;
-    double offset = 0.0;
     UtteranceSplitOptions split = options.split;
     if (info.hasVideo) {
         video = std::make_unique<VideoReader>(mediaPath);
-        offset = audio.startTime - video->timestamp(0);
-        audio = alignAudioToVideo(audio, video->timestamp(0));
-        split.frameRate = video->frameRate();
+        split.frames = video->clock();
     } else {
-        split.frameRate = Project::kAudioOnlyFrameRate;
+        split.frames = FrameClock::uniform(Project::kAudioOnlyFrameRate,
+                                           int(std::ceil(audio.duration() * Project::kAudioOnlyFrameRate - 1e-9)));
     }
-    const double duration = info.hasVideo ? video->frameCount() / video->frameRate() : audio.duration();
-    const std::vector<UtteranceSpan> spans = splitAtPauses(shifted(aligned.alignment.words, offset),
-                                                           shifted(aligned.alignment.phones, offset), duration, split);
+    const FrameClock &clock = split.frames;
+    const std::vector<UtteranceSpan> spans = splitAtPauses(aligned.alignment.words, aligned.alignment.phones,
+                                                           clock.endTime(), split);
 
     const std::string stem = QFileInfo(QString::fromStdString(mediaPath)).completeBaseName().toStdString();
     std::set<std::string> taken;
@@ -104,22 +94,27 @@ LongRecordingImportResult importLongRecording(const Project &project, const std:
             const UtteranceSpan &span = spans[k];
             Sequence s;
             s.id = numbered(stem, k);
-            s.frameRate = split.frameRate;
-            const int firstFrame = int(std::lround(span.start * s.frameRate));
-            const int endFrame = int(std::lround(span.end * s.frameRate));
-            s.frameCount = endFrame - firstFrame;
-            const size_t begin = size_t(std::lround(firstFrame / s.frameRate * kClipSampleRate));
-            const size_t end = std::min(audio.samples.size(), size_t(std::lround(endFrame / s.frameRate * kClipSampleRate)));
+            const int firstFrame = std::min(clock.frameAtBoundary(span.start), clock.count() - 1);
+            const int endFrame = std::max(firstFrame + 1, clock.frameAtBoundary(span.end));
+            // The clip's own file starts at its first frame.
+            const FrameClock clipClock = clock.slice(firstFrame, endFrame - firstFrame).shifted(-clock.time(firstFrame));
+            s.setClock(clipClock);
+            const double from = clock.time(firstFrame);
+            const size_t begin = std::min(audio.samples.size(), size_t(std::llround(from * kClipSampleRate)));
+            const size_t end = std::min(audio.samples.size(),
+                                        begin + size_t(std::llround(clipClock.endTime() * kClipSampleRate)));
             const QString file = QDir(clipDir).filePath(QString::fromStdString(s.id) + (video ? ".mp4" : ".wav"));
             if (video) {
                 AudioBuffer clipAudio;
                 clipAudio.sampleRate = kClipSampleRate;
-                clipAudio.samples.assign(audio.samples.begin() + long(std::min(begin, end)), audio.samples.begin() + long(end));
+                clipAudio.samples.assign(audio.samples.begin() + long(begin), audio.samples.begin() + long(end));
+                if (clipAudio.samples.empty())
+                    clipAudio.samples.assign(1, 0.0f); // a clip past the end of the sound: silence
                 VideoExportOptions v;
-                v.setFrameRate(s.frameRate);
+                v.setFrames(clipClock);
                 v.crf = options.crf;
-                VideoExporter exporter(file.toStdString(), v, clipAudio.samples.empty() ? nullptr : &clipAudio);
-                for (int f = firstFrame; f < endFrame && f < video->frameCount(); ++f)
+                VideoExporter exporter(file.toStdString(), v, &clipAudio);
+                for (int f = firstFrame; f < endFrame; ++f)
                     exporter.addFrame(video->frame(f));
                 exporter.finish();
             } else {

@@ -83,26 +83,32 @@ void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, doub
                        : modelRate > 0                            ? modelRate
                                                                   : Project::kAudioOnlyFrameRate;
     const bool ownFrames = result.hasVideo && std::abs(result.frameRate - in.info.frameRate) < 1e-6;
-    const int frames = ownFrames ? in.info.frameCount
-                                 : std::max(1, int(std::lround(audioDuration * result.frameRate)));
-    // The §0 vote at `rate` for `count` frames, a label outside the phone set taken as silence.
-    auto labelsAt = [&](double rate, int count) {
+    // The clip's own frames at their timestamps, or frames at the asked rate from 0 that cover
+    // the sound.
+    result.frames = ownFrames ? in.info.frames
+                              : FrameClock::uniform(result.frameRate,
+                                                    std::max(1, int(std::ceil(audioDuration * result.frameRate - 1e-6))));
+    const int frames = result.frames.count();
+    // The §0 vote on `clock`, a label outside the phone set taken as silence.
+    auto labelsOn = [&](const FrameClock &clock) {
         std::vector<int> labels;
-        for (const std::string &label : voteFrameLabels(result.phones, rate, count, audioFrames)) {
+        for (const std::string &label : voteFrameLabels(result.phones, clock, audioFrames)) {
             const int index = PhoneSet::index(label);
             labels.push_back(index >= 0 ? index : int(PhoneSet::kSilence));
         }
         return labels;
     };
-    result.labels = labelsAt(result.frameRate, frames);
-    if (modelRate > 0 && std::abs(modelRate - result.frameRate) > 1e-6 * modelRate) {
-        // The model's dynamics are per frame of its own rate: generate at that rate, then sample
-        // the trajectory at the output's frame times (linear interpolation).
-        const int modelFrames = std::max(1, int(std::lround(frames * modelRate / result.frameRate)));
-        const Eigen::MatrixXd generated = in.model->generate(labelsAt(modelRate, modelFrames));
+    result.labels = labelsOn(result.frames);
+    if (modelRate > 0 && (result.frames.isVariable() || std::abs(modelRate - result.frameRate) > 1e-6 * modelRate)) {
+        // The model's dynamics are per frame of its own rate: generate on an even grid at that
+        // rate over the same stretch, then sample the trajectory at the output frames' times
+        // (linear interpolation).
+        const double from = result.frames.startTime();
+        const int modelFrames = std::max(1, int(std::ceil(result.frames.duration() * modelRate - 1e-6)));
+        const Eigen::MatrixXd generated = in.model->generate(labelsOn(FrameClock::uniform(modelRate, modelFrames, from)));
         result.features.resize(frames, generated.cols());
         for (int t = 0; t < frames; ++t) {
-            const double at = std::clamp(t * modelRate / result.frameRate, 0.0, double(modelFrames - 1));
+            const double at = std::clamp((result.frames.time(t) - from) * modelRate, 0.0, double(modelFrames - 1));
             const int a = int(at);
             const int b = std::min(a + 1, modelFrames - 1);
             result.features.row(t) = (1.0 - (at - a)) * generated.row(a) + (at - a) * generated.row(b);
@@ -111,13 +117,10 @@ void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, doub
         result.features = in.model->generate(result.labels);
     }
     if (request.closeBilabials)
-        result.features = BilabialClosure::closeOnPhones(*in.aam, result.features, result.phones, result.frameRate);
+        result.features = BilabialClosure::closeOnPhones(*in.aam, result.features, result.phones, result.frames);
     feedback.throwIfCanceled();
-    // The sound at its own rate, its first sample with the first video frame.
-    const AudioBuffer audio = AudioDecoder::decode(request.mediaPath, 0);
-    result.audio = result.hasVideo
-                       ? alignAudioToVideo(audio, VideoReader(request.mediaPath).timestamp(0))
-                       : alignAudioToVideo(audio, audio.startTime);
+    // The sound at its own rate, its first sample with the first frame.
+    result.audio = alignAudioToVideo(AudioDecoder::decode(request.mediaPath, 0), result.frames.startTime());
     feedback.setProgress(1.0);
 }
 
@@ -161,7 +164,7 @@ SpeechToFaceResult generateFromPhones(const SpeechToFaceRequest &request, const 
     SpeechToFaceResult result;
     result.phones = phones;
     result.words = words;
-    labelAndGenerate(request, in, in.info.audioDuration, MfccOptions{}, result, feedback);
+    labelAndGenerate(request, in, in.info.audioEndTime, MfccOptions{}, result, feedback);
     result.seconds = secondsSince(start);
     return result;
 }
@@ -208,7 +211,7 @@ int exportRenderedVideo(const SpeechToFaceResult &result, FaceRenderer &renderer
 {
     checkRenderable(result, renderer, options, path);
     VideoExportOptions video = options.video;
-    video.setFrameRate(result.frameRate);
+    video.setFrames(result.frames);
     return exportVideo(
         path, result.frameCount(), [&](int i) { return renderFrame(result, renderer, i, options); },
         result.audio.samples.empty() ? nullptr : &result.audio, feedback, video);

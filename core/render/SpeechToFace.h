@@ -62,9 +62,13 @@ struct SpeechToFaceResult
     Tier words{"words", {}};      // forced alignment
     Tier phones{"phones", {}};
     double frameRate = 25.0;
+    // When each generated frame is shown, on the media's timeline (the video's own frames when
+    // rendering into them, else every 1 / frameRate from 0 for as long as the sound lasts).
+    FrameClock frames;
     std::vector<int> labels;      // PhoneSet index of every frame
     Eigen::MatrixXd features;     // generated parameters, frames x d (lips closed on /p b m/ if asked)
     AudioBuffer audio;            // the recording's sound (own rate), first sample with frame 0
+                                  // (startTime = frames.startTime())
     bool hasVideo = false;        // the media has a video stream (render into its frames)
     double seconds = 0.0;         // wall time of generateFromSpeech
 

@@ -22,6 +22,7 @@ extern "C" {
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <map>
 
 namespace lipsync {
 
@@ -116,6 +117,9 @@ struct VideoExporter::Impl
     int width = 0;  // of the frames given
     int height = 0;
     int targetFrames = -1;
+    // Frame times as pts in the video time base (variable frame rate: 1/90000 s).
+    bool variable = false;
+    std::map<int64_t, int64_t> pendingDurations; // pts -> duration of frames sent to the encoder
     int64_t framesEncoded = 0;
     int framesAdded = 0;
     bool headerWritten = false;
@@ -211,7 +215,7 @@ struct VideoExporter::Impl
         videoCodec->width = width + (width & 1);
         videoCodec->height = height + (height & 1);
         videoCodec->pix_fmt = AV_PIX_FMT_YUV420P;
-        videoCodec->time_base = AVRational{frameRate.den, frameRate.num};
+        videoCodec->time_base = variable ? AVRational{1, kVariableTimeBase} : AVRational{frameRate.den, frameRate.num};
         videoCodec->framerate = frameRate;
         videoCodec->sample_aspect_ratio = AVRational{1, 1};
         // A key frame every two seconds keeps scrubbing in players responsive.
@@ -280,8 +284,15 @@ struct VideoExporter::Impl
                 return;
             if (rc < 0)
                 fail("cannot encode", rc);
-            if (codec == videoCodec && packet->duration == 0)
-                packet->duration = 1; // one frame; the muxer needs it for the last sample's length
+            if (codec == videoCodec) {
+                // The frame's own length (the muxer needs it for the last sample's length).
+                if (auto it = pendingDurations.find(packet->pts); it != pendingDurations.end()) {
+                    packet->duration = it->second;
+                    pendingDurations.erase(it);
+                } else if (packet->duration == 0) {
+                    packet->duration = 1;
+                }
+            }
             av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
             packet->stream_index = stream->index;
             rc = av_interleaved_write_frame(format, packet);
@@ -322,14 +333,27 @@ struct VideoExporter::Impl
         }
     }
 
+    // Presentation time of frame i relative to the first, in the video time base.
+    int64_t framePts(int64_t i) const
+    {
+        if (!variable)
+            return i;
+        const FrameClock &clock = options.frames;
+        return std::llround((clock.time(int(i)) - clock.startTime()) * kVariableTimeBase);
+    }
+
     void encodeVideoFrame()
     {
-        videoFrame->pts = framesEncoded++;
+        const int64_t i = framesEncoded++;
+        videoFrame->pts = framePts(i);
+        pendingDurations[videoFrame->pts] = framePts(i + 1) - videoFrame->pts;
         encode(videoCodec, videoStream, videoFrame);
         // Interleave: sound up to the end of this frame.
         if (hasAudio)
-            sendAudioUntil(av_rescale_q(framesEncoded, videoCodec->time_base, AVRational{1, audioRate}));
+            sendAudioUntil(av_rescale_q(framePts(framesEncoded), videoCodec->time_base, AVRational{1, audioRate}));
     }
+
+    static constexpr int kVariableTimeBase = 90000;
 
     void removeTemporary()
     {
@@ -375,14 +399,21 @@ VideoExporter::VideoExporter(const std::string &path, const VideoExportOptions &
     if (options.frameRateNumerator <= 0 || options.frameRateDenominator <= 0)
         throw Error("cannot write video: the frame rate must be positive", path);
     d->frameRate = AVRational{options.frameRateNumerator, options.frameRateDenominator};
+    if (!options.frames.empty()) {
+        d->targetFrames = options.frames.count();
+        d->variable = options.frames.isVariable();
+    }
     if (audio) {
         if (audio->sampleRate <= 0 || audio->samples.empty())
             throw Error("cannot write video: the audio track is empty", path);
         d->hasAudio = true;
         d->audio = audio->samples;
         d->audioRate = audio->sampleRate;
-        if (options.fitVideoToAudio)
-            d->targetFrames = std::max(1, int(std::lround(audio->duration() * options.frameRate())));
+        // The sound lasts exactly as long as the frames: cut, or continued with silence.
+        if (!options.frames.empty())
+            d->audio.resize(size_t(std::llround(options.frames.duration() * audio->sampleRate)), 0.0f);
+        if (d->audio.empty())
+            throw Error("cannot write video: the frames last no time", path);
     }
     d->openTemporaryFile();
     try {
@@ -511,6 +542,13 @@ void VideoExporter::finish()
     }
 }
 
+void VideoExportOptions::setFrames(const FrameClock &clock)
+{
+    frames = clock;
+    if (clock.rate() > 0)
+        setFrameRate(clock.rate());
+}
+
 void VideoExportOptions::setFrameRate(double fps)
 {
     if (std::abs(fps - std::round(fps)) < 1e-3) {
@@ -547,20 +585,23 @@ int exportVideo(const std::string &path, int frameCount,
     if (frameCount <= 0)
         throw Error("cannot write video: no frames to export", path);
     feedback.setStatus("Exporting " + path);
-    VideoExporter exporter(path, options, audio);
-    const int target = exporter.targetFrameCount();
-    // Frames past the end of the sound would be dropped: do not render them.
-    const int count = target >= 0 ? std::min(frameCount, target) : frameCount;
-    const int total = std::max(count, target);
-    for (int i = 0; i < count; ++i) {
+    VideoExportOptions exact = options;
+    if (exact.frames.empty())
+        exact.frames = FrameClock::uniform(options.frameRate(), frameCount);
+    else if (exact.frames.count() != frameCount)
+        throw Error("cannot write video: " + std::to_string(frameCount) + " frames for a clock of "
+                        + std::to_string(exact.frames.count()),
+                    path);
+    VideoExporter exporter(path, exact, audio);
+    for (int i = 0; i < frameCount; ++i) {
         feedback.throwIfCanceled();
         exporter.addFrame(frameAt(i));
-        feedback.setProgress(0.95 * (i + 1) / total);
+        feedback.setProgress(0.95 * (i + 1) / frameCount);
     }
     feedback.throwIfCanceled();
     exporter.finish();
     feedback.setProgress(1.0);
-    return total;
+    return frameCount;
 }
 
 } // namespace lipsync

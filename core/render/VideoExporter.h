@@ -2,14 +2,19 @@
 // MP4 export with sound: H.264 video (libx264, yuv420p) and the original audio as AAC (FFmpeg's
 // native encoder), muxed by libavformat. OpenCV's VideoWriter cannot write audio, hence FFmpeg.
 //
-// Timestamps: video pts count frames in the time base 1/fps; audio pts count samples in the time
-// base 1/sampleRate. Both streams start at t = 0 (the muxer's edit list hides the AAC encoder
-// delay and the B-frame reorder delay), so sound and picture are aligned to the sample.
+// Timestamps: each frame is written at its presentation time on the export's FrameClock (evenly
+// spaced frames in the time base 1/fps, 30000/1001 exact; a variable frame rate keeps every
+// frame's own time, in units of 1/90000 s); audio pts count samples in the time base 1/sampleRate.
+// Both streams start at t = 0 (the muxer's edit list hides the AAC encoder delay and the B-frame
+// reorder delay), so sound and picture are aligned to the sample. The file holds exactly the
+// clock's frames and lasts exactly as long as they are on screen: the sound is cut at the last
+// frame's end, or continued with silence up to it.
 //
 // Atomic: everything is written to a temporary file in the target directory (".<name>.XXXXXX.part")
 // that is renamed over the target only when the file is complete. On error, cancel or
 // destruction before finish() the temporary file is removed: a half-written file never appears
 // under the final name, and an existing file there is left untouched.
+#include "annotation/FrameClock.h"
 #include "io/AudioDecoder.h"
 
 #include <opencv2/core.hpp>
@@ -34,14 +39,17 @@ struct VideoExportOptions
     int threads = 0;
     // Bits per second of the AAC stream.
     int audioBitRate = 128000;
-    // With audio, write exactly round(audio duration x fps) frames: surplus frames are dropped and
-    // a short video holds its last frame, so the file lasts as long as its sound (within half a
-    // frame). Without audio the frames are written as given.
-    bool fitVideoToAudio = true;
+    // When each frame is shown (its times relative to the first frame's are written). Empty:
+    // frames every 1 / frameRate() from 0, as many as are added. With a clock, exactly
+    // frames.count() frames are written (more are ignored, fewer hold the last one) and the sound
+    // is fitted to its duration.
+    FrameClock frames;
 
     double frameRate() const { return double(frameRateNumerator) / frameRateDenominator; }
     // From frames per second: 25 -> 25/1, 29.97 -> 30000/1001, else in thousandths.
     void setFrameRate(double fps);
+    // The clock and its rate (setFrameRate(clock.rate())).
+    void setFrames(const FrameClock &clock);
 };
 
 // Streaming writer: construct (opens the temporary file), addFrame() for every frame, finish().
@@ -53,6 +61,7 @@ class VideoExporter
 public:
     // `audio` (mono float PCM, copied) may be null for a silent video. Its first sample plays
     // with the first frame (AudioBuffer::startTime is not applied; see alignAudioToVideo()).
+    // Without options.frames, the whole sound is written.
     // Throws lipsync::Error naming `path` if the target directory does not exist or is not
     // writable, or if the audio is empty.
     explicit VideoExporter(const std::string &path, const VideoExportOptions &options = {},
@@ -62,7 +71,7 @@ public:
     VideoExporter(const VideoExporter &) = delete;
     VideoExporter &operator=(const VideoExporter &) = delete;
 
-    // Encodes one frame. Frames beyond targetFrameCount() are ignored (see fitVideoToAudio).
+    // Encodes one frame. Frames beyond targetFrameCount() are ignored.
     void addFrame(const cv::Mat &frame);
     // Writes the rest of the audio, flushes the encoders, writes the index and renames the
     // temporary file to the final path. Throws lipsync::Error if no frame was added.
@@ -71,7 +80,7 @@ public:
     void abandon();
 
     const std::string &path() const;
-    // Frames the file will hold: round(audio duration x fps) when fitted to the audio, else -1.
+    // Frames the file will hold: options.frames.count(), or -1 without a clock.
     int targetFrameCount() const;
     int framesAdded() const;
 
@@ -88,9 +97,9 @@ AudioBuffer alignAudioToVideo(const AudioBuffer &audio, double firstFrameTime);
 
 // One-call export of `frameCount` frames produced by `frameAt(i)` (rendered on demand so a long
 // clip never sits in memory), with progress and cancel through `feedback`. On cancel throws
-// lipsync::Canceled and leaves no file at `path`. With audio and fitVideoToAudio the frame count
-// written is round(audio duration x fps) whatever `frameCount` says (the last frame is held).
-// Returns the number of frames in the file.
+// lipsync::Canceled and leaves no file at `path`. The file holds exactly `frameCount` frames, at
+// options.frames' times (which must have `frameCount` frames) or every 1 / fps, and the sound
+// is fitted to them. Returns the number of frames in the file.
 int exportVideo(const std::string &path, int frameCount,
                  const std::function<cv::Mat(int)> &frameAt, const AudioBuffer *audio,
                  Feedback &feedback, const VideoExportOptions &options = {});

@@ -126,7 +126,7 @@ MainWindow::MainWindow(QWidget *parent)
         if (m_timeline->isShowingGeneratedSpeech())
             m_preview->seekSpeech(t);
         else if (media())
-            setCurrentFrame(int(t * media()->frameRate));
+            setCurrentFrame(std::max(0, media()->clock.frameAt(t)));
     });
     connect(m_playback, &PlaybackController::frameReached, this, [this](int frame) {
         if (media() && m_playback->mediaPath() == media()->mediaPath) // not the preview's new speech
@@ -431,7 +431,7 @@ void MainWindow::clearSequence()
     waveformView()->setDuration(0);
     m_chart->clearSeries();
     m_details->clear();
-    m_transport->setFrameCount(0, 25.0);
+    m_transport->setClock({});
 }
 
 void MainWindow::onDocumentReset()
@@ -521,8 +521,8 @@ void MainWindow::applyMedia(int row, std::shared_ptr<const SequenceMedia> media)
     m_context->setCurrentSequence(row, std::move(media));
     const std::shared_ptr<const SequenceMedia> shown = this->media();
     const int frames = shown->frameCount();
-    m_transport->setFrameCount(frames, shown->frameRate);
-    m_playback->setSequence(shown->mediaPath, frames, shown->frameRate);
+    m_transport->setClock(shown->clock);
+    m_playback->setSequence(shown->mediaPath, shown->clock);
 
     showChart(); // the timeline shows the media on sequenceLoaded
     m_frameView->setPlaceholderText(shown->audioOnly ? tr("Sound only: no video to show")
@@ -548,7 +548,7 @@ void MainWindow::showChart()
         return;
     QVector<double> t(shown->frameRms.size());
     for (int i = 0; i < t.size(); ++i)
-        t[i] = (i + 0.5) / shown->frameRate;
+        t[i] = shown->clock.centre(i);
     m_chart->addSeries(tr("RMS"), t, shown->frameRms, QColor(0x1e, 0x88, 0xe5));
 }
 
@@ -567,11 +567,10 @@ void MainWindow::showFrame(int frame)
     const Sequence &s = m_document->sequence(currentSequence());
     const auto it = s.landmarks.find(frame);
     m_frameView->setLandmarks(it != s.landmarks.end() ? std::optional<LandmarkSet>(it->second) : std::nullopt);
-    const double t = frame / shown->frameRate;
     m_preview->setFrame(image, tr("%1 — frame %2 of %3").arg(shown->sequenceId).arg(frame + 1).arg(shown->frameCount()));
     m_transport->setFrame(frame);
-    waveformView()->setCursorTime(t + 0.5 / shown->frameRate);
-    m_chart->setCursor(t + 0.5 / shown->frameRate);
+    waveformView()->setCursorTime(shown->clock.centre(frame));
+    m_chart->setCursor(shown->clock.centre(frame));
 }
 
 int MainWindow::currentSequence() const

@@ -27,12 +27,14 @@ QImage toImage(const cv::Mat &bgr, double scale)
     return QImage(rgb.data, rgb.cols, rgb.rows, int(rgb.step), QImage::Format_RGB888).copy();
 }
 
-QVector<double> rmsPerFrame(const std::vector<float> &samples, int sampleRate, double frameRate, int frames)
+// Sample k of the decoded sound plays at k / sampleRate on the media timeline (AudioDecoder).
+QVector<double> rmsPerFrame(const std::vector<float> &samples, int sampleRate, const FrameClock &clock)
 {
+    const int frames = clock.count();
     QVector<double> rms(frames, 0.0);
     for (int f = 0; f < frames; ++f) {
-        const auto first = std::size_t(std::llround(f / frameRate * sampleRate));
-        const auto last = std::min(samples.size(), std::size_t(std::llround((f + 1) / frameRate * sampleRate)));
+        const auto first = std::min(samples.size(), std::size_t(std::max(0LL, std::llround(clock.time(f) * sampleRate))));
+        const auto last = std::min(samples.size(), std::size_t(std::max(0LL, std::llround(clock.endTime(f) * sampleRate))));
         double sum = 0.0;
         for (std::size_t i = first; i < last; ++i)
             sum += double(samples[i]) * samples[i];
@@ -67,6 +69,7 @@ void decodeVideo(SequenceMedia &media, Feedback &feedback)
         const double seconds = double(media.peaks->samples().size()) / media.peaks->sampleRate();
         const int count = std::max(1, int(std::lround(seconds * media.frameRate)));
         media.frames = QVector<QImage>(count);
+        media.clock = FrameClock::uniform(media.frameRate, count);
         media.audioOnly = true;
         feedback.setProgress(1.0);
         return;
@@ -75,6 +78,7 @@ void decodeVideo(SequenceMedia &media, Feedback &feedback)
     VideoReader reader(path);
     if (reader.frameRate() > 0)
         media.frameRate = reader.frameRate();
+    media.clock = reader.clock();
     const int count = reader.frameCount();
     const double bytes = double(count) * reader.width() * reader.height() * 4.0;
     const double scale = bytes > double(SequenceLoader::kFrameBudgetBytes)
@@ -112,8 +116,7 @@ Task *SequenceLoader::start(TaskRunner &runner, const SequenceSource &source, Ap
             decodeVideo(*media, videoPart);
         }
         if (media->peaks)
-            media->frameRms = rmsPerFrame(media->peaks->samples(), media->peaks->sampleRate(),
-                                          media->frameRate, media->frameCount());
+            media->frameRms = rmsPerFrame(media->peaks->samples(), media->peaks->sampleRate(), media->clock);
         return [apply, media] { apply(media); };
     });
 }

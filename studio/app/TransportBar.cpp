@@ -40,18 +40,18 @@ TransportBar::TransportBar(const StudioActions &actions, QWidget *parent)
     // Frames are numbered from 1 wherever the studio shows them (the annotator's and the
     // preview's captions too); the slider and the signals use indices from 0.
     connect(m_spin, &QSpinBox::valueChanged, this, [this](int shown) { emit frameRequested(shown - 1); });
-    setFrameCount(0, 25.0);
+    setClock({});
 }
 
-void TransportBar::setFrameCount(int count, double frameRate)
+void TransportBar::setClock(const FrameClock &clock)
 {
     const QSignalBlocker b1(m_slider);
     const QSignalBlocker b2(m_spin);
-    m_count = count;
-    m_frameRate = frameRate > 0 ? frameRate : 25.0;
+    m_clock = clock;
+    const int count = clock.count();
     m_slider->setRange(0, std::max(0, count - 1));
     m_spin->setRange(1, std::max(1, count));
-    m_slider->setPageStep(std::max(1, int(m_frameRate)));
+    m_slider->setPageStep(std::max(1, int(clock.rate()))); // about a second
     setEnabled(count > 0);
     updateTime();
 }
@@ -73,8 +73,8 @@ int TransportBar::frame() const
 void TransportBar::updateTime()
 {
     m_time->setText(tr("%1 s / %2 s")
-                        .arg(QLocale().toString(frame() / m_frameRate, 'f', 2),
-                             QLocale().toString(m_count / m_frameRate, 'f', 2)));
+                        .arg(QLocale().toString(m_clock.empty() ? 0.0 : m_clock.time(frame()), 'f', 2),
+                             QLocale().toString(m_clock.endTime(), 'f', 2)));
 }
 
 } // namespace lipsync::studio

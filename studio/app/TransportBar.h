@@ -1,6 +1,8 @@
 #pragma once
 // Frame navigation under the frame view: step/play buttons (the window's actions), a slider,
 // a frame spin box and the current time.
+#include "annotation/FrameClock.h"
+
 #include <QWidget>
 
 class QLabel;
@@ -17,7 +19,8 @@ class TransportBar : public QWidget
 public:
     TransportBar(const StudioActions &actions, QWidget *parent = nullptr);
 
-    void setFrameCount(int count, double frameRate);
+    // The frames to step through and when each is shown (its time is displayed).
+    void setClock(const FrameClock &clock);
     void setFrame(int frame);
     int frame() const;
     QSlider *slider() const { return m_slider; }
@@ -32,8 +35,7 @@ private:
     QSlider *m_slider;
     QSpinBox *m_spin;
     QLabel *m_time;
-    double m_frameRate = 25.0;
-    int m_count = 0;
+    FrameClock m_clock;
 };
 
 } // namespace lipsync::studio

@@ -271,7 +271,7 @@ std::vector<LabelledSequence> ModelsPanel::trainingData(QString *problem) const
         try {
             LabelledSequence l;
             l.name = s.id;
-            l.labels = frameLabelsFromTier(s.phones, s.frameRate, s.frameCount, s.id);
+            l.labels = frameLabelsFromTier(s.phones, s.clock(), s.id);
             l.features = s.features;
             out.push_back(std::move(l));
         } catch (const Error &e) {
@@ -534,7 +534,7 @@ void ModelsPanel::refreshTrajectory()
     if (s.features.size() == 0) {
         m_parameter->setRange(0, 0);
         m_trajectory->setData(tr("%1: no features yet (track the faces first)").arg(QString::fromStdString(s.id)),
-                              s.frameRate, s.phones, {});
+                              s.clock(), s.phones, {});
         return;
     }
     {
@@ -550,7 +550,7 @@ void ModelsPanel::refreshTrajectory()
     if (!s.phones.isEmpty()) {
         std::vector<int> labels;
         try {
-            labels = frameLabelsFromTier(s.phones, s.frameRate, s.frameCount, s.id);
+            labels = frameLabelsFromTier(s.phones, s.clock(), s.id);
         } catch (const Error &) {
         }
         // Each trained model the document uses, in the panel's order.
@@ -568,7 +568,7 @@ void ModelsPanel::refreshTrajectory()
             }
         }
     }
-    m_trajectory->setData(tr("%1 — AAM parameter %2").arg(QString::fromStdString(s.id)).arg(k), s.frameRate,
+    m_trajectory->setData(tr("%1 — AAM parameter %2").arg(QString::fromStdString(s.id)).arg(k), s.clock(),
                           s.phones, series);
     m_trajectory->setCurrentFrame(m_context->currentFrame());
 }

@@ -111,9 +111,9 @@ StudyClip StudyClipRenderer::render(const std::string &utterance, const std::str
                         m_project.manifestPath(), "study");
         const std::shared_ptr<const DynamicModel> dynamics = model(method);
         // Labels on the video's own frame grid, so frame t of the trajectory is frame t of the clip.
-        generated = dynamics->generate(frameLabelsFromTier(sequence->phones, clip.frameRate, frames));
+        generated = dynamics->generate(frameLabelsFromTier(sequence->phones, reader.clock()));
         if (m_closeLips)
-            generated = BilabialClosure::closeOnPhones(*aam(), generated, sequence->phones, clip.frameRate);
+            generated = BilabialClosure::closeOnPhones(*aam(), generated, sequence->phones, reader.clock());
         Feedback tracking(feedback, 0.0, 0.7);
         renderer = faces(*sequence, tracking);
     }

@@ -30,33 +30,31 @@ PlaybackController::~PlaybackController()
     stopAudio();
 }
 
-void PlaybackController::setSequence(const QString &mediaPath, int frameCount, double frameRate, double duration)
+void PlaybackController::setSequence(const QString &mediaPath, const FrameClock &frames, double duration)
 {
     pause();
     m_mediaPath = mediaPath;
-    m_frameCount = std::max(0, frameCount);
-    m_frameRate = frameRate > 0 ? frameRate : 25.0;
-    m_duration = duration >= 0 ? duration : m_frameCount / m_frameRate;
+    m_frames = frames;
+    m_duration = duration >= 0 ? duration : frames.endTime();
     m_position = 0.0;
     m_frame = -1;
 }
 
 int PlaybackController::frameAt(double seconds) const
 {
-    if (m_frameCount <= 0)
-        return 0;
-    // As a click on the timeline picks it (MainWindow).
-    return std::clamp(int(seconds * m_frameRate), 0, m_frameCount - 1);
+    // The frame on screen at that moment, as a click on the timeline picks it (MainWindow).
+    return std::max(0, m_frames.frameAt(seconds));
 }
 
 void PlaybackController::play(int fromFrame)
 {
-    if (m_frameCount <= 0 && m_duration <= 0)
+    const int frameCount = m_frames.count();
+    if (frameCount <= 0 && m_duration <= 0)
         return;
-    if (m_frameCount > 0 && fromFrame >= m_frameCount - 1)
+    if (frameCount > 0 && fromFrame >= frameCount - 1)
         fromFrame = 0; // at the end: from the start
     fromFrame = std::max(0, fromFrame);
-    startRange(fromFrame / m_frameRate, m_duration, fromFrame);
+    startRange(frameCount > 0 ? m_frames.time(fromFrame) : 0.0, m_duration, fromFrame);
 }
 
 void PlaybackController::playRange(double from, double to)
@@ -72,7 +70,7 @@ void PlaybackController::startRange(double from, double to, int fromFrame)
     m_playing = false;
     from = std::clamp(from, 0.0, std::max(0.0, m_duration));
     to = std::clamp(to, from, std::max(0.0, m_duration));
-    if (to - from < 0.005 || (m_mediaPath.isEmpty() && m_frameCount <= 0)) {
+    if (to - from < 0.005 || (m_mediaPath.isEmpty() && m_frames.count() <= 0)) {
         if (wasPlaying)
             emit playingChanged(false);
         return;

@@ -8,6 +8,8 @@
 // (processed minus what still waits in its buffer), so the frame shown is the frame of the sound
 // heard and the two cannot drift. Without sound (batch mode: tests, screenshots; no output
 // device; a file without audio) the position follows a monotonic wall clock from the start.
+#include "annotation/FrameClock.h"
+
 #include <QElapsedTimer>
 #include <QObject>
 #include <QString>
@@ -31,13 +33,14 @@ public:
     explicit PlaybackController(QObject *parent = nullptr);
     ~PlaybackController() override;
 
-    // What to play: the media (its audio is decoded on the first play with sound), its frame grid
-    // and its length (frameCount / frameRate, or `duration` seconds when given, e.g. audio only).
-    // Stops playback.
-    void setSequence(const QString &mediaPath, int frameCount, double frameRate, double duration = -1.0);
+    // What to play: the media (its audio is decoded on the first play with sound), when each of
+    // its frames is shown (the media timeline, as the stream's timestamps say) and its length
+    // (to the last frame's end, or `duration` seconds when given, e.g. audio only). Stops playback.
+    void setSequence(const QString &mediaPath, const FrameClock &frames, double duration = -1.0);
     const QString &mediaPath() const { return m_mediaPath; }
-    int frameCount() const { return m_frameCount; }
-    double frameRate() const { return m_frameRate; }
+    int frameCount() const { return m_frames.count(); }
+    double frameRate() const { return m_frames.rate(); }
+    const FrameClock &frames() const { return m_frames; }
     double duration() const { return m_duration; }
 
     bool isPlaying() const { return m_playing; }
@@ -91,8 +94,7 @@ private:
     bool m_audioFailed = false;                 // decoding failed: play silent
 
     QString m_mediaPath;
-    int m_frameCount = 0;
-    double m_frameRate = 25.0;
+    FrameClock m_frames;
     double m_duration = 0.0;
     double m_from = 0.0;
     double m_to = 0.0;

@@ -2,6 +2,7 @@
 // Everything the views show of one sequence's media, decoded off the GUI thread by
 // SequenceLoader and handed to the main window in one piece (so a canceled or failed load
 // leaves the views exactly as they were).
+#include "annotation/FrameClock.h"
 #include "audio/Spectrogram.h"
 #include "audio/WaveformPeaks.h"
 
@@ -18,6 +19,9 @@ struct SequenceMedia
     QString sequenceId;
     QString mediaPath;
     double frameRate = 25.0;
+    // When each frame is shown on the media timeline (the video's timestamps; audio only: every
+    // 1 / frameRate from 0). Every frame <-> time conversion of the views goes through it.
+    FrameClock clock;
     // Every video frame (downscaled only if the sequence is huge). A recording without video
     // (audioOnly) has null images at the sequence's frame rate over its sound.
     QVector<QImage> frames;

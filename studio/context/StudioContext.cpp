@@ -62,7 +62,7 @@ void StudioContext::togglePlayback()
         m_playback->pause();
     } else if (m_media) {
         if (m_playback->mediaPath() != m_media->mediaPath)
-            m_playback->setSequence(m_media->mediaPath, m_media->frameCount(), m_media->frameRate);
+            m_playback->setSequence(m_media->mediaPath, m_media->clock);
         m_playback->play(m_frame);
     }
 }

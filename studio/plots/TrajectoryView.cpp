@@ -59,7 +59,7 @@ struct TrajectoryView::Impl
     vtkNew<vtkCallbackCommand> syncAxes;
 
     QString title;
-    double frameRate = 25.0;
+    FrameClock frames; // when each value's frame is shown: value i is drawn at its centre
     std::vector<Interval> phones;
     QVector<Series> series;
     int currentFrame = -1;
@@ -99,11 +99,11 @@ TrajectoryView::TrajectoryView(QWidget *parent) : VtkWidget(parent), t(std::make
 
 TrajectoryView::~TrajectoryView() = default;
 
-void TrajectoryView::setData(const QString &title, double frameRate, const Tier &phones,
+void TrajectoryView::setData(const QString &title, const FrameClock &frames, const Tier &phones,
                              const QVector<Series> &series)
 {
     t->title = title;
-    t->frameRate = frameRate > 0 ? frameRate : 25.0;
+    t->frames = frames.rate() > 0 ? frames : FrameClock::uniform(25.0, frames.count());
     t->phones = phones.intervals;
     t->series = series;
     rebuild();
@@ -156,7 +156,7 @@ void TrajectoryView::rebuild()
             t->yMax = first ? v : std::max(t->yMax, v);
             first = false;
         }
-        duration = std::max(duration, s.values.size() / t->frameRate);
+        duration = std::max(duration, t->frames.endTime(int(s.values.size()) - 1));
     }
     if (first) {
         t->yMin = 0.0;
@@ -198,7 +198,7 @@ void TrajectoryView::rebuild()
     for (const Series &s : t->series) {
         auto table = makeTable({"t", "y"}, vtkIdType(s.values.size()));
         for (qsizetype i = 0; i < s.values.size(); ++i) {
-            table->SetValue(vtkIdType(i), 0, (double(i) + 0.5) / t->frameRate);
+            table->SetValue(vtkIdType(i), 0, t->frames.centre(int(i)));
             table->SetValue(vtkIdType(i), 1, s.values[i]);
         }
         vtkPlot *plot = t->chart->AddPlot(vtkChart::LINE);
@@ -237,7 +237,7 @@ void TrajectoryView::setCurrentFrame(int frame)
     if (!t->cursorPlot)
         return;
     const bool visible = frame >= 0 && !t->series.isEmpty();
-    const double x = visible ? (frame + 0.5) / t->frameRate : 0.0;
+    const double x = visible ? t->frames.centre(frame) : 0.0;
     t->cursorTable->SetValue(0, 0, x);
     t->cursorTable->SetValue(1, 0, x);
     t->cursorTable->Modified();

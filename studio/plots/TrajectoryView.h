@@ -3,6 +3,7 @@
 // trained model's generation for the sequence's frame labels — over alternating shaded bands of the
 // phoneme segments (labelled along the top axis), with a cursor at the current frame. Zoom (wheel)
 // and pan (drag) are vtkChartXY's own interaction.
+#include "annotation/FrameClock.h"
 #include "plots/VtkWidget.h"
 
 #include <QColor>
@@ -33,7 +34,8 @@ public:
     ~TrajectoryView() override;
 
     // Replaces everything: frame rate, phone segments and the series (first = the real features).
-    void setData(const QString &title, double frameRate, const Tier &phones, const QVector<Series> &series);
+    // Values of frame i are drawn at the centre of the time `frames` shows it.
+    void setData(const QString &title, const FrameClock &frames, const Tier &phones, const QVector<Series> &series);
     void clear();
     int seriesCount() const;
     // The series' names as the legend shows them, in order.

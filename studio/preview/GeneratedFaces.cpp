@@ -9,9 +9,9 @@
 namespace lipsync::studio {
 
 GeneratedFaces::GeneratedFaces(std::shared_ptr<const AamModel> aam, std::shared_ptr<const FaceRenderer> renderer,
-                               double frameRate)
+                               const FrameClock &frames)
     : m_aam(std::move(aam)), m_renderer(std::move(renderer)), m_synth(*m_aam),
-      m_frameRate(frameRate > 0 ? frameRate : 25.0)
+      m_frames(frames.rate() > 0 ? frames : FrameClock::uniform(25.0, frames.count()))
 {
 }
 

@@ -8,6 +8,7 @@
 //
 // Drawing one frame is one synthesis (about 0.25 ms for the GRID AAM) and a copy of the
 // background, so the preview renders on demand on the GUI thread and keeps up with playback.
+#include "annotation/FrameClock.h"
 #include "aam/AamModel.h"
 #include "annotation/LandmarkSet.h"
 #include "render/FaceRenderer.h"
@@ -36,11 +37,13 @@ public:
     };
 
     // `renderer` holds the poses (tracked in a clip, or the neutral frame's); it refers to `aam`.
+    // `frames`: when each generated frame is shown (the clip's own frames, or the new speech's).
     GeneratedFaces(std::shared_ptr<const AamModel> aam, std::shared_ptr<const FaceRenderer> renderer,
-                   double frameRate);
+                   const FrameClock &frames);
 
     const AamModel &aam() const { return *m_aam; }
-    double frameRate() const { return m_frameRate; }
+    double frameRate() const { return m_frames.rate(); }
+    const FrameClock &frames() const { return m_frames; }
     // Every frame drawn into `background` at the pose of the renderer's frame `poseFrame`.
     void setFixedFrame(const QImage &background, int poseFrame);
 
@@ -63,7 +66,7 @@ private:
     std::shared_ptr<const AamModel> m_aam;
     std::shared_ptr<const FaceRenderer> m_renderer;
     AamSynthesizer m_synth; // shapes for the landmarks overlay
-    double m_frameRate;
+    FrameClock m_frames;
     QImage m_fixed;
     int m_fixedPose = -1;
     std::vector<Track> m_tracks;

@@ -313,12 +313,12 @@ void PreviewPanel::rebuild()
         const Sequence &s = m_context->document()->sequence(row);
         const QString id = QString::fromStdString(s.id);
         if (const Renderer r = m_renderers.value(id); r.renderer) {
-            auto faces = std::make_shared<GeneratedFaces>(r.aam, r.renderer, s.frameRate);
+            auto faces = std::make_shared<GeneratedFaces>(r.aam, r.renderer, s.clock());
             if (!r.fixedFrame.isNull())
                 faces->setFixedFrame(r.fixedFrame, 0);
             std::vector<int> labels;
             try {
-                labels = frameLabelsFromTier(s.phones, s.frameRate, s.frameCount, s.id);
+                labels = frameLabelsFromTier(s.phones, s.clock(), s.id);
             } catch (const Error &) {
                 // no usable phones: nothing to generate from
             }
@@ -330,7 +330,7 @@ void PreviewPanel::rebuild()
                     Eigen::MatrixXd generated = model->generate(labels);
                     // Lips closed on /p b m/ as exported videos close them.
                     if (m_context->closesLips())
-                        generated = BilabialClosure::closeOnPhones(*m_aam, generated, s.phones, s.frameRate);
+                        generated = BilabialClosure::closeOnPhones(*m_aam, generated, s.phones, s.clock());
                     faces->addTrack({kind, ModelKinds::name(kind), ModelKinds::colour(kind), std::move(generated)});
                 } catch (const Error &) {
                 }
@@ -519,7 +519,7 @@ void PreviewPanel::togglePlay()
         return;
     }
     if (player->mediaPath() != m_speechPath)
-        player->setSequence(m_speechPath, m_speech->frameCount(), m_speech->frameRate());
+        player->setSequence(m_speechPath, m_speech->frames());
     player->setAudioEnabled(!ErrorReporter::isBatchMode());
     player->play(m_speechFrame);
 }
@@ -537,7 +537,7 @@ void PreviewPanel::onLoopToggled(bool on)
         if (!m_speech)
             return;
         if (player->mediaPath() != m_speechPath)
-            player->setSequence(m_speechPath, m_speech->frameCount(), m_speech->frameRate());
+            player->setSequence(m_speechPath, m_speech->frames());
         player->playRange(0.0, player->duration());
         return;
     }
@@ -545,7 +545,7 @@ void PreviewPanel::onLoopToggled(bool on)
     if (!media)
         return;
     if (player->mediaPath() != media->mediaPath)
-        player->setSequence(media->mediaPath, media->frameCount(), media->frameRate);
+        player->setSequence(media->mediaPath, media->clock);
     double a = 0, b = 0;
     if (!m_context->selection(&a, &b)) {
         a = 0.0;
@@ -631,11 +631,11 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
             auto result = std::make_shared<const SpeechToFaceResult>(lipsync::generateFromSpeech(request, sub));
             std::shared_ptr<GeneratedFaces> faces;
             if (sequence.renderer) {
-                faces = std::make_shared<GeneratedFaces>(sequence.aam, sequence.renderer, result->frameRate);
+                faces = std::make_shared<GeneratedFaces>(sequence.aam, sequence.renderer, result->frames);
                 faces->setFixedFrame(background, 0);
             } else {
                 auto neutral = std::make_shared<FaceRenderer>(*result->aam);
-                faces = std::make_shared<GeneratedFaces>(result->aam, neutral, result->frameRate);
+                faces = std::make_shared<GeneratedFaces>(result->aam, neutral, result->frames);
                 faces->setFixedFrame(neutralFrame(*neutral), 0);
             }
             faces->addTrack({kind, ModelKinds::name(kind), ModelKinds::colour(kind), result->features});
@@ -671,7 +671,7 @@ void PreviewPanel::showSpeech(std::shared_ptr<GeneratedFaces> faces, std::shared
 void PreviewPanel::seekSpeech(double seconds)
 {
     if (m_showingSpeech && m_speech)
-        setCurrent(int(std::floor(seconds * m_speech->frameRate())));
+        setCurrent(std::max(0, m_speech->frames().frameAt(seconds)));
 }
 
 void PreviewPanel::showSequence()

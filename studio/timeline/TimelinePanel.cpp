@@ -283,8 +283,10 @@ void TimelinePanel::showSequence(int row)
     const std::shared_ptr<const SequenceMedia> media = m_row >= 0 && m_context ? m_context->media() : nullptr;
     if (media) {
         m_waveform->setPeaks(media->peaks);
-        m_waveform->setThumbnails(media->thumbnails, media->frameRate);
-        m_waveform->setDuration(media->frameCount() / media->frameRate);
+        m_waveform->setThumbnails(media->thumbnails, media->clock);
+        // The whole timeline: to the last frame's end or the sound's, whichever is later.
+        m_waveform->setDuration(std::max(media->clock.endTime(),
+                                         media->peaks ? double(media->peaks->samples().size()) / media->peaks->sampleRate() : 0.0));
         m_waveform->setPlaceholderText(media->peaks ? QString() : tr("No audio: %1").arg(media->audioError));
     }
     m_waveform->setSpectrogram(media ? media->spectrogram : nullptr);
@@ -313,12 +315,11 @@ void TimelinePanel::showGeneratedSpeech(std::shared_ptr<const SpeechToFaceResult
     m_waveform->setPeaks(m_speech->audio.samples.empty()
                              ? nullptr
                              : std::make_shared<const WaveformPeaks>(m_speech->audio.samples, m_speech->audio.sampleRate));
-    m_waveform->setThumbnails({}, m_speech->frameRate);
+    m_waveform->setThumbnails({}, m_speech->frames);
     m_waveform->setWords(m_speech->words);
     m_waveform->setPhones(m_speech->phones);
-    m_waveform->setFrameLabels(voteFrameLabels(m_speech->phones, m_speech->frameRate, m_speech->frameCount()),
-                               m_speech->frameRate);
-    m_waveform->setDuration(m_speech->frameCount() / m_speech->frameRate);
+    m_waveform->setFrameLabels(voteFrameLabels(m_speech->phones, m_speech->frames), m_speech->frames);
+    m_waveform->setDuration(m_speech->frames.endTime());
     m_waveform->setPlaceholderText(m_speech->audio.samples.empty() ? tr("No audio") : QString());
     m_waveform->setCursorTime(0.0);
     updateActions();
@@ -330,19 +331,18 @@ void TimelinePanel::refresh()
         return; // the generated speech's tiers stay until showSequence
     if (!m_document || m_row < 0) {
         m_waveform->setPhones({});
-        m_waveform->setFrameLabels({}, 25.0);
+        m_waveform->setFrameLabels({}, {});
         updateActions();
         return;
     }
     const Sequence &s = m_document->sequence(m_row);
     m_waveform->setWords(s.words);
     m_waveform->setPhones(s.phones);
-    int frames = s.frameCount;
-    if (frames <= 0 && m_context->media())
-        frames = m_context->media()->frameCount();
-    m_waveform->setFrameLabels(s.phones.isEmpty() ? std::vector<std::string>{}
-                                                  : voteFrameLabels(s.phones, s.frameRate, frames),
-                               s.frameRate);
+    // The media's own clock when loaded (the timestamps as decoded), else the project's record.
+    const FrameClock clock = m_context->media() && m_context->media()->frameCount() > 0 ? m_context->media()->clock
+                                                                                         : s.clock();
+    m_waveform->setFrameLabels(s.phones.isEmpty() ? std::vector<std::string>{} : voteFrameLabels(s.phones, clock),
+                               clock);
     updateActions();
 }
 
@@ -718,7 +718,7 @@ bool TimelinePanel::preparePlayer()
     if (!m_player || !media || media->mediaPath != m_mediaPath)
         return false;
     if (m_player->mediaPath() != m_mediaPath) // it played other media (the preview's new speech)
-        m_player->setSequence(media->mediaPath, media->frameCount(), media->frameRate);
+        m_player->setSequence(media->mediaPath, media->clock);
     m_player->setAudioEnabled(!ErrorReporter::isBatchMode());
     return true;
 }

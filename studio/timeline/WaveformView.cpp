@@ -148,17 +148,17 @@ void WaveformView::setPhones(const Tier &phones)
     update();
 }
 
-void WaveformView::setFrameLabels(const std::vector<std::string> &labels, double frameRate)
+void WaveformView::setFrameLabels(const std::vector<std::string> &labels, const FrameClock &frames)
 {
     m_frameLabels = labels;
-    m_labelRate = frameRate > 0 ? frameRate : 25.0;
+    m_labelFrames = frames;
     update();
 }
 
-void WaveformView::setThumbnails(const QVector<QImage> &thumbnails, double frameRate)
+void WaveformView::setThumbnails(const QVector<QImage> &thumbnails, const FrameClock &frames)
 {
     m_thumbnails = thumbnails;
-    m_frameRate = frameRate > 0 ? frameRate : 25.0;
+    m_thumbnailFrames = frames;
     update();
 }
 
@@ -398,9 +398,12 @@ void WaveformView::drawThumbnails(QPainter &p, const QRect &r) const
     const int h = r.height() - 4;
     const int tw = std::max(8, first.height() > 0 ? first.width() * h / first.height() : h);
     p.setRenderHint(QPainter::SmoothPixmapTransform);
-    // One thumbnail per slot, showing the frame at the slot's centre time.
+    // One thumbnail per slot, showing the frame on screen at the slot's centre time.
     for (int x = 0; x < r.width(); x += tw + 1) {
-        const int frame = int(timeAt(x + tw / 2.0) * m_frameRate);
+        const double t = timeAt(x + tw / 2.0);
+        if (m_thumbnailFrames.empty() || t < m_thumbnailFrames.startTime() || t >= m_thumbnailFrames.endTime())
+            continue;
+        const int frame = m_thumbnailFrames.frameAt(t);
         if (frame < 0 || frame >= m_thumbnails.size())
             continue;
         p.drawImage(QRect(x, r.top() + 2, tw, h), m_thumbnails[frame]);
@@ -524,9 +527,10 @@ void WaveformView::drawFrameLabels(QPainter &p, const QRect &r) const
     QFont f = p.font();
     f.setPointSizeF(f.pointSizeF() * 0.75);
     p.setFont(f);
-    for (int i = 0; i < int(m_frameLabels.size()); ++i) {
-        const double x0 = xAt(i / m_labelRate);
-        const double x1 = xAt((i + 1) / m_labelRate);
+    const int labelled = std::min(int(m_frameLabels.size()), m_labelFrames.count());
+    for (int i = 0; i < labelled; ++i) {
+        const double x0 = xAt(m_labelFrames.time(i));
+        const double x1 = xAt(m_labelFrames.endTime(i));
         if (x1 < 0 || x0 > r.width())
             continue;
         const QRectF cell(x0, r.top() + 1, std::max(1.0, x1 - x0 - 1), r.height() - 2);

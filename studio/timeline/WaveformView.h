@@ -13,6 +13,7 @@
 // selection, Tab / Shift+Tab select the next / previous interval, Esc clears the selection.
 // The view only reports intentions (signals); TimelinePanel turns them into document edits.
 // Intervals the user edited are drawn with an orange marker and orange boundaries.
+#include "annotation/FrameClock.h"
 #include "annotation/Tier.h"
 #include "audio/Spectrogram.h"
 #include "audio/WaveformPeaks.h"
@@ -43,10 +44,10 @@ public:
     bool isSpectrogramVisible() const { return m_showSpectrogram; }
     void setWords(const Tier &words);
     void setPhones(const Tier &phones);
-    // One phone label per video frame (FrameLabels voting) at `frameRate`.
-    void setFrameLabels(const std::vector<std::string> &labels, double frameRate);
-    // Small frames at `frameRate`, one per video frame.
-    void setThumbnails(const QVector<QImage> &thumbnails, double frameRate);
+    // One phone label per video frame (FrameLabels voting), each drawn where `frames` shows it.
+    void setFrameLabels(const std::vector<std::string> &labels, const FrameClock &frames);
+    // Small frames, one per video frame, shown at the times of `frames`.
+    void setThumbnails(const QVector<QImage> &thumbnails, const FrameClock &frames);
     void setDuration(double seconds);
     void setPlaceholderText(const QString &text);
     void setEditable(bool editable);
@@ -134,9 +135,9 @@ private:
     Tier m_words;
     Tier m_phones;
     std::vector<std::string> m_frameLabels;
-    double m_labelRate = 25.0;
+    FrameClock m_labelFrames;
     QVector<QImage> m_thumbnails;
-    double m_frameRate = 25.0;
+    FrameClock m_thumbnailFrames;
     double m_duration = 0.0;
     double m_cursor = 0.0;
     double m_start = 0.0;

@@ -121,9 +121,9 @@ private slots:
         QCOMPARE(info.height, 288);
         QCOMPARE(info.frameRate, 25.0);
         QCOMPARE(info.frameCount, report.value("frames").toInt());
-        // The clip's 75 frames, fitted to its 2.98 s of sound: within one frame.
-        QVERIFY(std::abs(info.frameCount - 75) <= 1);
-        QVERIFY2(std::abs(info.videoDuration - info.audioDuration) <= 1.0 / 25 + 1e-6,
+        // The clip's 75 frames and its 3.0 s, the sound fitted to them (AAC frames of 1024 samples).
+        QCOMPARE(info.frameCount, 75);
+        QVERIFY2(std::abs(info.videoDuration - info.audioDuration) <= 1024.0 / 44100 + 1e-6,
                  qPrintable(QString("video %1 s, audio %2 s").arg(info.videoDuration).arg(info.audioDuration)));
         QVERIFY(std::abs(info.audioDuration - report.value("audioDuration").toDouble()) < 0.05);
     }

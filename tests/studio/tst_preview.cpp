@@ -268,7 +268,7 @@ private slots:
         QVERIFY(aam);
         const BilabialClosure closure(*aam);
         const Sequence &s = m_window->document()->sequence(m_window->currentSequence());
-        const std::vector<double> w = BilabialClosure::weights(s.phones, s.frameRate, s.frameCount);
+        const std::vector<double> w = BilabialClosure::weights(s.phones, s.clock());
         std::vector<int> bilabial;
         for (int t = 0; t < int(w.size()); ++t)
             if (w[size_t(t)] == 1.0)
@@ -445,7 +445,7 @@ private slots:
             QVERIFY(speech && speech->aam);
             const BilabialClosure closure(*speech->aam);
             const std::vector<double> w
-                = BilabialClosure::weights(speech->phones, speech->frameRate, int(speech->features.rows()));
+                = BilabialClosure::weights(speech->phones, speech->frames);
             int bilabial = 0;
             for (int t = 0; t < int(w.size()); ++t)
                 if (w[size_t(t)] == 1.0) {

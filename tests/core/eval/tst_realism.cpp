@@ -128,7 +128,7 @@ private slots:
         audio.samples.assign(1000, 0.1f); // 25 frames at 25 fps, 40 samples each, power 0.01
         for (size_t i = 400; i < 440; ++i)
             audio.samples[i] = 1.0f;      // frame 10: power 1
-        const std::vector<double> e = audioEnergyPerFrame(audio, 25.0, 26);
+        const std::vector<double> e = audioEnergyPerFrame(audio, FrameClock::uniform(25.0, 26));
         QCOMPARE(e.size(), size_t(26));
         QVERIFY(std::abs(e[0] + 20.0) < 1e-4);
         QVERIFY(std::abs(e[10]) < 1e-4);
@@ -153,7 +153,7 @@ private slots:
                      {0.60, 0.64, "P", false},  // 15
                      {0.64, 1.00, "sil", false},
                      {1.00, 1.10, "M", false}}}; // past the 25 frames
-        const std::vector<FrameRange> segments = bilabialSegments(phones, 25.0, 25, 0);
+        const std::vector<FrameRange> segments = bilabialSegments(phones, FrameClock::uniform(25.0, 25), 0);
         QCOMPARE(segments.size(), size_t(3));
         QCOMPARE(segments[0].first, 5);
         QCOMPARE(segments[0].last, 6);
@@ -170,7 +170,7 @@ private slots:
         QCOMPARE(closedSegments(opening, segments, 0.009), 0);
         QCOMPARE(closedSegments(opening, segments, 0.3), 3);
         // Widened by a frame either way for the aligner's error: the IH's first frame counts for the B.
-        const std::vector<FrameRange> widened = bilabialSegments(phones, 25.0, 25);
+        const std::vector<FrameRange> widened = bilabialSegments(phones, FrameClock::uniform(25.0, 25));
         QCOMPARE(widened[0].first, 4);
         QCOMPARE(widened[0].last, 7);
         QCOMPARE(widened[2].last, 16);

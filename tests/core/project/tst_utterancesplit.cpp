@@ -47,7 +47,7 @@ private slots:
         add("sil", 3.0);
         UtteranceSplitOptions options;
         options.shortest = 1.0;
-        options.frameRate = 25.0;
+        options.frames = lipsync::FrameClock::uniform(25.0, int(std::ceil(t * 25.0)));
         const std::vector<UtteranceSpan> spans = lipsync::splitAtPauses(words, phones, t, options);
         QCOMPARE(int(spans.size()), 3);
         QCOMPARE(spans[0].transcript, std::string("a b c"));

@@ -54,7 +54,7 @@ private slots:
         // B over [0.10, 0.18) s at 25 frames/s: half of frame 2, all of frame 3, half of frame 4.
         const Tier phones{"phones", {{0.0, 0.10, "sil"}, {0.10, 0.18, "B"}, {0.18, 0.30, "AY"},
                                      {0.30, 0.315, "M"}, {0.315, 0.40, "sil"}}};
-        const std::vector<double> w = BilabialClosure::weights(phones, 25.0, 10);
+        const std::vector<double> w = BilabialClosure::weights(phones, FrameClock::uniform(25.0, 10));
         QCOMPARE(int(w.size()), 10);
         QCOMPARE(w[1], 0.0);
         QVERIFY(std::abs(w[2] - 0.5) < 1e-9);
@@ -67,8 +67,8 @@ private slots:
         QCOMPARE(w[8], 0.0);
         // Frames past the tier's end and lower-case or stressed labels.
         const Tier lower{"phones", {{0.0, 0.04, "p"}, {0.04, 0.08, "m1"}, {0.08, 0.12, "t"}}};
-        QCOMPARE(BilabialClosure::weights(lower, 25.0, 2), (std::vector<double>{1.0, 1.0}));
-        QCOMPARE(BilabialClosure::weights(phones, 0.0, 3), (std::vector<double>{0.0, 0.0, 0.0}));
+        QCOMPARE(BilabialClosure::weights(lower, FrameClock::uniform(25.0, 2)), (std::vector<double>{1.0, 1.0}));
+        QCOMPARE(BilabialClosure::weights(phones, FrameClock::uniform(0.0, 3)), (std::vector<double>{0.0, 0.0, 0.0}));
         QCOMPARE(BilabialClosure::weights(std::vector<int>{PhoneSet::kP, PhoneSet::index("AA"), PhoneSet::kB,
                                                            PhoneSet::kM, PhoneSet::kSilence}),
                  (std::vector<double>{1.0, 0.0, 1.0, 1.0, 0.0}));
@@ -134,13 +134,12 @@ private slots:
     void closesOnAPhoneTier()
     {
         const Tier phones{"phones", {{0.0, 0.5, "sil"}, {0.5, 0.62, "B"}, {0.62, 3.0, "IH"}}};
-        const Eigen::MatrixXd closed = BilabialClosure::closeOnPhones(m_aam, m_tracked, phones, 25.0);
-        QCOMPARE(closed, BilabialClosure(m_aam).apply(m_tracked, BilabialClosure::weights(phones, 25.0,
-                                                                                          int(m_tracked.rows()))));
+        const Eigen::MatrixXd closed = BilabialClosure::closeOnPhones(m_aam, m_tracked, phones, FrameClock::uniform(25.0, int(m_tracked.rows())));
+        QCOMPARE(closed, BilabialClosure(m_aam).apply(m_tracked, BilabialClosure::weights(phones, FrameClock::uniform(25.0, int(m_tracked.rows())))));
         QVERIFY(BilabialClosure(m_aam).opening(closed.row(13).transpose()) < 1e-9); // [0.52, 0.56) s
         QVERIFY(!BilabialClosure::forAam(AamModel{}));
         QVERIFY(BilabialClosure::forAam(m_aam));
-        QCOMPARE(BilabialClosure::closeOnPhones(AamModel{}, m_tracked, phones, 25.0), m_tracked);
+        QCOMPARE(BilabialClosure::closeOnPhones(AamModel{}, m_tracked, phones, FrameClock::uniform(25.0, int(m_tracked.rows()))), m_tracked);
     }
 
     void refusesWhatItCannotClose()

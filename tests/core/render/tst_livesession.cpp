@@ -111,7 +111,7 @@ private slots:
         // Most frames come out before the sound ends.
         QVERIFY(std::isfinite(fed.fedWhenReady[size_t(expected - 5)]));
         // The labels are the §0 vote over the recognised phones, the features the model's.
-        const std::vector<std::string> voted = voteFrameLabels(session.phones(), 25.0, expected, m_acoustic.featureOptions());
+        const std::vector<std::string> voted = voteFrameLabels(session.phones(), FrameClock::uniform(25.0, expected), m_acoustic.featureOptions());
         std::vector<int> labels;
         for (const std::string &l : voted)
             labels.push_back(PhoneSet::index(l));

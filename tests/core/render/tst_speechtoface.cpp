@@ -171,9 +171,9 @@ private slots:
         auto renderer = makeRenderer(result, kClip, feedback);
         const QString out = m_dir.filePath("generated.mp4");
         const int written = exportRenderedVideo(result, *renderer, out.toStdString(), feedback);
-        // The file lasts as long as the sound (2.98 s): round(2.98 x 25) = 74 frames.
-        QCOMPARE(written, int(std::lround(result.audio.duration() * 25)));
-        QVERIFY(std::abs(written - 75) <= 1);
+        // The clip's own 75 frames at their own times, the sound (2.98 s) continued to their 3.0 s.
+        QCOMPARE(written, 75);
+        QCOMPARE(result.frames.count(), 75);
         const MediaProbe probe = MediaProbe::read(out.toStdString());
         QCOMPARE(probe.videoCodec, AV_CODEC_ID_H264);
         QCOMPARE(probe.audioCodec, AV_CODEC_ID_AAC);
@@ -230,7 +230,7 @@ private slots:
         const SpeechToFaceResult open = generateFromSpeech(off, feedback);
         QCOMPARE(closed.phones, open.phones);
         const BilabialClosure closure(m_aam);
-        const std::vector<double> w = BilabialClosure::weights(closed.phones, closed.frameRate, closed.frameCount());
+        const std::vector<double> w = BilabialClosure::weights(closed.phones, closed.frames);
         int full = 0, wereOpen = 0;
         for (int t = 0; t < closed.frameCount(); ++t) {
             const Eigen::VectorXd c = closed.features.row(t).transpose(), g = open.features.row(t).transpose();
@@ -257,8 +257,8 @@ private slots:
         const QString out = m_dir.filePath("audio-only.mp4");
         const SpeechVideoReport report = renderSpeechVideo(request(wav), out.toStdString(), feedback);
         QVERIFY(!report.generated.hasVideo);
-        // As many frames as the sound lasts.
-        QCOMPARE(report.generated.frameCount(), int(std::lround(report.generated.audio.duration() * 25)));
+        // Frames every 1/25 s from the sound's start until it has ended.
+        QCOMPARE(report.generated.frameCount(), int(std::ceil(report.generated.audio.duration() * 25 - 1e-6)));
         const MediaProbe probe = MediaProbe::read(out.toStdString());
         QCOMPARE(int(probe.frameTimes.size()), report.framesWritten);
         QCOMPARE(probe.width, 360);

@@ -5,6 +5,7 @@
 
 #include "MediaProbe.h"
 #include "io/AudioDecoder.h"
+#include "io/MediaInfo.h"
 #include "io/VideoReader.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
@@ -112,8 +113,9 @@ private slots:
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 1);
     }
 
-    // A real GRID clip with its own sound (44.1 kHz MP2, 2.95 s against 3 s of video): the export
-    // keeps the audio's rate and lasts as long as the sound, within a frame.
+    // A real GRID clip with its own sound (44.1 kHz MP2, 2.98 s against 3 s of video): the export
+    // keeps the audio's rate, every frame, and the clip's duration (the sound continued with
+    // silence to the last frame's end).
     void gridClipWithItsOwnSound()
     {
         const std::string clip = LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg";
@@ -128,12 +130,12 @@ private slots:
         QCOMPARE(probe.videoCodec, AV_CODEC_ID_H264);
         QCOMPARE(probe.audioCodec, AV_CODEC_ID_AAC);
         QCOMPARE(probe.sampleRate, audio.sampleRate);
-        const double frame = 1.0 / 25;
-        QCOMPARE(probe.videoPackets, int(std::lround(audio.duration() * 25)));
-        QVERIFY2(std::abs(probe.containerDuration - audio.duration()) < frame,
-                 qPrintable(QString("%1 vs %2").arg(probe.containerDuration).arg(audio.duration())));
-        QVERIFY(std::abs(probe.videoDuration - audio.duration()) < frame);
-        QVERIFY(std::abs(probe.audioDuration - audio.duration()) < frame);
+        const double frame = 1.0 / 25, aacFrame = 1024.0 / audio.sampleRate;
+        QCOMPARE(probe.videoPackets, reader.frameCount());
+        QVERIFY2(std::abs(probe.containerDuration - 3.0) < aacFrame,
+                 qPrintable(QString("%1 vs 3.0").arg(probe.containerDuration)));
+        QVERIFY(std::abs(probe.videoDuration - 3.0) < 1e-6);
+        QVERIFY2(std::abs(probe.audioDuration - 3.0) < aacFrame, qPrintable(QString::number(probe.audioDuration)));
         QVERIFY(std::abs(probe.audioStart - probe.videoStart) < frame);
         const double quality = psnr(probe.frames[40], reader.frame(40));
         QVERIFY2(quality > 30.0, qPrintable(QString::number(quality)));
@@ -170,14 +172,15 @@ private slots:
                  qPrintable(QString("flash %1 s, sound %2 s").arg(flash).arg(burst)));
     }
 
-    // Too few frames hold the last one; too many are cut: the file lasts as long as its sound.
-    void videoIsFittedToTheAudio_data()
+    // Every frame given is written; the sound (2 s) is cut at the last frame's end or continued
+    // with silence up to it: the file lasts exactly as long as its frames.
+    void soundIsFittedToTheFrames_data()
     {
         QTest::addColumn<int>("given");
         QTest::newRow("short video") << 30;
         QTest::newRow("long video") << 80;
     }
-    void videoIsFittedToTheAudio()
+    void soundIsFittedToTheFrames()
     {
         QFETCH(int, given);
         QTemporaryDir dir;
@@ -185,11 +188,48 @@ private slots:
         const AudioBuffer audio = tone(2.0);
         Feedback feedback;
         int rendered = 0;
-        QCOMPARE(exportVideo(path, given, [&](int i) { ++rendered; return patternFrame(i); }, &audio, feedback), 50);
-        QCOMPARE(rendered, std::min(given, 50));
+        QCOMPARE(exportVideo(path, given, [&](int i) { ++rendered; return patternFrame(i); }, &audio, feedback), given);
+        QCOMPARE(rendered, given);
         const MediaProbe probe = MediaProbe::read(path);
-        QCOMPARE(probe.videoPackets, 50);
-        QVERIFY(std::abs(probe.containerDuration - 2.0) < 1.0 / 25);
+        QCOMPARE(probe.videoPackets, given);
+        const double seconds = given / 25.0, aacFrame = 1024.0 / audio.sampleRate;
+        QVERIFY(std::abs(probe.videoDuration - seconds) < 1e-6);
+        QVERIFY2(std::abs(probe.audioDuration - seconds) < aacFrame, qPrintable(QString::number(probe.audioDuration)));
+    }
+
+    // Frames at their own times: a variable frame rate keeps every frame's timestamp, and
+    // 30000/1001 is written as that fraction.
+    void frameTimesAreKept()
+    {
+        QTemporaryDir dir;
+        const std::vector<double> times{0.0, 0.04, 0.12, 0.16, 0.5, 0.54, 0.58, 0.9};
+        VideoExportOptions variable;
+        variable.setFrames(FrameClock::fromTimes(times, 25.0));
+        QVERIFY(variable.frames.isVariable());
+        const AudioBuffer audio = tone(1.0);
+        Feedback feedback;
+        const std::string vfr = dir.filePath("vfr.mp4").toStdString();
+        QCOMPARE(exportVideo(vfr, int(times.size()), [](int i) { return patternFrame(i); }, &audio, feedback, variable),
+                 int(times.size()));
+        const MediaProbe probe = MediaProbe::read(vfr);
+        QCOMPARE(probe.frameTimes.size(), times.size());
+        for (size_t i = 0; i < times.size(); ++i)
+            QVERIFY2(std::abs(probe.frameTimes[i] - times[i]) < 1e-4,
+                     qPrintable(QString("frame %1 at %2 s, not %3").arg(i).arg(probe.frameTimes[i]).arg(times[i])));
+        QVERIFY2(std::abs(probe.audioDuration - 0.94) < 1024.0 / audio.sampleRate, qPrintable(QString::number(probe.audioDuration)));
+
+        VideoExportOptions ntsc;
+        ntsc.setFrames(FrameClock::uniform(30000.0 / 1001.0, 30));
+        QCOMPARE(ntsc.frameRateNumerator, 30000);
+        QCOMPARE(ntsc.frameRateDenominator, 1001);
+        const std::string path = dir.filePath("ntsc.mp4").toStdString();
+        exportVideo(path, 30, [](int i) { return patternFrame(i); }, &audio, feedback, ntsc);
+        const MediaInfo info = MediaInfo::probe(path);
+        QCOMPARE(info.frameCount, 30);
+        QCOMPARE(info.frameRateNum, 30000);
+        QCOMPARE(info.frameRateDen, 1001);
+        QVERIFY(!info.variableFrameRate);
+        QVERIFY(std::abs(info.frames.time(29) - 29 * 1001.0 / 30000.0) < 1e-6);
     }
 
     void silentVideoAndOddSizes()
