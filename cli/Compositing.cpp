@@ -7,8 +7,11 @@ namespace lipsync::cli {
 std::vector<CommandOption> Compositing::options()
 {
     return {{QStringLiteral("full-face"), {},
-             QStringLiteral("synthesise the whole modelled face, eyes included (default: the lower face, the "
-                            "recording's eyes and upper face kept)")},
+             QStringLiteral("synthesise the whole modelled face, eyes included (default: the recording's own face, "
+                            "its lower face moved to the generated shape)")},
+            {QStringLiteral("synthesize-skin"), {},
+             QStringLiteral("paste the AAM's synthesis of the lower face (skin included) instead of moving the "
+                            "recording's own; only the inside of the mouth is synthesised by default")},
             {QStringLiteral("no-colour-match"), {},
              QStringLiteral("keep the model's mean colour instead of matching the frame's lighting")},
             {QStringLiteral("no-detail"), {},
@@ -22,6 +25,7 @@ CompositeOptions Compositing::from(const CommandLine &args)
 {
     CompositeOptions options;
     options.region = args.isSet(QStringLiteral("full-face")) ? FaceRegion::Full : FaceRegion::Lower;
+    options.synthesizeSkin = args.isSet(QStringLiteral("synthesize-skin"));
     options.matchColour = !args.isSet(QStringLiteral("no-colour-match"));
     options.detail = !args.isSet(QStringLiteral("no-detail"));
     return options;

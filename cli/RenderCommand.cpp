@@ -13,6 +13,8 @@
 
 #include <QElapsedTimer>
 
+#include <algorithm>
+
 #include <cstdio>
 
 using namespace lipsync;
@@ -27,6 +29,8 @@ int runRender(const CommandLine &args)
     request.aamPath = args.value("aam").toStdString();
     request.mediaPath = args.value("media").toStdString();
     request.transcriptPath = args.value("transcript").toStdString();
+    if (args.isSet("background"))
+        request.backgroundPath = args.value("background").toStdString();
     if (args.isSet("fps"))
         request.frameRate = args.positiveNumber("fps");
     RenderOptions options;
@@ -75,6 +79,15 @@ int runRender(const CommandLine &args)
             {"dimension", int(g.features.cols())},
             {"audioDuration", g.frames.duration()}, // the sound as written: fitted to the frames
             {"video", g.hasVideo},
+            {"background", QString::fromStdString(g.backgroundPath)},
+            {"backgroundCuts", int(renderer->retiming().cuts.size())},
+            {"backgroundReversals", renderer->retiming().reversals},
+            {"backgroundLargestStep", renderer->retiming().largestStep},
+            {"backgroundLargestCut", renderer->retiming().cutSteps.empty()
+                                         ? 0.0
+                                         : *std::max_element(renderer->retiming().cutSteps.begin(),
+                                                             renderer->retiming().cutSteps.end())},
+            {"backgroundNaturalStep99", renderer->retiming().naturalStep99},
             {"sideBySide", options.sideBySide},
             {"region", options.composite.region == FaceRegion::Full ? "full" : "lower"},
             {"colourMatch", options.composite.matchColour},
@@ -85,7 +98,9 @@ int runRender(const CommandLine &args)
         });
     } else {
         std::printf("%s: %d frames (%s model, %s) in %.2f s + %.2f s\n", qPrintable(output.path()), report.framesWritten,
-                    g.modelKind.c_str(), g.hasVideo ? "into the clip" : "neutral frame", g.seconds,
+                    g.modelKind.c_str(),
+                    !g.backgroundPath.empty() ? "into the background video" : g.hasVideo ? "into the clip" : "neutral frame",
+                    g.seconds,
                     report.renderSeconds);
     }
     return 0;
@@ -96,8 +111,9 @@ const CommandRegistration registration{
         QStringLiteral("render"),
         QStringLiteral("align new speech, generate the face and render it as MP4 with the sound"),
         QStringLiteral("Aligns new speech to its transcript, generates the face's parameters with a trained dynamic "
-                       "model and renders the face into the clip's frames (or onto a neutral frame for audio "
-                       "only): an MP4 with the recording's sound (--out) or PNGs (--png-dir)."),
+                       "model and renders the face into the clip's frames, into another video of the person "
+                       "(--background, re-timed to the speech's length), or onto a neutral frame for audio only: an "
+                       "MP4 with the recording's sound and duration (--out) or PNGs (--png-dir)."),
         {{QStringLiteral("model"), QStringLiteral("MODEL"), QStringLiteral("a trained dynamic model (lipsync train)"),
           {}, CommandOption::Required},
          {QStringLiteral("aam"), QStringLiteral("AAM"), QStringLiteral("the AAM the model's features are parameters of"),
@@ -107,9 +123,13 @@ const CommandRegistration registration{
           CommandOption::Required},
          {QStringLiteral("transcript"), QStringLiteral("FILE"),
           QStringLiteral("the words spoken (.align, .lab, .txt, a TextGrid words tier, or .srt/.vtt subtitles)"), {}, CommandOption::Required},
+         {QStringLiteral("background"), QStringLiteral("VIDEO"),
+          QStringLiteral("a video of the person to render the new speech into, played in runs with cuts where the "
+                         "head's motion allows for as long as the speech lasts (default: the media's own frames)")},
          {QStringLiteral("side-by-side"), {}, QStringLiteral("the real clip left, the generated face right")},
          {QStringLiteral("fps"), QStringLiteral("RATE"),
-          QStringLiteral("frames per second of the generated face (default: the video's rate, 25 for audio)")}},
+          QStringLiteral("frames per second of the generated face (default: the video's rate; for audio only the "
+                         "model's, else 25)")}},
                 {}}
         .add(Compositing::options())
         .add(VideoOutput::options())

@@ -1441,8 +1441,18 @@
     </message>
     <message>
         <location filename="../studio/app/MainWindow.cpp" line="167"/>
-        <source>Synthesise the whole modelled face; otherwise the lower face is drawn and the recording&apos;s own eyes and upper face are kept</source>
-        <translation>Das ganze modellierte Gesicht synthetisieren; sonst wird das untere Gesicht gezeichnet und die Augen und das Obergesicht der Aufnahme bleiben erhalten</translation>
+        <source>Synthesise the whole modelled face; otherwise the recording&apos;s own eyes and upper face are kept</source>
+        <translation>Das ganze modellierte Gesicht synthetisieren; sonst bleiben die Augen und das Obergesicht der Aufnahme erhalten</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="165"/>
+        <source>&amp;Synthesised Skin</source>
+        <translation>&amp;Synthetisierte Haut</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="167"/>
+        <source>Paste the AAM&apos;s synthesis of the lower face, skin included; otherwise the recording&apos;s own lower face is moved to the generated shape and only the inside of the mouth is synthesised</source>
+        <translation>Die AAM-Synthese des unteren Gesichts samt Haut einsetzen; sonst wird das eigene untere Gesicht der Aufnahme in die erzeugte Form bewegt und nur das Mundinnere synthetisiert</translation>
     </message>
     <message>
         <location filename="../studio/app/MainWindow.cpp" line="169"/>

@@ -44,6 +44,10 @@ struct CompositeOptions
     // highlights, skin grain the texture modes smooth away; AamModel::exemplarDetail), when the
     // model has it.
     bool detail = true;
+    // With the lower face: draw the AAM's synthesis of its skin too (the model's texture pasted
+    // over the recording's), instead of moving the recording's own lower face to the generated
+    // shape and drawing only the inside of the mouth (render/LowerFaceWarp, FaceRenderer).
+    bool synthesizeSkin = false;
 
     bool operator==(const CompositeOptions &) const = default;
 };

@@ -4,8 +4,11 @@
 #include "aam/VideoTracking.h"
 #include "io/VideoReader.h"
 #include "render/FrameComposition.h"
+#include "render/LowerFaceWarp.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
+
+#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 
@@ -111,11 +114,23 @@ cv::Size FaceRenderer::frameSize() const
     return m_size;
 }
 
+void FaceRenderer::retime(int frames, const BackgroundRetimingOptions &options)
+{
+    m_retiming = m_video && frames > 0 ? retimeBackground(m_poses, frames, options) : BackgroundRetiming{};
+}
+
+int FaceRenderer::sourceFrame(int index) const
+{
+    if (m_retiming.frames.empty())
+        return index;
+    return m_retiming.frames[size_t(std::clamp(index, 0, int(m_retiming.frames.size()) - 1))];
+}
+
 cv::Mat FaceRenderer::background(int index)
 {
     if (!m_video)
         return m_neutral.clone();
-    const int clamped = std::clamp(index, 0, m_frameCount - 1);
+    const int clamped = std::clamp(sourceFrame(index), 0, m_frameCount - 1);
     if (clamped != m_lastIndex) {
         m_last = m_video->frame(clamped);
         m_lastIndex = clamped;
@@ -125,7 +140,7 @@ cv::Mat FaceRenderer::background(int index)
 
 const Similarity &FaceRenderer::pose(int index) const
 {
-    return m_poses[size_t(std::clamp(index, 0, int(m_poses.size()) - 1))];
+    return m_poses[size_t(std::clamp(sourceFrame(index), 0, int(m_poses.size()) - 1))];
 }
 
 void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Mat &frame) const
@@ -142,7 +157,64 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
     if (frame.type() != CV_8UC3 || frame.size() != m_size)
         throw Error("cannot render: the frame is not a " + std::to_string(m_size.width) + "x"
                     + std::to_string(m_size.height) + " BGR image");
-    m_synthesizer.composite(features, pose(index), frame, options);
+    if (options.region == FaceRegion::Full || options.synthesizeSkin) {
+        m_synthesizer.composite(features, pose(index), frame, options);
+        return;
+    }
+    // The recording's own lower face moved to the generated shape, then the inside of the mouth
+    // where the recording had less of it.
+    const Eigen::VectorXd generated = pose(index).apply(m_synthesizer.shape(features));
+    LowerFaceWarp::apply(frame, trackedShape(index), generated);
+    const cv::Mat alpha = mouthInteriorAlpha(index, features);
+    cv::Rect box = cv::boundingRect(alpha > 0.f);
+    if (box.empty())
+        return;
+    cv::Mat synthesised = frame.clone();
+    CompositeOptions whole = options;
+    whole.region = FaceRegion::Full;
+    m_synthesizer.composite(features, pose(index), synthesised, whole);
+    for (int y = box.y; y < box.y + box.height; ++y) {
+        const float *a = alpha.ptr<float>(y);
+        uchar *out = frame.ptr<uchar>(y);
+        const uchar *in = synthesised.ptr<uchar>(y);
+        for (int x = box.x; x < box.x + box.width; ++x)
+            if (a[x] > 0.f)
+                for (int ch = 0; ch < 3; ++ch)
+                    out[3 * x + ch] = cv::saturate_cast<uchar>(a[x] * in[3 * x + ch] + (1.f - a[x]) * out[3 * x + ch]);
+    }
+}
+
+Eigen::VectorXd FaceRenderer::trackedShape(int index) const
+{
+    const Eigen::VectorXd c = m_tracked.rows() > 0
+                                  ? Eigen::VectorXd(m_tracked.row(std::clamp<Eigen::Index>(sourceFrame(index), 0, m_tracked.rows() - 1)).transpose())
+                                  : Eigen::VectorXd::Zero(m_aam.combinedModes());
+    return pose(index).apply(m_synthesizer.shape(c));
+}
+
+cv::Mat FaceRenderer::mouthInteriorAlpha(int index, const Eigen::VectorXd &features) const
+{
+    cv::Mat alpha(m_size, CV_32F, cv::Scalar(0));
+    const Eigen::VectorXd generated = pose(index).apply(m_synthesizer.shape(features));
+    const double wanted = LowerFaceWarp::opening(generated);
+    const double recorded = LowerFaceWarp::opening(trackedShape(index));
+    // The warp stretches the recorded opening to the generated one: where that is a thin line
+    // pulled wide, the inside is drawn; where the recording was as open, it is its own.
+    constexpr double kMinOpening = 1.5; // pixels: a closed mouth has no inside to draw
+    if (!(wanted > kMinOpening) || !(wanted > recorded))
+        return alpha;
+    const double u = std::clamp((wanted - recorded) / wanted, 0.0, 1.0);
+    const float weight = float(u * u * (3.0 - 2.0 * u));
+    constexpr int kShift = 4; // fillPoly's sub-pixel bits
+    std::vector<cv::Point> polygon;
+    for (const cv::Point2f &p : LowerFaceWarp::mouthInterior(generated))
+        polygon.emplace_back(int(std::lround(p.x * (1 << kShift))), int(std::lround(p.y * (1 << kShift))));
+    cv::Mat mask(m_size, CV_8U, cv::Scalar(0));
+    cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{polygon}, cv::Scalar(255), cv::LINE_AA, kShift);
+    // A feathered edge of about a pixel, inside the lips' inner outline.
+    cv::GaussianBlur(mask, mask, cv::Size(3, 3), 0.8);
+    mask.convertTo(alpha, CV_32F, weight / 255.0);
+    return alpha;
 }
 
 cv::Mat FaceRenderer::synthesisedWeight(int index, const Eigen::VectorXd &features) const
@@ -150,7 +222,9 @@ cv::Mat FaceRenderer::synthesisedWeight(int index, const Eigen::VectorXd &featur
     if (features.size() != m_aam.combinedModes())
         throw Error("cannot render: " + std::to_string(features.size())
                     + " parameters given, the AAM has " + std::to_string(m_aam.combinedModes()));
-    return m_synthesizer.compositeWeight(features, pose(index), m_size, m_composite.region);
+    if (m_composite.region == FaceRegion::Full || m_composite.synthesizeSkin)
+        return m_synthesizer.compositeWeight(features, pose(index), m_size, m_composite.region);
+    return mouthInteriorAlpha(index, features);
 }
 
 cv::Mat FaceRenderer::render(int index, const Eigen::VectorXd &features)

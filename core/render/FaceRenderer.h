@@ -1,8 +1,11 @@
 #pragma once
-// Rendering AAM parameters (real or generated) as video frames: the face region is synthesised from
-// the combined parameters (shape + texture, AamSynthesizer) and composited, with its feathered
-// edge, into a background frame at the pose of the face there — by default the lower face only,
-// colour-matched to the frame along the seam (CompositeOptions).
+// Rendering AAM parameters (real or generated) as video frames, at the pose of the face in a
+// background frame. By default the recording keeps its own face: its lower face is moved from the
+// shape tracked in the frame to the shape the parameters give (LowerFaceWarp, a thin-plate
+// spline), and only the inside of a mouth opened wider than recorded is synthesised from the AAM
+// (shape + texture + exemplar detail, AamSynthesizer), blended into the lips with a feathered edge.
+// CompositeOptions::synthesizeSkin pastes the AAM's whole lower-face synthesis instead, and
+// FaceRegion::Full the whole modelled face, colour-matched to the frame along the seam.
 //
 // Two backgrounds:
 //  - a video (the sequence's own clip): its face is tracked once with the AAM (trackVideo), and
@@ -15,6 +18,7 @@
 // the output frame), so rendering runs far faster than real time.
 #include "aam/AamModel.h"
 #include "aam/AamSynthesizer.h"
+#include "render/BackgroundRetiming.h"
 
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
@@ -51,6 +55,12 @@ public:
     double videoFrameRate() const; // 0 for the neutral background
     cv::Size frameSize() const;
 
+    // Frames `index` from now on stand for the background frames of a re-timing of the video to
+    // `frames` frames (new speech in the person's own video, BackgroundRetiming); `frames` 0
+    // undoes it. No effect without a video.
+    void retime(int frames, const BackgroundRetimingOptions &options = {});
+    const BackgroundRetiming &retiming() const { return m_retiming; }
+
     // The untouched background of frame `index` (BGR 8-bit; a copy). The frame last asked for is
     // kept, so a still asked for frame by frame is decoded once, not sought again each time.
     cv::Mat background(int index);
@@ -70,13 +80,23 @@ public:
     void renderInto(int index, const Eigen::VectorXd &features, cv::Mat &frame) const;
     void renderInto(int index, const Eigen::VectorXd &features, cv::Mat &frame,
                     const CompositeOptions &options) const;
-    // How much of each pixel renderInto() replaces for these features (CV_32F, 0..1).
+    // How much of each pixel renderInto() replaces with synthesis for these features (CV_32F,
+    // 0..1; what the warp moves is the recording's own and counts 0).
     cv::Mat synthesisedWeight(int index, const Eigen::VectorXd &features) const;
+    // The 23 points of the face tracked in frame `index`, in its pixels (the mean shape at the
+    // neutral frame's pose without a video).
+    Eigen::VectorXd trackedShape(int index) const;
     // The real frame on the left and the rendered one on the right, one frame (optional labels).
     cv::Mat renderSideBySide(int index, const Eigen::VectorXd &features,
                              const std::string &leftLabel = {}, const std::string &rightLabel = {});
 
 private:
+    // The background video's frame that output frame `index` shows.
+    int sourceFrame(int index) const;
+    // The synthesised inside of the mouth over the warped frame: its alpha (CV_32F, frame size),
+    // zero where the recording's own mouth, moved, already shows as much opening.
+    cv::Mat mouthInteriorAlpha(int index, const Eigen::VectorXd &features) const;
+
     const AamModel &m_aam;
     AamSynthesizer m_synthesizer;
     std::unique_ptr<VideoReader> m_video;
@@ -88,6 +108,7 @@ private:
     std::vector<Similarity> m_poses;   // one per video frame, or one for the neutral frame
     Eigen::MatrixXd m_tracked;
     CompositeOptions m_composite;
+    BackgroundRetiming m_retiming;     // empty: frame i is the video's frame i
 };
 
 } // namespace lipsync

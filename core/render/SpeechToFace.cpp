@@ -39,6 +39,7 @@ namespace {
 struct Loaded
 {
     MediaInfo info;
+    MediaInfo background; // request.backgroundPath's, when given
     std::shared_ptr<const AamModel> aam;
     std::shared_ptr<const DynamicModel> model;
 };
@@ -47,6 +48,11 @@ Loaded loadInputs(const SpeechToFaceRequest &request)
 {
     Loaded in;
     in.info = MediaInfo::probe(request.mediaPath);
+    if (!request.backgroundPath.empty()) {
+        in.background = MediaInfo::probe(request.backgroundPath);
+        if (!in.background.hasVideo || in.background.frameCount == 0)
+            throw Error("no video stream to render the face into", request.backgroundPath);
+    }
     if (!in.info.hasAudio)
         throw Error("no audio stream: lip movements are generated from speech, so the recording "
                     "needs its sound",
@@ -76,9 +82,11 @@ void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, doub
     result.mediaPath = request.mediaPath;
     result.aam = in.aam;
     result.modelKind = in.model->kind();
-    result.hasVideo = in.info.hasVideo && in.info.frameCount > 0;
+    result.backgroundPath = request.backgroundPath;
+    result.hasVideo = in.info.hasVideo && in.info.frameCount > 0 && request.backgroundPath.empty();
     const double modelRate = in.model->frameRate();
     result.frameRate = request.frameRate > 0                      ? request.frameRate
+                       : !request.backgroundPath.empty()          ? in.background.frameRate
                        : result.hasVideo && in.info.frameRate > 0 ? in.info.frameRate
                        : modelRate > 0                            ? modelRate
                                                                   : Project::kAudioOnlyFrameRate;
@@ -174,6 +182,11 @@ std::unique_ptr<FaceRenderer> makeRenderer(const SpeechToFaceResult &result,
 {
     if (!result.aam)
         throw Error("cannot render: nothing was generated", mediaPath);
+    if (!result.backgroundPath.empty()) {
+        auto renderer = std::make_unique<FaceRenderer>(*result.aam, result.backgroundPath, feedback);
+        renderer->retime(result.frameCount());
+        return renderer;
+    }
     if (result.hasVideo && !mediaPath.empty())
         return std::make_unique<FaceRenderer>(*result.aam, mediaPath, feedback);
     return std::make_unique<FaceRenderer>(*result.aam);

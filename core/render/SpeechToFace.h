@@ -42,7 +42,12 @@ struct SpeechToFaceRequest
     AlignerChoice aligner;          // default: the shipped aligner model (ShippedAlignerModel)
     // The aligner already loaded (the studio's AlignerCache), used instead of `aligner` when set.
     std::shared_ptr<const Aligner> loadedAligner;
-    // Frames per second of the generated sequence; 0: the video's rate, for audio only the
+    // Another video of the person to render the new speech into (BackgroundRetiming: played in
+    // runs with cuts where the head's motion allows, for as long as the speech lasts); empty:
+    // the media's own frames, or the neutral frame for sound alone.
+    std::string backgroundPath;
+    // Frames per second of the generated sequence; 0: the video's rate (the background's when
+    // given), for audio only the
     // model's (25 if it records none). A model trained at another rate generates at its own and
     // is sampled at these frames.
     double frameRate = 0.0;
@@ -70,6 +75,7 @@ struct SpeechToFaceResult
     AudioBuffer audio;            // the recording's sound (own rate), first sample with frame 0
                                   // (startTime = frames.startTime())
     bool hasVideo = false;        // the media has a video stream (render into its frames)
+    std::string backgroundPath;   // rendered into this video, re-timed, instead (request.backgroundPath)
     double seconds = 0.0;         // wall time of generateFromSpeech
 
     int frameCount() const { return int(features.rows()); }
@@ -84,8 +90,9 @@ SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedba
 SpeechToFaceResult generateFromPhones(const SpeechToFaceRequest &request, const Tier &phones,
                                       const Tier &words, Feedback &feedback);
 
-// The renderer for a result: into the media's own frames when it has video, else a neutral
-// frame. (Tracking the clip for the pose reports into `feedback`.)
+// The renderer for a result: into the background video re-timed to the result's length when it
+// has one, else into the media's own frames when it has video, else a neutral frame. (Tracking
+// the clip for the pose reports into `feedback`.)
 std::unique_ptr<FaceRenderer> makeRenderer(const SpeechToFaceResult &result,
                                            const std::string &mediaPath, Feedback &feedback);
 

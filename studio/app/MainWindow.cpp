@@ -162,10 +162,14 @@ void MainWindow::addGeneratedFaceMenu(QMenu *view)
     // close on /p b m/ (StudioContext).
     QMenu *face = view->addMenu(tr("Generated &Face"));
     face->setObjectName(QStringLiteral("generatedFaceMenu"));
+    QAction *skin = face->addAction(tr("&Synthesised Skin"));
+    skin->setObjectName(QStringLiteral("synthesizeSkinAction"));
+    skin->setToolTip(tr("Paste the AAM's synthesis of the lower face, skin included; otherwise the recording's own "
+                        "lower face is moved to the generated shape and only the inside of the mouth is synthesised"));
     QAction *whole = face->addAction(tr("&Whole Face (Eyes Included)"));
     whole->setObjectName(QStringLiteral("wholeFaceAction"));
-    whole->setToolTip(tr("Synthesise the whole modelled face; otherwise the lower face is drawn and the recording's "
-                         "own eyes and upper face are kept"));
+    whole->setToolTip(tr("Synthesise the whole modelled face; otherwise the recording's own eyes and upper face are "
+                         "kept"));
     QAction *detail = face->addAction(tr("&Detail from Training Images"));
     detail->setObjectName(QStringLiteral("faceDetailAction"));
     detail->setToolTip(tr("Add the teeth, lip highlights and skin detail of the AAM's nearest training images to the "
@@ -173,12 +177,13 @@ void MainWindow::addGeneratedFaceMenu(QMenu *view)
     QAction *colour = face->addAction(tr("&Match the Frame's Lighting"));
     colour->setObjectName(QStringLiteral("matchColourAction"));
     const CompositeOptions &current = m_context->compositeOptions();
-    for (auto [action, on] : {std::pair{whole, current.region == FaceRegion::Full}, std::pair{detail, current.detail},
-                              std::pair{colour, current.matchColour}}) {
+    for (auto [action, on] : {std::pair{skin, current.synthesizeSkin}, std::pair{whole, current.region == FaceRegion::Full},
+                              std::pair{detail, current.detail}, std::pair{colour, current.matchColour}}) {
         action->setCheckable(true);
         action->setChecked(on);
-        connect(action, &QAction::toggled, this, [this, whole, detail, colour] {
+        connect(action, &QAction::toggled, this, [this, skin, whole, detail, colour] {
             CompositeOptions options;
+            options.synthesizeSkin = skin->isChecked();
             options.region = whole->isChecked() ? FaceRegion::Full : FaceRegion::Lower;
             options.detail = detail->isChecked();
             options.matchColour = colour->isChecked();

@@ -180,7 +180,10 @@ private slots:
         QRectF face;
         for (const LandmarkPoint &p : tracked->points)
             face = face.isNull() ? QRectF(p.x, p.y, 1, 1) : face.united(QRectF(p.x, p.y, 1, 1));
-        const QRect box = face.adjusted(-12, -12, 12, 12).toAlignedRect();
+        // The lower face moves with the neck below the chin and the cheeks beside the jaw (the
+        // recording's own face, warped): the face's box widened by half its width either side
+        // and by 60 % of its height downwards.
+        const QRect box = face.adjusted(-0.5 * face.width(), -12, 0.5 * face.width(), 0.6 * face.height()).toAlignedRect();
         int inside = 0, outside = 0;
         const QImage x = recorded.convertToFormat(QImage::Format_RGB888);
         const QImage y = dpds.convertToFormat(QImage::Format_RGB888);

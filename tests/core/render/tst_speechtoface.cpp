@@ -85,8 +85,10 @@ private slots:
         saveModel(*model, m_model, m_aam.identifier);
     }
 
-    // The clip's own tracked parameters rendered back into it reproduce the face region closely
-    // and leave everything outside the face untouched.
+    // The clip's own tracked parameters rendered back into it give the recording itself (its own
+    // face, moved nowhere); other parameters move the lower face and nothing far from it; the
+    // AAM's synthesis of the skin (synthesizeSkin) reproduces the face region closely and leaves
+    // everything outside it untouched.
     void rendersTrackedFacesBackIntoTheClip()
     {
         Feedback feedback;
@@ -97,10 +99,36 @@ private slots:
         QCOMPARE(renderer.trackedFeatures().rows(), Eigen::Index(75));
         const int i = 40;
         const cv::Mat real = renderer.background(i);
-        const cv::Mat rendered = renderer.render(i, renderer.trackedFeatures().row(i).transpose());
-        cv::Mat diff;
+        const Eigen::VectorXd tracked = renderer.trackedFeatures().row(i).transpose();
+        QCOMPARE(cv::norm(renderer.render(i, tracked), real, cv::NORM_INF), 0.0);
+        // Another mouth: the lower face moves, the eyes and everything beyond the face stay.
+        Eigen::VectorXd other = tracked;
+        other[0] += 3.0 * std::sqrt(m_aam.combinedVariances[0]);
+        cv::Mat diff, changed;
+        cv::absdiff(real, renderer.render(i, other), diff);
+        cv::cvtColor(diff, changed, cv::COLOR_BGR2GRAY);
+        const cv::Rect moved = cv::boundingRect(changed > 2);
+        QVERIFY2(moved.area() > 30 * 30, "the lower face moved");
+        // The eyes (the box of their points) are the recording's.
+        const Eigen::VectorXd points = renderer.trackedShape(i);
+        double left = 1e9, right = 0, top = 1e9, bottom = 0;
+        for (int k = 0; k < 8; ++k) {
+            left = std::min(left, points[2 * k]);
+            right = std::max(right, points[2 * k]);
+            top = std::min(top, points[2 * k + 1]);
+            bottom = std::max(bottom, points[2 * k + 1]);
+        }
+        const cv::Rect eyes(int(left) - 3, int(top) - 3, int(right - left) + 6, int(bottom - top) + 6);
+        QVERIFY2(cv::countNonZero(changed(eyes) > 4) == 0, qPrintable(QString::number(cv::countNonZero(changed(eyes) > 4))));
+        QVERIFY(moved.y < points[2 * 16 + 1]); // the mouth moved
+        QCOMPARE(cv::countNonZero(changed(cv::Rect(0, 0, 40, 288))), 0);
+        QCOMPARE(cv::countNonZero(changed(cv::Rect(320, 0, 40, 288))), 0);
+
+        CompositeOptions skin;
+        skin.synthesizeSkin = true;
+        renderer.setCompositeOptions(skin);
+        const cv::Mat rendered = renderer.render(i, tracked);
         cv::absdiff(real, rendered, diff);
-        cv::Mat changed;
         cv::cvtColor(diff, changed, cv::COLOR_BGR2GRAY);
         const cv::Rect face = cv::boundingRect(changed > 0);
         QVERIFY2(face.area() > 40 * 40, "the face region was drawn");
@@ -108,10 +136,9 @@ private slots:
         const double meanError = cv::mean(diff(face))[0];
         QVERIFY2(meanError < 12.0, qPrintable(QString("mean difference %1 in the face box").arg(meanError)));
         // Other parameters give another face.
-        Eigen::VectorXd other = renderer.trackedFeatures().row(i).transpose();
-        other[0] += 3.0 * std::sqrt(m_aam.combinedVariances[0]);
         cv::absdiff(rendered, renderer.render(i, other), diff);
         QVERIFY(cv::mean(diff(face))[0] > 1.0);
+        renderer.setCompositeOptions({});
         // Wrong dimension: a clear error.
         QVERIFY_THROWS_EXCEPTION(Error, renderer.render(i, Eigen::VectorXd::Zero(3)));
 

@@ -1,0 +1,35 @@
+#pragma once
+// The recording's own face moved to a generated shape (Video Rewrite's and Ezzat et al.'s way to
+// photorealism: keep the person's pixels — skin, moles, stubble, lighting — and move them): a
+// thin-plate spline (ThinPlateWarp) takes the mouth and lower jaw points of the 23-point shape tracked
+// in the frame to where the generated shape puts them. The eyes and the jaw line's upper ends
+// (level with the nose) are held where they are, and so
+// is a ring of anchors around the lower face that reaches down the neck, so the chin and the neck
+// below it move together (no second jaw line) and the warp fades out before the ring: there is no
+// edge to see, at any pose, since nothing is pasted. What the recording cannot supply — the
+// inside of a mouth opened wider than it was recorded — is drawn by the caller (mouthInterior).
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include <vector>
+
+namespace lipsync {
+
+struct LowerFaceWarp
+{
+    // Warps `frame` (CV_8UC3) in place from `tracked` to `generated` (23-point shapes in its
+    // pixels). Returns the region changed (empty if nothing was).
+    static cv::Rect apply(cv::Mat &frame, const Eigen::VectorXd &tracked, const Eigen::VectorXd &generated);
+
+    // The control points' sources and targets apply() uses (the anchors included).
+    static void controlPoints(const Eigen::VectorXd &tracked, const Eigen::VectorXd &generated,
+                              Eigen::VectorXd &sources, Eigen::VectorXd &targets, cv::Rect2d &region);
+
+    // The inside of the lips of `shape` in frame pixels: the lens between the mouth corners bounded
+    // by the quadratic curves through the inner-lip top and bottom points.
+    static std::vector<cv::Point2f> mouthInterior(const Eigen::VectorXd &shape);
+    // Inner-lip opening of `shape` (pixels between the inner-lip centres).
+    static double opening(const Eigen::VectorXd &shape);
+};
+
+} // namespace lipsync

@@ -1,0 +1,153 @@
+#include "render/ThinPlateWarp.h"
+
+#include <Eigen/Dense>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lipsync {
+
+namespace {
+
+double kernel(double r2)
+{
+    return r2 > 1e-12 ? r2 * std::log(r2) : 0.0;
+}
+
+} // namespace
+
+ThinPlateWarp::ThinPlateWarp(const Eigen::VectorXd &sources, const Eigen::VectorXd &targets, double regularisation)
+{
+    const Eigen::Index n = targets.size() / 2;
+    if (n < 3 || sources.size() != targets.size())
+        return;
+    m_points.resize(n, 2);
+    Eigen::MatrixX2d d(n, 2);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        m_points(i, 0) = targets[2 * i];
+        m_points(i, 1) = targets[2 * i + 1];
+        d(i, 0) = targets[2 * i] - sources[2 * i];
+        d(i, 1) = targets[2 * i + 1] - sources[2 * i + 1];
+    }
+    // [K + λI  P; Pᵀ 0] [w; a] = [d; 0], P = [1 x y] (Bookstein 1989).
+    Eigen::MatrixXd system = Eigen::MatrixXd::Zero(n + 3, n + 3);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        for (Eigen::Index j = 0; j < n; ++j)
+            system(i, j) = kernel((m_points.row(i) - m_points.row(j)).squaredNorm());
+        system(i, i) += regularisation;
+        system(i, n) = system(n, i) = 1.0;
+        system(i, n + 1) = system(n + 1, i) = m_points(i, 0);
+        system(i, n + 2) = system(n + 2, i) = m_points(i, 1);
+    }
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n + 3, 2);
+    rhs.topRows(n) = d;
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(system);
+    if (qr.rank() < n + 3)
+        return; // coincident or collinear points
+    const Eigen::MatrixXd solution = qr.solve(rhs);
+    if (!solution.allFinite())
+        return;
+    m_weights = solution.topRows(n);
+    m_affine = solution.bottomRows(3);
+    m_valid = true;
+}
+
+Eigen::Vector2d ThinPlateWarp::displacement(const Eigen::Vector2d &p) const
+{
+    if (!m_valid)
+        return Eigen::Vector2d::Zero();
+    Eigen::Vector2d d = m_affine.row(0).transpose() + p.x() * m_affine.row(1).transpose()
+                        + p.y() * m_affine.row(2).transpose();
+    for (Eigen::Index i = 0; i < m_points.rows(); ++i) {
+        const double dx = p.x() - m_points(i, 0), dy = p.y() - m_points(i, 1);
+        d += kernel(dx * dx + dy * dy) * m_weights.row(i).transpose();
+    }
+    return d;
+}
+
+void ThinPlateWarp::gridMaps(cv::Rect region, double falloff, cv::Mat &gridX, cv::Mat &gridY) const
+{
+    // The field on a coarse grid over the region (its last nodes at or past the far border).
+    const int gw = (region.width - 1) / kGridStep + 2;
+    const int gh = (region.height - 1) / kGridStep + 2;
+    gridX.create(gh, gw, CV_32F);
+    gridY.create(gh, gw, CV_32F);
+    const double fade = std::max(1.0, falloff);
+    for (int gy = 0; gy < gh; ++gy) {
+        for (int gx = 0; gx < gw; ++gx) {
+            const double x = region.x + gx * kGridStep;
+            const double y = region.y + gy * kGridStep;
+            // Distance to the region's border, in pixels: the displacement fades to 0 there.
+            const double inside = std::min({x - region.x, region.x + region.width - 1 - x, y - region.y,
+                                             region.y + region.height - 1 - y});
+            const double u = std::clamp(inside / fade, 0.0, 1.0); // 0 at and past the border
+            const double keep = u * u * (3.0 - 2.0 * u);
+            const Eigen::Vector2d d = keep * displacement({x, y});
+            gridX.at<float>(gy, gx) = float(x - d.x());
+            gridY.at<float>(gy, gx) = float(y - d.y());
+        }
+    }
+}
+
+double ThinPlateWarp::minJacobian(cv::Rect region, double falloff) const
+{
+    if (!m_valid || region.width < 2 || region.height < 2)
+        return 1.0;
+    cv::Mat gx, gy;
+    gridMaps(region, falloff, gx, gy);
+    double smallest = 1.0;
+    const double step = kGridStep;
+    for (int y = 0; y + 1 < gx.rows; ++y)
+        for (int x = 0; x + 1 < gx.cols; ++x) {
+            const double a = (gx.at<float>(y, x + 1) - gx.at<float>(y, x)) / step;
+            const double b = (gx.at<float>(y + 1, x) - gx.at<float>(y, x)) / step;
+            const double c = (gy.at<float>(y, x + 1) - gy.at<float>(y, x)) / step;
+            const double d = (gy.at<float>(y + 1, x) - gy.at<float>(y, x)) / step;
+            smallest = std::min(smallest, a * d - b * c);
+        }
+    return smallest;
+}
+
+bool ThinPlateWarp::apply(cv::Mat &image, cv::Rect region, double falloff) const
+{
+    const cv::Mat source = image.clone();
+    return apply(source, image, region, falloff);
+}
+
+bool ThinPlateWarp::apply(const cv::Mat &source, cv::Mat &image, cv::Rect region, double falloff) const
+{
+    region &= cv::Rect(0, 0, image.cols, image.rows);
+    if (!m_valid || region.width < 2 || region.height < 2 || source.size() != image.size()
+        || source.type() != image.type())
+        return false;
+    cv::Mat gridX, gridY;
+    gridMaps(region, falloff, gridX, gridY);
+    const int gw = gridX.cols, gh = gridX.rows;
+    // Bilinear between grid nodes: resize maps node centres, so interpolate by hand.
+    cv::Mat mapX(region.size(), CV_32F), mapY(region.size(), CV_32F);
+    for (int y = 0; y < region.height; ++y) {
+        const float fy = float(y) / kGridStep;
+        const int y0 = std::min(int(fy), gh - 1), y1 = std::min(y0 + 1, gh - 1);
+        const float ty = fy - float(y0);
+        float *mx = mapX.ptr<float>(y), *my = mapY.ptr<float>(y);
+        for (int x = 0; x < region.width; ++x) {
+            const float fx = float(x) / kGridStep;
+            const int x0 = std::min(int(fx), gw - 1), x1 = std::min(x0 + 1, gw - 1);
+            const float tx = fx - float(x0);
+            auto lerp = [&](const cv::Mat &g) {
+                const float top = (1 - tx) * g.at<float>(y0, x0) + tx * g.at<float>(y0, x1);
+                const float bottom = (1 - tx) * g.at<float>(y1, x0) + tx * g.at<float>(y1, x1);
+                return (1 - ty) * top + ty * bottom;
+            };
+            mx[x] = lerp(gridX);
+            my[x] = lerp(gridY);
+        }
+    }
+    cv::Mat warped;
+    cv::remap(source, warped, mapX, mapY, cv::INTER_CUBIC, cv::BORDER_REPLICATE);
+    warped.copyTo(image(region));
+    return true;
+}
+
+} // namespace lipsync

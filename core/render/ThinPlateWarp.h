@@ -1,0 +1,54 @@
+#pragma once
+// A smooth warp of an image that moves a few control points to new places: the thin-plate spline
+// through the displacements (Bookstein 1989), d(p) = a0 + A p + sum_i w_i U(|p - q_i|),
+// U(r) = r^2 log r^2, interpolating d(q_i) = q_i - s_i at the targets q_i of the sources s_i.
+// The output pixel p takes the input at p - d(p) (a backward map, so every output pixel is
+// filled once). Points that must stay put are control points with s_i = q_i.
+//
+// The field is evaluated on a grid of `kGridStep` pixels and interpolated between (the spline
+// is smooth at that scale), and only inside `region`: outside it the image is unchanged, and
+// `falloff` pixels inside its border the displacement fades to zero (smoothstep), so the warped
+// region joins the untouched frame without a seam.
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+namespace lipsync {
+
+class ThinPlateWarp
+{
+public:
+    static constexpr int kGridStep = 4;
+
+    // Sources and targets as flat (x0, y0, x1, y1, ...) pixel coordinates of the same length.
+    // `regularisation` (λ, in squared pixels) relaxes interpolation into smoothing.
+    ThinPlateWarp(const Eigen::VectorXd &sources, const Eigen::VectorXd &targets, double regularisation = 0.0);
+
+    // The displacement d(p) at a pixel (the input is read at p - d(p)).
+    Eigen::Vector2d displacement(const Eigen::Vector2d &p) const;
+
+    // Warps `image` (any type cv::remap takes) inside `region` in place; returns false (and leaves
+    // it) if the region is empty or the spline could not be fitted.
+    bool apply(cv::Mat &image, cv::Rect region, double falloff) const;
+    // The same, reading from `source` (the same size and type as `image`) and writing the
+    // warped region into `image`.
+    bool apply(const cv::Mat &source, cv::Mat &image, cv::Rect region, double falloff) const;
+
+    // The smallest Jacobian determinant of the map p -> p - d(p) over `region` (with the same
+    // fade as apply()), on the grid: below 0 the warp folds the image over itself (a lip pulled
+    // through the other), near 0 it crushes it. 1 for an invalid spline (apply() does nothing).
+    double minJacobian(cv::Rect region, double falloff) const;
+
+    bool valid() const { return m_valid; }
+
+private:
+    // Where the grid's nodes read the input (absolute pixels), gw x gh nodes every kGridStep
+    // pixels from the region's corner.
+    void gridMaps(cv::Rect region, double falloff, cv::Mat &gridX, cv::Mat &gridY) const;
+
+    Eigen::MatrixX2d m_points; // the targets q_i
+    Eigen::MatrixX2d m_weights; // w_i
+    Eigen::Matrix<double, 3, 2> m_affine; // a0 (row 0), A (rows 1-2)
+    bool m_valid = false;
+};
+
+} // namespace lipsync

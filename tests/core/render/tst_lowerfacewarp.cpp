@@ -1,0 +1,167 @@
+// ThinPlateWarp and LowerFaceWarp: the spline interpolates its control points' displacements,
+// fades to nothing at its region's border, and leaves an image unchanged when nothing moves; the
+// lower-face warp moves the pixels at the mouth to where the generated shape puts the mouth,
+// keeps the eyes and everything outside the face, and the mouth's inside is the lens between the
+// inner-lip points.
+#include "render/LowerFaceWarp.h"
+#include "render/ThinPlateWarp.h"
+
+#include "aam/LandmarkScheme.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <QTest>
+
+#include <cmath>
+
+using namespace lipsync;
+
+namespace {
+
+// A textured test image: a smooth gradient plus a grid of dots, so any move shows.
+cv::Mat pattern(int w, int h)
+{
+    cv::Mat image(h, w, CV_8UC3);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            image.at<cv::Vec3b>(y, x) = cv::Vec3b(uchar(x * 255 / w), uchar(y * 255 / h), uchar((x * 7 + y * 13) % 256));
+    return image;
+}
+
+// The 23-point template shape scaled into a w x h frame (the face in its middle).
+Eigen::VectorXd face(int w, int h)
+{
+    const Eigen::VectorXd t = templateShape();
+    double top = 1e9, bottom = -1e9;
+    for (Eigen::Index i = 1; i < t.size(); i += 2) {
+        top = std::min(top, t[i]);
+        bottom = std::max(bottom, t[i]);
+    }
+    const double scale = 0.45 * h / std::max(1e-9, bottom - top);
+    Eigen::VectorXd s(t.size());
+    for (Eigen::Index i = 0; i < t.size(); i += 2) {
+        s[i] = 0.5 * w + scale * t[i];
+        s[i + 1] = 0.45 * h + scale * t[i + 1];
+    }
+    return s;
+}
+
+} // namespace
+
+class TestLowerFaceWarp : public QObject
+{
+    Q_OBJECT
+private slots:
+    void splineInterpolatesItsPoints()
+    {
+        Eigen::VectorXd from(10), to(10);
+        from << 10, 10, 90, 10, 90, 90, 10, 90, 50, 50;
+        to = from;
+        to[8] = 56; // the centre moves 6 px right and 3 down
+        to[9] = 53;
+        const ThinPlateWarp warp(from, to);
+        QVERIFY(warp.valid());
+        for (int i = 0; i < 5; ++i) {
+            const Eigen::Vector2d d = warp.displacement(to.segment<2>(2 * i));
+            QVERIFY2((d - (to - from).segment<2>(2 * i)).norm() < 1e-9, qPrintable(QString::number(i)));
+        }
+        // Coincident points cannot be fitted.
+        Eigen::VectorXd same(6);
+        same << 1, 1, 1, 1, 1, 1;
+        QVERIFY(!ThinPlateWarp(same, same).valid());
+    }
+
+    void imageMovesInsideItsRegionOnly()
+    {
+        const cv::Mat image = pattern(100, 100);
+        Eigen::VectorXd from(10), to(10);
+        from << 20, 20, 80, 20, 80, 80, 20, 80, 50, 50;
+        to = from;
+        cv::Mat same = image.clone();
+        QVERIFY(ThinPlateWarp(from, to).apply(same, cv::Rect(10, 10, 80, 80), 8.0));
+        QVERIFY(cv::norm(same, image, cv::NORM_INF) <= 1.0); // cubic resampling at integer points
+        to[8] = 56;
+        cv::Mat moved = image.clone();
+        QVERIFY(ThinPlateWarp(from, to).apply(moved, cv::Rect(10, 10, 80, 80), 8.0));
+        // The pixel at the moved point's target shows what was at its source.
+        QVERIFY(cv::norm(moved.at<cv::Vec3b>(50, 56), image.at<cv::Vec3b>(50, 50)) <= 3.0);
+        // Outside the region nothing changes; at its border hardly anything.
+        cv::Mat outside = moved.clone();
+        image(cv::Rect(10, 10, 80, 80)).copyTo(outside(cv::Rect(10, 10, 80, 80)));
+        QCOMPARE(cv::norm(outside, image, cv::NORM_INF), 0.0);
+        QVERIFY(cv::norm(moved.row(10), image.row(10), cv::NORM_INF) <= 1.0);
+    }
+
+    void lowerFaceMovesEyesStay()
+    {
+        const cv::Mat image = pattern(360, 288);
+        const Eigen::VectorXd tracked = face(360, 288);
+        cv::Mat unchanged = image.clone();
+        QVERIFY(LowerFaceWarp::apply(unchanged, tracked, tracked).empty());
+        // The jaw and lower lip drop 6 px (the mouth opens).
+        Eigen::VectorXd generated = tracked;
+        for (int i : {13, 14, 15, 17, 19, 20, 21})
+            generated[2 * i + 1] += 6.0;
+        cv::Mat frame = image.clone();
+        const cv::Rect region = LowerFaceWarp::apply(frame, tracked, generated);
+        QVERIFY(!region.empty());
+        // The lower lip's centre now shows what was 6 px above it.
+        const int lx = int(std::lround(generated[2 * 14])), ly = int(std::lround(generated[2 * 14 + 1]));
+        QVERIFY(cv::norm(frame.at<cv::Vec3b>(ly, lx), image.at<cv::Vec3b>(ly - 6, lx)) <= 6.0);
+        // The eyes are where they were.
+        for (int i = 0; i < 8; ++i) {
+            const int x = int(std::lround(tracked[2 * i])), y = int(std::lround(tracked[2 * i + 1]));
+            QVERIFY2(cv::norm(frame.at<cv::Vec3b>(y, x), image.at<cv::Vec3b>(y, x)) <= 2.0, qPrintable(QString::number(i)));
+        }
+        // Outside the region the frame is untouched.
+        cv::Mat outside = frame.clone();
+        image(region).copyTo(outside(region));
+        QCOMPARE(cv::norm(outside, image, cv::NORM_INF), 0.0);
+        // The inside of the mouth: a lens from corner to corner through the inner-lip points.
+        generated[2 * 17 + 1] += 4.0;
+        const std::vector<cv::Point2f> lens = LowerFaceWarp::mouthInterior(generated);
+        QVERIFY(cv::pointPolygonTest(lens, cv::Point2f(float(0.5 * (generated[32] + generated[34])),
+                                                          float(0.5 * (generated[33] + generated[35]))), false) > 0);
+        QVERIFY(std::abs(LowerFaceWarp::opening(generated) - (generated[35] - generated[33])) < 1.0);
+    }
+
+    // An open mouth asked to close past itself (the inner lips 12 px through each other, the
+    // corners pulled in): the frame is squeezed, never folded. A frame that encodes every pixel's
+    // own row shows it: down any column the rows read stay in order.
+    void neverFoldsTheFace()
+    {
+        cv::Mat rows(288, 360, CV_8UC3);
+        for (int y = 0; y < 288; ++y)
+            for (int x = 0; x < 360; ++x)
+                rows.at<cv::Vec3b>(y, x) = cv::Vec3b(uchar(y * 255 / 287), uchar(x * 255 / 359), 0);
+        Eigen::VectorXd tracked = face(360, 288);
+        tracked[2 * 17 + 1] += 10.0; // recorded open
+        for (int i : {13, 14, 15})
+            tracked[2 * i + 1] += 10.0;
+        Eigen::VectorXd generated = tracked;
+        generated[2 * 16 + 1] += 16.0; // the upper lip pulled down past the lower
+        generated[2 * 17 + 1] -= 16.0;
+        generated[2 * 10 + 1] += 14.0;
+        generated[2 * 14 + 1] -= 14.0;
+        generated[2 * 8] += 12.0;
+        generated[2 * 12] -= 12.0;
+        // The plain spline through these points folds.
+        Eigen::VectorXd sources, targets;
+        cv::Rect2d ring;
+        LowerFaceWarp::controlPoints(tracked, generated, sources, targets, ring);
+        const cv::Rect box = cv::Rect(ring) & cv::Rect(0, 0, 360, 288);
+        QVERIFY2(ThinPlateWarp(sources, targets).minJacobian(box, 20.0) < 0.25,
+                 qPrintable(QString::number(ThinPlateWarp(sources, targets).minJacobian(box, 20.0))));
+        cv::Mat frame = rows.clone();
+        QVERIFY(!LowerFaceWarp::apply(frame, tracked, generated).empty());
+        int reversals = 0;
+        for (int x = 0; x < 360; ++x)
+            for (int y = 1; y < 288; ++y)
+                reversals += frame.at<cv::Vec3b>(y, x)[0] + 2 < frame.at<cv::Vec3b>(y - 1, x)[0];
+        QCOMPARE(reversals, 0);
+        QVERIFY(cv::norm(frame, rows, cv::NORM_INF) > 5); // and it did move
+    }
+};
+
+QTEST_GUILESS_MAIN(TestLowerFaceWarp)
+#include "tst_lowerfacewarp.moc"
