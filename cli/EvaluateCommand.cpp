@@ -29,25 +29,31 @@ void printRealism(const RealismResult &result)
                 "%d of %d /p b m/ segments closed in the recordings\n",
                 result.folds, result.sequences, result.frames, result.skippedFrames, result.closedRecorded,
                 result.bilabials);
-    std::printf("%-8s", "method");
-    for (const std::string &metric : realismMetrics())
-        std::printf(" %19s", metric.c_str());
+    // One row per measure, one column per method.
+    std::printf("%-25s", "");
+    for (const RealismMethod &m : result.methods)
+        std::printf(" %20s", m.kind.c_str());
     std::printf("\n");
-    for (const RealismMethod &m : result.methods) {
-        std::printf("%-8s", m.kind.c_str());
-        for (const std::string &metric : realismMetrics()) {
+    for (const std::string &metric : realismMetrics()) {
+        std::printf("%-25s", metric.c_str());
+        for (const RealismMethod &m : result.methods) {
             const MetricSummary &s = m.metrics.at(metric);
-            if (std::isfinite(s.ci95))
-                std::printf(" %9.3g ± %-7.2g", s.mean, s.ci95);
+            if (!std::isfinite(s.mean))
+                std::printf(" %20s", "-");
+            else if (std::isfinite(s.ci95))
+                std::printf(" %11.3g ± %-6.2g", s.mean, s.ci95);
             else
-                std::printf(" %9.3g %-9s", s.mean, "");
+                std::printf(" %11.3g %-8s", s.mean, "");
         }
         std::printf("\n");
     }
-    std::printf("correlation: Pearson of the lip opening with the recording's; articulation, closure, "
-                "sharpness: generated / recorded; lag: frames, generated minus recorded; seamDeltaE: "
-                "CIE Lab dE across the synthesised region's edge (seamDeltaERecorded: the recording at the "
-                "same pixels)\n");
+    std::printf("correlation: Pearson of the lip opening with the recording's (speech: from the first to the last "
+                "spoken phone; control: each recording against another sequence's render); articulation, "
+                "closure, sharpness: generated / recorded; closureRecall: /p b m/ closed in both / in the "
+                "recording; falseClosures: closures outside /p b m/ per second of speech; lag: frames, generated "
+                "minus recorded; seamDeltaE: CIE Lab dE across the synthesised region's edge (Recorded: the "
+                "recording at the same pixels); observer: a classifier's held-out accuracy telling the encoded "
+                "render from the encoded recording (0.5: it cannot)\n");
 }
 
 int runRealism(const CommandLine &args, const EvaluationOptions &evaluation)

@@ -311,6 +311,16 @@
         <translation>Korrelation der Lippenöffnung</translation>
     </message>
     <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="48"/>
+        <source>lip-opening correlation in speech</source>
+        <translation>Korrelation der Lippenöffnung beim Sprechen</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="49"/>
+        <source>machine observer (0.5: fooled)</source>
+        <translation>Maschineller Beobachter (0,5: getäuscht)</translation>
+    </message>
+    <message>
         <location filename="../studio/plots/EvaluationChart.cpp" line="47"/>
         <source>articulation (s.d. ratio)</source>
         <translation>Artikulation (Verhältnis der Standardabweichungen)</translation>

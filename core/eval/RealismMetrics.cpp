@@ -170,6 +170,59 @@ int closedSegments(const std::vector<double> &opening, const std::vector<FrameRa
     return closed;
 }
 
+int closedInBoth(const std::vector<double> &generated, const std::vector<double> &recorded,
+                 const std::vector<FrameRange> &segments, double level)
+{
+    int both = 0;
+    for (const FrameRange &s : segments)
+        both += closedSegments(generated, {s}, level) > 0 && closedSegments(recorded, {s}, level) > 0;
+    return both;
+}
+
+FrameRange speechFrames(const Tier &phones, const FrameClock &frames)
+{
+    double first = INFINITY, last = -INFINITY;
+    for (const Interval &i : phones.intervals)
+        if (!PhoneSet::isSilence(i.label) && i.end > i.start) {
+            first = std::min(first, i.start);
+            last = std::max(last, i.end);
+        }
+    if (!(last > first) || frames.empty() || last <= frames.startTime() || first >= frames.endTime())
+        return {0, -1};
+    return {frames.frameAt(first), frames.frameAt(last - 1e-9)};
+}
+
+int closuresOutside(const std::vector<double> &opening, const std::vector<FrameRange> &segments,
+                    const FrameRange &speech, double level)
+{
+    int runs = 0;
+    const int last = std::min(speech.last, int(opening.size()) - 1);
+    for (int t = std::max(0, speech.first); t <= last;) {
+        const double o = opening[size_t(t)];
+        if (!(std::isfinite(o) && o <= level)) {
+            ++t;
+            continue;
+        }
+        int end = t;
+        while (end + 1 <= last && std::isfinite(opening[size_t(end + 1)]) && opening[size_t(end + 1)] <= level)
+            ++end;
+        bool bilabial = false;
+        for (const FrameRange &s : segments)
+            bilabial = bilabial || (s.first <= end && t <= s.last);
+        runs += !bilabial;
+        t = end + 1;
+    }
+    return runs;
+}
+
+std::vector<double> onlyWithin(std::vector<double> signal, const FrameRange &range)
+{
+    for (int t = 0; t < int(signal.size()); ++t)
+        if (t < range.first || t > range.last)
+            signal[size_t(t)] = std::numeric_limits<double>::quiet_NaN();
+    return signal;
+}
+
 std::vector<double> audioEnergyPerFrame(const AudioBuffer &audio, const FrameClock &clock)
 {
     const int frames = clock.count();

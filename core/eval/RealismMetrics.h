@@ -17,6 +17,10 @@
 //    with the audio energy at frame t (positive: the lips follow the sound).
 //  - gradientEnergy: mean squared Laplacian response of the grey image in a box (sharpness).
 //  - seamDeltaE: mean CIE Lab ΔE (1976) across the edge of a synthesised region.
+//  - speech frames: from the first to the last spoken (not silent) phone, the stretch where the
+//    lips must follow the words, not the silence-speech-silence shape every clip shares.
+//  - closures outside /p b m/: runs of closed frames (at or below the closed level) inside the
+//    speech that touch no bilabial segment: lips shut where no /p b m/ asks for it.
 #include "annotation/FrameClock.h"
 #include "annotation/Tier.h"
 
@@ -52,6 +56,17 @@ std::vector<FrameRange> bilabialSegments(const Tier &phones, const FrameClock &f
 // How many segments have a frame whose opening is at most `level` (frames without a face skipped).
 int closedSegments(const std::vector<double> &opening, const std::vector<FrameRange> &segments,
                    double level);
+// The segments closed in both openings.
+int closedInBoth(const std::vector<double> &generated, const std::vector<double> &recorded,
+                 const std::vector<FrameRange> &segments, double level);
+// The frames of `frames` from the first to the last non-silent phone of `phones` (last < first:
+// no speech).
+FrameRange speechFrames(const Tier &phones, const FrameClock &frames);
+// Runs of frames in `speech` with opening <= level that overlap none of `segments`.
+int closuresOutside(const std::vector<double> &opening, const std::vector<FrameRange> &segments,
+                    const FrameRange &speech, double level);
+// `signal` with the frames outside `range` set to NaN.
+std::vector<double> onlyWithin(std::vector<double> signal, const FrameRange &range);
 
 // Log energy (dB) of the audio in each video frame's interval [time(t), endTime(t)).
 std::vector<double> audioEnergyPerFrame(const AudioBuffer &audio, const FrameClock &frames);

@@ -6,6 +6,8 @@
 #include "align/StreamingPhoneRecognizer.h"
 #include "dynamics/LabelledFolder.h"
 #include "eval/CrossValidation.h"
+#include "eval/EncodedAppearance.h"
+#include "eval/MachineObserver.h"
 #include "eval/RealismMetrics.h"
 #include "eval/Statistics.h"
 #include "io/AudioDecoder.h"
@@ -30,8 +32,14 @@ namespace lipsync {
 
 const std::vector<std::string> &realismMetrics()
 {
-    static const std::vector<std::string> names{"correlation", "articulation", "closure", "lag",
-                                                "sharpness", "seamDeltaE", "seamDeltaERecorded"};
+    static const std::vector<std::string> names{"correlation",        "articulation",
+                                                "closure",            "lag",
+                                                "sharpness",          "seamDeltaE",
+                                                "seamDeltaERecorded", "speechCorrelation",
+                                                "controlCorrelation", "controlSpeechCorrelation",
+                                                "closureRecall",      "falseClosures",
+                                                "falseClosuresRecorded", "observerFrames",
+                                                "observerVideos"};
     return names;
 }
 
@@ -39,6 +47,10 @@ namespace {
 
 constexpr double kNoFigure = std::numeric_limits<double>::quiet_NaN();
 const std::string kTracked = "tracked";
+const std::string kReencoded = "re-encoded recording";
+// The machine observer reads every other frame: neighbouring frames look alike, and memory stays
+// small over hundreds of sequences.
+constexpr int kObserverStep = 2;
 const std::string kLive = "live ";
 
 // The phone of each of `frames` video frames as live recognition hears the sequence's sound.
@@ -107,26 +119,36 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
     std::vector<std::vector<double>> opening(methods, recordedOpening), sharpness(methods, recordedOpening),
         seam(methods, recordedOpening), seamRecorded(methods, recordedOpening);
     std::vector<int> skipped(methods, 0);
+    std::vector<std::optional<cv::Rect2d>> boxes(static_cast<size_t>(frames));
+    EncodedAppearance tapes(int(methods) + 1);
     cv::Mat generated;
     for (int t = 0; t < frames; ++t) {
         feedback.throwIfCanceled();
         const cv::Mat recorded = renderer.background(t);
+        tapes.add(0, recorded);
         const std::vector<FaceDetection> faces = detector.detect(recorded);
         const std::optional<cv::Rect2d> box
             = faces.empty() ? std::nullopt : detector.dlibFaceBox(recorded, faces.front());
         const Eigen::VectorXd points = box ? detector.dlibLandmarksInBox(recorded, *box) : Eigen::VectorXd();
         if (points.size() != 136) {
             ++out.skippedFrames;
+            for (size_t m = 0; m < methods; ++m) {
+                recorded.copyTo(generated);
+                renderer.renderInto(t, renderings[m].features.row(t).transpose(), generated);
+                tapes.add(int(m) + 1, generated);
+            }
             continue;
         }
         const size_t ut = size_t(t);
         recordedOpening[ut] = innerLipOpening(points);
         const cv::Rect2d mouth = mouthBox(points);
+        boxes[ut] = mouth;
         recordedSharpness[ut] = gradientEnergy(recorded, mouth);
         for (size_t m = 0; m < methods; ++m) {
             const Eigen::VectorXd c = renderings[m].features.row(t).transpose();
             recorded.copyTo(generated);
             renderer.renderInto(t, c, generated);
+            tapes.add(int(m) + 1, generated);
             const Eigen::VectorXd rendered = detector.dlibLandmarksInBox(generated, *box);
             if (rendered.size() != 136)
                 ++skipped[m];
@@ -153,10 +175,23 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
     const std::vector<FrameRange> bilabials = bilabialSegments(sequence.phones, sequence.clock().slice(0, frames));
     out.bilabials = int(bilabials.size());
     out.closedRecorded = closedSegments(recordedOpening, bilabials, out.closedLevel);
+    const FrameClock clock = sequence.clock().slice(0, frames);
+    out.speech = speechFrames(sequence.phones, clock);
+    out.speechSeconds = out.speech.last >= out.speech.first
+                            ? clock.endTime(out.speech.last) - clock.time(out.speech.first)
+                            : 0.0;
+    out.falseClosuresRecorded = closuresOutside(recordedOpening, bilabials, out.speech, out.closedLevel);
     out.recordedOpening = recordedOpening;
+    EncodedAppearance::Result seen = tapes.appearance(boxes, kObserverStep);
+    out.recordedAppearance = std::move(seen.streams[0]);
+    out.reencodedAppearance = std::move(seen.reencoded);
     for (size_t m = 0; m < methods; ++m) {
         RealismSequenceMethod r;
         r.correlation = pearsonOverFrames(opening[m], recordedOpening);
+        r.speechCorrelation = pearsonOverFrames(onlyWithin(opening[m], out.speech), recordedOpening);
+        r.closedBoth = closedInBoth(opening[m], recordedOpening, bilabials, out.closedLevel);
+        r.falseClosures = closuresOutside(opening[m], bilabials, out.speech, out.closedLevel);
+        r.appearance = std::move(seen.streams[m + 1]);
         r.articulation = articulationRatio(opening[m], recordedOpening);
         r.lag = avLag(opening[m], energy, options.maxLag) - out.lagRecorded;
         r.sharpness = ratioOfMeans(sharpness[m], recordedSharpness);
@@ -171,29 +206,83 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
 }
 
 // The value of `metric` over one fold's sequences for one method (§6.3: the mean over the
-// sequences where it is defined; closure pools the fold's segments).
+// sequences where it is defined; closure counts pool the fold's segments and speech).
 double foldValue(const std::vector<const RealismSequence *> &fold, const std::string &method,
                  const std::string &metric)
 {
-    if (metric == "closure") {
+    if (fold.empty() || !fold.front()->methods.count(method))
+        return kNoFigure;
+    if (metric == "closure" || metric == "closureRecall") {
         int generated = 0, recorded = 0;
         for (const RealismSequence *s : fold) {
-            generated += s->methods.at(method).closed;
+            const RealismSequenceMethod &r = s->methods.at(method);
+            generated += metric == "closure" ? r.closed : r.closedBoth;
             recorded += s->closedRecorded;
         }
         return recorded > 0 ? double(generated) / recorded : kNoFigure;
     }
+    if (metric == "falseClosures" || metric == "falseClosuresRecorded") {
+        double closures = 0, seconds = 0;
+        for (const RealismSequence *s : fold) {
+            closures += metric == "falseClosures" ? s->methods.at(method).falseClosures : s->falseClosuresRecorded;
+            seconds += s->speechSeconds;
+        }
+        return seconds > 0 ? closures / seconds : kNoFigure;
+    }
     std::vector<double> values;
-    for (const RealismSequence *s : fold) {
-        const RealismSequenceMethod &r = s->methods.at(method);
-        values.push_back(metric == "correlation"    ? r.correlation
-                         : metric == "articulation" ? r.articulation
-                         : metric == "lag"          ? r.lag
-                         : metric == "sharpness"    ? r.sharpness
-                         : metric == "seamDeltaE"   ? r.seamDeltaE
-                                                    : r.seamDeltaERecorded);
+    for (size_t k = 0; k < fold.size(); ++k) {
+        const RealismSequence &s = *fold[k];
+        const RealismSequenceMethod &r = s.methods.at(method);
+        if (metric == "controlCorrelation" || metric == "controlSpeechCorrelation") {
+            // The recording against the render of another sequence of the fold.
+            if (fold.size() < 2)
+                return kNoFigure;
+            const std::vector<double> &other = fold[(k + 1) % fold.size()]->methods.at(method).opening;
+            values.push_back(pearsonOverFrames(other, metric == "controlCorrelation"
+                                                          ? s.recordedOpening
+                                                          : onlyWithin(s.recordedOpening, s.speech)));
+            continue;
+        }
+        values.push_back(metric == "correlation"         ? r.correlation
+                         : metric == "speechCorrelation" ? r.speechCorrelation
+                         : metric == "articulation"      ? r.articulation
+                         : metric == "lag"               ? r.lag
+                         : metric == "sharpness"         ? r.sharpness
+                         : metric == "seamDeltaE"        ? r.seamDeltaE
+                         : metric == "seamDeltaERecorded" ? r.seamDeltaERecorded
+                                                          : kNoFigure);
     }
     return meanOfFinite(values);
+}
+
+// The machine observer's held-out accuracy per fold for `method`: the recording against its
+// render, or (kReencoded) against its own second encode.
+std::vector<ObserverAccuracy> observerFolds(const std::vector<std::vector<const RealismSequence *>> &byFold,
+                                            const std::string &method)
+{
+    std::vector<ObservedClip> clips;
+    for (size_t f = 0; f < byFold.size(); ++f)
+        for (const RealismSequence *s : byFold[f]) {
+            if (method != kReencoded && !s->methods.count(method))
+                continue;
+            clips.push_back({int(f), s->recordedAppearance,
+                             method == kReencoded ? s->reencodedAppearance : s->methods.at(method).appearance});
+        }
+    return observeByFold(clips, int(byFold.size()));
+}
+
+MetricSummary summarise(std::vector<double> foldValues)
+{
+    MetricSummary summary;
+    summary.folds = std::move(foldValues);
+    std::vector<double> defined;
+    for (double v : summary.folds)
+        if (std::isfinite(v))
+            defined.push_back(v);
+    const stats::MeanInterval interval = stats::meanWithCi95(defined);
+    summary.mean = defined.empty() ? kNoFigure : interval.mean;
+    summary.ci95 = defined.size() < 2 ? kNoFigure : interval.halfWidth;
+    return summary;
 }
 
 } // namespace
@@ -313,21 +402,24 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
     if (live)
         for (const std::string &kind : cv.kinds)
             methods.push_back(kLive + kind);
+    methods.push_back(kReencoded);
     for (const std::string &method : methods) {
         RealismMethod m;
         m.kind = method;
         for (const std::string &metric : realismMetrics()) {
-            MetricSummary &summary = m.metrics[metric];
-            std::vector<double> defined;
-            for (const auto &fold : byFold) {
-                summary.folds.push_back(foldValue(fold, method, metric));
-                if (std::isfinite(summary.folds.back()))
-                    defined.push_back(summary.folds.back());
-            }
-            const stats::MeanInterval interval = stats::meanWithCi95(defined);
-            summary.mean = defined.empty() ? kNoFigure : interval.mean;
-            summary.ci95 = defined.size() < 2 ? kNoFigure : interval.halfWidth;
+            std::vector<double> folds;
+            for (const auto &fold : byFold)
+                folds.push_back(foldValue(fold, method, metric));
+            m.metrics[metric] = summarise(folds);
         }
+        const std::vector<ObserverAccuracy> observed = observerFolds(byFold, method);
+        std::vector<double> frameAccuracy, videoAccuracy;
+        for (const ObserverAccuracy &a : observed) {
+            frameAccuracy.push_back(a.frames);
+            videoAccuracy.push_back(a.videos);
+        }
+        m.metrics["observerFrames"] = summarise(frameAccuracy);
+        m.metrics["observerVideos"] = summarise(videoAccuracy);
         result.methods.push_back(std::move(m));
     }
     // Sequences in project order.

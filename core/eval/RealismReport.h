@@ -19,12 +19,24 @@
 //   lag          the audio-visual lag (frames) of the generated opening minus the recording's;
 //   sharpness    mean squared Laplacian in the mouth box, generated / recorded;
 //   seamDeltaE   mean CIE Lab ΔE across the edge of the synthesised region in the render, and
-//                seamDeltaERecorded the same pixel pairs in the recording (its natural contrast).
+//                seamDeltaERecorded the same pixel pairs in the recording (its natural contrast);
+//   speechCorrelation  the correlation over the speech frames alone (first to last spoken
+//                phone), without the silence-speech-silence shape every clip shares;
+//   controlCorrelation, controlSpeechCorrelation  the same with each recording paired with the
+//                render of the next held-out sequence of its fold: what no lip-sync at all scores;
+//   closureRecall /p b m/ segments closed in both the render and the recording / closed in the
+//                recording (pooled over a fold);
+//   falseClosures, falseClosuresRecorded  closures in the speech outside every /p b m/ segment,
+//                per second of speech, in the render and in the recording;
+//   observerFrames, observerVideos  the machine observer's held-out accuracy (MachineObserver:
+//                0.5 cannot tell the render from the recording), with the row "re-encoded
+//                recording" comparing the recording with its own second encode.
 // Fold value = mean over the fold's sequences (those where the value is defined); reported as the
 // mean over folds with a 95 % t interval (§6.3).
 #include "aam/AamSynthesizer.h"
 #include "dynamics/ModelFile.h"
 #include "eval/Evaluation.h"
+#include "eval/RealismMetrics.h"
 
 #include <QJsonObject>
 
@@ -63,7 +75,11 @@ struct RealismSequenceMethod
 {
     double correlation = 0, articulation = 0, lag = 0, sharpness = 0;
     double seamDeltaE = 0, seamDeltaERecorded = 0;
+    double speechCorrelation = 0;
     int closed = 0;         // bilabial segments closed in the render
+    int closedBoth = 0;     // ... and in the recording
+    int falseClosures = 0;  // closures in the speech outside /p b m/
+    Eigen::MatrixXf appearance; // the machine observer's view of the encoded render's frames
     int skippedFrames = 0;  // frames the predictor found no lips in the render
     std::vector<double> opening; // per frame (NaN: not measured)
 };
@@ -78,7 +94,12 @@ struct RealismSequence
     int closedRecorded = 0;
     double closedLevel = 0; // the recording's closed lip opening
     double lagRecorded = 0;
+    FrameRange speech{0, -1}; // frames from the first to the last spoken phone
+    double speechSeconds = 0;
+    int falseClosuresRecorded = 0;
     std::vector<double> recordedOpening; // per frame (NaN: no face)
+    Eigen::MatrixXf recordedAppearance;  // the machine observer's view of the re-encoded recording
+    Eigen::MatrixXf reencodedAppearance; // ... and of its second encode
     std::map<std::string, RealismSequenceMethod> methods; // "tracked", "dpds", ...
 };
 
@@ -104,7 +125,9 @@ struct RealismResult
     QJsonObject toJson() const;
 };
 
-// correlation, articulation, closure, lag, sharpness, seamDeltaE, seamDeltaERecorded.
+// correlation, articulation, closure, lag, sharpness, seamDeltaE, seamDeltaERecorded,
+// speechCorrelation, controlCorrelation, controlSpeechCorrelation, closureRecall, falseClosures,
+// falseClosuresRecorded, observerFrames, observerVideos.
 const std::vector<std::string> &realismMetrics();
 
 // Throws lipsync::Error naming the project when it has no AAM, no sequence with features and

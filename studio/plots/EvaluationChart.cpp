@@ -44,6 +44,8 @@ QString metricTitle(const std::string &metric)
     if (metric == "linf") return EvaluationChart::tr("L-inf error");
     if (metric == "loglik") return EvaluationChart::tr("log-likelihood per frame");
     if (metric == "correlation") return EvaluationChart::tr("lip-opening correlation");
+    if (metric == "speechCorrelation") return EvaluationChart::tr("lip-opening correlation in speech");
+    if (metric == "observerFrames") return EvaluationChart::tr("machine observer (0.5: fooled)");
     if (metric == "articulation") return EvaluationChart::tr("articulation (s.d. ratio)");
     if (metric == "closure") return EvaluationChart::tr("/p b m/ closures (ratio)");
     if (metric == "sharpness") return EvaluationChart::tr("mouth sharpness (ratio)");
@@ -109,13 +111,15 @@ void EvaluationChart::setRealism(const RealismResult &result)
 {
     std::vector<Bars> bars;
     for (const RealismMethod &method : result.methods) {
+        if (!method.metrics.count("articulation") || !std::isfinite(method.metrics.at("articulation").mean))
+            continue; // the re-encoded recording: the observer's control, no lips of its own
         const bool tracked = method.kind == "tracked";
         bars.push_back({tracked ? tr("tracked") : ModelKinds::name(method.kind),
                         tracked ? QColor(0x75, 0x75, 0x75) : ModelKinds::colour(method.kind), method.metrics});
     }
-    // The four a viewer sees first (the lag and the seam stay in `lipsync evaluate --realism`):
-    // four charts stay legible in a docked panel, as Figure 4's do.
-    draw(bars, {"correlation", "articulation", "closure", "sharpness"});
+    // The four a viewer sees first (the rest stay in `lipsync evaluate --realism`): four charts
+    // stay legible in a docked panel, as Figure 4's do.
+    draw(bars, {"speechCorrelation", "articulation", "closure", "observerFrames"});
 }
 
 void EvaluationChart::draw(const std::vector<Bars> &bars, const std::vector<std::string> &metrics)

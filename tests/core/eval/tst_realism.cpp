@@ -264,7 +264,8 @@ private slots:
         Feedback feedback;
         const RealismResult r = evaluateRealism(project, options, feedback);
         QCOMPARE(r.sequences, n);
-        QCOMPARE(r.methods.size(), size_t(live ? 3 : 2));
+        QCOMPARE(r.methods.size(), size_t(live ? 4 : 3));
+        QCOMPARE(r.methods.back().kind, std::string("re-encoded recording"));
         QCOMPARE(r.methods[0].kind, std::string("tracked"));
         if (live) {
             QCOMPARE(r.methods[2].kind, std::string("live hmm"));
@@ -289,6 +290,26 @@ private slots:
         // The tracked parameters render the recording itself (its own face, moved nowhere): nothing
         // is synthesised, so there is no seam to measure.
         QVERIFY(!std::isfinite(tracked.at("seamDeltaE").mean));
+        // The new measures: the tracked render is the recording itself, so in speech too it
+        // correlates fully, closes every /p b m/ the recording closes, and no observer can tell it
+        // from the recording (nor the recording from its own re-encode); another sequence's render
+        // correlates far less than the model's own; the observer's accuracy is a fraction.
+        QVERIFY(tracked.at("speechCorrelation").mean > 0.99);
+        QVERIFY(std::abs(tracked.at("closureRecall").mean - 1.0) < 1e-9);
+        QVERIFY2(std::abs(tracked.at("observerFrames").mean - 0.5) < 0.1,
+                 qPrintable(QString::number(tracked.at("observerFrames").mean)));
+        const auto &reencoded = r.methods.back().metrics;
+        QVERIFY(reencoded.at("observerFrames").mean >= 0.0 && reencoded.at("observerFrames").mean <= 1.0);
+        QVERIFY(!std::isfinite(reencoded.at("correlation").mean));
+        QVERIFY2(hmm.at("controlCorrelation").mean < hmm.at("correlation").mean,
+                 qPrintable(QString("%1 vs %2").arg(hmm.at("controlCorrelation").mean).arg(hmm.at("correlation").mean)));
+        QVERIFY(hmm.at("observerFrames").mean >= 0.0 && hmm.at("observerFrames").mean <= 1.0);
+        QVERIFY(std::isfinite(hmm.at("falseClosuresRecorded").mean));
+        qInfo("hmm: speech correlation %.3f (control %.3f), closure recall %.2f, false closures %.2f/s "
+              "(recorded %.2f/s), observer %.2f per frame, %.2f per video; re-encode %.2f",
+              hmm.at("speechCorrelation").mean, hmm.at("controlSpeechCorrelation").mean, hmm.at("closureRecall").mean,
+              hmm.at("falseClosures").mean, hmm.at("falseClosuresRecorded").mean, hmm.at("observerFrames").mean,
+              hmm.at("observerVideos").mean, reencoded.at("observerFrames").mean);
         const QJsonObject json = r.toJson();
         QVERIFY(json.contains(QStringLiteral("methods")));
         QCOMPARE(json[QStringLiteral("perSequence")].toArray().size(), n);

@@ -1,0 +1,48 @@
+#pragma once
+// The frames the machine observer judges (MachineObserver), as a viewer gets them: each stream of
+// one sequence — the recording and each rendering — is encoded as `lipsync export video` and
+// `render` encode (VideoExporter: H.264, the export's quality), decoded back, and the mouth's
+// appearance read in the recording's mouth box. The recording's stream is encoded a second time
+// for the control that compares a recording with its own re-encode. Streams are written as their
+// frames come (bounded memory) into a temporary folder that goes with the object.
+#include "render/VideoExporter.h"
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include <QTemporaryDir>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lipsync {
+
+class EncodedAppearance
+{
+public:
+    // `streams` streams of frames of one size; stream 0 is the recording.
+    explicit EncodedAppearance(int streams);
+    ~EncodedAppearance();
+    EncodedAppearance(const EncodedAppearance &) = delete;
+    EncodedAppearance &operator=(const EncodedAppearance &) = delete;
+
+    void add(int stream, const cv::Mat &frame);
+
+    struct Result
+    {
+        std::vector<Eigen::MatrixXf> streams; // one row per measured frame
+        Eigen::MatrixXf reencoded;            // the recording's second encode
+    };
+    // Every `step`-th frame with a mouth box (boxes[t]), from every stream.
+    Result appearance(const std::vector<std::optional<cv::Rect2d>> &boxes, int step);
+
+private:
+    std::string path(int stream) const;
+
+    QTemporaryDir m_folder;
+    std::vector<std::unique_ptr<VideoExporter>> m_exporters;
+};
+
+} // namespace lipsync

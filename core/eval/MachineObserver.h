@@ -1,0 +1,55 @@
+#pragma once
+// A machine observer for the realism report (docs/models.md §6.5): can a simple classifier tell
+// recorded frames from rendered ones by how the mouth looks? Its input is the mouth's appearance,
+// a crop around dlib's mouth points of the recorded frame (the render is at the same pose):
+// OpenCV's HOG of the grey crop (48 x 24 pixels, 8-pixel cells, 16-pixel blocks) and the mean and
+// standard deviation of CIE Lab over the crop and over a 3 x 2 grid of it. Its classifier is L2
+// regularised logistic regression on standardised features (Newton's method with Eigen's LDLT),
+// trained on the sequences of the other folds and tested on a fold's own: frame accuracy over
+// the held-out frames, video accuracy from each held-out video's mean score. 0.5 means it cannot
+// tell them apart; 1.0 that it always can.
+//
+// Both sides pass through the same encoder first (the renders are exported, the recording is
+// re-encoded by the same exporter), so that compression cannot give the render away; a control
+// compares the recording with its own second re-encode, which should read about 0.5.
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include <vector>
+
+namespace lipsync {
+
+// The mouth's appearance in `frame` inside `mouth` (widened by half its width and height).
+Eigen::VectorXf mouthAppearance(const cv::Mat &frame, const cv::Rect2d &mouth);
+
+class LinearObserver
+{
+public:
+    // Rows of `real` and `rendered` are appearance vectors; `ridge` the L2 weight.
+    void fit(const Eigen::MatrixXf &real, const Eigen::MatrixXf &rendered, double ridge = 1.0);
+    // > 0: judged rendered.
+    double score(const Eigen::VectorXf &appearance) const;
+
+private:
+    Eigen::VectorXd m_mean, m_scale, m_weights;
+    double m_bias = 0.0;
+};
+
+struct ObservedClip
+{
+    int fold = 0;
+    Eigen::MatrixXf real;     // appearance of the recording's frames (re-encoded)
+    Eigen::MatrixXf rendered; // of the render's frames (encoded the same way)
+};
+
+struct ObserverAccuracy
+{
+    double frames = 0.0; // fraction of held-out frames judged right
+    double videos = 0.0; // fraction of held-out videos (each clip's real and rendered) judged right
+};
+
+// The accuracy on each fold's clips of an observer trained on the other folds' (NaN for a fold
+// without clips or without training clips).
+std::vector<ObserverAccuracy> observeByFold(const std::vector<ObservedClip> &clips, int folds);
+
+} // namespace lipsync
