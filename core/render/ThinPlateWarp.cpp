@@ -66,36 +66,50 @@ Eigen::Vector2d ThinPlateWarp::displacement(const Eigen::Vector2d &p) const
     return d;
 }
 
-void ThinPlateWarp::gridMaps(cv::Rect region, double falloff, cv::Mat &gridX, cv::Mat &gridY) const
+namespace {
+
+// How much of the displacement a pixel keeps: 0 on the region's border and past it, rising
+// (smoothstep) to 1 at `falloff` pixels inside.
+float fadeAt(double x, double y, const cv::Rect &region, double falloff)
 {
-    // The field on a coarse grid over the region (its last nodes at or past the far border).
+    const double inside = std::min({x - region.x, region.x + region.width - 1 - x, y - region.y,
+                                     region.y + region.height - 1 - y});
+    const double u = std::clamp(inside / std::max(1.0, falloff), 0.0, 1.0);
+    return float(u * u * (3.0 - 2.0 * u));
+}
+
+} // namespace
+
+void ThinPlateWarp::gridDisplacement(cv::Rect region, cv::Mat &dx, cv::Mat &dy) const
+{
+    // The spline on a coarse grid over the region (its last nodes at or past the far border).
     const int gw = (region.width - 1) / kGridStep + 2;
     const int gh = (region.height - 1) / kGridStep + 2;
-    gridX.create(gh, gw, CV_32F);
-    gridY.create(gh, gw, CV_32F);
-    const double fade = std::max(1.0, falloff);
-    for (int gy = 0; gy < gh; ++gy) {
+    dx.create(gh, gw, CV_32F);
+    dy.create(gh, gw, CV_32F);
+    for (int gy = 0; gy < gh; ++gy)
         for (int gx = 0; gx < gw; ++gx) {
-            const double x = region.x + gx * kGridStep;
-            const double y = region.y + gy * kGridStep;
-            // Distance to the region's border, in pixels: the displacement fades to 0 there.
-            const double inside = std::min({x - region.x, region.x + region.width - 1 - x, y - region.y,
-                                             region.y + region.height - 1 - y});
-            const double u = std::clamp(inside / fade, 0.0, 1.0); // 0 at and past the border
-            const double keep = u * u * (3.0 - 2.0 * u);
-            const Eigen::Vector2d d = keep * displacement({x, y});
-            gridX.at<float>(gy, gx) = float(x - d.x());
-            gridY.at<float>(gy, gx) = float(y - d.y());
+            const Eigen::Vector2d d = displacement({double(region.x + gx * kGridStep), double(region.y + gy * kGridStep)});
+            dx.at<float>(gy, gx) = float(d.x());
+            dy.at<float>(gy, gx) = float(d.y());
         }
-    }
 }
 
 double ThinPlateWarp::minJacobian(cv::Rect region, double falloff) const
 {
     if (!m_valid || region.width < 2 || region.height < 2)
         return 1.0;
-    cv::Mat gx, gy;
-    gridMaps(region, falloff, gx, gy);
+    cv::Mat dx, dy;
+    gridDisplacement(region, dx, dy);
+    // Where the grid's nodes read the input, the fade applied.
+    cv::Mat gx(dx.size(), CV_32F), gy(dx.size(), CV_32F);
+    for (int y = 0; y < dx.rows; ++y)
+        for (int x = 0; x < dx.cols; ++x) {
+            const double px = region.x + x * kGridStep, py = region.y + y * kGridStep;
+            const float keep = fadeAt(px, py, region, falloff);
+            gx.at<float>(y, x) = float(px - keep * dx.at<float>(y, x));
+            gy.at<float>(y, x) = float(py - keep * dy.at<float>(y, x));
+        }
     double smallest = 1.0;
     const double step = kGridStep;
     for (int y = 0; y + 1 < gx.rows; ++y)
@@ -121,10 +135,10 @@ bool ThinPlateWarp::apply(const cv::Mat &source, cv::Mat &image, cv::Rect region
     if (!m_valid || region.width < 2 || region.height < 2 || source.size() != image.size()
         || source.type() != image.type())
         return false;
-    cv::Mat gridX, gridY;
-    gridMaps(region, falloff, gridX, gridY);
-    const int gw = gridX.cols, gh = gridX.rows;
-    // Bilinear between grid nodes: resize maps node centres, so interpolate by hand.
+    cv::Mat dx, dy;
+    gridDisplacement(region, dx, dy);
+    const int gw = dx.cols, gh = dx.rows;
+    // The displacement bilinear between grid nodes, faded per pixel (exactly 0 on the border).
     cv::Mat mapX(region.size(), CV_32F), mapY(region.size(), CV_32F);
     for (int y = 0; y < region.height; ++y) {
         const float fy = float(y) / kGridStep;
@@ -140,8 +154,9 @@ bool ThinPlateWarp::apply(const cv::Mat &source, cv::Mat &image, cv::Rect region
                 const float bottom = (1 - tx) * g.at<float>(y1, x0) + tx * g.at<float>(y1, x1);
                 return (1 - ty) * top + ty * bottom;
             };
-            mx[x] = lerp(gridX);
-            my[x] = lerp(gridY);
+            const float keep = fadeAt(region.x + x, region.y + y, region, falloff);
+            mx[x] = float(region.x + x) - keep * lerp(dx);
+            my[x] = float(region.y + y) - keep * lerp(dy);
         }
     }
     cv::Mat warped;

@@ -5,10 +5,10 @@
 // The output pixel p takes the input at p - d(p) (a backward map, so every output pixel is
 // filled once). Points that must stay put are control points with s_i = q_i.
 //
-// The field is evaluated on a grid of `kGridStep` pixels and interpolated between (the spline
-// is smooth at that scale), and only inside `region`: outside it the image is unchanged, and
-// `falloff` pixels inside its border the displacement fades to zero (smoothstep), so the warped
-// region joins the untouched frame without a seam.
+// The spline is evaluated on a grid of `kGridStep` pixels and interpolated between (it is smooth
+// at that scale), and only inside `region`: outside it the image is unchanged, and over the
+// `falloff` pixels inside its border each pixel's displacement fades to zero (smoothstep), so the
+// warped region joins the untouched frame without a seam.
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
@@ -41,9 +41,8 @@ public:
     bool valid() const { return m_valid; }
 
 private:
-    // Where the grid's nodes read the input (absolute pixels), gw x gh nodes every kGridStep
-    // pixels from the region's corner.
-    void gridMaps(cv::Rect region, double falloff, cv::Mat &gridX, cv::Mat &gridY) const;
+    // The displacement at grid nodes every kGridStep pixels from the region's corner (unfaded).
+    void gridDisplacement(cv::Rect region, cv::Mat &dx, cv::Mat &dy) const;
 
     Eigen::MatrixX2d m_points; // the targets q_i
     Eigen::MatrixX2d m_weights; // w_i

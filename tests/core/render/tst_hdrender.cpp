@@ -1,0 +1,129 @@
+// Rendering into HD footage of another person with a moving head (tests/data/media/hd: a White
+// House weekly address, 1280x720, public domain): an AAM built from the clip's own frames (dlib's
+// points), the face tracked, and every frame rendered with its mouth opened further than
+// recorded. The recording keeps its own face: at every pose the render differs from the recording
+// only inside the warped region, the region's border shows no step beyond the recording's own
+// (the warp fades to nothing there), and the eyes are the recording's.
+#include "aam/AamBuilder.h"
+#include "aam/FaceDetector.h"
+#include "aam/LandmarkScheme.h"
+#include "io/VideoReader.h"
+#include "render/FaceRenderer.h"
+#include "tasks/Feedback.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <QTest>
+
+#include <cmath>
+
+using namespace lipsync;
+
+namespace {
+const std::string kClip = LIPSYNC_SOURCE_DIR "/tests/data/media/hd/obama_weekly_address_library.mp4";
+} // namespace
+
+class TestHdRender : public QObject
+{
+    Q_OBJECT
+
+    AamModel m_aam;
+
+private slots:
+    void initTestCase()
+    {
+        FaceDetector detector;
+        if (!detector.hasDlib())
+            QSKIP("dlib's 68-point predictor is not installed (libdlib-data)");
+        VideoReader video(kClip);
+        QCOMPARE(video.width(), 1280);
+        std::vector<AamTrainingExample> examples;
+        for (int t = 0; t < video.frameCount(); t += 4) {
+            const cv::Mat frame = video.frame(t);
+            const std::vector<FaceDetection> faces = detector.detect(frame);
+            if (faces.empty())
+                continue;
+            const Eigen::VectorXd ibug = detector.dlibLandmarks(frame, faces.front());
+            if (ibug.size() == 136)
+                examples.push_back({"frame" + std::to_string(t), {}, frame, mapIbug68To23(ibug)});
+        }
+        QVERIFY2(examples.size() >= 20, qPrintable(QString::number(examples.size())));
+        Feedback feedback;
+        m_aam = buildAam(examples, {}, feedback);
+        QVERIFY(m_aam.combinedModes() > 2);
+    }
+
+    void movingHeadWithoutEdges()
+    {
+        Feedback feedback;
+        FaceRenderer renderer(m_aam, kClip, feedback);
+        const int frames = renderer.videoFrameCount();
+        QVERIFY(frames > 100);
+        // The head moves in this clip: its pose turns and shifts across the frames.
+        double angleMin = 1e9, angleMax = -1e9, xMin = 1e9, xMax = -1e9;
+        for (int t = 0; t < frames; ++t) {
+            const Similarity &p = renderer.pose(t);
+            angleMin = std::min(angleMin, std::atan2(p.b, p.a));
+            angleMax = std::max(angleMax, std::atan2(p.b, p.a));
+            xMin = std::min(xMin, p.tx);
+            xMax = std::max(xMax, p.tx);
+        }
+        qInfo("head roll %.1f..%.1f degrees, face centre x %.0f..%.0f px", angleMin * 180 / M_PI, angleMax * 180 / M_PI,
+              xMin, xMax);
+        QVERIFY(angleMax - angleMin > 2.0 * M_PI / 180 || xMax - xMin > 10.0);
+        double worstStep = 0;
+        int warped = 0;
+        for (int t = 0; t < frames; t += 3) {
+            const cv::Mat recorded = renderer.background(t);
+            // The tracked parameters with the first combined mode moved by 2 s.d.: a different
+            // mouth and jaw at the recorded pose.
+            Eigen::VectorXd c = renderer.trackedFeatures().row(t).transpose();
+            c[0] += 2.0 * std::sqrt(m_aam.combinedVariances[0]);
+            const cv::Mat rendered = renderer.render(t, c);
+            cv::Mat diff, grey;
+            cv::absdiff(rendered, recorded, diff);
+            cv::cvtColor(diff, grey, cv::COLOR_BGR2GRAY);
+            const cv::Rect changed = cv::boundingRect(grey > 0);
+            if (changed.empty())
+                continue;
+            ++warped;
+            // The changed region stays around the face (not the whole frame)...
+            QVERIFY2(changed.area() < 1280 * 720 / 3, qPrintable(QString("frame %1: %2 px").arg(t).arg(changed.area())));
+            // ...and fades in from nothing: across its border (each outermost changed pixel and its
+            // unchanged neighbour outside) the render steps no more than the recording does there.
+            auto excessStep = [&](const cv::Point &in, const cv::Point &out) {
+                if (!cv::Rect(0, 0, grey.cols, grey.rows).contains(out))
+                    return 0.0;
+                auto luma = [](const cv::Mat &m, const cv::Point &q) {
+                    const cv::Vec3b v = m.at<cv::Vec3b>(q);
+                    return 0.114 * v[0] + 0.587 * v[1] + 0.299 * v[2];
+                };
+                return std::abs(luma(rendered, in) - luma(rendered, out)) - std::abs(luma(recorded, in) - luma(recorded, out));
+            };
+            double step = 0;
+            for (int x = changed.x; x < changed.x + changed.width; ++x) {
+                step = std::max(step, excessStep({x, changed.y}, {x, changed.y - 1}));
+                step = std::max(step, excessStep({x, changed.y + changed.height - 1}, {x, changed.y + changed.height}));
+            }
+            for (int y = changed.y; y < changed.y + changed.height; ++y) {
+                step = std::max(step, excessStep({changed.x, y}, {changed.x - 1, y}));
+                step = std::max(step, excessStep({changed.x + changed.width - 1, y}, {changed.x + changed.width, y}));
+            }
+            worstStep = std::max(worstStep, step);
+            // The eyes are the recording's.
+            const Eigen::VectorXd points = renderer.trackedShape(t);
+            for (int k = 0; k < 8; ++k) {
+                const cv::Point p(int(std::lround(points[2 * k])), int(std::lround(points[2 * k + 1])));
+                QVERIFY2(grey.at<uchar>(p) <= 4, qPrintable(QString("frame %1, eye point %2: %3").arg(t).arg(k).arg(grey.at<uchar>(p))));
+            }
+        }
+        qInfo("%d frames warped; largest step across the warped region's border beyond the recording's own: "
+              "%.1f levels", warped, worstStep);
+        QVERIFY(warped > frames / 6);
+        // Within 8-bit rounding of the pixels either side (a level or two each).
+        QVERIFY2(worstStep <= 4.0, qPrintable(QString::number(worstStep)));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestHdRender)
+#include "tst_hdrender.moc"
