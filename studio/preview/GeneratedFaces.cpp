@@ -21,6 +21,14 @@ void GeneratedFaces::setFixedFrame(const QImage &background, int poseFrame)
     m_fixedPose = std::max(0, poseFrame);
 }
 
+void GeneratedFaces::setRetimedBackground(std::vector<int> frames, QVector<QImage> images)
+{
+    m_retimed = std::move(frames);
+    m_retimedImages = std::move(images);
+    m_fixed = QImage();
+    m_fixedPose = -1;
+}
+
 int GeneratedFaces::frameCount() const
 {
     Eigen::Index n = 0;
@@ -39,7 +47,12 @@ QImage GeneratedFaces::render(int track, int frame, const CompositeOptions &opti
 {
     if (track < 0 || track >= int(m_tracks.size()) || m_tracks[std::size_t(track)].params.rows() == 0)
         return {};
-    QImage out = (m_fixed.isNull() ? background : m_fixed).convertToFormat(QImage::Format_RGB888);
+    const QImage *source = &background;
+    if (!m_fixed.isNull())
+        source = &m_fixed;
+    else if (!m_retimed.empty() && poseFrame(frame) < m_retimedImages.size())
+        source = &m_retimedImages[poseFrame(frame)];
+    QImage out = source->convertToFormat(QImage::Format_RGB888);
     if (out.isNull())
         return {};
     const cv::Size size = m_renderer->frameSize();
@@ -66,7 +79,7 @@ LandmarkSet GeneratedFaces::landmarks(int track, int frame) const
 std::optional<LandmarkSet> GeneratedFaces::trackedLandmarks(int frame) const
 {
     const Eigen::MatrixXd &tracked = m_renderer->trackedFeatures();
-    if (m_fixedPose >= 0 || tracked.rows() == 0 || frame < 0)
+    if (m_fixedPose >= 0 || !m_retimed.empty() || tracked.rows() == 0 || frame < 0)
         return std::nullopt;
     const int row = std::min(frame, int(tracked.rows()) - 1);
     return landmarkSetFromShape(m_renderer->pose(row).apply(m_synth.shape(tracked.row(row).transpose())),

@@ -13,6 +13,8 @@
 #include "annotation/LandmarkSet.h"
 #include "render/FaceRenderer.h"
 
+#include <algorithm>
+#include <QVector>
 #include <QColor>
 #include <QImage>
 #include <QString>
@@ -46,6 +48,9 @@ public:
     const FrameClock &frames() const { return m_frames; }
     // Every frame drawn into `background` at the pose of the renderer's frame `poseFrame`.
     void setFixedFrame(const QImage &background, int poseFrame);
+    // Frame i drawn into `images[frames[i]]` at the pose of the renderer's frame `frames[i]`: new
+    // speech in the person's own video, re-timed (render/BackgroundRetiming).
+    void setRetimedBackground(std::vector<int> frames, QVector<QImage> images);
 
     void addTrack(Track track) { m_tracks.push_back(std::move(track)); }
     const std::vector<Track> &tracks() const { return m_tracks; }
@@ -60,7 +65,12 @@ public:
     std::optional<LandmarkSet> trackedLandmarks(int frame) const;
 
 private:
-    int poseFrame(int frame) const { return m_fixedPose >= 0 ? m_fixedPose : frame; }
+    int poseFrame(int frame) const
+    {
+        if (!m_retimed.empty())
+            return m_retimed[std::size_t(std::clamp(frame, 0, int(m_retimed.size()) - 1))];
+        return m_fixedPose >= 0 ? m_fixedPose : frame;
+    }
     Eigen::VectorXd paramsAt(int track, int frame) const;
 
     std::shared_ptr<const AamModel> m_aam;
@@ -69,6 +79,8 @@ private:
     FrameClock m_frames;
     QImage m_fixed;
     int m_fixedPose = -1;
+    std::vector<int> m_retimed;     // background frame of each frame (re-timed), or empty
+    QVector<QImage> m_retimedImages;
     std::vector<Track> m_tracks;
 };
 

@@ -600,15 +600,18 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
     request.frameRate = frameRate;
     request.pronunciations = m_context->document()->project().pronunciations;
     request.closeBilabials = m_context->closesLips();
-    // The neutral frame: the first frame of the current sequence at its tracked pose, else the
-    // mean face on grey.
+    // The background: the current sequence's video re-timed to the speech (its head motion and
+    // blinks, cut where the pose allows; exports re-time it the same way), else the mean face
+    // on grey.
     const auto media = m_context->media();
-    QImage background;
+    QVector<QImage> background;
     Renderer sequence;
-    if (media && !media->frames.isEmpty() && m_context->currentSequence() >= 0) {
+    if (media && !media->frames.isEmpty() && !media->audioOnly && m_context->currentSequence() >= 0) {
         sequence = m_renderers.value(QString::fromStdString(m_context->document()->sequence(m_context->currentSequence()).id));
-        if (sequence.renderer)
-            background = media->frames.front();
+        if (sequence.renderer) {
+            background = media->frames;
+            request.backgroundPath = media->mediaPath.toStdString();
+        }
     }
     // The aligner the timeline aligns with (ModelStore), loaded once for both.
     request.aligner = m_context->modelStore()->alignerChoice();
@@ -632,7 +635,10 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
             std::shared_ptr<GeneratedFaces> faces;
             if (sequence.renderer) {
                 faces = std::make_shared<GeneratedFaces>(sequence.aam, sequence.renderer, result->frames);
-                faces->setFixedFrame(background, 0);
+                std::vector<Similarity> poses;
+                for (int i = 0; i < sequence.renderer->videoFrameCount(); ++i)
+                    poses.push_back(sequence.renderer->pose(i));
+                faces->setRetimedBackground(retimeBackground(poses, result->frameCount()).frames, background);
             } else {
                 auto neutral = std::make_shared<FaceRenderer>(*result->aam);
                 faces = std::make_shared<GeneratedFaces>(result->aam, neutral, result->frames);
