@@ -11,6 +11,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace lipsync {
 
@@ -19,6 +20,9 @@ namespace {
 // Half-width of the moving average over the per-frame poses: the tracker's frame-to-frame
 // jitter (a pixel or so) would otherwise make the pasted face shimmer against the background.
 constexpr int kPoseSmoothing = 2;
+// A fit this many times worse than the video's median marks a covered face [choice]: the fit error
+// of GRID s1 and the HD clips spreads over about 3 x between their best and worst tracked frames.
+constexpr double kOccludedFit = 4.0;
 
 std::vector<Similarity> smoothPoses(const std::vector<Similarity> &poses)
 {
@@ -90,6 +94,22 @@ FaceRenderer::FaceRenderer(const AamModel &aam, const std::string &videoPath, Fe
     if (poses.empty())
         throw Error("cannot render: no frame of the video holds a face", videoPath);
     m_poses = smoothPoses(poses);
+    // Frames whose face is lost or covered: no face found, or a fit far worse than the video's usual.
+    std::vector<double> finite;
+    for (Eigen::Index t = 0; t < tracked.errors.size(); ++t)
+        if (std::isfinite(tracked.errors[t]))
+            finite.push_back(tracked.errors[t]);
+    double median = 0.0;
+    if (!finite.empty()) {
+        std::nth_element(finite.begin(), finite.begin() + std::ptrdiff_t(finite.size() / 2), finite.end());
+        median = finite[finite.size() / 2];
+    }
+    m_occluded.assign(size_t(tracked.errors.size()), false);
+    for (Eigen::Index t = 0; t < tracked.errors.size(); ++t)
+        m_occluded[size_t(t)] = !std::isfinite(tracked.errors[t]) || (median > 0 && tracked.errors[t] > kOccludedFit * median);
+    for (int t : tracked.framesWithoutFace)
+        if (t >= 0 && t < int(m_occluded.size()))
+            m_occluded[size_t(t)] = true;
 }
 
 FaceRenderer::~FaceRenderer() = default;
@@ -138,6 +158,13 @@ cv::Mat FaceRenderer::background(int index)
     return m_last.clone();
 }
 
+bool FaceRenderer::occluded(int index) const
+{
+    if (m_occluded.empty())
+        return false;
+    return m_occluded[size_t(std::clamp(sourceFrame(index), 0, int(m_occluded.size()) - 1))];
+}
+
 const Similarity &FaceRenderer::pose(int index) const
 {
     return m_poses[size_t(std::clamp(sourceFrame(index), 0, int(m_poses.size()) - 1))];
@@ -157,6 +184,8 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
     if (frame.type() != CV_8UC3 || frame.size() != m_size)
         throw Error("cannot render: the frame is not a " + std::to_string(m_size.width) + "x"
                     + std::to_string(m_size.height) + " BGR image");
+    if (occluded(index))
+        return; // what covers the face stays in front of it
     if (options.region == FaceRegion::Full || options.synthesizeSkin) {
         m_synthesizer.composite(features, pose(index), frame, options);
         return;
@@ -222,6 +251,8 @@ cv::Mat FaceRenderer::synthesisedWeight(int index, const Eigen::VectorXd &featur
     if (features.size() != m_aam.combinedModes())
         throw Error("cannot render: " + std::to_string(features.size())
                     + " parameters given, the AAM has " + std::to_string(m_aam.combinedModes()));
+    if (occluded(index))
+        return cv::Mat(m_size, CV_32F, cv::Scalar(0));
     if (m_composite.region == FaceRegion::Full || m_composite.synthesizeSkin)
         return m_synthesizer.compositeWeight(features, pose(index), m_size, m_composite.region);
     return mouthInteriorAlpha(index, features);

@@ -73,6 +73,11 @@ public:
     void setCompositeOptions(const CompositeOptions &options) { m_composite = options; }
     const CompositeOptions &compositeOptions() const { return m_composite; }
 
+    // Whether the face in background frame `index` is hidden or lost: the tracker found none, or
+    // its fit error is over 4 times the video's median (a hand or a microphone over the mouth).
+    // Such frames are left as recorded: nothing is drawn over what covers the face.
+    bool occluded(int index) const;
+
     // `features` (combined AAM parameters c) drawn into the background of frame `index`.
     cv::Mat render(int index, const Eigen::VectorXd &features);
     // Same, into a caller's frame (CV_8UC3, frameSize()) already holding the background; with
@@ -107,6 +112,7 @@ private:
     cv::Size m_size;
     std::vector<Similarity> m_poses;   // one per video frame, or one for the neutral frame
     Eigen::MatrixXd m_tracked;
+    std::vector<bool> m_occluded;      // per video frame (occluded())
     CompositeOptions m_composite;
     BackgroundRetiming m_retiming;     // empty: frame i is the video's frame i
 };

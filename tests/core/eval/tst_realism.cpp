@@ -301,8 +301,9 @@ private slots:
         const auto &reencoded = r.methods.back().metrics;
         QVERIFY(reencoded.at("observerFrames").mean >= 0.0 && reencoded.at("observerFrames").mean <= 1.0);
         QVERIFY(!std::isfinite(reencoded.at("correlation").mean));
-        QVERIFY2(hmm.at("controlCorrelation").mean < hmm.at("correlation").mean,
-                 qPrintable(QString("%1 vs %2").arg(hmm.at("controlCorrelation").mean).arg(hmm.at("correlation").mean)));
+        if (n >= 4) // the control pairs sequences within a fold
+            QVERIFY2(hmm.at("controlCorrelation").mean < hmm.at("correlation").mean,
+                     qPrintable(QString("%1 vs %2").arg(hmm.at("controlCorrelation").mean).arg(hmm.at("correlation").mean)));
         QVERIFY(hmm.at("observerFrames").mean >= 0.0 && hmm.at("observerFrames").mean <= 1.0);
         QVERIFY(std::isfinite(hmm.at("falseClosuresRecorded").mean));
         qInfo("hmm: speech correlation %.3f (control %.3f), closure recall %.2f, false closures %.2f/s "
