@@ -7,6 +7,26 @@
 
 using namespace lipsync::cli;
 
+// The commands of group `group` ("project": "project create", "project check", ...), or none.
+static QStringList groupCommands(const QString &group)
+{
+    QStringList names;
+    for (const auto &[name, info] : commandRegistry())
+        if (name.startsWith(group + QLatin1Char(' ')))
+            names << name;
+    return names;
+}
+
+static void printGroupUsage(const QString &group)
+{
+    std::printf("usage: lipsync %s COMMAND [ARGS...] [--json]\n"
+                "       lipsync %s COMMAND --help\n\ncommands:\n",
+                group.toLocal8Bit().constData(), group.toLocal8Bit().constData());
+    for (const auto &[name, info] : commandRegistry())
+        if (name.startsWith(group + QLatin1Char(' ')))
+            std::printf("  %-18s  %s\n", name.toLocal8Bit().constData(), info.spec.summary.toLocal8Bit().constData());
+}
+
 static void printUsage()
 {
     std::printf("usage: lipsync COMMAND [ARGS...] [--json]\n"
@@ -43,6 +63,15 @@ int main(int argc, char **argv)
         }
     }
     if (!best) {
+        // A group of commands ("lipsync project", "lipsync aligner --help"): its commands.
+        if (!groupCommands(args[0]).isEmpty()) {
+            const bool help = args.size() >= 2 && (args[1] == QLatin1String("--help") || args[1] == QLatin1String("-h"));
+            printGroupUsage(args[0]);
+            if (help)
+                return 0;
+            return args.size() == 1 ? 2
+                                    : fail(QStringLiteral("unknown command '%1 %2'").arg(args[0], args[1]), 2);
+        }
         printUsage();
         return fail(QStringLiteral("unknown command '%1'").arg(args[0]), 2);
     }

@@ -140,6 +140,32 @@ private slots:
         QCOMPARE(h.out, m_help[m_commands.indexOf("project check")].out);
     }
 
+    // Every group of commands answers --help with its own commands (exit 0); the group alone
+    // lists them as a usage error; an unknown command of the group is named.
+    void everyGroupHasHelp()
+    {
+        QStringList groups;
+        for (const QString &command : std::as_const(m_commands))
+            if (command.contains(QLatin1Char(' ')) && !groups.contains(command.section(QLatin1Char(' '), 0, 0)))
+                groups << command.section(QLatin1Char(' '), 0, 0);
+        QVERIFY(groups.contains("project") && groups.contains("aligner") && groups.contains("aam"));
+        for (const QString &group : std::as_const(groups)) {
+            const Run help = runLipsync({group, "--help"});
+            QVERIFY2(help.exitCode == 0, qPrintable(group + ": " + help.err));
+            QVERIFY(help.err.isEmpty());
+            const QString text = QString::fromUtf8(help.out);
+            QVERIFY2(text.startsWith(QStringLiteral("usage: lipsync ") + group + " COMMAND"), qPrintable(text));
+            for (const QString &command : std::as_const(m_commands))
+                if (command.startsWith(group + ' '))
+                    QVERIFY2(text.contains("  " + command + "  "), qPrintable(group + ": " + command));
+            QVERIFY(!text.contains(QStringLiteral("  info  ")));
+            QCOMPARE(runLipsync({group}).exitCode, 2);
+        }
+        const Run unknown = runLipsync({"project", "frobnicate"});
+        QCOMPARE(unknown.exitCode, 2);
+        QVERIFY2(unknown.err.contains("unknown command 'project frobnicate'"), unknown.err.constData());
+    }
+
     // Each option the help lists is one the command's parser takes (with a value if the help
     // names one): given all together, the reply may be any error but an unknown option or a
     // missing value, which the parser reports before anything else. The values name no file, so
