@@ -81,7 +81,7 @@ public:
     // The actions behind the buttons (return the tasks started; empty/null when nothing to do).
     QList<Task *> train();
     Task *evaluate();
-    // The realism report (models.md §6.5) of the checked models on the same folds, as a chart.
+    // The realism report (docs/models.md §6.5) of the checked models on the same folds, as a chart.
     Task *evaluateRealism();
     void cancel();
 

@@ -88,7 +88,7 @@ void StudyResultsView::setStudy(const ForcedChoiceStudy *study)
         m_pairs->setItem(r, 3, cell(QString::number(p.preferB), true));
         m_pairs->setItem(r, 4, cell(name(p.b), false));
         m_pairs->setItem(r, 5, cell(p.decided() > 0 ? pValueText(p.pValue) : QStringLiteral("–"), true));
-        // Adjusted over all pairs (Holm-Bonferroni, models.md §6.4); the summary line uses it.
+        // Adjusted over all pairs (Holm-Bonferroni, docs/models.md §6.4); the summary line uses it.
         m_pairs->setItem(r, 6, cell(p.decided() > 0 ? pValueText(p.holmPValue) : QStringLiteral("–"), true));
     }
     m_ranking->setRowCount(int(tally.ranking.size()));

@@ -232,11 +232,12 @@ void LiveView::fillModels()
         m_models->addItem(ModelKinds::name(kind), kind);
         m_models->setItemData(m_models->count() - 1, ModelKinds::description(kind), Qt::ToolTipRole);
     }
-    // The one the user chose, else DPDS (the paper's model, smooth from frame to frame), else the
-    // first.
+    // The one the user chose, else the studio's default order (ModelKinds: Brand first), as the
+    // Models panel and exports choose.
     int index = m_modelChosen ? m_models->findData(current) : -1;
-    if (index < 0)
-        index = m_models->findData(QStringLiteral("dpds"));
+    for (const QString &kind : ModelKinds::ids())
+        if (index < 0)
+            index = m_models->findData(kind);
     m_models->setCurrentIndex(std::max(0, index));
     if (kinds.isEmpty())
         m_models->addItem(tr("No trained model"));

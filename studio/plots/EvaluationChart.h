@@ -1,7 +1,7 @@
 #pragma once
 // The paper's Figure 4 as VTK bar charts: per metric (L1, RMS, L-infinity error, log-likelihood
 // per frame) one chart with a bar per model at the mean over the cross-validation folds and an
-// error bar of the 95 % confidence interval; the realism report (models.md §6.5) the same way.
+// error bar of the 95 % confidence interval; the realism report (docs/models.md §6.5) the same way.
 #include "eval/Evaluation.h"
 #include "plots/VtkWidget.h"
 
