@@ -7,11 +7,15 @@
 #include "SpeechAligner.h"
 #include "VideoOutput.h"
 
+#include "io/MediaInfo.h"
 #include "io/Transcript.h"
+#include "project/Project.h"
+#include "util/Error.h"
 #include "render/SpeechToFace.h"
 #include "tasks/Feedback.h"
 
 #include <QElapsedTimer>
+#include <QFileInfo>
 
 #include <algorithm>
 
@@ -22,6 +26,22 @@ using namespace lipsync::cli;
 
 namespace {
 
+// --background VIDEO, or PROJECT: the project's longest recording with video (the most of the
+// person's head motion and blinks to re-time).
+std::string backgroundVideo(const QString &given)
+{
+    if (!QFileInfo(given).isDir())
+        return given.toStdString();
+    const Project project = Project::load(given.toStdString());
+    const Sequence *longest = nullptr;
+    for (const Sequence &s : project.sequences)
+        if ((!longest || s.frameCount > longest->frameCount) && MediaInfo::probe(project.mediaPath(s)).hasVideo)
+            longest = &s;
+    if (!longest)
+        throw Error("the project has no recording with video to render into", project.manifestPath());
+    return project.mediaPath(*longest);
+}
+
 int runRender(const CommandLine &args)
 {
     SpeechToFaceRequest request;
@@ -30,7 +50,7 @@ int runRender(const CommandLine &args)
     request.mediaPath = args.value("media").toStdString();
     request.transcriptPath = args.value("transcript").toStdString();
     if (args.isSet("background"))
-        request.backgroundPath = args.value("background").toStdString();
+        request.backgroundPath = backgroundVideo(args.value("background"));
     if (args.isSet("fps"))
         request.frameRate = args.positiveNumber("fps");
     RenderOptions options;
@@ -123,9 +143,10 @@ const CommandRegistration registration{
           CommandOption::Required},
          {QStringLiteral("transcript"), QStringLiteral("FILE"),
           QStringLiteral("the words spoken (.align, .lab, .txt, a TextGrid words tier, or .srt/.vtt subtitles)"), {}, CommandOption::Required},
-         {QStringLiteral("background"), QStringLiteral("VIDEO"),
-          QStringLiteral("a video of the person to render the new speech into, played in runs with cuts where the "
-                         "head's motion allows for as long as the speech lasts (default: the media's own frames)")},
+         {QStringLiteral("background"), QStringLiteral("VIDEO|PROJECT"),
+          QStringLiteral("a video of the person to render the new speech into (or a project: its longest "
+                         "recording), played in runs with cuts where the head's motion allows for as long as the "
+                         "speech lasts (default: the media's own frames)")},
          {QStringLiteral("side-by-side"), {}, QStringLiteral("the real clip left, the generated face right")},
          {QStringLiteral("fps"), QStringLiteral("RATE"),
           QStringLiteral("frames per second of the generated face (default: the video's rate; for audio only the "

@@ -149,6 +149,11 @@ private slots:
         QCOMPARE(info.width, 360);
         QVERIFY2(std::abs(info.audioEndTime - frames / 25.0) <= 1024.0 / info.audioSampleRate + 1e-6,
                  qPrintable(QString::number(info.audioEndTime)));
+        // A project as the background: its longest recording with video.
+        const Run project = runLipsync(renderArgs(timing + "joined_presented.flac", timing + "joined.txt", m_dir.filePath("p.mp4"))
+                                       << "--background" << kDemo << "--json");
+        QVERIFY2(project.exitCode == 0, project.err.constData());
+        QVERIFY(parseJsonObject(project.out).value("background").toString().startsWith(kDemo + "/media/"));
         // A background without video is refused, naming it.
         const Run bad = runLipsync(renderArgs(timing + "joined_presented.flac", timing + "joined.txt", m_dir.filePath("x.mp4"))
                                    << "--background" << timing + "joined_presented.flac");
