@@ -74,7 +74,8 @@ public:
     const CompositeOptions &compositeOptions() const { return m_composite; }
 
     // Whether the face in background frame `index` is hidden or lost: the tracker found none, or
-    // its fit error is over 4 times the video's median (a hand or a microphone over the mouth).
+    // its fit error is over 25 times the video's median (a hand or a microphone over the mouth;
+    // a blink stays under 15).
     // Such frames are left as recorded: nothing is drawn over what covers the face.
     bool occluded(int index) const;
 

@@ -190,8 +190,11 @@ private slots:
                 coveredFrames += renderer.occluded(t);
                 if (renderer.occluded(t))
                     QVERIFY2(same, qPrintable(QString::number(t)));
-            } else if (t >= 15 && t < 60) {
-                drawn += !same;
+            } else {
+                // Blinks (frames 43-53 of this clip) fit 5-15 times worse than the median: not covered.
+                QVERIFY2(!renderer.occluded(t), qPrintable(QString::number(t)));
+                if (t >= 15 && t < 60)
+                    drawn += !same;
             }
         }
         QVERIFY2(coveredFrames >= 12, qPrintable(QString("%1 of 15 covered frames found").arg(coveredFrames)));
