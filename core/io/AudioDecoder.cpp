@@ -149,7 +149,7 @@ AudioBuffer AudioDecoder::decode(const std::string &path, int sampleRate)
     // sound before the stream starts and in its gaps is silence (AudioTimeline).
     AudioTimeline timeline(scan->containerDuration);
     const AVRational timeBase = fc->streams[stream]->time_base;
-    const double fileStart = fc->start_time != AV_NOPTS_VALUE ? double(fc->start_time) / AV_TIME_BASE : 0.0;
+    const double fileStart = libav::fileStartSeconds(fc);
     libav::PacketPtr packet(av_packet_alloc());
     libav::FramePtr frame(av_frame_alloc());
     auto receive = [&] {

@@ -97,6 +97,11 @@ FormatPtr openInput(const std::string &path)
     return format;
 }
 
+double fileStartSeconds(const AVFormatContext *format)
+{
+    return format->start_time != AV_NOPTS_VALUE ? double(format->start_time) / AV_TIME_BASE : 0.0;
+}
+
 CodecPtr openDecoder(const std::string &path, AVFormatContext *format, int index)
 {
     const AVCodecParameters *par = format->streams[index]->codecpar;
@@ -205,8 +210,7 @@ std::shared_ptr<MediaScan> scanUncached(const std::string &path)
     scan->formatName = fc->iformat ? fc->iformat->name : "";
     if (fc->duration != AV_NOPTS_VALUE && fc->duration > 0)
         scan->containerDuration = double(fc->duration) / AV_TIME_BASE;
-    const double fileStart = fc->start_time != AV_NOPTS_VALUE ? double(fc->start_time) / AV_TIME_BASE
-                                                             : 0.0;
+    const double fileStart = fileStartSeconds(fc);
 
     CodecPtr video, audio;
     scan->videoStream = firstVideoStream(fc);
@@ -325,6 +329,7 @@ std::shared_ptr<MediaScan> scanUncached(const std::string &path)
 
     if (video && scan->frameTimes.empty())
         throw Error("no decodable video frame (corrupt or truncated file)", path);
+    scan->frames = FrameClock::fromTimes(scan->frameTimes, scan->frameRate);
     scan->audioStartTime = scan->audioTimeline.firstTime();
     scan->audioEndTime = scan->audioTimeline.endTime();
 
@@ -354,8 +359,7 @@ std::shared_ptr<MediaScan> scanUncached(const std::string &path)
         if (video && scan->frameRate > 0) {
             // The frames' span by their timestamps (a variable frame rate has fewer frames than
             // duration x rate), one nominal period for the last.
-            const double decoded = scan->frameTimes.back() - scan->frameTimes.front()
-                                   + 1.0 / scan->frameRate;
+            const double decoded = scan->frames.duration();
             const double declared = declaredDuration(fc, fc->streams[scan->videoStream]);
             if (shortOf(decoded, declared)) {
                 scan->truncated = true;

@@ -8,6 +8,7 @@ extern "C" {
 #include <libswresample/swresample.h>
 }
 
+#include "annotation/FrameClock.h"
 #include "io/AudioTimeline.h"
 
 #include <memory>
@@ -46,6 +47,10 @@ void checkReadableFile(const std::string &path);
 // empty and unrecognised files.
 FormatPtr openInput(const std::string &path);
 
+// The file's start on the media timeline (its earliest stream's start), in the streams' seconds:
+// timestamps less this are seconds from the file's start.
+double fileStartSeconds(const AVFormatContext *format);
+
 // Opens a decoder for stream `index`. Throws lipsync::Error naming the file.
 CodecPtr openDecoder(const std::string &path, AVFormatContext *format, int index);
 
@@ -68,6 +73,7 @@ struct MediaScan
     double frameRate = 0.0;              // the stream's frame rate (avg/r_frame_rate)
     int frameRateNum = 0, frameRateDen = 0; // the same as a fraction (30000/1001)
     std::vector<double> frameTimes;      // decoded frames' presentation times, seconds from the file start
+    FrameClock frames;                   // the same as a clock (evenly spaced when they are)
     int damagedFrames = 0;               // frames the decoder had to conceal
     double videoStreamStart = 0.0;       // the video stream's start_time, seconds from the file start
 

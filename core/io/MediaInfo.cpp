@@ -14,7 +14,7 @@ MediaInfo MediaInfo::probe(const std::string &path)
     if (info.hasVideo) {
         info.videoCodec = scan->videoCodec;
         info.frameCount = int(scan->frameTimes.size());
-        info.frames = FrameClock::fromTimes(scan->frameTimes, scan->frameRate);
+        info.frames = scan->frames;
         info.frameRate = info.frames.rate();
         info.frameRateNum = scan->frameRateNum;
         info.frameRateDen = scan->frameRateDen;

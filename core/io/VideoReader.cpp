@@ -19,14 +19,12 @@ VideoReader::VideoReader(const std::string &path) : m_path(path)
     const auto scan = libav::scanMedia(path); // throws for missing, empty, truncated, unsupported
     if (scan->videoStream < 0)
         throw Error("no video stream", path);
-    m_frameTimes = scan->frameTimes;
-    m_frameCount = int(m_frameTimes.size());
+    m_clock = scan->frames;
+    m_frameCount = m_clock.count();
     m_width = scan->width;
     m_height = scan->height;
-    m_frameRate = scan->frameRate;
-    m_videoStart = scan->videoStreamStart;
-    m_clock = FrameClock::fromTimes(m_frameTimes, m_frameRate);
     m_frameRate = m_clock.rate();
+    m_videoStart = scan->videoStreamStart;
     m_capture = std::make_unique<cv::VideoCapture>();
     reopen();
     if (m_width <= 0 || m_height <= 0) {
@@ -67,7 +65,7 @@ bool VideoReader::seekTo(int index, cv::Mat &image)
     if (!m_capture->read(candidate) || candidate.empty())
         return false;
     const double got = m_capture->get(cv::CAP_PROP_POS_MSEC) / 1000.0;
-    const double want = m_frameTimes[size_t(index)] - m_videoStart;
+    const double want = m_clock.time(index) - m_videoStart;
     const double tolerance = m_frameRate > 0 ? 0.25 / m_frameRate : 0.001;
     if (std::abs(got - want) > tolerance)
         return false;
@@ -102,8 +100,6 @@ cv::Mat VideoReader::frame(int index)
 
 double VideoReader::timestamp(int index) const
 {
-    if (index >= 0 && index < m_frameCount)
-        return m_frameTimes[size_t(index)];
     return m_clock.time(index);
 }
 

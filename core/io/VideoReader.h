@@ -38,10 +38,10 @@ public:
     // Frame `index` (0-based). Throws lipsync::Error if it cannot be decoded (truncated file).
     cv::Mat frame(int index);
     // Presentation time of frame `index` in seconds from the start of the file (the time base
-    // AudioBuffer::startTime uses). Indices past the end extrapolate at frameRate().
+    // AudioBuffer::startTime uses). Indices outside the video extrapolate at frameRate().
     double timestamp(int index) const;
     // All frames' presentation times (frameCount() entries).
-    const std::vector<double> &timestamps() const { return m_frameTimes; }
+    std::vector<double> timestamps() const { return m_clock.times(); }
     // The same as a clock (frame <-> time both ways).
     const FrameClock &clock() const { return m_clock; }
 
@@ -57,8 +57,7 @@ private:
     int m_width = 0;
     int m_height = 0;
     int m_nextIndex = 0; // index of the frame the next read() returns
-    std::vector<double> m_frameTimes;
-    FrameClock m_clock;
+    FrameClock m_clock; // every frame's presentation time
     double m_videoStart = 0.0; // video stream start, seconds from the file start (OpenCV's zero)
 };
 
