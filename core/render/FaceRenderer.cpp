@@ -136,7 +136,12 @@ cv::Size FaceRenderer::frameSize() const
 
 void FaceRenderer::retime(int frames, const BackgroundRetimingOptions &options)
 {
-    m_retiming = m_video && frames > 0 ? retimeBackground(m_poses, frames, options) : BackgroundRetiming{};
+    m_retiming = retimingFor(frames, options);
+}
+
+BackgroundRetiming FaceRenderer::retimingFor(int frames, const BackgroundRetimingOptions &options) const
+{
+    return m_video && frames > 0 ? retimeBackground(m_poses, frames, options) : BackgroundRetiming{};
 }
 
 int FaceRenderer::sourceFrame(int index) const
@@ -193,8 +198,9 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
     // The recording's own lower face moved to the generated shape, then the inside of the mouth
     // where the recording had less of it.
     const Eigen::VectorXd generated = pose(index).apply(m_synthesizer.shape(features));
-    LowerFaceWarp::apply(frame, trackedShape(index), generated);
-    const cv::Mat alpha = mouthInteriorAlpha(index, features);
+    const Eigen::VectorXd tracked = trackedShape(index);
+    LowerFaceWarp::apply(frame, tracked, generated);
+    const cv::Mat alpha = mouthInteriorAlpha(generated, tracked);
     cv::Rect box = cv::boundingRect(alpha > 0.f);
     if (box.empty())
         return;
@@ -221,12 +227,11 @@ Eigen::VectorXd FaceRenderer::trackedShape(int index) const
     return pose(index).apply(m_synthesizer.shape(c));
 }
 
-cv::Mat FaceRenderer::mouthInteriorAlpha(int index, const Eigen::VectorXd &features) const
+cv::Mat FaceRenderer::mouthInteriorAlpha(const Eigen::VectorXd &generated, const Eigen::VectorXd &tracked) const
 {
     cv::Mat alpha(m_size, CV_32F, cv::Scalar(0));
-    const Eigen::VectorXd generated = pose(index).apply(m_synthesizer.shape(features));
     const double wanted = LowerFaceWarp::opening(generated);
-    const double recorded = LowerFaceWarp::opening(trackedShape(index));
+    const double recorded = LowerFaceWarp::opening(tracked);
     // The warp stretches the recorded opening to the generated one: where that is a thin line
     // pulled wide, the inside is drawn; where the recording was as open, it is its own.
     constexpr double kMinOpening = 1.5; // pixels: a closed mouth has no inside to draw
@@ -255,7 +260,7 @@ cv::Mat FaceRenderer::synthesisedWeight(int index, const Eigen::VectorXd &featur
         return cv::Mat(m_size, CV_32F, cv::Scalar(0));
     if (m_composite.region == FaceRegion::Full || m_composite.synthesizeSkin)
         return m_synthesizer.compositeWeight(features, pose(index), m_size, m_composite.region);
-    return mouthInteriorAlpha(index, features);
+    return mouthInteriorAlpha(pose(index).apply(m_synthesizer.shape(features)), trackedShape(index));
 }
 
 cv::Mat FaceRenderer::render(int index, const Eigen::VectorXd &features)

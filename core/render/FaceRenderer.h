@@ -59,6 +59,9 @@ public:
     // `frames` frames (new speech in the person's own video, BackgroundRetiming); `frames` 0
     // undoes it. No effect without a video.
     void retime(int frames, const BackgroundRetimingOptions &options = {});
+    // The re-timing retime() would use, leaving this renderer as it is (for a renderer shared
+    // with views that show the video's frames themselves).
+    BackgroundRetiming retimingFor(int frames, const BackgroundRetimingOptions &options = {}) const;
     const BackgroundRetiming &retiming() const { return m_retiming; }
 
     // The untouched background of frame `index` (BGR 8-bit; a copy). The frame last asked for is
@@ -101,7 +104,8 @@ private:
     int sourceFrame(int index) const;
     // The synthesised inside of the mouth over the warped frame: its alpha (CV_32F, frame size),
     // zero where the recording's own mouth, moved, already shows as much opening.
-    cv::Mat mouthInteriorAlpha(int index, const Eigen::VectorXd &features) const;
+    // `generated` and `tracked`: the generated and the tracked 23 points in the frame's pixels.
+    cv::Mat mouthInteriorAlpha(const Eigen::VectorXd &generated, const Eigen::VectorXd &tracked) const;
 
     const AamModel &m_aam;
     AamSynthesizer m_synthesizer;

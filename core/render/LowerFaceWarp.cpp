@@ -107,8 +107,8 @@ cv::Rect LowerFaceWarp::apply(cv::Mat &frame, const Eigen::VectorXd &tracked, co
     for (double share : {1.0, 0.75, 0.5, 0.25}) {
         for (double smoothing : {0.0, 1e3, 1e4, 1e5}) {
             const ThinPlateWarp warp(sources, sources + share * moves, smoothing);
-            if (warp.valid() && warp.minJacobian(region, margin) >= kMinJacobian)
-                return warp.apply(frame, region, margin) ? region : cv::Rect();
+            if (warp.apply(frame, region, margin, kMinJacobian))
+                return region;
         }
     }
     return {};

@@ -12,6 +12,8 @@
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
+#include <limits>
+
 namespace lipsync {
 
 class ThinPlateWarp
@@ -27,11 +29,10 @@ public:
     Eigen::Vector2d displacement(const Eigen::Vector2d &p) const;
 
     // Warps `image` (any type cv::remap takes) inside `region` in place; returns false (and leaves
-    // it) if the region is empty or the spline could not be fitted.
-    bool apply(cv::Mat &image, cv::Rect region, double falloff) const;
-    // The same, reading from `source` (the same size and type as `image`) and writing the
-    // warped region into `image`.
-    bool apply(const cv::Mat &source, cv::Mat &image, cv::Rect region, double falloff) const;
+    // it) if the region is empty, the spline could not be fitted, or the warp's Jacobian falls
+    // below `minJacobian` somewhere (minJacobian() on the same grid, computed once).
+    bool apply(cv::Mat &image, cv::Rect region, double falloff,
+               double minJacobian = -std::numeric_limits<double>::infinity()) const;
 
     // The smallest Jacobian determinant of the map p -> p - d(p) over `region` (with the same
     // fade as apply()), on the grid: below 0 the warp folds the image over itself (a lip pulled
@@ -43,6 +44,7 @@ public:
 private:
     // The displacement at grid nodes every kGridStep pixels from the region's corner (unfaded).
     void gridDisplacement(cv::Rect region, cv::Mat &dx, cv::Mat &dy) const;
+    static double smallestJacobian(cv::Rect region, double falloff, const cv::Mat &dx, const cv::Mat &dy);
 
     Eigen::MatrixX2d m_points; // the targets q_i
     Eigen::MatrixX2d m_weights; // w_i

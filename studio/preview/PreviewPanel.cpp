@@ -635,10 +635,7 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
             std::shared_ptr<GeneratedFaces> faces;
             if (sequence.renderer) {
                 faces = std::make_shared<GeneratedFaces>(sequence.aam, sequence.renderer, result->frames);
-                std::vector<Similarity> poses;
-                for (int i = 0; i < sequence.renderer->videoFrameCount(); ++i)
-                    poses.push_back(sequence.renderer->pose(i));
-                faces->setRetimedBackground(retimeBackground(poses, result->frameCount()).frames, background);
+                faces->setRetimedBackground(sequence.renderer->retimingFor(result->frameCount()).frames, background);
             } else {
                 auto neutral = std::make_shared<FaceRenderer>(*result->aam);
                 faces = std::make_shared<GeneratedFaces>(result->aam, neutral, result->frames);
