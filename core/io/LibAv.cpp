@@ -202,6 +202,113 @@ double declaredDuration(const AVFormatContext *format, const AVStream *st)
     return seconds(st->duration, st->time_base);
 }
 
+// The video stream's description in `scan`, and its decoder set to count frames (none without one).
+CodecPtr openVideoForScan(const std::string &path, AVFormatContext *fc, double fileStart, MediaScan &scan)
+{
+    CodecPtr video;
+    scan.videoStream = firstVideoStream(fc);
+    if (scan.videoStream >= 0) {
+        AVStream *st = fc->streams[scan.videoStream];
+        video = openDecoder(path, fc, scan.videoStream);
+        // Counting only: the picture is not used, so skip the pixel work (bitstream errors, and
+        // so truncation, are still seen while parsing).
+        video->skip_loop_filter = AVDISCARD_ALL;
+        video->skip_idct = AVDISCARD_ALL;
+        scan.videoCodec = avcodec_get_name(st->codecpar->codec_id);
+        scan.width = st->codecpar->width;
+        scan.height = st->codecpar->height;
+        const AVRational rate = av_guess_frame_rate(fc, st, nullptr);
+        scan.frameRate = rate.num > 0 && rate.den > 0 ? av_q2d(rate) : 0.0;
+        if (scan.frameRate > 0) {
+            scan.frameRateNum = rate.num;
+            scan.frameRateDen = rate.den;
+        }
+        if (st->start_time != AV_NOPTS_VALUE)
+            scan.videoStreamStart = seconds(st->start_time, st->time_base) - fileStart;
+    }
+    return video;
+}
+
+// The audio stream's description in `scan`, and its decoder (none without one, or when the codec
+// has no decoder).
+CodecPtr openAudioForScan(const std::string &path, AVFormatContext *fc, MediaScan &scan)
+{
+    CodecPtr audio;
+    scan.audioStream = firstAudioStream(fc);
+    if (scan.audioStream >= 0) {
+        const AVCodecParameters *par = fc->streams[scan.audioStream]->codecpar;
+        scan.audioCodec = avcodec_get_name(par->codec_id);
+        scan.audioSampleRate = par->sample_rate;
+        scan.audioChannels = par->ch_layout.nb_channels;
+        // A stream without a decoder is reported as present but undecodable by AudioDecoder;
+        // here it only has no decoded length.
+        try {
+            audio = openDecoder(path, fc, scan.audioStream);
+        } catch (const Error &) {
+            audio.reset();
+        }
+    }
+    return audio;
+}
+
+// What the end of the demuxing showed: the signs of a file cut inside a packet.
+struct LastPacketSigns
+{
+    bool lastVideoDamaged = false;
+    bool lastPacketCorrupt = false; // flagged, or reported in the demuxer's log
+    bool lastAudioPacketShort = false;
+    int videoPackets = 0;
+    bool hasVideo = false, hasAudio = false; // the streams were decoded
+};
+
+void judgeTruncation(MediaScan &scan, const AVFormatContext *fc, const LastPacketSigns &signs)
+{
+    // Truncation: the file ends inside a packet. MPEG program streams carry no length, so the
+    // signs are the decoder concealing damage in the very last picture, a last MPEG audio
+    // packet shorter than its header says, or a video packet that yields no picture;
+    // the demuxer reporting a packet cut short; containers with a length in their header
+    // (WAV, MP4, ...) flag the cut packet or decode shorter than they declare.
+    if (signs.lastVideoDamaged) {
+        scan.truncated = true;
+        scan.truncatedReason = "the last video frame is incomplete";
+    } else if (signs.lastPacketCorrupt) {
+        scan.truncated = true;
+        scan.truncatedReason = "a packet is cut short";
+    } else if (signs.lastAudioPacketShort) {
+        scan.truncated = true;
+        scan.truncatedReason = "the last audio frame is incomplete";
+    } else if (signs.hasVideo && signs.videoPackets > int(scan.frameTimes.size())) {
+        // Each (parsed) video packet is one picture; one that yields no frame was cut short.
+        scan.truncated = true;
+        scan.truncatedReason = std::to_string(signs.videoPackets - int(scan.frameTimes.size()))
+                               + " video packet(s) do not decode";
+    } else {
+        auto shortOf = [](double decoded, double declared) {
+            return declared > 0 && decoded < declared - std::max(0.1, 0.02 * declared);
+        };
+        if (signs.hasVideo && scan.frameRate > 0) {
+            // The frames' span by their timestamps (a variable frame rate has fewer frames than
+            // duration x rate), one nominal period for the last.
+            const double decoded = scan.frames.duration();
+            const double declared = declaredDuration(fc, fc->streams[scan.videoStream]);
+            if (shortOf(decoded, declared)) {
+                scan.truncated = true;
+                scan.truncatedReason = "video decodes to " + std::to_string(decoded)
+                                       + " s of " + std::to_string(declared) + " s declared";
+            }
+        }
+        if (!scan.truncated && signs.hasAudio && scan.audioSampleRate > 0) {
+            const double decoded = double(scan.audioSamples) / scan.audioSampleRate;
+            const double declared = declaredDuration(fc, fc->streams[scan.audioStream]);
+            if (shortOf(decoded, declared)) {
+                scan.truncated = true;
+                scan.truncatedReason = "audio decodes to " + std::to_string(decoded)
+                                       + " s of " + std::to_string(declared) + " s declared";
+            }
+        }
+    }
+}
+
 std::shared_ptr<MediaScan> scanUncached(const std::string &path)
 {
     FormatPtr format = openInput(path);
@@ -212,41 +319,8 @@ std::shared_ptr<MediaScan> scanUncached(const std::string &path)
         scan->containerDuration = double(fc->duration) / AV_TIME_BASE;
     const double fileStart = fileStartSeconds(fc);
 
-    CodecPtr video, audio;
-    scan->videoStream = firstVideoStream(fc);
-    if (scan->videoStream >= 0) {
-        AVStream *st = fc->streams[scan->videoStream];
-        video = openDecoder(path, fc, scan->videoStream);
-        // Counting only: the picture is not used, so skip the pixel work (bitstream errors, and
-        // so truncation, are still seen while parsing).
-        video->skip_loop_filter = AVDISCARD_ALL;
-        video->skip_idct = AVDISCARD_ALL;
-        scan->videoCodec = avcodec_get_name(st->codecpar->codec_id);
-        scan->width = st->codecpar->width;
-        scan->height = st->codecpar->height;
-        const AVRational rate = av_guess_frame_rate(fc, st, nullptr);
-        scan->frameRate = rate.num > 0 && rate.den > 0 ? av_q2d(rate) : 0.0;
-        if (scan->frameRate > 0) {
-            scan->frameRateNum = rate.num;
-            scan->frameRateDen = rate.den;
-        }
-        if (st->start_time != AV_NOPTS_VALUE)
-            scan->videoStreamStart = seconds(st->start_time, st->time_base) - fileStart;
-    }
-    scan->audioStream = firstAudioStream(fc);
-    if (scan->audioStream >= 0) {
-        const AVCodecParameters *par = fc->streams[scan->audioStream]->codecpar;
-        scan->audioCodec = avcodec_get_name(par->codec_id);
-        scan->audioSampleRate = par->sample_rate;
-        scan->audioChannels = par->ch_layout.nb_channels;
-        // A stream without a decoder is reported as present but undecodable by AudioDecoder;
-        // here it only has no decoded length.
-        try {
-            audio = openDecoder(path, fc, scan->audioStream);
-        } catch (const Error &) {
-            audio.reset();
-        }
-    }
+    CodecPtr video = openVideoForScan(path, fc, fileStart, *scan);
+    CodecPtr audio = openAudioForScan(path, fc, *scan);
 
     PacketPtr packet(av_packet_alloc());
     FramePtr frame(av_frame_alloc());
@@ -333,50 +407,8 @@ std::shared_ptr<MediaScan> scanUncached(const std::string &path)
     scan->audioStartTime = scan->audioTimeline.firstTime();
     scan->audioEndTime = scan->audioTimeline.endTime();
 
-    // Truncation: the file ends inside a packet. MPEG program streams carry no length, so the
-    // signs are the decoder concealing damage in the very last picture, a last MPEG audio
-    // packet shorter than its header says, or a video packet that yields no picture;
-    // the demuxer reporting a packet cut short; containers with a length in their header
-    // (WAV, MP4, ...) flag the cut packet or decode shorter than they declare.
-    if (lastVideoDamaged) {
-        scan->truncated = true;
-        scan->truncatedReason = "the last video frame is incomplete";
-    } else if (lastPacketCorrupt || watch.reported()) {
-        scan->truncated = true;
-        scan->truncatedReason = "a packet is cut short";
-    } else if (lastAudioPacketShort) {
-        scan->truncated = true;
-        scan->truncatedReason = "the last audio frame is incomplete";
-    } else if (video && videoPackets > int(scan->frameTimes.size())) {
-        // Each (parsed) video packet is one picture; one that yields no frame was cut short.
-        scan->truncated = true;
-        scan->truncatedReason = std::to_string(videoPackets - int(scan->frameTimes.size()))
-                                + " video packet(s) do not decode";
-    } else {
-        auto shortOf = [](double decoded, double declared) {
-            return declared > 0 && decoded < declared - std::max(0.1, 0.02 * declared);
-        };
-        if (video && scan->frameRate > 0) {
-            // The frames' span by their timestamps (a variable frame rate has fewer frames than
-            // duration x rate), one nominal period for the last.
-            const double decoded = scan->frames.duration();
-            const double declared = declaredDuration(fc, fc->streams[scan->videoStream]);
-            if (shortOf(decoded, declared)) {
-                scan->truncated = true;
-                scan->truncatedReason = "video decodes to " + std::to_string(decoded)
-                                        + " s of " + std::to_string(declared) + " s declared";
-            }
-        }
-        if (!scan->truncated && audio && scan->audioSampleRate > 0) {
-            const double decoded = double(scan->audioSamples) / scan->audioSampleRate;
-            const double declared = declaredDuration(fc, fc->streams[scan->audioStream]);
-            if (shortOf(decoded, declared)) {
-                scan->truncated = true;
-                scan->truncatedReason = "audio decodes to " + std::to_string(decoded)
-                                        + " s of " + std::to_string(declared) + " s declared";
-            }
-        }
-    }
+    judgeTruncation(*scan, fc, {lastVideoDamaged, lastPacketCorrupt || watch.reported(), lastAudioPacketShort,
+                                videoPackets, bool(video), bool(audio)});
     return scan;
 }
 
