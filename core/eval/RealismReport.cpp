@@ -285,6 +285,42 @@ MetricSummary summarise(std::vector<double> foldValues)
     return summary;
 }
 
+// The report's rows: tracked, each model, each model driven live, the observer's control.
+std::vector<std::string> reportedMethods(const std::vector<std::string> &kinds, bool live)
+{
+    std::vector<std::string> methods{kTracked};
+    methods.insert(methods.end(), kinds.begin(), kinds.end());
+    if (live)
+        for (const std::string &kind : kinds)
+            methods.push_back(kLive + kind);
+    methods.push_back(kReencoded);
+    return methods;
+}
+
+// Every measure of `method` over the folds: the observer's accuracy per fold, the others from
+// the fold's sequences (foldValue).
+RealismMethod summariseMethod(const std::vector<std::vector<const RealismSequence *>> &byFold, const std::string &method)
+{
+    RealismMethod m;
+    m.kind = method;
+    std::vector<double> frameAccuracy, videoAccuracy;
+    for (const ObserverAccuracy &a : observerFolds(byFold, method)) {
+        frameAccuracy.push_back(a.frames);
+        videoAccuracy.push_back(a.videos);
+    }
+    m.metrics["observerFrames"] = summarise(frameAccuracy);
+    m.metrics["observerVideos"] = summarise(videoAccuracy);
+    for (const std::string &metric : realismMetrics()) {
+        if (m.metrics.count(metric))
+            continue;
+        std::vector<double> folds;
+        for (const auto &fold : byFold)
+            folds.push_back(foldValue(fold, method, metric));
+        m.metrics[metric] = summarise(folds);
+    }
+    return m;
+}
+
 } // namespace
 
 RealismResult evaluateRealism(const Project &project, const RealismOptions &options, Feedback &feedback)
@@ -397,31 +433,8 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
         result.closedRecorded += item.result.closedRecorded;
         byFold[size_t(item.fold)].push_back(&item.result);
     }
-    std::vector<std::string> methods{kTracked};
-    methods.insert(methods.end(), cv.kinds.begin(), cv.kinds.end());
-    if (live)
-        for (const std::string &kind : cv.kinds)
-            methods.push_back(kLive + kind);
-    methods.push_back(kReencoded);
-    for (const std::string &method : methods) {
-        RealismMethod m;
-        m.kind = method;
-        for (const std::string &metric : realismMetrics()) {
-            std::vector<double> folds;
-            for (const auto &fold : byFold)
-                folds.push_back(foldValue(fold, method, metric));
-            m.metrics[metric] = summarise(folds);
-        }
-        const std::vector<ObserverAccuracy> observed = observerFolds(byFold, method);
-        std::vector<double> frameAccuracy, videoAccuracy;
-        for (const ObserverAccuracy &a : observed) {
-            frameAccuracy.push_back(a.frames);
-            videoAccuracy.push_back(a.videos);
-        }
-        m.metrics["observerFrames"] = summarise(frameAccuracy);
-        m.metrics["observerVideos"] = summarise(videoAccuracy);
-        result.methods.push_back(std::move(m));
-    }
+    for (const std::string &method : reportedMethods(cv.kinds, live))
+        result.methods.push_back(summariseMethod(byFold, method));
     // Sequences in project order.
     std::sort(items.begin(), items.end(), [](const Item &a, const Item &b) { return a.sequence < b.sequence; });
     for (Item &item : items)
