@@ -203,21 +203,14 @@ private slots:
         compareImages(dpds, hmm, mean, share);
         QVERIFY2(mean > 0.05, "two models drew the same face");
 
-        // Drawing keeps up with playback by a wide margin (two models per frame); under the
-        // sanitizers it still has to stay interactive.
-#ifdef LIPSYNC_SANITIZED_BUILD
-        const double minFps = 10;
-#else
-        const double minFps = 50;
-#endif
+        // The preview's drawing rate (two models per frame), printed for docs/performance.md;
+        // a figure of wall-clock time, so reported rather than bounded.
         QElapsedTimer clock;
         clock.start();
         const int n = 100;
         for (int i = 0; i < n; ++i)
             m_window->setCurrentFrame(i % 75 == 40 ? 41 : i % 75);
-        const double fps = n / (clock.nsecsElapsed() * 1e-9);
-        qInfo("preview: %.0f frames/s with recorded + 2 generated panels", fps);
-        QVERIFY2(fps > minFps, qPrintable(QString::number(fps)));
+        qInfo("preview: %.0f frames/s with recorded + 2 generated panels", n / (clock.nsecsElapsed() * 1e-9));
     }
 
     // View > Generated Face > Whole Face draws the model's eyes too; unchecked, the recording's
