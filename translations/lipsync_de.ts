@@ -116,17 +116,17 @@
 <context>
     <name>SequenceLoader</name>
     <message>
-        <location filename="../studio/app/SequenceLoader.cpp" line="46"/>
+        <location filename="../studio/app/SequenceLoader.cpp" line="48"/>
         <source>Decoding audio</source>
         <translation>Audio wird dekodiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceLoader.cpp" line="74"/>
+        <location filename="../studio/app/SequenceLoader.cpp" line="77"/>
         <source>Reading video frames</source>
         <translation>Videobilder werden gelesen</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceLoader.cpp" line="99"/>
+        <location filename="../studio/app/SequenceLoader.cpp" line="103"/>
         <source>Loading %1</source>
         <translation>%1 wird geladen</translation>
     </message>
@@ -311,32 +311,32 @@
         <translation>Korrelation der Lippenöffnung</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="48"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="47"/>
         <source>lip-opening correlation in speech</source>
         <translation>Korrelation der Lippenöffnung beim Sprechen</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="49"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="48"/>
         <source>machine observer (0.5: fooled)</source>
         <translation>Maschineller Beobachter (0,5: getäuscht)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="47"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="49"/>
         <source>articulation (s.d. ratio)</source>
         <translation>Artikulation (Verhältnis der Standardabweichungen)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="48"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="50"/>
         <source>/p b m/ closures (ratio)</source>
         <translation>Verschlüsse bei /p b m/ (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="49"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="51"/>
         <source>mouth sharpness (ratio)</source>
         <translation>Schärfe des Mundes (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="113"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="117"/>
         <source>tracked</source>
         <translation>verfolgt</translation>
     </message>
@@ -1171,7 +1171,7 @@
     </message>
     <message>
         <location filename="../studio/live/LiveView.cpp" line="39"/>
-        <location filename="../studio/live/LiveView.cpp" line="401"/>
+        <location filename="../studio/live/LiveView.cpp" line="402"/>
         <source>Save as Sequence</source>
         <translation>Als Sequenz speichern</translation>
     </message>
@@ -1256,102 +1256,102 @@
         <translation>Das Gesicht wird in ein Standbild der Person gezeichnet</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="242"/>
+        <location filename="../studio/live/LiveView.cpp" line="243"/>
         <source>No trained model</source>
         <translation>Kein trainiertes Modell</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="275"/>
+        <location filename="../studio/live/LiveView.cpp" line="276"/>
         <source>No microphone was found. Connect one: the list above follows the devices as they come and go.</source>
         <translation>Es wurde kein Mikrofon gefunden. Schließen Sie eines an: Die Liste oben folgt den Geräten, wie sie kommen und gehen.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="284"/>
+        <location filename="../studio/live/LiveView.cpp" line="285"/>
         <source>Phones: CMU Sphinx US English (any speaker)</source>
         <translation>Phone: CMU Sphinx US-Englisch (jeder Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="285"/>
+        <location filename="../studio/live/LiveView.cpp" line="286"/>
         <source>Phones: the aligner model&apos;s HMMs</source>
         <translation>Phone: die HMMs des Ausrichtungsmodells</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="291"/>
+        <location filename="../studio/live/LiveView.cpp" line="292"/>
         <source>Preparing: loading the phone recogniser and finding the face in the current sequence…</source>
         <translation>Vorbereitung: Die Phon-Erkennung wird geladen und das Gesicht in der aktuellen Sequenz gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="294"/>
+        <location filename="../studio/live/LiveView.cpp" line="295"/>
         <source>Listening. Speak, and the face follows.</source>
         <translation>Hört zu. Sprechen Sie, und das Gesicht folgt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="297"/>
+        <location filename="../studio/live/LiveView.cpp" line="298"/>
         <source>Finishing the last frames…</source>
         <translation>Die letzten Bilder werden fertiggestellt…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="303"/>
+        <location filename="../studio/live/LiveView.cpp" line="304"/>
         <source>Writing the video…</source>
         <translation>Das Video wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="305"/>
+        <location filename="../studio/live/LiveView.cpp" line="306"/>
         <source>The last session (%1 s) is kept: save it as a sequence, export it as a video, or start again.</source>
         <translation>Die letzte Sitzung (%1 s) ist erhalten: Speichern Sie sie als Sequenz, exportieren Sie sie als Video oder starten Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="312"/>
+        <location filename="../studio/live/LiveView.cpp" line="313"/>
         <source>Press Start and speak: the face moves with your voice.</source>
         <translation>Drücken Sie „Start“ und sprechen Sie: Das Gesicht bewegt sich mit Ihrer Stimme.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="317"/>
+        <location filename="../studio/live/LiveView.cpp" line="318"/>
         <source>This model&apos;s file predates Live&apos;s guess of phones in context, so its face waits for each phone to end, in pauses for seconds. Train it again for a face that follows at once.</source>
         <translation>Die Datei dieses Modells ist älter als Lives Schätzung der Phone im Kontext, daher wartet sein Gesicht auf das Ende jedes Phons, in Pausen sekundenlang. Trainieren Sie es neu, damit das Gesicht sofort folgt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="321"/>
+        <location filename="../studio/live/LiveView.cpp" line="322"/>
         <source>Only the first %1 minutes are kept for saving; the face went on moving after that.</source>
         <translation>Nur die ersten %1 Minuten bleiben zum Speichern erhalten; das Gesicht hat sich danach weiterbewegt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="341"/>
+        <location filename="../studio/live/LiveView.cpp" line="342"/>
         <source>Latency: %1 ms mean, %2 ms max</source>
         <translation>Latenz: %1 ms im Mittel, %2 ms maximal</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="344"/>
+        <location filename="../studio/live/LiveView.cpp" line="345"/>
         <source>Time from the sound to the frame that shows it, over the last %1 seconds; %2 ms of it the phone recogniser and the model wait for the sound that follows</source>
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden; %2 ms davon warten die Phon-Erkennung und das Modell auf den folgenden Ton</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="349"/>
+        <location filename="../studio/live/LiveView.cpp" line="350"/>
         <source>Latency: –</source>
         <translation>Latenz: –</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="351"/>
+        <location filename="../studio/live/LiveView.cpp" line="352"/>
         <source>%1 s, frame %2 at %3 fps</source>
         <translation>%1 s, Bild %2 bei %3 fps</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="402"/>
+        <location filename="../studio/live/LiveView.cpp" line="403"/>
         <source>The session&apos;s sound is written into the project&apos;s folder, and the bundled demo is read-only. Save the project in a folder of your own first?</source>
         <translation>Der Ton der Sitzung wird in den Ordner des Projekts geschrieben, und das mitgelieferte Demo ist schreibgeschützt. Das Projekt zuerst in einem eigenen Ordner speichern?</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="411"/>
+        <location filename="../studio/live/LiveView.cpp" line="412"/>
         <source>The live session is sequence %1, at the end of the list.</source>
         <translation>Die Live-Sitzung ist jetzt die Sequenz %1 am Ende der Liste.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="420"/>
+        <location filename="../studio/live/LiveView.cpp" line="421"/>
         <source>Export Live Session</source>
         <translation>Live-Sitzung exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="422"/>
+        <location filename="../studio/live/LiveView.cpp" line="423"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
@@ -1440,172 +1440,172 @@
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="163"/>
+        <location filename="../studio/app/MainWindow.cpp" line="164"/>
         <source>Generated &amp;Face</source>
         <translation>Generiertes &amp;Gesicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="165"/>
+        <location filename="../studio/app/MainWindow.cpp" line="170"/>
         <source>&amp;Whole Face (Eyes Included)</source>
         <translation>&amp;Ganzes Gesicht (mit Augen)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="167"/>
+        <location filename="../studio/app/MainWindow.cpp" line="172"/>
         <source>Synthesise the whole modelled face; otherwise the recording&apos;s own eyes and upper face are kept</source>
         <translation>Das ganze modellierte Gesicht synthetisieren; sonst bleiben die Augen und das Obergesicht der Aufnahme erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="165"/>
+        <location filename="../studio/app/MainWindow.cpp" line="166"/>
         <source>&amp;Synthesised Skin</source>
         <translation>&amp;Synthetisierte Haut</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="167"/>
+        <location filename="../studio/app/MainWindow.cpp" line="168"/>
         <source>Paste the AAM&apos;s synthesis of the lower face, skin included; otherwise the recording&apos;s own lower face is moved to the generated shape and only the inside of the mouth is synthesised</source>
         <translation>Die AAM-Synthese des unteren Gesichts samt Haut einsetzen; sonst wird das eigene untere Gesicht der Aufnahme in die erzeugte Form bewegt und nur das Mundinnere synthetisiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="169"/>
+        <location filename="../studio/app/MainWindow.cpp" line="174"/>
         <source>&amp;Detail from Training Images</source>
         <translation>&amp;Details aus Trainingsbildern</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="171"/>
+        <location filename="../studio/app/MainWindow.cpp" line="176"/>
         <source>Add the teeth, lip highlights and skin detail of the AAM&apos;s nearest training images to the model&apos;s smooth texture</source>
         <translation>Zähne, Glanzlichter der Lippen und Hautdetails der nächstgelegenen Trainingsbilder des AAM zur glatten Textur des Modells hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="173"/>
+        <location filename="../studio/app/MainWindow.cpp" line="178"/>
         <source>&amp;Match the Frame&apos;s Lighting</source>
         <translation>&amp;Beleuchtung an das Bild anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="189"/>
+        <location filename="../studio/app/MainWindow.cpp" line="195"/>
         <source>&amp;Close the Lips on /p b m/</source>
         <translation>&amp;Lippen bei /p b m/ schließen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="191"/>
+        <location filename="../studio/app/MainWindow.cpp" line="197"/>
         <source>Close the generated lips on the bilabials /p b m/, as speakers do; off: the model&apos;s trajectory as generated</source>
         <translation>Die erzeugten Lippen bei den Bilabialen /p b m/ schließen, wie Sprecher es tun; aus: die Trajektorie des Modells, wie sie erzeugt wurde</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="237"/>
+        <location filename="../studio/app/MainWindow.cpp" line="243"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="241"/>
+        <location filename="../studio/app/MainWindow.cpp" line="247"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="251"/>
+        <location filename="../studio/app/MainWindow.cpp" line="257"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="264"/>
+        <location filename="../studio/app/MainWindow.cpp" line="261"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="285"/>
+        <location filename="../studio/app/MainWindow.cpp" line="282"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="286"/>
+        <location filename="../studio/app/MainWindow.cpp" line="283"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="287"/>
+        <location filename="../studio/app/MainWindow.cpp" line="284"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="289"/>
+        <location filename="../studio/app/MainWindow.cpp" line="286"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="320"/>
+        <location filename="../studio/app/MainWindow.cpp" line="317"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="323"/>
+        <location filename="../studio/app/MainWindow.cpp" line="320"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="338"/>
+        <location filename="../studio/app/MainWindow.cpp" line="335"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="350"/>
+        <location filename="../studio/app/MainWindow.cpp" line="347"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="361"/>
+        <location filename="../studio/app/MainWindow.cpp" line="358"/>
         <source>&amp;Live: Speak and Watch the Face</source>
         <translation>&amp;Live: Sprechen und das Gesicht beobachten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="363"/>
+        <location filename="../studio/app/MainWindow.cpp" line="360"/>
         <source>Speak into the microphone and watch the face move</source>
         <translation>Ins Mikrofon sprechen und dem Gesicht beim Bewegen zusehen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="367"/>
+        <location filename="../studio/app/MainWindow.cpp" line="364"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="371"/>
+        <location filename="../studio/app/MainWindow.cpp" line="368"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="375"/>
+        <location filename="../studio/app/MainWindow.cpp" line="372"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="378"/>
+        <location filename="../studio/app/MainWindow.cpp" line="375"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="428"/>
+        <location filename="../studio/app/MainWindow.cpp" line="425"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="491"/>
+        <location filename="../studio/app/MainWindow.cpp" line="488"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="499"/>
+        <location filename="../studio/app/MainWindow.cpp" line="496"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="528"/>
+        <location filename="../studio/app/MainWindow.cpp" line="525"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="530"/>
+        <location filename="../studio/app/MainWindow.cpp" line="527"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="534"/>
+        <location filename="../studio/app/MainWindow.cpp" line="531"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1613,43 +1613,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="545"/>
+        <location filename="../studio/app/MainWindow.cpp" line="542"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="546"/>
+        <location filename="../studio/app/MainWindow.cpp" line="543"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="546"/>
+        <location filename="../studio/app/MainWindow.cpp" line="543"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="552"/>
+        <location filename="../studio/app/MainWindow.cpp" line="549"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="571"/>
+        <location filename="../studio/app/MainWindow.cpp" line="567"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="599"/>
-        <location filename="../studio/app/MainWindow.cpp" line="607"/>
+        <location filename="../studio/app/MainWindow.cpp" line="595"/>
+        <location filename="../studio/app/MainWindow.cpp" line="603"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="606"/>
+        <location filename="../studio/app/MainWindow.cpp" line="602"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="250"/>
+        <location filename="../studio/app/MainWindow.cpp" line="256"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -1675,213 +1675,213 @@
 <context>
     <name>lipsync::studio::ModelsPanel</name>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="51"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="55"/>
         <source>Appearance model</source>
         <translation>Erscheinungsmodell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="52"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="56"/>
         <source>Phoneme aligner</source>
         <translation>Phonem-Aligner</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="75"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="79"/>
         <source>Build AAM…</source>
         <translation>AAM erstellen …</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="86"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="101"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="86"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="101"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="86"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="101"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="236"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="258"/>
         <source>Made in this session; written when the project is saved</source>
         <translation>In dieser Sitzung erstellt; wird beim Speichern des Projekts geschrieben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="248"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="270"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="76"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
         <source>Train</source>
         <translation>Trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="62"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="66"/>
         <source>%1 states for phones in context</source>
         <translation>%1 Zustände für Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="63"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="67"/>
         <source>one state per phone</source>
         <translation>ein Zustand je Phonem</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="66"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="70"/>
         <source>%1, full covariances</source>
         <translation>%1, volle Kovarianzen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="68"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="72"/>
         <source>%1 parameters, %2, variance compensation</source>
         <translation>%1 Parameter, %2, Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="69"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="73"/>
         <source>%1 parameters, %2</source>
         <translation>%1 Parameter, %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="76"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="77"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
         <source>Evaluate (k-fold)</source>
         <translation>Evaluieren (k-fach)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="77"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
         <source>Realism</source>
         <translation>Realismus</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="84"/>
         <source>Variance compensation</source>
         <translation>Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="85"/>
         <source>Phones in context</source>
         <translation>Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="95"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="111"/>
         <source>VarPro / Levenberg–Marquardt</source>
         <translation>VarPro / Levenberg–Marquardt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="96"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="112"/>
         <source>Gradient ascent (paper)</source>
         <translation>Gradientenaufstieg (Artikel)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="97"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
         <source>Diagonal A</source>
         <translation>Diagonales A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="98"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="114"/>
         <source>Full A</source>
         <translation>Volles A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="101"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="117"/>
         <source>Covariance by CV</source>
         <translation>Kovarianz per KV</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="102"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
         <source>Diagonal covariance</source>
         <translation>Diagonale Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="103"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="119"/>
         <source>Full covariance</source>
         <translation>Volle Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="125"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="141"/>
         <source>Scale each model&apos;s generated trajectories to the spread of the training features: lips that open and close as much as the recording&apos;s, at the cost of a larger error per frame. Off: the paper&apos;s models exactly.</source>
         <translation>Skaliert die erzeugten Trajektorien jedes Modells auf die Streuung der Trainingsmerkmale: Lippen, die sich so weit öffnen und schließen wie in der Aufnahme, um den Preis eines größeren Fehlers je Bild. Aus: genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="133"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="149"/>
         <source>Train each model on states for phones in their context (the neighbouring phones and the part of the phone), tied by decision trees: lips that anticipate the next sound. Off: one state per phone, the paper&apos;s models exactly.</source>
         <translation>Jedes Modell auf Zuständen für Phoneme in ihrem Kontext trainieren (die benachbarten Phoneme und der Teil des Phonems), durch Entscheidungsbäume gebündelt: Lippen, die den nächsten Laut vorwegnehmen. Aus: ein Zustand je Phonem, genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="148"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="170"/>
         <source>folds: </source>
         <translation>Teilmengen (k-fach): </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="158"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="180"/>
         <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
         <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="159"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="181"/>
         <source>Train the checked models on every sequence with features and phonemes</source>
         <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="160"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="182"/>
         <source>Stop training or evaluation; the previous models stay</source>
         <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="161"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="183"/>
         <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
         <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="166"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="188"/>
         <source>Render the held-out sequences of the same folds into their recordings and measure the lips with dlib&apos;s landmarks: opening correlation, articulation, /p b m/ closures, lag, sharpness, seam</source>
         <translation>Die zurückgehaltenen Sequenzen derselben Folds in ihre Aufnahmen rendern und die Lippen mit dlibs Landmarken messen: Korrelation der Öffnung, Artikulation, Verschlüsse bei /p b m/, Versatz, Schärfe, Naht</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="194"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="216"/>
         <source>AAM parameter </source>
         <translation>AAM-Parameter </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="195"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="217"/>
         <source>Which AAM parameter to plot over time</source>
         <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="206"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="228"/>
         <source>Trajectory</source>
         <translation>Trajektorie</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="207"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="229"/>
         <source>Training</source>
         <translation>Training</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="208"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="230"/>
         <source>Evaluation</source>
         <translation>Evaluation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="284"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="306"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter tracken und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="341"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="369"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="363"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="391"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="343"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="365"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -1889,37 +1889,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="360"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="382"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="380"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="402"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="382"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="404"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="389"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="411"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="459"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="481"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="460"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="482"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="403"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="425"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -1927,12 +1927,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="105"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="121"/>
         <source>Brand&apos;s output covariances. By CV: diagonal or full, whichever of the two generates held-out training sequences more closely (cross-validation). Diagonal: the paper&apos;s model.</source>
         <translation>Brands Ausgabekovarianzen. Per KV: diagonal oder voll, je nachdem, welche der beiden zurückgehaltene Trainingssequenzen genauer erzeugt (Kreuzvalidierung). Diagonal: das Modell der Veröffentlichung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="409"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="431"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen (k-fache Kreuzvalidierung).</numerusform>
@@ -1940,7 +1940,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="429"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="451"/>
         <source>Realism of %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
@@ -1948,7 +1948,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="435"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="457"/>
         <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
         <translation>
             <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
@@ -1956,37 +1956,37 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="479"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="501"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="507"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="529"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="512"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="534"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="366"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="388"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="536"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="558"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="546"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="568"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="571"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="593"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>
@@ -2078,72 +2078,82 @@
 <context>
     <name>lipsync::studio::ParticipantView</name>
     <message>
-        <location filename="../studio/compare/ParticipantView.cpp" line="24"/>
+        <location filename="../studio/compare/ParticipantView.cpp" line="26"/>
         <source>Which one is real?</source>
         <translation>Welches ist echt?</translation>
     </message>
     <message>
-        <location filename="../studio/compare/ParticipantView.cpp" line="54"/>
+        <location filename="../studio/compare/ParticipantView.cpp" line="56"/>
         <source>Preparing the next videos…</source>
         <translation>Die nächsten Videos werden vorbereitet …</translation>
     </message>
     <message>
-        <location filename="../studio/compare/ParticipantView.cpp" line="55"/>
-        <location filename="../studio/compare/ParticipantView.cpp" line="68"/>
+        <location filename="../studio/compare/ParticipantView.cpp" line="57"/>
+        <location filename="../studio/compare/ParticipantView.cpp" line="70"/>
         <source>Trial %1 of %2</source>
         <translation>Durchgang %1 von %2</translation>
     </message>
     <message>
-        <location filename="../studio/compare/ParticipantView.cpp" line="69"/>
+        <location filename="../studio/compare/ParticipantView.cpp" line="71"/>
         <source>Which video is real?   ← left     ↓ can&apos;t decide     → right     R replay</source>
         <translation>Welches Video ist echt?   ← links     ↓ unentschieden     → rechts     R wiederholen</translation>
     </message>
     <message>
-        <location filename="../studio/compare/ParticipantView.cpp" line="82"/>
+        <location filename="../studio/compare/ParticipantView.cpp" line="84"/>
         <source>Thank you! All answers are saved.</source>
         <translation>Vielen Dank! Alle Antworten sind gespeichert.</translation>
     </message>
     <message>
-        <location filename="../studio/compare/ParticipantView.cpp" line="83"/>
-        <location filename="../studio/compare/ParticipantView.cpp" line="92"/>
+        <location filename="../studio/compare/ParticipantView.cpp" line="85"/>
+        <location filename="../studio/compare/ParticipantView.cpp" line="94"/>
         <source>Press Esc to leave.</source>
         <translation>Esc drücken zum Verlassen.</translation>
     </message>
     <message>
-        <location filename="../studio/compare/ParticipantView.cpp" line="169"/>
+        <location filename="../studio/compare/ParticipantView.cpp" line="172"/>
         <source>Leave the study</source>
         <translation>Studie verlassen</translation>
     </message>
     <message>
-        <location filename="../studio/compare/ParticipantView.cpp" line="170"/>
+        <location filename="../studio/compare/ParticipantView.cpp" line="173"/>
         <source>Leave the study now? The answers given so far are saved; this participant can continue later.</source>
         <translation>Die Studie jetzt verlassen? Die bisherigen Antworten sind gespeichert; diese Person kann später weitermachen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/ParticipantView.cpp" line="178"/>
+        <source>Leave</source>
+        <translation>Verlassen</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/ParticipantView.cpp" line="179"/>
+        <source>Continue the study</source>
+        <translation>Studie fortsetzen</translation>
     </message>
 </context>
 <context>
     <name>lipsync::studio::PlaybackController</name>
     <message>
-        <location filename="../studio/context/PlaybackController.cpp" line="111"/>
+        <location filename="../studio/context/PlaybackController.cpp" line="109"/>
         <source>no audio output device was found</source>
         <translation>kein Audio-Ausgabegerät gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/context/PlaybackController.cpp" line="120"/>
+        <location filename="../studio/context/PlaybackController.cpp" line="118"/>
         <source>the audio device %1 takes neither float nor 16-bit samples</source>
         <translation>das Audiogerät %1 nimmt weder Float- noch 16-Bit-Samples an</translation>
     </message>
     <message>
-        <location filename="../studio/context/PlaybackController.cpp" line="134"/>
+        <location filename="../studio/context/PlaybackController.cpp" line="132"/>
         <source>the clip&apos;s sound could not be decoded</source>
         <translation>der Ton des Clips konnte nicht dekodiert werden</translation>
     </message>
     <message>
-        <location filename="../studio/context/PlaybackController.cpp" line="172"/>
+        <location filename="../studio/context/PlaybackController.cpp" line="170"/>
         <source>the audio device %1 could not be opened</source>
         <translation>das Audiogerät %1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../studio/context/PlaybackController.cpp" line="207"/>
+        <location filename="../studio/context/PlaybackController.cpp" line="205"/>
         <source>the audio device stopped</source>
         <translation>das Audiogerät hat die Wiedergabe abgebrochen</translation>
     </message>
@@ -2272,7 +2282,7 @@
     </message>
     <message>
         <location filename="../studio/preview/PreviewPanel.cpp" line="591"/>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="647"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="650"/>
         <source>No faces could be generated for this speech.</source>
         <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
     </message>
@@ -2282,7 +2292,7 @@
         <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="619"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="622"/>
         <source>Generate faces for %1</source>
         <translation>Gesichter für %1 erzeugen</translation>
     </message>
@@ -2365,38 +2375,38 @@
         <translation>Das Demoprojekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="174"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="177"/>
         <source>Save Project As (a folder)</source>
         <translation>Projekt speichern unter (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="179"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="198"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="182"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="201"/>
         <source>The project could not be saved.</source>
         <translation>Das Projekt konnte nicht gespeichert werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="180"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="183"/>
         <source>a file of that name exists; a project needs a folder</source>
         <translation>es gibt eine Datei dieses Namens; ein Projekt braucht einen Ordner</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="185"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="188"/>
         <source>Replace Project</source>
         <translation>Projekt ersetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="186"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="189"/>
         <source>%1 already holds a project. Replace it?</source>
         <translation>%1 enthält bereits ein Projekt. Ersetzen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="211"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="214"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="211"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="214"/>
         <source>The project has unsaved changes. Save them?</source>
         <translation>Das Projekt hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
@@ -2512,12 +2522,12 @@
 <context>
     <name>lipsync::studio::RecentProjects</name>
     <message>
-        <location filename="../studio/app/RecentProjects.cpp" line="54"/>
+        <location filename="../studio/app/RecentProjects.cpp" line="71"/>
         <source>No recent projects</source>
         <translation>Keine zuletzt geöffneten Projekte</translation>
     </message>
     <message>
-        <location filename="../studio/app/RecentProjects.cpp" line="58"/>
+        <location filename="../studio/app/RecentProjects.cpp" line="75"/>
         <source>Clear List</source>
         <translation>Liste leeren</translation>
     </message>
@@ -2538,87 +2548,87 @@
 <context>
     <name>lipsync::studio::SequenceDetailsView</name>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="28"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="31"/>
         <source>Media:</source>
         <translation>Medien:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="29"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="32"/>
         <source>Video:</source>
         <translation>Video:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="30"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="33"/>
         <source>Audio:</source>
         <translation>Audio:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="32"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="35"/>
         <source>Transcript:</source>
         <translation>Transkript:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="33"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="36"/>
         <source>Words:</source>
         <translation>Wörter:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="34"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="37"/>
         <source>Landmarks:</source>
         <translation>Landmarken:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="44"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="43"/>
         <source>No sequence</source>
         <translation>Keine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="58"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="57"/>
         <source>sound only, %1 frames at %2 fps</source>
         <translation>nur Ton, %1 Bilder mit %2 fps</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="62"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="61"/>
         <source>%1 frames, %2 fps, %3×%4</source>
         <translation>%1 Bilder, %2 fps, %3×%4</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="68"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="67"/>
         <source>%1 s, decoded at %2 Hz mono</source>
         <translation>%1 s, dekodiert mit %2 Hz mono</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="72"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="71"/>
         <source>none (%1)</source>
         <translation>keiner (%1)</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="75"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="74"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="76"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="75"/>
         <source>proposed, not checked</source>
         <translation>vorgeschlagen, nicht geprüft</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="77"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="76"/>
         <source>%1 words</source>
         <translation>%1 Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="81"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="80"/>
         <source>Proposed by speech recognition: edit it in the list&apos;s Transcript column, or accept it as it is</source>
         <translation>Von der Spracherkennung vorgeschlagen: in der Spalte Transkript der Liste bearbeiten oder so übernehmen, wie es ist</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="87"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="86"/>
         <source>%1 timed words</source>
         <translation>%1 Wörter mit Zeitangaben</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="88"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="87"/>
         <source>%1 of %2 frames</source>
         <translation>%1 von %2 Bildern</translation>
     </message>
@@ -3060,253 +3070,254 @@
 <context>
     <name>lipsync::studio::TimelinePanel</name>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="182"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="183"/>
         <source>Zoom out (wheel down)</source>
         <translation>Verkleinern (Mausrad nach unten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="183"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="184"/>
         <source>Zoom in (wheel up)</source>
         <translation>Vergrößern (Mausrad nach oben)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="184"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="185"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="184"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="185"/>
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="429"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="430"/>
         <source>Align</source>
         <translation>Ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
         <source>Align this sequence&apos;s transcript to its audio (words and phones)</source>
         <translation>Das Transkript dieser Sequenz am Ton ausrichten (Wörter und Phone)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
         <source>Align All</source>
         <translation>Alle ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
         <source>Align every sequence that has a transcript</source>
         <translation>Jede Sequenz mit Transkript ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="98"/>
         <source>Re-align Selection</source>
         <translation>Auswahl neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="98"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="99"/>
         <source>Align the selected stretch again, keeping the words whose timing you edited</source>
         <translation>Den ausgewählten Abschnitt neu ausrichten; Wörter mit bearbeitetem Timing bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="102"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="103"/>
         <source>Adapt to Speaker</source>
         <translation>An Sprecher anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="113"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="114"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="114"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="115"/>
         <source>Align with the model shipped with the studio, trained on one GRID speaker</source>
         <translation>Mit dem mitgelieferten Modell ausrichten, trainiert auf einem GRID-Sprecher</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="115"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="116"/>
         <source>Generic US English (CMU Sphinx)</source>
         <translation>Allgemeines US-Englisch (CMU Sphinx)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="116"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="117"/>
         <source>Align with CMU Sphinx&apos;s US-English model trained on many speakers (Debian package pocketsphinx-en-us)</source>
         <translation>Mit dem US-englischen Modell von CMU Sphinx ausrichten, trainiert auf vielen Sprechern (Debian-Paket pocketsphinx-en-us)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Split at Cursor</source>
         <translation>Am Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Split the interval under the cursor</source>
         <translation>Das Intervall unter dem Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="603"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
         <source>Join the selected interval with the next one</source>
         <translation>Das ausgewählte Intervall mit dem nächsten verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
         <source>Relabel…</source>
         <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
         <source>Change the label of the selected interval</source>
         <translation>Die Beschriftung des ausgewählten Intervalls ändern</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
         <source>Insert Silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
         <source>Make the selection a silence</source>
         <translation>Die Auswahl zur Stille machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="140"/>
         <source>Insert Breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="139"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="140"/>
         <source>Make the selection a breath</source>
         <translation>Die Auswahl zum Atmer machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="140"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="141"/>
         <source>Play Selection</source>
         <translation>Auswahl abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="140"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="141"/>
         <source>Play the selected stretch (Space in the timeline)</source>
         <translation>Den ausgewählten Abschnitt abspielen (Leertaste in der Zeitleiste)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="141"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="142"/>
         <source>Play Word</source>
         <translation>Wort abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="141"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="142"/>
         <source>Play the word under the cursor</source>
         <translation>Das Wort unter dem Cursor abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="142"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="143"/>
         <source>Play All</source>
         <translation>Alles abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="142"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="143"/>
         <source>Play the whole sequence</source>
         <translation>Die ganze Sequenz abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="143"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="144"/>
         <source>Pronunciations…</source>
         <translation>Aussprachen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="144"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="145"/>
         <source>The project&apos;s pronunciations, and the words espeak-ng guessed</source>
         <translation>Die Aussprachen des Projekts und die von espeak-ng geschätzten Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="171"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="172"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="172"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="173"/>
         <source>The acoustic model the aligner uses</source>
         <translation>Das akustische Modell, das die Ausrichtung verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="209"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="210"/>
         <source>Show Spectrogram</source>
         <translation>Spektrogramm anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="210"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="211"/>
         <source>Show the spectrogram under the waveform in the timeline</source>
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="288"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="291"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="307"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="310"/>
         <source>Alignment of the speech in the Preview: %1 (read-only; Back to Sequence there to edit)</source>
         <translation>Alignierung der Sprache in der Vorschau: %1 (schreibgeschützt; dort „Zurück zur Sequenz“ zum Bearbeiten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="322"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="324"/>
         <source>No audio</source>
         <translation>Kein Ton</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="393"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="394"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="406"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="407"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="430"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="431"/>
         <source>The transcript of %1 changed since its boundaries were edited. Aligning it again replaces the edited boundaries. Align anyway?</source>
         <translation>Das Transkript von %1 wurde geändert, nachdem seine Grenzen bearbeitet wurden. Erneutes Alignieren ersetzt die bearbeiteten Grenzen. Trotzdem alignieren?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="441"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="442"/>
         <source>Every word of %1 is user-edited: nothing to align there.</source>
         <translation>Jedes Wort von %1 ist von Hand bearbeitet: Dort gibt es nichts zu alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="462"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="463"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="465"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="466"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="411"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="412"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="103"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="104"/>
         <source>Adapt the aligner to each recording&apos;s voice before aligning it (slower; better for voices unlike the model&apos;s training speakers)</source>
         <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Stimmen, die den Trainingssprechern des Modells unähnlich sind)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="491"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="492"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="516"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="517"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -3314,12 +3325,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="536"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="537"/>
         <source>%1: the alignment came out as it was; nothing changed.</source>
         <translation>%1: Die Alignierung ist unverändert geblieben.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="539"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="540"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -3327,47 +3338,62 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="578"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="579"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="578"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="579"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="586"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="587"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="596"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="604"/>
+        <source>These phones belong to two words, “%1” and “%2”. Merge the words as well?</source>
+        <translation>Diese Phone gehören zu zwei Wörtern, „%1“ und „%2“. Die Wörter ebenfalls verbinden?</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="607"/>
+        <source>Merge Phones and Words</source>
+        <translation>Phone und Wörter verbinden</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="613"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="628"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="613"/>
+        <source>Merge phones and words</source>
+        <translation>Phone und Wörter verbinden</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="645"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="628"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="645"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="687"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="704"/>
         <source>Not one of the 41 phones (ARPAbet, sil, br)</source>
         <translation>Keines der 41 Phone (ARPAbet, sil, br)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="688"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="705"/>
         <source>Enter one word</source>
         <translation>Ein einzelnes Wort eingeben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="696"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="713"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>
@@ -3469,39 +3495,39 @@
 <context>
     <name>lipsync::studio::WaveformView</name>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="448"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="451"/>
         <source>spectrogram</source>
         <translation>Spektrogramm</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="472"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="475"/>
         <source>No phones yet: align the sequence (Align)</source>
         <translation>Noch keine Phone: Sequenz ausrichten (Ausrichten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="472"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="475"/>
         <source>No words</source>
         <translation>Keine Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="473"/>
-        <location filename="../studio/timeline/WaveformView.cpp" line="514"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="476"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="517"/>
         <source>phones</source>
         <translation>Phone</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="473"/>
-        <location filename="../studio/timeline/WaveformView.cpp" line="514"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="476"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="517"/>
         <source>words</source>
         <translation>Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="521"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="524"/>
         <source>frame labels</source>
         <translation>Bildlabels</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/WaveformView.cpp" line="542"/>
+        <location filename="../studio/timeline/WaveformView.cpp" line="546"/>
         <source>frames</source>
         <translation>Bilder</translation>
     </message>

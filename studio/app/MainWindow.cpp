@@ -11,6 +11,7 @@
 #include "app/SequenceLoader.h"
 #include "app/TranscriptProposer.h"
 #include "app/TransportBar.h"
+#include "app/WheelGuard.h"
 #include "build/ModelsPanel.h"
 #include "compare/StudyController.h"
 #include "context/ErrorReporter.h"
@@ -40,14 +41,13 @@
 #include <QItemSelectionModel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
 #include <QSettings>
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QLabel>
-#include <QScrollArea>
-#include <QScrollBar>
 #include <QTableView>
 #include <QToolBar>
 #include <QToolButton>
@@ -143,6 +143,7 @@ MainWindow::MainWindow(QWidget *parent)
     m_preview->setPlaceholderText(tr("No project open"));
     updateTitle();
     restoreSettings();
+    WheelGuard::install(this);
 }
 
 MainWindow::~MainWindow()
@@ -257,16 +258,7 @@ void MainWindow::createDocks()
 
     m_models = new ModelsPanel(this);
     m_models->attach(m_context, plotTabs);
-    // Scrolled rather than squeezed: the panel's controls must not set the right column's (and
-    // with it the timeline's) least height.
-    auto *modelsScroll = new QScrollArea(this);
-    modelsScroll->setWidget(m_models);
-    modelsScroll->setWidgetResizable(true);
-    modelsScroll->setFrameShape(QFrame::NoFrame);
-    modelsScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    modelsScroll->setMinimumWidth(m_models->minimumSizeHint().width()
-                                  + modelsScroll->verticalScrollBar()->sizeHint().width());
-    QDockWidget *models = makeDock(tr("Models"), QStringLiteral("modelsDock"), modelsScroll, Qt::RightDockWidgetArea);
+    QDockWidget *models = makeDock(tr("Models"), QStringLiteral("modelsDock"), m_models, Qt::RightDockWidgetArea);
     splitDockWidget(plots, models, Qt::Vertical);
     applyDefaultDockSizes();
 
@@ -622,9 +614,23 @@ void MainWindow::showAbout()
 void MainWindow::restoreSettings()
 {
     QSettings settings;
-    if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray()))
+    m_geometryRestored = restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    if (!m_geometryRestored)
         resize(1280, 800);
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+}
+
+void MainWindow::showAsLastTime()
+{
+    // The last session's geometry if it still fits the screen's free area (title bar and frame
+    // included); otherwise maximised, so that the status bar and its Cancel stay on screen.
+    const QScreen *screen = this->screen();
+    if (!screen || (m_geometryRestored && screen->availableGeometry().contains(frameGeometry()))) {
+        show();
+        return;
+    }
+    setGeometry(screen->availableGeometry()); // where no window manager maximises
+    showMaximized();
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

@@ -68,6 +68,8 @@ public:
     WaveformView *waveformView() const;
     LineChartView *chartView() const { return m_chart; }
     PlaybackController *playback() const { return m_playback; }
+    // Shows the window at the last session's geometry if that fits the screen, else maximised.
+    void showAsLastTime();
     PreviewPanel *preview() const { return m_preview; }
     LiveView *liveView() const { return m_live; }
     ModelsPanel *modelsPanel() const { return m_models; }
@@ -151,6 +153,7 @@ private:
 
     int m_pendingRow = -1;
     QPointer<Task> m_loadTask;
+    bool m_geometryRestored = false;
 };
 
 } // namespace lipsync::studio

@@ -152,7 +152,10 @@ bool ProjectFiles::openDemo()
         ErrorReporter::report(m_window, tr("The demo project could not be opened."), e, folder);
         return false;
     }
-    return openLoaded(std::move(project), folder, true);
+    if (!openLoaded(std::move(project), folder, true))
+        return false;
+    m_recent->openedDemo();
+    return true;
 }
 
 bool ProjectFiles::save()

@@ -1,5 +1,7 @@
 #include "app/RecentProjects.h"
 
+#include "project/Project.h"
+
 #include <QDir>
 #include <QFileInfo>
 #include <QMenu>
@@ -9,6 +11,7 @@ namespace lipsync::studio {
 
 namespace {
 const QString kKey = QStringLiteral("recentProjects");
+const QString kLastKey = QStringLiteral("session/lastProject");
 }
 
 RecentProjects::RecentProjects(QMenu *menu, QObject *parent) : QObject(parent), m_menu(menu)
@@ -30,7 +33,21 @@ void RecentProjects::add(const QString &folder)
     while (list.size() > kMaxEntries)
         list.removeLast();
     QSettings().setValue(kKey, list);
+    QSettings().setValue(kLastKey, clean);
     rebuildMenu();
+}
+
+void RecentProjects::openedDemo()
+{
+    QSettings().remove(kLastKey);
+}
+
+QString RecentProjects::lastSession()
+{
+    const QString folder = QSettings().value(kLastKey).toString();
+    if (folder.isEmpty() || !QFileInfo::exists(QDir(folder).filePath(QString::fromLatin1(Project::kManifestName))))
+        return {};
+    return folder;
 }
 
 void RecentProjects::clear()

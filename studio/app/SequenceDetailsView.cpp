@@ -1,5 +1,7 @@
 #include "app/SequenceDetailsView.h"
 
+#include "app/ElidedLabel.h"
+
 #include "align/Lexicon.h"
 #include "context/SequenceMedia.h"
 #include "project/Sequence.h"
@@ -14,8 +16,9 @@
 namespace lipsync::studio {
 
 SequenceDetailsView::SequenceDetailsView(QWidget *parent)
-    : QWidget(parent), m_title(new QLabel(this)), m_media(new QLabel(this)), m_video(new QLabel(this)),
-      m_audio(new QLabel(this)), m_transcript(new QLabel(this)), m_words(new QLabel(this)), m_landmarks(new QLabel(this))
+    : QWidget(parent), m_title(new QLabel(this)), m_media(new ElidedLabel(this)), m_video(new ElidedLabel(this)),
+      m_audio(new ElidedLabel(this)), m_transcript(new ElidedLabel(this)), m_words(new ElidedLabel(this)),
+      m_landmarks(new ElidedLabel(this))
 {
     auto *form = new QFormLayout(this);
     form->setContentsMargins(8, 8, 8, 8);
@@ -32,17 +35,13 @@ SequenceDetailsView::SequenceDetailsView(QWidget *parent)
     form->addRow(tr("Transcript:"), m_transcript);
     form->addRow(tr("Words:"), m_words);
     form->addRow(tr("Landmarks:"), m_landmarks);
-    for (QLabel *l : {m_media, m_video, m_audio, m_transcript, m_words, m_landmarks}) {
-        l->setWordWrap(true);
-        l->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    }
     clear();
 }
 
 void SequenceDetailsView::clear()
 {
     m_title->setText(tr("No sequence"));
-    for (QLabel *l : {m_media, m_video, m_audio, m_transcript, m_words, m_landmarks})
+    for (ElidedLabel *l : {m_media, m_video, m_audio, m_transcript, m_words, m_landmarks})
         l->clear();
 }
 

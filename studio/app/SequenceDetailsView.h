@@ -12,6 +12,7 @@ struct Sequence;
 
 namespace lipsync::studio {
 
+class ElidedLabel;
 struct SequenceMedia;
 
 class SequenceDetailsView : public QWidget
@@ -25,12 +26,12 @@ public:
 
 private:
     QLabel *m_title;
-    QLabel *m_media;
-    QLabel *m_video;
-    QLabel *m_audio;
-    QLabel *m_transcript;
-    QLabel *m_words;
-    QLabel *m_landmarks;
+    ElidedLabel *m_media;
+    ElidedLabel *m_video;
+    ElidedLabel *m_audio;
+    ElidedLabel *m_transcript;
+    ElidedLabel *m_words;
+    ElidedLabel *m_landmarks;
 };
 
 } // namespace lipsync::studio

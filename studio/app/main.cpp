@@ -5,6 +5,7 @@
 #include "app/CommandLine.h"
 #include "app/MainWindow.h"
 #include "app/ProjectFiles.h"
+#include "app/RecentProjects.h"
 #include "app/ScreenshotRunner.h"
 #include "app/SurfaceFormat.h"
 #include "app/Translations.h"
@@ -51,16 +52,21 @@ int main(int argc, char *argv[])
     const bool batch = !options.screenshot.isEmpty();
     ErrorReporter::setBatchMode(batch);
     MainWindow window;
-    if (options.windowSize.isValid())
-        window.resize(options.windowSize);
-    else if (batch)
-        window.resize(1280, 800); // independent of the saved geometry
-    window.show();
+    if (options.windowSize.isValid() || batch) {
+        window.resize(options.windowSize.isValid() ? options.windowSize : QSize(1280, 800)); // not the saved geometry
+        window.show();
+    } else {
+        window.showAsLastTime();
+    }
 
-    if (options.project.isEmpty())
+    // The project named, else the one the last session had open, else the bundled demo.
+    const QString project = !options.project.isEmpty() ? options.project
+                            : batch                    ? QString()
+                                                       : RecentProjects::lastSession();
+    if (project.isEmpty())
         window.files()->openDemo();
     else
-        window.files()->open(options.project);
+        window.files()->open(project);
     if (batch)
         (new ScreenshotRunner(&window, options.screenshot))->start();
     return app.exec();

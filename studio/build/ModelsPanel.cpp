@@ -1,5 +1,7 @@
 #include "build/ModelsPanel.h"
 
+#include "app/ElidedLabel.h"
+
 
 #include "context/ErrorReporter.h"
 #include "context/ModelKinds.h"
@@ -32,6 +34,8 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSpinBox>
 #include <QTabWidget>
 #include <QTreeWidget>
@@ -79,15 +83,27 @@ ModelsPanel::ModelsPanel(QWidget *parent)
       m_sldsA(new QComboBox(this)), m_brandCovariance(new QComboBox(this)),
       m_compensateVariance(new QCheckBox(tr("Variance compensation"), this)),
       m_contextStates(new QCheckBox(tr("Phones in context"), this)), m_folds(new QSpinBox(this)),
-      m_parameter(new QSpinBox(this)), m_status(new QLabel(this))
+      m_parameter(new QSpinBox(this)), m_status(new ElidedLabel(this))
 {
+    // The models and their options scroll; the actions and the status below them hold still
+    // (always in view, never moved by models added or a longer status).
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
+    layout->setSpacing(3);
+    auto *scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("modelsScroll"));
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    auto *optionsPage = new QWidget(scroll);
+    auto *optionsLayout = new QVBoxLayout(optionsPage);
+    optionsLayout->setContentsMargins(0, 0, 0, 0);
     m_list->setHeaderLabels({tr("Model"), tr("Kind"), tr("File")});
     m_list->setRootIsDecorated(false);
     m_list->header()->setSectionResizeMode(0, QHeaderView::Stretch);
     m_list->header()->setStretchLastSection(false);
-    layout->addWidget(m_list, 1);
+    m_list->setMinimumHeight(3 * fontMetrics().height() + 8);
+    optionsLayout->addWidget(m_list, 1);
 
     // Kinds with their options, one row each.
     auto *grid = new QGridLayout;
@@ -134,7 +150,13 @@ ModelsPanel::ModelsPanel(QWidget *parent)
            "of the phone), tied by decision trees: lips that anticipate the next sound. Off: one state per "
            "phone, the paper's models exactly."));
     grid->addWidget(m_contextStates, int(kinds.size()), 1);
-    layout->addLayout(grid);
+    optionsLayout->addLayout(grid);
+    scroll->setWidget(optionsPage);
+    // No least height of its own: a tall timeline (the spectrogram's) may squeeze the list away,
+    // never the actions below it.
+    scroll->setMinimumHeight(1);
+    scroll->setMinimumWidth(optionsPage->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width());
+    layout->addWidget(scroll, 1);
 
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(m_buildAam);
@@ -151,7 +173,7 @@ ModelsPanel::ModelsPanel(QWidget *parent)
     evaluation->addWidget(m_realism);
     evaluation->addStretch();
     layout->addLayout(evaluation);
-    m_status->setWordWrap(true);
+    m_status->setObjectName(QStringLiteral("modelsStatus"));
     layout->addWidget(m_status);
 
     m_buildAam->setEnabled(false); // until attached to the Faces menu's action
@@ -509,7 +531,7 @@ void ModelsPanel::onDocumentReset()
                                   problem);
         failed.append(problem);
     }
-    m_status->setText(failed.isEmpty() ? QString() : tr("Some models could not be loaded: %1").arg(failed.join(QLatin1Char('\n'))));
+    m_status->setText(failed.isEmpty() ? QString() : tr("Some models could not be loaded: %1").arg(failed.join(QStringLiteral("; "))));
     refreshTrajectory();
     updateActions();
 }

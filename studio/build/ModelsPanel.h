@@ -36,6 +36,7 @@ struct LabelledSequence;
 
 namespace lipsync::studio {
 
+class ElidedLabel;
 class EvaluationChart;
 class StudioContext;
 class ObjectivePlot;
@@ -74,6 +75,7 @@ public:
     ObjectivePlot *objectivePlot() const { return m_objective; }
     EvaluationChart *evaluationChart() const { return m_evaluation; }
     QTabWidget *plotTabs() const { return m_plots; }
+    ElidedLabel *statusLabel() const { return m_status; }
 
     // Training and evaluation tasks still running.
     QList<Task *> runningTasks() const;
@@ -118,7 +120,7 @@ private:
     QCheckBox *m_contextStates;
     QSpinBox *m_folds;
     QSpinBox *m_parameter;
-    QLabel *m_status;
+    ElidedLabel *m_status; // one line under the buttons, the whole text as tooltip
 
     StudioContext *m_context = nullptr;
     QPointer<QTabWidget> m_plots;

@@ -2,12 +2,14 @@
 
 #include "compare/StudyClipRenderer.h"
 
+#include <QApplication>
 #include <QAudioOutput>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QMediaPlayer>
 #include <QMessageBox>
 #include <QPainter>
+#include <QPushButton>
 #include <QTimer>
 #include <QUrl>
 #include <QVBoxLayout>
@@ -165,11 +167,20 @@ void ParticipantView::askToLeave()
 {
     stop();
     if (m_confirmLeave && m_accepting) {
-        const auto button = QMessageBox::question(
-            this, tr("Leave the study"),
-            tr("Leave the study now? The answers given so far are saved; this participant can "
-               "continue later."));
-        if (button != QMessageBox::Yes)
+        // In the application's colours, not the view's black (a child inherits its palette):
+        // legible on the dark screen. Enter continues; only an explicit choice leaves.
+        QMessageBox box(QMessageBox::Question, tr("Leave the study"),
+                        tr("Leave the study now? The answers given so far are saved; this participant can "
+                           "continue later."),
+                        QMessageBox::NoButton, this);
+        box.setObjectName(QStringLiteral("leaveStudyBox"));
+        box.setPalette(QApplication::palette());
+        QPushButton *leave = box.addButton(tr("Leave"), QMessageBox::AcceptRole);
+        QPushButton *stay = box.addButton(tr("Continue the study"), QMessageBox::RejectRole);
+        box.setDefaultButton(stay);
+        box.setEscapeButton(stay);
+        box.exec();
+        if (box.clickedButton() != leave)
             return;
     }
     emit leaveRequested();

@@ -148,6 +148,21 @@ bool mergeWithNext(TierPair &tiers, TierKind kind, int index)
     return true;
 }
 
+int wordBetweenPhones(const TierPair &tiers, int index)
+{
+    const Tier &phones = tiers.phones;
+    if (index < 0 || index + 1 >= int(phones.intervals.size()))
+        return -1;
+    const Interval &a = phones.intervals[size_t(index)];
+    const Interval &b = phones.intervals[size_t(index + 1)];
+    const int wa = tiers.words.indexAt(0.5 * (a.start + a.end));
+    const int wb = tiers.words.indexAt(0.5 * (b.start + b.end));
+    if (wa < 0 || wb < 0 || wa == wb)
+        return -1;
+    const auto spoken = [&](int w) { return !PhoneSet::isSilence(tiers.words.intervals[size_t(w)].label); };
+    return spoken(wa) && spoken(wb) ? wa : -1;
+}
+
 bool relabel(TierPair &tiers, TierKind kind, int index, const std::string &label)
 {
     Tier &tier = tiers[kind];

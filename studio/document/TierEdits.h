@@ -51,6 +51,10 @@ bool split(TierPair &tiers, TierKind kind, double t);
 // Joins interval `index` with the next one. Phones keep the first's label (a silence gives way
 // to the other); words join their labels with a space, silence giving way likewise.
 bool mergeWithNext(TierPair &tiers, TierKind kind, int index);
+// The word ending where phone `index` ends, if phone index + 1 starts another (spoken) word: a
+// merge of the two phones would join phones of two words. -1 when both lie in one word or a
+// silence is involved.
+int wordBetweenPhones(const TierPair &tiers, int index);
 // Sets the label of interval `index` (label validated by the caller: see validLabel).
 bool relabel(TierPair &tiers, TierKind kind, int index, const std::string &label);
 // Carves [a, b) (snapped) out of the tier as one interval labelled `label` ("sil" or "br"):

@@ -27,6 +27,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QScrollBar>
 #include <QSettings>
 #include <QToolButton>
@@ -593,7 +594,23 @@ void TimelinePanel::mergeWithNext()
     int index = m_waveform->selectedInterval();
     if (index < 0)
         index = next[kind].indexAt(m_waveform->cursorTime());
-    if (tieredit::mergeWithNext(next, kind, index) && edit(next, tr("Merge intervals")))
+    // Two phones of different words: joined only with their words, if the user says so.
+    const int word = kind == TierKind::Phones ? tieredit::wordBetweenPhones(next, index) : -1;
+    if (word >= 0) {
+        const auto &words = next.words.intervals;
+        const QString first = QString::fromStdString(words[size_t(word)].label);
+        const QString second = QString::fromStdString(words[size_t(word) + 1].label);
+        QMessageBox box(QMessageBox::Question, tr("Merge with Next"),
+                        tr("These phones belong to two words, “%1” and “%2”. Merge the words as well?").arg(first, second),
+                        QMessageBox::NoButton, this);
+        box.setObjectName(QStringLiteral("mergeAcrossWordsBox"));
+        QPushButton *both = box.addButton(tr("Merge Phones and Words"), QMessageBox::AcceptRole);
+        box.setDefaultButton(box.addButton(QMessageBox::Cancel));
+        box.exec();
+        if (box.clickedButton() != both || !tieredit::mergeWithNext(next, TierKind::Words, word))
+            return;
+    }
+    if (tieredit::mergeWithNext(next, kind, index) && edit(next, word >= 0 ? tr("Merge phones and words") : tr("Merge intervals")))
         m_waveform->selectInterval(kind, index);
 }
 

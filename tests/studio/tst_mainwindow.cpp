@@ -20,17 +20,19 @@
 #include "timeline/TimelinePanel.h"
 #include "timeline/WaveformView.h"
 
+#include <QAbstractButton>
 #include <QAction>
+#include <QAudioDevice>
+#include <QDir>
 #include <QDockWidget>
 #include <QFile>
-#include <QDir>
 #include <QFileInfo>
-#include <QAudioDevice>
 #include <QMediaDevices>
+#include <QScreen>
 #include <QSet>
-#include <QSpinBox>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -277,6 +279,39 @@ private slots:
         QCOMPARE(m_window->sequenceView()->currentIndex().row(), 0);
         m_window->selectSequence(1); // still usable
         QTRY_VERIFY_WITH_TIMEOUT(m_window->currentSequence() == 1, 60000);
+    }
+
+    // At 1280x800 the window fits the screen's free area, so the status bar (progress, Cancel,
+    // guidance) and the Models panel's actions are on screen: with no saved geometry, and with a
+    // saved one larger than the screen.
+    void fitsTheScreenAt1280x800()
+    {
+        const QRect screen = m_window->screen()->availableGeometry();
+        QVERIFY2(screen.width() <= 1280 && screen.height() <= 800, "run under xvfb-run -s \"-screen 0 1280x800x24\"");
+        QSettings().setValue(QStringLiteral("window/geometry"), QByteArray());
+        for (const QRect saved : {QRect(), QRect(0, 0, 1600, 1000)}) {
+            if (saved.isValid()) {
+                MainWindow big;
+                big.setGeometry(saved);
+                big.show();
+                QVERIFY(QTest::qWaitForWindowExposed(&big));
+                big.close(); // saves the geometry, as at the end of a session
+            }
+            MainWindow window;
+            window.showAsLastTime();
+            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            QTRY_VERIFY(screen.contains(window.frameGeometry()));
+            auto onScreen = [&](QWidget *w) {
+                return w->isVisible() && screen.contains(QRect(w->mapToGlobal(QPoint(0, 0)), w->size()));
+            };
+            QVERIFY(onScreen(window.statusBar()));
+            const auto buttons = window.findChild<QDockWidget *>(QStringLiteral("modelsDock"))->findChildren<QAbstractButton *>();
+            QVERIFY(!buttons.isEmpty());
+            for (QAbstractButton *b : buttons)
+                if (b->isVisibleTo(window.window()) && !b->text().isEmpty())
+                    QVERIFY2(onScreen(b), qPrintable(b->text()));
+        }
+        QSettings().remove(QStringLiteral("window/geometry"));
     }
 
     void aboutNamesPaperAndData()

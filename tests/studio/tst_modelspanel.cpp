@@ -9,6 +9,7 @@
 #include "app/DemoProject.h"
 #include "app/MainWindow.h"
 #include "app/ProjectFiles.h"
+#include "app/ElidedLabel.h"
 #include "build/ModelsPanel.h"
 #include "context/ErrorReporter.h"
 #include "context/ModelKinds.h"
@@ -26,18 +27,21 @@
 #include "plots/TrajectoryView.h"
 #include "tasks/TaskRunner.h"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
+#include <QFileInfo>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
-#include <QDir>
-#include <QFileInfo>
 #include <QTreeWidget>
 #include <QUndoStack>
+#include <QWheelEvent>
 
 #include <algorithm>
 
@@ -119,6 +123,53 @@ private slots:
         QCOMPARE(panel.trajectoryView()->seriesCount(), 2); // the recording and HMM-mean
         context.setCurrentFrame(30);
         QVERIFY(std::abs(panel.trajectoryView()->cursorTime() - 30.5 / 25.0) < 1e-9);
+    }
+
+    // The wheel over an unfocused spin box or combo box scrolls the panel and leaves the setting;
+    // once the control has focus (a click, Tab) the wheel changes it.
+    void wheelChangesOnlyAFocusedControl()
+    {
+        QSpinBox *folds = m_panel->foldsSpin();
+        QComboBox *covariance = m_panel->brandCovariance();
+        m_window->activateWindow();
+        m_panel->trainButton()->setFocus();
+        const int foldsBefore = folds->value();
+        const int covarianceBefore = covariance->currentIndex();
+        auto wheel = [](QWidget *w) {
+            const QPointF at(w->width() / 2.0, w->height() / 2.0);
+            QWheelEvent e(at, w->mapToGlobal(at), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+            QApplication::sendEvent(w, &e);
+        };
+        for (int i = 0; i < 3; ++i) {
+            wheel(folds);
+            wheel(covariance);
+        }
+        QCOMPARE(folds->value(), foldsBefore);
+        QCOMPARE(covariance->currentIndex(), covarianceBefore);
+        QVERIFY(!folds->hasFocus());
+        folds->setFocus();
+        QTRY_VERIFY(folds->hasFocus());
+        wheel(folds);
+        QCOMPARE(folds->value(), foldsBefore - 1);
+        folds->setValue(foldsBefore);
+    }
+
+    // The panel's actions and status hold still: outside the scrolled list and options, the same
+    // place whatever the status says or however many models are listed.
+    void actionsHoldStill()
+    {
+        auto *scroll = m_panel->findChild<QScrollArea *>(QStringLiteral("modelsScroll"));
+        QVERIFY(scroll);
+        const QList<QWidget *> still{m_panel->trainButton(), m_panel->evaluateButton(), m_panel->realismButton(),
+                                     m_panel->cancelButton(), m_panel->statusLabel()};
+        for (QWidget *b : still)
+            QVERIFY(!scroll->isAncestorOf(b));
+        const QPoint before = m_panel->evaluateButton()->mapTo(m_panel, QPoint(0, 0));
+        m_panel->statusLabel()->setText(QStringLiteral("a long status ").repeated(30));
+        QApplication::processEvents();
+        QCOMPARE(m_panel->evaluateButton()->mapTo(m_panel, QPoint(0, 0)), before);
+        m_panel->statusLabel()->clear();
     }
 
     void demoHasTrainingData()

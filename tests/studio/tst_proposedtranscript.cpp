@@ -13,6 +13,7 @@
 #include "DemoWindow.h"
 
 #include "align/SphinxAligner.h"
+#include "app/ElidedLabel.h"
 #include "app/SequenceListModel.h"
 #include "app/TranscriptProposer.h"
 #include "context/SequenceMedia.h"
@@ -99,7 +100,7 @@ private slots:
         QCOMPARE(model()->data(model()->index(0, SequenceListModel::IdColumn), Qt::FontRole), QVariant());
         // The details of the current (first) sequence say so too, and it can be accepted.
         QCOMPARE(m_window->currentSequence(), 0);
-        auto *details = m_window->findChild<QLabel *>(QStringLiteral("transcriptDetails"));
+        auto *details = m_window->findChild<ElidedLabel *>(QStringLiteral("transcriptDetails"));
         QVERIFY(details);
         QVERIFY2(details->text().contains(QStringLiteral("not checked")), qPrintable(details->text()));
         QVERIFY(details->font().italic());
@@ -132,7 +133,7 @@ private slots:
         QVERIFY(!doc()->sequence(0).transcriptProposed);
         checkShownAsProposed(0, false);
         QVERIFY(!proposer()->acceptAction()->isEnabled());
-        auto *details = m_window->findChild<QLabel *>(QStringLiteral("transcriptDetails"));
+        auto *details = m_window->findChild<ElidedLabel *>(QStringLiteral("transcriptDetails"));
         QVERIFY2(!details->text().contains(QStringLiteral("not checked")), qPrintable(details->text()));
 
         undo->undo();

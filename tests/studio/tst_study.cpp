@@ -18,6 +18,7 @@
 #include "project/Project.h"
 #include "tasks/Task.h"
 
+#include <QAbstractButton>
 #include <QApplication>
 #include <QCheckBox>
 #include <QDir>
@@ -175,19 +176,35 @@ private slots:
         ParticipantView *view = session->view();
         view->setAudioEnabled(false);
         answerByKey(view, 0, 2, Qt::Key_Right);
-        // Esc in the middle asks first; "No" keeps the participant in the study.
+        // Esc in the middle asks first, in a legible box (text and buttons on the application's
+        // light background, not the view's black); Enter continues the study.
         QTRY_VERIFY_WITH_TIMEOUT(view->isAcceptingAnswers(), 60000);
-        QTimer::singleShot(0, this, [] {
+        bool legible = false;
+        QStringList buttons;
+        QTimer::singleShot(0, this, [&] {
             auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
             QVERIFY(box);
-            box->button(QMessageBox::No)->click();
+            QVERIFY(QTest::qWaitForWindowExposed(box));
+            const QImage shot = box->grab().toImage().convertToFormat(QImage::Format_Grayscale8);
+            int light = 0, dark = 0;
+            for (int y = 0; y < shot.height(); ++y)
+                for (int x = 0; x < shot.width(); ++x)
+                    (shot.constScanLine(y)[x] > 128 ? light : dark) += 1;
+            legible = light > shot.width() * shot.height() / 2 && dark > 200; // a light box with dark text
+            for (QAbstractButton *b : box->buttons())
+                buttons << b->text();
+            QTest::keyClick(box, Qt::Key_Return);
         });
         QTest::keyClick(view, Qt::Key_Escape);
+        QVERIFY(legible);
+        QCOMPARE(buttons.size(), 2);
         QVERIFY(m_study->participantSession());
         QTimer::singleShot(0, this, [] {
             auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
             QVERIFY(box);
-            box->button(QMessageBox::Yes)->click();
+            for (QAbstractButton *b : box->buttons())
+                if (box->buttonRole(b) == QMessageBox::AcceptRole)
+                    b->click();
         });
         QTest::keyClick(view, Qt::Key_Escape);
         QTRY_VERIFY(!m_study->participantSession());

@@ -23,12 +23,16 @@
 #include "timeline/WaveformView.h"
 #include "util/PhoneSet.h"
 
+#include <QAbstractButton>
 #include <QAction>
+#include <QApplication>
 #include <QComboBox>
 #include <QElapsedTimer>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QSettings>
 #include <QTest>
+#include <QTimer>
 #include <QUndoStack>
 
 #include <algorithm>
@@ -263,6 +267,69 @@ private slots:
         QVERIFY(after.words.intervals[size_t(w)].userEdited && after.phones.intervals[size_t(p)].userEdited);
         m_window->undoStack()->undo();
         QVERIFY(tiers() == before);
+    }
+
+    // M on the last phone of a word asks first: Cancel (Enter) leaves the tiers; "Merge Phones and
+    // Words" joins both phones and both words in one undo step.
+    void mergeAcrossAWordAsks()
+    {
+        const TierPair before = tiers();
+        const int steps = m_window->undoStack()->index();
+        int p = -1;
+        for (int k = 0; k + 1 < int(before.phones.intervals.size()) && p < 0; ++k)
+            if (tieredit::wordBetweenPhones(before, k) >= 0)
+                p = k;
+        QVERIFY(p >= 0);
+        const int w = tieredit::wordBetweenPhones(before, p);
+        // Two phones of one word are no such pair.
+        const Interval &word = before.words.intervals[size_t(w)];
+        const int inside = before.phones.indexAt(word.start + 1e-3);
+        QVERIFY(before.phones.intervals[size_t(inside)].end < word.end - 1e-3); // "bin": B IH N
+        QCOMPARE(tieredit::wordBetweenPhones(before, inside), -1);
+        const std::string joined = before.words.intervals[size_t(w)].label + ' ' + before.words.intervals[size_t(w + 1)].label;
+        auto answer = [this](bool merge, QString *text) {
+            QTimer::singleShot(0, this, [merge, text] {
+                auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+                QVERIFY(box);
+                QVERIFY(QTest::qWaitForWindowExposed(box)); // Enter clicks a visible default button only
+                *text = box->text();
+                if (!merge) {
+                    QTest::keyClick(box, Qt::Key_Return);
+                    return;
+                }
+                for (QAbstractButton *b : box->buttons())
+                    if (box->buttonRole(b) == QMessageBox::AcceptRole)
+                        b->click();
+            });
+        };
+        // The box takes the focus while it is open: the view gets it back before each key.
+        auto focusView = [this] {
+            m_window->activateWindow();
+            m_view->setFocus();
+            QTRY_VERIFY(m_view->hasFocus());
+        };
+        QString asked;
+        m_view->selectInterval(TierKind::Phones, p);
+        focusView();
+        answer(false, &asked);
+        QTest::keyClick(m_view, Qt::Key_M);
+        QVERIFY2(asked.contains(QString::fromStdString(before.words.intervals[size_t(w)].label)), qPrintable(asked));
+        QVERIFY(tiers() == before);
+        QCOMPARE(m_window->undoStack()->index(), steps);
+
+        m_view->selectInterval(TierKind::Phones, p);
+        focusView();
+        answer(true, &asked);
+        QTest::keyClick(m_view, Qt::Key_M);
+        const TierPair after = tiers();
+        QCOMPARE(after.phones.intervals.size(), before.phones.intervals.size() - 1);
+        QCOMPARE(after.words.intervals.size(), before.words.intervals.size() - 1);
+        QCOMPARE(after.words.intervals[size_t(w)].label, joined);
+        QVERIFY(near(after.words.intervals[size_t(w)].end, before.words.intervals[size_t(w + 1)].end));
+        QCOMPARE(m_window->undoStack()->index(), steps + 1);
+        m_window->undoStack()->undo();
+        QVERIFY(tiers() == before);
+        focusView();
     }
 
     void splitMergeRelabelWithKeysAndUndo()
