@@ -7,6 +7,7 @@
 #include "app/AboutBox.h"
 #include "app/MainWindow.h"
 #include "app/ProjectFiles.h"
+#include "app/RecentProjects.h"
 #include "app/SequenceListModel.h"
 #include "app/TransportBar.h"
 #include "context/ErrorReporter.h"
@@ -259,6 +260,8 @@ private slots:
         QCOMPARE(m_window->sequenceView()->model()->rowCount(), 10);
         QTRY_VERIFY_WITH_TIMEOUT(m_window->media() && m_window->currentSequence() == 0, 60000);
         QCOMPARE(m_window->media()->mediaPath, media);
+        // The next launch reopens it (the demo, once the demo was opened last).
+        QCOMPARE(QDir(RecentProjects::lastSession()).canonicalPath(), QDir(folder).canonicalPath());
     }
 
     void missingMediaIsReportedAndChangesNothing()
@@ -374,6 +377,10 @@ private slots:
         // Again into the same folder: refused, nothing changes.
         QVERIFY(!m_window->files()->createFromMediaFolder(clips, clips));
         QVERIFY(ErrorReporter::lastMessage().contains(QStringLiteral("already holds a project")));
+        QCOMPARE(RecentProjects::lastSession(), clips);
+        // The demo opened last: the next launch opens the demo.
+        QVERIFY(m_window->files()->openDemo());
+        QVERIFY(RecentProjects::lastSession().isEmpty());
     }
 
 private:
