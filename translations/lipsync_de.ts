@@ -1346,12 +1346,12 @@
         <translation>Die Live-Sitzung ist jetzt die Sequenz %1 am Ende der Liste.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="421"/>
+        <location filename="../studio/live/LiveView.cpp" line="419"/>
         <source>Export Live Session</source>
         <translation>Live-Sitzung exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="423"/>
+        <location filename="../studio/live/LiveView.cpp" line="421"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
@@ -1404,208 +1404,218 @@
 <context>
     <name>lipsync::studio::MainWindow</name>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="80"/>
+        <location filename="../studio/app/MainWindow.cpp" line="82"/>
         <source>Annotate</source>
         <translation>Annotieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="81"/>
+        <location filename="../studio/app/MainWindow.cpp" line="83"/>
         <source>Preview &amp;&amp; Compare</source>
         <translation>Vorschau &amp;&amp; Vergleich</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="83"/>
+        <location filename="../studio/app/MainWindow.cpp" line="85"/>
         <source>Live</source>
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="107"/>
+        <location filename="../studio/app/MainWindow.cpp" line="109"/>
         <source>Models could not be written into the project&apos;s folder.</source>
         <translation>Modelle konnten nicht in den Projektordner geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="110"/>
+        <location filename="../studio/app/MainWindow.cpp" line="112"/>
         <source>%1 was not applied: it would leave the project unsaveable (%2).</source>
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="136"/>
+        <location filename="../studio/app/MainWindow.cpp" line="138"/>
         <source>Playing without sound: %1.</source>
         <translation>Wiedergabe ohne Ton: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="142"/>
-        <location filename="../studio/app/MainWindow.cpp" line="143"/>
+        <location filename="../studio/app/MainWindow.cpp" line="144"/>
+        <location filename="../studio/app/MainWindow.cpp" line="145"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="164"/>
+        <location filename="../studio/app/MainWindow.cpp" line="166"/>
         <source>Generated &amp;Face</source>
         <translation>Generiertes &amp;Gesicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="170"/>
+        <location filename="../studio/app/MainWindow.cpp" line="172"/>
         <source>&amp;Whole Face (Eyes Included)</source>
         <translation>&amp;Ganzes Gesicht (mit Augen)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="172"/>
+        <location filename="../studio/app/MainWindow.cpp" line="174"/>
         <source>Synthesise the whole modelled face; otherwise the recording&apos;s own eyes and upper face are kept</source>
         <translation>Das ganze modellierte Gesicht synthetisieren; sonst bleiben die Augen und das Obergesicht der Aufnahme erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="166"/>
+        <location filename="../studio/app/MainWindow.cpp" line="168"/>
         <source>&amp;Synthesised Skin</source>
         <translation>&amp;Synthetisierte Haut</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="168"/>
+        <location filename="../studio/app/MainWindow.cpp" line="170"/>
         <source>Paste the AAM&apos;s synthesis of the lower face, skin included; otherwise the recording&apos;s own lower face is moved to the generated shape and only the inside of the mouth is synthesised</source>
         <translation>Die AAM-Synthese des unteren Gesichts samt Haut einsetzen; sonst wird das eigene untere Gesicht der Aufnahme in die erzeugte Form bewegt und nur das Mundinnere synthetisiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="174"/>
+        <location filename="../studio/app/MainWindow.cpp" line="176"/>
         <source>&amp;Detail from Training Images</source>
         <translation>&amp;Details aus Trainingsbildern</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="176"/>
+        <location filename="../studio/app/MainWindow.cpp" line="178"/>
         <source>Add the teeth, lip highlights and skin detail of the AAM&apos;s nearest training images to the model&apos;s smooth texture</source>
         <translation>Zähne, Glanzlichter der Lippen und Hautdetails der nächstgelegenen Trainingsbilder des AAM zur glatten Textur des Modells hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="178"/>
+        <location filename="../studio/app/MainWindow.cpp" line="180"/>
         <source>&amp;Match the Frame&apos;s Lighting</source>
         <translation>&amp;Beleuchtung an das Bild anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="195"/>
+        <location filename="../studio/app/MainWindow.cpp" line="197"/>
         <source>&amp;Close the Lips on /p b m/</source>
         <translation>&amp;Lippen bei /p b m/ schließen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="197"/>
+        <location filename="../studio/app/MainWindow.cpp" line="199"/>
         <source>Close the generated lips on the bilabials /p b m/, as speakers do; off: the model&apos;s trajectory as generated</source>
         <translation>Die erzeugten Lippen bei den Bilabialen /p b m/ schließen, wie Sprecher es tun; aus: die Trajektorie des Modells, wie sie erzeugt wurde</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="243"/>
+        <location filename="../studio/app/MainWindow.cpp" line="245"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="247"/>
+        <location filename="../studio/app/MainWindow.cpp" line="249"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="257"/>
+        <location filename="../studio/app/MainWindow.cpp" line="259"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="261"/>
+        <location filename="../studio/app/MainWindow.cpp" line="263"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="282"/>
+        <location filename="../studio/app/MainWindow.cpp" line="284"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="283"/>
+        <location filename="../studio/app/MainWindow.cpp" line="285"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="284"/>
+        <location filename="../studio/app/MainWindow.cpp" line="286"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="286"/>
+        <location filename="../studio/app/MainWindow.cpp" line="288"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="317"/>
+        <location filename="../studio/app/MainWindow.cpp" line="319"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="320"/>
+        <location filename="../studio/app/MainWindow.cpp" line="322"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="335"/>
+        <location filename="../studio/app/MainWindow.cpp" line="337"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="347"/>
+        <location filename="../studio/app/MainWindow.cpp" line="349"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="358"/>
+        <location filename="../studio/app/MainWindow.cpp" line="360"/>
         <source>&amp;Live: Speak and Watch the Face</source>
         <translation>&amp;Live: Sprechen und das Gesicht beobachten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="360"/>
+        <location filename="../studio/app/MainWindow.cpp" line="362"/>
         <source>Speak into the microphone and watch the face move</source>
         <translation>Ins Mikrofon sprechen und dem Gesicht beim Bewegen zusehen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="364"/>
+        <location filename="../studio/app/MainWindow.cpp" line="366"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="368"/>
+        <location filename="../studio/app/MainWindow.cpp" line="370"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="372"/>
+        <location filename="../studio/app/MainWindow.cpp" line="374"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
         <location filename="../studio/app/MainWindow.cpp" line="375"/>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="378"/>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>&amp;Tastenkürzel</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="387"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="425"/>
+        <location filename="../studio/app/MainWindow.cpp" line="437"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="488"/>
+        <location filename="../studio/app/MainWindow.cpp" line="500"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="496"/>
+        <location filename="../studio/app/MainWindow.cpp" line="508"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="525"/>
+        <location filename="../studio/app/MainWindow.cpp" line="537"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="527"/>
+        <location filename="../studio/app/MainWindow.cpp" line="539"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="531"/>
+        <location filename="../studio/app/MainWindow.cpp" line="543"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1613,43 +1623,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="542"/>
+        <location filename="../studio/app/MainWindow.cpp" line="554"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="543"/>
+        <location filename="../studio/app/MainWindow.cpp" line="555"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="543"/>
+        <location filename="../studio/app/MainWindow.cpp" line="555"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="549"/>
+        <location filename="../studio/app/MainWindow.cpp" line="561"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="567"/>
+        <location filename="../studio/app/MainWindow.cpp" line="579"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="595"/>
-        <location filename="../studio/app/MainWindow.cpp" line="603"/>
+        <location filename="../studio/app/MainWindow.cpp" line="607"/>
+        <location filename="../studio/app/MainWindow.cpp" line="615"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="602"/>
+        <location filename="../studio/app/MainWindow.cpp" line="614"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="256"/>
+        <location filename="../studio/app/MainWindow.cpp" line="258"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -2300,12 +2310,12 @@
 <context>
     <name>lipsync::studio::ProjectDocument</name>
     <message>
-        <location filename="../studio/document/ProjectDocument.cpp" line="175"/>
+        <location filename="../studio/document/ProjectDocument.cpp" line="182"/>
         <source>the project already has a sequence %1</source>
         <translation>das Projekt hat bereits eine Sequenz %1</translation>
     </message>
     <message>
-        <location filename="../studio/document/ProjectDocument.cpp" line="273"/>
+        <location filename="../studio/document/ProjectDocument.cpp" line="280"/>
         <source>%1 interval %2: %3</source>
         <translation>%1, Intervall %2: %3</translation>
     </message>
@@ -2677,6 +2687,24 @@
     </message>
 </context>
 <context>
+    <name>lipsync::studio::ShortcutsDialog</name>
+    <message>
+        <location filename="../studio/app/ShortcutsDialog.cpp" line="83"/>
+        <source>Keyboard Shortcuts</source>
+        <translation>Tastenkürzel</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ShortcutsDialog.cpp" line="85"/>
+        <source>Action</source>
+        <translation>Aktion</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/ShortcutsDialog.cpp" line="85"/>
+        <source>Keys</source>
+        <translation>Tasten</translation>
+    </message>
+</context>
+<context>
     <name>lipsync::studio::SpeechDialog</name>
     <message>
         <location filename="../studio/preview/SpeechDialog.cpp" line="28"/>
@@ -2782,13 +2810,13 @@
         <translation>Studien&amp;ergebnisse</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="80"/>
-        <location filename="../studio/compare/StudyController.cpp" line="91"/>
+        <location filename="../studio/compare/StudyController.cpp" line="81"/>
+        <location filename="../studio/compare/StudyController.cpp" line="92"/>
         <source>Set up study</source>
         <translation>Studie einrichten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/compare/StudyController.cpp" line="81"/>
+        <location filename="../studio/compare/StudyController.cpp" line="82"/>
         <source>The current study has %n answer(s). Replace it with a new study? (Edit ▸ Undo brings it back.)</source>
         <translation>
             <numerusform>Die aktuelle Studie hat %n Antwort(en). Durch eine neue Studie ersetzen? (Bearbeiten ▸ Rückgängig holt sie zurück.)</numerusform>
@@ -2796,40 +2824,40 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="102"/>
-        <location filename="../studio/compare/StudyController.cpp" line="116"/>
-        <location filename="../studio/compare/StudyController.cpp" line="132"/>
-        <location filename="../studio/compare/StudyController.cpp" line="160"/>
+        <location filename="../studio/compare/StudyController.cpp" line="103"/>
+        <location filename="../studio/compare/StudyController.cpp" line="117"/>
+        <location filename="../studio/compare/StudyController.cpp" line="133"/>
+        <location filename="../studio/compare/StudyController.cpp" line="161"/>
         <source>Run participant</source>
         <translation>Teilnehmende Person starten</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="103"/>
+        <location filename="../studio/compare/StudyController.cpp" line="104"/>
         <source>The project must be saved with the study before a participant starts (every answer is saved at once). Save now?</source>
         <translation>Das Projekt muss mit der Studie gespeichert sein, bevor eine Person beginnt (jede Antwort wird sofort gespeichert). Jetzt speichern?</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="116"/>
+        <location filename="../studio/compare/StudyController.cpp" line="117"/>
         <source>The project has no study yet.</source>
         <translation>Das Projekt hat noch keine Studie.</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="149"/>
+        <location filename="../studio/compare/StudyController.cpp" line="150"/>
         <source>New participant: %1</source>
         <translation>Neue teilnehmende Person: %1</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="153"/>
+        <location filename="../studio/compare/StudyController.cpp" line="154"/>
         <source>Continue %1 (%2 of %3 answered)</source>
         <translation>%1 fortsetzen (%2 von %3 beantwortet)</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="160"/>
+        <location filename="../studio/compare/StudyController.cpp" line="161"/>
         <source>Participant:</source>
         <translation>Teilnehmende Person:</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="170"/>
+        <location filename="../studio/compare/StudyController.cpp" line="171"/>
         <source>Study results</source>
         <translation>Studienergebnisse</translation>
     </message>
@@ -2908,23 +2936,23 @@
         <translation>Rangfolge:</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="77"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="78"/>
         <source>The project has no study yet: Study ▸ Set up study…</source>
         <translation>Das Projekt hat noch keine Studie: Studie ▸ Studie einrichten …</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="103"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="104"/>
         <source>Participants: %1, answers: %2 (%3 still open). %4</source>
         <translation>Teilnehmende: %1, Antworten: %2 (%3 noch offen). %4</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="130"/>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="137"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="131"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="139"/>
         <source>Export study results</source>
         <translation>Studienergebnisse exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="131"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="133"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
@@ -3490,6 +3518,24 @@
         <location filename="../studio/app/TransportBar.cpp" line="75"/>
         <source>%1 s / %2 s</source>
         <translation>%1 s / %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::UserGuide</name>
+    <message>
+        <location filename="../studio/app/UserGuide.cpp" line="19"/>
+        <source>User Guide</source>
+        <translation>Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/UserGuide.cpp" line="24"/>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/UserGuide.cpp" line="25"/>
+        <source>Contents</source>
+        <translation>Inhalt</translation>
     </message>
 </context>
 <context>

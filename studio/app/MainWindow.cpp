@@ -9,8 +9,10 @@
 #include "app/SequenceDetailsView.h"
 #include "app/SequenceListModel.h"
 #include "app/SequenceLoader.h"
+#include "app/ShortcutsDialog.h"
 #include "app/TranscriptProposer.h"
 #include "app/TransportBar.h"
+#include "app/UserGuide.h"
 #include "app/WheelGuard.h"
 #include "build/ModelsPanel.h"
 #include "compare/StudyController.h"
@@ -370,6 +372,16 @@ void MainWindow::createMenus()
     menuBar()->addMenu((new StudyController(m_context, [this] { return m_files->save(); }, this))->menu());
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
+    QAction *guide = help->addAction(tr("&User Guide"), this, [this] { (new UserGuide(this))->show(); });
+    guide->setObjectName(QStringLiteral("userGuideAction"));
+    guide->setShortcut(QKeySequence::HelpContents);
+    QAction *keys = help->addAction(tr("&Keyboard Shortcuts"), this, [this] {
+        auto *dialog = new ShortcutsDialog(this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->show();
+    });
+    keys->setObjectName(QStringLiteral("shortcutsAction"));
+    help->addSeparator();
     help->addAction(a.about);
 
     QToolBar *bar = addToolBar(tr("Main"));

@@ -52,7 +52,8 @@ void StudyController::refresh()
     m_setUp->setEnabled(document->isOpen());
     m_run->setEnabled(document->isOpen() && document->project().study.has_value());
     if (m_resultsView)
-        m_resultsView->setStudy(document->project().study ? &*document->project().study : nullptr);
+        m_resultsView->setStudy(document->project().study ? &*document->project().study : nullptr,
+                                document->exportFolder());
 }
 
 QString StudyController::nextPseudonym() const

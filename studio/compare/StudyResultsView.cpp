@@ -66,8 +66,9 @@ StudyResultsView::StudyResultsView(QWidget *parent)
     setStudy(nullptr);
 }
 
-void StudyResultsView::setStudy(const ForcedChoiceStudy *study)
+void StudyResultsView::setStudy(const ForcedChoiceStudy *study, const QString &exportFolder)
 {
+    m_exportFolder = exportFolder;
     m_pairs->setRowCount(0);
     m_ranking->setRowCount(0);
     m_pairsCsv.clear();
@@ -127,7 +128,8 @@ void StudyResultsView::exportCsv(const QString &path) const
 
 void StudyResultsView::exportWithDialog()
 {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export study results"), QStringLiteral("table1.csv"),
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export study results"),
+                                                      QDir(m_exportFolder).filePath(QStringLiteral("table1.csv")),
                                                       tr("CSV files (*.csv)"));
     if (path.isEmpty())
         return;

@@ -24,8 +24,8 @@ class StudyResultsView : public QWidget
 public:
     explicit StudyResultsView(QWidget *parent = nullptr);
 
-    // Shows the tally of `study` (null: no study).
-    void setStudy(const ForcedChoiceStudy *study);
+    // Shows the tally of `study` (null: no study); Export starts in `exportFolder`.
+    void setStudy(const ForcedChoiceStudy *study, const QString &exportFolder = QString());
 
     QTableWidget *pairTable() const { return m_pairs; }
     QTableWidget *rankingTable() const { return m_ranking; }
@@ -45,6 +45,7 @@ private:
     QPushButton *m_export;
     std::string m_pairsCsv;
     std::string m_rankingCsv;
+    QString m_exportFolder;
 };
 
 } // namespace lipsync::studio

@@ -30,6 +30,13 @@ void ProjectDocument::markUnsaved()
     m_undo->resetClean();
 }
 
+QString ProjectDocument::exportFolder() const
+{
+    if (m_open && !m_readOnly && !m_folder.isEmpty())
+        return m_folder;
+    return QDir::home().filePath(QStringLiteral("lipsync-projects"));
+}
+
 bool ProjectDocument::isModified() const
 {
     return m_open && (!m_undo->isClean() || m_unsavedStudyData);

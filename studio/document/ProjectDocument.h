@@ -28,6 +28,9 @@ public:
     bool isReadOnly() const { return m_readOnly; }
     bool isOpen() const { return m_open; }
     bool isModified() const;
+    // Where export and save dialogs start: beside the project (its folder), or for the read-only
+    // demo or no project the folder Save As suggests for projects (~/lipsync-projects).
+    QString exportFolder() const;
 
     // Replaces the whole document (open, new). Clears the undo stack.
     void reset(Project project, const QString &folder, bool readOnly);

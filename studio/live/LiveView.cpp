@@ -415,9 +415,7 @@ void LiveView::saveAsSequence()
 
 void LiveView::exportVideo()
 {
-    const QString folder = m_context->document()->isReadOnly() || m_context->document()->folder().isEmpty()
-                               ? QDir::homePath()
-                               : m_context->document()->folder();
+    const QString folder = m_context->document()->exportFolder();
     const QString path = QFileDialog::getSaveFileName(this, tr("Export Live Session"),
                                                       QDir(folder).filePath(QStringLiteral("live-session.mp4")),
                                                       tr("MP4 video (*.mp4)"));

@@ -78,6 +78,11 @@ private slots:
         QVERIFY(menu()->trigger(ExportMenu::Kind::Features));
         QTRY_COMPARE_WITH_TIMEOUT(exported.count(), 1, 30000);
         QVERIFY(suggested.endsWith(QString::fromStdString(s.id) + ".csv"));
+        // Beside the project; the read-only demo's beside the projects Save As makes.
+        const ProjectDocument *doc = m_window->document();
+        QCOMPARE(QFileInfo(suggested).absolutePath(), doc->exportFolder());
+        QVERIFY(doc->isReadOnly() ? doc->exportFolder().endsWith(QStringLiteral("/lipsync-projects"))
+                                  : doc->exportFolder() == doc->folder());
         const FeatureTable table = readFeatureCsv(csv.toStdString());
         QCOMPARE(table.values.rows(), s.features.rows());
         QCOMPARE(table.values.cols(), s.features.cols());

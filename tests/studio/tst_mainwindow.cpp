@@ -9,7 +9,9 @@
 #include "app/ProjectFiles.h"
 #include "app/RecentProjects.h"
 #include "app/SequenceListModel.h"
+#include "app/ShortcutsDialog.h"
 #include "app/TransportBar.h"
+#include "app/UserGuide.h"
 #include "context/ErrorReporter.h"
 #include "context/PlaybackController.h"
 #include "context/SequenceMedia.h"
@@ -38,6 +40,8 @@
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextBrowser>
+#include <QTreeWidget>
 #include <QUndoStack>
 
 using namespace lipsync;
@@ -315,6 +319,40 @@ private slots:
                     QVERIFY2(onScreen(b), qPrintable(b->text()));
         }
         QSettings().remove(QStringLiteral("window/geometry"));
+    }
+
+    // Help ▸ Keyboard Shortcuts lists the keys the actions really have (menus and panels);
+    // Help ▸ User Guide shows the README, whose links open the docs inside it.
+    void helpListsShortcutsAndOpensTheGuide()
+    {
+        const QList<ShortcutRow> rows = ShortcutsDialog::rows(m_window);
+        auto has = [&](const QString &action, const QString &keys) {
+            return std::any_of(rows.begin(), rows.end(),
+                               [&](const ShortcutRow &r) { return r.action == action && r.keys == keys; });
+        };
+        QVERIFY(has(QStringLiteral("Save"), QKeySequence(QKeySequence::Save).toString(QKeySequence::NativeText)));
+        QVERIFY(has(QStringLiteral("Merge with Next"), QStringLiteral("M"))); // the timeline's own
+        QSet<QString> unique;
+        for (const ShortcutRow &r : rows)
+            unique.insert(r.group + r.action);
+        QCOMPARE(unique.size(), rows.size());
+        ShortcutsDialog dialog(m_window);
+        auto *tree = dialog.findChild<QTreeWidget *>();
+        int listed = 0;
+        for (int g = 0; g < tree->topLevelItemCount(); ++g)
+            listed += tree->topLevelItem(g)->childCount();
+        QCOMPARE(listed, rows.size());
+
+        auto *guideAction = m_window->findChild<QAction *>(QStringLiteral("userGuideAction"));
+        QVERIFY(guideAction);
+        guideAction->trigger();
+        auto *guide = m_window->findChild<UserGuide *>();
+        QVERIFY(guide);
+        QTextBrowser *browser = guide->browser();
+        QVERIFY2(browser->toPlainText().contains(QStringLiteral("lipsync")), "the README is not shown");
+        browser->setSource(QUrl(QStringLiteral("qrc:/guide/docs/models.md")));
+        QVERIFY2(browser->toPlainText().contains(QStringLiteral("DPDS")), "docs/models.md is not shown");
+        guide->close();
     }
 
     void aboutNamesPaperAndData()
