@@ -591,38 +591,38 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="237"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="239"/>
         <source>Fit error %1</source>
         <translation>Anpassungsfehler %1</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="238"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="240"/>
         <source>No face found by the tracker</source>
         <translation>Der Tracker hat kein Gesicht gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="262"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="264"/>
         <source>Detect landmarks in %1, frame %2</source>
         <translation>Landmarken in %1, Bild %2 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="264"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="266"/>
         <source>Finding the face…</source>
         <translation>Gesicht wird gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="295"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="297"/>
         <source>Detect landmarks in frame %1</source>
         <translation>Landmarken in Bild %1 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="298"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="300"/>
         <source>No landmarks were detected.</source>
         <translation>Es wurden keine Landmarken erkannt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="316"/>
-        <location filename="../studio/annotate/FacesController.cpp" line="353"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="318"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="356"/>
         <source>Pick %n frame(s) to label</source>
         <translation>
             <numerusform>%n Bild zum Beschriften auswählen</numerusform>
@@ -630,7 +630,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="360"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="364"/>
         <source>Picked %1 of %2 frames with a face from %n clip(s); Shift+W shows them, the most doubtful first, then Build AAM.</source>
         <translation>
             <numerusform>%1 von %2 Bildern mit Gesicht aus einem Clip ausgewählt; Umschalt+W zeigt sie, die zweifelhaftesten zuerst, danach AAM erstellen.</numerusform>
@@ -638,42 +638,57 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="368"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="372"/>
         <source>No frames could be picked.</source>
         <translation>Es konnten keine Bilder ausgewählt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="410"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="381"/>
+        <source>Picked frame %1 of %2: %3, frame %4</source>
+        <translation>Ausgewähltes Bild %1 von %2: %3, Bild %4</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="387"/>
+        <source> (fit not measured)</source>
+        <translation> (Anpassung nicht gemessen)</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="390"/>
+        <source>; an AAM built without it moves its points by %1 % of the eye distance (most doubtful first)</source>
+        <translation>; ein AAM ohne dieses Bild verschiebt seine Punkte um %1 % des Augenabstands (das zweifelhafteste zuerst)</translation>
+    </message>
+    <message>
+        <location filename="../studio/annotate/FacesController.cpp" line="434"/>
         <source>Copy points of frame %1 to frame %2</source>
         <translation>Punkte von Bild %1 nach Bild %2 kopieren</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="429"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="453"/>
         <source>Every frame of this sequence is labelled.</source>
         <translation>Alle Bilder dieser Sequenz sind beschriftet.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="439"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="463"/>
         <source>Track this sequence first to rank its frames by fit error.</source>
         <translation>Tracken Sie diese Sequenz zuerst, um ihre Bilder nach Anpassungsfehler zu ordnen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="468"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="492"/>
         <source>The project&apos;s AAM could not be loaded.</source>
         <translation>Das AAM des Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="492"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="516"/>
         <source>An AAM needs at least 3 frames with all 23 points; this project has %1.</source>
         <translation>Ein AAM braucht mindestens 3 Bilder mit allen 23 Punkten; dieses Projekt hat %1.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="494"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="518"/>
         <source>Label more frames (Detect Landmarks, then correct the points).</source>
         <translation>Beschriften Sie weitere Bilder (Landmarken erkennen, dann die Punkte korrigieren).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="503"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="527"/>
         <source>Build AAM from %n frame(s)</source>
         <translation>
             <numerusform>AAM aus %n Bild erstellen</numerusform>
@@ -681,22 +696,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="505"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="529"/>
         <source>Reading the labelled frames…</source>
         <translation>Beschriftete Bilder werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="533"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="557"/>
         <source>Build AAM %1</source>
         <translation>AAM %1 erstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="535"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="559"/>
         <source>AAM %1 built from %2 frames: %3 combined modes%4</source>
         <translation>AAM %1 aus %2 Bildern erstellt: %3 kombinierte Moden%4</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="539"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="563"/>
         <source> (%n frame(s) skipped)</source>
         <translation>
             <numerusform> (%n Bild übersprungen)</numerusform>
@@ -704,27 +719,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="544"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="568"/>
         <source>The AAM could not be built.</source>
         <translation>Das AAM konnte nicht erstellt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="559"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="583"/>
         <source>Tracking needs an AAM.</source>
         <translation>Zum Tracken wird ein AAM benötigt.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="560"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="584"/>
         <source>Label a few frames and choose Faces ▸ Build AAM first.</source>
         <translation>Beschriften Sie einige Bilder und wählen Sie zuerst Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="578"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="602"/>
         <source>Track %1</source>
         <translation>%1 tracken</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="578"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="602"/>
         <source>Track %n sequence(s)</source>
         <translation>
             <numerusform>%n Sequenz tracken</numerusform>
@@ -732,7 +747,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="646"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="670"/>
         <source>Tracking failed.</source>
         <translation>Das Tracking ist fehlgeschlagen.</translation>
     </message>

@@ -130,8 +130,10 @@ FacesController::FacesController(StudioContext *context, FrameView *view, QWidge
     });
     connect(m_nextPicked, &QAction::triggered, this, [this] { nextPickedFrame(); });
     connect(context, &StudioContext::sequenceLoaded, this, [this] {
-        if (m_pendingFrame >= 0)
+        if (m_pendingFrame >= 0) {
             m_context->setCurrentFrame(std::exchange(m_pendingFrame, -1));
+            m_context->showStatus(reviewStatus()); // over the loaded sequence's own message
+        }
     });
     connect(m_buildAam, &QAction::triggered, this, [this] { buildAam(); });
     connect(m_trackSequence, &QAction::triggered, this, [this] {
@@ -325,10 +327,11 @@ Task *FacesController::pickFramesToLabel(int count, int step)
             {
                 int row, frame;
                 Eigen::VectorXd shape;
+                double disagreement;
             };
             std::vector<Pick> picks;
             for (const PickedFrame &f : picked.frames)
-                picks.push_back({rows[size_t(f.source)], f.frame, f.shape});
+                picks.push_back({rows[size_t(f.source)], f.frame, f.shape, f.disagreement});
             std::vector<int> order = picked.worstFirst;
             const int candidates = picked.candidates;
             return [this, picks, order, candidates] {
@@ -353,7 +356,8 @@ Task *FacesController::pickFramesToLabel(int count, int step)
                 doc->requestFaces(faces, tr("Pick %n frame(s) to label", nullptr, int(picks.size())));
                 m_review.clear();
                 for (int i : order)
-                    m_review.emplace_back(doc->sequence(picks[size_t(i)].row).id, picks[size_t(i)].frame);
+                    m_review.push_back({doc->sequence(picks[size_t(i)].row).id, picks[size_t(i)].frame,
+                                        picks[size_t(i)].disagreement});
                 m_reviewIndex = -1;
                 updateActions();
                 m_context->showStatus(
@@ -369,12 +373,32 @@ Task *FacesController::pickFramesToLabel(int count, int step)
     return task;
 }
 
+QString FacesController::reviewStatus() const
+{
+    if (m_reviewIndex < 0 || m_reviewIndex >= int(m_review.size()))
+        return {};
+    const ReviewItem &item = m_review[size_t(m_reviewIndex)];
+    const QString where = tr("Picked frame %1 of %2: %3, frame %4")
+                              .arg(m_reviewIndex + 1)
+                              .arg(m_review.size())
+                              .arg(QString::fromStdString(item.sequenceId))
+                              .arg(item.frame + 1);
+    if (item.disagreement < 0)
+        return where + tr(" (fit not measured)");
+    // normalisedMeanError (core/aam/LandmarkScheme.h): the mean point distance over the distance
+    // between the outer eye corners.
+    return where + tr("; an AAM built without it moves its points by %1 % of the eye distance (most doubtful first)")
+                       .arg(100.0 * item.disagreement, 0, 'f', 1);
+}
+
 bool FacesController::nextPickedFrame()
 {
     if (m_review.empty())
         return false;
     m_reviewIndex = (m_reviewIndex + 1) % int(m_review.size());
-    const auto &[id, frame] = m_review[size_t(m_reviewIndex)];
+    const std::string &id = m_review[size_t(m_reviewIndex)].sequenceId;
+    const int frame = m_review[size_t(m_reviewIndex)].frame;
+    m_context->showStatus(reviewStatus());
     const ProjectDocument *doc = m_context->document();
     for (int row = 0; row < doc->sequenceCount(); ++row) {
         if (doc->sequence(row).id != id)

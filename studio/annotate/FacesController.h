@@ -72,8 +72,17 @@ public:
     void nextWorstFrame();
     // The next frame of the review queue (another sequence is loaded first); false when empty.
     bool nextPickedFrame();
-    // (sequence id, frame) of the picks, the most doubtful first.
-    const std::vector<std::pair<std::string, int>> &reviewQueue() const { return m_review; }
+    // A picked frame to review: where it is and how doubtful its automatic points are.
+    struct ReviewItem
+    {
+        std::string sequenceId;
+        int frame = 0;
+        double disagreement = -1.0; // NME a held-out AAM moves the points by (-1: not measured)
+    };
+    // The picks, the most doubtful first.
+    const std::vector<ReviewItem> &reviewQueue() const { return m_review; }
+    // "Picked frame k of n …" for the frame Shift+W went to last (empty before the first).
+    QString reviewStatus() const;
     void showModes();
 
 signals:
@@ -109,7 +118,7 @@ private:
 
     std::string m_aamFile; // the reference file of the AAM in use, as last seen
     int m_worstRank = -1; // where W is in the current sequence's worst-fit queue
-    std::vector<std::pair<std::string, int>> m_review; // picked frames, most doubtful first
+    std::vector<ReviewItem> m_review; // picked frames, most doubtful first
     int m_reviewIndex = -1;                            // where Shift+W is in it
     int m_pendingFrame = -1; // the frame to show once the sequence Shift+W switched to has loaded
 };

@@ -25,6 +25,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTemporaryDir>
+#include <QStatusBar>
 #include <QTest>
 #include <QUndoStack>
 
@@ -233,7 +234,12 @@ private slots:
         const auto &queue = m_window->faces()->reviewQueue();
         QCOMPARE(int(queue.size()), 12);
         std::set<std::string> clips;
-        for (const auto &[id, frame] : queue) {
+        for (size_t k = 0; k < queue.size(); ++k) {
+            const std::string &id = queue[k].sequenceId;
+            const int frame = queue[k].frame;
+            QVERIFY(queue[k].disagreement >= 0);
+            if (k > 0)
+                QVERIFY(queue[k].disagreement <= queue[k - 1].disagreement); // the most doubtful first
             clips.insert(id);
             int row = 0;
             while (row < doc->sequenceCount() && doc->sequence(row).id != id)
@@ -247,9 +253,13 @@ private slots:
         // Shift+W goes to the first and then the second of the queue, in whichever clip.
         for (int k = 0; k < 2; ++k) {
             QTest::keyClick(m_window, Qt::Key_W, Qt::ShiftModifier);
-            const auto &[id, frame] = queue[size_t(k)];
+            const std::string &id = queue[size_t(k)].sequenceId;
             QTRY_COMPARE_WITH_TIMEOUT(doc->sequence(m_window->currentSequence()).id, id, 60000);
-            QTRY_COMPARE_WITH_TIMEOUT(m_window->currentFrame(), frame, 60000);
+            QTRY_COMPARE_WITH_TIMEOUT(m_window->currentFrame(), queue[size_t(k)].frame, 60000);
+            // Where in the queue and how doubtful, in the status bar.
+            const QString status = m_window->statusBar()->currentMessage();
+            QVERIFY2(status.startsWith(QStringLiteral("Picked frame %1 of 12").arg(k + 1)), qPrintable(status));
+            QVERIFY2(status.contains(QStringLiteral("% of the eye distance")), qPrintable(status));
         }
         // One undo takes every picked frame's points away again (and leaves the demo as the
         // tests after this one expect it).
