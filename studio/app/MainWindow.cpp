@@ -86,6 +86,10 @@ MainWindow::MainWindow(QWidget *parent)
     m_transport = new TransportBar(*m_actions, central);
     layout->addWidget(m_tabs, 1);
     layout->addWidget(m_transport);
+    // One transport in view: the annotator's below it; the Preview has its own (for the new
+    // speech too), Live none.
+    connect(m_tabs, &QTabWidget::currentChanged, this,
+            [this] { m_transport->setVisible(m_tabs->currentWidget() == m_frameView); });
     setCentralWidget(central);
 
     createDocks();

@@ -5,12 +5,12 @@
 // overlay toggles, View > Generated Face > Close the Lips on /p b m/ closes the generated lips on
 // bilabials, and Generate from Speech turns a demo clip and its transcript into a playable
 // generated sequence at a chosen frame rate.
-#include "../SanitizedBuild.h"
 #include "DemoWindow.h"
 #include "ImageStats.h"
 
 #include "annotate/FrameView.h"
 #include "app/MainWindow.h"
+#include "app/TransportBar.h"
 #include "build/ModelsPanel.h"
 #include "context/ModelKinds.h"
 #include "context/ModelStore.h"
@@ -52,10 +52,6 @@
 
 #include <algorithm>
 #include <cmath>
-
-// Sanitizer builds (LIPSYNC_SANITIZED_BUILD; ASan + UBSan with the fuzz preset's coverage counters) run
-// the drawing several times slower: measured 26 frames/s there on a loaded 2-core machine. They
-// check memory, not speed; the release build checks the speed.
 
 using namespace lipsync;
 using namespace lipsync::studio;
@@ -126,7 +122,10 @@ private slots:
         QCOMPARE(m_preview->panelCount(), 1 + 1); // recorded + "train a model first"
         auto *tabs = m_window->findChild<QTabWidget *>();
         QVERIFY(tabs && tabs->indexOf(m_preview) >= 0);
+        auto *windowTransport = m_window->findChild<TransportBar *>();
+        QVERIFY(windowTransport && windowTransport->isVisible());
         tabs->setCurrentWidget(m_preview);
+        QVERIFY(!windowTransport->isVisible()); // one transport in view: the Preview's own
         // Tracking the head pose runs as a task once per sequence.
         QTRY_COMPARE_WITH_TIMEOUT(m_preview->panel(1)->placeholderText(), QStringLiteral("Tracking the head pose…"), 10000);
         waitIdle();
