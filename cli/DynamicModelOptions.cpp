@@ -34,6 +34,10 @@ std::vector<CommandOption> dynamicModelOptions()
         {QStringLiteral("context-states"), {},
          QStringLiteral("every kind: states for phones in context (neighbours, third of the segment), tied by "
                         "decision trees (docs/models.md 5.2; default: one state per phone, as in the paper)")},
+        {QStringLiteral("paper"), {},
+         QStringLiteral("every kind: the paper's models exactly (docs/models.md 8, the paper preset): no "
+                        "compensation or context, diagonal Brand, the DPDS by Algorithm 1 and gradient ascent "
+                        "without the variance prior; with --realism also no lip closure, colour match or detail")},
         {QStringLiteral("min-occupancy"), QStringLiteral("FRAMES"),
          QStringLiteral("context states: fewest training frames per state"),
          QString::number(ContextTreeOptions{}.minOccupancy)},
@@ -43,8 +47,34 @@ std::vector<CommandOption> dynamicModelOptions()
     };
 }
 
+namespace {
+
+// --max-iterations and --threads: how long and on how many cores, not which model.
+void readLimits(const CommandLine &args, ModelOptions &options)
+{
+    if (args.isSet(QStringLiteral("max-iterations"))) {
+        const int n = args.integer(QStringLiteral("max-iterations"), 1);
+        options.dpds.maxIterations = n;
+        options.slds.maxIterations = n;
+    }
+    if (args.isSet(QStringLiteral("threads")))
+        options.dpds.threads = args.integer(QStringLiteral("threads"), 0);
+}
+
+} // namespace
+
 ModelOptions dynamicModelOptionsFrom(const CommandLine &args)
 {
+    if (args.isSet(QStringLiteral("paper"))) {
+        // The preset is whole: an option that would change one of its models is refused.
+        for (const char *other : {"covariance", "full-a", "bound-a", "bound-a-max", "optimizer", "paper-mode",
+                                  "compensate-variance", "context-states", "min-occupancy", "mdl-weight"})
+            if (args.isSet(QString::fromLatin1(other)))
+                throw UsageError(QStringLiteral("--paper cannot be combined with --%1").arg(QString::fromLatin1(other)));
+        ModelOptions options = ModelOptions::paper();
+        readLimits(args, options);
+        return options;
+    }
     ModelOptions options;
     const QString covariance = args.value(QStringLiteral("covariance"));
     if (covariance == QLatin1String("full"))
@@ -69,13 +99,7 @@ ModelOptions dynamicModelOptionsFrom(const CommandLine &args)
         options.dpds.optimizer = DpdsOptions::Optimizer::GradientAscent;
     else if (optimizer != QLatin1String("lm"))
         throw UsageError(QStringLiteral("--optimizer must be lm or gradient"));
-    if (args.isSet(QStringLiteral("max-iterations"))) {
-        const int n = args.integer(QStringLiteral("max-iterations"), 1);
-        options.dpds.maxIterations = n;
-        options.slds.maxIterations = n;
-    }
-    if (args.isSet(QStringLiteral("threads")))
-        options.dpds.threads = args.integer(QStringLiteral("threads"), 0);
+    readLimits(args, options);
     return options;
 }
 

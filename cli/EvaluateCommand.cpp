@@ -66,8 +66,13 @@ int runRealism(const CommandLine &args, const EvaluationOptions &evaluation)
     options.crossValidation = evaluation;
     options.maxLag = args.integer(QStringLiteral("max-lag"), 0);
     options.dlibPredictor = args.value(QStringLiteral("dlib")).toStdString();
-    options.composite = Compositing::from(args);
-    options.closeBilabials = Compositing::closesLips(args);
+    const bool paper = args.isSet(QStringLiteral("paper"));
+    if (paper)
+        for (const CommandOption &option : Compositing::options())
+            if (args.isSet(option.name))
+                throw UsageError(QStringLiteral("--paper cannot be combined with --%1").arg(option.name));
+    options.composite = paper ? CompositeOptions::paper() : Compositing::from(args);
+    options.closeBilabials = !paper && Compositing::closesLips(args);
     if (args.isSet(QStringLiteral("live"))) {
         options.liveAcousticModel = alignerModelOrDefault({}, QStringLiteral("evaluate --live")).toStdString();
         options.liveBigram = shippedPhoneBigramPath();

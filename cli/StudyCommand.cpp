@@ -113,11 +113,13 @@ void printTable(const StudyTally &tally, double alpha)
     std::printf("\nBradley-Terry ranking:\n");
     for (size_t r = 0; r < tally.ranking.size(); ++r) {
         const MethodScore &s = tally.ranking[r];
-        std::printf("  %zu. %-12s %.4f  (judged real %d, not %d, undecided %d)\n", r + 1,
-                    tally.methods[size_t(s.method)].c_str(), s.strength, s.wins, s.losses,
-                    s.undecided);
+        std::printf("  %zu. %-12s %.4f  (judged real %d, not %d, undecided %d; real in %.0f %%, 95 %% CI %.0f-%.0f %%)\n",
+                    r + 1, tally.methods[size_t(s.method)].c_str(), s.strength, s.wins, s.losses, s.undecided,
+                    100 * s.realShare, 100 * s.realShareLow, 100 * s.realShareHigh);
     }
     std::printf("\n%s\n", tally.summary(alpha).c_str());
+    if (!tally.caution().empty())
+        std::printf("%s\n", tally.caution().c_str());
 }
 
 int runTally(const CommandLine &arguments)

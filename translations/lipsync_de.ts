@@ -286,57 +286,57 @@
 <context>
     <name>lipsync::studio::EvaluationChart</name>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="42"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="40"/>
         <source>L1 error</source>
         <translation>L1-Fehler</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="43"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="41"/>
         <source>RMS error</source>
         <translation>RMS-Fehler</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="44"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="42"/>
         <source>L-inf error</source>
         <translation>L-inf-Fehler</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="45"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="43"/>
         <source>log-likelihood per frame</source>
         <translation>Log-Likelihood pro Bild</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="46"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="44"/>
         <source>lip-opening correlation</source>
         <translation>Korrelation der Lippenöffnung</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="47"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="45"/>
         <source>lip-opening correlation in speech</source>
         <translation>Korrelation der Lippenöffnung beim Sprechen</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="48"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="46"/>
         <source>machine observer (0.5: fooled)</source>
         <translation>Maschineller Beobachter (0,5: getäuscht)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="49"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="47"/>
         <source>articulation (s.d. ratio)</source>
         <translation>Artikulation (Verhältnis der Standardabweichungen)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="50"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="48"/>
         <source>/p b m/ closures (ratio)</source>
         <translation>Verschlüsse bei /p b m/ (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="51"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="49"/>
         <source>mouth sharpness (ratio)</source>
         <translation>Schärfe des Mundes (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="117"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="127"/>
         <source>tracked</source>
         <translation>verfolgt</translation>
     </message>
@@ -1434,203 +1434,203 @@
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="109"/>
+        <location filename="../studio/app/MainWindow.cpp" line="113"/>
         <source>Models could not be written into the project&apos;s folder.</source>
         <translation>Modelle konnten nicht in den Projektordner geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="112"/>
+        <location filename="../studio/app/MainWindow.cpp" line="116"/>
         <source>%1 was not applied: it would leave the project unsaveable (%2).</source>
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="138"/>
+        <location filename="../studio/app/MainWindow.cpp" line="142"/>
         <source>Playing without sound: %1.</source>
         <translation>Wiedergabe ohne Ton: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="144"/>
-        <location filename="../studio/app/MainWindow.cpp" line="145"/>
+        <location filename="../studio/app/MainWindow.cpp" line="148"/>
+        <location filename="../studio/app/MainWindow.cpp" line="149"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="166"/>
+        <location filename="../studio/app/MainWindow.cpp" line="170"/>
         <source>Generated &amp;Face</source>
         <translation>Generiertes &amp;Gesicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="172"/>
+        <location filename="../studio/app/MainWindow.cpp" line="176"/>
         <source>&amp;Whole Face (Eyes Included)</source>
         <translation>&amp;Ganzes Gesicht (mit Augen)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="174"/>
+        <location filename="../studio/app/MainWindow.cpp" line="178"/>
         <source>Synthesise the whole modelled face; otherwise the recording&apos;s own eyes and upper face are kept</source>
         <translation>Das ganze modellierte Gesicht synthetisieren; sonst bleiben die Augen und das Obergesicht der Aufnahme erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="168"/>
+        <location filename="../studio/app/MainWindow.cpp" line="172"/>
         <source>&amp;Synthesised Skin</source>
         <translation>&amp;Synthetisierte Haut</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="170"/>
+        <location filename="../studio/app/MainWindow.cpp" line="174"/>
         <source>Paste the AAM&apos;s synthesis of the lower face, skin included; otherwise the recording&apos;s own lower face is moved to the generated shape and only the inside of the mouth is synthesised</source>
         <translation>Die AAM-Synthese des unteren Gesichts samt Haut einsetzen; sonst wird das eigene untere Gesicht der Aufnahme in die erzeugte Form bewegt und nur das Mundinnere synthetisiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="176"/>
+        <location filename="../studio/app/MainWindow.cpp" line="180"/>
         <source>&amp;Detail from Training Images</source>
         <translation>&amp;Details aus Trainingsbildern</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="178"/>
+        <location filename="../studio/app/MainWindow.cpp" line="182"/>
         <source>Add the teeth, lip highlights and skin detail of the AAM&apos;s nearest training images to the model&apos;s smooth texture</source>
         <translation>Zähne, Glanzlichter der Lippen und Hautdetails der nächstgelegenen Trainingsbilder des AAM zur glatten Textur des Modells hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="180"/>
+        <location filename="../studio/app/MainWindow.cpp" line="184"/>
         <source>&amp;Match the Frame&apos;s Lighting</source>
         <translation>&amp;Beleuchtung an das Bild anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="197"/>
+        <location filename="../studio/app/MainWindow.cpp" line="201"/>
         <source>&amp;Close the Lips on /p b m/</source>
         <translation>&amp;Lippen bei /p b m/ schließen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="199"/>
+        <location filename="../studio/app/MainWindow.cpp" line="203"/>
         <source>Close the generated lips on the bilabials /p b m/, as speakers do; off: the model&apos;s trajectory as generated</source>
         <translation>Die erzeugten Lippen bei den Bilabialen /p b m/ schließen, wie Sprecher es tun; aus: die Trajektorie des Modells, wie sie erzeugt wurde</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="245"/>
+        <location filename="../studio/app/MainWindow.cpp" line="249"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="249"/>
+        <location filename="../studio/app/MainWindow.cpp" line="253"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="259"/>
+        <location filename="../studio/app/MainWindow.cpp" line="263"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="263"/>
+        <location filename="../studio/app/MainWindow.cpp" line="267"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="284"/>
+        <location filename="../studio/app/MainWindow.cpp" line="288"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="285"/>
+        <location filename="../studio/app/MainWindow.cpp" line="289"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="286"/>
+        <location filename="../studio/app/MainWindow.cpp" line="290"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="288"/>
+        <location filename="../studio/app/MainWindow.cpp" line="292"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="319"/>
+        <location filename="../studio/app/MainWindow.cpp" line="323"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="322"/>
+        <location filename="../studio/app/MainWindow.cpp" line="326"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="337"/>
+        <location filename="../studio/app/MainWindow.cpp" line="341"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="349"/>
+        <location filename="../studio/app/MainWindow.cpp" line="353"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="360"/>
+        <location filename="../studio/app/MainWindow.cpp" line="364"/>
         <source>&amp;Live: Speak and Watch the Face</source>
         <translation>&amp;Live: Sprechen und das Gesicht beobachten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="362"/>
+        <location filename="../studio/app/MainWindow.cpp" line="366"/>
         <source>Speak into the microphone and watch the face move</source>
         <translation>Ins Mikrofon sprechen und dem Gesicht beim Bewegen zusehen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="366"/>
+        <location filename="../studio/app/MainWindow.cpp" line="370"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="370"/>
+        <location filename="../studio/app/MainWindow.cpp" line="374"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="374"/>
+        <location filename="../studio/app/MainWindow.cpp" line="378"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="375"/>
+        <location filename="../studio/app/MainWindow.cpp" line="379"/>
         <source>&amp;User Guide</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="378"/>
+        <location filename="../studio/app/MainWindow.cpp" line="382"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="387"/>
+        <location filename="../studio/app/MainWindow.cpp" line="391"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="437"/>
+        <location filename="../studio/app/MainWindow.cpp" line="441"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="500"/>
+        <location filename="../studio/app/MainWindow.cpp" line="504"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="508"/>
+        <location filename="../studio/app/MainWindow.cpp" line="512"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="537"/>
+        <location filename="../studio/app/MainWindow.cpp" line="541"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="539"/>
+        <location filename="../studio/app/MainWindow.cpp" line="543"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="543"/>
+        <location filename="../studio/app/MainWindow.cpp" line="547"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1638,43 +1638,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="554"/>
+        <location filename="../studio/app/MainWindow.cpp" line="558"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="555"/>
+        <location filename="../studio/app/MainWindow.cpp" line="559"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="555"/>
+        <location filename="../studio/app/MainWindow.cpp" line="559"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="561"/>
+        <location filename="../studio/app/MainWindow.cpp" line="565"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="579"/>
+        <location filename="../studio/app/MainWindow.cpp" line="583"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="607"/>
-        <location filename="../studio/app/MainWindow.cpp" line="615"/>
+        <location filename="../studio/app/MainWindow.cpp" line="611"/>
+        <location filename="../studio/app/MainWindow.cpp" line="619"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="614"/>
+        <location filename="../studio/app/MainWindow.cpp" line="618"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="258"/>
+        <location filename="../studio/app/MainWindow.cpp" line="262"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -1700,213 +1700,234 @@
 <context>
     <name>lipsync::studio::ModelsPanel</name>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="55"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="54"/>
         <source>Appearance model</source>
         <translation>Erscheinungsmodell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="56"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="55"/>
         <source>Phoneme aligner</source>
         <translation>Phonem-Aligner</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="79"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="78"/>
         <source>Build AAM…</source>
         <translation>AAM erstellen …</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="101"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="100"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="101"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="100"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="101"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="100"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="258"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="275"/>
         <source>Made in this session; written when the project is saved</source>
         <translation>In dieser Sitzung erstellt; wird beim Speichern des Projekts geschrieben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="270"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="287"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="79"/>
         <source>Train</source>
         <translation>Trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="66"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="65"/>
         <source>%1 states for phones in context</source>
         <translation>%1 Zustände für Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="67"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="66"/>
         <source>one state per phone</source>
         <translation>ein Zustand je Phonem</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="70"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="69"/>
         <source>%1, full covariances</source>
         <translation>%1, volle Kovarianzen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="72"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="71"/>
         <source>%1 parameters, %2, variance compensation</source>
         <translation>%1 Parameter, %2, Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="73"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="72"/>
         <source>%1 parameters, %2</source>
         <translation>%1 Parameter, %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="79"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
         <source>Evaluate (k-fold)</source>
         <translation>Evaluieren (k-fach)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="247"/>
         <source>Realism</source>
         <translation>Realismus</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="84"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="83"/>
         <source>Variance compensation</source>
         <translation>Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="85"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="84"/>
         <source>Phones in context</source>
         <translation>Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="111"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="84"/>
+        <source>Paper&apos;s models</source>
+        <translation>Modelle des Artikels</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="110"/>
         <source>VarPro / Levenberg–Marquardt</source>
         <translation>VarPro / Levenberg–Marquardt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="112"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="111"/>
         <source>Gradient ascent (paper)</source>
         <translation>Gradientenaufstieg (Artikel)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="112"/>
         <source>Diagonal A</source>
         <translation>Diagonales A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="114"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
         <source>Full A</source>
         <translation>Volles A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="117"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="116"/>
         <source>Covariance by CV</source>
         <translation>Kovarianz per KV</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="117"/>
         <source>Diagonal covariance</source>
         <translation>Diagonale Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="119"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
         <source>Full covariance</source>
         <translation>Volle Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="141"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="140"/>
         <source>Scale each model&apos;s generated trajectories to the spread of the training features: lips that open and close as much as the recording&apos;s, at the cost of a larger error per frame. Off: the paper&apos;s models exactly.</source>
         <translation>Skaliert die erzeugten Trajektorien jedes Modells auf die Streuung der Trainingsmerkmale: Lippen, die sich so weit öffnen und schließen wie in der Aufnahme, um den Preis eines größeren Fehlers je Bild. Aus: genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="149"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="148"/>
         <source>Train each model on states for phones in their context (the neighbouring phones and the part of the phone), tied by decision trees: lips that anticipate the next sound. Off: one state per phone, the paper&apos;s models exactly.</source>
         <translation>Jedes Modell auf Zuständen für Phoneme in ihrem Kontext trainieren (die benachbarten Phoneme und der Teil des Phonems), durch Entscheidungsbäume gebündelt: Lippen, die den nächsten Laut vorwegnehmen. Aus: ein Zustand je Phonem, genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="170"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="155"/>
+        <source>Train and evaluate the paper&apos;s models exactly: no compensation or phones in context, Brand with diagonal covariances, the DPDS by the paper&apos;s Algorithm 1 and gradient ascent without the variance prior; Realism renders without lip closure, colour matching or exemplar detail.</source>
+        <translation>Genau die Modelle des Artikels trainieren und evaluieren: keine Kompensation und keine Phone im Kontext, Brand mit diagonalen Kovarianzen, das DPDS mit Algorithmus 1 des Artikels und Gradientenanstieg ohne Varianz-Prior; Realismus rendert ohne Lippenschluss, Farbanpassung und Exemplar-Details.</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="177"/>
         <source>folds: </source>
         <translation>Teilmengen (k-fach): </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="180"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="187"/>
         <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
         <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="181"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="188"/>
         <source>Train the checked models on every sequence with features and phonemes</source>
         <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="182"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="189"/>
         <source>Stop training or evaluation; the previous models stay</source>
         <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="183"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="190"/>
         <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
         <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="188"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="195"/>
         <source>Render the held-out sequences of the same folds into their recordings and measure the lips with dlib&apos;s landmarks: opening correlation, articulation, /p b m/ closures, lag, sharpness, seam</source>
         <translation>Die zurückgehaltenen Sequenzen derselben Folds in ihre Aufnahmen rendern und die Lippen mit dlibs Landmarken messen: Korrelation der Öffnung, Artikulation, Verschlüsse bei /p b m/, Versatz, Schärfe, Naht</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="216"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="223"/>
         <source>AAM parameter </source>
         <translation>AAM-Parameter </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="217"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="224"/>
         <source>Which AAM parameter to plot over time</source>
         <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="228"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="234"/>
+        <source>Not evaluated yet: Evaluate (k-fold) in the Models panel draws the paper&apos;s Figure 4 for the checked models.</source>
+        <translation>Noch nicht evaluiert: Evaluieren (k-fach) im Modelle-Panel zeichnet Abbildung 4 des Artikels für die gewählten Modelle.</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="239"/>
+        <source>Not measured yet: Realism in the Models panel renders held-out sequences and measures the lips on them.</source>
+        <translation>Noch nicht gemessen: Realismus im Modelle-Panel rendert zurückgehaltene Sequenzen und misst die Lippen darauf.</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="244"/>
         <source>Trajectory</source>
         <translation>Trajektorie</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="229"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="245"/>
         <source>Training</source>
         <translation>Training</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="230"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="246"/>
         <source>Evaluation</source>
         <translation>Evaluation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="306"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="323"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter tracken und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="363"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="391"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="399"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="427"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="365"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="401"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -1914,37 +1935,45 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="382"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="418"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="402"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="438"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="404"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="440"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="411"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="447"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../studio/build/ModelsPanel.cpp" line="466"/>
+        <source>Evaluated %n model(s) on %1 sequences, %2 folds: mean and 95 % interval over the folds.</source>
+        <translation>
+            <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen: Mittelwert und 95-%-Intervall über die Teilmengen.</numerusform>
+            <numerusform>%n Modelle auf %1 Sequenzen evaluiert, %2 Teilmengen: Mittelwert und 95-%-Intervall über die Teilmengen.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="481"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="525"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="482"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="526"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="425"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="461"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -1952,20 +1981,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="121"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="120"/>
         <source>Brand&apos;s output covariances. By CV: diagonal or full, whichever of the two generates held-out training sequences more closely (cross-validation). Diagonal: the paper&apos;s model.</source>
         <translation>Brands Ausgabekovarianzen. Per KV: diagonal oder voll, je nachdem, welche der beiden zurückgehaltene Trainingssequenzen genauer erzeugt (Kreuzvalidierung). Diagonal: das Modell der Veröffentlichung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="431"/>
-        <source>Evaluated %n model(s) on %1 sequences, %2 folds.</source>
-        <translation>
-            <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen (k-fache Kreuzvalidierung).</numerusform>
-            <numerusform>%n Modelle auf %1 Sequenzen evaluiert, %2 Teilmengen (k-fache Kreuzvalidierung).</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="451"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="494"/>
         <source>Realism of %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
@@ -1973,7 +1994,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="457"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="499"/>
         <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
         <translation>
             <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
@@ -1981,37 +2002,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="501"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="554"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="529"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="555"/>
+        <source>Failed: %1.</source>
+        <translation>Fehlgeschlagen: %1.</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="557"/>
+        <source>Canceled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="587"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="534"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="592"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="388"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="424"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="558"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="616"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="568"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="626"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="593"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="651"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>
@@ -2558,6 +2589,29 @@
     </message>
 </context>
 <context>
+    <name>lipsync::studio::ResultsPage</name>
+    <message>
+        <location filename="../studio/plots/ResultsPage.cpp" line="59"/>
+        <source>Computing: %1…</source>
+        <translation>Berechnung: %1…</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/ResultsPage.cpp" line="60"/>
+        <source>Computing: %1… (shown until then: %2)</source>
+        <translation>Berechnung: %1… (bis dahin angezeigt: %2)</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/ResultsPage.cpp" line="66"/>
+        <source>%1 Shown: %2</source>
+        <translation>%1 Angezeigt: %2</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/ResultsPage.cpp" line="111"/>
+        <source>%1, %2: mean %3 over %4 folds, 95 % interval ± %5</source>
+        <translation>%1, %2: Mittelwert %3 über %4 Teilmengen, 95-%-Intervall ± %5</translation>
+    </message>
+</context>
+<context>
     <name>lipsync::studio::ScreenshotRunner</name>
     <message>
         <location filename="../studio/app/ScreenshotRunner.cpp" line="33"/>
@@ -2921,17 +2975,17 @@
         <translation>p (Holm)</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="52"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="51"/>
         <source>Method</source>
         <translation>Methode</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="52"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="51"/>
         <source>Bradley–Terry strength</source>
         <translation>Bradley-Terry-Stärke</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="52"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="51"/>
         <source>Judged real</source>
         <translation>Als echt beurteilt</translation>
     </message>
@@ -2939,6 +2993,11 @@
         <location filename="../studio/compare/StudyResultsView.cpp" line="52"/>
         <source>Not judged real</source>
         <translation>Nicht als echt beurteilt</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="52"/>
+        <source>Judged real (95 % CI)</source>
+        <translation>Für echt gehalten (95-%-KI)</translation>
     </message>
     <message>
         <location filename="../studio/compare/StudyResultsView.cpp" line="59"/>
@@ -2957,17 +3016,27 @@
     </message>
     <message>
         <location filename="../studio/compare/StudyResultsView.cpp" line="104"/>
+        <source>%1 % (%2–%3 %)</source>
+        <translation>%1 % (%2–%3 %)</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="110"/>
         <source>Participants: %1, answers: %2 (%3 still open). %4</source>
         <translation>Teilnehmende: %1, Antworten: %2 (%3 noch offen). %4</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="131"/>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="139"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="119"/>
+        <source>Few answers: a pair has only %1 decided (%2 or more are needed before a ranking says much); read the intervals, not the strengths.</source>
+        <translation>Wenige Antworten: ein Paar hat nur %1 entschiedene (erst ab %2 sagt eine Rangfolge etwas aus); lesen Sie die Intervalle, nicht die Stärken.</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="143"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="151"/>
         <source>Export study results</source>
         <translation>Studienergebnisse exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyResultsView.cpp" line="133"/>
+        <location filename="../studio/compare/StudyResultsView.cpp" line="145"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>

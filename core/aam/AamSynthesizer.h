@@ -49,6 +49,16 @@ struct CompositeOptions
     // shape and drawing only the inside of the mouth (render/LowerFaceWarp, FaceRenderer).
     bool synthesizeSkin = false;
 
+    // The paper's rendering (docs/models.md §7): the AAM's synthesis alone, no colour matching
+    // and no exemplar detail.
+    static CompositeOptions paper()
+    {
+        CompositeOptions o;
+        o.matchColour = false;
+        o.detail = false;
+        return o;
+    }
+
     bool operator==(const CompositeOptions &) const = default;
 };
 

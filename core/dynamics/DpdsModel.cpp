@@ -90,7 +90,12 @@ struct DimensionFit
         const double kappa = options->kappa;
         for (int n = 0; n < P; ++n) {
             const int count = layout->startCount[n];
-            sigma2[n] = count > 0 ? (kappa * s0 + startSquares[n]) / (kappa + count + 2.0) : s0;
+            if (count == 0)
+                sigma2[n] = s0;
+            else if (options->prior)
+                sigma2[n] = (kappa * s0 + startSquares[n]) / (kappa + count + 2.0);
+            else
+                sigma2[n] = startSquares[n] / count; // maximum likelihood, as the paper
             sigma2[n] = std::max(sigma2[n], floor);
         }
     }
@@ -112,8 +117,9 @@ struct DimensionFit
                 continue;
             logTerms += count * std::log(sigma2[n]);
             // Scaled-inv-chi^2(kappa, s0^2) prior, up to a constant.
-            value += -(options->kappa / 2.0 + 1.0) * std::log(sigma2[n])
-                     - options->kappa * s0 / (2.0 * sigma2[n]);
+            if (options->prior)
+                value += -(options->kappa / 2.0 + 1.0) * std::log(sigma2[n])
+                         - options->kappa * s0 / (2.0 * sigma2[n]);
         }
         return value - 0.5 * logTerms;
     }

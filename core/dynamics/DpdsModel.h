@@ -23,6 +23,7 @@ struct DpdsOptions
     bool autoregressiveInit = true;  // §4.9 AR(1) initialisation; false: a = initialA everywhere
     double initialA = 0.5;
     double kappa = 2.0;              // §4.5 prior strength
+    bool prior = true;               // §4.5 [choice]; false: the paper's plain ML variances
     int maxIterations = 100;         // outer iterations of §4.10
     double tolerance = 1e-9;         // relative objective increase that stops the loop
     int threads = 0;                 // 0: all cores (QtConcurrent), 1: serial

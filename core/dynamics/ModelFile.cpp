@@ -33,6 +33,18 @@ std::unique_ptr<DynamicModel> newModelOfKind(ModelKind kind, const ModelOptions 
 
 } // namespace
 
+ModelOptions ModelOptions::paper()
+{
+    ModelOptions o;
+    o.compensateVariance = false;
+    o.contextStates = false;
+    o.brand.covariance = BrandCovariance::Diagonal;
+    o.dpds.paperMode = true;
+    o.dpds.optimizer = DpdsOptions::Optimizer::GradientAscent;
+    o.dpds.prior = false;
+    return o;
+}
+
 std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOptions &options)
 {
     std::unique_ptr<DynamicModel> model = newModelOfKind(kind, options);

@@ -31,6 +31,12 @@ struct ModelOptions
     // Every kind: context-dependent states tied by decision trees (ContextDependentModel, §5.2).
     bool contextStates = false;
     ContextTreeOptions context;
+
+    // The paper's models exactly, as far as they are well defined (docs/models.md §8, the paper
+    // preset): no variance compensation, no phones in context, Brand with diagonal covariances,
+    // the DPDS by Algorithm 1 (unit weights, paper mode) and gradient ascent with
+    // maximum-likelihood start variances (no §4.5 prior). Its ridge and the bound on a stay: see §8.
+    static ModelOptions paper();
 };
 
 std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOptions &options = {});

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace lipsync {
 
@@ -152,8 +153,20 @@ void StudyTally::finalise()
     for (size_t i = 0; i < pairs.size(); ++i)
         pairs[i].holmPValue = adjusted[i];
     const Eigen::VectorXd strength = bradleyTerry(wins);
-    for (int i = 0; i < m; ++i)
-        scores[size_t(i)].strength = strength(i);
+    for (int i = 0; i < m; ++i) {
+        MethodScore &score = scores[size_t(i)];
+        score.strength = strength(i);
+        // Wilson score interval at 95 % (z = 1.96) on wins out of the decided trials.
+        const double n = score.wins + score.losses;
+        if (n > 0) {
+            const double z = 1.959963984540054, p = score.wins / n;
+            const double centre = (p + z * z / (2 * n)) / (1 + z * z / n);
+            const double half = z / (1 + z * z / n) * std::sqrt(p * (1 - p) / n + z * z / (4 * n * n));
+            score.realShare = p;
+            score.realShareLow = std::max(0.0, centre - half);
+            score.realShareHigh = std::min(1.0, centre + half);
+        }
+    }
     std::stable_sort(scores.begin(), scores.end(), [](const MethodScore &x, const MethodScore &y) {
         return x.strength > y.strength;
     });
@@ -196,14 +209,33 @@ std::string StudyTally::pairsCsv() const
     return csv;
 }
 
+int StudyTally::fewestDecided() const
+{
+    int fewest = std::numeric_limits<int>::max();
+    for (const PairTally &p : pairs)
+        fewest = std::min(fewest, p.decided());
+    return pairs.empty() ? 0 : fewest;
+}
+
+std::string StudyTally::caution() const
+{
+    const int fewest = fewestDecided();
+    if (pairs.empty() || fewest >= kFewAnswers)
+        return {};
+    return "Few answers: a pair has only " + std::to_string(fewest) + " decided (" + std::to_string(kFewAnswers)
+           + " or more are needed before a ranking says much); read the intervals, not the strengths.";
+}
+
 std::string StudyTally::rankingCsv() const
 {
-    std::string csv = "rank,method,strength,judged_real,judged_not_real,undecided\n";
+    std::string csv = "rank,method,strength,judged_real,judged_not_real,undecided,real_share,real_share_low,"
+                      "real_share_high\n";
     for (size_t r = 0; r < ranking.size(); ++r) {
         const MethodScore &s = ranking[r];
         csv += std::to_string(r + 1) + "," + csvField(methods[size_t(s.method)]) + ","
                + number(s.strength) + "," + std::to_string(s.wins) + "," + std::to_string(s.losses)
-               + "," + std::to_string(s.undecided) + "\n";
+               + "," + std::to_string(s.undecided) + "," + number(s.realShare) + "," + number(s.realShareLow)
+               + "," + number(s.realShareHigh) + "\n";
     }
     return csv;
 }
@@ -231,12 +263,16 @@ QJsonObject StudyTally::toJson() const
                                         {"strength", s.strength},
                                         {"judgedReal", s.wins},
                                         {"judgedNotReal", s.losses},
-                                        {"undecided", s.undecided}});
+                                        {"undecided", s.undecided},
+                                        {"realShare", s.realShare},
+                                        {"realShareLow", s.realShareLow},
+                                        {"realShareHigh", s.realShareHigh}});
     }
     return QJsonObject{{"methods", methodArray},
                        {"pairs", pairArray},
                        {"ranking", rankingArray},
                        {"summary", QString::fromStdString(summary())},
+                       {"caution", QString::fromStdString(caution())},
                        {"participants", participants},
                        {"answered", answered},
                        {"unanswered", unanswered}};

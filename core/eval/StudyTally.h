@@ -12,9 +12,11 @@
 //    likelihood with the MM algorithm of Hunter (2004, Ann. Statist. 32:384, eq. 3); undecided
 //    answers are again left out. Strengths are normalised to sum to 1. A method never judged real
 //    gets strength 0 (the maximum-likelihood limit).
+//  - per method, the share of its decided trials in which it was judged real with a 95 % Wilson
+//    score interval, so that a ranking from few answers shows how little it says;
 //  - the paper's one-line summary ("DPDS ≈ reality ≻ Brand ≻ SLDS"): methods by strength, "≻"
 //    between neighbours whose direct comparison is significant at alpha after Holm's adjustment,
-//    else "≈".
+//    else "≈"; and a caution when a pair has fewer than kFewAnswers decided answers.
 #include "project/ForcedChoiceStudy.h"
 
 #include <Eigen/Core>
@@ -52,11 +54,17 @@ struct MethodScore
     int wins = 0;        // judged real
     int losses = 0;      // the other side judged real
     int undecided = 0;
+    // wins / (wins + losses) and its 95 % Wilson score interval ([0, 1] with no decided trial).
+    double realShare = 0, realShareLow = 0, realShareHigh = 1;
 };
 
 class StudyTally
 {
 public:
+    // Decided answers a pair needs before its ranking is more than anecdote: with 10, a sign
+    // test can reach p < 0.05 only at 9:1 or better.
+    static constexpr int kFewAnswers = 10;
+
     // Counts the answered trials of every session (unanswered ones are skipped).
     static StudyTally fromStudy(const ForcedChoiceStudy &study);
     // From raw counts (e.g. the paper's Table 1). Pairs may name methods in either order and may
@@ -75,9 +83,15 @@ public:
     // `methodName` (optional) gives each method id the name shown, e.g. a translated one.
     std::string summary(double alpha = 0.05,
                         const std::function<std::string(const std::string &)> &methodName = {}) const;
+    // The fewest decided answers of any pair.
+    int fewestDecided() const;
+    // A sentence warning that the ranking rests on few answers (some pair below kFewAnswers), or
+    // empty.
+    std::string caution() const;
     // CSV, one row per pair: method_a,method_b,prefer_a,undecided,prefer_b,n_decided,p_value,p_holm
     std::string pairsCsv() const;
-    // CSV, one row per method: rank,method,strength,judged_real,judged_not_real,undecided
+    // CSV, one row per method: rank,method,strength,judged_real,judged_not_real,undecided,
+    // real_share,real_share_low,real_share_high
     std::string rankingCsv() const;
     QJsonObject toJson() const;
 

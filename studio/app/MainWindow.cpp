@@ -51,6 +51,7 @@
 #include <QTabWidget>
 #include <QLabel>
 #include <QTableView>
+#include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
 #include <QUndoStack>
@@ -299,9 +300,9 @@ void MainWindow::applyDefaultDockSizes()
     resizeDocks({dock("timelineDock")},
                 {m_timeline->spectrogramAction()->isChecked() ? kSpectrogramTimelineHeight : 230}, Qt::Vertical);
     // The plots first (a trajectory needs height to be read), the models panel at up to its full
-    // height (its buttons in view where the screen allows; it scrolls otherwise).
-    resizeDocks({dock("plotsDock"), dock("modelsDock")}, {360, std::min(m_models->sizeHint().height() + 24, 240)},
-                Qt::Vertical);
+    // height or a third of the window's (its list scrolls above its buttons otherwise).
+    resizeDocks({dock("plotsDock"), dock("modelsDock")},
+                {360, std::min(m_models->sizeHint().height() + 24, std::max(240, height() / 3))}, Qt::Vertical);
 }
 
 void MainWindow::resetLayout()
@@ -633,7 +634,16 @@ void MainWindow::restoreSettings()
     m_geometryRestored = restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
     if (!m_geometryRestored)
         resize(1280, 800);
-    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    m_layoutRestored = restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+}
+
+void MainWindow::showEvent(QShowEvent *event)
+{
+    QMainWindow::showEvent(event);
+    // The default layout for the size the window is first shown at (maximised, or --size), not
+    // the size it was built at; a restored layout stays as the user left it.
+    if (!std::exchange(m_shownOnce, true) && !m_layoutRestored)
+        QTimer::singleShot(0, this, &MainWindow::applyDefaultDockSizes);
 }
 
 void MainWindow::showAsLastTime()

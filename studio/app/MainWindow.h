@@ -103,6 +103,7 @@ signals:
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    void showEvent(QShowEvent *event) override;
 
 private:
     static constexpr int kSpectrogramTimelineHeight = 360;
@@ -154,6 +155,8 @@ private:
     int m_pendingRow = -1;
     QPointer<Task> m_loadTask;
     bool m_geometryRestored = false;
+    bool m_layoutRestored = false;
+    bool m_shownOnce = false;
 };
 
 } // namespace lipsync::studio

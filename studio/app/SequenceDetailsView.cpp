@@ -1,6 +1,6 @@
 #include "app/SequenceDetailsView.h"
 
-#include "app/ElidedLabel.h"
+#include "widgets/ElidedLabel.h"
 
 #include "align/Lexicon.h"
 #include "context/SequenceMedia.h"

@@ -1,8 +1,5 @@
 #include "build/ModelsPanel.h"
 
-#include "app/ElidedLabel.h"
-
-
 #include "context/ErrorReporter.h"
 #include "context/ModelKinds.h"
 #include "context/ModelStore.h"
@@ -17,11 +14,13 @@
 #include "eval/RealismReport.h"
 #include "plots/EvaluationChart.h"
 #include "plots/ObjectivePlot.h"
+#include "plots/ResultsPage.h"
 #include "plots/TrajectoryView.h"
 #include "project/Project.h"
 #include "tasks/Feedback.h"
 #include "tasks/TaskRunner.h"
 #include "util/Error.h"
+#include "widgets/ElidedLabel.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -82,7 +81,7 @@ ModelsPanel::ModelsPanel(QWidget *parent)
       m_dpdsOptimizer(new QComboBox(this)),
       m_sldsA(new QComboBox(this)), m_brandCovariance(new QComboBox(this)),
       m_compensateVariance(new QCheckBox(tr("Variance compensation"), this)),
-      m_contextStates(new QCheckBox(tr("Phones in context"), this)), m_folds(new QSpinBox(this)),
+      m_contextStates(new QCheckBox(tr("Phones in context"), this)), m_paper(new QCheckBox(tr("Paper's models"), this)), m_folds(new QSpinBox(this)),
       m_parameter(new QSpinBox(this)), m_status(new ElidedLabel(this))
 {
     // The models and their options scroll; the actions and the status below them hold still
@@ -150,6 +149,14 @@ ModelsPanel::ModelsPanel(QWidget *parent)
            "of the phone), tied by decision trees: lips that anticipate the next sound. Off: one state per "
            "phone, the paper's models exactly."));
     grid->addWidget(m_contextStates, int(kinds.size()), 1);
+    // The paper preset (docs/models.md §8): every choice beyond the paper off, held off.
+    m_paper->setObjectName(QStringLiteral("paperModels"));
+    m_paper->setToolTip(
+        tr("Train and evaluate the paper's models exactly: no compensation or phones in context, Brand with "
+           "diagonal covariances, the DPDS by the paper's Algorithm 1 and gradient ascent without the variance "
+           "prior; Realism renders without lip closure, colour matching or exemplar detail."));
+    grid->addWidget(m_paper, int(kinds.size()) + 1, 0, 1, 2);
+    connect(m_paper, &QCheckBox::toggled, this, &ModelsPanel::applyPaperPreset);
     optionsLayout->addLayout(grid);
     scroll->setWidget(optionsPage);
     // No least height of its own: a tall timeline (the spectrogram's) may squeeze the list away,
@@ -223,11 +230,21 @@ void ModelsPanel::attach(StudioContext *context, QTabWidget *plots)
     page->addWidget(m_trajectory, 1);
     m_objective = new ObjectivePlot(plots);
     m_objective->setObjectName(QStringLiteral("objectivePlot"));
-    m_evaluation = new EvaluationChart(plots);
-    m_evaluation->setObjectName(QStringLiteral("evaluationChart"));
+    // The k-fold errors and the realism report each keep their page: one does not replace the other.
+    m_evaluation = new ResultsPage(tr("Not evaluated yet: Evaluate (k-fold) in the Models panel draws the paper's "
+                                      "Figure 4 for the checked models."),
+                                   plots);
+    m_evaluation->setObjectName(QStringLiteral("evaluationPage"));
+    m_evaluation->chart()->setObjectName(QStringLiteral("evaluationChart"));
+    m_realismPage = new ResultsPage(tr("Not measured yet: Realism in the Models panel renders held-out sequences and "
+                                   "measures the lips on them."),
+                                plots);
+    m_realismPage->setObjectName(QStringLiteral("realismPage"));
+    m_realismPage->chart()->setObjectName(QStringLiteral("realismChart"));
     plots->addTab(m_trajectoryPage, tr("Trajectory"));
     plots->addTab(m_objective, tr("Training"));
     plots->addTab(m_evaluation, tr("Evaluation"));
+    plots->addTab(m_realismPage, tr("Realism"));
 
     ProjectDocument *doc = context->document();
     connect(doc, &ProjectDocument::documentReset, this, &ModelsPanel::onDocumentReset);
@@ -319,8 +336,27 @@ QList<Task *> ModelsPanel::runningTasks() const
     return out;
 }
 
+void ModelsPanel::applyPaperPreset(bool on)
+{
+    // The controls show what the preset trains; unticked, the user's own settings come back.
+    if (on)
+        m_beforePaper = {m_compensateVariance->isChecked(), m_contextStates->isChecked(),
+                         m_brandCovariance->currentIndex(), m_dpdsOptimizer->currentIndex()};
+    m_compensateVariance->setChecked(on ? false : m_beforePaper.compensate);
+    m_contextStates->setChecked(on ? false : m_beforePaper.context);
+    m_brandCovariance->setCurrentIndex(on ? m_brandCovariance->findData(int(BrandCovariance::Diagonal))
+                                          : m_beforePaper.covariance);
+    m_dpdsOptimizer->setCurrentIndex(on ? m_dpdsOptimizer->findData(QStringLiteral("gradient"))
+                                        : m_beforePaper.optimizer);
+    for (QWidget *w : std::initializer_list<QWidget *>{m_compensateVariance, m_contextStates, m_brandCovariance,
+                                                       m_dpdsOptimizer})
+        w->setEnabled(!on);
+}
+
 ModelOptions ModelsPanel::modelOptions() const
 {
+    if (m_paper->isChecked())
+        return ModelOptions::paper();
     ModelOptions options;
     options.dpds.optimizer = m_dpdsOptimizer->currentData().toString() == QLatin1String("gradient")
                                  ? DpdsOptions::Optimizer::GradientAscent
@@ -427,12 +463,15 @@ Task *ModelsPanel::evaluate()
         [self](EvaluationResult result) {
             if (!self)
                 return;
-            self->m_evaluation->setResult(result);
-            self->showEvaluation(tr("Evaluated %n model(s) on %1 sequences, %2 folds.", "", int(result.models.size()))
+            const QString what = tr("Evaluated %n model(s) on %1 sequences, %2 folds: mean and 95 % interval over "
+                                    "the folds.",
+                                    "", int(result.models.size()))
                                      .arg(result.sequences)
-                                     .arg(result.folds));
+                                     .arg(result.folds);
+            self->m_evaluation->setResult(result, what);
+            self->showEvaluation(self->m_evaluation, what);
         });
-    watchEvaluation(task);
+    watchEvaluation(task, m_evaluation);
     return task;
 }
 
@@ -445,6 +484,10 @@ Task *ModelsPanel::evaluateRealism()
     RealismOptions realism;
     realism.crossValidation = *options;
     realism.closeBilabials = m_context->closesLips(); // the models' faces as the studio renders them
+    if (m_paper->isChecked()) {
+        realism.closeBilabials = false;
+        realism.composite = CompositeOptions::paper();
+    }
     auto project = std::make_shared<const Project>(m_context->document()->project());
     QPointer<ModelsPanel> self(this);
     Task *task = m_context->taskRunner()->run<RealismResult>(
@@ -453,14 +496,15 @@ Task *ModelsPanel::evaluateRealism()
         [self](RealismResult result) {
             if (!self)
                 return;
-            self->m_evaluation->setRealism(result);
-            self->showEvaluation(tr("Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib's "
+            const QString what = tr("Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib's "
                                     "landmarks: the AAM's re-synthesis and %n model(s).",
                                     "", int(result.methods.size()) - 1)
                                      .arg(result.sequences)
-                                     .arg(result.folds));
+                                     .arg(result.folds);
+            self->m_realismPage->setRealism(result, what);
+            self->showEvaluation(self->m_realismPage, what);
         });
-    watchEvaluation(task);
+    watchEvaluation(task, m_realismPage);
     return task;
 }
 
@@ -486,19 +530,32 @@ std::optional<EvaluationOptions> ModelsPanel::evaluationToStart(std::vector<Labe
     return options;
 }
 
-void ModelsPanel::showEvaluation(const QString &status)
+EvaluationChart *ModelsPanel::evaluationChart() const
+{
+    return m_evaluation->chart();
+}
+
+void ModelsPanel::showEvaluation(ResultsPage *page, const QString &status)
 {
     if (m_plots)
-        m_plots->setCurrentWidget(m_evaluation);
+        m_plots->setCurrentWidget(page);
     m_status->setText(status);
     emit evaluated();
 }
 
-void ModelsPanel::watchEvaluation(Task *task)
+void ModelsPanel::watchEvaluation(Task *task, ResultsPage *page)
 {
-    connect(task, &Task::finished, this, [this, task](Task::State state) {
-        if (state == Task::State::Failed)
+    // Its page says it is computing from the start (and shown, so the wait is visible).
+    page->setComputing(task->title());
+    if (m_plots)
+        m_plots->setCurrentWidget(page);
+    connect(task, &Task::finished, this, [this, task, page](Task::State state) {
+        if (state == Task::State::Failed) {
             m_status->setText(tr("Evaluation failed: %1").arg(task->errorMessage()));
+            page->setStopped(tr("Failed: %1.").arg(task->errorMessage()));
+        } else if (state == Task::State::Canceled) {
+            page->setStopped(tr("Canceled."));
+        }
         updateActions();
     });
     m_tasks.append(task);
@@ -518,6 +575,7 @@ void ModelsPanel::onDocumentReset()
     // one is reported now rather than when it is first drawn.
     m_objective->clearRuns();
     m_evaluation->clear();
+    m_realismPage->clear();
     const Project &project = m_context->document()->project();
     QStringList failed;
     for (const QString &kind : ModelKinds::ids()) {

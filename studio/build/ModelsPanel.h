@@ -40,6 +40,7 @@ class ElidedLabel;
 class EvaluationChart;
 class StudioContext;
 class ObjectivePlot;
+class ResultsPage;
 class TrajectoryView;
 
 class ModelsPanel : public QWidget
@@ -50,7 +51,8 @@ public:
     ~ModelsPanel() override;
 
     // Connects the panel to the context's document, task runner, model store and current frame,
-    // and adds the Trajectory, Training and Evaluation plots as tabs of `plots` (the Plots dock).
+    // and adds the Trajectory, Training, Evaluation and Realism plots as tabs of `plots` (the Plots
+    // dock).
     void attach(StudioContext *context, QTabWidget *plots);
     // The Build AAM button becomes another trigger of `buildAam` (the Faces menu's action).
     void setBuildAamAction(QAction *buildAam);
@@ -69,11 +71,15 @@ public:
     QComboBox *brandCovariance() const { return m_brandCovariance; }
     QCheckBox *compensateVarianceCheck() const { return m_compensateVariance; }
     QCheckBox *contextStatesCheck() const { return m_contextStates; }
+    QCheckBox *paperModelsCheck() const { return m_paper; }
     QSpinBox *foldsSpin() const { return m_folds; }
     QSpinBox *parameterSpin() const { return m_parameter; }
     TrajectoryView *trajectoryView() const { return m_trajectory; }
     ObjectivePlot *objectivePlot() const { return m_objective; }
-    EvaluationChart *evaluationChart() const { return m_evaluation; }
+    // The k-fold evaluation's page and the realism report's, each a chart and its table.
+    ResultsPage *evaluationPage() const { return m_evaluation; }
+    ResultsPage *realismPage() const { return m_realismPage; }
+    EvaluationChart *evaluationChart() const;
     QTabWidget *plotTabs() const { return m_plots; }
     ElidedLabel *statusLabel() const { return m_status; }
 
@@ -99,12 +105,13 @@ private:
     // The folds, kinds and model options of the controls for an evaluation of `data` (set to
     // trainingData()), or nothing when one cannot start (the reason shown in the panel).
     std::optional<EvaluationOptions> evaluationToStart(std::vector<LabelledSequence> *data);
-    void showEvaluation(const QString &status); // a finished evaluation's chart and status
-    void watchEvaluation(Task *task);
+    void showEvaluation(ResultsPage *page, const QString &status); // a finished evaluation's page and status
+    void watchEvaluation(Task *task, ResultsPage *page);
     void onDocumentReset();
     void onLocationChanged();
     void refreshTrajectory();
     void updateActions();
+    void applyPaperPreset(bool on);
 
     QTreeWidget *m_list;
     QPushButton *m_buildAam;
@@ -118,6 +125,12 @@ private:
     QComboBox *m_brandCovariance;
     QCheckBox *m_compensateVariance;
     QCheckBox *m_contextStates;
+    QCheckBox *m_paper;
+    struct Settings
+    {
+        bool compensate = true, context = true;
+        int covariance = 0, optimizer = 0;
+    } m_beforePaper; // the controls' settings before the paper preset was ticked
     QSpinBox *m_folds;
     QSpinBox *m_parameter;
     ElidedLabel *m_status; // one line under the buttons, the whole text as tooltip
@@ -126,7 +139,8 @@ private:
     QPointer<QTabWidget> m_plots;
     TrajectoryView *m_trajectory = nullptr;
     ObjectivePlot *m_objective = nullptr;
-    EvaluationChart *m_evaluation = nullptr;
+    ResultsPage *m_evaluation = nullptr;
+    ResultsPage *m_realismPage = nullptr;
     QWidget *m_trajectoryPage = nullptr;
 
     QList<QPointer<Task>> m_tasks;

@@ -47,9 +47,9 @@ StudyResultsView::StudyResultsView(QWidget *parent)
     m_pairs->setHorizontalHeaderLabels({tr("Method A"), tr("A judged real"), tr("Can't decide"),
                                         tr("B judged real"), tr("Method B"), tr("p (sign test)"),
                                         tr("p (Holm)")});
-    m_ranking->setColumnCount(5);
-    m_ranking->setHorizontalHeaderLabels(
-        {tr("Method"), tr("Bradley–Terry strength"), tr("Judged real"), tr("Not judged real"), tr("Can't decide")});
+    m_ranking->setColumnCount(6);
+    m_ranking->setHorizontalHeaderLabels({tr("Method"), tr("Bradley–Terry strength"), tr("Judged real"),
+                                          tr("Not judged real"), tr("Can't decide"), tr("Judged real (95 % CI)")});
     for (QTableWidget *table : {m_pairs, m_ranking}) {
         table->verticalHeader()->setVisible(true);
         table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -100,6 +100,12 @@ void StudyResultsView::setStudy(const ForcedChoiceStudy *study, const QString &e
         m_ranking->setItem(r, 2, cell(QString::number(s.wins), true));
         m_ranking->setItem(r, 3, cell(QString::number(s.losses), true));
         m_ranking->setItem(r, 4, cell(QString::number(s.undecided), true));
+        m_ranking->setItem(r, 5, cell(s.wins + s.losses == 0 ? QStringLiteral("–")
+                                                              : tr("%1 % (%2–%3 %)")
+                                                                    .arg(100 * s.realShare, 0, 'f', 0)
+                                                                    .arg(100 * s.realShareLow, 0, 'f', 0)
+                                                                    .arg(100 * s.realShareHigh, 0, 'f', 0),
+                                      true));
     }
     m_summary->setText(tr("Participants: %1, answers: %2 (%3 still open). %4")
                            .arg(tally.participants)
@@ -108,6 +114,12 @@ void StudyResultsView::setStudy(const ForcedChoiceStudy *study, const QString &e
                            .arg(tally.answered > 0 ? QString::fromStdString(tally.summary(0.05, [](const std::string &method) {
                                               return ModelKinds::name(method).toStdString();
                                           })) : QString()));
+    if (tally.answered > 0 && tally.fewestDecided() < StudyTally::kFewAnswers)
+        m_summary->setText(m_summary->text() + QLatin1Char('\n')
+                           + tr("Few answers: a pair has only %1 decided (%2 or more are needed before a ranking "
+                                "says much); read the intervals, not the strengths.")
+                                 .arg(tally.fewestDecided())
+                                 .arg(StudyTally::kFewAnswers));
     m_pairsCsv = tally.pairsCsv();
     m_rankingCsv = tally.rankingCsv();
 }

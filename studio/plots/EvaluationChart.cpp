@@ -35,9 +35,7 @@
 
 namespace lipsync::studio {
 
-namespace {
-
-QString metricTitle(const std::string &metric)
+QString EvaluationChart::metricTitle(const std::string &metric)
 {
     if (metric == "l1") return EvaluationChart::tr("L1 error");
     if (metric == "rms") return EvaluationChart::tr("RMS error");
@@ -52,8 +50,6 @@ QString metricTitle(const std::string &metric)
     return QString::fromStdString(metric);
 }
 
-} // namespace
-
 struct EvaluationChart::Impl
 {
     vtkNew<vtkContextView> view;
@@ -62,6 +58,8 @@ struct EvaluationChart::Impl
     int models = 0;
     int metrics = 0;
     QStringList names;
+    std::vector<Bars> bars;
+    std::vector<std::string> metricIds;
 };
 
 EvaluationChart::EvaluationChart(QWidget *parent) : VtkWidget(parent), e(std::make_unique<Impl>())
@@ -90,12 +88,24 @@ int EvaluationChart::metricCount() const
     return e->metrics;
 }
 
+const std::vector<EvaluationChart::Bars> &EvaluationChart::bars() const
+{
+    return e->bars;
+}
+
+const std::vector<std::string> &EvaluationChart::metrics() const
+{
+    return e->metricIds;
+}
+
 void EvaluationChart::clear()
 {
     e->matrix->SetSize(vtkVector2i(0, 0));
     e->tables.clear();
     e->models = e->metrics = 0;
     e->names.clear();
+    e->bars.clear();
+    e->metricIds.clear();
     update();
 }
 
@@ -131,7 +141,7 @@ void EvaluationChart::draw(const std::vector<Bars> &bars, const std::vector<std:
     for (const Bars &b : bars)
         e->names.append(b.name);
     e->matrix->SetSize(vtkVector2i(2, (int(metrics.size()) + 1) / 2));
-    e->matrix->SetGutter(vtkVector2f(50.0f, 40.0f));
+    e->matrix->SetGutter(vtkVector2f(50.0f, 34.0f));
     for (size_t m = 0; m < metrics.size(); ++m) {
         const int rows = (int(metrics.size()) + 1) / 2;
         auto *chart = vtkChartXY::SafeDownCast(e->matrix->GetChart(vtkVector2i(int(m) % 2, rows - 1 - int(m) / 2)));
@@ -217,9 +227,12 @@ void EvaluationChart::draw(const std::vector<Bars> &bars, const std::vector<std:
         x->SetTitle("");
         vtkAxis *y = chart->GetAxis(vtkAxis::LEFT);
         y->SetTitle("");
-        // Small enough that four model names fit side by side in a docked chart, and the value
-        // axis gets more than its zero tick.
+        // Small enough that the value axis gets more than its zero tick.
         x->GetLabelProperties()->SetFontSize(9);
+        // No names under the bars: in a docked chart they run into each other ("SLDSHMM-mean").
+        // The bars' colours name them, as the table below the charts does (ResultsPage), and
+        // the bars keep the height the names would take.
+        x->SetLabelsVisible(false);
         y->GetLabelProperties()->SetFontSize(9);
         // Three value ticks (bottom, middle, top) whatever the height: VTK's automatic spacing
         // leaves only the zero tick in a docked chart, so the bars would have no scale.
@@ -232,6 +245,8 @@ void EvaluationChart::draw(const std::vector<Bars> &bars, const std::vector<std:
     }
     e->models = n;
     e->metrics = int(metrics.size());
+    e->bars = bars;
+    e->metricIds = metrics;
     update();
 }
 

@@ -37,13 +37,19 @@ public:
     // The models' names under their bars, in order.
     QStringList modelNames() const;
 
-private:
+    // What is drawn: a bar per method (its name and colour) with its metrics' means and 95 %
+    // intervals, and the metrics charted, in order (ResultsPage lists the same in a table).
     struct Bars
     {
         QString name;
         QColor colour;
         std::map<std::string, MetricSummary> metrics;
     };
+    const std::vector<Bars> &bars() const;
+    const std::vector<std::string> &metrics() const;
+    static QString metricTitle(const std::string &metric);
+
+private:
     void draw(const std::vector<Bars> &bars, const std::vector<std::string> &metrics);
     struct Impl;
     std::unique_ptr<Impl> e;

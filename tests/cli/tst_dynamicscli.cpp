@@ -15,6 +15,7 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
+#include <QMap>
 #include <QTest>
 
 #include <cmath>
@@ -196,6 +197,39 @@ private slots:
             QVERIFY(m.value("trainingSeconds").toDouble() >= 0);
         }
         QVERIFY(QFile::exists(csv));
+    }
+
+    // --paper: the paper's models exactly (docs/models.md §8). The DPDS by Algorithm 1 differs
+    // from the default's exact weighted solve; the baseline and Brand (diagonal) do not; an option
+    // that would change one of the preset's models is refused.
+    void evaluatesThePaperPreset()
+    {
+        auto l1 = [&](const QStringList &extra) {
+            QStringList args{"evaluate", "--features", m_features, "--labels", m_labels, "--folds", "4",
+                             "--kinds", "hmm,brand,dpds", "--json"};
+            const Run r = runLipsync(args + extra);
+            QMap<QString, double> out;
+            if (r.exitCode != 0) {
+                qWarning("%s", r.err.constData());
+                return out;
+            }
+            const QJsonObject models = QJsonDocument::fromJson(r.out).object().value("models").toObject();
+            for (const QString &kind : models.keys())
+                out[kind] = models.value(kind).toObject().value("l1").toObject().value("mean").toDouble();
+            return out;
+        };
+        const QMap<QString, double> plain = l1({});
+        const QMap<QString, double> paper = l1({"--paper"});
+        QCOMPARE(paper.size(), 3);
+        for (const QString &kind : paper.keys())
+            QVERIFY2(std::isfinite(paper[kind]) && paper[kind] > 0, qPrintable(kind));
+        QCOMPARE(paper["hmm"], plain["hmm"]);
+        QCOMPARE(paper["brand"], plain["brand"]);
+        QVERIFY(paper["dpds"] != plain["dpds"]);
+        const Run refused = runLipsync({"evaluate", "--features", m_features, "--labels", m_labels, "--paper",
+                                        "--compensate-variance"});
+        QCOMPARE(refused.exitCode, 2);
+        QVERIFY2(refused.err.contains("--paper cannot be combined with --compensate-variance"), refused.err.constData());
     }
 
     // --project DIR gives the same data as the folders: features from the project's CSVs, frame

@@ -9,7 +9,6 @@
 #include "app/DemoProject.h"
 #include "app/MainWindow.h"
 #include "app/ProjectFiles.h"
-#include "app/ElidedLabel.h"
 #include "build/ModelsPanel.h"
 #include "context/ErrorReporter.h"
 #include "context/ModelKinds.h"
@@ -24,8 +23,10 @@
 #include "eval/RealismReport.h"
 #include "plots/EvaluationChart.h"
 #include "plots/ObjectivePlot.h"
+#include "plots/ResultsPage.h"
 #include "plots/TrajectoryView.h"
 #include "tasks/TaskRunner.h"
+#include "widgets/ElidedLabel.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -37,6 +38,7 @@
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTabWidget>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTreeWidget>
@@ -98,7 +100,7 @@ private slots:
         QTabWidget plots;
         ModelsPanel panel;
         panel.attach(&context, &plots);
-        QCOMPARE(plots.count(), 3);
+        QCOMPARE(plots.count(), 4); // Trajectory, Training, Evaluation, Realism
         QVERIFY(panel.trainButton()->isEnabled());
         QVERIFY(!panel.buildAamButton()->isEnabled()); // no Faces menu to trigger
         for (const QString &kind : ModelKinds::ids())
@@ -170,6 +172,28 @@ private slots:
         QApplication::processEvents();
         QCOMPARE(m_panel->evaluateButton()->mapTo(m_panel, QPoint(0, 0)), before);
         m_panel->statusLabel()->clear();
+    }
+
+    // "Paper's models" holds every choice beyond the paper off while ticked (and trains so);
+    // unticked, the user's settings come back.
+    void paperPresetHoldsTheChoicesOff()
+    {
+        QCheckBox *paper = m_panel->paperModelsCheck();
+        QVERIFY(!paper->isChecked());
+        m_panel->compensateVarianceCheck()->setChecked(true);
+        m_panel->contextStatesCheck()->setChecked(true);
+        const int covariance = m_panel->brandCovariance()->currentIndex();
+        paper->setChecked(true);
+        QVERIFY(!m_panel->compensateVarianceCheck()->isChecked() && !m_panel->compensateVarianceCheck()->isEnabled());
+        QVERIFY(!m_panel->contextStatesCheck()->isChecked() && !m_panel->contextStatesCheck()->isEnabled());
+        QCOMPARE(m_panel->brandCovariance()->currentData().toInt(), int(BrandCovariance::Diagonal));
+        QCOMPARE(m_panel->dpdsOptimizer()->currentData().toString(), QStringLiteral("gradient"));
+        QVERIFY(!m_panel->brandCovariance()->isEnabled() && !m_panel->dpdsOptimizer()->isEnabled());
+        paper->setChecked(false);
+        QVERIFY(m_panel->compensateVarianceCheck()->isChecked() && m_panel->compensateVarianceCheck()->isEnabled());
+        QVERIFY(m_panel->contextStatesCheck()->isChecked());
+        QCOMPARE(m_panel->brandCovariance()->currentIndex(), covariance);
+        QVERIFY(m_panel->brandCovariance()->isEnabled());
     }
 
     void demoHasTrainingData()
@@ -268,7 +292,17 @@ private slots:
         QCOMPARE(evaluated.count(), 1);
         QCOMPARE(m_panel->evaluationChart()->modelCount(), 2);
         QCOMPARE(m_panel->evaluationChart()->metricCount(), 4);
-        QCOMPARE(m_panel->plotTabs()->currentWidget(), static_cast<QWidget *>(m_panel->evaluationChart()));
+        QCOMPARE(m_panel->plotTabs()->currentWidget(), static_cast<QWidget *>(m_panel->evaluationPage()));
+        // The values in the table below the charts, as drawn: a row per model, a column per metric.
+        const QTableWidget *table = m_panel->evaluationPage()->table();
+        QCOMPARE(table->rowCount(), 2);
+        QCOMPARE(table->columnCount(), 4);
+        const MetricSummary &l1 = m_panel->evaluationChart()->bars()[0].metrics.at("l1");
+        QVERIFY2(table->item(0, 0)->text().startsWith(QString::number(l1.mean, 'g', 4)), qPrintable(table->item(0, 0)->text()));
+        QVERIFY(table->item(0, 0)->text().contains(QStringLiteral("±")));
+        QVERIFY(table->item(0, 0)->toolTip().contains(QStringLiteral("5 folds")));
+        QVERIFY2(m_panel->evaluationPage()->stateText().startsWith(QStringLiteral("Evaluated 2 model")),
+                 qPrintable(m_panel->evaluationPage()->stateText()));
         // Figure 4 is on screen: the bar colours of both models are in the picture.
         const QImage image = m_panel->evaluationChart()->grab().toImage();
         if (qEnvironmentVariableIsSet("LIPSYNC_SCREENSHOT"))
@@ -289,13 +323,22 @@ private slots:
     {
         checkOnly({QStringLiteral("hmm")});
         QVERIFY(m_panel->realismButton()->isEnabled());
+        const int evaluated = m_panel->evaluationChart()->modelCount();
         QTest::mouseClick(m_panel->realismButton(), Qt::LeftButton);
         const QList<Task *> tasks = m_panel->runningTasks();
         QCOMPARE(tasks.size(), 1);
         QVERIFY(!m_panel->realismButton()->isEnabled());
+        // Its own page, shown and saying it is computing, while it runs.
+        QCOMPARE(m_panel->plotTabs()->currentWidget(), static_cast<QWidget *>(m_panel->realismPage()));
+        QVERIFY(m_panel->realismPage()->isComputing());
+        QVERIFY2(m_panel->realismPage()->stateText().startsWith(QStringLiteral("Computing")),
+                 qPrintable(m_panel->realismPage()->stateText()));
         QTest::mouseClick(m_panel->cancelButton(), Qt::LeftButton);
         waitIdle();
         QVERIFY(m_panel->realismButton()->isEnabled());
+        QVERIFY(!m_panel->realismPage()->isComputing());
+        QVERIFY(m_panel->realismPage()->stateText().startsWith(QStringLiteral("Canceled")));
+        QCOMPARE(m_panel->evaluationChart()->modelCount(), evaluated); // the k-fold result stays
 
         RealismResult result;
         result.sequences = 10;
@@ -307,12 +350,15 @@ private slots:
                 method.metrics[metric] = MetricSummary{{0.4, 0.6}, 0.5, 0.1};
             result.methods.push_back(method);
         }
-        m_panel->evaluationChart()->setRealism(result);
-        QCOMPARE(m_panel->evaluationChart()->modelCount(), 3);
-        QCOMPARE(m_panel->evaluationChart()->metricCount(), 4);
+        ResultsPage *page = m_panel->realismPage();
+        page->setRealism(result, QStringLiteral("test"));
+        QCOMPARE(page->chart()->modelCount(), 3);
+        QCOMPARE(page->chart()->metricCount(), 4);
+        QCOMPARE(page->table()->rowCount(), 3);
+        QCOMPARE(page->table()->item(1, 0)->text(), QStringLiteral("0.5 ± 0.1"));
         if (qEnvironmentVariableIsSet("LIPSYNC_REALISM_SCREENSHOT"))
-            m_panel->evaluationChart()->grab().toImage().save(qEnvironmentVariable("LIPSYNC_REALISM_SCREENSHOT"));
-        QCOMPARE(m_panel->evaluationChart()->modelNames(),
+            page->grab().toImage().save(qEnvironmentVariable("LIPSYNC_REALISM_SCREENSHOT"));
+        QCOMPARE(page->chart()->modelNames(),
                  (QStringList{QStringLiteral("tracked"), ModelKinds::name(QStringLiteral("brand")),
                               ModelKinds::name(QStringLiteral("hmm"))}));
     }

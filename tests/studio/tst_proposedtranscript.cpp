@@ -13,11 +13,11 @@
 #include "DemoWindow.h"
 
 #include "align/SphinxAligner.h"
-#include "app/ElidedLabel.h"
 #include "app/SequenceListModel.h"
 #include "app/TranscriptProposer.h"
 #include "context/SequenceMedia.h"
 #include "document/ProjectDocument.h"
+#include "widgets/ElidedLabel.h"
 
 #include <QAction>
 #include <QFont>

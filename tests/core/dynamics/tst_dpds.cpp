@@ -3,6 +3,7 @@
 
 #include "dynamics/DpdsModel.h"
 #include "dynamics/DpdsSolver.h"
+#include "dynamics/ModelFile.h"
 #include "dynamics/SldsModel.h"
 #include "tasks/Feedback.h"
 
@@ -170,6 +171,36 @@ private slots:
         const Eigen::MatrixXd Jw = omega.cwiseSqrt().asDiagonal() * J;
         const Eigen::VectorXd lstsq = Jw.completeOrthogonalDecomposition().solve(omega.cwiseSqrt().asDiagonal() * y);
         QVERIFY2(relativeError(theta, lstsq) < 1e-6, qPrintable(QString::number(relativeError(theta, lstsq))));
+    }
+
+    // The ridge the paper preset keeps (docs/models.md §8): at the training's tau it leaves every
+    // mu and nu the data determine where the ridge-free solve of those alone puts them; it only
+    // gives the rest (phones that start no sequence, phones with no transitions) a value.
+    void paperPresetRidgeIsNegligible()
+    {
+        const Problem p = makeProblem(2, 12, 40);
+        const int P = p.layout.states;
+        Eigen::MatrixXd G;
+        Eigen::VectorXd h;
+        dpds::normalEquations(p.layout, p.y, p.a).assemble(p.w, G, h);
+        std::vector<Eigen::Index> identified;
+        for (Eigen::Index i = 0; i < 2 * P; ++i)
+            if (G(i, i) > 0.0)
+                identified.push_back(i);
+        QVERIFY(identified.size() >= 8 && int(identified.size()) < 2 * P);
+        const Eigen::MatrixXd Gi = G(identified, identified);
+        const Eigen::LLT<Eigen::MatrixXd> exact(Gi);
+        QCOMPARE(exact.info(), Eigen::Success); // those alone are determined
+        const Eigen::VectorXd free = exact.solve(h(identified));
+        const double tau = 1e-8 * G.trace() / double(2 * P); // DpdsModel's ridge
+        const Eigen::VectorXd thetaBar = Eigen::VectorXd::Constant(2 * P, 5.0); // far from the data
+        const Eigen::VectorXd ridged = dpds::solveTheta(G, h, tau, thetaBar);
+        const double change = relativeError(ridged(identified), free);
+        qInfo("ridge at tau = %.3g: identified mu, nu move by %.3g (relative)", tau, change);
+        QVERIFY2(change < 1e-5, qPrintable(QString::number(change)));
+        for (Eigen::Index i = 0; i < 2 * P; ++i)
+            if (G(i, i) == 0.0)
+                QCOMPARE(ridged[i], 5.0); // the rest: the centre
     }
 
     void paperAlgorithmOneWithErrataFixedMatchesUnitWeights()
@@ -386,6 +417,39 @@ private slots:
         model.train(data, feedback);
         QVERIFY(model.a.allFinite() && model.sigma2.allFinite());
         QVERIFY(std::abs(model.a(6, 0) - truth.a(6, 0)) < 0.1);
+    }
+
+    // ModelOptions::paper()'s DPDS (Algorithm 1's unit weights, gradient ascent, ML start
+    // variances) trains to finite parameters near the truth; its variances are the plain
+    // ML ones, smaller than the MAP estimates of the default.
+    void paperPresetTrains()
+    {
+        std::mt19937 rng(14);
+        const DpdsTruth truth = randomDpdsTruth(rng, 2, 0.05);
+        const auto data = dpdsDataset(rng, truth, {0, 6, 21}, 30, 30);
+        DpdsOptions options = ModelOptions::paper().dpds;
+        QVERIFY(options.paperMode && !options.prior);
+        QCOMPARE(options.optimizer, DpdsOptions::Optimizer::GradientAscent);
+        options.maxIterations = 300;
+        DpdsModel paper(options);
+        Feedback feedback;
+        paper.train(data, feedback);
+        QVERIFY(paper.a.allFinite() && paper.mu.allFinite() && paper.nu.allFinite() && paper.sigma2.allFinite());
+        QVERIFY(std::abs(paper.a(6, 0) - truth.a(6, 0)) < 0.1);
+        // The start variances by ML: the mean squared deviation of the first frames from mu.
+        const int first = data[0].labels[0];
+        for (int k = 0; k < 2; ++k) {
+            double sum = 0;
+            int count = 0;
+            for (const auto &s : data)
+                if (s.labels[0] == first) {
+                    sum += std::pow(s.features(0, k) - paper.mu(first, k), 2);
+                    ++count;
+                }
+            QVERIFY(count > 0);
+            QVERIFY2(std::abs(paper.sigma2(first, k) - std::max(sum / count, 1e-12)) < 1e-9 * std::max(1.0, sum / count),
+                     qPrintable(QString::number(paper.sigma2(first, k)) + " vs " + QString::number(sum / count)));
+        }
     }
 
     // §7.8

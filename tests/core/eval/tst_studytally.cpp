@@ -246,6 +246,27 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(Error, StudyTally::fromCounts({"a", "b"}, {{0, 2, 1, 0, 1}}));
     }
 
+    // Each method's share judged real with its 95 % Wilson interval (by hand: 8 of 10 gives
+    // 0.490-0.943), and a caution while some pair has fewer than kFewAnswers decided answers.
+    void intervalsAndACautionOnFewAnswers()
+    {
+        const StudyTally few = StudyTally::fromCounts({"a", "b"}, {{0, 1, 5, 2, 2}});
+        QVERIFY(!few.caution().empty());
+        QCOMPARE(few.fewestDecided(), 7);
+        const StudyTally ten = StudyTally::fromCounts({"a", "b"}, {{0, 1, 8, 0, 2}});
+        QVERIFY(ten.caution().empty());
+        const MethodScore &a = ten.ranking[0];
+        QCOMPARE(a.method, 0);
+        QCOMPARE(a.realShare, 0.8);
+        QVERIFY(std::abs(a.realShareLow - 0.4902) < 1e-3 && std::abs(a.realShareHigh - 0.9433) < 1e-3);
+        const MethodScore &b = ten.ranking[1];
+        QVERIFY(std::abs(b.realShareLow - (1 - a.realShareHigh)) < 1e-12); // symmetric
+        QVERIFY(paperTable1().caution().empty()); // the paper's 80 sequences per pair
+        QVERIFY(ten.rankingCsv().find("real_share_low") != std::string::npos);
+        QVERIFY(std::abs(ten.toJson().value("ranking").toArray()[0].toObject().value("realShareHigh").toDouble()
+                         - a.realShareHigh) < 1e-12);
+    }
+
     void jsonHoldsTheTable()
     {
         const QJsonObject json = paperTable1().toJson();
