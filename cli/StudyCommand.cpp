@@ -15,6 +15,7 @@
 #include <QDir>
 #include <QFileInfo>
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 
@@ -65,20 +66,41 @@ int runCreate(const CommandLine &arguments)
     const int participants = arguments.integer("participants", 0);
     const quint64 seed = arguments.unsignedInteger("seed");
     const int repeats = arguments.integer("repeats", 1);
-    // In a project the utterances are its sequences (all of them unless --utterances names some).
+    // In a project the utterances are drawn from its sequences (a fifth, held out of the models'
+    // training as in the paper's study) unless --utterances names them; --no-hold-out shows the
+    // project's models as trained (on every sequence, unless --utterances names some).
+    const bool holdOut = !arguments.isSet("no-hold-out");
     std::optional<Project> project;
     std::vector<std::string> utterances = splitList(arguments.value("utterances"));
     if (arguments.isSet("project")) {
         project = Project::load(projectFolder(arguments).toStdString());
-        if (!arguments.isSet("utterances"))
-            for (const Sequence &s : project->sequences)
-                utterances.push_back(s.id);
+        if (!arguments.isSet("utterances")) {
+            std::vector<std::string> pool = ForcedChoiceStudy::candidateUtterances(*project);
+            if (pool.empty())
+                for (const Sequence &s : project->sequences)
+                    pool.push_back(s.id);
+            utterances = holdOut ? ForcedChoiceStudy::drawUtterances(
+                                       pool, ForcedChoiceStudy::defaultHeldOutCount(int(pool.size())), seed)
+                                 : pool;
+        }
         for (const std::string &u : utterances)
             if (!project->sequence(u))
                 throw Error("the project has no sequence '" + u + "'", project->manifestPath(),
                             "sequences");
+        const std::vector<std::string> trainable = ForcedChoiceStudy::candidateUtterances(*project);
+        const auto leftToTrain = std::count_if(trainable.begin(), trainable.end(), [&](const std::string &id) {
+            return std::find(utterances.begin(), utterances.end(), id) == utterances.end();
+        });
+        if (holdOut && !trainable.empty() && leftToTrain == 0)
+            throw Error("holding out every utterance leaves no sequence to train the models on (name fewer "
+                        "with --utterances, or --no-hold-out)",
+                        project->manifestPath(), "study");
     }
+    if (!holdOut)
+        std::fprintf(stderr, "lipsync study create: warning: the models are shown as trained, on these utterances "
+                             "too; the paper's study held its sequences out\n");
     ForcedChoiceStudy study(splitList(arguments.value("methods")), utterances, seed, repeats);
+    study.setHoldsOutUtterances(holdOut);
     for (int p = 1; p <= participants; ++p)
         study.addParticipant(QStringLiteral("P%1").arg(p, 2, 10, QLatin1Char('0')).toStdString());
     QString out = arguments.value("out");
@@ -167,7 +189,11 @@ const CommandRegistration createRegistration{
      {{QStringLiteral("methods"), QStringLiteral("M,M,..."), QStringLiteral("the methods compared: real,dpds,..."), {},
        CommandOption::Required},
       {QStringLiteral("utterances"), QStringLiteral("ID,ID,..."),
-       QStringLiteral("the utterances shown (default with --project: all the project's sequences)")},
+       QStringLiteral("the utterances shown (default with --project: a fifth of its sequences with features and "
+                      "phones, drawn with --seed)")},
+      {QStringLiteral("no-hold-out"), {},
+       QStringLiteral("show the project's models as trained (default: each retrained without the study's "
+                      "utterances, as in the paper)")},
       studyProjectOption(QStringLiteral("keep the study in this project")),
       {QStringLiteral("out"), QStringLiteral("FILE.json"), QStringLiteral("instead of --project: the study file to write")},
       {QStringLiteral("participants"), QStringLiteral("N"), QStringLiteral("participants P01..PN to add"),

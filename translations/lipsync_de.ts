@@ -1419,218 +1419,218 @@
 <context>
     <name>lipsync::studio::MainWindow</name>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="82"/>
+        <location filename="../studio/app/MainWindow.cpp" line="83"/>
         <source>Annotate</source>
         <translation>Annotieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="83"/>
+        <location filename="../studio/app/MainWindow.cpp" line="84"/>
         <source>Preview &amp;&amp; Compare</source>
         <translation>Vorschau &amp;&amp; Vergleich</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="85"/>
+        <location filename="../studio/app/MainWindow.cpp" line="86"/>
         <source>Live</source>
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="113"/>
+        <location filename="../studio/app/MainWindow.cpp" line="114"/>
         <source>Models could not be written into the project&apos;s folder.</source>
         <translation>Modelle konnten nicht in den Projektordner geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="116"/>
+        <location filename="../studio/app/MainWindow.cpp" line="117"/>
         <source>%1 was not applied: it would leave the project unsaveable (%2).</source>
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="142"/>
+        <location filename="../studio/app/MainWindow.cpp" line="143"/>
         <source>Playing without sound: %1.</source>
         <translation>Wiedergabe ohne Ton: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="148"/>
         <location filename="../studio/app/MainWindow.cpp" line="149"/>
+        <location filename="../studio/app/MainWindow.cpp" line="150"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="170"/>
+        <location filename="../studio/app/MainWindow.cpp" line="171"/>
         <source>Generated &amp;Face</source>
         <translation>Generiertes &amp;Gesicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="176"/>
+        <location filename="../studio/app/MainWindow.cpp" line="177"/>
         <source>&amp;Whole Face (Eyes Included)</source>
         <translation>&amp;Ganzes Gesicht (mit Augen)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="178"/>
+        <location filename="../studio/app/MainWindow.cpp" line="179"/>
         <source>Synthesise the whole modelled face; otherwise the recording&apos;s own eyes and upper face are kept</source>
         <translation>Das ganze modellierte Gesicht synthetisieren; sonst bleiben die Augen und das Obergesicht der Aufnahme erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="172"/>
+        <location filename="../studio/app/MainWindow.cpp" line="173"/>
         <source>&amp;Synthesised Skin</source>
         <translation>&amp;Synthetisierte Haut</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="174"/>
+        <location filename="../studio/app/MainWindow.cpp" line="175"/>
         <source>Paste the AAM&apos;s synthesis of the lower face, skin included; otherwise the recording&apos;s own lower face is moved to the generated shape and only the inside of the mouth is synthesised</source>
         <translation>Die AAM-Synthese des unteren Gesichts samt Haut einsetzen; sonst wird das eigene untere Gesicht der Aufnahme in die erzeugte Form bewegt und nur das Mundinnere synthetisiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="180"/>
+        <location filename="../studio/app/MainWindow.cpp" line="181"/>
         <source>&amp;Detail from Training Images</source>
         <translation>&amp;Details aus Trainingsbildern</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="182"/>
+        <location filename="../studio/app/MainWindow.cpp" line="183"/>
         <source>Add the teeth, lip highlights and skin detail of the AAM&apos;s nearest training images to the model&apos;s smooth texture</source>
         <translation>Zähne, Glanzlichter der Lippen und Hautdetails der nächstgelegenen Trainingsbilder des AAM zur glatten Textur des Modells hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="184"/>
+        <location filename="../studio/app/MainWindow.cpp" line="185"/>
         <source>&amp;Match the Frame&apos;s Lighting</source>
         <translation>&amp;Beleuchtung an das Bild anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="201"/>
+        <location filename="../studio/app/MainWindow.cpp" line="202"/>
         <source>&amp;Close the Lips on /p b m/</source>
         <translation>&amp;Lippen bei /p b m/ schließen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="203"/>
+        <location filename="../studio/app/MainWindow.cpp" line="204"/>
         <source>Close the generated lips on the bilabials /p b m/, as speakers do; off: the model&apos;s trajectory as generated</source>
         <translation>Die erzeugten Lippen bei den Bilabialen /p b m/ schließen, wie Sprecher es tun; aus: die Trajektorie des Modells, wie sie erzeugt wurde</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="249"/>
+        <location filename="../studio/app/MainWindow.cpp" line="250"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="253"/>
+        <location filename="../studio/app/MainWindow.cpp" line="254"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="263"/>
+        <location filename="../studio/app/MainWindow.cpp" line="264"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="267"/>
+        <location filename="../studio/app/MainWindow.cpp" line="268"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="288"/>
+        <location filename="../studio/app/MainWindow.cpp" line="289"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="289"/>
+        <location filename="../studio/app/MainWindow.cpp" line="290"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="290"/>
+        <location filename="../studio/app/MainWindow.cpp" line="291"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="292"/>
+        <location filename="../studio/app/MainWindow.cpp" line="293"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="323"/>
+        <location filename="../studio/app/MainWindow.cpp" line="324"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="326"/>
+        <location filename="../studio/app/MainWindow.cpp" line="327"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="341"/>
+        <location filename="../studio/app/MainWindow.cpp" line="342"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="353"/>
+        <location filename="../studio/app/MainWindow.cpp" line="354"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="364"/>
+        <location filename="../studio/app/MainWindow.cpp" line="365"/>
         <source>&amp;Live: Speak and Watch the Face</source>
         <translation>&amp;Live: Sprechen und das Gesicht beobachten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="366"/>
+        <location filename="../studio/app/MainWindow.cpp" line="367"/>
         <source>Speak into the microphone and watch the face move</source>
         <translation>Ins Mikrofon sprechen und dem Gesicht beim Bewegen zusehen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="370"/>
+        <location filename="../studio/app/MainWindow.cpp" line="371"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="374"/>
+        <location filename="../studio/app/MainWindow.cpp" line="375"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="378"/>
+        <location filename="../studio/app/MainWindow.cpp" line="379"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="379"/>
+        <location filename="../studio/app/MainWindow.cpp" line="380"/>
         <source>&amp;User Guide</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="382"/>
+        <location filename="../studio/app/MainWindow.cpp" line="383"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="391"/>
+        <location filename="../studio/app/MainWindow.cpp" line="392"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="441"/>
+        <location filename="../studio/app/MainWindow.cpp" line="442"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="504"/>
+        <location filename="../studio/app/MainWindow.cpp" line="505"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="512"/>
+        <location filename="../studio/app/MainWindow.cpp" line="513"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="541"/>
+        <location filename="../studio/app/MainWindow.cpp" line="542"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="543"/>
+        <location filename="../studio/app/MainWindow.cpp" line="544"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="547"/>
+        <location filename="../studio/app/MainWindow.cpp" line="548"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1638,43 +1638,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="558"/>
+        <location filename="../studio/app/MainWindow.cpp" line="559"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="559"/>
+        <location filename="../studio/app/MainWindow.cpp" line="560"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="559"/>
+        <location filename="../studio/app/MainWindow.cpp" line="560"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="565"/>
+        <location filename="../studio/app/MainWindow.cpp" line="566"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="583"/>
+        <location filename="../studio/app/MainWindow.cpp" line="584"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="611"/>
-        <location filename="../studio/app/MainWindow.cpp" line="619"/>
+        <location filename="../studio/app/MainWindow.cpp" line="612"/>
+        <location filename="../studio/app/MainWindow.cpp" line="620"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="618"/>
+        <location filename="../studio/app/MainWindow.cpp" line="619"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="262"/>
+        <location filename="../studio/app/MainWindow.cpp" line="263"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -2591,22 +2591,22 @@
 <context>
     <name>lipsync::studio::ResultsPage</name>
     <message>
-        <location filename="../studio/plots/ResultsPage.cpp" line="59"/>
+        <location filename="../studio/plots/ResultsPage.cpp" line="62"/>
         <source>Computing: %1…</source>
         <translation>Berechnung: %1…</translation>
     </message>
     <message>
-        <location filename="../studio/plots/ResultsPage.cpp" line="60"/>
+        <location filename="../studio/plots/ResultsPage.cpp" line="63"/>
         <source>Computing: %1… (shown until then: %2)</source>
         <translation>Berechnung: %1… (bis dahin angezeigt: %2)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/ResultsPage.cpp" line="66"/>
+        <location filename="../studio/plots/ResultsPage.cpp" line="69"/>
         <source>%1 Shown: %2</source>
         <translation>%1 Angezeigt: %2</translation>
     </message>
     <message>
-        <location filename="../studio/plots/ResultsPage.cpp" line="111"/>
+        <location filename="../studio/plots/ResultsPage.cpp" line="114"/>
         <source>%1, %2: mean %3 over %4 folds, 95 % interval ± %5</source>
         <translation>%1, %2: Mittelwert %3 über %4 Teilmengen, 95-%-Intervall ± %5</translation>
     </message>
@@ -3049,44 +3049,69 @@
         <translation>Echt (das aufgenommene Video)</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="36"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="34"/>
+        <source>Train each model without these utterances (the paper&apos;s design)</source>
+        <translation>Jedes Modell ohne diese Äußerungen trainieren (das Design des Artikels)</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="37"/>
         <source>Set up blind study</source>
         <translation>Blindstudie einrichten</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="51"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="48"/>
+        <source>Each model is retrained, with the settings its file records, on the project&apos;s other sequences: viewers judge speech the models have not seen.</source>
+        <translation>Jedes Modell wird mit den in seiner Datei festgehaltenen Einstellungen auf den übrigen Sequenzen des Projekts neu trainiert: Die Zuschauer beurteilen Sprache, die die Modelle nicht gesehen haben.</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="58"/>
         <source>Methods to compare:</source>
         <translation>Zu vergleichende Methoden:</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="52"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="59"/>
         <source>Utterances:</source>
         <translation>Äußerungen:</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="53"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="60"/>
         <source>Each pair shown (× 2, sides swapped):</source>
         <translation>Jedes Paar gezeigt (× 2, Seiten vertauscht):</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="54"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="61"/>
         <source>Random seed:</source>
         <translation>Zufallsstartwert:</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="103"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="87"/>
         <source>Choose at least two methods (train models in the Models panel).</source>
         <translation>Mindestens zwei Methoden wählen (Modelle im Modelle-Bereich trainieren).</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="108"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="92"/>
         <source>No sequence has both features and phones yet.</source>
         <translation>Noch keine Sequenz hat sowohl Merkmale als auch Phone.</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudySetupDialog.cpp" line="132"/>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="97"/>
+        <source>Holding out every utterance leaves nothing to train the models on.</source>
+        <translation>Wenn alle Äußerungen zurückgehalten werden, bleibt nichts, um die Modelle zu trainieren.</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="123"/>
         <source>%1 pairs of methods, each shown %2 times with sides swapped: %3 trials per participant, in a fresh random order for each participant.</source>
         <translation>%1 Methodenpaare, jedes %2-mal mit vertauschten Seiten gezeigt: %3 Durchgänge pro Person, für jede Person in neuer zufälliger Reihenfolge.</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="130"/>
+        <source>The models are retrained without these utterances before the first trial.</source>
+        <translation>Die Modelle werden vor dem ersten Durchgang ohne diese Äußerungen neu trainiert.</translation>
+    </message>
+    <message>
+        <location filename="../studio/compare/StudySetupDialog.cpp" line="131"/>
+        <source>Warning: the models were trained on these utterances, so viewers judge speech the models have seen; the paper&apos;s study held its 80 sequences out.</source>
+        <translation>Achtung: Die Modelle wurden auf diesen Äußerungen trainiert, die Zuschauer beurteilen also Sprache, die die Modelle gesehen haben; die Studie des Artikels hielt ihre 80 Sequenzen zurück.</translation>
     </message>
 </context>
 <context>

@@ -23,6 +23,7 @@ public:
 
     std::string kind() const override { return m_inner->kind(); }
     const DynamicModel &inner() const { return *m_inner; }
+    const ContextTreeOptions &treeOptions() const { return m_options; }
     // For options of the inner kind (the SLDS's initialisation) set before train().
     DynamicModel &inner() { return *m_inner; }
     const ContextTree &tree() const { return m_tree; }

@@ -35,6 +35,7 @@ public:
     explicit DpdsModel(DpdsOptions options = {}) : m_options(options) {}
     std::string kind() const override { return modelKindId(ModelKind::Dpds); }
     DpdsOptions &options() { return m_options; }
+    const DpdsOptions &options() const { return m_options; }
 
     Eigen::MatrixXd generateMostLikely(const std::vector<int> &labels) const override;
     std::unique_ptr<StreamingGenerator> makeStreamer() const override;

@@ -45,6 +45,25 @@ ModelOptions ModelOptions::paper()
     return o;
 }
 
+ModelOptions retrainingOptions(const DynamicModel &trained)
+{
+    ModelOptions o;
+    const DynamicModel *model = &trained;
+    if (const auto *context = dynamic_cast<const ContextDependentModel *>(model)) {
+        o.contextStates = true;
+        o.context = context->treeOptions();
+        model = &context->inner();
+    }
+    o.compensateVariance = trained.compensatesVariance();
+    if (const auto *brand = dynamic_cast<const BrandModel *>(model))
+        o.brand = brand->options();
+    else if (const auto *dpds = dynamic_cast<const DpdsModel *>(model))
+        o.dpds = dpds->options();
+    else if (const auto *slds = dynamic_cast<const SldsModel *>(model))
+        o.slds = slds->options();
+    return o;
+}
+
 std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOptions &options)
 {
     std::unique_ptr<DynamicModel> model = newModelOfKind(kind, options);

@@ -39,6 +39,10 @@ struct ModelOptions
     static ModelOptions paper();
 };
 
+// The options that train a model like `trained` on other data: its kind's options as the model
+// holds them (what its file records), its context states and variance compensation.
+ModelOptions retrainingOptions(const DynamicModel &trained);
+
 std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOptions &options = {});
 // A kind by its id (ModelKind.h); throws lipsync::Error for an unknown id.
 std::unique_ptr<DynamicModel> createDynamicModel(const std::string &kind,

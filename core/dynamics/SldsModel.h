@@ -62,6 +62,7 @@ public:
     explicit SldsModel(SldsOptions options = {}) : m_options(options) {}
     std::string kind() const override { return modelKindId(ModelKind::Slds); }
     SldsOptions &options() { return m_options; }
+    const SldsOptions &options() const { return m_options; }
 
     Eigen::MatrixXd generateMostLikely(const std::vector<int> &labels) const override;
     std::unique_ptr<StreamingGenerator> makeStreamer() const override;

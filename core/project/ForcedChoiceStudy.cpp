@@ -1,5 +1,7 @@
 #include "project/ForcedChoiceStudy.h"
 
+#include "project/Project.h"
+
 #include "util/Error.h"
 
 #include <QFile>
@@ -192,6 +194,37 @@ void ForcedChoiceStudy::answer(int session, int trial, StudyChoice choice, doubl
     s.trials[size_t(trial)].responseSeconds = responseSeconds;
 }
 
+std::vector<std::string> ForcedChoiceStudy::candidateUtterances(const Project &project)
+{
+    std::vector<std::string> ids;
+    for (const Sequence &s : project.sequences)
+        if (s.features.rows() > 0 && !s.phones.isEmpty())
+            ids.push_back(s.id);
+    return ids;
+}
+
+std::vector<std::string> ForcedChoiceStudy::drawUtterances(std::vector<std::string> pool, int count,
+                                                           std::uint64_t seed)
+{
+    std::mt19937_64 rng(seed);
+    std::vector<size_t> order(pool.size());
+    for (size_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+    for (size_t i = order.size(); i > 1; --i)
+        std::swap(order[i - 1], order[size_t(rng() % i)]);
+    order.resize(std::min(order.size(), size_t(std::max(count, 0))));
+    std::sort(order.begin(), order.end());
+    std::vector<std::string> drawn;
+    for (size_t i : order)
+        drawn.push_back(pool[i]);
+    return drawn;
+}
+
+int ForcedChoiceStudy::defaultHeldOutCount(int candidates)
+{
+    return std::max(1, std::min(candidates / 5, candidates - 1));
+}
+
 QJsonObject ForcedChoiceStudy::toJson() const
 {
     auto strings = [](const std::vector<std::string> &list) {
@@ -224,6 +257,7 @@ QJsonObject ForcedChoiceStudy::toJson() const
                        {"utterances", strings(m_utterances)},
                        {"seed", QString::number(m_seed)},
                        {"repeats", m_repeats},
+                       {"holdOutUtterances", m_holdOut},
                        {"sessions", sessions}};
 }
 
@@ -251,6 +285,10 @@ ForcedChoiceStudy ForcedChoiceStudy::fromJson(const QJsonObject &json, const std
             throw Error(e.reason(), source, "methods");
         }
     }();
+    const QJsonValue holdOut = json.value("holdOutUtterances");
+    if (!holdOut.isUndefined() && !holdOut.isBool())
+        throw Error("must be true or false", source, "holdOutUtterances");
+    study.setHoldsOutUtterances(holdOut.toBool(false));
     auto methodIndex = [&](const QJsonValue &value, const std::string &field) {
         const auto it = std::find(methods.begin(), methods.end(), value.toString().toStdString());
         if (!value.isString() || it == methods.end())

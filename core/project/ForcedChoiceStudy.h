@@ -19,6 +19,8 @@
 
 namespace lipsync {
 
+class Project;
+
 enum class StudyChoice { Unanswered, Left, Right, Undecided };
 
 // "left" / "right" / "undecided" / "" (unanswered), as stored in JSON.
@@ -64,6 +66,20 @@ public:
     const std::vector<std::string> &utterances() const { return m_utterances; }
     std::uint64_t seed() const { return m_seed; }
     int repeats() const { return m_repeats; }
+    // Whether each model is shown trained without the study's utterances (the paper's design:
+    // viewers judge generations of speech the model has not seen). Studies made before this was
+    // recorded read as false: their models were the project's, trained on everything.
+    bool holdsOutUtterances() const { return m_holdOut; }
+    void setHoldsOutUtterances(bool holdOut) { m_holdOut = holdOut; }
+    // Utterances suited to a study of `project`'s models (sequences with features and phones),
+    // and a seeded draw of `count` of them, in the pool's order (Fisher–Yates with the raw
+    // std::mt19937_64, the same on every standard library).
+    static std::vector<std::string> candidateUtterances(const Project &project);
+    static std::vector<std::string> drawUtterances(std::vector<std::string> pool, int count, std::uint64_t seed);
+    // The default share of the candidates a study holds out: a fifth, at least one, leaving one
+    // to train on.
+    static int defaultHeldOutCount(int candidates);
+
     // m (m - 1) x repeats: every unordered pair twice (sides swapped) per repeat.
     int trialsPerSession() const;
 
@@ -90,6 +106,7 @@ private:
     std::vector<std::string> m_utterances;
     std::uint64_t m_seed = 0;
     int m_repeats = 1;
+    bool m_holdOut = false;
     std::vector<StudySession> m_sessions;
 };
 

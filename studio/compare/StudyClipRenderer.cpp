@@ -2,6 +2,7 @@
 
 #include "aam/AamModel.h"
 #include "aam/FaceDetector.h"
+#include "dynamics/LabelledFolder.h"
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
 #include "io/VideoReader.h"
@@ -68,12 +69,33 @@ std::shared_ptr<const DynamicModel> StudyClipRenderer::model(const std::string &
         // AAM by its identifier or (models trained in the studio) by its name in the project.
         const std::string path = m_project.resolve(ref->file);
         std::string recorded;
-        slot = loadModel(path, {}, &recorded);
+        std::shared_ptr<const DynamicModel> trained = loadModel(path, {}, &recorded);
         const ModelReference *aamRef = m_project.model("aam");
         if (!recorded.empty() && recorded != faces->identifier && (!aamRef || recorded != aamRef->name))
             throw Error("the model was trained for AAM '" + recorded + "', not for the project's AAM", path, "aam");
+        slot = m_project.study && m_project.study->holdsOutUtterances() ? withoutStudyUtterances(*trained)
+                                                                       : trained;
     }
     return slot;
+}
+
+std::shared_ptr<const DynamicModel> StudyClipRenderer::withoutStudyUtterances(const DynamicModel &trained) const
+{
+    // The paper's design: the model retrained, as its file records, on every other sequence, so
+    // that a trial shows it generating speech it has not seen. Training is deterministic, so
+    // every session of the study sees the same model.
+    const std::vector<std::string> &held = m_project.study->utterances();
+    std::vector<LabelledSequence> data;
+    for (LabelledSequence &s : loadProjectSequences(m_project))
+        if (std::find(held.begin(), held.end(), s.name) == held.end())
+            data.push_back(std::move(s));
+    if (data.empty())
+        throw Error("no sequence is left to train the " + trained.kind() + " model on without the study's utterances",
+                    m_project.manifestPath(), "study");
+    std::unique_ptr<DynamicModel> model = createDynamicModel(trained.kind(), retrainingOptions(trained));
+    Feedback quiet;
+    model->train(data, quiet);
+    return model;
 }
 
 std::shared_ptr<const FaceRenderer> StudyClipRenderer::faces(const Sequence &sequence, Feedback &feedback)

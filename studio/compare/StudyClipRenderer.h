@@ -6,6 +6,8 @@
 // composited into the recorded frames at the face's tracked pose — so both sides of a trial
 // show the same person, background and head motion, and differ only in the modelled face. The
 // lips close on /p b m/ (render/BilabialClosure) as in the studio's preview, unless turned off.
+// When the study holds its utterances out (the default), each model is first retrained without
+// them, so that viewers judge speech it has not seen.
 //
 // Thread-safe: render() runs in worker tasks; the AAM, the models and the per-utterance face renderers (the tracked poses)
 // are loaded or tracked once and shared.
@@ -54,6 +56,8 @@ public:
 private:
     std::shared_ptr<const AamModel> aam();
     std::shared_ptr<const DynamicModel> model(const std::string &kind);
+    // `trained` retrained without the study's utterances (ForcedChoiceStudy::holdsOutUtterances).
+    std::shared_ptr<const DynamicModel> withoutStudyUtterances(const DynamicModel &trained) const;
     std::shared_ptr<const FaceRenderer> faces(const Sequence &sequence, Feedback &feedback);
 
     const Project m_project;

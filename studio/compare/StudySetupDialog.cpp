@@ -5,6 +5,7 @@
 #include "project/Project.h"
 #include "util/Error.h"
 
+#include <QCheckBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
 #include <QLabel>
@@ -13,7 +14,6 @@
 #include <QSpinBox>
 
 #include <algorithm>
-#include <random>
 
 namespace lipsync::studio {
 
@@ -29,8 +29,9 @@ QString methodTitle(const std::string &method)
 } // namespace
 
 StudySetupDialog::StudySetupDialog(const Project &project, QWidget *parent)
-    : QDialog(parent), m_pool(candidateUtterances(project)), m_methods(new QListWidget(this)),
+    : QDialog(parent), m_pool(ForcedChoiceStudy::candidateUtterances(project)), m_methods(new QListWidget(this)),
       m_utterances(new QSpinBox(this)), m_repeats(new QSpinBox(this)), m_seed(new QSpinBox(this)),
+      m_holdOut(new QCheckBox(tr("Train each model without these utterances (the paper's design)"), this)),
       m_summary(new QLabel(this))
 {
     setWindowTitle(tr("Set up blind study"));
@@ -40,8 +41,14 @@ StudySetupDialog::StudySetupDialog(const Project &project, QWidget *parent)
         item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
         item->setCheckState(Qt::Checked);
     }
-    m_utterances->setRange(m_pool.empty() ? 0 : 1, int(m_pool.size()));
-    m_utterances->setValue(int(m_pool.size()));
+    // Held out by default, as the paper's 80 unseen sequences were: a fifth of the pool, the rest
+    // left to train on.
+    m_holdOut->setObjectName(QStringLiteral("holdOutUtterances"));
+    m_holdOut->setChecked(true);
+    m_holdOut->setToolTip(tr("Each model is retrained, with the settings its file records, on the project's other "
+                             "sequences: viewers judge speech the models have not seen."));
+    m_utterances->setRange(m_pool.empty() ? 0 : 1, std::max(1, int(m_pool.size()) - 1));
+    m_utterances->setValue(ForcedChoiceStudy::defaultHeldOutCount(int(m_pool.size())));
     m_repeats->setRange(1, 10);
     m_seed->setRange(0, 1'000'000'000);
     m_seed->setValue(2007);
@@ -52,6 +59,7 @@ StudySetupDialog::StudySetupDialog(const Project &project, QWidget *parent)
     form->addRow(tr("Utterances:"), m_utterances);
     form->addRow(tr("Each pair shown (× 2, sides swapped):"), m_repeats);
     form->addRow(tr("Random seed:"), m_seed);
+    form->addRow(m_holdOut);
     form->addRow(m_summary);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     m_ok = buttons->button(QDialogButtonBox::Ok);
@@ -61,35 +69,11 @@ StudySetupDialog::StudySetupDialog(const Project &project, QWidget *parent)
     connect(m_methods, &QListWidget::itemChanged, this, &StudySetupDialog::updateSummary);
     connect(m_utterances, &QSpinBox::valueChanged, this, &StudySetupDialog::updateSummary);
     connect(m_repeats, &QSpinBox::valueChanged, this, &StudySetupDialog::updateSummary);
+    connect(m_holdOut, &QCheckBox::toggled, this, [this](bool on) {
+        m_utterances->setMaximum(std::max(1, int(m_pool.size()) - (on ? 1 : 0)));
+        updateSummary();
+    });
     updateSummary();
-}
-
-std::vector<std::string> StudySetupDialog::candidateUtterances(const Project &project)
-{
-    std::vector<std::string> ids;
-    for (const Sequence &s : project.sequences)
-        if (s.features.rows() > 0 && !s.phones.isEmpty())
-            ids.push_back(s.id);
-    return ids;
-}
-
-std::vector<std::string> StudySetupDialog::drawUtterances(std::vector<std::string> pool, int count,
-                                                          std::uint64_t seed)
-{
-    // Fisher–Yates with the raw engine (reproducible on every standard library), then the first
-    // `count` in project order so the list reads like the project.
-    std::mt19937_64 rng(seed);
-    std::vector<size_t> order(pool.size());
-    for (size_t i = 0; i < order.size(); ++i)
-        order[i] = i;
-    for (size_t i = order.size(); i > 1; --i)
-        std::swap(order[i - 1], order[size_t(rng() % i)]);
-    order.resize(std::min(order.size(), size_t(std::max(count, 0))));
-    std::sort(order.begin(), order.end());
-    std::vector<std::string> drawn;
-    for (size_t i : order)
-        drawn.push_back(pool[i]);
-    return drawn;
 }
 
 std::optional<ForcedChoiceStudy> StudySetupDialog::study(QString *problem) const
@@ -108,9 +92,16 @@ std::optional<ForcedChoiceStudy> StudySetupDialog::study(QString *problem) const
             *problem = tr("No sequence has both features and phones yet.");
         return std::nullopt;
     }
+    if (m_holdOut->isChecked() && m_utterances->value() >= int(m_pool.size())) {
+        if (problem)
+            *problem = tr("Holding out every utterance leaves nothing to train the models on.");
+        return std::nullopt;
+    }
     try {
-        return ForcedChoiceStudy(methods, drawUtterances(m_pool, m_utterances->value(), std::uint64_t(m_seed->value())),
+        ForcedChoiceStudy design(methods, ForcedChoiceStudy::drawUtterances(m_pool, m_utterances->value(), std::uint64_t(m_seed->value())),
                                  std::uint64_t(m_seed->value()), m_repeats->value());
+        design.setHoldsOutUtterances(m_holdOut->isChecked());
+        return design;
     } catch (const Error &e) {
         if (problem)
             *problem = QString::fromStdString(e.reason());
@@ -133,7 +124,12 @@ void StudySetupDialog::updateSummary()
                           "participant, in a fresh random order for each participant.")
                            .arg(m * (m - 1) / 2)
                            .arg(2 * design->repeats())
-                           .arg(design->trialsPerSession()));
+                           .arg(design->trialsPerSession())
+                       + QLatin1Char(' ')
+                       + (design->holdsOutUtterances()
+                              ? tr("The models are retrained without these utterances before the first trial.")
+                              : tr("Warning: the models were trained on these utterances, so viewers judge speech "
+                                   "the models have seen; the paper's study held its 80 sequences out.")));
 }
 
 } // namespace lipsync::studio

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+class QCheckBox;
 class QLabel;
 class QListWidget;
 class QPushButton;
@@ -34,12 +35,9 @@ public:
     QSpinBox *utteranceCount() const { return m_utterances; }
     QSpinBox *repeatCount() const { return m_repeats; }
     QSpinBox *seed() const { return m_seed; }
+    QCheckBox *holdOutCheck() const { return m_holdOut; }
     // The design for the current choices, or nullopt (with the reason) when it is not valid.
     std::optional<ForcedChoiceStudy> study(QString *problem = nullptr) const;
-
-    // Utterances suited to a study (features and phones), and a seeded draw of `count` of them.
-    static std::vector<std::string> candidateUtterances(const Project &project);
-    static std::vector<std::string> drawUtterances(std::vector<std::string> pool, int count, std::uint64_t seed);
 
 private:
     void updateSummary();
@@ -49,6 +47,7 @@ private:
     QSpinBox *m_utterances;
     QSpinBox *m_repeats;
     QSpinBox *m_seed;
+    QCheckBox *m_holdOut;
     QLabel *m_summary;
     QPushButton *m_ok = nullptr;
 };

@@ -112,9 +112,16 @@ private slots:
         for (const char *id : {"bbaf2n", "bgin3a", "bwbg8n"})
             project.sequences.push_back(Sequence{id, std::string("media/") + id + ".mpg", 25.0, 75});
         project.save(dir.path().toStdString());
-        Run r = runLipsync({"study", "create", "--project", dir.path(), "--methods", "real,dpds,slds,brand,hmm",
-                     "--participants", "4", "--seed", "9", "--json"});
+        // By default a fifth of the sequences (at least one), held out of the models' training.
+        Run r = runLipsync({"study", "create", "--project", dir.path(), "--methods", "real,dpds", "--seed", "9"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
+        QCOMPARE(Project::load(dir.path().toStdString()).study->utterances().size(), size_t(1));
+        QVERIFY(Project::load(dir.path().toStdString()).study->holdsOutUtterances());
+        // --no-hold-out: every sequence, the project's models as trained, with a warning.
+        r = runLipsync({"study", "create", "--project", dir.path(), "--methods", "real,dpds,slds,brand,hmm",
+                        "--participants", "4", "--seed", "9", "--no-hold-out", "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY2(r.err.contains("warning: the models are shown as trained"), r.err.constData());
         QCOMPARE(parseJsonObject(r.out).value("trialsPerSession").toInt(), 20);
         const Project loaded = Project::load(dir.path().toStdString());
         QVERIFY(loaded.study);
@@ -122,6 +129,7 @@ private slots:
         QCOMPARE(int(study.sessions().size()), 4);
         QCOMPARE(study.sessions()[3].participant, std::string("P04"));
         QCOMPARE(study.utterances(), (std::vector<std::string>{"bbaf2n", "bgin3a", "bwbg8n"}));
+        QVERIFY(!study.holdsOutUtterances());
 
         r = runLipsync({"study", "tally", "--project", dir.path(), "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());

@@ -110,7 +110,18 @@ private slots:
             for (int i = 0; i < dialog->methodList()->count(); ++i)
                 methods << dialog->methodList()->item(i)->data(Qt::UserRole).toString();
             QCOMPARE(methods, QStringList({"real", "hmm"}));
+            // Held out of the models' training by default (the paper's design): a fifth of the
+            // ten, at most nine so that one is left to train on; unticked, all ten and a warning.
+            QVERIFY(dialog->holdOutCheck()->isChecked());
+            QCOMPARE(dialog->utteranceCount()->value(), 2);
+            QCOMPARE(dialog->utteranceCount()->maximum(), 9);
+            dialog->holdOutCheck()->setChecked(false);
             QCOMPARE(dialog->utteranceCount()->maximum(), 10);
+            bool warned = false;
+            for (QLabel *label : dialog->findChildren<QLabel *>())
+                warned = warned || label->text().contains(QStringLiteral("Warning: the models were trained on these"));
+            QVERIFY(warned);
+            dialog->holdOutCheck()->setChecked(true);
             dialog->utteranceCount()->setValue(2);
             dialog->seed()->setValue(7);
             dialog->accept();
@@ -119,6 +130,7 @@ private slots:
         QVERIFY(m_window->document()->project().study);
         QVERIFY(study().methods() == (std::vector<std::string>{"real", "hmm"}));
         QCOMPARE(study().utterances().size(), size_t(2));
+        QVERIFY(study().holdsOutUtterances()); // the participants see HMM-mean retrained on the other 8
         QCOMPARE(study().trialsPerSession(), 2); // one pair, shown twice with sides swapped
         QCOMPARE(m_window->undoStack()->count(), undoBefore + 1);
         QVERIFY(m_study->runAction()->isEnabled());

@@ -158,11 +158,35 @@ private slots:
         QCOMPARE(json.value("seed").toString(), QString("18364758544493064720"));
         const ForcedChoiceStudy back = ForcedChoiceStudy::fromJson(json, "study.json");
         QVERIFY(back == study);
+        // The hold-out flag survives; a file without it reads as not held out.
+        study.setHoldsOutUtterances(true);
+        QVERIFY(ForcedChoiceStudy::fromJson(study.toJson(), "study.json").holdsOutUtterances());
+        QJsonObject older = study.toJson();
+        older.remove("holdOutUtterances");
+        QVERIFY(!ForcedChoiceStudy::fromJson(older, "study.json").holdsOutUtterances());
 
         QTemporaryDir dir;
         const std::string path = dir.filePath("study.json").toStdString();
         study.save(path);
         QVERIFY(ForcedChoiceStudy::load(path) == study);
+    }
+
+    // The default draw: a fifth of the candidates, at least one, always one left to train on;
+    // seeded and in the pool's order.
+    void heldOutDraw()
+    {
+        QCOMPARE(ForcedChoiceStudy::defaultHeldOutCount(400), 80);
+        QCOMPARE(ForcedChoiceStudy::defaultHeldOutCount(10), 2);
+        QCOMPARE(ForcedChoiceStudy::defaultHeldOutCount(3), 1);
+        QCOMPARE(ForcedChoiceStudy::defaultHeldOutCount(2), 1);
+        const std::vector<std::string> pool = utterancePool(20);
+        const std::vector<std::string> a = ForcedChoiceStudy::drawUtterances(pool, 4, 7);
+        QCOMPARE(a.size(), size_t(4));
+        QVERIFY(a == ForcedChoiceStudy::drawUtterances(pool, 4, 7));
+        QVERIFY(a != ForcedChoiceStudy::drawUtterances(pool, 4, 8));
+        QVERIFY(std::is_sorted(a.begin(), a.end(), [&](const std::string &x, const std::string &y) {
+            return std::find(pool.begin(), pool.end(), x) < std::find(pool.begin(), pool.end(), y);
+        }));
     }
 
     void badJsonNamesFileAndField_data()
@@ -174,6 +198,7 @@ private slots:
         QTest::newRow("version") << "version" << QJsonValue(99) << "study.json: version:";
         QTest::newRow("methods") << "methods" << QJsonValue(QJsonArray{"real"}) << "study.json: methods:";
         QTest::newRow("seed") << "seed" << QJsonValue(12) << "study.json: seed:";
+        QTest::newRow("holdOutUtterances") << "holdOutUtterances" << QJsonValue("yes") << "study.json: holdOutUtterances:";
         QTest::newRow("left") << "left" << QJsonValue("nonsense")
                               << "study.json: sessions[0].trials[1].left: unknown method \"nonsense\"";
         QTest::newRow("choice") << "choice" << QJsonValue("maybe")
