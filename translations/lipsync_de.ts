@@ -1026,148 +1026,148 @@
 <context>
     <name>lipsync::studio::LiveController</name>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="99"/>
+        <location filename="../studio/live/LiveController.cpp" line="105"/>
         <source>Open a project to go live: the face is drawn with its appearance model and animated by its trained dynamic model.</source>
         <translation>Öffnen Sie ein Projekt, um live zu gehen: Das Gesicht wird mit seinem Erscheinungsmodell gezeichnet und von seinem trainierten dynamischen Modell bewegt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="103"/>
+        <location filename="../studio/live/LiveController.cpp" line="109"/>
         <source>The project has no appearance model. Build one (Faces ▸ Build AAM), then train a dynamic model in the Models panel.</source>
         <translation>Das Projekt hat kein Erscheinungsmodell. Erstellen Sie eines (Gesichter ▸ AAM erstellen) und trainieren Sie dann ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="108"/>
+        <location filename="../studio/live/LiveController.cpp" line="114"/>
         <source>The project&apos;s appearance model could not be loaded: %1</source>
         <translation>Das Erscheinungsmodell des Projekts konnte nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="110"/>
+        <location filename="../studio/live/LiveController.cpp" line="116"/>
         <source>No dynamic model is trained yet. Train one in the Models panel (DPDS follows live speech best), then start again.</source>
         <translation>Es ist noch kein dynamisches Modell trainiert. Trainieren Sie eines im Bereich „Modelle“ (DPDS folgt Live-Sprache am besten) und starten Sie dann erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="114"/>
+        <location filename="../studio/live/LiveController.cpp" line="120"/>
         <source>Choose a trained model.</source>
         <translation>Wählen Sie ein trainiertes Modell.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="116"/>
+        <location filename="../studio/live/LiveController.cpp" line="122"/>
         <source>The %1 model was trained with another appearance model: train it again in the Models panel.</source>
         <translation>Das Modell %1 wurde mit einem anderen Erscheinungsmodell trainiert: Trainieren Sie es im Bereich „Modelle“ erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="121"/>
+        <location filename="../studio/live/LiveController.cpp" line="127"/>
         <source>CMU Sphinx&apos;s US-English models, which recognise the phones when the timeline aligns with CMU Sphinx, were not found. Install the Debian package pocketsphinx-en-us, or choose the built-in model in the timeline&apos;s Model menu.</source>
         <translation>Die US-englischen Modelle von CMU Sphinx, die die Phone erkennen, wenn die Zeitleiste mit CMU Sphinx ausrichtet, wurden nicht gefunden. Installieren Sie das Debian-Paket pocketsphinx-en-us oder wählen Sie im Modell-Menü der Zeitleiste das eingebaute Modell.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="125"/>
+        <location filename="../studio/live/LiveController.cpp" line="131"/>
         <source>The studio&apos;s aligner model, which recognises the phones, was not found. Reinstall the studio or point LIPSYNC_ALIGNER_MODEL at an aligner model.</source>
         <translation>Das Aligner-Modell des Studios, das die Phone erkennt, wurde nicht gefunden. Installieren Sie das Studio neu oder lassen Sie LIPSYNC_ALIGNER_MODEL auf ein Aligner-Modell zeigen.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="128"/>
+        <location filename="../studio/live/LiveController.cpp" line="134"/>
         <source>The phone bigram for live recognition (aligner/grid-s1.bigram) was not found. Reinstall the studio.</source>
         <translation>Das Phon-Bigramm für die Live-Erkennung (aligner/grid-s1.bigram) wurde nicht gefunden. Installieren Sie das Studio neu.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="149"/>
+        <location filename="../studio/live/LiveController.cpp" line="155"/>
         <source>A live session is running already.</source>
         <translation>Es läuft bereits eine Live-Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="151"/>
+        <location filename="../studio/live/LiveController.cpp" line="157"/>
         <source>Wait until the video export has ended.</source>
         <translation>Warten Sie, bis der Videoexport beendet ist.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="155"/>
+        <location filename="../studio/live/LiveController.cpp" line="161"/>
         <source>Choose a microphone.</source>
         <translation>Wählen Sie ein Mikrofon.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="182"/>
+        <location filename="../studio/live/LiveController.cpp" line="190"/>
         <source>Prepare the live view</source>
         <translation>Live-Ansicht vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="233"/>
+        <location filename="../studio/live/LiveController.cpp" line="256"/>
         <source>No face was found in %1: the live face is drawn on grey.</source>
         <translation>In %1 wurde kein Gesicht gefunden: Das Live-Gesicht wird auf Grau gezeichnet.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="243"/>
+        <location filename="../studio/live/LiveController.cpp" line="266"/>
         <source>The live view could not be prepared: %1</source>
         <translation>Die Live-Ansicht konnte nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="293"/>
+        <location filename="../studio/live/LiveController.cpp" line="316"/>
         <source>The microphone could not be opened: %1.</source>
         <translation>Das Mikrofon konnte nicht geöffnet werden: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="377"/>
+        <location filename="../studio/live/LiveController.cpp" line="412"/>
         <source>The live session stopped: %1</source>
         <translation>Die Live-Sitzung wurde abgebrochen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="475"/>
-        <location filename="../studio/live/LiveController.cpp" line="536"/>
+        <location filename="../studio/live/LiveController.cpp" line="512"/>
+        <location filename="../studio/live/LiveController.cpp" line="573"/>
         <source>Nothing is recorded yet: start a session and stop it first.</source>
         <translation>Es ist noch nichts aufgenommen: Starten und beenden Sie zuerst eine Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="477"/>
+        <location filename="../studio/live/LiveController.cpp" line="514"/>
         <source>No project is open.</source>
         <translation>Es ist kein Projekt geöffnet.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="479"/>
+        <location filename="../studio/live/LiveController.cpp" line="516"/>
         <source>The bundled demo is read-only: save the project in a folder of your own first.</source>
         <translation>Das mitgelieferte Demo ist schreibgeschützt: Speichern Sie das Projekt zuerst in einem eigenen Ordner.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="481"/>
+        <location filename="../studio/live/LiveController.cpp" line="518"/>
         <source>The project&apos;s appearance model changed since the recording: its features no longer fit.</source>
         <translation>Das Erscheinungsmodell des Projekts hat sich seit der Aufnahme geändert: Ihre Merkmale passen nicht mehr dazu.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="500"/>
+        <location filename="../studio/live/LiveController.cpp" line="537"/>
         <source>The sound could not be written: %1</source>
         <translation>Der Ton konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="521"/>
+        <location filename="../studio/live/LiveController.cpp" line="558"/>
         <source>Save Live Session as %1</source>
         <translation>Live-Sitzung als %1 speichern</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="523"/>
+        <location filename="../studio/live/LiveController.cpp" line="560"/>
         <source>The project refused the new sequence (the status bar says why).</source>
         <translation>Das Projekt hat die neue Sequenz abgelehnt (die Statusleiste nennt den Grund).</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="538"/>
+        <location filename="../studio/live/LiveController.cpp" line="575"/>
         <source>Stop the session first.</source>
         <translation>Beenden Sie zuerst die Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="540"/>
+        <location filename="../studio/live/LiveController.cpp" line="577"/>
         <source>A video export is running already.</source>
         <translation>Es läuft bereits ein Videoexport.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="552"/>
+        <location filename="../studio/live/LiveController.cpp" line="589"/>
         <source>Export the live session to %1</source>
         <translation>Live-Sitzung nach %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="563"/>
+        <location filename="../studio/live/LiveController.cpp" line="600"/>
         <source>The live session was written to %1.</source>
         <translation>Die Live-Sitzung wurde nach %1 geschrieben.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="571"/>
+        <location filename="../studio/live/LiveController.cpp" line="608"/>
         <source>The video could not be written: %1</source>
         <translation>Das Video konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -1175,198 +1175,223 @@
 <context>
     <name>lipsync::studio::LiveView</name>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="38"/>
+        <location filename="../studio/live/LiveView.cpp" line="40"/>
         <source>Start</source>
         <translation>Start</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="39"/>
+        <location filename="../studio/live/LiveView.cpp" line="41"/>
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="39"/>
-        <location filename="../studio/live/LiveView.cpp" line="402"/>
+        <location filename="../studio/live/LiveView.cpp" line="41"/>
+        <location filename="../studio/live/LiveView.cpp" line="437"/>
         <source>Save as Sequence</source>
         <translation>Als Sequenz speichern</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="40"/>
+        <location filename="../studio/live/LiveView.cpp" line="42"/>
         <source>Export Video…</source>
         <translation>Video exportieren…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="50"/>
+        <location filename="../studio/live/LiveView.cpp" line="52"/>
         <source>Microphone:</source>
         <translation>Mikrofon:</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="52"/>
+        <location filename="../studio/live/LiveView.cpp" line="54"/>
         <source>Model:</source>
         <translation>Modell:</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="57"/>
+        <location filename="../studio/live/LiveView.cpp" line="59"/>
         <source>The microphone the face listens to</source>
         <translation>Das Mikrofon, dem das Gesicht zuhört</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="61"/>
+        <location filename="../studio/live/LiveView.cpp" line="63"/>
         <source>Draw the face over a camera&apos;s picture of you, wherever your face is in it, or into the still of the person (No camera)</source>
         <translation>Das Gesicht über das Kamerabild von Ihnen zeichnen, wo immer Ihr Gesicht darin ist, oder in das Standbild der Person (Keine Kamera)</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="64"/>
+        <location filename="../studio/live/LiveView.cpp" line="66"/>
         <source>The trained dynamic model that moves the face</source>
         <translation>Das trainierte dynamische Modell, das das Gesicht bewegt</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="67"/>
+        <location filename="../studio/live/LiveView.cpp" line="69"/>
         <source>Listen to the microphone and move the face as you speak</source>
         <translation>Dem Mikrofon zuhören und das Gesicht bewegen, während Sie sprechen</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="70"/>
+        <location filename="../studio/live/LiveView.cpp" line="72"/>
         <source>Stop listening; the session is kept for Save and Export</source>
         <translation>Nicht mehr zuhören; die Sitzung bleibt zum Speichern und Exportieren erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="72"/>
+        <location filename="../studio/live/LiveView.cpp" line="74"/>
         <source>Add the last session to the project as a sequence: its sound, generated faces and recognised phones</source>
         <translation>Die letzte Sitzung als Sequenz zum Projekt hinzufügen: ihren Ton, die erzeugten Gesichter und die erkannten Phone</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="75"/>
+        <location filename="../studio/live/LiveView.cpp" line="77"/>
         <source>Write the last session&apos;s faces with its sound as an MP4 video</source>
         <translation>Die Gesichter der letzten Sitzung mit ihrem Ton als MP4-Video schreiben</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="96"/>
+        <location filename="../studio/live/LiveView.cpp" line="98"/>
         <source>What recognises the phones: CMU Sphinx&apos;s US-English model when the timeline aligns with CMU Sphinx (its Model menu), else the HMMs of the studio&apos;s aligner model, trained on one speaker</source>
         <translation>Was die Phone erkennt: das US-englische Modell von CMU Sphinx, wenn die Zeitleiste mit CMU Sphinx ausrichtet (ihr Modell-Menü), sonst die HMMs des Ausrichtungsmodells des Studios, auf einen Sprecher trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="100"/>
+        <location filename="../studio/live/LiveView.cpp" line="102"/>
         <source>The phones recognised in the last seconds, the newest on the right</source>
         <translation>Die in den letzten Sekunden erkannten Phone, die neuesten rechts</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="106"/>
+        <location filename="../studio/live/LiveView.cpp" line="108"/>
         <source>Time from the sound to the frame that shows it, over the last %1 seconds</source>
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="185"/>
+        <location filename="../studio/live/LiveView.cpp" line="187"/>
         <source>No microphone found</source>
         <translation>Kein Mikrofon gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="193"/>
+        <location filename="../studio/live/LiveView.cpp" line="190"/>
+        <source>A recording…</source>
+        <translation>Eine Aufnahme…</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="192"/>
+        <source>An audio or video file, played aloud, drives the face as if spoken now</source>
+        <translation>Eine Audio- oder Videodatei, hörbar abgespielt, bewegt das Gesicht, als würde sie jetzt gesprochen</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="203"/>
         <source>No camera</source>
         <translation>Keine Kamera</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="194"/>
+        <location filename="../studio/live/LiveView.cpp" line="204"/>
         <source>The face is drawn into a still of the person</source>
         <translation>Das Gesicht wird in ein Standbild der Person gezeichnet</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="243"/>
+        <location filename="../studio/live/LiveView.cpp" line="253"/>
         <source>No trained model</source>
         <translation>Kein trainiertes Modell</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="276"/>
-        <source>No microphone was found. Connect one: the list above follows the devices as they come and go.</source>
-        <translation>Es wurde kein Mikrofon gefunden. Schließen Sie eines an: Die Liste oben folgt den Geräten, wie sie kommen und gehen.</translation>
+        <location filename="../studio/live/LiveView.cpp" line="286"/>
+        <source>No microphone was found. Connect one (the list above follows the devices as they come and go), or choose A recording… there.</source>
+        <translation>Es wurde kein Mikrofon gefunden. Schließen Sie eines an (die Liste oben folgt den Geräten, wie sie kommen und gehen), oder wählen Sie dort Eine Aufnahme….</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="285"/>
+        <location filename="../studio/live/LiveView.cpp" line="296"/>
         <source>Phones: CMU Sphinx US English (any speaker)</source>
         <translation>Phone: CMU Sphinx US-Englisch (jeder Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="286"/>
+        <location filename="../studio/live/LiveView.cpp" line="297"/>
         <source>Phones: the aligner model&apos;s HMMs</source>
         <translation>Phone: die HMMs des Ausrichtungsmodells</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="292"/>
+        <location filename="../studio/live/LiveView.cpp" line="303"/>
         <source>Preparing: loading the phone recogniser and finding the face in the current sequence…</source>
         <translation>Vorbereitung: Die Phon-Erkennung wird geladen und das Gesicht in der aktuellen Sequenz gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="295"/>
+        <location filename="../studio/live/LiveView.cpp" line="307"/>
+        <source>Playing %1: the face follows its sound.</source>
+        <translation>%1 wird abgespielt: Das Gesicht folgt ihrem Ton.</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="308"/>
         <source>Listening. Speak, and the face follows.</source>
         <translation>Hört zu. Sprechen Sie, und das Gesicht folgt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="298"/>
+        <location filename="../studio/live/LiveView.cpp" line="311"/>
         <source>Finishing the last frames…</source>
         <translation>Die letzten Bilder werden fertiggestellt…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="304"/>
+        <location filename="../studio/live/LiveView.cpp" line="317"/>
         <source>Writing the video…</source>
         <translation>Das Video wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="306"/>
+        <location filename="../studio/live/LiveView.cpp" line="319"/>
         <source>The last session (%1 s) is kept: save it as a sequence, export it as a video, or start again.</source>
         <translation>Die letzte Sitzung (%1 s) ist erhalten: Speichern Sie sie als Sequenz, exportieren Sie sie als Video oder starten Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="313"/>
+        <location filename="../studio/live/LiveView.cpp" line="326"/>
         <source>Press Start and speak: the face moves with your voice.</source>
         <translation>Drücken Sie „Start“ und sprechen Sie: Das Gesicht bewegt sich mit Ihrer Stimme.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="318"/>
+        <location filename="../studio/live/LiveView.cpp" line="331"/>
         <source>This model&apos;s file predates Live&apos;s guess of phones in context, so its face waits for each phone to end, in pauses for seconds. Train it again for a face that follows at once.</source>
         <translation>Die Datei dieses Modells ist älter als Lives Schätzung der Phone im Kontext, daher wartet sein Gesicht auf das Ende jedes Phons, in Pausen sekundenlang. Trainieren Sie es neu, damit das Gesicht sofort folgt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="322"/>
+        <location filename="../studio/live/LiveView.cpp" line="335"/>
         <source>Only the first %1 minutes are kept for saving; the face went on moving after that.</source>
         <translation>Nur die ersten %1 Minuten bleiben zum Speichern erhalten; das Gesicht hat sich danach weiterbewegt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="342"/>
+        <location filename="../studio/live/LiveView.cpp" line="355"/>
         <source>Latency: %1 ms mean, %2 ms max</source>
         <translation>Latenz: %1 ms im Mittel, %2 ms maximal</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="345"/>
+        <location filename="../studio/live/LiveView.cpp" line="358"/>
         <source>Time from the sound to the frame that shows it, over the last %1 seconds; %2 ms of it the phone recogniser and the model wait for the sound that follows</source>
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden; %2 ms davon warten die Phon-Erkennung und das Modell auf den folgenden Ton</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="350"/>
+        <location filename="../studio/live/LiveView.cpp" line="363"/>
         <source>Latency: –</source>
         <translation>Latenz: –</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="352"/>
+        <location filename="../studio/live/LiveView.cpp" line="365"/>
         <source>%1 s, frame %2 at %3 fps</source>
         <translation>%1 s, Bild %2 bei %3 fps</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="403"/>
+        <location filename="../studio/live/LiveView.cpp" line="377"/>
+        <source>Live from a Recording</source>
+        <translation>Live aus einer Aufnahme</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="378"/>
+        <source>Audio and video (*.wav *.flac *.mp3 *.ogg *.m4a *.mpg *.mp4 *.mov *.avi *.mkv *.webm);;All files (*)</source>
+        <translation>Audio und Video (*.wav *.flac *.mp3 *.ogg *.m4a *.mpg *.mp4 *.mov *.avi *.mkv *.webm);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../studio/live/LiveView.cpp" line="438"/>
         <source>The session&apos;s sound is written into the project&apos;s folder, and the bundled demo is read-only. Save the project in a folder of your own first?</source>
         <translation>Der Ton der Sitzung wird in den Ordner des Projekts geschrieben, und das mitgelieferte Demo ist schreibgeschützt. Das Projekt zuerst in einem eigenen Ordner speichern?</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="412"/>
+        <location filename="../studio/live/LiveView.cpp" line="447"/>
         <source>The live session is sequence %1, at the end of the list.</source>
         <translation>Die Live-Sitzung ist jetzt die Sequenz %1 am Ende der Liste.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="419"/>
+        <location filename="../studio/live/LiveView.cpp" line="454"/>
         <source>Export Live Session</source>
         <translation>Live-Sitzung exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="421"/>
+        <location filename="../studio/live/LiveView.cpp" line="456"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>

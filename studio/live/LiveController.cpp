@@ -6,6 +6,7 @@
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "live/CameraFeed.h"
+#include "live/FileInput.h"
 #include "live/MicrophoneInput.h"
 
 #include "aam/AamModel.h"
@@ -16,6 +17,8 @@
 #include "align/SphinxAligner.h"
 #include "align/SphinxPhoneRecognizer.h"
 #include "dynamics/DynamicModel.h"
+#include "io/AudioDecoder.h"
+#include "io/MediaInfo.h"
 #include "io/WavWriter.h"
 #include "render/FaceRenderer.h"
 #include "render/VideoExporter.h"
@@ -35,11 +38,13 @@
 namespace lipsync::studio {
 
 LiveController::LiveController(StudioContext *context, QObject *parent)
-    : QObject(parent), m_context(context), m_microphone(new MicrophoneInput(this)),
+    : QObject(parent), m_context(context), m_microphone(new MicrophoneInput(this)), m_file(new FileInput(this)),
       m_camera(std::make_shared<CameraFeed>())
 {
     qRegisterMetaType<LiveFrames>();
     connect(m_microphone, &MicrophoneInput::captured, this, &LiveController::take);
+    connect(m_file, &FileInput::captured, this, &LiveController::take);
+    connect(m_file, &FileInput::ended, this, &LiveController::stop); // the recording has been said
     // Another project: its session and recording were the old one's (the old AAM's features).
     connect(context->document(), &ProjectDocument::documentReset, this, &LiveController::reset);
 }
@@ -47,6 +52,7 @@ LiveController::LiveController(StudioContext *context, QObject *parent)
 LiveController::~LiveController()
 {
     m_microphone->stop();
+    m_file->stop();
     ++m_epoch;
     if (m_prepareTask)
         m_prepareTask->cancel();
@@ -175,13 +181,15 @@ bool LiveController::start(const QString &kind, Input input, const QAudioDevice 
     std::shared_ptr<const AcousticModel> acoustic = m_acousticPath == acousticPath ? m_acoustic : nullptr;
     std::shared_ptr<const PhoneBigram> bigram = m_bigram;
     const std::string bigramPath = shippedPhoneBigramPath();
+    const std::string soundFile = input == Input::File ? m_inputPath.toStdString() : std::string();
+    m_fileSound.reset();
 
     setState(State::Preparing);
     QPointer<LiveController> self(this);
     m_prepareTask = m_context->taskRunner()->start(
         tr("Prepare the live view"),
         [self, epoch, aam, model, renderer, sphinx, sphinxDir, acoustic, bigram, acousticPath, bigramPath,
-         background](Feedback &feedback) -> TaskRunner::Commit {
+         background, soundFile](Feedback &feedback) -> TaskRunner::Commit {
             LiveSetup setup;
             setup.aam = aam;
             setup.model = model;
@@ -216,7 +224,21 @@ bool LiveController::start(const QString &kind, Input input, const QAudioDevice 
             if (!setup.renderer)
                 setup.renderer = std::make_shared<FaceRenderer>(*aam);
             setup.options.stillBackground = true;
-            return [self, epoch, setup, acousticPath, background, tracked] {
+            std::shared_ptr<const std::vector<float>> sound;
+            if (!soundFile.empty()) {
+                // Refused before decoding when longer than a session keeps (bounded memory).
+                feedback.setStatus("decoding the recording's sound");
+                const MediaInfo info = MediaInfo::probe(soundFile);
+                if (!info.hasAudio)
+                    throw Error("the file has no sound", soundFile);
+                if (info.audioDuration > FileInput::kMaxSeconds)
+                    throw Error("the sound lasts " + std::to_string(int(info.audioDuration / 60)) +
+                                    " minutes; Live takes at most 30",
+                                soundFile);
+                sound = std::make_shared<const std::vector<float>>(
+                    AudioDecoder::decode(soundFile, setup.sampleRate).samples);
+            }
+            return [self, epoch, setup, acousticPath, background, tracked, sound] {
                 if (!self || self->m_epoch != epoch || self->m_state != State::Preparing)
                     return;
                 if (setup.acoustic) {
@@ -224,6 +246,7 @@ bool LiveController::start(const QString &kind, Input input, const QAudioDevice 
                     self->m_acousticPath = acousticPath;
                     self->m_bigram = setup.bigram;
                 }
+                self->m_fileSound = sound;
                 self->m_renderer = setup.renderer;
                 self->m_rendererAam = setup.aam;
                 // A clip whose face could not be tracked is not tried again for this AAM.
@@ -295,8 +318,19 @@ void LiveController::launch(LiveSetup setup)
         }
     }
     setState(State::Running);
+    if (m_input == Input::File && m_fileSound)
+        m_file->start(std::exchange(m_fileSound, {}), m_sampleRate, m_inputPath, m_audible);
     if (!m_pending.empty())
         take(std::exchange(m_pending, {}), LiveWorker::Clock::now());
+}
+
+bool LiveController::startFromFile(const QString &kind, const QString &path, QString *why, bool audible)
+{
+    if (m_state == State::Idle) {
+        m_inputPath = path;
+        m_audible = audible;
+    }
+    return start(kind, Input::File, {}, why);
 }
 
 void LiveController::feed(const std::vector<float> &samples)
@@ -369,6 +403,7 @@ void LiveController::onFrames(const LiveFrames &frames)
 void LiveController::onWorkerFailed(const QString &why)
 {
     m_microphone->stop();
+    m_file->stop();
     ++m_epoch;
     endThread(true);
     m_recording = Recording{};
@@ -392,6 +427,7 @@ void LiveController::stop()
         return;
     case State::Running:
         m_microphone->stop();
+        m_file->stop();
         setState(State::Finishing);
         QMetaObject::invokeMethod(m_worker, &LiveWorker::finish, Qt::QueuedConnection);
         return;
@@ -425,6 +461,7 @@ void LiveController::clearShown()
 void LiveController::reset()
 {
     m_microphone->stop();
+    m_file->stop();
     ++m_epoch;
     if (m_prepareTask)
         m_prepareTask->cancel();

@@ -42,6 +42,7 @@ class Task;
 namespace lipsync::studio {
 
 class CameraFeed;
+class FileInput;
 class MicrophoneInput;
 class StudioContext;
 
@@ -51,8 +52,9 @@ class LiveController : public QObject
 public:
     enum class State { Idle, Preparing, Running, Finishing };
     Q_ENUM(State)
-    // Where the sound comes from: a microphone, or feed() (tests, and files fed from code).
-    enum class Input { Microphone, Fed };
+    // Where the sound comes from: a microphone, a recording played at its own pace (startFromFile),
+    // or feed() (tests, and sound fed from code).
+    enum class Input { Microphone, File, Fed };
     static constexpr double kMaxRecordedSeconds = 30 * 60;
     // The latency read-out's window: the frames of the last seconds.
     static constexpr double kLatencyWindowSeconds = 5.0;
@@ -72,12 +74,17 @@ public:
     // Starts a session with the model of `kind` on `input` (`device` for the microphone).
     // False, with `why`, when it cannot start.
     bool start(const QString &kind, Input input, const QAudioDevice &device = {}, QString *why = nullptr);
+    // A session on the sound of the audio or video file `path`, played aloud (unless `audible` is
+    // false) and fed at its own pace; the session ends by itself when the sound does. The file is
+    // decoded while the session prepares: a bad or too long file fails it with a message naming it.
+    bool startFromFile(const QString &kind, const QString &path, QString *why = nullptr, bool audible = true);
     // Input::Fed: mono sound at sampleRate() as if captured now (kept until the session runs).
     void feed(const std::vector<float> &samples);
     // Ends the session: the last frames arrive, then the state is Idle again.
     void stop();
 
     State state() const { return m_state; }
+    Input input() const { return m_input; }
     bool isActive() const { return m_state != State::Idle; }
     // The phone recogniser's sample rate (what feed() takes).
     int sampleRate() const { return m_sampleRate; }
@@ -169,6 +176,10 @@ private:
     QPointer<Task> m_prepareTask;
     QPointer<Task> m_exportTask;
     MicrophoneInput *m_microphone;
+    FileInput *m_file;
+    QString m_inputPath;  // Input::File: the recording
+    bool m_audible = true; // Input::File: played aloud
+    std::shared_ptr<const std::vector<float>> m_fileSound; // Input::File: decoded while preparing
     QThread *m_thread = nullptr;
     LiveWorker *m_worker = nullptr; // lives on m_thread
     std::vector<float> m_pending;   // fed while preparing

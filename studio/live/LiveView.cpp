@@ -1,10 +1,11 @@
 #include "live/LiveView.h"
 
 #include "annotate/FrameView.h"
-#include "context/WritableProject.h"
+#include "context/ErrorReporter.h"
 #include "context/ModelKinds.h"
 #include "context/ModelStore.h"
 #include "context/StudioContext.h"
+#include "context/WritableProject.h"
 #include "document/ProjectDocument.h"
 #include "live/CameraFeed.h"
 #include "live/LiveController.h"
@@ -16,6 +17,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHideEvent>
 #include <QLabel>
@@ -183,6 +185,14 @@ void LiveView::fillMicrophones()
     }
     if (inputs.isEmpty())
         m_microphones->addItem(tr("No microphone found"));
+    // A recording instead of the voice: chosen when Start is pressed.
+    m_microphones->insertSeparator(m_microphones->count());
+    m_microphones->addItem(tr("A recording…"), QByteArray(kFileInput));
+    m_microphones->setItemData(m_microphones->count() - 1,
+                               tr("An audio or video file, played aloud, drives the face as if spoken now"),
+                               Qt::ToolTipRole);
+    if (current == kFileInput)
+        m_microphones->setCurrentIndex(m_microphones->count() - 1);
 }
 
 void LiveView::fillCameras()
@@ -273,10 +283,11 @@ void LiveView::updateControls()
     QString problem = isVisible() ? m_controller->problem(chosenKind()) : QString();
     const bool hasMicrophone = !m_microphones->currentData().toByteArray().isEmpty();
     if (problem.isEmpty() && !hasMicrophone)
-        problem = tr("No microphone was found. Connect one: the list above follows the devices as they come and go.");
+        problem = tr("No microphone was found. Connect one (the list above follows the devices as they come and go), "
+                     "or choose A recording… there.");
     m_start->setEnabled(idle && !exporting && problem.isEmpty() && isVisible());
     m_stop->setEnabled(state == State::Preparing || state == State::Running);
-    m_microphones->setEnabled(idle && hasMicrophone);
+    m_microphones->setEnabled(idle); // a recording is always there to choose
     m_models->setEnabled(idle && !m_controller->trainedKinds().isEmpty());
     m_cameras->setEnabled(m_cameras->count() > 1);
     const bool recorded = idle && m_controller->hasRecording();
@@ -292,7 +303,9 @@ void LiveView::updateControls()
         message = tr("Preparing: loading the phone recogniser and finding the face in the current sequence…");
         break;
     case State::Running:
-        message = tr("Listening. Speak, and the face follows.");
+        message = m_controller->input() == LiveController::Input::File
+                      ? tr("Playing %1: the face follows its sound.").arg(m_playing)
+                      : tr("Listening. Speak, and the face follows.");
         break;
     case State::Finishing:
         message = tr("Finishing the last frames…");
@@ -358,9 +371,17 @@ void LiveView::showFrames()
 
 void LiveView::start()
 {
+    const QByteArray id = m_microphones->currentData().toByteArray();
+    if (id == kFileInput) {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Live from a Recording"), m_context->document()->exportFolder(),
+            tr("Audio and video (*.wav *.flac *.mp3 *.ogg *.m4a *.mpg *.mp4 *.mov *.avi *.mkv *.webm);;All files (*)"));
+        if (!path.isEmpty())
+            startWithFile(path, !ErrorReporter::isBatchMode());
+        return;
+    }
     m_lastProblem.clear();
     QAudioDevice device;
-    const QByteArray id = m_microphones->currentData().toByteArray();
     for (const QAudioDevice &d : QMediaDevices::audioInputs())
         if (d.id() == id)
             device = d;
@@ -370,6 +391,20 @@ void LiveView::start()
     if (!m_controller->start(chosenKind(), LiveController::Input::Microphone, device, &why))
         m_lastProblem = why;
     updateControls();
+}
+
+bool LiveView::startWithFile(const QString &path, bool audible)
+{
+    m_lastProblem.clear();
+    QString why;
+    m_face->setImage({});
+    m_strip->clear();
+    m_playing = QFileInfo(path).fileName();
+    const bool started = m_controller->startFromFile(chosenKind(), path, &why, audible);
+    if (!started)
+        m_lastProblem = why;
+    updateControls();
+    return started;
 }
 
 bool LiveView::startWithFedSound()

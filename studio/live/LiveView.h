@@ -57,6 +57,12 @@ public:
     // Starts a session of the chosen model on sound fed from code (LiveController::feed) instead of
     // a microphone: tests and demonstrations drive the same pipeline. False (and said) if it cannot.
     bool startWithFedSound();
+    // Starts a session of the chosen model on the sound of the audio or video file `path`, played
+    // aloud unless `audible` is false (what Start does with "A recording…" chosen, after asking
+    // for the file). False (and said) if it cannot.
+    bool startWithFile(const QString &path, bool audible = true);
+    // The microphone list's entry for a recording instead of a microphone.
+    static constexpr const char *kFileInput = "file";
 
 public slots:
     void start();
@@ -100,6 +106,7 @@ private:
     QLabel *m_progress;
     QLabel *m_message;
     QString m_lastProblem; // the latest failure, shown until the next start
+    QString m_playing;     // the recording a session from a file plays
     bool m_modelChosen = false; // the user picked a model: kept while it stays trained
 };
 

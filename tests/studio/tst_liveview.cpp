@@ -21,6 +21,7 @@
 #include "DemoWindow.h"
 
 #include "annotate/FrameView.h"
+#include "app/DemoProject.h"
 #include "app/MainWindow.h"
 #include "build/ModelsPanel.h"
 #include "context/ModelKinds.h"
@@ -237,6 +238,42 @@ private slots:
                 QTest::qWait(200);
             }
         }
+    }
+
+    // "A recording…" in the microphone list: a file's sound drives the face at its own pace, and
+    // the session ends by itself when the sound does, its recording kept like a spoken one.
+    void playsARecording()
+    {
+        QComboBox *inputs = live()->microphoneCombo();
+        QVERIFY(inputs->isEnabled());
+        const int file = inputs->findData(QByteArray(LiveView::kFileInput));
+        QVERIFY(file >= 0);
+        inputs->setCurrentIndex(file);
+        QVERIFY(live()->startButton()->isEnabled());
+        const QString clip = QDir(DemoProject::locate()).filePath(QStringLiteral("media/pbav2n.mpg"));
+        QVERIFY(live()->startWithFile(clip, false));
+        QTRY_COMPARE_WITH_TIMEOUT(controller()->state(), LiveController::State::Running, 30000);
+        QCOMPARE(controller()->input(), LiveController::Input::File);
+        QVERIFY2(live()->messageLabel()->text().contains(QStringLiteral("pbav2n.mpg")) ||
+                     live()->face()->placeholderText().contains(QStringLiteral("pbav2n.mpg")),
+                 qPrintable(live()->face()->placeholderText()));
+        QTRY_COMPARE_WITH_TIMEOUT(controller()->state(), LiveController::State::Idle, 30000); // by itself
+        QCOMPARE(controller()->recordedFrames(), 74); // 2.98 s at 25 frames/s, as spoken
+        QVERIFY(controller()->hasRecording());
+        // A file without sound is refused with its name.
+        QTemporaryDir dir;
+        const QString silent = dir.filePath(QStringLiteral("silent.wav"));
+        QFile empty(silent);
+        QVERIFY(empty.open(QIODevice::WriteOnly));
+        empty.write("not a wav");
+        empty.close();
+        QSignalSpy failed(controller(), &LiveController::failed);
+        QVERIFY(live()->startWithFile(silent, false));
+        QTRY_COMPARE_WITH_TIMEOUT(failed.count(), 1, 30000);
+        QVERIFY2(failed.first().first().toString().contains(QStringLiteral("silent.wav")),
+                 qPrintable(failed.first().first().toString()));
+        QTRY_COMPARE(controller()->state(), LiveController::State::Idle);
+        inputs->setCurrentIndex(0);
     }
 
     void savesTheSessionAsASequence()
