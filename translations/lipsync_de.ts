@@ -1186,7 +1186,7 @@
     </message>
     <message>
         <location filename="../studio/live/LiveView.cpp" line="41"/>
-        <location filename="../studio/live/LiveView.cpp" line="437"/>
+        <location filename="../studio/live/LiveView.cpp" line="444"/>
         <source>Save as Sequence</source>
         <translation>Als Sequenz speichern</translation>
     </message>
@@ -1256,142 +1256,142 @@
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="187"/>
+        <location filename="../studio/live/LiveView.cpp" line="194"/>
         <source>No microphone found</source>
         <translation>Kein Mikrofon gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="190"/>
+        <location filename="../studio/live/LiveView.cpp" line="197"/>
         <source>A recording…</source>
         <translation>Eine Aufnahme…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="192"/>
+        <location filename="../studio/live/LiveView.cpp" line="199"/>
         <source>An audio or video file, played aloud, drives the face as if spoken now</source>
         <translation>Eine Audio- oder Videodatei, hörbar abgespielt, bewegt das Gesicht, als würde sie jetzt gesprochen</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="203"/>
+        <location filename="../studio/live/LiveView.cpp" line="210"/>
         <source>No camera</source>
         <translation>Keine Kamera</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="204"/>
+        <location filename="../studio/live/LiveView.cpp" line="211"/>
         <source>The face is drawn into a still of the person</source>
         <translation>Das Gesicht wird in ein Standbild der Person gezeichnet</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="253"/>
+        <location filename="../studio/live/LiveView.cpp" line="260"/>
         <source>No trained model</source>
         <translation>Kein trainiertes Modell</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="286"/>
+        <location filename="../studio/live/LiveView.cpp" line="293"/>
         <source>No microphone was found. Connect one (the list above follows the devices as they come and go), or choose A recording… there.</source>
         <translation>Es wurde kein Mikrofon gefunden. Schließen Sie eines an (die Liste oben folgt den Geräten, wie sie kommen und gehen), oder wählen Sie dort Eine Aufnahme….</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="296"/>
+        <location filename="../studio/live/LiveView.cpp" line="303"/>
         <source>Phones: CMU Sphinx US English (any speaker)</source>
         <translation>Phone: CMU Sphinx US-Englisch (jeder Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="297"/>
+        <location filename="../studio/live/LiveView.cpp" line="304"/>
         <source>Phones: the aligner model&apos;s HMMs</source>
         <translation>Phone: die HMMs des Ausrichtungsmodells</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="303"/>
+        <location filename="../studio/live/LiveView.cpp" line="310"/>
         <source>Preparing: loading the phone recogniser and finding the face in the current sequence…</source>
         <translation>Vorbereitung: Die Phon-Erkennung wird geladen und das Gesicht in der aktuellen Sequenz gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="307"/>
+        <location filename="../studio/live/LiveView.cpp" line="314"/>
         <source>Playing %1: the face follows its sound.</source>
         <translation>%1 wird abgespielt: Das Gesicht folgt ihrem Ton.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="308"/>
+        <location filename="../studio/live/LiveView.cpp" line="315"/>
         <source>Listening. Speak, and the face follows.</source>
         <translation>Hört zu. Sprechen Sie, und das Gesicht folgt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="311"/>
+        <location filename="../studio/live/LiveView.cpp" line="318"/>
         <source>Finishing the last frames…</source>
         <translation>Die letzten Bilder werden fertiggestellt…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="317"/>
+        <location filename="../studio/live/LiveView.cpp" line="324"/>
         <source>Writing the video…</source>
         <translation>Das Video wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="319"/>
+        <location filename="../studio/live/LiveView.cpp" line="326"/>
         <source>The last session (%1 s) is kept: save it as a sequence, export it as a video, or start again.</source>
         <translation>Die letzte Sitzung (%1 s) ist erhalten: Speichern Sie sie als Sequenz, exportieren Sie sie als Video oder starten Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="326"/>
+        <location filename="../studio/live/LiveView.cpp" line="333"/>
         <source>Press Start and speak: the face moves with your voice.</source>
         <translation>Drücken Sie „Start“ und sprechen Sie: Das Gesicht bewegt sich mit Ihrer Stimme.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="331"/>
+        <location filename="../studio/live/LiveView.cpp" line="338"/>
         <source>This model&apos;s file predates Live&apos;s guess of phones in context, so its face waits for each phone to end, in pauses for seconds. Train it again for a face that follows at once.</source>
         <translation>Die Datei dieses Modells ist älter als Lives Schätzung der Phone im Kontext, daher wartet sein Gesicht auf das Ende jedes Phons, in Pausen sekundenlang. Trainieren Sie es neu, damit das Gesicht sofort folgt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="335"/>
+        <location filename="../studio/live/LiveView.cpp" line="342"/>
         <source>Only the first %1 minutes are kept for saving; the face went on moving after that.</source>
         <translation>Nur die ersten %1 Minuten bleiben zum Speichern erhalten; das Gesicht hat sich danach weiterbewegt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="355"/>
+        <location filename="../studio/live/LiveView.cpp" line="362"/>
         <source>Latency: %1 ms mean, %2 ms max</source>
         <translation>Latenz: %1 ms im Mittel, %2 ms maximal</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="358"/>
+        <location filename="../studio/live/LiveView.cpp" line="365"/>
         <source>Time from the sound to the frame that shows it, over the last %1 seconds; %2 ms of it the phone recogniser and the model wait for the sound that follows</source>
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden; %2 ms davon warten die Phon-Erkennung und das Modell auf den folgenden Ton</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="363"/>
+        <location filename="../studio/live/LiveView.cpp" line="370"/>
         <source>Latency: –</source>
         <translation>Latenz: –</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="365"/>
+        <location filename="../studio/live/LiveView.cpp" line="372"/>
         <source>%1 s, frame %2 at %3 fps</source>
         <translation>%1 s, Bild %2 bei %3 fps</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="377"/>
+        <location filename="../studio/live/LiveView.cpp" line="384"/>
         <source>Live from a Recording</source>
         <translation>Live aus einer Aufnahme</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="378"/>
+        <location filename="../studio/live/LiveView.cpp" line="385"/>
         <source>Audio and video (*.wav *.flac *.mp3 *.ogg *.m4a *.mpg *.mp4 *.mov *.avi *.mkv *.webm);;All files (*)</source>
         <translation>Audio und Video (*.wav *.flac *.mp3 *.ogg *.m4a *.mpg *.mp4 *.mov *.avi *.mkv *.webm);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="438"/>
+        <location filename="../studio/live/LiveView.cpp" line="445"/>
         <source>The session&apos;s sound is written into the project&apos;s folder, and the bundled demo is read-only. Save the project in a folder of your own first?</source>
         <translation>Der Ton der Sitzung wird in den Ordner des Projekts geschrieben, und das mitgelieferte Demo ist schreibgeschützt. Das Projekt zuerst in einem eigenen Ordner speichern?</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="447"/>
+        <location filename="../studio/live/LiveView.cpp" line="454"/>
         <source>The live session is sequence %1, at the end of the list.</source>
         <translation>Die Live-Sitzung ist jetzt die Sequenz %1 am Ende der Liste.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="454"/>
+        <location filename="../studio/live/LiveView.cpp" line="461"/>
         <source>Export Live Session</source>
         <translation>Live-Sitzung exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="456"/>
+        <location filename="../studio/live/LiveView.cpp" line="463"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
@@ -2884,33 +2884,33 @@
 <context>
     <name>lipsync::studio::StudyController</name>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="22"/>
+        <location filename="../studio/compare/StudyController.cpp" line="24"/>
         <source>&amp;Study</source>
         <translation>&amp;Studie</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="23"/>
+        <location filename="../studio/compare/StudyController.cpp" line="25"/>
         <source>&amp;Set Up Study…</source>
         <translation>Studie &amp;einrichten …</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="23"/>
+        <location filename="../studio/compare/StudyController.cpp" line="25"/>
         <source>&amp;Run Participant…</source>
         <translation>&amp;Teilnehmende Person starten …</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="24"/>
+        <location filename="../studio/compare/StudyController.cpp" line="26"/>
         <source>Study &amp;Results</source>
         <translation>Studien&amp;ergebnisse</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="81"/>
-        <location filename="../studio/compare/StudyController.cpp" line="92"/>
+        <location filename="../studio/compare/StudyController.cpp" line="83"/>
+        <location filename="../studio/compare/StudyController.cpp" line="94"/>
         <source>Set up study</source>
         <translation>Studie einrichten</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/compare/StudyController.cpp" line="82"/>
+        <location filename="../studio/compare/StudyController.cpp" line="84"/>
         <source>The current study has %n answer(s). Replace it with a new study? (Edit ▸ Undo brings it back.)</source>
         <translation>
             <numerusform>Die aktuelle Studie hat %n Antwort(en). Durch eine neue Studie ersetzen? (Bearbeiten ▸ Rückgängig holt sie zurück.)</numerusform>
@@ -2918,40 +2918,40 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="103"/>
-        <location filename="../studio/compare/StudyController.cpp" line="117"/>
-        <location filename="../studio/compare/StudyController.cpp" line="133"/>
-        <location filename="../studio/compare/StudyController.cpp" line="161"/>
+        <location filename="../studio/compare/StudyController.cpp" line="105"/>
+        <location filename="../studio/compare/StudyController.cpp" line="119"/>
+        <location filename="../studio/compare/StudyController.cpp" line="135"/>
+        <location filename="../studio/compare/StudyController.cpp" line="164"/>
         <source>Run participant</source>
         <translation>Teilnehmende Person starten</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="104"/>
+        <location filename="../studio/compare/StudyController.cpp" line="106"/>
         <source>The project must be saved with the study before a participant starts (every answer is saved at once). Save now?</source>
         <translation>Das Projekt muss mit der Studie gespeichert sein, bevor eine Person beginnt (jede Antwort wird sofort gespeichert). Jetzt speichern?</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="117"/>
+        <location filename="../studio/compare/StudyController.cpp" line="119"/>
         <source>The project has no study yet.</source>
         <translation>Das Projekt hat noch keine Studie.</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="150"/>
+        <location filename="../studio/compare/StudyController.cpp" line="152"/>
         <source>New participant: %1</source>
         <translation>Neue teilnehmende Person: %1</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="154"/>
+        <location filename="../studio/compare/StudyController.cpp" line="156"/>
         <source>Continue %1 (%2 of %3 answered)</source>
         <translation>%1 fortsetzen (%2 von %3 beantwortet)</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="161"/>
+        <location filename="../studio/compare/StudyController.cpp" line="165"/>
         <source>Participant:</source>
         <translation>Teilnehmende Person:</translation>
     </message>
     <message>
-        <location filename="../studio/compare/StudyController.cpp" line="171"/>
+        <location filename="../studio/compare/StudyController.cpp" line="177"/>
         <source>Study results</source>
         <translation>Studienergebnisse</translation>
     </message>

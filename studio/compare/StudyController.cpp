@@ -16,6 +16,8 @@
 #include <QMessageBox>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace lipsync::studio {
 
 StudyController::StudyController(StudioContext *context, std::function<bool()> saveProject, QWidget *window)
@@ -157,11 +159,15 @@ void StudyController::runWithDialog()
                          .arg(s.trials.size());
             names << QString::fromStdString(s.participant);
         }
-    bool ok = false;
-    const QString choice = QInputDialog::getItem(m_window, tr("Run participant"), tr("Participant:"), items, 0,
-                                                 false, &ok);
-    if (ok)
-        startParticipant(names.value(items.indexOf(choice)));
+    // Wide enough that its title and the longest entry are read whole, in every language.
+    QInputDialog dialog(m_window);
+    dialog.setWindowTitle(tr("Run participant"));
+    dialog.setLabelText(tr("Participant:"));
+    dialog.setComboBoxItems(items);
+    dialog.setComboBoxEditable(false);
+    dialog.setMinimumWidth(std::max(420, dialog.fontMetrics().horizontalAdvance(items.join(QString())) / 2));
+    if (dialog.exec() == QDialog::Accepted)
+        startParticipant(names.value(items.indexOf(dialog.textValue())));
 }
 
 StudyResultsView *StudyController::showResults()

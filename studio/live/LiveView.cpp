@@ -55,7 +55,7 @@ LiveView::LiveView(StudioContext *context, std::function<bool()> saveProject, QW
     modelLabel->setBuddy(m_models);
     m_microphones->setObjectName(QStringLiteral("liveMicrophone"));
     m_microphones->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_microphones->setMinimumContentsLength(8);
+    m_microphones->setMinimumContentsLength(10);
     m_microphones->setToolTip(tr("The microphone the face listens to"));
     m_cameras->setObjectName(QStringLiteral("liveCamera"));
     m_cameras->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
@@ -126,6 +126,13 @@ LiveView::LiveView(StudioContext *context, std::function<bool()> saveProject, QW
     connect(m_export, &QPushButton::clicked, this, &LiveView::exportVideo);
     connect(m_models, &QComboBox::currentIndexChanged, this, &LiveView::updateControls);
     connect(m_microphones, &QComboBox::currentIndexChanged, this, &LiveView::updateControls);
+    // A narrow list shows the start of a long device name: the whole of it on hover.
+    for (QComboBox *list : {m_microphones, m_models, m_cameras}) {
+        const QString purpose = list->toolTip();
+        connect(list, &QComboBox::currentTextChanged, list, [list, purpose](const QString &text) {
+            list->setToolTip(text.isEmpty() ? purpose : QStringLiteral("%1\n%2").arg(text, purpose));
+        });
+    }
     connect(m_devices, &QMediaDevices::audioInputsChanged, this, [this] {
         fillMicrophones();
         updateControls();
