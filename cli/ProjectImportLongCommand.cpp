@@ -10,7 +10,9 @@
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
+#include <QDir>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonObject>
 
@@ -47,6 +49,26 @@ double positiveNumber(const CommandLine &a, const char *name)
     return v;
 }
 
+// The project in `folder`; a folder that does not exist yet, or is empty, gets a new empty project
+// (named after the folder) for the recording to go into. A folder holding other files but no
+// project is refused: those files are not ours to mix with.
+Project loadOrCreate(const QString &folder)
+{
+    const QDir dir(folder);
+    if (dir.exists(QString::fromLatin1(Project::kManifestName)))
+        return Project::load(folder.toStdString());
+    if (dir.exists() && !dir.isEmpty(QDir::AllEntries | QDir::NoDotAndDotDot))
+        throw Error("the folder holds files but no project (" + std::string(Project::kManifestName)
+                        + "): import into an empty or new folder, or make a project here with lipsync project create",
+                    folder.toStdString());
+    if (!QDir().mkpath(folder))
+        throw Error("cannot create the project folder", folder.toStdString());
+    Project project;
+    project.name = QFileInfo(QDir::cleanPath(dir.absolutePath())).fileName().toStdString();
+    project.saveAs(QDir(folder).absolutePath().toStdString());
+    return project;
+}
+
 int runImportLong(const CommandLine &a)
 {
     const QString projectFolder = a.positional(0);
@@ -58,7 +80,7 @@ int runImportLong(const CommandLine &a)
     if (options.split.longest < options.split.shortest)
         throw UsageError(QStringLiteral("--longest must be at least --shortest"));
     try {
-        Project project = Project::load(projectFolder.toStdString());
+        Project project = loadOrCreate(projectFolder);
         const SpeechAligner aligner(a, projectFolder);
         const Transcript transcript = readTranscript(a.value("transcript").toStdString());
         Feedback feedback;
@@ -106,7 +128,8 @@ const CommandRegistration registration{
                        "memory, a window at a time (subtitle cue times, if the transcript is .srt or .vtt, choose "
                        "the words of each window), cuts it at its pauses into utterances and adds each to the "
                        "project as a sequence of its own: a clip in PROJECT/clips (MP4 from a video, WAV from "
-                       "sound alone; the sound mono at 16 kHz) with its words and alignment. The project is saved."),
+                       "sound alone; the sound mono at 16 kHz) with its words and alignment. The project is saved; a "
+                       "new or empty folder becomes a new project."),
         {{QStringLiteral("transcript"), QStringLiteral("FILE"),
           QStringLiteral("the words spoken (.txt, .srt, .vtt, .lab, .align or a TextGrid words tier)"), {},
           CommandOption::Required},
@@ -118,7 +141,7 @@ const CommandRegistration registration{
          {QStringLiteral("longest"), QStringLiteral("S"),
           QStringLiteral("seconds after which the longest silence so far (or a word boundary) ends it"),
           QStringLiteral("12")}},
-        {{QStringLiteral("PROJECT"), QStringLiteral("the project folder")},
+        {{QStringLiteral("PROJECT"), QStringLiteral("the project folder (new or empty: a project is made there)")},
          {QStringLiteral("MEDIA"), QStringLiteral("the recording (any audio or video file)")}}}
         .add(SpeechAligner::options({}, false)),
     &runImportLong};

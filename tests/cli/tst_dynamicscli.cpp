@@ -4,6 +4,7 @@
 
 #include "../core/dynamics/SyntheticDynamics.h"
 
+#include "dynamics/ModelFile.h"
 #include "dynamics/PhoneLabels.h"
 #include "io/FeatureCsv.h"
 #include "project/Project.h"
@@ -197,6 +198,29 @@ private slots:
             QVERIFY(m.value("trainingSeconds").toDouble() >= 0);
         }
         QVERIFY(QFile::exists(csv));
+    }
+
+    // --exclude leaves sequences out of training (a hold-out): the model then differs from one
+    // trained on everything; a name that is not in the data is a usage error, not ignored.
+    void excludesSequences()
+    {
+        auto hmmMean = [&](const QStringList &extra) {
+            const QString out = m_dir.filePath(QStringLiteral("hmm-%1.json").arg(extra.size()));
+            const Run r = runLipsync(QStringList{"train", "--kind", "hmm", "--features", m_features, "--labels",
+                                                 m_labels, "--out", out} + extra);
+            if (r.exitCode != 0)
+                qWarning("%s", r.err.constData());
+            return r.exitCode == 0 ? loadModel(out.toStdString()) : nullptr;
+        };
+        const auto all = hmmMean({});
+        const auto held = hmmMean({"--exclude", "clip0,clip1,clip2"});
+        QVERIFY(all && held);
+        const std::vector<int> labels(30, PhoneSet::index("AA"));
+        QVERIFY((all->generateMostLikely(labels) - held->generateMostLikely(labels)).cwiseAbs().maxCoeff() > 1e-9);
+        const Run typo = runLipsync({"train", "--kind", "hmm", "--features", m_features, "--labels", m_labels, "--out",
+                                     m_dir.filePath(QStringLiteral("x.json")), "--exclude", "clip99"});
+        QCOMPARE(typo.exitCode, 2);
+        QVERIFY2(typo.err.contains("--exclude: no sequence 'clip99'"), typo.err.constData());
     }
 
     // --paper: the paper's models exactly (docs/models.md §8). The DPDS by Algorithm 1 differs

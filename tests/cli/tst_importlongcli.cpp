@@ -138,6 +138,33 @@ private slots:
         QCOMPARE(int(Project::load(project.toStdString()).sequences.size()), 1 + 10 * kRounds);
     }
 
+    // From nothing: a folder that does not exist yet becomes the project; a folder with other
+    // files in it and no project is refused, its files untouched.
+    void importsIntoANewProject()
+    {
+        const QString project = m_dir.filePath(QStringLiteral("new/project"));
+        Run r = runLipsync({QStringLiteral("project"), QStringLiteral("import-long"), project,
+                            m_dir.filePath(QStringLiteral("talk.wav")), QStringLiteral("--transcript"),
+                            m_dir.filePath(QStringLiteral("talk.txt")), QStringLiteral("--shortest"), QStringLiteral("1"),
+                            QStringLiteral("--json")});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const Project p = Project::load(project.toStdString());
+        QCOMPARE(int(p.sequences.size()), 10 * kRounds);
+        QCOMPARE(p.name, std::string("project"));
+        const QString busy = m_dir.filePath(QStringLiteral("busy"));
+        QDir().mkpath(busy);
+        QFile other(busy + QStringLiteral("/notes.txt"));
+        QVERIFY(other.open(QIODevice::WriteOnly));
+        other.write("mine");
+        other.close();
+        r = runLipsync({QStringLiteral("project"), QStringLiteral("import-long"), busy,
+                        m_dir.filePath(QStringLiteral("talk.wav")), QStringLiteral("--transcript"),
+                        m_dir.filePath(QStringLiteral("talk.txt"))});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("holds files but no project"), r.err.constData());
+        QCOMPARE(QDir(busy).entryList(QDir::Files), QStringList{QStringLiteral("notes.txt")});
+    }
+
 private:
     QTemporaryDir m_dir;
     std::vector<std::string> m_words;
