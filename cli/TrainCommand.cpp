@@ -7,6 +7,7 @@
 #include "dynamics/BrandModel.h"
 #include "dynamics/ContextDependentModel.h"
 #include "dynamics/ModelFile.h"
+#include "dynamics/PhoneCoverage.h"
 #include "tasks/Feedback.h"
 
 #include <QJsonArray>
@@ -59,6 +60,11 @@ int runTrain(const CommandLine &args)
     // The phones, or the tied context states (docs/models.md §5.2).
     const auto *context = dynamic_cast<const ContextDependentModel *>(model.get());
     const int states = context ? context->tree().stateCount() : model->stateCount();
+    // What the footage covers, and what it lacks for these options (docs/models.md §0).
+    PhoneCoverage coverage = PhoneCoverage::of(sequences);
+    coverage.contextStates = context ? states : 0;
+    if (const std::string advice = coverage.advice(); !advice.empty())
+        std::fprintf(stderr, "lipsync train: warning: %s\n", advice.c_str());
     // Brand: its covariance, and the held-out errors that chose it (docs/models.md §2.1).
     const auto *brand = dynamic_cast<const BrandModel *>(context ? &context->inner() : model.get());
     if (args.isSet(QStringLiteral("json"))) {
@@ -74,6 +80,7 @@ int runTrain(const CommandLine &args)
         o[QStringLiteral("iterations")] = iterations;
         o[QStringLiteral("objective")] = objective;
         o[QStringLiteral("loglikPerFrame")] = ll / double(frames);
+        o[QStringLiteral("coverage")] = coverage.toJson();
         if (brand) {
             const QJsonObject covariance = brand->covarianceJson();
             for (auto it = covariance.begin(); it != covariance.end(); ++it)
@@ -85,6 +92,9 @@ int runTrain(const CommandLine &args)
                     "log-likelihood %.6f nats/frame; saved %s\n",
                     kind.toUtf8().constData(), sequences.size(), frames, model->dimension(), states, seconds,
                     ll / double(frames), out.toUtf8().constData());
+        std::printf("phones: %d of %d seen in %.0f s of speech, %zu with fewer than %d frames\n",
+                    PhoneCoverage::kSpeechPhones - int(coverage.unseen.size()), PhoneCoverage::kSpeechPhones,
+                    coverage.speechSeconds, coverage.rare.size(), kMinimumVarianceFrames);
         if (brand && brand->covarianceChoice().folds > 0)
             std::printf("covariance: %s (held-out L1 in %d folds: diagonal %.4g, full %.4g)\n",
                         brand->fullCovariance() ? "full" : "diagonal", brand->covarianceChoice().folds,

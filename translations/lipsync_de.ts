@@ -1725,234 +1725,254 @@
 <context>
     <name>lipsync::studio::ModelsPanel</name>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="54"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="55"/>
         <source>Appearance model</source>
         <translation>Erscheinungsmodell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="55"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="56"/>
         <source>Phoneme aligner</source>
         <translation>Phonem-Aligner</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="78"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="79"/>
         <source>Build AAM…</source>
         <translation>AAM erstellen …</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="100"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="101"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="100"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="101"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="100"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="101"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="275"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="276"/>
         <source>Made in this session; written when the project is saved</source>
         <translation>In dieser Sitzung erstellt; wird beim Speichern des Projekts geschrieben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="287"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="288"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="79"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
         <source>Train</source>
         <translation>Trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="65"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="66"/>
         <source>%1 states for phones in context</source>
         <translation>%1 Zustände für Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="66"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="67"/>
         <source>one state per phone</source>
         <translation>ein Zustand je Phonem</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="69"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="70"/>
         <source>%1, full covariances</source>
         <translation>%1, volle Kovarianzen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="71"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="72"/>
         <source>%1 parameters, %2, variance compensation</source>
         <translation>%1 Parameter, %2, Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="72"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="73"/>
         <source>%1 parameters, %2</source>
         <translation>%1 Parameter, %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="79"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
         <source>Evaluate (k-fold)</source>
         <translation>Evaluieren (k-fach)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="247"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="248"/>
         <source>Realism</source>
         <translation>Realismus</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="83"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="84"/>
         <source>Variance compensation</source>
         <translation>Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="84"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="85"/>
         <source>Phones in context</source>
         <translation>Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="84"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="85"/>
         <source>Paper&apos;s models</source>
         <translation>Modelle des Artikels</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="110"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="111"/>
         <source>VarPro / Levenberg–Marquardt</source>
         <translation>VarPro / Levenberg–Marquardt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="111"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="112"/>
         <source>Gradient ascent (paper)</source>
         <translation>Gradientenaufstieg (Artikel)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="112"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
         <source>Diagonal A</source>
         <translation>Diagonales A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="114"/>
         <source>Full A</source>
         <translation>Volles A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="116"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="117"/>
         <source>Covariance by CV</source>
         <translation>Kovarianz per KV</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="117"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
         <source>Diagonal covariance</source>
         <translation>Diagonale Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="119"/>
         <source>Full covariance</source>
         <translation>Volle Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="140"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="141"/>
         <source>Scale each model&apos;s generated trajectories to the spread of the training features: lips that open and close as much as the recording&apos;s, at the cost of a larger error per frame. Off: the paper&apos;s models exactly.</source>
         <translation>Skaliert die erzeugten Trajektorien jedes Modells auf die Streuung der Trainingsmerkmale: Lippen, die sich so weit öffnen und schließen wie in der Aufnahme, um den Preis eines größeren Fehlers je Bild. Aus: genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="148"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="149"/>
         <source>Train each model on states for phones in their context (the neighbouring phones and the part of the phone), tied by decision trees: lips that anticipate the next sound. Off: one state per phone, the paper&apos;s models exactly.</source>
         <translation>Jedes Modell auf Zuständen für Phoneme in ihrem Kontext trainieren (die benachbarten Phoneme und der Teil des Phonems), durch Entscheidungsbäume gebündelt: Lippen, die den nächsten Laut vorwegnehmen. Aus: ein Zustand je Phonem, genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="155"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="156"/>
         <source>Train and evaluate the paper&apos;s models exactly: no compensation or phones in context, Brand with diagonal covariances, the DPDS by the paper&apos;s Algorithm 1 and gradient ascent without the variance prior; Realism renders without lip closure, colour matching or exemplar detail.</source>
         <translation>Genau die Modelle des Artikels trainieren und evaluieren: keine Kompensation und keine Phone im Kontext, Brand mit diagonalen Kovarianzen, das DPDS mit Algorithmus 1 des Artikels und Gradientenanstieg ohne Varianz-Prior; Realismus rendert ohne Lippenschluss, Farbanpassung und Exemplar-Details.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="177"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="178"/>
         <source>folds: </source>
         <translation>Teilmengen (k-fach): </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="187"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="188"/>
         <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
         <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="188"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="189"/>
         <source>Train the checked models on every sequence with features and phonemes</source>
         <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="189"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="190"/>
         <source>Stop training or evaluation; the previous models stay</source>
         <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="190"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="191"/>
         <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
         <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="195"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="196"/>
         <source>Render the held-out sequences of the same folds into their recordings and measure the lips with dlib&apos;s landmarks: opening correlation, articulation, /p b m/ closures, lag, sharpness, seam</source>
         <translation>Die zurückgehaltenen Sequenzen derselben Folds in ihre Aufnahmen rendern und die Lippen mit dlibs Landmarken messen: Korrelation der Öffnung, Artikulation, Verschlüsse bei /p b m/, Versatz, Schärfe, Naht</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="223"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="224"/>
         <source>AAM parameter </source>
         <translation>AAM-Parameter </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="224"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="225"/>
         <source>Which AAM parameter to plot over time</source>
         <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="234"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="235"/>
         <source>Not evaluated yet: Evaluate (k-fold) in the Models panel draws the paper&apos;s Figure 4 for the checked models.</source>
         <translation>Noch nicht evaluiert: Evaluieren (k-fach) im Modelle-Panel zeichnet Abbildung 4 des Artikels für die gewählten Modelle.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="239"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="240"/>
         <source>Not measured yet: Realism in the Models panel renders held-out sequences and measures the lips on them.</source>
         <translation>Noch nicht gemessen: Realismus im Modelle-Panel rendert zurückgehaltene Sequenzen und misst die Lippen darauf.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="244"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="245"/>
         <source>Trajectory</source>
         <translation>Trajektorie</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="245"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="246"/>
         <source>Training</source>
         <translation>Training</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="246"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="247"/>
         <source>Evaluation</source>
         <translation>Evaluation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="323"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="324"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter tracken und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="399"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="427"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="377"/>
+        <source>%1 of %2 phones never occur in the footage: their face is guessed from the average</source>
+        <translation>%1 von %2 Phonen kommen im Material nie vor: ihr Gesicht wird aus dem Durchschnitt geschätzt</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="381"/>
+        <source>%1 have fewer than %2 frames</source>
+        <translation>%1 haben weniger als %2 Bilder</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="383"/>
+        <source>Phones in context made no context states: too little footage for them</source>
+        <translation>Phone im Kontext haben keine Kontextzustände gebildet: zu wenig Material dafür</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="387"/>
+        <source>More footage of the person (%1 s of speech now) covers more.</source>
+        <translation>Mehr Material der Person (jetzt %1 s Sprache) deckt mehr ab.</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="418"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="453"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="401"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="420"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -1960,27 +1980,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="418"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="441"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="438"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="464"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="440"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="466"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="447"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="473"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="466"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="492"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds: mean and 95 % interval over the folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen: Mittelwert und 95-%-Intervall über die Teilmengen.</numerusform>
@@ -1988,17 +2008,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="525"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="551"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="526"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="552"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="461"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="487"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -2006,12 +2026,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="120"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="121"/>
         <source>Brand&apos;s output covariances. By CV: diagonal or full, whichever of the two generates held-out training sequences more closely (cross-validation). Diagonal: the paper&apos;s model.</source>
         <translation>Brands Ausgabekovarianzen. Per KV: diagonal oder voll, je nachdem, welche der beiden zurückgehaltene Trainingssequenzen genauer erzeugt (Kreuzvalidierung). Diagonal: das Modell der Veröffentlichung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="494"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="520"/>
         <source>Realism of %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
@@ -2019,7 +2039,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="499"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="525"/>
         <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
         <translation>
             <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
@@ -2027,47 +2047,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="554"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="580"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="555"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="581"/>
         <source>Failed: %1.</source>
         <translation>Fehlgeschlagen: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="557"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="583"/>
         <source>Canceled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="587"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="613"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="592"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="618"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="424"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="450"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="616"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="642"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="626"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="652"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="651"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="677"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>

@@ -9,6 +9,7 @@
 #include "dynamics/ContextDependentModel.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/ModelFile.h"
+#include "dynamics/PhoneCoverage.h"
 #include "dynamics/PhoneLabels.h"
 #include "eval/Evaluation.h"
 #include "eval/RealismReport.h"
@@ -368,6 +369,24 @@ ModelOptions ModelsPanel::modelOptions() const
     return options;
 }
 
+QString ModelsPanel::coverageAdvice(const PhoneCoverage &coverage)
+{
+    // The footage's gaps for these options, in the user's language (PhoneCoverage::advice).
+    QStringList said;
+    if (!coverage.unseen.empty())
+        said << tr("%1 of %2 phones never occur in the footage: their face is guessed from the average")
+                    .arg(coverage.unseen.size())
+                    .arg(PhoneCoverage::kSpeechPhones);
+    if (!coverage.rare.empty())
+        said << tr("%1 have fewer than %2 frames").arg(coverage.rare.size()).arg(kMinimumVarianceFrames);
+    if (coverage.contextStates > 0 && coverage.contextStates <= PhoneSet::kCount)
+        said << tr("Phones in context made no context states: too little footage for them");
+    if (said.isEmpty())
+        return {};
+    return said.join(QStringLiteral("; ")) + QLatin1Char('.') + QLatin1Char(' ')
+           + tr("More footage of the person (%1 s of speech now) covers more.").arg(qRound(coverage.speechSeconds));
+}
+
 QList<Task *> ModelsPanel::train()
 {
     QList<Task *> started;
@@ -410,15 +429,22 @@ QList<Task *> ModelsPanel::train()
                     frames += s.frameCount();
                     ll += model->trajectoryLogLikelihood(s.labels, s.features); // comparable (§6.2)
                 }
+                PhoneCoverage coverage = PhoneCoverage::of(*data);
+                if (const auto *context = dynamic_cast<const ContextDependentModel *>(model.get()))
+                    coverage.contextStates = context->tree().stateCount();
                 // Written on the GUI thread by the commit (a small JSON file), so a canceled
                 // training never replaces the model file either.
-                return [self, kind, name, file, model, seconds, ll, frames, aamId] {
+                return [self, kind, name, file, model, seconds, ll, frames, aamId, coverage] {
                     if (!self)
                         return;
+                    const QString lacking = coverageAdvice(coverage);
                     self->m_status->setText(tr("%1 trained in %2 s: log-likelihood %3 nats/frame")
                                                 .arg(name)
                                                 .arg(seconds, 0, 'f', 2)
-                                                .arg(frames > 0 ? ll / double(frames) : 0.0, 0, 'f', 3));
+                                                .arg(frames > 0 ? ll / double(frames) : 0.0, 0, 'f', 3)
+                                            + (lacking.isEmpty() ? QString() : QStringLiteral(". ") + lacking));
+                    if (!lacking.isEmpty())
+                        self->m_context->showStatus(lacking, 20000);
                     const QString problem = self->m_context->modelStore()->addDynamicModel(file, model, aamId);
                     if (!problem.isEmpty())
                         self->m_status->setText(tr("The %1 model could not be saved: %2").arg(name, problem));

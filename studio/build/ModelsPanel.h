@@ -30,6 +30,7 @@ namespace lipsync {
 class DynamicModel;
 struct ModelOptions;
 class Project;
+struct PhoneCoverage;
 class Task;
 struct LabelledSequence;
 }
@@ -112,6 +113,8 @@ private:
     void refreshTrajectory();
     void updateActions();
     void applyPaperPreset(bool on);
+    // What the training footage lacks for the options (PhoneCoverage), or empty.
+    static QString coverageAdvice(const PhoneCoverage &coverage);
 
     QTreeWidget *m_list;
     QPushButton *m_buildAam;

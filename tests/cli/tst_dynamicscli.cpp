@@ -217,6 +217,16 @@ private slots:
         QVERIFY(all && held);
         const std::vector<int> labels(30, PhoneSet::index("AA"));
         QVERIFY((all->generateMostLikely(labels) - held->generateMostLikely(labels)).cwiseAbs().maxCoeff() > 1e-9);
+        // The footage's phone coverage in the report, and a warning for what it lacks.
+        const Run report = runLipsync({"train", "--kind", "hmm", "--features", m_features, "--labels", m_labels,
+                                       "--out", m_dir.filePath(QStringLiteral("c.json")), "--json"});
+        QVERIFY2(report.exitCode == 0, report.err.constData());
+        const QJsonObject coverage = parseJsonObject(report.out).value("coverage").toObject();
+        QVERIFY(coverage.value("speechSeconds").toDouble() > 10);
+        const bool lacking = !coverage.value("unseen").toArray().isEmpty() || !coverage.value("rare").toArray().isEmpty();
+        QVERIFY(lacking); // the synthetic clips hold 5 phones, "real" not all of the rest
+        QCOMPARE(coverage.value("advice").toString().isEmpty(), !lacking);
+        QVERIFY2(report.err.contains("warning:"), report.err.constData());
         const Run typo = runLipsync({"train", "--kind", "hmm", "--features", m_features, "--labels", m_labels, "--out",
                                      m_dir.filePath(QStringLiteral("x.json")), "--exclude", "clip99"});
         QCOMPARE(typo.exitCode, 2);

@@ -18,7 +18,9 @@
 #include "document/ProjectDocument.h"
 #include "dynamics/ContextDependentModel.h"
 #include "dynamics/DynamicModel.h"
+#include "dynamics/LabelledFolder.h"
 #include "dynamics/ModelFile.h"
+#include "dynamics/PhoneCoverage.h"
 #include "dynamics/PhoneLabels.h"
 #include "eval/RealismReport.h"
 #include "plots/EvaluationChart.h"
@@ -239,6 +241,12 @@ private slots:
         QVERIFY2(tip.contains(QStringLiteral("%1 states for phones in context").arg(dpds->tree().stateCount()))
                      && tip.contains(QStringLiteral("variance compensation")),
                  qPrintable(tip));
+        // What the demo's 30 s lack for these options is said after training (and in full on hover).
+        const PhoneCoverage coverage = PhoneCoverage::of(loadProjectSequences(m_window->document()->project()));
+        QVERIFY(!coverage.unseen.empty()); // GRID's small vocabulary
+        QVERIFY2(m_panel->statusLabel()->text().contains(QStringLiteral("%1 of 39 phones never occur").arg(coverage.unseen.size())),
+                 qPrintable(m_panel->statusLabel()->text()));
+        QVERIFY(m_panel->statusLabel()->toolTip().contains(QStringLiteral("More footage of the person")));
         QCOMPARE(m_window->modelStore()->dynamicModel("dpds")->dimension(), int(m_window->document()->sequence(0).features.cols()));
         QVERIFY(m_window->modelStore()->dynamicModel("dpds")->compensatesVariance()); // the panel's default
         // The live objective plot got the iterations of the iterative model (DPDS).

@@ -1,0 +1,64 @@
+// PhoneCoverage: the frames of each speech phone in a model's training footage, the phones
+// never seen and those too rare for a variance of their own, the speech's length, and the plain
+// advice when the footage is too short for the options (phones in context without states).
+#include "dynamics/PhoneCoverage.h"
+
+#include <QJsonArray>
+#include <QTest>
+
+using namespace lipsync;
+
+namespace {
+
+LabelledSequence sequence(const std::vector<std::pair<const char *, int>> &runs, double fps = 25.0)
+{
+    LabelledSequence s;
+    s.frameRate = fps;
+    for (const auto &[phone, frames] : runs)
+        for (int i = 0; i < frames; ++i)
+            s.labels.push_back(PhoneSet::index(phone));
+    s.features = Eigen::MatrixXd::Zero(Eigen::Index(s.labels.size()), 2);
+    return s;
+}
+
+} // namespace
+
+class TestPhoneCoverage : public QObject
+{
+    Q_OBJECT
+private slots:
+    void countsUnseenAndRarePhones()
+    {
+        const PhoneCoverage c = PhoneCoverage::of({sequence({{"sil", 20}, {"B", 12}, {"AA", 3}, {"sil", 10}}),
+                                                   sequence({{"AA", 4}, {"T", 25}, {"br", 5}})});
+        QCOMPARE(c.frames[size_t(PhoneSet::index("AA"))], 7LL);
+        QCOMPARE(c.frames[size_t(PhoneSet::kSilence)], 30LL);
+        QCOMPARE(int(c.unseen.size()), PhoneCoverage::kSpeechPhones - 3); // B, AA and T seen
+        QCOMPARE(c.rare, std::vector<std::string>{"AA"}); // 7 < 10 frames
+        QVERIFY(std::abs(c.speechSeconds - (12 + 7 + 25) / 25.0) < 1e-12); // silence and breath left out
+        const std::string advice = c.advice();
+        QVERIFY2(advice.find("36 of 39 phones never occur") != std::string::npos, advice.c_str());
+        QVERIFY2(advice.find("1 have fewer than 10 frames (AA)") != std::string::npos, advice.c_str());
+        const QJsonObject json = c.toJson();
+        QCOMPARE(json.value("unseen").toArray().size(), 36);
+        QCOMPARE(json.value("rare").toArray().first().toString(), QStringLiteral("AA"));
+    }
+
+    void saysWhenPhonesInContextMadeNoStates()
+    {
+        std::vector<std::pair<const char *, int>> all;
+        for (int n = 0; n < PhoneSet::kCount; ++n)
+            all.push_back({PhoneSet::labels()[size_t(n)].data(), 12});
+        // The labels' storage outlives the call: PhoneSet's static table.
+        PhoneCoverage c = PhoneCoverage::of({sequence(all)});
+        QVERIFY(c.unseen.empty() && c.rare.empty());
+        QVERIFY(c.advice().empty()); // every phone covered, no context asked for
+        c.contextStates = PhoneSet::kCount; // one state per phone: no split
+        QVERIFY(c.advice().find("made no context states") != std::string::npos);
+        c.contextStates = 120;
+        QVERIFY(c.advice().empty());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestPhoneCoverage)
+#include "tst_phonecoverage.moc"
