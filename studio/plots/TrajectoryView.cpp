@@ -64,7 +64,48 @@ struct TrajectoryView::Impl
     QVector<Series> series;
     int currentFrame = -1;
     double yMin = 0.0, yMax = 1.0;
+    // The phonemes' names over the plot, at their segments' centres, and which are written: in a
+    // narrow chart or a long sequence neighbours would run into each other ("BHNBLUW"), so a name
+    // is left out where it would touch the last one written (labelPhones).
+    std::vector<double> phoneCentres;
+    std::vector<std::string> phoneNames;
+    std::vector<bool> phoneShown;
+
+    void labelPhones();
 };
+
+void TrajectoryView::Impl::labelPhones()
+{
+    vtkAxis *top = chart->GetAxis(vtkAxis::TOP);
+    const double from = top->GetMinimum(), to = top->GetMaximum();
+    double pixels = std::abs(double(top->GetPoint2()[0] - top->GetPoint1()[0]));
+    if (!(pixels > 0)) // not laid out yet (the first drawing): most of the window's width
+        pixels = 0.6 * view->GetRenderWindow()->GetSize()[0];
+    if (!(to > from) || !(pixels > 0))
+        return;
+    const double perSecond = pixels / (to - from);
+    const double charWidth = 0.6 * top->GetLabelProperties()->GetFontSize();
+    std::vector<bool> shown(phoneCentres.size(), false);
+    double lastRight = -1e300;
+    for (size_t i = 0; i < phoneCentres.size(); ++i) {
+        const double x = (phoneCentres[i] - from) * perSecond;
+        const double half = 0.5 * charWidth * double(phoneNames[i].size()) + 2.0;
+        if (x - half >= lastRight) {
+            shown[i] = true;
+            lastRight = x + half;
+        }
+    }
+    if (shown == phoneShown)
+        return;
+    phoneShown = shown;
+    vtkNew<vtkDoubleArray> positions;
+    vtkNew<vtkStringArray> labels;
+    for (size_t i = 0; i < phoneCentres.size(); ++i) {
+        positions->InsertNextValue(phoneCentres[i]);
+        labels->InsertNextValue(shown[i] ? phoneNames[i] : std::string());
+    }
+    top->SetCustomTickPositions(positions, labels);
+}
 
 TrajectoryView::TrajectoryView(QWidget *parent) : VtkWidget(parent), t(std::make_unique<Impl>())
 {
@@ -92,6 +133,7 @@ TrajectoryView::TrajectoryView(QWidget *parent) : VtkWidget(parent), t(std::make
         vtkAxis *top = impl->chart->GetAxis(vtkAxis::TOP);
         if (top->GetMinimum() != bottom->GetMinimum() || top->GetMaximum() != bottom->GetMaximum())
             top->SetRange(bottom->GetMinimum(), bottom->GetMaximum());
+        impl->labelPhones(); // for the range and width about to be drawn
     });
     t->view->GetRenderer()->AddObserver(vtkCommand::StartEvent, t->syncAxes);
     setMinimumSize(200, 140);
@@ -135,6 +177,11 @@ int TrajectoryView::phoneBandCount() const
     return int(t->phones.size());
 }
 
+int TrajectoryView::phoneLabelsShown() const
+{
+    return int(std::count(t->phoneShown.begin(), t->phoneShown.end(), true));
+}
+
 void TrajectoryView::rebuild()
 {
     t->chart->ClearPlots();
@@ -166,8 +213,14 @@ void TrajectoryView::rebuild()
     const double lo = t->yMin - margin, hi = t->yMax + margin;
 
     // Phoneme segments: every other one shaded, so neighbours stay distinguishable.
-    vtkNew<vtkDoubleArray> tickPositions;
-    vtkNew<vtkStringArray> tickLabels;
+    t->phoneCentres.clear();
+    t->phoneNames.clear();
+    t->phoneShown.clear();
+    {
+        vtkNew<vtkDoubleArray> none;
+        vtkNew<vtkStringArray> noLabels;
+        t->chart->GetAxis(vtkAxis::TOP)->SetCustomTickPositions(none, noLabels);
+    }
     if (!t->phones.empty() && !t->series.isEmpty()) {
         auto bands = makeTable({"t", "lo", "hi"}, vtkIdType(2 * t->phones.size()));
         for (size_t i = 0; i < t->phones.size(); ++i) {
@@ -179,8 +232,8 @@ void TrajectoryView::rebuild()
             bands->SetValue(vtkIdType(2 * i + 1), 0, p.end);
             bands->SetValue(vtkIdType(2 * i + 1), 1, lo);
             bands->SetValue(vtkIdType(2 * i + 1), 2, top);
-            tickPositions->InsertNextValue(0.5 * (p.start + p.end));
-            tickLabels->InsertNextValue(p.label.empty() ? std::string(PhoneSet::kSilenceLabel) : p.label);
+            t->phoneCentres.push_back(0.5 * (p.start + p.end));
+            t->phoneNames.push_back(p.label.empty() ? std::string(PhoneSet::kSilenceLabel) : p.label);
             duration = std::max(duration, p.end);
         }
         auto *area = vtkPlotArea::SafeDownCast(t->chart->AddPlot(vtkChart::AREA));
@@ -193,7 +246,7 @@ void TrajectoryView::rebuild()
         area->SetLabel(tr("phonemes").toUtf8().constData());
         t->tables.push_back(bands);
     }
-    t->chart->GetAxis(vtkAxis::TOP)->SetCustomTickPositions(tickPositions, tickLabels);
+    t->labelPhones();
 
     for (const Series &s : t->series) {
         auto table = makeTable({"t", "y"}, vtkIdType(s.values.size()));

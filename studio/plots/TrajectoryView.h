@@ -41,6 +41,8 @@ public:
     // The series' names as the legend shows them, in order.
     QStringList seriesNames() const;
     int phoneBandCount() const;
+    // The phonemes' names written over the plot (those that fit without touching a neighbour).
+    int phoneLabelsShown() const;
     // The cursor at frame `frame` (its centre); hidden for a negative frame.
     void setCurrentFrame(int frame);
     // Time (s) of the cursor line, NaN when hidden.

@@ -80,6 +80,21 @@ private slots:
         const QImage image = view->grab().toImage();
         QVERIFY2(countColour(image, kReal) > 30, "the real trajectory is not drawn");
         QVERIFY2(countColour(image, kBand, 4) > 500, "the phoneme bands are not drawn");
+        // In the docked chart the phonemes' names would run into each other: some are left out,
+        // the rest written; wider, more of them fit.
+        const int docked = view->phoneLabelsShown();
+        QVERIFY2(docked > 2 && docked < view->phoneBandCount(), qPrintable(QString::number(docked)));
+        TrajectoryView wide;
+        wide.resize(1800, 400);
+        const Sequence &first = m_window->document()->sequence(0);
+        QVector<double> values;
+        for (Eigen::Index f = 0; f < first.features.rows(); ++f)
+            values.append(first.features(f, 0));
+        wide.setData(QStringLiteral("wide"), first.clock(), first.phones, {{QStringLiteral("real"), values, QColor(Qt::blue)}});
+        wide.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&wide));
+        (void)wide.grab();
+        QVERIFY2(wide.phoneLabelsShown() > docked, qPrintable(QString::number(wide.phoneLabelsShown())));
         QCOMPARE(countColour(image, kDpds), 0);
     }
 
