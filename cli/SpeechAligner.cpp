@@ -21,6 +21,9 @@ std::vector<CommandOption> SpeechAligner::options(const QStringList &alignerAlia
         {QStringLiteral("adapt"), {},
          QStringLiteral("adapt the aligner's model to the recording's speaker first (ours: MLLR + MAP of the "
                         "means, 3 passes; sphinx: one MLLR pass, about twice the time)")},
+        {QStringLiteral("no-boundary-correction"), {},
+         QStringLiteral("ours: leave the model's word-boundary correction (aligner calibrate) unapplied: the HMM's "
+                        "own boundaries, as the paper's aligner")},
         {QStringLiteral("project"), QStringLiteral("DIR"),
          QStringLiteral("pronounce words with the project's pronunciations first")},
         pronunciationsOption(),
@@ -39,6 +42,7 @@ SpeechAligner::SpeechAligner(const CommandLine &args) : SpeechAligner(args, args
 SpeechAligner::SpeechAligner(const CommandLine &args, const QString &projectFolder)
 {
     AlignerChoice choice{args.value(QStringLiteral("aligner")).toStdString(), args.isSet(QStringLiteral("adapt"))};
+    choice.boundaryCorrection = !args.isSet(QStringLiteral("no-boundary-correction"));
     if (!choice.isSphinx())
         choice.model = alignerModelOrDefault(QString::fromStdString(choice.model), args.spec().name).toStdString();
     m_aligner = createAligner(choice);

@@ -36,7 +36,10 @@ std::unique_ptr<Aligner> createAligner(const AlignerChoice &choice)
     if (path.empty())
         throw Error("no aligner model given, and the shipped aligner/grid-s1.aligner was not found among the "
                     "resources (set LIPSYNC_ALIGNER_MODEL to a model trained with `lipsync aligner train`)");
-    return std::make_unique<MonophoneAligner>(path, choice.adapt);
+    auto aligner = std::make_unique<MonophoneAligner>(path, choice.adapt);
+    if (!choice.boundaryCorrection)
+        aligner->dropBoundaryCorrection();
+    return aligner;
 }
 
 std::shared_ptr<const Aligner> AlignerCache::get(const AlignerChoice &choice)

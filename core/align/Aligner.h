@@ -31,11 +31,17 @@ struct AlignerChoice
 {
     std::string model;
     bool adapt = false; // adapt the model to the recording's speaker first
+    // Our model's word-boundary correction (BoundaryCorrection), when it has one; false: the
+    // HMM's own boundaries, as the paper's aligner (the paper preset, docs/models.md §8).
+    bool boundaryCorrection = true;
 
     bool isSphinx() const;
     // With isSphinx(): DIR of "sphinx:DIR", empty for "sphinx" (Debian's folder).
     std::string sphinxModelDir() const;
-    bool operator<(const AlignerChoice &o) const { return std::tie(model, adapt) < std::tie(o.model, o.adapt); }
+    bool operator<(const AlignerChoice &o) const
+    {
+        return std::tie(model, adapt, boundaryCorrection) < std::tie(o.model, o.adapt, o.boundaryCorrection);
+    }
 };
 
 struct AlignerOutput

@@ -16,6 +16,9 @@ public:
     // `path`: the model file (named in the errors of loading it).
     MonophoneAligner(const std::string &path, bool adapt);
 
+    // Aligns with the HMM's own word boundaries: the model's learned correction is not applied.
+    void dropBoundaryCorrection() { m_model.setBoundaryCorrection({}); }
+
     std::string name() const override { return m_path; }
     const AcousticModel *acousticModel() const override { return &m_model; }
     AlignerOutput align(const std::string &mediaPath, const std::vector<std::string> &words, const Lexicon &lexicon,

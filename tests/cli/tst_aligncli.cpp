@@ -110,6 +110,20 @@ private slots:
         QCOMPARE(frames.first().toString(), QStringLiteral("sil"));
         QCOMPARE(frames.last().toString(), QStringLiteral("sil"));
         QVERIFY(frames.contains(QStringLiteral("B"))); // bin
+
+        // --no-boundary-correction: the shipped model's calibrated correction left unapplied (the
+        // paper's aligner): the same words, some boundaries elsewhere.
+        const QString raw = dir.filePath(QStringLiteral("raw.TextGrid"));
+        const Run r2 = runLipsync({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bbaf2n.align", "--out", raw,
+                                   "--no-boundary-correction"});
+        QVERIFY2(r2.exitCode == 0, r2.err.constData());
+        const TextGrid rawGrid = readTextGrid(raw.toStdString());
+        const Tier rawWords = *rawGrid.tier("words");
+        QCOMPARE(rawWords.intervals.size(), words->intervals.size());
+        double moved = 0;
+        for (size_t i = 0; i < rawWords.intervals.size(); ++i)
+            moved = std::max(moved, std::abs(rawWords.intervals[i].end - words->intervals[i].end));
+        QVERIFY2(moved >= 0.01, qPrintable(QString::number(moved)));
     }
 
     // --adapt: the model adapted to the recording (another speaker than GRID's) first; the JSON
