@@ -32,7 +32,7 @@ int runTrain(const CommandLine &args)
     // The model records the AAM whose parameters it generates: --aam, else the content identifier of
     // the project's AAM (what `lipsync render` and the studio check a model against). Read before
     // training, so a broken AAM file costs no training time.
-    std::string aam = "unspecified";
+    std::string aam = kUnspecifiedAam;
     if (args.isSet(QStringLiteral("aam")))
         aam = modelAamIdentifier(args);
     else if (!projectAam.empty())

@@ -80,6 +80,12 @@ std::unique_ptr<DynamicModel> createDynamicModel(const std::string &kind, const 
     throw Error("unknown model kind '" + kind + "' (expected " + modelKindIdList() + ")");
 }
 
+bool modelFitsAam(const std::string &recorded, const std::string &identifier, const std::string &alias)
+{
+    return recorded.empty() || recorded == kUnspecifiedAam || recorded == identifier
+           || (!alias.empty() && recorded == alias);
+}
+
 void saveModel(const DynamicModel &model, const std::string &path, const std::string &aamId)
 {
     if (!model.isTrained())
@@ -136,7 +142,7 @@ std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::str
                         + std::to_string(kModelFileVersion) + ")",
                     path, "version");
     const std::string aam = o.value(QStringLiteral("aam")).toString().toStdString();
-    if (!expectedAamId.empty() && aam != expectedAamId)
+    if (!expectedAamId.empty() && !modelFitsAam(aam, expectedAamId))
         throw Error("the model was trained for AAM '" + aam + "', not for AAM '" + expectedAamId + "'",
                     path, "aam");
     const QJsonArray labels = o.value(QStringLiteral("labels")).toArray();

@@ -48,8 +48,19 @@ std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOpti
 std::unique_ptr<DynamicModel> createDynamicModel(const std::string &kind,
                                                  const ModelOptions &options = {});
 
+// The AAM contract of model files (docs/formats.md): a model records the AAM whose parameters it
+// generates, by that AAM's identifier; models the studio trained before identifiers existed record
+// its name in the project (pass it as `alias`); a model trained from bare feature files records
+// none ("unspecified", or empty) and fits any AAM with as many parameters. Whether a model that
+// records `recorded` may drive the AAM `identifier`. The one rule of loadModel, render, Live and
+// the study.
+bool modelFitsAam(const std::string &recorded, const std::string &identifier, const std::string &alias = {});
+// The identifier a model records when its AAM is not known.
+inline constexpr const char *kUnspecifiedAam = "unspecified";
+
 void saveModel(const DynamicModel &model, const std::string &path, const std::string &aamId);
-// expectedAamId empty: accept any AAM. aamId (optional) receives the file's AAM id.
+// expectedAamId empty: accept any AAM; else a model that does not fit it (modelFitsAam) is refused.
+// aamId (optional) receives the file's AAM id.
 std::unique_ptr<DynamicModel> loadModel(const std::string &path,
                                         const std::string &expectedAamId = {},
                                         std::string *aamId = nullptr);

@@ -62,7 +62,7 @@ Loaded loadInputs(const SpeechToFaceRequest &request)
     // dimension fits; one that names another AAM is not.
     std::string modelAam;
     in.model = request.model ? request.model : std::shared_ptr<const DynamicModel>(loadModel(request.modelPath, {}, &modelAam));
-    if (!request.model && !modelAam.empty() && modelAam != "unspecified" && modelAam != in.aam->identifier)
+    if (!request.model && !modelFitsAam(modelAam, in.aam->identifier))
         throw Error("the model was trained for AAM '" + modelAam + "', not for " + request.aamPath
                         + " ('" + in.aam->identifier + "')",
                     request.modelPath, "aam");

@@ -71,7 +71,7 @@ std::shared_ptr<const DynamicModel> StudyClipRenderer::model(const std::string &
         std::string recorded;
         std::shared_ptr<const DynamicModel> trained = loadModel(path, {}, &recorded);
         const ModelReference *aamRef = m_project.model("aam");
-        if (!recorded.empty() && recorded != faces->identifier && (!aamRef || recorded != aamRef->name))
+        if (!modelFitsAam(recorded, faces->identifier, aamRef ? aamRef->name : std::string()))
             throw Error("the model was trained for AAM '" + recorded + "', not for the project's AAM", path, "aam");
         slot = m_project.study && m_project.study->holdsOutUtterances() ? withoutStudyUtterances(*trained)
                                                                        : trained;

@@ -67,7 +67,7 @@ std::shared_ptr<const DynamicModel> ModelStore::dynamicModel(const QString &kind
 std::string ModelStore::aamIdentifier()
 {
     const auto model = aam();
-    return model ? model->identifier : std::string("unspecified");
+    return model ? model->identifier : std::string(kUnspecifiedAam);
 }
 
 std::string ModelStore::recordedAamIdentifier(const QString &kind)

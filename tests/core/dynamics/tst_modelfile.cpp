@@ -155,6 +155,15 @@ private slots:
         std::string e = errorOf([&] { loadModel(path, "aam-B"); });
         QVERIFY2(e.find("aam-A") != std::string::npos && e.find("aam-B") != std::string::npos, e.c_str());
         QVERIFY(e.find(path) != std::string::npos);
+        // The one AAM rule (modelFitsAam): its own identifier, the project's name for it, or a
+        // model that names no AAM (trained from bare feature files) fits; another AAM does not.
+        QVERIFY(modelFitsAam("aam-A", "aam-A"));
+        QVERIFY(modelFitsAam("GRID s1 (demo)", "aam-A", "GRID s1 (demo)"));
+        QVERIFY(modelFitsAam(kUnspecifiedAam, "aam-A") && modelFitsAam("", "aam-A"));
+        QVERIFY(!modelFitsAam("aam-B", "aam-A") && !modelFitsAam("aam-B", "aam-A", "GRID s1 (demo)"));
+        const std::string bare = dir.filePath(QStringLiteral("bare.json")).toStdString();
+        saveModel(model, bare, kUnspecifiedAam);
+        QVERIFY(loadModel(bare, "aam-B")); // as render and Live take it
         const std::string text = readWholeFile(path);
         auto rewrite = [&](const std::string &from, const std::string &to) {
             std::string t = text;
