@@ -104,6 +104,10 @@ public:
     // Shape from a pose and shape parameters.
     Eigen::VectorXd modelShape(const Similarity &pose, const Eigen::VectorXd &params) const;
 
+    // What fitting precomputed for resolution level `l` (0: the finest): its displacement basis
+    // and warp Jacobian, for checks against finite differences.
+    const AamFitLevel &level(int l) const { return m_levels.at(size_t(l)); }
+
 private:
     AamFitResult fitOnce(const cv::Mat &grey, const Eigen::VectorXd &initialShape,
                          const AamFitOptions &options) const;

@@ -1,6 +1,7 @@
 // Procrustes, PCA, the piecewise-affine warp, building, saving, fitting and synthesis of an AAM,
 // on the committed GRID frames (tests/data/faces/grid, 20 frames with dlib-derived 23 points).
 #include "aam/AamBuilder.h"
+#include "aam/AamFitLevel.h"
 #include "aam/AamFitter.h"
 #include "aam/AamSynthesizer.h"
 #include "aam/FaceDetector.h"
@@ -463,6 +464,37 @@ private slots:
         QTest::newRow("project-out") << int(AamFitAlgorithm::ProjectOut) << false;
         QTest::newRow("wiberg") << int(AamFitAlgorithm::Wiberg) << false;
         QTest::newRow("wiberg-igo") << int(AamFitAlgorithm::Wiberg) << true;
+    }
+
+    // The warp Jacobian the fitter precomputes (dW/dp per pixel, Matthews & Baker §4.1.1) equals
+    // central finite differences of where the piecewise-affine warp puts each reference pixel
+    // as the shape moves along each basis displacement, at every level.
+    void warpJacobianMatchesFiniteDifferences()
+    {
+        const AamFitter fitter(m_model);
+        for (int l = 0; l < int(m_model.levels.size()); ++l) {
+            const AamFitLevel &level = fitter.level(l);
+            const PiecewiseAffineWarp &warp = m_model.warp(l);
+            const int N = warp.pixelCount(), P = int(level.basis.cols());
+            QCOMPARE(int(level.warpX.rows()), N);
+            QCOMPARE(int(level.warpX.cols()), P);
+            const double h = 0.5; // pixels of the level frame; the warp is linear in the vertices
+            std::vector<float> plus(size_t(2 * N)), minus(size_t(2 * N));
+            double worst = 0, scale = 0;
+            for (int j = 0; j < P; ++j) {
+                warp.pixelPositions(level.reference + h * level.basis.col(j), plus.data());
+                warp.pixelPositions(level.reference - h * level.basis.col(j), minus.data());
+                for (int i = 0; i < N; ++i) {
+                    const double dx = (double(plus[size_t(2 * i)]) - minus[size_t(2 * i)]) / (2 * h);
+                    const double dy = (double(plus[size_t(2 * i + 1)]) - minus[size_t(2 * i + 1)]) / (2 * h);
+                    worst = std::max({worst, std::abs(dx - level.warpX(i, j)), std::abs(dy - level.warpY(i, j))});
+                    scale = std::max({scale, std::abs(double(level.warpX(i, j))), std::abs(double(level.warpY(i, j)))});
+                }
+            }
+            qInfo("level %d: %d pixels x %d parameters, largest difference %.2g (largest entry %.2g)", l, N, P,
+                  worst, scale);
+            QVERIFY2(scale > 0.05 && worst < 1e-3 * scale, qPrintable(QString::number(worst)));
+        }
     }
 
     void fitConvergesOnHeldOutFrame()
