@@ -22,11 +22,27 @@
 #include <QFileInfo>
 #include <QJsonArray>
 
+#include <cmath>
 #include <cstdio>
+#include <optional>
 
 using namespace lipsync;
 
 namespace {
+
+// --strict [--min-fit F]: the transcript fit a transcript must reach.
+std::optional<double> minimumFit(const cli::CommandLine &a)
+{
+    if (a.isSet("min-fit") && !a.isSet("strict"))
+        throw cli::UsageError(QStringLiteral("--min-fit goes with --strict"));
+    if (!a.isSet("strict"))
+        return std::nullopt;
+    bool ok = false;
+    const double fit = a.value("min-fit").toDouble(&ok);
+    if (!ok || !(fit < 0))
+        throw cli::UsageError(QStringLiteral("--min-fit must be a negative number (nats per frame)"));
+    return fit;
+}
 
 QJsonArray tierJson(const Tier &tier)
 {
@@ -38,13 +54,21 @@ QJsonArray tierJson(const Tier &tier)
 }
 
 // Aligns `media` to `words` and writes the TextGrid `out`; the --json report of one recording.
+// With `minFit` (--strict: an aligner of the recording's speaker), a transcript whose fit to the
+// sound is below it is refused as not what the recording says, naming the file; nothing is written.
 QJsonObject alignOne(const cli::SpeechAligner &aligner, const QString &media, const std::vector<std::string> &words,
-                     const QString &transcriptPath, const QString &out, Feedback *feedback)
+                     const QString &transcriptPath, const QString &out, Feedback *feedback,
+                     std::optional<double> minFit)
 {
     QElapsedTimer timer;
     timer.start();
     const AlignerOutput aligned = aligner.align(media, words, transcriptPath, feedback);
     const AlignmentResult &result = aligned.alignment;
+    if (minFit && aligned.transcriptFit < *minFit) // never for NaN (CMU Sphinx)
+        throw Error("the transcript does not seem to be what the recording says (fit "
+                        + QString::number(aligned.transcriptFit, 'f', 2).toStdString() + " nats per frame, below "
+                        + QString::number(*minFit, 'f', 2).toStdString() + ")",
+                    (transcriptPath.isEmpty() ? media : transcriptPath).toStdString());
     // Per-video-frame phone labels (docs/models.md §0 voting) when the media has a readable video
     // stream (the sound of a damaged video may still align).
     QJsonArray frameLabels;
@@ -79,6 +103,8 @@ QJsonObject alignOne(const cli::SpeechAligner &aligner, const QString &media, co
         {QStringLiteral("duration"), aligned.duration},
         {QStringLiteral("frames"), result.frames},
         {QStringLiteral("logLikelihood"), result.logLikelihood},
+        {QStringLiteral("transcriptFit"), std::isfinite(aligned.transcriptFit) ? QJsonValue(aligned.transcriptFit)
+                                                                               : QJsonValue()},
         {QStringLiteral("seconds"), timer.elapsed() / 1000.0},
         {QStringLiteral("wordCount"), int(words.size())},
         {QStringLiteral("words"), tierJson(result.words)},
@@ -111,7 +137,8 @@ int alignFolder(const cli::CommandLine &a, const cli::SpeechAligner &aligner)
         const std::vector<std::string> words = r.transcriptFile.isEmpty()
                                                    ? Lexicon::splitWords(r.transcript)
                                                    : readTranscript(r.transcriptFile.toStdString()).words;
-        QJsonObject result = alignOne(aligner, r.media, words, r.transcriptFile, job.output, &feedback);
+        QJsonObject result =
+            alignOne(aligner, r.media, words, r.transcriptFile, job.output, &feedback, minimumFit(a));
         // The summary keeps what a project import needs, not every interval.
         for (const char *key : {"words", "phones", "frameLabels", "adaptationLogLikelihoodPerFrame"})
             result.remove(QLatin1String(key));
@@ -129,7 +156,8 @@ int runAlign(const cli::CommandLine &a)
     if (!a.isSet("transcript"))
         throw cli::UsageError(QStringLiteral("--transcript FILE is needed to align one recording"));
     const Transcript transcript = readTranscript(a.value("transcript").toStdString());
-    const QJsonObject result = alignOne(aligner, media, transcript.words, a.value("transcript"), a.value("out"), nullptr);
+    const QJsonObject result =
+        alignOne(aligner, media, transcript.words, a.value("transcript"), a.value("out"), nullptr, minimumFit(a));
     if (a.isSet("json")) {
         cli::printJson(result);
     } else {
@@ -157,7 +185,13 @@ const cli::CommandRegistration registration{
                          "with a folder to align, the folder of the transcripts (default: beside the media)")},
          {QStringLiteral("out"), QStringLiteral("FILE.TextGrid|DIR"),
           QStringLiteral("the TextGrid to write; with a folder to align, the folder of the TextGrids"), {},
-          cli::CommandOption::Required}},
+          cli::CommandOption::Required},
+         {QStringLiteral("strict"), {},
+          QStringLiteral("refuse a transcript that does not fit the sound (our aligner's transcriptFit below --min-fit; "
+                         "for an aligner trained on the recording's speaker: docs/pipeline.md), nothing written")},
+         {QStringLiteral("min-fit"), QStringLiteral("F"),
+          QStringLiteral("with --strict: the least transcript fit, nats per frame"),
+          QString::number(kTranscriptFitThreshold)}},
         {{QStringLiteral("MEDIA"), QStringLiteral("the recording (any audio or video file with speech), or a folder of "
                                                   "them, or a project folder")}}}
         .add(cli::SpeechAligner::options({QStringLiteral("model")}))

@@ -10,6 +10,7 @@
 #include "align/SpeakerAdaptation.h"
 #include "audio/Mfcc.h"
 
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -50,7 +51,20 @@ struct AlignerOutput
     double duration = 0;         // seconds of audio
     MfccOptions audioFrames;     // the aligner's audio frames (voteFrameLabels)
     AdaptationReport adaptation; // ours with adaptation: log-likelihood per frame per pass
+    // How well the transcript fits the sound (ours; NaN for CMU Sphinx's): the forced path's
+    // log-likelihood per audio frame minus that of the best-matching phone state of each frame
+    // on its own (a free phone recognition without a grammar), <= 0. Speech that says other
+    // words than the transcript pulls it far down; how far a true transcript sits depends on how
+    // well the model knows the speaker (kTranscriptFitThreshold).
+    double transcriptFit = std::numeric_limits<double>::quiet_NaN();
 };
+
+// The transcript fit below which a transcript is taken not to be what the recording says, for an
+// aligner trained on the recording's speaker: chosen by cross-validation on GRID s1 with other
+// clips' transcripts swapped in (docs/performance.md, "Transcripts that do not match the sound":
+// 99.5 % of swaps below it, 1.25 % of true transcripts). With a model of another speaker true
+// transcripts fall below it too (-2.4 to -13 measured), so the check is asked for, not default.
+constexpr double kTranscriptFitThreshold = -2.2;
 
 class Aligner
 {

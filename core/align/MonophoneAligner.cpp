@@ -8,7 +8,9 @@
 #include "io/Transcript.h"
 #include "util/Error.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <limits>
 #include <optional>
 
 namespace lipsync {
@@ -65,6 +67,24 @@ MonophoneAligner::MonophoneAligner(const std::string &path, bool adapt)
 {
 }
 
+double transcriptFit(const AcousticModel &model, const Eigen::MatrixXf &features, const AlignmentResult &alignment)
+{
+    // The forced path against each frame's best state alone: both per frame, so the score does
+    // not grow with the utterance.
+    const int T = int(features.rows());
+    if (T == 0 || alignment.frames == 0)
+        return std::numeric_limits<double>::quiet_NaN();
+    const Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows = features;
+    double best = 0;
+    for (int t = 0; t < T; ++t) {
+        float top = -std::numeric_limits<float>::infinity();
+        for (int j = 0; j < model.stateCount(); ++j)
+            top = std::max(top, model.state(j).logLikelihood(rows.data() + size_t(t) * size_t(rows.cols())));
+        best += top;
+    }
+    return (alignment.logLikelihood - best) / double(T);
+}
+
 AlignerOutput MonophoneAligner::align(const std::string &mediaPath, const std::vector<std::string> &words,
                                       const Lexicon &lexicon, Feedback *feedback,
                                       const std::string &transcriptPath) const
@@ -82,6 +102,7 @@ AlignerOutput MonophoneAligner::align(const std::string &mediaPath, const std::v
     } catch (const Error &e) {
         throw misfit(e, mediaPath, transcriptPath);
     }
+    out.transcriptFit = transcriptFit(p.modelOr(m_model), p.utterance.features, out.alignment);
     m_model.boundaryCorrection().apply(out.alignment);
     return out;
 }

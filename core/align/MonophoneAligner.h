@@ -10,6 +10,9 @@
 
 namespace lipsync {
 
+// AlignerOutput::transcriptFit of `alignment` (the forced path through `features`).
+double transcriptFit(const AcousticModel &model, const Eigen::MatrixXf &features, const AlignmentResult &alignment);
+
 class MonophoneAligner : public Aligner
 {
 public:

@@ -1,6 +1,7 @@
 // `lipsync align` and `lipsync aligner train` as users run them.
 #include "CliRun.h"
 
+#include "align/Aligner.h"
 #include "align/SphinxAligner.h"
 #include "io/TextGrid.h"
 #include "project/Project.h"
@@ -110,6 +111,28 @@ private slots:
         QCOMPARE(frames.first().toString(), QStringLiteral("sil"));
         QCOMPARE(frames.last().toString(), QStringLiteral("sil"));
         QVERIFY(frames.contains(QStringLiteral("B"))); // bin
+
+        // The transcript fit: a transcript of other words (another clip's) sits far lower, and
+        // --strict refuses it, naming the transcript, writing nothing.
+        const double fit = json.value("transcriptFit").toDouble();
+        QVERIFY2(fit < 0 && fit > kTranscriptFitThreshold, qPrintable(QString::number(fit)));
+        const QString swapped = dir.filePath(QStringLiteral("swapped.TextGrid"));
+        Run other = runLipsync({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bgin3a.align", "--out", swapped,
+                                "--json"});
+        QVERIFY2(other.exitCode == 0, other.err.constData());
+        const double swappedFit = QJsonDocument::fromJson(other.out).object().value("transcriptFit").toDouble();
+        QVERIFY2(swappedFit < kTranscriptFitThreshold && swappedFit < fit - 2, qPrintable(QString::number(swappedFit)));
+        QFile::remove(swapped);
+        other = runLipsync({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bgin3a.align", "--out", swapped,
+                            "--strict"});
+        QCOMPARE(other.exitCode, 1);
+        QVERIFY2(other.err.contains("bgin3a.align") && other.err.contains("does not seem to be what the recording says"),
+                 other.err.constData());
+        QVERIFY(!QFile::exists(swapped));
+        QCOMPARE(runLipsync({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bbaf2n.align", "--out", swapped,
+                             "--strict"})
+                     .exitCode,
+                 0);
 
         // --no-boundary-correction: the shipped model's calibrated correction left unapplied (the
         // paper's aligner): the same words, some boundaries elsewhere.
