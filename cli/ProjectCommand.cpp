@@ -84,12 +84,22 @@ int runCreate(const CommandLine &a)
                                    "manifest is kept as project.json.bak)")
                         .arg(q(Project::manifestPath(out))));
     try {
-        const Project project = Project::fromMediaFolder(a.value("media").toStdString(), out);
+        // A damaged clip is listed and left out; the rest go in.
+        std::vector<std::string> skipped;
+        const Project project = Project::fromMediaFolder(a.value("media").toStdString(), out, &skipped);
         project.save();
-        if (a.isSet("json"))
-            printJson(projectSummary(project));
-        else
+        for (const std::string &why : skipped)
+            std::fprintf(stderr, "lipsync project create: skipped %s\n", why.c_str());
+        if (a.isSet("json")) {
+            QJsonObject summary = projectSummary(project);
+            QJsonArray left;
+            for (const std::string &why : skipped)
+                left.append(QString::fromStdString(why));
+            summary[QStringLiteral("skipped")] = left;
+            printJson(summary);
+        } else {
             printSummary(project);
+        }
     } catch (const Error &e) {
         return fail(QString::fromUtf8(e.what()));
     }

@@ -2420,7 +2420,7 @@
     </message>
     <message>
         <location filename="../studio/app/ProjectFiles.cpp" line="56"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="105"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="118"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
@@ -2436,7 +2436,7 @@
     </message>
     <message>
         <location filename="../studio/app/ProjectFiles.cpp" line="76"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="93"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="106"/>
         <source>No new project was created.</source>
         <translation>Es wurde kein neues Projekt angelegt.</translation>
     </message>
@@ -2450,64 +2450,72 @@
         <source>New project from %1</source>
         <translation>Neues Projekt aus %1</translation>
     </message>
+    <message numerus="yes">
+        <location filename="../studio/app/ProjectFiles.cpp" line="98"/>
+        <source>%n clip(s) could not be read and were left out.</source>
+        <translation>
+            <numerusform>%n Clip konnte nicht gelesen werden und wurde ausgelassen.</numerusform>
+            <numerusform>%n Clips konnten nicht gelesen werden und wurden ausgelassen.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="106"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="119"/>
         <source>%1 holds no project. Create a new project from the clips in it?</source>
         <translation>%1 enthält kein Projekt. Ein neues Projekt aus den Clips darin anlegen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="114"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="127"/>
         <source>The project could not be opened.</source>
         <translation>Das Projekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="144"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="157"/>
         <source>The bundled demo project was not found.</source>
         <translation>Das mitgelieferte Demoprojekt wurde nicht gefunden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="145"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="158"/>
         <source>Looked for demo/ in: %1</source>
         <translation>demo/ gesucht in: %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="152"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="165"/>
         <source>The demo project could not be opened.</source>
         <translation>Das Demoprojekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="177"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="190"/>
         <source>Save Project As (a folder)</source>
         <translation>Projekt speichern unter (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="182"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="201"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="195"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="214"/>
         <source>The project could not be saved.</source>
         <translation>Das Projekt konnte nicht gespeichert werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="183"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="196"/>
         <source>a file of that name exists; a project needs a folder</source>
         <translation>es gibt eine Datei dieses Namens; ein Projekt braucht einen Ordner</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="188"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="201"/>
         <source>Replace Project</source>
         <translation>Projekt ersetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="189"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="202"/>
         <source>%1 already holds a project. Replace it?</source>
         <translation>%1 enthält bereits ein Projekt. Ersetzen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="214"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="227"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="214"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="227"/>
         <source>The project has unsaved changes. Save them?</source>
         <translation>Das Projekt hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
@@ -3583,17 +3591,17 @@
 <context>
     <name>lipsync::studio::TrajectoryView</name>
     <message>
-        <location filename="../studio/plots/TrajectoryView.cpp" line="145"/>
+        <location filename="../studio/plots/TrajectoryView.cpp" line="192"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/TrajectoryView.cpp" line="146"/>
+        <location filename="../studio/plots/TrajectoryView.cpp" line="193"/>
         <source>parameter value</source>
         <translation>Parameterwert</translation>
     </message>
     <message>
-        <location filename="../studio/plots/TrajectoryView.cpp" line="193"/>
+        <location filename="../studio/plots/TrajectoryView.cpp" line="246"/>
         <source>phonemes</source>
         <translation>Phoneme</translation>
     </message>

@@ -35,9 +35,41 @@ void readSequenceTranscript(const std::string &path, Sequence &sequence)
     }
 }
 
+// Adds the sequence of one media file (and its transcript) to `project`; throws lipsync::Error
+// naming the file when it cannot be read.
+void addMediaFile(Project &project, const MediaFile &file, const QString &projectDir, std::set<std::string> &ids)
+{
+    const std::string &path = file.path;
+    const MediaInfo info = MediaInfo::probe(path);
+    const QFileInfo fileInfo(QString::fromStdString(path));
+
+    Sequence s;
+    s.id = file.id;
+    // clip.mpg and clip.wav side by side: the second becomes "clip_wav".
+    if (!ids.insert(s.id).second) {
+        s.id += '_';
+        s.id += fileInfo.suffix().toLower().toStdString();
+        if (!ids.insert(s.id).second)
+            throw Error("two media files give the sequence id '" + s.id + "'", path);
+    }
+    s.mediaFile = QDir(projectDir).relativeFilePath(fileInfo.absoluteFilePath()).toStdString();
+    if (info.hasVideo) {
+        s.setClock(info.frames);
+    } else {
+        s.frameRate = Project::kAudioOnlyFrameRate;
+        s.frameCount = int(std::lround(info.audioEndTime * Project::kAudioOnlyFrameRate));
+    }
+    if (!(s.frameRate > 0) || !std::isfinite(s.frameRate))
+        throw Error("no usable frame rate", path);
+    if (!file.transcript.empty())
+        readSequenceTranscript(file.transcript, s);
+    project.sequences.push_back(std::move(s));
+}
+
 } // namespace
 
-Project Project::fromMediaFolder(const std::string &mediaFolder, const std::string &projectFolder)
+Project Project::fromMediaFolder(const std::string &mediaFolder, const std::string &projectFolder,
+                                 std::vector<std::string> *skipped)
 {
     const QDir dir(QString::fromStdString(mediaFolder));
     if (!dir.exists())
@@ -51,35 +83,20 @@ Project Project::fromMediaFolder(const std::string &mediaFolder, const std::stri
 
     std::set<std::string> ids;
     for (const MediaFile &file : listMediaFolder(mediaFolder)) {
-        const std::string &path = file.path;
-        const MediaInfo info = MediaInfo::probe(path);
-        const QFileInfo fileInfo(QString::fromStdString(path));
-
-        Sequence s;
-        s.id = file.id;
-        // clip.mpg and clip.wav side by side: the second becomes "clip_wav".
-        if (!ids.insert(s.id).second) {
-            s.id += '_';
-            s.id += fileInfo.suffix().toLower().toStdString();
-            if (!ids.insert(s.id).second)
-                throw Error("two media files give the sequence id '" + s.id + "'", path);
+        try {
+            addMediaFile(project, file, projectDir, ids);
+        } catch (const Error &e) {
+            if (!skipped)
+                throw;
+            skipped->push_back(e.what());
         }
-        s.mediaFile = QDir(projectDir).relativeFilePath(fileInfo.absoluteFilePath()).toStdString();
-        if (info.hasVideo) {
-            s.setClock(info.frames);
-        } else {
-            s.frameRate = kAudioOnlyFrameRate;
-            s.frameCount = int(std::lround(info.audioEndTime * kAudioOnlyFrameRate));
-        }
-        if (!(s.frameRate > 0) || !std::isfinite(s.frameRate))
-            throw Error("no usable frame rate", path);
-        if (!file.transcript.empty())
-            readSequenceTranscript(file.transcript, s);
-        project.sequences.push_back(std::move(s));
     }
     if (project.sequences.empty())
-        throw Error("no media files (" + mediaExtensionList() + ")", mediaFolder);
+        throw Error(skipped && !skipped->empty() ? "no readable media file (" + skipped->front() + ")"
+                                                 : "no media files (" + mediaExtensionList() + ")",
+                    mediaFolder);
     return project;
 }
+
 
 } // namespace lipsync

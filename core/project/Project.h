@@ -66,9 +66,12 @@ public:
     // rate and count and reading a transcript and word tier from a sibling <stem>.align (GRID
     // word timings), a plain-text transcript <stem>.lab / <stem>.txt or the spoken words of
     // subtitles <stem>.srt / <stem>.vtt when present. Media paths
-    // are relative to projectFolder. Audio-only files get kAudioOnlyFrameRate. Throws
-    // lipsync::Error naming the file for unreadable media or transcripts.
-    static Project fromMediaFolder(const std::string &mediaFolder, const std::string &projectFolder);
+    // are relative to projectFolder. Audio-only files get kAudioOnlyFrameRate. A clip that cannot
+    // be read (damaged, truncated, no usable frame rate, an unreadable transcript) is left out and
+    // listed in `skipped` ("file: reason"); with `skipped` null, it throws lipsync::Error naming
+    // the file instead. Throws when no clip is left.
+    static Project fromMediaFolder(const std::string &mediaFolder, const std::string &projectFolder,
+                                   std::vector<std::string> *skipped = nullptr);
     // The frame grid of sequences without video (features are still per frame).
     static constexpr double kAudioOnlyFrameRate = 25.0;
 

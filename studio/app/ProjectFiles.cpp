@@ -79,14 +79,27 @@ Task *ProjectFiles::createFromMediaFolder(const QString &mediaFolder, const QStr
     }
     Task *task = m_runner->start(tr("New project from %1").arg(QDir::toNativeSeparators(mediaFolder)),
                                  [this, mediaFolder, projectFolder](Feedback &) {
-                                     Project project = Project::fromMediaFolder(mediaFolder.toStdString(),
-                                                                                projectFolder.toStdString());
+                                     // A damaged clip is listed and left out; the rest go in.
+                                     std::vector<std::string> skipped;
+                                     Project project = Project::fromMediaFolder(
+                                         mediaFolder.toStdString(), projectFolder.toStdString(), &skipped);
                                      project.name = QFileInfo(projectFolder).fileName().toStdString();
                                      project.saveAs(projectFolder.toStdString());
-                                     return TaskRunner::Commit([this, projectFolder, project = std::move(project)]() mutable {
-                                         if (openLoaded(std::move(project), projectFolder, false))
+                                     return TaskRunner::Commit(
+                                         [this, projectFolder, skipped, project = std::move(project)]() mutable {
+                                             if (!openLoaded(std::move(project), projectFolder, false))
+                                                 return;
                                              m_recent->add(projectFolder);
-                                     });
+                                             if (!skipped.empty()) {
+                                                 QStringList lines;
+                                                 for (const std::string &why : skipped)
+                                                     lines << QString::fromStdString(why);
+                                                 ErrorReporter::report(
+                                                     m_window, tr("%n clip(s) could not be read and were left out.", "",
+                                                                  int(skipped.size())),
+                                                     QString(), lines.join(QLatin1Char('\n')));
+                                             }
+                                         });
                                  });
     connect(task, &Task::finished, this, [this, task](Task::State state) {
         if (state == Task::State::Failed)

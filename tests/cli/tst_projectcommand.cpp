@@ -1,7 +1,10 @@
 // `lipsync project create` and `lipsync project check`, run as a user runs them.
 #include "CliRun.h"
 
+#include "project/Project.h"
+
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -69,6 +72,35 @@ private slots:
         QVERIFY2(forced.exitCode == 0, forced.err.constData());
         QVERIFY(forced.out.contains("10 sequences, 750 frames"));
         QVERIFY(QFileInfo(out + "/project.json.bak").isFile());
+    }
+
+    // From nothing: a clip without a transcript goes in (to be transcribed), a damaged or foreign
+    // one is listed and left out, the rest go in.
+    void createSkipsDamagedClips()
+    {
+        QTemporaryDir dir;
+        const QString media = dir.filePath(QStringLiteral("media"));
+        QDir().mkpath(media);
+        QVERIFY(QFile::copy(kDemo + "/media/bbaf2n.mpg", media + "/a.mpg")); // no transcript
+        QVERIFY(QFile::copy(kDemo + "/media/bgin3a.mpg", media + "/b.mpg"));
+        QVERIFY(QFile::copy(kDemo + "/media/bgin3a.align", media + "/b.align"));
+        QFile whole(kDemo + "/media/bwbg8n.mpg");
+        QVERIFY(whole.open(QIODevice::ReadOnly));
+        QFile cut(media + "/broken.mpg");
+        QVERIFY(cut.open(QIODevice::WriteOnly));
+        cut.write(whole.read(20000)); // truncated
+        cut.close();
+        const Run r = runLipsync({"project", "create", "--media", media, "--out", dir.filePath("p"), "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject o = parseJsonObject(r.out);
+        const QJsonArray skipped = o.value("skipped").toArray();
+        QCOMPARE(skipped.size(), 1);
+        QVERIFY(skipped.first().toString().contains("broken.mpg"));
+        QVERIFY(r.err.contains("skipped") && r.err.contains("broken.mpg"));
+        const lipsync::Project p = lipsync::Project::load(dir.filePath("p").toStdString());
+        QCOMPARE(int(p.sequences.size()), 2);
+        QVERIFY(p.sequence("a") && p.sequence("a")->transcript.empty());
+        QCOMPARE(p.sequence("b")->transcript, std::string("bin green in n three again"));
     }
 
     void checkBundledDemo()

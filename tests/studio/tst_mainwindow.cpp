@@ -387,6 +387,13 @@ private slots:
             QVERIFY(transcript.open(QIODevice::WriteOnly));
             transcript.write(id == std::string("bbaf2n") ? "bin blue at f two now\n" : "bin green in three again\n");
         }
+        // A damaged clip among them is listed and left out.
+        QFile whole(demoMedia + QStringLiteral("bwbg8n.mpg"));
+        QVERIFY(whole.open(QIODevice::ReadOnly));
+        QFile cut(clips + QStringLiteral("/damaged.mpg"));
+        QVERIFY(cut.open(QIODevice::WriteOnly));
+        cut.write(whole.read(20000));
+        cut.close();
         const QString before = m_window->document()->folder();
 
         // No clips: the task fails, says why, and the open document stays.
@@ -407,6 +414,8 @@ private slots:
         QVERIFY(!m_window->document()->isReadOnly());
         QVERIFY(!m_window->document()->isModified());
         QCOMPARE(m_window->sequenceView()->model()->rowCount(), 2);
+        QVERIFY2(ErrorReporter::lastMessage().contains(QStringLiteral("damaged.mpg")),
+                 qPrintable(ErrorReporter::lastMessage()));
         QCOMPARE(m_window->document()->sequence(1).transcript, std::string("bin green in three again"));
         QCOMPARE(m_window->document()->sequence(0).frameCount, 75);
         QTRY_VERIFY_WITH_TIMEOUT(m_window->media() && m_window->currentSequence() == 0, 60000);
