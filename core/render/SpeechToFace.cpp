@@ -144,14 +144,14 @@ SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedba
         request.loadedAligner ? request.loadedAligner : std::shared_ptr<const Aligner>(createAligner(request.aligner));
     SpeechToFaceResult result;
     result.alignerModelPath = aligner->name();
-    const Transcript transcript = readTranscript(request.transcriptPath);
+    const std::vector<std::string> words = request.words ? *request.words : readTranscript(request.transcriptPath).words;
     feedback.throwIfCanceled();
     feedback.setProgress(0.1);
 
     const Lexicon lexicon(&PronunciationDictionary::cmu(), Lexicon::parseOverrides(request.pronunciations));
     Feedback aligning(feedback, 0.1, 0.8);
     const AlignerOutput aligned =
-        aligner->align(request.mediaPath, transcript.words, lexicon, &aligning, request.transcriptPath);
+        aligner->align(request.mediaPath, words, lexicon, &aligning, request.transcriptPath);
     result.words = aligned.alignment.words;
     result.phones = aligned.alignment.phones;
     feedback.throwIfCanceled();

@@ -21,6 +21,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,9 @@ struct SpeechToFaceRequest
 {
     std::string mediaPath;          // audio or video with speech
     std::string transcriptPath;     // what readTranscript() reads: .align, .lab, .txt, .TextGrid
+    // The words themselves (typed in the studio), used instead of reading transcriptPath; the
+    // path, if any, then only names them in errors.
+    std::optional<std::vector<std::string>> words;
     std::string modelPath;          // a trained dynamic model (ModelFile)
     std::string aamPath;            // the AAM the model's features are parameters of
     // The same models already in memory (the studio's), used instead of the files when set; the

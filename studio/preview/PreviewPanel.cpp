@@ -34,7 +34,6 @@
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSlider>
-#include <QTemporaryDir>
 #include <QStyle>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -623,13 +622,7 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
         [this, request, words, background, sequence, mediaPath, title, kind, aligners](Feedback &feedback) mutable
         -> TaskRunner::Commit {
             request.loadedAligner = aligners->get(request.aligner);
-            // The shared pipeline (core/render/SpeechToFace) reads the transcript from a file:
-            // the typed words go to a temporary one.
-            QTemporaryDir scratch;
-            if (!scratch.isValid())
-                throw Error("no temporary folder for the transcript", request.mediaPath);
-            request.transcriptPath = scratch.filePath(QStringLiteral("transcript.txt")).toStdString();
-            writePlainTranscript(request.transcriptPath, parsePlainTranscript(words));
+            request.words = parsePlainTranscript(words).words; // the typed words, as typed
             Feedback sub(feedback, 0.0, 0.95);
             auto result = std::make_shared<const SpeechToFaceResult>(lipsync::generateFromSpeech(request, sub));
             std::shared_ptr<GeneratedFaces> faces;
