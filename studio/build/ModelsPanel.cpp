@@ -1,5 +1,6 @@
 #include "build/ModelsPanel.h"
 
+#include "aam/AamModel.h"
 #include "context/ErrorReporter.h"
 #include "context/ModelKinds.h"
 #include "context/ModelStore.h"
@@ -251,6 +252,7 @@ void ModelsPanel::attach(StudioContext *context, QTabWidget *plots)
     connect(doc, &ProjectDocument::documentReset, this, &ModelsPanel::onDocumentReset);
     connect(doc, &ProjectDocument::locationChanged, this, &ModelsPanel::onLocationChanged);
     connect(doc, &ProjectDocument::modelsChanged, this, &ModelsPanel::refreshTrajectory);
+    connect(context, &StudioContext::lipClosureChanged, this, &ModelsPanel::refreshTrajectory);
     connect(doc, &ProjectDocument::sequenceChanged, this, [this](int row) {
         if (m_context && row == m_context->currentSequence())
             refreshTrajectory();
@@ -653,26 +655,15 @@ void ModelsPanel::refreshTrajectory()
     for (Eigen::Index t = 0; t < s.features.rows(); ++t)
         real.values.append(s.features(t, k));
     series.append(real);
-    if (!s.phones.isEmpty()) {
-        std::vector<int> labels;
-        try {
-            labels = frameLabelsFromTier(s.phones, s.clock(), s.id);
-        } catch (const Error &) {
-        }
-        // Each trained model the document uses, in the panel's order.
-        for (const QString &kind : ModelKinds::ids()) {
-            const auto model = m_context->modelStore()->dynamicModel(kind);
-            if (!model || labels.empty() || model->dimension() != s.features.cols())
-                continue;
-            try {
-                const Eigen::MatrixXd generated = model->generate(labels);
-                TrajectoryView::Series g{ModelKinds::name(kind), {}, ModelKinds::colour(kind)};
-                for (Eigen::Index t = 0; t < generated.rows(); ++t)
-                    g.values.append(generated(t, k));
-                series.append(g);
-            } catch (const Error &) {
-            }
-        }
+    // Each trained model the document uses, in the panel's order, as the preview draws it (the
+    // lips closed on /p b m/ when they are there).
+    const std::shared_ptr<const AamModel> aam = m_context->modelStore()->aam();
+    for (const StudioContext::GeneratedTrajectory &generated :
+         m_context->generatedTrajectories(row, aam && aam->combinedModes() == s.features.cols() ? aam.get() : nullptr)) {
+        TrajectoryView::Series g{ModelKinds::name(generated.kind), {}, ModelKinds::colour(generated.kind)};
+        for (Eigen::Index t = 0; t < generated.features.rows(); ++t)
+            g.values.append(generated.features(t, k));
+        series.append(g);
     }
     m_trajectory->setData(tr("%1 — AAM parameter %2").arg(QString::fromStdString(s.id)).arg(k), s.clock(),
                           s.phones, series);

@@ -1,10 +1,17 @@
 #include "context/StudioContext.h"
 
+#include "context/ModelKinds.h"
 #include "context/ModelStore.h"
 #include "context/PlaybackController.h"
 #include "context/SequenceMedia.h"
 #include "document/ProjectDocument.h"
 #include "tasks/TaskRunner.h"
+
+#include "aam/AamModel.h"
+#include "dynamics/DynamicModel.h"
+#include "dynamics/PhoneLabels.h"
+#include "render/BilabialClosure.h"
+#include "util/Error.h"
 
 #include <QUndoStack>
 
@@ -110,6 +117,34 @@ void StudioContext::setClosesLips(bool close)
 void StudioContext::showStatus(const QString &message, int milliseconds)
 {
     emit statusMessage(message, milliseconds);
+}
+
+std::vector<StudioContext::GeneratedTrajectory> StudioContext::generatedTrajectories(int row, const AamModel *aam) const
+{
+    std::vector<GeneratedTrajectory> out;
+    if (row < 0 || row >= m_document->sequenceCount())
+        return out;
+    const Sequence &s = m_document->sequence(row);
+    std::vector<int> labels;
+    try {
+        labels = frameLabelsFromTier(s.phones, s.clock(), s.id);
+    } catch (const Error &) {
+        return out; // no usable phones: nothing to generate from
+    }
+    const Eigen::Index dimension = aam ? aam->combinedModes() : s.features.cols();
+    for (const QString &kind : ModelKinds::ids()) {
+        const auto model = m_models->dynamicModel(kind);
+        if (!model || labels.empty() || model->dimension() != dimension)
+            continue;
+        try {
+            Eigen::MatrixXd generated = model->generate(labels);
+            if (aam && m_closesLips)
+                generated = BilabialClosure::closeOnPhones(*aam, generated, s.phones, s.clock());
+            out.push_back({kind, std::move(generated)});
+        } catch (const Error &) {
+        }
+    }
+    return out;
 }
 
 } // namespace lipsync::studio

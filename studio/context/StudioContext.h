@@ -8,11 +8,15 @@
 #include <QObject>
 #include <QString>
 
+#include <Eigen/Core>
+
 #include <memory>
+#include <vector>
 
 class QUndoStack;
 
 namespace lipsync {
+class AamModel;
 class TaskRunner;
 struct SpeechToFaceResult;
 }
@@ -73,6 +77,18 @@ public:
     void setClosesLips(bool close);
     // A passing message for the user (the window's status bar), shown for `milliseconds`.
     void showStatus(const QString &message, int milliseconds = 0);
+
+    // Every trained dynamic model's trajectory for sequence `row`'s phone labels (ModelKinds
+    // order), as the preview draws and videos export them: the lips closed on /p b m/ with `aam`
+    // when closesLips(). A model whose dimension is not the AAM's (without one: the sequence's
+    // features') is left out; none without phones. The one generation the plot and the preview
+    // share.
+    struct GeneratedTrajectory
+    {
+        QString kind;
+        Eigen::MatrixXd features;
+    };
+    std::vector<GeneratedTrajectory> generatedTrajectories(int row, const AamModel *aam) const;
 
 signals:
     // The current sequence's media reached the views (sequenceId); empty when no sequence is

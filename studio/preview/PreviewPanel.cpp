@@ -315,25 +315,9 @@ void PreviewPanel::rebuild()
             auto faces = std::make_shared<GeneratedFaces>(r.aam, r.renderer, s.clock());
             if (!r.fixedFrame.isNull())
                 faces->setFixedFrame(r.fixedFrame, 0);
-            std::vector<int> labels;
-            try {
-                labels = frameLabelsFromTier(s.phones, s.clock(), s.id);
-            } catch (const Error &) {
-                // no usable phones: nothing to generate from
-            }
-            for (const QString &kind : ModelKinds::ids()) {
-                const auto model = m_context->modelStore()->dynamicModel(kind);
-                if (!model || labels.empty() || model->dimension() != m_aam->combinedModes())
-                    continue;
-                try {
-                    Eigen::MatrixXd generated = model->generate(labels);
-                    // Lips closed on /p b m/ as exported videos close them.
-                    if (m_context->closesLips())
-                        generated = BilabialClosure::closeOnPhones(*m_aam, generated, s.phones, s.clock());
-                    faces->addTrack({kind, ModelKinds::name(kind), ModelKinds::colour(kind), std::move(generated)});
-                } catch (const Error &) {
-                }
-            }
+            // Lips closed on /p b m/ as exported videos close them (StudioContext).
+            for (StudioContext::GeneratedTrajectory &g : m_context->generatedTrajectories(row, m_aam.get()))
+                faces->addTrack({g.kind, ModelKinds::name(g.kind), ModelKinds::colour(g.kind), std::move(g.features)});
             m_faces = std::move(faces);
             m_facesSequence = id;
         }
