@@ -1,7 +1,7 @@
 #include "annotate/FacesController.h"
 
 #include "aam/AamBuilder.h"
-#include "aam/AamFitter.h"
+#include "aam/AutoLandmarks.h"
 #include "aam/FaceDetector.h"
 #include "aam/FaceTracker.h"
 #include "aam/LandmarkScheme.h"
@@ -272,18 +272,10 @@ Task *FacesController::detectLandmarks()
                                 + detector.available() + ")",
                             sequenceId.toStdString());
             feedback.setProgress(0.5);
-            Eigen::VectorXd shape;
-            if (detector.hasDlib()) {
-                const Eigen::VectorXd ibug = detector.dlibLandmarks(image, faces.front());
-                if (ibug.size() == 2 * scheme23::kIbugPointCount)
-                    shape = mapIbug68To23(ibug);
-            }
-            if (shape.size() == 0 && model) {
-                const AamFitter fitter(*model);
-                shape = fitter.fit(image, initialShapeFromDetection(*model, faces.front())).shape;
-            }
-            if (shape.size() == 0)
-                shape = initialShapeFromDetection(templateShape(), faces.front());
+            // dlib's points, else the project's AAM fitted from the detection, else the template:
+            // what `lipsync landmarks detect` and Pick Frames to Label place (core/aam/AutoLandmarks).
+            const Eigen::VectorXd shape =
+                detectAutoLandmarks(image, faces.front(), detector, AutoLandmarkMethod::Auto, model.get()).shape;
             feedback.setProgress(1.0);
             return [this, shape, row, frame] {
                 ProjectDocument *doc = m_context->document();
