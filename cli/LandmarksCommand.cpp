@@ -6,6 +6,7 @@
 #include "BatchRunner.h"
 #include "CommandLine.h"
 
+#include "aam/AamFitter.h"
 #include "aam/AamModel.h"
 #include "aam/AutoLandmarks.h"
 #include "aam/FaceDetectorPool.h"
@@ -45,7 +46,7 @@ struct DetectOptions
     bool useDlib = true;
     int frame = 0;
     bool frameGiven = false;
-    const AamModel *model = nullptr;
+    const AamFitter *fitter = nullptr; // made once for every image
 };
 
 FaceDetectorPaths detectorPaths(const DetectOptions &o)
@@ -89,7 +90,7 @@ QJsonObject detectOne(const std::string &input, const std::string &out, const De
                         + " (detectors: " + detector.available() + ")",
                     input);
     const FaceDetection &face = faces.front();
-    const AutoLandmarks found = detectAutoLandmarks(image, face, detector, o.how, o.model);
+    const AutoLandmarks found = detectAutoLandmarks(image, face, detector, o.how, o.fitter);
     const Eigen::VectorXd &shape = found.shape;
     writePtsFile(out, shape);
     QJsonArray points;
@@ -153,9 +154,12 @@ int runLandmarksDetect(const CommandLine &a)
     o.frame = a.integer("frame", 0);
     o.frameGiven = a.isSet("frame");
     std::optional<AamModel> model;
-    if (a.isSet("aam"))
+    std::optional<AamFitter> fitter;
+    if (a.isSet("aam")) {
         model = AamModel::load(a.value("aam").toStdString());
-    o.model = model ? &*model : nullptr;
+        fitter.emplace(*model);
+    }
+    o.fitter = fitter ? &*fitter : nullptr;
     const QString input = a.positional().front();
     if (isBatchInput(input))
         return detectFolder(a, o, a.value("aam"));

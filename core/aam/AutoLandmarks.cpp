@@ -22,7 +22,7 @@ bool parseAutoLandmarkMethod(const std::string &name, AutoLandmarkMethod &method
 }
 
 AutoLandmarks detectAutoLandmarks(const cv::Mat &bgr, const FaceDetection &face, FaceDetector &detector,
-                                  AutoLandmarkMethod method, const AamModel *model)
+                                  AutoLandmarkMethod method, const AamFitter *fitter)
 {
     AutoLandmarks out;
     const bool dlibAllowed = method == AutoLandmarkMethod::Auto || method == AutoLandmarkMethod::Dlib;
@@ -36,9 +36,8 @@ AutoLandmarks detectAutoLandmarks(const cv::Mat &bgr, const FaceDetection &face,
     }
     if (method == AutoLandmarkMethod::Dlib)
         throw Error("dlib's shape predictor is not available (install libdlib-data)");
-    if (model && method != AutoLandmarkMethod::Template) {
-        const AamFitter fitter(*model);
-        out.shape = fitter.fit(bgr, initialShapeFromDetection(*model, face)).shape;
+    if (fitter && method != AutoLandmarkMethod::Template) {
+        out.shape = fitter->fit(bgr, initialShapeFromDetection(fitter->model(), face)).shape;
         out.method = "aam";
         return out;
     }

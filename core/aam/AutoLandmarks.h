@@ -12,7 +12,7 @@
 
 namespace lipsync {
 
-class AamModel;
+class AamFitter;
 
 enum class AutoLandmarkMethod { Auto, Dlib, Aam, Template };
 
@@ -25,9 +25,10 @@ struct AutoLandmarks
 // "auto", "dlib", "aam" or "template"; false for anything else.
 bool parseAutoLandmarkMethod(const std::string &name, AutoLandmarkMethod &method);
 
-// The points of `face` in `bgr`. Dlib needs a detector made with useDlib; Aam needs `model`.
+// The points of `face` in `bgr`. Dlib needs a detector made with useDlib; Aam needs `fitter` (an
+// AamFitter precomputes per model: callers over many frames make one and pass it to every call).
 // Throws lipsync::Error for Dlib without dlib's predictor.
 AutoLandmarks detectAutoLandmarks(const cv::Mat &bgr, const FaceDetection &face, FaceDetector &detector,
-                                  AutoLandmarkMethod method, const AamModel *model = nullptr);
+                                  AutoLandmarkMethod method, const AamFitter *fitter = nullptr);
 
 } // namespace lipsync

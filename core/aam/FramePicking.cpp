@@ -114,6 +114,9 @@ FramePicking pickFramesToLabel(const std::vector<std::string> &videos, const Fra
     });
     feedback.setStatus("placing the points");
     std::optional<VideoReader> video;
+    std::optional<AamFitter> fitter; // one for every frame
+    if (options.aam)
+        fitter.emplace(*options.aam);
     for (size_t k = 0; k < picks.size(); ++k) {
         feedback.throwIfCanceled();
         const Candidate &c = candidates[picks[k].first];
@@ -124,7 +127,8 @@ FramePicking pickFramesToLabel(const std::vector<std::string> &videos, const Fra
         f.frame = c.frame;
         f.distance = picks[k].second;
         f.pixels = video->frame(c.frame);
-        const AutoLandmarks points = detectAutoLandmarks(f.pixels, c.face, detector, options.method, options.aam);
+        const AutoLandmarks points =
+            detectAutoLandmarks(f.pixels, c.face, detector, options.method, fitter ? &*fitter : nullptr);
         f.shape = points.shape;
         f.method = points.method;
         out.frames.push_back(std::move(f));

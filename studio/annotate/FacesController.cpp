@@ -1,6 +1,7 @@
 #include "annotate/FacesController.h"
 
 #include "aam/AamBuilder.h"
+#include "aam/AamFitter.h"
 #include "aam/AutoLandmarks.h"
 #include "aam/FaceDetector.h"
 #include "aam/FaceTracker.h"
@@ -274,8 +275,12 @@ Task *FacesController::detectLandmarks()
             feedback.setProgress(0.5);
             // dlib's points, else the project's AAM fitted from the detection, else the template:
             // what `lipsync landmarks detect` and Pick Frames to Label place (core/aam/AutoLandmarks).
+            std::optional<AamFitter> fitter; // only when dlib cannot place the points
+            if (model && !detector.hasDlib())
+                fitter.emplace(*model);
             const Eigen::VectorXd shape =
-                detectAutoLandmarks(image, faces.front(), detector, AutoLandmarkMethod::Auto, model.get()).shape;
+                detectAutoLandmarks(image, faces.front(), detector, AutoLandmarkMethod::Auto, fitter ? &*fitter : nullptr)
+                    .shape;
             feedback.setProgress(1.0);
             return [this, shape, row, frame] {
                 ProjectDocument *doc = m_context->document();
