@@ -294,6 +294,8 @@ AamFitResult AamFitter::fitOnce(const cv::Mat &grey, const Eigen::VectorXd &init
         };
         Eigen::VectorXf error, candidateError;
         double residual = evaluate(result.shape, error);
+        if (options.keepHistory)
+            result.history.push_back({result.shape, residual, l});
         double step = 1.0;
         Eigen::VectorXd fullStep; // Gauss-Newton step at the current shape (kept while backtracking)
         for (int it = 0; it < options.maxIterations; ++it) {
@@ -328,6 +330,8 @@ AamFitResult AamFitter::fitOnce(const cv::Mat &grey, const Eigen::VectorXd &init
             result.pose = pose;
             result.shapeParams = params;
             residual = nextResidual;
+            if (options.keepHistory)
+                result.history.push_back({result.shape, residual, l});
             std::swap(error, candidateError);
             fullStep.resize(0);
             step = std::min(1.0, step * 2.0);

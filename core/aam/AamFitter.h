@@ -63,6 +63,9 @@ struct AamFitOptions
     // minimum. 7x the cost. s = 1.5 was chosen by cross-validation on Helen's training faces.
     bool multiStart = false;
     double multiStartSpread = 1.5;
+    // Keep every accepted step's shape and residual in AamFitResult::history (menpofit's
+    // per-iteration result): to see how a fit went, in tests and the tools.
+    bool keepHistory = false;
     // Points that must stay where they are (PointState::Fixed): flat shape and a mask.
     Eigen::VectorXd fixedShape;
     std::vector<bool> fixedMask;
@@ -76,6 +79,16 @@ struct AamFitResult
     double error = 0.0;          // mean squared normalised texture residual after fitting
     int iterations = 0;
     bool converged = false;
+    // With AamFitOptions::keepHistory: the start, then the shape after each accepted step, with
+    // the residual of the level it was fitted on (coarse levels first; residuals of different
+    // levels are not comparable). Each level's residuals decrease.
+    struct Step
+    {
+        Eigen::VectorXd shape;
+        double residual = 0;
+        int level = 0;
+    };
+    std::vector<Step> history;
 };
 
 class AamFitter

@@ -537,10 +537,24 @@ private slots:
             Similarity move = Similarity{1, 0, c.x() + 4, c.y() - 3}.compose(perturb.compose(Similarity{1, 0, -c.x(), -c.y()}));
             const Eigen::VectorXd start = move.apply(e.shape);
             const double before = normalisedMeanError(start, e.shape);
-            const AamFitResult fit = fitter.fit(image, start, options);
+            AamFitOptions withHistory = options;
+            withHistory.keepHistory = true;
+            const AamFitResult fit = fitter.fit(image, start, withHistory);
             const double after = normalisedMeanError(fit.shape, e.shape);
             qInfo("%s: NME %.4f -> %.4f, error %.4f, %d iterations", e.name.c_str(), before, after,
                   fit.error, fit.iterations);
+            // The history: the start projected on the model, then every accepted step to the
+            // result, coarse levels first, each level's residual falling.
+            QVERIFY(fit.history.size() >= 2);
+            QVERIFY((fit.history.back().shape - fit.shape).cwiseAbs().maxCoeff() < 1e-9);
+            QCOMPARE(fit.history.back().residual, fit.error);
+            QVERIFY(normalisedMeanError(fit.history.front().shape, start) < 0.05);
+            for (size_t i = 1; i < fit.history.size(); ++i) {
+                QVERIFY(fit.history[i].level <= fit.history[i - 1].level);
+                if (fit.history[i].level == fit.history[i - 1].level)
+                    QVERIFY(fit.history[i].residual < fit.history[i - 1].residual);
+            }
+            QVERIFY(fitter.fit(image, start, options).history.empty()); // not kept unless asked
             QVERIFY(before > 0.06);
             QVERIFY2(after < 0.04, qPrintable(QString::number(after)));
             improved += after < before;
