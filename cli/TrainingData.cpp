@@ -16,7 +16,7 @@ std::vector<LabelledSequence> projectSequences(const std::string &folder, std::s
 {
     const Project project = Project::load(folder);
     if (projectAam) {
-        const ModelReference *aam = project.model("aam");
+        const ModelReference *aam = project.aam();
         *projectAam = aam ? project.resolve(aam->file) : std::string();
     }
     return loadProjectSequences(project);

@@ -326,7 +326,7 @@ RealismMethod summariseMethod(const std::vector<std::vector<const RealismSequenc
 RealismResult evaluateRealism(const Project &project, const RealismOptions &options, Feedback &feedback)
 {
     const EvaluationOptions &cv = options.crossValidation;
-    const ModelReference *aamReference = project.model("aam");
+    const ModelReference *aamReference = project.aam();
     if (!aamReference)
         throw Error("the project has no AAM (build or import one first)", project.manifestPath());
     for (const std::string &kind : cv.kinds)

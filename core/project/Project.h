@@ -107,6 +107,9 @@ public:
     // The reference of `kind` ("aam", "dpds", ...) the project uses, or null: the latest one, as a
     // model added again under another name supersedes the earlier (ProjectDocument::requestAddModel).
     const ModelReference *model(const std::string &kind) const;
+    // The AAM the project uses (model("aam")): the one whose parameters its features are.
+    const ModelReference *aam() const { return model(kAamKind); }
+    static constexpr const char *kAamKind = "aam";
 
     bool operator==(const Project &other) const; // content, not folder
 

@@ -190,7 +190,7 @@ void FacesController::onDocumentReset()
     m_review.clear();
     m_reviewIndex = -1;
     m_pendingFrame = -1;
-    const ModelReference *ref = m_context->document()->project().model("aam");
+    const ModelReference *ref = m_context->document()->project().aam();
     m_aamFile = ref ? ref->file : std::string();
     if (m_modesView)
         m_modesView->setModel(nullptr);
@@ -205,7 +205,7 @@ void FacesController::onSequenceChanged(int row)
 
 void FacesController::onModelsChanged()
 {
-    const ModelReference *ref = m_context->document()->project().model("aam");
+    const ModelReference *ref = m_context->document()->project().aam();
     const std::string file = ref ? ref->file : std::string();
     if (file == m_aamFile)
         return; // the AAM in use is still the same
@@ -485,7 +485,7 @@ bool FacesController::ensureModel()
     QString problem;
     if (m_context->modelStore()->aam(&problem))
         return true;
-    if (const ModelReference *ref = m_context->document()->project().model("aam"))
+    if (const ModelReference *ref = m_context->document()->project().aam())
         ErrorReporter::report(m_parent, tr("The project's AAM could not be loaded."),
                               QString::fromStdString(m_context->document()->project().resolve(ref->file)), problem);
     return false;
@@ -576,7 +576,7 @@ Task *FacesController::trackSequences(const QList<int> &rows)
         return nullptr;
     if (!ensureModel()) {
         // A project's AAM that failed to load has been reported (file and reason) by ensureModel.
-        if (!m_context->document()->project().model("aam"))
+        if (!m_context->document()->project().aam())
             ErrorReporter::report(m_parent, tr("Tracking needs an AAM."), QString(),
                                   tr("Label a few frames and choose Faces ▸ Build AAM first."));
         return nullptr;

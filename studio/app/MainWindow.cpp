@@ -285,7 +285,7 @@ void MainWindow::updateActiveModels()
     for (const QString &kind : ModelKinds::ids())
         if (project.model(kind.toStdString()))
             dynamic << ModelKinds::name(kind);
-    const ModelReference *aam = project.model("aam");
+    const ModelReference *aam = project.aam();
     const QString text = tr("AAM: %1 · Models: %2")
                              .arg(aam ? QString::fromStdString(aam->name) : tr("none"),
                                   dynamic.isEmpty() ? tr("none trained") : dynamic.join(QStringLiteral(", ")));

@@ -48,7 +48,7 @@ std::shared_ptr<const AamModel> StudyClipRenderer::aam()
 {
     std::lock_guard lock(m_mutex);
     if (!m_aam) {
-        const ModelReference *ref = m_project.model("aam");
+        const ModelReference *ref = m_project.aam();
         if (!ref)
             throw Error("the project has no AAM to synthesise faces with", m_project.manifestPath(), "models");
         m_aam = std::make_shared<const AamModel>(AamModel::load(m_project.resolve(ref->file)));
@@ -70,7 +70,7 @@ std::shared_ptr<const DynamicModel> StudyClipRenderer::model(const std::string &
         const std::string path = m_project.resolve(ref->file);
         std::string recorded;
         std::shared_ptr<const DynamicModel> trained = loadModel(path, {}, &recorded);
-        const ModelReference *aamRef = m_project.model("aam");
+        const ModelReference *aamRef = m_project.aam();
         if (!modelFitsAam(recorded, faces->identifier, aamRef ? aamRef->name : std::string()))
             throw Error("the model was trained for AAM '" + recorded + "', not for the project's AAM", path, "aam");
         slot = m_project.study && m_project.study->holdsOutUtterances() ? withoutStudyUtterances(*trained)

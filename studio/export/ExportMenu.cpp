@@ -134,14 +134,14 @@ void ExportMenu::updateActions()
     action(Kind::Video)->setText(tr("Generated &Video%1 (MP4)…").arg(of));
     action(Kind::SideBySide)->setText(tr("Real and Generated &Side by Side%1 (MP4)…").arg(of));
     action(Kind::Images)->setText(tr("Generated &Frames%1 (PNG)…").arg(of));
-    const bool canGenerate = speech || (hasSequence && dynamicModel(project) && project.model("aam"));
+    const bool canGenerate = speech || (hasSequence && dynamicModel(project) && project.aam());
     action(Kind::Video)->setEnabled(canGenerate);
     action(Kind::SideBySide)->setEnabled(speech ? speech->hasVideo : canGenerate);
     action(Kind::Images)->setEnabled(canGenerate);
     action(Kind::Features)->setEnabled(hasSequence && document->sequence(row).features.rows() > 0);
     action(Kind::Alignment)->setEnabled(hasSequence && !document->sequence(row).phones.isEmpty());
     action(Kind::Landmarks)->setEnabled(hasSequence && !document->sequence(row).landmarks.empty());
-    action(Kind::Aam)->setEnabled(project.model("aam") != nullptr);
+    action(Kind::Aam)->setEnabled(project.aam() != nullptr);
     action(Kind::Model)->setEnabled(dynamicModel(project) != nullptr);
 }
 
@@ -212,7 +212,7 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
     ModelStore *store = m_context->modelStore();
     const Sequence sequence = projectWide ? Sequence() : document->sequence(row);
     const ModelReference *model = dynamicModel(project, modelKind);
-    const ModelReference *aam = project.model("aam");
+    const ModelReference *aam = project.aam();
     const std::string target = path.toStdString();
     const QString id = QString::fromStdString(sequence.id);
     TaskRunner::Work work;

@@ -105,7 +105,7 @@ QString LiveController::problem(const QString &kind) const
         return tr("Open a project to go live: the face is drawn with its appearance model and animated by its "
                   "trained dynamic model.");
     ModelStore *store = m_context->modelStore();
-    if (!document->project().model("aam"))
+    if (!document->project().aam())
         return tr("The project has no appearance model. Build one (Faces ▸ Build AAM), then train a dynamic model "
                   "in the Models panel.");
     QString why;

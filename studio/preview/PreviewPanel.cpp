@@ -56,7 +56,7 @@ QImage neutralFrame(FaceRenderer &renderer)
 // The AAM the project refers to (its file), or "" if it has none.
 std::string projectAamPath(const Project &project)
 {
-    const ModelReference *aam = project.model("aam");
+    const ModelReference *aam = project.aam();
     return aam ? project.resolve(aam->file) : std::string();
 }
 
