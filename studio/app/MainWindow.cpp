@@ -128,13 +128,6 @@ MainWindow::MainWindow(QWidget *parent)
     });
     connect(m_undo, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(m_transport, &TransportBar::frameRequested, this, &MainWindow::setCurrentFrame);
-    // A click in the timeline moves what it shows: the sequence, or the Preview's new speech.
-    connect(waveformView(), &WaveformView::timeClicked, this, [this](double t) {
-        if (m_timeline->isShowingGeneratedSpeech())
-            m_preview->seekSpeech(t);
-        else if (media())
-            setCurrentFrame(std::max(0, media()->clock.frameAt(t)));
-    });
     connect(m_playback, &PlaybackController::frameReached, this, [this](int frame) {
         if (media() && m_playback->mediaPath() == media()->mediaPath) // not the preview's new speech
             setCurrentFrame(frame);

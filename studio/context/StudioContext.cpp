@@ -63,6 +63,14 @@ void StudioContext::setCurrentFrame(int frame)
     emit currentFrameChanged(frame);
 }
 
+void StudioContext::seek(double seconds)
+{
+    if (m_speech)
+        emit speechSeekRequested(seconds);
+    else if (m_media)
+        setCurrentFrame(std::max(0, m_media->clock.frameAt(seconds)));
+}
+
 void StudioContext::togglePlayback()
 {
     if (m_playback->isPlaying()) {

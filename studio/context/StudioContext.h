@@ -56,6 +56,9 @@ public:
     // Moves to `frame` of the current sequence (clamped to its frames) and announces it; nothing
     // without media or when it is the frame shown.
     void setCurrentFrame(int frame);
+    // Shows the moment `seconds` of what the timeline shows: the new speech's frame at that time
+    // (speechSeekRequested, for the Preview that plays it), else the current sequence's.
+    void seek(double seconds);
     // Plays the current sequence from the current frame, or pauses the player.
     void togglePlayback();
     // The stretch of time selected in the timeline (Loop selection plays it); false if none.
@@ -98,6 +101,8 @@ signals:
     void currentFrameChanged(int frame);
     void statusMessage(const QString &message, int milliseconds);
     void shownSpeechChanged();
+    // seek() on the new speech: its frame at `seconds` (the Preview shows it).
+    void speechSeekRequested(double seconds);
     void compositeOptionsChanged();
     void lipClosureChanged();
 

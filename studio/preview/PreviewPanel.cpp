@@ -135,6 +135,7 @@ PreviewPanel::~PreviewPanel()
 void PreviewPanel::attach(StudioContext *context)
 {
     m_context = context;
+    connect(context, &StudioContext::speechSeekRequested, this, &PreviewPanel::seekSpeech);
     PlaybackController *player = context->playback();
     connect(player, &PlaybackController::playingChanged, this, [this](bool playing) {
         m_play->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));

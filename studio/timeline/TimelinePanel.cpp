@@ -246,6 +246,8 @@ void TimelinePanel::attach(StudioContext *context)
     m_document = context->document();
     publishAlignerChoice();
     m_waveform->setEditable(true);
+    // A click moves what the timeline shows: the sequence, or the Preview's new speech.
+    connect(m_waveform, &WaveformView::timeClicked, context, &StudioContext::seek);
     connect(m_document, &ProjectDocument::documentReset, this, [this] { showSequence(-1); });
     connect(m_document, &ProjectDocument::sequenceChanged, this, [this](int row) {
         if (row == m_row)
