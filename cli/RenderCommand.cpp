@@ -75,7 +75,7 @@ int runRender(const CommandLine &args)
         aligner.align(args.value("media"), transcript.words, args.value("transcript"));
     Feedback feedback;
     SpeechVideoReport report;
-    report.generated = generateFromPhones(request, aligned.alignment.phones, aligned.alignment.words, feedback);
+    report.generated = generateFromAlignment(request, aligned, feedback);
     report.generated.alignerModelPath = aligner.modelName().toStdString();
     report.generated.seconds = timer.elapsed() / 1000.0;
     timer.restart();

@@ -77,6 +77,18 @@ Loaded loadInputs(const SpeechToFaceRequest &request)
 // when rendering into its frames at its rate, else as many frames as the sound lasts), the
 // generated trajectory, and the sound for export.
 void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, double audioDuration,
+                      const MfccOptions &audioFrames, SpeechToFaceResult &result, Feedback &feedback);
+
+// The phones and words of an aligner's output, voted onto the frames with its own audio frames.
+void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, const AlignerOutput &aligned,
+                      SpeechToFaceResult &result, Feedback &feedback)
+{
+    result.words = aligned.alignment.words;
+    result.phones = aligned.alignment.phones;
+    labelAndGenerate(request, in, aligned.duration, aligned.audioFrames, result, feedback);
+}
+
+void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, double audioDuration,
                       const MfccOptions &audioFrames, SpeechToFaceResult &result, Feedback &feedback)
 {
     result.mediaPath = request.mediaPath;
@@ -152,11 +164,21 @@ SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedba
     Feedback aligning(feedback, 0.1, 0.8);
     const AlignerOutput aligned =
         aligner->align(request.mediaPath, words, lexicon, &aligning, request.transcriptPath);
-    result.words = aligned.alignment.words;
-    result.phones = aligned.alignment.phones;
     feedback.throwIfCanceled();
     feedback.setProgress(0.8);
-    labelAndGenerate(request, in, aligned.duration, aligned.audioFrames, result, feedback);
+    labelAndGenerate(request, in, aligned, result, feedback);
+    result.seconds = secondsSince(start);
+    return result;
+}
+
+SpeechToFaceResult generateFromAlignment(const SpeechToFaceRequest &request, const AlignerOutput &aligned,
+                                         Feedback &feedback)
+{
+    const auto start = std::chrono::steady_clock::now();
+    feedback.setStatus("Generating for " + request.mediaPath);
+    const Loaded in = loadInputs(request);
+    SpeechToFaceResult result;
+    labelAndGenerate(request, in, aligned, result, feedback);
     result.seconds = secondsSince(start);
     return result;
 }

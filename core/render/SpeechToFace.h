@@ -89,6 +89,10 @@ struct SpeechToFaceResult
 // sound, a transcript that does not fit the audio, a model made for another AAM, ...); Canceled.
 // Words are pronounced from request.pronunciations, then the CMU dictionary, espeak-ng for the rest.
 SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedback &feedback);
+// The same from an alignment the caller made (`lipsync render`, with the aligner options every
+// aligning command shares): its phones voted onto the frames with its own audio frames.
+SpeechToFaceResult generateFromAlignment(const SpeechToFaceRequest &request, const AlignerOutput &aligned,
+                                         Feedback &feedback);
 // The same for a recording already aligned (a project sequence's phone tier, and its words if
 // any): no aligner; request.transcriptPath and the aligner are not used.
 SpeechToFaceResult generateFromPhones(const SpeechToFaceRequest &request, const Tier &phones,
@@ -129,7 +133,8 @@ struct SpeechVideoReport
     double renderSeconds = 0.0; // tracking + rendering + encoding
 };
 
-// Everything at once (the CLI's `lipsync render`): generate, render and write `outPath`.
+// Everything at once: generate from speech, render and write `outPath` (what `lipsync render` does
+// step by step: align with its aligner options, generateFromAlignment, makeRenderer, export).
 SpeechVideoReport renderSpeechVideo(const SpeechToFaceRequest &request, const std::string &outPath,
                                     Feedback &feedback, const RenderOptions &options = {});
 
