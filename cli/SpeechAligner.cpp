@@ -25,7 +25,8 @@ std::vector<CommandOption> SpeechAligner::options(const QStringList &alignerAlia
          QStringLiteral("ours: leave the model's word-boundary correction (aligner calibrate) unapplied: the HMM's "
                         "own boundaries, as the paper's aligner")},
         {QStringLiteral("project"), QStringLiteral("DIR"),
-         QStringLiteral("pronounce words with the project's pronunciations first")},
+         QStringLiteral("pronounce words with the project's pronunciations first, and align with the project's own "
+                        "aligner model when it names one (unless --aligner)")},
         pronunciationsOption(),
     };
     if (!withProject)
@@ -43,12 +44,18 @@ SpeechAligner::SpeechAligner(const CommandLine &args, const QString &projectFold
 {
     AlignerChoice choice{args.value(QStringLiteral("aligner")).toStdString(), args.isSet(QStringLiteral("adapt"))};
     choice.boundaryCorrection = !args.isSet(QStringLiteral("no-boundary-correction"));
+    std::map<std::string, std::string> projectPronunciations;
+    if (!projectFolder.isEmpty()) {
+        const Project project = Project::load(projectFolder.toStdString());
+        projectPronunciations = project.pronunciations;
+        // The aligner the project says its speaker's speech is aligned with (a model reference
+        // of kind "aligner": `aligner train`/`adapt` on its recordings), unless --aligner names one.
+        if (const ModelReference *own = project.model("aligner"); own && choice.model.empty())
+            choice.model = project.resolve(own->file);
+    }
     if (!choice.isSphinx())
         choice.model = alignerModelOrDefault(QString::fromStdString(choice.model), args.spec().name).toStdString();
     m_aligner = createAligner(choice);
-    std::map<std::string, std::string> projectPronunciations;
-    if (!projectFolder.isEmpty())
-        projectPronunciations = Project::load(projectFolder.toStdString()).pronunciations;
     m_lexicon = makeLexicon(args.value(QStringLiteral("pronunciations")), projectPronunciations);
 }
 

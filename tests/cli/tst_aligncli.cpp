@@ -279,6 +279,20 @@ private slots:
                 phones << v.toObject().value("label").toString();
         QCOMPARE(phones.mid(phones.size() - 2), (QStringList{"N", "AW"}));
 
+        // A project that names its own aligner (its speaker's) aligns with it, unless --aligner
+        // names another.
+        QDir(folder).mkpath(QStringLiteral("aligners"));
+        QVERIFY(QFile::copy(QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/aligner/grid-s1.aligner"),
+                            folder + QStringLiteral("/aligners/speaker.aligner")));
+        project.models.push_back({"aligner", "the speaker's", "aligners/speaker.aligner"});
+        project.save(folder.toStdString());
+        r = runLipsync(QStringList(args) << "--project" << folder);
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY(QJsonDocument::fromJson(r.out).object().value("model").toString().endsWith("aligners/speaker.aligner"));
+        r = runLipsync(QStringList(args) << "--project" << folder << "--aligner"
+                                         << QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/aligner/grid-s1.aligner"));
+        QVERIFY(QJsonDocument::fromJson(r.out).object().value("model").toString().endsWith("grid-s1.aligner"));
+
         // A broken project is reported naming its manifest.
         QFile bad(folder + "/project.json");
         QVERIFY(bad.open(QIODevice::WriteOnly | QIODevice::Truncate));
