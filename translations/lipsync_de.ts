@@ -518,72 +518,72 @@
 <context>
     <name>lipsync::studio::FacesController</name>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="82"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="83"/>
         <source>&amp;Detect Landmarks</source>
         <translation>Landmarken &amp;erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="83"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="84"/>
         <source>&amp;Copy Previous Frame&apos;s Points</source>
         <translation>Punkte des vorigen Bildes &amp;kopieren</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="84"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="85"/>
         <source>&amp;Onion Skin of Previous Frame</source>
         <translation>&amp;Onion-Skin (vorheriges Bild)</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="86"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="87"/>
         <source>Next &amp;Unlabelled Frame</source>
         <translation>Nächstes &amp;unbeschriftetes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="87"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="88"/>
         <source>Next &amp;Worst-Fitted Frame</source>
         <translation>Nächstes &amp;schlecht angepasstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="88"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="89"/>
         <source>&amp;Pick Frames to Label…</source>
         <translation>Bilder zum &amp;Beschriften auswählen…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="89"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="90"/>
         <source>Next &amp;Picked Frame to Review</source>
         <translation>Nächstes ausgewähltes Bild &amp;prüfen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="90"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="91"/>
         <source>&amp;Build AAM</source>
         <translation>AAM e&amp;rstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="91"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="92"/>
         <source>&amp;Track Sequence</source>
         <translation>Sequenz &amp;tracken</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="92"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="93"/>
         <source>Track &amp;All Sequences</source>
         <translation>&amp;Alle Sequenzen tracken</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="93"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="94"/>
         <source>&amp;Modes of Variation…</source>
         <translation>&amp;Variationsmoden…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="95"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="96"/>
         <source>Fa&amp;ces</source>
         <translation>&amp;Gesichter</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="124"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="125"/>
         <source>Pick Frames to Label</source>
         <translation>Bilder zum Beschriften auswählen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="125"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="126"/>
         <source>Frames to pick from the %n clip(s) (an AAM with the paper&apos;s 32 parameters wants 100-200):</source>
         <translation>
             <numerusform>Anzahl der Bilder aus dem Clip (ein AAM mit den 32 Parametern des Artikels braucht 100–200):</numerusform>
@@ -591,38 +591,38 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="239"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="240"/>
         <source>Fit error %1</source>
         <translation>Anpassungsfehler %1</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="240"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="241"/>
         <source>No face found by the tracker</source>
         <translation>Der Tracker hat kein Gesicht gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="264"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="265"/>
         <source>Detect landmarks in %1, frame %2</source>
         <translation>Landmarken in %1, Bild %2 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="266"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="267"/>
         <source>Finding the face…</source>
         <translation>Gesicht wird gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="297"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="294"/>
         <source>Detect landmarks in frame %1</source>
         <translation>Landmarken in Bild %1 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="300"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="297"/>
         <source>No landmarks were detected.</source>
         <translation>Es wurden keine Landmarken erkannt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="318"/>
-        <location filename="../studio/annotate/FacesController.cpp" line="356"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="315"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="353"/>
         <source>Pick %n frame(s) to label</source>
         <translation>
             <numerusform>%n Bild zum Beschriften auswählen</numerusform>
@@ -630,7 +630,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="364"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="361"/>
         <source>Picked %1 of %2 frames with a face from %n clip(s); Shift+W shows them, the most doubtful first, then Build AAM.</source>
         <translation>
             <numerusform>%1 von %2 Bildern mit Gesicht aus einem Clip ausgewählt; Umschalt+W zeigt sie, die zweifelhaftesten zuerst, danach AAM erstellen.</numerusform>
@@ -638,57 +638,57 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="372"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="369"/>
         <source>No frames could be picked.</source>
         <translation>Es konnten keine Bilder ausgewählt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="381"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="378"/>
         <source>Picked frame %1 of %2: %3, frame %4</source>
         <translation>Ausgewähltes Bild %1 von %2: %3, Bild %4</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="387"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="384"/>
         <source> (fit not measured)</source>
         <translation> (Anpassung nicht gemessen)</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="390"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="387"/>
         <source>; an AAM built without it moves its points by %1 % of the eye distance (most doubtful first)</source>
         <translation>; ein AAM ohne dieses Bild verschiebt seine Punkte um %1 % des Augenabstands (das zweifelhafteste zuerst)</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="434"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="431"/>
         <source>Copy points of frame %1 to frame %2</source>
         <translation>Punkte von Bild %1 nach Bild %2 kopieren</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="453"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="450"/>
         <source>Every frame of this sequence is labelled.</source>
         <translation>Alle Bilder dieser Sequenz sind beschriftet.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="463"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="460"/>
         <source>Track this sequence first to rank its frames by fit error.</source>
         <translation>Tracken Sie diese Sequenz zuerst, um ihre Bilder nach Anpassungsfehler zu ordnen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="492"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="489"/>
         <source>The project&apos;s AAM could not be loaded.</source>
         <translation>Das AAM des Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="516"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="513"/>
         <source>An AAM needs at least 3 frames with all 23 points; this project has %1.</source>
         <translation>Ein AAM braucht mindestens 3 Bilder mit allen 23 Punkten; dieses Projekt hat %1.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="518"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="515"/>
         <source>Label more frames (Detect Landmarks, then correct the points).</source>
         <translation>Beschriften Sie weitere Bilder (Landmarken erkennen, dann die Punkte korrigieren).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="527"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="524"/>
         <source>Build AAM from %n frame(s)</source>
         <translation>
             <numerusform>AAM aus %n Bild erstellen</numerusform>
@@ -696,22 +696,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="529"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="526"/>
         <source>Reading the labelled frames…</source>
         <translation>Beschriftete Bilder werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="557"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="554"/>
         <source>Build AAM %1</source>
         <translation>AAM %1 erstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="559"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="556"/>
         <source>AAM %1 built from %2 frames: %3 combined modes%4</source>
         <translation>AAM %1 aus %2 Bildern erstellt: %3 kombinierte Moden%4</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="563"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="560"/>
         <source> (%n frame(s) skipped)</source>
         <translation>
             <numerusform> (%n Bild übersprungen)</numerusform>
@@ -719,27 +719,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="568"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="565"/>
         <source>The AAM could not be built.</source>
         <translation>Das AAM konnte nicht erstellt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="583"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="580"/>
         <source>Tracking needs an AAM.</source>
         <translation>Zum Tracken wird ein AAM benötigt.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="584"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="581"/>
         <source>Label a few frames and choose Faces ▸ Build AAM first.</source>
         <translation>Beschriften Sie einige Bilder und wählen Sie zuerst Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="602"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="599"/>
         <source>Track %1</source>
         <translation>%1 tracken</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="602"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="599"/>
         <source>Track %n sequence(s)</source>
         <translation>
             <numerusform>%n Sequenz tracken</numerusform>
@@ -747,7 +747,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="670"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="667"/>
         <source>Tracking failed.</source>
         <translation>Das Tracking ist fehlgeschlagen.</translation>
     </message>
@@ -1469,193 +1469,193 @@
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="143"/>
+        <location filename="../studio/app/MainWindow.cpp" line="136"/>
         <source>Playing without sound: %1.</source>
         <translation>Wiedergabe ohne Ton: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="149"/>
-        <location filename="../studio/app/MainWindow.cpp" line="150"/>
+        <location filename="../studio/app/MainWindow.cpp" line="142"/>
+        <location filename="../studio/app/MainWindow.cpp" line="143"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="171"/>
+        <location filename="../studio/app/MainWindow.cpp" line="164"/>
         <source>Generated &amp;Face</source>
         <translation>Generiertes &amp;Gesicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="177"/>
+        <location filename="../studio/app/MainWindow.cpp" line="170"/>
         <source>&amp;Whole Face (Eyes Included)</source>
         <translation>&amp;Ganzes Gesicht (mit Augen)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="179"/>
+        <location filename="../studio/app/MainWindow.cpp" line="172"/>
         <source>Synthesise the whole modelled face; otherwise the recording&apos;s own eyes and upper face are kept</source>
         <translation>Das ganze modellierte Gesicht synthetisieren; sonst bleiben die Augen und das Obergesicht der Aufnahme erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="173"/>
+        <location filename="../studio/app/MainWindow.cpp" line="166"/>
         <source>&amp;Synthesised Skin</source>
         <translation>&amp;Synthetisierte Haut</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="175"/>
+        <location filename="../studio/app/MainWindow.cpp" line="168"/>
         <source>Paste the AAM&apos;s synthesis of the lower face, skin included; otherwise the recording&apos;s own lower face is moved to the generated shape and only the inside of the mouth is synthesised</source>
         <translation>Die AAM-Synthese des unteren Gesichts samt Haut einsetzen; sonst wird das eigene untere Gesicht der Aufnahme in die erzeugte Form bewegt und nur das Mundinnere synthetisiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="181"/>
+        <location filename="../studio/app/MainWindow.cpp" line="174"/>
         <source>&amp;Detail from Training Images</source>
         <translation>&amp;Details aus Trainingsbildern</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="183"/>
+        <location filename="../studio/app/MainWindow.cpp" line="176"/>
         <source>Add the teeth, lip highlights and skin detail of the AAM&apos;s nearest training images to the model&apos;s smooth texture</source>
         <translation>Zähne, Glanzlichter der Lippen und Hautdetails der nächstgelegenen Trainingsbilder des AAM zur glatten Textur des Modells hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="185"/>
+        <location filename="../studio/app/MainWindow.cpp" line="178"/>
         <source>&amp;Match the Frame&apos;s Lighting</source>
         <translation>&amp;Beleuchtung an das Bild anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="202"/>
+        <location filename="../studio/app/MainWindow.cpp" line="195"/>
         <source>&amp;Close the Lips on /p b m/</source>
         <translation>&amp;Lippen bei /p b m/ schließen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="204"/>
+        <location filename="../studio/app/MainWindow.cpp" line="197"/>
         <source>Close the generated lips on the bilabials /p b m/, as speakers do; off: the model&apos;s trajectory as generated</source>
         <translation>Die erzeugten Lippen bei den Bilabialen /p b m/ schließen, wie Sprecher es tun; aus: die Trajektorie des Modells, wie sie erzeugt wurde</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="250"/>
+        <location filename="../studio/app/MainWindow.cpp" line="243"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="254"/>
+        <location filename="../studio/app/MainWindow.cpp" line="247"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="264"/>
+        <location filename="../studio/app/MainWindow.cpp" line="257"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="268"/>
+        <location filename="../studio/app/MainWindow.cpp" line="261"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="289"/>
+        <location filename="../studio/app/MainWindow.cpp" line="282"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="290"/>
+        <location filename="../studio/app/MainWindow.cpp" line="283"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="291"/>
+        <location filename="../studio/app/MainWindow.cpp" line="284"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="293"/>
+        <location filename="../studio/app/MainWindow.cpp" line="286"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="324"/>
+        <location filename="../studio/app/MainWindow.cpp" line="317"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="327"/>
+        <location filename="../studio/app/MainWindow.cpp" line="320"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="342"/>
+        <location filename="../studio/app/MainWindow.cpp" line="335"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="354"/>
+        <location filename="../studio/app/MainWindow.cpp" line="347"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="365"/>
+        <location filename="../studio/app/MainWindow.cpp" line="358"/>
         <source>&amp;Live: Speak and Watch the Face</source>
         <translation>&amp;Live: Sprechen und das Gesicht beobachten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="367"/>
+        <location filename="../studio/app/MainWindow.cpp" line="360"/>
         <source>Speak into the microphone and watch the face move</source>
         <translation>Ins Mikrofon sprechen und dem Gesicht beim Bewegen zusehen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="371"/>
+        <location filename="../studio/app/MainWindow.cpp" line="364"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="375"/>
+        <location filename="../studio/app/MainWindow.cpp" line="368"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="379"/>
+        <location filename="../studio/app/MainWindow.cpp" line="372"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="380"/>
+        <location filename="../studio/app/MainWindow.cpp" line="373"/>
         <source>&amp;User Guide</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="383"/>
+        <location filename="../studio/app/MainWindow.cpp" line="376"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="392"/>
+        <location filename="../studio/app/MainWindow.cpp" line="385"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="442"/>
+        <location filename="../studio/app/MainWindow.cpp" line="435"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="505"/>
+        <location filename="../studio/app/MainWindow.cpp" line="498"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="513"/>
+        <location filename="../studio/app/MainWindow.cpp" line="506"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="542"/>
+        <location filename="../studio/app/MainWindow.cpp" line="535"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="544"/>
+        <location filename="../studio/app/MainWindow.cpp" line="537"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="548"/>
+        <location filename="../studio/app/MainWindow.cpp" line="541"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1663,43 +1663,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="559"/>
+        <location filename="../studio/app/MainWindow.cpp" line="552"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="560"/>
+        <location filename="../studio/app/MainWindow.cpp" line="553"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="560"/>
+        <location filename="../studio/app/MainWindow.cpp" line="553"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="566"/>
+        <location filename="../studio/app/MainWindow.cpp" line="559"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="584"/>
+        <location filename="../studio/app/MainWindow.cpp" line="577"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="612"/>
-        <location filename="../studio/app/MainWindow.cpp" line="620"/>
+        <location filename="../studio/app/MainWindow.cpp" line="605"/>
+        <location filename="../studio/app/MainWindow.cpp" line="613"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="619"/>
+        <location filename="../studio/app/MainWindow.cpp" line="612"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="263"/>
+        <location filename="../studio/app/MainWindow.cpp" line="256"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -1725,254 +1725,254 @@
 <context>
     <name>lipsync::studio::ModelsPanel</name>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="55"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="56"/>
         <source>Appearance model</source>
         <translation>Erscheinungsmodell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="56"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="57"/>
         <source>Phoneme aligner</source>
         <translation>Phonem-Aligner</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="79"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
         <source>Build AAM…</source>
         <translation>AAM erstellen …</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="101"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="102"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="101"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="102"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="101"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="102"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="276"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="278"/>
         <source>Made in this session; written when the project is saved</source>
         <translation>In dieser Sitzung erstellt; wird beim Speichern des Projekts geschrieben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="288"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="290"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
         <source>Train</source>
         <translation>Trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="66"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="67"/>
         <source>%1 states for phones in context</source>
         <translation>%1 Zustände für Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="67"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="68"/>
         <source>one state per phone</source>
         <translation>ein Zustand je Phonem</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="70"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="71"/>
         <source>%1, full covariances</source>
         <translation>%1, volle Kovarianzen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="72"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="73"/>
         <source>%1 parameters, %2, variance compensation</source>
         <translation>%1 Parameter, %2, Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="73"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="74"/>
         <source>%1 parameters, %2</source>
         <translation>%1 Parameter, %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="82"/>
         <source>Evaluate (k-fold)</source>
         <translation>Evaluieren (k-fach)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="248"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="82"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="249"/>
         <source>Realism</source>
         <translation>Realismus</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="84"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="85"/>
         <source>Variance compensation</source>
         <translation>Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="85"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="86"/>
         <source>Phones in context</source>
         <translation>Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="85"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="86"/>
         <source>Paper&apos;s models</source>
         <translation>Modelle des Artikels</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="111"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="112"/>
         <source>VarPro / Levenberg–Marquardt</source>
         <translation>VarPro / Levenberg–Marquardt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="112"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
         <source>Gradient ascent (paper)</source>
         <translation>Gradientenaufstieg (Artikel)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="114"/>
         <source>Diagonal A</source>
         <translation>Diagonales A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="114"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="115"/>
         <source>Full A</source>
         <translation>Volles A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="117"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
         <source>Covariance by CV</source>
         <translation>Kovarianz per KV</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="119"/>
         <source>Diagonal covariance</source>
         <translation>Diagonale Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="119"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="120"/>
         <source>Full covariance</source>
         <translation>Volle Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="141"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="142"/>
         <source>Scale each model&apos;s generated trajectories to the spread of the training features: lips that open and close as much as the recording&apos;s, at the cost of a larger error per frame. Off: the paper&apos;s models exactly.</source>
         <translation>Skaliert die erzeugten Trajektorien jedes Modells auf die Streuung der Trainingsmerkmale: Lippen, die sich so weit öffnen und schließen wie in der Aufnahme, um den Preis eines größeren Fehlers je Bild. Aus: genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="149"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="150"/>
         <source>Train each model on states for phones in their context (the neighbouring phones and the part of the phone), tied by decision trees: lips that anticipate the next sound. Off: one state per phone, the paper&apos;s models exactly.</source>
         <translation>Jedes Modell auf Zuständen für Phoneme in ihrem Kontext trainieren (die benachbarten Phoneme und der Teil des Phonems), durch Entscheidungsbäume gebündelt: Lippen, die den nächsten Laut vorwegnehmen. Aus: ein Zustand je Phonem, genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="156"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="157"/>
         <source>Train and evaluate the paper&apos;s models exactly: no compensation or phones in context, Brand with diagonal covariances, the DPDS by the paper&apos;s Algorithm 1 and gradient ascent without the variance prior; Realism renders without lip closure, colour matching or exemplar detail.</source>
         <translation>Genau die Modelle des Artikels trainieren und evaluieren: keine Kompensation und keine Phone im Kontext, Brand mit diagonalen Kovarianzen, das DPDS mit Algorithmus 1 des Artikels und Gradientenanstieg ohne Varianz-Prior; Realismus rendert ohne Lippenschluss, Farbanpassung und Exemplar-Details.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="178"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="179"/>
         <source>folds: </source>
         <translation>Teilmengen (k-fach): </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="188"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="189"/>
         <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
         <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="189"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="190"/>
         <source>Train the checked models on every sequence with features and phonemes</source>
         <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="190"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="191"/>
         <source>Stop training or evaluation; the previous models stay</source>
         <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="191"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="192"/>
         <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
         <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="196"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="197"/>
         <source>Render the held-out sequences of the same folds into their recordings and measure the lips with dlib&apos;s landmarks: opening correlation, articulation, /p b m/ closures, lag, sharpness, seam</source>
         <translation>Die zurückgehaltenen Sequenzen derselben Folds in ihre Aufnahmen rendern und die Lippen mit dlibs Landmarken messen: Korrelation der Öffnung, Artikulation, Verschlüsse bei /p b m/, Versatz, Schärfe, Naht</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="224"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="225"/>
         <source>AAM parameter </source>
         <translation>AAM-Parameter </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="225"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="226"/>
         <source>Which AAM parameter to plot over time</source>
         <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="235"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="236"/>
         <source>Not evaluated yet: Evaluate (k-fold) in the Models panel draws the paper&apos;s Figure 4 for the checked models.</source>
         <translation>Noch nicht evaluiert: Evaluieren (k-fach) im Modelle-Panel zeichnet Abbildung 4 des Artikels für die gewählten Modelle.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="240"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="241"/>
         <source>Not measured yet: Realism in the Models panel renders held-out sequences and measures the lips on them.</source>
         <translation>Noch nicht gemessen: Realismus im Modelle-Panel rendert zurückgehaltene Sequenzen und misst die Lippen darauf.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="245"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="246"/>
         <source>Trajectory</source>
         <translation>Trajektorie</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="246"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="247"/>
         <source>Training</source>
         <translation>Training</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="247"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="248"/>
         <source>Evaluation</source>
         <translation>Evaluation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="324"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="326"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter tracken und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="377"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="379"/>
         <source>%1 of %2 phones never occur in the footage: their face is guessed from the average</source>
         <translation>%1 von %2 Phonen kommen im Material nie vor: ihr Gesicht wird aus dem Durchschnitt geschätzt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="381"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="383"/>
         <source>%1 have fewer than %2 frames</source>
         <translation>%1 haben weniger als %2 Bilder</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="383"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="385"/>
         <source>Phones in context made no context states: too little footage for them</source>
         <translation>Phone im Kontext haben keine Kontextzustände gebildet: zu wenig Material dafür</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="387"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="389"/>
         <source>More footage of the person (%1 s of speech now) covers more.</source>
         <translation>Mehr Material der Person (jetzt %1 s Sprache) deckt mehr ab.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="418"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="453"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="420"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="455"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="420"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="422"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -1980,27 +1980,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="441"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="443"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="464"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="466"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="466"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="468"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="473"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="475"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="492"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="494"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds: mean and 95 % interval over the folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen: Mittelwert und 95-%-Intervall über die Teilmengen.</numerusform>
@@ -2008,17 +2008,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="551"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="553"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="552"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="554"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="487"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="489"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -2026,12 +2026,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="121"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="122"/>
         <source>Brand&apos;s output covariances. By CV: diagonal or full, whichever of the two generates held-out training sequences more closely (cross-validation). Diagonal: the paper&apos;s model.</source>
         <translation>Brands Ausgabekovarianzen. Per KV: diagonal oder voll, je nachdem, welche der beiden zurückgehaltene Trainingssequenzen genauer erzeugt (Kreuzvalidierung). Diagonal: das Modell der Veröffentlichung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="520"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="522"/>
         <source>Realism of %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
@@ -2039,7 +2039,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="525"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="527"/>
         <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
         <translation>
             <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
@@ -2047,47 +2047,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="580"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="582"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="581"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="583"/>
         <source>Failed: %1.</source>
         <translation>Fehlgeschlagen: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="583"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="585"/>
         <source>Canceled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="613"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="615"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="618"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="620"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="450"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="452"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="642"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="644"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="652"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="654"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="677"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="668"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>
@@ -2262,57 +2262,57 @@
 <context>
     <name>lipsync::studio::PreviewPanel</name>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="69"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="68"/>
         <source>Loop selection</source>
         <translation>Auswahl wiederholen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="69"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="68"/>
         <source>Landmarks</source>
         <translation>Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="70"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="69"/>
         <source>Generate from Speech…</source>
         <translation>Aus Sprache erzeugen…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="71"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="70"/>
         <source>Back to Sequence</source>
         <translation>Zurück zur Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="84"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="83"/>
         <source>Previous frame</source>
         <translation>Vorheriges Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="86"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="85"/>
         <source>Next frame</source>
         <translation>Nächstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="90"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="89"/>
         <source>Scrub through the frames</source>
         <translation>Durch die Bilder fahren</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="91"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="90"/>
         <source>Play the timeline&apos;s selection (or everything) over and over</source>
         <translation>Die Auswahl der Zeitleiste (oder alles) immer wieder abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="92"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="91"/>
         <source>Show the tracked points on the recorded video and the generated points on the generated faces</source>
         <translation>Die getrackten Punkte auf dem aufgenommenen Video und die erzeugten Punkte auf den erzeugten Gesichtern zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="93"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="92"/>
         <source>Generate faces for any recording with a transcript</source>
         <translation>Gesichter für eine beliebige Aufnahme mit Transkript erzeugen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="94"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="93"/>
         <source>Show the current sequence again</source>
         <translation>Die aktuelle Sequenz wieder zeigen</translation>
     </message>
@@ -2327,73 +2327,73 @@
         <translation>Der Kopf konnte nicht getrackt werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="356"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="340"/>
         <source>Recorded video (landmarks: tracked)</source>
         <translation>Aufgenommenes Video (Landmarken: getrackt)</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="361"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="345"/>
         <source>Generated: %1</source>
         <translation>Erzeugt: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="365"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="349"/>
         <source>Generated</source>
         <translation>Erzeugt</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="416"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="400"/>
         <source>The project has no appearance model (Faces ▸ Build AAM).</source>
         <translation>Das Projekt hat kein Erscheinungsmodell (Gesichter ▸ AAM erstellen).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="418"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="402"/>
         <source>Tracking the head pose…</source>
         <translation>Kopfhaltung wird getrackt…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="420"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="404"/>
         <source>This sequence has no phones (align it in the Timeline).</source>
         <translation>Diese Sequenz hat keine Phoneme (in der Zeitleiste alignieren).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="422"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="406"/>
         <source>Train a dynamic model in the Models panel to see the faces it generates.</source>
         <translation>Trainieren Sie ein dynamisches Modell im Bereich „Modelle“, um die erzeugten Gesichter zu sehen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="428"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="412"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="476"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="460"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 — Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="585"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="569"/>
         <source>Faces for new speech need the project&apos;s appearance model.</source>
         <translation>Gesichter für neue Sprache brauchen das Erscheinungsmodell des Projekts.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="586"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="570"/>
         <source>Build one with Faces ▸ Build AAM.</source>
         <translation>Erstellen Sie eines mit Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="591"/>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="650"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="575"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="628"/>
         <source>No faces could be generated for this speech.</source>
         <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="592"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="576"/>
         <source>Train a dynamic model in the Models panel first.</source>
         <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="622"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="606"/>
         <source>Generate faces for %1</source>
         <translation>Gesichter für %1 erzeugen</translation>
     </message>
@@ -3281,7 +3281,7 @@
     </message>
     <message>
         <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="430"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="436"/>
         <source>Align</source>
         <translation>Ausrichten</translation>
     </message>
@@ -3317,6 +3317,7 @@
     </message>
     <message>
         <location filename="../studio/timeline/TimelinePanel.cpp" line="114"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="485"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
@@ -3347,7 +3348,7 @@
     </message>
     <message>
         <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="603"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="617"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
@@ -3447,52 +3448,52 @@
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="291"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="297"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="310"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="316"/>
         <source>Alignment of the speech in the Preview: %1 (read-only; Back to Sequence there to edit)</source>
         <translation>Alignierung der Sprache in der Vorschau: %1 (schreibgeschützt; dort „Zurück zur Sequenz“ zum Bearbeiten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="324"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="330"/>
         <source>No audio</source>
         <translation>Kein Ton</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="394"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="400"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="407"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="413"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="431"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="437"/>
         <source>The transcript of %1 changed since its boundaries were edited. Aligning it again replaces the edited boundaries. Align anyway?</source>
         <translation>Das Transkript von %1 wurde geändert, nachdem seine Grenzen bearbeitet wurden. Erneutes Alignieren ersetzt die bearbeiteten Grenzen. Trotzdem alignieren?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="442"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="448"/>
         <source>Every word of %1 is user-edited: nothing to align there.</source>
         <translation>Jedes Wort von %1 ist von Hand bearbeitet: Dort gibt es nichts zu alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="463"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="469"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="466"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="472"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="412"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="418"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
@@ -3502,12 +3503,17 @@
         <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Stimmen, die den Trainingssprechern des Modells unähnlich sind)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="492"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="484"/>
+        <source>The Project&apos;s Aligner (%1)</source>
+        <translation>Aligner des Projekts (%1)</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="506"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="517"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="531"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -3515,12 +3521,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="537"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="551"/>
         <source>%1: the alignment came out as it was; nothing changed.</source>
         <translation>%1: Die Alignierung ist unverändert geblieben.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="540"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="554"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -3528,62 +3534,62 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="579"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="593"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="579"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="593"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="587"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="601"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="604"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="618"/>
         <source>These phones belong to two words, “%1” and “%2”. Merge the words as well?</source>
         <translation>Diese Phone gehören zu zwei Wörtern, „%1“ und „%2“. Die Wörter ebenfalls verbinden?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="607"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="621"/>
         <source>Merge Phones and Words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="613"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="627"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="613"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="627"/>
         <source>Merge phones and words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="645"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="659"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="645"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="659"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="704"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="718"/>
         <source>Not one of the 41 phones (ARPAbet, sil, br)</source>
         <translation>Keines der 41 Phone (ARPAbet, sil, br)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="705"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="719"/>
         <source>Enter one word</source>
         <translation>Ein einzelnes Wort eingeben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="713"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="727"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>

@@ -248,7 +248,11 @@ void TimelinePanel::attach(StudioContext *context)
     m_waveform->setEditable(true);
     // A click moves what the timeline shows: the sequence, or the Preview's new speech.
     connect(m_waveform, &WaveformView::timeClicked, context, &StudioContext::seek);
-    connect(m_document, &ProjectDocument::documentReset, this, [this] { showSequence(-1); });
+    connect(m_document, &ProjectDocument::documentReset, this, [this] {
+        publishAlignerChoice(); // another project: perhaps its own aligner
+        showSequence(-1);
+    });
+    connect(m_document, &ProjectDocument::modelsChanged, this, &TimelinePanel::publishAlignerChoice);
     connect(m_document, &ProjectDocument::sequenceChanged, this, [this](int row) {
         if (row == m_row)
             refresh();
@@ -470,9 +474,17 @@ void TimelinePanel::realignSelection()
 
 void TimelinePanel::publishAlignerChoice()
 {
-    if (m_context)
-        m_context->modelStore()->setAlignerChoice(
-            AlignerChoice{m_sphinxAlignerAction->isChecked() ? "sphinx" : "", m_adaptAction->isChecked()});
+    if (!m_context)
+        return;
+    // Ours: the project's own aligner when it names one (its speaker's), else the shipped model.
+    std::string model;
+    const ModelReference *own = m_document && m_document->isOpen() ? m_document->project().model("aligner") : nullptr;
+    if (own)
+        model = m_document->project().resolve(own->file);
+    m_builtInAlignerAction->setText(own ? tr("The Project's Aligner (%1)").arg(QString::fromStdString(own->name))
+                                        : tr("Built-in Model (GRID Speaker)"));
+    m_context->modelStore()->setAlignerChoice(
+        AlignerChoice{m_sphinxAlignerAction->isChecked() ? "sphinx" : model, m_adaptAction->isChecked()});
 }
 
 void TimelinePanel::startAlignment(const QString &title, std::vector<AlignJob> jobs)

@@ -108,6 +108,15 @@ private slots:
         }
         panel.adaptToSpeakerAction()->setChecked(false);
         QVERIFY(!context.modelStore()->alignerChoice().adapt);
+        // A project that names its speaker's own aligner aligns with it (and the menu says so);
+        // Undo brings back the shipped one.
+        QVERIFY(context.modelStore()->alignerChoice().model.empty());
+        QVERIFY(context.document()->requestAddModel({"aligner", "speaker", "aligners/speaker.aligner"},
+                                                    QStringLiteral("Add aligner")));
+        QVERIFY(QString::fromStdString(context.modelStore()->alignerChoice().model).endsWith("aligners/speaker.aligner"));
+        QVERIFY(panel.builtInAlignerAction()->text().contains(QStringLiteral("speaker")));
+        context.undoStack()->undo();
+        QVERIFY(context.modelStore()->alignerChoice().model.empty());
     }
 
     void alignSequenceFillsTiers()
