@@ -67,8 +67,8 @@ public:
     std::uint64_t seed() const { return m_seed; }
     int repeats() const { return m_repeats; }
     // Whether each model is shown trained without the study's utterances (the paper's design:
-    // viewers judge generations of speech the model has not seen). Studies made before this was
-    // recorded read as false: their models were the project's, trained on everything.
+    // viewers judge generations of speech the model has not seen). A study file without the field
+    // reads as false: its models are the project's, trained on everything.
     bool holdsOutUtterances() const { return m_holdOut; }
     void setHoldsOutUtterances(bool holdOut) { m_holdOut = holdOut; }
     // Utterances suited to a study of `project`'s models (sequences with features and phones),
