@@ -98,6 +98,19 @@ const std::vector<std::string> &EvaluationChart::metrics() const
     return e->metricIds;
 }
 
+QString EvaluationChart::hoverText(int metric, int bar) const
+{
+    if (metric < 0 || metric >= e->metrics)
+        return {};
+    const int rows = (e->metrics + 1) / 2;
+    auto *chart = vtkChartXY::SafeDownCast(e->matrix->GetChart(vtkVector2i(metric % 2, rows - 1 - metric / 2)));
+    vtkPlot *plot = chart && chart->GetNumberOfPlots() > 0 ? chart->GetPlot(0) : nullptr;
+    if (!plot || !plot->GetInput() || bar < 0 || bar >= plot->GetInput()->GetNumberOfRows())
+        return {};
+    const double y = plot->GetInput()->GetValue(bar, 1).ToDouble();
+    return QString::fromStdString(plot->GetTooltipLabel(vtkVector2d(bar, y), bar, 0));
+}
+
 void EvaluationChart::clear()
 {
     e->matrix->SetSize(vtkVector2i(0, 0));
@@ -186,6 +199,9 @@ void EvaluationChart::draw(const std::vector<Bars> &bars, const std::vector<std:
         colours->Build();
         auto *plot = vtkPlotBar::SafeDownCast(chart->AddPlot(vtkChart::BAR));
         plot->SetInputData(table, 0, 1);
+        // Hovering a bar says whose it is and its value (the names are not written under the bars).
+        plot->SetIndexedLabels(labels);
+        plot->SetTooltipLabelFormat("%i: %y");
         plot->SetLookupTable(colours);
         plot->SelectColorArray("colour");
         plot->ScalarVisibilityOn();

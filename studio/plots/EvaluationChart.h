@@ -46,6 +46,8 @@ public:
         std::map<std::string, MetricSummary> metrics;
     };
     const std::vector<Bars> &bars() const;
+    // What hovering bar `bar` of the chart of metric `metric` shows ("Brand: 36.3").
+    QString hoverText(int metric, int bar) const;
     const std::vector<std::string> &metrics() const;
     static QString metricTitle(const std::string &metric);
 

@@ -364,6 +364,7 @@ private slots:
         QCOMPARE(page->chart()->metricCount(), 4);
         QCOMPARE(page->table()->rowCount(), 3);
         QCOMPARE(page->table()->item(1, 0)->text(), QStringLiteral("0.5 ± 0.1"));
+        QCOMPARE(page->chart()->hoverText(0, 1), ModelKinds::name(QStringLiteral("brand")) + QStringLiteral(": 0.5"));
         if (qEnvironmentVariableIsSet("LIPSYNC_REALISM_SCREENSHOT"))
             page->grab().toImage().save(qEnvironmentVariable("LIPSYNC_REALISM_SCREENSHOT"));
         QCOMPARE(page->chart()->modelNames(),
