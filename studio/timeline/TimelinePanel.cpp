@@ -82,8 +82,17 @@ TimelinePanel::TimelinePanel(QWidget *parent)
     layout->addWidget(m_banner);
     layout->addWidget(m_waveform, 1);
 
-    // Actions: buttons below the view, the editing ones in the view's context menu with keys
-    // that work while the view has focus.
+    createActions();
+    layout->addLayout(createButtonBar());
+    connectActions();
+    syncScrollBar();
+    updateActions();
+}
+
+// Actions: buttons below the view, the editing ones in the view's context menu with keys that
+// work while the view has focus; the aligner's choices and the spectrogram, remembered.
+void TimelinePanel::createActions()
+{
     auto makeAction = [this](const QString &text, const QString &tip, const QKeySequence &key = {}) {
         auto *a = new QAction(text, this);
         a->setToolTip(key.isEmpty() ? tip : QStringLiteral("%1 (%2)").arg(tip, key.toString(QKeySequence::NativeText)));
@@ -148,6 +157,20 @@ TimelinePanel::TimelinePanel(QWidget *parent)
         m_waveform->addAction(a);
     m_waveform->setContextMenuPolicy(Qt::ActionsContextMenu);
 
+    m_spectrogramAction = new QAction(tr("Show Spectrogram"), this);
+    m_spectrogramAction->setToolTip(tr("Show the spectrogram under the waveform in the timeline"));
+    m_spectrogramAction->setCheckable(true);
+    m_spectrogramAction->setChecked(QSettings().value(QStringLiteral("timeline/spectrogram"), false).toBool());
+    m_waveform->setSpectrogramVisible(m_spectrogramAction->isChecked());
+    connect(m_spectrogramAction, &QAction::toggled, this, [this](bool on) {
+        m_waveform->setSpectrogramVisible(on);
+        QSettings().setValue(QStringLiteral("timeline/spectrogram"), on);
+    });
+}
+
+// The bar under the view: alignment, the aligner's model, playback, the scroll bar and zoom.
+QHBoxLayout *TimelinePanel::createButtonBar()
+{
     auto *bar = new QHBoxLayout;
     bar->setContentsMargins(4, 0, 4, 2);
     bar->setSpacing(2);
@@ -183,7 +206,6 @@ TimelinePanel::TimelinePanel(QWidget *parent)
     QToolButton *zoomOut = makeButton(QStringLiteral("−"), tr("Zoom out (wheel down)"));
     QToolButton *zoomIn = makeButton(QStringLiteral("+"), tr("Zoom in (wheel up)"));
     QToolButton *fit = makeButton(tr("Fit"), tr("Show the whole sequence"));
-    layout->addLayout(bar);
 
     connect(zoomIn, &QToolButton::clicked, this, [this] { m_waveform->zoomBy(2.0, m_waveform->width() / 2.0); });
     connect(zoomOut, &QToolButton::clicked, this, [this] { m_waveform->zoomBy(0.5, m_waveform->width() / 2.0); });
@@ -193,7 +215,11 @@ TimelinePanel::TimelinePanel(QWidget *parent)
         if (!m_syncing)
             m_waveform->setViewStart(value / kUnitsPerSecond);
     });
+    return bar;
+}
 
+void TimelinePanel::connectActions()
+{
     connect(m_align, &QAction::triggered, this, &TimelinePanel::alignSequence);
     connect(m_alignAll, &QAction::triggered, this, &TimelinePanel::alignAll);
     connect(m_realign, &QAction::triggered, this, &TimelinePanel::realignSelection);
@@ -207,24 +233,12 @@ TimelinePanel::TimelinePanel(QWidget *parent)
     connect(m_playAll, &QAction::triggered, this, &TimelinePanel::playAll);
     connect(m_pronunciationsAction, &QAction::triggered, this, &TimelinePanel::showPronunciations);
 
-    m_spectrogramAction = new QAction(tr("Show Spectrogram"), this);
-    m_spectrogramAction->setToolTip(tr("Show the spectrogram under the waveform in the timeline"));
-    m_spectrogramAction->setCheckable(true);
-    m_spectrogramAction->setChecked(QSettings().value(QStringLiteral("timeline/spectrogram"), false).toBool());
-    m_waveform->setSpectrogramVisible(m_spectrogramAction->isChecked());
-    connect(m_spectrogramAction, &QAction::toggled, this, [this](bool on) {
-        m_waveform->setSpectrogramVisible(on);
-        QSettings().setValue(QStringLiteral("timeline/spectrogram"), on);
-    });
-
     connect(m_waveform, &WaveformView::boundaryDragStarted, this, &TimelinePanel::onDragStarted);
     connect(m_waveform, &WaveformView::boundaryDragged, this, &TimelinePanel::onDragged);
     connect(m_waveform, &WaveformView::boundaryDragFinished, this, [this] { m_dragKey = -1; });
     connect(m_waveform, &WaveformView::relabelRequested, this, &TimelinePanel::openEditor);
     connect(m_waveform, &WaveformView::playRequested, this, &TimelinePanel::togglePlay);
     connect(m_waveform, &WaveformView::selectionChanged, this, &TimelinePanel::updateActions);
-    syncScrollBar();
-    updateActions();
 }
 
 void TimelinePanel::syncScrollBar()

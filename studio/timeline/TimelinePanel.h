@@ -20,6 +20,7 @@
 #include <vector>
 
 class QAction;
+class QHBoxLayout;
 class QLabel;
 class QScrollBar;
 class QToolButton;
@@ -108,6 +109,9 @@ signals:
     void alignmentStarted(lipsync::Task *task);
 
 private:
+    void createActions();
+    QHBoxLayout *createButtonBar();
+    void connectActions();
     void syncScrollBar();
     bool preparePlayer();
     void showSequence(int row);
