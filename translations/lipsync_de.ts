@@ -421,28 +421,31 @@
         <translation>Dynamische Modelle (*.model)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="206"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="205"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="247"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="305"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="372"/>
         <source>Cannot export</source>
         <translation>Export nicht möglich</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="208"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="207"/>
         <source>no sequence is selected</source>
         <translation>keine Sequenz ausgewählt</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="231"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="256"/>
         <source>%1 has no video to put beside the generated face</source>
         <translation>%1 hat kein Video, neben das das erzeugte Gesicht gestellt werden könnte</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="246"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="270"/>
         <source>the project has no trained dynamic model and AAM (train one in the Models panel)</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell und kein AAM (im Bereich Modelle trainieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="236"/>
         <location filename="../studio/export/ExportMenu.cpp" line="261"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="285"/>
         <source>Export the generated frames of %1</source>
         <translation>Erzeugte Einzelbilder von %1 exportieren</translation>
     </message>
@@ -459,58 +462,58 @@
         <translation>Echt und erzeugt &amp;nebeneinander%1 (MP4)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="237"/>
         <location filename="../studio/export/ExportMenu.cpp" line="262"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="286"/>
         <source>Export the generated video of %1</source>
         <translation>Erzeugtes Video von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="278"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="311"/>
         <source>%1 has no face features (track it first)</source>
         <translation>%1 hat keine Gesichtsmerkmale (zuerst tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="281"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="314"/>
         <source>Export the features of %1</source>
         <translation>Merkmale von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="289"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="322"/>
         <source>%1 has no phone alignment (align it first)</source>
         <translation>%1 hat keine Phonem-Alignierung (zuerst alignieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="292"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="325"/>
         <source>Export the alignment of %1</source>
         <translation>Alignierung von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="305"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="338"/>
         <source>%1 has no landmarks</source>
         <translation>%1 hat keine Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="308"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="341"/>
         <source>Export the landmarks of %1</source>
         <translation>Landmarken von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="329"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="377"/>
         <source>the project has no AAM</source>
         <translation>das Projekt hat kein AAM</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="330"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="378"/>
         <source>the project has no trained dynamic model</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="335"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="382"/>
         <source>Export %1</source>
         <translation>%1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="363"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="228"/>
         <source>Exported to %1</source>
         <translation>Exportiert nach %1</translation>
     </message>
@@ -3260,28 +3263,28 @@
 <context>
     <name>lipsync::studio::TimelinePanel</name>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="207"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="206"/>
         <source>Zoom out (wheel down)</source>
         <translation>Verkleinern (Mausrad nach unten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="208"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="207"/>
         <source>Zoom in (wheel up)</source>
         <translation>Vergrößern (Mausrad nach oben)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="209"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="208"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="209"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="208"/>
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
     <message>
         <location filename="../studio/timeline/TimelinePanel.cpp" line="105"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="451"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="450"/>
         <source>Align</source>
         <translation>Ausrichten</translation>
     </message>
@@ -3317,7 +3320,7 @@
     </message>
     <message>
         <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="500"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="499"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
@@ -3348,7 +3351,7 @@
     </message>
     <message>
         <location filename="../studio/timeline/TimelinePanel.cpp" line="144"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="632"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="631"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
@@ -3428,12 +3431,12 @@
         <translation>Die Aussprachen des Projekts und die von espeak-ng geschätzten Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="196"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="195"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="197"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="196"/>
         <source>The acoustic model the aligner uses</source>
         <translation>Das akustische Modell, das die Ausrichtung verwendet</translation>
     </message>
@@ -3448,52 +3451,52 @@
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="312"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="311"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="331"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="330"/>
         <source>Alignment of the speech in the Preview: %1 (read-only; Back to Sequence there to edit)</source>
         <translation>Alignierung der Sprache in der Vorschau: %1 (schreibgeschützt; dort „Zurück zur Sequenz“ zum Bearbeiten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="345"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="344"/>
         <source>No audio</source>
         <translation>Kein Ton</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="415"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="414"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="428"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="427"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="452"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="451"/>
         <source>The transcript of %1 changed since its boundaries were edited. Aligning it again replaces the edited boundaries. Align anyway?</source>
         <translation>Das Transkript von %1 wurde geändert, nachdem seine Grenzen bearbeitet wurden. Erneutes Alignieren ersetzt die bearbeiteten Grenzen. Trotzdem alignieren?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="463"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="462"/>
         <source>Every word of %1 is user-edited: nothing to align there.</source>
         <translation>Jedes Wort von %1 ist von Hand bearbeitet: Dort gibt es nichts zu alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="484"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="483"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="487"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="486"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="433"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="432"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
@@ -3503,17 +3506,17 @@
         <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Stimmen, die den Trainingssprechern des Modells unähnlich sind)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="499"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="498"/>
         <source>The Project&apos;s Aligner (%1)</source>
         <translation>Aligner des Projekts (%1)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="521"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="520"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="546"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="545"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -3521,12 +3524,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="566"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="565"/>
         <source>%1: the alignment came out as it was; nothing changed.</source>
         <translation>%1: Die Alignierung ist unverändert geblieben.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="569"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="568"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -3534,62 +3537,62 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="608"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="607"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="608"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="607"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="616"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="615"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="633"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="632"/>
         <source>These phones belong to two words, “%1” and “%2”. Merge the words as well?</source>
         <translation>Diese Phone gehören zu zwei Wörtern, „%1“ und „%2“. Die Wörter ebenfalls verbinden?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="636"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="635"/>
         <source>Merge Phones and Words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="642"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="641"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="642"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="641"/>
         <source>Merge phones and words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="674"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="673"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="674"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="673"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="733"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="732"/>
         <source>Not one of the 41 phones (ARPAbet, sil, br)</source>
         <translation>Keines der 41 Phone (ARPAbet, sil, br)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="734"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="733"/>
         <source>Enter one word</source>
         <translation>Ein einzelnes Wort eingeben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="742"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="741"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>

@@ -200,7 +200,6 @@ Task *ExportMenu::trigger(Kind kind)
 Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelKind)
 {
     const ProjectDocument *document = m_context->document();
-    const Project &project = document->project();
     const int row = m_context->currentSequence();
     const bool projectWide = kind == Kind::Aam || kind == Kind::Model;
     const QString what = tr("Cannot export");
@@ -209,74 +208,108 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
         return nullptr;
     }
     // Everything the worker needs is copied here, on the GUI thread: it never reads the document.
-    ModelStore *store = m_context->modelStore();
     const Sequence sequence = projectWide ? Sequence() : document->sequence(row);
+    Job job;
+    switch (kind) {
+    case Kind::Video:
+    case Kind::SideBySide:
+    case Kind::Images: job = videoJob(kind, path, sequence, modelKind); break;
+    case Kind::Features:
+    case Kind::Alignment:
+    case Kind::Landmarks: job = sequenceDataJob(kind, path, sequence); break;
+    case Kind::Aam:
+    case Kind::Model: job = modelJob(kind, path, modelKind); break;
+    }
+    if (!job.work)
+        return nullptr; // refused, and said why
+    Task *task = m_context->taskRunner()->start(job.title, std::move(job.work));
+    connect(task, &Task::finished, this, [this, task, path, what](Task::State state) {
+        if (state == Task::State::Finished) {
+            m_context->showStatus(tr("Exported to %1").arg(QDir::toNativeSeparators(path)), 15000);
+            emit exported(path);
+        }
+        else if (state == Task::State::Failed)
+            ErrorReporter::report(m_dialogParent, what, path, task->errorMessage());
+    });
+    return task;
+}
+
+// The generated video, side by side, or frames: of the new speech the Preview shows, else of the
+// sequence generated from its own alignment.
+ExportMenu::Job ExportMenu::videoJob(Kind kind, const QString &path, const Sequence &sequence, const QString &modelKind)
+{
+    const Project &project = m_context->document()->project();
+    ModelStore *store = m_context->modelStore();
     const ModelReference *model = dynamicModel(project, modelKind);
     const ModelReference *aam = project.aam();
     const std::string target = path.toStdString();
     const QString id = QString::fromStdString(sequence.id);
-    TaskRunner::Work work;
+    const QString what = tr("Cannot export");
     QString title;
-    switch (kind) {
-    case Kind::Video:
-    case Kind::SideBySide:
-    case Kind::Images: {
-        RenderOptions options;
-        options.sideBySide = kind == Kind::SideBySide;
-        options.composite = m_context->compositeOptions();
-        if (const auto speech = m_context->shownSpeech()) {
-            const QString name = m_context->shownSpeechTitle();
-            if (options.sideBySide && !speech->hasVideo) {
-                ErrorReporter::report(m_dialogParent, what, path,
-                                      tr("%1 has no video to put beside the generated face").arg(name));
-                return nullptr;
-            }
-            options.leftLabel = "real";
-            options.rightLabel = panelLabel(speech->modelKind);
-            title = kind == Kind::Images ? tr("Export the generated frames of %1").arg(name)
-                                         : tr("Export the generated video of %1").arg(name);
-            work = renderWork(speech, options, target, kind == Kind::Images);
-            break;
-        }
-        QString problem;
-        const auto aamModel = store->aam(&problem);
-        const auto dynamic = model ? store->dynamicModel(QString::fromStdString(model->kind), &problem) : nullptr;
-        if (!dynamic || !aamModel) {
+    RenderOptions options;
+    options.sideBySide = kind == Kind::SideBySide;
+    options.composite = m_context->compositeOptions();
+    if (const auto speech = m_context->shownSpeech()) {
+        const QString name = m_context->shownSpeechTitle();
+        if (options.sideBySide && !speech->hasVideo) {
             ErrorReporter::report(m_dialogParent, what, path,
-                                  problem.isEmpty() ? tr("the project has no trained dynamic model and AAM (train one "
-                                                         "in the Models panel)")
-                                                    : problem);
-            return nullptr;
+                                  tr("%1 has no video to put beside the generated face").arg(name));
+            return {};
         }
-        SpeechToFaceRequest request;
-        request.mediaPath = project.mediaPath(sequence);
-        request.modelPath = project.resolve(model->file);
-        request.aamPath = project.resolve(aam->file);
-        request.model = dynamic;
-        request.aam = aamModel;
-        request.frameRate = sequence.frameRate;
-        request.closeBilabials = m_context->closesLips();
         options.leftLabel = "real";
-        options.rightLabel = panelLabel(model->kind);
-        title = kind == Kind::Images ? tr("Export the generated frames of %1").arg(id)
-                                     : tr("Export the generated video of %1").arg(id);
-        // Generated from the sequence's own alignment, then rendered as for new speech.
-        work = [request, sequence, options, target, kind](Feedback &feedback) -> TaskRunner::Commit {
-            std::shared_ptr<const SpeechToFaceResult> generated;
-            {
-                Feedback step(feedback, 0.0, 0.1);
-                generated = std::make_shared<const SpeechToFaceResult>(
-                    generateFromPhones(request, sequence.phones, sequence.words, step));
-            }
-            Feedback step(feedback, 0.1, 1.0);
-            return renderWork(generated, options, target, kind == Kind::Images)(step);
-        };
-        break;
+        options.rightLabel = panelLabel(speech->modelKind);
+        title = kind == Kind::Images ? tr("Export the generated frames of %1").arg(name)
+                                     : tr("Export the generated video of %1").arg(name);
+        return {title, renderWork(speech, options, target, kind == Kind::Images)};
     }
+    QString problem;
+    const auto aamModel = store->aam(&problem);
+    const auto dynamic = model ? store->dynamicModel(QString::fromStdString(model->kind), &problem) : nullptr;
+    if (!dynamic || !aamModel) {
+        ErrorReporter::report(m_dialogParent, what, path,
+                              problem.isEmpty() ? tr("the project has no trained dynamic model and AAM (train one "
+                                                     "in the Models panel)")
+                                                : problem);
+        return {};
+    }
+    SpeechToFaceRequest request;
+    request.mediaPath = project.mediaPath(sequence);
+    request.modelPath = project.resolve(model->file);
+    request.aamPath = project.resolve(aam->file);
+    request.model = dynamic;
+    request.aam = aamModel;
+    request.frameRate = sequence.frameRate;
+    request.closeBilabials = m_context->closesLips();
+    options.leftLabel = "real";
+    options.rightLabel = panelLabel(model->kind);
+    title = kind == Kind::Images ? tr("Export the generated frames of %1").arg(id)
+                                 : tr("Export the generated video of %1").arg(id);
+    // Generated from the sequence's own alignment, then rendered as for new speech.
+    return {title, [request, sequence, options, target, kind](Feedback &feedback) -> TaskRunner::Commit {
+        std::shared_ptr<const SpeechToFaceResult> generated;
+        {
+            Feedback step(feedback, 0.0, 0.1);
+            generated = std::make_shared<const SpeechToFaceResult>(
+                generateFromPhones(request, sequence.phones, sequence.words, step));
+        }
+        Feedback step(feedback, 0.1, 1.0);
+        return renderWork(generated, options, target, kind == Kind::Images)(step);
+    }};
+}
+
+// The sequence's features (CSV), alignment (TextGrid) or landmarks (.pts files).
+ExportMenu::Job ExportMenu::sequenceDataJob(Kind kind, const QString &path, const Sequence &sequence)
+{
+    const std::string target = path.toStdString();
+    const QString id = QString::fromStdString(sequence.id);
+    const QString what = tr("Cannot export");
+    QString title;
+    TaskRunner::Work work;
+    switch (kind) {
     case Kind::Features:
         if (sequence.features.rows() == 0) {
             ErrorReporter::report(m_dialogParent, what, path, tr("%1 has no face features (track it first)").arg(id));
-            return nullptr;
+            return {};
         }
         title = tr("Export the features of %1").arg(id);
         work = [sequence, target](Feedback &) -> TaskRunner::Commit {
@@ -287,7 +320,7 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
     case Kind::Alignment:
         if (sequence.phones.isEmpty()) {
             ErrorReporter::report(m_dialogParent, what, path, tr("%1 has no phone alignment (align it first)").arg(id));
-            return nullptr;
+            return {};
         }
         title = tr("Export the alignment of %1").arg(id);
         work = [sequence, target](Feedback &) -> TaskRunner::Commit {
@@ -303,7 +336,7 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
     case Kind::Landmarks:
         if (sequence.landmarks.empty()) {
             ErrorReporter::report(m_dialogParent, what, path, tr("%1 has no landmarks").arg(id));
-            return nullptr;
+            return {};
         }
         title = tr("Export the landmarks of %1").arg(id);
         // One <id>_<frame>.pts per annotated frame (frame numbers from 1, as in the studio).
@@ -321,52 +354,54 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
             return {};
         };
         break;
-    case Kind::Aam:
-    case Kind::Model: {
-        const ModelReference *reference = kind == Kind::Aam ? aam : model;
-        if (!reference) {
-            ErrorReporter::report(m_dialogParent, what, path,
-                                  kind == Kind::Aam ? tr("the project has no AAM")
-                                                    : tr("the project has no trained dynamic model"));
-            return nullptr;
-        }
-        // From memory: a model made in this session may not be in any folder yet.
-        QString problem;
-        title = tr("Export %1").arg(QString::fromStdString(reference->name));
-        if (kind == Kind::Aam) {
-            const auto model = store->aam(&problem);
-            if (model)
-                work = [model, target](Feedback &) -> TaskRunner::Commit {
-                    model->save(target);
-                    return {};
-                };
-        } else {
-            const QString kindId = QString::fromStdString(reference->kind);
-            const auto model = store->dynamicModel(kindId, &problem);
-            const std::string aamId = store->recordedAamIdentifier(kindId);
-            if (model)
-                work = [model, aamId, target](Feedback &) -> TaskRunner::Commit {
-                    saveModel(*model, target, aamId);
-                    return {};
-                };
-        }
-        if (!work) {
-            ErrorReporter::report(m_dialogParent, what, QString::fromStdString(project.resolve(reference->file)), problem);
-            return nullptr;
-        }
+    default:
         break;
     }
+    return {title, std::move(work)};
+}
+
+// The project's AAM or a dynamic model, from memory: one made in this session may not be in any
+// folder yet.
+ExportMenu::Job ExportMenu::modelJob(Kind kind, const QString &path, const QString &modelKind)
+{
+    const Project &project = m_context->document()->project();
+    ModelStore *store = m_context->modelStore();
+    const ModelReference *model = dynamicModel(project, modelKind);
+    const ModelReference *aam = project.aam();
+    const std::string target = path.toStdString();
+    const QString what = tr("Cannot export");
+    TaskRunner::Work work;
+    const ModelReference *reference = kind == Kind::Aam ? aam : model;
+    if (!reference) {
+        ErrorReporter::report(m_dialogParent, what, path,
+                              kind == Kind::Aam ? tr("the project has no AAM")
+                                                : tr("the project has no trained dynamic model"));
+        return {};
     }
-    Task *task = m_context->taskRunner()->start(title, std::move(work));
-    connect(task, &Task::finished, this, [this, task, path, what](Task::State state) {
-        if (state == Task::State::Finished) {
-            m_context->showStatus(tr("Exported to %1").arg(QDir::toNativeSeparators(path)), 15000);
-            emit exported(path);
-        }
-        else if (state == Task::State::Failed)
-            ErrorReporter::report(m_dialogParent, what, path, task->errorMessage());
-    });
-    return task;
+    QString problem;
+    const QString title = tr("Export %1").arg(QString::fromStdString(reference->name));
+    if (kind == Kind::Aam) {
+        const auto model = store->aam(&problem);
+        if (model)
+            work = [model, target](Feedback &) -> TaskRunner::Commit {
+                model->save(target);
+                return {};
+            };
+    } else {
+        const QString kindId = QString::fromStdString(reference->kind);
+        const auto model = store->dynamicModel(kindId, &problem);
+        const std::string aamId = store->recordedAamIdentifier(kindId);
+        if (model)
+            work = [model, aamId, target](Feedback &) -> TaskRunner::Commit {
+                saveModel(*model, target, aamId);
+                return {};
+            };
+    }
+    if (!work) {
+        ErrorReporter::report(m_dialogParent, what, QString::fromStdString(project.resolve(reference->file)), problem);
+        return {};
+    }
+    return {title, std::move(work)};
 }
 
 } // namespace lipsync::studio

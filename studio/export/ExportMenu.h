@@ -7,6 +7,8 @@
 // background through the TaskRunner with progress and cancel. Every writer is atomic
 // (core/io/AtomicFile, VideoExporter, ImageSequenceExporter), so a cancel or an error leaves no
 // half-written file under the chosen name.
+#include "tasks/TaskRunner.h"
+
 #include <QObject>
 #include <QString>
 
@@ -17,6 +19,7 @@ class QMenu;
 class QWidget;
 
 namespace lipsync {
+struct Sequence;
 class Task;
 }
 
@@ -69,6 +72,15 @@ signals:
     void exported(const QString &path);
 
 private:
+    // An export's task: its title and work; no work when it was refused (and the reason shown).
+    struct Job
+    {
+        QString title;
+        TaskRunner::Work work;
+    };
+    Job videoJob(Kind kind, const QString &path, const Sequence &sequence, const QString &modelKind);
+    Job sequenceDataJob(Kind kind, const QString &path, const Sequence &sequence);
+    Job modelJob(Kind kind, const QString &path, const QString &modelKind);
     void updateActions();
 
     StudioContext *m_context;
