@@ -141,41 +141,91 @@ Tier referencePhones(const QString &aligner, const QString &input, const QString
         .alignment.phones;
 }
 
+// The recogniser: our HMMs of the speaker with a phone bigram (loaded into `acoustic` and
+// `bigram`, which it reads), or CMU Sphinx's for anyone.
+std::unique_ptr<PhoneStream> makeRecognizer(const CommandLine &a, const AlignerChoice &choice,
+                                            std::optional<AcousticModel> &acoustic, PhoneBigram &bigram)
+{
+    if (choice.isSphinx()) {
+        if (a.isSet("bigram"))
+            throw UsageError(QStringLiteral("--bigram is for our aligner models; CMU Sphinx has its own phone "
+                                            "language model"));
+        SphinxPhoneOptions sphinxOptions;
+        sphinxOptions.modelDir = choice.sphinxModelDir();
+        if (a.isSet("lag"))
+            sphinxOptions.lagFrames = a.integer("lag", 0);
+        return std::make_unique<SphinxPhoneRecognizer>(sphinxOptions);
+    }
+    QString bigramPath = a.value("bigram");
+    if (bigramPath.isEmpty())
+        bigramPath = QString::fromStdString(shippedPhoneBigramPath());
+    if (bigramPath.isEmpty())
+        throw Error("no phone bigram: give one with --bigram (lipsync aligner bigram)");
+    acoustic = AcousticModel::load(choice.model);
+    bigram = PhoneBigram::load(bigramPath.toStdString());
+    PhoneRecognizerOptions ours;
+    if (a.isSet("lag"))
+        ours.lagFrames = a.integer("lag", 0);
+    return std::make_unique<StreamingPhoneRecognizer>(*acoustic, bigram, ours);
+}
+
+struct LatencySummary
+{
+    double mean = 0, worst = 0, p95 = 0; // seconds
+};
+
+LatencySummary summarise(const std::vector<double> &latencies)
+{
+    LatencySummary s;
+    for (double l : latencies) {
+        s.mean += l;
+        s.worst = std::max(s.worst, l);
+    }
+    s.mean /= double(std::max<size_t>(1, latencies.size()));
+    std::vector<double> sorted = latencies;
+    std::sort(sorted.begin(), sorted.end());
+    s.p95 = sorted.empty() ? 0.0 : sorted[std::min(sorted.size() - 1, sorted.size() * 95 / 100)];
+    return s;
+}
+
+// Against the transcript's forced alignment: the phone error rate of what was recognised, and the
+// share of frames whose label matches the alignment's vote.
+void addAccuracy(QJsonObject &o, const Tier &reference, const LiveSession &session, const std::vector<int> &recognised,
+                 int frames)
+{
+    o[QStringLiteral("phone_error_rate")] = phoneErrorRate(spokenPhones(reference), recognised);
+    const std::vector<std::string> truth =
+        voteFrameLabels(reference, FrameClock::uniform(session.frameRate(), frames), session.audioFrames());
+    int same = 0;
+    for (int i = 0; i < frames; ++i)
+        same += PhoneSet::index(truth[size_t(i)]) == session.frameLabels()[size_t(i)];
+    o[QStringLiteral("frame_accuracy")] = frames ? double(same) / frames : 0.0;
+}
+
+void printReport(const QJsonObject &o, size_t phones)
+{
+    std::printf("%d frames at %.3g frames/s in %.2f s (%.0f frames/s); latency from sound to frame %.0f ms mean, "
+                "%.0f ms max; %zu phones recognised",
+                o.value("frames").toInt(), o.value("frameRate").toDouble(), o.value("seconds").toDouble(),
+                o.value("fps").toDouble(), o.value("latency_ms_mean").toDouble(), o.value("latency_ms_max").toDouble(),
+                phones);
+    if (o.contains(QStringLiteral("phone_error_rate")))
+        std::printf("; phone error rate %.1f %%, frame labels %.1f %% right",
+                    100 * o.value("phone_error_rate").toDouble(), 100 * o.value("frame_accuracy").toDouble());
+    std::printf("\n");
+}
+
 int runLive(const CommandLine &a)
 {
     const QString input = a.value("input");
     const QString alignerPath = alignerModelOrDefault(a.value("aligner"), QStringLiteral("live"));
     const AlignerChoice alignerChoice{alignerPath.toStdString()};
-    const bool sphinx = alignerChoice.isSphinx();
     const double blockSeconds = a.positiveNumber("block-ms") / 1000.0;
     const bool fast = a.isSet("as-fast-as-possible");
 
-    // The recogniser: our HMMs of the speaker with a phone bigram, or CMU Sphinx's for anyone.
     std::optional<AcousticModel> acoustic;
     PhoneBigram bigram;
-    std::unique_ptr<PhoneStream> recognizer;
-    if (sphinx) {
-        if (a.isSet("bigram"))
-            throw UsageError(QStringLiteral("--bigram is for our aligner models; CMU Sphinx has its own phone "
-                                            "language model"));
-        SphinxPhoneOptions sphinxOptions;
-        sphinxOptions.modelDir = alignerChoice.sphinxModelDir();
-        if (a.isSet("lag"))
-            sphinxOptions.lagFrames = a.integer("lag", 0);
-        recognizer = std::make_unique<SphinxPhoneRecognizer>(sphinxOptions);
-    } else {
-        QString bigramPath = a.value("bigram");
-        if (bigramPath.isEmpty())
-            bigramPath = QString::fromStdString(shippedPhoneBigramPath());
-        if (bigramPath.isEmpty())
-            throw Error("no phone bigram: give one with --bigram (lipsync aligner bigram)");
-        acoustic = AcousticModel::load(alignerPath.toStdString());
-        bigram = PhoneBigram::load(bigramPath.toStdString());
-        PhoneRecognizerOptions ours;
-        if (a.isSet("lag"))
-            ours.lagFrames = a.integer("lag", 0);
-        recognizer = std::make_unique<StreamingPhoneRecognizer>(*acoustic, bigram, ours);
-    }
+    std::unique_ptr<PhoneStream> recognizer = makeRecognizer(a, alignerChoice, acoustic, bigram);
     const int sampleRate = recognizer->frameOptions().sampleRate;
     const AamModel aam = AamModel::load(a.value("aam").toStdString());
     const std::shared_ptr<DynamicModel> model = loadModel(a.value("model").toStdString(), aam.identifier);
@@ -268,15 +318,7 @@ int runLive(const CommandLine &a)
     if (recorder)
         recorder->finish();
 
-    double mean = 0, worst = 0;
-    for (double l : latencies) {
-        mean += l;
-        worst = std::max(worst, l);
-    }
-    mean /= std::max<size_t>(1, latencies.size());
-    std::vector<double> sorted = latencies;
-    std::sort(sorted.begin(), sorted.end());
-    const double p95 = sorted.empty() ? 0.0 : sorted[std::min(sorted.size() - 1, sorted.size() * 95 / 100)];
+    const auto [mean, worst, p95] = summarise(latencies);
     const std::vector<int> recognised = spokenPhones(session.phones());
     QJsonArray phones;
     for (int p : recognised)
@@ -295,32 +337,17 @@ int runLive(const CommandLine &a)
                   // without the guess of them).
                   {QStringLiteral("generator_latency_frames"), session.generatorLatencyFrames()},
                   {QStringLiteral("phones"), phones}};
-    if (a.isSet("transcript")) {
-        const Tier reference = referencePhones(alignerPath, input, a.value("transcript"), a.value("pronunciations"));
-        o[QStringLiteral("phone_error_rate")] = phoneErrorRate(spokenPhones(reference), recognised);
-        const std::vector<std::string> truth =
-            voteFrameLabels(reference, FrameClock::uniform(session.frameRate(), frames), session.audioFrames());
-        int same = 0;
-        for (int i = 0; i < frames; ++i)
-            same += PhoneSet::index(truth[size_t(i)]) == session.frameLabels()[size_t(i)];
-        o[QStringLiteral("frame_accuracy")] = frames ? double(same) / frames : 0.0;
-    }
+    if (a.isSet("transcript"))
+        addAccuracy(o, referencePhones(alignerPath, input, a.value("transcript"), a.value("pronunciations")), session,
+                    recognised, frames);
     if (recorder)
         o[QStringLiteral("out")] = a.value("out");
     if (camera)
         o[QStringLiteral("camera_frames_with_face")] = cameraFaces;
-    if (a.isSet("json")) {
+    if (a.isSet("json"))
         printJson(o);
-    } else {
-        std::printf("%d frames at %.3g frames/s in %.2f s (%.0f frames/s); latency from sound to frame %.0f ms mean, "
-                    "%.0f ms max; %zu phones recognised",
-                    frames, session.frameRate(), seconds, o.value("fps").toDouble(), 1000 * mean, 1000 * worst,
-                    recognised.size());
-        if (o.contains(QStringLiteral("phone_error_rate")))
-            std::printf("; phone error rate %.1f %%, frame labels %.1f %% right",
-                        100 * o.value("phone_error_rate").toDouble(), 100 * o.value("frame_accuracy").toDouble());
-        std::printf("\n");
-    }
+    else
+        printReport(o, recognised.size());
     return 0;
 }
 
