@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace lipsync {
 
@@ -178,19 +179,15 @@ std::vector<AamTrainingExample> loadTrainingDirectory(const std::string &directo
     return out;
 }
 
-AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOptions &options,
-                  Feedback &feedback, std::vector<std::string> *warnings, AamBuildReport *report)
-{
-    auto warn = [&](const std::string &w) {
-        if (warnings)
-            warnings->push_back(w);
-    };
-    const double referenceEyeDistance = chosenReferenceEyeDistance(examples, options);
-    const int levelCount = chosenLevels(referenceEyeDistance, options);
-    feedback.setStatus("reading images");
+namespace {
 
-    // 1. Read, check and pre-scale every image so the face is about reference size: the warp
-    //    then samples without aliasing and memory stays small.
+// The examples an AAM is built from: read, checked (a reason for each left out goes to `warn`),
+// pre-scaled so the face is about reference size (the warp then samples without aliasing and
+// memory stays small), and mirrored when asked.
+std::vector<AamTrainingExample> usableExamples(std::vector<AamTrainingExample> examples, const AamBuildOptions &options,
+                                               double referenceEyeDistance, Feedback &feedback,
+                                               const std::function<void(const std::string &)> &warn)
+{
     std::vector<AamTrainingExample> usable;
     for (size_t i = 0; i < examples.size(); ++i) {
         feedback.throwIfCanceled();
@@ -231,44 +228,19 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
             usable.push_back(std::move(m));
         }
     }
+    return usable;
+}
+
+// The training textures under `model`'s warp: colour at level 0 (normalised; the mean photometric
+// transform goes into the model) and the fitting channels at every level.
+void sampleTextures(AamModel &model, const std::vector<AamTrainingExample> &usable, Feedback &feedback,
+                    Eigen::MatrixXd &colour, std::vector<Eigen::MatrixXd> &grey)
+{
     const int n = int(usable.size());
-    if (n < 3)
-        throw Error("need at least 3 usable training images, found " + std::to_string(n));
-
-    // 2. Shape model.
-    feedback.setStatus("aligning shapes");
-    std::vector<Eigen::VectorXd> shapes;
-    for (const auto &e : usable)
-        shapes.push_back(e.shape);
-    const ProcrustesResult gpa = generalisedProcrustes(shapes);
-    Eigen::MatrixXd shapeData(gpa.mean.size(), n);
-    for (int i = 0; i < n; ++i)
-        shapeData.col(i) = gpa.aligned[size_t(i)];
-    const Pca shapePca = computePca(shapeData, options.shapeVariance);
-    if (shapePca.modes() == 0)
-        throw Error("the training shapes do not vary; label more different frames");
-
-    AamModel model;
-    model.meanShape = gpa.mean;
-    model.shapeBasis = shapePca.basis;
-    model.shapeVariances = shapePca.variances;
-    model.triangles = delaunayTriangles(gpa.mean * 1000.0);
-    model.referenceScale = referenceEyeDistance / eyeDistance(gpa.mean);
-    for (int l = 0; l < levelCount; ++l) {
-        AamTextureLevel level;
-        level.scale = std::pow(0.5, l);
-        model.levels.push_back(level);
-    }
-    model.fitFeatures = options.fitFeatures;
-    model.prepare();
-    model.trainingImages = n;
-
-    // 3. Textures: colour at level 0 for the combined model, grey at each level for fitting.
-    feedback.setStatus("sampling textures");
+    const int levelCount = int(model.levels.size());
     const int colourSize = 3 * model.warp(0).pixelCount();
-    Eigen::MatrixXd colour(colourSize, n);
-    std::vector<Eigen::MatrixXd> grey;
-    grey.resize(size_t(levelCount));
+    colour.resize(colourSize, n);
+    grey.assign(size_t(levelCount), Eigen::MatrixXd());
     for (int l = 0; l < levelCount; ++l)
         grey[size_t(l)].resize(model.fitChannels() * model.warp(l).pixelCount(), n);
     double scaleSum = 0.0, offsetSum = 0.0;
@@ -306,7 +278,108 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
     }
     model.meanTextureScale = scaleSum / n;
     model.meanTextureOffset = offsetSum / n;
+}
 
+// The mean of the training shapes in the frame of the detector's keypoints, expressed where those
+// keypoints sit on the mean shape, and a ridge regression of the shape on them.
+void calibrateDetector(AamModel &model, const std::vector<AamTrainingExample> &usable, FaceDetector &detector,
+                       Feedback &feedback, const std::function<void(const std::string &)> &warn)
+{
+    feedback.setStatus("calibrating the face detector");
+    const Eigen::VectorXd anchors = keypointAnchors(model.meanShape);
+    std::vector<Eigen::VectorXd> keypoints, targets; // both in the frame of the anchors
+    for (const auto &e : usable) {
+        feedback.throwIfCanceled();
+        const std::vector<FaceDetection> faces = detector.detect(e.image);
+        // The detection whose keypoints are nearest the labelled eyes and mouth.
+        const Eigen::VectorXd truth = keypointAnchors(e.shape);
+        const double eyes = eyeDistance(e.shape);
+        for (const auto &f : faces) {
+            const Eigen::VectorXd k = detectionAnchors(f);
+            if (k.size() == 0 || (k - truth).cwiseAbs().maxCoeff() > 0.5 * eyes)
+                continue;
+            const Similarity t = alignSimilarity(k, anchors);
+            targets.push_back(t.apply(e.shape));
+            keypoints.push_back(t.apply(detectionKeypoints(f)));
+            break;
+        }
+    }
+    const int count = int(targets.size());
+    if (count >= 3) {
+        Eigen::MatrixXd Y(model.meanShape.size(), count), K(10, count);
+        for (int i = 0; i < count; ++i) {
+            Y.col(i) = targets[size_t(i)];
+            K.col(i) = keypoints[size_t(i)];
+        }
+        model.detectorShape = Y.rowwise().mean();
+        model.detectorKeypointMean = K.rowwise().mean();
+        // Ridge regression of the shape on the keypoints, R = Yc Kc^T (Kc Kc^T + lambda I)^-1:
+        // a start that follows the detected nose and mouth, not just the mean. The ridge
+        // (a tenth of the mean keypoint variance per sample) keeps it near the mean for the
+        // few-image person-specific models.
+        const Eigen::MatrixXd Kc = K.colwise() - model.detectorKeypointMean;
+        const Eigen::MatrixXd Yc = Y.colwise() - model.detectorShape;
+        Eigen::MatrixXd gram = Kc * Kc.transpose();
+        gram.diagonal().array() += kDetectorRidge * gram.trace() / 10.0 + 1e-12;
+        model.detectorRegression = gram.ldlt().solve(Kc * Yc.transpose()).transpose();
+    } else {
+        warn("the face detector found too few training faces to calibrate its initialisation");
+    }
+}
+
+} // namespace
+
+AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOptions &options,
+                  Feedback &feedback, std::vector<std::string> *warnings, AamBuildReport *report)
+{
+    auto warn = [&](const std::string &w) {
+        if (warnings)
+            warnings->push_back(w);
+    };
+    const double referenceEyeDistance = chosenReferenceEyeDistance(examples, options);
+    const int levelCount = chosenLevels(referenceEyeDistance, options);
+    feedback.setStatus("reading images");
+
+    // 1. Read, check and pre-scale every image so the face is about reference size.
+    std::vector<AamTrainingExample> usable =
+        usableExamples(std::move(examples), options, referenceEyeDistance, feedback, warn);
+    const int n = int(usable.size());
+    if (n < 3)
+        throw Error("need at least 3 usable training images, found " + std::to_string(n));
+
+    // 2. Shape model.
+    feedback.setStatus("aligning shapes");
+    std::vector<Eigen::VectorXd> shapes;
+    for (const auto &e : usable)
+        shapes.push_back(e.shape);
+    const ProcrustesResult gpa = generalisedProcrustes(shapes);
+    Eigen::MatrixXd shapeData(gpa.mean.size(), n);
+    for (int i = 0; i < n; ++i)
+        shapeData.col(i) = gpa.aligned[size_t(i)];
+    const Pca shapePca = computePca(shapeData, options.shapeVariance);
+    if (shapePca.modes() == 0)
+        throw Error("the training shapes do not vary; label more different frames");
+
+    AamModel model;
+    model.meanShape = gpa.mean;
+    model.shapeBasis = shapePca.basis;
+    model.shapeVariances = shapePca.variances;
+    model.triangles = delaunayTriangles(gpa.mean * 1000.0);
+    model.referenceScale = referenceEyeDistance / eyeDistance(gpa.mean);
+    for (int l = 0; l < levelCount; ++l) {
+        AamTextureLevel level;
+        level.scale = std::pow(0.5, l);
+        model.levels.push_back(level);
+    }
+    model.fitFeatures = options.fitFeatures;
+    model.prepare();
+    model.trainingImages = n;
+
+    // 3. Textures: colour at level 0 for the combined model, grey at each level for fitting.
+    feedback.setStatus("sampling textures");
+    Eigen::MatrixXd colour;
+    std::vector<Eigen::MatrixXd> grey;
+    sampleTextures(model, usable, feedback, colour, grey);
     feedback.setStatus("texture PCA");
     feedback.throwIfCanceled();
     const Pca texturePca = computePca(colour, options.textureVariance);
@@ -343,50 +416,9 @@ AamModel buildAam(std::vector<AamTrainingExample> examples, const AamBuildOption
     if (report)
         *report = {aamModeChoiceOf(shapePca, n), aamModeChoiceOf(texturePca, n), aamModeChoiceOf(combined, n),
                    referenceEyeDistance, levelCount};
-    // 5. Detector calibration: the mean of the training shapes in the frame of the detector's
-    //    keypoints, expressed where those keypoints sit on the mean shape.
-    if (options.detector) {
-        feedback.setStatus("calibrating the face detector");
-        const Eigen::VectorXd anchors = keypointAnchors(model.meanShape);
-        std::vector<Eigen::VectorXd> keypoints, targets; // both in the frame of the anchors
-        for (const auto &e : usable) {
-            feedback.throwIfCanceled();
-            const std::vector<FaceDetection> faces = options.detector->detect(e.image);
-            // The detection whose keypoints are nearest the labelled eyes and mouth.
-            const Eigen::VectorXd truth = keypointAnchors(e.shape);
-            const double eyes = eyeDistance(e.shape);
-            for (const auto &f : faces) {
-                const Eigen::VectorXd k = detectionAnchors(f);
-                if (k.size() == 0 || (k - truth).cwiseAbs().maxCoeff() > 0.5 * eyes)
-                    continue;
-                const Similarity t = alignSimilarity(k, anchors);
-                targets.push_back(t.apply(e.shape));
-                keypoints.push_back(t.apply(detectionKeypoints(f)));
-                break;
-            }
-        }
-        const int count = int(targets.size());
-        if (count >= 3) {
-            Eigen::MatrixXd Y(model.meanShape.size(), count), K(10, count);
-            for (int i = 0; i < count; ++i) {
-                Y.col(i) = targets[size_t(i)];
-                K.col(i) = keypoints[size_t(i)];
-            }
-            model.detectorShape = Y.rowwise().mean();
-            model.detectorKeypointMean = K.rowwise().mean();
-            // Ridge regression of the shape on the keypoints, R = Yc Kc^T (Kc Kc^T + lambda I)^-1:
-            // a start that follows the detected nose and mouth, not just the mean. The ridge
-            // (a tenth of the mean keypoint variance per sample) keeps it near the mean for the
-            // few-image person-specific models.
-            const Eigen::MatrixXd Kc = K.colwise() - model.detectorKeypointMean;
-            const Eigen::MatrixXd Yc = Y.colwise() - model.detectorShape;
-            Eigen::MatrixXd gram = Kc * Kc.transpose();
-            gram.diagonal().array() += kDetectorRidge * gram.trace() / 10.0 + 1e-12;
-            model.detectorRegression = gram.ldlt().solve(Kc * Yc.transpose()).transpose();
-        } else {
-            warn("the face detector found too few training faces to calibrate its initialisation");
-        }
-    }
+    // 5. Detector calibration.
+    if (options.detector)
+        calibrateDetector(model, usable, *options.detector, feedback, warn);
     if (options.singlePrecisionBases) {
         model.singlePrecisionBases = true;
         const auto round = [](Eigen::MatrixXd &m) { m = m.cast<float>().cast<double>(); };
