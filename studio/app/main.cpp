@@ -63,10 +63,9 @@ int main(int argc, char *argv[])
     const QString project = !options.project.isEmpty() ? options.project
                             : batch                    ? QString()
                                                        : RecentProjects::lastSession();
-    if (project.isEmpty())
+    // A last project that no longer opens (moved, damaged) is reported, and the demo opens instead.
+    if (project.isEmpty() || (!window.files()->open(project) && options.project.isEmpty()))
         window.files()->openDemo();
-    else
-        window.files()->open(project);
     if (batch)
         (new ScreenshotRunner(&window, options.screenshot))->start();
     return app.exec();
