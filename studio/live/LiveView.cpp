@@ -55,7 +55,7 @@ LiveView::LiveView(StudioContext *context, std::function<bool()> saveProject, QW
     modelLabel->setBuddy(m_models);
     m_microphones->setObjectName(QStringLiteral("liveMicrophone"));
     m_microphones->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_microphones->setMinimumContentsLength(10);
+    m_microphones->setMinimumContentsLength(8);
     m_microphones->setToolTip(tr("The microphone the face listens to"));
     m_cameras->setObjectName(QStringLiteral("liveCamera"));
     m_cameras->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
@@ -112,8 +112,13 @@ LiveView::LiveView(StudioContext *context, std::function<bool()> saveProject, QW
     m_message->setWordWrap(true);
     m_message->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    footer->addWidget(m_latency);
-    footer->addWidget(m_progress);
+    // The read-outs give way before the buttons do: the window's side panels keep their room.
+    for (QLabel *readOut : {m_latency, m_progress}) {
+        readOut->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+        readOut->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("Latency: 000 ms")));
+    }
+    footer->addWidget(m_latency, 3);
+    footer->addWidget(m_progress, 2);
     footer->addStretch(1);
     footer->addWidget(m_save);
     footer->addWidget(m_export);
