@@ -75,19 +75,24 @@ LiveView::LiveView(StudioContext *context, std::function<bool()> saveProject, QW
                           "recognised phones"));
     m_export->setObjectName(QStringLiteral("liveExport"));
     m_export->setToolTip(tr("Write the last session's faces with its sound as an MP4 video"));
+    // Two rows, what to listen to and what to draw, then the buttons: in one row they would
+    // claim the width the window's side panels need at 1280x800.
     header->addWidget(micLabel);
     header->addWidget(m_microphones, 2);
     header->addWidget(modelLabel);
     header->addWidget(m_models, 1);
-    header->addWidget(m_cameras, 1);
-    header->addWidget(m_start);
-    header->addWidget(m_stop);
-    header->addStretch(1);
     layout->addLayout(header);
+    auto *controls = new QHBoxLayout;
+    controls->setSpacing(8);
+    controls->addWidget(m_cameras, 1);
+    controls->addWidget(m_start);
+    controls->addWidget(m_stop);
+    controls->addStretch(1);
+    layout->addLayout(controls);
 
     m_face->setObjectName(QStringLiteral("liveFace"));
     m_face->setEditable(false);
-    m_face->setMinimumSize(160, 120); // as the preview's panes: the timeline below keeps its height
+    m_face->setMinimumSize(160, 96); // the timeline below keeps its height
     layout->addWidget(m_face, 1);
     // Which recogniser hears the phones, in the face's corner: the rows around it have no room at
     // the smallest window.
@@ -112,17 +117,17 @@ LiveView::LiveView(StudioContext *context, std::function<bool()> saveProject, QW
     m_message->setWordWrap(true);
     m_message->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    // The read-outs give way before the buttons do: the window's side panels keep their room.
-    for (QLabel *readOut : {m_latency, m_progress}) {
-        readOut->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-        readOut->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("Latency: 000 ms")));
-    }
-    footer->addWidget(m_latency, 3);
-    footer->addWidget(m_progress, 2);
+    // The read-outs on a row of their own, above the buttons: side by side they would claim the
+    // width the window's side panels need at 1280x800.
+    footer->addWidget(m_latency);
+    footer->addWidget(m_progress);
     footer->addStretch(1);
-    footer->addWidget(m_save);
-    footer->addWidget(m_export);
     layout->addLayout(footer);
+    auto *keep = new QHBoxLayout;
+    keep->addStretch(1);
+    keep->addWidget(m_save);
+    keep->addWidget(m_export);
+    layout->addLayout(keep);
     layout->addWidget(m_message);
 
     connect(m_start, &QPushButton::clicked, this, &LiveView::start);
