@@ -1189,7 +1189,7 @@
     </message>
     <message>
         <location filename="../studio/live/LiveView.cpp" line="41"/>
-        <location filename="../studio/live/LiveView.cpp" line="444"/>
+        <location filename="../studio/live/LiveView.cpp" line="454"/>
         <source>Save as Sequence</source>
         <translation>Als Sequenz speichern</translation>
     </message>
@@ -1244,157 +1244,157 @@
         <translation>Die Gesichter der letzten Sitzung mit ihrem Ton als MP4-Video schreiben</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="98"/>
+        <location filename="../studio/live/LiveView.cpp" line="103"/>
         <source>What recognises the phones: CMU Sphinx&apos;s US-English model when the timeline aligns with CMU Sphinx (its Model menu), else the HMMs of the studio&apos;s aligner model, trained on one speaker</source>
         <translation>Was die Phone erkennt: das US-englische Modell von CMU Sphinx, wenn die Zeitleiste mit CMU Sphinx ausrichtet (ihr Modell-Menü), sonst die HMMs des Ausrichtungsmodells des Studios, auf einen Sprecher trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="102"/>
+        <location filename="../studio/live/LiveView.cpp" line="107"/>
         <source>The phones recognised in the last seconds, the newest on the right</source>
         <translation>Die in den letzten Sekunden erkannten Phone, die neuesten rechts</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="108"/>
+        <location filename="../studio/live/LiveView.cpp" line="113"/>
         <source>Time from the sound to the frame that shows it, over the last %1 seconds</source>
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="194"/>
+        <location filename="../studio/live/LiveView.cpp" line="204"/>
         <source>No microphone found</source>
         <translation>Kein Mikrofon gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="197"/>
+        <location filename="../studio/live/LiveView.cpp" line="207"/>
         <source>A recording…</source>
         <translation>Eine Aufnahme…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="199"/>
+        <location filename="../studio/live/LiveView.cpp" line="209"/>
         <source>An audio or video file, played aloud, drives the face as if spoken now</source>
         <translation>Eine Audio- oder Videodatei, hörbar abgespielt, bewegt das Gesicht, als würde sie jetzt gesprochen</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="210"/>
+        <location filename="../studio/live/LiveView.cpp" line="220"/>
         <source>No camera</source>
         <translation>Keine Kamera</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="211"/>
+        <location filename="../studio/live/LiveView.cpp" line="221"/>
         <source>The face is drawn into a still of the person</source>
         <translation>Das Gesicht wird in ein Standbild der Person gezeichnet</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="260"/>
+        <location filename="../studio/live/LiveView.cpp" line="270"/>
         <source>No trained model</source>
         <translation>Kein trainiertes Modell</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="293"/>
+        <location filename="../studio/live/LiveView.cpp" line="303"/>
         <source>No microphone was found. Connect one (the list above follows the devices as they come and go), or choose A recording… there.</source>
         <translation>Es wurde kein Mikrofon gefunden. Schließen Sie eines an (die Liste oben folgt den Geräten, wie sie kommen und gehen), oder wählen Sie dort Eine Aufnahme….</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="303"/>
+        <location filename="../studio/live/LiveView.cpp" line="313"/>
         <source>Phones: CMU Sphinx US English (any speaker)</source>
         <translation>Phone: CMU Sphinx US-Englisch (jeder Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="304"/>
+        <location filename="../studio/live/LiveView.cpp" line="314"/>
         <source>Phones: the aligner model&apos;s HMMs</source>
         <translation>Phone: die HMMs des Ausrichtungsmodells</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="310"/>
+        <location filename="../studio/live/LiveView.cpp" line="320"/>
         <source>Preparing: loading the phone recogniser and finding the face in the current sequence…</source>
         <translation>Vorbereitung: Die Phon-Erkennung wird geladen und das Gesicht in der aktuellen Sequenz gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="314"/>
+        <location filename="../studio/live/LiveView.cpp" line="324"/>
         <source>Playing %1: the face follows its sound.</source>
         <translation>%1 wird abgespielt: Das Gesicht folgt ihrem Ton.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="315"/>
+        <location filename="../studio/live/LiveView.cpp" line="325"/>
         <source>Listening. Speak, and the face follows.</source>
         <translation>Hört zu. Sprechen Sie, und das Gesicht folgt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="318"/>
+        <location filename="../studio/live/LiveView.cpp" line="328"/>
         <source>Finishing the last frames…</source>
         <translation>Die letzten Bilder werden fertiggestellt…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="324"/>
+        <location filename="../studio/live/LiveView.cpp" line="334"/>
         <source>Writing the video…</source>
         <translation>Das Video wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="326"/>
+        <location filename="../studio/live/LiveView.cpp" line="336"/>
         <source>The last session (%1 s) is kept: save it as a sequence, export it as a video, or start again.</source>
         <translation>Die letzte Sitzung (%1 s) ist erhalten: Speichern Sie sie als Sequenz, exportieren Sie sie als Video oder starten Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="333"/>
+        <location filename="../studio/live/LiveView.cpp" line="343"/>
         <source>Press Start and speak: the face moves with your voice.</source>
         <translation>Drücken Sie „Start“ und sprechen Sie: Das Gesicht bewegt sich mit Ihrer Stimme.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="338"/>
+        <location filename="../studio/live/LiveView.cpp" line="348"/>
         <source>This model&apos;s file predates Live&apos;s guess of phones in context, so its face waits for each phone to end, in pauses for seconds. Train it again for a face that follows at once.</source>
         <translation>Die Datei dieses Modells ist älter als Lives Schätzung der Phone im Kontext, daher wartet sein Gesicht auf das Ende jedes Phons, in Pausen sekundenlang. Trainieren Sie es neu, damit das Gesicht sofort folgt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="342"/>
+        <location filename="../studio/live/LiveView.cpp" line="352"/>
         <source>Only the first %1 minutes are kept for saving; the face went on moving after that.</source>
         <translation>Nur die ersten %1 Minuten bleiben zum Speichern erhalten; das Gesicht hat sich danach weiterbewegt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="362"/>
+        <location filename="../studio/live/LiveView.cpp" line="372"/>
         <source>Latency: %1 ms mean, %2 ms max</source>
         <translation>Latenz: %1 ms im Mittel, %2 ms maximal</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="365"/>
+        <location filename="../studio/live/LiveView.cpp" line="375"/>
         <source>Time from the sound to the frame that shows it, over the last %1 seconds; %2 ms of it the phone recogniser and the model wait for the sound that follows</source>
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden; %2 ms davon warten die Phon-Erkennung und das Modell auf den folgenden Ton</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="370"/>
+        <location filename="../studio/live/LiveView.cpp" line="380"/>
         <source>Latency: –</source>
         <translation>Latenz: –</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="372"/>
+        <location filename="../studio/live/LiveView.cpp" line="382"/>
         <source>%1 s, frame %2 at %3 fps</source>
         <translation>%1 s, Bild %2 bei %3 fps</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="384"/>
+        <location filename="../studio/live/LiveView.cpp" line="394"/>
         <source>Live from a Recording</source>
         <translation>Live aus einer Aufnahme</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="385"/>
+        <location filename="../studio/live/LiveView.cpp" line="395"/>
         <source>Audio and video (*.wav *.flac *.mp3 *.ogg *.m4a *.mpg *.mp4 *.mov *.avi *.mkv *.webm);;All files (*)</source>
         <translation>Audio und Video (*.wav *.flac *.mp3 *.ogg *.m4a *.mpg *.mp4 *.mov *.avi *.mkv *.webm);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="445"/>
+        <location filename="../studio/live/LiveView.cpp" line="455"/>
         <source>The session&apos;s sound is written into the project&apos;s folder, and the bundled demo is read-only. Save the project in a folder of your own first?</source>
         <translation>Der Ton der Sitzung wird in den Ordner des Projekts geschrieben, und das mitgelieferte Demo ist schreibgeschützt. Das Projekt zuerst in einem eigenen Ordner speichern?</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="454"/>
+        <location filename="../studio/live/LiveView.cpp" line="464"/>
         <source>The live session is sequence %1, at the end of the list.</source>
         <translation>Die Live-Sitzung ist jetzt die Sequenz %1 am Ende der Liste.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="461"/>
+        <location filename="../studio/live/LiveView.cpp" line="471"/>
         <source>Export Live Session</source>
         <translation>Live-Sitzung exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="463"/>
+        <location filename="../studio/live/LiveView.cpp" line="473"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
@@ -3284,7 +3284,7 @@
     </message>
     <message>
         <location filename="../studio/timeline/TimelinePanel.cpp" line="105"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="450"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="462"/>
         <source>Align</source>
         <translation>Ausrichten</translation>
     </message>
@@ -3320,7 +3320,7 @@
     </message>
     <message>
         <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="499"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="511"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
@@ -3351,7 +3351,7 @@
     </message>
     <message>
         <location filename="../studio/timeline/TimelinePanel.cpp" line="144"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="631"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="643"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
@@ -3451,52 +3451,52 @@
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="311"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="323"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="330"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="342"/>
         <source>Alignment of the speech in the Preview: %1 (read-only; Back to Sequence there to edit)</source>
         <translation>Alignierung der Sprache in der Vorschau: %1 (schreibgeschützt; dort „Zurück zur Sequenz“ zum Bearbeiten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="344"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="356"/>
         <source>No audio</source>
         <translation>Kein Ton</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="414"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="426"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="427"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="439"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="451"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="463"/>
         <source>The transcript of %1 changed since its boundaries were edited. Aligning it again replaces the edited boundaries. Align anyway?</source>
         <translation>Das Transkript von %1 wurde geändert, nachdem seine Grenzen bearbeitet wurden. Erneutes Alignieren ersetzt die bearbeiteten Grenzen. Trotzdem alignieren?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="462"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="474"/>
         <source>Every word of %1 is user-edited: nothing to align there.</source>
         <translation>Jedes Wort von %1 ist von Hand bearbeitet: Dort gibt es nichts zu alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="483"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="495"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="486"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="498"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="432"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="444"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
@@ -3506,17 +3506,22 @@
         <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Stimmen, die den Trainingssprechern des Modells unähnlich sind)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="498"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="284"/>
+        <source>The timeline aligns with the built-in model of GRID&apos;s speaker s1. For another speaker, choose Model ▸ Generic US English and Adapt to Speaker.</source>
+        <translation>Die Zeitleiste richtet mit dem eingebauten Modell des GRID-Sprechers s1 aus. Für einen anderen Sprecher wählen Sie Modell ▸ Allgemeines US-Englisch und An Sprecher anpassen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="510"/>
         <source>The Project&apos;s Aligner (%1)</source>
         <translation>Aligner des Projekts (%1)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="520"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="532"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="545"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="557"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -3524,12 +3529,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="565"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="577"/>
         <source>%1: the alignment came out as it was; nothing changed.</source>
         <translation>%1: Die Alignierung ist unverändert geblieben.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="568"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="580"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -3537,62 +3542,62 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="607"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="619"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="607"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="619"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="615"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="627"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="632"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="644"/>
         <source>These phones belong to two words, “%1” and “%2”. Merge the words as well?</source>
         <translation>Diese Phone gehören zu zwei Wörtern, „%1“ und „%2“. Die Wörter ebenfalls verbinden?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="635"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="647"/>
         <source>Merge Phones and Words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="641"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="653"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="641"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="653"/>
         <source>Merge phones and words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="673"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="685"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="673"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="685"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="732"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="744"/>
         <source>Not one of the 41 phones (ARPAbet, sil, br)</source>
         <translation>Keines der 41 Phone (ARPAbet, sil, br)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="733"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="745"/>
         <source>Enter one word</source>
         <translation>Ein einzelnes Wort eingeben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="741"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="753"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>

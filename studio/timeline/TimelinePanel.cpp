@@ -35,6 +35,7 @@
 #include <QVBoxLayout>
 
 #include <cmath>
+#include <utility>
 
 namespace lipsync::studio {
 
@@ -264,6 +265,12 @@ void TimelinePanel::attach(StudioContext *context)
     connect(m_waveform, &WaveformView::timeClicked, context, &StudioContext::seek);
     connect(m_document, &ProjectDocument::documentReset, this, [this] {
         publishAlignerChoice(); // another project: perhaps its own aligner
+        // A project of the user's own, aligned with the model of GRID's one speaker: say what
+        // fits another speaker better (the demo is GRID's speaker).
+        // Said once its first sequence is shown, after that sequence's own message.
+        m_alignerHintPending = m_document->isOpen() && !m_document->isReadOnly()
+                               && !m_document->project().model("aligner") && m_builtInAlignerAction->isChecked()
+                               && m_document->sequenceCount() > 0;
         showSequence(-1);
     });
     connect(m_document, &ProjectDocument::modelsChanged, this, &TimelinePanel::publishAlignerChoice);
@@ -272,7 +279,13 @@ void TimelinePanel::attach(StudioContext *context)
             refresh();
         updateActions();
     });
-    connect(context, &StudioContext::sequenceLoaded, this, [this] { showSequence(m_context->currentSequence()); });
+    connect(context, &StudioContext::sequenceLoaded, this, [this] {
+        showSequence(m_context->currentSequence());
+        if (std::exchange(m_alignerHintPending, false))
+            m_context->showStatus(tr("The timeline aligns with the built-in model of GRID's speaker s1. For another "
+                                     "speaker, choose Model ▸ Generic US English and Adapt to Speaker."),
+                                  20000);
+    });
     // The one player: the main window follows its frames; the timeline's cursor follows its
     // exact position (between frame centres), whoever started it.
     m_player = context->playback();

@@ -147,6 +147,9 @@ private:
     TierPair m_dragBase;
     int m_dragKey = -1;
     int m_dragMergeKey = 0;
+    // A project of the user's own opened, aligned with GRID's speaker's model: say so once its
+    // first sequence is shown.
+    bool m_alignerHintPending = false;
 
     QPointer<QWidget> m_editor;
     TierKind m_editorTier = TierKind::Phones;

@@ -416,6 +416,10 @@ private slots:
         QCOMPARE(m_window->sequenceView()->model()->rowCount(), 2);
         QVERIFY2(ErrorReporter::lastMessage().contains(QStringLiteral("damaged.mpg")),
                  qPrintable(ErrorReporter::lastMessage()));
+        // A project of one's own, aligned with GRID's speaker's model: the studio says what fits
+        // another speaker.
+        QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("Adapt to Speaker")),
+                 qPrintable(m_window->statusBar()->currentMessage()));
         QCOMPARE(m_window->document()->sequence(1).transcript, std::string("bin green in three again"));
         QCOMPARE(m_window->document()->sequence(0).frameCount, 75);
         QTRY_VERIFY_WITH_TIMEOUT(m_window->media() && m_window->currentSequence() == 0, 60000);
