@@ -36,14 +36,16 @@ std::vector<CommandOption> SpeechAligner::options(const QStringList &alignerAlia
     return options;
 }
 
-SpeechAligner::SpeechAligner(const CommandLine &args) : SpeechAligner(args, args.value(QStringLiteral("project")))
+SpeechAligner::SpeechAligner(const CommandLine &args, bool transcriptFit)
+    : SpeechAligner(args, args.value(QStringLiteral("project")), transcriptFit)
 {
 }
 
-SpeechAligner::SpeechAligner(const CommandLine &args, const QString &projectFolder)
+SpeechAligner::SpeechAligner(const CommandLine &args, const QString &projectFolder, bool transcriptFit)
 {
     AlignerChoice choice{args.value(QStringLiteral("aligner")).toStdString(), args.isSet(QStringLiteral("adapt"))};
     choice.boundaryCorrection = !args.isSet(QStringLiteral("no-boundary-correction"));
+    choice.transcriptFit = transcriptFit;
     std::map<std::string, std::string> projectPronunciations;
     if (!projectFolder.isEmpty()) {
         const Project project = Project::load(projectFolder.toStdString());

@@ -25,10 +25,11 @@ public:
 
     // Loads the aligner and the lexicon the options choose. Throws lipsync::Error naming the model
     // file or folder, the project or the dictionary at fault.
-    explicit SpeechAligner(const CommandLine &args);
+    // `transcriptFit`: measure AlignerOutput::transcriptFit (AlignerChoice::transcriptFit).
+    explicit SpeechAligner(const CommandLine &args, bool transcriptFit = false);
     // The same with the pronunciations of the project at `projectFolder` (a command whose project
     // is an argument rather than --project).
-    SpeechAligner(const CommandLine &args, const QString &projectFolder);
+    SpeechAligner(const CommandLine &args, const QString &projectFolder, bool transcriptFit = false);
     ~SpeechAligner();
 
     // "sphinx:DIR" or the path of our model file.

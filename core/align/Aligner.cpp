@@ -39,6 +39,7 @@ std::unique_ptr<Aligner> createAligner(const AlignerChoice &choice)
     auto aligner = std::make_unique<MonophoneAligner>(path, choice.adapt);
     if (!choice.boundaryCorrection)
         aligner->dropBoundaryCorrection();
+    aligner->measureTranscriptFit(choice.transcriptFit);
     return aligner;
 }
 

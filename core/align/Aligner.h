@@ -35,13 +35,17 @@ struct AlignerChoice
     // Our model's word-boundary correction (BoundaryCorrection), when it has one; false: the
     // HMM's own boundaries, as the paper's aligner (the paper preset, docs/models.md §8).
     bool boundaryCorrection = true;
+    // Measure AlignerOutput::transcriptFit (ours): a pass over every state for every frame, about
+    // a third more time than the alignment itself, so only when asked (`align --json`, `--strict`).
+    bool transcriptFit = false;
 
     bool isSphinx() const;
     // With isSphinx(): DIR of "sphinx:DIR", empty for "sphinx" (Debian's folder).
     std::string sphinxModelDir() const;
     bool operator<(const AlignerChoice &o) const
     {
-        return std::tie(model, adapt, boundaryCorrection) < std::tie(o.model, o.adapt, o.boundaryCorrection);
+        return std::tie(model, adapt, boundaryCorrection, transcriptFit)
+               < std::tie(o.model, o.adapt, o.boundaryCorrection, o.transcriptFit);
     }
 };
 
@@ -51,7 +55,7 @@ struct AlignerOutput
     double duration = 0;         // seconds of audio
     MfccOptions audioFrames;     // the aligner's audio frames (voteFrameLabels)
     AdaptationReport adaptation; // ours with adaptation: log-likelihood per frame per pass
-    // How well the transcript fits the sound (ours; NaN for CMU Sphinx's): the forced path's
+    // How well the transcript fits the sound (ours with AlignerChoice::transcriptFit; else NaN): the forced path's
     // log-likelihood per audio frame minus that of the best-matching phone state of each frame
     // on its own (a free phone recognition without a grammar), <= 0. Speech that says other
     // words than the transcript pulls it far down; how far a true transcript sits depends on how

@@ -102,7 +102,8 @@ AlignerOutput MonophoneAligner::align(const std::string &mediaPath, const std::v
     } catch (const Error &e) {
         throw misfit(e, mediaPath, transcriptPath);
     }
-    out.transcriptFit = transcriptFit(p.modelOr(m_model), p.utterance.features, out.alignment);
+    if (m_measureFit)
+        out.transcriptFit = transcriptFit(p.modelOr(m_model), p.utterance.features, out.alignment);
     m_model.boundaryCorrection().apply(out.alignment);
     return out;
 }

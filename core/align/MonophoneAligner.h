@@ -21,6 +21,8 @@ public:
 
     // Aligns with the HMM's own word boundaries: the model's learned correction is not applied.
     void dropBoundaryCorrection() { m_model.setBoundaryCorrection({}); }
+    // Fill AlignerOutput::transcriptFit (AlignerChoice::transcriptFit).
+    void measureTranscriptFit(bool on) { m_measureFit = on; }
 
     std::string name() const override { return m_path; }
     const AcousticModel *acousticModel() const override { return &m_model; }
@@ -38,6 +40,7 @@ private:
     std::string m_path;
     AcousticModel m_model;
     bool m_adapt = false;
+    bool m_measureFit = false;
 };
 
 } // namespace lipsync
