@@ -188,6 +188,28 @@ LatencySummary summarise(const std::vector<double> &latencies)
     return s;
 }
 
+// The --json report of a session: frames, pace, latencies, the phones recognised.
+QJsonObject sessionReport(const LiveSession &session, const std::vector<int> &recognised, const LatencySummary &latency,
+                          int frames, double seconds, double soundSeconds)
+{
+    QJsonArray phones;
+    for (int p : recognised)
+        phones.append(QString::fromStdString(PhoneSet::label(p)));
+    return QJsonObject{{QStringLiteral("frames"), frames},
+                       {QStringLiteral("frameRate"), session.frameRate()},
+                       {QStringLiteral("soundSeconds"), soundSeconds},
+                       {QStringLiteral("seconds"), seconds},
+                       {QStringLiteral("fps"), frames / std::max(seconds, 1e-9)},
+                       {QStringLiteral("latency_ms_mean"), 1000 * latency.mean},
+                       {QStringLiteral("latency_ms_max"), 1000 * latency.worst},
+                       {QStringLiteral("latency_ms_p95"), 1000 * latency.p95},
+                       {QStringLiteral("latency_ms_algorithmic"), 1000 * session.latencySeconds()},
+                       // -1: the model's face waits for each phone to end (phones in context, a model
+                       // file without the guess of them).
+                       {QStringLiteral("generator_latency_frames"), session.generatorLatencyFrames()},
+                       {QStringLiteral("phones"), phones}};
+}
+
 // Against the transcript's forced alignment: the phone error rate of what was recognised, and the
 // share of frames whose label matches the alignment's vote.
 void addAccuracy(QJsonObject &o, const Tier &reference, const LiveSession &session, const std::vector<int> &recognised,
@@ -318,25 +340,9 @@ int runLive(const CommandLine &a)
     if (recorder)
         recorder->finish();
 
-    const auto [mean, worst, p95] = summarise(latencies);
     const std::vector<int> recognised = spokenPhones(session.phones());
-    QJsonArray phones;
-    for (int p : recognised)
-        phones.append(QString::fromStdString(PhoneSet::label(p)));
-    QJsonObject o{{QStringLiteral("input"), input},
-                  {QStringLiteral("frames"), frames},
-                  {QStringLiteral("frameRate"), session.frameRate()},
-                  {QStringLiteral("soundSeconds"), sound.duration()},
-                  {QStringLiteral("seconds"), seconds},
-                  {QStringLiteral("fps"), frames / std::max(seconds, 1e-9)},
-                  {QStringLiteral("latency_ms_mean"), 1000 * mean},
-                  {QStringLiteral("latency_ms_max"), 1000 * worst},
-                  {QStringLiteral("latency_ms_p95"), 1000 * p95},
-                  {QStringLiteral("latency_ms_algorithmic"), 1000 * session.latencySeconds()},
-                  // -1: the model's face waits for each phone to end (phones in context, a model file
-                  // without the guess of them).
-                  {QStringLiteral("generator_latency_frames"), session.generatorLatencyFrames()},
-                  {QStringLiteral("phones"), phones}};
+    QJsonObject o = sessionReport(session, recognised, summarise(latencies), frames, seconds, sound.duration());
+    o[QStringLiteral("input")] = input;
     if (a.isSet("transcript"))
         addAccuracy(o, referencePhones(alignerPath, input, a.value("transcript"), a.value("pronunciations")), session,
                     recognised, frames);

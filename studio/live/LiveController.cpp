@@ -144,6 +144,24 @@ void LiveController::setState(State state)
     emit stateChanged(state);
 }
 
+namespace {
+
+// A recording's sound, mono at the session's rate; refused before decoding when it has none or is
+// longer than a session keeps (bounded memory).
+std::shared_ptr<const std::vector<float>> decodeForSession(const std::string &path, int sampleRate)
+{
+    const MediaInfo info = MediaInfo::probe(path);
+    if (!info.hasAudio)
+        throw Error("the file has no sound", path);
+    if (info.audioDuration > FileInput::kMaxSeconds)
+        throw Error("the sound lasts " + std::to_string(int(info.audioDuration / 60)) + " minutes; Live takes at most "
+                        + std::to_string(int(FileInput::kMaxSeconds / 60)),
+                    path);
+    return std::make_shared<const std::vector<float>>(AudioDecoder::decode(path, sampleRate).samples);
+}
+
+} // namespace
+
 bool LiveController::start(const QString &kind, Input input, const QAudioDevice &device, QString *why)
 {
     auto refuse = [why](const QString &reason) {
@@ -226,17 +244,8 @@ bool LiveController::start(const QString &kind, Input input, const QAudioDevice 
             setup.options.stillBackground = true;
             std::shared_ptr<const std::vector<float>> sound;
             if (!soundFile.empty()) {
-                // Refused before decoding when longer than a session keeps (bounded memory).
                 feedback.setStatus("decoding the recording's sound");
-                const MediaInfo info = MediaInfo::probe(soundFile);
-                if (!info.hasAudio)
-                    throw Error("the file has no sound", soundFile);
-                if (info.audioDuration > FileInput::kMaxSeconds)
-                    throw Error("the sound lasts " + std::to_string(int(info.audioDuration / 60)) +
-                                    " minutes; Live takes at most 30",
-                                soundFile);
-                sound = std::make_shared<const std::vector<float>>(
-                    AudioDecoder::decode(soundFile, setup.sampleRate).samples);
+                sound = decodeForSession(soundFile, setup.sampleRate);
             }
             return [self, epoch, setup, acousticPath, background, tracked, sound] {
                 if (!self || self->m_epoch != epoch || self->m_state != State::Preparing)

@@ -130,6 +130,17 @@ LiveView::LiveView(StudioContext *context, std::function<bool()> saveProject, QW
     layout->addLayout(keep);
     layout->addWidget(m_message);
 
+    connectControls();
+    showFrames();
+    updateControls();
+}
+
+LiveView::~LiveView() = default;
+
+// The buttons and lists to the session, the devices coming and going, the controller's news and
+// the project's models.
+void LiveView::connectControls()
+{
     connect(m_start, &QPushButton::clicked, this, &LiveView::start);
     connect(m_stop, &QPushButton::clicked, this, &LiveView::stop);
     connect(m_save, &QPushButton::clicked, this, &LiveView::saveAsSequence);
@@ -164,9 +175,9 @@ LiveView::LiveView(StudioContext *context, std::function<bool()> saveProject, QW
     connect(m_controller, &LiveController::exportStarted, this, &LiveView::updateControls);
     connect(m_controller, &LiveController::exportEnded, this, &LiveView::updateControls);
     // The next session's recogniser, and whether it is installed.
-    connect(context->modelStore(), &ModelStore::alignerChoiceChanged, this, &LiveView::updateControls);
+    connect(m_context->modelStore(), &ModelStore::alignerChoiceChanged, this, &LiveView::updateControls);
     connect(m_models, &QComboBox::activated, this, [this] { m_modelChosen = true; });
-    ProjectDocument *document = context->document();
+    ProjectDocument *document = m_context->document();
     for (auto signal : {&ProjectDocument::documentReset, &ProjectDocument::modelsChanged})
         connect(document, signal, this, [this] {
             fillModels();
@@ -177,11 +188,7 @@ LiveView::LiveView(StudioContext *context, std::function<bool()> saveProject, QW
         m_face->setImage({});
         m_strip->clear();
     });
-    showFrames();
-    updateControls();
 }
-
-LiveView::~LiveView() = default;
 
 QString LiveView::chosenKind() const
 {

@@ -79,6 +79,7 @@ protected:
     void hideEvent(QHideEvent *event) override;
 
 private:
+    void connectControls();
     void fillMicrophones();
     void fillModels();
     void fillCameras();
