@@ -206,18 +206,44 @@ AamFitResult AamFitter::fit(const cv::Mat &image, const Eigen::VectorXd &initial
     return best;
 }
 
+namespace {
+
+// The face's box in an image of `size`, grown by half its size on each side (the whole image when
+// that leaves less than 2 pixels).
+cv::Rect regionAround(const Eigen::VectorXd &shape, const cv::Size &size)
+{
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (Eigen::Index i = 0; i + 1 < shape.size(); i += 2) {
+        x0 = std::min(x0, shape[i]);
+        x1 = std::max(x1, shape[i]);
+        y0 = std::min(y0, shape[i + 1]);
+        y1 = std::max(y1, shape[i + 1]);
+    }
+    const double mx = 0.5 * (x1 - x0) + 4, my = 0.5 * (y1 - y0) + 4;
+    const cv::Rect wanted(int(std::floor(x0 - mx)), int(std::floor(y0 - my)), int(std::ceil(x1 - x0 + 2 * mx)),
+                          int(std::ceil(y1 - y0 + 2 * my)));
+    const cv::Rect roi = wanted & cv::Rect(0, 0, size.width, size.height);
+    return roi.width < 2 || roi.height < 2 ? cv::Rect(0, 0, size.width, size.height) : roi;
+}
+
+// Projection weights that hold the fixed points (PointState::Fixed) where they are.
+Eigen::VectorXd fixedPointWeights(const std::vector<bool> &fixed)
+{
+    Eigen::VectorXd weights = Eigen::VectorXd::Ones(Eigen::Index(fixed.size()));
+    for (size_t i = 0; i < fixed.size(); ++i)
+        if (fixed[i])
+            weights[Eigen::Index(i)] = 1000.0;
+    return weights;
+}
+
+} // namespace
+
 AamFitResult AamFitter::fitOnce(const cv::Mat &grey, const Eigen::VectorXd &initialShape,
                                 const AamFitOptions &options) const
 {
     const int k = m_model.pointCount();
-    Eigen::VectorXd weights;
     const bool hasFixed = options.fixedShape.size() == 2 * k && int(options.fixedMask.size()) == k;
-    if (hasFixed) {
-        weights = Eigen::VectorXd::Ones(k);
-        for (int i = 0; i < k; ++i)
-            if (options.fixedMask[size_t(i)])
-                weights[i] = 1000.0;
-    }
+    const Eigen::VectorXd weights = hasFixed ? fixedPointWeights(options.fixedMask) : Eigen::VectorXd();
     auto pinFixed = [&](Eigen::VectorXd &s) {
         if (hasFixed)
             for (int i = 0; i < k; ++i)
@@ -248,25 +274,9 @@ AamFitResult AamFitter::fitOnce(const cv::Mat &grey, const Eigen::VectorXd &init
             f = 1.0;
             levelImage = grey;
         }
-        // Smooth only the region around the face (half its size again on each side): tracking
-        // a 360x288 video then costs a few thousand pixels per frame, not the whole frame.
-        cv::Rect roi;
-        {
-            const Eigen::VectorXd s = scaled(result.shape, f);
-            double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-            for (int i = 0; i < k; ++i) {
-                x0 = std::min(x0, s[2 * i]);
-                x1 = std::max(x1, s[2 * i]);
-                y0 = std::min(y0, s[2 * i + 1]);
-                y1 = std::max(y1, s[2 * i + 1]);
-            }
-            const double mx = 0.5 * (x1 - x0) + 4, my = 0.5 * (y1 - y0) + 4;
-            const cv::Rect wanted(int(std::floor(x0 - mx)), int(std::floor(y0 - my)),
-                                  int(std::ceil(x1 - x0 + 2 * mx)), int(std::ceil(y1 - y0 + 2 * my)));
-            roi = wanted & cv::Rect(0, 0, levelImage.cols, levelImage.rows);
-            if (roi.width < 2 || roi.height < 2)
-                roi = cv::Rect(0, 0, levelImage.cols, levelImage.rows);
-        }
+        // Smooth only the region around the face: tracking a 360x288 video then costs a few
+        // thousand pixels per frame, not the whole frame.
+        const cv::Rect roi = regionAround(scaled(result.shape, f), levelImage.size());
         const std::vector<cv::Mat> channels =
             fittingChannels(smoothedForFitting(levelImage(roi)), m_model.fitFeatures);
         const Eigen::Vector2d offset(roi.x, roi.y);
