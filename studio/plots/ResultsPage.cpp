@@ -72,15 +72,17 @@ void ResultsPage::setStopped(const QString &why)
 void ResultsPage::setResult(const EvaluationResult &result, const QString &state)
 {
     m_chart->setResult(result);
-    m_shownState = state;
-    m_computing = false;
-    m_state->setText(state);
-    fillTable();
+    showDrawn(state);
 }
 
 void ResultsPage::setRealism(const RealismResult &result, const QString &state)
 {
     m_chart->setRealism(result);
+    showDrawn(state);
+}
+
+void ResultsPage::showDrawn(const QString &state)
+{
     m_shownState = state;
     m_computing = false;
     m_state->setText(state);

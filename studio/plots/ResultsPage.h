@@ -40,6 +40,7 @@ public:
     bool isComputing() const { return m_computing; }
 
 private:
+    void showDrawn(const QString &state); // what the chart now draws: its state line and table
     void fillTable();
 
     QString m_emptyText;
