@@ -1027,6 +1027,19 @@
     </message>
 </context>
 <context>
+    <name>lipsync::studio::IntervalLabelEditor</name>
+    <message>
+        <location filename="../studio/timeline/IntervalLabelEditor.cpp" line="98"/>
+        <source>Not one of the 41 phones (ARPAbet, sil, br)</source>
+        <translation>Keines der 41 Phone (ARPAbet, sil, br)</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/IntervalLabelEditor.cpp" line="99"/>
+        <source>Enter one word</source>
+        <translation>Ein einzelnes Wort eingeben</translation>
+    </message>
+</context>
+<context>
     <name>lipsync::studio::LiveController</name>
     <message>
         <location filename="../studio/live/LiveController.cpp" line="105"/>
@@ -1074,103 +1087,103 @@
         <translation>Das Phon-Bigramm für die Live-Erkennung (aligner/grid-s1.bigram) wurde nicht gefunden. Installieren Sie das Studio neu.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="155"/>
+        <location filename="../studio/live/LiveController.cpp" line="173"/>
         <source>A live session is running already.</source>
         <translation>Es läuft bereits eine Live-Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="157"/>
+        <location filename="../studio/live/LiveController.cpp" line="175"/>
         <source>Wait until the video export has ended.</source>
         <translation>Warten Sie, bis der Videoexport beendet ist.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="161"/>
+        <location filename="../studio/live/LiveController.cpp" line="179"/>
         <source>Choose a microphone.</source>
         <translation>Wählen Sie ein Mikrofon.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="190"/>
+        <location filename="../studio/live/LiveController.cpp" line="208"/>
         <source>Prepare the live view</source>
         <translation>Live-Ansicht vorbereiten</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="256"/>
+        <location filename="../studio/live/LiveController.cpp" line="265"/>
         <source>No face was found in %1: the live face is drawn on grey.</source>
         <translation>In %1 wurde kein Gesicht gefunden: Das Live-Gesicht wird auf Grau gezeichnet.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="266"/>
+        <location filename="../studio/live/LiveController.cpp" line="275"/>
         <source>The live view could not be prepared: %1</source>
         <translation>Die Live-Ansicht konnte nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="316"/>
+        <location filename="../studio/live/LiveController.cpp" line="325"/>
         <source>The microphone could not be opened: %1.</source>
         <translation>Das Mikrofon konnte nicht geöffnet werden: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="412"/>
+        <location filename="../studio/live/LiveController.cpp" line="421"/>
         <source>The live session stopped: %1</source>
         <translation>Die Live-Sitzung wurde abgebrochen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="512"/>
-        <location filename="../studio/live/LiveController.cpp" line="573"/>
+        <location filename="../studio/live/LiveController.cpp" line="521"/>
+        <location filename="../studio/live/LiveController.cpp" line="582"/>
         <source>Nothing is recorded yet: start a session and stop it first.</source>
         <translation>Es ist noch nichts aufgenommen: Starten und beenden Sie zuerst eine Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="514"/>
+        <location filename="../studio/live/LiveController.cpp" line="523"/>
         <source>No project is open.</source>
         <translation>Es ist kein Projekt geöffnet.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="516"/>
+        <location filename="../studio/live/LiveController.cpp" line="525"/>
         <source>The bundled demo is read-only: save the project in a folder of your own first.</source>
         <translation>Das mitgelieferte Demo ist schreibgeschützt: Speichern Sie das Projekt zuerst in einem eigenen Ordner.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="518"/>
+        <location filename="../studio/live/LiveController.cpp" line="527"/>
         <source>The project&apos;s appearance model changed since the recording: its features no longer fit.</source>
         <translation>Das Erscheinungsmodell des Projekts hat sich seit der Aufnahme geändert: Ihre Merkmale passen nicht mehr dazu.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="537"/>
+        <location filename="../studio/live/LiveController.cpp" line="546"/>
         <source>The sound could not be written: %1</source>
         <translation>Der Ton konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="558"/>
+        <location filename="../studio/live/LiveController.cpp" line="567"/>
         <source>Save Live Session as %1</source>
         <translation>Live-Sitzung als %1 speichern</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="560"/>
+        <location filename="../studio/live/LiveController.cpp" line="569"/>
         <source>The project refused the new sequence (the status bar says why).</source>
         <translation>Das Projekt hat die neue Sequenz abgelehnt (die Statusleiste nennt den Grund).</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="575"/>
+        <location filename="../studio/live/LiveController.cpp" line="584"/>
         <source>Stop the session first.</source>
         <translation>Beenden Sie zuerst die Sitzung.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="577"/>
+        <location filename="../studio/live/LiveController.cpp" line="586"/>
         <source>A video export is running already.</source>
         <translation>Es läuft bereits ein Videoexport.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="589"/>
+        <location filename="../studio/live/LiveController.cpp" line="598"/>
         <source>Export the live session to %1</source>
         <translation>Live-Sitzung nach %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="600"/>
+        <location filename="../studio/live/LiveController.cpp" line="609"/>
         <source>The live session was written to %1.</source>
         <translation>Die Live-Sitzung wurde nach %1 geschrieben.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveController.cpp" line="608"/>
+        <location filename="../studio/live/LiveController.cpp" line="617"/>
         <source>The video could not be written: %1</source>
         <translation>Das Video konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -1189,7 +1202,7 @@
     </message>
     <message>
         <location filename="../studio/live/LiveView.cpp" line="41"/>
-        <location filename="../studio/live/LiveView.cpp" line="454"/>
+        <location filename="../studio/live/LiveView.cpp" line="461"/>
         <source>Save as Sequence</source>
         <translation>Als Sequenz speichern</translation>
     </message>
@@ -1259,142 +1272,142 @@
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="204"/>
+        <location filename="../studio/live/LiveView.cpp" line="211"/>
         <source>No microphone found</source>
         <translation>Kein Mikrofon gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="207"/>
+        <location filename="../studio/live/LiveView.cpp" line="214"/>
         <source>A recording…</source>
         <translation>Eine Aufnahme…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="209"/>
+        <location filename="../studio/live/LiveView.cpp" line="216"/>
         <source>An audio or video file, played aloud, drives the face as if spoken now</source>
         <translation>Eine Audio- oder Videodatei, hörbar abgespielt, bewegt das Gesicht, als würde sie jetzt gesprochen</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="220"/>
+        <location filename="../studio/live/LiveView.cpp" line="227"/>
         <source>No camera</source>
         <translation>Keine Kamera</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="221"/>
+        <location filename="../studio/live/LiveView.cpp" line="228"/>
         <source>The face is drawn into a still of the person</source>
         <translation>Das Gesicht wird in ein Standbild der Person gezeichnet</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="270"/>
+        <location filename="../studio/live/LiveView.cpp" line="277"/>
         <source>No trained model</source>
         <translation>Kein trainiertes Modell</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="303"/>
+        <location filename="../studio/live/LiveView.cpp" line="310"/>
         <source>No microphone was found. Connect one (the list above follows the devices as they come and go), or choose A recording… there.</source>
         <translation>Es wurde kein Mikrofon gefunden. Schließen Sie eines an (die Liste oben folgt den Geräten, wie sie kommen und gehen), oder wählen Sie dort Eine Aufnahme….</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="313"/>
+        <location filename="../studio/live/LiveView.cpp" line="320"/>
         <source>Phones: CMU Sphinx US English (any speaker)</source>
         <translation>Phone: CMU Sphinx US-Englisch (jeder Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="314"/>
+        <location filename="../studio/live/LiveView.cpp" line="321"/>
         <source>Phones: the aligner model&apos;s HMMs</source>
         <translation>Phone: die HMMs des Ausrichtungsmodells</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="320"/>
+        <location filename="../studio/live/LiveView.cpp" line="327"/>
         <source>Preparing: loading the phone recogniser and finding the face in the current sequence…</source>
         <translation>Vorbereitung: Die Phon-Erkennung wird geladen und das Gesicht in der aktuellen Sequenz gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="324"/>
+        <location filename="../studio/live/LiveView.cpp" line="331"/>
         <source>Playing %1: the face follows its sound.</source>
         <translation>%1 wird abgespielt: Das Gesicht folgt ihrem Ton.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="325"/>
+        <location filename="../studio/live/LiveView.cpp" line="332"/>
         <source>Listening. Speak, and the face follows.</source>
         <translation>Hört zu. Sprechen Sie, und das Gesicht folgt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="328"/>
+        <location filename="../studio/live/LiveView.cpp" line="335"/>
         <source>Finishing the last frames…</source>
         <translation>Die letzten Bilder werden fertiggestellt…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="334"/>
+        <location filename="../studio/live/LiveView.cpp" line="341"/>
         <source>Writing the video…</source>
         <translation>Das Video wird geschrieben…</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="336"/>
+        <location filename="../studio/live/LiveView.cpp" line="343"/>
         <source>The last session (%1 s) is kept: save it as a sequence, export it as a video, or start again.</source>
         <translation>Die letzte Sitzung (%1 s) ist erhalten: Speichern Sie sie als Sequenz, exportieren Sie sie als Video oder starten Sie erneut.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="343"/>
+        <location filename="../studio/live/LiveView.cpp" line="350"/>
         <source>Press Start and speak: the face moves with your voice.</source>
         <translation>Drücken Sie „Start“ und sprechen Sie: Das Gesicht bewegt sich mit Ihrer Stimme.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="348"/>
+        <location filename="../studio/live/LiveView.cpp" line="355"/>
         <source>This model&apos;s file predates Live&apos;s guess of phones in context, so its face waits for each phone to end, in pauses for seconds. Train it again for a face that follows at once.</source>
         <translation>Die Datei dieses Modells ist älter als Lives Schätzung der Phone im Kontext, daher wartet sein Gesicht auf das Ende jedes Phons, in Pausen sekundenlang. Trainieren Sie es neu, damit das Gesicht sofort folgt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="352"/>
+        <location filename="../studio/live/LiveView.cpp" line="359"/>
         <source>Only the first %1 minutes are kept for saving; the face went on moving after that.</source>
         <translation>Nur die ersten %1 Minuten bleiben zum Speichern erhalten; das Gesicht hat sich danach weiterbewegt.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="372"/>
+        <location filename="../studio/live/LiveView.cpp" line="379"/>
         <source>Latency: %1 ms mean, %2 ms max</source>
         <translation>Latenz: %1 ms im Mittel, %2 ms maximal</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="375"/>
+        <location filename="../studio/live/LiveView.cpp" line="382"/>
         <source>Time from the sound to the frame that shows it, over the last %1 seconds; %2 ms of it the phone recogniser and the model wait for the sound that follows</source>
         <translation>Zeit vom Ton bis zum Bild, das ihn zeigt, über die letzten %1 Sekunden; %2 ms davon warten die Phon-Erkennung und das Modell auf den folgenden Ton</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="380"/>
+        <location filename="../studio/live/LiveView.cpp" line="387"/>
         <source>Latency: –</source>
         <translation>Latenz: –</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="382"/>
+        <location filename="../studio/live/LiveView.cpp" line="389"/>
         <source>%1 s, frame %2 at %3 fps</source>
         <translation>%1 s, Bild %2 bei %3 fps</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="394"/>
+        <location filename="../studio/live/LiveView.cpp" line="401"/>
         <source>Live from a Recording</source>
         <translation>Live aus einer Aufnahme</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="395"/>
+        <location filename="../studio/live/LiveView.cpp" line="402"/>
         <source>Audio and video (*.wav *.flac *.mp3 *.ogg *.m4a *.mpg *.mp4 *.mov *.avi *.mkv *.webm);;All files (*)</source>
         <translation>Audio und Video (*.wav *.flac *.mp3 *.ogg *.m4a *.mpg *.mp4 *.mov *.avi *.mkv *.webm);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="455"/>
+        <location filename="../studio/live/LiveView.cpp" line="462"/>
         <source>The session&apos;s sound is written into the project&apos;s folder, and the bundled demo is read-only. Save the project in a folder of your own first?</source>
         <translation>Der Ton der Sitzung wird in den Ordner des Projekts geschrieben, und das mitgelieferte Demo ist schreibgeschützt. Das Projekt zuerst in einem eigenen Ordner speichern?</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="464"/>
+        <location filename="../studio/live/LiveView.cpp" line="471"/>
         <source>The live session is sequence %1, at the end of the list.</source>
         <translation>Die Live-Sitzung ist jetzt die Sequenz %1 am Ende der Liste.</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="471"/>
+        <location filename="../studio/live/LiveView.cpp" line="478"/>
         <source>Export Live Session</source>
         <translation>Live-Sitzung exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/live/LiveView.cpp" line="473"/>
+        <location filename="../studio/live/LiveView.cpp" line="480"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
@@ -2662,7 +2675,7 @@
         <translation>%1 Angezeigt: %2</translation>
     </message>
     <message>
-        <location filename="../studio/plots/ResultsPage.cpp" line="114"/>
+        <location filename="../studio/plots/ResultsPage.cpp" line="116"/>
         <source>%1, %2: mean %3 over %4 folds, 95 % interval ± %5</source>
         <translation>%1, %2: Mittelwert %3 über %4 Teilmengen, 95-%-Intervall ± %5</translation>
     </message>
@@ -3263,265 +3276,265 @@
 <context>
     <name>lipsync::studio::TimelinePanel</name>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="206"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="187"/>
         <source>Zoom out (wheel down)</source>
         <translation>Verkleinern (Mausrad nach unten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="207"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="188"/>
         <source>Zoom in (wheel up)</source>
         <translation>Vergrößern (Mausrad nach oben)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="208"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="189"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="208"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="189"/>
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="105"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="462"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="86"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="444"/>
         <source>Align</source>
         <translation>Ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="105"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="86"/>
         <source>Align this sequence&apos;s transcript to its audio (words and phones)</source>
         <translation>Das Transkript dieser Sequenz am Ton ausrichten (Wörter und Phone)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="106"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="87"/>
         <source>Align All</source>
         <translation>Alle ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="106"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="87"/>
         <source>Align every sequence that has a transcript</source>
         <translation>Jede Sequenz mit Transkript ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="107"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
         <source>Re-align Selection</source>
         <translation>Auswahl neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="108"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
         <source>Align the selected stretch again, keeping the words whose timing you edited</source>
         <translation>Den ausgewählten Abschnitt neu ausrichten; Wörter mit bearbeitetem Timing bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="112"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="93"/>
         <source>Adapt to Speaker</source>
         <translation>An Sprecher anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="123"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="511"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="104"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="493"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="124"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="105"/>
         <source>Align with the model shipped with the studio, trained on one GRID speaker</source>
         <translation>Mit dem mitgelieferten Modell ausrichten, trainiert auf einem GRID-Sprecher</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="106"/>
         <source>Generic US English (CMU Sphinx)</source>
         <translation>Allgemeines US-Englisch (CMU Sphinx)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="107"/>
         <source>Align with CMU Sphinx&apos;s US-English model trained on many speakers (Debian package pocketsphinx-en-us)</source>
         <translation>Mit dem US-englischen Modell von CMU Sphinx ausrichten, trainiert auf vielen Sprechern (Debian-Paket pocketsphinx-en-us)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="143"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="124"/>
         <source>Split at Cursor</source>
         <translation>Am Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="143"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="124"/>
         <source>Split the interval under the cursor</source>
         <translation>Das Intervall unter dem Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="144"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="643"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="625"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="144"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
         <source>Join the selected interval with the next one</source>
         <translation>Das ausgewählte Intervall mit dem nächsten verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="146"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
         <source>Relabel…</source>
         <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="146"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
         <source>Change the label of the selected interval</source>
         <translation>Die Beschriftung des ausgewählten Intervalls ändern</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="148"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
         <source>Insert Silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="148"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
         <source>Make the selection a silence</source>
         <translation>Die Auswahl zur Stille machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="149"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
         <source>Insert Breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="149"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
         <source>Make the selection a breath</source>
         <translation>Die Auswahl zum Atmer machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="150"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
         <source>Play Selection</source>
         <translation>Auswahl abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="150"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
         <source>Play the selected stretch (Space in the timeline)</source>
         <translation>Den ausgewählten Abschnitt abspielen (Leertaste in der Zeitleiste)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="151"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Play Word</source>
         <translation>Wort abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="151"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Play the word under the cursor</source>
         <translation>Das Wort unter dem Cursor abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="152"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
         <source>Play All</source>
         <translation>Alles abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="152"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
         <source>Play the whole sequence</source>
         <translation>Die ganze Sequenz abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="153"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Pronunciations…</source>
         <translation>Aussprachen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="154"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
         <source>The project&apos;s pronunciations, and the words espeak-ng guessed</source>
         <translation>Die Aussprachen des Projekts und die von espeak-ng geschätzten Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="195"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="176"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="196"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="177"/>
         <source>The acoustic model the aligner uses</source>
         <translation>Das akustische Modell, das die Ausrichtung verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="160"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="141"/>
         <source>Show Spectrogram</source>
         <translation>Spektrogramm anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="161"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="142"/>
         <source>Show the spectrogram under the waveform in the timeline</source>
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="323"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="305"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="342"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="324"/>
         <source>Alignment of the speech in the Preview: %1 (read-only; Back to Sequence there to edit)</source>
         <translation>Alignierung der Sprache in der Vorschau: %1 (schreibgeschützt; dort „Zurück zur Sequenz“ zum Bearbeiten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="356"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="338"/>
         <source>No audio</source>
         <translation>Kein Ton</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="426"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="408"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="439"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="421"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="463"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="445"/>
         <source>The transcript of %1 changed since its boundaries were edited. Aligning it again replaces the edited boundaries. Align anyway?</source>
         <translation>Das Transkript von %1 wurde geändert, nachdem seine Grenzen bearbeitet wurden. Erneutes Alignieren ersetzt die bearbeiteten Grenzen. Trotzdem alignieren?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="474"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="456"/>
         <source>Every word of %1 is user-edited: nothing to align there.</source>
         <translation>Jedes Wort von %1 ist von Hand bearbeitet: Dort gibt es nichts zu alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="495"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="477"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="498"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="480"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="444"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="426"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="113"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="94"/>
         <source>Adapt the aligner to each recording&apos;s voice before aligning it (slower; better for voices unlike the model&apos;s training speakers)</source>
         <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Stimmen, die den Trainingssprechern des Modells unähnlich sind)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="284"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="266"/>
         <source>The timeline aligns with the built-in model of GRID&apos;s speaker s1. For another speaker, choose Model ▸ Generic US English and Adapt to Speaker.</source>
         <translation>Die Zeitleiste richtet mit dem eingebauten Modell des GRID-Sprechers s1 aus. Für einen anderen Sprecher wählen Sie Modell ▸ Allgemeines US-Englisch und An Sprecher anpassen.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="510"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="492"/>
         <source>The Project&apos;s Aligner (%1)</source>
         <translation>Aligner des Projekts (%1)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="532"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="514"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="557"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="539"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -3529,12 +3542,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="577"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="559"/>
         <source>%1: the alignment came out as it was; nothing changed.</source>
         <translation>%1: Die Alignierung ist unverändert geblieben.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="580"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="562"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -3542,62 +3555,52 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="619"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="601"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="619"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="601"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="627"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="609"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="644"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="626"/>
         <source>These phones belong to two words, “%1” and “%2”. Merge the words as well?</source>
         <translation>Diese Phone gehören zu zwei Wörtern, „%1“ und „%2“. Die Wörter ebenfalls verbinden?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="647"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="629"/>
         <source>Merge Phones and Words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="653"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="635"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="653"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="635"/>
         <source>Merge phones and words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="685"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="667"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="685"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="667"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="744"/>
-        <source>Not one of the 41 phones (ARPAbet, sil, br)</source>
-        <translation>Keines der 41 Phone (ARPAbet, sil, br)</translation>
-    </message>
-    <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="745"/>
-        <source>Enter one word</source>
-        <translation>Ein einzelnes Wort eingeben</translation>
-    </message>
-    <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="753"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="688"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>

@@ -1,5 +1,7 @@
 #include "timeline/TimelinePanel.h"
 
+#include "timeline/IntervalLabelEditor.h"
+
 #include "align/FrameLabels.h"
 #include "align/SphinxAligner.h"
 #include "audio/WaveformPeaks.h"
@@ -43,33 +45,11 @@ namespace {
 // The scroll bar counts milliseconds.
 constexpr double kUnitsPerSecond = 1000.0;
 
-// Closes the relabel editor on Escape and when it loses focus (not to its own popup).
-class EditorFilter : public QObject
-{
-public:
-    EditorFilter(QObject *parent, std::function<void()> close) : QObject(parent), m_close(std::move(close)) {}
-
-protected:
-    bool eventFilter(QObject *watched, QEvent *event) override
-    {
-        if (event->type() == QEvent::KeyPress && static_cast<QKeyEvent *>(event)->key() == Qt::Key_Escape) {
-            m_close();
-            return true;
-        }
-        if (event->type() == QEvent::FocusOut
-            && static_cast<QFocusEvent *>(event)->reason() != Qt::PopupFocusReason)
-            m_close();
-        return QObject::eventFilter(watched, event);
-    }
-
-private:
-    std::function<void()> m_close;
-};
 } // namespace
 
 TimelinePanel::TimelinePanel(QWidget *parent)
     : QWidget(parent), m_banner(new QLabel(this)), m_waveform(new WaveformView(this)),
-      m_scroll(new QScrollBar(Qt::Horizontal, this))
+      m_scroll(new QScrollBar(Qt::Horizontal, this)), m_labelEditor(new IntervalLabelEditor(m_waveform, this))
 {
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -237,7 +217,8 @@ void TimelinePanel::connectActions()
     connect(m_waveform, &WaveformView::boundaryDragStarted, this, &TimelinePanel::onDragStarted);
     connect(m_waveform, &WaveformView::boundaryDragged, this, &TimelinePanel::onDragged);
     connect(m_waveform, &WaveformView::boundaryDragFinished, this, [this] { m_dragKey = -1; });
-    connect(m_waveform, &WaveformView::relabelRequested, this, &TimelinePanel::openEditor);
+    connect(m_waveform, &WaveformView::relabelRequested, this, &TimelinePanel::openLabelEditor);
+    connect(m_labelEditor, &IntervalLabelEditor::labelChosen, this, &TimelinePanel::relabel);
     connect(m_waveform, &WaveformView::playRequested, this, &TimelinePanel::togglePlay);
     connect(m_waveform, &WaveformView::selectionChanged, this, &TimelinePanel::updateActions);
 }
@@ -307,7 +288,7 @@ void TimelinePanel::attach(StudioContext *context)
 
 void TimelinePanel::showSequence(int row)
 {
-    closeEditor();
+    m_labelEditor->close();
     m_speech.reset();
     m_banner->hide();
     m_waveform->setEditable(m_document != nullptr);
@@ -335,7 +316,7 @@ void TimelinePanel::showGeneratedSpeech(std::shared_ptr<const SpeechToFaceResult
             showSequence(m_context ? m_context->currentSequence() : -1);
         return;
     }
-    closeEditor();
+    m_labelEditor->close();
     m_speech = std::move(speech);
     m_row = -1; // no sequence of the document is shown: nothing here can be edited
     m_dragKey = -1;
@@ -603,7 +584,7 @@ void TimelinePanel::showPronunciations()
 
 void TimelinePanel::onDragStarted(TierKind, int, int drag)
 {
-    closeEditor();
+    m_labelEditor->close();
     m_dragBase = currentTiers();
     m_dragKey = drag;
     ++m_dragMergeKey;
@@ -662,7 +643,7 @@ void TimelinePanel::relabelSelected()
     if (index < 0)
         index = m_waveform->tier(kind).indexAt(m_waveform->cursorTime());
     if (index >= 0)
-        openEditor(kind, index);
+        openLabelEditor(kind, index);
 }
 
 void TimelinePanel::insertSilence()
@@ -689,83 +670,24 @@ void TimelinePanel::insertInterval(const std::string &label)
 
 // --- relabel editor ---
 
-void TimelinePanel::openEditor(TierKind kind, int index)
+QWidget *TimelinePanel::relabelEditor() const
 {
-    closeEditor();
-    const Tier &tier = m_waveform->tier(kind);
-    if (!m_document || m_row < 0 || index < 0 || index >= int(tier.intervals.size()))
-        return;
-    const Interval &iv = tier.intervals[size_t(index)];
-    const QRect lane = m_waveform->laneRect(kind == TierKind::Words ? WaveformView::Lane::Words
-                                                                     : WaveformView::Lane::Phones);
-    const int x0 = int(m_waveform->xAt(iv.start));
-    const int x1 = int(m_waveform->xAt(iv.end));
-    const int w = std::max(x1 - x0, kind == TierKind::Words ? 110 : 80);
-    QLineEdit *line = nullptr;
-    if (kind == TierKind::Phones) {
-        auto *combo = new QComboBox(m_waveform);
-        combo->setEditable(true);
-        combo->setInsertPolicy(QComboBox::NoInsert);
-        for (std::string_view label : PhoneSet::labels())
-            combo->addItem(QString::fromLatin1(label.data(), int(label.size())));
-        combo->setCurrentText(QString::fromStdString(iv.label));
-        connect(combo, &QComboBox::activated, this, [this] { commitEditor(); });
-        line = combo->lineEdit();
-        m_editor = combo;
-    } else {
-        line = new QLineEdit(QString::fromStdString(iv.label), m_waveform);
-        m_editor = line;
-    }
-    m_editor->setObjectName(QStringLiteral("relabelEditor"));
-    m_editorTier = kind;
-    m_editorIndex = index;
-    auto *filter = new EditorFilter(m_editor, [this] { closeEditor(); });
-    line->installEventFilter(filter);
-    connect(line, &QLineEdit::returnPressed, this, &TimelinePanel::commitEditor);
-    connect(line, &QLineEdit::textEdited, this, [line] {
-        line->setStyleSheet(QString());
-        line->setToolTip(QString());
-    });
-    const int h = std::max(lane.height() + 4, m_editor->sizeHint().height());
-    m_editor->setGeometry(std::clamp(x0, 0, std::max(0, m_waveform->width() - w)), lane.center().y() - h / 2, w, h);
-    m_editor->show();
-    line->selectAll();
-    m_editor->setFocus(Qt::OtherFocusReason);
+    return m_labelEditor->widget();
 }
 
-void TimelinePanel::commitEditor()
+void TimelinePanel::openLabelEditor(TierKind kind, int index)
 {
-    if (!m_editor || m_closingEditor)
-        return;
-    auto *combo = qobject_cast<QComboBox *>(m_editor.data());
-    QLineEdit *line = combo ? combo->lineEdit() : qobject_cast<QLineEdit *>(m_editor.data());
-    const std::string label = tieredit::validLabel(m_editorTier, line->text());
-    if (label.empty()) {
-        line->setStyleSheet(QStringLiteral("background: #7f1d1d; color: white;"));
-        line->setToolTip(m_editorTier == TierKind::Phones ? tr("Not one of the 41 phones (ARPAbet, sil, br)")
-                                                          : tr("Enter one word"));
-        return;
-    }
-    const TierKind kind = m_editorTier;
-    const int index = m_editorIndex;
-    closeEditor();
+    if (m_document && m_row >= 0)
+        m_labelEditor->open(kind, index);
+}
+
+void TimelinePanel::relabel(TierKind kind, int index, const std::string &label)
+{
     TierPair next = currentTiers();
     if (tieredit::relabel(next, kind, index, label))
         edit(next, tr("Relabel as %1").arg(QString::fromStdString(label)));
     m_waveform->selectInterval(kind, index);
     m_waveform->setFocus(Qt::OtherFocusReason);
-}
-
-void TimelinePanel::closeEditor()
-{
-    if (!m_editor || m_closingEditor)
-        return;
-    m_closingEditor = true;
-    QWidget *editor = m_editor;
-    m_editor = nullptr;
-    editor->hide();
-    editor->deleteLater();
-    m_closingEditor = false;
 }
 
 // --- playback ---

@@ -36,6 +36,7 @@ class StudioContext;
 class ProjectDocument;
 class PlaybackController;
 class PronunciationsDialog;
+class IntervalLabelEditor;
 class WaveformView;
 struct AlignJob;
 struct AlignOutcome;
@@ -87,7 +88,7 @@ public:
 
     // The open relabel editor (a QLineEdit for words, an editable QComboBox of the 41 phones for
     // phones), or null.
-    QWidget *relabelEditor() const { return m_editor; }
+    QWidget *relabelEditor() const;
 
 public slots:
     void alignSequence();
@@ -125,9 +126,8 @@ private:
     std::vector<AlignJob> alignmentJobs(const std::vector<int> &rows);
     void startAlignment(const QString &title, std::vector<AlignJob> jobs);
     void applyAlignment(const QString &title, std::vector<AlignOutcome> outcomes);
-    void openEditor(TierKind kind, int index);
-    void commitEditor();
-    void closeEditor();
+    void openLabelEditor(TierKind kind, int index);
+    void relabel(TierKind kind, int index, const std::string &label); // the editor's, one undo step
     void insertInterval(const std::string &label);
     void onDragStarted(TierKind kind, int boundary, int drag);
     void onDragged(TierKind kind, int boundary, double time, int drag);
@@ -135,6 +135,7 @@ private:
     QLabel *m_banner;
     WaveformView *m_waveform;
     QScrollBar *m_scroll;
+    IntervalLabelEditor *m_labelEditor;
     PlaybackController *m_player = nullptr;
     bool m_syncing = false;
 
@@ -150,11 +151,6 @@ private:
     // A project of the user's own opened, aligned with GRID's speaker's model: say so once its
     // first sequence is shown.
     bool m_alignerHintPending = false;
-
-    QPointer<QWidget> m_editor;
-    TierKind m_editorTier = TierKind::Phones;
-    int m_editorIndex = -1;
-    bool m_closingEditor = false;
 
     QAction *m_align;
     QAction *m_alignAll;
