@@ -133,6 +133,90 @@ struct TransitionSums
     }
 };
 
+// One dimension's parameters of the all-diagonal SLDS, per state (§3.1).
+struct ScalarParameters
+{
+    Eigen::VectorXd a, q, r, sigma, nu, mu;
+};
+
+// One dimension's smoothed sufficient statistics per state (§3.3) and the log-likelihood of its
+// features (§3.2).
+struct ScalarStatistics
+{
+    explicit ScalarStatistics(Eigen::Index P)
+        : Sxx(Eigen::VectorXd::Zero(P)), Smm(Sxx), Sxm(Sxx), sx(Sxx), sm(Sxx), N2(Sxx), Rsum(Sxx), Rn(Sxx),
+          x1(Sxx), x1sq(Sxx), N1(Sxx)
+    {
+    }
+    Eigen::VectorXd Sxx, Smm, Sxm, sx, sm, N2, Rsum, Rn, x1, x1sq, N1;
+    double ll = 0.0;
+};
+
+// The E-step of dimension k: a scalar Kalman filter and RTS smoother over every sequence (§3.2-3.3).
+ScalarStatistics smoothDimension(const std::vector<LabelledSequence> &sequences, Eigen::Index k,
+                                 const ScalarParameters &p)
+{
+    const Eigen::VectorXd &a = p.a, &q = p.q, &r = p.r, &sigma = p.sigma, &nu = p.nu, &mu = p.mu;
+    ScalarStatistics st(a.size());
+    LogSum logS; // sum of log S_t, one log per 8 frames
+    long long frames = 0;
+    std::vector<double> mp, Pp, mf, Pf, ms, Ps;
+    for (const LabelledSequence &s : sequences) {
+        const size_t T = s.labels.size();
+        mp.resize(T);
+        Pp.resize(T);
+        mf.resize(T);
+        Pf.resize(T);
+        ms.resize(T);
+        Ps.resize(T);
+        for (size_t t = 0; t < T; ++t) {
+            const int n = s.labels[t];
+            if (t == 0) {
+                mp[0] = mu[n];
+                Pp[0] = sigma[n];
+            } else {
+                mp[t] = a[n] * mf[t - 1] + nu[n];
+                Pp[t] = a[n] * a[n] * Pf[t - 1] + q[n];
+            }
+            const double S = Pp[t] + r[n], inverseS = 1.0 / S, K = Pp[t] * inverseS;
+            const double eta = s.features(Eigen::Index(t), k) - mp[t];
+            st.ll -= 0.5 * eta * eta * inverseS;
+            logS.add(S);
+            mf[t] = mp[t] + K * eta;
+            Pf[t] = (1 - K) * (1 - K) * Pp[t] + K * K * r[n];
+        }
+        frames += (long long)T;
+        ms[T - 1] = mf[T - 1];
+        Ps[T - 1] = Pf[T - 1];
+        for (size_t t = T - 1; t-- > 0;) {
+            const int n1 = s.labels[t + 1];
+            const double J = Pf[t] * a[n1] / Pp[t + 1];
+            ms[t] = mf[t] + J * (ms[t + 1] - mp[t + 1]);
+            Ps[t] = Pf[t] + J * J * (Ps[t + 1] - Pp[t + 1]);
+            // Sufficient statistics of transition t+1 (§3.3): P_{t+1,t|T} = P_{t+1|T} J_t.
+            const double cross = Ps[t + 1] * J + ms[t + 1] * ms[t];
+            st.Sxx[n1] += Ps[t + 1] + ms[t + 1] * ms[t + 1];
+            st.Smm[n1] += Ps[t] + ms[t] * ms[t];
+            st.Sxm[n1] += cross;
+            st.sx[n1] += ms[t + 1];
+            st.sm[n1] += ms[t];
+            st.N2[n1] += 1.0;
+        }
+        for (size_t t = 0; t < T; ++t) {
+            const int n = s.labels[t];
+            const double e = s.features(Eigen::Index(t), k) - ms[t];
+            st.Rsum[n] += e * e + Ps[t];
+            st.Rn[n] += 1.0;
+        }
+        const int n0 = s.labels[0];
+        st.x1[n0] += ms[0];
+        st.x1sq[n0] += Ps[0] + ms[0] * ms[0];
+        st.N1[n0] += 1.0;
+    }
+    st.ll -= 0.5 * (double(frames) * kLog2Pi + logS.value());
+    return st;
+}
+
 } // namespace
 
 void SldsModel::setParameters(const slds::Parameters &parameters)
@@ -221,85 +305,31 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
     for (Eigen::Index k = 0; k < d; ++k)
         dimensions[size_t(k)] = k;
     auto fitDimension = [&](Eigen::Index k) {
-        Eigen::VectorXd a(P), q(P), r(P), sigma(P), nu = p.nu.col(k), mu = p.mu.col(k);
+        ScalarParameters scalar{Eigen::VectorXd(P), Eigen::VectorXd(P), Eigen::VectorXd(P), Eigen::VectorXd(P),
+                                p.nu.col(k), p.mu.col(k)};
+        Eigen::VectorXd &a = scalar.a, &q = scalar.q, &r = scalar.r, &sigma = scalar.sigma, &nu = scalar.nu,
+                        &mu = scalar.mu;
         for (int n = 0; n < P; ++n) {
             a[n] = p.A[size_t(n)](k, k);
             q[n] = p.Q[size_t(n)](k, k);
             r[n] = p.R[size_t(n)](k, k);
             sigma[n] = p.Sigma[size_t(n)](k, k);
         }
-        Eigen::VectorXd Sxx = Eigen::VectorXd::Zero(P), Smm = Sxx, Sxm = Sxx, sx = Sxx, sm = Sxx,
-                        N2 = Sxx, Rsum = Sxx, Rn = Sxx, x1 = Sxx, x1sq = Sxx, N1 = Sxx;
-        double ll = 0.0;
-        LogSum logS; // sum of log S_t, one log per 8 frames
-        long long frames = 0;
-        std::vector<double> mp, Pp, mf, Pf, ms, Ps;
-        for (const LabelledSequence &s : sequences) {
-            const size_t T = s.labels.size();
-            mp.resize(T);
-            Pp.resize(T);
-            mf.resize(T);
-            Pf.resize(T);
-            ms.resize(T);
-            Ps.resize(T);
-            for (size_t t = 0; t < T; ++t) {
-                const int n = s.labels[t];
-                if (t == 0) {
-                    mp[0] = mu[n];
-                    Pp[0] = sigma[n];
-                } else {
-                    mp[t] = a[n] * mf[t - 1] + nu[n];
-                    Pp[t] = a[n] * a[n] * Pf[t - 1] + q[n];
-                }
-                const double S = Pp[t] + r[n], inverseS = 1.0 / S, K = Pp[t] * inverseS;
-                const double eta = s.features(Eigen::Index(t), k) - mp[t];
-                ll -= 0.5 * eta * eta * inverseS;
-                logS.add(S);
-                mf[t] = mp[t] + K * eta;
-                Pf[t] = (1 - K) * (1 - K) * Pp[t] + K * K * r[n];
-            }
-            frames += (long long)T;
-            ms[T - 1] = mf[T - 1];
-            Ps[T - 1] = Pf[T - 1];
-            for (size_t t = T - 1; t-- > 0;) {
-                const int n1 = s.labels[t + 1];
-                const double J = Pf[t] * a[n1] / Pp[t + 1];
-                ms[t] = mf[t] + J * (ms[t + 1] - mp[t + 1]);
-                Ps[t] = Pf[t] + J * J * (Ps[t + 1] - Pp[t + 1]);
-                // Sufficient statistics of transition t+1 (§3.3): P_{t+1,t|T} = P_{t+1|T} J_t.
-                const double cross = Ps[t + 1] * J + ms[t + 1] * ms[t];
-                Sxx[n1] += Ps[t + 1] + ms[t + 1] * ms[t + 1];
-                Smm[n1] += Ps[t] + ms[t] * ms[t];
-                Sxm[n1] += cross;
-                sx[n1] += ms[t + 1];
-                sm[n1] += ms[t];
-                N2[n1] += 1.0;
-            }
-            for (size_t t = 0; t < T; ++t) {
-                const int n = s.labels[t];
-                const double e = s.features(Eigen::Index(t), k) - ms[t];
-                Rsum[n] += e * e + Ps[t];
-                Rn[n] += 1.0;
-            }
-            const int n0 = s.labels[0];
-            x1[n0] += ms[0];
-            x1sq[n0] += Ps[0] + ms[0] * ms[0];
-            N1[n0] += 1.0;
-        }
-        ll -= 0.5 * (double(frames) * kLog2Pi + logS.value());
+        const ScalarStatistics stats = smoothDimension(sequences, k, scalar);
+        double ll = stats.ll;
         // Log prior of Sigma (MAP, §4.5 form) for the objective.
         for (int n = 0; n < P; ++n)
-            if (N1[n] > 0 && m_options.kappa > 0)
+            if (stats.N1[n] > 0 && m_options.kappa > 0)
                 ll += -(m_options.kappa / 2 + 1) * std::log(sigma[n])
                       - m_options.kappa * s0[k] / (2 * sigma[n]);
         perDimension[size_t(k)] = ll;
         // M-step (§3.4), diagonal A and Q: the exact 2 x 2 solve per state.
         const double floor = st.floor[k];
         for (int n = 0; n < P; ++n) {
-            if (N2[n] > 0) {
+            if (stats.N2[n] > 0) {
                 Eigen::Matrix2d M;
-                M << Smm[n], sm[n], sm[n], N2[n];
-                const Eigen::Vector2d rhs(Sxm[n], sx[n]);
+                M << stats.Smm[n], stats.sm[n], stats.sm[n], stats.N2[n];
+                const Eigen::Vector2d rhs(stats.Sxm[n], stats.sx[n]);
                 double an = a[n], nun = nu[n];
                 if (std::abs(M.determinant()) > 1e-300) {
                     const Eigen::Vector2d sol = M.lu().solve(rhs);
@@ -309,32 +339,32 @@ double SldsModel::emDiagonal(const std::vector<LabelledSequence> &sequences,
                 if (m_options.boundA && std::abs(an) > m_options.aMax) {
                     // Constrained maximum of the concave profile: clip, then nu given a.
                     an = std::clamp(an, -m_options.aMax, m_options.aMax);
-                    nun = (sx[n] - an * sm[n]) / N2[n];
+                    nun = (stats.sx[n] - an * stats.sm[n]) / stats.N2[n];
                 }
                 a[n] = an;
                 nu[n] = nun;
-                const double qn = (Sxx[n] - 2 * an * Sxm[n] - 2 * nun * sx[n] + an * an * Smm[n]
-                                   + 2 * an * nun * sm[n] + nun * nun * N2[n])
-                                  / N2[n];
+                const double qn = (stats.Sxx[n] - 2 * an * stats.Sxm[n] - 2 * nun * stats.sx[n]
+                                   + an * an * stats.Smm[n] + 2 * an * nun * stats.sm[n] + nun * nun * stats.N2[n])
+                                  / stats.N2[n];
                 // A rare phone (§0) keeps its process noise: from a handful of frames it could
                 // sit at the floor by chance.
-                if (N2[n] >= kMinimumVarianceFrames)
+                if (stats.N2[n] >= kMinimumVarianceFrames)
                     q[n] = std::max(qn, floor);
             }
         }
         if (m_options.sharedR) {
-            const double shared = std::max(Rsum.sum() / Rn.sum(), floor);
+            const double shared = std::max(stats.Rsum.sum() / stats.Rn.sum(), floor);
             r.setConstant(shared);
         } else {
             for (int n = 0; n < P; ++n)
-                if (Rn[n] >= kMinimumVarianceFrames)
-                    r[n] = std::max(Rsum[n] / Rn[n], floor);
+                if (stats.Rn[n] >= kMinimumVarianceFrames)
+                    r[n] = std::max(stats.Rsum[n] / stats.Rn[n], floor);
         }
         for (int n = 0; n < P; ++n) {
-            if (N1[n] > 0) {
-                mu[n] = x1[n] / N1[n];
-                const double ss = x1sq[n] - N1[n] * mu[n] * mu[n];
-                sigma[n] = std::max((m_options.kappa * s0[k] + ss) / (m_options.kappa + N1[n]
+            if (stats.N1[n] > 0) {
+                mu[n] = stats.x1[n] / stats.N1[n];
+                const double ss = stats.x1sq[n] - stats.N1[n] * mu[n] * mu[n];
+                sigma[n] = std::max((m_options.kappa * s0[k] + ss) / (m_options.kappa + stats.N1[n]
                                                                       + (m_options.kappa > 0 ? 2.0 : 0.0)),
                                     floor);
             } else {
