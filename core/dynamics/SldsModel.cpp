@@ -217,6 +217,78 @@ ScalarStatistics smoothDimension(const std::vector<LabelledSequence> &sequences,
     return st;
 }
 
+// The M-step of one state's transition (§3.4): A~ = [A nu] maximising the expected complete-data
+// log-likelihood given its sums, within the options' bound on A; A, nu and Q are the state's current
+// parameters (the ECM step's Lambda = Q^-1; the fallback when a clipped A~ scores lower).
+Eigen::MatrixXd updateTransition(const TransitionSums &sums, const Eigen::MatrixXd &A, const Eigen::VectorXd &nu,
+                                 const Eigen::MatrixXd &Q, const Eigen::VectorXd &floor, const SldsOptions &options)
+{
+    const bool bound = options.boundA;
+    const bool full = options.fullNoise;
+    const Eigen::Index d = sums.Sxx.rows();
+    const double N = sums.N;
+    const auto Smm = sums.Szz.topLeftCorner(d, d);
+    const auto Sxm = sums.Sxz.leftCols(d);
+    const auto smv = sums.Szz.col(d).head(d);
+    const auto sxv = sums.Sxz.col(d);
+    bool clipped = false;
+    Eigen::MatrixXd At(d, d + 1);
+    if (options.fullA) {
+        At = sums.Szz.ldlt().solve(sums.Sxz.transpose()).transpose();
+        // Bound: clip the singular values at aMax (common Lyapunov function, §4.11).
+        if (bound) {
+            const Eigen::JacobiSVD<Eigen::MatrixXd> svd(At.leftCols(d), Eigen::ComputeFullU
+                                                                            | Eigen::ComputeFullV);
+            if (svd.singularValues().maxCoeff() > options.aMax) {
+                const Eigen::MatrixXd clippedA = svd.matrixU()
+                                                 * svd.singularValues().cwiseMin(options.aMax).asDiagonal()
+                                                 * svd.matrixV().transpose();
+                At.leftCols(d) = clippedA;
+                At.col(d) = (sxv - clippedA * smv) / N;
+                clipped = true;
+            }
+        }
+    } else if (!full) {
+        At.setZero();
+        for (Eigen::Index k = 0; k < d; ++k) {
+            Eigen::Matrix2d M;
+            M << Smm(k, k), smv[k], smv[k], N;
+            Eigen::Vector2d sol = M.lu().solve(Eigen::Vector2d(Sxm(k, k), sxv[k]));
+            // Bound: the constrained maximum of the concave profile in a_k (exact).
+            if (bound && std::abs(sol[0]) > options.aMax) {
+                sol[0] = std::clamp(sol[0], -options.aMax, options.aMax);
+                sol[1] = (sxv[k] - sol[0] * smv[k]) / N;
+            }
+            At(k, k) = sol[0];
+            At(k, d) = sol[1];
+        }
+    } else {
+        // Diagonal A, full Q: ECM given Lambda = Q_n^-1 (§3.4).
+        const Eigen::MatrixXd Lambda = Q.ldlt().solve(Eigen::MatrixXd::Identity(d, d));
+        const Eigen::MatrixXd lhs = Lambda.cwiseProduct(Smm)
+                                    - smv.asDiagonal() * Lambda * smv.asDiagonal() / N;
+        const Eigen::VectorXd rhs = Lambda.cwiseProduct(Sxm.transpose()) * Eigen::VectorXd::Ones(d)
+                                    - smv.asDiagonal() * (Lambda * sxv) / N;
+        Eigen::VectorXd av = lhs.ldlt().solve(rhs);
+        if (bound && av.cwiseAbs().maxCoeff() > options.aMax) {
+            av = av.cwiseMax(-options.aMax).cwiseMin(options.aMax);
+            clipped = true;
+        }
+        At.setZero();
+        At.leftCols(d) = av.asDiagonal();
+        At.col(d) = (sxv - av.cwiseProduct(smv)) / N;
+    }
+    if (clipped) {
+        // The clipped matrix is not the constrained maximiser: keep the current (feasible)
+        // A~ where it scores higher, a generalised M-step, so the likelihood cannot drop.
+        Eigen::MatrixXd current(d, d + 1);
+        current << A, nu;
+        if (sums.objective(current, floor, full) > sums.objective(At, floor, full))
+            At = current;
+    }
+    return At;
+}
+
 } // namespace
 
 void SldsModel::setParameters(const slds::Parameters &parameters)
@@ -441,64 +513,8 @@ double SldsModel::emMatrix(const std::vector<LabelledSequence> &sequences,
             TransitionSums sums{Sxx[i], Eigen::MatrixXd(d, d + 1), Eigen::MatrixXd(d + 1, d + 1), N2[n]};
             sums.Szz << Smm[i], sm.row(n).transpose(), sm.row(n), N2[n];
             sums.Sxz << Sxm[i], sx.row(n).transpose();
-            const bool bound = m_options.boundA;
-            bool clipped = false;
-            Eigen::MatrixXd At(d, d + 1);
-            if (m_options.fullA) {
-                At = sums.Szz.ldlt().solve(sums.Sxz.transpose()).transpose();
-                // Bound: clip the singular values at aMax (common Lyapunov function, §4.11).
-                if (bound) {
-                    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(At.leftCols(d), Eigen::ComputeFullU
-                                                                                    | Eigen::ComputeFullV);
-                    if (svd.singularValues().maxCoeff() > m_options.aMax) {
-                        const Eigen::MatrixXd A = svd.matrixU()
-                                                  * svd.singularValues().cwiseMin(m_options.aMax).asDiagonal()
-                                                  * svd.matrixV().transpose();
-                        At.leftCols(d) = A;
-                        At.col(d) = (sx.row(n).transpose() - A * sm.row(n).transpose()) / N2[n];
-                        clipped = true;
-                    }
-                }
-            } else if (!full) {
-                At.setZero();
-                for (Eigen::Index k = 0; k < d; ++k) {
-                    Eigen::Matrix2d M;
-                    M << Smm[i](k, k), sm(n, k), sm(n, k), N2[n];
-                    Eigen::Vector2d sol = M.lu().solve(Eigen::Vector2d(Sxm[i](k, k), sx(n, k)));
-                    // Bound: the constrained maximum of the concave profile in a_k (exact).
-                    if (bound && std::abs(sol[0]) > m_options.aMax) {
-                        sol[0] = std::clamp(sol[0], -m_options.aMax, m_options.aMax);
-                        sol[1] = (sx(n, k) - sol[0] * sm(n, k)) / N2[n];
-                    }
-                    At(k, k) = sol[0];
-                    At(k, d) = sol[1];
-                }
-            } else {
-                // Diagonal A, full Q: ECM given Lambda = Q_n^-1 (§3.4).
-                const Eigen::MatrixXd Lambda = p.Q[i].ldlt().solve(Eigen::MatrixXd::Identity(d, d));
-                const Eigen::VectorXd smv = sm.row(n).transpose(), sxv = sx.row(n).transpose();
-                const double M = N2[n];
-                const Eigen::MatrixXd lhs = Lambda.cwiseProduct(Smm[i])
-                                            - smv.asDiagonal() * Lambda * smv.asDiagonal() / M;
-                const Eigen::VectorXd rhs = Lambda.cwiseProduct(Sxm[i].transpose()) * Eigen::VectorXd::Ones(d)
-                                            - smv.asDiagonal() * (Lambda * sxv) / M;
-                Eigen::VectorXd av = lhs.ldlt().solve(rhs);
-                if (bound && av.cwiseAbs().maxCoeff() > m_options.aMax) {
-                    av = av.cwiseMax(-m_options.aMax).cwiseMin(m_options.aMax);
-                    clipped = true;
-                }
-                At.setZero();
-                At.leftCols(d) = av.asDiagonal();
-                At.col(d) = (sxv - av.cwiseProduct(smv)) / M;
-            }
-            if (clipped) {
-                // The clipped matrix is not the constrained maximiser: keep the current (feasible)
-                // A~ where it scores higher, a generalised M-step, so the likelihood cannot drop.
-                Eigen::MatrixXd current(d, d + 1);
-                current << p.A[i], p.nu.row(n).transpose();
-                if (sums.objective(current, st.floor, full) > sums.objective(At, st.floor, full))
-                    At = current;
-            }
+            const Eigen::MatrixXd At = updateTransition(sums, p.A[i], p.nu.row(n).transpose(), p.Q[i], st.floor,
+                                                        m_options);
             const Eigen::MatrixXd Q = sums.processNoise(At);
             p.A[i] = At.leftCols(d);
             p.nu.row(n) = At.col(d).transpose();
