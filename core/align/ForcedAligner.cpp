@@ -10,6 +10,44 @@
 
 namespace lipsync {
 
+namespace {
+
+// The phone and word tiers of a Viterbi state path (one graph state per frame); timeOf(f) is the
+// time of the boundary before frame f (T: the end).
+template <typename TimeOf>
+void tiersOfPath(const std::vector<int> &path, const std::vector<GraphState> &states,
+                 const std::vector<std::string> &words, const TimeOf &timeOf, Tier &phoneTier, Tier &wordTier)
+{
+    auto pushOrExtend = [](Tier &tier, double start, double stop, const std::string &label, bool merge) {
+        if (merge && !tier.intervals.empty() && tier.intervals.back().label == label)
+            tier.intervals.back().end = stop;
+        else
+            tier.intervals.push_back(Interval{start, stop, label, false});
+    };
+    int segmentStart = 0;
+    int lastWord = -2;
+    const int T = int(path.size());
+    for (int t = 1; t <= T; ++t) {
+        if (t < T && states[size_t(path[size_t(t)])].phoneInstance == states[size_t(path[size_t(t - 1)])].phoneInstance)
+            continue;
+        const GraphState &st = states[size_t(path[size_t(t - 1)])];
+        const double start = timeOf(segmentStart);
+        const double stop = timeOf(t);
+        const std::string phone = PhoneSet::label(st.phone);
+        // Adjacent silences (a word-final sil variant next to an optional sil) are one segment.
+        pushOrExtend(phoneTier, start, stop, phone, st.phone == PhoneSet::kSilence);
+        const std::string word = st.word < 0 ? std::string(PhoneSet::kSilenceLabel) : words[size_t(st.word)];
+        if (st.word >= 0 && st.word == lastWord)
+            wordTier.intervals.back().end = stop;
+        else
+            pushOrExtend(wordTier, start, stop, word, st.word < 0);
+        lastWord = st.word;
+        segmentStart = t;
+    }
+}
+
+} // namespace
+
 AlignmentResult ForcedAligner::align(const Eigen::MatrixXf &features, const std::vector<std::string> &words,
                                      const std::vector<std::vector<Pronunciation>> &pronunciations,
                                      double audioDuration) const
@@ -152,31 +190,7 @@ AlignmentResult ForcedAligner::alignWithBeam(const Eigen::MatrixXf &features, co
             return it->second;
         return frame * shift;
     };
-    auto pushOrExtend = [](Tier &tier, double start, double stop, const std::string &label, bool merge) {
-        if (merge && !tier.intervals.empty() && tier.intervals.back().label == label)
-            tier.intervals.back().end = stop;
-        else
-            tier.intervals.push_back(Interval{start, stop, label, false});
-    };
-    int segmentStart = 0;
-    int lastWord = -2;
-    for (int t = 1; t <= T; ++t) {
-        if (t < T && states[size_t(path[size_t(t)])].phoneInstance == states[size_t(path[size_t(t - 1)])].phoneInstance)
-            continue;
-        const GraphState &st = states[size_t(path[size_t(t - 1)])];
-        const double start = timeOf(segmentStart);
-        const double stop = timeOf(t);
-        const std::string phone = PhoneSet::label(st.phone);
-        // Adjacent silences (a word-final sil variant next to an optional sil) are one segment.
-        pushOrExtend(result.phones, start, stop, phone, st.phone == PhoneSet::kSilence);
-        const std::string word = st.word < 0 ? std::string(PhoneSet::kSilenceLabel) : words[size_t(st.word)];
-        if (st.word >= 0 && st.word == lastWord)
-            result.words.intervals.back().end = stop;
-        else
-            pushOrExtend(result.words, start, stop, word, st.word < 0);
-        lastWord = st.word;
-        segmentStart = t;
-    }
+    tiersOfPath(path, states, words, timeOf, result.phones, result.words);
     return result;
 }
 
