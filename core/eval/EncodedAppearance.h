@@ -2,7 +2,7 @@
 // The frames the machine observer judges (MachineObserver), as a viewer gets them: each stream of
 // one sequence — the recording and each rendering — is encoded as `lipsync export video` and
 // `render` encode (VideoExporter: H.264, the export's quality), decoded back, and the mouth's
-// appearance read in the recording's mouth box. The recording's stream is encoded a second time
+// appearance read in the stream's own mouth box. The recording's stream is encoded a second time
 // for the control that compares a recording with its own re-encode. Streams are written as their
 // frames come (bounded memory) into a temporary folder that goes with the object.
 #include "render/VideoExporter.h"
@@ -35,8 +35,9 @@ public:
         std::vector<Eigen::MatrixXf> streams; // one row per measured frame
         Eigen::MatrixXf reencoded;            // the recording's second encode
     };
-    // Every `step`-th frame with a mouth box (boxes[t]), from every stream.
-    Result appearance(const std::vector<std::optional<cv::Rect2d>> &boxes, int step);
+    // Every `step`-th frame with a mouth box in the recording (boxes[0][t]), from every stream,
+    // each read in its own box (boxes[s][t], the recording's where a stream has none).
+    Result appearance(const std::vector<std::vector<std::optional<cv::Rect2d>>> &boxes, int step);
 
 private:
     std::string path(int stream) const;

@@ -1,7 +1,8 @@
 #pragma once
 // A machine observer for the realism report (docs/models.md §6.5): can a simple classifier tell
 // recorded frames from rendered ones by how the mouth looks? Its input is the mouth's appearance,
-// a crop around dlib's mouth points of the recorded frame (the render is at the same pose):
+// a crop around dlib's mouth points of the frame judged (each frame its own, as a detector of
+// rendered faces crops them):
 // OpenCV's HOG of the grey crop (48 x 24 pixels, 8-pixel cells, 16-pixel blocks) and the mean and
 // standard deviation of CIE Lab over the crop and over a 3 x 2 grid of it. Its classifier is L2
 // regularised logistic regression on standardised features (Newton's method with Eigen's LDLT),

@@ -119,7 +119,12 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
     std::vector<std::vector<double>> opening(methods, recordedOpening), sharpness(methods, recordedOpening),
         seam(methods, recordedOpening), seamRecorded(methods, recordedOpening);
     std::vector<int> skipped(methods, 0);
-    std::vector<std::optional<cv::Rect2d>> boxes(static_cast<size_t>(frames));
+    // The machine observer's mouth box in each stream's frames: dlib's mouth points of that frame
+    // itself (the recording's for the recording), as a detector of rendered faces would crop it.
+    // The recording's box on a render would say where the recording's mouth was: a cue no
+    // viewer has.
+    std::vector<std::vector<std::optional<cv::Rect2d>>> boxes(methods + 1,
+                                                              std::vector<std::optional<cv::Rect2d>>(size_t(frames)));
     EncodedAppearance tapes(int(methods) + 1);
     cv::Mat generated;
     for (int t = 0; t < frames; ++t) {
@@ -142,7 +147,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
         const size_t ut = size_t(t);
         recordedOpening[ut] = innerLipOpening(points);
         const cv::Rect2d mouth = mouthBox(points);
-        boxes[ut] = mouth;
+        boxes[0][ut] = mouth;
         recordedSharpness[ut] = gradientEnergy(recorded, mouth);
         for (size_t m = 0; m < methods; ++m) {
             const Eigen::VectorXd c = renderings[m].features.row(t).transpose();
@@ -150,10 +155,12 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
             renderer.renderInto(t, c, generated);
             tapes.add(int(m) + 1, generated);
             const Eigen::VectorXd rendered = detector.dlibLandmarksInBox(generated, *box);
-            if (rendered.size() != 136)
+            if (rendered.size() != 136) {
                 ++skipped[m];
-            else
+            } else {
                 opening[m][ut] = innerLipOpening(rendered);
+                boxes[m + 1][ut] = mouthBox(rendered);
+            }
             sharpness[m][ut] = gradientEnergy(generated, mouth);
             cv::Mat weight;
             renderer.synthesisedWeight(t, c).convertTo(weight, CV_8U, 255.0);
