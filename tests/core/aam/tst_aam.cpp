@@ -2,6 +2,7 @@
 // on the committed GRID frames (tests/data/faces/grid, 20 frames with dlib-derived 23 points).
 #include "aam/AamBuilder.h"
 #include "aam/AamFitLevel.h"
+#include "aam/AamFitStep.h"
 #include "aam/AamFitter.h"
 #include "aam/AamSynthesizer.h"
 #include "aam/FaceDetector.h"
@@ -494,6 +495,109 @@ private slots:
             qInfo("level %d: %d pixels x %d parameters, largest difference %.2g (largest entry %.2g)", l, N, P,
                   worst, scale);
             QVERIFY2(scale > 0.05 && worst < 1e-3 * scale, qPrintable(QString::number(worst)));
+        }
+    }
+
+    // The Wiberg step as Ceres's GradientChecker would check it, at every level:
+    //  - its Jacobian (steepestDescent: texture gradient times dW/dp, appearance projected out)
+    //    equals central finite differences of a smooth texture T sampled through the warp,
+    //    d T(W(x; p)) / dp at p = 0, with the same projection;
+    //  - the step it returns minimises its objective |e - J dp|^2 + s2 (b - M dp)^T L^-1 (b - M dp)
+    //    (Tzimiropoulos & Pantic 2013, the MAP form of eq. 15): the objective's finite-difference
+    //    gradient vanishes there and is the analytic one at dp = 0;
+    //  - a stronger prior moves the shape less.
+    void wibergStepMatchesFiniteDifferences()
+    {
+        const AamFitter fitter(m_model);
+        std::mt19937 random(7);
+        std::normal_distribution<double> gauss;
+        for (int l = 0; l < int(m_model.levels.size()); ++l) {
+            const AamFitLevel &level = fitter.level(l);
+            const PiecewiseAffineWarp &warp = m_model.warp(l);
+            const int N = warp.pixelCount(), P = int(level.basis.cols());
+            const int channels = int(level.templateMean.size() / N);
+            // A smooth texture with a known closed form, one phase per channel.
+            auto texture = [&](double x, double y, int c) {
+                return std::sin(x / 6.0 + c) + std::cos(y / 5.0 - c) + 1e-3 * x * y;
+            };
+            Eigen::VectorXf t(Eigen::Index(channels) * N);
+            for (int c = 0; c < channels; ++c)
+                for (int i = 0; i < N; ++i)
+                    t[Eigen::Index(c) * N + i] = float(texture(warp.pixelX(i), warp.pixelY(i), c));
+            const Eigen::MatrixXf sd = steepestDescent(level, warp, t);
+            QCOMPARE(int(sd.rows()), int(t.size()));
+            QCOMPARE(int(sd.cols()), P);
+            const double h = 1e-3;
+            std::vector<float> plus(size_t(2 * N)), minus(size_t(2 * N));
+            Eigen::MatrixXd numeric(t.size(), P);
+            for (int j = 0; j < P; ++j) {
+                warp.pixelPositions(level.reference + h * level.basis.col(j), plus.data());
+                warp.pixelPositions(level.reference - h * level.basis.col(j), minus.data());
+                for (int c = 0; c < channels; ++c)
+                    for (int i = 0; i < N; ++i)
+                        numeric(Eigen::Index(c) * N + i, j)
+                            = (texture(plus[size_t(2 * i)], plus[size_t(2 * i + 1)], c)
+                               - texture(minus[size_t(2 * i)], minus[size_t(2 * i + 1)], c)) / (2 * h);
+            }
+            const Eigen::MatrixXd a = level.appearance.cast<double>();
+            if (a.cols() > 0)
+                numeric -= a * (a.transpose() * numeric);
+            // The texture's gradient is central differences on the pixel grid (error ~ T''' / 6)
+            // and one-sided at the frame's edge: compare whole columns, not single pixels.
+            double worst = 0;
+            for (int j = 0; j < P; ++j)
+                worst = std::max(worst, (sd.col(j).cast<double>() - numeric.col(j)).norm() / numeric.col(j).norm());
+            qInfo("level %d: steepest-descent columns within %.3g of finite differences (relative)", l, worst);
+            QVERIFY2(worst < 0.1, qPrintable(QString::number(worst)));
+
+            // The step minimises its own objective.
+            Eigen::VectorXf error(t.size());
+            for (Eigen::Index i = 0; i < error.size(); ++i)
+                error[i] = float(0.05 * gauss(random));
+            Eigen::VectorXd shapeParams(m_model.shapeVariances.size());
+            for (Eigen::Index i = 0; i < shapeParams.size(); ++i)
+                shapeParams[i] = 0.5 * std::sqrt(m_model.shapeVariances[i]) * gauss(random);
+            const double residual = 0.01, weight = 2.0;
+            const WibergStep step(m_model.shapeVariances, weight);
+            const Eigen::VectorXd dp = step.step(level, warp, error, residual, shapeParams);
+            QCOMPARE(int(dp.size()), P);
+            QVERIFY(dp.allFinite() && dp.norm() > 0);
+            const Eigen::VectorXf instance
+                = level.templateMean + level.appearance * (level.appearance.transpose() * error);
+            const Eigen::MatrixXd j = steepestDescent(level, warp, instance).cast<double>();
+            const Eigen::VectorXd e = error.cast<double>(), inverse = m_model.shapeVariances.cwiseMax(1e-12).cwiseInverse();
+            const Eigen::MatrixXd &M = level.toShapeParams;
+            const double s2 = weight * residual;
+            auto objective = [&](const Eigen::VectorXd &d) {
+                const Eigen::VectorXd shape = shapeParams - M * d;
+                return (e - j * d).squaredNorm() + s2 * shape.dot(inverse.asDiagonal() * shape);
+            };
+            auto numericGradient = [&](const Eigen::VectorXd &at) {
+                Eigen::VectorXd g(P);
+                const double step = 1e-4 * std::max(1.0, at.norm());
+                for (int k = 0; k < P; ++k) {
+                    Eigen::VectorXd u = Eigen::VectorXd::Zero(P);
+                    u[k] = step;
+                    g[k] = (objective(at + u) - objective(at - u)) / (2 * step);
+                }
+                return g;
+            };
+            const Eigen::VectorXd analyticAtZero = -2.0 * (j.transpose() * e + s2 * M.transpose() * (inverse.asDiagonal() * shapeParams));
+            const Eigen::VectorXd atZero = numericGradient(Eigen::VectorXd::Zero(P));
+            QVERIFY2((atZero - analyticAtZero).norm() < 1e-5 * analyticAtZero.norm(),
+                     qPrintable(QString::number((atZero - analyticAtZero).norm() / analyticAtZero.norm())));
+            // At the step the gradient vanishes (up to the solver's 1e-6 Levenberg damping).
+            const double atStep = numericGradient(dp).norm();
+            qInfo("level %d: objective gradient %.3g at 0, %.3g at the step", l, atZero.norm(), atStep);
+            QVERIFY2(atStep < 1e-3 * atZero.norm(), qPrintable(QString::number(atStep / atZero.norm())));
+            QVERIFY(objective(dp) < objective(Eigen::VectorXd::Zero(P)));
+            // A prior a hundred times as strong leaves the shape nearer the model's mean.
+            const Eigen::VectorXd strong = WibergStep(m_model.shapeVariances, 100 * weight).step(level, warp, error, residual, shapeParams);
+            auto mahalanobis = [&](const Eigen::VectorXd &d) {
+                const Eigen::VectorXd shape = shapeParams - M * d;
+                return shape.dot(inverse.asDiagonal() * shape);
+            };
+            QVERIFY(mahalanobis(strong) < mahalanobis(dp));
         }
     }
 
