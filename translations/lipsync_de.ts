@@ -2422,7 +2422,7 @@
         <translation>das Projekt hat bereits eine Sequenz %1</translation>
     </message>
     <message>
-        <location filename="../studio/document/ProjectDocument.cpp" line="280"/>
+        <location filename="../studio/document/ProjectDocument.cpp" line="291"/>
         <source>%1 interval %2: %3</source>
         <translation>%1, Intervall %2: %3</translation>
     </message>
@@ -2696,87 +2696,97 @@
 <context>
     <name>lipsync::studio::SequenceDetailsView</name>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="31"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="32"/>
         <source>Media:</source>
         <translation>Medien:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="32"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="33"/>
         <source>Video:</source>
         <translation>Video:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="33"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="34"/>
         <source>Audio:</source>
         <translation>Audio:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="35"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="36"/>
         <source>Transcript:</source>
         <translation>Transkript:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="36"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="37"/>
         <source>Words:</source>
         <translation>Wörter:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="37"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="38"/>
         <source>Landmarks:</source>
         <translation>Landmarken:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="43"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="44"/>
         <source>No sequence</source>
         <translation>Keine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="57"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="58"/>
         <source>sound only, %1 frames at %2 fps</source>
         <translation>nur Ton, %1 Bilder mit %2 fps</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="61"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="62"/>
         <source>%1 frames, %2 fps, %3×%4</source>
         <translation>%1 Bilder, %2 fps, %3×%4</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="67"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="68"/>
         <source>%1 s, decoded at %2 Hz mono</source>
         <translation>%1 s, dekodiert mit %2 Hz mono</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="71"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="72"/>
         <source>none (%1)</source>
         <translation>keiner (%1)</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="74"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="76"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="75"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="77"/>
+        <source>%1 words; does not fit the sound</source>
+        <translation>%1 Wörter; passt nicht zum Ton</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="78"/>
         <source>proposed, not checked</source>
         <translation>vorgeschlagen, nicht geprüft</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="76"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="79"/>
         <source>%1 words</source>
         <translation>%1 Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="80"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="83"/>
+        <source>Its alignment found other words in the sound (%1 nats per frame, below %2): check the transcript, then align the sequence again</source>
+        <translation>Die Alignierung hat andere Wörter im Ton gefunden (%1 nats pro Frame, unter %2): Transkript prüfen, dann die Sequenz neu alignieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="87"/>
         <source>Proposed by speech recognition: edit it in the list&apos;s Transcript column, or accept it as it is</source>
         <translation>Von der Spracherkennung vorgeschlagen: in der Spalte Transkript der Liste bearbeiten oder so übernehmen, wie es ist</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="86"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="93"/>
         <source>%1 timed words</source>
         <translation>%1 Wörter mit Zeitangaben</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="87"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="94"/>
         <source>%1 of %2 frames</source>
         <translation>%1 von %2 Bildern</translation>
     </message>
@@ -2784,42 +2794,47 @@
 <context>
     <name>lipsync::studio::SequenceListModel</name>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="51"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="54"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="67"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="75"/>
+        <source>The transcript does not fit the sound (%1 nats per frame against the aligner&apos;s best phones, below %2): these are likely not the clip&apos;s words. Check them, then align the sequence again. An aligner that does not know the speaker scores every transcript low: then align with the project&apos;s own aligner, or Generic US English with Adapt to Speaker.</source>
+        <translation>Das Transkript passt nicht zum Ton (%1 nats pro Frame gegenüber den besten Phonen des Aligners, unter %2): Vermutlich sind es nicht die Wörter dieses Clips. Prüfen Sie sie und alignieren Sie die Sequenz neu. Ein Aligner, der den Sprecher nicht kennt, bewertet jedes Transkript niedrig: Alignieren Sie dann mit dem eigenen Aligner des Projekts oder mit Allgemeines US-Englisch und An Sprecher anpassen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/SequenceListModel.cpp" line="82"/>
         <source>Proposed by speech recognition and not checked yet: double-click to edit it, or accept it as it is (Accept Proposed Transcript, in the Edit menu or on right-click)</source>
         <translation>Von der Spracherkennung vorgeschlagen und noch nicht geprüft: doppelklicken, um es zu bearbeiten, oder so übernehmen, wie es ist (Vorgeschlagenes Transkript übernehmen, im Menü Bearbeiten oder per Rechtsklick)</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="70"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="85"/>
         <source>Double-click to edit the transcript</source>
         <translation>Doppelklicken, um das Transkript zu bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="71"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="86"/>
         <source>%1 — %2 frames at %3 fps</source>
         <translation>%1 – %2 Bilder mit %3 fps</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="99"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="114"/>
         <source>Sequence</source>
         <translation>Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="100"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="115"/>
         <source>Frames</source>
         <translation>Bilder</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="101"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="116"/>
         <source>Duration</source>
         <translation>Dauer</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="102"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="117"/>
         <source>Transcript</source>
         <translation>Transkript</translation>
     </message>
@@ -3364,7 +3379,7 @@
     </message>
     <message>
         <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="625"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="645"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
@@ -3529,12 +3544,12 @@
         <translation>Aligner des Projekts (%1)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="514"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="517"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="539"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="542"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -3542,12 +3557,25 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="559"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="564"/>
         <source>%1: the alignment came out as it was; nothing changed.</source>
         <translation>%1: Die Alignierung ist unverändert geblieben.</translation>
     </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="571"/>
+        <source>No transcript fits its sound by this aligner: its model probably does not know this speaker. Choose Model ▸ Generic US English and Adapt to Speaker, or train the project&apos;s own aligner.</source>
+        <translation>Nach diesem Aligner passt kein Transkript zu seinem Ton: Sein Modell kennt diesen Sprecher vermutlich nicht. Wählen Sie Modell ▸ Allgemeines US-Englisch und An Sprecher anpassen, oder trainieren Sie den eigenen Aligner des Projekts.</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="562"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="576"/>
+        <source>%n transcript(s) do not fit the sound: %1. Check that they are the clips&apos; words (marked in the sequence list).</source>
+        <translation>
+            <numerusform>%n Transkript passt nicht zum Ton: %1. Prüfen Sie, ob es die Wörter des Clips sind (in der Sequenzliste markiert).</numerusform>
+            <numerusform>%n Transkripte passen nicht zum Ton: %1. Prüfen Sie, ob es die Wörter der Clips sind (in der Sequenzliste markiert).</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="582"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -3555,52 +3583,52 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="601"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="621"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="601"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="621"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="609"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="629"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="626"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="646"/>
         <source>These phones belong to two words, “%1” and “%2”. Merge the words as well?</source>
         <translation>Diese Phone gehören zu zwei Wörtern, „%1“ und „%2“. Die Wörter ebenfalls verbinden?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="629"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="649"/>
         <source>Merge Phones and Words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="635"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="655"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="635"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="655"/>
         <source>Merge phones and words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="667"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="687"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="667"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="687"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="688"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="708"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>

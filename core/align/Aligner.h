@@ -14,6 +14,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -69,6 +70,12 @@ struct AlignerOutput
 // 99.5 % of swaps below it, 1.25 % of true transcripts). With a model of another speaker true
 // transcripts fall below it too (-2.4 to -13 measured), so the check is asked for, not default.
 constexpr double kTranscriptFitThreshold = -2.2;
+
+// A measured fit below the threshold: the words are likely not the recording's.
+inline bool transcriptMisfit(const std::optional<double> &fit)
+{
+    return fit && *fit < kTranscriptFitThreshold;
+}
 
 class Aligner
 {

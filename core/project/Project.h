@@ -33,9 +33,9 @@ struct ModelReference
 class Project
 {
 public:
-    // 2: sequences may carry per-frame fitErrors; 3: and transcriptProposed. Older manifests
-    // still load.
-    static constexpr int kFormatVersion = 3;
+    // 2: sequences may carry per-frame fitErrors; 3: and transcriptProposed; 4: and transcriptFit.
+    // Older manifests still load.
+    static constexpr int kFormatVersion = 4;
     static constexpr const char *kManifestName = "project.json";
     static constexpr const char *kStudyFileName = "study.json";
 

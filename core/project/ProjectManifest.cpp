@@ -219,7 +219,7 @@ private:
     Sequence readSequence(const QJsonObject &o, const std::string &field) const
     {
         checkKeys(o, field, {"id", "mediaFile", "frameRate", "frameCount", "firstFrameTime", "frameTimes",
-                             "transcript", "transcriptProposed",
+                             "transcript", "transcriptProposed", "transcriptFit",
                              "features", "tiers", "landmarks", "fitErrors"});
         Sequence s;
         s.id = string(require(o, "id", field), member(field, "id"), false);
@@ -247,6 +247,12 @@ private:
             s.transcript = string(o.value("transcript"), member(field, "transcript"), true);
         if (o.contains("transcriptProposed"))
             s.transcriptProposed = boolean(o.value("transcriptProposed"), member(field, "transcriptProposed"));
+        if (o.contains("transcriptFit")) {
+            const QJsonValue fit = o.value("transcriptFit");
+            if (!fit.isDouble() || !std::isfinite(fit.toDouble()))
+                fail(member(field, "transcriptFit"), "must be a number (nats per frame), found " + describe(fit));
+            s.transcriptFit = fit.toDouble();
+        }
 
         if (o.contains("tiers")) {
             const std::string tiersField = member(field, "tiers");
@@ -455,7 +461,7 @@ const QStringList &keyOrder()
                                    "sequences",  "models",    "pronunciations", "word",
                                    "id",         "mediaFile", "frameRate", "frameCount",
                                    "firstFrameTime", "frameTimes",
-                                   "transcript", "transcriptProposed", "features", "tiers", "words",
+                                   "transcript", "transcriptProposed", "transcriptFit", "features", "tiers", "words",
                                    "phones",     "landmarks", "fitErrors", "frame",
                                    "points",     "start",     "end",       "label",
                                    "userEdited", "file",      "study"};
@@ -585,6 +591,8 @@ QJsonObject ProjectManifest::toJson(const Project &project, const std::string &t
                                             {"phones", tierToJson(s.phones)}}}};
         if (s.transcriptProposed)
             o.insert("transcriptProposed", true);
+        if (s.transcriptFit && std::isfinite(*s.transcriptFit))
+            o.insert("transcriptFit", *s.transcriptFit);
         if (s.firstFrameTime != 0.0)
             o.insert("firstFrameTime", s.firstFrameTime);
         if (!s.frameTimes.empty()) {

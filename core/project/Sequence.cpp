@@ -12,7 +12,8 @@ bool Sequence::operator==(const Sequence &other) const
            && frameRate == other.frameRate && frameCount == other.frameCount
            && firstFrameTime == other.firstFrameTime && frameTimes == other.frameTimes
            && transcript == other.transcript
-           && transcriptProposed == other.transcriptProposed && landmarks == other.landmarks
+           && transcriptProposed == other.transcriptProposed && transcriptFit == other.transcriptFit
+           && landmarks == other.landmarks
            && words == other.words && phones == other.phones && fitErrors == other.fitErrors;
 }
 

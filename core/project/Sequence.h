@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,10 @@ struct Sequence
     // Propose Transcript) that nobody has checked: shown as unverified until it is edited or
     // accepted.
     bool transcriptProposed = false;
+    // How well the transcript fits the sound, by the alignment that made the tiers (our
+    // aligner's AlignerOutput::transcriptFit, nats per frame; below kTranscriptFitThreshold the
+    // words are likely not this clip's); none when that aligner did not measure it.
+    std::optional<double> transcriptFit;
 
     std::map<int, LandmarkSet> landmarks; // video frame index -> 23 points
     Tier words{"words", {}};

@@ -1,11 +1,14 @@
 #include "app/SequenceListModel.h"
 
+#include "align/Aligner.h"
 #include "document/ProjectDocument.h"
 
+#include <QApplication>
 #include <QFont>
 #include <QGuiApplication>
 #include <QLocale>
 #include <QPalette>
+#include <QStyle>
 
 namespace lipsync::studio {
 
@@ -55,6 +58,11 @@ QVariant SequenceListModel::data(const QModelIndex &index, int role) const
     // A proposed transcript (speech recognition's words, Sequence::transcriptProposed) is shown
     // as unverified until the user edits or accepts it.
     const bool proposed = index.column() == TranscriptColumn && s.transcriptProposed;
+    // A transcript its alignment found not to fit the sound (Sequence::transcriptFit) is marked
+    // until the sequence is aligned again.
+    const bool misfit = index.column() == TranscriptColumn && transcriptMisfit(s.transcriptFit);
+    if (role == Qt::DecorationRole && misfit)
+        return QApplication::style()->standardIcon(QStyle::SP_MessageBoxWarning);
     if (role == Qt::FontRole && proposed) {
         QFont font;
         font.setItalic(true);
@@ -63,6 +71,13 @@ QVariant SequenceListModel::data(const QModelIndex &index, int role) const
     if (role == Qt::ForegroundRole && proposed)
         return QGuiApplication::palette().brush(QPalette::PlaceholderText);
     if (role == Qt::ToolTipRole) {
+        if (misfit)
+            return tr("The transcript does not fit the sound (%1 nats per frame against the aligner's best phones, "
+                      "below %2): these are likely not the clip's words. Check them, then align the sequence again. "
+                      "An aligner that does not know the speaker scores every transcript low: then align with the "
+                      "project's own aligner, or Generic US English with Adapt to Speaker.")
+                .arg(QLocale().toString(*s.transcriptFit, 'f', 2))
+                .arg(QLocale().toString(kTranscriptFitThreshold, 'f', 1));
         if (proposed)
             return tr("Proposed by speech recognition and not checked yet: double-click to edit it, or accept it as "
                       "it is (Accept Proposed Transcript, in the Edit menu or on right-click)");

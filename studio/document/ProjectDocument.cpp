@@ -266,9 +266,20 @@ bool ProjectDocument::requestTiersChange(int row, const Tier &words, const Tier 
 {
     if (row < 0 || row >= sequenceCount())
         return false;
+    return pushTiers(row, TierPair{words, phones, sequence(row).transcriptFit}, text, mergeKey);
+}
+
+bool ProjectDocument::requestAlignedTiers(int row, const TierPair &aligned, const QString &text)
+{
+    if (row < 0 || row >= sequenceCount())
+        return false;
+    return pushTiers(row, aligned, text, -1);
+}
+
+bool ProjectDocument::pushTiers(int row, TierPair after, const QString &text, int mergeKey)
+{
     const Sequence &s = sequence(row);
-    TierPair before{s.words, s.phones};
-    TierPair after{words, phones};
+    TierPair before{s.words, s.phones, s.transcriptFit};
     after.words.name = "words";
     after.phones.name = "phones";
     if (before == after)
@@ -287,11 +298,12 @@ bool ProjectDocument::requestTiersChange(int row, const Tier &words, const Tier 
     return true;
 }
 
-void ProjectDocument::applyTiers(int row, const Tier &words, const Tier &phones)
+void ProjectDocument::applyTiers(int row, const TierPair &tiers)
 {
     Sequence &s = m_project.sequences.at(std::size_t(row));
-    s.words = words;
-    s.phones = phones;
+    s.words = tiers.words;
+    s.phones = tiers.phones;
+    s.transcriptFit = tiers.transcriptFit;
     emit sequenceChanged(row);
 }
 

@@ -15,6 +15,8 @@ class QUndoStack;
 
 namespace lipsync::studio {
 
+struct TierPair;
+
 class ProjectDocument : public QObject
 {
     Q_OBJECT
@@ -67,8 +69,11 @@ public:
     // Speech (timeline/TierCommands): the word and phone tiers of one sequence (alignment,
     // timeline edits). Requests with the same mergeKey >= 0 (one boundary drag) merge into one
     // undo step; `text` names it.
+    // The transcript's fit stays as it is; requestAlignedTiers sets the tiers and the fit their
+    // alignment measured (none: not measured).
     bool requestTiersChange(int row, const Tier &words, const Tier &phones, const QString &text, int mergeKey = -1);
-    void applyTiers(int row, const Tier &words, const Tier &phones);
+    bool requestAlignedTiers(int row, const TierPair &aligned, const QString &text);
+    void applyTiers(int row, const TierPair &tiers);
 
     // Speech (timeline/PronunciationCommand): the project's pronunciation overrides, word ->
     // ARPAbet phones (Project::pronunciations), replaced as a whole; false if unchanged.
@@ -126,6 +131,7 @@ signals:
 
 private:
     void refuse(const QString &edit, const QString &why);
+    bool pushTiers(int row, TierPair after, const QString &text, int mergeKey);
     void recordStudyData(ForcedChoiceStudy study);
 
     QUndoStack *m_undo;

@@ -13,12 +13,12 @@ SetTiersCommand::SetTiersCommand(ProjectDocument *document, int row, TierPair be
 
 void SetTiersCommand::undo()
 {
-    m_document->applyTiers(m_row, m_before.words, m_before.phones);
+    m_document->applyTiers(m_row, m_before);
 }
 
 void SetTiersCommand::redo()
 {
-    m_document->applyTiers(m_row, m_after.words, m_after.phones);
+    m_document->applyTiers(m_row, m_after);
 }
 
 bool SetTiersCommand::mergeWith(const QUndoCommand *other)

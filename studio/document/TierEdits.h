@@ -11,6 +11,7 @@
 
 #include <QString>
 
+#include <optional>
 #include <string>
 
 namespace lipsync::studio {
@@ -21,6 +22,9 @@ struct TierPair
 {
     Tier words{"words", {}};
     Tier phones{"phones", {}};
+    // How well the transcript fits the sound by the alignment that made these tiers
+    // (Sequence::transcriptFit); none when not measured.
+    std::optional<double> transcriptFit;
 
     Tier &operator[](TierKind kind) { return kind == TierKind::Words ? words : phones; }
     const Tier &operator[](TierKind kind) const { return kind == TierKind::Words ? words : phones; }

@@ -9,8 +9,10 @@
 #include <QStringList>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 
 namespace lipsync::studio {
 
@@ -27,20 +29,25 @@ AlignOutcome alignSequence(const AlignJob &job, const Aligner &aligner, Feedback
             outcome.guessed.emplace_back(word, PronunciationDictionary::toString(phones));
     };
     AlignmentResult r;
+    std::optional<double> fit;
     if (job.stretches.empty()) {
         const std::vector<std::string> words = Lexicon::splitWords(job.transcript);
         if (words.empty())
             throw Error("the sequence has no transcript to align", path);
         noteGuesses(words);
-        r = aligner.align(path, words, lexicon, &feedback).alignment;
+        const AlignerOutput aligned = aligner.align(path, words, lexicon, &feedback);
+        r = aligned.alignment;
+        if (std::isfinite(aligned.transcriptFit))
+            fit = aligned.transcriptFit;
     } else {
         // Constrained re-alignment (core/align/Realignment): every boundary outside the
         // stretches kept exactly.
         const Realignment realignment(job.current.words, job.current.phones, job.stretches);
         noteGuesses(realignment.words());
         r = aligner.realign(path, realignment, lexicon, &feedback).alignment;
+        fit = job.current.transcriptFit; // the same words: the whole clip's fit stands
     }
-    outcome.tiers = TierPair{r.words, r.phones};
+    outcome.tiers = TierPair{r.words, r.phones, fit};
     outcome.tiers.words.name = "words";
     outcome.tiers.phones.name = "phones";
     outcome.ok = true;
@@ -114,7 +121,7 @@ SequenceAlignment alignmentFor(int row, const Sequence &sequence, const QString 
         out.discardsEdits = true;
         return out;
     }
-    job.current = TierPair{sequence.words, sequence.phones};
+    job.current = TierPair{sequence.words, sequence.phones, sequence.transcriptFit};
     job.stretches = Realignment::freeStretches(sequence.words, sequence.phones, 0.0,
                                                std::max(sequence.words.endTime(), sequence.phones.endTime()));
     out.nothingToAlign = job.stretches.empty();

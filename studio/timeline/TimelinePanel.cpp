@@ -386,7 +386,7 @@ TierPair TimelinePanel::currentTiers() const
     if (!m_document || m_row < 0)
         return {};
     const Sequence &s = m_document->sequence(m_row);
-    return TierPair{s.words, s.phones};
+    return TierPair{s.words, s.phones, s.transcriptFit};
 }
 
 bool TimelinePanel::edit(const TierPair &next, const QString &text, int mergeKey)
@@ -499,8 +499,11 @@ void TimelinePanel::startAlignment(const QString &title, std::vector<AlignJob> j
 {
     if (!m_context)
         return;
-    for (AlignJob &job : jobs)
+    for (AlignJob &job : jobs) {
         job.aligner = m_context->modelStore()->alignerChoice();
+        // Ours measures how well each transcript fits its sound, for the sequence list's mark.
+        job.aligner.transcriptFit = !job.aligner.isSphinx();
+    }
     QPointer<TimelinePanel> self(this);
     Task *task = lipsync::studio::startAlignment(*m_context->taskRunner(), title, std::move(jobs),
                                                  m_context->modelStore()->aligners(),
@@ -522,7 +525,7 @@ void TimelinePanel::applyAlignment(const QString &title, std::vector<AlignOutcom
 {
     if (!m_document)
         return;
-    QStringList failed;
+    QStringList failed, misfits;
     QString file;
     QUndoStack *undo = m_context->undoStack();
     int ok = 0;
@@ -551,13 +554,30 @@ void TimelinePanel::applyAlignment(const QString &title, std::vector<AlignOutcom
         if (row >= m_document->sequenceCount()
             || QString::fromStdString(m_document->sequence(row).id) != o.sequenceId)
             continue;
-        changed += m_document->requestTiersChange(row, o.tiers.words, o.tiers.phones, title) ? 1 : 0;
+        changed += m_document->requestAlignedTiers(row, o.tiers, title) ? 1 : 0;
+        if (transcriptMisfit(o.tiers.transcriptFit))
+            misfits << o.sequenceId;
     }
     if (ok > 1)
         undo->endMacro();
     if (ok > 0 && changed == 0 && m_context)
         m_context->showStatus(tr("%1: the alignment came out as it was; nothing changed.").arg(title),
                                            8000);
+    // A transcript that does not fit its sound (our aligner's transcriptFit): said now, marked in
+    // the sequence list until the sequence is aligned again. When none fits, the aligner's
+    // model is more likely not the speaker's than every transcript wrong.
+    if (!misfits.isEmpty() && m_context) {
+        if (ok >= 3 && misfits.size() == ok)
+            m_context->showStatus(tr("No transcript fits its sound by this aligner: its model probably does not know "
+                                     "this speaker. Choose Model ▸ Generic US English and Adapt to Speaker, or "
+                                     "train the project's own aligner."),
+                                  20000);
+        else
+            m_context->showStatus(tr("%n transcript(s) do not fit the sound: %1. Check that they are the clips' words "
+                                     "(marked in the sequence list).", "", int(misfits.size()))
+                                      .arg(misfits.join(QStringLiteral(", "))),
+                                  20000);
+    }
     if (!failed.isEmpty())
         ErrorReporter::report(this, tr("%n sequence(s) could not be aligned; the others were.", "", int(failed.size())),
                               failed.size() == 1 ? file : QString(), failed.join(QLatin1Char('\n')));

@@ -7,7 +7,9 @@
 //    spectrum (non-uniform pixels), remembers the choice in QSettings, and hides it again.
 #include "DemoWindow.h"
 
+#include "align/Aligner.h"
 #include "app/MainWindow.h"
+#include "app/SequenceListModel.h"
 #include "context/PlaybackController.h"
 #include "document/ProjectDocument.h"
 #include "tasks/TaskRunner.h"
@@ -15,7 +17,9 @@
 #include "timeline/TimelinePanel.h"
 #include "timeline/WaveformView.h"
 
+#include <QAbstractItemView>
 #include <QAction>
+#include <QIcon>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
@@ -24,6 +28,7 @@
 #include <QSettings>
 #include <QPushButton>
 #include <QTableWidget>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
 
@@ -114,6 +119,56 @@ private slots:
         QVERIFY(doc->project().pronunciations.empty());
         m_window->undoStack()->undo();
         QVERIFY(!doc->project().pronunciations.empty());
+    }
+
+    // A transcript that is not the clip's words is marked in the sequence list once aligned (the
+    // aligner's transcriptFit below kTranscriptFitThreshold), with a tooltip that says why; the
+    // mark is part of the alignment's undo step, is saved with the project, and goes when the
+    // clip's own words are aligned again.
+    void misfitTranscriptIsMarked()
+    {
+        ProjectDocument *doc = m_window->document();
+        QAbstractItemModel *list = m_window->sequenceView()->model();
+        const QModelIndex cell = list->index(0, SequenceListModel::TranscriptColumn);
+        auto marked = [&] { return !list->data(cell, Qt::DecorationRole).value<QIcon>().isNull(); };
+        // The clip's own words fit.
+        QVERIFY(doc->requestTranscriptChange(0, QStringLiteral("bin blue at f two now")));
+        align();
+        QVERIFY(doc->sequence(0).transcriptFit);
+        const double own = *doc->sequence(0).transcriptFit;
+        QVERIFY2(own >= kTranscriptFitThreshold, qPrintable(QString::number(own)));
+        QVERIFY(!marked());
+        // Another demo clip's words do not.
+        const QString other = QString::fromStdString(doc->sequence(1).transcript);
+        QVERIFY(!other.isEmpty() && other != QStringLiteral("bin blue at f two now"));
+        QVERIFY(doc->requestTranscriptChange(0, other));
+        const int steps = m_window->undoStack()->index();
+        align();
+        QCOMPARE(m_window->undoStack()->index(), steps + 1); // tiers and mark: one step
+        QVERIFY(doc->sequence(0).transcriptFit);
+        const double swapped = *doc->sequence(0).transcriptFit;
+        qInfo("transcript fit: own words %.2f, another clip's %.2f nats per frame", own, swapped);
+        QVERIFY2(swapped < kTranscriptFitThreshold, qPrintable(QString::number(swapped)));
+        QVERIFY(marked());
+        QVERIFY(list->data(cell, Qt::ToolTipRole).toString().contains(QStringLiteral("does not fit the sound")));
+        // Saved with the project and read back.
+        QTemporaryDir dir;
+        const Project saved = Project::load([&] {
+            Project p = doc->project();
+            p.save(dir.path().toStdString());
+            return dir.path().toStdString();
+        }());
+        QCOMPARE(saved.sequences[0].transcriptFit, doc->sequence(0).transcriptFit);
+        // Undo takes the alignment and its mark back together.
+        m_window->undoStack()->undo();
+        QCOMPARE(*doc->sequence(0).transcriptFit, own);
+        QVERIFY(!marked());
+        m_window->undoStack()->redo();
+        QVERIFY(marked());
+        // The right words aligned again: no mark.
+        QVERIFY(doc->requestTranscriptChange(0, QStringLiteral("bin blue at f two now")));
+        align();
+        QVERIFY(!marked());
     }
 
     void spectrogramFromTheViewMenu()

@@ -77,6 +77,7 @@ Project makeProject()
     bare.frameCount = 0;
     bare.transcript = "set blue at a one please";
     bare.transcriptProposed = true;
+    bare.transcriptFit = -3.25;
     p.sequences.push_back(bare);
 
     p.models = {{"aam", "face model", "aam/face.aam"}, {"slds", "dynamics", "models/slds.json"}};
@@ -183,7 +184,7 @@ private slots:
         QVERIFY(!QFileInfo(dir.filePath("project.json.bak")).exists());
         const QByteArray text = readBytes(dir.filePath("project.json"));
         QVERIFY(text.contains("\"format\": \"lipsync-project\""));
-        QVERIFY(text.contains("\"version\": 3"));
+        QVERIFY(text.contains("\"version\": 4"));
         QVERIFY(text.contains("\"features\": \"features/s1.csv\""));
 
         const Project loaded = Project::load(dir.path().toStdString());
@@ -197,6 +198,9 @@ private slots:
         QVERIFY(loaded.sequences[1].fitErrors.empty());
         QVERIFY(loaded.sequences[1].transcriptProposed && !loaded.sequences[0].transcriptProposed);
         QCOMPARE(text.count("transcriptProposed"), 1); // written only when true
+        QCOMPARE(loaded.sequences[1].transcriptFit, std::optional<double>(-3.25));
+        QVERIFY(!loaded.sequences[0].transcriptFit);
+        QCOMPARE(text.count("transcriptFit"), 1); // written only when measured
         QCOMPARE(loaded.models, original.models);
         QCOMPARE(loaded.pronunciations, original.pronunciations);
         QVERIFY(text.contains("{\"word\": \"lipsync\", \"phones\": \"L IH1 P S IH2 NG K\"}"));
@@ -208,6 +212,9 @@ private slots:
         QVERIFY(!(changed == original));
         changed = loaded;
         changed.sequences[1].transcriptProposed = false;
+        QVERIFY(!(changed == original));
+        changed = loaded;
+        changed.sequences[1].transcriptFit.reset();
         QVERIFY(!(changed == original));
         changed = loaded;
         changed.sequences[0].features(2, 1) += 1e-9;
@@ -309,7 +316,7 @@ private slots:
         row("wrong_format", "format", "is 'praat-textgrid', expected 'lipsync-project'");
         row("missing_version", "version", "missing");
         row("version_not_integer", "version", "must be an integer, found 1.5");
-        row("future_version", "version", "version 4 is newer than this build");
+        row("future_version", "version", "version 5 is newer than this build");
         row("version_zero", "version", "must be at least 1");
         row("name_not_string", "name", "must be a string, found an array");
         row("unknown_field", "sequences[1].framerate", "unknown field");
@@ -327,6 +334,7 @@ private slots:
         row("frame_count_negative", "sequences[1].frameCount", "must be an integer >= 0, found -1");
         row("frame_count_fractional", "sequences[1].frameCount", "must be an integer >= 0, found 74.5");
         row("transcript_not_string", "sequences[0].transcript", "must be a string, found 42");
+        row("transcript_fit_not_number", "sequences[0].transcriptFit", "must be a number (nats per frame), found a string");
         row("unknown_tier", "sequences[0].tiers.syllables", "unknown field");
         row("interval_end_before_start", "sequences[0].tiers.words[1].end", "is before start");
         row("interval_overlap", "sequences[0].tiers.words[1].start", "overlaps the previous interval");
@@ -582,7 +590,7 @@ private slots:
         // A landmark frame is one line, and keys come in reading order.
         const QByteArray text =
             ProjectManifest::serialize(ProjectManifest::toJson(makeProject(), "/tmp/x"));
-        QVERIFY(text.startsWith("{\n  \"format\": \"lipsync-project\",\n  \"version\": 3,\n"));
+        QVERIFY(text.startsWith("{\n  \"format\": \"lipsync-project\",\n  \"version\": 4,\n"));
         const qsizetype points = text.indexOf("\"points\": [[");
         QVERIFY(points > 0);
         QVERIFY(text.indexOf('\n', points) > text.indexOf("]]", points));
