@@ -8,6 +8,7 @@
 #include "CommandLine.h"
 
 #include "align/SpeechRecognizer.h"
+#include "eval/Evaluation.h"
 #include "io/Transcript.h"
 #include "project/Project.h"
 #include "tasks/Feedback.h"
@@ -47,9 +48,16 @@ QJsonObject transcribeOne(RecognizerPool &pool, const QString &media, const QStr
     QStringList words;
     for (const std::string &w : r.words)
         words << QString::fromStdString(w);
+    QJsonArray doubtful;
+    for (int i : doubtfulWords(r))
+        doubtful.append(QJsonObject{{QStringLiteral("index"), i},
+                                    {QStringLiteral("word"), QString::fromStdString(r.words[size_t(i)])},
+                                    {QStringLiteral("confidence"), r.confidence[size_t(i)]}});
     return QJsonObject{{QStringLiteral("media"), media},
                        {QStringLiteral("out"), out},
                        {QStringLiteral("transcript"), words.join(QLatin1Char(' '))},
+                       {QStringLiteral("confidence"), jsonNumbers(r.confidence)},
+                       {QStringLiteral("doubtful"), doubtful},
                        {QStringLiteral("verified"), false},
                        {QStringLiteral("timing"), timing},
                        {QStringLiteral("duration"), r.duration},
@@ -96,9 +104,16 @@ int runTranscribe(const CommandLine &a)
     const QJsonObject result = transcribeOne(pool, input, a.value("out"), feedback);
     if (a.isSet("json"))
         printJson(result);
-    else
+    else {
         std::printf("%s (proposed, check it) -> %s\n", qPrintable(result["transcript"].toString()),
                     qPrintable(a.value("out")));
+        // The words to check first: the recogniser's least sure, the most doubtful first.
+        QStringList doubtful;
+        for (const QJsonValue &d : result["doubtful"].toArray())
+            doubtful << QStringLiteral("%1 (%2)").arg(d["word"].toString()).arg(d["confidence"].toDouble(), 0, 'f', 2);
+        if (!doubtful.isEmpty())
+            std::printf("doubtful: %s\n", qPrintable(doubtful.join(QStringLiteral(", "))));
+    }
     return 0;
 }
 

@@ -3654,64 +3654,69 @@
 <context>
     <name>lipsync::studio::TranscriptProposer</name>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="23"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="24"/>
         <source>&amp;Propose Transcript</source>
         <translation>Transkript &amp;vorschlagen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="24"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="25"/>
         <source>&amp;Accept Proposed Transcript</source>
         <translation>Vorgeschlagenes Transkript &amp;übernehmen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="29"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="30"/>
         <source>Propose a transcript of this sequence by speech recognition (CMU Sphinx&apos;s US-English models), marked as not checked until you edit or accept it</source>
         <translation>Ein Transkript dieser Sequenz per Spracherkennung vorschlagen (die US-englischen Modelle von CMU Sphinx), als nicht geprüft markiert, bis Sie es bearbeiten oder übernehmen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="31"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="32"/>
         <source>Needs CMU Sphinx&apos;s US-English model (Debian package pocketsphinx-en-us)</source>
         <translation>Benötigt das US-englische Modell von CMU Sphinx (Debian-Paket pocketsphinx-en-us)</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="33"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="34"/>
         <source>Take the proposed transcript of this sequence as checked, as it is</source>
         <translation>Das vorgeschlagene Transkript dieser Sequenz unverändert als geprüft übernehmen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="88"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="89"/>
         <source>Propose Transcript</source>
         <translation>Transkript vorschlagen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="89"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="90"/>
         <source>%1 has a transcript. Proposing one replaces it with the words speech recognition hears. Propose anyway?</source>
         <translation>%1 hat ein Transkript. Ein Vorschlag ersetzt es durch die Wörter, die die Spracherkennung hört. Trotzdem vorschlagen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="97"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="98"/>
         <source>Propose transcript of %1</source>
         <translation>Transkript von %1 vorschlagen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="116"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="124"/>
         <source>No transcript could be proposed.</source>
         <translation>Es konnte kein Transkript vorgeschlagen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="136"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="145"/>
         <source>The transcript of %1 changed while its speech was recognised: the proposal was not applied.</source>
         <translation>Das Transkript von %1 wurde geändert, während seine Sprache erkannt wurde: Der Vorschlag wurde nicht übernommen.</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="143"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="152"/>
         <source>Speech recognition proposes the transcript %1 has: nothing changed.</source>
         <translation>Die Spracherkennung schlägt das Transkript vor, das %1 schon hat: Nichts wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="147"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="157"/>
         <source>Transcript of %1 proposed: check it, then edit or accept it.</source>
         <translation>Transkript von %1 vorgeschlagen: Prüfen Sie es, dann bearbeiten oder übernehmen Sie es.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="159"/>
+        <source>Transcript of %1 proposed: check it, the most doubtful words first: %2.</source>
+        <translation>Transkript von %1 vorgeschlagen: Prüfen Sie es, die unsichersten Wörter zuerst: %2.</translation>
     </message>
 </context>
 <context>

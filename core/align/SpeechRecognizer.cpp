@@ -52,6 +52,7 @@ SpeechRecognizer::Result SpeechRecognizer::recognize(const std::string &mediaPat
             result.timing.intervals.push_back(Interval{cursor, start, std::string(PhoneSet::kSilenceLabel), false});
         result.timing.intervals.push_back(Interval{start, end, w.word, false});
         result.words.push_back(w.word);
+        result.confidence.push_back(w.confidence);
         cursor = end;
     }
     if (cursor < result.duration - 1e-9)
@@ -60,6 +61,17 @@ SpeechRecognizer::Result SpeechRecognizer::recognize(const std::string &mediaPat
     if (feedback)
         feedback->setProgress(1.0);
     return result;
+}
+
+std::vector<int> doubtfulWords(const SpeechRecognizer::Result &result)
+{
+    std::vector<int> doubtful;
+    for (size_t i = 0; i < result.confidence.size(); ++i)
+        if (result.confidence[i] < kDoubtfulWordConfidence) // never NaN
+            doubtful.push_back(int(i));
+    std::stable_sort(doubtful.begin(), doubtful.end(),
+                     [&](int a, int b) { return result.confidence[size_t(a)] < result.confidence[size_t(b)]; });
+    return doubtful;
 }
 
 } // namespace lipsync

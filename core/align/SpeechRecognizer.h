@@ -26,6 +26,9 @@ public:
     struct Result
     {
         std::vector<std::string> words;
+        // Each word's posterior probability in the recogniser's lattice (SphinxDecoder::Word::
+        // confidence), NaN where there was none.
+        std::vector<double> confidence;
         Tier timing{"words", {}}; // each word's time as decoded, silence between them
         double duration = 0;      // seconds of audio
     };
@@ -37,5 +40,13 @@ public:
 private:
     std::unique_ptr<SphinxDecoder> m_decoder;
 };
+
+// A proposed word below this posterior is doubtful: shown for review (docs/performance.md,
+// "Confidence of proposed words").
+constexpr double kDoubtfulWordConfidence = 0.5;
+
+// The indices of the doubtful words of `result` (confidence below kDoubtfulWordConfidence), the
+// most doubtful first.
+std::vector<int> doubtfulWords(const SpeechRecognizer::Result &result);
 
 } // namespace lipsync

@@ -125,6 +125,12 @@ std::vector<SphinxDecoder::Word> SphinxDecoder::recognize(const std::vector<shor
         throw Error("pocketsphinx could not decode the audio");
     }
     ps_end_utt(ps);
+    // The lattice's posteriors (ps_get_prob runs forward-backward over it); each segment of the
+    // best path then carries its word's posterior (ps_seg_prob, log base of the decoder's logmath).
+    const bool posteriors = ps_get_lattice(ps) != nullptr;
+    if (posteriors)
+        ps_get_prob(ps);
+    logmath_t *lmath = ps_get_logmath(ps);
     std::vector<Word> words;
     for (ps_seg_t *seg = ps_seg_iter(ps); seg; seg = ps_seg_next(seg)) {
         const std::string word = ps_seg_word(seg);
@@ -134,6 +140,10 @@ std::vector<SphinxDecoder::Word> SphinxDecoder::recognize(const std::vector<shor
         // Alternative pronunciations are spelt "word(2)".
         w.word = word.substr(0, word.find('('));
         ps_seg_frames(seg, &w.first, &w.last);
+        if (posteriors) {
+            int32 acoustic = 0, language = 0, backoff = 0;
+            w.confidence = std::clamp(logmath_exp(lmath, ps_seg_prob(seg, &acoustic, &language, &backoff)), 0.0, 1.0);
+        }
         words.push_back(std::move(w));
     }
     return words;

@@ -9,6 +9,7 @@
 //  - SphinxPhoneLoop: pocketsphinx's all-phone search (a phone loop under a phone language
 //    model) fed block by block, with the best phone path so far.
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -46,6 +47,10 @@ public:
                            // like are left out
         int first = 0;     // first 10 ms frame
         int last = 0;      // last 10 ms frame, inclusive
+        // The word's posterior probability in the decoder's lattice (forward-backward over
+        // every path the search kept): near 1 when no other word competed for its time, low
+        // where the recogniser was unsure. NaN when the decoder made no lattice.
+        double confidence = std::numeric_limits<double>::quiet_NaN();
     };
     // Decodes 16 kHz `pcm` with the language model and dictionary the decoder was made with
     // (-lm, -dict), as one utterance. Throws lipsync::Error when pocketsphinx fails.

@@ -15,6 +15,7 @@
 
 #include <QAction>
 #include <QFileInfo>
+#include <QLocale>
 #include <QMessageBox>
 
 namespace lipsync::studio {
@@ -100,14 +101,21 @@ Task *TranscriptProposer::propose(int row)
             const SpeechRecognizer recognizer;
             feedback.throwIfCanceled();
             feedback.setStatus(QFileInfo(mediaPath).fileName().toStdString());
+            const SpeechRecognizer::Result result = recognizer.recognize(mediaPath.toStdString(), &feedback);
             Transcript heard;
-            heard.words = recognizer.recognize(mediaPath.toStdString(), &feedback).words;
+            heard.words = result.words;
             if (heard.words.empty())
                 throw Error("no speech recognised", mediaPath.toStdString());
             const QString proposal = QString::fromStdString(heard.text());
-            return [self, id, before, proposal] {
+            // The words to check first: the recogniser's least sure, the most doubtful first.
+            QStringList doubtful;
+            for (int i : doubtfulWords(result))
+                doubtful << QStringLiteral("%1 (%2)")
+                                .arg(QString::fromStdString(result.words[size_t(i)]))
+                                .arg(QLocale().toString(result.confidence[size_t(i)], 'f', 2));
+            return [self, id, before, proposal, doubtful] {
                 if (self)
-                    self->apply(id, before, proposal);
+                    self->apply(id, before, proposal, doubtful);
             };
         });
     m_task = task;
@@ -121,7 +129,8 @@ Task *TranscriptProposer::propose(int row)
     return task;
 }
 
-void TranscriptProposer::apply(const QString &sequenceId, const QString &before, const QString &proposal)
+void TranscriptProposer::apply(const QString &sequenceId, const QString &before, const QString &proposal,
+                               const QStringList &doubtful)
 {
     ProjectDocument *document = m_context->document();
     int row = -1;
@@ -144,7 +153,12 @@ void TranscriptProposer::apply(const QString &sequenceId, const QString &before,
                               8000);
         return;
     }
-    m_context->showStatus(tr("Transcript of %1 proposed: check it, then edit or accept it.").arg(sequenceId), 8000);
+    if (doubtful.isEmpty())
+        m_context->showStatus(tr("Transcript of %1 proposed: check it, then edit or accept it.").arg(sequenceId), 8000);
+    else
+        m_context->showStatus(tr("Transcript of %1 proposed: check it, the most doubtful words first: %2.")
+                                  .arg(sequenceId, doubtful.join(QStringLiteral(", "))),
+                              30000);
     emit proposed(row);
 }
 

@@ -9,6 +9,7 @@
 #include <QObject>
 #include <QPointer>
 #include <QString>
+#include <QStringList>
 
 class QAction;
 class QWidget;
@@ -51,7 +52,7 @@ signals:
     void proposed(int row);
 
 private:
-    void apply(const QString &sequenceId, const QString &before, const QString &proposal);
+    void apply(const QString &sequenceId, const QString &before, const QString &proposal, const QStringList &doubtful);
     void updateActions();
 
     StudioContext *m_context;

@@ -55,6 +55,25 @@ private slots:
         QCOMPARE(json.value("verified").toBool(true), false);
         const QString words = json.value("transcript").toString();
         QVERIFY2(words.startsWith("montreal "), qPrintable(words));
+        // A posterior per word, and the doubtful ones (below 0.5) most doubtful first.
+        const QJsonArray confidence = json.value("confidence").toArray();
+        QCOMPARE(confidence.size(), words.split(' ').size());
+        int doubtfulWords = 0;
+        for (const QJsonValue &c : confidence) {
+            QVERIFY(c.isDouble() && c.toDouble() >= 0 && c.toDouble() <= 1);
+            doubtfulWords += c.toDouble() < 0.5 ? 1 : 0;
+        }
+        const QJsonArray doubtful = json.value("doubtful").toArray();
+        QCOMPARE(doubtful.size(), doubtfulWords);
+        QVERIFY(doubtfulWords > 0 && doubtfulWords < confidence.size()); // some sure, some not
+        double previous = -1;
+        for (const QJsonValue &d : doubtful) {
+            const int index = d["index"].toInt();
+            QCOMPARE(d["word"].toString(), words.split(' ')[index]);
+            QCOMPARE(d["confidence"].toDouble(), confidence[index].toDouble());
+            QVERIFY(d["confidence"].toDouble() >= previous);
+            previous = d["confidence"].toDouble();
+        }
         QFile text(out);
         QVERIFY(text.open(QIODevice::ReadOnly));
         QCOMPARE(QString::fromUtf8(text.readAll()).simplified(), words);

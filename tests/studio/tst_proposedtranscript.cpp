@@ -31,6 +31,8 @@
 #include <QPalette>
 #include <QTableView>
 #include <QTemporaryDir>
+#include <QLocale>
+#include <QStatusBar>
 #include <QTest>
 #include <QUndoStack>
 
@@ -232,6 +234,22 @@ private slots:
         checkShownAsProposed(row, true);
         QVERIFY(action->isEnabled());
         QVERIFY(proposer()->acceptAction()->isEnabled());
+        // The status bar names the words to check first: the recogniser's doubtful ones (posterior
+        // below 0.5), the most doubtful first, each one of the proposed words.
+        const QString status = m_window->statusBar()->currentMessage();
+        qInfo("%s", qPrintable(status));
+        const QString lead = QStringLiteral("the most doubtful words first: ");
+        QVERIFY2(status.contains(lead), qPrintable(status));
+        const QStringList proposedWords = words.split(QLatin1Char(' '));
+        double previous = -1;
+        for (const QString &item : status.mid(status.indexOf(lead) + lead.size()).chopped(1).split(QStringLiteral(", "))) {
+            const QStringList parts = item.split(QLatin1Char(' '));
+            QCOMPARE(parts.size(), 2);
+            QVERIFY2(proposedWords.contains(parts[0]), qPrintable(item));
+            const double confidence = QLocale().toDouble(parts[1].mid(1).chopped(1));
+            QVERIFY(confidence >= previous && confidence < 0.5);
+            previous = confidence;
+        }
         if (const QString dir = qEnvironmentVariable("LIPSYNC_PREVIEW_SHOT"); !dir.isEmpty())
             m_window->grab().save(dir + QStringLiteral("/proposed-by-recognition.png"));
         undo->undo();
