@@ -115,6 +115,8 @@ int runEvaluate(const CommandLine &args)
             throw UsageError(QStringLiteral("--kinds is empty"));
     }
     options.modelOptions = dynamicModelOptionsFrom(args);
+    if (args.isSet(QStringLiteral("train-minutes")))
+        options.trainingSpeechSeconds = 60.0 * args.positiveNumber(QStringLiteral("train-minutes"));
     if (realism)
         return runRealism(args, options);
 
@@ -162,6 +164,9 @@ const CommandRegistration registration{
           QStringLiteral("2007")},
          {QStringLiteral("kinds"), QString::fromStdString(modelKindIdList(",", ",")),
           QStringLiteral("the models to evaluate (default: all)")},
+         {QStringLiteral("train-minutes"), QStringLiteral("M"),
+          QStringLiteral("train each fold's models on only M minutes of speech of its training folds (sequences "
+                         "drawn at random until their speech reaches M; a learning curve)")},
          {QStringLiteral("csv"), QStringLiteral("FILE"), QStringLiteral("also write the results as CSV")},
          {QStringLiteral("realism"), {}, QStringLiteral("evaluate the rendered lips instead (see above)")},
          {QStringLiteral("max-lag"), QStringLiteral("FRAMES"),

@@ -6,6 +6,7 @@
 #include "eval/Statistics.h"
 #include "tasks/BlockingMap.h"
 #include "tasks/Feedback.h"
+#include "util/PhoneSet.h"
 
 #include <QJsonArray>
 #include <QThreadPool>
@@ -18,6 +19,7 @@
 #include <memory>
 #include <mutex>
 #include <numeric>
+#include <random>
 #include <sstream>
 
 namespace lipsync {
@@ -60,7 +62,8 @@ std::vector<FoldOutcome> runFold(const std::vector<LabelledSequence> &sequences,
 {
     std::vector<double> wall, cpu;
     const std::vector<std::shared_ptr<DynamicModel>> models
-        = trainFoldModels(trainingSequences(sequences, test), options.kinds, modelOptions, feedback,
+        = trainFoldModels(trainingSequences(sequences, test, options.trainingSpeechSeconds, options.seed + 1 + f),
+                          options.kinds, modelOptions, feedback,
                           "fold " + std::to_string(f + 1) + "/" + std::to_string(options.folds) + ": ", &wall, &cpu);
     std::vector<FoldOutcome> out(options.kinds.size());
     for (size_t index = 0; index < models.size(); ++index) {
@@ -90,16 +93,40 @@ std::vector<FoldOutcome> runFold(const std::vector<LabelledSequence> &sequences,
 
 } // namespace
 
+double speechSeconds(const LabelledSequence &sequence)
+{
+    const auto speech = std::count_if(sequence.labels.begin(), sequence.labels.end(), [](int label) {
+        return label != PhoneSet::kSilence && label != PhoneSet::kBreath;
+    });
+    return double(speech) / (sequence.frameRate > 0 ? sequence.frameRate : 25.0);
+}
+
 std::vector<LabelledSequence> trainingSequences(const std::vector<LabelledSequence> &all,
-                                                const std::vector<int> &test)
+                                                const std::vector<int> &test, double speechLimit,
+                                                std::uint64_t seed)
 {
     std::vector<bool> isTest(all.size(), false);
     for (int i : test)
         isTest[size_t(i)] = true;
-    std::vector<LabelledSequence> training;
+    std::vector<int> order;
     for (size_t i = 0; i < all.size(); ++i)
         if (!isTest[i])
-            training.push_back(all[i]);
+            order.push_back(int(i));
+    if (speechLimit > 0) {
+        // Fisher-Yates on std::mt19937_64, as makeFolds: the same subset on every platform.
+        std::mt19937_64 random(seed);
+        for (size_t i = order.size(); i > 1; --i)
+            std::swap(order[i - 1], order[size_t(random() % i)]);
+        double taken = 0.0;
+        size_t keep = 0;
+        while (keep < order.size() && taken < speechLimit)
+            taken += speechSeconds(all[size_t(order[keep++])]);
+        order.resize(keep);
+        std::sort(order.begin(), order.end());
+    }
+    std::vector<LabelledSequence> training;
+    for (int i : order)
+        training.push_back(all[size_t(i)]);
     return training;
 }
 

@@ -29,6 +29,10 @@ struct EvaluationOptions
     std::uint64_t seed = 2007;
     std::vector<std::string> kinds = dynamicModelKinds(); // ids (dynamics/ModelKind.h)
     ModelOptions modelOptions;
+    // Train each fold's models on only this many seconds of speech (0: all of the training
+    // folds): the training sequences in a random order (seeded by the fold), taken until their
+    // speech (frames not labelled silence or breath) reaches it. For learning curves.
+    double trainingSpeechSeconds = 0.0;
     // Folds are independent: run them concurrently on the global thread pool, each model
     // single-threaded. false: one fold at a time, models threaded as modelOptions say.
     bool parallelFolds = true;
@@ -85,9 +89,14 @@ const std::vector<std::string> &evaluationMetrics();
 // What the "loglik" metric is, for the reports (JSON, the CLI table).
 const char *logLikelihoodNote();
 
-// The sequences of `all` not in `test` (a fold's training set, in order).
+// The sequences of `all` not in `test` (a fold's training set, in order); with
+// `speechSeconds` > 0, only as many of them, in an order drawn with `seed`, as hold that much
+// speech (EvaluationOptions::trainingSpeechSeconds).
 std::vector<LabelledSequence> trainingSequences(const std::vector<LabelledSequence> &all,
-                                                const std::vector<int> &test);
+                                                const std::vector<int> &test, double speechSeconds = 0.0,
+                                                std::uint64_t seed = 0);
+// Seconds of speech in `sequence`: its frames not labelled silence or breath.
+double speechSeconds(const LabelledSequence &sequence);
 
 // One fold's models, trained on `training` (§6.1): one per entry of `kinds`, in that order; the
 // DPDS is trained before the SLDS, which starts from it (§3.4). `wallSeconds` and `cpuSeconds`

@@ -23,6 +23,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <numeric>
 #include <exception>
 #include <limits>
 #include <mutex>
@@ -365,8 +366,12 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
     std::vector<std::vector<std::shared_ptr<DynamicModel>>> models;
     for (int f = 0; f < cv.folds; ++f) {
         Feedback child(training, double(f) / cv.folds, double(f + 1) / cv.folds);
-        models.push_back(trainFoldModels(trainingSequences(sequences, result.foldMembers[size_t(f)]),
-                                         cv.kinds, cv.modelOptions, child,
+        const std::vector<LabelledSequence> trainingSet = trainingSequences(
+            sequences, result.foldMembers[size_t(f)], cv.trainingSpeechSeconds, cv.seed + 1 + uint64_t(f));
+        result.trainingSpeechSeconds.push_back(std::accumulate(
+            trainingSet.begin(), trainingSet.end(), 0.0,
+            [](double sum, const LabelledSequence &s) { return sum + speechSeconds(s); }));
+        models.push_back(trainFoldModels(trainingSet, cv.kinds, cv.modelOptions, child,
                                          "fold " + std::to_string(f + 1) + "/" + std::to_string(cv.folds) + ": "));
     }
 
@@ -458,6 +463,7 @@ QJsonObject RealismResult::toJson() const
     o[QStringLiteral("sequences")] = sequences;
     o[QStringLiteral("frames")] = double(frames);
     o[QStringLiteral("skippedFrames")] = double(skippedFrames);
+    o[QStringLiteral("trainingSpeechSeconds")] = jsonNumbers(trainingSpeechSeconds);
     o[QStringLiteral("bilabials")] = bilabials;
     o[QStringLiteral("closedRecorded")] = closedRecorded;
     QJsonObject methodsObject;

@@ -119,6 +119,7 @@ struct RealismResult
     int bilabials = 0;      // /p b m/ segments of all sequences
     int closedRecorded = 0; // of them closed in the recording
     std::vector<std::vector<int>> foldMembers;
+    std::vector<double> trainingSpeechSeconds; // per fold: the speech its models were trained on
     std::vector<RealismMethod> methods; // tracked first, then the options' kinds
     std::vector<RealismSequence> perSequence;
 

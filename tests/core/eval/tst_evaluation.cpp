@@ -136,6 +136,49 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(Error, makeFolds(5, 1));
     }
 
+    // A learning curve's training set (EvaluationOptions::trainingSpeechSeconds): only training
+    // sequences, the fewest in the drawn order whose speech (frames not silence or breath)
+    // reaches the limit, the same for the same seed, and all of them without a limit.
+    void trainingSpeechLimit()
+    {
+        std::vector<LabelledSequence> all;
+        for (int i = 0; i < 20; ++i) {
+            LabelledSequence s;
+            s.name = "s" + std::to_string(i);
+            s.frameRate = 25.0;
+            // 10 frames of silence, 25 + i frames of speech, 5 of breath.
+            s.labels.assign(10, PhoneSet::kSilence);
+            s.labels.insert(s.labels.end(), size_t(25 + i), 3);
+            s.labels.insert(s.labels.end(), 5, PhoneSet::kBreath);
+            s.features = Eigen::MatrixXd::Zero(s.frameCount(), 2);
+            all.push_back(s);
+        }
+        QCOMPARE(speechSeconds(all[0]), 1.0);
+        const std::vector<int> test{1, 7, 13};
+        QCOMPARE(trainingSequences(all, test).size(), size_t(17));
+        const std::vector<LabelledSequence> few = trainingSequences(all, test, 3.5, 11);
+        double speech = 0;
+        for (const LabelledSequence &s : few) {
+            QVERIFY(s.name != "s1" && s.name != "s7" && s.name != "s13");
+            speech += speechSeconds(s);
+        }
+        // No more than the limit plus one sequence (1.76 s at most).
+        QVERIFY2(speech >= 3.5 && speech < 3.5 + 1.76, qPrintable(QString::number(speech)));
+        QVERIFY(few.size() >= 3 && few.size() <= 4);
+        std::vector<std::string> names, again;
+        for (const LabelledSequence &s : few)
+            names.push_back(s.name);
+        for (const LabelledSequence &s : trainingSequences(all, test, 3.5, 11))
+            again.push_back(s.name);
+        QCOMPARE(again, names);
+        // Another seed draws other sequences; more speech than there is takes them all.
+        std::vector<std::string> other;
+        for (const LabelledSequence &s : trainingSequences(all, test, 3.5, 12))
+            other.push_back(s.name);
+        QVERIFY(other != names);
+        QCOMPARE(trainingSequences(all, test, 1e6, 11).size(), size_t(17));
+    }
+
     void crossValidatesAllModelsOnIdenticalFolds()
     {
         const auto data = sampledData(1, 3, 20, 40);
