@@ -15,6 +15,7 @@
 #include "io/MediaInfo.h"
 #include "io/TextGrid.h"
 #include "io/Transcript.h"
+#include "project/Project.h"
 #include "util/Error.h"
 
 #include <QDir>
@@ -151,7 +152,12 @@ int runAlign(const cli::CommandLine &a)
 {
     // The transcript's fit costs a third of the alignment's time: measured when it is reported
     // (--json) or checked (--strict).
-    const cli::SpeechAligner aligner(a, a.isSet("json") || a.isSet("strict"));
+    // A project to align is also the project whose pronunciations and aligner are used, unless
+    // --project names another.
+    const QString input = a.positional().front();
+    const bool isProject = !a.isSet("project") && QFileInfo::exists(QDir(input).filePath(Project::kManifestName));
+    const cli::SpeechAligner aligner(a, isProject ? input : a.value(QStringLiteral("project")),
+                                     a.isSet("json") || a.isSet("strict"));
     if (cli::isBatchInput(a.positional().front()))
         return alignFolder(a, aligner);
     const QString media = a.positional().front();

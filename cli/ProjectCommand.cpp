@@ -54,6 +54,11 @@ QJsonObject projectSummary(const Project &project)
     return QJsonObject{{"project", q(project.manifestPath())},
                        {"name", q(project.name)},
                        {"formatVersion", Project::kFormatVersion},
+                       // Whose aligner the speech is aligned with (Project::aligner; a model of
+                       // the project's own wins).
+                       {"aligner", project.model("aligner") ? q(project.model("aligner")->name)
+                                   : project.alignsGeneric() ? QStringLiteral("generic")
+                                                             : QStringLiteral("builtin")},
                        {"sequences", sequences},
                        {"models", models},
                        {"missingMedia", missing}};
@@ -86,7 +91,11 @@ int runCreate(const CommandLine &a)
     try {
         // A damaged clip is listed and left out; the rest go in.
         std::vector<std::string> skipped;
-        const Project project = Project::fromMediaFolder(a.value("media").toStdString(), out, &skipped);
+        const std::string aligner = a.value("aligner").toStdString();
+        if (aligner != Project::kBuiltinAligner && aligner != Project::kGenericAligner)
+            throw UsageError(QStringLiteral("--aligner: builtin or generic, not '%1'").arg(a.value("aligner")));
+        Project project = Project::fromMediaFolder(a.value("media").toStdString(), out, &skipped);
+        project.aligner = aligner;
         project.save();
         for (const std::string &why : skipped)
             std::fprintf(stderr, "lipsync project create: skipped %s\n", why.c_str());
@@ -132,6 +141,11 @@ const CommandRegistration createRegistration{
        CommandOption::Required},
       {QStringLiteral("out"), QStringLiteral("DIR"), QStringLiteral("the project folder to write"), {},
        CommandOption::Required},
+      {QStringLiteral("aligner"), QStringLiteral("builtin|generic"),
+       QStringLiteral("whose aligner aligns the project's speech (until the project names one of its own, "
+                      "lipsync aligner train/adapt): generic, CMU Sphinx's US-English model adapted to the "
+                      "speaker, for anyone; builtin, the shipped model of GRID's speaker s1"),
+       QStringLiteral("generic")},
       {QStringLiteral("force"), {},
        QStringLiteral("replace an existing project (the old manifest is kept as project.json.bak)")}},
      {}},

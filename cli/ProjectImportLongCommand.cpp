@@ -4,6 +4,8 @@
 #include "CommandLine.h"
 #include "SpeechAligner.h"
 
+#include "align/LongAlignment.h"
+#include "io/MediaInfo.h"
 #include "io/Transcript.h"
 #include "project/Project.h"
 #include "render/LongRecordingImport.h"
@@ -65,6 +67,7 @@ Project loadOrCreate(const QString &folder)
         throw Error("cannot create the project folder", folder.toStdString());
     Project project;
     project.name = QFileInfo(QDir::cleanPath(dir.absolutePath())).fileName().toStdString();
+    project.aligner = Project::kGenericAligner; // a new person: the model that fits anyone
     project.saveAs(QDir(folder).absolutePath().toStdString());
     return project;
 }
@@ -81,7 +84,18 @@ int runImportLong(const CommandLine &a)
         throw UsageError(QStringLiteral("--longest must be at least --shortest"));
     try {
         Project project = loadOrCreate(projectFolder);
-        const SpeechAligner aligner(a, projectFolder);
+        // CMU Sphinx aligns up to kLongRecordingSeconds; a longer recording of a project that
+        // says the generic model is aligned with the shipped one, window by window, and its
+        // utterances can be aligned again with the generic model once cut.
+        const bool isLong = MediaInfo::probe(media.toStdString()).audioDuration > kLongRecordingSeconds;
+        const SpeechAligner aligner(a, projectFolder, false, isLong);
+        if (aligner.usesShippedForLong())
+            std::fprintf(stderr,
+                         "lipsync: %s is longer than CMU Sphinx aligns (%d min): cut with the shipped model of GRID's "
+                         "speaker; align the utterances again with the project's generic model: lipsync align %s "
+                         "--out DIR, then lipsync project import %s --alignments DIR\n",
+                         qPrintable(media), int(kLongRecordingSeconds / 60), qPrintable(projectFolder),
+                         qPrintable(projectFolder));
         const Transcript transcript = readTranscript(a.value("transcript").toStdString());
         Feedback feedback;
         if (!a.isSet("json"))

@@ -26,7 +26,8 @@ std::vector<CommandOption> SpeechAligner::options(const QStringList &alignerAlia
                         "own boundaries, as the paper's aligner")},
         {QStringLiteral("project"), QStringLiteral("DIR"),
          QStringLiteral("pronounce words with the project's pronunciations first, and align with the project's own "
-                        "aligner model when it names one (unless --aligner)")},
+                        "aligner model when it names one, or as the project says (generic: sphinx --adapt; "
+                        "project create --aligner), unless --aligner")},
         pronunciationsOption(),
     };
     if (!withProject)
@@ -41,7 +42,8 @@ SpeechAligner::SpeechAligner(const CommandLine &args, bool transcriptFit)
 {
 }
 
-SpeechAligner::SpeechAligner(const CommandLine &args, const QString &projectFolder, bool transcriptFit)
+SpeechAligner::SpeechAligner(const CommandLine &args, const QString &projectFolder, bool transcriptFit,
+                             bool longRecording)
 {
     AlignerChoice choice{args.value(QStringLiteral("aligner")).toStdString(), args.isSet(QStringLiteral("adapt"))};
     choice.boundaryCorrection = !args.isSet(QStringLiteral("no-boundary-correction"));
@@ -54,6 +56,15 @@ SpeechAligner::SpeechAligner(const CommandLine &args, const QString &projectFold
         // of kind "aligner": `aligner train`/`adapt` on its recordings), unless --aligner names one.
         if (const ModelReference *own = project.model("aligner"); own && choice.model.empty())
             choice.model = project.resolve(own->file);
+        // A project that says its speaker is not GRID's: the generic model, adapted to them.
+        if (project.alignsGeneric() && choice.model.empty()) {
+            if (longRecording) {
+                m_shippedForLong = true;
+            } else {
+                choice.model = "sphinx";
+                choice.adapt = true;
+            }
+        }
     }
     if (!choice.isSphinx())
         choice.model = alignerModelOrDefault(QString::fromStdString(choice.model), args.spec().name).toStdString();

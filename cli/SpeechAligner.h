@@ -28,8 +28,11 @@ public:
     // `transcriptFit`: measure AlignerOutput::transcriptFit (AlignerChoice::transcriptFit).
     explicit SpeechAligner(const CommandLine &args, bool transcriptFit = false);
     // The same with the pronunciations of the project at `projectFolder` (a command whose project
-    // is an argument rather than --project).
-    SpeechAligner(const CommandLine &args, const QString &projectFolder, bool transcriptFit = false);
+    // is an argument rather than --project). `longRecording`: what is aligned is longer than CMU
+    // Sphinx aligns (kLongRecordingSeconds), so a project's generic choice gives way to the
+    // shipped model (usesShippedForLong() says when it did).
+    SpeechAligner(const CommandLine &args, const QString &projectFolder, bool transcriptFit = false,
+                  bool longRecording = false);
     ~SpeechAligner();
 
     // "sphinx:DIR" or the path of our model file.
@@ -37,6 +40,8 @@ public:
     // The file the model is read from (CMU Sphinx's: its folder's mdef), for up-to-date checks.
     QString modelFile() const;
     const Lexicon &lexicon() const { return *m_lexicon; }
+    // The project asked for the generic model, but the recording is too long for it.
+    bool usesShippedForLong() const { return m_shippedForLong; }
     const Aligner &aligner() const { return *m_aligner; }
 
     // Aligns the recording at `mediaPath` to `words`. Throws lipsync::Error naming the media (and
@@ -47,6 +52,7 @@ public:
 private:
     std::unique_ptr<Aligner> m_aligner;
     std::unique_ptr<Lexicon> m_lexicon;
+    bool m_shippedForLong = false;
 };
 
 } // namespace lipsync::cli

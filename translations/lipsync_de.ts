@@ -1415,44 +1415,49 @@
 <context>
     <name>lipsync::studio::LongRecordingImporter</name>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="43"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="46"/>
         <source>Import &amp;Long Recording…</source>
         <translation>&amp;Lange Aufnahme importieren…</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="47"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="50"/>
         <source>Align a long recording of one speaker to its transcript and add its utterances to the project as sequences</source>
         <translation>Eine lange Aufnahme eines Sprechers an ihrem Transkript alignieren und ihre Äußerungen dem Projekt als Sequenzen hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="75"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="78"/>
         <source>Import Long Recording</source>
         <translation>Lange Aufnahme importieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="76"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="79"/>
         <source>The recording&apos;s clips are written into the project&apos;s folder, and the bundled demo is read-only. Save the project in a folder of your own first?</source>
         <translation>Die Clips der Aufnahme werden in den Ordner des Projekts geschrieben, und das mitgelieferte Demo ist schreibgeschützt. Das Projekt zuerst in einem eigenen Ordner speichern?</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="94"/>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="156"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="97"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="172"/>
         <source>The long recording could not be imported.</source>
         <translation>Die lange Aufnahme konnte nicht importiert werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="95"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="98"/>
         <source>The bundled demo is read-only: save the project in a folder of your own first.</source>
         <translation>Das mitgelieferte Demo ist schreibgeschützt: Speichern Sie das Projekt zuerst in einem eigenen Ordner.</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="119"/>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="146"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="122"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="153"/>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="149"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="157"/>
+        <source>Imported from %1: %2 sequences, %3 words, cut with the built-in model (the recording is longer than Generic US English aligns): Align All aligns them again with it.</source>
+        <translation>Aus %1 importiert: %2 Sequenzen, %3 Wörter, geschnitten mit dem eingebauten Modell (die Aufnahme ist länger, als Allgemeines US-Englisch aligniert): „Alle ausrichten“ richtet sie damit neu aus.</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="165"/>
         <source>Imported from %1: %2 sequences, %3 words.</source>
         <translation>Aus %1 importiert: %2 Sequenzen, %3 Wörter.</translation>
     </message>
@@ -2436,7 +2441,7 @@
     </message>
     <message>
         <location filename="../studio/app/ProjectFiles.cpp" line="56"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="118"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="120"/>
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
@@ -2452,7 +2457,7 @@
     </message>
     <message>
         <location filename="../studio/app/ProjectFiles.cpp" line="76"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="106"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="108"/>
         <source>No new project was created.</source>
         <translation>Es wurde kein neues Projekt angelegt.</translation>
     </message>
@@ -2467,7 +2472,7 @@
         <translation>Neues Projekt aus %1</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/ProjectFiles.cpp" line="98"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="100"/>
         <source>%n clip(s) could not be read and were left out.</source>
         <translation>
             <numerusform>%n Clip konnte nicht gelesen werden und wurde ausgelassen.</numerusform>
@@ -2475,63 +2480,63 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="119"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="121"/>
         <source>%1 holds no project. Create a new project from the clips in it?</source>
         <translation>%1 enthält kein Projekt. Ein neues Projekt aus den Clips darin anlegen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="127"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="129"/>
         <source>The project could not be opened.</source>
         <translation>Das Projekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="157"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="159"/>
         <source>The bundled demo project was not found.</source>
         <translation>Das mitgelieferte Demoprojekt wurde nicht gefunden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="158"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="160"/>
         <source>Looked for demo/ in: %1</source>
         <translation>demo/ gesucht in: %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="165"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="167"/>
         <source>The demo project could not be opened.</source>
         <translation>Das Demoprojekt konnte nicht geöffnet werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="190"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="192"/>
         <source>Save Project As (a folder)</source>
         <translation>Projekt speichern unter (ein Ordner)</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="195"/>
-        <location filename="../studio/app/ProjectFiles.cpp" line="214"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="197"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="216"/>
         <source>The project could not be saved.</source>
         <translation>Das Projekt konnte nicht gespeichert werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="196"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="198"/>
         <source>a file of that name exists; a project needs a folder</source>
         <translation>es gibt eine Datei dieses Namens; ein Projekt braucht einen Ordner</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="201"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="203"/>
         <source>Replace Project</source>
         <translation>Projekt ersetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="202"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="204"/>
         <source>%1 already holds a project. Replace it?</source>
         <translation>%1 enthält bereits ein Projekt. Ersetzen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="227"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="229"/>
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../studio/app/ProjectFiles.cpp" line="227"/>
+        <location filename="../studio/app/ProjectFiles.cpp" line="229"/>
         <source>The project has unsaved changes. Save them?</source>
         <translation>Das Projekt hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
@@ -3291,265 +3296,270 @@
 <context>
     <name>lipsync::studio::TimelinePanel</name>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="187"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="188"/>
         <source>Zoom out (wheel down)</source>
         <translation>Verkleinern (Mausrad nach unten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="188"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="189"/>
         <source>Zoom in (wheel up)</source>
         <translation>Vergrößern (Mausrad nach oben)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="189"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="190"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="189"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="190"/>
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="86"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="444"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="87"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="450"/>
         <source>Align</source>
         <translation>Ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="86"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="87"/>
         <source>Align this sequence&apos;s transcript to its audio (words and phones)</source>
         <translation>Das Transkript dieser Sequenz am Ton ausrichten (Wörter und Phone)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="87"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
         <source>Align All</source>
         <translation>Alle ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="87"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
         <source>Align every sequence that has a transcript</source>
         <translation>Jede Sequenz mit Transkript ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
         <source>Re-align Selection</source>
         <translation>Auswahl neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
         <source>Align the selected stretch again, keeping the words whose timing you edited</source>
         <translation>Den ausgewählten Abschnitt neu ausrichten; Wörter mit bearbeitetem Timing bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="93"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="94"/>
         <source>Adapt to Speaker</source>
         <translation>An Sprecher anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="104"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="493"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="105"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="518"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="105"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="106"/>
         <source>Align with the model shipped with the studio, trained on one GRID speaker</source>
         <translation>Mit dem mitgelieferten Modell ausrichten, trainiert auf einem GRID-Sprecher</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="106"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="107"/>
         <source>Generic US English (CMU Sphinx)</source>
         <translation>Allgemeines US-Englisch (CMU Sphinx)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="107"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="108"/>
         <source>Align with CMU Sphinx&apos;s US-English model trained on many speakers (Debian package pocketsphinx-en-us)</source>
         <translation>Mit dem US-englischen Modell von CMU Sphinx ausrichten, trainiert auf vielen Sprechern (Debian-Paket pocketsphinx-en-us)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="124"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
         <source>Split at Cursor</source>
         <translation>Am Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="124"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
         <source>Split the interval under the cursor</source>
         <translation>Das Intervall unter dem Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="645"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="670"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
         <source>Join the selected interval with the next one</source>
         <translation>Das ausgewählte Intervall mit dem nächsten verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="128"/>
         <source>Relabel…</source>
         <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="128"/>
         <source>Change the label of the selected interval</source>
         <translation>Die Beschriftung des ausgewählten Intervalls ändern</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
         <source>Insert Silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
         <source>Make the selection a silence</source>
         <translation>Die Auswahl zur Stille machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
         <source>Insert Breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
         <source>Make the selection a breath</source>
         <translation>Die Auswahl zum Atmer machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Play Selection</source>
         <translation>Auswahl abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Play the selected stretch (Space in the timeline)</source>
         <translation>Den ausgewählten Abschnitt abspielen (Leertaste in der Zeitleiste)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
         <source>Play Word</source>
         <translation>Wort abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
         <source>Play the word under the cursor</source>
         <translation>Das Wort unter dem Cursor abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Play All</source>
         <translation>Alles abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Play the whole sequence</source>
         <translation>Die ganze Sequenz abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
         <source>Pronunciations…</source>
         <translation>Aussprachen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
         <source>The project&apos;s pronunciations, and the words espeak-ng guessed</source>
         <translation>Die Aussprachen des Projekts und die von espeak-ng geschätzten Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="176"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="177"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="177"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="178"/>
         <source>The acoustic model the aligner uses</source>
         <translation>Das akustische Modell, das die Ausrichtung verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="141"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="142"/>
         <source>Show Spectrogram</source>
         <translation>Spektrogramm anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="142"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="143"/>
         <source>Show the spectrogram under the waveform in the timeline</source>
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="305"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="311"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="324"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="330"/>
         <source>Alignment of the speech in the Preview: %1 (read-only; Back to Sequence there to edit)</source>
         <translation>Alignierung der Sprache in der Vorschau: %1 (schreibgeschützt; dort „Zurück zur Sequenz“ zum Bearbeiten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="338"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="344"/>
         <source>No audio</source>
         <translation>Kein Ton</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="408"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="414"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="421"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="427"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="445"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="451"/>
         <source>The transcript of %1 changed since its boundaries were edited. Aligning it again replaces the edited boundaries. Align anyway?</source>
         <translation>Das Transkript von %1 wurde geändert, nachdem seine Grenzen bearbeitet wurden. Erneutes Alignieren ersetzt die bearbeiteten Grenzen. Trotzdem alignieren?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="456"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="462"/>
         <source>Every word of %1 is user-edited: nothing to align there.</source>
         <translation>Jedes Wort von %1 ist von Hand bearbeitet: Dort gibt es nichts zu alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="477"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="483"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="480"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="486"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="426"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="432"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="94"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
         <source>Adapt the aligner to each recording&apos;s voice before aligning it (slower; better for voices unlike the model&apos;s training speakers)</source>
         <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Stimmen, die den Trainingssprechern des Modells unähnlich sind)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="266"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="270"/>
+        <source>The timeline aligns with Generic US English, adapted to each recording&apos;s speaker (Model menu): the built-in model knows only GRID&apos;s speaker s1.</source>
+        <translation>Die Zeitleiste aligniert mit Allgemeines US-Englisch, an den Sprecher jeder Aufnahme angepasst (Menü Modell): Das eingebaute Modell kennt nur GRIDs Sprecher s1.</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="272"/>
         <source>The timeline aligns with the built-in model of GRID&apos;s speaker s1. For another speaker, choose Model ▸ Generic US English and Adapt to Speaker.</source>
         <translation>Die Zeitleiste richtet mit dem eingebauten Modell des GRID-Sprechers s1 aus. Für einen anderen Sprecher wählen Sie Modell ▸ Allgemeines US-Englisch und An Sprecher anpassen.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="492"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="517"/>
         <source>The Project&apos;s Aligner (%1)</source>
         <translation>Aligner des Projekts (%1)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="517"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="542"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="542"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="567"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -3557,17 +3567,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="564"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="589"/>
         <source>%1: the alignment came out as it was; nothing changed.</source>
         <translation>%1: Die Alignierung ist unverändert geblieben.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="571"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="596"/>
         <source>No transcript fits its sound by this aligner: its model probably does not know this speaker. Choose Model ▸ Generic US English and Adapt to Speaker, or train the project&apos;s own aligner.</source>
         <translation>Nach diesem Aligner passt kein Transkript zu seinem Ton: Sein Modell kennt diesen Sprecher vermutlich nicht. Wählen Sie Modell ▸ Allgemeines US-Englisch und An Sprecher anpassen, oder trainieren Sie den eigenen Aligner des Projekts.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="576"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="601"/>
         <source>%n transcript(s) do not fit the sound: %1. Check that they are the clips&apos; words (marked in the sequence list).</source>
         <translation>
             <numerusform>%n Transkript passt nicht zum Ton: %1. Prüfen Sie, ob es die Wörter des Clips sind (in der Sequenzliste markiert).</numerusform>
@@ -3575,7 +3585,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="582"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="607"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -3583,52 +3593,52 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="621"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="646"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="621"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="646"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="629"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="654"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="646"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="671"/>
         <source>These phones belong to two words, “%1” and “%2”. Merge the words as well?</source>
         <translation>Diese Phone gehören zu zwei Wörtern, „%1“ und „%2“. Die Wörter ebenfalls verbinden?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="649"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="674"/>
         <source>Merge Phones and Words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="655"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="680"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="655"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="680"/>
         <source>Merge phones and words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="687"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="712"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="687"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="712"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="708"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="733"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>

@@ -329,6 +329,26 @@ RealismMethod summariseMethod(const std::vector<std::vector<const RealismSequenc
     return m;
 }
 
+// Every fold's models, trained on its training folds (or as much of their speech as
+// cv.trainingSpeechSeconds asks: result.trainingSpeechSeconds says how much each got).
+std::vector<std::vector<std::shared_ptr<DynamicModel>>> trainEveryFold(const std::vector<LabelledSequence> &sequences,
+                                                                       const EvaluationOptions &cv,
+                                                                       RealismResult &result, Feedback &feedback)
+{
+    std::vector<std::vector<std::shared_ptr<DynamicModel>>> models;
+    for (int f = 0; f < cv.folds; ++f) {
+        Feedback child(feedback, double(f) / cv.folds, double(f + 1) / cv.folds);
+        const std::vector<LabelledSequence> trainingSet = trainingSequences(
+            sequences, result.foldMembers[size_t(f)], cv.trainingSpeechSeconds, cv.seed + 1 + uint64_t(f));
+        result.trainingSpeechSeconds.push_back(std::accumulate(
+            trainingSet.begin(), trainingSet.end(), 0.0,
+            [](double sum, const LabelledSequence &s) { return sum + speechSeconds(s); }));
+        models.push_back(trainFoldModels(trainingSet, cv.kinds, cv.modelOptions, child,
+                                         "fold " + std::to_string(f + 1) + "/" + std::to_string(cv.folds) + ": "));
+    }
+    return models;
+}
+
 } // namespace
 
 RealismResult evaluateRealism(const Project &project, const RealismOptions &options, Feedback &feedback)
@@ -363,17 +383,8 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
     const bool live = !options.liveAcousticModel.empty();
     const AcousticModel liveAcoustic = live ? AcousticModel::load(options.liveAcousticModel) : AcousticModel();
     const PhoneBigram liveBigram = live ? PhoneBigram::load(options.liveBigram) : PhoneBigram();
-    std::vector<std::vector<std::shared_ptr<DynamicModel>>> models;
-    for (int f = 0; f < cv.folds; ++f) {
-        Feedback child(training, double(f) / cv.folds, double(f + 1) / cv.folds);
-        const std::vector<LabelledSequence> trainingSet = trainingSequences(
-            sequences, result.foldMembers[size_t(f)], cv.trainingSpeechSeconds, cv.seed + 1 + uint64_t(f));
-        result.trainingSpeechSeconds.push_back(std::accumulate(
-            trainingSet.begin(), trainingSet.end(), 0.0,
-            [](double sum, const LabelledSequence &s) { return sum + speechSeconds(s); }));
-        models.push_back(trainFoldModels(trainingSet, cv.kinds, cv.modelOptions, child,
-                                         "fold " + std::to_string(f + 1) + "/" + std::to_string(cv.folds) + ": "));
-    }
+    const std::vector<std::vector<std::shared_ptr<DynamicModel>>> models
+        = trainEveryFold(sequences, cv, result, training);
 
     // Every held-out sequence on its own: rendering and landmarking are independent per sequence.
     struct Item

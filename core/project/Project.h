@@ -33,7 +33,8 @@ struct ModelReference
 class Project
 {
 public:
-    // 2: sequences may carry per-frame fitErrors; 3: and transcriptProposed; 4: and transcriptFit.
+    // 2: sequences may carry per-frame fitErrors; 3: and transcriptProposed; 4: and transcriptFit,
+    // and the project its aligner.
     // Older manifests still load.
     static constexpr int kFormatVersion = 4;
     static constexpr const char *kManifestName = "project.json";
@@ -101,6 +102,16 @@ public:
     // (lower case, no spaces) -> ARPAbet phones of PhoneSet separated by spaces ("L IH1 P S IH2 NG K";
     // stress digits allowed). Every alignment of the project uses them.
     std::map<std::string, std::string> pronunciations;
+
+    // Whose aligner the project's speech is aligned with when it names no aligner model of its
+    // own (a model reference of kind "aligner", which always wins): kBuiltinAligner, the shipped
+    // model of GRID's speaker s1 (also when empty: projects that never said, the demo among
+    // them), or kGenericAligner, CMU Sphinx's US-English model adapted to the recording's speaker:
+    // the right start for anyone else, and what new projects say.
+    std::string aligner;
+    static constexpr const char *kBuiltinAligner = "builtin";
+    static constexpr const char *kGenericAligner = "generic";
+    bool alignsGeneric() const { return aligner == kGenericAligner && !model("aligner"); }
 
     Sequence *sequence(const std::string &id);
     const Sequence *sequence(const std::string &id) const;

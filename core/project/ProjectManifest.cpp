@@ -85,7 +85,7 @@ public:
                                 + "); open it with a newer version");
         if (version < 1)
             fail("version", "must be at least 1");
-        checkKeys(root, "", {"format", "version", "name", "sequences", "models", "study", "pronunciations"});
+        checkKeys(root, "", {"format", "version", "name", "aligner", "sequences", "models", "study", "pronunciations"});
 
         Project project;
         if (root.contains("name"))
@@ -120,6 +120,11 @@ public:
         }
         if (root.contains("pronunciations"))
             project.pronunciations = readPronunciations(root.value("pronunciations"), "pronunciations");
+        if (root.contains("aligner")) {
+            project.aligner = string(root.value("aligner"), "aligner", false);
+            if (project.aligner != Project::kBuiltinAligner && project.aligner != Project::kGenericAligner)
+                fail("aligner", "must be \"builtin\" or \"generic\", found \"" + project.aligner + "\"");
+        }
         return project;
     }
 
@@ -457,7 +462,7 @@ QJsonArray tierToJson(const Tier &tier)
 // Manifest keys in reading order; keys not listed follow alphabetically.
 const QStringList &keyOrder()
 {
-    static const QStringList order{"format",     "version",   "kind",      "name",
+    static const QStringList order{"format",     "version",   "kind",      "name",      "aligner",
                                    "sequences",  "models",    "pronunciations", "word",
                                    "id",         "mediaFile", "frameRate", "frameCount",
                                    "firstFrameTime", "frameTimes",
@@ -631,6 +636,8 @@ QJsonObject ProjectManifest::toJson(const Project &project, const std::string &t
                          {"models", models}};
     if (project.study)
         manifest.insert("study", QString::fromLatin1(Project::kStudyFileName));
+    if (!project.aligner.empty())
+        manifest.insert("aligner", toQString(project.aligner));
     // Written only when there are some, so projects without overrides keep their manifest.
     if (!project.pronunciations.empty()) {
         QJsonArray pronunciations;

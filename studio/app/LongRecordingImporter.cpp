@@ -8,7 +8,9 @@
 #include "document/ProjectDocument.h"
 
 #include "align/Lexicon.h"
+#include "align/LongAlignment.h"
 #include "align/PronunciationDictionary.h"
+#include "io/MediaInfo.h"
 #include "io/Transcript.h"
 #include "project/ProjectManifest.h"
 #include "render/LongRecordingImport.h"
@@ -33,6 +35,7 @@ struct ImportedSequences
     std::vector<Sequence> sequences;
     std::string folder;
     int words = 0;
+    bool shippedForLong = false; // CMU Sphinx was chosen, the recording too long for it
 };
 
 } // namespace
@@ -122,7 +125,11 @@ Task *LongRecordingImporter::start(const QString &recordingPath, const QString &
             feedback.setStatus("reading the transcript");
             const Transcript transcript = readTranscript(transcriptPath.toStdString());
             feedback.setStatus("loading the aligner model");
-            const std::shared_ptr<const Aligner> aligner = aligners->get(choice);
+            // CMU Sphinx aligns up to kLongRecordingSeconds: a longer recording is cut with the
+            // shipped model, window by window (the utterances can be aligned again afterwards).
+            imported->shippedForLong = choice.isSphinx()
+                                       && MediaInfo::probe(recordingPath.toStdString()).audioDuration > kLongRecordingSeconds;
+            const std::shared_ptr<const Aligner> aligner = aligners->get(imported->shippedForLong ? AlignerChoice{} : choice);
             const Lexicon lexicon(&PronunciationDictionary::cmu(), Lexicon::parseOverrides(pronunciations));
             feedback.setStatus(name.toStdString());
             LongRecordingImportResult result =
@@ -145,8 +152,17 @@ Task *LongRecordingImporter::start(const QString &recordingPath, const QString &
                 // import of this recording, whose sequences now use these clips: they stay.
                 if (!document->requestAddSequences(std::move(sequences), tr("Import %1").arg(name)))
                     return;
-                self->m_context->showStatus(
-                    tr("Imported from %1: %2 sequences, %3 words.").arg(name).arg(count).arg(imported->words), 8000);
+                if (imported->shippedForLong)
+                    self->m_context->showStatus(
+                        tr("Imported from %1: %2 sequences, %3 words, cut with the built-in model (the recording is "
+                           "longer than Generic US English aligns): Align All aligns them again with it.")
+                            .arg(name)
+                            .arg(count)
+                            .arg(imported->words),
+                        20000);
+                else
+                    self->m_context->showStatus(
+                        tr("Imported from %1: %2 sequences, %3 words.").arg(name).arg(count).arg(imported->words), 8000);
                 emit self->imported(first, count);
             };
         });

@@ -84,6 +84,8 @@ Task *ProjectFiles::createFromMediaFolder(const QString &mediaFolder, const QStr
                                      Project project = Project::fromMediaFolder(
                                          mediaFolder.toStdString(), projectFolder.toStdString(), &skipped);
                                      project.name = QFileInfo(projectFolder).fileName().toStdString();
+                                     // A new person: the aligner that fits anyone (Model menu).
+                                     project.aligner = Project::kGenericAligner;
                                      project.saveAs(projectFolder.toStdString());
                                      return TaskRunner::Commit(
                                          [this, projectFolder, skipped, project = std::move(project)]() mutable {

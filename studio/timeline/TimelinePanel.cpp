@@ -32,6 +32,7 @@
 #include <QPushButton>
 #include <QScrollBar>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QToolButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -245,13 +246,15 @@ void TimelinePanel::attach(StudioContext *context)
     // A click moves what the timeline shows: the sequence, or the Preview's new speech.
     connect(m_waveform, &WaveformView::timeClicked, context, &StudioContext::seek);
     connect(m_document, &ProjectDocument::documentReset, this, [this] {
+        applyProjectAligner();
         publishAlignerChoice(); // another project: perhaps its own aligner
-        // A project of the user's own, aligned with the model of GRID's one speaker: say what
-        // fits another speaker better (the demo is GRID's speaker).
-        // Said once its first sequence is shown, after that sequence's own message.
-        m_alignerHintPending = m_document->isOpen() && !m_document->isReadOnly()
-                               && !m_document->project().model("aligner") && m_builtInAlignerAction->isChecked()
-                               && m_document->sequenceCount() > 0;
+        // Which aligner the timeline uses, said once the project's first sequence is shown, after
+        // that sequence's own message: a project of the user's own aligned with the model of
+        // GRID's one speaker is told what fits another speaker better (the demo is GRID's
+        // speaker); one whose speaker is another is told that the generic model is in use.
+        m_alignerHintPending = m_document->isOpen() && !m_document->isReadOnly() && m_document->sequenceCount() > 0
+                               && !m_document->project().model("aligner")
+                               && (m_builtInAlignerAction->isChecked() || m_document->project().alignsGeneric());
         showSequence(-1);
     });
     connect(m_document, &ProjectDocument::modelsChanged, this, &TimelinePanel::publishAlignerChoice);
@@ -263,8 +266,11 @@ void TimelinePanel::attach(StudioContext *context)
     connect(context, &StudioContext::sequenceLoaded, this, [this] {
         showSequence(m_context->currentSequence());
         if (std::exchange(m_alignerHintPending, false))
-            m_context->showStatus(tr("The timeline aligns with the built-in model of GRID's speaker s1. For another "
-                                     "speaker, choose Model ▸ Generic US English and Adapt to Speaker."),
+            m_context->showStatus(m_sphinxAlignerAction->isChecked() && m_adaptAction->isChecked()
+                                      ? tr("The timeline aligns with Generic US English, adapted to each recording's "
+                                           "speaker (Model menu): the built-in model knows only GRID's speaker s1.")
+                                      : tr("The timeline aligns with the built-in model of GRID's speaker s1. For "
+                                           "another speaker, choose Model ▸ Generic US English and Adapt to Speaker."),
                                   20000);
     });
     // The one player: the main window follows its frames; the timeline's cursor follows its
@@ -478,6 +484,25 @@ void TimelinePanel::realignSelection()
         return;
     }
     startAlignment(tr("Re-align %1").arg(job.sequenceId), {job});
+}
+
+void TimelinePanel::applyProjectAligner()
+{
+    if (!m_document || !m_document->isOpen())
+        return;
+    // The project says whose aligner (Project::aligner, or a model of its own): that, for as
+    // long as it is open; a project that does not say keeps the last choice. Not remembered as
+    // the user's choice.
+    const Project &project = m_document->project();
+    const bool generic = project.alignsGeneric() && m_sphinxAlignerAction->isEnabled();
+    const bool builtin = project.model("aligner") || project.aligner == Project::kBuiltinAligner;
+    if (!generic && !builtin)
+        return;
+    const QSignalBlocker blockBuiltIn(m_builtInAlignerAction), blockSphinx(m_sphinxAlignerAction),
+        blockAdapt(m_adaptAction);
+    m_builtInAlignerAction->setChecked(!generic);
+    m_sphinxAlignerAction->setChecked(generic);
+    m_adaptAction->setChecked(generic);
 }
 
 void TimelinePanel::publishAlignerChoice()

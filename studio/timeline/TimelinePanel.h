@@ -119,6 +119,7 @@ private:
     void refresh();
     void updateActions();
     // The Speech menu's aligner and adaptation, for every alignment of the studio (ModelStore).
+    void applyProjectAligner();
     void publishAlignerChoice();
     TierPair currentTiers() const;
     bool edit(const TierPair &next, const QString &text, int mergeKey = -1);

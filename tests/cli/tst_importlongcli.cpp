@@ -151,6 +151,12 @@ private slots:
         const Project p = Project::load(project.toStdString());
         QCOMPARE(int(p.sequences.size()), 10 * kRounds);
         QCOMPARE(p.name, std::string("project"));
+        // A new project says the generic aligner; a recording longer than CMU Sphinx aligns is cut
+        // with the shipped model, and the command says how to align the utterances again.
+        QCOMPARE(p.aligner, std::string(Project::kGenericAligner));
+        QVERIFY(parseJsonObject(r.out).value("aligner").toString().endsWith("grid-s1.aligner"));
+        QVERIFY2(r.err.contains("longer than CMU Sphinx aligns") && r.err.contains("lipsync align " + project.toUtf8()),
+                 r.err.constData());
         const QString busy = m_dir.filePath(QStringLiteral("busy"));
         QDir().mkpath(busy);
         QFile other(busy + QStringLiteral("/notes.txt"));

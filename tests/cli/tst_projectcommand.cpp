@@ -1,6 +1,7 @@
 // `lipsync project create` and `lipsync project check`, run as a user runs them.
 #include "CliRun.h"
 
+#include "align/SphinxAligner.h"
 #include "project/Project.h"
 
 #include <QDir>
@@ -13,6 +14,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+using lipsync::Project;
+using lipsync::SphinxAligner;
 using lipsync::testing::Run;
 using lipsync::testing::parseJsonObject;
 using lipsync::testing::runLipsync;
@@ -58,6 +61,9 @@ private slots:
             QVERIFY(!QDir::isAbsolutePath(s.value("mediaFile").toString()));
         }
         QVERIFY(QFileInfo(out + "/project.json").isFile());
+        // A new project's speaker is nobody the shipped model knows: the generic aligner.
+        QCOMPARE(json.value("aligner").toString(), QString("generic"));
+        QCOMPARE(Project::load(out.toStdString()).aligner, std::string(Project::kGenericAligner));
 
         const Run check = runLipsync({"project", "check", out, "--json"});
         QVERIFY2(check.exitCode == 0, check.err.constData());
@@ -72,6 +78,41 @@ private slots:
         QVERIFY2(forced.exitCode == 0, forced.err.constData());
         QVERIFY(forced.out.contains("10 sequences, 750 frames"));
         QVERIFY(QFileInfo(out + "/project.json.bak").isFile());
+    }
+
+    // Commands given such a project align as it says: the generic model adapted to the speaker
+    // (CMU Sphinx with MLLR) for a new project, the shipped model for one that says builtin,
+    // and --aligner over both.
+    void projectSaysWhoseAligner()
+    {
+        if (!SphinxAligner::available())
+            QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");
+        QTemporaryDir dir;
+        const QString generic = dir.filePath("generic"), builtin = dir.filePath("builtin");
+        QCOMPARE(runLipsync({"project", "create", "--media", kDemo + "/media", "--out", generic}).exitCode, 0);
+        QCOMPARE(runLipsync({"project", "create", "--media", kDemo + "/media", "--out", builtin, "--aligner", "builtin"})
+                     .exitCode,
+                 0);
+        auto align = [&](const QString &project, QStringList extra) {
+            QStringList args{"align", kDemo + "/media/bbaf2n.mpg", "--transcript", kDemo + "/media/bbaf2n.align",
+                             "--out", dir.filePath("x.TextGrid"), "--project", project, "--json"};
+            const Run r = runLipsync(args + extra);
+            if (r.exitCode != 0)
+                qWarning("%s", r.err.constData());
+            return parseJsonObject(r.out);
+        };
+        const QJsonObject g = align(generic, {});
+        QVERIFY2(g.value("model").toString().startsWith("sphinx"), qPrintable(g.value("model").toString()));
+        // Adapted: as `--aligner sphinx --adapt`, and likelier than the model as it is.
+        const QJsonObject adapted = align(builtin, {"--aligner", "sphinx", "--adapt"});
+        const QJsonObject plain = align(builtin, {"--aligner", "sphinx"});
+        QCOMPARE(g.value("logLikelihood").toDouble(), adapted.value("logLikelihood").toDouble());
+        QVERIFY(g.value("logLikelihood").toDouble() > plain.value("logLikelihood").toDouble() + 10);
+        const QJsonObject b = align(builtin, {});
+        QVERIFY2(b.value("model").toString().endsWith("grid-s1.aligner"), qPrintable(b.value("model").toString()));
+        QVERIFY(b.value("adaptationLogLikelihoodPerFrame").toArray().isEmpty());
+        const QJsonObject asked = align(generic, {"--aligner", QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/aligner/grid-s1.aligner")});
+        QVERIFY(asked.value("model").toString().endsWith("grid-s1.aligner"));
     }
 
     // From nothing: a clip without a transcript goes in (to be transcribed), a damaged or foreign
@@ -109,6 +150,7 @@ private slots:
         QVERIFY2(r.exitCode == 0, r.err.constData());
         const QJsonObject json = parseJsonObject(r.out);
         QCOMPARE(json.value("name").toString(), QString("demo"));
+        QCOMPARE(json.value("aligner").toString(), QString("builtin")); // GRID's speaker
         QCOMPARE(json.value("sequences").toArray().size(), 10);
         QCOMPARE(json.value("sequences").toArray()[0].toObject().value("mediaFile").toString(),
                  QString("media/bbaf2n.mpg"));
@@ -146,6 +188,10 @@ private slots:
                            "usage: lipsync project create");
         verifyOneLineError(runLipsync({"project", "check", kDemo, "--verbose"}), 2, "unknown option --verbose");
         QTemporaryDir dir;
+        verifyOneLineError(runLipsync({"project", "create", "--media", kDemo + "/media", "--out", dir.filePath("g"),
+                                       "--aligner", "grid"}),
+                           2, "--aligner: builtin or generic, not 'grid'");
+        QVERIFY(!QFileInfo::exists(dir.filePath("g")));
         verifyOneLineError(runLipsync({"project", "create", "--media", dir.filePath("none"), "--out",
                                 dir.filePath("p")}),
                            1, "no such media folder");

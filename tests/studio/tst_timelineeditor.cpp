@@ -119,6 +119,38 @@ private slots:
         QVERIFY(context.modelStore()->alignerChoice().model.empty());
     }
 
+    // A project says whose aligner aligns it (Project::aligner): opening one whose speaker is not
+    // GRID's chooses Generic US English adapted to the speaker, one that says builtin (the demo)
+    // the shipped model; neither is remembered as the user's own choice, and one that does not
+    // say keeps the last choice.
+    void projectSaysWhoseAligner()
+    {
+        if (!SphinxAligner::available())
+            QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");
+        StudioContext context;
+        TimelinePanel panel;
+        panel.attach(&context);
+        const QString demo = DemoProject::locate();
+        Project project = DemoProject::load(demo);
+        QCOMPARE(project.aligner, std::string(Project::kBuiltinAligner));
+        const QVariant remembered = QSettings().value(QStringLiteral("timeline/aligner"));
+        project.aligner = Project::kGenericAligner;
+        context.document()->reset(project, demo, true);
+        QVERIFY(panel.sphinxAlignerAction()->isChecked() && !panel.builtInAlignerAction()->isChecked());
+        QVERIFY(panel.adaptToSpeakerAction()->isChecked());
+        QVERIFY(context.modelStore()->alignerChoice().isSphinx() && context.modelStore()->alignerChoice().adapt);
+        QCOMPARE(QSettings().value(QStringLiteral("timeline/aligner")), remembered);
+        // A project that does not say keeps it.
+        project.aligner.clear();
+        context.document()->reset(project, demo, true);
+        QVERIFY(context.modelStore()->alignerChoice().isSphinx());
+        // The demo says builtin.
+        context.document()->reset(DemoProject::load(demo), demo, true);
+        QVERIFY(panel.builtInAlignerAction()->isChecked() && !panel.adaptToSpeakerAction()->isChecked());
+        QVERIFY(!context.modelStore()->alignerChoice().isSphinx() && !context.modelStore()->alignerChoice().adapt);
+        QCOMPARE(QSettings().value(QStringLiteral("timeline/aligner")), remembered);
+    }
+
     void alignSequenceFillsTiers()
     {
         QCOMPARE(m_window->currentSequence(), 0);

@@ -81,6 +81,7 @@ Project makeProject()
     p.sequences.push_back(bare);
 
     p.models = {{"aam", "face model", "aam/face.aam"}, {"slds", "dynamics", "models/slds.json"}};
+    p.aligner = Project::kGenericAligner;
     p.pronunciations = {{"lipsync", "L IH1 P S IH2 NG K"}, {"o'neill", "OW N IY L"}};
     return p;
 }
@@ -203,6 +204,8 @@ private slots:
         QCOMPARE(text.count("transcriptFit"), 1); // written only when measured
         QCOMPARE(loaded.models, original.models);
         QCOMPARE(loaded.pronunciations, original.pronunciations);
+        QCOMPARE(loaded.aligner, std::string("generic"));
+        QVERIFY(loaded.alignsGeneric());
         QVERIFY(text.contains("{\"word\": \"lipsync\", \"phones\": \"L IH1 P S IH2 NG K\"}"));
         QVERIFY(loaded == original);
 
@@ -216,6 +219,13 @@ private slots:
         changed = loaded;
         changed.sequences[1].transcriptFit.reset();
         QVERIFY(!(changed == original));
+        changed = loaded;
+        changed.aligner = Project::kBuiltinAligner;
+        QVERIFY(!(changed == original));
+        // A model of the project's own aligner wins over what the project says.
+        changed = loaded;
+        changed.models.push_back({"aligner", "speaker", "models/speaker.aligner"});
+        QVERIFY(!changed.alignsGeneric());
         changed = loaded;
         changed.sequences[0].features(2, 1) += 1e-9;
         QVERIFY(!(changed == original));
@@ -334,6 +344,7 @@ private slots:
         row("frame_count_negative", "sequences[1].frameCount", "must be an integer >= 0, found -1");
         row("frame_count_fractional", "sequences[1].frameCount", "must be an integer >= 0, found 74.5");
         row("transcript_not_string", "sequences[0].transcript", "must be a string, found 42");
+        row("aligner_unknown", "aligner", "must be \"builtin\" or \"generic\", found \"grid\"");
         row("transcript_fit_not_number", "sequences[0].transcriptFit", "must be a number (nats per frame), found a string");
         row("unknown_tier", "sequences[0].tiers.syllables", "unknown field");
         row("interval_end_before_start", "sequences[0].tiers.words[1].end", "is before start");
@@ -723,6 +734,7 @@ private slots:
         const QString demo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo");
         const Project p = Project::load(demo.toStdString());
         QCOMPARE(p.sequences.size(), size_t(10));
+        QCOMPARE(p.aligner, std::string(Project::kBuiltinAligner)); // GRID's speaker: the shipped model
         for (const Sequence &s : p.sequences) {
             QVERIFY2(QFileInfo(q(p.mediaPath(s))).isFile(), s.mediaFile.c_str());
             QCOMPARE(s.frameCount, 75);
