@@ -141,7 +141,7 @@ void PreviewPanel::attach(StudioContext *context)
         m_play->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
     });
     connect(player, &PlaybackController::frameReached, this, [this](int frame) {
-        if (m_showingSpeech && m_context->playback()->mediaPath() == m_speechPath)
+        if (m_showingSpeech && m_context->playback()->mediaPath() == speechPath())
             setCurrent(frame);
     });
     connect(context, &StudioContext::currentFrameChanged, this, [this] {
@@ -160,7 +160,7 @@ void PreviewPanel::attach(StudioContext *context)
         updateControls();
         showCurrent();
         if (wasSpeech)
-            m_context->setShownSpeech(speechResult(), m_speechTitle);
+            m_context->setShownSpeech(nullptr, {});
     });
     // New or changed models, edited phones: generate again (the poses stay).
     auto invalidate = [this] {
@@ -188,7 +188,7 @@ void PreviewPanel::attach(StudioContext *context)
         const bool wasSpeech = std::exchange(m_showingSpeech, false);
         layoutPanels();
         if (wasSpeech)
-            m_context->setShownSpeech(speechResult(), m_speechTitle);
+            m_context->setShownSpeech(nullptr, {});
     });
     connect(context->document(), &ProjectDocument::sequenceChanged, this, [this, invalidate](int row) {
         if (row == m_context->currentSequence())
@@ -457,7 +457,7 @@ void PreviewPanel::updateControls()
         const int n = m_speech ? m_speech->frameCount() : 0;
         m_scrub->setRange(0, std::max(0, n - 1));
         m_scrub->setValue(m_speechFrame);
-        m_caption->setText(tr("%1 — frame %2 of %3").arg(m_speechTitle).arg(m_speechFrame + 1).arg(n));
+        m_caption->setText(tr("%1 — frame %2 of %3").arg(speechTitle()).arg(m_speechFrame + 1).arg(n));
         return;
     }
     const auto media = m_context ? m_context->media() : nullptr;
@@ -502,8 +502,8 @@ void PreviewPanel::togglePlay()
         player->pause();
         return;
     }
-    if (player->mediaPath() != m_speechPath)
-        player->setSequence(m_speechPath, m_speech->frames());
+    if (player->mediaPath() != speechPath())
+        player->setSequence(speechPath(), m_speech->frames());
     player->setAudioEnabled(!ErrorReporter::isBatchMode());
     player->play(m_speechFrame);
 }
@@ -520,8 +520,8 @@ void PreviewPanel::onLoopToggled(bool on)
     if (m_showingSpeech) {
         if (!m_speech)
             return;
-        if (player->mediaPath() != m_speechPath)
-            player->setSequence(m_speechPath, m_speech->frames());
+        if (player->mediaPath() != speechPath())
+            player->setSequence(speechPath(), m_speech->frames());
         player->playRange(0.0, player->duration());
         return;
     }
@@ -637,16 +637,30 @@ void PreviewPanel::showSpeech(std::shared_ptr<GeneratedFaces> faces, std::shared
     if (m_context)
         m_context->playback()->pause();
     m_speech = std::move(faces);
-    m_speechResult = std::move(result);
-    m_speechPath = QString::fromStdString(m_speechResult->mediaPath);
-    m_speechTitle = title;
     m_speechFrame = 0;
     m_showingSpeech = true;
+    // The context holds the result (what exports and the timeline show); the panel its faces.
+    m_context->setShownSpeech(std::move(result), title);
     layoutPanels();
     updateControls();
     showCurrent();
-    m_context->setShownSpeech(speechResult(), m_speechTitle);
     emit facesReady();
+}
+
+std::shared_ptr<const SpeechToFaceResult> PreviewPanel::speechResult() const
+{
+    return m_showingSpeech && m_context ? m_context->shownSpeech() : nullptr;
+}
+
+QString PreviewPanel::speechTitle() const
+{
+    return m_showingSpeech && m_context ? m_context->shownSpeechTitle() : QString();
+}
+
+QString PreviewPanel::speechPath() const
+{
+    const auto result = speechResult();
+    return result ? QString::fromStdString(result->mediaPath) : QString();
 }
 
 void PreviewPanel::seekSpeech(double seconds)
@@ -667,7 +681,8 @@ void PreviewPanel::showSequence()
     updateControls();
     showCurrent();
     prepare();
-    m_context->setShownSpeech(speechResult(), m_speechTitle);
+    m_speech.reset();
+    m_context->setShownSpeech(nullptr, {});
 }
 
 } // namespace lipsync::studio

@@ -85,8 +85,9 @@ public:
     void showSpeech(std::shared_ptr<GeneratedFaces> faces, std::shared_ptr<const SpeechToFaceResult> result,
                     const QString &title);
     // The new speech shown, or null while the current sequence is.
-    std::shared_ptr<const SpeechToFaceResult> speechResult() const { return m_showingSpeech ? m_speechResult : nullptr; }
-    QString speechTitle() const { return m_speechTitle; }
+    // The shown new speech (StudioContext::shownSpeech) while the panel shows it.
+    std::shared_ptr<const SpeechToFaceResult> speechResult() const;
+    QString speechTitle() const;
     // Moves the new speech shown to `seconds` (the timeline's clicks while it shows that speech).
     void seekSpeech(double seconds);
     // Back to the current sequence.
@@ -111,6 +112,7 @@ protected:
     void showEvent(QShowEvent *event) override;
 
 private:
+    QString speechPath() const; // the shown speech's media
     struct Panel
     {
         QWidget *box;
@@ -156,9 +158,6 @@ private:
     std::shared_ptr<GeneratedFaces> m_faces;  // of the current sequence
     QString m_facesSequence;
     std::shared_ptr<GeneratedFaces> m_speech; // of new speech
-    std::shared_ptr<const SpeechToFaceResult> m_speechResult;
-    QString m_speechPath;
-    QString m_speechTitle;
     bool m_showingSpeech = false;
     int m_speechFrame = 0;
     QPointer<Task> m_prepareTask;
