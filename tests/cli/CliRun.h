@@ -6,6 +6,7 @@
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QStringList>
+#include <QTest>
 
 namespace lipsync::testing {
 
@@ -41,6 +42,17 @@ inline QJsonObject parseJsonObject(const QByteArray &out)
     QJsonParseError error;
     const QJsonDocument document = QJsonDocument::fromJson(out, &error);
     return error.error == QJsonParseError::NoError ? document.object() : QJsonObject();
+}
+
+// A failed command as users see it: exit code `exitCode`, nothing on stdout, and one line on
+// stderr, "lipsync: ...", that says `needle`.
+inline void verifyOneLineError(const Run &r, int exitCode, const QString &needle)
+{
+    QCOMPARE(r.exitCode, exitCode);
+    QVERIFY2(r.out.isEmpty(), r.out.constData());
+    QCOMPARE(r.err.count('\n'), 1);
+    QVERIFY2(r.err.startsWith("lipsync: "), r.err.constData());
+    QVERIFY2(QString::fromUtf8(r.err).contains(needle), r.err.constData());
 }
 
 } // namespace lipsync::testing

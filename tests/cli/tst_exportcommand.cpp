@@ -16,16 +16,9 @@
 using lipsync::testing::Run;
 using lipsync::testing::parseJsonObject;
 using lipsync::testing::runLipsync;
+using lipsync::testing::verifyOneLineError;
 
 namespace {
-
-void verifyOneLineError(const Run &r, int exitCode, const QString &needle)
-{
-    QCOMPARE(r.exitCode, exitCode);
-    QVERIFY2(r.out.isEmpty(), r.out.constData());
-    QCOMPARE(r.err.count('\n'), 1);
-    QVERIFY2(QString::fromUtf8(r.err).contains(needle), r.err.constData());
-}
 
 const QString kClip = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg");
 const QString kOther = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media/bgin3a.mpg");

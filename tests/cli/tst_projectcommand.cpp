@@ -19,18 +19,9 @@ using lipsync::SphinxAligner;
 using lipsync::testing::Run;
 using lipsync::testing::parseJsonObject;
 using lipsync::testing::runLipsync;
+using lipsync::testing::verifyOneLineError;
 
 namespace {
-
-// Errors are one line on stderr and nothing on stdout.
-void verifyOneLineError(const Run &r, int exitCode, const QString &needle)
-{
-    QCOMPARE(r.exitCode, exitCode);
-    QVERIFY2(r.out.isEmpty(), r.out.constData());
-    QCOMPARE(r.err.count('\n'), 1);
-    QVERIFY2(r.err.startsWith("lipsync: "), r.err.constData());
-    QVERIFY2(QString::fromUtf8(r.err).contains(needle), r.err.constData());
-}
 
 const QString kDemo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo");
 

@@ -26,6 +26,7 @@ using lipsync::MediaInfo;
 using lipsync::testing::Run;
 using lipsync::testing::parseJsonObject;
 using lipsync::testing::runLipsync;
+using lipsync::testing::verifyOneLineError;
 
 namespace {
 
@@ -33,13 +34,6 @@ const QString kDemo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo");
 const QString kClip = kDemo + "/media/bbaf2n.mpg";
 const QString kTranscript = kDemo + "/media/bbaf2n.align";
 const QString kAam = kDemo + "/aam/demo.aam";
-
-void verifyOneLineError(const Run &r, const QString &needle)
-{
-    QCOMPARE(r.exitCode, 1);
-    QCOMPARE(r.err.count('\n'), 1);
-    QVERIFY2(QString::fromUtf8(r.err).contains(needle), r.err.constData());
-}
 
 } // namespace
 
@@ -78,7 +72,7 @@ private slots:
         QStringList args = renderArgs(kClip, kTranscript, out);
         args[args.indexOf(m_model)] = model;
         const Run r = runLipsync(args);
-        verifyOneLineError(r, model);
+        verifyOneLineError(r, 1, model);
         QVERIFY(r.err.contains("trained for AAM 'aam-other'"));
         QVERIFY(!QFile::exists(out));
     }
@@ -157,7 +151,7 @@ private slots:
         // A background without video is refused, naming it.
         const Run bad = runLipsync(renderArgs(timing + "joined_presented.flac", timing + "joined.txt", m_dir.filePath("x.mp4"))
                                    << "--background" << timing + "joined_presented.flac");
-        verifyOneLineError(bad, timing + "joined_presented.flac");
+        verifyOneLineError(bad, 1, timing + "joined_presented.flac");
         QVERIFY(!QFile::exists(m_dir.filePath("x.mp4")));
     }
 
@@ -241,7 +235,7 @@ private slots:
         const QString silent = QStringLiteral(LIPSYNC_TEST_DATA "/media/no_audio_29.97fps.mp4");
         const QString out = m_dir.filePath("silent.mp4");
         const Run r = runLipsync(renderArgs(silent, kTranscript, out));
-        verifyOneLineError(r, silent);
+        verifyOneLineError(r, 1, silent);
         QVERIFY(r.err.contains("no audio stream"));
         QVERIFY(!QFile::exists(out));
     }
@@ -256,7 +250,7 @@ private slots:
         f.close();
         const QString out = m_dir.filePath("too-long.mp4");
         const Run r = runLipsync(renderArgs(kClip, text, out));
-        verifyOneLineError(r, text);
+        verifyOneLineError(r, 1, text);
         QVERIFY(!QFile::exists(out));
     }
 
@@ -264,7 +258,7 @@ private slots:
     {
         const QString out = m_dir.filePath("no/such/folder/out.mp4");
         const Run r = runLipsync(renderArgs(kClip, kTranscript, out));
-        verifyOneLineError(r, out);
+        verifyOneLineError(r, 1, out);
         QVERIFY(r.err.contains("does not exist"));
     }
 
@@ -274,7 +268,7 @@ private slots:
     {
         const QString out = m_dir.filePath("sphinx.mp4");
         const Run missing = runLipsync(renderArgs(kClip, kTranscript, out) << "--aligner" << "sphinx:/nonexistent/en-us");
-        verifyOneLineError(missing, "/nonexistent/en-us");
+        verifyOneLineError(missing, 1, "/nonexistent/en-us");
         QVERIFY(!QFile::exists(out));
         if (!lipsync::SphinxAligner::available())
             QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");

@@ -19,19 +19,11 @@
 using lipsync::testing::Run;
 using lipsync::testing::parseJsonObject;
 using lipsync::testing::runLipsync;
+using lipsync::testing::verifyOneLineError;
 
 using namespace lipsync;
 
 namespace {
-
-void verifyOneLineError(const Run &r, int exitCode, const QString &needle)
-{
-    QCOMPARE(r.exitCode, exitCode);
-    QVERIFY2(r.out.isEmpty(), r.out.constData());
-    QCOMPARE(r.err.count('\n'), 1);
-    QVERIFY2(r.err.startsWith("lipsync: "), r.err.constData());
-    QVERIFY2(QString::fromUtf8(r.err).contains(needle), r.err.constData());
-}
 
 // 33 participants answer so that the counts are exactly the paper's Table 1.
 ForcedChoiceStudy paperStudy()
