@@ -7,6 +7,7 @@
 // step (ProjectDocument::requestAddSequences). A cancel or a failure adds nothing and leaves no
 // clip behind; opening another project cancels the import.
 #include "project/UtteranceSplit.h"
+#include "tasks/Task.h"
 
 #include <QObject>
 #include <QPointer>
@@ -16,10 +17,6 @@
 
 class QAction;
 class QWidget;
-
-namespace lipsync {
-class Task;
-}
 
 namespace lipsync::studio {
 

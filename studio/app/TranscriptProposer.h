@@ -6,6 +6,8 @@
 // path alone; the GUI thread then sets the words as one undo step
 // (ProjectDocument::requestProposedTranscript). A cancel or a failure changes nothing; an existing
 // transcript is replaced only after asking, and not at all if it changed while the recogniser ran.
+#include "tasks/Task.h"
+
 #include <QObject>
 #include <QPointer>
 #include <QString>
@@ -13,10 +15,6 @@
 
 class QAction;
 class QWidget;
-
-namespace lipsync {
-class Task;
-}
 
 namespace lipsync::studio {
 

@@ -12,6 +12,7 @@
 #include <QWidget>
 
 #include "eval/Evaluation.h"
+#include "tasks/Task.h"
 
 #include <memory>
 #include <optional>
@@ -31,7 +32,6 @@ class DynamicModel;
 struct ModelOptions;
 class Project;
 struct PhoneCoverage;
-class Task;
 struct LabelledSequence;
 }
 

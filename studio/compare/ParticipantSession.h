@@ -5,16 +5,13 @@
 // project's study file at once. Participants are kept apart: each has an own session (own
 // random order, own answers), and a session left early resumes at its first open trial.
 #include "compare/StudyClipRenderer.h"
+#include "tasks/Task.h"
 
 #include <QObject>
 #include <QPointer>
 
 #include <memory>
 #include <optional>
-
-namespace lipsync {
-class Task;
-}
 
 namespace lipsync::studio {
 

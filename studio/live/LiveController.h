@@ -16,6 +16,7 @@
 // project drops the session and the recording: the features are the old AAM's parameters.
 #include "annotation/Tier.h"
 #include "live/LiveWorker.h"
+#include "tasks/Task.h"
 
 #include <QAudioDevice>
 #include <QImage>
@@ -36,7 +37,6 @@ class AamModel;
 class AcousticModel;
 class FaceRenderer;
 class PhoneBigram;
-class Task;
 }
 
 namespace lipsync::studio {

@@ -14,6 +14,8 @@
 // (core/render FaceRenderer, a background task when the panel is first shown for the sequence);
 // faces are then drawn on demand per frame (GeneratedFaces). New speech goes through the shared
 // pipeline of core/render/SpeechToFace (align, label, generate) as one background task.
+#include "tasks/Task.h"
+
 #include <QHash>
 #include <QPointer>
 #include <QWidget>
@@ -33,7 +35,6 @@ class QToolButton;
 namespace lipsync {
 class AamModel;
 class FaceRenderer;
-class Task;
 struct SpeechToFaceResult;
 }
 

@@ -1,12 +1,13 @@
 #pragma once
 // The runner's tasks as a list model (newest first) for the status-bar task list. Rows follow
 // the runner: a task appears when started and stays, with its final state, until cleared.
+#include "tasks/Task.h"
+
 #include <QAbstractListModel>
 #include <QList>
 #include <QPointer>
 
 namespace lipsync {
-class Task;
 class TaskRunner;
 }
 

@@ -10,6 +10,7 @@
 // words espeak-ng had to guess. It follows the
 // current sequence of the main window and redraws the tiers whenever the document changes them.
 #include "document/TierEdits.h"
+#include "tasks/Task.h"
 
 #include <QPointer>
 #include <QWidget>
@@ -26,7 +27,6 @@ class QScrollBar;
 class QToolButton;
 
 namespace lipsync {
-class Task;
 struct SpeechToFaceResult;
 }
 

@@ -1,10 +1,11 @@
 // Architecture rules as tests (after QGIS's test_banned_keywords.sh): core/ never includes QtGui
 // or QtWidgets, so every algorithm stays usable headless by the CLI; each core module includes
 // only the modules its CMakeLists.txt names as dependencies, which form no cycle, so every library
-// links on its own and the layering is what the build files say; and the studio's folders include
-// each other without a cycle: app/ (the window) on top, the panels' folders below it, context/
-// (StudioContext and what panels share) and document/ (the project document and its undo
-// commands) at the bottom, so a panel builds with a context and no window.
+// links on its own and the layering is what the build files say; and the studio's folders, each a
+// library of its own (lipsync_studio_layer), include only the layers they link, without a cycle:
+// app/ (the window) on top, the panels' folders below it, context/ (StudioContext and what panels
+// share) and document/ (the project document and its undo commands) at the bottom, so a panel
+// builds with a context and no window.
 #include <QDir>
 #include <QDirIterator>
 #include <QFile>
@@ -34,6 +35,26 @@ QMap<QString, QSet<QString>> declaredDependencies(const QString &core)
         QSet<QString> &d = deps[m.captured(1)];
         for (auto it = lib.globalMatch(m.captured(2)); it.hasNext();)
             d.insert(it.next().captured(1));
+    }
+    return deps;
+}
+
+// Studio folder -> the studio layers its lipsync_studio_layer(NAME DEPS ...) names
+// (studio/CMakeLists.txt).
+QMap<QString, QSet<QString>> declaredStudioLayers(const QString &studio)
+{
+    QMap<QString, QSet<QString>> deps;
+    const QRegularExpression call(QStringLiteral("lipsync_studio_layer\\(\\s*(\\w+)([^)]*)\\)"));
+    const QRegularExpression word(QStringLiteral("\\b([a-z]+)\\b"));
+    for (auto m = call.globalMatch(readText(studio + QStringLiteral("/CMakeLists.txt"))); m.hasNext();) {
+        const auto c = m.next();
+        if (c.captured(1) == QLatin1String("name"))
+            continue; // the function's own definition
+        QSet<QString> &d = deps[c.captured(1)];
+        QString listed = c.captured(2);
+        listed = listed.left(listed.indexOf(QStringLiteral("LIBS")));
+        for (auto w = word.globalMatch(listed); w.hasNext();)
+            d.insert(w.next().captured(1));
     }
     return deps;
 }
@@ -162,6 +183,71 @@ private slots:
                      qPrintable(folder.key() + QStringLiteral(" includes app/")));
         QCOMPARE(deps.value(QStringLiteral("document")), QSet<QString>());
         QCOMPARE(deps.value(QStringLiteral("context")), QSet<QString>{QStringLiteral("document")});
+    }
+
+    // Each studio folder is a library of its own (studio/CMakeLists.txt) that links the layers it
+    // names; the folders it includes are among them, so the build files say the layering.
+    void studioIncludesFollowTheDeclaredLayers()
+    {
+        const QString studio = QStringLiteral(LIPSYNC_SOURCE_DIR "/studio");
+        const QMap<QString, QSet<QString>> declared = declaredStudioLayers(studio);
+        const QMap<QString, QSet<QString>> included = studioIncludes(studio);
+        QVERIFY2(declared.size() >= 10 && declared.value(QStringLiteral("app")).contains(QStringLiteral("context")),
+                 "lipsync_studio_layer calls not found");
+        QStringList offenders;
+        for (auto folder = included.cbegin(); folder != included.cend(); ++folder) {
+            if (!declared.contains(folder.key())) {
+                offenders << folder.key() + QStringLiteral("/ is no lipsync_studio_layer");
+                continue;
+            }
+            for (const QString &used : folder.value())
+                if (!declared.value(folder.key()).contains(used))
+                    offenders << QStringLiteral("%1/ includes %2/ but its layer does not link it").arg(folder.key(), used);
+        }
+        QVERIFY2(offenders.isEmpty(), qPrintable(offenders.join(QLatin1Char('\n'))));
+    }
+
+    // One place reads the environment (util/Environment) and one names the project's AAM
+    // (Project::aam): elsewhere in core/, cli/ and studio/ both are banned (after QGIS's
+    // test_banned_keywords), so a new environment variable or a second AAM lookup cannot drift.
+    void bannedPatternsStayInTheirOnePlace()
+    {
+        struct Rule
+        {
+            QRegularExpression pattern;
+            QString home;
+        };
+        const Rule rules[] = {
+            {QRegularExpression(QStringLiteral(R"(\bgetenv\s*\(|\bqEnvironmentVariable\w*\s*\(|\bqgetenv\s*\()")),
+             QStringLiteral("core/util/Environment.cpp")},
+            {QRegularExpression(QStringLiteral(R"(\bmodel\s*\(\s*"aam"\s*\))")), QStringLiteral("core/project/Project.h")},
+        };
+        // The patterns match what they ban.
+        QVERIFY(rules[0].pattern.match(QStringLiteral("const char *e = std::getenv(\"X\");")).hasMatch());
+        QVERIFY(rules[0].pattern.match(QStringLiteral("qEnvironmentVariable(\"X\")")).hasMatch());
+        QVERIFY(rules[1].pattern.match(QStringLiteral("project.model(\"aam\")")).hasMatch());
+        const QString root = QStringLiteral(LIPSYNC_SOURCE_DIR);
+        QStringList offenders;
+        QSet<QString> homesSeen;
+        for (const QString &top : {QStringLiteral("core"), QStringLiteral("cli"), QStringLiteral("studio")}) {
+            QDirIterator it(root + QLatin1Char('/') + top, {QStringLiteral("*.h"), QStringLiteral("*.cpp")}, QDir::Files,
+                            QDirIterator::Subdirectories);
+            while (it.hasNext()) {
+                const QString path = QDir(root).relativeFilePath(it.next());
+                const QString text = readText(root + QLatin1Char('/') + path);
+                for (const Rule &rule : rules) {
+                    if (!rule.pattern.match(text).hasMatch())
+                        continue;
+                    if (path == rule.home)
+                        homesSeen.insert(path);
+                    else
+                        offenders << path + QStringLiteral(": ") + rule.pattern.pattern() + QStringLiteral(" belongs in ")
+                                         + rule.home;
+                }
+            }
+        }
+        QVERIFY2(offenders.isEmpty(), qPrintable(offenders.join(QLatin1Char('\n'))));
+        QCOMPARE(homesSeen.size(), 2); // each rule's one place uses it
     }
 
     void bannedPatternDetectsGuiInclude()
