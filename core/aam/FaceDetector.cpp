@@ -3,6 +3,7 @@
 #include "aam/AamModel.h"
 #include "aam/DlibFaceModels.h"
 #include "aam/LandmarkScheme.h"
+#include "util/Environment.h"
 #include "util/ResourceLocator.h"
 
 #include <QCoreApplication>
@@ -28,8 +29,9 @@ struct FaceDetector::Impl
 
 std::string FaceDetector::findYunetModel()
 {
-    if (const char *env = std::getenv("LIPSYNC_YUNET_MODEL"); env && QFileInfo::exists(QString::fromLocal8Bit(env)))
-        return env;
+    if (std::string chosen = environment::value("LIPSYNC_YUNET_MODEL");
+        !chosen.empty() && QFileInfo::exists(QString::fromStdString(chosen)))
+        return chosen;
     return ResourceLocator::find("models/face_detection_yunet_2022mar.onnx");
 }
 

@@ -1,10 +1,10 @@
 #include "align/PronunciationDictionary.h"
 
+#include "util/Environment.h"
 #include "util/PhoneSet.h"
 #include "util/Error.h"
 
 #include <cctype>
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -96,8 +96,8 @@ PronunciationDictionary PronunciationDictionary::read(const std::string &path)
 const PronunciationDictionary &PronunciationDictionary::cmu()
 {
     static const PronunciationDictionary dictionary = [] {
-        const char *env = std::getenv("LIPSYNC_CMUDICT");
-        return read(env && *env ? env : kCmuDictPath);
+        const std::string chosen = environment::value("LIPSYNC_CMUDICT");
+        return read(chosen.empty() ? kCmuDictPath : chosen);
     }();
     return dictionary;
 }

@@ -1,15 +1,14 @@
 #include "align/ShippedAlignerModel.h"
 
+#include "util/Environment.h"
 #include "util/ResourceLocator.h"
-
-#include <QtGlobal>
 
 namespace lipsync {
 
 std::string shippedAlignerModelPath()
 {
-    if (const QString env = qEnvironmentVariable("LIPSYNC_ALIGNER_MODEL"); !env.isEmpty())
-        return env.toStdString();
+    if (std::string chosen = environment::value("LIPSYNC_ALIGNER_MODEL"); !chosen.empty())
+        return chosen;
     return ResourceLocator::find("aligner/grid-s1.aligner");
 }
 

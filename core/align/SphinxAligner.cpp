@@ -9,6 +9,7 @@
 #include "io/AudioDecoder.h"
 #include "io/MediaInfo.h"
 #include "tasks/Feedback.h"
+#include "util/Environment.h"
 #include "util/Error.h"
 #include "util/PhoneSet.h"
 
@@ -163,8 +164,8 @@ std::string SphinxAligner::resolveModelDir(const std::string &modelDir)
 {
     if (!modelDir.empty())
         return modelDir;
-    if (const char *env = std::getenv("LIPSYNC_SPHINX_MODEL"); env && *env)
-        return env;
+    if (std::string chosen = environment::value("LIPSYNC_SPHINX_MODEL"); !chosen.empty())
+        return chosen;
     return kDefaultModelDir;
 }
 

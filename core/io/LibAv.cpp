@@ -1,5 +1,6 @@
 #include "io/LibAv.h"
 
+#include "util/Environment.h"
 #include "util/Error.h"
 
 extern "C" {
@@ -8,7 +9,6 @@ extern "C" {
 
 #include <cmath>
 #include <cstdarg>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <map>
@@ -60,7 +60,7 @@ void quietLogs()
 {
     static std::once_flag installed;
     std::call_once(installed, [] { av_log_set_callback(logCallback); });
-    static const bool verbose = std::getenv("LIPSYNC_FFMPEG_LOG") != nullptr;
+    static const bool verbose = environment::isSet("LIPSYNC_FFMPEG_LOG");
     if (!verbose && av_log_get_level() != AV_LOG_QUIET)
         av_log_set_level(AV_LOG_QUIET);
 }

@@ -1,5 +1,7 @@
 #include "util/ResourceLocator.h"
 
+#include "util/Environment.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
@@ -17,8 +19,8 @@ std::string ResourceLocator::executableFolder()
 std::vector<std::string> ResourceLocator::folders()
 {
     std::vector<std::string> out;
-    if (const QString env = qEnvironmentVariable("LIPSYNC_RESOURCE_DIR"); !env.isEmpty())
-        out.push_back(QDir::cleanPath(QFileInfo(env).absoluteFilePath()).toStdString());
+    if (const std::string chosen = environment::value("LIPSYNC_RESOURCE_DIR"); !chosen.empty())
+        out.push_back(QDir::cleanPath(QFileInfo(QString::fromStdString(chosen)).absoluteFilePath()).toStdString());
     out.push_back(
         QDir::cleanPath(QString::fromStdString(executableFolder()) + QStringLiteral("/../share/lipsync")).toStdString());
     return out;
