@@ -29,7 +29,7 @@ constexpr double kAligningShare = 0.3;
 
 std::string numbered(const std::string &stem, size_t index)
 {
-    char suffix[16];
+    char suffix[24];
     std::snprintf(suffix, sizeof suffix, "_%04zu", index + 1);
     return stem + suffix;
 }
