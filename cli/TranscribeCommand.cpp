@@ -19,7 +19,9 @@
 #include <QFileInfo>
 #include <QJsonArray>
 
+#include <algorithm>
 #include <cstdio>
+#include <map>
 #include <memory>
 
 using namespace lipsync;
@@ -87,12 +89,24 @@ int runTranscribe(const CommandLine &a)
         if (!manifest.isEmpty()) {
             // A project's sequences get their proposals, marked as such until someone checks them.
             Project project = Project::load(QFileInfo(manifest).absolutePath().toStdString());
+            // Each word's posterior, from the job's result, kept with the proposal for review.
+            std::map<QString, std::vector<double>> confidence;
+            for (const QJsonValue &r : summary.value(QStringLiteral("results")).toArray()) {
+                std::vector<double> c;
+                for (const QJsonValue &v : r[QStringLiteral("confidence")].toArray())
+                    c.push_back(v.isDouble() ? v.toDouble() : -1.0); // none: the proposal keeps no posteriors
+                if (std::all_of(c.begin(), c.end(), [](double x) { return x >= 0 && x <= 1; }))
+                    confidence[r[QStringLiteral("out")].toString()] = c;
+            }
             int proposed = 0;
             for (const BatchJob &job : jobs)
                 if (Sequence *s = project.sequence(job.name.toStdString());
                     s && s->transcript.empty() && QFileInfo::exists(job.output)) {
                     s->transcript = readTranscript(job.output.toStdString()).text();
                     s->transcriptProposed = true;
+                    if (const auto it = confidence.find(job.output); it != confidence.end()
+                        && it->second.size() == readTranscript(job.output.toStdString()).words.size())
+                        s->transcriptConfidence = it->second;
                     ++proposed;
                 }
             if (proposed > 0)

@@ -2427,7 +2427,7 @@
         <translation>das Projekt hat bereits eine Sequenz %1</translation>
     </message>
     <message>
-        <location filename="../studio/document/ProjectDocument.cpp" line="291"/>
+        <location filename="../studio/document/ProjectDocument.cpp" line="296"/>
         <source>%1 interval %2: %3</source>
         <translation>%1, Intervall %2: %3</translation>
     </message>
@@ -2799,47 +2799,52 @@
 <context>
     <name>lipsync::studio::SequenceListModel</name>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="54"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="55"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="75"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="76"/>
         <source>The transcript does not fit the sound (%1 nats per frame against the aligner&apos;s best phones, below %2): these are likely not the clip&apos;s words. Check them, then align the sequence again. An aligner that does not know the speaker scores every transcript low: then align with the project&apos;s own aligner, or Generic US English with Adapt to Speaker.</source>
         <translation>Das Transkript passt nicht zum Ton (%1 nats pro Frame gegenüber den besten Phonen des Aligners, unter %2): Vermutlich sind es nicht die Wörter dieses Clips. Prüfen Sie sie und alignieren Sie die Sequenz neu. Ein Aligner, der den Sprecher nicht kennt, bewertet jedes Transkript niedrig: Alignieren Sie dann mit dem eigenen Aligner des Projekts oder mit Allgemeines US-Englisch und An Sprecher anpassen.</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="82"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="83"/>
         <source>Proposed by speech recognition and not checked yet: double-click to edit it, or accept it as it is (Accept Proposed Transcript, in the Edit menu or on right-click)</source>
         <translation>Von der Spracherkennung vorgeschlagen und noch nicht geprüft: doppelklicken, um es zu bearbeiten, oder so übernehmen, wie es ist (Vorgeschlagenes Transkript übernehmen, im Menü Bearbeiten oder per Rechtsklick)</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="85"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="92"/>
+        <source>Doubtful words, the most doubtful first: %1</source>
+        <translation>Unsichere Wörter, die unsichersten zuerst: %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/SequenceListModel.cpp" line="96"/>
         <source>Double-click to edit the transcript</source>
         <translation>Doppelklicken, um das Transkript zu bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="86"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="97"/>
         <source>%1 — %2 frames at %3 fps</source>
         <translation>%1 – %2 Bilder mit %3 fps</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="114"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="125"/>
         <source>Sequence</source>
         <translation>Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="115"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="126"/>
         <source>Frames</source>
         <translation>Bilder</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="116"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="127"/>
         <source>Duration</source>
         <translation>Dauer</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="117"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="128"/>
         <source>Transcript</source>
         <translation>Transkript</translation>
     </message>

@@ -63,14 +63,14 @@ SpeechRecognizer::Result SpeechRecognizer::recognize(const std::string &mediaPat
     return result;
 }
 
-std::vector<int> doubtfulWords(const SpeechRecognizer::Result &result)
+std::vector<int> doubtfulWords(const std::vector<double> &confidence)
 {
     std::vector<int> doubtful;
-    for (size_t i = 0; i < result.confidence.size(); ++i)
-        if (result.confidence[i] < kDoubtfulWordConfidence) // never NaN
+    for (size_t i = 0; i < confidence.size(); ++i)
+        if (confidence[i] < kDoubtfulWordConfidence) // never NaN
             doubtful.push_back(int(i));
     std::stable_sort(doubtful.begin(), doubtful.end(),
-                     [&](int a, int b) { return result.confidence[size_t(a)] < result.confidence[size_t(b)]; });
+                     [&](int a, int b) { return confidence[size_t(a)] < confidence[size_t(b)]; });
     return doubtful;
 }
 

@@ -45,8 +45,12 @@ private:
 // "Confidence of proposed words").
 constexpr double kDoubtfulWordConfidence = 0.5;
 
-// The indices of the doubtful words of `result` (confidence below kDoubtfulWordConfidence), the
-// most doubtful first.
-std::vector<int> doubtfulWords(const SpeechRecognizer::Result &result);
+// The indices of the doubtful words among `confidence` (one posterior per word, below
+// kDoubtfulWordConfidence), the most doubtful first.
+std::vector<int> doubtfulWords(const std::vector<double> &confidence);
+inline std::vector<int> doubtfulWords(const SpeechRecognizer::Result &result)
+{
+    return doubtfulWords(result.confidence);
+}
 
 } // namespace lipsync

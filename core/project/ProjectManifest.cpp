@@ -221,11 +221,30 @@ private:
         return times;
     }
 
+    // One posterior in [0, 1] per word of `transcript`.
+    std::vector<double> readConfidence(const QJsonValue &value, const std::string &field,
+                                       const std::string &transcript) const
+    {
+        const QJsonArray values = array(value, field);
+        const qsizetype words = QString::fromStdString(transcript).simplified().split(QLatin1Char(' '), Qt::SkipEmptyParts).size();
+        if (values.size() != words)
+            fail(field, std::to_string(values.size()) + " values for " + std::to_string(words)
+                            + " words of the transcript");
+        std::vector<double> out;
+        for (qsizetype i = 0; i < values.size(); ++i) {
+            const double v = values[i].toDouble(-1.0);
+            if (!values[i].isDouble() || !(v >= 0.0 && v <= 1.0))
+                fail(element(field, i), "must be a probability (0 to 1), found " + describe(values[i]));
+            out.push_back(v);
+        }
+        return out;
+    }
+
     Sequence readSequence(const QJsonObject &o, const std::string &field) const
     {
         checkKeys(o, field, {"id", "mediaFile", "frameRate", "frameCount", "firstFrameTime", "frameTimes",
                              "transcript", "transcriptProposed", "transcriptFit",
-                             "features", "tiers", "landmarks", "fitErrors"});
+                             "transcriptConfidence", "features", "tiers", "landmarks", "fitErrors"});
         Sequence s;
         s.id = string(require(o, "id", field), member(field, "id"), false);
         // The id names files (features/<id>.csv), so it must stay inside the project folder.
@@ -258,6 +277,9 @@ private:
                 fail(member(field, "transcriptFit"), "must be a number (nats per frame), found " + describe(fit));
             s.transcriptFit = fit.toDouble();
         }
+        if (o.contains("transcriptConfidence"))
+            s.transcriptConfidence = readConfidence(o.value("transcriptConfidence"),
+                                                    member(field, "transcriptConfidence"), s.transcript);
 
         if (o.contains("tiers")) {
             const std::string tiersField = member(field, "tiers");
@@ -466,7 +488,7 @@ const QStringList &keyOrder()
                                    "sequences",  "models",    "pronunciations", "word",
                                    "id",         "mediaFile", "frameRate", "frameCount",
                                    "firstFrameTime", "frameTimes",
-                                   "transcript", "transcriptProposed", "transcriptFit", "features", "tiers", "words",
+                                   "transcript", "transcriptProposed", "transcriptFit", "transcriptConfidence", "features", "tiers", "words",
                                    "phones",     "landmarks", "fitErrors", "frame",
                                    "points",     "start",     "end",       "label",
                                    "userEdited", "file",      "study"};
@@ -598,6 +620,12 @@ QJsonObject ProjectManifest::toJson(const Project &project, const std::string &t
             o.insert("transcriptProposed", true);
         if (s.transcriptFit && std::isfinite(*s.transcriptFit))
             o.insert("transcriptFit", *s.transcriptFit);
+        if (!s.transcriptConfidence.empty()) {
+            QJsonArray confidence;
+            for (double c : s.transcriptConfidence)
+                confidence.append(c);
+            o.insert("transcriptConfidence", confidence);
+        }
         if (s.firstFrameTime != 0.0)
             o.insert("firstFrameTime", s.firstFrameTime);
         if (!s.frameTimes.empty()) {

@@ -13,6 +13,7 @@ bool Sequence::operator==(const Sequence &other) const
            && firstFrameTime == other.firstFrameTime && frameTimes == other.frameTimes
            && transcript == other.transcript
            && transcriptProposed == other.transcriptProposed && transcriptFit == other.transcriptFit
+           && transcriptConfidence == other.transcriptConfidence
            && landmarks == other.landmarks
            && words == other.words && phones == other.phones && fitErrors == other.fitErrors;
 }

@@ -29,6 +29,9 @@ struct Sequence
     // Propose Transcript) that nobody has checked: shown as unverified until it is edited or
     // accepted.
     bool transcriptProposed = false;
+    // With a proposed transcript: the recogniser's posterior of each of its words (SpeechRecognizer,
+    // one per word of `transcript`), for reviewing the doubtful ones first; empty otherwise.
+    std::vector<double> transcriptConfidence;
     // How well the transcript fits the sound, by the alignment that made the tiers (our
     // aligner's AlignerOutput::transcriptFit, nats per frame; below kTranscriptFitThreshold the
     // words are likely not this clip's); none when that aligner did not measure it.

@@ -1,6 +1,7 @@
 #include "app/SequenceListModel.h"
 
 #include "align/Aligner.h"
+#include "align/SpeechRecognizer.h"
 #include "document/ProjectDocument.h"
 
 #include <QApplication>
@@ -78,9 +79,19 @@ QVariant SequenceListModel::data(const QModelIndex &index, int role) const
                       "project's own aligner, or Generic US English with Adapt to Speaker.")
                 .arg(QLocale().toString(*s.transcriptFit, 'f', 2))
                 .arg(QLocale().toString(kTranscriptFitThreshold, 'f', 1));
-        if (proposed)
-            return tr("Proposed by speech recognition and not checked yet: double-click to edit it, or accept it as "
-                      "it is (Accept Proposed Transcript, in the Edit menu or on right-click)");
+        if (proposed) {
+            QString tip = tr("Proposed by speech recognition and not checked yet: double-click to edit it, or accept "
+                             "it as it is (Accept Proposed Transcript, in the Edit menu or on right-click)");
+            // The recogniser's least sure words, to check first.
+            const QStringList words = QString::fromStdString(s.transcript).split(QLatin1Char(' '), Qt::SkipEmptyParts);
+            QStringList doubtful;
+            if (s.transcriptConfidence.size() == size_t(words.size()))
+                for (int i : doubtfulWords(s.transcriptConfidence))
+                    doubtful << QStringLiteral("%1 (%2)").arg(words[i], QLocale().toString(s.transcriptConfidence[size_t(i)], 'f', 2));
+            if (!doubtful.isEmpty())
+                tip += QLatin1Char('\n') + tr("Doubtful words, the most doubtful first: %1").arg(doubtful.join(QStringLiteral(", ")));
+            return tip;
+        }
         if (index.column() == TranscriptColumn)
             return tr("Double-click to edit the transcript");
         return tr("%1 — %2 frames at %3 fps")

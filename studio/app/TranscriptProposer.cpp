@@ -113,9 +113,9 @@ Task *TranscriptProposer::propose(int row)
                 doubtful << QStringLiteral("%1 (%2)")
                                 .arg(QString::fromStdString(result.words[size_t(i)]))
                                 .arg(QLocale().toString(result.confidence[size_t(i)], 'f', 2));
-            return [self, id, before, proposal, doubtful] {
+            return [self, id, before, proposal, doubtful, confidence = result.confidence] {
                 if (self)
-                    self->apply(id, before, proposal, doubtful);
+                    self->apply(id, before, proposal, doubtful, confidence);
             };
         });
     m_task = task;
@@ -130,7 +130,7 @@ Task *TranscriptProposer::propose(int row)
 }
 
 void TranscriptProposer::apply(const QString &sequenceId, const QString &before, const QString &proposal,
-                               const QStringList &doubtful)
+                               const QStringList &doubtful, const std::vector<double> &confidence)
 {
     ProjectDocument *document = m_context->document();
     int row = -1;
@@ -148,7 +148,7 @@ void TranscriptProposer::apply(const QString &sequenceId, const QString &before,
         return;
     }
     // Recognised words the sequence already has (checked or not) stay as they are.
-    if (proposal.simplified() == before.simplified() || !document->requestProposedTranscript(row, proposal)) {
+    if (proposal.simplified() == before.simplified() || !document->requestProposedTranscript(row, proposal, confidence)) {
         m_context->showStatus(tr("Speech recognition proposes the transcript %1 has: nothing changed.").arg(sequenceId),
                               8000);
         return;

@@ -13,6 +13,8 @@
 #include <QString>
 #include <QStringList>
 
+#include <vector>
+
 class QAction;
 class QWidget;
 
@@ -50,7 +52,8 @@ signals:
     void proposed(int row);
 
 private:
-    void apply(const QString &sequenceId, const QString &before, const QString &proposal, const QStringList &doubtful);
+    void apply(const QString &sequenceId, const QString &before, const QString &proposal, const QStringList &doubtful,
+               const std::vector<double> &confidence);
     void updateActions();
 
     StudioContext *m_context;

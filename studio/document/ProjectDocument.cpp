@@ -221,8 +221,8 @@ bool ProjectDocument::requestTranscriptChange(int row, const QString &transcript
     if (row < 0 || row >= sequenceCount())
         return false;
     const Sequence &s = sequence(row);
-    const TranscriptState before{QString::fromStdString(s.transcript), s.transcriptProposed};
-    const TranscriptState after{transcript.simplified(), false};
+    const TranscriptState before{QString::fromStdString(s.transcript), s.transcriptProposed, s.transcriptConfidence};
+    const TranscriptState after{transcript.simplified(), false, {}};
     // The same words are no edit: a proposal stays proposed until edited or accepted.
     if (after.text == before.text)
         return false;
@@ -230,13 +230,16 @@ bool ProjectDocument::requestTranscriptChange(int row, const QString &transcript
     return true;
 }
 
-bool ProjectDocument::requestProposedTranscript(int row, const QString &transcript)
+bool ProjectDocument::requestProposedTranscript(int row, const QString &transcript, std::vector<double> confidence)
 {
     if (row < 0 || row >= sequenceCount())
         return false;
     const Sequence &s = sequence(row);
-    const TranscriptState before{QString::fromStdString(s.transcript), s.transcriptProposed};
-    const TranscriptState after{transcript.simplified(), true};
+    const TranscriptState before{QString::fromStdString(s.transcript), s.transcriptProposed, s.transcriptConfidence};
+    // One posterior per word, each a probability, or none (what the manifest accepts).
+    const bool usable = confidence.size() == size_t(transcript.simplified().split(QLatin1Char(' ')).size())
+                        && std::all_of(confidence.begin(), confidence.end(), [](double c) { return c >= 0 && c <= 1; });
+    const TranscriptState after{transcript.simplified(), true, usable ? std::move(confidence) : std::vector<double>()};
     if (after.text.isEmpty() || after == before)
         return false;
     m_undo->push(new SetTranscriptCommand(this, row, before, after, SetTranscriptCommand::Kind::Propose));
@@ -247,17 +250,19 @@ bool ProjectDocument::requestAcceptTranscript(int row)
 {
     if (row < 0 || row >= sequenceCount() || !sequence(row).transcriptProposed)
         return false;
-    const TranscriptState before{QString::fromStdString(sequence(row).transcript), true};
-    m_undo->push(new SetTranscriptCommand(this, row, before, TranscriptState{before.text, false},
+    const TranscriptState before{QString::fromStdString(sequence(row).transcript), true,
+                                 sequence(row).transcriptConfidence};
+    m_undo->push(new SetTranscriptCommand(this, row, before, TranscriptState{before.text, false, {}},
                                           SetTranscriptCommand::Kind::Accept));
     return true;
 }
 
-void ProjectDocument::applyTranscript(int row, const QString &transcript, bool proposed)
+void ProjectDocument::applyTranscript(int row, const TranscriptState &state)
 {
     Sequence &s = m_project.sequences.at(std::size_t(row));
-    s.transcript = transcript.toStdString();
-    s.transcriptProposed = proposed;
+    s.transcript = state.text.toStdString();
+    s.transcriptProposed = state.proposed;
+    s.transcriptConfidence = state.confidence;
     emit sequenceChanged(row);
 }
 

@@ -16,6 +16,7 @@ class QUndoStack;
 namespace lipsync::studio {
 
 struct TierPair;
+struct TranscriptState;
 
 class ProjectDocument : public QObject
 {
@@ -62,9 +63,10 @@ public:
     // user; Sequence::transcriptProposed). Accepting a proposal: the same words, the mark cleared.
     // False when nothing would change (accepting a transcript that is not proposed included).
     bool requestTranscriptChange(int row, const QString &transcript);
-    bool requestProposedTranscript(int row, const QString &transcript);
+    // `confidence`: the recogniser's posterior of each proposed word (or empty).
+    bool requestProposedTranscript(int row, const QString &transcript, std::vector<double> confidence = {});
     bool requestAcceptTranscript(int row);
-    void applyTranscript(int row, const QString &transcript, bool proposed);
+    void applyTranscript(int row, const TranscriptState &state);
 
     // Speech (timeline/TierCommands): the word and phone tiers of one sequence (alignment,
     // timeline edits). Requests with the same mergeKey >= 0 (one boundary drag) merge into one

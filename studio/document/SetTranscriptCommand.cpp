@@ -31,12 +31,12 @@ SetTranscriptCommand::SetTranscriptCommand(ProjectDocument *document, int row, T
 
 void SetTranscriptCommand::undo()
 {
-    m_document->applyTranscript(m_row, m_before.text, m_before.proposed);
+    m_document->applyTranscript(m_row, m_before);
 }
 
 void SetTranscriptCommand::redo()
 {
-    m_document->applyTranscript(m_row, m_after.text, m_after.proposed);
+    m_document->applyTranscript(m_row, m_after);
 }
 
 } // namespace lipsync::studio

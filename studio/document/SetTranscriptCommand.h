@@ -5,6 +5,8 @@
 #include <QString>
 #include <QUndoCommand>
 
+#include <vector>
+
 namespace lipsync::studio {
 
 class ProjectDocument;
@@ -14,6 +16,7 @@ struct TranscriptState
 {
     QString text;
     bool proposed = false; // by speech recognition, not checked by the user yet
+    std::vector<double> confidence; // of a proposal: each word's posterior (Sequence::transcriptConfidence)
     bool operator==(const TranscriptState &) const = default;
 };
 

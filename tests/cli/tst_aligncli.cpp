@@ -99,6 +99,12 @@ private slots:
         QVERIFY(QString::fromStdString(p.sequence("michael")->transcript).startsWith("montreal "));
         QVERIFY(p.sequence("michael")->transcriptProposed);
         QVERIFY(!p.sequence("bbaf2n")->transcriptProposed);
+        // With each word's posterior, as `transcribe --json` printed them, for review.
+        std::vector<double> expected;
+        for (const QJsonValue &c : confidence)
+            expected.push_back(c.toDouble());
+        QCOMPARE(p.sequence("michael")->transcriptConfidence, expected);
+        QVERIFY(p.sequence("bbaf2n")->transcriptConfidence.empty());
     }
 
     void alignWritesWordsAndPhonesTiers()

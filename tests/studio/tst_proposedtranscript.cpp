@@ -250,8 +250,20 @@ private slots:
             QVERIFY(confidence >= previous && confidence < 0.5);
             previous = confidence;
         }
+        // Kept with the sequence (one posterior per word) and shown in the list's tooltip, so the
+        // doubtful words can be reviewed later too.
+        QCOMPARE(doc()->sequence(row).transcriptConfidence.size(), size_t(proposedWords.size()));
+        const QString tip = model()->data(model()->index(row, SequenceListModel::TranscriptColumn), Qt::ToolTipRole).toString();
+        QVERIFY2(tip.contains(QStringLiteral("Doubtful words, the most doubtful first: ")
+                              + status.mid(status.indexOf(lead) + lead.size()).chopped(1)),
+                 qPrintable(tip));
         if (const QString dir = qEnvironmentVariable("LIPSYNC_PREVIEW_SHOT"); !dir.isEmpty())
             m_window->grab().save(dir + QStringLiteral("/proposed-by-recognition.png"));
+        // Edited words are the user's: their posteriors go, and come back with Undo.
+        QVERIFY(model()->setData(model()->index(row, SequenceListModel::TranscriptColumn), words + QStringLiteral(" now")));
+        QVERIFY(doc()->sequence(row).transcriptConfidence.empty());
+        undo->undo();
+        QCOMPARE(doc()->sequence(row).transcriptConfidence.size(), size_t(proposedWords.size()));
         undo->undo();
         QVERIFY(doc()->sequence(row).transcript.empty());
         QVERIFY(!doc()->sequence(row).transcriptProposed);

@@ -78,6 +78,7 @@ Project makeProject()
     bare.transcript = "set blue at a one please";
     bare.transcriptProposed = true;
     bare.transcriptFit = -3.25;
+    bare.transcriptConfidence = {0.9, 0.25, 1.0, 0.5, 0.0625, 0.75};
     p.sequences.push_back(bare);
 
     p.models = {{"aam", "face model", "aam/face.aam"}, {"slds", "dynamics", "models/slds.json"}};
@@ -202,6 +203,8 @@ private slots:
         QCOMPARE(loaded.sequences[1].transcriptFit, std::optional<double>(-3.25));
         QVERIFY(!loaded.sequences[0].transcriptFit);
         QCOMPARE(text.count("transcriptFit"), 1); // written only when measured
+        QCOMPARE(loaded.sequences[1].transcriptConfidence, original.sequences[1].transcriptConfidence);
+        QCOMPARE(text.count("transcriptConfidence"), 1);
         QCOMPARE(loaded.models, original.models);
         QCOMPARE(loaded.pronunciations, original.pronunciations);
         QCOMPARE(loaded.aligner, std::string("generic"));
@@ -218,6 +221,9 @@ private slots:
         QVERIFY(!(changed == original));
         changed = loaded;
         changed.sequences[1].transcriptFit.reset();
+        QVERIFY(!(changed == original));
+        changed = loaded;
+        changed.sequences[1].transcriptConfidence[4] = 0.125;
         QVERIFY(!(changed == original));
         changed = loaded;
         changed.aligner = Project::kBuiltinAligner;
@@ -344,6 +350,8 @@ private slots:
         row("frame_count_negative", "sequences[1].frameCount", "must be an integer >= 0, found -1");
         row("frame_count_fractional", "sequences[1].frameCount", "must be an integer >= 0, found 74.5");
         row("transcript_not_string", "sequences[0].transcript", "must be a string, found 42");
+        row("transcript_confidence_count", "sequences[0].transcriptConfidence", "3 values for 2 words of the transcript");
+        row("transcript_confidence_range", "sequences[0].transcriptConfidence[1]", "must be a probability (0 to 1), found 1.5");
         row("aligner_unknown", "aligner", "must be \"builtin\" or \"generic\", found \"grid\"");
         row("transcript_fit_not_number", "sequences[0].transcriptFit", "must be a number (nats per frame), found a string");
         row("unknown_tier", "sequences[0].tiers.syllables", "unknown field");
