@@ -164,6 +164,30 @@ cv::Rect2d boundingBox(const Eigen::VectorXd &shape)
     return {x0, y0, x1 - x0, y1 - y0};
 }
 
+// The fit's start for the labelled face `truth` in `image`: the detection overlapping it most (an
+// image may hold several faces), as dlib's points mapped to ours (init dlib) or the mean shape
+// placed in the detection's box. Empty without such a detection.
+Eigen::VectorXd startShape(FaceDetector &detector, const AamModel &model, const cv::Mat &image,
+                           const Eigen::VectorXd &truth, const QString &init)
+{
+    const std::vector<FaceDetection> faces = detector.detect(image);
+    const cv::Rect2d truthBox = boundingBox(truth);
+    const FaceDetection *best = nullptr;
+    double bestOverlap = 0.0;
+    for (const auto &f : faces) {
+        const double o = overlap(f.box, truthBox);
+        if (o > bestOverlap) {
+            bestOverlap = o;
+            best = &f;
+        }
+    }
+    if (best && init == "dlib") {
+        const Eigen::VectorXd points = detector.dlibLandmarks(image, *best);
+        return points.size() == 136 ? mapIbug68To23(points) : Eigen::VectorXd();
+    }
+    return best ? initialShapeFromDetection(model, *best) : Eigen::VectorXd();
+}
+
 int runAamEval(const CommandLine &a)
 {
     const QString init = a.value("init");
@@ -200,26 +224,7 @@ int runAamEval(const CommandLine &a)
             continue;
         }
         const auto t0 = std::chrono::steady_clock::now();
-        const std::vector<FaceDetection> faces = detector.detect(image);
-        // The detection that overlaps the labelled face most (images may hold several faces).
-        const cv::Rect2d truthBox = boundingBox(e.shape);
-        const FaceDetection *best = nullptr;
-        double bestOverlap = 0.0;
-        for (const auto &f : faces) {
-            const double o = overlap(f.box, truthBox);
-            if (o > bestOverlap) {
-                bestOverlap = o;
-                best = &f;
-            }
-        }
-        Eigen::VectorXd start;
-        if (best && init == "dlib") {
-            const Eigen::VectorXd points = detector.dlibLandmarks(image, *best);
-            if (points.size() == 136)
-                start = mapIbug68To23(points);
-        } else if (best) {
-            start = initialShapeFromDetection(model, *best);
-        }
+        const Eigen::VectorXd start = startShape(detector, model, image, e.shape, init);
         const auto t1 = std::chrono::steady_clock::now();
         detectSeconds += std::chrono::duration<double>(t1 - t0).count();
         if (start.size() == 0) {
