@@ -252,6 +252,37 @@ struct DimensionFit
     }
 };
 
+// §4.9 initialisation of a for one dimension (its series `y`, one per sequence): per-state AR(1)
+// least squares on the observed data, clamped to [-0.95, 0.95]; states with fewer than three
+// transitions keep `initial`.
+Eigen::VectorXd autoregressiveStart(const std::vector<LabelledSequence> &sequences, const Series &y,
+                                    const LabelLayout &layout, int P, double initial)
+{
+    Eigen::VectorXd a = Eigen::VectorXd::Constant(P, initial);
+    Eigen::MatrixXd moments = Eigen::MatrixXd::Zero(P, 5); // Syy', Sy', N, Syy, Sy
+    for (size_t s = 0; s < sequences.size(); ++s)
+        for (size_t t = 1; t < sequences[s].labels.size(); ++t) {
+            const double prev = y[s][Eigen::Index(t - 1)], cur = y[s][Eigen::Index(t)];
+            const int n = sequences[s].labels[t];
+            moments(n, 0) += prev * prev;
+            moments(n, 1) += prev;
+            moments(n, 2) += 1.0;
+            moments(n, 3) += cur * prev;
+            moments(n, 4) += cur;
+        }
+    for (int n = 0; n < P; ++n) {
+        if (layout.transitionCount[n] < 3)
+            continue;
+        Eigen::Matrix2d A;
+        A << moments(n, 0), moments(n, 1), moments(n, 1), moments(n, 2);
+        const Eigen::Vector2d rhs(moments(n, 3), moments(n, 4));
+        const double det = A.determinant();
+        if (std::abs(det) > 1e-12 * std::abs(A(0, 0) * A(1, 1)) && det != 0.0)
+            a[n] = std::clamp(A.lu().solve(rhs)[0], -0.95, 0.95);
+    }
+    return a;
+}
+
 } // namespace
 
 void DpdsModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &feedback)
@@ -284,30 +315,9 @@ void DpdsModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &fe
     auto initialise = [&](DimensionFit &f) {
         const Eigen::Index k = &f - fits.data();
         // §4.9 initialisation: per-state AR(1) least squares on the observed data.
-        f.a = Eigen::VectorXd::Constant(P, m_options.initialA);
-        if (m_options.autoregressiveInit) {
-            Eigen::MatrixXd moments = Eigen::MatrixXd::Zero(P, 5); // Syy', Sy', N, Syy, Sy
-            for (size_t s = 0; s < sequences.size(); ++s)
-                for (size_t t = 1; t < sequences[s].labels.size(); ++t) {
-                    const double prev = f.y[s][Eigen::Index(t - 1)], cur = f.y[s][Eigen::Index(t)];
-                    const int n = sequences[s].labels[t];
-                    moments(n, 0) += prev * prev;
-                    moments(n, 1) += prev;
-                    moments(n, 2) += 1.0;
-                    moments(n, 3) += cur * prev;
-                    moments(n, 4) += cur;
-                }
-            for (int n = 0; n < P; ++n) {
-                if (layout.transitionCount[n] < 3)
-                    continue;
-                Eigen::Matrix2d A;
-                A << moments(n, 0), moments(n, 1), moments(n, 1), moments(n, 2);
-                const Eigen::Vector2d rhs(moments(n, 3), moments(n, 4));
-                const double det = A.determinant();
-                if (std::abs(det) > 1e-12 * std::abs(A(0, 0) * A(1, 1)) && det != 0.0)
-                    f.a[n] = std::clamp(A.lu().solve(rhs)[0], -0.95, 0.95);
-            }
-        }
+        f.a = m_options.autoregressiveInit
+                  ? autoregressiveStart(sequences, f.y, layout, P, m_options.initialA)
+                  : Eigen::VectorXd::Constant(P, m_options.initialA);
         f.a = f.project(f.a);
         const double variance = st.globalVariance[k];
         f.r = variance;
