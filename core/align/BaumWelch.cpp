@@ -34,6 +34,44 @@ void Accumulators::add(const Accumulators &other)
     utterances += other.utterances;
 }
 
+namespace {
+
+constexpr double kMinGamma = 1e-5;
+
+// The E-step's sums of frame `x` (the features of one frame): each model state's occupancy
+// `gamma` and self transitions, and, where it is occupied, each mixture component's share of it
+// with the weighted sums of x and x^2. `componentLog` is scratch space.
+void accumulateFrame(const AcousticModel &model, const float *x, const std::vector<double> &gammaByModelState,
+                     const std::vector<double> &selfByModelState, std::vector<float> &componentLog,
+                     Accumulators &out)
+{
+    const Eigen::RowVectorXd xd = Eigen::Map<const Eigen::RowVectorXf>(x, model.dimension()).cast<double>();
+    const Eigen::RowVectorXd xsq = xd.cwiseAbs2();
+    for (size_t j = 0; j < gammaByModelState.size(); ++j) {
+        const double gamma = gammaByModelState[j];
+        StateAccumulator &acc = out.states[j];
+        acc.selfCount += selfByModelState[j];
+        acc.occupancy += gamma;
+        if (gamma < kMinGamma)
+            continue;
+        const GaussianMixture &g = model.state(int(j));
+        const int M = g.size();
+        if (int(componentLog.size()) < M)
+            componentLog.resize(size_t(M));
+        const float total = g.componentLogLikelihoods(x, componentLog.data());
+        for (int m = 0; m < M; ++m) {
+            const double w = gamma * std::exp(double(componentLog[size_t(m)] - total));
+            if (w < kMinGamma * 1e-2)
+                continue;
+            acc.componentOccupancy[m] += w;
+            acc.sum.row(m) += w * xd;
+            acc.sumSquares.row(m) += w * xsq;
+        }
+    }
+}
+
+} // namespace
+
 double accumulateUtterance(const AcousticModel &model, const UtteranceGraph &graph,
                            const Eigen::MatrixXf &features, double beam, Accumulators &out)
 {
@@ -105,7 +143,6 @@ double accumulateUtterance(const AcousticModel &model, const UtteranceGraph &gra
     std::vector<double> gammaByModelState(static_cast<size_t>(model.stateCount()));
     std::vector<double> selfByModelState(static_cast<size_t>(model.stateCount()));
     std::vector<float> componentLog(64);
-    constexpr double kMinGamma = 1e-5;
     for (int t = T - 1; t >= 0; --t) {
         // Occupation of model states at t and self transitions into t.
         std::fill(gammaByModelState.begin(), gammaByModelState.end(), 0.0);
@@ -120,30 +157,7 @@ double accumulateUtterance(const AcousticModel &model, const UtteranceGraph &gra
                 selfByModelState[size_t(j)] += std::exp(A(t - 1, s) + logSelf[size_t(s)]
                                                         + emission(t, j) + beta[size_t(s)] - logP);
         }
-        const float *x = emission.frame(t);
-        const Eigen::RowVectorXd xd = Eigen::Map<const Eigen::RowVectorXf>(x, model.dimension()).cast<double>();
-        const Eigen::RowVectorXd xsq = xd.cwiseAbs2();
-        for (size_t j = 0; j < gammaByModelState.size(); ++j) {
-            const double gamma = gammaByModelState[j];
-            StateAccumulator &acc = out.states[j];
-            acc.selfCount += selfByModelState[j];
-            acc.occupancy += gamma;
-            if (gamma < kMinGamma)
-                continue;
-            const GaussianMixture &g = model.state(int(j));
-            const int M = g.size();
-            if (int(componentLog.size()) < M)
-                componentLog.resize(size_t(M));
-            const float total = g.componentLogLikelihoods(x, componentLog.data());
-            for (int m = 0; m < M; ++m) {
-                const double w = gamma * std::exp(double(componentLog[size_t(m)] - total));
-                if (w < kMinGamma * 1e-2)
-                    continue;
-                acc.componentOccupancy[m] += w;
-                acc.sum.row(m) += w * xd;
-                acc.sumSquares.row(m) += w * xsq;
-            }
-        }
+        accumulateFrame(model, emission.frame(t), gammaByModelState, selfByModelState, componentLog, out);
         if (t == 0)
             break;
         // beta_{t-1}(i) = log sum_j a_ij b_j(o_t) beta_t(j), over states alive in the forward pass.
