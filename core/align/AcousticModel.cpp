@@ -193,67 +193,46 @@ AcousticModel AcousticModel::load(const std::string &path)
     return parse(readWholeFile(path), path);
 }
 
-AcousticModel AcousticModel::parse(const std::string &text, const std::string &path)
+namespace {
+
+// The lines of a model file, comments and blank lines skipped, with errors that name the file and
+// the line.
+class ModelTextReader
 {
-    std::istringstream in(text);
-    std::string line;
-    int lineNumber = 0;
-    auto fail = [&](const std::string &what) -> Error {
-        return Error(what, path, "line " + std::to_string(lineNumber));
-    };
-    // One stream re-filled for every line: constructing a stream per line (its locale and
-    // facets) would be most of the cost of parsing a small model. A line's stream is valid until
-    // the next call.
-    std::istringstream fields;
-    auto next = [&]() -> std::istringstream & {
-        while (std::getline(in, line)) {
-            ++lineNumber;
-            if (!line.empty() && line.back() == '\r')
-                line.pop_back();
-            if (!line.empty() && line[0] != '#') {
-                fields.clear();
-                fields.str(line);
-                return fields;
+public:
+    ModelTextReader(const std::string &text, const std::string &path) : m_in(text), m_path(path) {}
+
+    Error fail(const std::string &what) const { return Error(what, m_path, "line " + std::to_string(m_lineNumber)); }
+
+    // The next line's fields. One stream re-filled for every line: constructing a stream per line
+    // (its locale and facets) would be most of the cost of parsing a small model; a line's stream
+    // is valid until the next call.
+    std::istringstream &next()
+    {
+        while (std::getline(m_in, m_line)) {
+            ++m_lineNumber;
+            if (!m_line.empty() && m_line.back() == '\r')
+                m_line.pop_back();
+            if (!m_line.empty() && m_line[0] != '#') {
+                m_fields.clear();
+                m_fields.str(m_line);
+                return m_fields;
             }
         }
-        ++lineNumber;
+        ++m_lineNumber;
         throw fail("unexpected end of file");
-    };
-    auto expectKey = [&](std::istringstream &s, const std::string &key) {
+    }
+
+    void expectKey(std::istringstream &s, const std::string &key) const
+    {
         std::string k;
         if (!(s >> k) || k != key)
             throw fail("expected '" + key + "'");
-    };
-    AcousticModel model;
-    int version = 0;
-    {
-        std::istringstream &s = next();
-        std::string magic;
-        if (!(s >> magic >> version) || magic != "lipsync-aligner")
-            throw fail("not a lipsync aligner model");
-        if (version < 1 || version > kFormatVersion)
-            throw fail("unsupported aligner model version " + std::to_string(version));
     }
+
+    // The next line: `key` and n finite numbers.
+    Eigen::VectorXf readVector(const std::string &key, int n)
     {
-        std::istringstream &s = next();
-        expectKey(s, "features");
-        MfccOptions &f = model.m_features;
-        double normalize = 0;
-        if (!(s >> f.sampleRate >> f.windowSeconds >> f.shiftSeconds >> f.preemphasis >> f.melChannels
-              >> f.cepstra >> f.lifter >> f.deltaWindow >> normalize))
-            throw fail("bad feature configuration");
-        if (normalize != 0 && normalize != 1 && normalize != 2)
-            throw fail("unknown feature normalisation " + std::to_string(normalize) + " (0 none, 1 mean, 2 mean and variance)");
-        model.m_normalization = CepstralNormalization(int(normalize));
-    }
-    {
-        std::istringstream &s = next();
-        expectKey(s, "dimension");
-        if (!(s >> model.m_dimension) || model.m_dimension <= 0 || model.m_dimension > 1000)
-            throw fail("bad dimension");
-    }
-    const int d = model.m_dimension;
-    auto readVector = [&](const std::string &key, int n) {
         std::istringstream &s = next();
         expectKey(s, key);
         Eigen::VectorXf v(n);
@@ -261,27 +240,70 @@ AcousticModel AcousticModel::parse(const std::string &text, const std::string &p
             if (!(s >> v[k]) || !std::isfinite(v[k]))
                 throw fail("expected " + std::to_string(n) + " numbers after '" + key + "'");
         return v;
-    };
-    model.m_varianceFloor = readVector("floor", d);
+    }
+
+private:
+    std::istringstream m_in;
+    std::string m_path;
+    std::string m_line;
+    int m_lineNumber = 0;
+    std::istringstream m_fields;
+};
+
+} // namespace
+
+AcousticModel AcousticModel::parse(const std::string &text, const std::string &path)
+{
+    ModelTextReader reader(text, path);
+    AcousticModel model;
+    int version = 0;
+    {
+        std::istringstream &s = reader.next();
+        std::string magic;
+        if (!(s >> magic >> version) || magic != "lipsync-aligner")
+            throw reader.fail("not a lipsync aligner model");
+        if (version < 1 || version > kFormatVersion)
+            throw reader.fail("unsupported aligner model version " + std::to_string(version));
+    }
+    {
+        std::istringstream &s = reader.next();
+        reader.expectKey(s, "features");
+        MfccOptions &f = model.m_features;
+        double normalize = 0;
+        if (!(s >> f.sampleRate >> f.windowSeconds >> f.shiftSeconds >> f.preemphasis >> f.melChannels
+              >> f.cepstra >> f.lifter >> f.deltaWindow >> normalize))
+            throw reader.fail("bad feature configuration");
+        if (normalize != 0 && normalize != 1 && normalize != 2)
+            throw reader.fail("unknown feature normalisation " + std::to_string(normalize) + " (0 none, 1 mean, 2 mean and variance)");
+        model.m_normalization = CepstralNormalization(int(normalize));
+    }
+    {
+        std::istringstream &s = reader.next();
+        reader.expectKey(s, "dimension");
+        if (!(s >> model.m_dimension) || model.m_dimension <= 0 || model.m_dimension > 1000)
+            throw reader.fail("bad dimension");
+    }
+    const int d = model.m_dimension;
+    model.m_varianceFloor = reader.readVector("floor", d);
     const int states = PhoneSet::kCount * kStatesPerPhone;
     model.m_states.resize(size_t(states));
     model.m_selfLoop.assign(size_t(states), 0.6);
     for (int p = 0; p < PhoneSet::kCount; ++p) {
-        std::istringstream &s = next();
-        expectKey(s, "phone");
+        std::istringstream &s = reader.next();
+        reader.expectKey(s, "phone");
         std::string label;
         s >> label;
         if (label != PhoneSet::label(p))
-            throw fail("expected phone " + PhoneSet::label(p) + ", found '" + label + "'");
+            throw reader.fail("expected phone " + PhoneSet::label(p) + ", found '" + label + "'");
         for (int st = 0; st < kStatesPerPhone; ++st) {
-            std::istringstream &h = next();
+            std::istringstream &h = reader.next();
             int position = -1, mixtures = 0;
             double selfLoop = 0;
             std::string k1, k2, k3;
             if (!(h >> k1 >> position >> k2 >> mixtures >> k3 >> selfLoop) || k1 != "state"
                 || k2 != "mixtures" || k3 != "selfloop" || position != st || mixtures < 1 || mixtures > 1024
                 || !(selfLoop > 0 && selfLoop < 1))
-                throw fail("expected 'state " + std::to_string(st) + " mixtures M selfloop P'");
+                throw reader.fail("expected 'state " + std::to_string(st) + " mixtures M selfloop P'");
             const int index = stateIndex(p, st);
             model.m_selfLoop[size_t(index)] = selfLoop;
             GaussianMixture &g = model.m_states[size_t(index)];
@@ -289,31 +311,31 @@ AcousticModel AcousticModel::parse(const std::string &text, const std::string &p
             g.means.resize(mixtures, d);
             g.variances.resize(mixtures, d);
             for (int m = 0; m < mixtures; ++m) {
-                g.weights[m] = readVector("w", 1)[0];
-                g.means.row(m) = readVector("m", d).transpose();
-                g.variances.row(m) = readVector("v", d).transpose();
+                g.weights[m] = reader.readVector("w", 1)[0];
+                g.means.row(m) = reader.readVector("m", d).transpose();
+                g.variances.row(m) = reader.readVector("v", d).transpose();
                 if (!(g.variances.row(m).array() > 0).all())
-                    throw fail("variances must be positive");
+                    throw reader.fail("variances must be positive");
             }
         }
     }
     if (version >= 2) {
-        std::istringstream &s = next();
+        std::istringstream &s = reader.next();
         std::string k1, k2, k3;
         int minimum = 0, entries = -1;
         if (!(s >> k1 >> k2 >> minimum >> k3 >> entries) || k1 != "boundaries" || k2 != "minimum"
             || k3 != "entries" || minimum < 1 || entries < 1 || entries > 1000000)
-            throw fail("expected 'boundaries minimum M entries N'");
+            throw reader.fail("expected 'boundaries minimum M entries N'");
         model.m_boundaries.setMinimumCount(minimum);
         for (int i = 0; i < entries; ++i) {
-            std::istringstream &b = next();
-            expectKey(b, "b");
+            std::istringstream &b = reader.next();
+            reader.expectKey(b, "b");
             std::string rest;
             std::getline(b, rest);
             try {
                 model.m_boundaries.addLine(rest);
             } catch (const std::invalid_argument &e) {
-                throw fail(e.what());
+                throw reader.fail(e.what());
             }
         }
     }
