@@ -208,7 +208,8 @@ int runAamEval(const CommandLine &a)
     if (!detector.hasYunet() && !detector.hasHaar())
         return fail("aam eval: no face detector available (YuNet model or Haar cascade)");
     if (init == "dlib" && !detector.hasDlib())
-        return fail("aam eval: --init dlib needs /usr/share/dlib/shape_predictor_68_face_landmarks.dat");
+        return fail(
+            QStringLiteral("aam eval: --init dlib needs %1").arg(QString::fromStdString(paths.dlibPredictorFile())));
     std::vector<std::string> warnings;
     std::vector<AamTrainingExample> examples =
         loadTrainingDirectory(a.value("images").toStdString(), &warnings);

@@ -5,6 +5,7 @@
 #include "aam/LandmarkScheme.h"
 #include "util/Environment.h"
 #include "util/ResourceLocator.h"
+#include "util/SystemPaths.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -44,12 +45,12 @@ FaceDetectorPaths FaceDetectorPaths::boxesOnly()
 
 std::string FaceDetectorPaths::haarCascadeFile() const
 {
-    return haarCascade.empty() ? "/usr/share/opencv4/haarcascades/haarcascade_frontalface_alt2.xml" : haarCascade;
+    return haarCascade.empty() ? systempaths::kHaarCascade : haarCascade;
 }
 
 std::string FaceDetectorPaths::dlibPredictorFile() const
 {
-    return dlibPredictor.empty() ? "/usr/share/dlib/shape_predictor_68_face_landmarks.dat" : dlibPredictor;
+    return dlibPredictor.empty() ? systempaths::kDlibPredictor : dlibPredictor;
 }
 
 FaceDetector::FaceDetector(const FaceDetectorPaths &paths) : m_impl(std::make_unique<Impl>())

@@ -31,8 +31,8 @@ struct FaceDetection
 struct FaceDetectorPaths
 {
     std::string yunetModel;   // empty: $LIPSYNC_YUNET_MODEL, else the shipped one (util/ResourceLocator)
-    std::string haarCascade;  // empty: /usr/share/opencv4/haarcascades/haarcascade_frontalface_alt2.xml
-    std::string dlibPredictor; // empty: /usr/share/dlib/shape_predictor_68_face_landmarks.dat
+    std::string haarCascade;  // empty: systempaths::kHaarCascade
+    std::string dlibPredictor; // empty: systempaths::kDlibPredictor
     bool useDlib = true;
 
     // Face boxes with their five keypoints only (YuNet, else Haar), for fitting and tracking:

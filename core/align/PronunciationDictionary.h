@@ -2,6 +2,8 @@
 // A pronouncing dictionary: word -> one or more phone-index sequences (PhoneSet indices).
 // Reads the CMU dictionary as Debian's pocketsphinx-en-us ships it (lower-case words, ARPAbet
 // without stress digits, variants as "word(2)"); stress digits are accepted and dropped.
+#include "util/SystemPaths.h"
+
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -13,7 +15,7 @@ using Pronunciation = std::vector<int>; // PhoneSet indices
 class PronunciationDictionary
 {
 public:
-    static constexpr const char *kCmuDictPath = "/usr/share/pocketsphinx/model/en-us/cmudict-en-us.dict";
+    static constexpr const char *kCmuDictPath = systempaths::kCmuDictionary;
 
     // Reads a CMU-format dictionary. Throws lipsync::Error naming the file (and line for a bad
     // phone); a missing default file names the Debian package that provides it.

@@ -21,6 +21,7 @@
 #include "align/Lexicon.h"
 #include "align/SphinxModelDefinition.h"
 #include "util/ObjectPool.h"
+#include "util/SystemPaths.h"
 
 #include <memory>
 #include <mutex>
@@ -36,7 +37,7 @@ class SphinxDecoder;
 class SphinxAligner : public Aligner
 {
 public:
-    static constexpr const char *kDefaultModelDir = "/usr/share/pocketsphinx/model/en-us/en-us";
+    static constexpr const char *kDefaultModelDir = systempaths::kSphinxModelDir;
     static constexpr int kSampleRate = 16000;
 
     struct Options

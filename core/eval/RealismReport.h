@@ -56,7 +56,7 @@ struct RealismOptions
     // the held-out sequences are measured in parallel).
     EvaluationOptions crossValidation;
     int maxLag = 5;            // audio-visual lags searched, frames either way
-    std::string dlibPredictor; // empty: /usr/share/dlib/shape_predictor_68_face_landmarks.dat
+    std::string dlibPredictor; // empty: systempaths::kDlibPredictor (Debian's libdlib-data)
     CompositeOptions composite; // how the renders are drawn (the preview's by default)
     // Close the lips on /p b m/ in the models' trajectories (render/BilabialClosure), as renders
     // do by default; the tracked re-synthesis is never changed.

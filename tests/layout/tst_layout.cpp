@@ -207,9 +207,10 @@ private slots:
         QVERIFY2(offenders.isEmpty(), qPrintable(offenders.join(QLatin1Char('\n'))));
     }
 
-    // One place reads the environment (util/Environment) and one names the project's AAM
-    // (Project::aam): elsewhere in core/, cli/ and studio/ both are banned (after QGIS's
-    // test_banned_keywords), so a new environment variable or a second AAM lookup cannot drift.
+    // One place reads the environment (util/Environment), one names the project's AAM
+    // (Project::aam) and one the Debian paths of the data we read (util/SystemPaths): elsewhere in
+    // core/, cli/ and studio/ they are banned (after QGIS's test_banned_keywords), so a new
+    // variable, a second AAM lookup or a second copy of a path cannot drift.
     void bannedPatternsStayInTheirOnePlace()
     {
         struct Rule
@@ -221,6 +222,7 @@ private slots:
             {QRegularExpression(QStringLiteral(R"(\bgetenv\s*\(|\bqEnvironmentVariable\w*\s*\(|\bqgetenv\s*\()")),
              QStringLiteral("core/util/Environment.cpp")},
             {QRegularExpression(QStringLiteral(R"(\bmodel\s*\(\s*"aam"\s*\))")), QStringLiteral("core/project/Project.h")},
+            {QRegularExpression(QStringLiteral(R"(/usr/(share|lib)/)")), QStringLiteral("core/util/SystemPaths.h")},
         };
         // The patterns match what they ban.
         QVERIFY(rules[0].pattern.match(QStringLiteral("const char *e = std::getenv(\"X\");")).hasMatch());
@@ -247,7 +249,7 @@ private slots:
             }
         }
         QVERIFY2(offenders.isEmpty(), qPrintable(offenders.join(QLatin1Char('\n'))));
-        QCOMPARE(homesSeen.size(), 2); // each rule's one place uses it
+        QCOMPARE(homesSeen.size(), 3); // each rule's one place uses it
     }
 
     void bannedPatternDetectsGuiInclude()
