@@ -102,10 +102,11 @@ int runTranscribe(const CommandLine &a)
             for (const BatchJob &job : jobs)
                 if (Sequence *s = project.sequence(job.name.toStdString());
                     s && s->transcript.empty() && QFileInfo::exists(job.output)) {
-                    s->transcript = readTranscript(job.output.toStdString()).text();
+                    const Transcript proposal = readTranscript(job.output.toStdString());
+                    s->transcript = proposal.text();
                     s->transcriptProposed = true;
-                    if (const auto it = confidence.find(job.output); it != confidence.end()
-                        && it->second.size() == readTranscript(job.output.toStdString()).words.size())
+                    if (const auto it = confidence.find(job.output);
+                        it != confidence.end() && it->second.size() == proposal.words.size())
                         s->transcriptConfidence = it->second;
                     ++proposed;
                 }

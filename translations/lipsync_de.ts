@@ -2814,37 +2814,37 @@
         <translation>Von der Spracherkennung vorgeschlagen und noch nicht geprüft: doppelklicken, um es zu bearbeiten, oder so übernehmen, wie es ist (Vorgeschlagenes Transkript übernehmen, im Menü Bearbeiten oder per Rechtsklick)</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="92"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="87"/>
         <source>Doubtful words, the most doubtful first: %1</source>
         <translation>Unsichere Wörter, die unsichersten zuerst: %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="96"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="91"/>
         <source>Double-click to edit the transcript</source>
         <translation>Doppelklicken, um das Transkript zu bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="97"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="92"/>
         <source>%1 — %2 frames at %3 fps</source>
         <translation>%1 – %2 Bilder mit %3 fps</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="125"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="132"/>
         <source>Sequence</source>
         <translation>Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="126"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="133"/>
         <source>Frames</source>
         <translation>Bilder</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="127"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="134"/>
         <source>Duration</source>
         <translation>Dauer</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="128"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="135"/>
         <source>Transcript</source>
         <translation>Transkript</translation>
     </message>
@@ -3709,27 +3709,27 @@
         <translation>Transkript von %1 vorschlagen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="124"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="118"/>
         <source>No transcript could be proposed.</source>
         <translation>Es konnte kein Transkript vorgeschlagen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="145"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="139"/>
         <source>The transcript of %1 changed while its speech was recognised: the proposal was not applied.</source>
         <translation>Das Transkript von %1 wurde geändert, während seine Sprache erkannt wurde: Der Vorschlag wurde nicht übernommen.</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="152"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="146"/>
         <source>Speech recognition proposes the transcript %1 has: nothing changed.</source>
         <translation>Die Spracherkennung schlägt das Transkript vor, das %1 schon hat: Nichts wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="157"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="153"/>
         <source>Transcript of %1 proposed: check it, then edit or accept it.</source>
         <translation>Transkript von %1 vorgeschlagen: Prüfen Sie es, dann bearbeiten oder übernehmen Sie es.</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="159"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="155"/>
         <source>Transcript of %1 proposed: check it, the most doubtful words first: %2.</source>
         <translation>Transkript von %1 vorgeschlagen: Prüfen Sie es, die unsichersten Wörter zuerst: %2.</translation>
     </message>

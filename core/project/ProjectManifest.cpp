@@ -226,8 +226,8 @@ private:
                                        const std::string &transcript) const
     {
         const QJsonArray values = array(value, field);
-        const qsizetype words = QString::fromStdString(transcript).simplified().split(QLatin1Char(' '), Qt::SkipEmptyParts).size();
-        if (values.size() != words)
+        const size_t words = Sequence::transcriptWords(transcript).size();
+        if (size_t(values.size()) != words)
             fail(field, std::to_string(values.size()) + " values for " + std::to_string(words)
                             + " words of the transcript");
         std::vector<double> out;

@@ -1,5 +1,7 @@
 #include "project/Sequence.h"
 
+#include <sstream>
+
 namespace lipsync {
 
 bool Sequence::operator==(const Sequence &other) const
@@ -16,6 +18,15 @@ bool Sequence::operator==(const Sequence &other) const
            && transcriptConfidence == other.transcriptConfidence
            && landmarks == other.landmarks
            && words == other.words && phones == other.phones && fitErrors == other.fitErrors;
+}
+
+std::vector<std::string> Sequence::transcriptWords(const std::string &transcript)
+{
+    std::vector<std::string> words;
+    std::istringstream in(transcript);
+    for (std::string word; in >> word;)
+        words.push_back(word);
+    return words;
 }
 
 FrameClock Sequence::clock() const

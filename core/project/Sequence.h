@@ -50,6 +50,10 @@ struct Sequence
     std::vector<double> fitErrors;
     static constexpr double kNoFace = -1.0;
 
+    // The words of a transcript (split at white space), to which transcriptConfidence
+    // corresponds one to one.
+    static std::vector<std::string> transcriptWords(const std::string &transcript);
+
     FrameClock clock() const;
     // Sets frameRate, frameCount, firstFrameTime and frameTimes from `clock`.
     void setClock(const FrameClock &clock);

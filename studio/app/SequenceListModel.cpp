@@ -83,13 +83,8 @@ QVariant SequenceListModel::data(const QModelIndex &index, int role) const
             QString tip = tr("Proposed by speech recognition and not checked yet: double-click to edit it, or accept "
                              "it as it is (Accept Proposed Transcript, in the Edit menu or on right-click)");
             // The recogniser's least sure words, to check first.
-            const QStringList words = QString::fromStdString(s.transcript).split(QLatin1Char(' '), Qt::SkipEmptyParts);
-            QStringList doubtful;
-            if (s.transcriptConfidence.size() == size_t(words.size()))
-                for (int i : doubtfulWords(s.transcriptConfidence))
-                    doubtful << QStringLiteral("%1 (%2)").arg(words[i], QLocale().toString(s.transcriptConfidence[size_t(i)], 'f', 2));
-            if (!doubtful.isEmpty())
-                tip += QLatin1Char('\n') + tr("Doubtful words, the most doubtful first: %1").arg(doubtful.join(QStringLiteral(", ")));
+            if (const QString doubtful = doubtfulWords(s); !doubtful.isEmpty())
+                tip += QLatin1Char('\n') + tr("Doubtful words, the most doubtful first: %1").arg(doubtful);
             return tip;
         }
         if (index.column() == TranscriptColumn)
@@ -100,6 +95,18 @@ QVariant SequenceListModel::data(const QModelIndex &index, int role) const
     if (role == Qt::TextAlignmentRole && (index.column() == FramesColumn || index.column() == DurationColumn))
         return QVariant(Qt::AlignRight | Qt::AlignVCenter);
     return {};
+}
+
+QString SequenceListModel::doubtfulWords(const Sequence &sequence)
+{
+    const std::vector<std::string> words = Sequence::transcriptWords(sequence.transcript);
+    if (sequence.transcriptConfidence.size() != words.size())
+        return {};
+    QStringList doubtful;
+    for (int i : lipsync::doubtfulWords(sequence.transcriptConfidence))
+        doubtful << QStringLiteral("%1 (%2)").arg(QString::fromStdString(words[size_t(i)]),
+                                                  QLocale().toString(sequence.transcriptConfidence[size_t(i)], 'f', 2));
+    return doubtful.join(QStringLiteral(", "));
 }
 
 bool SequenceListModel::setData(const QModelIndex &index, const QVariant &value, int role)

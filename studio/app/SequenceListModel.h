@@ -5,6 +5,10 @@
 // saying so) until edited or accepted.
 #include <QAbstractTableModel>
 
+namespace lipsync {
+struct Sequence;
+}
+
 namespace lipsync::studio {
 
 class ProjectDocument;
@@ -23,6 +27,10 @@ public:
     bool setData(const QModelIndex &index, const QVariant &value, int role) override;
     Qt::ItemFlags flags(const QModelIndex &index) const override;
     QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
+
+    // The doubtful words of `sequence`'s proposed transcript (Sequence::transcriptConfidence
+    // below kDoubtfulWordConfidence), the most doubtful first, as "word (0.12), ..."; empty if none.
+    static QString doubtfulWords(const Sequence &sequence);
 
 private:
     ProjectDocument *m_document;

@@ -1,5 +1,6 @@
 #include "app/TranscriptProposer.h"
 
+#include "app/SequenceListModel.h"
 #include "context/ErrorReporter.h"
 #include "context/SequenceMedia.h"
 #include "context/StudioContext.h"
@@ -15,7 +16,6 @@
 
 #include <QAction>
 #include <QFileInfo>
-#include <QLocale>
 #include <QMessageBox>
 
 namespace lipsync::studio {
@@ -107,15 +107,9 @@ Task *TranscriptProposer::propose(int row)
             if (heard.words.empty())
                 throw Error("no speech recognised", mediaPath.toStdString());
             const QString proposal = QString::fromStdString(heard.text());
-            // The words to check first: the recogniser's least sure, the most doubtful first.
-            QStringList doubtful;
-            for (int i : doubtfulWords(result))
-                doubtful << QStringLiteral("%1 (%2)")
-                                .arg(QString::fromStdString(result.words[size_t(i)]))
-                                .arg(QLocale().toString(result.confidence[size_t(i)], 'f', 2));
-            return [self, id, before, proposal, doubtful, confidence = result.confidence] {
+            return [self, id, before, proposal, confidence = result.confidence] {
                 if (self)
-                    self->apply(id, before, proposal, doubtful, confidence);
+                    self->apply(id, before, proposal, confidence);
             };
         });
     m_task = task;
@@ -130,7 +124,7 @@ Task *TranscriptProposer::propose(int row)
 }
 
 void TranscriptProposer::apply(const QString &sequenceId, const QString &before, const QString &proposal,
-                               const QStringList &doubtful, const std::vector<double> &confidence)
+                               const std::vector<double> &confidence)
 {
     ProjectDocument *document = m_context->document();
     int row = -1;
@@ -153,11 +147,13 @@ void TranscriptProposer::apply(const QString &sequenceId, const QString &before,
                               8000);
         return;
     }
+    // The words to check first: the recogniser's least sure, as the sequence now keeps them.
+    const QString doubtful = SequenceListModel::doubtfulWords(document->sequence(row));
     if (doubtful.isEmpty())
         m_context->showStatus(tr("Transcript of %1 proposed: check it, then edit or accept it.").arg(sequenceId), 8000);
     else
         m_context->showStatus(tr("Transcript of %1 proposed: check it, the most doubtful words first: %2.")
-                                  .arg(sequenceId, doubtful.join(QStringLiteral(", "))),
+                                  .arg(sequenceId, doubtful),
                               30000);
     emit proposed(row);
 }

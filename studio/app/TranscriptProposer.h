@@ -11,7 +11,6 @@
 #include <QObject>
 #include <QPointer>
 #include <QString>
-#include <QStringList>
 
 #include <vector>
 
@@ -52,7 +51,7 @@ signals:
     void proposed(int row);
 
 private:
-    void apply(const QString &sequenceId, const QString &before, const QString &proposal, const QStringList &doubtful,
+    void apply(const QString &sequenceId, const QString &before, const QString &proposal,
                const std::vector<double> &confidence);
     void updateActions();
 

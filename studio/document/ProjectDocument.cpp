@@ -237,7 +237,7 @@ bool ProjectDocument::requestProposedTranscript(int row, const QString &transcri
     const Sequence &s = sequence(row);
     const TranscriptState before{QString::fromStdString(s.transcript), s.transcriptProposed, s.transcriptConfidence};
     // One posterior per word, each a probability, or none (what the manifest accepts).
-    const bool usable = confidence.size() == size_t(transcript.simplified().split(QLatin1Char(' ')).size())
+    const bool usable = confidence.size() == Sequence::transcriptWords(transcript.toStdString()).size()
                         && std::all_of(confidence.begin(), confidence.end(), [](double c) { return c >= 0 && c <= 1; });
     const TranscriptState after{transcript.simplified(), true, usable ? std::move(confidence) : std::vector<double>()};
     if (after.text.isEmpty() || after == before)
