@@ -53,7 +53,8 @@ void printRealism(const RealismResult &result)
                 "recording; falseClosures: closures outside /p b m/ per second of speech; lag: frames, generated "
                 "minus recorded; seamDeltaE: CIE Lab dE across the synthesised region's edge (Recorded: the "
                 "recording at the same pixels); observer: a classifier's held-out accuracy telling the encoded "
-                "render from the encoded recording (0.5: it cannot)\n");
+                "render from the encoded recording (0.5: it cannot); shapeCorrelation: the method's own inner-lip "
+                "gap (what the animation exports carry) against the opening on its render\n");
 }
 
 int runRealism(const CommandLine &args, const EvaluationOptions &evaluation)

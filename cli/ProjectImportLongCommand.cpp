@@ -84,11 +84,9 @@ int runImportLong(const CommandLine &a)
         throw UsageError(QStringLiteral("--longest must be at least --shortest"));
     try {
         Project project = loadOrCreate(projectFolder);
-        // CMU Sphinx aligns up to kLongRecordingSeconds; a longer recording of a project that
-        // says the generic model is aligned with the shipped one, window by window, and its
-        // utterances can be aligned again with the generic model once cut.
-        const bool isLong = MediaInfo::probe(media.toStdString()).audioDuration > kLongRecordingSeconds;
-        const SpeechAligner aligner(a, projectFolder, false, isLong);
+        // A recording longer than CMU Sphinx aligns is cut with the shipped model, window by
+        // window; its utterances can be aligned again with the generic model once cut.
+        const SpeechAligner aligner(a, projectFolder, false, MediaInfo::probe(media.toStdString()).audioDuration);
         if (aligner.usesShippedForLong())
             std::fprintf(stderr,
                          "lipsync: %s is longer than CMU Sphinx aligns (%d min): cut with the shipped model of GRID's "

@@ -3,6 +3,7 @@
 #include "AlignerSupport.h"
 #include "CommandLine.h"
 
+#include "align/ProjectAligner.h"
 #include "project/Project.h"
 
 #include <algorithm>
@@ -43,7 +44,7 @@ SpeechAligner::SpeechAligner(const CommandLine &args, bool transcriptFit)
 }
 
 SpeechAligner::SpeechAligner(const CommandLine &args, const QString &projectFolder, bool transcriptFit,
-                             bool longRecording)
+                             double recordingSeconds)
 {
     AlignerChoice choice{args.value(QStringLiteral("aligner")).toStdString(), args.isSet(QStringLiteral("adapt"))};
     choice.boundaryCorrection = !args.isSet(QStringLiteral("no-boundary-correction"));
@@ -52,20 +53,13 @@ SpeechAligner::SpeechAligner(const CommandLine &args, const QString &projectFold
     if (!projectFolder.isEmpty()) {
         const Project project = Project::load(projectFolder.toStdString());
         projectPronunciations = project.pronunciations;
-        // The aligner the project says its speaker's speech is aligned with (a model reference
-        // of kind "aligner": `aligner train`/`adapt` on its recordings), unless --aligner names one.
-        if (const ModelReference *own = project.model("aligner"); own && choice.model.empty())
-            choice.model = project.resolve(own->file);
-        // A project that says its speaker is not GRID's: the generic model, adapted to them.
-        if (project.alignsGeneric() && choice.model.empty()) {
-            if (longRecording) {
-                m_shippedForLong = true;
-            } else {
-                choice.model = "sphinx";
-                choice.adapt = true;
-            }
+        // The aligner the project says its speaker's speech is aligned with, unless --aligner names one.
+        if (const std::optional<AlignerChoice> own = projectAlignerChoice(project); own && choice.model.empty()) {
+            choice.model = own->model;
+            choice.adapt = choice.adapt || own->adapt;
         }
     }
+    m_shippedForLong = fallBackForLongRecording(choice, recordingSeconds);
     if (!choice.isSphinx())
         choice.model = alignerModelOrDefault(QString::fromStdString(choice.model), args.spec().name).toStdString();
     m_aligner = createAligner(choice);

@@ -28,11 +28,11 @@ public:
     // `transcriptFit`: measure AlignerOutput::transcriptFit (AlignerChoice::transcriptFit).
     explicit SpeechAligner(const CommandLine &args, bool transcriptFit = false);
     // The same with the pronunciations of the project at `projectFolder` (a command whose project
-    // is an argument rather than --project). `longRecording`: what is aligned is longer than CMU
-    // Sphinx aligns (kLongRecordingSeconds), so a project's generic choice gives way to the
-    // shipped model (usesShippedForLong() says when it did).
+    // is an argument rather than --project). `recordingSeconds`: the length of what is aligned;
+    // beyond what CMU Sphinx aligns, a Sphinx choice gives way to the shipped model
+    // (fallBackForLongRecording; usesShippedForLong() says when it did).
     SpeechAligner(const CommandLine &args, const QString &projectFolder, bool transcriptFit = false,
-                  bool longRecording = false);
+                  double recordingSeconds = 0);
     ~SpeechAligner();
 
     // "sphinx:DIR" or the path of our model file.
@@ -40,7 +40,7 @@ public:
     // The file the model is read from (CMU Sphinx's: its folder's mdef), for up-to-date checks.
     QString modelFile() const;
     const Lexicon &lexicon() const { return *m_lexicon; }
-    // The project asked for the generic model, but the recording is too long for it.
+    // CMU Sphinx was chosen, but the recording is too long for it.
     bool usesShippedForLong() const { return m_shippedForLong; }
     const Aligner &aligner() const { return *m_aligner; }
 

@@ -114,6 +114,29 @@
     </message>
 </context>
 <context>
+    <name>MouthShapesDialog</name>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="49"/>
+        <source>Opening</source>
+        <translation>Öffnung</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="50"/>
+        <source>Width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="51"/>
+        <source>Rounding</source>
+        <translation>Rundung</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="52"/>
+        <source>Teeth</source>
+        <translation>Zähne</translation>
+    </message>
+</context>
+<context>
     <name>SequenceLoader</name>
     <message>
         <location filename="../studio/app/SequenceLoader.cpp" line="48"/>
@@ -336,7 +359,12 @@
         <translation>Schärfe des Mundes (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="140"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="50"/>
+        <source>mouth drawn as generated (correlation)</source>
+        <translation>Mund wie erzeugt gezeichnet (Korrelation)</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="141"/>
         <source>tracked</source>
         <translation>verfolgt</translation>
     </message>
@@ -344,176 +372,229 @@
 <context>
     <name>lipsync::studio::ExportMenu</name>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="91"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="108"/>
         <source>E&amp;xport</source>
         <translation>E&amp;xportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="95"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="112"/>
         <source>F&amp;eatures (CSV)…</source>
         <translation>M&amp;erkmale (CSV)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="95"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="136"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="112"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="159"/>
         <source>Generated &amp;Frames%1 (PNG)…</source>
         <translation>Erzeugte &amp;Einzelbilder%1 (PNG)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="96"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="113"/>
         <source>&amp;Alignment (TextGrid)…</source>
         <translation>&amp;Alignierung (TextGrid)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="96"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="113"/>
         <source>&amp;Landmarks (.pts)…</source>
         <translation>&amp;Landmarken (.pts)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="97"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="114"/>
         <source>Active Appearance &amp;Model…</source>
         <translation>Active Appearance &amp;Model…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="97"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="114"/>
         <source>&amp;Trained Dynamic Model…</source>
         <translation>&amp;Trainiertes dynamisches Modell…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="109"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="115"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="169"/>
+        <source>Mouth &amp;Cues%1 (Rhubarb, Moho)…</source>
+        <translation>Mund&amp;formen%1 (Rhubarb, Moho)…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="115"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="170"/>
+        <source>Animation C&amp;ontrols%1 (JSON, CSV)…</source>
+        <translation>Animations&amp;regler%1 (JSON, CSV)…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="124"/>
+        <source>Mouth S&amp;hapes…</source>
+        <translation>&amp;Mundbilder…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="126"/>
+        <source>The nine mouth shapes of the cues, learned from this person&apos;s frames: see them and set your own</source>
+        <translation>Die neun Mundbilder der Mundformen, gelernt aus den Bildern dieser Person: ansehen und eigene festlegen</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="132"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="109"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="132"/>
         <source>Which trained model?</source>
         <translation>Welches trainierte Modell?</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="133"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="156"/>
         <source> of %1</source>
         <translation> von %1</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="182"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="183"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="213"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="214"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="185"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="216"/>
         <source>Feature tables (*.csv)</source>
         <translation>Merkmalstabellen (*.csv)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="186"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="217"/>
         <source>Praat TextGrid (*.TextGrid)</source>
         <translation>Praat-TextGrid (*.TextGrid)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="188"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="219"/>
         <source>Active appearance models (*.aam)</source>
         <translation>Active Appearance Models (*.aam)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="190"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="221"/>
         <source>Dynamic models (*.model)</source>
         <translation>Dynamische Modelle (*.model)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="205"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="247"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="305"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="372"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="222"/>
+        <source>Rhubarb TSV (*.tsv);;Rhubarb JSON (*.json);;Rhubarb XML (*.xml);;Moho switch data (*.dat)</source>
+        <translation>Rhubarb TSV (*.tsv);;Rhubarb JSON (*.json);;Rhubarb XML (*.xml);;Moho-Schaltdaten (*.dat)</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="223"/>
+        <source>Controls JSON (*.json);;Controls CSV (*.csv)</source>
+        <translation>Regler JSON (*.json);;Regler CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="238"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="282"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="340"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="407"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="447"/>
         <source>Cannot export</source>
         <translation>Export nicht möglich</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="207"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="240"/>
         <source>no sequence is selected</source>
         <translation>keine Sequenz ausgewählt</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="256"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="291"/>
         <source>%1 has no video to put beside the generated face</source>
         <translation>%1 hat kein Video, neben das das erzeugte Gesicht gestellt werden könnte</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="270"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="305"/>
         <source>the project has no trained dynamic model and AAM (train one in the Models panel)</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell und kein AAM (im Bereich Modelle trainieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="261"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="285"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="452"/>
+        <source>the project has no AAM (build one in the Models panel)</source>
+        <translation>das Projekt hat kein AAM (im Modelle-Bereich erstellen)</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="459"/>
+        <source>%1 needs face features and a phone alignment (track and align it first)</source>
+        <translation>%1 braucht Gesichtsmerkmale und eine Lautausrichtung (zuerst verfolgen und ausrichten)</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="468"/>
+        <source>Export the mouth cues of %1</source>
+        <translation>Mundformen von %1 exportieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="468"/>
+        <source>Export the animation controls of %1</source>
+        <translation>Animationsregler von %1 exportieren</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/ExportMenu.cpp" line="296"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="320"/>
         <source>Export the generated frames of %1</source>
         <translation>Erzeugte Einzelbilder von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="94"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="134"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="111"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="157"/>
         <source>Generated &amp;Video%1 (MP4)…</source>
         <translation>Erzeugtes &amp;Video%1 (MP4)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="94"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="135"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="111"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="158"/>
         <source>Real and Generated &amp;Side by Side%1 (MP4)…</source>
         <translation>Echt und erzeugt &amp;nebeneinander%1 (MP4)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="262"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="286"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="297"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="321"/>
         <source>Export the generated video of %1</source>
         <translation>Erzeugtes Video von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="311"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="346"/>
         <source>%1 has no face features (track it first)</source>
         <translation>%1 hat keine Gesichtsmerkmale (zuerst tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="314"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="349"/>
         <source>Export the features of %1</source>
         <translation>Merkmale von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="322"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="357"/>
         <source>%1 has no phone alignment (align it first)</source>
         <translation>%1 hat keine Phonem-Alignierung (zuerst alignieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="325"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="360"/>
         <source>Export the alignment of %1</source>
         <translation>Alignierung von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="338"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="373"/>
         <source>%1 has no landmarks</source>
         <translation>%1 hat keine Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="341"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="376"/>
         <source>Export the landmarks of %1</source>
         <translation>Landmarken von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="377"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="412"/>
         <source>the project has no AAM</source>
         <translation>das Projekt hat kein AAM</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="378"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="413"/>
         <source>the project has no trained dynamic model</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="382"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="417"/>
         <source>Export %1</source>
         <translation>%1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="228"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="263"/>
         <source>Exported to %1</source>
         <translation>Exportiert nach %1</translation>
     </message>
@@ -1436,7 +1517,7 @@
     </message>
     <message>
         <location filename="../studio/app/LongRecordingImporter.cpp" line="97"/>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="172"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="173"/>
         <source>The long recording could not be imported.</source>
         <translation>Die lange Aufnahme konnte nicht importiert werden.</translation>
     </message>
@@ -1447,17 +1528,17 @@
     </message>
     <message>
         <location filename="../studio/app/LongRecordingImporter.cpp" line="122"/>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="153"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="154"/>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="157"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="158"/>
         <source>Imported from %1: %2 sequences, %3 words, cut with the built-in model (the recording is longer than Generic US English aligns): Align All aligns them again with it.</source>
         <translation>Aus %1 importiert: %2 Sequenzen, %3 Wörter, geschnitten mit dem eingebauten Modell (die Aufnahme ist länger, als Allgemeines US-Englisch aligniert): „Alle ausrichten“ richtet sie damit neu aus.</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="165"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="166"/>
         <source>Imported from %1: %2 sequences, %3 words.</source>
         <translation>Aus %1 importiert: %2 Sequenzen, %3 Wörter.</translation>
     </message>
@@ -2152,6 +2233,183 @@
     </message>
 </context>
 <context>
+    <name>lipsync::studio::MouthShapesDialog</name>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="59"/>
+        <source>Closed, lips pressed: P, B, M</source>
+        <translation>Geschlossen, Lippen aufeinander: P, B, M</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="60"/>
+        <source>Slightly open, teeth clenched: K, S, T, EE</source>
+        <translation>Leicht offen, Zähne zusammen: K, S, T, EE</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="61"/>
+        <source>Open: EH as in men, AE as in bat</source>
+        <translation>Offen: EH wie in men, AE wie in bat</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="62"/>
+        <source>Wide open: AA as in father</source>
+        <translation>Weit offen: AA wie in father</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="63"/>
+        <source>Slightly rounded: AO as in off, ER as in bird</source>
+        <translation>Leicht gerundet: AO wie in off, ER wie in bird</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="64"/>
+        <source>Puckered: UW as in you, OW as in show, W</source>
+        <translation>Gespitzt: UW wie in you, OW wie in show, W</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="65"/>
+        <source>Upper teeth on the lower lip: F, V</source>
+        <translation>Obere Zähne auf der Unterlippe: F, V</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="66"/>
+        <source>Tongue raised behind the teeth: long L</source>
+        <translation>Zunge hinter den Zähnen gehoben: langes L</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="67"/>
+        <source>Rest, in every pause</source>
+        <translation>Ruhe, in jeder Pause</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="77"/>
+        <source>Mouth Shapes</source>
+        <translation>Mundbilder</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="80"/>
+        <source>&lt;b&gt;Shape&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Mundbild&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="81"/>
+        <source>&lt;b&gt;Taught by&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Quelle&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="104"/>
+        <source>%1 of shape %2, from 0 to 1 over this person&apos;s range</source>
+        <translation>%1 von Mundbild %2, von 0 bis 1 über den Bereich dieser Person</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="111"/>
+        <source>Set Mouth Shape %1</source>
+        <translation>Mundbild %1 festlegen</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="116"/>
+        <source>From Frame</source>
+        <translation>Aus Bild</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="117"/>
+        <source>Make shape %1 the mouth of the frame shown in the studio</source>
+        <translation>Mundbild %1 als Mund des im Studio gezeigten Bildes festlegen</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="118"/>
+        <source>Learned</source>
+        <translation>Gelernt</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="119"/>
+        <source>Use the shape learned from this person&apos;s frames again</source>
+        <translation>Wieder das aus den Bildern dieser Person gelernte Mundbild verwenden</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="127"/>
+        <source>Reset Mouth Shape %1</source>
+        <translation>Mundbild %1 zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="134"/>
+        <source>Learn Again</source>
+        <translation>Neu lernen</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="135"/>
+        <source>Measure the project&apos;s tracked, aligned frames again</source>
+        <translation>Die verfolgten, ausgerichteten Bilder des Projekts neu messen</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="150"/>
+        <source>Silence is always X and /p b m/ always A; the other frames take the shape they look most like, their phone&apos;s shape first. Shapes you set are kept with the project.</source>
+        <translation>Stille ist immer X und /p b m/ immer A; die übrigen Bilder bekommen das Mundbild, dem sie am ähnlichsten sehen, das ihres Lauts zuerst. Festgelegte Mundbilder werden mit dem Projekt gespeichert.</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="195"/>
+        <source>The project has no AAM yet: build one in the Models panel, then track and align its sequences.</source>
+        <translation>Das Projekt hat noch kein AAM: im Modelle-Bereich erstellen, dann seine Sequenzen verfolgen und ausrichten.</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="202"/>
+        <source>Learning this person&apos;s mouth shapes…</source>
+        <translation>Die Mundbilder dieser Person werden gelernt…</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="205"/>
+        <source>Learn the mouth shapes</source>
+        <translation>Mundbilder lernen</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="219"/>
+        <source>Not learned: %1. Track and align more of the project.</source>
+        <translation>Nicht gelernt: %1. Mehr vom Projekt verfolgen und ausrichten.</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="229"/>
+        <source>Learned from %n frames</source>
+        <translation>
+            <numerusform>Gelernt aus %n Bild</numerusform>
+            <numerusform>Gelernt aus %n Bildern</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="230"/>
+        <source> of %n tracked, aligned sequences.</source>
+        <translation>
+            <numerusform> von %n verfolgten, ausgerichteten Sequenz.</numerusform>
+            <numerusform> von %n verfolgten, ausgerichteten Sequenzen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="262"/>
+        <source>you</source>
+        <translation>von Ihnen</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="263"/>
+        <source>%n frames</source>
+        <translation>
+            <numerusform>%n Bild</numerusform>
+            <numerusform>%n Bilder</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="264"/>
+        <source>a drawing (no frames)</source>
+        <translation>eine Zeichnung (keine Bilder)</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="316"/>
+        <source>The frame shown has no face features: choose a tracked sequence&apos;s frame first.</source>
+        <translation>Das gezeigte Bild hat keine Gesichtsmerkmale: zuerst ein Bild einer verfolgten Sequenz wählen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="321"/>
+        <source>Mouth Shape %1 from Frame %2</source>
+        <translation>Mundbild %1 aus Bild %2</translation>
+    </message>
+</context>
+<context>
     <name>lipsync::studio::ObjectivePlot</name>
     <message>
         <location filename="../studio/plots/ObjectivePlot.cpp" line="7"/>
@@ -2422,12 +2680,12 @@
 <context>
     <name>lipsync::studio::ProjectDocument</name>
     <message>
-        <location filename="../studio/document/ProjectDocument.cpp" line="182"/>
+        <location filename="../studio/document/ProjectDocument.cpp" line="183"/>
         <source>the project already has a sequence %1</source>
         <translation>das Projekt hat bereits eine Sequenz %1</translation>
     </message>
     <message>
-        <location filename="../studio/document/ProjectDocument.cpp" line="296"/>
+        <location filename="../studio/document/ProjectDocument.cpp" line="297"/>
         <source>%1 interval %2: %3</source>
         <translation>%1, Intervall %2: %3</translation>
     </message>
@@ -3301,255 +3559,255 @@
 <context>
     <name>lipsync::studio::TimelinePanel</name>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="188"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="189"/>
         <source>Zoom out (wheel down)</source>
         <translation>Verkleinern (Mausrad nach unten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="189"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="190"/>
         <source>Zoom in (wheel up)</source>
         <translation>Vergrößern (Mausrad nach oben)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="190"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="191"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="190"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="191"/>
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="87"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="450"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="451"/>
         <source>Align</source>
         <translation>Ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="87"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
         <source>Align this sequence&apos;s transcript to its audio (words and phones)</source>
         <translation>Das Transkript dieser Sequenz am Ton ausrichten (Wörter und Phone)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
         <source>Align All</source>
         <translation>Alle ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
         <source>Align every sequence that has a transcript</source>
         <translation>Jede Sequenz mit Transkript ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
         <source>Re-align Selection</source>
         <translation>Auswahl neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="91"/>
         <source>Align the selected stretch again, keeping the words whose timing you edited</source>
         <translation>Den ausgewählten Abschnitt neu ausrichten; Wörter mit bearbeitetem Timing bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="94"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
         <source>Adapt to Speaker</source>
         <translation>An Sprecher anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="105"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="518"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="106"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="516"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="106"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="107"/>
         <source>Align with the model shipped with the studio, trained on one GRID speaker</source>
         <translation>Mit dem mitgelieferten Modell ausrichten, trainiert auf einem GRID-Sprecher</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="107"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="108"/>
         <source>Generic US English (CMU Sphinx)</source>
         <translation>Allgemeines US-Englisch (CMU Sphinx)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="108"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="109"/>
         <source>Align with CMU Sphinx&apos;s US-English model trained on many speakers (Debian package pocketsphinx-en-us)</source>
         <translation>Mit dem US-englischen Modell von CMU Sphinx ausrichten, trainiert auf vielen Sprechern (Debian-Paket pocketsphinx-en-us)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
         <source>Split at Cursor</source>
         <translation>Am Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="125"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
         <source>Split the interval under the cursor</source>
         <translation>Das Intervall unter dem Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
         <location filename="../studio/timeline/TimelinePanel.cpp" line="670"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
         <source>Join the selected interval with the next one</source>
         <translation>Das ausgewählte Intervall mit dem nächsten verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="128"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
         <source>Relabel…</source>
         <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="128"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
         <source>Change the label of the selected interval</source>
         <translation>Die Beschriftung des ausgewählten Intervalls ändern</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
         <source>Insert Silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
         <source>Make the selection a silence</source>
         <translation>Die Auswahl zur Stille machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Insert Breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Make the selection a breath</source>
         <translation>Die Auswahl zum Atmer machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
         <source>Play Selection</source>
         <translation>Auswahl abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
         <source>Play the selected stretch (Space in the timeline)</source>
         <translation>Den ausgewählten Abschnitt abspielen (Leertaste in der Zeitleiste)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Play Word</source>
         <translation>Wort abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Play the word under the cursor</source>
         <translation>Das Wort unter dem Cursor abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
         <source>Play All</source>
         <translation>Alles abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
         <source>Play the whole sequence</source>
         <translation>Die ganze Sequenz abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
         <source>Pronunciations…</source>
         <translation>Aussprachen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
         <source>The project&apos;s pronunciations, and the words espeak-ng guessed</source>
         <translation>Die Aussprachen des Projekts und die von espeak-ng geschätzten Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="177"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="178"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="178"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="179"/>
         <source>The acoustic model the aligner uses</source>
         <translation>Das akustische Modell, das die Ausrichtung verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="142"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="143"/>
         <source>Show Spectrogram</source>
         <translation>Spektrogramm anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="143"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="144"/>
         <source>Show the spectrogram under the waveform in the timeline</source>
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="311"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="312"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="330"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="331"/>
         <source>Alignment of the speech in the Preview: %1 (read-only; Back to Sequence there to edit)</source>
         <translation>Alignierung der Sprache in der Vorschau: %1 (schreibgeschützt; dort „Zurück zur Sequenz“ zum Bearbeiten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="344"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="345"/>
         <source>No audio</source>
         <translation>Kein Ton</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="414"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="415"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="427"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="428"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="451"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="452"/>
         <source>The transcript of %1 changed since its boundaries were edited. Aligning it again replaces the edited boundaries. Align anyway?</source>
         <translation>Das Transkript von %1 wurde geändert, nachdem seine Grenzen bearbeitet wurden. Erneutes Alignieren ersetzt die bearbeiteten Grenzen. Trotzdem alignieren?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="462"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="463"/>
         <source>Every word of %1 is user-edited: nothing to align there.</source>
         <translation>Jedes Wort von %1 ist von Hand bearbeitet: Dort gibt es nichts zu alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="483"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="484"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="486"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="487"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="432"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="433"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
         <source>Adapt the aligner to each recording&apos;s voice before aligning it (slower; better for voices unlike the model&apos;s training speakers)</source>
         <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Stimmen, die den Trainingssprechern des Modells unähnlich sind)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="270"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="271"/>
         <source>The timeline aligns with Generic US English, adapted to each recording&apos;s speaker (Model menu): the built-in model knows only GRID&apos;s speaker s1.</source>
         <translation>Die Zeitleiste aligniert mit Allgemeines US-Englisch, an den Sprecher jeder Aufnahme angepasst (Menü Modell): Das eingebaute Modell kennt nur GRIDs Sprecher s1.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="272"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="273"/>
         <source>The timeline aligns with the built-in model of GRID&apos;s speaker s1. For another speaker, choose Model ▸ Generic US English and Adapt to Speaker.</source>
         <translation>Die Zeitleiste richtet mit dem eingebauten Modell des GRID-Sprechers s1 aus. Für einen anderen Sprecher wählen Sie Modell ▸ Allgemeines US-Englisch und An Sprecher anpassen.</translation>
     </message>

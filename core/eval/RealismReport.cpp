@@ -40,7 +40,7 @@ const std::vector<std::string> &realismMetrics()
                                                 "controlCorrelation", "controlSpeechCorrelation",
                                                 "closureRecall",      "falseClosures",
                                                 "falseClosuresRecorded", "observerFrames",
-                                                "observerVideos"};
+                                                "observerVideos",     "shapeCorrelation"};
     return names;
 }
 
@@ -96,6 +96,9 @@ double ratioOfMeans(const std::vector<double> &generated, const std::vector<doub
     return r > 0 ? g / r : kNoFigure;
 }
 
+// The 23-point scheme's inner-lip centres (aam/LandmarkScheme.cpp).
+constexpr int kInnerLipTop = 16, kInnerLipBottom = 17;
+
 struct Rendering
 {
     std::string method;
@@ -120,6 +123,10 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
     std::vector<std::vector<double>> opening(methods, recordedOpening), sharpness(methods, recordedOpening),
         seam(methods, recordedOpening), seamRecorded(methods, recordedOpening);
     std::vector<int> skipped(methods, 0);
+    // The inner-lip gap of each method's own shape (the AAM's inner-lip centres, normalised frame):
+    // the mouth the animation exports carry, to compare with what the render shows.
+    const AamSynthesizer synthesizer(aam);
+    std::vector<std::vector<double>> shapeOpening(methods, recordedOpening);
     // The machine observer's mouth box in each stream's frames: dlib's mouth points of that frame
     // itself (the recording's for the recording), as a detector of rendered faces would crop it.
     // The recording's box on a render would say where the recording's mouth was: a cue no
@@ -155,6 +162,9 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
             recorded.copyTo(generated);
             renderer.renderInto(t, c, generated);
             tapes.add(int(m) + 1, generated);
+            const Eigen::VectorXd shape = synthesizer.shape(c);
+            shapeOpening[m][ut] = std::hypot(shape[2 * kInnerLipBottom] - shape[2 * kInnerLipTop],
+                                             shape[2 * kInnerLipBottom + 1] - shape[2 * kInnerLipTop + 1]);
             const Eigen::VectorXd rendered = detector.dlibLandmarksInBox(generated, *box);
             if (rendered.size() != 136) {
                 ++skipped[m];
@@ -197,6 +207,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
         RealismSequenceMethod r;
         r.correlation = pearsonOverFrames(opening[m], recordedOpening);
         r.speechCorrelation = pearsonOverFrames(onlyWithin(opening[m], out.speech), recordedOpening);
+        r.shapeCorrelation = pearsonOverFrames(shapeOpening[m], opening[m]);
         r.closedBoth = closedInBoth(opening[m], recordedOpening, bilabials, out.closedLevel);
         r.falseClosures = closuresOutside(opening[m], bilabials, out.speech, out.closedLevel);
         r.appearance = std::move(seen.streams[m + 1]);
@@ -253,6 +264,7 @@ double foldValue(const std::vector<const RealismSequence *> &fold, const std::st
         }
         values.push_back(metric == "correlation"         ? r.correlation
                          : metric == "speechCorrelation" ? r.speechCorrelation
+                         : metric == "shapeCorrelation"  ? r.shapeCorrelation
                          : metric == "articulation"      ? r.articulation
                          : metric == "lag"               ? r.lag
                          : metric == "sharpness"         ? r.sharpness

@@ -30,7 +30,10 @@
 //                per second of speech, in the render and in the recording;
 //   observerFrames, observerVideos  the machine observer's held-out accuracy (MachineObserver:
 //                0.5 cannot tell the render from the recording), with the row "re-encoded
-//                recording" comparing the recording with its own second encode.
+//                recording" comparing the recording with its own second encode;
+//   shapeCorrelation  Pearson correlation of the method's own inner-lip gap (the AAM shape of its
+//                parameters: what the animation exports carry) with the opening measured on its
+//                render: how faithfully the render draws the mouth it was given.
 // Fold value = mean over the fold's sequences (those where the value is defined); reported as the
 // mean over folds with a 95 % t interval (§6.3).
 #include "aam/AamSynthesizer.h"
@@ -76,6 +79,7 @@ struct RealismSequenceMethod
     double correlation = 0, articulation = 0, lag = 0, sharpness = 0;
     double seamDeltaE = 0, seamDeltaERecorded = 0;
     double speechCorrelation = 0;
+    double shapeCorrelation = 0;
     int closed = 0;         // bilabial segments closed in the render
     int closedBoth = 0;     // ... and in the recording
     int falseClosures = 0;  // closures in the speech outside /p b m/

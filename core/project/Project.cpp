@@ -229,7 +229,8 @@ const ModelReference *Project::model(const std::string &kind) const
 bool Project::operator==(const Project &other) const
 {
     return name == other.name && sequences == other.sequences && models == other.models
-           && study == other.study && pronunciations == other.pronunciations && aligner == other.aligner;
+           && study == other.study && pronunciations == other.pronunciations && aligner == other.aligner
+           && mouthShapes == other.mouthShapes;
 }
 
 } // namespace lipsync

@@ -14,6 +14,7 @@
 #include "project/ForcedChoiceStudy.h"
 #include "project/Sequence.h"
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -34,9 +35,9 @@ class Project
 {
 public:
     // 2: sequences may carry per-frame fitErrors; 3: and transcriptProposed; 4: and transcriptFit,
-    // and the project its aligner.
+    // and the project its aligner; 5: and the user's mouth shapes for cue export.
     // Older manifests still load.
-    static constexpr int kFormatVersion = 4;
+    static constexpr int kFormatVersion = 5;
     static constexpr const char *kManifestName = "project.json";
     static constexpr const char *kStudyFileName = "study.json";
 
@@ -112,6 +113,12 @@ public:
     static constexpr const char *kBuiltinAligner = "builtin";
     static constexpr const char *kGenericAligner = "generic";
     bool alignsGeneric() const { return aligner == kGenericAligner && !model("aligner"); }
+
+    // The user's own picture of mouth shapes for cue export (animation/MouthMapping): a Rhubarb
+    // shape's letter ("A".."H") -> its opening, width, rounding and teeth showing, each 0..1 in
+    // the range of this person's frames. A shape not listed is learned from the frames.
+    using MouthShapeFeatures = std::array<double, 4>;
+    std::map<std::string, MouthShapeFeatures> mouthShapes;
 
     Sequence *sequence(const std::string &id);
     const Sequence *sequence(const std::string &id) const;

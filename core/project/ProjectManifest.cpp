@@ -85,7 +85,8 @@ public:
                                 + "); open it with a newer version");
         if (version < 1)
             fail("version", "must be at least 1");
-        checkKeys(root, "", {"format", "version", "name", "aligner", "sequences", "models", "study", "pronunciations"});
+        checkKeys(root, "", {"format", "version", "name", "aligner", "sequences", "models", "study", "pronunciations",
+                             "mouthShapes"});
 
         Project project;
         if (root.contains("name"))
@@ -125,10 +126,36 @@ public:
             if (project.aligner != Project::kBuiltinAligner && project.aligner != Project::kGenericAligner)
                 fail("aligner", "must be \"builtin\" or \"generic\", found \"" + project.aligner + "\"");
         }
+        if (root.contains("mouthShapes"))
+            project.mouthShapes = readMouthShapes(root.value("mouthShapes"));
         return project;
     }
 
 private:
+    std::map<std::string, Project::MouthShapeFeatures> readMouthShapes(const QJsonValue &value) const
+    {
+        if (!value.isObject())
+            fail("mouthShapes", "must be an object of shape letters, found " + describe(value));
+        std::map<std::string, Project::MouthShapeFeatures> shapes;
+        const QJsonObject object = value.toObject();
+        for (auto it = object.begin(); it != object.end(); ++it) {
+            const std::string field = member("mouthShapes", it.key().toUtf8().constData());
+            if (it.key().size() != 1 || it.key()[0] < QLatin1Char('A') || it.key()[0] > QLatin1Char('H'))
+                fail(field, "must be a mouth shape A to H");
+            const QJsonArray values = it.value().toArray();
+            if (!it.value().isArray() || values.size() != 4)
+                fail(field, "must be 4 numbers (opening, width, rounding, teeth), found " + describe(it.value()));
+            Project::MouthShapeFeatures f{};
+            for (int i = 0; i < 4; ++i) {
+                if (!values[i].isDouble() || !(values[i].toDouble() >= 0 && values[i].toDouble() <= 1))
+                    fail(field, "must be numbers from 0 to 1, found " + describe(values[i]));
+                f[size_t(i)] = values[i].toDouble();
+            }
+            shapes[it.key().toStdString()] = f;
+        }
+        return shapes;
+    }
+
     [[noreturn]] void fail(const std::string &field, const std::string &message) const
     {
         throw Error(message, m_path, field.empty() ? std::string("(top level)") : field);
@@ -491,7 +518,7 @@ const QStringList &keyOrder()
                                    "transcript", "transcriptProposed", "transcriptFit", "transcriptConfidence", "features", "tiers", "words",
                                    "phones",     "landmarks", "fitErrors", "frame",
                                    "points",     "start",     "end",       "label",
-                                   "userEdited", "file",      "study"};
+                                   "userEdited", "file",      "study", "mouthShapes"};
     return order;
 }
 
@@ -672,6 +699,12 @@ QJsonObject ProjectManifest::toJson(const Project &project, const std::string &t
         for (const auto &[word, phones] : project.pronunciations)
             pronunciations.append(QJsonObject{{"word", toQString(word)}, {"phones", toQString(phones)}});
         manifest.insert("pronunciations", pronunciations);
+    }
+    if (!project.mouthShapes.empty()) {
+        QJsonObject shapes;
+        for (const auto &[letter, f] : project.mouthShapes)
+            shapes.insert(toQString(letter), QJsonArray{f[0], f[1], f[2], f[3]});
+        manifest.insert("mouthShapes", shapes);
     }
     return manifest;
 }

@@ -8,7 +8,7 @@
 #include "document/ProjectDocument.h"
 
 #include "align/Lexicon.h"
-#include "align/LongAlignment.h"
+#include "align/ProjectAligner.h"
 #include "align/PronunciationDictionary.h"
 #include "io/MediaInfo.h"
 #include "io/Transcript.h"
@@ -125,11 +125,12 @@ Task *LongRecordingImporter::start(const QString &recordingPath, const QString &
             feedback.setStatus("reading the transcript");
             const Transcript transcript = readTranscript(transcriptPath.toStdString());
             feedback.setStatus("loading the aligner model");
-            // CMU Sphinx aligns up to kLongRecordingSeconds: a longer recording is cut with the
-            // shipped model, window by window (the utterances can be aligned again afterwards).
-            imported->shippedForLong = choice.isSphinx()
-                                       && MediaInfo::probe(recordingPath.toStdString()).audioDuration > kLongRecordingSeconds;
-            const std::shared_ptr<const Aligner> aligner = aligners->get(imported->shippedForLong ? AlignerChoice{} : choice);
+            // A recording longer than CMU Sphinx aligns is cut with the shipped model, window by
+            // window (the utterances can be aligned again afterwards).
+            AlignerChoice chosen = choice;
+            imported->shippedForLong =
+                fallBackForLongRecording(chosen, MediaInfo::probe(recordingPath.toStdString()).audioDuration);
+            const std::shared_ptr<const Aligner> aligner = aligners->get(chosen);
             const Lexicon lexicon(&PronunciationDictionary::cmu(), Lexicon::parseOverrides(pronunciations));
             feedback.setStatus(name.toStdString());
             LongRecordingImportResult result =

@@ -2,6 +2,7 @@
 
 #include "document/AddSequencesCommand.h"
 #include "document/LandmarkCommands.h"
+#include "document/MouthShapesCommand.h"
 #include "document/PronunciationCommand.h"
 #include "document/SetTranscriptCommand.h"
 #include "document/StudyCommands.h"
@@ -398,6 +399,21 @@ void ProjectDocument::applyPronunciations(const std::map<std::string, std::strin
 {
     m_project.pronunciations = pronunciations;
     emit pronunciationsChanged();
+}
+
+bool ProjectDocument::requestMouthShapes(const std::map<std::string, Project::MouthShapeFeatures> &shapes,
+                                         const QString &text, int mergeKey)
+{
+    if (!m_open || shapes == m_project.mouthShapes)
+        return false;
+    m_undo->push(new SetMouthShapesCommand(this, m_project.mouthShapes, shapes, text, mergeKey));
+    return true;
+}
+
+void ProjectDocument::applyMouthShapes(const std::map<std::string, Project::MouthShapeFeatures> &shapes)
+{
+    m_project.mouthShapes = shapes;
+    emit mouthShapesChanged();
 }
 
 void ProjectDocument::applyModels(const std::vector<ModelReference> &models)

@@ -82,6 +82,12 @@ public:
     bool requestPronunciations(const std::map<std::string, std::string> &pronunciations, const QString &text);
     void applyPronunciations(const std::map<std::string, std::string> &pronunciations);
 
+    // Animation (export/MouthShapesDialog, MouthShapesCommand): the user's own mouth shapes for
+    // cue export (Project::mouthShapes), replaced as a whole; false if unchanged.
+    bool requestMouthShapes(const std::map<std::string, Project::MouthShapeFeatures> &shapes, const QString &text,
+                            int mergeKey = -1);
+    void applyMouthShapes(const std::map<std::string, Project::MouthShapeFeatures> &shapes);
+
     // Faces (annotate/LandmarkCommands). The landmarks of one frame (nullopt: none); `text` names
     // the undo step.
     bool requestLandmarks(int row, int frame, const std::optional<LandmarkSet> &landmarks, const QString &text);
@@ -126,6 +132,7 @@ signals:
     void modelsChanged();
     void studyChanged();
     void pronunciationsChanged();
+    void mouthShapesChanged();
     void locationChanged();
     // An edit was refused because it would have left the document unsaveable (a defect of the
     // edit, not of the user's input): `edit` names it, `why` says what was wrong.

@@ -4,10 +4,14 @@
 #include "context/ModelKinds.h"
 #include "context/ModelStore.h"
 #include "context/StudioContext.h"
+#include "export/MouthShapesDialog.h"
 #include "document/ProjectDocument.h"
 
 #include "aam/AamModel.h"
 #include "aam/PtsFile.h"
+#include "animation/AnimationControls.h"
+#include "animation/MouthCues.h"
+#include "animation/MouthTrack.h"
 #include "dynamics/ModelFile.h"
 #include "io/FeatureCsv.h"
 #include "io/TextGrid.h"
@@ -23,7 +27,9 @@
 #include <QInputDialog>
 #include <QFileInfo>
 #include <QMenu>
+#include <QPointer>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <utility>
@@ -47,6 +53,17 @@ const ModelReference *dynamicModel(const Project &project, const QString &kind =
 bool isGenerated(ExportMenu::Kind kind)
 {
     return kind == ExportMenu::Kind::Video || kind == ExportMenu::Kind::SideBySide || kind == ExportMenu::Kind::Images;
+}
+
+bool isAnimation(ExportMenu::Kind kind)
+{
+    return kind == ExportMenu::Kind::MouthCues || kind == ExportMenu::Kind::Controls;
+}
+
+// The exports that write the new speech the Preview shows, when it shows some.
+bool followsShownSpeech(ExportMenu::Kind kind)
+{
+    return isGenerated(kind) || isAnimation(kind);
 }
 
 bool usesDynamicModel(ExportMenu::Kind kind)
@@ -90,19 +107,25 @@ ExportMenu::ExportMenu(StudioContext *context, QMenu *parentMenu, QWidget *dialo
     : QObject(dialogParent), m_context(context), m_dialogParent(dialogParent),
       m_menu(parentMenu->addMenu(tr("E&xport")))
 {
-    const std::array<QString, 8> titles = {
+    const std::array<QString, 10> titles = {
         tr("Generated &Video%1 (MP4)…").arg(QString()), tr("Real and Generated &Side by Side%1 (MP4)…").arg(QString()),
         tr("Generated &Frames%1 (PNG)…").arg(QString()), tr("F&eatures (CSV)…"),
         tr("&Alignment (TextGrid)…"),           tr("&Landmarks (.pts)…"),
-        tr("Active Appearance &Model…"),        tr("&Trained Dynamic Model…")};
+        tr("Active Appearance &Model…"),        tr("&Trained Dynamic Model…"),
+        tr("Mouth &Cues%1 (Rhubarb, Moho)…").arg(QString()), tr("Animation C&ontrols%1 (JSON, CSV)…").arg(QString())};
     for (size_t i = 0; i < titles.size(); ++i) {
-        if (i == 3 || i == 6)
+        if (i == 3 || i == 6 || i == 8)
             m_menu->addSeparator();
         QAction *action = m_menu->addAction(titles[i]);
         const Kind kind = Kind(i);
         connect(action, &QAction::triggered, this, [this, kind] { trigger(kind); });
         m_actions.append(action);
     }
+    m_mouthShapesAction = m_menu->addAction(tr("Mouth S&hapes…"));
+    m_mouthShapesAction->setObjectName(QStringLiteral("mouthShapesAction"));
+    m_mouthShapesAction->setToolTip(tr("The nine mouth shapes of the cues, learned from this person's frames: see "
+                                       "them and set your own"));
+    connect(m_mouthShapesAction, &QAction::triggered, this, &ExportMenu::showMouthShapes);
     connect(m_menu, &QMenu::aboutToShow, this, &ExportMenu::updateActions);
     m_modelPrompt = [this](const QStringList &kinds, const QStringList &names) {
         bool ok = false;
@@ -143,13 +166,21 @@ void ExportMenu::updateActions()
     action(Kind::Landmarks)->setEnabled(hasSequence && !document->sequence(row).landmarks.empty());
     action(Kind::Aam)->setEnabled(project.aam() != nullptr);
     action(Kind::Model)->setEnabled(dynamicModel(project) != nullptr);
+    action(Kind::MouthCues)->setText(tr("Mouth &Cues%1 (Rhubarb, Moho)…").arg(of));
+    action(Kind::Controls)->setText(tr("Animation C&ontrols%1 (JSON, CSV)…").arg(of));
+    const bool tracked = hasSequence && document->sequence(row).features.rows() > 0
+                         && !document->sequence(row).phones.isEmpty();
+    const bool canAnimate = project.aam() && (speech || tracked);
+    action(Kind::MouthCues)->setEnabled(canAnimate);
+    action(Kind::Controls)->setEnabled(canAnimate);
+    m_mouthShapesAction->setEnabled(project.aam() != nullptr);
 }
 
 Task *ExportMenu::trigger(Kind kind)
 {
     const ProjectDocument *document = m_context->document();
     const int row = m_context->currentSequence();
-    const auto speech = isGenerated(kind) ? m_context->shownSpeech() : nullptr;
+    const auto speech = followsShownSpeech(kind) ? m_context->shownSpeech() : nullptr;
     const QString stem = speech ? QFileInfo(QString::fromStdString(speech->mediaPath)).completeBaseName()
                          : row >= 0 && row < document->sequenceCount()
                              ? QString::fromStdString(document->sequence(row).id)
@@ -178,7 +209,7 @@ Task *ExportMenu::trigger(Kind kind)
                         QString(), QString()};
     // Suggested name (after the sequence id, or alone for project-wide files) and file filter
     // (none: a folder), in Kind order.
-    const std::array<std::pair<QString, QString>, 8> targets = {{
+    const std::array<std::pair<QString, QString>, 10> targets = {{
         {stem + "-generated" + modelSuffix + ".mp4", tr("MP4 video (*.mp4)")},
         {stem + "-side-by-side" + modelSuffix + ".mp4", tr("MP4 video (*.mp4)")},
         {stem + "-frames" + modelSuffix, QString()},
@@ -188,6 +219,8 @@ Task *ExportMenu::trigger(Kind kind)
         {QStringLiteral("model.aam"), tr("Active appearance models (*.aam)")},
         {(modelKind.isEmpty() ? QStringLiteral("dynamics") : modelKind) + QStringLiteral(".model"),
          tr("Dynamic models (*.model)")},
+        {stem + "-cues.tsv", tr("Rhubarb TSV (*.tsv);;Rhubarb JSON (*.json);;Rhubarb XML (*.xml);;Moho switch data (*.dat)")},
+        {stem + "-controls.json", tr("Controls JSON (*.json);;Controls CSV (*.csv)")},
     }};
     request.suggestedPath = folder + "/" + targets[size_t(kind)].first;
     request.filter = targets[size_t(kind)].second;
@@ -219,6 +252,8 @@ Task *ExportMenu::exportTo(Kind kind, const QString &path, const QString &modelK
     case Kind::Landmarks: job = sequenceDataJob(kind, path, sequence); break;
     case Kind::Aam:
     case Kind::Model: job = modelJob(kind, path, modelKind); break;
+    case Kind::MouthCues:
+    case Kind::Controls: job = animationJob(kind, path, sequence); break;
     }
     if (!job.work)
         return nullptr; // refused, and said why
@@ -402,6 +437,66 @@ ExportMenu::Job ExportMenu::modelJob(Kind kind, const QString &path, const QStri
         return {};
     }
     return {title, std::move(work)};
+}
+
+// The mouth of the new speech the Preview shows, else of the sequence as tracked, as Rhubarb's
+// mouth cues or as animation controls; the mapping is learned from the project's frames in the
+// worker.
+ExportMenu::Job ExportMenu::animationJob(Kind kind, const QString &path, const Sequence &sequence)
+{
+    const QString what = tr("Cannot export");
+    QString problem;
+    const auto aam = m_context->modelStore()->aam(&problem);
+    if (!aam) {
+        ErrorReporter::report(m_dialogParent, what, path,
+                              problem.isEmpty() ? tr("the project has no AAM (build one in the Models panel)") : problem);
+        return {};
+    }
+    const auto speech = m_context->shownSpeech();
+    const QString id = speech ? m_context->shownSpeechTitle() : QString::fromStdString(sequence.id);
+    if (!speech && (sequence.features.rows() == 0 || sequence.phones.isEmpty())) {
+        ErrorReporter::report(m_dialogParent, what, path,
+                              tr("%1 needs face features and a phone alignment (track and align it first)").arg(id));
+        return {};
+    }
+    const bool cues = kind == Kind::MouthCues;
+    // Moho's frames at the clip's own rate, within the 24 to 100 fps Rhubarb allows.
+    DatOptions dat;
+    dat.frameRate = std::clamp(speech ? speech->frameRate : sequence.frameRate, 24.0, 100.0);
+    Project project = m_context->document()->project(); // the worker's copy: frames to learn from
+    const std::string target = path.toStdString();
+    const QString title = cues ? tr("Export the mouth cues of %1").arg(id) : tr("Export the animation controls of %1").arg(id);
+    return {title, [project = std::move(project), aam, speech, sequence, target, cues, dat](Feedback &feedback)
+                       -> TaskRunner::Commit {
+                feedback.setStatus("learning this person's mouth shapes");
+                const MouthMeasurer measurer(*aam);
+                const MouthMapping mapping = projectMouthMapping(measurer, project);
+                feedback.throwIfCanceled();
+                feedback.setProgress(0.8);
+                const MouthTrack track = speech ? mouthTrackOfGenerated(measurer, *speech)
+                                                : mouthTrackOfSequence(measurer, project, sequence);
+                if (cues)
+                    writeMouthCues(mouthCues(track, mapping), target, dat);
+                else
+                    writeAnimationControls(animationControls(track, mapping), target);
+                return {};
+            }};
+}
+
+MouthShapesDialog *ExportMenu::mouthShapesDialog() const
+{
+    return m_shapesDialog;
+}
+
+void ExportMenu::showMouthShapes()
+{
+    if (!m_shapesDialog) {
+        m_shapesDialog = new MouthShapesDialog(m_context, m_dialogParent);
+        m_shapesDialog->setObjectName(QStringLiteral("mouthShapesDialog"));
+    }
+    m_shapesDialog->show();
+    m_shapesDialog->raise();
+    m_shapesDialog->relearn();
 }
 
 } // namespace lipsync::studio

@@ -1,7 +1,8 @@
 #pragma once
 // File ▸ Export: the current sequence's generated face as MP4 (H.264 + its sound as AAC), real and
 // generated side by side, or PNG frames; and its features (CSV), alignment (TextGrid) and landmarks
-// (.pts), and the project's AAM and trained dynamic model.
+// (.pts), and the project's AAM and trained dynamic model; its mouth as animation data (Rhubarb
+// mouth cues, ARKit-named controls: core/animation), and the Mouth Shapes those cues are made of.
 //
 // Every entry asks for a path (a QFileDialog, or the prompt a test installs), then runs in the
 // background through the TaskRunner with progress and cancel. Every writer is atomic
@@ -10,6 +11,7 @@
 #include "tasks/TaskRunner.h"
 
 #include <QObject>
+#include <QPointer>
 #include <QString>
 
 #include <functional>
@@ -25,13 +27,14 @@ class Task;
 
 namespace lipsync::studio {
 
+class MouthShapesDialog;
 class StudioContext;
 
 class ExportMenu : public QObject
 {
     Q_OBJECT
 public:
-    enum class Kind { Video, SideBySide, Images, Features, Alignment, Landmarks, Aam, Model };
+    enum class Kind { Video, SideBySide, Images, Features, Alignment, Landmarks, Aam, Model, MouthCues, Controls };
     Q_ENUM(Kind)
 
     // What the path prompt is asked for: a file (with a name filter) or a folder.
@@ -53,6 +56,10 @@ public:
 
     QMenu *menu() const { return m_menu; }
     QAction *action(Kind kind) const;
+    // File ▸ Export ▸ Mouth Shapes…: opens the MouthShapesDialog.
+    QAction *mouthShapesAction() const { return m_mouthShapesAction; }
+    // The dialog, once opened (null before).
+    MouthShapesDialog *mouthShapesDialog() const;
     // Replaces the file dialogs (GUI tests).
     void setPathPrompt(PathPrompt prompt) { m_prompt = std::move(prompt); }
     void setModelPrompt(ModelPrompt prompt) { m_modelPrompt = std::move(prompt); }
@@ -81,12 +88,16 @@ private:
     Job videoJob(Kind kind, const QString &path, const Sequence &sequence, const QString &modelKind);
     Job sequenceDataJob(Kind kind, const QString &path, const Sequence &sequence);
     Job modelJob(Kind kind, const QString &path, const QString &modelKind);
+    Job animationJob(Kind kind, const QString &path, const Sequence &sequence);
+    void showMouthShapes();
     void updateActions();
 
     StudioContext *m_context;
     QWidget *m_dialogParent;
     QMenu *m_menu;
     QList<QAction *> m_actions; // in Kind order
+    QAction *m_mouthShapesAction = nullptr;
+    QPointer<MouthShapesDialog> m_shapesDialog;
     PathPrompt m_prompt;
     ModelPrompt m_modelPrompt;
 };

@@ -47,6 +47,7 @@ QString EvaluationChart::metricTitle(const std::string &metric)
     if (metric == "articulation") return EvaluationChart::tr("articulation (s.d. ratio)");
     if (metric == "closure") return EvaluationChart::tr("/p b m/ closures (ratio)");
     if (metric == "sharpness") return EvaluationChart::tr("mouth sharpness (ratio)");
+    if (metric == "shapeCorrelation") return EvaluationChart::tr("mouth drawn as generated (correlation)");
     return QString::fromStdString(metric);
 }
 

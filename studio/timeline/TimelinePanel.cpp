@@ -3,6 +3,7 @@
 #include "timeline/IntervalLabelEditor.h"
 
 #include "align/FrameLabels.h"
+#include "align/ProjectAligner.h"
 #include "align/SphinxAligner.h"
 #include "audio/WaveformPeaks.h"
 #include "context/ErrorReporter.h"
@@ -493,11 +494,10 @@ void TimelinePanel::applyProjectAligner()
     // The project says whose aligner (Project::aligner, or a model of its own): that, for as
     // long as it is open; a project that does not say keeps the last choice. Not remembered as
     // the user's choice.
-    const Project &project = m_document->project();
-    const bool generic = project.alignsGeneric() && m_sphinxAlignerAction->isEnabled();
-    const bool builtin = project.model("aligner") || project.aligner == Project::kBuiltinAligner;
-    if (!generic && !builtin)
+    const std::optional<AlignerChoice> said = projectAlignerChoice(m_document->project());
+    if (!said || (said->isSphinx() && !m_sphinxAlignerAction->isEnabled()))
         return;
+    const bool generic = said->isSphinx();
     const QSignalBlocker blockBuiltIn(m_builtInAlignerAction), blockSphinx(m_sphinxAlignerAction),
         blockAdapt(m_adaptAction);
     m_builtInAlignerAction->setChecked(!generic);
@@ -510,12 +510,12 @@ void TimelinePanel::publishAlignerChoice()
     if (!m_context)
         return;
     // Ours: the project's own aligner when it names one (its speaker's), else the shipped model.
-    std::string model;
-    const ModelReference *own = m_document && m_document->isOpen() ? m_document->project().model("aligner") : nullptr;
-    if (own)
-        model = m_document->project().resolve(own->file);
-    m_builtInAlignerAction->setText(own ? tr("The Project's Aligner (%1)").arg(QString::fromStdString(own->name))
-                                        : tr("Built-in Model (GRID Speaker)"));
+    const bool open = m_document && m_document->isOpen();
+    const std::string model = open ? projectAlignerModel(m_document->project()) : std::string();
+    m_builtInAlignerAction->setText(
+        model.empty() ? tr("Built-in Model (GRID Speaker)")
+                      : tr("The Project's Aligner (%1)")
+                            .arg(QString::fromStdString(m_document->project().model("aligner")->name)));
     m_context->modelStore()->setAlignerChoice(
         AlignerChoice{m_sphinxAlignerAction->isChecked() ? "sphinx" : model, m_adaptAction->isChecked()});
 }

@@ -12,7 +12,7 @@ set(ENV{LIPSYNC_RESOURCE_DIR} "")
 set(ENV{LIPSYNC_ALIGNER_MODEL} "")
 set(clip "${PREFIX}/share/lipsync/demo/media/bbaf2n.mpg")
 foreach(file bin/lipsync share/lipsync/aligner/grid-s1.aligner share/lipsync/models/face_detection_yunet_2022mar.onnx
-             share/lipsync/demo/project.json)
+             share/lipsync/demo/project.json share/lipsync/blender/lipsync_animation.py)
   if(NOT EXISTS "${PREFIX}/${file}")
     message(FATAL_ERROR "not installed: ${file}")
   endif()

@@ -59,7 +59,7 @@ private slots:
             if (a->menu() && a->menu()->actions().contains(menu()->menu()->menuAction()))
                 file = a->menu();
         QVERIFY(file);
-        QCOMPARE(menu()->menu()->actions().size(), 8 + 2); // entries and two separators
+        QCOMPARE(menu()->menu()->actions().size(), 11 + 3); // entries and three separators
     }
 
     void exportsFeaturesAndAlignment()

@@ -6,11 +6,16 @@
 //    that cannot fit names the media and the transcript (a huge one is refused by its word count
 //    before its words are pronounced); realign() keeps a word the user fixed.
 //  - AlignerCache hands out one aligner per choice and does not keep a failed one.
+//  - Which aligner a project says (projectAlignerChoice), and the one rule for recordings longer
+//    than CMU Sphinx aligns (fallBackForLongRecording).
 #include "align/Aligner.h"
 #include "align/Lexicon.h"
+#include "align/LongAlignment.h"
+#include "align/ProjectAligner.h"
 #include "align/Realignment.h"
 #include "align/SphinxAligner.h"
 #include "io/Transcript.h"
+#include "project/Project.h"
 #include "util/Error.h"
 #include "util/PhoneSet.h"
 
@@ -159,6 +164,39 @@ private slots:
         QVERIFY(cache.get(AlignerChoice{"", true}).get() != a.get());
         for (int attempt = 0; attempt < 2; ++attempt)
             QVERIFY_THROWS_EXCEPTION(Error, cache.get(AlignerChoice{"/nonexistent/x.aligner", false}));
+    }
+
+    void aProjectSaysItsAligner()
+    {
+        Project project;
+        project.setFolder("/tmp/somewhere");
+        QVERIFY(!projectAlignerChoice(project)); // says nothing: the caller's default holds
+        project.aligner = Project::kBuiltinAligner;
+        std::optional<AlignerChoice> c = projectAlignerChoice(project);
+        QVERIFY(c && c->model.empty() && !c->adapt);
+        project.aligner = Project::kGenericAligner;
+        c = projectAlignerChoice(project);
+        QVERIFY(c && c->isSphinx() && c->adapt);
+        QVERIFY(projectAlignerModel(project).empty());
+        // The speaker's own model wins over what the project says.
+        project.models.push_back(ModelReference{"aligner", "mine", "models/mine.aligner"});
+        c = projectAlignerChoice(project);
+        QVERIFY(c && !c->isSphinx() && !c->adapt);
+        QCOMPARE(c->model, std::string("/tmp/somewhere/models/mine.aligner"));
+        QCOMPARE(projectAlignerModel(project), c->model);
+    }
+
+    void longRecordingsGiveWayToTheShippedModel()
+    {
+        AlignerChoice sphinx{"sphinx", true};
+        sphinx.transcriptFit = true;
+        QVERIFY(!fallBackForLongRecording(sphinx, kLongRecordingSeconds));
+        QVERIFY(sphinx.isSphinx());
+        QVERIFY(fallBackForLongRecording(sphinx, kLongRecordingSeconds + 1));
+        QVERIFY(sphinx.model.empty() && !sphinx.adapt && sphinx.transcriptFit);
+        AlignerChoice ours{"/models/x.aligner", true};
+        QVERIFY(!fallBackForLongRecording(ours, 3 * kLongRecordingSeconds)); // ours aligns window by window
+        QCOMPARE(ours.model, std::string("/models/x.aligner"));
     }
 };
 

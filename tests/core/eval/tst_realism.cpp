@@ -311,6 +311,13 @@ private slots:
               hmm.at("speechCorrelation").mean, hmm.at("controlSpeechCorrelation").mean, hmm.at("closureRecall").mean,
               hmm.at("falseClosures").mean, hmm.at("falseClosuresRecorded").mean, hmm.at("observerFrames").mean,
               hmm.at("observerVideos").mean, reencoded.at("observerFrames").mean);
+        // The mouth the parameters give (what the animation exports carry) is the mouth the render
+        // shows: tracked and generated alike.
+        qInfo("shape correlation: tracked %.3f, hmm %.3f", tracked.at("shapeCorrelation").mean,
+              hmm.at("shapeCorrelation").mean);
+        QVERIFY(tracked.at("shapeCorrelation").mean > 0.8);
+        QVERIFY(hmm.at("shapeCorrelation").mean > 0.6);
+        QVERIFY(!std::isfinite(reencoded.at("shapeCorrelation").mean));
         const QJsonObject json = r.toJson();
         QVERIFY(json.contains(QStringLiteral("methods")));
         QCOMPARE(json[QStringLiteral("perSequence")].toArray().size(), n);

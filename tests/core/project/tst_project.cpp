@@ -10,6 +10,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <functional>
+
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -83,6 +85,7 @@ Project makeProject()
 
     p.models = {{"aam", "face model", "aam/face.aam"}, {"slds", "dynamics", "models/slds.json"}};
     p.aligner = Project::kGenericAligner;
+    p.mouthShapes["D"] = {0.9, 0.625, 0.5, 0.25};
     p.pronunciations = {{"lipsync", "L IH1 P S IH2 NG K"}, {"o'neill", "OW N IY L"}};
     return p;
 }
@@ -186,7 +189,7 @@ private slots:
         QVERIFY(!QFileInfo(dir.filePath("project.json.bak")).exists());
         const QByteArray text = readBytes(dir.filePath("project.json"));
         QVERIFY(text.contains("\"format\": \"lipsync-project\""));
-        QVERIFY(text.contains("\"version\": 4"));
+        QVERIFY(text.contains("\"version\": 5"));
         QVERIFY(text.contains("\"features\": \"features/s1.csv\""));
 
         const Project loaded = Project::load(dir.path().toStdString());
@@ -210,40 +213,30 @@ private slots:
         QCOMPARE(loaded.aligner, std::string("generic"));
         QVERIFY(loaded.alignsGeneric());
         QVERIFY(text.contains("{\"word\": \"lipsync\", \"phones\": \"L IH1 P S IH2 NG K\"}"));
+        QCOMPARE(loaded.mouthShapes, original.mouthShapes);
+        QVERIFY(text.contains("\"mouthShapes\": {\n    \"D\": [0.9, 0.625, 0.5, 0.25]\n  }"));
         QVERIFY(loaded == original);
 
         // Equality must notice a change, or the comparison above proves nothing.
-        Project changed = loaded;
-        changed.sequences[0].landmarks[3].points[22].state = PointState::Placed;
-        QVERIFY(!(changed == original));
-        changed = loaded;
-        changed.sequences[1].transcriptProposed = false;
-        QVERIFY(!(changed == original));
-        changed = loaded;
-        changed.sequences[1].transcriptFit.reset();
-        QVERIFY(!(changed == original));
-        changed = loaded;
-        changed.sequences[1].transcriptConfidence[4] = 0.125;
-        QVERIFY(!(changed == original));
-        changed = loaded;
-        changed.aligner = Project::kBuiltinAligner;
-        QVERIFY(!(changed == original));
+        const auto differs = [&](const std::function<void(Project &)> &change) {
+            Project changed = loaded;
+            change(changed);
+            return !(changed == original);
+        };
+        QVERIFY(differs([](Project &p) { p.mouthShapes["D"][3] = 0.5; }));
+        QVERIFY(differs([](Project &p) { p.sequences[0].landmarks[3].points[22].state = PointState::Placed; }));
+        QVERIFY(differs([](Project &p) { p.sequences[1].transcriptProposed = false; }));
+        QVERIFY(differs([](Project &p) { p.sequences[1].transcriptFit.reset(); }));
+        QVERIFY(differs([](Project &p) { p.sequences[1].transcriptConfidence[4] = 0.125; }));
+        QVERIFY(differs([](Project &p) { p.aligner = Project::kBuiltinAligner; }));
         // A model of the project's own aligner wins over what the project says.
-        changed = loaded;
-        changed.models.push_back({"aligner", "speaker", "models/speaker.aligner"});
-        QVERIFY(!changed.alignsGeneric());
-        changed = loaded;
-        changed.sequences[0].features(2, 1) += 1e-9;
-        QVERIFY(!(changed == original));
-        changed = loaded;
-        changed.sequences[0].phones.intervals[1].userEdited = false;
-        QVERIFY(!(changed == original));
-        changed = loaded;
-        changed.sequences[0].fitErrors[1] = 0.5;
-        QVERIFY(!(changed == original));
-        changed = loaded;
-        changed.pronunciations["lipsync"] = "L IH P S IH N K";
-        QVERIFY(!(changed == original));
+        Project own = loaded;
+        own.models.push_back({"aligner", "speaker", "models/speaker.aligner"});
+        QVERIFY(!own.alignsGeneric());
+        QVERIFY(differs([](Project &p) { p.sequences[0].features(2, 1) += 1e-9; }));
+        QVERIFY(differs([](Project &p) { p.sequences[0].phones.intervals[1].userEdited = false; }));
+        QVERIFY(differs([](Project &p) { p.sequences[0].fitErrors[1] = 0.5; }));
+        QVERIFY(differs([](Project &p) { p.pronunciations["lipsync"] = "L IH P S IH N K"; }));
 
         // Loading by the manifest's own path works too.
         QVERIFY(Project::load(dir.filePath("project.json").toStdString()) == original);
@@ -332,7 +325,7 @@ private slots:
         row("wrong_format", "format", "is 'praat-textgrid', expected 'lipsync-project'");
         row("missing_version", "version", "missing");
         row("version_not_integer", "version", "must be an integer, found 1.5");
-        row("future_version", "version", "version 5 is newer than this build");
+        row("future_version", "version", "version 6 is newer than this build");
         row("version_zero", "version", "must be at least 1");
         row("name_not_string", "name", "must be a string, found an array");
         row("unknown_field", "sequences[1].framerate", "unknown field");
@@ -353,6 +346,8 @@ private slots:
         row("transcript_confidence_count", "sequences[0].transcriptConfidence", "3 values for 2 words of the transcript");
         row("transcript_confidence_range", "sequences[0].transcriptConfidence[1]", "must be a probability (0 to 1), found 1.5");
         row("aligner_unknown", "aligner", "must be \"builtin\" or \"generic\", found \"grid\"");
+        row("mouth_shape_unknown", "mouthShapes.X", "must be a mouth shape A to H");
+        row("mouth_shape_out_of_range", "mouthShapes.D", "must be numbers from 0 to 1, found 1.5");
         row("transcript_fit_not_number", "sequences[0].transcriptFit", "must be a number (nats per frame), found a string");
         row("unknown_tier", "sequences[0].tiers.syllables", "unknown field");
         row("interval_end_before_start", "sequences[0].tiers.words[1].end", "is before start");
@@ -609,7 +604,7 @@ private slots:
         // A landmark frame is one line, and keys come in reading order.
         const QByteArray text =
             ProjectManifest::serialize(ProjectManifest::toJson(makeProject(), "/tmp/x"));
-        QVERIFY(text.startsWith("{\n  \"format\": \"lipsync-project\",\n  \"version\": 4,\n"));
+        QVERIFY(text.startsWith("{\n  \"format\": \"lipsync-project\",\n  \"version\": 5,\n"));
         const qsizetype points = text.indexOf("\"points\": [[");
         QVERIFY(points > 0);
         QVERIFY(text.indexOf('\n', points) > text.indexOf("]]", points));

@@ -1,0 +1,140 @@
+// `lipsync export cues` and `lipsync export controls` as a user runs them on the demo project:
+//  - a tracked sequence's cues in every format, read back by the core readers; --dat-fps and
+//    --dat-letters; --json reports;
+//  - new speech generated with a model trained on the other sequences (held out), as controls;
+//  - the user's own mouth shapes in the project change the cues;
+//  - wrong use and bad input: one line naming what is wrong.
+#include "CliRun.h"
+
+#include "animation/AnimationControls.h"
+#include "animation/MouthCues.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+
+using namespace lipsync;
+using namespace lipsync::testing;
+
+namespace {
+
+const QString kDemo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo");
+
+} // namespace
+
+class TestAnimationExportCli : public QObject
+{
+    Q_OBJECT
+private slots:
+    void cuesOfATrackedSequence_data()
+    {
+        QTest::addColumn<QString>("suffix");
+        for (const char *s : {"tsv", "json", "xml", "dat"})
+            QTest::newRow(s) << QString::fromLatin1(s);
+    }
+
+    void cuesOfATrackedSequence()
+    {
+        QFETCH(QString, suffix);
+        QTemporaryDir dir;
+        const QString out = dir.filePath("cues." + suffix);
+        const Run r = runLipsync({"export", "cues", "--project", kDemo, "--sequence", "bbaf2n", "--out", out, "--json",
+                                  "--dat-fps", "25"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject json = parseJsonObject(r.out);
+        QCOMPARE(json["duration"].toDouble(), 3.0);
+        QVERIFY(json["soundFile"].toString().endsWith("media/bbaf2n.mpg"));
+        DatOptions dat;
+        dat.frameRate = 25;
+        const MouthCueTrack cues = readMouthCues(out.toStdString(), dat);
+        QCOMPARE(int(cues.cues.size()), json["cues"].toInt());
+        QCOMPARE(cues.cues.front().shape, MouthShape::X); // the clip starts in silence
+        QVERIFY(cues.cues.size() > 8);
+    }
+
+    void datOptions()
+    {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("cues.dat");
+        Run r = runLipsync({"export", "cues", "--project", kDemo, "--sequence", "bbaf2n", "--out", out, "--dat-letters"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QFile file(out);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray text = file.readAll();
+        QVERIFY(text.startsWith("MohoSwitch1\n1 X\n"));
+        QVERIFY(!text.contains("rest"));
+        r = runLipsync({"export", "cues", "--project", kDemo, "--sequence", "bbaf2n", "--out", out, "--dat-fps", "12"});
+        verifyOneLineError(r, 1, "from 24 to 100 fps");
+    }
+
+    void controlsOfNewSpeech()
+    {
+        // A per-phone mean model trained without the clip: its face for the clip's speech.
+        QTemporaryDir dir;
+        const QString model = dir.filePath("hmm.model");
+        Run r = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--exclude", "bbaf2n", "--out", model});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QString out = dir.filePath("controls.csv");
+        r = runLipsync({"export", "controls", "--project", kDemo, "--media", kDemo + "/media/bbaf2n.mpg", "--transcript",
+                        kDemo + "/media/bbaf2n.align", "--model", model, "--out", out, "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QCOMPARE(parseJsonObject(r.out)["frames"].toInt(), 75);
+        const AnimationControls c = readAnimationControls(out.toStdString());
+        QCOMPARE(c.frameCount(), 75);
+        QCOMPARE(c.frameRate, 25.0);
+        QVERIFY(QString::fromStdString(c.soundFile).endsWith("media/bbaf2n.mpg"));
+        const int open = c.column("mouthOpen");
+        QVERIFY(open >= 0);
+        // Speech opens the mouth the silence around it keeps shut.
+        QVERIFY(c.values.col(open).segment(30, 20).maxCoeff() > c.values.col(open).head(10).maxCoeff() + 0.2);
+    }
+
+    void usersShapesChangeTheCues()
+    {
+        // The project's copy with every speech shape but B drawn far from any frame: B takes
+        // the speech the phones do not pin to A.
+        QTemporaryDir dir;
+        QDir(kDemo).mkpath(dir.path());
+        for (const QString &sub : {QStringLiteral("aam"), QStringLiteral("features"), QStringLiteral("media")}) {
+            QDir().mkpath(dir.filePath(sub));
+            for (const QString &f : QDir(kDemo + "/" + sub).entryList(QDir::Files))
+                QVERIFY(QFile::copy(kDemo + "/" + sub + "/" + f, dir.filePath(sub + "/" + f)));
+        }
+        QFile manifest(kDemo + "/project.json");
+        QVERIFY(manifest.open(QIODevice::ReadOnly));
+        QByteArray text = manifest.readAll();
+        text.replace("\"aligner\": \"builtin\",",
+                     "\"aligner\": \"builtin\",\n  \"mouthShapes\": {\"C\": [1, 0, 1, 0], \"D\": [1, 0, 1, 0], "
+                     "\"E\": [1, 0, 1, 0], \"F\": [1, 0, 1, 0], \"G\": [1, 0, 1, 0], \"H\": [1, 0, 1, 0], "
+                     "\"B\": [0.5, 0.5, 0.5, 0.5]},");
+        QFile copy(dir.filePath("project.json"));
+        QVERIFY(copy.open(QIODevice::WriteOnly));
+        copy.write(text);
+        copy.close();
+        const QString out = dir.filePath("cues.json");
+        const Run r = runLipsync({"export", "cues", "--project", dir.path(), "--sequence", "bbaf2n", "--out", out, "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject shapes = parseJsonObject(r.out)["shapes"].toObject();
+        QVERIFY2(shapes.keys() == QStringList({"A", "B", "X"}), QJsonDocument(shapes).toJson().constData());
+    }
+
+    void wrongUseIsNamed()
+    {
+        QTemporaryDir dir;
+        const QString out = dir.filePath("cues.tsv");
+        verifyOneLineError(runLipsync({"export", "cues", "--project", kDemo, "--out", out}), 2, "--sequence ID");
+        verifyOneLineError(runLipsync({"export", "cues", "--sequence", "x", "--out", out}), 2, "--project DIR");
+        verifyOneLineError(runLipsync({"export", "cues", "--project", kDemo, "--sequence", "nope", "--out", out}), 1,
+                           "no sequence 'nope'");
+        verifyOneLineError(runLipsync({"export", "cues", "--project", kDemo, "--sequence", "bbaf2n", "--out",
+                                       dir.filePath("cues.txt")}),
+                           1, ".tsv, .json, .xml or .dat");
+        verifyOneLineError(runLipsync({"export", "controls", "--project", kDemo, "--sequence", "bbaf2n", "--out",
+                                       dir.filePath("c.xml")}),
+                           1, ".json or .csv");
+        QVERIFY(QDir(dir.path()).isEmpty());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestAnimationExportCli)
+#include "tst_animationexportcli.moc"
