@@ -20,59 +20,59 @@ namespace lipsync {
 
 namespace {
 
-constexpr int kPointValues = 46;
-constexpr const char *kFormat = "lipsync-controls";
+constexpr int kControlPointValues = 46;
+constexpr const char *kControlsFormat = "lipsync-controls";
 
 // MouthMeasures::values() order.
 enum Measure { Opening, Width, LeftCorner, RightCorner, Rounding, Jaw, UpperLeft, UpperRight, LowerLeft, LowerRight };
 
-std::string number(double v)
+std::string controlNumber(double v)
 {
     return formatSignificant(v, 6);
 }
 
-std::string formatCsv(const AnimationControls &c)
+std::string formatControlsCsv(const AnimationControls &c)
 {
-    std::string out = "# soundFile: " + c.soundFile + "\n# frameRate: " + number(c.frameRate) + "\nframe,time";
+    std::string out = "# soundFile: " + c.soundFile + "\n# frameRate: " + controlNumber(c.frameRate) + "\nframe,time";
     for (const std::string &n : c.names)
         out += ',' + n;
-    for (int p = 0; p < kPointValues / 2; ++p)
+    for (int p = 0; p < kControlPointValues / 2; ++p)
         out += ",x" + std::to_string(p) + ",y" + std::to_string(p);
     out += '\n';
     for (int f = 0; f < c.frameCount(); ++f) {
-        out += std::to_string(f) + ',' + number(c.times[size_t(f)]);
+        out += std::to_string(f) + ',' + controlNumber(c.times[size_t(f)]);
         for (Eigen::Index k = 0; k < c.values.cols(); ++k)
-            out += ',' + number(c.values(f, k));
+            out += ',' + controlNumber(c.values(f, k));
         for (Eigen::Index k = 0; k < c.points.cols(); ++k)
-            out += ',' + number(c.points(f, k));
+            out += ',' + controlNumber(c.points(f, k));
         out += '\n';
     }
     return out;
 }
 
-QJsonArray row(const Eigen::MatrixXd &m, int r)
+QJsonArray controlRow(const Eigen::MatrixXd &m, int r)
 {
     QJsonArray a;
     for (Eigen::Index k = 0; k < m.cols(); ++k)
-        a.append(parseFiniteNumber(number(m(r, k))).value_or(0.0)); // as the CSV writes it
+        a.append(parseFiniteNumber(controlNumber(m(r, k))).value_or(0.0)); // as the CSV writes it
     return a;
 }
 
-std::string formatJson(const AnimationControls &c)
+std::string formatControlsJson(const AnimationControls &c)
 {
     QJsonArray names, frames;
     for (const std::string &n : c.names)
         names.append(QString::fromStdString(n));
     for (int f = 0; f < c.frameCount(); ++f)
-        frames.append(QJsonObject{{"time", c.times[size_t(f)]}, {"values", row(c.values, f)}, {"points", row(c.points, f)}});
-    const QJsonObject root{{"format", kFormat},         {"version", 1},
+        frames.append(QJsonObject{{"time", c.times[size_t(f)]}, {"values", controlRow(c.values, f)}, {"points", controlRow(c.points, f)}});
+    const QJsonObject root{{"format", kControlsFormat},         {"version", 1},
                            {"soundFile", QString::fromStdString(c.soundFile)},
                            {"frameRate", c.frameRate},  {"frameCount", c.frameCount()},
                            {"controls", names},         {"frames", frames}};
     return QJsonDocument(root).toJson(QJsonDocument::Compact).toStdString() + "\n";
 }
 
-double parseNumber(const std::string &text, const std::string &path, const std::string &where)
+double parseControlNumber(const std::string &text, const std::string &path, const std::string &where)
 {
     const std::optional<double> v = parseFiniteNumber(text);
     if (!v)
@@ -80,7 +80,7 @@ double parseNumber(const std::string &text, const std::string &path, const std::
     return *v;
 }
 
-std::vector<std::string> split(const std::string &line)
+std::vector<std::string> splitCells(const std::string &line)
 {
     std::vector<std::string> cells;
     std::stringstream in(line);
@@ -90,7 +90,7 @@ std::vector<std::string> split(const std::string &line)
     return cells;
 }
 
-AnimationControls parseCsv(const std::string &text, const std::string &path)
+AnimationControls parseControlsCsv(const std::string &text, const std::string &path)
 {
     AnimationControls c;
     std::istringstream in(text);
@@ -104,38 +104,38 @@ AnimationControls parseCsv(const std::string &text, const std::string &path)
         if (line.rfind("# soundFile: ", 0) == 0) {
             c.soundFile = line.substr(13);
         } else if (line.rfind("# frameRate: ", 0) == 0) {
-            c.frameRate = parseNumber(line.substr(13), path, where);
+            c.frameRate = parseControlNumber(line.substr(13), path, where);
         } else if (line.rfind("frame,time", 0) == 0) {
-            const std::vector<std::string> header = split(line);
+            const std::vector<std::string> header = splitCells(line);
             columns = header.size();
-            if (columns < 2 + kPointValues)
+            if (columns < 2 + kControlPointValues)
                 throw Error("the header names too few columns", path, where);
-            c.names.assign(header.begin() + 2, header.end() - kPointValues);
+            c.names.assign(header.begin() + 2, header.end() - kControlPointValues);
         } else if (!line.empty()) {
-            const std::vector<std::string> cells = split(line);
+            const std::vector<std::string> cells = splitCells(line);
             if (columns == 0 || cells.size() != columns)
                 throw Error("expected " + std::to_string(columns) + " values", path, where);
             std::vector<double> values;
             for (const std::string &cell : cells)
-                values.push_back(parseNumber(cell, path, where));
+                values.push_back(parseControlNumber(cell, path, where));
             rows.push_back(std::move(values));
         }
     }
     if (columns == 0)
         throw Error("no header line (frame,time,…)", path);
     c.values.resize(Eigen::Index(rows.size()), Eigen::Index(c.names.size()));
-    c.points.resize(Eigen::Index(rows.size()), kPointValues);
+    c.points.resize(Eigen::Index(rows.size()), kControlPointValues);
     for (size_t r = 0; r < rows.size(); ++r) {
         c.times.push_back(rows[r][1]);
         for (size_t k = 0; k < c.names.size(); ++k)
             c.values(Eigen::Index(r), Eigen::Index(k)) = rows[r][2 + k];
-        for (int k = 0; k < kPointValues; ++k)
+        for (int k = 0; k < kControlPointValues; ++k)
             c.points(Eigen::Index(r), k) = rows[r][2 + c.names.size() + size_t(k)];
     }
     return c;
 }
 
-void readRow(const QJsonValue &value, Eigen::MatrixXd &m, int r, const std::string &path, const std::string &where)
+void readControlRow(const QJsonValue &value, Eigen::MatrixXd &m, int r, const std::string &path, const std::string &where)
 {
     const QJsonArray a = value.toArray();
     if (!value.isArray() || a.size() != m.cols())
@@ -147,12 +147,12 @@ void readRow(const QJsonValue &value, Eigen::MatrixXd &m, int r, const std::stri
     }
 }
 
-AnimationControls parseJson(const std::string &text, const std::string &path)
+AnimationControls parseControlsJson(const std::string &text, const std::string &path)
 {
     QJsonParseError error;
     const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(text), &error);
     const QJsonObject root = doc.object();
-    if (!doc.isObject() || root["format"].toString() != QLatin1String(kFormat))
+    if (!doc.isObject() || root["format"].toString() != QLatin1String(kControlsFormat))
         throw Error("not a lipsync-controls file", path, "format");
     if (root["version"].toInt() != 1)
         throw Error("version " + std::to_string(root["version"].toInt()) + " is not one this build reads", path,
@@ -164,20 +164,20 @@ AnimationControls parseJson(const std::string &text, const std::string &path)
         c.names.push_back(n.toString().toStdString());
     const QJsonArray frames = root["frames"].toArray();
     c.values.resize(frames.size(), Eigen::Index(c.names.size()));
-    c.points.resize(frames.size(), kPointValues);
+    c.points.resize(frames.size(), kControlPointValues);
     for (int f = 0; f < frames.size(); ++f) {
         const std::string where = "frames[" + std::to_string(f) + "]";
         const QJsonObject frame = frames[f].toObject();
         if (!frame["time"].isDouble())
             throw Error("expected a time", path, where + ".time");
         c.times.push_back(frame["time"].toDouble());
-        readRow(frame["values"], c.values, f, path, where + ".values");
-        readRow(frame["points"], c.points, f, path, where + ".points");
+        readControlRow(frame["values"], c.values, f, path, where + ".values");
+        readControlRow(frame["points"], c.points, f, path, where + ".points");
     }
     return c;
 }
 
-bool isCsv(const std::string &path)
+bool isControlsCsv(const std::string &path)
 {
     const QString suffix = QFileInfo(QString::fromStdString(path)).suffix().toLower();
     if (suffix != QLatin1String("csv") && suffix != QLatin1String("json"))
@@ -224,14 +224,14 @@ AnimationControls animationControls(const MouthTrack &track, const MouthMapping 
 
 void writeAnimationControls(const AnimationControls &controls, const std::string &path)
 {
-    writeFileAtomically(path, isCsv(path) ? formatCsv(controls) : formatJson(controls));
+    writeFileAtomically(path, isControlsCsv(path) ? formatControlsCsv(controls) : formatControlsJson(controls));
 }
 
 AnimationControls readAnimationControls(const std::string &path)
 {
-    const bool csv = isCsv(path);
+    const bool csv = isControlsCsv(path);
     const std::string text = readWholeFile(path);
-    return csv ? parseCsv(text, path) : parseJson(text, path);
+    return csv ? parseControlsCsv(text, path) : parseControlsJson(text, path);
 }
 
 } // namespace lipsync

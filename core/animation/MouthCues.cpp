@@ -44,7 +44,7 @@ int datFrame(double seconds, const DatOptions &dat)
     return 1 + int(dat.frameRate * centiseconds(seconds) + 1e-9); // a frame's own start is that frame
 }
 
-std::string formatTsv(const MouthCueTrack &track)
+std::string formatCueTsv(const MouthCueTrack &track)
 {
     std::string out;
     for (const MouthCue &c : track.cues)
@@ -53,7 +53,7 @@ std::string formatTsv(const MouthCueTrack &track)
     return out;
 }
 
-std::string formatJson(const MouthCueTrack &track)
+std::string formatCueJson(const MouthCueTrack &track)
 {
     std::string out = "{\n  \"metadata\": {\n    \"soundFile\": " + jsonString(track.soundFile)
                       + ",\n    \"duration\": " + formatTime(track.duration) + "\n  },\n  \"mouthCues\": [\n";
@@ -65,7 +65,7 @@ std::string formatJson(const MouthCueTrack &track)
     return out + "  ]\n}\n";
 }
 
-std::string formatXml(const MouthCueTrack &track)
+std::string formatCueXml(const MouthCueTrack &track)
 {
     QByteArray bytes;
     QXmlStreamWriter xml(&bytes);
@@ -94,7 +94,7 @@ std::string shapeName(MouthShape s, const DatOptions &dat)
     return dat.prestonBlair ? prestonBlairName(s) : std::string(1, mouthShapeLetter(s));
 }
 
-std::string formatDat(const MouthCueTrack &track, const DatOptions &dat)
+std::string formatCueDat(const MouthCueTrack &track, const DatOptions &dat)
 {
     std::string out = "MohoSwitch1\n";
     int last = 0;
@@ -152,7 +152,7 @@ MouthCueTrack fromStarts(std::vector<std::pair<double, MouthShape>> starts, doub
     return track;
 }
 
-MouthCueTrack parseLines(const std::string &text, const std::string &path, bool dat, const DatOptions &options)
+MouthCueTrack parseCueLines(const std::string &text, const std::string &path, bool dat, const DatOptions &options)
 {
     std::istringstream in(text);
     std::string line;
@@ -193,7 +193,7 @@ MouthCueTrack parseLines(const std::string &text, const std::string &path, bool 
     return fromStarts(std::move(starts), end, {});
 }
 
-MouthCueTrack parseJson(const std::string &text, const std::string &path)
+MouthCueTrack parseCueJson(const std::string &text, const std::string &path)
 {
     QJsonParseError error;
     const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(text), &error);
@@ -217,7 +217,7 @@ MouthCueTrack parseJson(const std::string &text, const std::string &path)
     return track;
 }
 
-MouthCueTrack parseXml(const std::string &text, const std::string &path)
+MouthCueTrack parseCueXml(const std::string &text, const std::string &path)
 {
     QXmlStreamReader xml(QByteArray::fromStdString(text));
     MouthCueTrack track;
@@ -291,10 +291,10 @@ CueFormat cueFormatOfPath(const std::string &path)
 std::string formatMouthCues(const MouthCueTrack &track, CueFormat format, const DatOptions &dat)
 {
     switch (format) {
-    case CueFormat::Tsv: return formatTsv(track);
-    case CueFormat::Json: return formatJson(track);
-    case CueFormat::Xml: return formatXml(track);
-    case CueFormat::Dat: checkDatOptions(dat); return formatDat(track, dat);
+    case CueFormat::Tsv: return formatCueTsv(track);
+    case CueFormat::Json: return formatCueJson(track);
+    case CueFormat::Xml: return formatCueXml(track);
+    case CueFormat::Dat: checkDatOptions(dat); return formatCueDat(track, dat);
     }
     return {};
 }
@@ -309,10 +309,10 @@ MouthCueTrack readMouthCues(const std::string &path, const DatOptions &dat)
     const CueFormat format = cueFormatOfPath(path);
     const std::string text = readWholeFile(path);
     switch (format) {
-    case CueFormat::Tsv: return parseLines(text, path, false, dat);
-    case CueFormat::Dat: checkDatOptions(dat); return parseLines(text, path, true, dat);
-    case CueFormat::Json: return parseJson(text, path);
-    case CueFormat::Xml: return parseXml(text, path);
+    case CueFormat::Tsv: return parseCueLines(text, path, false, dat);
+    case CueFormat::Dat: checkDatOptions(dat); return parseCueLines(text, path, true, dat);
+    case CueFormat::Json: return parseCueJson(text, path);
+    case CueFormat::Xml: return parseCueXml(text, path);
     }
     return {};
 }

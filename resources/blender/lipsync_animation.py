@@ -3,8 +3,10 @@
 # Reads what `lipsync export controls` and `lipsync export cues` write (docs/formats.md):
 #   File > Import > LipSync Animation Controls (.json, .csv)
 #       keys every control (jawOpen, mouthClose, ... mouthOpen) on the selected object:
-#       a mesh's shape keys of the same names, and on any object (an armature for bone rigs)
-#       custom properties "lipsync_<control>" that drivers can feed to bones;
+#       a mesh's shape keys of the same names; an armature's jaw bone (named "jaw" unless told
+#       otherwise) turned about its X axis by jawOpen times an angle (20 degrees unless told
+#       otherwise); and on any object custom properties "lipsync_<control>" that drivers can feed
+#       to a rig's other bones or shape keys;
 #   File > Import > LipSync Mouth Cues (.tsv, .json, .xml, .dat)
 #       a 2D mouth: one image strip per cue in the Video Sequencer, from a folder of drawings
 #       named after the shapes (A.png ... H.png, X.png, or Preston Blair's names: MBP.png,
@@ -157,7 +159,7 @@ def _add_sound(scene, sound_file):
     return strip
 
 
-def import_controls(context, path, obj=None):
+def import_controls(context, path, obj=None, jaw_bone="jaw", jaw_degrees=20.0):
     """Keys the controls of `path` on `obj` (default: the active object); returns the keys set."""
     data = read_controls(path)
     scene = context.scene
@@ -180,6 +182,15 @@ def import_controls(context, path, obj=None):
                 block.value = row[k]
                 block.keyframe_insert("value", frame=frame)
                 keys += 1
+    pose = obj.pose if obj.type == "ARMATURE" else None
+    jaw = pose.bones.get(jaw_bone) if pose is not None and jaw_bone else None
+    if jaw is not None and "jawOpen" in data["names"]:
+        k = data["names"].index("jawOpen")
+        jaw.rotation_mode = "XYZ"
+        for t, row in zip(data["times"], data["values"]):
+            jaw.rotation_euler[0] = math.radians(jaw_degrees) * row[k]
+            jaw.keyframe_insert("rotation_euler", index=0, frame=_frame_of(scene, t))
+            keys += 1
     if data["times"]:
         scene.frame_end = max(scene.frame_end, _frame_of(scene, data["times"][-1]))
     _add_sound(scene, data["soundFile"])
@@ -238,10 +249,14 @@ if bpy is not None:
         bl_label = "Import LipSync Animation Controls"
         bl_options = {"REGISTER", "UNDO"}
         filter_glob: StringProperty(default="*.json;*.csv", options={"HIDDEN"})
+        jaw_bone: StringProperty(name="Jaw bone", default="jaw",
+                                 description="The armature's bone that jawOpen turns about its X axis")
+        jaw_degrees: FloatProperty(name="Jaw angle", default=20.0, min=0.0, max=90.0,
+                                   description="Degrees the jaw bone turns at jawOpen = 1")
 
         def execute(self, context):
             try:
-                keys = import_controls(context, self.filepath)
+                keys = import_controls(context, self.filepath, jaw_bone=self.jaw_bone, jaw_degrees=self.jaw_degrees)
             except (LipsyncFileError, OSError, KeyError, ValueError) as e:
                 self.report({"ERROR"}, str(e))
                 return {"CANCELLED"}

@@ -60,9 +60,8 @@
 namespace lipsync::studio {
 
 MainWindow::MainWindow(QWidget *parent)
-    : QMainWindow(parent), m_context(new StudioContext(this)), m_undo(m_context->undoStack()),
-      m_runner(m_context->taskRunner()), m_document(m_context->document()), m_modelStore(m_context->modelStore()),
-      m_actions(std::make_unique<StudioActions>(this, m_undo)), m_playback(m_context->playback())
+    : QMainWindow(parent), m_context(new StudioContext(this)),
+      m_actions(std::make_unique<StudioActions>(this, m_context->undoStack()))
 {
     // First, so the window's own views show a frame before the panels hear of it.
     connect(m_context, &StudioContext::currentFrameChanged, this, &MainWindow::showFrame);
@@ -101,41 +100,41 @@ MainWindow::MainWindow(QWidget *parent)
     menuBar()->insertMenu(top.isEmpty() ? nullptr : top.last(), m_faces->menu()); // before Help
     m_models->setBuildAamAction(m_faces->buildAamAction());
     m_preview->attach(m_context);
-    m_taskStatus = new TaskStatusWidget(m_runner, this);
+    m_taskStatus = new TaskStatusWidget(m_context->taskRunner(), this);
     m_activeModels = new QLabel(this);
     m_activeModels->setObjectName(QStringLiteral("activeModels"));
     statusBar()->addPermanentWidget(m_activeModels);
     statusBar()->addPermanentWidget(m_taskStatus);
 
-    connect(m_document, &ProjectDocument::documentReset, this, &MainWindow::onDocumentReset);
-    connect(m_document, &ProjectDocument::locationChanged, this, &MainWindow::updateTitle);
-    connect(m_document, &ProjectDocument::sequencesRemoved, this, &MainWindow::onSequencesRemoved);
-    connect(m_modelStore, &ModelStore::writeFailed, this, [this](const QString &problems) {
+    connect(m_context->document(), &ProjectDocument::documentReset, this, &MainWindow::onDocumentReset);
+    connect(m_context->document(), &ProjectDocument::locationChanged, this, &MainWindow::updateTitle);
+    connect(m_context->document(), &ProjectDocument::sequencesRemoved, this, &MainWindow::onSequencesRemoved);
+    connect(m_context->modelStore(), &ModelStore::writeFailed, this, [this](const QString &problems) {
         ErrorReporter::report(this, tr("Models could not be written into the project's folder."), QString(), problems);
     });
-    connect(m_document, &ProjectDocument::editRefused, this, [this](const QString &edit, const QString &why) {
+    connect(m_context->document(), &ProjectDocument::editRefused, this, [this](const QString &edit, const QString &why) {
         statusBar()->showMessage(tr("%1 was not applied: it would leave the project unsaveable (%2).").arg(edit, why),
                                  15000);
     });
-    connect(m_document, &ProjectDocument::modelsChanged, this, [this] {
-        m_models->setProject(m_document->project());
+    connect(m_context->document(), &ProjectDocument::modelsChanged, this, [this] {
+        m_models->setProject(m_context->document()->project());
         updateActiveModels();
     });
-    connect(m_document, &ProjectDocument::documentReset, this, &MainWindow::updateActiveModels);
-    connect(m_document, &ProjectDocument::sequenceChanged, this, [this](int row) {
-        if (row == currentSequence() && media()) // "Landmarks: n of m frames"
-            m_details->showSequence(m_document->sequence(row), media()->mediaPath, *media());
+    connect(m_context->document(), &ProjectDocument::documentReset, this, &MainWindow::updateActiveModels);
+    connect(m_context->document(), &ProjectDocument::sequenceChanged, this, [this](int row) {
+        if (row == m_context->currentSequence() && m_context->media()) // "Landmarks: n of m frames"
+            m_details->showSequence(m_context->document()->sequence(row), m_context->media()->mediaPath, *m_context->media());
     });
-    connect(m_undo, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(m_context->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(m_transport, &TransportBar::frameRequested, this, &MainWindow::setCurrentFrame);
-    connect(m_playback, &PlaybackController::frameReached, this, [this](int frame) {
-        if (media() && m_playback->mediaPath() == media()->mediaPath) // not the preview's new speech
+    connect(m_context->playback(), &PlaybackController::frameReached, this, [this](int frame) {
+        if (m_context->media() && m_context->playback()->mediaPath() == m_context->media()->mediaPath) // not the preview's new speech
             setCurrentFrame(frame);
     });
-    connect(m_playback, &PlaybackController::playingSilently, this, [this](const QString &why) {
+    connect(m_context->playback(), &PlaybackController::playingSilently, this, [this](const QString &why) {
         statusBar()->showMessage(tr("Playing without sound: %1.").arg(why), 10000);
     });
-    connect(m_playback, &PlaybackController::playingChanged, this, [this](bool playing) {
+    connect(m_context->playback(), &PlaybackController::playingChanged, this, [this](bool playing) {
         m_actions->playPause->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
     });
 
@@ -149,12 +148,12 @@ MainWindow::MainWindow(QWidget *parent)
 MainWindow::~MainWindow()
 {
     // Workers must be gone before the views their results would reach.
-    m_runner->cancelAll();
-    m_runner->waitForAll();
+    m_context->taskRunner()->cancelAll();
+    m_context->taskRunner()->waitForAll();
     // QWidget's destructor deletes the undo stack after this one has run, and a dirty stack emits
     // cleanChanged while it dies — into updateTitle() of a MainWindow that is no longer one
     // (UBSan: downcast of a QWidget to MainWindow, in every GUI test that closes an edited window).
-    disconnect(m_undo, nullptr, this, nullptr);
+    disconnect(m_context->undoStack(), nullptr, this, nullptr);
 }
 
 void MainWindow::addGeneratedFaceMenu(QMenu *view)
@@ -220,7 +219,7 @@ void MainWindow::createDocks()
         return dock;
     };
 
-    m_sequenceModel = new SequenceListModel(m_document, this);
+    m_sequenceModel = new SequenceListModel(m_context->document(), this);
     m_sequenceView = new QTableView(this);
     m_sequenceView->setObjectName(QStringLiteral("sequenceView"));
     m_sequenceView->setModel(m_sequenceModel);
@@ -273,7 +272,7 @@ void MainWindow::updateActiveModels()
 {
     // The AAM and the dynamic models the project uses now (the latest reference of each kind,
     // Project::model), always in view: undo and redo of Build AAM and Train change them.
-    const Project &project = m_document->project();
+    const Project &project = m_context->document()->project();
     QStringList dynamic;
     for (const QString &kind : ModelKinds::ids())
         if (project.model(kind.toStdString()))
@@ -282,7 +281,7 @@ void MainWindow::updateActiveModels()
     const QString text = tr("AAM: %1 · Models: %2")
                              .arg(aam ? QString::fromStdString(aam->name) : tr("none"),
                                   dynamic.isEmpty() ? tr("none trained") : dynamic.join(QStringLiteral(", ")));
-    m_activeModels->setText(m_document->isOpen() ? text : QString());
+    m_activeModels->setText(m_context->document()->isOpen() ? text : QString());
     m_activeModels->setToolTip(tr("The appearance model and the dynamic models the project uses now"));
 }
 
@@ -329,8 +328,8 @@ void MainWindow::createMenus()
     m_export = new ExportMenu(m_context, file, this);
     file->addSeparator();
     file->addAction(a.quit);
-    m_files = new ProjectFiles(m_document, this, recent, m_runner);
-    m_files->autosave()->watch(m_runner);
+    m_files = new ProjectFiles(m_context->document(), this, recent, m_context->taskRunner());
+    m_files->autosave()->watch(m_context->taskRunner());
 
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
     edit->addAction(a.undo);
@@ -406,19 +405,19 @@ void MainWindow::createMenus()
     connect(a.save, &QAction::triggered, m_files, &ProjectFiles::save);
     connect(a.saveAs, &QAction::triggered, m_files, &ProjectFiles::saveAs);
     connect(a.quit, &QAction::triggered, this, &QWidget::close);
-    connect(a.previousFrame, &QAction::triggered, this, [this] { setCurrentFrame(currentFrame() - 1); });
-    connect(a.nextFrame, &QAction::triggered, this, [this] { setCurrentFrame(currentFrame() + 1); });
+    connect(a.previousFrame, &QAction::triggered, this, [this] { setCurrentFrame(m_context->currentFrame() - 1); });
+    connect(a.nextFrame, &QAction::triggered, this, [this] { setCurrentFrame(m_context->currentFrame() + 1); });
     connect(a.firstFrame, &QAction::triggered, this, [this] { setCurrentFrame(0); });
     connect(a.lastFrame, &QAction::triggered, this, [this] {
-        if (media())
-            setCurrentFrame(media()->frameCount() - 1);
+        if (m_context->media())
+            setCurrentFrame(m_context->media()->frameCount() - 1);
     });
     connect(a.playPause, &QAction::triggered, this, &MainWindow::togglePlayback);
     connect(a.previousSequence, &QAction::triggered, this, [this] {
-        selectSequence(std::max(0, (m_pendingRow >= 0 ? m_pendingRow : currentSequence()) - 1));
+        selectSequence(std::max(0, (m_pendingRow >= 0 ? m_pendingRow : m_context->currentSequence()) - 1));
     });
     connect(a.nextSequence, &QAction::triggered, this, [this] {
-        selectSequence(std::min(m_document->sequenceCount() - 1, (m_pendingRow >= 0 ? m_pendingRow : currentSequence()) + 1));
+        selectSequence(std::min(m_context->document()->sequenceCount() - 1, (m_pendingRow >= 0 ? m_pendingRow : m_context->currentSequence()) + 1));
     });
     connect(a.fitFrame, &QAction::triggered, m_frameView, &FrameView::fitToView);
     connect(a.about, &QAction::triggered, this, &MainWindow::showAbout);
@@ -428,7 +427,7 @@ void MainWindow::clearSequence()
 {
     if (m_loadTask)
         m_loadTask->cancel();
-    m_playback->pause();
+    m_context->playback()->pause();
     m_context->clearCurrentSequence();
     m_pendingRow = -1;
     m_frameView->setImage({});
@@ -445,10 +444,10 @@ void MainWindow::onDocumentReset()
 {
     // A new document: drop the old one's media and any load still running for it.
     clearSequence();
-    m_models->setProject(m_document->project());
+    m_models->setProject(m_context->document()->project());
     m_sequenceView->resizeColumnsToContents();
     m_sequenceView->horizontalHeader()->setStretchLastSection(true);
-    if (m_document->sequenceCount() > 0)
+    if (m_context->document()->sequenceCount() > 0)
         selectSequence(0);
 }
 
@@ -457,7 +456,7 @@ void MainWindow::onSequencesRemoved(int first)
     // The rows before `first` stay where they were. When the sequence shown (or loading) was
     // among the removed ones, the panels let it go (sequenceLoaded without media: none shown)
     // and the last remaining sequence takes its place.
-    if (currentSequence() < first && m_pendingRow < first)
+    if (m_context->currentSequence() < first && m_pendingRow < first)
         return;
     clearSequence();
     m_context->announceSequenceLoaded();
@@ -466,7 +465,7 @@ void MainWindow::onSequencesRemoved(int first)
 
 void MainWindow::selectSequence(int row)
 {
-    if (row < 0 || row >= m_document->sequenceCount())
+    if (row < 0 || row >= m_context->document()->sequenceCount())
         return;
     const QModelIndex index = m_sequenceModel->index(row, 0);
     if (m_sequenceView->currentIndex().row() != row || !m_sequenceView->selectionModel()->isRowSelected(row))
@@ -482,15 +481,15 @@ void MainWindow::onSelectionChanged()
     if (rows.isEmpty())
         return;
     const int row = rows.first().row();
-    if (row == m_pendingRow || (row == currentSequence() && m_pendingRow < 0))
+    if (row == m_pendingRow || (row == m_context->currentSequence() && m_pendingRow < 0))
         return;
     if (m_loadTask)
         m_loadTask->cancel(); // superseded: its result must not arrive after this one's
-    m_playback->pause();
+    m_context->playback()->pause();
     m_pendingRow = row;
-    const Sequence &s = m_document->sequence(row);
-    SequenceSource source{QString::fromStdString(s.id), m_document->mediaPath(row), s.frameRate};
-    Task *task = SequenceLoader::start(*m_runner, source, [this, row](std::shared_ptr<const SequenceMedia> media) {
+    const Sequence &s = m_context->document()->sequence(row);
+    SequenceSource source{QString::fromStdString(s.id), m_context->document()->mediaPath(row), s.frameRate};
+    Task *task = SequenceLoader::start(*m_context->taskRunner(), source, [this, row](std::shared_ptr<const SequenceMedia> media) {
         applyMedia(row, std::move(media));
     });
     m_loadTask = task;
@@ -508,9 +507,9 @@ void MainWindow::onLoadFinished(Task *task, const QString &mediaPath)
         return; // superseded by a newer load
     // Canceled or failed: the views keep the sequence they showed; so does the list.
     m_pendingRow = -1;
-    if (currentSequence() >= 0) {
+    if (m_context->currentSequence() >= 0) {
         const QSignalBlocker block(m_sequenceView->selectionModel());
-        m_sequenceView->selectionModel()->setCurrentIndex(m_sequenceModel->index(currentSequence(), 0),
+        m_sequenceView->selectionModel()->setCurrentIndex(m_sequenceModel->index(m_context->currentSequence(), 0),
                                                           QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
         m_sequenceView->viewport()->update();
     } else {
@@ -521,15 +520,15 @@ void MainWindow::onLoadFinished(Task *task, const QString &mediaPath)
 
 void MainWindow::applyMedia(int row, std::shared_ptr<const SequenceMedia> media)
 {
-    if (row >= m_document->sequenceCount())
+    if (row >= m_context->document()->sequenceCount())
         return;
-    const Sequence &s = m_document->sequence(row);
+    const Sequence &s = m_context->document()->sequence(row);
     m_pendingRow = -1;
     m_context->setCurrentSequence(row, std::move(media));
-    const std::shared_ptr<const SequenceMedia> shown = this->media();
+    const std::shared_ptr<const SequenceMedia> shown = m_context->media();
     const int frames = shown->frameCount();
     m_transport->setClock(shown->clock);
-    m_playback->setSequence(shown->mediaPath, shown->clock);
+    m_context->playback()->setSequence(shown->mediaPath, shown->clock);
 
     showChart(); // the timeline shows the media on sequenceLoaded
     m_frameView->setPlaceholderText(shown->audioOnly ? tr("Sound only: no video to show")
@@ -547,7 +546,7 @@ void MainWindow::applyMedia(int row, std::shared_ptr<const SequenceMedia> media)
 
 void MainWindow::showChart()
 {
-    const std::shared_ptr<const SequenceMedia> shown = media();
+    const std::shared_ptr<const SequenceMedia> shown = m_context->media();
     m_chart->clearSeries();
     m_chart->setTitle(tr("Audio energy of %1").arg(shown->sequenceId));
     m_chart->setAxisTitles(tr("time (s)"), tr("RMS per video frame"));
@@ -566,33 +565,18 @@ void MainWindow::setCurrentFrame(int frame)
 
 void MainWindow::showFrame(int frame)
 {
-    const std::shared_ptr<const SequenceMedia> shown = media();
+    const std::shared_ptr<const SequenceMedia> shown = m_context->media();
     if (!shown || frame < 0 || frame >= shown->frameCount())
         return;
     const QImage &image = shown->frames[frame];
     m_frameView->setImage(image);
-    const Sequence &s = m_document->sequence(currentSequence());
+    const Sequence &s = m_context->document()->sequence(m_context->currentSequence());
     const auto it = s.landmarks.find(frame);
     m_frameView->setLandmarks(it != s.landmarks.end() ? std::optional<LandmarkSet>(it->second) : std::nullopt);
     m_preview->setFrame(image, tr("%1 — frame %2 of %3").arg(shown->sequenceId).arg(frame + 1).arg(shown->frameCount()));
     m_transport->setFrame(frame);
     waveformView()->setCursorTime(shown->clock.centre(frame));
     m_chart->setCursor(shown->clock.centre(frame));
-}
-
-int MainWindow::currentSequence() const
-{
-    return m_context->currentSequence();
-}
-
-int MainWindow::currentFrame() const
-{
-    return m_context->currentFrame();
-}
-
-std::shared_ptr<const SequenceMedia> MainWindow::media() const
-{
-    return m_context->media();
 }
 
 void MainWindow::togglePlayback()
@@ -603,17 +587,17 @@ void MainWindow::togglePlayback()
 void MainWindow::updateTitle()
 {
     QString title = tr("LipSync Studio");
-    if (m_document->isOpen()) {
-        QString name = QString::fromStdString(m_document->project().name);
+    if (m_context->document()->isOpen()) {
+        QString name = QString::fromStdString(m_context->document()->project().name);
         if (name.isEmpty())
-            name = QFileInfo(m_document->folder()).fileName();
+            name = QFileInfo(m_context->document()->folder()).fileName();
         title = name + QStringLiteral("[*]");
-        if (m_document->isReadOnly())
+        if (m_context->document()->isReadOnly())
             title += tr(" (bundled demo, read-only)");
         title += QStringLiteral(" — ") + tr("LipSync Studio");
     }
     setWindowTitle(title);
-    setWindowModified(m_document->isModified());
+    setWindowModified(m_context->document()->isModified());
 }
 
 void MainWindow::showAbout()
@@ -658,11 +642,11 @@ void MainWindow::closeEvent(QCloseEvent *event)
         event->ignore();
         return;
     }
-    m_playback->pause();
+    m_context->playback()->pause();
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
-    m_runner->cancelAll();
+    m_context->taskRunner()->cancelAll();
     event->accept();
 }
 

@@ -55,19 +55,15 @@ public:
     explicit MainWindow(QWidget *parent = nullptr);
     ~MainWindow() override;
 
+    // The document, its undo stack, the task runner, the models, the player and the current
+    // sequence and frame: the context's (every panel's view of them).
     StudioContext *context() const { return m_context; }
     ProjectFiles *files() const { return m_files; }
-    ProjectDocument *document() const { return m_document; }
-    // The AAMs and dynamic models the project's references point at (built, trained or loaded).
-    ModelStore *modelStore() const { return m_modelStore; }
-    QUndoStack *undoStack() const { return m_undo; }
-    TaskRunner *taskRunner() const { return m_runner; }
     TaskStatusWidget *taskStatus() const { return m_taskStatus; }
     QTableView *sequenceView() const { return m_sequenceView; }
     FrameView *frameView() const { return m_frameView; }
     WaveformView *waveformView() const;
     LineChartView *chartView() const { return m_chart; }
-    PlaybackController *playback() const { return m_playback; }
     // Shows the window at the last session's geometry if that fits the screen, else maximised.
     void showAsLastTime();
     PreviewPanel *preview() const { return m_preview; }
@@ -81,11 +77,6 @@ public:
     // context menu).
     TranscriptProposer *transcriptProposer() const { return m_proposer; }
     TimelinePanel *timeline() const { return m_timeline; }
-
-    int currentSequence() const;
-    int currentFrame() const;
-    // The media shown now (null before the first sequence has loaded).
-    std::shared_ptr<const SequenceMedia> media() const;
 
 public slots:
     void selectSequence(int row);
@@ -125,11 +116,6 @@ private:
     void restoreSettings();
 
     StudioContext *m_context;
-    // The context's parts, for brevity.
-    QUndoStack *m_undo;
-    TaskRunner *m_runner;
-    ProjectDocument *m_document;
-    ModelStore *m_modelStore;
     std::unique_ptr<StudioActions> m_actions;
     ProjectFiles *m_files = nullptr;
     SequenceListModel *m_sequenceModel = nullptr;
@@ -146,7 +132,6 @@ private:
     ModelsPanel *m_models = nullptr;
     TaskStatusWidget *m_taskStatus = nullptr;
     QLabel *m_activeModels = nullptr; // status bar: the AAM and dynamic models in use
-    PlaybackController *m_playback;
     FacesController *m_faces = nullptr;
     ExportMenu *m_export = nullptr;
     LongRecordingImporter *m_importer = nullptr;

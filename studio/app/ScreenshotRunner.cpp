@@ -1,6 +1,7 @@
 #include "app/ScreenshotRunner.h"
 
 #include "app/MainWindow.h"
+#include "context/StudioContext.h"
 #include "tasks/TaskRunner.h"
 
 #include <QCoreApplication>
@@ -25,7 +26,7 @@ void ScreenshotRunner::start()
 {
     connect(m_window, &MainWindow::sequenceLoadEnded, this, &ScreenshotRunner::waitForTasks);
     // Nothing loading (the project failed to open or has no sequences): shoot as it is.
-    if (m_window->taskRunner()->runningCount() == 0)
+    if (m_window->context()->taskRunner()->runningCount() == 0)
         QTimer::singleShot(0, this, &ScreenshotRunner::waitForTasks);
     // Never hang a headless run.
     QTimer::singleShot(kTimeoutMs, this, [] {
@@ -42,7 +43,7 @@ void ScreenshotRunner::waitForTasks()
     m_waiting = true;
     auto *poll = new QTimer(this);
     connect(poll, &QTimer::timeout, this, [this, poll] {
-        if (m_window->taskRunner()->runningCount() > 0)
+        if (m_window->context()->taskRunner()->runningCount() > 0)
             return;
         poll->stop();
         poll->deleteLater();
@@ -58,7 +59,7 @@ void ScreenshotRunner::shoot()
         QCoreApplication::exit(1);
         return;
     }
-    QCoreApplication::exit(m_window->media() ? 0 : 1);
+    QCoreApplication::exit(m_window->context()->media() ? 0 : 1);
 }
 
 } // namespace lipsync::studio

@@ -4,12 +4,14 @@
 # imports a controls file and a cues file written by `lipsync export`, and checks that:
 #  - the scene runs at the file's frame rate and the sound is in the Sequencer at the first frame;
 #  - every shape key of a control is keyed on every frame with the file's value;
-#  - the armature gets the controls as keyed custom properties;
+#  - an armature's jaw bone turns by jawOpen, and it gets the controls as keyed custom properties;
 #  - the cues become one image strip per drawn cue and a constant "lipsync_mouth" curve whose
 #    value at every cue's start is that cue's shape;
+#  - File > Import's operators run;
 #  - a file that is not LipSync's is refused with its name.
 # Exits 1 on the first failed check (blender --python-exit-code 1).
 import importlib.util
+import math
 import os
 import sys
 import tempfile
@@ -58,13 +60,20 @@ check(face.data.shape_keys.animation_data.action is not None, "shape key action"
 check(not any(c.data_path == 'key_blocks["unrelated"].value' for c in face.data.shape_keys.animation_data.action.fcurves),
       "a shape key the file does not name is left alone")
 
-# An armature: the controls as keyed custom properties for drivers.
+# An armature with a jaw bone: jawOpen turns it; the controls as keyed custom properties for drivers.
 bpy.ops.object.armature_add()
 rig = context.active_object
-la.import_controls(context, controls_path, rig)
-mid = len(data["times"]) // 2
-scene.frame_set(la._frame_of(scene, data["times"][mid]))
-check(abs(rig["lipsync_jawOpen"] - data["values"][mid][names.index("jawOpen")]) < 1e-5, "armature property")
+bpy.ops.object.mode_set(mode="EDIT")
+rig.data.edit_bones[0].name = "jaw"
+bpy.ops.object.mode_set(mode="OBJECT")
+la.import_controls(context, controls_path, rig, jaw_degrees=30.0)
+jaw_column = names.index("jawOpen")
+for f in (len(data["times"]) // 3, len(data["times"]) // 2):
+    scene.frame_set(la._frame_of(scene, data["times"][f]))
+    check(abs(rig["lipsync_jawOpen"] - data["values"][f][jaw_column]) < 1e-5, "armature property")
+    expected = math.radians(30.0) * data["values"][f][jaw_column]
+    check(abs(rig.pose.bones["jaw"].rotation_euler[0] - expected) < 1e-5,
+          f"jaw bone at frame {scene.frame_current}: {rig.pose.bones['jaw'].rotation_euler[0]} vs {expected}")
 
 # Cues as drawings: a folder of nine tiny images named after the shapes.
 drawings = tempfile.mkdtemp()
@@ -86,6 +95,12 @@ check(all(p.interpolation == "CONSTANT" for p in curve.keyframe_points), "consta
 for start, end, shape in cue_data["cues"]:
     first = la._frame_of(scene, start)
     check(round(curve.evaluate(first)) == shape, f"shape at frame {first}")
+
+# The operators of File > Import, as a user runs them.
+context.view_layer.objects.active = face
+check(bpy.ops.lipsync.import_controls(filepath=controls_path) == {"FINISHED"}, "the controls operator")
+check(bpy.ops.lipsync.import_cues(filepath=cues_path, drawings=drawings) == {"FINISHED"}, "the cues operator")
+check(hasattr(bpy.types, "LIPSYNC_OT_import_controls"), "registered")
 
 # Not LipSync's: refused with its name.
 bad = os.path.join(drawings, "bad.json")

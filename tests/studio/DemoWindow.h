@@ -7,6 +7,7 @@
 #include "app/SurfaceFormat.h"
 #include "context/ErrorReporter.h"
 #include "context/PlaybackController.h"
+#include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/TimelinePanel.h"
@@ -46,7 +47,7 @@ inline bool copyFolder(const QString &from, const QString &to)
 // Waits until the window's background tasks (training, tracking, export) have finished.
 inline void waitForTasks(MainWindow *window, int timeoutMs = 120000)
 {
-    QTRY_COMPARE_WITH_TIMEOUT(window->taskRunner()->runningCount(), 0, timeoutMs);
+    QTRY_COMPARE_WITH_TIMEOUT(window->context()->taskRunner()->runningCount(), 0, timeoutMs);
 }
 
 // Creates `window`. A failed check fails the calling test: callers return when
@@ -62,7 +63,7 @@ inline void openDemoWindow(MainWindow *&window)
     window->activateWindow();
     QVERIFY(QTest::qWaitForWindowActive(window));
     QVERIFY(window->files()->openDemo());
-    QTRY_VERIFY_WITH_TIMEOUT(window->media() != nullptr, 60000);
+    QTRY_VERIFY_WITH_TIMEOUT(window->context()->media() != nullptr, 60000);
     waitForTasks(window, 60000);
 }
 
@@ -71,9 +72,9 @@ inline void openDemoWindow(MainWindow *&window)
 inline void openProjectFolder(MainWindow *window, const QString &folder)
 {
     QVERIFY(window->files()->open(folder));
-    QTRY_VERIFY_WITH_TIMEOUT(window->media() != nullptr, 60000);
+    QTRY_VERIFY_WITH_TIMEOUT(window->context()->media() != nullptr, 60000);
     waitForTasks(window);
-    QVERIFY(!window->document()->isReadOnly());
+    QVERIFY(!window->context()->document()->isReadOnly());
 }
 
 // The demo window, audio playback off, then the project in `folder` opened in it (openProjectFolder).
@@ -83,7 +84,7 @@ inline void openWindowOnProject(MainWindow *&window, const QString &folder)
     openDemoWindow(window);
     if (QTest::currentTestFailed())
         return;
-    window->playback()->setAudioEnabled(false);
+    window->context()->playback()->setAudioEnabled(false);
     openProjectFolder(window, folder);
 }
 
@@ -95,7 +96,7 @@ inline void openDemoTimeline(MainWindow *&window, TimelinePanel *&panel)
         return;
     panel = window->findChild<TimelinePanel *>();
     QVERIFY(panel);
-    window->playback()->setAudioEnabled(false);
+    window->context()->playback()->setAudioEnabled(false);
 }
 
 } // namespace lipsync::studio::testing

@@ -11,6 +11,7 @@
 #include "context/ModelKinds.h"
 #include "context/ModelStore.h"
 #include "context/SequenceMedia.h"
+#include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "preview/GeneratedFaces.h"
 #include "preview/PreviewPanel.h"
@@ -75,12 +76,12 @@ private slots:
         if (QTest::currentTestFailed())
             return;
         const std::unique_ptr<MainWindow> owner(window);
-        window->playback()->setAudioEnabled(false);
+        window->context()->playback()->setAudioEnabled(false);
         QVERIFY(window->files()->open(dir.path()));
-        QTRY_VERIFY_WITH_TIMEOUT(window->media() && window->media()->sequenceId == "speech", 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(window->context()->media() && window->context()->media()->sequenceId == "speech", 60000);
         testing::waitForTasks(window);
 
-        const auto media = window->media();
+        const auto media = window->context()->media();
         QVERIFY(media->audioOnly);
         // Its sound at 25 frames/s.
         QVERIFY(media->peaks);
@@ -99,13 +100,13 @@ private slots:
             }
         QVERIFY(detect > 0);
         window->setCurrentFrame(20);
-        QCOMPARE(window->currentFrame(), 20);
+        QCOMPARE(window->context()->currentFrame(), 20);
 
         // Aligned from the timeline.
-        QVERIFY(window->document()->sequence(0).phones.intervals.empty());
+        QVERIFY(window->context()->document()->sequence(0).phones.intervals.empty());
         timeline->alignSequence();
         testing::waitForTasks(window);
-        QVERIFY(!window->document()->sequence(0).phones.intervals.empty());
+        QVERIFY(!window->context()->document()->sequence(0).phones.intervals.empty());
 
         // A model of the demo's faces, generated for the sound on the mean face.
         ModelsPanel *models = window->modelsPanel();
@@ -113,7 +114,7 @@ private slots:
             models->kindCheck(k)->setChecked(k == QLatin1String("hmm"));
         QTest::mouseClick(models->trainButton(), Qt::LeftButton);
         testing::waitForTasks(window);
-        QVERIFY(window->modelStore()->dynamicModel(QStringLiteral("hmm")));
+        QVERIFY(window->context()->modelStore()->dynamicModel(QStringLiteral("hmm")));
         PreviewPanel *preview = window->preview();
         auto *tabs = window->findChild<QTabWidget *>();
         tabs->setCurrentWidget(preview);

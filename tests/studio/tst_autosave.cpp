@@ -8,6 +8,7 @@
 #include "app/ProjectFiles.h"
 #include "context/ErrorReporter.h"
 #include "DemoWindow.h"
+#include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "tasks/TaskRunner.h"
 
@@ -71,8 +72,8 @@ private:
         m_window->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_window));
     }
-    void idle() { QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 30000); }
-    ProjectDocument *doc() const { return m_window->document(); }
+    void idle() { QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 30000); }
+    ProjectDocument *doc() const { return m_window->context()->document(); }
     Autosave *autosave() const { return m_window->files()->autosave(); }
 
 private slots:
@@ -157,7 +158,7 @@ private slots:
         QVERIFY(m_window->files()->open(folder));
         idle();
         ProjectDocument *document = doc();
-        m_window->taskRunner()->start(QStringLiteral("an edit"), [document](Feedback &) {
+        m_window->context()->taskRunner()->start(QStringLiteral("an edit"), [document](Feedback &) {
             return TaskRunner::Commit([document] { document->requestTranscriptChange(0, QStringLiteral("by a task")); });
         });
         QTRY_VERIFY_WITH_TIMEOUT(QFileInfo::exists(autosaveManifest(folder)), 10000);
@@ -177,7 +178,7 @@ private slots:
         QVERIFY(doc()->requestTranscriptChange(0, QStringLiteral("on the timer")));
         QTRY_VERIFY_WITH_TIMEOUT(readAll(autosaveManifest(folder)).contains("on the timer"), 10000);
         // Undone back to the saved state: nothing to keep, the next tick removes it.
-        m_window->undoStack()->undo();
+        m_window->context()->undoStack()->undo();
         QTRY_VERIFY_WITH_TIMEOUT(!QFileInfo::exists(Autosave::folderFor(folder, false)), 10000);
     }
 
@@ -293,7 +294,7 @@ private slots:
             QCOMPARE(QFileInfo(doc()->mediaPath(0)).canonicalFilePath(),
                      QFileInfo(folder + QStringLiteral("/media/bbaf2n.mpg")).canonicalFilePath());
             idle();
-            QVERIFY(m_window->media()); // the clip loaded from the recovered path
+            QVERIFY(m_window->context()->media()); // the clip loaded from the recovered path
             QVERIFY(m_window->isWindowModified());
             QVERIFY(m_window->files()->save());
             QVERIFY(!doc()->isModified());

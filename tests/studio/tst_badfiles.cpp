@@ -13,6 +13,7 @@
 #include "app/ProjectFiles.h"
 #include "context/ErrorReporter.h"
 #include "context/SequenceMedia.h"
+#include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/TimelinePanel.h"
@@ -84,8 +85,8 @@ private:
     MainWindow *m_window = nullptr;
     QTemporaryDir m_dir;
     QString path(const QString &name) const { return m_dir.filePath(name); }
-    ProjectDocument *doc() const { return m_window->document(); }
-    void idle() { QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 60000); }
+    ProjectDocument *doc() const { return m_window->context()->document(); }
+    void idle() { QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 60000); }
 
 private slots:
     void initTestCase()
@@ -142,8 +143,8 @@ private slots:
         idle();
         // Either the load failed and said which file, or the readable part of the clip is shown.
         if (ErrorReporter::lastMessage() == kNothing) {
-            QVERIFY(m_window->media());
-            QVERIFY(m_window->media()->frameCount() > 0);
+            QVERIFY(m_window->context()->media());
+            QVERIFY(m_window->context()->media()->frameCount() > 0);
         } else {
             QVERIFY2(reportSays(QStringLiteral("could not be read"), clip), said().constData());
         }
@@ -155,11 +156,11 @@ private slots:
         const QString folder = path(QStringLiteral("silent"));
         makeProject(folder, path(QStringLiteral("in/silent.mp4")));
         QVERIFY(m_window->files()->open(folder));
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() != nullptr, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->media() != nullptr, 30000);
         idle();
-        QVERIFY(m_window->media()->frameCount() > 0);
-        QVERIFY(!m_window->media()->peaks);
-        QVERIFY(!m_window->media()->audioError.isEmpty());
+        QVERIFY(m_window->context()->media()->frameCount() > 0);
+        QVERIFY(!m_window->context()->media()->peaks);
+        QVERIFY(!m_window->context()->media()->audioError.isEmpty());
         QCOMPARE(ErrorReporter::lastMessage(), kNothing);
     }
 
@@ -190,7 +191,7 @@ private slots:
         const QString damaged = path(QStringLiteral("in/damaged.aligner"));
         QVERIFY(writeAll(damaged, aligner.left(aligner.size() / 3)));
         QVERIFY(m_window->files()->open(folder));
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() != nullptr, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->media() != nullptr, 30000);
         idle();
         qputenv("LIPSYNC_ALIGNER_MODEL", damaged.toUtf8());
         auto *timeline = m_window->findChild<TimelinePanel *>();

@@ -18,6 +18,7 @@
 #include "app/LongRecordingImporter.h"
 #include "app/MainWindow.h"
 #include "context/SequenceMedia.h"
+#include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "io/AudioDecoder.h"
 #include "io/Transcript.h"
@@ -94,7 +95,7 @@ private slots:
         testing::openWindowOnProject(m_window, m_project);
         if (QTest::currentTestFailed())
             return;
-        m_demoCount = m_window->document()->sequenceCount();
+        m_demoCount = m_window->context()->document()->sequenceCount();
         QCOMPARE(m_demoCount, 10);
     }
 
@@ -132,7 +133,7 @@ private slots:
 
     void cancelRightAfterTheStartAddsNothing()
     {
-        const int undoIndex = m_window->undoStack()->index();
+        const int undoIndex = m_window->context()->undoStack()->index();
         Task *task = importer()->start(m_recording, m_transcript, clipSplit());
         QVERIFY(task);
         QVERIFY(!importer()->action()->isEnabled()); // one import at a time
@@ -146,10 +147,10 @@ private slots:
     // document: dropped, and the clips removed.
     void cancelBeforeTheResultIsAppliedAddsNothing()
     {
-        const int undoIndex = m_window->undoStack()->index();
+        const int undoIndex = m_window->context()->undoStack()->index();
         Task *task = importer()->start(m_recording, m_transcript, clipSplit());
         QVERIFY(task);
-        m_window->taskRunner()->waitForAll(); // the worker is done; its result waits for the event loop
+        m_window->context()->taskRunner()->waitForAll(); // the worker is done; its result waits for the event loop
         QCOMPARE(clips().size(), 3);
         task->cancel();
         waitFor(task);
@@ -159,8 +160,8 @@ private slots:
 
     void importsThroughTheMenu()
     {
-        ProjectDocument *doc = m_window->document();
-        QUndoStack *undo = m_window->undoStack();
+        ProjectDocument *doc = m_window->context()->document();
+        QUndoStack *undo = m_window->context()->undoStack();
         const int undoIndex = undo->index();
         QVERIFY(!doc->isModified());
         bool filled = false;
@@ -220,9 +221,9 @@ private slots:
         QCOMPARE(undo->undoText(), QStringLiteral("Import talk.wav"));
         QVERIFY(doc->isModified());
         QVERIFY(m_window->isWindowModified());
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() && m_window->media()->sequenceId == QStringLiteral("talk_0001"),
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->media() && m_window->context()->media()->sequenceId == QStringLiteral("talk_0001"),
                                  60000);
-        QCOMPARE(m_window->currentSequence(), m_demoCount);
+        QCOMPARE(m_window->context()->currentSequence(), m_demoCount);
         QCOMPARE(m_window->sequenceView()->currentIndex().row(), m_demoCount);
         testing::waitForTasks(m_window);
         QVERIFY(action->isEnabled());
@@ -237,8 +238,8 @@ private slots:
         QCOMPARE(undo->index(), undoIndex);
         QVERIFY(!doc->isModified());
         const QString lastDemo = QString::fromStdString(doc->sequence(m_demoCount - 1).id);
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() && m_window->media()->sequenceId == lastDemo, 60000);
-        QCOMPARE(m_window->currentSequence(), m_demoCount - 1);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->media() && m_window->context()->media()->sequenceId == lastDemo, 60000);
+        QCOMPARE(m_window->context()->currentSequence(), m_demoCount - 1);
         QCOMPARE(clips().size(), 3); // kept for the redo
 
         undo->redo();
@@ -247,7 +248,7 @@ private slots:
         QCOMPARE(QString::fromStdString(doc->sequence(m_demoCount + 2).id), QStringLiteral("talk_0003"));
         QCOMPARE(list->data(list->index(m_demoCount + 2, 0)).toString(), QStringLiteral("talk_0003"));
         m_window->selectSequence(m_demoCount + 1);
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() && m_window->media()->sequenceId == QStringLiteral("talk_0002"),
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->media() && m_window->context()->media()->sequenceId == QStringLiteral("talk_0002"),
                                  60000);
         testing::waitForTasks(m_window);
 
@@ -262,8 +263,8 @@ private slots:
     // name the file and add nothing.
     void failuresNameTheFileAndAddNothing()
     {
-        const int undoIndex = m_window->undoStack()->index();
-        const int count = m_window->document()->sequenceCount();
+        const int undoIndex = m_window->context()->undoStack()->index();
+        const int count = m_window->context()->document()->sequenceCount();
         Task *again = importer()->start(m_recording, m_transcript, clipSplit());
         QVERIFY(again);
         waitFor(again);
@@ -278,8 +279,8 @@ private slots:
         QCOMPARE(task->state(), Task::State::Failed);
         QVERIFY2(task->errorMessage().contains(missing), qPrintable(task->errorMessage()));
         QVERIFY(ErrorReporter::lastMessage().contains(missing));
-        QCOMPARE(m_window->document()->sequenceCount(), count);
-        QCOMPARE(m_window->undoStack()->index(), undoIndex);
+        QCOMPARE(m_window->context()->document()->sequenceCount(), count);
+        QCOMPARE(m_window->context()->undoStack()->index(), undoIndex);
         QCOMPARE(clips().size(), 3); // the first import's, untouched
     }
 
@@ -295,10 +296,10 @@ private:
 
     void checkNothingAdded(int undoIndex)
     {
-        QCOMPARE(m_window->document()->sequenceCount(), m_demoCount);
+        QCOMPARE(m_window->context()->document()->sequenceCount(), m_demoCount);
         QCOMPARE(m_window->sequenceView()->model()->rowCount(), m_demoCount);
-        QCOMPARE(m_window->undoStack()->index(), undoIndex);
-        QVERIFY(!m_window->document()->isModified());
+        QCOMPARE(m_window->context()->undoStack()->index(), undoIndex);
+        QVERIFY(!m_window->context()->document()->isModified());
         QVERIFY(clips().isEmpty());
         QVERIFY(importer()->action()->isEnabled());
     }

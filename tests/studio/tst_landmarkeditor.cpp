@@ -15,6 +15,7 @@
 #include "build/ModesView.h"
 #include "context/ErrorReporter.h"
 #include "context/SequenceMedia.h"
+#include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "tasks/Task.h"
 #include "tasks/TaskRunner.h"
@@ -48,7 +49,7 @@ private:
     FrameView *view() const { return m_window->frameView(); }
     std::optional<LandmarkSet> landmarksAt(int frame) const
     {
-        const Sequence &s = m_window->document()->sequence(m_window->currentSequence());
+        const Sequence &s = m_window->context()->document()->sequence(m_window->context()->currentSequence());
         const auto it = s.landmarks.find(frame);
         return it != s.landmarks.end() ? std::optional<LandmarkSet>(it->second) : std::nullopt;
     }
@@ -78,7 +79,7 @@ private slots:
     {
         m_window->setCurrentFrame(5);
         QVERIFY(!landmarksAt(5));
-        QUndoStack *undo = m_window->undoStack();
+        QUndoStack *undo = m_window->context()->undoStack();
         const int before = undo->count();
         const QList<QPointF> targets{{150, 120}, {160, 115}, {170, 120}};
         for (const QPointF &t : targets)
@@ -95,12 +96,12 @@ private slots:
                      qPrintable(QStringLiteral("point %1 at %2,%3").arg(i).arg(p.x).arg(p.y)));
         }
         QCOMPARE(view()->nextUndefinedPoint(), 3);
-        QCOMPARE(m_window->document()->sequence(0).landmarks.size(), std::size_t(1));
+        QCOMPARE(m_window->context()->document()->sequence(0).landmarks.size(), std::size_t(1));
     }
 
     void dragIsOneUndoStepAndFixesThePoint()
     {
-        QUndoStack *undo = m_window->undoStack();
+        QUndoStack *undo = m_window->context()->undoStack();
         const LandmarkSet before = *landmarksAt(5);
         const LandmarkPoint p1 = before.points[1];
         const int count = undo->count();
@@ -128,7 +129,7 @@ private slots:
 
     void deleteUndefinesTheSelectedPoint()
     {
-        QUndoStack *undo = m_window->undoStack();
+        QUndoStack *undo = m_window->context()->undoStack();
         const LandmarkSet before = *landmarksAt(5);
         const LandmarkPoint p2 = before.points[2];
         QTest::mouseClick(view(), Qt::LeftButton, {}, widgetPoint(p2.x, p2.y)); // selects, places nothing
@@ -154,7 +155,7 @@ private slots:
             QCOMPARE(copy->points[std::size_t(i)].x, source.points[std::size_t(i)].x);
             QCOMPARE(copy->points[std::size_t(i)].isDefined(), source.points[std::size_t(i)].isDefined());
         }
-        m_window->undoStack()->undo();
+        m_window->context()->undoStack()->undo();
         QVERIFY(!landmarksAt(6));
         QVERIFY(!view()->landmarks());
 
@@ -171,13 +172,13 @@ private slots:
     void detectionGivesAutomaticPointsOnTheFace()
     {
         m_window->setCurrentFrame(10);
-        const int index = m_window->undoStack()->index();
+        const int index = m_window->context()->undoStack()->index();
         QVERIFY(waitFor(m_window->faces()->detectLandmarks()));
-        QCOMPARE(m_window->undoStack()->index(), index + 1);
+        QCOMPARE(m_window->context()->undoStack()->index(), index + 1);
         const std::optional<LandmarkSet> set = landmarksAt(10);
         QVERIFY(set);
         QVERIFY(set->isComplete());
-        const QImage &image = m_window->media()->frames[10];
+        const QImage &image = m_window->context()->media()->frames[10];
         double cx = 0, cy = 0;
         for (const LandmarkPoint &p : set->points) {
             QCOMPARE(p.state, PointState::Automatic);
@@ -199,22 +200,22 @@ private slots:
             m_window->grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("annotate-landmarks.png")));
             view()->fitToView();
         }
-        m_window->undoStack()->undo();
+        m_window->context()->undoStack()->undo();
         QVERIFY(!landmarksAt(10));
-        m_window->undoStack()->redo();
+        m_window->context()->undoStack()->redo();
         QVERIFY(landmarksAt(10));
 
         // N skips labelled frames: from 9, frame 10 is complete, 11 is not.
         m_window->setCurrentFrame(9);
         QTest::keyClick(m_window, Qt::Key_N);
-        QCOMPARE(m_window->currentFrame(), 11);
+        QCOMPARE(m_window->context()->currentFrame(), 11);
     }
 
     // Faces > Pick Frames to Label: diverse frames across the clips get automatic points in one
     // undo step, and Shift+W walks them, the most doubtful first, loading other clips on the way.
     void pickedFramesAreLabelledAndReviewedWorstFirst()
     {
-        ProjectDocument *doc = m_window->document();
+        ProjectDocument *doc = m_window->context()->document();
         auto labelled = [doc] {
             std::set<std::pair<std::string, int>> out;
             for (int row = 0; row < doc->sequenceCount(); ++row)
@@ -223,14 +224,14 @@ private slots:
             return out;
         };
         const auto before = labelled();
-        const int index = m_window->undoStack()->index();
-        const int startRow = m_window->currentSequence(), startFrame = m_window->currentFrame();
+        const int index = m_window->context()->undoStack()->index();
+        const int startRow = m_window->context()->currentSequence(), startFrame = m_window->context()->currentFrame();
         QVERIFY(m_window->faces()->pickFramesAction()->isEnabled());
         QVERIFY(!m_window->faces()->nextPickedAction()->isEnabled());
         // Every 15th frame a candidate (5 per clip): enough to spread over the clips, a third of
         // the default's work.
         QVERIFY(waitFor(m_window->faces()->pickFramesToLabel(12, 15), 300000));
-        QCOMPARE(m_window->undoStack()->index(), index + 1);
+        QCOMPARE(m_window->context()->undoStack()->index(), index + 1);
         const auto &queue = m_window->faces()->reviewQueue();
         QCOMPARE(int(queue.size()), 12);
         std::set<std::string> clips;
@@ -254,8 +255,8 @@ private slots:
         for (int k = 0; k < 2; ++k) {
             QTest::keyClick(m_window, Qt::Key_W, Qt::ShiftModifier);
             const std::string &id = queue[size_t(k)].sequenceId;
-            QTRY_COMPARE_WITH_TIMEOUT(doc->sequence(m_window->currentSequence()).id, id, 60000);
-            QTRY_COMPARE_WITH_TIMEOUT(m_window->currentFrame(), queue[size_t(k)].frame, 60000);
+            QTRY_COMPARE_WITH_TIMEOUT(doc->sequence(m_window->context()->currentSequence()).id, id, 60000);
+            QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->currentFrame(), queue[size_t(k)].frame, 60000);
             // Where in the queue and how doubtful, in the status bar.
             const QString status = m_window->statusBar()->currentMessage();
             QVERIFY2(status.startsWith(QStringLiteral("Picked frame %1 of 12").arg(k + 1)), qPrintable(status));
@@ -264,25 +265,25 @@ private slots:
         // One undo takes every picked frame's points away again (and leaves the demo as the
         // tests after this one expect it).
         QVERIFY(labelled().size() > before.size());
-        m_window->undoStack()->undo();
+        m_window->context()->undoStack()->undo();
         QCOMPARE(labelled(), before);
         m_window->selectSequence(startRow);
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->currentSequence(), startRow, 60000);
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() && m_window->currentFrame() >= 0, 60000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->currentSequence(), startRow, 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->media() && m_window->context()->currentFrame() >= 0, 60000);
         m_window->setCurrentFrame(startFrame);
     }
 
     void tracksWithTheProjectsAam()
     {
         // The demo references a shipped AAM: tracking loads it without building one.
-        ProjectDocument *doc = m_window->document();
+        ProjectDocument *doc = m_window->context()->document();
         bool hasAam = false;
         for (const ModelReference &m : doc->project().models)
             hasAam = hasAam || m.kind == "aam";
         if (!hasAam)
             QSKIP("the demo ships no AAM");
         const std::vector<ModelReference> models = doc->project().models;
-        const int index = m_window->undoStack()->index();
+        const int index = m_window->context()->undoStack()->index();
         QVERIFY(waitFor(m_window->faces()->trackSequences({4})));
         QVERIFY(m_window->faces()->model());
         QVERIFY(doc->project().models == models); // no AAM was built
@@ -290,8 +291,8 @@ private slots:
         QCOMPARE(int(s.features.rows()), s.frameCount);
         QCOMPARE(int(s.features.cols()), m_window->faces()->model()->combinedModes());
         QVERIFY(int(s.landmarks.size()) >= s.frameCount - 5);
-        QCOMPARE(m_window->undoStack()->index(), index + 1);
-        m_window->undoStack()->undo();
+        QCOMPARE(m_window->context()->undoStack()->index(), index + 1);
+        m_window->context()->undoStack()->undo();
         QVERIFY(doc->sequence(4).landmarks.empty());
     }
 
@@ -299,7 +300,7 @@ private slots:
     {
         // Label a few frames of the first clips with dlib's points of held-out frames of the same
         // speaker (tests/data/faces/grid): same camera, so near enough to train on.
-        ProjectDocument *doc = m_window->document();
+        ProjectDocument *doc = m_window->context()->document();
         const QDir data(QStringLiteral(LIPSYNC_TEST_DATA "/faces/grid"));
         const QStringList pts = data.entryList({QStringLiteral("*_22.pts")}, QDir::Files, QDir::Name);
         QVERIFY(pts.size() >= 6);
@@ -333,19 +334,19 @@ private slots:
         // W walks the worst-fitted frames.
         m_window->setCurrentFrame(0);
         QTest::keyClick(m_window, Qt::Key_W);
-        const int worst = m_window->currentFrame();
+        const int worst = m_window->context()->currentFrame();
         for (double e : errors)
             QVERIFY(e <= errors[std::size_t(worst)] || errors[std::size_t(worst)] < 0);
         QTest::keyClick(m_window, Qt::Key_W);
-        const int second = m_window->currentFrame();
+        const int second = m_window->context()->currentFrame();
         QVERIFY(second != worst);
         for (std::size_t f = 0; f < errors.size(); ++f)
             if (int(f) != worst && errors[std::size_t(worst)] >= 0)
                 QVERIFY(errors[f] <= errors[std::size_t(second)] || errors[std::size_t(second)] < 0);
 
         // Undo takes the whole track back in one step.
-        QCOMPARE(m_window->undoStack()->undoText(), QStringLiteral("Track bbaf2n"));
-        m_window->undoStack()->undo();
+        QCOMPARE(m_window->context()->undoStack()->undoText(), QStringLiteral("Track bbaf2n"));
+        m_window->context()->undoStack()->undo();
         QVERIFY(doc->sequence(0).features.rows() == featuresBefore.rows()
                 && doc->sequence(0).features.cols() == featuresBefore.cols());
         QVERIFY(featuresBefore.size() == 0 || doc->sequence(0).features == featuresBefore);
@@ -365,8 +366,8 @@ private slots:
 
         // Undoing Build AAM puts the project's previous AAM back in use everywhere (Modes of
         // Variation included); redo brings back the same built model, which exists in memory only.
-        QCOMPARE(m_window->undoStack()->undoText(), QStringLiteral("Build AAM %1").arg(QString::fromStdString(doc->project().models.back().name)));
-        m_window->undoStack()->undo();
+        QCOMPARE(m_window->context()->undoStack()->undoText(), QStringLiteral("Build AAM %1").arg(QString::fromStdString(doc->project().models.back().name)));
+        m_window->context()->undoStack()->undo();
         const ModelReference *previous = doc->project().model("aam");
         QVERIFY(previous);
         const auto restored = m_window->faces()->model();
@@ -378,7 +379,7 @@ private slots:
         QVERIFY(active);
         QVERIFY2(active->text().startsWith(QStringLiteral("AAM: %1 ").arg(QString::fromStdString(previous->name))),
                  qPrintable(active->text()));
-        m_window->undoStack()->redo();
+        m_window->context()->undoStack()->redo();
         QCOMPARE(m_window->faces()->model(), model);
         QVERIFY2(active->text().startsWith(
                      QStringLiteral("AAM: %1 ").arg(QString::fromStdString(doc->project().model("aam")->name))),
@@ -392,17 +393,17 @@ private slots:
         const auto rebuilt = m_window->faces()->model();
         QVERIFY(rebuilt && rebuilt != model);
         QVERIFY(doc->project().model("aam")->file != firstFile);
-        m_window->undoStack()->undo();
+        m_window->context()->undoStack()->undo();
         QCOMPARE(doc->project().model("aam")->file, firstFile);
         QCOMPARE(m_window->faces()->model(), model);
-        m_window->undoStack()->redo();
+        m_window->context()->undoStack()->redo();
         QCOMPARE(m_window->faces()->model(), rebuilt);
     }
 
     void fitErrorsSurviveReopening()
     {
         // The worst-fit queue comes from the project: saved, reopened, W still knows the worst frame.
-        ProjectDocument *doc = m_window->document();
+        ProjectDocument *doc = m_window->context()->document();
         const Sequence &first = doc->sequence(0);
         std::vector<double> errors(std::size_t(first.frameCount), 0.01);
         errors[40] = 0.3;
@@ -414,16 +415,16 @@ private slots:
         Project copy = doc->project();
         copy.saveAs(dir.path().toStdString());
         QVERIFY(m_window->files()->open(dir.path()));
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 60000);
-        QCOMPARE(m_window->document()->sequence(0).fitErrors, errors);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 60000);
+        QCOMPARE(m_window->context()->document()->sequence(0).fitErrors, errors);
         m_window->selectSequence(0);
         m_window->setCurrentFrame(0);
         QTest::keyClick(m_window, Qt::Key_W);
-        QCOMPARE(m_window->currentFrame(), 3); // no face ranks first
+        QCOMPARE(m_window->context()->currentFrame(), 3); // no face ranks first
         QTest::keyClick(m_window, Qt::Key_W);
-        QCOMPARE(m_window->currentFrame(), 40);
+        QCOMPARE(m_window->context()->currentFrame(), 40);
         QTest::keyClick(m_window, Qt::Key_W);
-        QCOMPARE(m_window->currentFrame(), 12);
+        QCOMPARE(m_window->context()->currentFrame(), 12);
     }
 };
 

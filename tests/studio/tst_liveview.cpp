@@ -26,6 +26,7 @@
 #include "build/ModelsPanel.h"
 #include "context/ModelKinds.h"
 #include "context/ModelStore.h"
+#include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "live/LiveController.h"
 #include "live/LiveView.h"
@@ -147,7 +148,7 @@ private slots:
 
     void saysToTrainAModelFirst()
     {
-        QVERIFY(m_window->modelStore()->aam());
+        QVERIFY(m_window->context()->modelStore()->aam());
         QVERIFY(controller()->trainedKinds().isEmpty());
         QVERIFY(!live()->startButton()->isEnabled());
         QVERIFY(!live()->saveButton()->isEnabled());
@@ -172,7 +173,7 @@ private slots:
             models->kindCheck(k)->setChecked(k == QLatin1String("hmm") || k == QLatin1String("dpds"));
         QTest::mouseClick(models->trainButton(), Qt::LeftButton);
         testing::waitForTasks(m_window);
-        QVERIFY(m_window->modelStore()->dynamicModel(QStringLiteral("dpds")));
+        QVERIFY(m_window->context()->modelStore()->dynamicModel(QStringLiteral("dpds")));
         QCOMPARE(controller()->trainedKinds().size(), 2);
         QCOMPARE(live()->modelCombo()->count(), 2);
         QCOMPARE(live()->chosenKind(), QStringLiteral("dpds"));
@@ -278,8 +279,8 @@ private slots:
 
     void savesTheSessionAsASequence()
     {
-        ProjectDocument *doc = m_window->document();
-        QUndoStack *undo = m_window->undoStack();
+        ProjectDocument *doc = m_window->context()->document();
+        QUndoStack *undo = m_window->context()->undoStack();
         const int count = doc->sequenceCount();
         const int undoIndex = undo->index();
         QSignalSpy saved(live(), &LiveView::sequenceSaved);
@@ -295,7 +296,7 @@ private slots:
         QCOMPARE(s.frameRate, 25.0);
         QVERIFY(s.transcript.empty());
         QCOMPARE(int(s.features.rows()), m_frames);
-        QCOMPARE(int(s.features.cols()), m_window->modelStore()->aam()->combinedModes());
+        QCOMPARE(int(s.features.cols()), m_window->context()->modelStore()->aam()->combinedModes());
         QVERIFY(s.features.allFinite());
         QVERIFY(!s.phones.isEmpty());
         QVERIFY(!s.phones.defect());
@@ -391,7 +392,7 @@ private slots:
     {
         if (!SphinxAligner::available({}))
             QSKIP("CMU Sphinx's US-English models are not installed (Debian package pocketsphinx-en-us)");
-        ModelStore *store = m_window->modelStore();
+        ModelStore *store = m_window->context()->modelStore();
         const AlignerChoice before = store->alignerChoice();
         QVERIFY(!before.isSphinx());
         const auto restore = qScopeGuard([store, before] { store->setAlignerChoice(before); });

@@ -19,6 +19,7 @@
 #include "context/StudioActions.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
+#include "export/ExportMenu.h"
 #include "tasks/Task.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/TimelinePanel.h"
@@ -32,6 +33,8 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QMediaDevices>
+#include <QMenuBar>
+#include <QMenu>
 #include <QScreen>
 #include <QSet>
 #include <QSettings>
@@ -66,11 +69,11 @@ private slots:
     void opensDemoProject()
     {
         QCOMPARE(m_window->sequenceView()->model()->rowCount(), 10);
-        QVERIFY(m_window->document()->isReadOnly());
-        QCOMPARE(m_window->currentSequence(), 0);
-        QCOMPARE(m_window->currentFrame(), 0);
-        QCOMPARE(m_window->media()->frameCount(), 75);
-        QVERIFY(m_window->media()->peaks);
+        QVERIFY(m_window->context()->document()->isReadOnly());
+        QCOMPARE(m_window->context()->currentSequence(), 0);
+        QCOMPARE(m_window->context()->currentFrame(), 0);
+        QCOMPARE(m_window->context()->media()->frameCount(), 75);
+        QVERIFY(m_window->context()->media()->peaks);
     }
 
     void frameViewShowsTheFrame()
@@ -98,25 +101,25 @@ private slots:
     {
         const StudioActions &a = m_window->actions();
         a.nextFrame->trigger();
-        QCOMPARE(m_window->currentFrame(), 1);
+        QCOMPARE(m_window->context()->currentFrame(), 1);
         a.lastFrame->trigger();
-        QCOMPARE(m_window->currentFrame(), 74);
+        QCOMPARE(m_window->context()->currentFrame(), 74);
         // The transport counts frames from 1, as every caption does; typing a frame goes there.
         auto *spin = m_window->findChild<TransportBar *>()->findChild<QSpinBox *>();
         QVERIFY(spin);
         QCOMPARE(spin->value(), 75);
         QCOMPARE(spin->maximum(), 75);
         spin->setValue(10);
-        QCOMPARE(m_window->currentFrame(), 9);
+        QCOMPARE(m_window->context()->currentFrame(), 9);
         a.lastFrame->trigger();
         a.nextFrame->trigger();
-        QCOMPARE(m_window->currentFrame(), 74); // clamped
+        QCOMPARE(m_window->context()->currentFrame(), 74); // clamped
         a.firstFrame->trigger();
-        QCOMPARE(m_window->currentFrame(), 0);
+        QCOMPARE(m_window->context()->currentFrame(), 0);
         QTest::keyClick(m_window, Qt::Key_Right);
-        QCOMPARE(m_window->currentFrame(), 1);
+        QCOMPARE(m_window->context()->currentFrame(), 1);
         QTest::keyClick(m_window, Qt::Key_Home);
-        QCOMPARE(m_window->currentFrame(), 0);
+        QCOMPARE(m_window->context()->currentFrame(), 0);
     }
 
     void nextSequenceLoadsIt()
@@ -124,34 +127,34 @@ private slots:
         QSignalSpy loaded(m_window->context(), &StudioContext::sequenceLoaded);
         m_window->actions().nextSequence->trigger();
         QTRY_COMPARE_WITH_TIMEOUT(loaded.count(), 1, 60000);
-        QCOMPARE(m_window->currentSequence(), 1);
-        QCOMPARE(m_window->media()->sequenceId, QStringLiteral("bgin3a"));
+        QCOMPARE(m_window->context()->currentSequence(), 1);
+        QCOMPARE(m_window->context()->media()->sequenceId, QStringLiteral("bgin3a"));
         QCOMPARE(m_window->sequenceView()->currentIndex().row(), 1);
     }
 
     void canceledLoadChangesNothing()
     {
-        const int before = m_window->currentSequence();
-        const auto media = m_window->media();
+        const int before = m_window->context()->currentSequence();
+        const auto media = m_window->context()->media();
         QSignalSpy ended(m_window, &MainWindow::sequenceLoadEnded);
         m_window->selectSequence(5);
-        QCOMPARE(m_window->taskRunner()->runningCount(), 1);
-        m_window->taskRunner()->cancelAll();
+        QCOMPARE(m_window->context()->taskRunner()->runningCount(), 1);
+        m_window->context()->taskRunner()->cancelAll();
         QTRY_COMPARE_WITH_TIMEOUT(ended.count(), 1, 60000);
         QCOMPARE(ended.first().first().toBool(), false);
-        QCOMPARE(m_window->currentSequence(), before);
-        QCOMPARE(m_window->media(), media);
+        QCOMPARE(m_window->context()->currentSequence(), before);
+        QCOMPARE(m_window->context()->media(), media);
         QCOMPARE(m_window->sequenceView()->currentIndex().row(), before);
     }
 
     void transcriptEditUndoRedo()
     {
         QAbstractItemModel *model = m_window->sequenceView()->model();
-        QUndoStack *undo = m_window->undoStack();
+        QUndoStack *undo = m_window->context()->undoStack();
         const QModelIndex cell = model->index(2, SequenceListModel::TranscriptColumn);
         const QString original = model->data(cell).toString();
         QVERIFY(!original.isEmpty());
-        QVERIFY(!m_window->document()->isModified());
+        QVERIFY(!m_window->context()->document()->isModified());
 
         QVERIFY(!model->setData(cell, original)); // no change, no command
         QCOMPARE(undo->count(), 0);
@@ -160,15 +163,15 @@ private slots:
         const QString first = QStringLiteral("bin green in n three again"); // whitespace simplified
         QCOMPARE(undo->count(), 2);
         QCOMPARE(model->data(cell).toString(), QStringLiteral("second edit"));
-        QVERIFY(m_window->document()->isModified());
+        QVERIFY(m_window->context()->document()->isModified());
 
         // Every step back (through the Edit menu's actions) and forward again.
         m_window->actions().undo->trigger();
         QCOMPARE(model->data(cell).toString(), first);
         QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier);
         QCOMPARE(model->data(cell).toString(), original);
-        QCOMPARE(QString::fromStdString(m_window->document()->sequence(2).transcript), original);
-        QVERIFY(!m_window->document()->isModified());
+        QCOMPARE(QString::fromStdString(m_window->context()->document()->sequence(2).transcript), original);
+        QVERIFY(!m_window->context()->document()->isModified());
         QVERIFY(!m_window->actions().undo->isEnabled());
         m_window->actions().redo->trigger();
         QCOMPARE(model->data(cell).toString(), first);
@@ -182,17 +185,17 @@ private slots:
 
     void playbackStepsFrames()
     {
-        PlaybackController *playback = m_window->playback();
+        PlaybackController *playback = m_window->context()->playback();
         playback->setAudioEnabled(false); // no sound device under Xvfb
         m_window->setCurrentFrame(0);
         m_window->actions().playPause->trigger();
         QVERIFY(playback->isPlaying());
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->currentFrame() >= 5, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->currentFrame() >= 5, 5000);
         QTest::keyClick(m_window, Qt::Key_Space);
         QVERIFY(!playback->isPlaying());
-        const int stopped = m_window->currentFrame();
+        const int stopped = m_window->context()->currentFrame();
         QTest::qWait(200);
-        QCOMPARE(m_window->currentFrame(), stopped);
+        QCOMPARE(m_window->context()->currentFrame(), stopped);
     }
 
     // At 1280 x 800 the timeline can be made tall enough for the spectrogram and the waveform
@@ -230,12 +233,23 @@ private slots:
         QCOMPARE(m_window->dockWidgetArea(timeline), Qt::BottomDockWidgetArea);
     }
 
+    // The window lays out the panels' menus: File ▸ Export is ExportMenu's (tst_exportmenu).
+    void exportMenuIsInTheFileMenu()
+    {
+        QMenu *file = nullptr;
+        for (QAction *a : m_window->menuBar()->actions())
+            if (a->menu() && a->menu()->actions().contains(m_window->exportMenu()->menu()->menuAction()))
+                file = a->menu();
+        QVERIFY(file);
+        QCOMPARE(file->title().remove(QLatin1Char('&')), QStringLiteral("File"));
+    }
+
     // Sound on and no audio device (Xvfb here): playback goes on and the status bar says why.
     void playbackWithoutADeviceSaysSo()
     {
         if (!QMediaDevices::defaultAudioOutput().isNull())
             QSKIP("this machine has an audio output device");
-        PlaybackController *playback = m_window->playback();
+        PlaybackController *playback = m_window->context()->playback();
         playback->setAudioEnabled(true);
         QSignalSpy silent(playback, &PlaybackController::playingSilently);
         m_window->setCurrentFrame(0);
@@ -245,7 +259,7 @@ private slots:
         QVERIFY(silent.first().first().toString().contains(QStringLiteral("no audio output device")));
         const QString shown = m_window->statusBar()->currentMessage();
         QVERIFY2(shown.startsWith(QStringLiteral("Playing without sound")), qPrintable(shown));
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->currentFrame() >= 3, 5000); // the picture still moves
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->currentFrame() >= 3, 5000); // the picture still moves
         m_window->actions().playPause->trigger();
         playback->setAudioEnabled(false);
     }
@@ -254,17 +268,17 @@ private slots:
     {
         QVERIFY(dir.isValid());
         const QString folder = dir.filePath(QStringLiteral("demo-copy"));
-        m_window->document()->saveTo(folder);
-        QVERIFY(!m_window->document()->isReadOnly());
-        QCOMPARE(m_window->document()->folder(), folder);
+        m_window->context()->document()->saveTo(folder);
+        QVERIFY(!m_window->context()->document()->isReadOnly());
+        QCOMPARE(m_window->context()->document()->folder(), folder);
         QVERIFY(QFileInfo::exists(folder + QStringLiteral("/project.json")));
-        const QString media = m_window->document()->mediaPath(0);
+        const QString media = m_window->context()->document()->mediaPath(0);
         QVERIFY2(media.startsWith(folder) && QFileInfo::exists(media), qPrintable(media));
 
         QVERIFY(m_window->files()->open(folder));
         QCOMPARE(m_window->sequenceView()->model()->rowCount(), 10);
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() && m_window->currentSequence() == 0, 60000);
-        QCOMPARE(m_window->media()->mediaPath, media);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->media() && m_window->context()->currentSequence() == 0, 60000);
+        QCOMPARE(m_window->context()->media()->mediaPath, media);
         // The next launch reopens it (the demo, once the demo was opened last).
         QCOMPARE(QDir(RecentProjects::lastSession()).canonicalPath(), QDir(folder).canonicalPath());
     }
@@ -272,21 +286,21 @@ private slots:
     void missingMediaIsReportedAndChangesNothing()
     {
         // The copy saved above is open: take one of its clips away (never the bundled one).
-        QVERIFY(m_window->document()->folder().startsWith(QDir::tempPath()));
-        const QString media = m_window->document()->mediaPath(3);
-        QVERIFY2(media.startsWith(m_window->document()->folder()), qPrintable(media));
+        QVERIFY(m_window->context()->document()->folder().startsWith(QDir::tempPath()));
+        const QString media = m_window->context()->document()->mediaPath(3);
+        QVERIFY2(media.startsWith(m_window->context()->document()->folder()), qPrintable(media));
         QVERIFY(QFile::remove(media));
-        const auto before = m_window->media();
+        const auto before = m_window->context()->media();
         QSignalSpy ended(m_window, &MainWindow::sequenceLoadEnded);
         m_window->selectSequence(3);
         QTRY_COMPARE_WITH_TIMEOUT(ended.count(), 1, 60000);
         QCOMPARE(ended.first().first().toBool(), false);
         QVERIFY2(ErrorReporter::lastMessage().contains(media), qPrintable(ErrorReporter::lastMessage()));
-        QCOMPARE(m_window->media(), before);
-        QCOMPARE(m_window->currentSequence(), 0);
+        QCOMPARE(m_window->context()->media(), before);
+        QCOMPARE(m_window->context()->currentSequence(), 0);
         QCOMPARE(m_window->sequenceView()->currentIndex().row(), 0);
         m_window->selectSequence(1); // still usable
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->currentSequence() == 1, 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->currentSequence() == 1, 60000);
     }
 
     // At 1280x800 the window fits the screen's free area, so the status bar (progress, Cancel,
@@ -369,7 +383,7 @@ private slots:
         QVERIFY(!m_window->files()->open(QStringLiteral("/nonexistent/project")));
         QVERIFY(ErrorReporter::lastMessage().contains(QStringLiteral("/nonexistent/project")));
         QCOMPARE(m_window->sequenceView()->model()->rowCount(), rows);
-        QVERIFY(m_window->media());
+        QVERIFY(m_window->context()->media());
     }
 
     // File ▸ New Project… from a folder of clips with transcripts beside them (as `lipsync project
@@ -395,37 +409,37 @@ private slots:
         QVERIFY(cut.open(QIODevice::WriteOnly));
         cut.write(whole.read(20000));
         cut.close();
-        const QString before = m_window->document()->folder();
+        const QString before = m_window->context()->document()->folder();
 
         // No clips: the task fails, says why, and the open document stays.
         const QString empty = dir.filePath(QStringLiteral("no-clips"));
         QVERIFY(QDir().mkpath(empty));
         Task *failing = m_window->files()->createFromMediaFolder(empty, empty);
         QVERIFY(failing);
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 30000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 30000);
         QVERIFY2(ErrorReporter::lastMessage().contains(QStringLiteral("no media files")),
                  qPrintable(ErrorReporter::lastMessage()));
-        QCOMPARE(m_window->document()->folder(), before);
+        QCOMPARE(m_window->context()->document()->folder(), before);
         QVERIFY(!QFileInfo::exists(empty + QStringLiteral("/project.json")));
 
         QVERIFY(m_window->files()->createFromMediaFolder(clips, clips));
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 30000);
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->document()->folder(), clips, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 30000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->document()->folder(), clips, 10000);
         QVERIFY(QFileInfo::exists(clips + QStringLiteral("/project.json")));
-        QVERIFY(!m_window->document()->isReadOnly());
-        QVERIFY(!m_window->document()->isModified());
+        QVERIFY(!m_window->context()->document()->isReadOnly());
+        QVERIFY(!m_window->context()->document()->isModified());
         QCOMPARE(m_window->sequenceView()->model()->rowCount(), 2);
         QVERIFY2(ErrorReporter::lastMessage().contains(QStringLiteral("damaged.mpg")),
                  qPrintable(ErrorReporter::lastMessage()));
         // A project of one's own: its speaker is nobody the shipped model knows, so it says the
         // generic aligner, adapted to the speaker, and the studio says so.
-        QCOMPARE(m_window->document()->project().aligner, std::string(Project::kGenericAligner));
+        QCOMPARE(m_window->context()->document()->project().aligner, std::string(Project::kGenericAligner));
         if (SphinxAligner::available())
             QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("Generic US English, adapted")),
                      qPrintable(m_window->statusBar()->currentMessage()));
-        QCOMPARE(m_window->document()->sequence(1).transcript, std::string("bin green in three again"));
-        QCOMPARE(m_window->document()->sequence(0).frameCount, 75);
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->media() && m_window->currentSequence() == 0, 60000);
+        QCOMPARE(m_window->context()->document()->sequence(1).transcript, std::string("bin green in three again"));
+        QCOMPARE(m_window->context()->document()->sequence(0).frameCount, 75);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->media() && m_window->context()->currentSequence() == 0, 60000);
         QCOMPARE(QSettings().value(QStringLiteral("recentProjects")).toStringList().value(0), clips);
 
         // Again into the same folder: refused, nothing changes.

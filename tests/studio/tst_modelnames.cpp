@@ -11,6 +11,7 @@
 #include "compare/StudySetupDialog.h"
 #include "context/ModelKinds.h"
 #include "context/ModelStore.h"
+#include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "dynamics/ModelKind.h"
 #include "export/ExportMenu.h"
@@ -61,7 +62,7 @@ private slots:
         QTest::mouseClick(m_panel->trainButton(), Qt::LeftButton);
         waitIdle();
         for (const QString &kind : ModelKinds::ids())
-            QVERIFY2(m_window->modelStore()->dynamicModel(kind), qPrintable(kind));
+            QVERIFY2(m_window->context()->modelStore()->dynamicModel(kind), qPrintable(kind));
     }
 
     void cleanupTestCase() { delete m_window; }
@@ -172,7 +173,7 @@ private slots:
 
     void studySetupAndResults()
     {
-        StudySetupDialog setup(m_window->document()->project(), m_window);
+        StudySetupDialog setup(m_window->context()->document()->project(), m_window);
         int models = 0;
         for (int i = 0; i < setup.methodList()->count(); ++i) {
             const QListWidgetItem *item = setup.methodList()->item(i);

@@ -200,7 +200,7 @@ private slots:
 
     void demoHasTrainingData()
     {
-        const Project &p = m_window->document()->project();
+        const Project &p = m_window->context()->document()->project();
         QCOMPARE(p.sequences.size(), size_t(10));
         for (const Sequence &s : p.sequences) {
             QCOMPARE(s.features.rows(), Eigen::Index(75));
@@ -219,7 +219,7 @@ private slots:
     {
         checkOnly({QStringLiteral("hmm"), QStringLiteral("dpds")});
         QSignalSpy trained(m_panel, &ModelsPanel::modelTrained);
-        const int undoBefore = m_window->undoStack()->count();
+        const int undoBefore = m_window->context()->undoStack()->count();
         QTest::mouseClick(m_panel->trainButton(), Qt::LeftButton);
         QCOMPARE(m_panel->runningTasks().size(), 2);
         QVERIFY(m_panel->cancelButton()->isEnabled());
@@ -227,10 +227,10 @@ private slots:
         QCOMPARE(m_panel->plotTabs()->currentWidget(), static_cast<QWidget *>(m_panel->objectivePlot()));
         waitIdle();
         QCOMPARE(trained.count(), 2);
-        QVERIFY(m_window->modelStore()->dynamicModel("hmm"));
-        QVERIFY(m_window->modelStore()->dynamicModel("dpds"));
+        QVERIFY(m_window->context()->modelStore()->dynamicModel("hmm"));
+        QVERIFY(m_window->context()->modelStore()->dynamicModel("dpds"));
         // The default: phones in context, tied by trees grown on the demo's clips.
-        const auto *dpds = dynamic_cast<const ContextDependentModel *>(m_window->modelStore()->dynamicModel("dpds").get());
+        const auto *dpds = dynamic_cast<const ContextDependentModel *>(m_window->context()->modelStore()->dynamicModel("dpds").get());
         QVERIFY(dpds);
         QCOMPARE(dpds->inner().stateCount(), dpds->tree().stateCount());
         // The list says so.
@@ -242,13 +242,13 @@ private slots:
                      && tip.contains(QStringLiteral("variance compensation")),
                  qPrintable(tip));
         // What the demo's 30 s lack for these options is said after training (and in full on hover).
-        const PhoneCoverage coverage = PhoneCoverage::of(loadProjectSequences(m_window->document()->project()));
+        const PhoneCoverage coverage = PhoneCoverage::of(loadProjectSequences(m_window->context()->document()->project()));
         QVERIFY(!coverage.unseen.empty()); // GRID's small vocabulary
         QVERIFY2(m_panel->statusLabel()->text().contains(QStringLiteral("%1 of 39 phones never occur").arg(coverage.unseen.size())),
                  qPrintable(m_panel->statusLabel()->text()));
         QVERIFY(m_panel->statusLabel()->toolTip().contains(QStringLiteral("More footage of the person")));
-        QCOMPARE(m_window->modelStore()->dynamicModel("dpds")->dimension(), int(m_window->document()->sequence(0).features.cols()));
-        QVERIFY(m_window->modelStore()->dynamicModel("dpds")->compensatesVariance()); // the panel's default
+        QCOMPARE(m_window->context()->modelStore()->dynamicModel("dpds")->dimension(), int(m_window->context()->document()->sequence(0).features.cols()));
+        QVERIFY(m_window->context()->modelStore()->dynamicModel("dpds")->compensatesVariance()); // the panel's default
         // The live objective plot got the iterations of the iterative model (DPDS).
         QVERIFY2(m_panel->objectivePlot()->iterationCount("dpds") >= 2,
                  qPrintable(QString::number(m_panel->objectivePlot()->iterationCount("dpds"))));
@@ -256,21 +256,21 @@ private slots:
         // Listed in the panel and referenced by the (read-only, so in-memory) document.
         QVERIFY(listed(QStringLiteral("hmm")));
         QVERIFY(listed(QStringLiteral("dpds")));
-        QCOMPARE(m_window->undoStack()->count(), undoBefore + 2);
-        const auto &models = m_window->document()->project().models;
+        QCOMPARE(m_window->context()->undoStack()->count(), undoBefore + 2);
+        const auto &models = m_window->context()->document()->project().models;
         QVERIFY(std::any_of(models.begin(), models.end(),
                             [](const ModelReference &m) { return m.kind == "dpds" && m.file == "models/dpds.model"; }));
         QVERIFY(m_panel->trainButton()->isEnabled());
         // Undo removes the reference again, redo restores it.
-        m_window->undoStack()->undo();
+        m_window->context()->undoStack()->undo();
         QVERIFY(!listed(QStringLiteral("dpds")) || !listed(QStringLiteral("hmm")));
-        m_window->undoStack()->redo();
+        m_window->context()->undoStack()->redo();
         QVERIFY(listed(QStringLiteral("hmm")) && listed(QStringLiteral("dpds")));
     }
 
     void cancelKeepsThePreviousModel()
     {
-        const std::shared_ptr<const DynamicModel> before = m_window->modelStore()->dynamicModel("dpds");
+        const std::shared_ptr<const DynamicModel> before = m_window->context()->modelStore()->dynamicModel("dpds");
         QVERIFY(before);
         checkOnly({QStringLiteral("dpds")});
         m_panel->dpdsOptimizer()->setCurrentIndex(1); // the paper's (slow) gradient ascent
@@ -285,7 +285,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
         QCOMPARE(finished.front().front().value<Task::State>(), Task::State::Canceled);
         QCOMPARE(trained.count(), 0);
-        QCOMPARE(m_window->modelStore()->dynamicModel("dpds").get(), before.get());
+        QCOMPARE(m_window->context()->modelStore()->dynamicModel("dpds").get(), before.get());
         QVERIFY(listed(QStringLiteral("dpds")));
         m_panel->dpdsOptimizer()->setCurrentIndex(0);
     }
@@ -376,8 +376,8 @@ private slots:
     {
         QVERIFY(m_dir.isValid());
         const QString folder = m_dir.filePath(QStringLiteral("copy"));
-        m_window->document()->saveTo(folder);
-        QVERIFY(!m_window->document()->isReadOnly());
+        m_window->context()->document()->saveTo(folder);
+        QVERIFY(!m_window->context()->document()->isReadOnly());
         // The models trained in memory went to models/, the demo's AAM was copied along.
         for (const char *file : {"models/dpds.model", "models/hmm.model", "aam/demo.aam"})
             QVERIFY2(QFileInfo(QDir(folder).filePath(QString::fromLatin1(file))).isFile(), file);
@@ -387,9 +387,9 @@ private slots:
         // It records the content identifier of the AAM its features came from (what `lipsync render`
         // checks), not the AAM's display name.
         QCOMPARE(recordedAam, AamModel::load(QDir(folder).filePath("aam/demo.aam").toStdString()).identifier);
-        const Sequence &s = m_window->document()->sequence(0);
+        const Sequence &s = m_window->context()->document()->sequence(0);
         const std::vector<int> labels = frameLabelsFromTier(s.phones, s.frameRate, s.frameCount);
-        QVERIFY(loaded->generate(labels).isApprox(m_window->modelStore()->dynamicModel("dpds")->generate(labels)));
+        QVERIFY(loaded->generate(labels).isApprox(m_window->context()->modelStore()->dynamicModel("dpds")->generate(labels)));
         // A project on disk: the next training writes its model file at once.
         checkOnly({QStringLiteral("brand")});
         QTest::mouseClick(m_panel->trainButton(), Qt::LeftButton);
@@ -402,9 +402,9 @@ private slots:
     void undoingARetrainRestoresThePreviousModel()
     {
         // The saved copy of the demo from the test before: DPDS is trained and on disk.
-        ProjectDocument *doc = m_window->document();
+        ProjectDocument *doc = m_window->context()->document();
         QVERIFY(!doc->isReadOnly());
-        ModelStore *store = m_window->modelStore();
+        ModelStore *store = m_window->context()->modelStore();
         const std::shared_ptr<const DynamicModel> first = store->dynamicModel(QStringLiteral("dpds"));
         QVERIFY(first);
         const QString firstFile = QString::fromStdString(doc->project().model("dpds")->file);
@@ -428,14 +428,14 @@ private slots:
         QVERIFY(firstOnDisk.open(QIODevice::ReadOnly));
         QCOMPARE(firstOnDisk.readAll(), firstBytes); // the first model's file is untouched
         firstOnDisk.close();
-        QCOMPARE(m_window->undoStack()->undoText(), QStringLiteral("Train DPDS"));
+        QCOMPARE(m_window->context()->undoStack()->undoText(), QStringLiteral("Train DPDS"));
 
         // Undo: the previous model is the one in use everywhere (trajectory plot included).
-        m_window->undoStack()->undo();
+        m_window->context()->undoStack()->undo();
         QCOMPARE(QString::fromStdString(doc->project().model("dpds")->file), firstFile);
         QCOMPARE(store->dynamicModel(QStringLiteral("dpds")).get(), first.get());
         // Redo: the retrained one again.
-        m_window->undoStack()->redo();
+        m_window->context()->undoStack()->redo();
         QCOMPARE(store->dynamicModel(QStringLiteral("dpds")).get(), second.get());
 
         // Saved and opened again, the project uses the retrained model; an undo after opening

@@ -109,7 +109,7 @@ private slots:
         if (QTest::currentTestFailed())
             return;
         m_preview = m_window->preview();
-        m_player = m_window->playback();
+        m_player = m_window->context()->playback();
         m_player->setAudioEnabled(false); // no sound device under Xvfb
     }
 
@@ -143,8 +143,8 @@ private slots:
             models->kindCheck(k)->setChecked(k == QLatin1String("hmm") || k == QLatin1String("dpds"));
         QTest::mouseClick(models->trainButton(), Qt::LeftButton);
         waitIdle();
-        QVERIFY(m_window->modelStore()->dynamicModel(QStringLiteral("hmm")));
-        QVERIFY(m_window->modelStore()->dynamicModel(QStringLiteral("dpds")));
+        QVERIFY(m_window->context()->modelStore()->dynamicModel(QStringLiteral("hmm")));
+        QVERIFY(m_window->context()->modelStore()->dynamicModel(QStringLiteral("dpds")));
         // The preview shows them without being asked.
         QTRY_VERIFY_WITH_TIMEOUT(m_preview->faces() && m_preview->faces()->tracks().size() == 2, 120000);
         QVERIFY(ready.count() >= 1);
@@ -164,7 +164,7 @@ private slots:
         const QImage hmm = m_preview->panel(2)->image();
         QVERIFY(!recorded.isNull() && !dpds.isNull() && !hmm.isNull());
         QCOMPARE(dpds.size(), recorded.size());
-        QCOMPARE(recorded, m_window->media()->frames[40]);
+        QCOMPARE(recorded, m_window->context()->media()->frames[40]);
         // LIPSYNC_PREVIEW_SHOT=DIR keeps a picture of the window for a look by eye.
         if (const QString dir = qEnvironmentVariable("LIPSYNC_PREVIEW_SHOT"); !dir.isEmpty())
         {
@@ -259,10 +259,10 @@ private slots:
     // generated, where the lips stay apart on some of those frames.
     void lipClosureOptionClosesBilabials()
     {
-        const auto aam = m_window->modelStore()->aam();
+        const auto aam = m_window->context()->modelStore()->aam();
         QVERIFY(aam);
         const BilabialClosure closure(*aam);
-        const Sequence &s = m_window->document()->sequence(m_window->currentSequence());
+        const Sequence &s = m_window->context()->document()->sequence(m_window->context()->currentSequence());
         const std::vector<double> w = BilabialClosure::weights(s.phones, s.clock());
         std::vector<int> bilabial;
         for (int t = 0; t < int(w.size()); ++t)
@@ -317,16 +317,16 @@ private slots:
         m_window->setCurrentFrame(10);
         const QImage before = m_preview->panel(1)->image();
         QTest::mouseClick(m_preview->stepForwardButton(), Qt::LeftButton);
-        QCOMPARE(m_window->currentFrame(), 11);
+        QCOMPARE(m_window->context()->currentFrame(), 11);
         QCOMPARE(m_preview->scrubber()->value(), 11);
         QVERIFY(near(m_window->waveformView()->cursorTime(), 11.5 / 25.0));
         QVERIFY(near(trajectory->cursorTime(), 11.5 / 25.0));
         QTest::mouseClick(m_preview->stepBackButton(), Qt::LeftButton);
         QTest::mouseClick(m_preview->stepBackButton(), Qt::LeftButton);
-        QCOMPARE(m_window->currentFrame(), 9);
+        QCOMPARE(m_window->context()->currentFrame(), 9);
 
         m_preview->scrubber()->setValue(50);
-        QCOMPARE(m_window->currentFrame(), 50);
+        QCOMPARE(m_window->context()->currentFrame(), 50);
         QVERIFY(near(m_window->waveformView()->cursorTime(), 50.5 / 25.0));
         QVERIFY(near(trajectory->cursorTime(), 50.5 / 25.0));
         QVERIFY(m_preview->panel(1)->image() != before);
@@ -335,10 +335,10 @@ private slots:
         m_window->setCurrentFrame(0);
         QTest::mouseClick(m_preview->playButton(), Qt::LeftButton);
         QVERIFY(m_player->isPlaying());
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->currentFrame() >= 8, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->currentFrame() >= 8, 5000);
         QTest::mouseClick(m_preview->playButton(), Qt::LeftButton);
         QVERIFY(!m_player->isPlaying());
-        const int stopped = m_window->currentFrame();
+        const int stopped = m_window->context()->currentFrame();
         QCOMPARE(m_preview->scrubber()->value(), stopped);
         QVERIFY(std::abs(m_window->waveformView()->cursorTime() - m_player->position()) < 0.05);
     }
@@ -365,7 +365,7 @@ private slots:
             last = t;
         }
         QVERIFY(wrapped);
-        QVERIFY(m_window->currentFrame() >= 20 && m_window->currentFrame() <= 30);
+        QVERIFY(m_window->context()->currentFrame() >= 20 && m_window->context()->currentFrame() <= 30);
         // Unchecked: it plays to the end of the selection and stops there.
         m_preview->loopCheck()->setChecked(false);
         QTRY_VERIFY_WITH_TIMEOUT(!m_player->isPlaying(), 3000);
@@ -418,7 +418,7 @@ private slots:
                 dialog->buttons()->button(QDialogButtonBox::Ok)->click();
             });
         });
-        QSignalSpy started(m_window->taskRunner(), &TaskRunner::taskStarted);
+        QSignalSpy started(m_window->context()->taskRunner(), &TaskRunner::taskStarted);
         QTest::mouseClick(m_preview->speechButton(), Qt::LeftButton);
         QVERIFY(filled);
         QCOMPARE(started.count(), 1); // one background task
@@ -464,14 +464,14 @@ private slots:
             m_window->grab().save(dir + QStringLiteral("/speech.png"));
 
         // It plays with the clip's sound, frame by frame at 30 fps; the sequence stays put.
-        const int sequenceFrame = m_window->currentFrame();
+        const int sequenceFrame = m_window->context()->currentFrame();
         QTest::mouseClick(m_preview->playButton(), Qt::LeftButton);
         QVERIFY(m_player->isPlaying());
         QCOMPARE(m_player->mediaPath(), clip);
         QTRY_VERIFY_WITH_TIMEOUT(m_preview->speechFrame() >= 30, 5000);
         QTest::mouseClick(m_preview->playButton(), Qt::LeftButton);
         QVERIFY(!m_player->isPlaying());
-        QCOMPARE(m_window->currentFrame(), sequenceFrame);
+        QCOMPARE(m_window->context()->currentFrame(), sequenceFrame);
         QCOMPARE(m_preview->scrubber()->value(), m_preview->speechFrame());
         QVERIFY(m_preview->panel(0)->image() != first); // the mouth moved
 
@@ -489,7 +489,7 @@ private slots:
         const QRect lane = wave->laneRect(WaveformView::Lane::Waveform);
         QTest::mouseClick(wave, Qt::LeftButton, {}, QPoint(int(wave->xAt(1.5)), lane.center().y()));
         QTRY_VERIFY2(std::abs(m_preview->speechFrame() - 45) <= 1, qPrintable(QString::number(m_preview->speechFrame())));
-        QCOMPARE(m_window->currentFrame(), sequenceFrame);
+        QCOMPARE(m_window->context()->currentFrame(), sequenceFrame);
         if (const QString dir = qEnvironmentVariable("LIPSYNC_PREVIEW_SHOT"); !dir.isEmpty())
             m_window->grab().save(dir + QStringLiteral("/speech-timeline.png"));
 
@@ -520,18 +520,18 @@ private slots:
         QTest::mouseClick(m_preview->backButton(), Qt::LeftButton);
         QVERIFY(!m_preview->isShowingSpeech());
         QVERIFY(!timeline->isShowingGeneratedSpeech());
-        QCOMPARE(wave->phones().intervals.size(), m_window->document()->sequence(m_window->currentSequence()).phones.intervals.size());
+        QCOMPARE(wave->phones().intervals.size(), m_window->context()->document()->sequence(m_window->context()->currentSequence()).phones.intervals.size());
         QVERIFY(timeline->splitAction()->isEnabled());
         QCOMPARE(m_preview->panelCount(), 3);
         // The caption is the sequence's again (frames counted from 1, as the transport does).
         QVERIFY2(m_preview->caption() != speechCaption
-                     && m_preview->caption().startsWith(m_window->media()->sequenceId)
-                     && m_preview->caption().contains(QStringLiteral("frame %1 of").arg(m_window->currentFrame() + 1)),
+                     && m_preview->caption().startsWith(m_window->context()->media()->sequenceId)
+                     && m_preview->caption().contains(QStringLiteral("frame %1 of").arg(m_window->context()->currentFrame() + 1)),
                  qPrintable(m_preview->caption()));
         m_window->setCurrentFrame(0);
         QTest::mouseClick(m_preview->playButton(), Qt::LeftButton);
-        QCOMPARE(m_player->mediaPath(), m_window->media()->mediaPath);
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->currentFrame() >= 3, 5000);
+        QCOMPARE(m_player->mediaPath(), m_window->context()->media()->mediaPath);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->currentFrame() >= 3, 5000);
         m_player->pause();
     }
 };

@@ -16,6 +16,7 @@
 #include "app/SequenceListModel.h"
 #include "app/TranscriptProposer.h"
 #include "context/SequenceMedia.h"
+#include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "widgets/ElidedLabel.h"
 
@@ -101,7 +102,7 @@ private slots:
         // Only the transcript is marked, not the sequence's other columns.
         QCOMPARE(model()->data(model()->index(0, SequenceListModel::IdColumn), Qt::FontRole), QVariant());
         // The details of the current (first) sequence say so too, and it can be accepted.
-        QCOMPARE(m_window->currentSequence(), 0);
+        QCOMPARE(m_window->context()->currentSequence(), 0);
         auto *details = m_window->findChild<ElidedLabel *>(QStringLiteral("transcriptDetails"));
         QVERIFY(details);
         QVERIFY2(details->text().contains(QStringLiteral("not checked")), qPrintable(details->text()));
@@ -123,7 +124,7 @@ private slots:
 
     void editClearsTheMarkAndUndoRestoresIt()
     {
-        QUndoStack *undo = m_window->undoStack();
+        QUndoStack *undo = m_window->context()->undoStack();
         const int undoIndex = undo->index();
         const QModelIndex cell = model()->index(0, SequenceListModel::TranscriptColumn);
         const QString proposed = model()->data(cell).toString();
@@ -148,7 +149,7 @@ private slots:
 
     void acceptClearsTheMarkInOneStep()
     {
-        QUndoStack *undo = m_window->undoStack();
+        QUndoStack *undo = m_window->context()->undoStack();
         const int undoIndex = undo->index();
         const std::string words = doc()->sequence(0).transcript;
         proposer()->acceptAction()->trigger();
@@ -172,7 +173,7 @@ private slots:
 
     void proposalSetsWordsAndMarkInOneStep()
     {
-        QUndoStack *undo = m_window->undoStack();
+        QUndoStack *undo = m_window->context()->undoStack();
         const int undoIndex = undo->index();
         const std::string words = doc()->sequence(1).transcript;
         QVERIFY(doc()->requestProposedTranscript(1, QStringLiteral("  bin green   at a one soon ")));
@@ -213,7 +214,7 @@ private slots:
         const int row = selectMichael();
         if (QTest::currentTestFailed())
             return;
-        QUndoStack *undo = m_window->undoStack();
+        QUndoStack *undo = m_window->context()->undoStack();
         const int undoIndex = undo->index();
         QAction *action = proposer()->proposeAction();
         QVERIFY(action->isEnabled());
@@ -277,7 +278,7 @@ private slots:
         const int row = selectMichael();
         if (QTest::currentTestFailed())
             return;
-        QUndoStack *undo = m_window->undoStack();
+        QUndoStack *undo = m_window->context()->undoStack();
         const int undoIndex = undo->index();
         Task *canceled = proposer()->propose(row);
         QVERIFY(canceled);
@@ -290,7 +291,7 @@ private slots:
         // The work done, its result waiting for the event loop: canceled then, it is dropped too.
         Task *late = proposer()->propose(row);
         QVERIFY(late);
-        m_window->taskRunner()->waitForAll();
+        m_window->context()->taskRunner()->waitForAll();
         late->cancel();
         QTRY_VERIFY_WITH_TIMEOUT(!late->isRunning(), 120000);
         QCOMPARE(undo->index(), undoIndex);
@@ -308,7 +309,7 @@ private slots:
     }
 
 private:
-    ProjectDocument *doc() const { return m_window->document(); }
+    ProjectDocument *doc() const { return m_window->context()->document(); }
     QAbstractItemModel *model() const { return m_window->sequenceView()->model(); }
     TranscriptProposer *proposer() const { return m_window->transcriptProposer(); }
 
@@ -327,7 +328,7 @@ private:
         [&] {
             QCOMPARE(QString::fromStdString(doc()->sequence(row).id), QStringLiteral("michael"));
             m_window->selectSequence(row);
-            QTRY_VERIFY_WITH_TIMEOUT(m_window->media() && m_window->media()->sequenceId == QStringLiteral("michael"),
+            QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->media() && m_window->context()->media()->sequenceId == QStringLiteral("michael"),
                                      60000);
             testing::waitForTasks(m_window);
         }();

@@ -11,6 +11,7 @@
 #include "app/MainWindow.h"
 #include "app/SequenceListModel.h"
 #include "context/PlaybackController.h"
+#include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/PronunciationsDialog.h"
@@ -64,8 +65,8 @@ private slots:
 
     void guessedWordIsListedAndOverridden()
     {
-        ProjectDocument *doc = m_window->document();
-        QCOMPARE(m_window->currentSequence(), 0);
+        ProjectDocument *doc = m_window->context()->document();
+        QCOMPARE(m_window->context()->currentSequence(), 0);
         QVERIFY(doc->project().pronunciations.empty());
         // The demo clip says "bin blue at f two now"; "nowzy" is no English word.
         QVERIFY(doc->requestTranscriptChange(0, QStringLiteral("bin blue at f two nowzy")));
@@ -85,17 +86,17 @@ private slots:
         // Selecting the row fills the editor; a phone outside the set is refused.
         table->selectRow(0);
         QCOMPARE(dialog->wordEdit()->text(), QStringLiteral("nowzy"));
-        const int steps = m_window->undoStack()->index();
+        const int steps = m_window->context()->undoStack()->index();
         dialog->phonesEdit()->setText(QStringLiteral("N AW QQ"));
         QTest::mouseClick(dialog->setButton(), Qt::LeftButton);
         QVERIFY(dialog->messageLabel()->text().contains(QStringLiteral("QQ")));
-        QCOMPARE(m_window->undoStack()->index(), steps);
+        QCOMPARE(m_window->context()->undoStack()->index(), steps);
         QVERIFY(doc->project().pronunciations.empty());
 
         // A valid one: one undo step, shown as the project's.
         dialog->phonesEdit()->setText(QStringLiteral("n aw1"));
         QTest::mouseClick(dialog->setButton(), Qt::LeftButton);
-        QCOMPARE(m_window->undoStack()->index(), steps + 1);
+        QCOMPARE(m_window->context()->undoStack()->index(), steps + 1);
         QCOMPARE(doc->project().pronunciations, (std::map<std::string, std::string>{{"nowzy", "N AW"}}));
         QCOMPARE(table->rowCount(), 1);
         QCOMPARE(table->item(0, 1)->text(), QStringLiteral("N AW"));
@@ -106,18 +107,18 @@ private slots:
         QCOMPARE(lastSpokenPhones(2), (QStringList{"N", "AW"}));
 
         // Undo and redo of the override (the alignment first).
-        m_window->undoStack()->undo();
-        m_window->undoStack()->undo();
+        m_window->context()->undoStack()->undo();
+        m_window->context()->undoStack()->undo();
         QVERIFY(doc->project().pronunciations.empty());
         QCOMPARE(table->item(0, 2)->text(), QStringLiteral("espeak-ng guess"));
-        m_window->undoStack()->redo();
+        m_window->context()->undoStack()->redo();
         QCOMPARE(doc->project().pronunciations.at("nowzy"), std::string("N AW"));
 
         // Remove it again: one more step.
         dialog->wordEdit()->setText(QStringLiteral("nowzy"));
         QTest::mouseClick(dialog->removeButton(), Qt::LeftButton);
         QVERIFY(doc->project().pronunciations.empty());
-        m_window->undoStack()->undo();
+        m_window->context()->undoStack()->undo();
         QVERIFY(!doc->project().pronunciations.empty());
     }
 
@@ -127,7 +128,7 @@ private slots:
     // clip's own words are aligned again.
     void misfitTranscriptIsMarked()
     {
-        ProjectDocument *doc = m_window->document();
+        ProjectDocument *doc = m_window->context()->document();
         QAbstractItemModel *list = m_window->sequenceView()->model();
         const QModelIndex cell = list->index(0, SequenceListModel::TranscriptColumn);
         auto marked = [&] { return !list->data(cell, Qt::DecorationRole).value<QIcon>().isNull(); };
@@ -142,9 +143,9 @@ private slots:
         const QString other = QString::fromStdString(doc->sequence(1).transcript);
         QVERIFY(!other.isEmpty() && other != QStringLiteral("bin blue at f two now"));
         QVERIFY(doc->requestTranscriptChange(0, other));
-        const int steps = m_window->undoStack()->index();
+        const int steps = m_window->context()->undoStack()->index();
         align();
-        QCOMPARE(m_window->undoStack()->index(), steps + 1); // tiers and mark: one step
+        QCOMPARE(m_window->context()->undoStack()->index(), steps + 1); // tiers and mark: one step
         QVERIFY(doc->sequence(0).transcriptFit);
         const double swapped = *doc->sequence(0).transcriptFit;
         qInfo("transcript fit: own words %.2f, another clip's %.2f nats per frame", own, swapped);
@@ -160,10 +161,10 @@ private slots:
         }());
         QCOMPARE(saved.sequences[0].transcriptFit, doc->sequence(0).transcriptFit);
         // Undo takes the alignment and its mark back together.
-        m_window->undoStack()->undo();
+        m_window->context()->undoStack()->undo();
         QCOMPARE(*doc->sequence(0).transcriptFit, own);
         QVERIFY(!marked());
-        m_window->undoStack()->redo();
+        m_window->context()->undoStack()->redo();
         QVERIFY(marked());
         // The right words aligned again: no mark.
         QVERIFY(doc->requestTranscriptChange(0, QStringLiteral("bin blue at f two now")));
@@ -213,13 +214,13 @@ private:
     {
         QVERIFY(m_panel->alignAction()->isEnabled());
         m_panel->alignAction()->trigger();
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 30000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 30000);
     }
 
     QStringList lastSpokenPhones(int n) const
     {
         QStringList phones;
-        for (const Interval &p : m_window->document()->sequence(0).phones.intervals)
+        for (const Interval &p : m_window->context()->document()->sequence(0).phones.intervals)
             if (p.label != "sil")
                 phones << QString::fromStdString(p.label);
         return phones.mid(phones.size() - n);

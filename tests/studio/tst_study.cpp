@@ -13,6 +13,7 @@
 #include "compare/StudySetupDialog.h"
 #include "context/ModelKinds.h"
 #include "context/ModelStore.h"
+#include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "eval/StudyTally.h"
 #include "project/Project.h"
@@ -51,7 +52,7 @@ private:
     QString m_folder;
 
     void waitIdle() { testing::waitForTasks(m_window); }
-    const ForcedChoiceStudy &study() const { return *m_window->document()->project().study; }
+    const ForcedChoiceStudy &study() const { return *m_window->context()->document()->project().study; }
     ForcedChoiceStudy onDisk() const
     {
         return ForcedChoiceStudy::load(QDir(m_folder).filePath("study.json").toStdString());
@@ -60,7 +61,7 @@ private:
     QString taskReport() const
     {
         QStringList lines;
-        for (Task *t : m_window->taskRunner()->tasks())
+        for (Task *t : m_window->context()->taskRunner()->tasks())
             lines << QStringLiteral("%1: %2 %3").arg(t->title()).arg(int(t->state())).arg(t->errorMessage());
         return lines.join(QLatin1Char('\n'));
     }
@@ -90,10 +91,10 @@ private slots:
             panel->kindCheck(kind)->setChecked(QLatin1String(kind) == QLatin1String("hmm"));
         QTest::mouseClick(panel->trainButton(), Qt::LeftButton);
         waitIdle();
-        QVERIFY(m_window->modelStore()->dynamicModel("hmm"));
+        QVERIFY(m_window->context()->modelStore()->dynamicModel("hmm"));
         // Participants' answers go to the project on disk: work on a saved copy of the demo.
         m_folder = m_dir.filePath("demo-study");
-        m_window->document()->saveTo(m_folder);
+        m_window->context()->document()->saveTo(m_folder);
     }
 
     void cleanupTestCase() { delete m_window; }
@@ -101,7 +102,7 @@ private slots:
     void setUpIsAnUndoableEdit()
     {
         QVERIFY(!m_study->runAction()->isEnabled()); // nothing to run before a study exists
-        const int undoBefore = m_window->undoStack()->count();
+        const int undoBefore = m_window->context()->undoStack()->count();
         // Through the menu: the dialog lists real and the trained model; two utterances.
         QTimer::singleShot(0, this, [] {
             auto *dialog = qobject_cast<StudySetupDialog *>(QApplication::activeModalWidget());
@@ -127,18 +128,18 @@ private slots:
             dialog->accept();
         });
         m_study->setUpAction()->trigger();
-        QVERIFY(m_window->document()->project().study);
+        QVERIFY(m_window->context()->document()->project().study);
         QVERIFY(study().methods() == (std::vector<std::string>{"real", "hmm"}));
         QCOMPARE(study().utterances().size(), size_t(2));
         QVERIFY(study().holdsOutUtterances()); // the participants see HMM-mean retrained on the other 8
         QCOMPARE(study().trialsPerSession(), 2); // one pair, shown twice with sides swapped
-        QCOMPARE(m_window->undoStack()->count(), undoBefore + 1);
+        QCOMPARE(m_window->context()->undoStack()->count(), undoBefore + 1);
         QVERIFY(m_study->runAction()->isEnabled());
-        m_window->undoStack()->undo();
-        QVERIFY(!m_window->document()->project().study);
-        m_window->undoStack()->redo();
-        QVERIFY(m_window->document()->project().study);
-        QVERIFY(m_window->document()->isModified());
+        m_window->context()->undoStack()->undo();
+        QVERIFY(!m_window->context()->document()->project().study);
+        m_window->context()->undoStack()->redo();
+        QVERIFY(m_window->context()->document()->project().study);
+        QVERIFY(m_window->context()->document()->isModified());
     }
 
     void participantModeRecordsEveryAnswer()
@@ -146,7 +147,7 @@ private slots:
         // Starting saves the study with the project (answers are written after every trial).
         ParticipantSession *session = m_study->startParticipant(QStringLiteral("P01"));
         QVERIFY(session);
-        QVERIFY(!m_window->document()->isModified());
+        QVERIFY(!m_window->context()->document()->isModified());
         QVERIFY(QFile::exists(QDir(m_folder).filePath("study.json")));
         ParticipantView *view = session->view();
         view->setAudioEnabled(false);
@@ -171,7 +172,7 @@ private slots:
         QVERIFY(onDisk().sessions().at(0).trials[1].choice == StudyChoice::Undecided);
         QTest::keyClick(view, Qt::Key_Escape); // finished: leaves without asking
         QTRY_VERIFY(!m_study->participantSession());
-        QVERIFY(!m_window->document()->isModified());
+        QVERIFY(!m_window->context()->document()->isModified());
 
         // Reloading the project gives the same answers.
         const Project reloaded = Project::load(m_folder.toStdString());
@@ -243,8 +244,8 @@ private slots:
         QVERIFY(study().sessions()[1].complete());
         QVERIFY(onDisk() == study());
         // Answers are data, not edits: none is on the undo stack, and the project is saved.
-        QCOMPARE(m_window->undoStack()->undoText(), QStringLiteral("Set up study"));
-        QVERIFY(!m_window->document()->isModified());
+        QCOMPARE(m_window->context()->undoStack()->undoText(), QStringLiteral("Set up study"));
+        QVERIFY(!m_window->context()->document()->isModified());
     }
 
     void resultsShowTheTally()
@@ -279,7 +280,7 @@ private slots:
         QVERIFY(QFile::exists(StudyResultsView::rankingPath(csv)));
 
         // The table follows the document: a third participant's answer shows at once.
-        ProjectDocument *document = m_window->document();
+        ProjectDocument *document = m_window->context()->document();
         const int p03 = document->addStudyParticipant(QStringLiteral("P03"));
         document->recordStudyAnswer(p03, 0, StudyChoice::Left, 1.5);
         QVERIFY(results->summary()->text().startsWith(QStringLiteral("Participants: 3, answers: 5")));
@@ -287,9 +288,9 @@ private slots:
 
         // Undoing the set-up takes the study with its answers away; redo brings back both.
         const ForcedChoiceStudy answered = study();
-        m_window->undoStack()->undo();
+        m_window->context()->undoStack()->undo();
         QVERIFY(!document->project().study);
-        m_window->undoStack()->redo();
+        m_window->context()->undoStack()->redo();
         QVERIFY(document->project().study && *document->project().study == answered);
     }
 };

@@ -9,6 +9,7 @@
 #include "app/TransportBar.h"
 #include "align/FrameLabels.h"
 #include "context/SequenceMedia.h"
+#include "context/StudioContext.h"
 #include "project/Project.h"
 #include "timeline/WaveformView.h"
 
@@ -58,21 +59,21 @@ private slots:
         if (QTest::currentTestFailed())
             return;
         const std::unique_ptr<MainWindow> owner(window);
-        window->playback()->setAudioEnabled(false);
+        window->context()->playback()->setAudioEnabled(false);
         QVERIFY(window->files()->open(projectDir.path()));
         window->sequenceView()->selectRow(1);
-        QTRY_VERIFY_WITH_TIMEOUT(window->media() && window->media()->sequenceId == "vfr", 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(window->context()->media() && window->context()->media()->sequenceId == "vfr", 60000);
         testing::waitForTasks(window);
-        const FrameClock &clock = window->media()->clock;
+        const FrameClock &clock = window->context()->media()->clock;
         QVERIFY(clock.isVariable());
-        QCOMPARE(window->media()->frameCount(), 51);
+        QCOMPARE(window->context()->media()->frameCount(), 51);
 
         // Frame 22 (1.16 s) stays on screen until frame 23 at 1.52 s: a click at 1.3 s shows it.
         WaveformView *view = window->waveformView();
         QVERIFY(view->xAt(1.3) > 0 && view->xAt(1.3) < view->width());
         const int y = view->laneRect(WaveformView::Lane::Waveform).center().y();
         QTest::mouseClick(view, Qt::LeftButton, {}, QPoint(int(std::lround(view->xAt(1.3))), y));
-        QCOMPARE(window->currentFrame(), 22);
+        QCOMPARE(window->context()->currentFrame(), 22);
         QVERIFY(std::abs(clock.time(22) - 1.16) < 1e-6);
         auto *transport = window->findChild<TransportBar *>();
         QVERIFY(transport);
@@ -81,24 +82,24 @@ private slots:
             shown = shown || label->text().startsWith(QLocale().toString(1.16, 'f', 2));
         QVERIFY2(shown, "the transport shows the frame's own time");
         // The player's clock picks the same frames.
-        QCOMPARE(window->playback()->frames().frameAt(1.3), 22);
-        QCOMPARE(window->playback()->frames().frameAt(1.52), 23);
+        QCOMPARE(window->context()->playback()->frames().frameAt(1.3), 22);
+        QCOMPARE(window->context()->playback()->frames().frameAt(1.52), 23);
         // Aligned: one label per frame, the long frame voted over its whole time on screen.
         window->findChild<TimelinePanel *>()->alignSequence();
         testing::waitForTasks(window);
         QCOMPARE(int(view->frameLabels().size()), 51);
-        const Sequence &vfr = window->document()->sequence(1);
+        const Sequence &vfr = window->context()->document()->sequence(1);
         QCOMPARE(view->frameLabels(), voteFrameLabels(vfr.phones, clock));
         QVERIFY(voteFrameLabels(vfr.phones, FrameClock::uniform(25.0, 51)) != view->frameLabels());
 
         // The late sound: its words start 0.5 s later than in the clean clip (GRID's "bin" at
         // 0.95 s in bbaf2n).
         window->sequenceView()->selectRow(0);
-        QTRY_VERIFY_WITH_TIMEOUT(window->media() && window->media()->sequenceId == "audio_late_0.5s", 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(window->context()->media() && window->context()->media()->sequenceId == "audio_late_0.5s", 60000);
         testing::waitForTasks(window);
         window->findChild<TimelinePanel *>()->alignSequence();
         testing::waitForTasks(window);
-        const Tier &words = window->document()->sequence(0).words;
+        const Tier &words = window->context()->document()->sequence(0).words;
         int bin = -1;
         for (size_t i = 0; i < words.intervals.size(); ++i)
             if (words.intervals[i].label == "bin")

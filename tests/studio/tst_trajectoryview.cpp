@@ -9,6 +9,7 @@
 #include "build/ModelsPanel.h"
 #include "context/ErrorReporter.h"
 #include "context/StudioActions.h"
+#include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "plots/TrajectoryView.h"
 #include "tasks/TaskRunner.h"
@@ -76,7 +77,7 @@ private slots:
         QTRY_VERIFY(view->isVisible());
         QCOMPARE(view->seriesCount(), 1);
         QVERIFY(view->phoneBandCount() > 6);
-        QCOMPARE(m_panel->parameterSpin()->maximum() + 1, int(m_window->document()->sequence(0).features.cols()));
+        QCOMPARE(m_panel->parameterSpin()->maximum() + 1, int(m_window->context()->document()->sequence(0).features.cols()));
         const QImage image = view->grab().toImage();
         QVERIFY2(countColour(image, kReal) > 30, "the real trajectory is not drawn");
         QVERIFY2(countColour(image, kBand, 4) > 500, "the phoneme bands are not drawn");
@@ -86,7 +87,7 @@ private slots:
         QVERIFY2(docked > 2 && docked < view->phoneBandCount(), qPrintable(QString::number(docked)));
         TrajectoryView wide;
         wide.resize(1800, 400);
-        const Sequence &first = m_window->document()->sequence(0);
+        const Sequence &first = m_window->context()->document()->sequence(0);
         QVector<double> values;
         for (Eigen::Index f = 0; f < first.features.rows(); ++f)
             values.append(first.features(f, 0));
@@ -103,7 +104,7 @@ private slots:
         for (const QString &k : {"dpds", "slds", "brand", "hmm"})
             m_panel->kindCheck(k)->setChecked(k == QLatin1String("dpds") || k == QLatin1String("hmm"));
         QTest::mouseClick(m_panel->trainButton(), Qt::LeftButton);
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->taskRunner()->runningCount(), 0, 120000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 120000);
         TrajectoryView *view = m_panel->trajectoryView();
         QCOMPARE(view->seriesCount(), 3); // real, DPDS, HMM
         m_panel->plotTabs()->setCurrentWidget(view->parentWidget());
@@ -131,7 +132,7 @@ private slots:
         // Five frames on through the window's own next-frame action (what the arrow key does).
         for (int i = 0; i < 5; ++i)
             m_window->actions().nextFrame->trigger();
-        QCOMPARE(m_window->currentFrame(), 5);
+        QCOMPARE(m_window->context()->currentFrame(), 5);
         QVERIFY(std::abs(view->cursorTime() - 5.5 / 25.0) < 1e-12);
         QVERIFY(view->grab().toImage() != at0);
         m_window->setCurrentFrame(40);
