@@ -80,6 +80,21 @@ int runRealism(const CommandLine &args, const EvaluationOptions &evaluation)
         if (options.liveBigram.empty())
             throw Error("no shipped phone bigram for --live (resources/aligner/grid-s1.bigram)");
     }
+    if (args.isSet(QStringLiteral("exemplars"))) {
+        const QStringList values = args.list(QStringLiteral("exemplars"));
+        ExemplarSelection::Options e;
+        bool ok = values.size() == 3;
+        if (ok) {
+            bool a = false, b = false, c = false;
+            e.candidates = values[0].toInt(&a);
+            e.join = values[1].toDouble(&b);
+            e.cut = values[2].toDouble(&c);
+            ok = a && b && c && e.candidates > 0 && e.join >= 0 && e.cut >= 0;
+        }
+        if (!ok)
+            throw UsageError(QStringLiteral("--exemplars takes K,JOIN,CUT (e.g. 16,1,0.5)"));
+        options.exemplars = e;
+    }
     const Project project = Project::load(args.value(QStringLiteral("project")).toStdString());
     Feedback feedback;
     const RealismResult result = evaluateRealism(project, options, feedback);
@@ -94,7 +109,8 @@ int runEvaluate(const CommandLine &args)
 {
     const bool realism = args.isSet(QStringLiteral("realism"));
     if (!realism) {
-        QStringList realismOnly{QStringLiteral("max-lag"), QStringLiteral("dlib"), QStringLiteral("live")};
+        QStringList realismOnly{QStringLiteral("max-lag"), QStringLiteral("dlib"), QStringLiteral("live"),
+                                QStringLiteral("exemplars")};
         for (const CommandOption &option : Compositing::options())
             realismOnly << option.name;
         for (const QString &option : realismOnly)
@@ -177,7 +193,11 @@ const CommandRegistration registration{
          {QStringLiteral("live"), {},
           QStringLiteral("--realism: also every model driven live, its phones recognised from the sound as it "
                          "streams in (the shipped aligner model and phone bigram, as `lipsync live`), reported as "
-                         "\"live KIND\"")}},
+                         "\"live KIND\"")},
+         {QStringLiteral("exemplars"), QStringLiteral("K,JOIN,CUT"),
+          QStringLiteral("--realism: also every model's trajectory replaced by the training folds' recorded frames "
+                         "nearest it (render/ExemplarSelection: K candidates a frame, the join and cut weights), "
+                         "reported as \"KIND exemplars\"")}},
         {}}
         .add(trainingDataOptions())
         .add(dynamicModelOptions())

@@ -208,6 +208,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
         r.correlation = pearsonOverFrames(opening[m], recordedOpening);
         r.speechCorrelation = pearsonOverFrames(onlyWithin(opening[m], out.speech), recordedOpening);
         r.shapeCorrelation = pearsonOverFrames(shapeOpening[m], opening[m]);
+        r.shapeOpening = std::move(shapeOpening[m]);
         r.closedBoth = closedInBoth(opening[m], recordedOpening, bilabials, out.closedLevel);
         r.falseClosures = closuresOutside(opening[m], bilabials, out.speech, out.closedLevel);
         r.appearance = std::move(seen.streams[m + 1]);
@@ -305,11 +306,15 @@ MetricSummary summarise(std::vector<double> foldValues)
     return summary;
 }
 
-// The report's rows: tracked, each model, each model driven live, the observer's control.
-std::vector<std::string> reportedMethods(const std::vector<std::string> &kinds, bool live)
+// The report's rows: tracked, each model, each model's exemplars, each model driven live, the
+// observer's control.
+std::vector<std::string> reportedMethods(const std::vector<std::string> &kinds, bool live, bool exemplars)
 {
     std::vector<std::string> methods{kTracked};
     methods.insert(methods.end(), kinds.begin(), kinds.end());
+    if (exemplars)
+        for (const std::string &kind : kinds)
+            methods.push_back(kind + " exemplars");
     if (live)
         for (const std::string &kind : kinds)
             methods.push_back(kLive + kind);
@@ -343,9 +348,11 @@ RealismMethod summariseMethod(const std::vector<std::vector<const RealismSequenc
 
 // Every fold's models, trained on its training folds (or as much of their speech as
 // cv.trainingSpeechSeconds asks: result.trainingSpeechSeconds says how much each got).
+// Every fold's models; `exemplars`, when given, receives each fold's training trajectories.
 std::vector<std::vector<std::shared_ptr<DynamicModel>>> trainEveryFold(const std::vector<LabelledSequence> &sequences,
                                                                        const EvaluationOptions &cv,
-                                                                       RealismResult &result, Feedback &feedback)
+                                                                       RealismResult &result, Feedback &feedback,
+                                                                       std::vector<std::vector<Eigen::MatrixXd>> *exemplars)
 {
     std::vector<std::vector<std::shared_ptr<DynamicModel>>> models;
     for (int f = 0; f < cv.folds; ++f) {
@@ -355,6 +362,11 @@ std::vector<std::vector<std::shared_ptr<DynamicModel>>> trainEveryFold(const std
         result.trainingSpeechSeconds.push_back(std::accumulate(
             trainingSet.begin(), trainingSet.end(), 0.0,
             [](double sum, const LabelledSequence &s) { return sum + speechSeconds(s); }));
+        if (exemplars) {
+            exemplars->emplace_back();
+            for (const LabelledSequence &t : trainingSet)
+                exemplars->back().push_back(t.features);
+        }
         models.push_back(trainFoldModels(trainingSet, cv.kinds, cv.modelOptions, child,
                                          "fold " + std::to_string(f + 1) + "/" + std::to_string(cv.folds) + ": "));
     }
@@ -395,8 +407,12 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
     const bool live = !options.liveAcousticModel.empty();
     const AcousticModel liveAcoustic = live ? AcousticModel::load(options.liveAcousticModel) : AcousticModel();
     const PhoneBigram liveBigram = live ? PhoneBigram::load(options.liveBigram) : PhoneBigram();
+    std::vector<std::vector<Eigen::MatrixXd>> trainingFrames;
     const std::vector<std::vector<std::shared_ptr<DynamicModel>>> models
-        = trainEveryFold(sequences, cv, result, training);
+        = trainEveryFold(sequences, cv, result, training, options.exemplars ? &trainingFrames : nullptr);
+    std::vector<std::unique_ptr<ExemplarSelection>> selections;
+    for (const std::vector<Eigen::MatrixXd> &frames : trainingFrames)
+        selections.push_back(std::make_unique<ExemplarSelection>(frames, *options.exemplars));
 
     // Every held-out sequence on its own: rendering and landmarking are independent per sequence.
     struct Item
@@ -436,6 +452,10 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
             for (size_t k = 0; k < cv.kinds.size(); ++k)
                 renderings.push_back(
                     {cv.kinds[k], closed(models[size_t(item.fold)][k]->generate(s.labels), closing)});
+            if (!selections.empty())
+                for (size_t k = 0; k < cv.kinds.size(); ++k)
+                    renderings.push_back({cv.kinds[k] + " exemplars",
+                                          selections[size_t(item.fold)]->select(renderings[k + 1].features)});
             if (live) {
                 const std::vector<int> heard = liveLabels(liveAcoustic, liveBigram, project.mediaPath(sequence),
                                                           sequence.clock().slice(0, s.frameCount()));
@@ -468,7 +488,7 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
         result.closedRecorded += item.result.closedRecorded;
         byFold[size_t(item.fold)].push_back(&item.result);
     }
-    for (const std::string &method : reportedMethods(cv.kinds, live))
+    for (const std::string &method : reportedMethods(cv.kinds, live, options.exemplars.has_value()))
         result.methods.push_back(summariseMethod(byFold, method));
     // Sequences in project order.
     std::sort(items.begin(), items.end(), [](const Item &a, const Item &b) { return a.sequence < b.sequence; });
@@ -521,6 +541,8 @@ QJsonObject RealismResult::toJson() const
             ro[QStringLiteral("closed")] = r.closed;
             ro[QStringLiteral("skippedFrames")] = r.skippedFrames;
             ro[QStringLiteral("opening")] = jsonNumbers(r.opening);
+            ro[QStringLiteral("shapeCorrelation")] = jsonNumber(r.shapeCorrelation);
+            ro[QStringLiteral("shapeOpening")] = jsonNumbers(r.shapeOpening);
             mo[QString::fromStdString(method)] = ro;
         }
         so[QStringLiteral("methods")] = mo;

@@ -40,11 +40,13 @@
 #include "dynamics/ModelFile.h"
 #include "eval/Evaluation.h"
 #include "eval/RealismMetrics.h"
+#include "render/ExemplarSelection.h"
 
 #include <QJsonObject>
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -72,6 +74,9 @@ struct RealismOptions
     // Empty: not measured.
     std::string liveAcousticModel;
     std::string liveBigram;
+    // Also every model's trajectory replaced by recorded frames of its training folds
+    // (render/ExemplarSelection), reported as "<kind> exemplars". None: not measured.
+    std::optional<ExemplarSelection::Options> exemplars;
 };
 
 struct RealismSequenceMethod
@@ -86,6 +91,7 @@ struct RealismSequenceMethod
     Eigen::MatrixXf appearance; // the machine observer's view of the encoded render's frames
     int skippedFrames = 0;  // frames the predictor found no lips in the render
     std::vector<double> opening; // per frame (NaN: not measured)
+    std::vector<double> shapeOpening; // the inner-lip gap of the method's own shape, per frame
 };
 
 struct RealismSequence

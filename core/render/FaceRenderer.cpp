@@ -23,6 +23,16 @@ constexpr int kPoseSmoothing = 2;
 // A fit this many times worse than the video's median marks a covered face [choice]: on the demo
 // clips a blink raises the fit error to 5-15 times the median, a block over the mouth to 50-60.
 constexpr double kOccludedFit = 25.0;
+// ... and this many times worse than its upper quartile [choice]. A covered mouth is a rare
+// outlier; an AAM built from few frames of a person can fit every wide-open mouth 25 times worse
+// than the closed ones (HD weekly addresses: 40-60 % of a clip's frames), and those frames are
+// the speech itself, not covered.
+constexpr double kOccludedFitOverUpperQuartile = 4.0;
+// Below this share of the recorded inner-lip opening, a generated mouth is drawn closed by the
+// AAM (mouthInteriorAlpha) [choice: the warp squeezes at most 4 times, kMinJacobian].
+constexpr double kClosingRatio = 0.5;
+// The feathered band whose colours match the synthesis to the frame: alpha below half its peak.
+constexpr float kBandTop = 1.0f;
 
 std::vector<Similarity> smoothPoses(const std::vector<Similarity> &poses)
 {
@@ -95,21 +105,35 @@ FaceRenderer::FaceRenderer(const AamModel &aam, const std::string &videoPath, Fe
         throw Error("cannot render: no frame of the video holds a face", videoPath);
     m_poses = smoothPoses(poses);
     // Frames whose face is lost or covered: no face found, or a fit far worse than the video's usual.
-    std::vector<double> finite;
-    for (Eigen::Index t = 0; t < tracked.errors.size(); ++t)
-        if (std::isfinite(tracked.errors[t]))
-            finite.push_back(tracked.errors[t]);
-    double median = 0.0;
-    if (!finite.empty()) {
-        std::nth_element(finite.begin(), finite.begin() + std::ptrdiff_t(finite.size() / 2), finite.end());
-        median = finite[finite.size() / 2];
-    }
-    m_occluded.assign(size_t(tracked.errors.size()), false);
-    for (Eigen::Index t = 0; t < tracked.errors.size(); ++t)
-        m_occluded[size_t(t)] = !std::isfinite(tracked.errors[t]) || (median > 0 && tracked.errors[t] > kOccludedFit * median);
+    m_occluded = occludedFrames(tracked.errors);
     for (int t : tracked.framesWithoutFace)
         if (t >= 0 && t < int(m_occluded.size()))
             m_occluded[size_t(t)] = true;
+}
+
+std::vector<bool> FaceRenderer::occludedFrames(const Eigen::VectorXd &errors)
+{
+    std::vector<double> finite;
+    for (Eigen::Index t = 0; t < errors.size(); ++t)
+        if (std::isfinite(errors[t]))
+            finite.push_back(errors[t]);
+    auto quantile = [&finite](double q) {
+        if (finite.empty())
+            return 0.0;
+        std::vector<double> copy = finite;
+        const auto k = std::ptrdiff_t(q * double(copy.size() - 1));
+        std::nth_element(copy.begin(), copy.begin() + k, copy.end());
+        return copy[size_t(k)];
+    };
+    const double median = quantile(0.5);
+    const double upperQuartile = quantile(0.75);
+    std::vector<bool> occluded(size_t(errors.size()), false);
+    for (Eigen::Index t = 0; t < errors.size(); ++t) {
+        const double e = errors[t];
+        occluded[size_t(t)] = !std::isfinite(e)
+                              || (median > 0 && e > kOccludedFit * median && e > kOccludedFitOverUpperQuartile * upperQuartile);
+    }
+    return occluded;
 }
 
 FaceRenderer::~FaceRenderer() = default;
@@ -208,6 +232,27 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
     CompositeOptions whole = options;
     whole.region = FaceRegion::Full;
     m_synthesizer.composite(features, pose(index), synthesised, whole);
+    // The synthesis's colour matched to the frame's where they meet: the mean difference over
+    // the feathered band (0 < alpha < 1), added to what is drawn (the face-wide colour matching
+    // sees the face's outline, not the lips).
+    double shift[3] = {0, 0, 0};
+    if (options.matchColour) {
+        double sum[3] = {0, 0, 0};
+        long count = 0;
+        for (int y = box.y; y < box.y + box.height; ++y) {
+            const float *a = alpha.ptr<float>(y);
+            const uchar *out = frame.ptr<uchar>(y), *in = synthesised.ptr<uchar>(y);
+            for (int x = box.x; x < box.x + box.width; ++x)
+                if (a[x] > 0.02f && a[x] < 0.5f * kBandTop) {
+                    for (int ch = 0; ch < 3; ++ch)
+                        sum[ch] += double(out[3 * x + ch]) - double(in[3 * x + ch]);
+                    ++count;
+                }
+        }
+        if (count > 0)
+            for (int ch = 0; ch < 3; ++ch)
+                shift[ch] = sum[ch] / double(count);
+    }
     for (int y = box.y; y < box.y + box.height; ++y) {
         const float *a = alpha.ptr<float>(y);
         uchar *out = frame.ptr<uchar>(y);
@@ -215,7 +260,8 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
         for (int x = box.x; x < box.x + box.width; ++x)
             if (a[x] > 0.f)
                 for (int ch = 0; ch < 3; ++ch)
-                    out[3 * x + ch] = cv::saturate_cast<uchar>(a[x] * in[3 * x + ch] + (1.f - a[x]) * out[3 * x + ch]);
+                    out[3 * x + ch] = cv::saturate_cast<uchar>(a[x] * (in[3 * x + ch] + shift[ch])
+                                                               + (1.f - a[x]) * out[3 * x + ch]);
     }
 }
 
@@ -232,22 +278,33 @@ cv::Mat FaceRenderer::mouthInteriorAlpha(const Eigen::VectorXd &generated, const
     cv::Mat alpha(m_size, CV_32F, cv::Scalar(0));
     const double wanted = LowerFaceWarp::opening(generated);
     const double recorded = LowerFaceWarp::opening(tracked);
-    // The warp stretches the recorded opening to the generated one: where that is a thin line
-    // pulled wide, the inside is drawn; where the recording was as open, it is its own.
-    constexpr double kMinOpening = 1.5; // pixels: a closed mouth has no inside to draw
-    if (!(wanted > kMinOpening) || !(wanted > recorded))
-        return alpha;
-    const double u = std::clamp((wanted - recorded) / wanted, 0.0, 1.0);
-    const float weight = float(u * u * (3.0 - 2.0 * u));
     constexpr int kShift = 4; // fillPoly's sub-pixel bits
-    std::vector<cv::Point> polygon;
-    for (const cv::Point2f &p : LowerFaceWarp::mouthInterior(generated))
-        polygon.emplace_back(int(std::lround(p.x * (1 << kShift))), int(std::lround(p.y * (1 << kShift))));
-    cv::Mat mask(m_size, CV_8U, cv::Scalar(0));
-    cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{polygon}, cv::Scalar(255), cv::LINE_AA, kShift);
-    // A feathered edge of about a pixel, inside the lips' inner outline.
-    cv::GaussianBlur(mask, mask, cv::Size(3, 3), 0.8);
-    mask.convertTo(alpha, CV_32F, weight / 255.0);
+    auto fill = [&](const std::vector<cv::Point2f> &outline, double feather, float weight) {
+        std::vector<cv::Point> polygon;
+        for (const cv::Point2f &p : outline)
+            polygon.emplace_back(int(std::lround(p.x * (1 << kShift))), int(std::lround(p.y * (1 << kShift))));
+        cv::Mat mask(m_size, CV_8U, cv::Scalar(0));
+        cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{polygon}, cv::Scalar(255), cv::LINE_AA, kShift);
+        const int k = 2 * int(std::ceil(2.0 * feather)) + 1;
+        cv::GaussianBlur(mask, mask, cv::Size(k, k), feather);
+        mask.convertTo(alpha, CV_32F, weight / 255.0);
+    };
+    constexpr double kMinOpening = 1.5; // pixels: a closed mouth has no inside to draw
+    if (wanted > kMinOpening && wanted > recorded) {
+        // The warp stretches the recorded opening to the generated one: where that is a thin line
+        // pulled wide, the inside is drawn; where the recording was as open, it is its own. A
+        // feathered edge of about a pixel, inside the lips' inner outline.
+        const double u = std::clamp((wanted - recorded) / wanted, 0.0, 1.0);
+        fill(LowerFaceWarp::mouthInterior(generated), 0.8, float(u * u * (3.0 - 2.0 * u)));
+    } else if (recorded > 2.0 * kMinOpening && wanted < kClosingRatio * recorded) {
+        // Lips asked to close far more than the recording's: no warp brings lips together that
+        // were apart (it would squeeze the open mouth to a line, or fold), so the closed lips are
+        // drawn, blended in over a feathered band beyond the generated lips' outline as the
+        // closure grows from half the recorded opening to a tenth of it.
+        const double u = std::clamp((kClosingRatio * recorded - wanted) / ((kClosingRatio - 0.1) * recorded), 0.0, 1.0);
+        const double width = (LowerFaceWarp::mouthCorner(generated, true) - LowerFaceWarp::mouthCorner(generated, false)).norm();
+        fill(LowerFaceWarp::outerLips(generated, 0.12 * width), 0.06 * width, float(u * u * (3.0 - 2.0 * u)));
+    }
     return alpha;
 }
 

@@ -81,6 +81,10 @@ public:
     // a blink stays under 15).
     // Such frames are left as recorded: nothing is drawn over what covers the face.
     bool occluded(int index) const;
+    // The rule, on a video's per-frame fit errors (NaN: no face): covered where the error is over
+    // 25 times the median and over 4 times the upper quartile — a rare outlier, not the wide-open
+    // mouths an AAM of few frames fits far worse than the closed ones.
+    static std::vector<bool> occludedFrames(const Eigen::VectorXd &errors);
 
     // `features` (combined AAM parameters c) drawn into the background of frame `index`.
     cv::Mat render(int index, const Eigen::VectorXd &features);

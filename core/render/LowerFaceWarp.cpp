@@ -141,4 +141,30 @@ double LowerFaceWarp::opening(const Eigen::VectorXd &shape)
     return (point(shape, kInnerBottom) - point(shape, kInnerTop)).norm();
 }
 
+std::vector<cv::Point2f> LowerFaceWarp::outerLips(const Eigen::VectorXd &shape, double margin)
+{
+    using namespace scheme23;
+    // Around the mouth: the left corner, the upper lip left to right, the right corner, the lower
+    // lip right to left (the scheme's order, aam/LandmarkScheme.cpp).
+    constexpr int kOutline[] = {kMouthLeft, 9, 10, 11, kMouthRight, 13, 14, 15};
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    for (int i : kOutline)
+        centre += point(shape, i);
+    centre /= double(std::size(kOutline));
+    std::vector<cv::Point2f> out;
+    for (int i : kOutline) {
+        const Eigen::Vector2d p = point(shape, i);
+        const Eigen::Vector2d away = (p - centre).normalized();
+        const Eigen::Vector2d q = p + margin * away;
+        out.emplace_back(float(q.x()), float(q.y()));
+    }
+    return out;
+}
+
+Eigen::Vector2d LowerFaceWarp::mouthCorner(const Eigen::VectorXd &shape, bool left)
+{
+    return point(shape, left ? scheme23::kMouthLeft : scheme23::kMouthRight);
+}
+
 } // namespace lipsync
+

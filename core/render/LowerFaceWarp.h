@@ -30,6 +30,11 @@ struct LowerFaceWarp
     static std::vector<cv::Point2f> mouthInterior(const Eigen::VectorXd &shape);
     // Inner-lip opening of `shape` (pixels between the inner-lip centres).
     static double opening(const Eigen::VectorXd &shape);
+    // The outer outline of the lips of `shape` (corners and outer-lip points), pushed out by
+    // `margin` pixels from the mouth's centre.
+    static std::vector<cv::Point2f> outerLips(const Eigen::VectorXd &shape, double margin);
+    // The image-left (`left`) or image-right mouth corner of `shape`.
+    static Eigen::Vector2d mouthCorner(const Eigen::VectorXd &shape, bool left);
 };
 
 } // namespace lipsync

@@ -31,15 +31,23 @@ ThinPlateWarp::ThinPlateWarp(const Eigen::VectorXd &sources, const Eigen::Vector
         d(i, 0) = targets[2 * i] - sources[2 * i];
         d(i, 1) = targets[2 * i + 1] - sources[2 * i + 1];
     }
-    // [K + λI  P; Pᵀ 0] [w; a] = [d; 0], P = [1 x y] (Bookstein 1989).
+    // [K + λI  P; Pᵀ 0] [w; a] = [d; 0], P = [1 x y] (Bookstein 1989), with P's columns
+    // equilibrated to the kernel's magnitude — [α, α (x - cx) / L, α (y - cy) / L] — and the
+    // affine part mapped back after: the same spline, but the rank test and the solve see columns
+    // of one scale. (In a 1280 x 720 frame the kernel reaches 10^7 against P's 1: the system was
+    // judged rank-deficient and no HD frame was ever warped.)
+    const Eigen::RowVector2d centre = m_points.colwise().mean();
+    const double extent = std::max(1.0, (m_points.rowwise() - centre).cwiseAbs().maxCoeff());
     Eigen::MatrixXd system = Eigen::MatrixXd::Zero(n + 3, n + 3);
-    for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index i = 0; i < n; ++i)
         for (Eigen::Index j = 0; j < n; ++j)
             system(i, j) = kernel((m_points.row(i) - m_points.row(j)).squaredNorm());
+    const double alpha = std::max(1.0, system.topLeftCorner(n, n).cwiseAbs().maxCoeff());
+    for (Eigen::Index i = 0; i < n; ++i) {
         system(i, i) += regularisation;
-        system(i, n) = system(n, i) = 1.0;
-        system(i, n + 1) = system(n + 1, i) = m_points(i, 0);
-        system(i, n + 2) = system(n + 2, i) = m_points(i, 1);
+        system(i, n) = system(n, i) = alpha;
+        system(i, n + 1) = system(n + 1, i) = alpha * (m_points(i, 0) - centre.x()) / extent;
+        system(i, n + 2) = system(n + 2, i) = alpha * (m_points(i, 1) - centre.y()) / extent;
     }
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n + 3, 2);
     rhs.topRows(n) = d;
@@ -50,7 +58,12 @@ ThinPlateWarp::ThinPlateWarp(const Eigen::VectorXd &sources, const Eigen::Vector
     if (!solution.allFinite())
         return;
     m_weights = solution.topRows(n);
-    m_affine = solution.bottomRows(3);
+    // a0 + a1 x + a2 y from the equilibrated basis.
+    const Eigen::MatrixXd scaled = solution.bottomRows(3);
+    m_affine.resize(3, 2);
+    m_affine.row(1) = alpha / extent * scaled.row(1);
+    m_affine.row(2) = alpha / extent * scaled.row(2);
+    m_affine.row(0) = alpha * scaled.row(0) - centre.x() * m_affine.row(1) - centre.y() * m_affine.row(2);
     m_valid = true;
 }
 

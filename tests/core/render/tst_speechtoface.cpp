@@ -201,6 +201,26 @@ private slots:
         QVERIFY2(drawn >= 25, qPrintable(QString::number(drawn)));
     }
 
+    // The rule on fit errors alone: a rare outlier is covered; wide-open mouths that an AAM of
+    // few frames fits 30 times worse than the closed ones, in 60 % of a clip, are not.
+    void coverIsARareOutlier()
+    {
+        Eigen::VectorXd errors = Eigen::VectorXd::Constant(100, 1.0);
+        errors.segment(10, 15).setConstant(60.0); // a hand over the mouth
+        errors[50] = NAN;                           // no face
+        std::vector<bool> covered = FaceRenderer::occludedFrames(errors);
+        QCOMPARE(int(std::count(covered.begin(), covered.end(), true)), 16);
+        QVERIFY(covered[10] && covered[24] && covered[50] && !covered[25]);
+        for (int t = 0; t < 100; ++t)
+            errors[t] = t % 5 < 3 ? 30.0 : 1.0; // open, open, open, closed, closed
+        covered = FaceRenderer::occludedFrames(errors);
+        QCOMPARE(int(std::count(covered.begin(), covered.end(), true)), 0);
+        errors[7] = 1000.0; // and one frame lost among them (over 25 times their median, 30)
+        covered = FaceRenderer::occludedFrames(errors);
+        QCOMPARE(int(std::count(covered.begin(), covered.end(), true)), 1);
+        QVERIFY(covered[7]);
+    }
+
     void neutralFrameWithoutVideo()
     {
         FaceRenderer renderer(m_aam);
