@@ -12,6 +12,7 @@ extern "C" {
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace lipsync {
 
@@ -120,7 +121,22 @@ private:
 
 } // namespace
 
-AudioBuffer AudioDecoder::decode(const std::string &path, int sampleRate)
+namespace {
+
+// The decoded sound as it comes: `samples` holds the samples from absolute index `first` on (the
+// consumer may drop a front it is done with).
+struct SampleWindow
+{
+    std::vector<float> samples;
+    long long first = 0;
+    long long end() const { return first + (long long)samples.size(); }
+};
+
+// Decodes the first audio stream of `path` to mono float at `sampleRate` (0: the stream's own) on
+// the media timeline (AudioDecoder::decode), calling `consume(window)` after every decoded packet
+// and once at the end (`done`). Returns the output rate.
+int decodeStream(const std::string &path, int sampleRate,
+                 const std::function<void(SampleWindow &, bool done)> &consume)
 {
     if (sampleRate < 0)
         throw Error("invalid sample rate " + std::to_string(sampleRate), path);
@@ -140,11 +156,8 @@ AudioBuffer AudioDecoder::decode(const std::string &path, int sampleRate)
             fc->streams[i]->discard = AVDISCARD_ALL; // demux the audio only
     libav::CodecPtr decoder = libav::openDecoder(path, fc, stream);
 
-    AudioBuffer buffer;
-    const int outRate = sampleRate > 0 ? sampleRate : scan->audioSampleRate;
-    if (outRate > 0)
-        buffer.samples.reserve(size_t(scan->audioEndTime * outRate) + 64);
-    MonoResampler resampler(path, sampleRate);
+    SampleWindow window;
+    MonoResampler resampler(path, sampleRate > 0 ? sampleRate : scan->audioSampleRate);
     // Sample k sounds at k / rate on the timeline: frames are placed by their timestamps, the
     // sound before the stream starts and in its gaps is silence (AudioTimeline).
     AudioTimeline timeline(scan->containerDuration);
@@ -152,6 +165,12 @@ AudioBuffer AudioDecoder::decode(const std::string &path, int sampleRate)
     const double fileStart = libav::fileStartSeconds(fc);
     libav::PacketPtr packet(av_packet_alloc());
     libav::FramePtr frame(av_frame_alloc());
+    // Where the resampler's output goes: appended to the window.
+    std::vector<float> converted;
+    auto append = [&] {
+        window.samples.insert(window.samples.end(), converted.begin(), converted.end());
+        converted.clear();
+    };
     auto receive = [&] {
         // Stops at EAGAIN/EOF, and at a decoding error: that packet is skipped.
         while (avcodec_receive_frame(decoder.get(), frame.get()) >= 0) {
@@ -160,13 +179,17 @@ AudioBuffer AudioDecoder::decode(const std::string &path, int sampleRate)
                                    : NAN;
             const AudioTimeline::Placement p = timeline.place(pts, frame->nb_samples, frame->sample_rate);
             if (p.silenceBefore) {
-                resampler.flush(buffer.samples);
+                resampler.flush(converted);
+                append();
                 const int rate = resampler.outRate() > 0 ? resampler.outRate() : frame->sample_rate;
-                const size_t at = size_t(std::max(0LL, std::llround(p.start * rate)));
-                buffer.samples.resize(at, 0.0f); // silence up to the frame (or the flush's tail cut)
+                const long long at = std::max(0LL, std::llround(p.start * rate));
+                // Silence up to the frame (or the flush's tail cut).
+                window.samples.resize(size_t(std::max(0LL, at - window.first)), 0.0f);
             }
-            if (p.skip < frame->nb_samples)
-                resampler.push(frame.get(), p.skip, buffer.samples);
+            if (p.skip < frame->nb_samples) {
+                resampler.push(frame.get(), p.skip, converted);
+                append();
+            }
             av_frame_unref(frame.get());
         }
     };
@@ -176,6 +199,7 @@ AudioBuffer AudioDecoder::decode(const std::string &path, int sampleRate)
             // A damaged packet is skipped (the decoder conceals it); truncation was checked above.
             avcodec_send_packet(decoder.get(), packet.get());
             receive();
+            consume(window, false);
         }
         av_packet_unref(packet.get());
     }
@@ -183,14 +207,76 @@ AudioBuffer AudioDecoder::decode(const std::string &path, int sampleRate)
         throw Error("read error (" + libav::errorText(rc) + ")", path);
     avcodec_send_packet(decoder.get(), nullptr);
     receive();
-    resampler.flush(buffer.samples);
-
-    if (buffer.samples.empty())
+    resampler.flush(converted);
+    append();
+    if (window.end() == 0)
         throw Error("no decodable audio (corrupt file)", path);
-    buffer.sampleRate = resampler.outRate();
-    for (float &s : buffer.samples)
+    consume(window, true);
+    return resampler.outRate();
+}
+
+void clampSamples(std::vector<float> &samples)
+{
+    for (float &s : samples)
         s = std::clamp(s, -1.0f, 1.0f);
+}
+
+} // namespace
+
+AudioBuffer AudioDecoder::decode(const std::string &path, int sampleRate)
+{
+    AudioBuffer buffer;
+    const auto scan = libav::scanMedia(path);
+    const int expectedRate = sampleRate > 0 ? sampleRate : scan->audioSampleRate;
+    bool reserved = false;
+    buffer.sampleRate = decodeStream(path, sampleRate, [&](SampleWindow &window, bool done) {
+        if (!reserved && expectedRate > 0) {
+            window.samples.reserve(size_t(scan->audioEndTime * expectedRate) + 64);
+            reserved = true;
+        }
+        if (done)
+            buffer.samples = std::move(window.samples);
+    });
+    clampSamples(buffer.samples);
     return buffer;
+}
+
+void AudioDecoder::decodeRanges(const std::string &path, int sampleRate,
+                                const std::vector<std::pair<double, double>> &ranges,
+                                const std::function<void(size_t, AudioBuffer)> &take)
+{
+    for (size_t k = 0; k < ranges.size(); ++k)
+        if (!(ranges[k].second >= ranges[k].first) || ranges[k].first < 0
+            || (k > 0 && ranges[k].first < ranges[k - 1].first))
+            throw Error("sound ranges must be increasing intervals of the timeline", path);
+    const auto scan = libav::scanMedia(path);
+    const int rate = sampleRate > 0 ? sampleRate : scan->audioSampleRate;
+    size_t next = 0;
+    // Hands out every range that the window now holds to its end, then drops what no later
+    // range needs.
+    auto serve = [&](SampleWindow &window, bool done) {
+        while (next < ranges.size()) {
+            const long long from = std::llround(ranges[next].first * rate);
+            const long long to = std::llround(ranges[next].second * rate);
+            if (to > window.end() && !done)
+                break;
+            AudioBuffer piece;
+            piece.sampleRate = rate;
+            piece.startTime = double(from) / rate;
+            const long long a = std::clamp(from, window.first, window.end());
+            const long long b = std::clamp(to, window.first, window.end());
+            piece.samples.assign(window.samples.begin() + (a - window.first), window.samples.begin() + (b - window.first));
+            clampSamples(piece.samples);
+            take(next++, std::move(piece));
+        }
+        const long long keep = next < ranges.size() ? std::llround(ranges[next].first * rate) : window.end();
+        if (keep > window.first) {
+            const long long drop = std::min(keep, window.end()) - window.first;
+            window.samples.erase(window.samples.begin(), window.samples.begin() + drop);
+            window.first += drop;
+        }
+    };
+    decodeStream(path, sampleRate > 0 ? sampleRate : rate, serve);
 }
 
 } // namespace lipsync

@@ -1,7 +1,9 @@
 #pragma once
 // Audio PCM from any media file (.mpg/.mp4/.wav...) through libavformat/libavcodec, resampled
 // with libswresample to mono float at the requested rate.
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lipsync {
@@ -30,6 +32,16 @@ public:
     // overlaps dropped; the buffer ends where the sound ends (a shorter sound than picture
     // leaves the rest to the caller).
     static AudioBuffer decode(const std::string &path, int sampleRate = 16000);
+
+    // The sound of each of `ranges` (seconds on the media timeline, [start, end), starts not
+    // decreasing) as decode() places it, handed to `take(index, piece)` in order as soon as the
+    // decoding reaches its end: one pass over the file, holding no more than the sound from the
+    // next range's start on (a long recording cut into clips at its own rate in bounded memory).
+    // A range past the end of the sound gets what there is of it (possibly nothing). Errors as
+    // decode(); and for ranges out of order.
+    static void decodeRanges(const std::string &path, int sampleRate,
+                             const std::vector<std::pair<double, double>> &ranges,
+                             const std::function<void(size_t, AudioBuffer)> &take);
 };
 
 } // namespace lipsync

@@ -22,8 +22,6 @@ namespace lipsync {
 
 namespace {
 
-// The sound the clips get: mono at the aligner's rate.
-constexpr int kClipSampleRate = 16000;
 // Share of the progress bar the alignment takes; writing the clips takes the rest.
 constexpr double kAligningShare = 0.3;
 
@@ -54,7 +52,6 @@ LongRecordingImportResult importLongRecording(const Project &project, const std:
 
     // The alignment, the sound and the frames share the media timeline: the clips are cut at frame
     // boundaries, and each clip's times start from 0 at its first frame.
-    const AudioBuffer audio = AudioDecoder::decode(mediaPath, kClipSampleRate);
     std::unique_ptr<VideoReader> video;
     UtteranceSplitOptions split = options.split;
     if (info.hasVideo) {
@@ -62,7 +59,7 @@ LongRecordingImportResult importLongRecording(const Project &project, const std:
         split.frames = video->clock();
     } else {
         split.frames = FrameClock::uniform(Project::kAudioOnlyFrameRate,
-                                           int(std::ceil(audio.duration() * Project::kAudioOnlyFrameRate - 1e-9)));
+                                           int(std::ceil(info.audioEndTime * Project::kAudioOnlyFrameRate - 1e-9)));
     }
     const FrameClock &clock = split.frames;
     const std::vector<UtteranceSpan> spans = splitAtPauses(aligned.alignment.words, aligned.alignment.phones,
@@ -82,43 +79,53 @@ LongRecordingImportResult importLongRecording(const Project &project, const std:
     if (!QDir().mkpath(clipDir))
         throw Error("cannot create the clip folder", clipDir.toStdString());
 
+    // Each clip's frames and the stretch of the sound they show.
+    struct Clip
+    {
+        int firstFrame = 0, endFrame = 0;
+        FrameClock clock; // its own times, from 0
+    };
+    std::vector<Clip> clips;
+    std::vector<std::pair<double, double>> sound;
+    for (const UtteranceSpan &span : spans) {
+        Clip c;
+        c.firstFrame = std::min(clock.frameAtBoundary(span.start), clock.count() - 1);
+        c.endFrame = std::max(c.firstFrame + 1, clock.frameAtBoundary(span.end));
+        c.clock = clock.slice(c.firstFrame, c.endFrame - c.firstFrame).shifted(-clock.time(c.firstFrame));
+        sound.emplace_back(clock.time(c.firstFrame), clock.time(c.firstFrame) + c.clock.endTime());
+        clips.push_back(std::move(c));
+    }
+
     LongRecordingImportResult result;
     result.duration = aligned.duration;
     std::vector<QString> written;
     try {
         Feedback dummy;
         Feedback part(feedback ? *feedback : dummy, kAligningShare, 1.0);
-        for (size_t k = 0; k < spans.size(); ++k) {
+        // One pass over the sound at its own rate, each clip's stretch handed over as the decoding
+        // reaches its end: memory for one clip's sound, not the recording's.
+        AudioDecoder::decodeRanges(mediaPath, 0, sound, [&](size_t k, AudioBuffer clipAudio) {
             part.throwIfCanceled();
             part.setProgress(double(k) / double(spans.size()));
             const UtteranceSpan &span = spans[k];
+            const Clip &clip = clips[k];
             Sequence s;
             s.id = numbered(stem, k);
-            const int firstFrame = std::min(clock.frameAtBoundary(span.start), clock.count() - 1);
-            const int endFrame = std::max(firstFrame + 1, clock.frameAtBoundary(span.end));
-            // The clip's own file starts at its first frame.
-            const FrameClock clipClock = clock.slice(firstFrame, endFrame - firstFrame).shifted(-clock.time(firstFrame));
-            s.setClock(clipClock);
-            const double from = clock.time(firstFrame);
-            const size_t begin = std::min(audio.samples.size(), size_t(std::llround(from * kClipSampleRate)));
-            const size_t end = std::min(audio.samples.size(),
-                                        begin + size_t(std::llround(clipClock.endTime() * kClipSampleRate)));
+            s.setClock(clip.clock);
+            if (clipAudio.samples.empty())
+                clipAudio.samples.assign(1, 0.0f); // a clip past the end of the sound: silence
+            clipAudio.startTime = 0.0;
             const QString file = QDir(clipDir).filePath(QString::fromStdString(s.id) + (video ? ".mp4" : ".wav"));
             if (video) {
-                AudioBuffer clipAudio;
-                clipAudio.sampleRate = kClipSampleRate;
-                clipAudio.samples.assign(audio.samples.begin() + long(begin), audio.samples.begin() + long(end));
-                if (clipAudio.samples.empty())
-                    clipAudio.samples.assign(1, 0.0f); // a clip past the end of the sound: silence
                 VideoExportOptions v;
-                v.setFrames(clipClock);
+                v.setFrames(clip.clock);
                 v.crf = options.crf;
                 VideoExporter exporter(file.toStdString(), v, &clipAudio);
-                for (int f = firstFrame; f < endFrame; ++f)
+                for (int f = clip.firstFrame; f < clip.endFrame; ++f)
                     exporter.addFrame(video->frame(f));
                 exporter.finish();
             } else {
-                writeWav(file.toStdString(), audio.samples, begin, end, kClipSampleRate);
+                writeWav(file.toStdString(), clipAudio.samples, 0, clipAudio.samples.size(), clipAudio.sampleRate);
             }
             written.push_back(file);
             s.mediaFile = projectDir.relativeFilePath(file).toStdString();
@@ -129,7 +136,7 @@ LongRecordingImportResult importLongRecording(const Project &project, const std:
                 result.words += PhoneSet::isSilence(i.label) ? 0 : 1;
             result.spokenSeconds += span.end - span.start;
             result.sequences.push_back(std::move(s));
-        }
+        });
     } catch (...) {
         for (const QString &file : written)
             QFile::remove(file);

@@ -4,8 +4,9 @@
 // memory (the aligner's LongAlignment for recordings over three minutes), cut at its pauses
 // (UtteranceSplit), each utterance written as a clip of its own — H.264 + AAC MP4 from a video
 // (VideoExporter), 16-bit WAV from a sound-only file (WavWriter), both with the sound at the
-// aligner's 16 kHz — and added to the project with its words and its alignment. The recording is
-// read once, front to back, and every clip is written as soon as its frames are read.
+// recording's own rate, mono — and added to the project with its words and its alignment. The
+// recording's picture and sound are each read once, front to back, and every clip is written as
+// soon as its sound is decoded (AudioDecoder::decodeRanges): memory for one clip, not the recording.
 #include "align/Aligner.h"
 #include "project/Sequence.h"
 #include "project/UtteranceSplit.h"

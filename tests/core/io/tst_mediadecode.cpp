@@ -127,6 +127,38 @@ private slots:
         QVERIFY(rms(audio.samples) > 0.01); // speech, not silence
     }
 
+    // decodeRanges hands out exactly decode()'s samples of each range, in order, at the asked or
+    // the stream's own rate; a range past the sound's end gets what there is; ranges out of
+    // order are refused.
+    void rangesAreSlicesOfTheWholeDecode_data()
+    {
+        QTest::addColumn<int>("rate");
+        QTest::newRow("stream's own (44.1 kHz)") << 0;
+        QTest::newRow("16 kHz") << 16000;
+    }
+
+    void rangesAreSlicesOfTheWholeDecode()
+    {
+        QFETCH(int, rate);
+        const AudioBuffer whole = AudioDecoder::decode(gridClip(), rate);
+        const std::vector<std::pair<double, double>> ranges{{0.0, 0.4}, {0.5, 1.25}, {1.25, 1.3}, {2.0, 2.9}, {2.95, 4.0}};
+        std::vector<size_t> order;
+        AudioDecoder::decodeRanges(gridClip(), rate, ranges, [&](size_t k, AudioBuffer piece) {
+            order.push_back(k);
+            QCOMPARE(piece.sampleRate, whole.sampleRate);
+            const size_t from = size_t(std::llround(ranges[k].first * whole.sampleRate));
+            const size_t to = std::min(whole.samples.size(), size_t(std::llround(ranges[k].second * whole.sampleRate)));
+            QCOMPARE(piece.samples.size(), to - std::min(from, to));
+            for (size_t i = 0; i < piece.samples.size(); ++i)
+                if (piece.samples[i] != whole.samples[from + i])
+                    QFAIL(qPrintable(QStringLiteral("range %1, sample %2").arg(k).arg(i)));
+            QCOMPARE(piece.startTime, double(from) / whole.sampleRate);
+        });
+        QCOMPARE(order, (std::vector<size_t>{0, 1, 2, 3, 4}));
+        QVERIFY_THROWS_EXCEPTION(Error, AudioDecoder::decodeRanges(gridClip(), rate, {{1.0, 2.0}, {0.5, 0.7}},
+                                                                   [](size_t, AudioBuffer) {}));
+    }
+
     void resamplingKeepsLengthAndShape()
     {
         const AudioBuffer native = AudioDecoder::decode(gridClip(), 0);

@@ -55,6 +55,14 @@ std::vector<float> demoSound(int clips)
     return samples;
 }
 
+double rms(const std::vector<float> &samples)
+{
+    double sum = 0;
+    for (float v : samples)
+        sum += double(v) * v;
+    return samples.empty() ? 0.0 : std::sqrt(sum / double(samples.size()));
+}
+
 Project emptyProject(const QString &folder)
 {
     Project p;
@@ -186,6 +194,27 @@ private slots:
                                                                Lexicon(&PronunciationDictionary::cmu()),
                                                                sentenceOptions(), &feedback));
         QVERIFY(QDir(dir.filePath(QStringLiteral("project/clips"))).entryList(QDir::Files | QDir::Hidden).isEmpty());
+    }
+
+    // The clips carry the recording's sound at its own rate (GRID's 44.1 kHz), the stretch of
+    // each clip exactly: no resampling for the aligner's sake.
+    void clipsKeepTheRecordingsSoundRate()
+    {
+        QTemporaryDir dir;
+        const std::string clip = kDemo + kClips[0] + ".mpg";
+        Project project = emptyProject(dir.filePath(QStringLiteral("project")));
+        const std::unique_ptr<Aligner> aligner = createAligner(AlignerChoice{kShippedModel, false});
+        project.sequences = importLongRecording(project, clip, demoWords(1), {}, *aligner,
+                                                Lexicon(&PronunciationDictionary::cmu()), sentenceOptions())
+                                .sequences;
+        QCOMPARE(int(project.sequences.size()), 1);
+        const Sequence &s = project.sequences[0];
+        QCOMPARE(MediaInfo::probe(clip).audioSampleRate, 44100);
+        QCOMPARE(MediaInfo::probe(project.mediaPath(s)).audioSampleRate, 44100);
+        const AudioBuffer source = AudioDecoder::decode(clip, 0), cut = AudioDecoder::decode(project.mediaPath(s), 0);
+        QCOMPARE(cut.sampleRate, 44100);
+        QVERIFY2(std::abs(cut.duration() - s.duration()) < 0.05, qPrintable(QString::number(cut.duration())));
+        QVERIFY(std::abs(rms(cut.samples) - rms(source.samples)) < 0.5 * rms(source.samples)); // the speech, not silence
     }
 
     void video()
