@@ -31,8 +31,6 @@ constexpr double kOccludedFitOverUpperQuartile = 4.0;
 // Below this share of the recorded inner-lip opening, a generated mouth is drawn closed by the
 // AAM (mouthInteriorAlpha) [choice: the warp squeezes at most 4 times, kMinJacobian].
 constexpr double kClosingRatio = 0.5;
-// The feathered band whose colours match the synthesis to the frame: alpha below half its peak.
-constexpr float kBandTop = 1.0f;
 
 std::vector<Similarity> smoothPoses(const std::vector<Similarity> &poses)
 {
@@ -233,8 +231,9 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
     whole.region = FaceRegion::Full;
     m_synthesizer.composite(features, pose(index), synthesised, whole);
     // The synthesis's colour matched to the frame's where they meet: the mean difference over
-    // the feathered band (0 < alpha < 1), added to what is drawn (the face-wide colour matching
-    // sees the face's outline, not the lips).
+    // the feathered band (alpha between 0.02 and 0.5: the edge of what is fully drawn, all of a
+    // faint blend), added to what is drawn (the face-wide colour matching sees the face's
+    // outline, not the lips).
     double shift[3] = {0, 0, 0};
     if (options.matchColour) {
         double sum[3] = {0, 0, 0};
@@ -243,7 +242,7 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
             const float *a = alpha.ptr<float>(y);
             const uchar *out = frame.ptr<uchar>(y), *in = synthesised.ptr<uchar>(y);
             for (int x = box.x; x < box.x + box.width; ++x)
-                if (a[x] > 0.02f && a[x] < 0.5f * kBandTop) {
+                if (a[x] > 0.02f && a[x] < 0.5f) {
                     for (int ch = 0; ch < 3; ++ch)
                         sum[ch] += double(out[3 * x + ch]) - double(in[3 * x + ch]);
                     ++count;
