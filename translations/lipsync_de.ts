@@ -1546,218 +1546,218 @@
 <context>
     <name>lipsync::studio::MainWindow</name>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="83"/>
+        <location filename="../studio/app/MainWindow.cpp" line="82"/>
         <source>Annotate</source>
         <translation>Annotieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="84"/>
+        <location filename="../studio/app/MainWindow.cpp" line="83"/>
         <source>Preview &amp;&amp; Compare</source>
         <translation>Vorschau &amp;&amp; Vergleich</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="86"/>
+        <location filename="../studio/app/MainWindow.cpp" line="85"/>
         <source>Live</source>
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="114"/>
+        <location filename="../studio/app/MainWindow.cpp" line="113"/>
         <source>Models could not be written into the project&apos;s folder.</source>
         <translation>Modelle konnten nicht in den Projektordner geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="117"/>
+        <location filename="../studio/app/MainWindow.cpp" line="116"/>
         <source>%1 was not applied: it would leave the project unsaveable (%2).</source>
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="136"/>
+        <location filename="../studio/app/MainWindow.cpp" line="135"/>
         <source>Playing without sound: %1.</source>
         <translation>Wiedergabe ohne Ton: %1.</translation>
     </message>
     <message>
+        <location filename="../studio/app/MainWindow.cpp" line="141"/>
         <location filename="../studio/app/MainWindow.cpp" line="142"/>
-        <location filename="../studio/app/MainWindow.cpp" line="143"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="164"/>
+        <location filename="../studio/app/MainWindow.cpp" line="163"/>
         <source>Generated &amp;Face</source>
         <translation>Generiertes &amp;Gesicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="170"/>
+        <location filename="../studio/app/MainWindow.cpp" line="169"/>
         <source>&amp;Whole Face (Eyes Included)</source>
         <translation>&amp;Ganzes Gesicht (mit Augen)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="172"/>
+        <location filename="../studio/app/MainWindow.cpp" line="171"/>
         <source>Synthesise the whole modelled face; otherwise the recording&apos;s own eyes and upper face are kept</source>
         <translation>Das ganze modellierte Gesicht synthetisieren; sonst bleiben die Augen und das Obergesicht der Aufnahme erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="166"/>
+        <location filename="../studio/app/MainWindow.cpp" line="165"/>
         <source>&amp;Synthesised Skin</source>
         <translation>&amp;Synthetisierte Haut</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="168"/>
+        <location filename="../studio/app/MainWindow.cpp" line="167"/>
         <source>Paste the AAM&apos;s synthesis of the lower face, skin included; otherwise the recording&apos;s own lower face is moved to the generated shape and only the inside of the mouth is synthesised</source>
         <translation>Die AAM-Synthese des unteren Gesichts samt Haut einsetzen; sonst wird das eigene untere Gesicht der Aufnahme in die erzeugte Form bewegt und nur das Mundinnere synthetisiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="174"/>
+        <location filename="../studio/app/MainWindow.cpp" line="173"/>
         <source>&amp;Detail from Training Images</source>
         <translation>&amp;Details aus Trainingsbildern</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="176"/>
+        <location filename="../studio/app/MainWindow.cpp" line="175"/>
         <source>Add the teeth, lip highlights and skin detail of the AAM&apos;s nearest training images to the model&apos;s smooth texture</source>
         <translation>Zähne, Glanzlichter der Lippen und Hautdetails der nächstgelegenen Trainingsbilder des AAM zur glatten Textur des Modells hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="178"/>
+        <location filename="../studio/app/MainWindow.cpp" line="177"/>
         <source>&amp;Match the Frame&apos;s Lighting</source>
         <translation>&amp;Beleuchtung an das Bild anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="195"/>
+        <location filename="../studio/app/MainWindow.cpp" line="194"/>
         <source>&amp;Close the Lips on /p b m/</source>
         <translation>&amp;Lippen bei /p b m/ schließen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="197"/>
+        <location filename="../studio/app/MainWindow.cpp" line="196"/>
         <source>Close the generated lips on the bilabials /p b m/, as speakers do; off: the model&apos;s trajectory as generated</source>
         <translation>Die erzeugten Lippen bei den Bilabialen /p b m/ schließen, wie Sprecher es tun; aus: die Trajektorie des Modells, wie sie erzeugt wurde</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="243"/>
+        <location filename="../studio/app/MainWindow.cpp" line="242"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="247"/>
+        <location filename="../studio/app/MainWindow.cpp" line="246"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="257"/>
+        <location filename="../studio/app/MainWindow.cpp" line="256"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="261"/>
+        <location filename="../studio/app/MainWindow.cpp" line="260"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="282"/>
+        <location filename="../studio/app/MainWindow.cpp" line="281"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="283"/>
+        <location filename="../studio/app/MainWindow.cpp" line="282"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="284"/>
+        <location filename="../studio/app/MainWindow.cpp" line="283"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="286"/>
+        <location filename="../studio/app/MainWindow.cpp" line="285"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="317"/>
+        <location filename="../studio/app/MainWindow.cpp" line="316"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="320"/>
+        <location filename="../studio/app/MainWindow.cpp" line="319"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="335"/>
+        <location filename="../studio/app/MainWindow.cpp" line="334"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="347"/>
+        <location filename="../studio/app/MainWindow.cpp" line="346"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="358"/>
+        <location filename="../studio/app/MainWindow.cpp" line="357"/>
         <source>&amp;Live: Speak and Watch the Face</source>
         <translation>&amp;Live: Sprechen und das Gesicht beobachten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="360"/>
+        <location filename="../studio/app/MainWindow.cpp" line="359"/>
         <source>Speak into the microphone and watch the face move</source>
         <translation>Ins Mikrofon sprechen und dem Gesicht beim Bewegen zusehen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="364"/>
+        <location filename="../studio/app/MainWindow.cpp" line="363"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="368"/>
+        <location filename="../studio/app/MainWindow.cpp" line="367"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="372"/>
+        <location filename="../studio/app/MainWindow.cpp" line="371"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="373"/>
+        <location filename="../studio/app/MainWindow.cpp" line="372"/>
         <source>&amp;User Guide</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="376"/>
+        <location filename="../studio/app/MainWindow.cpp" line="375"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="385"/>
+        <location filename="../studio/app/MainWindow.cpp" line="384"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="435"/>
+        <location filename="../studio/app/MainWindow.cpp" line="434"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="498"/>
+        <location filename="../studio/app/MainWindow.cpp" line="497"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="506"/>
+        <location filename="../studio/app/MainWindow.cpp" line="505"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="535"/>
+        <location filename="../studio/app/MainWindow.cpp" line="534"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="537"/>
+        <location filename="../studio/app/MainWindow.cpp" line="536"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="541"/>
+        <location filename="../studio/app/MainWindow.cpp" line="540"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1765,43 +1765,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="552"/>
+        <location filename="../studio/app/MainWindow.cpp" line="551"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="553"/>
+        <location filename="../studio/app/MainWindow.cpp" line="552"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="553"/>
+        <location filename="../studio/app/MainWindow.cpp" line="552"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="559"/>
+        <location filename="../studio/app/MainWindow.cpp" line="558"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="577"/>
+        <location filename="../studio/app/MainWindow.cpp" line="576"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="605"/>
-        <location filename="../studio/app/MainWindow.cpp" line="613"/>
+        <location filename="../studio/app/MainWindow.cpp" line="589"/>
+        <location filename="../studio/app/MainWindow.cpp" line="597"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="612"/>
+        <location filename="../studio/app/MainWindow.cpp" line="596"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="256"/>
+        <location filename="../studio/app/MainWindow.cpp" line="255"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -2946,12 +2946,12 @@
 <context>
     <name>lipsync::studio::ScreenshotRunner</name>
     <message>
-        <location filename="../studio/app/ScreenshotRunner.cpp" line="33"/>
+        <location filename="../studio/app/ScreenshotRunner.cpp" line="34"/>
         <source>lipsync-studio: timed out waiting for the project to load</source>
         <translation>lipsync-studio: Zeitüberschreitung beim Laden des Projekts</translation>
     </message>
     <message>
-        <location filename="../studio/app/ScreenshotRunner.cpp" line="57"/>
+        <location filename="../studio/app/ScreenshotRunner.cpp" line="58"/>
         <source>lipsync-studio: cannot write %1</source>
         <translation>lipsync-studio: %1 kann nicht geschrieben werden</translation>
     </message>
@@ -3123,6 +3123,53 @@
         <location filename="../studio/app/ShortcutsDialog.cpp" line="85"/>
         <source>Keys</source>
         <translation>Tasten</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::SpeakerAlignerAdapter</name>
+    <message>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="42"/>
+        <source>Make the Speaker&apos;s Own Aligner…</source>
+        <translation>Eigenes Ausrichtungsmodell des Sprechers erstellen…</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="45"/>
+        <source>Adapt the built-in aligner model to this project&apos;s speaker from its transcribed sequences, and align the project with it from then on</source>
+        <translation>Das eingebaute Ausrichtungsmodell aus den transkribierten Sequenzen an den Sprecher dieses Projekts anpassen und das Projekt fortan damit ausrichten</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="62"/>
+        <source>Make the Speaker&apos;s Own Aligner</source>
+        <translation>Eigenes Ausrichtungsmodell des Sprechers erstellen</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="70"/>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="116"/>
+        <source>The aligner could not be adapted.</source>
+        <translation>Das Ausrichtungsmodell konnte nicht angepasst werden.</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="71"/>
+        <source>The model is written into the project&apos;s folder, and the bundled demo is read-only: save the project in a folder of your own first.</source>
+        <translation>Das Modell wird in den Projektordner geschrieben, und die mitgelieferte Demo ist schreibgeschützt: speichern Sie das Projekt zuerst in einem eigenen Ordner.</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="120"/>
+        <source>Adapted to %1</source>
+        <translation>An %1 angepasst</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="123"/>
+        <source>The aligner is adapted to the speaker from %n sequences</source>
+        <translation>
+            <numerusform>Das Ausrichtungsmodell ist aus %n Sequenz an den Sprecher angepasst</numerusform>
+            <numerusform>Das Ausrichtungsmodell ist aus %n Sequenzen an den Sprecher angepasst</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="124"/>
+        <source> (%1 s of speech; log-likelihood per frame %2 → %3): the project is aligned with it from now on.</source>
+        <translation> (%1 s Sprache; Log-Likelihood je Rahmen %2 → %3): das Projekt wird fortan damit ausgerichtet.</translation>
     </message>
 </context>
 <context>
@@ -3559,270 +3606,270 @@
 <context>
     <name>lipsync::studio::TimelinePanel</name>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="189"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="190"/>
         <source>Zoom out (wheel down)</source>
         <translation>Verkleinern (Mausrad nach unten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="190"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="191"/>
         <source>Zoom in (wheel up)</source>
         <translation>Vergrößern (Mausrad nach oben)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="191"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="192"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="191"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="192"/>
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="451"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="455"/>
         <source>Align</source>
         <translation>Ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
         <source>Align this sequence&apos;s transcript to its audio (words and phones)</source>
         <translation>Das Transkript dieser Sequenz am Ton ausrichten (Wörter und Phone)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
         <source>Align All</source>
         <translation>Alle ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
         <source>Align every sequence that has a transcript</source>
         <translation>Jede Sequenz mit Transkript ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="91"/>
         <source>Re-align Selection</source>
         <translation>Auswahl neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="91"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="92"/>
         <source>Align the selected stretch again, keeping the words whose timing you edited</source>
         <translation>Den ausgewählten Abschnitt neu ausrichten; Wörter mit bearbeitetem Timing bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
         <source>Adapt to Speaker</source>
         <translation>An Sprecher anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="106"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="516"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="107"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="520"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="107"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="108"/>
         <source>Align with the model shipped with the studio, trained on one GRID speaker</source>
         <translation>Mit dem mitgelieferten Modell ausrichten, trainiert auf einem GRID-Sprecher</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="108"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="109"/>
         <source>Generic US English (CMU Sphinx)</source>
         <translation>Allgemeines US-Englisch (CMU Sphinx)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="109"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="110"/>
         <source>Align with CMU Sphinx&apos;s US-English model trained on many speakers (Debian package pocketsphinx-en-us)</source>
         <translation>Mit dem US-englischen Modell von CMU Sphinx ausrichten, trainiert auf vielen Sprechern (Debian-Paket pocketsphinx-en-us)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
         <source>Split at Cursor</source>
         <translation>Am Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
         <source>Split the interval under the cursor</source>
         <translation>Das Intervall unter dem Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="670"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="128"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="674"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="128"/>
         <source>Join the selected interval with the next one</source>
         <translation>Das ausgewählte Intervall mit dem nächsten verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
         <source>Relabel…</source>
         <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
         <source>Change the label of the selected interval</source>
         <translation>Die Beschriftung des ausgewählten Intervalls ändern</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Insert Silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Make the selection a silence</source>
         <translation>Die Auswahl zur Stille machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
         <source>Insert Breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
         <source>Make the selection a breath</source>
         <translation>Die Auswahl zum Atmer machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Play Selection</source>
         <translation>Auswahl abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Play the selected stretch (Space in the timeline)</source>
         <translation>Den ausgewählten Abschnitt abspielen (Leertaste in der Zeitleiste)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
         <source>Play Word</source>
         <translation>Wort abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
         <source>Play the word under the cursor</source>
         <translation>Das Wort unter dem Cursor abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
         <source>Play All</source>
         <translation>Alles abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
         <source>Play the whole sequence</source>
         <translation>Die ganze Sequenz abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
         <source>Pronunciations…</source>
         <translation>Aussprachen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
         <source>The project&apos;s pronunciations, and the words espeak-ng guessed</source>
         <translation>Die Aussprachen des Projekts und die von espeak-ng geschätzten Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="178"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="179"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="179"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="180"/>
         <source>The acoustic model the aligner uses</source>
         <translation>Das akustische Modell, das die Ausrichtung verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="143"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="144"/>
         <source>Show Spectrogram</source>
         <translation>Spektrogramm anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="144"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="145"/>
         <source>Show the spectrogram under the waveform in the timeline</source>
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="312"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="316"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="331"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="335"/>
         <source>Alignment of the speech in the Preview: %1 (read-only; Back to Sequence there to edit)</source>
         <translation>Alignierung der Sprache in der Vorschau: %1 (schreibgeschützt; dort „Zurück zur Sequenz“ zum Bearbeiten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="345"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="349"/>
         <source>No audio</source>
         <translation>Kein Ton</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="415"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="419"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="428"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="432"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="452"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="456"/>
         <source>The transcript of %1 changed since its boundaries were edited. Aligning it again replaces the edited boundaries. Align anyway?</source>
         <translation>Das Transkript von %1 wurde geändert, nachdem seine Grenzen bearbeitet wurden. Erneutes Alignieren ersetzt die bearbeiteten Grenzen. Trotzdem alignieren?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="463"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="467"/>
         <source>Every word of %1 is user-edited: nothing to align there.</source>
         <translation>Jedes Wort von %1 ist von Hand bearbeitet: Dort gibt es nichts zu alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="484"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="488"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="487"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="491"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="433"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="437"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
         <source>Adapt the aligner to each recording&apos;s voice before aligning it (slower; better for voices unlike the model&apos;s training speakers)</source>
         <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Stimmen, die den Trainingssprechern des Modells unähnlich sind)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="271"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="275"/>
         <source>The timeline aligns with Generic US English, adapted to each recording&apos;s speaker (Model menu): the built-in model knows only GRID&apos;s speaker s1.</source>
         <translation>Die Zeitleiste aligniert mit Allgemeines US-Englisch, an den Sprecher jeder Aufnahme angepasst (Menü Modell): Das eingebaute Modell kennt nur GRIDs Sprecher s1.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="273"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="277"/>
         <source>The timeline aligns with the built-in model of GRID&apos;s speaker s1. For another speaker, choose Model ▸ Generic US English and Adapt to Speaker.</source>
         <translation>Die Zeitleiste richtet mit dem eingebauten Modell des GRID-Sprechers s1 aus. Für einen anderen Sprecher wählen Sie Modell ▸ Allgemeines US-Englisch und An Sprecher anpassen.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="517"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="521"/>
         <source>The Project&apos;s Aligner (%1)</source>
         <translation>Aligner des Projekts (%1)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="542"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="546"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="567"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="571"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -3830,17 +3877,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="589"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="593"/>
         <source>%1: the alignment came out as it was; nothing changed.</source>
         <translation>%1: Die Alignierung ist unverändert geblieben.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="596"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="600"/>
         <source>No transcript fits its sound by this aligner: its model probably does not know this speaker. Choose Model ▸ Generic US English and Adapt to Speaker, or train the project&apos;s own aligner.</source>
         <translation>Nach diesem Aligner passt kein Transkript zu seinem Ton: Sein Modell kennt diesen Sprecher vermutlich nicht. Wählen Sie Modell ▸ Allgemeines US-Englisch und An Sprecher anpassen, oder trainieren Sie den eigenen Aligner des Projekts.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="601"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="605"/>
         <source>%n transcript(s) do not fit the sound: %1. Check that they are the clips&apos; words (marked in the sequence list).</source>
         <translation>
             <numerusform>%n Transkript passt nicht zum Ton: %1. Prüfen Sie, ob es die Wörter des Clips sind (in der Sequenzliste markiert).</numerusform>
@@ -3848,7 +3895,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="607"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="611"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -3856,52 +3903,52 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="646"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="650"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="646"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="650"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="654"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="658"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="671"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="675"/>
         <source>These phones belong to two words, “%1” and “%2”. Merge the words as well?</source>
         <translation>Diese Phone gehören zu zwei Wörtern, „%1“ und „%2“. Die Wörter ebenfalls verbinden?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="674"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="678"/>
         <source>Merge Phones and Words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="680"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="684"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="680"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="684"/>
         <source>Merge phones and words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="712"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="716"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="712"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="716"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="733"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="737"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>

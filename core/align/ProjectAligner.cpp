@@ -1,7 +1,10 @@
 #include "align/ProjectAligner.h"
 
+#include "align/AlignerUtterance.h"
 #include "align/LongAlignment.h"
 #include "project/Project.h"
+#include "tasks/Feedback.h"
+#include "util/Error.h"
 
 namespace lipsync {
 
@@ -37,4 +40,33 @@ bool fallBackForLongRecording(AlignerChoice &choice, double seconds)
     return true;
 }
 
+std::vector<TrainingUtterance> projectUtterances(const Project &project, const AcousticModel &model,
+                                                 const Lexicon &lexicon, Feedback &feedback,
+                                                 std::vector<std::string> *skipped)
+{
+    std::vector<TrainingUtterance> utterances;
+    const size_t n = project.sequences.size();
+    for (size_t k = 0; k < n; ++k) {
+        feedback.throwIfCanceled();
+        feedback.setProgress(double(k) / double(std::max<size_t>(1, n)));
+        const Sequence &s = project.sequences[k];
+        const std::vector<std::string> words = Sequence::transcriptWords(s.transcript);
+        if (words.empty()) {
+            if (skipped)
+                skipped->push_back(s.id + ": no transcript");
+            continue;
+        }
+        try {
+            PreparedUtterance p = prepareUtterance(s.id, project.mediaPath(s), words, model, lexicon);
+            utterances.push_back({p.id, std::move(p.features), std::move(p.pronunciations), {}});
+        } catch (const Error &e) {
+            if (skipped)
+                skipped->push_back(s.id + ": " + e.what());
+        }
+    }
+    feedback.setProgress(1.0);
+    return utterances;
+}
+
 } // namespace lipsync
+

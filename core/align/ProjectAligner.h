@@ -3,11 +3,17 @@
 // studio's Speech menu (TimelinePanel), and one rule for recordings longer than CMU Sphinx aligns
 // (`project import-long`, the studio's Import Long Recording).
 #include "align/Aligner.h"
+#include "align/AlignerTrainer.h"
 
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace lipsync {
 
+class AcousticModel;
+class Feedback;
+class Lexicon;
 class Project;
 
 // The project's choice (Project::aligner): its own aligner model when it names one (a model
@@ -23,5 +29,14 @@ std::string projectAlignerModel(const Project &project);
 // beyond that, a Sphinx choice gives way to the shipped model, which aligns window by window
 // (alignLongRecording). True when `choice` was changed.
 bool fallBackForLongRecording(AlignerChoice &choice, double seconds);
+
+// The project's sequences with a transcript, as utterances to adapt or train an aligner of the
+// speaker's own on (SpeakerAdaptation, AlignerTrainer): decoded, their features as `model`
+// computes them and their words pronounced by `lexicon`. Those that cannot be used (no sound,
+// silence, words that do not fit) are left out and named in `skipped` ("id: reason"). Progress
+// and cancel through `feedback`.
+std::vector<TrainingUtterance> projectUtterances(const Project &project, const AcousticModel &model,
+                                                 const Lexicon &lexicon, Feedback &feedback,
+                                                 std::vector<std::string> *skipped = nullptr);
 
 } // namespace lipsync

@@ -80,7 +80,9 @@ QString ModelStore::reserveFile(const QString &kind)
 {
     const bool isAam = kind == QLatin1String("aam");
     const QString stem = isAam ? QStringLiteral("aam/faces") : QStringLiteral("models/") + kind;
-    const QString suffix = isAam ? QStringLiteral(".aam") : QStringLiteral(".model");
+    const QString suffix = isAam                                 ? QStringLiteral(".aam")
+                           : kind == QLatin1String("aligner") ? QStringLiteral(".aligner")
+                                                              : QStringLiteral(".model");
     const Project &project = m_document->project();
     for (int n = 1;; ++n) {
         const QString file = n == 1 ? stem + suffix : QStringLiteral("%1-%2%3").arg(stem).arg(n).arg(suffix);

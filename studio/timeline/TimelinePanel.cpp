@@ -16,6 +16,7 @@
 #include "tasks/TaskRunner.h"
 #include "timeline/AlignTask.h"
 #include "timeline/PronunciationsDialog.h"
+#include "timeline/SpeakerAlignerAdapter.h"
 #include "timeline/WaveformView.h"
 #include "util/PhoneSet.h"
 
@@ -179,9 +180,9 @@ QHBoxLayout *TimelinePanel::createButtonBar()
     alignerButton->setToolTip(tr("The acoustic model the aligner uses"));
     alignerButton->setPopupMode(QToolButton::InstantPopup);
     alignerButton->setAutoRaise(true);
-    auto *alignerMenu = new QMenu(alignerButton);
-    alignerMenu->addActions({m_builtInAlignerAction, m_sphinxAlignerAction});
-    alignerButton->setMenu(alignerMenu);
+    m_alignerMenu = new QMenu(alignerButton);
+    m_alignerMenu->addActions({m_builtInAlignerAction, m_sphinxAlignerAction});
+    alignerButton->setMenu(m_alignerMenu);
     bar->addWidget(alignerButton);
     for (QAction *a : {m_adaptAction, m_pronunciationsAction, m_playSelection, m_playWord, m_playAll})
         addButton(a);
@@ -242,6 +243,9 @@ void TimelinePanel::attach(StudioContext *context)
 {
     m_context = context;
     m_document = context->document();
+    m_speakerAligner = new SpeakerAlignerAdapter(context, this);
+    m_alignerMenu->addSeparator();
+    m_alignerMenu->addAction(m_speakerAligner->action());
     publishAlignerChoice();
     m_waveform->setEditable(true);
     // A click moves what the timeline shows: the sequence, or the Preview's new speech.

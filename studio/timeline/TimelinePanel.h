@@ -23,6 +23,7 @@
 class QAction;
 class QHBoxLayout;
 class QLabel;
+class QMenu;
 class QScrollBar;
 class QToolButton;
 
@@ -36,6 +37,7 @@ class StudioContext;
 class ProjectDocument;
 class PlaybackController;
 class PronunciationsDialog;
+class SpeakerAlignerAdapter;
 class IntervalLabelEditor;
 class WaveformView;
 struct AlignJob;
@@ -69,6 +71,8 @@ public:
     // CMU Sphinx's generic US-English model.
     QAction *builtInAlignerAction() const { return m_builtInAlignerAction; }
     QAction *sphinxAlignerAction() const { return m_sphinxAlignerAction; }
+    // Model ▸ Make the Speaker's Own Aligner… (null before attach()).
+    SpeakerAlignerAdapter *speakerAligner() const { return m_speakerAligner; }
     QAction *splitAction() const { return m_split; }
     QAction *mergeAction() const { return m_merge; }
     QAction *relabelAction() const { return m_relabel; }
@@ -159,6 +163,8 @@ private:
     QAction *m_adaptAction;
     QAction *m_builtInAlignerAction;
     QAction *m_sphinxAlignerAction;
+    QMenu *m_alignerMenu = nullptr;
+    SpeakerAlignerAdapter *m_speakerAligner = nullptr;
     QAction *m_split;
     QAction *m_merge;
     QAction *m_relabel;
