@@ -3138,28 +3138,33 @@
         <translation>Das eingebaute Ausrichtungsmodell aus den transkribierten Sequenzen an den Sprecher dieses Projekts anpassen und das Projekt fortan damit ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="62"/>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="70"/>
+        <source> Its %1 s of transcribed speech can make the speaker&apos;s own aligner: Model ▸ Make the Speaker&apos;s Own Aligner…</source>
+        <translation> Seine %1 s transkribierter Sprache reichen für ein eigenes Ausrichtungsmodell des Sprechers: Modell ▸ Eigenes Ausrichtungsmodell des Sprechers erstellen…</translation>
+    </message>
+    <message>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="78"/>
         <source>Make the Speaker&apos;s Own Aligner</source>
         <translation>Eigenes Ausrichtungsmodell des Sprechers erstellen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="70"/>
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="116"/>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="86"/>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="132"/>
         <source>The aligner could not be adapted.</source>
         <translation>Das Ausrichtungsmodell konnte nicht angepasst werden.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="71"/>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="87"/>
         <source>The model is written into the project&apos;s folder, and the bundled demo is read-only: save the project in a folder of your own first.</source>
         <translation>Das Modell wird in den Projektordner geschrieben, und die mitgelieferte Demo ist schreibgeschützt: speichern Sie das Projekt zuerst in einem eigenen Ordner.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="120"/>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="136"/>
         <source>Adapted to %1</source>
         <translation>An %1 angepasst</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="123"/>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="139"/>
         <source>The aligner is adapted to the speaker from %n sequences</source>
         <translation>
             <numerusform>Das Ausrichtungsmodell ist aus %n Sequenz an den Sprecher angepasst</numerusform>
@@ -3167,7 +3172,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="124"/>
+        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="140"/>
         <source> (%1 s of speech; log-likelihood per frame %2 → %3): the project is aligned with it from now on.</source>
         <translation> (%1 s Sprache; Log-Likelihood je Rahmen %2 → %3): das Projekt wird fortan damit ausgerichtet.</translation>
     </message>
@@ -3627,7 +3632,7 @@
     </message>
     <message>
         <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="455"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="456"/>
         <source>Align</source>
         <translation>Ausrichten</translation>
     </message>
@@ -3663,7 +3668,7 @@
     </message>
     <message>
         <location filename="../studio/timeline/TimelinePanel.cpp" line="107"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="520"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="521"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
@@ -3694,7 +3699,7 @@
     </message>
     <message>
         <location filename="../studio/timeline/TimelinePanel.cpp" line="128"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="674"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="675"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
@@ -3794,52 +3799,52 @@
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="316"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="317"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="335"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="336"/>
         <source>Alignment of the speech in the Preview: %1 (read-only; Back to Sequence there to edit)</source>
         <translation>Alignierung der Sprache in der Vorschau: %1 (schreibgeschützt; dort „Zurück zur Sequenz“ zum Bearbeiten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="349"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="350"/>
         <source>No audio</source>
         <translation>Kein Ton</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="419"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="420"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="432"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="433"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="456"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="457"/>
         <source>The transcript of %1 changed since its boundaries were edited. Aligning it again replaces the edited boundaries. Align anyway?</source>
         <translation>Das Transkript von %1 wurde geändert, nachdem seine Grenzen bearbeitet wurden. Erneutes Alignieren ersetzt die bearbeiteten Grenzen. Trotzdem alignieren?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="467"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="468"/>
         <source>Every word of %1 is user-edited: nothing to align there.</source>
         <translation>Jedes Wort von %1 ist von Hand bearbeitet: Dort gibt es nichts zu alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="488"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="489"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="491"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="492"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="437"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="438"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
@@ -3859,17 +3864,17 @@
         <translation>Die Zeitleiste richtet mit dem eingebauten Modell des GRID-Sprechers s1 aus. Für einen anderen Sprecher wählen Sie Modell ▸ Allgemeines US-Englisch und An Sprecher anpassen.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="521"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="522"/>
         <source>The Project&apos;s Aligner (%1)</source>
         <translation>Aligner des Projekts (%1)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="546"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="547"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="571"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="572"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -3877,17 +3882,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="593"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="594"/>
         <source>%1: the alignment came out as it was; nothing changed.</source>
         <translation>%1: Die Alignierung ist unverändert geblieben.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="600"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="601"/>
         <source>No transcript fits its sound by this aligner: its model probably does not know this speaker. Choose Model ▸ Generic US English and Adapt to Speaker, or train the project&apos;s own aligner.</source>
         <translation>Nach diesem Aligner passt kein Transkript zu seinem Ton: Sein Modell kennt diesen Sprecher vermutlich nicht. Wählen Sie Modell ▸ Allgemeines US-Englisch und An Sprecher anpassen, oder trainieren Sie den eigenen Aligner des Projekts.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="605"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="606"/>
         <source>%n transcript(s) do not fit the sound: %1. Check that they are the clips&apos; words (marked in the sequence list).</source>
         <translation>
             <numerusform>%n Transkript passt nicht zum Ton: %1. Prüfen Sie, ob es die Wörter des Clips sind (in der Sequenzliste markiert).</numerusform>
@@ -3895,7 +3900,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="611"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="612"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -3903,52 +3908,52 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="650"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="651"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="650"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="651"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="658"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="659"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="675"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="676"/>
         <source>These phones belong to two words, “%1” and “%2”. Merge the words as well?</source>
         <translation>Diese Phone gehören zu zwei Wörtern, „%1“ und „%2“. Die Wörter ebenfalls verbinden?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="678"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="679"/>
         <source>Merge Phones and Words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="684"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="685"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="684"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="685"/>
         <source>Merge phones and words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="716"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="717"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="716"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="717"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="737"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="738"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>

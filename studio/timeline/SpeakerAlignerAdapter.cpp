@@ -56,6 +56,22 @@ void SpeakerAlignerAdapter::updateAction()
     m_action->setEnabled(document->isOpen() && !document->isReadOnly() && !(m_task && m_task->isRunning()));
 }
 
+QString SpeakerAlignerAdapter::offer() const
+{
+    const ProjectDocument *document = m_context->document();
+    if (!document->isOpen() || document->project().model("aligner"))
+        return {};
+    double seconds = 0;
+    for (const Sequence &s : document->project().sequences)
+        if (!Sequence::transcriptWords(s.transcript).empty())
+            seconds += s.clock().duration();
+    if (seconds < kMinimumSeconds)
+        return {};
+    return tr(" Its %1 s of transcribed speech can make the speaker's own aligner: Model ▸ Make the Speaker's Own "
+              "Aligner…")
+        .arg(seconds, 0, 'f', 0);
+}
+
 Task *SpeakerAlignerAdapter::start()
 {
     ProjectDocument *document = m_context->document();

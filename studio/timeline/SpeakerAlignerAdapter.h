@@ -32,6 +32,9 @@ public:
     QAction *action() const { return m_action; }
     // Starts the adaptation; null (the reason reported) when the project cannot take it.
     Task *start();
+    // " Its N s of transcribed speech can make …" when the open project has enough transcribed
+    // speech and no aligner of its own (the timeline's hint on opening), else empty.
+    QString offer() const;
 
 signals:
     // The project now names this aligner model (its path relative to the project).

@@ -271,11 +271,12 @@ void TimelinePanel::attach(StudioContext *context)
     connect(context, &StudioContext::sequenceLoaded, this, [this] {
         showSequence(m_context->currentSequence());
         if (std::exchange(m_alignerHintPending, false))
-            m_context->showStatus(m_sphinxAlignerAction->isChecked() && m_adaptAction->isChecked()
-                                      ? tr("The timeline aligns with Generic US English, adapted to each recording's "
-                                           "speaker (Model menu): the built-in model knows only GRID's speaker s1.")
-                                      : tr("The timeline aligns with the built-in model of GRID's speaker s1. For "
-                                           "another speaker, choose Model ▸ Generic US English and Adapt to Speaker."),
+            m_context->showStatus((m_sphinxAlignerAction->isChecked() && m_adaptAction->isChecked()
+                                       ? tr("The timeline aligns with Generic US English, adapted to each recording's "
+                                            "speaker (Model menu): the built-in model knows only GRID's speaker s1.")
+                                       : tr("The timeline aligns with the built-in model of GRID's speaker s1. For "
+                                            "another speaker, choose Model ▸ Generic US English and Adapt to Speaker."))
+                                      + m_speakerAligner->offer(),
                                   20000);
     });
     // The one player: the main window follows its frames; the timeline's cursor follows its

@@ -2,7 +2,8 @@
 // the demo: the shipped model adapted to the project's speaker in the background is written into
 // the project's models folder and becomes the project's aligner (one undo step; undone, the
 // project says its earlier aligner again); the read-only demo and a project with too little
-// transcribed speech are refused with the reason, and nothing is left behind.
+// transcribed speech are refused with the reason, and nothing is left behind; the timeline's hint
+// on opening offers it when there is enough speech and no aligner of the project's own.
 #include "DemoWindow.h"
 
 #include "align/AcousticModel.h"
@@ -43,6 +44,8 @@ private slots:
         context.document()->reset(Project::load(dir.path().toStdString()), dir.path(), false);
         SpeakerAlignerAdapter adapter(&context, &window);
         QVERIFY(adapter.action()->isEnabled());
+        // Offered on opening: ten transcribed clips of 3 s.
+        QVERIFY2(adapter.offer().contains(QStringLiteral("30 s of transcribed speech")), qPrintable(adapter.offer()));
         QSignalSpy adapted(&adapter, &SpeakerAlignerAdapter::adapted);
         Task *task = adapter.start();
         QVERIFY(task);
@@ -57,6 +60,7 @@ private slots:
         QVERIFY(choice && !choice->isSphinx());
         QCOMPARE(QString::fromStdString(choice->model), QDir(dir.path()).filePath(file));
         AcousticModel::load(choice->model); // a model the aligner reads
+        QVERIFY(adapter.offer().isEmpty()); // it has its own now
         QCOMPARE(context.undoStack()->undoText(), QStringLiteral("Make the Speaker's Own Aligner"));
         context.undoStack()->undo();
         QVERIFY(!context.document()->project().model("aligner"));
@@ -79,6 +83,7 @@ private slots:
         two.sequences.resize(2); // 6 s of sound, under 20 s
         context.document()->reset(two, dir.path(), false);
         QVERIFY(adapter.action()->isEnabled());
+        QVERIFY(adapter.offer().isEmpty()); // 6 s: not offered
         Task *task = adapter.start();
         QVERIFY(task);
         QTRY_COMPARE_WITH_TIMEOUT(context.taskRunner()->runningCount(), 0, 60000);
