@@ -28,6 +28,7 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QPointer>
+#include <QRegularExpression>
 
 #include <algorithm>
 #include <array>
@@ -136,8 +137,20 @@ ExportMenu::ExportMenu(StudioContext *context, QMenu *parentMenu, QWidget *dialo
     m_prompt = [this](const PathRequest &request) {
         if (request.filter.isEmpty())
             return QFileDialog::getExistingDirectory(m_dialogParent, request.title, request.suggestedPath);
-        return QFileDialog::getSaveFileName(m_dialogParent, request.title, request.suggestedPath, request.filter);
+        QString selected;
+        const QString path = QFileDialog::getSaveFileName(m_dialogParent, request.title, request.suggestedPath,
+                                                          request.filter, &selected);
+        return withFilterSuffix(path, selected);
     };
+}
+
+QString ExportMenu::withFilterSuffix(const QString &path, const QString &filter)
+{
+    if (path.isEmpty() || !QFileInfo(path).suffix().isEmpty())
+        return path;
+    static const QRegularExpression pattern(QStringLiteral("\\(\\*(\\.[^) ]+)"));
+    const QRegularExpressionMatch match = pattern.match(filter);
+    return match.hasMatch() ? path + match.captured(1) : path;
 }
 
 QAction *ExportMenu::action(Kind kind) const

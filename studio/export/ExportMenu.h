@@ -60,6 +60,9 @@ public:
     QAction *mouthShapesAction() const { return m_mouthShapesAction; }
     // The dialog, once opened (null before).
     MouthShapesDialog *mouthShapesDialog() const;
+    // `path` with the extension of the file dialog's chosen `filter` ("Moho switch data (*.dat)")
+    // when the name typed has none: the format follows the extension.
+    static QString withFilterSuffix(const QString &path, const QString &filter);
     // Replaces the file dialogs (GUI tests).
     void setPathPrompt(PathPrompt prompt) { m_prompt = std::move(prompt); }
     void setModelPrompt(ModelPrompt prompt) { m_modelPrompt = std::move(prompt); }

@@ -104,6 +104,18 @@ private slots:
         }
     }
 
+    // A name typed without an extension takes the chosen filter's: the format follows it.
+    void typedNamesTakeTheFiltersExtension()
+    {
+        QCOMPARE(ExportMenu::withFilterSuffix(QStringLiteral("/x/cues"), QStringLiteral("Moho switch data (*.dat)")),
+                 QStringLiteral("/x/cues.dat"));
+        QCOMPARE(ExportMenu::withFilterSuffix(QStringLiteral("/x/cues.json"), QStringLiteral("Rhubarb TSV (*.tsv)")),
+                 QStringLiteral("/x/cues.json"));
+        QCOMPARE(ExportMenu::withFilterSuffix(QStringLiteral("/x/a.b/cues"), QStringLiteral("Praat TextGrid (*.TextGrid)")),
+                 QStringLiteral("/x/a.b/cues.TextGrid"));
+        QCOMPARE(ExportMenu::withFilterSuffix(QString(), QStringLiteral("MP4 video (*.mp4)")), QString());
+    }
+
     void cancelingThePromptStartsNothing()
     {
         menu()->setPathPrompt([](const ExportMenu::PathRequest &) { return QString(); });
