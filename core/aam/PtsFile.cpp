@@ -3,9 +3,10 @@
 #include "aam/LandmarkScheme.h"
 #include "io/AtomicFile.h"
 #include "util/Error.h"
+#include "util/NumberText.h"
 
-#include <charconv>
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <sstream>
 #include <vector>
@@ -21,12 +22,6 @@ std::string_view trimmed(std::string_view s)
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back())))
         s.remove_suffix(1);
     return s;
-}
-
-bool parseDouble(std::string_view s, double &value)
-{
-    const auto result = std::from_chars(s.data(), s.data() + s.size(), value);
-    return result.ec == std::errc() && result.ptr == s.data() + s.size() && std::isfinite(value);
 }
 
 std::string lineField(int line)
@@ -54,11 +49,11 @@ Eigen::VectorXd parsePts(const std::string &text, const std::string &path)
             continue;
         if (line.starts_with("n_points:")) {
             std::string_view count = trimmed(line.substr(9));
-            double n = 0;
+            const std::optional<double> n = parseFiniteNumber(count);
             // Bounded before the cast: int(1e300) is undefined behaviour.
-            if (!parseDouble(count, n) || n < 0 || n != std::floor(n) || n > 1e6)
+            if (!n || *n < 0 || *n != std::floor(*n) || *n > 1e6)
                 throw Error("bad n_points '" + std::string(count) + "'", path, lineField(lineNo));
-            declared = int(n);
+            declared = int(*n);
             continue;
         }
         if (line == "{") {
@@ -81,13 +76,13 @@ Eigen::VectorXd parsePts(const std::string &text, const std::string &path)
         std::string_view ys = trimmed(line.substr(space + 1));
         if (!ys.empty() && ys.front() == ',')
             ys = trimmed(ys.substr(1));
-        double x = 0, y = 0;
-        if (!parseDouble(xs, x) || !parseDouble(ys, y))
+        const std::optional<double> x = parseFiniteNumber(xs), y = parseFiniteNumber(ys);
+        if (!x || !y)
             throw Error("expected two finite numbers 'x y', got '" + std::string(line) + "'", path,
                         lineField(lineNo));
         // 1-based in the file, 0-based in memory.
-        values.push_back(x - 1.0);
-        values.push_back(y - 1.0);
+        values.push_back(*x - 1.0);
+        values.push_back(*y - 1.0);
     }
     if (inBraces)
         throw Error("missing closing '}'", path);
