@@ -69,9 +69,11 @@ MouthMeasurer::MouthMeasurer(const AamModel &aam) : m_synth(aam)
         m_teethGain[k] = contrast(m_synth.texture(Eigen::VectorXd::Unit(nc, k))) - m_teethBase;
 }
 
-MouthMeasures MouthMeasurer::measure(const Eigen::VectorXd &combined) const
+MouthMeasures MouthMeasurer::measure(const Eigen::VectorXd &combined, Eigen::VectorXd *shape) const
 {
     const Eigen::VectorXd s = m_synth.shape(combined);
+    if (shape)
+        *shape = s;
     Eigen::Vector2d eyes = Eigen::Vector2d::Zero();
     for (int i = 0; i < kEyePoints; ++i)
         eyes += point(s, i);
@@ -92,15 +94,6 @@ MouthMeasures MouthMeasurer::measure(const Eigen::VectorXd &combined) const
     m.lowerRight = s[2 * kLowerRight + 1] - corners.y();
     m.teeth = m_teethBase + m_teethGain.dot(combined);
     return m;
-}
-
-std::vector<MouthMeasures> MouthMeasurer::measureAll(const Eigen::MatrixXd &features) const
-{
-    std::vector<MouthMeasures> out;
-    out.reserve(size_t(features.rows()));
-    for (Eigen::Index r = 0; r < features.rows(); ++r)
-        out.push_back(measure(features.row(r).transpose()));
-    return out;
 }
 
 } // namespace lipsync

@@ -9,7 +9,6 @@
 #include <Eigen/Core>
 
 #include <array>
-#include <vector>
 
 namespace lipsync {
 
@@ -37,9 +36,8 @@ class MouthMeasurer
 {
 public:
     explicit MouthMeasurer(const AamModel &aam);
-    MouthMeasures measure(const Eigen::VectorXd &combined) const;
-    // Every row of `features` (frames x combined parameters).
-    std::vector<MouthMeasures> measureAll(const Eigen::MatrixXd &features) const;
+    // `shape`, when given, receives the 23 points the measures were taken on (shape()).
+    MouthMeasures measure(const Eigen::VectorXd &combined, Eigen::VectorXd *shape = nullptr) const;
     // The 23 points of `combined` in the normalised frame (x0, y0, x1, y1, ...).
     Eigen::VectorXd shape(const Eigen::VectorXd &combined) const { return m_synth.shape(combined); }
 

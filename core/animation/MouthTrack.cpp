@@ -23,10 +23,12 @@ MouthTrack makeMouthTrack(const MouthMeasurer &measurer, const Eigen::MatrixXd &
     MouthTrack track;
     track.frames = frames;
     track.phones = std::move(phones);
-    track.measures = measurer.measureAll(features);
     track.points.resize(features.rows(), 2 * scheme23::kPointCount);
-    for (Eigen::Index r = 0; r < features.rows(); ++r)
-        track.points.row(r) = measurer.shape(features.row(r).transpose()).transpose();
+    Eigen::VectorXd shape;
+    for (Eigen::Index r = 0; r < features.rows(); ++r) {
+        track.measures.push_back(measurer.measure(features.row(r).transpose(), &shape));
+        track.points.row(r) = shape.transpose();
+    }
     track.features = features;
     track.soundFile = std::move(soundFile);
     return track;
