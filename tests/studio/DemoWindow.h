@@ -2,11 +2,13 @@
 // Shared set-up of the GUI tests: the process (OpenGL surface format for VTK, test-mode settings
 // so the user's own are untouched), the studio's main window on the bundled demo project, shown,
 // active (window shortcuts only fire in the active window) and with its loading tasks finished.
+#include "app/DemoProject.h"
 #include "app/MainWindow.h"
 #include "app/ProjectFiles.h"
 #include "app/SurfaceFormat.h"
 #include "context/ErrorReporter.h"
 #include "context/PlaybackController.h"
+#include "context/SequenceMedia.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "tasks/TaskRunner.h"
@@ -27,6 +29,25 @@ inline void initStudioTest()
 {
     setDefaultSurfaceFormat();
     QStandardPaths::setTestModeEnabled(true);
+}
+
+// The bundled demo opened read-only on `context`, for tests of panels without a window.
+inline void openDemo(StudioContext &context)
+{
+    const QString demo = DemoProject::locate();
+    QVERIFY(!demo.isEmpty());
+    context.document()->reset(DemoProject::load(demo), demo, true);
+}
+
+// Sequence `row` of the context's document made the current one, its media as the window's
+// loader hands it over (only its frames count here).
+inline void makeCurrent(StudioContext &context, int row)
+{
+    auto media = std::make_shared<SequenceMedia>();
+    media->sequenceId = QString::fromStdString(context.document()->sequence(row).id);
+    media->frames.resize(context.document()->sequence(row).frameCount);
+    context.setCurrentSequence(row, media);
+    context.announceSequenceLoaded();
 }
 
 // Copies every file under `from` into `to`, subfolders included, each writable by the owner (a

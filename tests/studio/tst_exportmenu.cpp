@@ -6,8 +6,6 @@
 // menu: tst_mainwindow.)
 #include "DemoWindow.h"
 
-#include "app/DemoProject.h"
-#include "context/SequenceMedia.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "dynamics/ModelFile.h"
@@ -49,16 +47,9 @@ private slots:
     {
         QVERIFY(m_dir.isValid());
         ErrorReporter::setBatchMode(true);
-        const QString demo = DemoProject::locate();
-        QVERIFY(!demo.isEmpty());
-        m_context.document()->reset(DemoProject::load(demo), demo, true);
+        testing::openDemo(m_context);
         m_menu = new ExportMenu(&m_context, &m_file, &m_dialogParent);
-        // The first sequence as the window's loader hands it over (its frames only count).
-        auto media = std::make_shared<SequenceMedia>();
-        media->sequenceId = QString::fromStdString(m_context.document()->sequence(0).id);
-        media->frames.resize(m_context.document()->sequence(0).frameCount);
-        m_context.setCurrentSequence(0, media);
-        m_context.announceSequenceLoaded();
+        testing::makeCurrent(m_context, 0);
         QCOMPARE(m_context.currentSequence(), 0);
         QCOMPARE(m_file.actions().size(), 1); // File ▸ Export
         QCOMPARE(menu()->menu()->actions().size(), 11 + 3); // entries and three separators

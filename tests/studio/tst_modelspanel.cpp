@@ -6,14 +6,12 @@
 #include "DemoWindow.h"
 
 #include "annotate/FacesController.h"
-#include "app/DemoProject.h"
 #include "app/MainWindow.h"
 #include "app/ProjectFiles.h"
 #include "build/ModelsPanel.h"
 #include "context/ErrorReporter.h"
 #include "context/ModelKinds.h"
 #include "context/ModelStore.h"
-#include "context/SequenceMedia.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "dynamics/ContextDependentModel.h"
@@ -96,9 +94,7 @@ private slots:
     void worksWithAContextAndNoWindow()
     {
         StudioContext context;
-        const QString demo = DemoProject::locate();
-        QVERIFY(!demo.isEmpty());
-        context.document()->reset(DemoProject::load(demo), demo, true);
+        testing::openDemo(context);
         QTabWidget plots;
         ModelsPanel panel;
         panel.attach(&context, &plots);
@@ -118,12 +114,7 @@ private slots:
         QVERIFY(!context.modelStore()->dynamicModel(QStringLiteral("hmm"))->compensatesVariance());
         QVERIFY(!dynamic_cast<const ContextDependentModel *>(context.modelStore()->dynamicModel(QStringLiteral("hmm")).get()));
         QCOMPARE(context.undoStack()->undoText(), QStringLiteral("Train HMM-mean"));
-        // The sequence's media as the window's loader gives it (frames only matter here).
-        auto media = std::make_shared<SequenceMedia>();
-        media->sequenceId = QString::fromStdString(context.document()->sequence(2).id);
-        media->frames.resize(context.document()->sequence(2).frameCount);
-        context.setCurrentSequence(2, media);
-        context.announceSequenceLoaded();
+        testing::makeCurrent(context, 2);
         QCOMPARE(panel.trajectoryView()->seriesCount(), 2); // the recording and HMM-mean
         context.setCurrentFrame(30);
         QVERIFY(std::abs(panel.trajectoryView()->cursorTime() - 30.5 / 25.0) < 1e-9);

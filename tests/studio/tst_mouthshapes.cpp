@@ -8,8 +8,6 @@
 
 #include "animation/AnimationControls.h"
 #include "animation/MouthCues.h"
-#include "app/DemoProject.h"
-#include "context/SequenceMedia.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
 #include "export/ExportMenu.h"
@@ -48,15 +46,9 @@ private slots:
     void initTestCase()
     {
         ErrorReporter::setBatchMode(true);
-        const QString demo = DemoProject::locate();
-        QVERIFY(!demo.isEmpty());
-        m_context.document()->reset(DemoProject::load(demo), demo, true);
+        testing::openDemo(m_context);
         m_menu = new ExportMenu(&m_context, &m_file, &m_window);
-        auto media = std::make_shared<SequenceMedia>();
-        media->sequenceId = QString::fromStdString(m_context.document()->sequence(0).id);
-        media->frames.resize(m_context.document()->sequence(0).frameCount);
-        m_context.setCurrentSequence(0, media);
-        m_context.announceSequenceLoaded();
+        testing::makeCurrent(m_context, 0);
     }
 
     void dialogShowsTheLearnedShapes()
