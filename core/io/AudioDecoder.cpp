@@ -134,8 +134,9 @@ struct SampleWindow
 
 // Decodes the first audio stream of `path` to mono float at `sampleRate` (0: the stream's own) on
 // the media timeline (AudioDecoder::decode), calling `consume(window)` after every decoded packet
-// and once at the end (`done`). Returns the output rate.
-int decodeStream(const std::string &path, int sampleRate,
+// and once at the end (`done`). `whole`: the window will keep everything (room is made for the
+// whole sound up front). Returns the output rate.
+int decodeStream(const std::string &path, int sampleRate, bool whole,
                  const std::function<void(SampleWindow &, bool done)> &consume)
 {
     if (sampleRate < 0)
@@ -157,7 +158,10 @@ int decodeStream(const std::string &path, int sampleRate,
     libav::CodecPtr decoder = libav::openDecoder(path, fc, stream);
 
     SampleWindow window;
-    MonoResampler resampler(path, sampleRate > 0 ? sampleRate : scan->audioSampleRate);
+    const int outRate = sampleRate > 0 ? sampleRate : scan->audioSampleRate;
+    if (whole && outRate > 0)
+        window.samples.reserve(size_t(scan->audioEndTime * outRate) + 64);
+    MonoResampler resampler(path, outRate);
     // Sample k sounds at k / rate on the timeline: frames are placed by their timestamps, the
     // sound before the stream starts and in its gaps is silence (AudioTimeline).
     AudioTimeline timeline(scan->containerDuration);
@@ -226,14 +230,7 @@ void clampSamples(std::vector<float> &samples)
 AudioBuffer AudioDecoder::decode(const std::string &path, int sampleRate)
 {
     AudioBuffer buffer;
-    const auto scan = libav::scanMedia(path);
-    const int expectedRate = sampleRate > 0 ? sampleRate : scan->audioSampleRate;
-    bool reserved = false;
-    buffer.sampleRate = decodeStream(path, sampleRate, [&](SampleWindow &window, bool done) {
-        if (!reserved && expectedRate > 0) {
-            window.samples.reserve(size_t(scan->audioEndTime * expectedRate) + 64);
-            reserved = true;
-        }
+    buffer.sampleRate = decodeStream(path, sampleRate, true, [&](SampleWindow &window, bool done) {
         if (done)
             buffer.samples = std::move(window.samples);
     });
@@ -276,7 +273,7 @@ void AudioDecoder::decodeRanges(const std::string &path, int sampleRate,
             window.first += drop;
         }
     };
-    decodeStream(path, sampleRate > 0 ? sampleRate : rate, serve);
+    decodeStream(path, sampleRate, false, serve);
 }
 
 } // namespace lipsync
