@@ -1,6 +1,7 @@
 #include "animation/MouthMeasures.h"
 
 #include "aam/LandmarkScheme.h"
+#include "render/LowerFaceWarp.h"
 #include "util/Error.h"
 
 #include <opencv2/imgproc.hpp>
@@ -81,7 +82,7 @@ MouthMeasures MouthMeasurer::measure(const Eigen::VectorXd &combined, Eigen::Vec
     const Eigen::Vector2d left = point(s, kMouthLeft), right = point(s, kMouthRight);
     const Eigen::Vector2d corners = 0.5 * (left + right);
     MouthMeasures m;
-    m.opening = (point(s, kInnerBottom) - point(s, kInnerTop)).norm();
+    m.opening = LowerFaceWarp::opening(s);
     m.width = (right - left).norm();
     m.leftCorner = eyes.x() - left.x();
     m.rightCorner = right.x() - eyes.x();

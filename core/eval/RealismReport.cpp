@@ -14,6 +14,7 @@
 #include "project/Project.h"
 #include "render/BilabialClosure.h"
 #include "render/FaceRenderer.h"
+#include "render/LowerFaceWarp.h"
 #include "tasks/BlockingMap.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
@@ -96,9 +97,6 @@ double ratioOfMeans(const std::vector<double> &generated, const std::vector<doub
     return r > 0 ? g / r : kNoFigure;
 }
 
-// The 23-point scheme's inner-lip centres (aam/LandmarkScheme.cpp).
-constexpr int kInnerLipTop = 16, kInnerLipBottom = 17;
-
 struct Rendering
 {
     std::string method;
@@ -125,7 +123,6 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
     std::vector<int> skipped(methods, 0);
     // The inner-lip gap of each method's own shape (the AAM's inner-lip centres, normalised frame):
     // the mouth the animation exports carry, to compare with what the render shows.
-    const AamSynthesizer synthesizer(aam);
     std::vector<std::vector<double>> shapeOpening(methods, recordedOpening);
     // The machine observer's mouth box in each stream's frames: dlib's mouth points of that frame
     // itself (the recording's for the recording), as a detector of rendered faces would crop it.
@@ -162,9 +159,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
             recorded.copyTo(generated);
             renderer.renderInto(t, c, generated);
             tapes.add(int(m) + 1, generated);
-            const Eigen::VectorXd shape = synthesizer.shape(c);
-            shapeOpening[m][ut] = std::hypot(shape[2 * kInnerLipBottom] - shape[2 * kInnerLipTop],
-                                             shape[2 * kInnerLipBottom + 1] - shape[2 * kInnerLipTop + 1]);
+            shapeOpening[m][ut] = LowerFaceWarp::opening(renderer.synthesizer().shape(c));
             const Eigen::VectorXd rendered = detector.dlibLandmarksInBox(generated, *box);
             if (rendered.size() != 136) {
                 ++skipped[m];
