@@ -40,6 +40,8 @@ public:
     MouthMeasures measure(const Eigen::VectorXd &combined, Eigen::VectorXd *shape = nullptr) const;
     // The 23 points of `combined` in the normalised frame (x0, y0, x1, y1, ...).
     Eigen::VectorXd shape(const Eigen::VectorXd &combined) const { return m_synth.shape(combined); }
+    // The AAM's synthesis the measures are taken on (to draw a mouth of given parameters).
+    const AamSynthesizer &synthesizer() const { return m_synth; }
 
 private:
     AamSynthesizer m_synth;

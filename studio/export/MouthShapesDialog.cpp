@@ -35,7 +35,6 @@ struct MouthShapesDialog::Learned
 {
     std::shared_ptr<const AamModel> aam;
     std::unique_ptr<MouthMeasurer> measurer;
-    std::unique_ptr<AamSynthesizer> synthesizer;
     std::vector<MouthTrack> tracks;
     MouthMapping mapping;
 };
@@ -207,7 +206,6 @@ Task *MouthShapesDialog::relearn()
         auto learned = std::make_shared<Learned>();
         learned->aam = aam;
         learned->measurer = std::make_unique<MouthMeasurer>(*aam);
-        learned->synthesizer = std::make_unique<AamSynthesizer>(*aam);
         learned->tracks = projectMouthTracks(*learned->measurer, project);
         feedback.throwIfCanceled();
         try {
@@ -283,7 +281,7 @@ QPixmap MouthShapesDialog::picture(MouthShape shape) const
     CompositeOptions options;
     options.region = FaceRegion::Full;
     options.matchColour = false;
-    m_learned->synthesizer->composite(c, pose, canvas, options);
+    m_learned->measurer->synthesizer().composite(c, pose, canvas, options);
     const Eigen::VectorXd points = pose.apply(m_learned->measurer->shape(c));
     cv::Rect2d box(points[16], points[17], 0, 0); // mouth_left, then the other mouth points
     for (int i = 8; i < 18; ++i)

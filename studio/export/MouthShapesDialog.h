@@ -24,7 +24,6 @@ class QScrollArea;
 
 namespace lipsync {
 class AamModel;
-class AamSynthesizer;
 class Task;
 }
 
