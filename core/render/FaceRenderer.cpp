@@ -115,13 +115,9 @@ std::vector<bool> FaceRenderer::occludedFrames(const Eigen::VectorXd &errors)
     for (Eigen::Index t = 0; t < errors.size(); ++t)
         if (std::isfinite(errors[t]))
             finite.push_back(errors[t]);
+    std::sort(finite.begin(), finite.end());
     auto quantile = [&finite](double q) {
-        if (finite.empty())
-            return 0.0;
-        std::vector<double> copy = finite;
-        const auto k = std::ptrdiff_t(q * double(copy.size() - 1));
-        std::nth_element(copy.begin(), copy.begin() + k, copy.end());
-        return copy[size_t(k)];
+        return finite.empty() ? 0.0 : finite[size_t(q * double(finite.size() - 1))];
     };
     const double median = quantile(0.5);
     const double upperQuartile = quantile(0.75);
