@@ -404,7 +404,7 @@ bool FacesController::nextPickedFrame()
             m_context->setCurrentFrame(frame);
         } else {
             m_pendingFrame = frame;
-            emit sequenceRequested(row);
+            m_context->selectSequence(row);
         }
         return true;
     }

@@ -85,10 +85,6 @@ public:
     QString reviewStatus() const;
     void showModes();
 
-signals:
-    // The review queue's next frame is in another sequence: load it (the window's selection).
-    void sequenceRequested(int row);
-
 private:
     void onDocumentReset();
     void onSequenceChanged(int row);

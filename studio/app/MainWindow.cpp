@@ -2,13 +2,13 @@
 
 #include "annotate/FacesController.h"
 #include "annotate/FrameView.h"
-#include "app/AboutBox.h"
+#include "app/AppCommands.h"
 #include "app/Autosave.h"
 #include "app/LongRecordingImporter.h"
 #include "app/ProjectFiles.h"
 #include "app/SequenceDetailsView.h"
 #include "app/SequenceListModel.h"
-#include "app/SequenceLoader.h"
+#include "context/SequenceLoader.h"
 #include "app/ShortcutsDialog.h"
 #include "app/TranscriptProposer.h"
 #include "app/TransportBar.h"
@@ -61,10 +61,11 @@ namespace lipsync::studio {
 
 MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent), m_context(new StudioContext(this)),
-      m_actions(std::make_unique<StudioActions>(this, m_context->undoStack()))
+      m_actions(std::make_unique<StudioActions>(this, m_context))
 {
     // First, so the window's own views show a frame before the panels hear of it.
     connect(m_context, &StudioContext::currentFrameChanged, this, &MainWindow::showFrame);
+    connect(m_context, &StudioContext::sequenceLoaded, this, &MainWindow::onSequenceLoaded);
     connect(m_context, &StudioContext::statusMessage, this,
             [this](const QString &message, int milliseconds) { statusBar()->showMessage(message, milliseconds); });
     setObjectName(QStringLiteral("MainWindow"));
@@ -95,7 +96,6 @@ MainWindow::MainWindow(QWidget *parent)
     createDocks();
     createMenus();
     m_faces = new FacesController(m_context, m_frameView, this);
-    connect(m_faces, &FacesController::sequenceRequested, this, &MainWindow::selectSequence);
     const QList<QAction *> top = menuBar()->actions();
     menuBar()->insertMenu(top.isEmpty() ? nullptr : top.last(), m_faces->menu()); // before Help
     m_models->setBuildAamAction(m_faces->buildAamAction());
@@ -108,7 +108,15 @@ MainWindow::MainWindow(QWidget *parent)
 
     connect(m_context->document(), &ProjectDocument::documentReset, this, &MainWindow::onDocumentReset);
     connect(m_context->document(), &ProjectDocument::locationChanged, this, &MainWindow::updateTitle);
-    connect(m_context->document(), &ProjectDocument::sequencesRemoved, this, &MainWindow::onSequencesRemoved);
+    connect(m_context, &StudioContext::sequenceRequested, this, &MainWindow::showSequenceRow);
+    connect(m_context, &StudioContext::sequenceLoadEnded, this, [this](bool loaded) {
+        if (!loaded) // canceled or failed: the list shows the sequence the views still show
+            showSequenceRow(m_context->currentSequence());
+        emit sequenceLoadEnded(loaded);
+    });
+    connect(m_context, &StudioContext::sequenceLoadFailed, this, [this](const QString &mediaPath, const QString &problem) {
+        ErrorReporter::report(this, tr("The media of this sequence could not be read."), mediaPath, problem);
+    });
     connect(m_context->modelStore(), &ModelStore::writeFailed, this, [this](const QString &problems) {
         ErrorReporter::report(this, tr("Models could not be written into the project's folder."), QString(), problems);
     });
@@ -126,11 +134,7 @@ MainWindow::MainWindow(QWidget *parent)
             m_details->showSequence(m_context->document()->sequence(row), m_context->media()->mediaPath, *m_context->media());
     });
     connect(m_context->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
-    connect(m_transport, &TransportBar::frameRequested, this, &MainWindow::setCurrentFrame);
-    connect(m_context->playback(), &PlaybackController::frameReached, this, [this](int frame) {
-        if (m_context->media() && m_context->playback()->mediaPath() == m_context->media()->mediaPath) // not the preview's new speech
-            setCurrentFrame(frame);
-    });
+    connect(m_transport, &TransportBar::frameRequested, m_context, &StudioContext::setCurrentFrame);
     connect(m_context->playback(), &PlaybackController::playingSilently, this, [this](const QString &why) {
         statusBar()->showMessage(tr("Playing without sound: %1.").arg(why), 10000);
     });
@@ -312,24 +316,26 @@ void MainWindow::resetLayout()
 void MainWindow::createMenus()
 {
     const StudioActions &a = *m_actions;
-    m_files = nullptr;
+    auto command = [this](const char *name) { return m_actions->registry->action(QLatin1String(name)); };
     QMenu *file = menuBar()->addMenu(tr("&File"));
-    file->addAction(a.newProject);
-    file->addAction(a.open);
-    QMenu *recent = file->addMenu(tr("Open &Recent"));
-    file->addAction(a.openDemo);
+    QMenu *recent = new QMenu(tr("Open &Recent"), this);
+    m_files = new ProjectFiles(m_context->document(), this, recent, m_context->taskRunner());
+    m_files->autosave()->watch(m_context->taskRunner());
+    AppCommands::add(*m_actions->registry, m_files, m_frameView, this);
+    file->addAction(command("file/new"));
+    file->addAction(command("file/open"));
+    file->addMenu(recent);
+    file->addAction(command("file/open-demo"));
     file->addSeparator();
-    file->addAction(a.save);
-    file->addAction(a.saveAs);
+    file->addAction(command("file/save"));
+    file->addAction(command("file/save-as"));
     file->addSeparator();
     m_importer = new LongRecordingImporter(m_context, [this] { return m_files->save(); }, this);
     file->addAction(m_importer->action());
-    connect(m_importer, &LongRecordingImporter::imported, this, [this](int first) { selectSequence(first); });
+    connect(m_importer, &LongRecordingImporter::imported, m_context, [this](int first) { m_context->selectSequence(first); });
     m_export = new ExportMenu(m_context, file, this);
     file->addSeparator();
-    file->addAction(a.quit);
-    m_files = new ProjectFiles(m_context->document(), this, recent, m_context->taskRunner());
-    m_files->autosave()->watch(m_context->taskRunner());
+    file->addAction(command("app/quit"));
 
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
     edit->addAction(a.undo);
@@ -351,7 +357,7 @@ void MainWindow::createMenus()
     view->addSeparator();
     view->addAction(a.previousSequence);
     view->addAction(a.nextSequence);
-    view->addAction(a.fitFrame);
+    view->addAction(command("view/fit-frame"));
     view->addAction(m_timeline->spectrogramAction());
     view->addSeparator();
     QAction *live = view->addAction(tr("&Live: Speak and Watch the Face"));
@@ -379,13 +385,13 @@ void MainWindow::createMenus()
     });
     keys->setObjectName(QStringLiteral("shortcutsAction"));
     help->addSeparator();
-    help->addAction(a.about);
+    help->addAction(command("help/about"));
 
     QToolBar *bar = addToolBar(tr("Main"));
     bar->setObjectName(QStringLiteral("mainToolBar"));
     bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     bar->setMovable(false);
-    for (QAction *act : {a.open, a.save, a.undo, a.redo})
+    for (QAction *act : {command("file/open"), command("file/save"), a.undo, a.redo})
         bar->addAction(act);
     // Undo and redo name their step ("Undo Train DPDS"): icons here, the name in the tooltip and
     // the Edit menu, rather than a label elided as it changes.
@@ -396,40 +402,10 @@ void MainWindow::createMenus()
     bar->addAction(a.previousSequence);
     bar->addAction(a.nextSequence);
 
-    connect(a.open, &QAction::triggered, m_files, &ProjectFiles::openWithDialog);
-    connect(a.newProject, &QAction::triggered, m_files, &ProjectFiles::newProjectWithDialog);
-    connect(a.openDemo, &QAction::triggered, this, [this] {
-        if (m_files->maybeSave())
-            m_files->openDemo();
-    });
-    connect(a.save, &QAction::triggered, m_files, &ProjectFiles::save);
-    connect(a.saveAs, &QAction::triggered, m_files, &ProjectFiles::saveAs);
-    connect(a.quit, &QAction::triggered, this, &QWidget::close);
-    connect(a.previousFrame, &QAction::triggered, this, [this] { setCurrentFrame(m_context->currentFrame() - 1); });
-    connect(a.nextFrame, &QAction::triggered, this, [this] { setCurrentFrame(m_context->currentFrame() + 1); });
-    connect(a.firstFrame, &QAction::triggered, this, [this] { setCurrentFrame(0); });
-    connect(a.lastFrame, &QAction::triggered, this, [this] {
-        if (m_context->media())
-            setCurrentFrame(m_context->media()->frameCount() - 1);
-    });
-    connect(a.playPause, &QAction::triggered, this, &MainWindow::togglePlayback);
-    connect(a.previousSequence, &QAction::triggered, this, [this] {
-        selectSequence(std::max(0, (m_pendingRow >= 0 ? m_pendingRow : m_context->currentSequence()) - 1));
-    });
-    connect(a.nextSequence, &QAction::triggered, this, [this] {
-        selectSequence(std::min(m_context->document()->sequenceCount() - 1, (m_pendingRow >= 0 ? m_pendingRow : m_context->currentSequence()) + 1));
-    });
-    connect(a.fitFrame, &QAction::triggered, m_frameView, &FrameView::fitToView);
-    connect(a.about, &QAction::triggered, this, &MainWindow::showAbout);
 }
 
-void MainWindow::clearSequence()
+void MainWindow::clearViews()
 {
-    if (m_loadTask)
-        m_loadTask->cancel();
-    m_context->playback()->pause();
-    m_context->clearCurrentSequence();
-    m_pendingRow = -1;
     m_frameView->setImage({});
     m_frameView->setPlaceholderText(tr("Select a sequence"));
     m_preview->setFrame({}, {});
@@ -442,106 +418,52 @@ void MainWindow::clearSequence()
 
 void MainWindow::onDocumentReset()
 {
-    // A new document: drop the old one's media and any load still running for it.
-    clearSequence();
+    // The context dropped the old document's media and selects its first sequence.
+    clearViews();
     m_models->setProject(m_context->document()->project());
     m_sequenceView->resizeColumnsToContents();
     m_sequenceView->horizontalHeader()->setStretchLastSection(true);
-    if (m_context->document()->sequenceCount() > 0)
-        selectSequence(0);
+    m_context->selectSequence(0);
 }
 
-void MainWindow::onSequencesRemoved(int first)
+void MainWindow::showSequenceRow(int row)
 {
-    // The rows before `first` stay where they were. When the sequence shown (or loading) was
-    // among the removed ones, the panels let it go (sequenceLoaded without media: none shown)
-    // and the last remaining sequence takes its place.
-    if (m_context->currentSequence() < first && m_pendingRow < first)
-        return;
-    clearSequence();
-    m_context->announceSequenceLoaded();
-    selectSequence(first - 1);
-}
-
-void MainWindow::selectSequence(int row)
-{
-    if (row < 0 || row >= m_context->document()->sequenceCount())
-        return;
-    const QModelIndex index = m_sequenceModel->index(row, 0);
-    if (m_sequenceView->currentIndex().row() != row || !m_sequenceView->selectionModel()->isRowSelected(row))
-        m_sequenceView->selectionModel()->setCurrentIndex(
-            index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    const QSignalBlocker block(m_sequenceView->selectionModel());
+    if (row < 0)
+        m_sequenceView->selectionModel()->clearSelection();
     else
-        onSelectionChanged();
+        m_sequenceView->selectionModel()->setCurrentIndex(m_sequenceModel->index(row, 0),
+                                                          QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    m_sequenceView->viewport()->update();
 }
 
 void MainWindow::onSelectionChanged()
 {
     const QModelIndexList rows = m_sequenceView->selectionModel()->selectedRows();
-    if (rows.isEmpty())
-        return;
-    const int row = rows.first().row();
-    if (row == m_pendingRow || (row == m_context->currentSequence() && m_pendingRow < 0))
-        return;
-    if (m_loadTask)
-        m_loadTask->cancel(); // superseded: its result must not arrive after this one's
-    m_context->playback()->pause();
-    m_pendingRow = row;
-    const Sequence &s = m_context->document()->sequence(row);
-    SequenceSource source{QString::fromStdString(s.id), m_context->document()->mediaPath(row), s.frameRate};
-    Task *task = SequenceLoader::start(*m_context->taskRunner(), source, [this, row](std::shared_ptr<const SequenceMedia> media) {
-        applyMedia(row, std::move(media));
-    });
-    m_loadTask = task;
-    connect(task, &Task::finished, this, [this, task, path = source.mediaPath] { onLoadFinished(task, path); });
-    statusBar()->showMessage(tr("Loading %1…").arg(source.id), 3000);
+    if (!rows.isEmpty())
+        m_context->selectSequence(rows.first().row());
 }
 
-void MainWindow::onLoadFinished(Task *task, const QString &mediaPath)
+void MainWindow::onSequenceLoaded()
 {
-    if (task->state() == Task::State::Finished)
-        return; // applyMedia ran
-    if (task->state() == Task::State::Failed)
-        ErrorReporter::report(this, tr("The media of this sequence could not be read."), mediaPath, task->errorMessage());
-    if (task != m_loadTask)
-        return; // superseded by a newer load
-    // Canceled or failed: the views keep the sequence they showed; so does the list.
-    m_pendingRow = -1;
-    if (m_context->currentSequence() >= 0) {
-        const QSignalBlocker block(m_sequenceView->selectionModel());
-        m_sequenceView->selectionModel()->setCurrentIndex(m_sequenceModel->index(m_context->currentSequence(), 0),
-                                                          QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
-        m_sequenceView->viewport()->update();
-    } else {
-        m_sequenceView->selectionModel()->clearSelection();
-    }
-    emit sequenceLoadEnded(false);
-}
-
-void MainWindow::applyMedia(int row, std::shared_ptr<const SequenceMedia> media)
-{
-    if (row >= m_context->document()->sequenceCount())
-        return;
-    const Sequence &s = m_context->document()->sequence(row);
-    m_pendingRow = -1;
-    m_context->setCurrentSequence(row, std::move(media));
     const std::shared_ptr<const SequenceMedia> shown = m_context->media();
+    if (!shown) { // the sequence shown was removed
+        clearViews();
+        return;
+    }
+    const Sequence &s = m_context->document()->sequence(m_context->currentSequence());
     const int frames = shown->frameCount();
     m_transport->setClock(shown->clock);
-    m_context->playback()->setSequence(shown->mediaPath, shown->clock);
-
-    showChart(); // the timeline shows the media on sequenceLoaded
+    showChart(); // the timeline shows the media itself
     m_frameView->setPlaceholderText(shown->audioOnly ? tr("Sound only: no video to show")
                                     : frames > 0      ? QString()
                                                       : tr("The video has no frames"));
     m_details->showSequence(s, shown->mediaPath, *shown);
-    setCurrentFrame(0);
+    showFrame(m_context->currentFrame());
     updateTitle();
     statusBar()->showMessage(tr("%1: %n frames at %2 fps", "", frames)
                                  .arg(shown->sequenceId, QLocale().toString(shown->frameRate, 'f', 2)),
                              5000);
-    m_context->announceSequenceLoaded();
-    emit sequenceLoadEnded(true);
 }
 
 void MainWindow::showChart()
@@ -556,11 +478,6 @@ void MainWindow::showChart()
     for (int i = 0; i < t.size(); ++i)
         t[i] = shown->clock.centre(i);
     m_chart->addSeries(tr("RMS"), t, shown->frameRms, QColor(0x1e, 0x88, 0xe5));
-}
-
-void MainWindow::setCurrentFrame(int frame)
-{
-    m_context->setCurrentFrame(frame); // showFrame first, then the panels
 }
 
 void MainWindow::showFrame(int frame)
@@ -579,11 +496,6 @@ void MainWindow::showFrame(int frame)
     m_chart->setCursor(shown->clock.centre(frame));
 }
 
-void MainWindow::togglePlayback()
-{
-    m_context->togglePlayback();
-}
-
 void MainWindow::updateTitle()
 {
     QString title = tr("LipSync Studio");
@@ -598,11 +510,6 @@ void MainWindow::updateTitle()
     }
     setWindowTitle(title);
     setWindowModified(m_context->document()->isModified());
-}
-
-void MainWindow::showAbout()
-{
-    AboutBox::show(this);
 }
 
 void MainWindow::restoreSettings()

@@ -79,11 +79,6 @@ public:
     TimelinePanel *timeline() const { return m_timeline; }
 
 public slots:
-    void selectSequence(int row);
-    void setCurrentFrame(int frame);
-    void togglePlayback();
-    void showAbout();
-
     // View > Panels > Reset Layout: every dock shown, docked where it starts, at its default size.
     void resetLayout();
 
@@ -103,13 +98,13 @@ private:
     void updateActiveModels();
     void createMenus();
     void addGeneratedFaceMenu(QMenu *view);
-    // No sequence shown: its media dropped, any load still running for one canceled.
-    void clearSequence();
+    // The window's own views of a sequence emptied.
+    void clearViews();
     void onDocumentReset();
-    void onSequencesRemoved(int first);
     void onSelectionChanged();
-    void onLoadFinished(Task *task, const QString &mediaPath);
-    void applyMedia(int row, std::shared_ptr<const SequenceMedia> media);
+    // The sequence list shows `row` selected (-1: none) without asking for it again.
+    void showSequenceRow(int row);
+    void onSequenceLoaded();
     void showChart();
     void showFrame(int frame); // the views of the context's current frame
     void updateTitle();
@@ -137,8 +132,6 @@ private:
     LongRecordingImporter *m_importer = nullptr;
     TranscriptProposer *m_proposer = nullptr;
 
-    int m_pendingRow = -1;
-    QPointer<Task> m_loadTask;
     bool m_geometryRestored = false;
     bool m_layoutRestored = false;
     bool m_shownOnce = false;

@@ -24,7 +24,7 @@ ScreenshotRunner::ScreenshotRunner(MainWindow *window, QString file)
 
 void ScreenshotRunner::start()
 {
-    connect(m_window, &MainWindow::sequenceLoadEnded, this, &ScreenshotRunner::waitForTasks);
+    connect(m_window->context(), &StudioContext::sequenceLoadEnded, this, &ScreenshotRunner::waitForTasks);
     // Nothing loading (the project failed to open or has no sequences): shoot as it is.
     if (m_window->context()->taskRunner()->runningCount() == 0)
         QTimer::singleShot(0, this, &ScreenshotRunner::waitForTasks);

@@ -1,6 +1,7 @@
 #include "app/TranscriptProposer.h"
 
 #include "app/SequenceListModel.h"
+#include "context/CommandRegistry.h"
 #include "context/ErrorReporter.h"
 #include "context/SequenceMedia.h"
 #include "context/StudioContext.h"
@@ -21,48 +22,48 @@
 namespace lipsync::studio {
 
 TranscriptProposer::TranscriptProposer(StudioContext *context, QWidget *window)
-    : QObject(window), m_context(context), m_window(window), m_propose(new QAction(tr("&Propose Transcript"), this)),
-      m_accept(new QAction(tr("&Accept Proposed Transcript"), this)), m_modelInstalled(SphinxAligner::available())
+    : QObject(window), m_context(context), m_window(window), m_modelInstalled(SphinxAligner::available())
 {
     setObjectName(QStringLiteral("transcriptProposer"));
-    m_propose->setObjectName(QStringLiteral("proposeTranscriptAction"));
+    CommandRegistry *commands = context->commands();
+    m_propose = commands->add({QStringLiteral("edit/propose-transcript"), tr("&Propose Transcript"), {},
+                               QStyle::SP_CustomBase,
+                               [this](const StudioContext &c) {
+                                   // The current sequence's sound is loaded: there is speech to recognise.
+                                   return m_modelInstalled && currentRow(c) >= 0 && c.media() && c.media()->peaks
+                                          && !isProposing();
+                               },
+                               [this](StudioContext &) { proposeCurrent(); }});
     m_propose->setToolTip(m_modelInstalled
                               ? tr("Propose a transcript of this sequence by speech recognition (CMU Sphinx's US-English "
                                    "models), marked as not checked until you edit or accept it")
                               : tr("Needs CMU Sphinx's US-English model (Debian package pocketsphinx-en-us)"));
-    m_accept->setObjectName(QStringLiteral("acceptTranscriptAction"));
+    m_accept = commands->add({QStringLiteral("edit/accept-transcript"), tr("&Accept Proposed Transcript"), {},
+                              QStyle::SP_CustomBase,
+                              [](const StudioContext &c) {
+                                  const int row = currentRow(c);
+                                  return row >= 0 && c.document()->sequence(row).transcriptProposed;
+                              },
+                              [this](StudioContext &) { acceptCurrent(); }});
     m_accept->setToolTip(tr("Take the proposed transcript of this sequence as checked, as it is"));
-    connect(m_propose, &QAction::triggered, this, &TranscriptProposer::proposeCurrent);
-    connect(m_accept, &QAction::triggered, this, &TranscriptProposer::acceptCurrent);
 
-    ProjectDocument *document = m_context->document();
     // Another project: the proposal was for the one before.
-    connect(document, &ProjectDocument::documentReset, this, [this] {
+    connect(m_context->document(), &ProjectDocument::documentReset, this, [this] {
         if (isProposing())
             m_task->cancel();
-        updateActions();
     });
-    connect(document, &ProjectDocument::sequenceChanged, this, &TranscriptProposer::updateActions);
-    connect(document, &ProjectDocument::sequencesRemoved, this, &TranscriptProposer::updateActions);
-    connect(m_context, &StudioContext::sequenceLoaded, this, &TranscriptProposer::updateActions);
-    updateActions();
+}
+
+int TranscriptProposer::currentRow(const StudioContext &context)
+{
+    const ProjectDocument *document = context.document();
+    const int row = context.currentSequence();
+    return document->isOpen() && row >= 0 && row < document->sequenceCount() ? row : -1;
 }
 
 bool TranscriptProposer::isProposing() const
 {
     return m_task && m_task->isRunning();
-}
-
-void TranscriptProposer::updateActions()
-{
-    const ProjectDocument *document = m_context->document();
-    const int row = m_context->currentSequence();
-    const bool current = document->isOpen() && row >= 0 && row < document->sequenceCount();
-    // The sound of the current sequence is loaded and readable: there is speech to recognise.
-    const std::shared_ptr<const SequenceMedia> media = m_context->media();
-    const bool sound = current && media && media->peaks;
-    m_propose->setEnabled(m_modelInstalled && sound && !isProposing());
-    m_accept->setEnabled(current && document->sequence(row).transcriptProposed);
 }
 
 void TranscriptProposer::proposeCurrent()
@@ -116,9 +117,9 @@ Task *TranscriptProposer::propose(int row)
     connect(task, &Task::finished, this, [this, task](Task::State state) {
         if (state == Task::State::Failed)
             ErrorReporter::report(m_window, tr("No transcript could be proposed."), QString(), task->errorMessage());
-        updateActions();
+        m_context->commands()->revalidate();
     });
-    updateActions();
+    m_context->commands()->revalidate();
     emit proposalStarted(task);
     return task;
 }

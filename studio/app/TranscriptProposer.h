@@ -53,7 +53,8 @@ signals:
 private:
     void apply(const QString &sequenceId, const QString &before, const QString &proposal,
                const std::vector<double> &confidence);
-    void updateActions();
+    // The current sequence of `context` (-1: none).
+    static int currentRow(const StudioContext &context);
 
     StudioContext *m_context;
     QWidget *m_window;

@@ -1,28 +1,28 @@
 #pragma once
-// Every menu/toolbar/shortcut action of the main window in one place, so the keyboard map can
-// be read (and translated) at a glance. MainWindow connects them.
+// The commands of the studio that act on the context alone — moving through frames and
+// sequences, playing — registered in the context's CommandRegistry (which the application, the
+// export menu and the panels add their own to), with the undo stack's Undo and Redo. Their keys
+// are shortcuts of `owner`, the window. Menus, toolbars and the transport show these actions;
+// each is enabled when its command validates.
+#include "context/CommandRegistry.h"
+
 #include <QCoreApplication>
 
 class QAction;
-class QUndoStack;
 class QWidget;
 
 namespace lipsync::studio {
+
+class StudioContext;
 
 struct StudioActions
 {
     Q_DECLARE_TR_FUNCTIONS(StudioActions)
 
 public:
-    StudioActions(QWidget *owner, QUndoStack *undoStack);
+    StudioActions(QWidget *owner, StudioContext *context);
 
-    // File
-    QAction *newProject;
-    QAction *open;
-    QAction *openDemo;
-    QAction *save;
-    QAction *saveAs;
-    QAction *quit;
+    CommandRegistry *registry; // the context's
     // Edit
     QAction *undo;
     QAction *redo;
@@ -34,9 +34,6 @@ public:
     QAction *playPause;
     QAction *previousSequence;
     QAction *nextSequence;
-    QAction *fitFrame;
-    // Help
-    QAction *about;
 };
 
 } // namespace lipsync::studio

@@ -1,8 +1,10 @@
 #include "context/StudioContext.h"
 
+#include "context/CommandRegistry.h"
 #include "context/ModelKinds.h"
 #include "context/ModelStore.h"
 #include "context/PlaybackController.h"
+#include "context/SequenceLoader.h"
 #include "context/SequenceMedia.h"
 #include "document/ProjectDocument.h"
 #include "tasks/TaskRunner.h"
@@ -24,6 +26,25 @@ StudioContext::StudioContext(QObject *parent)
       m_document(new ProjectDocument(m_undo, this)), m_models(new ModelStore(m_document, this)),
       m_playback(new PlaybackController(this))
 {
+    // Playback moves the current frame, unless it plays the Preview's new speech.
+    connect(m_playback, &PlaybackController::frameReached, this, [this](int frame) {
+        if (m_media && m_playback->mediaPath() == m_media->mediaPath)
+            setCurrentFrame(frame);
+    });
+    // A new document: the old one's media dropped and any load for it canceled.
+    connect(m_document, &ProjectDocument::documentReset, this, &StudioContext::clearCurrentSequence);
+    // The rows before `first` stay where they were. When the sequence shown (or loading) was among
+    // the removed ones, the views let it go (sequenceLoaded without media) and the last remaining
+    // sequence takes its place.
+    connect(m_document, &ProjectDocument::sequencesRemoved, this, [this](int first) {
+        if (m_row < first && m_pendingRow < first)
+            return;
+        clearCurrentSequence();
+        announceSequenceLoaded();
+        selectSequence(first - 1);
+    });
+    // After the context's own handlers, so that commands validate on the context they leave.
+    m_commands = new CommandRegistry(this);
 }
 
 StudioContext::~StudioContext()
@@ -33,8 +54,56 @@ StudioContext::~StudioContext()
     m_runner->waitForAll();
 }
 
+void StudioContext::selectSequence(int row)
+{
+    if (row < 0 || row >= m_document->sequenceCount() || row == m_pendingRow || (row == m_row && m_pendingRow < 0))
+        return;
+    if (m_loadTask)
+        m_loadTask->cancel(); // superseded: its result must not arrive after this one's
+    m_playback->pause();
+    m_pendingRow = row;
+    const Sequence &s = m_document->sequence(row);
+    const SequenceSource source{QString::fromStdString(s.id), m_document->mediaPath(row), s.frameRate};
+    Task *task = SequenceLoader::start(*m_runner, source, [this, row](std::shared_ptr<const SequenceMedia> media) {
+        applyLoadedMedia(row, std::move(media));
+    });
+    m_loadTask = task;
+    connect(task, &Task::finished, this, [this, task, path = source.mediaPath] { onLoadFinished(task, path); });
+    emit sequenceRequested(row);
+    showStatus(tr("Loading %1…").arg(source.id), 3000);
+}
+
+void StudioContext::applyLoadedMedia(int row, std::shared_ptr<const SequenceMedia> media)
+{
+    m_loadTask = nullptr; // done, not superseded
+    m_pendingRow = -1;
+    if (row >= m_document->sequenceCount())
+        return;
+    setCurrentSequence(row, std::move(media));
+    m_playback->setSequence(m_media->mediaPath, m_media->clock);
+    setCurrentFrame(0);
+    announceSequenceLoaded();
+    emit sequenceLoadEnded(true);
+}
+
+void StudioContext::onLoadFinished(Task *task, const QString &mediaPath)
+{
+    if (task->state() == Task::State::Finished)
+        return; // applyLoadedMedia ran
+    if (task->state() == Task::State::Failed)
+        emit sequenceLoadFailed(mediaPath, task->errorMessage());
+    if (task != m_loadTask)
+        return; // superseded by a newer load
+    m_pendingRow = -1;
+    emit sequenceLoadEnded(false);
+}
+
 void StudioContext::setCurrentSequence(int row, std::shared_ptr<const SequenceMedia> media)
 {
+    if (m_loadTask) // superseded: its result must not arrive after this one
+        m_loadTask->cancel();
+    m_loadTask = nullptr;
+    m_pendingRow = -1;
     m_row = row;
     m_media = std::move(media);
     m_frame = -1;
@@ -47,6 +116,10 @@ void StudioContext::announceSequenceLoaded()
 
 void StudioContext::clearCurrentSequence()
 {
+    if (m_loadTask)
+        m_loadTask->cancel();
+    m_pendingRow = -1;
+    m_playback->pause();
     m_row = -1;
     m_media.reset();
     m_frame = 0;

@@ -6,6 +6,7 @@
 #include "aam/AamSynthesizer.h"
 
 #include <QObject>
+#include <QPointer>
 #include <QString>
 
 #include <Eigen/Core>
@@ -17,12 +18,14 @@ class QUndoStack;
 
 namespace lipsync {
 class AamModel;
+class Task;
 class TaskRunner;
 struct SpeechToFaceResult;
 }
 
 namespace lipsync::studio {
 
+class CommandRegistry;
 class ModelStore;
 class PlaybackController;
 class ProjectDocument;
@@ -41,17 +44,26 @@ public:
     // The AAMs and dynamic models the project's references point at (built, trained or loaded).
     ModelStore *modelStore() const { return m_models; }
     PlaybackController *playback() const { return m_playback; }
+    // The studio's commands (menus, toolbars, shortcuts), each validating itself on this context.
+    CommandRegistry *commands() const { return m_commands; }
 
     // The sequence worked on (-1: none), its media (null until loaded) and the frame shown.
     int currentSequence() const { return m_row; }
     int currentFrame() const { return m_frame; }
     std::shared_ptr<const SequenceMedia> media() const { return m_media; }
 
+    // Makes sequence `row` the current one: its media are decoded in the background
+    // (SequenceLoader), then the current frame becomes 0 and sequenceLoaded is emitted. A newer
+    // request supersedes a pending one; a canceled or failed load leaves the current sequence as
+    // it was (sequenceLoadEnded(false)). Out-of-range rows and the row already shown are ignored.
+    void selectSequence(int row);
+    // The row whose media are being decoded (-1: none); else the current one.
+    int requestedSequence() const { return m_pendingRow >= 0 ? m_pendingRow : m_row; }
     // Sequence `row` with its loaded media becomes the current one (frame -1 until
-    // setCurrentFrame). The views are then brought up to date and announceSequenceLoaded() called.
+    // setCurrentFrame), without decoding; announceSequenceLoaded() tells the views.
     void setCurrentSequence(int row, std::shared_ptr<const SequenceMedia> media);
     void announceSequenceLoaded();
-    // No sequence (a new document).
+    // No sequence (a new document): any pending load canceled, the player paused.
     void clearCurrentSequence();
     // Moves to `frame` of the current sequence (clamped to its frames) and announces it; nothing
     // without media or when it is the frame shown.
@@ -94,6 +106,13 @@ public:
     std::vector<GeneratedTrajectory> generatedTrajectories(int row, const AamModel *aam) const;
 
 signals:
+    // selectSequence(row) started decoding `row` (the sequence list shows it selected).
+    void sequenceRequested(int row);
+    // The newest load started by selectSequence ended: its media reached the views (after
+    // sequenceLoaded), or not (canceled or failed; a failure is also reported by
+    // sequenceLoadFailed). A load superseded by a newer request ends without a word.
+    void sequenceLoadEnded(bool loaded);
+    void sequenceLoadFailed(const QString &mediaPath, const QString &problem);
     // The current sequence's media reached the views (sequenceId); empty when no sequence is
     // current any more (the one shown was removed).
     void sequenceLoaded(const QString &sequenceId);
@@ -112,8 +131,14 @@ private:
     ProjectDocument *m_document;
     ModelStore *m_models;
     PlaybackController *m_playback;
+    CommandRegistry *m_commands;
+    void applyLoadedMedia(int row, std::shared_ptr<const SequenceMedia> media);
+    void onLoadFinished(Task *task, const QString &mediaPath);
+
     std::shared_ptr<const SequenceMedia> m_media;
     int m_row = -1;
+    int m_pendingRow = -1;
+    QPointer<Task> m_loadTask;
     int m_frame = 0;
     double m_selectionStart = 0.0, m_selectionEnd = 0.0;
     std::shared_ptr<const SpeechToFaceResult> m_speech;

@@ -1,5 +1,6 @@
 #include "export/ExportMenu.h"
 
+#include "context/CommandRegistry.h"
 #include "context/ErrorReporter.h"
 #include "context/ModelKinds.h"
 #include "context/ModelStore.h"
@@ -114,19 +115,29 @@ ExportMenu::ExportMenu(StudioContext *context, QMenu *parentMenu, QWidget *dialo
         tr("&Alignment (TextGrid)…"),           tr("&Landmarks (.pts)…"),
         tr("Active Appearance &Model…"),        tr("&Trained Dynamic Model…"),
         tr("Mouth &Cues%1 (Rhubarb, Moho)…").arg(QString()), tr("Animation C&ontrols%1 (JSON, CSV)…").arg(QString())};
+    static const std::array<const char *, 10> names = {
+        "export/video",     "export/side-by-side", "export/frames", "export/features",   "export/alignment",
+        "export/landmarks", "export/aam",          "export/model",  "export/mouth-cues", "export/controls"};
+    CommandRegistry *commands = context->commands();
     for (size_t i = 0; i < titles.size(); ++i) {
         if (i == 3 || i == 6 || i == 8)
             m_menu->addSeparator();
-        QAction *action = m_menu->addAction(titles[i]);
         const Kind kind = Kind(i);
-        connect(action, &QAction::triggered, this, [this, kind] { trigger(kind); });
+        QAction *action = commands->add({QLatin1String(names[i]), titles[i], {}, QStyle::SP_CustomBase,
+                                         [this, kind](const StudioContext &) { return canExport(kind); },
+                                         [this, kind](StudioContext &) { trigger(kind); }});
+        m_menu->addAction(action);
         m_actions.append(action);
     }
-    m_mouthShapesAction = m_menu->addAction(tr("Mouth S&hapes…"));
-    m_mouthShapesAction->setObjectName(QStringLiteral("mouthShapesAction"));
+    m_mouthShapesAction = commands->add(
+        {QStringLiteral("export/mouth-shapes"), tr("Mouth S&hapes…"), {}, QStyle::SP_CustomBase,
+         [](const StudioContext &c) { return c.document()->project().aam() != nullptr; },
+         [this](StudioContext &) { showMouthShapes(); }});
+    m_menu->addAction(m_mouthShapesAction);
     m_mouthShapesAction->setToolTip(tr("The nine mouth shapes of the cues, learned from this person's frames: see "
                                        "them and set your own"));
-    connect(m_mouthShapesAction, &QAction::triggered, this, &ExportMenu::showMouthShapes);
+    // What the entries would write depends on more than the registry follows (models trained,
+    // landmarks placed): validated again as the menu opens, as Aegisub's menus do.
     connect(m_menu, &QMenu::aboutToShow, this, &ExportMenu::updateActions);
     m_modelPrompt = [this](const QStringList &kinds, const QStringList &names) {
         bool ok = false;
@@ -160,33 +171,45 @@ QAction *ExportMenu::action(Kind kind) const
 
 void ExportMenu::updateActions()
 {
-    const ProjectDocument *document = m_context->document();
-    const int row = m_context->currentSequence();
-    const bool hasSequence = row >= 0 && row < document->sequenceCount();
-    const Project &project = document->project();
     // While the Preview shows faces for new speech, the generated exports write those.
-    const auto speech = m_context->shownSpeech();
-    const QString of = speech ? tr(" of %1").arg(m_context->shownSpeechTitle()) : QString();
+    const QString of = m_context->shownSpeech() ? tr(" of %1").arg(m_context->shownSpeechTitle()) : QString();
     action(Kind::Video)->setText(tr("Generated &Video%1 (MP4)…").arg(of));
     action(Kind::SideBySide)->setText(tr("Real and Generated &Side by Side%1 (MP4)…").arg(of));
     action(Kind::Images)->setText(tr("Generated &Frames%1 (PNG)…").arg(of));
-    const bool canGenerate = speech || (hasSequence && dynamicModel(project) && project.aam());
-    action(Kind::Video)->setEnabled(canGenerate);
-    action(Kind::SideBySide)->setEnabled(speech ? speech->hasVideo : canGenerate);
-    action(Kind::Images)->setEnabled(canGenerate);
-    action(Kind::Features)->setEnabled(hasSequence && document->sequence(row).features.rows() > 0);
-    action(Kind::Alignment)->setEnabled(hasSequence && !document->sequence(row).phones.isEmpty());
-    action(Kind::Landmarks)->setEnabled(hasSequence && !document->sequence(row).landmarks.empty());
-    action(Kind::Aam)->setEnabled(project.aam() != nullptr);
-    action(Kind::Model)->setEnabled(dynamicModel(project) != nullptr);
     action(Kind::MouthCues)->setText(tr("Mouth &Cues%1 (Rhubarb, Moho)…").arg(of));
     action(Kind::Controls)->setText(tr("Animation C&ontrols%1 (JSON, CSV)…").arg(of));
-    const bool tracked = hasSequence && document->sequence(row).features.rows() > 0
-                         && !document->sequence(row).phones.isEmpty();
-    const bool canAnimate = project.aam() && (speech || tracked);
-    action(Kind::MouthCues)->setEnabled(canAnimate);
-    action(Kind::Controls)->setEnabled(canAnimate);
-    m_mouthShapesAction->setEnabled(project.aam() != nullptr);
+    m_context->commands()->revalidate();
+}
+
+bool ExportMenu::canExport(Kind kind) const
+{
+    const ProjectDocument *document = m_context->document();
+    const int row = m_context->currentSequence();
+    const Sequence *s = row >= 0 && row < document->sequenceCount() ? &document->sequence(row) : nullptr;
+    const Project &project = document->project();
+    const auto speech = m_context->shownSpeech();
+    const bool canGenerate = speech || (s && dynamicModel(project) && project.aam());
+    switch (kind) {
+    case Kind::Video:
+    case Kind::Images:
+        return canGenerate;
+    case Kind::SideBySide:
+        return speech ? speech->hasVideo : canGenerate;
+    case Kind::Features:
+        return s && s->features.rows() > 0;
+    case Kind::Alignment:
+        return s && !s->phones.isEmpty();
+    case Kind::Landmarks:
+        return s && !s->landmarks.empty();
+    case Kind::Aam:
+        return project.aam() != nullptr;
+    case Kind::Model:
+        return dynamicModel(project) != nullptr;
+    case Kind::MouthCues:
+    case Kind::Controls:
+        return project.aam() && (speech || (s && s->features.rows() > 0 && !s->phones.isEmpty()));
+    }
+    return false;
 }
 
 Task *ExportMenu::trigger(Kind kind)

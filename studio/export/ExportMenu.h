@@ -56,6 +56,8 @@ public:
 
     QMenu *menu() const { return m_menu; }
     QAction *action(Kind kind) const;
+    // Whether the context holds what `kind` writes (the command's validate()).
+    bool canExport(Kind kind) const;
     // File ▸ Export ▸ Mouth Shapes…: opens the MouthShapesDialog.
     QAction *mouthShapesAction() const { return m_mouthShapesAction; }
     // The dialog, once opened (null before).

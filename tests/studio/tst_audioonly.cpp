@@ -99,7 +99,7 @@ private slots:
                 ++detect;
             }
         QVERIFY(detect > 0);
-        window->setCurrentFrame(20);
+        window->context()->setCurrentFrame(20);
         QCOMPARE(window->context()->currentFrame(), 20);
 
         // Aligned from the timeline.
@@ -119,7 +119,7 @@ private slots:
         auto *tabs = window->findChild<QTabWidget *>();
         tabs->setCurrentWidget(preview);
         QTRY_VERIFY_WITH_TIMEOUT(preview->faces() && preview->faces()->tracks().size() == 1, 60000);
-        window->setCurrentFrame(20);
+        window->context()->setCurrentFrame(20);
         const QImage generated = preview->panel(1)->image();
         QVERIFY(!generated.isNull());
         if (const QString shots = qEnvironmentVariable("LIPSYNC_PREVIEW_SHOT"); !shots.isEmpty())

@@ -247,7 +247,7 @@ private slots:
         QCOMPARE(list->rowCount(), m_demoCount + 3);
         QCOMPARE(QString::fromStdString(doc->sequence(m_demoCount + 2).id), QStringLiteral("talk_0003"));
         QCOMPARE(list->data(list->index(m_demoCount + 2, 0)).toString(), QStringLiteral("talk_0003"));
-        m_window->selectSequence(m_demoCount + 1);
+        m_window->context()->selectSequence(m_demoCount + 1);
         QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->media() && m_window->context()->media()->sequenceId == QStringLiteral("talk_0002"),
                                  60000);
         testing::waitForTasks(m_window);

@@ -77,7 +77,7 @@ private slots:
 
     void clicksPlacePointsInSchemeOrder()
     {
-        m_window->setCurrentFrame(5);
+        m_window->context()->setCurrentFrame(5);
         QVERIFY(!landmarksAt(5));
         QUndoStack *undo = m_window->context()->undoStack();
         const int before = undo->count();
@@ -145,7 +145,7 @@ private slots:
     void copyPreviousFrameAndOnionSkin()
     {
         const LandmarkSet source = *landmarksAt(5);
-        m_window->setCurrentFrame(6);
+        m_window->context()->setCurrentFrame(6);
         QVERIFY(!landmarksAt(6));
         QTest::keyClick(m_window, Qt::Key_C);
         const std::optional<LandmarkSet> copy = landmarksAt(6);
@@ -171,7 +171,7 @@ private slots:
 
     void detectionGivesAutomaticPointsOnTheFace()
     {
-        m_window->setCurrentFrame(10);
+        m_window->context()->setCurrentFrame(10);
         const int index = m_window->context()->undoStack()->index();
         QVERIFY(waitFor(m_window->faces()->detectLandmarks()));
         QCOMPARE(m_window->context()->undoStack()->index(), index + 1);
@@ -206,7 +206,7 @@ private slots:
         QVERIFY(landmarksAt(10));
 
         // N skips labelled frames: from 9, frame 10 is complete, 11 is not.
-        m_window->setCurrentFrame(9);
+        m_window->context()->setCurrentFrame(9);
         QTest::keyClick(m_window, Qt::Key_N);
         QCOMPARE(m_window->context()->currentFrame(), 11);
     }
@@ -267,10 +267,10 @@ private slots:
         QVERIFY(labelled().size() > before.size());
         m_window->context()->undoStack()->undo();
         QCOMPARE(labelled(), before);
-        m_window->selectSequence(startRow);
+        m_window->context()->selectSequence(startRow);
         QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->currentSequence(), startRow, 60000);
         QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->media() && m_window->context()->currentFrame() >= 0, 60000);
-        m_window->setCurrentFrame(startFrame);
+        m_window->context()->setCurrentFrame(startFrame);
     }
 
     void tracksWithTheProjectsAam()
@@ -332,7 +332,7 @@ private slots:
         QCOMPARE(int(errors.size()), 75);
 
         // W walks the worst-fitted frames.
-        m_window->setCurrentFrame(0);
+        m_window->context()->setCurrentFrame(0);
         QTest::keyClick(m_window, Qt::Key_W);
         const int worst = m_window->context()->currentFrame();
         for (double e : errors)
@@ -417,8 +417,8 @@ private slots:
         QVERIFY(m_window->files()->open(dir.path()));
         QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 60000);
         QCOMPARE(m_window->context()->document()->sequence(0).fitErrors, errors);
-        m_window->selectSequence(0);
-        m_window->setCurrentFrame(0);
+        m_window->context()->selectSequence(0);
+        m_window->context()->setCurrentFrame(0);
         QTest::keyClick(m_window, Qt::Key_W);
         QCOMPARE(m_window->context()->currentFrame(), 3); // no face ranks first
         QTest::keyClick(m_window, Qt::Key_W);

@@ -136,8 +136,8 @@ private slots:
     {
         const int before = m_window->context()->currentSequence();
         const auto media = m_window->context()->media();
-        QSignalSpy ended(m_window, &MainWindow::sequenceLoadEnded);
-        m_window->selectSequence(5);
+        QSignalSpy ended(m_window->context(), &StudioContext::sequenceLoadEnded);
+        m_window->context()->selectSequence(5);
         QCOMPARE(m_window->context()->taskRunner()->runningCount(), 1);
         m_window->context()->taskRunner()->cancelAll();
         QTRY_COMPARE_WITH_TIMEOUT(ended.count(), 1, 60000);
@@ -187,7 +187,7 @@ private slots:
     {
         PlaybackController *playback = m_window->context()->playback();
         playback->setAudioEnabled(false); // no sound device under Xvfb
-        m_window->setCurrentFrame(0);
+        m_window->context()->setCurrentFrame(0);
         m_window->actions().playPause->trigger();
         QVERIFY(playback->isPlaying());
         QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->currentFrame() >= 5, 5000);
@@ -252,7 +252,7 @@ private slots:
         PlaybackController *playback = m_window->context()->playback();
         playback->setAudioEnabled(true);
         QSignalSpy silent(playback, &PlaybackController::playingSilently);
-        m_window->setCurrentFrame(0);
+        m_window->context()->setCurrentFrame(0);
         m_window->actions().playPause->trigger();
         QVERIFY(playback->isPlaying());
         QCOMPARE(silent.count(), 1);
@@ -291,15 +291,15 @@ private slots:
         QVERIFY2(media.startsWith(m_window->context()->document()->folder()), qPrintable(media));
         QVERIFY(QFile::remove(media));
         const auto before = m_window->context()->media();
-        QSignalSpy ended(m_window, &MainWindow::sequenceLoadEnded);
-        m_window->selectSequence(3);
+        QSignalSpy ended(m_window->context(), &StudioContext::sequenceLoadEnded);
+        m_window->context()->selectSequence(3);
         QTRY_COMPARE_WITH_TIMEOUT(ended.count(), 1, 60000);
         QCOMPARE(ended.first().first().toBool(), false);
         QVERIFY2(ErrorReporter::lastMessage().contains(media), qPrintable(ErrorReporter::lastMessage()));
         QCOMPARE(m_window->context()->media(), before);
         QCOMPARE(m_window->context()->currentSequence(), 0);
         QCOMPARE(m_window->sequenceView()->currentIndex().row(), 0);
-        m_window->selectSequence(1); // still usable
+        m_window->context()->selectSequence(1); // still usable
         QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->currentSequence() == 1, 60000);
     }
 
@@ -391,7 +391,7 @@ private slots:
     // clips is refused with a message and the open document stays.
     void newProjectFromAFolderOfClips()
     {
-        QCOMPARE(m_window->actions().newProject->shortcut(), QKeySequence(QKeySequence::New));
+        QCOMPARE(m_window->actions().registry->action(QStringLiteral("file/new"))->shortcut(), QKeySequence(QKeySequence::New));
         const QString clips = dir.filePath(QStringLiteral("my-clips"));
         QVERIFY(QDir().mkpath(clips));
         const QString demoMedia = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media/");

@@ -129,7 +129,7 @@ private slots:
 
     void trajectoryLegend()
     {
-        m_window->selectSequence(0);
+        m_window->context()->selectSequence(0);
         QStringList expected{QStringLiteral("real")};
         for (const QString &kind : ModelKinds::ids())
             expected.append(ModelKinds::name(kind));

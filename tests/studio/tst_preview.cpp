@@ -158,7 +158,7 @@ private slots:
         QCOMPARE(at(1).y(), at(0).y());
         QCOMPARE(at(2).y(), at(0).y());
 
-        m_window->setCurrentFrame(40); // mid-sentence: the mouth is open
+        m_window->context()->setCurrentFrame(40); // mid-sentence: the mouth is open
         const QImage recorded = m_preview->panel(0)->image();
         const QImage dpds = m_preview->panel(1)->image();
         const QImage hmm = m_preview->panel(2)->image();
@@ -208,7 +208,7 @@ private slots:
         clock.start();
         const int n = 100;
         for (int i = 0; i < n; ++i)
-            m_window->setCurrentFrame(i % 75 == 40 ? 41 : i % 75);
+            m_window->context()->setCurrentFrame(i % 75 == 40 ? 41 : i % 75);
         qInfo("preview: %.0f frames/s with recorded + 2 generated panels", n / (clock.nsecsElapsed() * 1e-9));
     }
 
@@ -216,7 +216,7 @@ private slots:
     // eyes are back. The choice is the context's, which Export renders with as well.
     void wholeFaceOptionRedrawsTheEyes()
     {
-        m_window->setCurrentFrame(40);
+        m_window->context()->setCurrentFrame(40);
         const QImage recorded = m_preview->panel(0)->image().convertToFormat(QImage::Format_RGB888);
         const auto tracked = m_preview->faces()->trackedLandmarks(40);
         QVERIFY(tracked && tracked->isComplete());
@@ -314,7 +314,7 @@ private slots:
     void frameStepAndScrubMoveTheSharedCursor()
     {
         TrajectoryView *trajectory = m_window->modelsPanel()->trajectoryView();
-        m_window->setCurrentFrame(10);
+        m_window->context()->setCurrentFrame(10);
         const QImage before = m_preview->panel(1)->image();
         QTest::mouseClick(m_preview->stepForwardButton(), Qt::LeftButton);
         QCOMPARE(m_window->context()->currentFrame(), 11);
@@ -332,7 +332,7 @@ private slots:
         QVERIFY(m_preview->panel(1)->image() != before);
 
         // Playing moves everything, from the one player.
-        m_window->setCurrentFrame(0);
+        m_window->context()->setCurrentFrame(0);
         QTest::mouseClick(m_preview->playButton(), Qt::LeftButton);
         QVERIFY(m_player->isPlaying());
         QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->currentFrame() >= 8, 5000);
@@ -375,7 +375,7 @@ private slots:
 
     void landmarksOverlayToggles()
     {
-        m_window->setCurrentFrame(30);
+        m_window->context()->setCurrentFrame(30);
         QVERIFY(!m_preview->panel(0)->landmarks());
         QVERIFY(!m_preview->panel(1)->landmarks());
         m_preview->landmarksCheck()->setChecked(true);
@@ -396,7 +396,7 @@ private slots:
                             tracked->points[size_t(i)].y - generated->points[size_t(i)].y);
         d /= LandmarkSet::kPointCount;
         QVERIFY2(d < 12.0, qPrintable(QString::number(d)));
-        m_window->setCurrentFrame(31); // follows the frame
+        m_window->context()->setCurrentFrame(31); // follows the frame
         QVERIFY(m_preview->panel(1)->landmarks());
         m_preview->landmarksCheck()->setChecked(false);
         QVERIFY(!m_preview->panel(0)->landmarks());
@@ -528,7 +528,7 @@ private slots:
                      && m_preview->caption().startsWith(m_window->context()->media()->sequenceId)
                      && m_preview->caption().contains(QStringLiteral("frame %1 of").arg(m_window->context()->currentFrame() + 1)),
                  qPrintable(m_preview->caption()));
-        m_window->setCurrentFrame(0);
+        m_window->context()->setCurrentFrame(0);
         QTest::mouseClick(m_preview->playButton(), Qt::LeftButton);
         QCOMPARE(m_player->mediaPath(), m_window->context()->media()->mediaPath);
         QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->currentFrame() >= 3, 5000);

@@ -327,7 +327,7 @@ private:
         const int row = doc()->sequenceCount() - 1;
         [&] {
             QCOMPARE(QString::fromStdString(doc()->sequence(row).id), QStringLiteral("michael"));
-            m_window->selectSequence(row);
+            m_window->context()->selectSequence(row);
             QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->media() && m_window->context()->media()->sequenceId == QStringLiteral("michael"),
                                      60000);
             testing::waitForTasks(m_window);

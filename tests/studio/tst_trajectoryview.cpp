@@ -126,7 +126,7 @@ private slots:
     void cursorFollowsTheCurrentFrame()
     {
         TrajectoryView *view = m_panel->trajectoryView();
-        m_window->setCurrentFrame(0);
+        m_window->context()->setCurrentFrame(0);
         QCOMPARE(view->cursorTime(), 0.5 / 25.0);
         const QImage at0 = view->grab().toImage();
         // Five frames on through the window's own next-frame action (what the arrow key does).
@@ -135,7 +135,7 @@ private slots:
         QCOMPARE(m_window->context()->currentFrame(), 5);
         QVERIFY(std::abs(view->cursorTime() - 5.5 / 25.0) < 1e-12);
         QVERIFY(view->grab().toImage() != at0);
-        m_window->setCurrentFrame(40);
+        m_window->context()->setCurrentFrame(40);
         QVERIFY(std::abs(view->cursorTime() - 40.5 / 25.0) < 1e-12);
     }
 

@@ -1,4 +1,4 @@
-#include "app/SequenceLoader.h"
+#include "context/SequenceLoader.h"
 
 #include "io/AudioDecoder.h"
 #include "io/MediaInfo.h"

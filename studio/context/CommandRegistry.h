@@ -1,0 +1,48 @@
+#pragma once
+// The studio's commands by name (StudioCommand), each with the one QAction that menus, toolbars
+// and shortcuts share; the context owns it (StudioContext::commands()), every panel and menu adds
+// its commands to it. The actions' enabled state is their command's validate() on the context,
+// re-read whenever the context or its document changes (revalidate()), so no panel computes a
+// command's state itself. The keys work window-wide once setShortcutWidget() names the window.
+#include "context/StudioCommand.h"
+
+#include <QObject>
+#include <QPointer>
+
+#include <map>
+
+class QAction;
+class QWidget;
+
+namespace lipsync::studio {
+
+class CommandRegistry : public QObject
+{
+    Q_OBJECT
+public:
+    explicit CommandRegistry(StudioContext *context);
+
+    // Registers `command` (its name unique) and returns its action.
+    QAction *add(StudioCommand command);
+    // The action of the command called `name` (null: none).
+    QAction *action(const QString &name) const;
+    // Runs the command called `name` if it validates; false if it does not, or there is none.
+    bool run(const QString &name);
+    // Every action enabled as its command's validate() says.
+    void revalidate();
+    // The window whose shortcuts the commands' keys are (those added before and after).
+    void setShortcutWidget(QWidget *widget);
+
+private:
+    struct Entry
+    {
+        StudioCommand command;
+        QAction *action;
+    };
+    // Cleared as the context dies: its undo stack, deleted after it, still signals (cleanChanged).
+    QPointer<StudioContext> m_context;
+    QPointer<QWidget> m_shortcutWidget;
+    std::map<QString, Entry> m_commands;
+};
+
+} // namespace lipsync::studio
