@@ -58,7 +58,7 @@ QJsonArray tierJson(const Tier &tier)
 // With `minFit` (--strict: an aligner of the recording's speaker), a transcript whose fit to the
 // sound is below it is refused as not what the recording says, naming the file; nothing is written.
 QJsonObject alignOne(const cli::SpeechAligner &aligner, const QString &media, const std::vector<std::string> &words,
-                     const QString &transcriptPath, const QString &out, Feedback *feedback,
+                     const QString &transcriptPath, const QString &out, Feedback &feedback,
                      std::optional<double> minFit)
 {
     QElapsedTimer timer;
@@ -139,7 +139,7 @@ int alignFolder(const cli::CommandLine &a, const cli::SpeechAligner &aligner)
                                                    ? Lexicon::splitWords(r.transcript)
                                                    : readTranscript(r.transcriptFile.toStdString()).words;
         QJsonObject result =
-            alignOne(aligner, r.media, words, r.transcriptFile, job.output, &feedback, minimumFit(a));
+            alignOne(aligner, r.media, words, r.transcriptFile, job.output, feedback, minimumFit(a));
         // The summary keeps what a project import needs, not every interval.
         for (const char *key : {"words", "phones", "frameLabels", "adaptationLogLikelihoodPerFrame"})
             result.remove(QLatin1String(key));
@@ -165,7 +165,8 @@ int runAlign(const cli::CommandLine &a)
         throw cli::UsageError(QStringLiteral("--transcript FILE is needed to align one recording"));
     const Transcript transcript = readTranscript(a.value("transcript").toStdString());
     const QJsonObject result =
-        alignOne(aligner, media, transcript.words, a.value("transcript"), a.value("out"), nullptr, minimumFit(a));
+        alignOne(aligner, media, transcript.words, a.value("transcript"), a.value("out"), Feedback::none(),
+                 minimumFit(a));
     if (a.isSet("json")) {
         cli::printJson(result);
     } else {

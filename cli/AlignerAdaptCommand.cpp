@@ -37,7 +37,7 @@ int runAlignerAdapt(const cli::CommandLine &a)
     for (const TrainingUtterance &u : utterances)
         audioSeconds += u.features.rows() * model.featureOptions().shiftSeconds;
     AdaptationReport report;
-    const AcousticModel adapted = SpeakerAdaptation::adapt(model, utterances, {}, nullptr, &report);
+    const AcousticModel adapted = SpeakerAdaptation::adapt(model, utterances, {}, Feedback::none(), &report);
     adapted.save(a.value("out").toStdString());
     const double seconds = timer.elapsed() / 1000.0;
     if (json) {

@@ -137,7 +137,8 @@ Tier referencePhones(const QString &aligner, const QString &input, const QString
     const std::unique_ptr<Aligner> forced = createAligner(AlignerChoice{aligner.toStdString(), false});
     const auto lexicon = makeLexicon(pronunciations);
     const Transcript transcript = readTranscript(transcriptPath.toStdString());
-    return forced->align(input.toStdString(), transcript.words, *lexicon, nullptr, transcriptPath.toStdString())
+    return forced
+        ->align(input.toStdString(), transcript.words, *lexicon, Feedback::none(), transcriptPath.toStdString())
         .alignment.phones;
 }
 

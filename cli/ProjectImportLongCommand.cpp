@@ -102,7 +102,7 @@ int runImportLong(const CommandLine &a)
         timer.start();
         LongRecordingImportResult r =
             importLongRecording(project, media.toStdString(), transcript.words, a.value("transcript").toStdString(),
-                                aligner.aligner(), aligner.lexicon(), options, &feedback);
+                                aligner.aligner(), aligner.lexicon(), options, feedback);
         const size_t imported = r.sequences.size();
         QJsonArray ids;
         for (Sequence &s : r.sequences) {

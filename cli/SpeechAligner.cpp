@@ -75,7 +75,7 @@ QString SpeechAligner::modelFile() const
 }
 
 AlignerOutput SpeechAligner::align(const QString &mediaPath, const std::vector<std::string> &words,
-                                   const QString &transcriptPath, Feedback *feedback) const
+                                   const QString &transcriptPath, Feedback &feedback) const
 {
     return m_aligner->align(mediaPath.toStdString(), words, *m_lexicon, feedback, transcriptPath.toStdString());
 }

@@ -47,7 +47,7 @@ public:
     // Aligns the recording at `mediaPath` to `words`. Throws lipsync::Error naming the media (and
     // `transcriptPath` when the words do not fit the audio).
     AlignerOutput align(const QString &mediaPath, const std::vector<std::string> &words,
-                        const QString &transcriptPath, Feedback *feedback = nullptr) const;
+                        const QString &transcriptPath, Feedback &feedback = Feedback::none()) const;
 
 private:
     std::unique_ptr<Aligner> m_aligner;

@@ -37,7 +37,7 @@ QJsonObject transcribeOne(RecognizerPool &pool, const QString &media, const QStr
 {
     QElapsedTimer timer;
     timer.start();
-    const SpeechRecognizer::Result r = RecognizerPool::Lease(pool)->recognize(media.toStdString(), &feedback);
+    const SpeechRecognizer::Result r = RecognizerPool::Lease(pool)->recognize(media.toStdString(), feedback);
     if (r.words.empty())
         throw Error("no speech recognised", media.toStdString());
     Transcript t;

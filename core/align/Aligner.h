@@ -9,6 +9,7 @@
 #include "align/ForcedAligner.h"
 #include "align/SpeakerAdaptation.h"
 #include "audio/Mfcc.h"
+#include "tasks/Feedback.h"
 
 #include <limits>
 #include <map>
@@ -22,7 +23,6 @@
 namespace lipsync {
 
 class AcousticModel;
-class Feedback;
 class Lexicon;
 class Realignment;
 
@@ -91,12 +91,12 @@ public:
     // media (and `transcriptPath`, when given, if the words do not fit the audio); `feedback` gets
     // progress and is polled for cancel (Canceled). Thread-safe.
     virtual AlignerOutput align(const std::string &mediaPath, const std::vector<std::string> &words,
-                                const Lexicon &lexicon, Feedback *feedback = nullptr,
+                                const Lexicon &lexicon, Feedback &feedback = Feedback::none(),
                                 const std::string &transcriptPath = {}) const = 0;
     // Aligns the stretches of `realignment` again in the recording at `mediaPath`, everything
     // else kept. Errors as align().
     virtual AlignerOutput realign(const std::string &mediaPath, const Realignment &realignment,
-                                  const Lexicon &lexicon, Feedback *feedback = nullptr) const = 0;
+                                  const Lexicon &lexicon, Feedback &feedback = Feedback::none()) const = 0;
 };
 
 // The aligner `choice` names, loaded. Throws lipsync::Error naming the model file or folder (or

@@ -105,7 +105,7 @@ size_t wordsBefore(const AlignmentResult &r, double cut)
 AlignmentResult alignLongRecording(const AcousticModel &model, const std::vector<float> &samples,
                                    const std::vector<std::string> &words,
                                    const std::vector<std::vector<Pronunciation>> &pronunciations,
-                                   const std::vector<Interval> &cues, Feedback *feedback,
+                                   const std::vector<Interval> &cues, Feedback &feedback,
                                    const LongAlignmentOptions &options)
 {
     const MfccOptions &fo = model.featureOptions();
@@ -139,10 +139,8 @@ AlignmentResult alignLongRecording(const AcousticModel &model, const std::vector
     double enlarge = 1.0;  // more words for a window whose path ran out of them
     for (;;) {
         const double anchor = double(anchorFrame) * shift;
-        if (feedback) {
-            feedback->throwIfCanceled();
-            feedback->setProgress(duration > 0 ? anchor / duration : 1.0);
-        }
+        feedback.throwIfCanceled();
+        feedback.setProgress(duration > 0 ? anchor / duration : 1.0);
         const bool last = duration - anchor <= options.windowSeconds + options.guardSeconds;
         size_t count = total - next;
         if (!last) {
@@ -208,8 +206,7 @@ AlignmentResult alignLongRecording(const AcousticModel &model, const std::vector
         next += placed;
         enlarge = 1.0;
     }
-    if (feedback)
-        feedback->setProgress(1.0);
+    feedback.setProgress(1.0);
     return out;
 }
 

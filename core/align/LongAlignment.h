@@ -19,6 +19,7 @@
 // word of a cue that starts before the window ends). Memory is one window's audio features and
 // back pointers (about 6 000 frames x a few thousand states, under 100 MB), whatever the length.
 #include "align/ForcedAligner.h"
+#include "tasks/Feedback.h"
 
 #include <string>
 #include <vector>
@@ -26,7 +27,6 @@
 namespace lipsync {
 
 class AcousticModel;
-class Feedback;
 struct Interval;
 
 struct LongAlignmentOptions
@@ -51,7 +51,7 @@ constexpr double kMaxRecordingSeconds = 3.0 * 3600.0;
 AlignmentResult alignLongRecording(const AcousticModel &model, const std::vector<float> &samples,
                                    const std::vector<std::string> &words,
                                    const std::vector<std::vector<Pronunciation>> &pronunciations,
-                                   const std::vector<Interval> &cues = {}, Feedback *feedback = nullptr,
+                                   const std::vector<Interval> &cues = {}, Feedback &feedback = Feedback::none(),
                                    const LongAlignmentOptions &options = {});
 
 } // namespace lipsync

@@ -44,7 +44,7 @@ struct Prepared
 };
 
 Prepared prepare(const std::string &mediaPath, const std::vector<std::string> &words, const AcousticModel &model,
-                 const Lexicon &lexicon, bool adapt, Feedback *feedback, const std::string &transcriptPath = {})
+                 const Lexicon &lexicon, bool adapt, Feedback &feedback, const std::string &transcriptPath = {})
 {
     Prepared p{prepareUtterance(std::filesystem::path(mediaPath).stem().string(), mediaPath, words, model, lexicon,
                                 transcriptPath),
@@ -86,7 +86,7 @@ double transcriptFit(const AcousticModel &model, const Eigen::MatrixXf &features
 }
 
 AlignerOutput MonophoneAligner::align(const std::string &mediaPath, const std::vector<std::string> &words,
-                                      const Lexicon &lexicon, Feedback *feedback,
+                                      const Lexicon &lexicon, Feedback &feedback,
                                       const std::string &transcriptPath) const
 {
     if (words.empty())
@@ -110,7 +110,7 @@ AlignerOutput MonophoneAligner::align(const std::string &mediaPath, const std::v
 
 AlignerOutput MonophoneAligner::alignLong(const std::string &mediaPath, double seconds,
                                           const std::vector<std::string> &words,
-                                          const Lexicon &lexicon, Feedback *feedback,
+                                          const Lexicon &lexicon, Feedback &feedback,
                                           const std::string &transcriptPath) const
 {
     if (seconds > kMaxRecordingSeconds)
@@ -143,7 +143,7 @@ AlignerOutput MonophoneAligner::alignLong(const std::string &mediaPath, double s
 }
 
 AlignerOutput MonophoneAligner::realign(const std::string &mediaPath, const Realignment &realignment,
-                                        const Lexicon &lexicon, Feedback *feedback) const
+                                        const Lexicon &lexicon, Feedback &feedback) const
 {
     const Prepared p = prepare(mediaPath, realignment.words(), m_model, lexicon, m_adapt, feedback);
     AlignerOutput out = p.output(m_model);

@@ -27,15 +27,15 @@ public:
     std::string name() const override { return m_path; }
     const AcousticModel *acousticModel() const override { return &m_model; }
     AlignerOutput align(const std::string &mediaPath, const std::vector<std::string> &words, const Lexicon &lexicon,
-                        Feedback *feedback = nullptr, const std::string &transcriptPath = {}) const override;
+                        Feedback &feedback = Feedback::none(), const std::string &transcriptPath = {}) const override;
     AlignerOutput realign(const std::string &mediaPath, const Realignment &realignment, const Lexicon &lexicon,
-                          Feedback *feedback = nullptr) const override;
+                          Feedback &feedback = Feedback::none()) const override;
 
 private:
     // Recordings longer than kLongRecordingSeconds (`seconds` of sound): window by window
     // (LongAlignment), without adaptation; longer than kMaxRecordingSeconds: refused.
     AlignerOutput alignLong(const std::string &mediaPath, double seconds, const std::vector<std::string> &words,
-                            const Lexicon &lexicon, Feedback *feedback, const std::string &transcriptPath) const;
+                            const Lexicon &lexicon, Feedback &feedback, const std::string &transcriptPath) const;
 
     std::string m_path;
     AcousticModel m_model;

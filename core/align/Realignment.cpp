@@ -152,7 +152,7 @@ AlignmentResult Realignment::run(const ForcedAligner &aligner, const Eigen::Matr
 
 AlignmentResult Realignment::runPiecewise(const SphinxAligner &aligner, const std::vector<float> &samples,
                                           const std::vector<std::vector<Pronunciation>> &pronunciations,
-                                          Feedback *feedback) const
+                                          Feedback &feedback) const
 {
     AlignmentResult out;
     out.words = m_wordTier;

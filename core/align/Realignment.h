@@ -43,7 +43,7 @@ public:
     // words(). Throws lipsync::Error from the aligner (and Canceled through `feedback`).
     AlignmentResult runPiecewise(const SphinxAligner &aligner, const std::vector<float> &samples,
                                  const std::vector<std::vector<Pronunciation>> &pronunciations,
-                                 Feedback *feedback = nullptr) const;
+                                 Feedback &feedback = Feedback::none()) const;
 
 private:
     Tier m_wordTier, m_phoneTier;

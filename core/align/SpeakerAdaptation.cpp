@@ -93,13 +93,13 @@ AcousticModel SpeakerAdaptation::transform(const AcousticModel &si, const Accumu
 
 AcousticModel SpeakerAdaptation::adapt(const AcousticModel &model, const std::vector<std::vector<Pronunciation>> &pronunciations,
                                        const Eigen::MatrixXf &features, const AdaptationOptions &options,
-                                       Feedback *feedback, AdaptationReport *report)
+                                       Feedback &feedback, AdaptationReport *report)
 {
     return adapt(model, {TrainingUtterance{{}, features, pronunciations}}, options, feedback, report);
 }
 
 AcousticModel SpeakerAdaptation::adapt(const AcousticModel &model, const std::vector<TrainingUtterance> &utterances,
-                                       const AdaptationOptions &options, Feedback *feedback, AdaptationReport *report)
+                                       const AdaptationOptions &options, Feedback &feedback, AdaptationReport *report)
 {
     std::vector<UtteranceGraph> graphs;
     long long frames = 0;
@@ -126,8 +126,7 @@ AcousticModel SpeakerAdaptation::adapt(const AcousticModel &model, const std::ve
     };
     AcousticModel current = model;
     for (int pass = 0; pass < options.iterations; ++pass) {
-        if (feedback)
-            feedback->throwIfCanceled();
+        feedback.throwIfCanceled();
         Accumulators statistics(current);
         const double perFrame = accumulate(current, statistics);
         if (report)

@@ -16,6 +16,7 @@
 #include "align/AlignerTrainer.h"
 #include "align/PronunciationDictionary.h"
 #include "align/UtteranceGraph.h"
+#include "tasks/Feedback.h"
 
 #include <Eigen/Core>
 
@@ -23,7 +24,6 @@
 
 namespace lipsync {
 
-class Feedback;
 struct Accumulators;
 
 struct AdaptationOptions
@@ -50,11 +50,11 @@ public:
     // `feedback` (optional) is checked for cancel before every pass.
     static AcousticModel adapt(const AcousticModel &model, const std::vector<std::vector<Pronunciation>> &pronunciations,
                                const Eigen::MatrixXf &features, const AdaptationOptions &options = {},
-                               Feedback *feedback = nullptr, AdaptationReport *report = nullptr);
+                               Feedback &feedback = Feedback::none(), AdaptationReport *report = nullptr);
     // The model adapted to a speaker from several of their recordings at once (more data: each
     // regression class is more likely to get its own transform, MAP moves more components).
     static AcousticModel adapt(const AcousticModel &model, const std::vector<TrainingUtterance> &utterances,
-                               const AdaptationOptions &options = {}, Feedback *feedback = nullptr,
+                               const AdaptationOptions &options = {}, Feedback &feedback = Feedback::none(),
                                AdaptationReport *report = nullptr);
 
     // One adaptation step from statistics collected under any model: MLLR of `speakerIndependent`'s

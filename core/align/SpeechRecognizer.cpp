@@ -27,7 +27,7 @@ SpeechRecognizer::SpeechRecognizer(const std::string &modelDir)
 
 SpeechRecognizer::~SpeechRecognizer() = default;
 
-SpeechRecognizer::Result SpeechRecognizer::recognize(const std::string &mediaPath, Feedback *feedback) const
+SpeechRecognizer::Result SpeechRecognizer::recognize(const std::string &mediaPath, Feedback &feedback) const
 {
     const AudioBuffer audio = AudioDecoder::decode(mediaPath, SphinxAligner::kSampleRate);
     Result result;
@@ -36,7 +36,7 @@ SpeechRecognizer::Result SpeechRecognizer::recognize(const std::string &mediaPat
         throw Error("too long to transcribe in one piece (" + std::to_string(int(result.duration))
                         + " s; at most " + std::to_string(int(kMaxSeconds)) + " s)",
                     mediaPath);
-    if (feedback && feedback->isCanceled())
+    if (feedback.isCanceled())
         throw Canceled();
     std::vector<SphinxDecoder::Word> words;
     try {
@@ -58,8 +58,7 @@ SpeechRecognizer::Result SpeechRecognizer::recognize(const std::string &mediaPat
     if (cursor < result.duration - 1e-9)
         result.timing.intervals.push_back(
             Interval{cursor, result.duration, std::string(PhoneSet::kSilenceLabel), false});
-    if (feedback)
-        feedback->setProgress(1.0);
+    feedback.setProgress(1.0);
     return result;
 }
 

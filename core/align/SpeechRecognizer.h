@@ -4,6 +4,7 @@
 // The words are a proposal for the user to correct (`lipsync transcribe`), not a reference: on
 // GRID's command sentences the generic language model gets most words, not all.
 #include "annotation/Tier.h"
+#include "tasks/Feedback.h"
 
 #include <memory>
 #include <string>
@@ -11,7 +12,6 @@
 
 namespace lipsync {
 
-class Feedback;
 class SphinxDecoder;
 
 class SpeechRecognizer
@@ -35,7 +35,7 @@ public:
     // Decodes the recording at `mediaPath` (any audio or video; errors name it). Recordings of
     // more than kMaxSeconds are refused: one utterance's search grows with its length.
     static constexpr double kMaxSeconds = 120.0;
-    Result recognize(const std::string &mediaPath, Feedback *feedback = nullptr) const;
+    Result recognize(const std::string &mediaPath, Feedback &feedback = Feedback::none()) const;
 
 private:
     std::unique_ptr<SphinxDecoder> m_decoder;

@@ -408,7 +408,7 @@ AlignmentResult tiersOfPath(const Graph &graph, int E, const std::vector<int> &p
 
 AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const std::vector<std::string> &words,
                                      const std::vector<std::vector<Pronunciation>> &pronunciations,
-                                     double audioDuration, Feedback *feedback) const
+                                     double audioDuration, Feedback &feedback) const
 {
     if (words.empty() || pronunciations.size() != words.size())
         throw Error("the transcript has no words to align");
@@ -428,7 +428,7 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
             throw Error("no pronunciation for \"" + words[w] + "\"");
     const std::vector<short> pcm = checkedPcm(samples);
     const Graph graph = buildGraph(m_mdef, pronunciations, m_modelDir);
-    if (feedback && feedback->isCanceled())
+    if (feedback.isCanceled())
         throw Canceled();
 
     const ObjectPool<SphinxDecoder>::Lease decoder(m_decoders);
@@ -442,11 +442,8 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
     const int passes = m_adaptationPasses + 1;
     auto alignPass = [&](int pass) {
         auto progress = [&](double share) {
-            if (!feedback)
-                return;
-            if (feedback->isCanceled())
-                throw Canceled();
-            feedback->setProgress(0.95 * (double(pass) + share) / double(passes));
+            feedback.throwIfCanceled();
+            feedback.setProgress(0.95 * (double(pass) + share) / double(passes));
         };
         int best = viterbi.run(kBeam, progress);
         if (best < 0)
@@ -481,13 +478,12 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
     // best senone scored in each frame.
     result.logLikelihood =
         -double(viterbi.cost(best)) * double(1 << SphinxDecoder::kScoreShift) * std::log(decoder->logBase());
-    if (feedback)
-        feedback->setProgress(1.0);
+    feedback.setProgress(1.0);
     return result;
 }
 
 AlignerOutput SphinxAligner::align(const std::string &mediaPath, const std::vector<std::string> &words,
-                                   const Lexicon &lexicon, Feedback *feedback, const std::string &transcriptPath) const
+                                   const Lexicon &lexicon, Feedback &feedback, const std::string &transcriptPath) const
 {
     std::vector<std::vector<Pronunciation>> pronunciations;
     AudioBuffer audio;
@@ -516,7 +512,7 @@ AlignerOutput SphinxAligner::align(const std::string &mediaPath, const std::vect
 }
 
 AlignerOutput SphinxAligner::realign(const std::string &mediaPath, const Realignment &realignment,
-                                     const Lexicon &lexicon, Feedback *feedback) const
+                                     const Lexicon &lexicon, Feedback &feedback) const
 {
     AlignerOutput out;
     try {

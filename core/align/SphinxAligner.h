@@ -20,6 +20,7 @@
 #include "align/Aligner.h"
 #include "align/Lexicon.h"
 #include "align/SphinxModelDefinition.h"
+#include "tasks/Feedback.h"
 #include "util/ObjectPool.h"
 #include "util/SystemPaths.h"
 
@@ -30,7 +31,6 @@
 
 namespace lipsync {
 
-class Feedback;
 class SphinxCodebooks;
 class SphinxDecoder;
 
@@ -73,16 +73,16 @@ public:
     // audio and when no path through the transcript reaches the end of the audio.
     AlignmentResult align(const std::vector<float> &samples, const std::vector<std::string> &words,
                           const std::vector<std::vector<Pronunciation>> &pronunciations,
-                          double audioDuration = 0.0, Feedback *feedback = nullptr) const;
+                          double audioDuration = 0.0, Feedback &feedback = Feedback::none()) const;
 
     // Aligner: "sphinx:DIR"; the media decoded (AudioDecoder, resampled to 16 kHz) and `words`
     // pronounced with `lexicon`; errors name the file. Re-alignment aligns each stretch's own
     // audio with its own words (Realignment::runPiecewise).
     std::string name() const override { return "sphinx:" + m_modelDir; }
     AlignerOutput align(const std::string &mediaPath, const std::vector<std::string> &words, const Lexicon &lexicon,
-                        Feedback *feedback = nullptr, const std::string &transcriptPath = {}) const override;
+                        Feedback &feedback = Feedback::none(), const std::string &transcriptPath = {}) const override;
     AlignerOutput realign(const std::string &mediaPath, const Realignment &realignment, const Lexicon &lexicon,
-                          Feedback *feedback = nullptr) const override;
+                          Feedback &feedback = Feedback::none()) const override;
 
 private:
     const SphinxCodebooks &codebooks(const SphinxDecoder &decoder) const;

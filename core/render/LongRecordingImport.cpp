@@ -38,16 +38,15 @@ LongRecordingImportResult importLongRecording(const Project &project, const std:
                                               const std::vector<std::string> &words,
                                               const std::string &transcriptPath, const Aligner &aligner,
                                               const Lexicon &lexicon, const LongRecordingImportOptions &options,
-                                              Feedback *feedback)
+                                              Feedback &feedback)
 {
     const MediaInfo info = MediaInfo::probe(mediaPath);
     if (!info.hasAudio)
         throw Error("no audio stream", mediaPath);
     AlignerOutput aligned;
     {
-        Feedback dummy;
-        Feedback part(feedback ? *feedback : dummy, 0.0, kAligningShare);
-        aligned = aligner.align(mediaPath, words, lexicon, &part, transcriptPath);
+        Feedback part(feedback, 0.0, kAligningShare);
+        aligned = aligner.align(mediaPath, words, lexicon, part, transcriptPath);
     }
 
     // The alignment, the sound and the frames share the media timeline: the clips are cut at frame
@@ -100,8 +99,7 @@ LongRecordingImportResult importLongRecording(const Project &project, const std:
     result.duration = aligned.duration;
     std::vector<QString> written;
     try {
-        Feedback dummy;
-        Feedback part(feedback ? *feedback : dummy, kAligningShare, 1.0);
+        Feedback part(feedback, kAligningShare, 1.0);
         // One pass over the sound at its own rate, each clip's stretch handed over as the decoding
         // reaches its end: memory for one clip's sound, not the recording's.
         AudioDecoder::decodeRanges(mediaPath, 0, sound, [&](size_t k, AudioBuffer clipAudio) {
@@ -142,8 +140,7 @@ LongRecordingImportResult importLongRecording(const Project &project, const std:
             QFile::remove(file);
         throw;
     }
-    if (feedback)
-        feedback->setProgress(1.0);
+    feedback.setProgress(1.0);
     return result;
 }
 

@@ -10,13 +10,13 @@
 #include "align/Aligner.h"
 #include "project/Sequence.h"
 #include "project/UtteranceSplit.h"
+#include "tasks/Feedback.h"
 
 #include <string>
 #include <vector>
 
 namespace lipsync {
 
-class Feedback;
 class Lexicon;
 class Project;
 
@@ -45,6 +45,6 @@ LongRecordingImportResult importLongRecording(const Project &project, const std:
                                               const std::vector<std::string> &words,
                                               const std::string &transcriptPath, const Aligner &aligner,
                                               const Lexicon &lexicon, const LongRecordingImportOptions &options = {},
-                                              Feedback *feedback = nullptr);
+                                              Feedback &feedback = Feedback::none());
 
 } // namespace lipsync

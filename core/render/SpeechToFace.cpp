@@ -163,7 +163,7 @@ SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedba
     const Lexicon lexicon(&PronunciationDictionary::cmu(), Lexicon::parseOverrides(request.pronunciations));
     Feedback aligning(feedback, 0.1, 0.8);
     const AlignerOutput aligned =
-        aligner->align(request.mediaPath, words, lexicon, &aligning, request.transcriptPath);
+        aligner->align(request.mediaPath, words, lexicon, aligning, request.transcriptPath);
     feedback.throwIfCanceled();
     feedback.setProgress(0.8);
     labelAndGenerate(request, in, aligned, result, feedback);

@@ -4,6 +4,12 @@
 
 namespace lipsync {
 
+Feedback &Feedback::none()
+{
+    thread_local Feedback unwatched;
+    return unwatched;
+}
+
 Feedback::Feedback(Feedback &parent, double from, double to)
     : m_parent(&parent), m_from(from), m_to(to)
 {

@@ -27,6 +27,9 @@ public:
     // own 1..200, drew a line back across the studio's objective plot).
     Feedback(Feedback &parent, double from, double to);
     Feedback(const Feedback &) = delete;
+    // The feedback of a call nobody watches or cancels (the default of functions that take one):
+    // one per thread, so that its progress is nobody's. Never cancel it.
+    static Feedback &none();
     Feedback &operator=(const Feedback &) = delete;
     virtual ~Feedback() = default;
 

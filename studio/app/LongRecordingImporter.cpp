@@ -135,7 +135,7 @@ Task *LongRecordingImporter::start(const QString &recordingPath, const QString &
             feedback.setStatus(name.toStdString());
             LongRecordingImportResult result =
                 importLongRecording(target, recordingPath.toStdString(), transcript.words,
-                                    transcriptPath.toStdString(), *aligner, lexicon, options, &feedback);
+                                    transcriptPath.toStdString(), *aligner, lexicon, options, feedback);
             imported->sequences = std::move(result.sequences);
             imported->folder = target.folder();
             imported->words = result.words;

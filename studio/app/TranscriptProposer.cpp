@@ -102,7 +102,7 @@ Task *TranscriptProposer::propose(int row)
             const SpeechRecognizer recognizer;
             feedback.throwIfCanceled();
             feedback.setStatus(QFileInfo(mediaPath).fileName().toStdString());
-            const SpeechRecognizer::Result result = recognizer.recognize(mediaPath.toStdString(), &feedback);
+            const SpeechRecognizer::Result result = recognizer.recognize(mediaPath.toStdString(), feedback);
             Transcript heard;
             heard.words = result.words;
             if (heard.words.empty())

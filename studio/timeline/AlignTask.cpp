@@ -35,7 +35,7 @@ AlignOutcome alignSequence(const AlignJob &job, const Aligner &aligner, Feedback
         if (words.empty())
             throw Error("the sequence has no transcript to align", path);
         noteGuesses(words);
-        const AlignerOutput aligned = aligner.align(path, words, lexicon, &feedback);
+        const AlignerOutput aligned = aligner.align(path, words, lexicon, feedback);
         r = aligned.alignment;
         if (std::isfinite(aligned.transcriptFit))
             fit = aligned.transcriptFit;
@@ -44,7 +44,7 @@ AlignOutcome alignSequence(const AlignJob &job, const Aligner &aligner, Feedback
         // stretches kept exactly.
         const Realignment realignment(job.current.words, job.current.phones, job.stretches);
         noteGuesses(realignment.words());
-        r = aligner.realign(path, realignment, lexicon, &feedback).alignment;
+        r = aligner.realign(path, realignment, lexicon, feedback).alignment;
         fit = job.current.transcriptFit; // the same words: the whole clip's fit stands
     }
     outcome.tiers = TierPair{r.words, r.phones, fit};

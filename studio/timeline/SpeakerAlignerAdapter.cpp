@@ -113,7 +113,7 @@ Task *SpeakerAlignerAdapter::start()
         feedback.setStatus("adapting the aligner model to the speaker");
         Feedback part(feedback, 0.3, 1.0);
         AdaptationReport report;
-        const AcousticModel adapted = SpeakerAdaptation::adapt(base, utterances, {}, &part, &report);
+        const AcousticModel adapted = SpeakerAdaptation::adapt(base, utterances, {}, part, &report);
         if (!report.logLikelihoodPerFrame.empty()) {
             result->before = report.logLikelihoodPerFrame.front();
             result->after = report.logLikelihoodPerFrame.back();

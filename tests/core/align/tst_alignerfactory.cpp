@@ -127,7 +127,8 @@ private slots:
         for (int i = 0; i < 40; ++i)
             words.insert(words.end(), {"bin", "blue", "at", "f", "two", "now"});
         try {
-            aligner->align(kClip + ".mpg", words, Lexicon(&PronunciationDictionary::cmu()), nullptr, "long.txt");
+            aligner->align(kClip + ".mpg", words, Lexicon(&PronunciationDictionary::cmu()), Feedback::none(),
+                           "long.txt");
             QFAIL("240 words fit 3 s");
         } catch (const Error &e) {
             QCOMPARE(e.file(), kClip + ".mpg");
@@ -137,7 +138,8 @@ private slots:
         // (espeak-ng would take minutes, and the pronunciations hundreds of megabytes).
         const std::vector<std::string> huge(100000, "zqxwvy");
         try {
-            aligner->align(kClip + ".mpg", huge, Lexicon(&PronunciationDictionary::cmu()), nullptr, "huge.srt");
+            aligner->align(kClip + ".mpg", huge, Lexicon(&PronunciationDictionary::cmu()), Feedback::none(),
+                           "huge.srt");
             QFAIL("100 000 words fit 3 s");
         } catch (const Error &e) {
             QVERIFY2(e.reason().find("100000 words need at least 3000.00 s") != std::string::npos, e.what());

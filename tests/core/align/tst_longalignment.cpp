@@ -139,7 +139,7 @@ private slots:
         std::vector<double> progress;
         feedback.onProgress = [&](double p) { progress.push_back(p); };
         const AlignmentResult windowed = alignLongRecording(model(), r.samples, r.words, pronunciations,
-                                                            cues ? r.cues : std::vector<Interval>{}, &feedback,
+                                                            cues ? r.cues : std::vector<Interval>{}, feedback,
                                                             tenSecondWindows());
         QVERIFY2(progress.size() >= 4, "one report per window at least");
         QCOMPARE(progress.back(), 1.0);
@@ -165,11 +165,13 @@ private slots:
         const auto pronunciations = lexicon.pronounceAll(r.words);
         std::vector<Interval> wrong = r.cues;
         wrong.pop_back(); // six words short
-        const AlignmentResult a = alignLongRecording(model(), r.samples, r.words, pronunciations, r.cues, nullptr,
+        const AlignmentResult a = alignLongRecording(model(), r.samples, r.words, pronunciations, r.cues,
+                                                     Feedback::none(),
                                                      tenSecondWindows());
-        const AlignmentResult b = alignLongRecording(model(), r.samples, r.words, pronunciations, wrong, nullptr,
+        const AlignmentResult b = alignLongRecording(model(), r.samples, r.words, pronunciations, wrong,
+                                                     Feedback::none(),
                                                      tenSecondWindows());
-        const AlignmentResult c = alignLongRecording(model(), r.samples, r.words, pronunciations, {}, nullptr,
+        const AlignmentResult c = alignLongRecording(model(), r.samples, r.words, pronunciations, {}, Feedback::none(),
                                                      tenSecondWindows());
         QCOMPARE(spoken(b.words).size(), r.words.size());
         QCOMPARE(b.words.intervals, c.words.intervals);
@@ -181,7 +183,7 @@ private slots:
         const Recording r = demoRecording(4);
         const Lexicon lexicon(&PronunciationDictionary::cmu());
         const AlignmentResult a = alignLongRecording(model(), r.samples, r.words, lexicon.pronounceAll(r.words), {},
-                                                     nullptr, tenSecondWindows());
+                                                     Feedback::none(), tenSecondWindows());
         const std::vector<Interval> w = spoken(a.words);
         QCOMPARE(w.size(), r.words.size());
         const double agree = agreement(w, r.reference, 0.04);
@@ -197,7 +199,7 @@ private slots:
             r.words.insert(r.words.end(), {"bin", "blue", "at", "f", "two", "now"});
         const Lexicon lexicon(&PronunciationDictionary::cmu());
         try {
-            alignLongRecording(model(), r.samples, r.words, lexicon.pronounceAll(r.words), {}, nullptr,
+            alignLongRecording(model(), r.samples, r.words, lexicon.pronounceAll(r.words), {}, Feedback::none(),
                                tenSecondWindows());
             QFAIL("300 words fit 30 s");
         } catch (const Error &e) {
@@ -216,7 +218,7 @@ private slots:
                 feedback.cancel();
         };
         QVERIFY_THROWS_EXCEPTION(Canceled, alignLongRecording(model(), r.samples, r.words, lexicon.pronounceAll(r.words),
-                                                               {}, &feedback, tenSecondWindows()));
+                                                               {}, feedback, tenSecondWindows()));
     }
 };
 

@@ -92,7 +92,8 @@ private slots:
         const double boundary = reference->intervals.at(1).start; // 0.55 s
 
         AdaptationReport report;
-        const AcousticModel adapted = SpeakerAdaptation::adapt(model, u.pronunciations, u.features, {}, nullptr, &report);
+        const AcousticModel adapted = SpeakerAdaptation::adapt(model, u.pronunciations, u.features, {},
+                                                                    Feedback::none(), &report);
         QCOMPARE(int(report.logLikelihoodPerFrame.size()), AdaptationOptions{}.iterations + 1);
         for (size_t i = 1; i < report.logLikelihoodPerFrame.size(); ++i)
             QVERIFY2(report.logLikelihoodPerFrame[i] > report.logLikelihoodPerFrame[i - 1],

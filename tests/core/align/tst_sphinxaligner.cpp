@@ -91,7 +91,7 @@ void alignGridDemoClips(const SphinxAligner &aligner)
             last = p;
         };
         const AlignmentResult r = aligner.align(audio.samples, t.words, lexicon.pronounceAll(t.words),
-                                                audio.duration(), &feedback);
+                                                audio.duration(), feedback);
         QVERIFY(monotonic);
         QCOMPARE(feedback.progress(), 1.0);
         verifyTiers(r, t.words, audio.duration(), lexicon);
@@ -272,7 +272,7 @@ private slots:
         Feedback feedback;
         feedback.cancel();
         QVERIFY_THROWS_EXCEPTION(Canceled, aligner.align(audio.samples, t.words, lexicon.pronounceAll(t.words),
-                                                         audio.duration(), &feedback));
+                                                         audio.duration(), feedback));
         // The decoder goes back to the pool in a clean state.
         QVERIFY(!spoken(aligner.align(audio.samples, t.words, lexicon.pronounceAll(t.words)).words).empty());
     }

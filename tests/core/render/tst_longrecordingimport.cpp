@@ -156,7 +156,7 @@ private slots:
         double last = 0;
         feedback.onProgress = [&](double p) { last = p; };
         LongRecordingImportResult r = importLongRecording(project, wav.toStdString(), words, {}, *aligner, lexicon,
-                                                          sentenceOptions(), &feedback);
+                                                          sentenceOptions(), feedback);
         QCOMPARE(last, 1.0);
         QCOMPARE(int(r.sequences.size()), 10);
         QCOMPARE(r.sequences.front().id, std::string("talk_0001"));
@@ -192,7 +192,7 @@ private slots:
         };
         QVERIFY_THROWS_EXCEPTION(Canceled, importLongRecording(project, wav.toStdString(), demoWords(4), {}, *aligner,
                                                                Lexicon(&PronunciationDictionary::cmu()),
-                                                               sentenceOptions(), &feedback));
+                                                               sentenceOptions(), feedback));
         QVERIFY(QDir(dir.filePath(QStringLiteral("project/clips"))).entryList(QDir::Files | QDir::Hidden).isEmpty());
     }
 
