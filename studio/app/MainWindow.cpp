@@ -124,10 +124,7 @@ MainWindow::MainWindow(QWidget *parent)
         statusBar()->showMessage(tr("%1 was not applied: it would leave the project unsaveable (%2).").arg(edit, why),
                                  15000);
     });
-    connect(m_context->document(), &ProjectDocument::modelsChanged, this, [this] {
-        m_models->setProject(m_context->document()->project());
-        updateActiveModels();
-    });
+    connect(m_context->document(), &ProjectDocument::modelsChanged, this, &MainWindow::updateActiveModels);
     connect(m_context->document(), &ProjectDocument::documentReset, this, &MainWindow::updateActiveModels);
     connect(m_context->document(), &ProjectDocument::sequenceChanged, this, [this](int row) {
         if (row == m_context->currentSequence() && m_context->media()) // "Landmarks: n of m frames"
@@ -420,7 +417,6 @@ void MainWindow::onDocumentReset()
 {
     // The context dropped the old document's media and selects its first sequence.
     clearViews();
-    m_models->setProject(m_context->document()->project());
     m_sequenceView->resizeColumnsToContents();
     m_sequenceView->horizontalHeader()->setStretchLastSection(true);
     m_context->selectSequence(0);

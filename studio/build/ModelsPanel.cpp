@@ -251,7 +251,10 @@ void ModelsPanel::attach(StudioContext *context, QTabWidget *plots)
     ProjectDocument *doc = context->document();
     connect(doc, &ProjectDocument::documentReset, this, &ModelsPanel::onDocumentReset);
     connect(doc, &ProjectDocument::locationChanged, this, &ModelsPanel::onLocationChanged);
-    connect(doc, &ProjectDocument::modelsChanged, this, &ModelsPanel::refreshTrajectory);
+    connect(doc, &ProjectDocument::modelsChanged, this, [this] {
+        setProject(m_context->document()->project());
+        refreshTrajectory();
+    });
     connect(context, &StudioContext::lipClosureChanged, this, &ModelsPanel::refreshTrajectory);
     connect(doc, &ProjectDocument::sequenceChanged, this, [this](int row) {
         if (m_context && row == m_context->currentSequence())
@@ -599,6 +602,7 @@ void ModelsPanel::cancel()
 
 void ModelsPanel::onDocumentReset()
 {
+    setProject(m_context->document()->project());
     // Models of the new project: load the dynamic ones it uses (small JSON files), so a damaged
     // one is reported now rather than when it is first drawn.
     m_objective->clearRuns();

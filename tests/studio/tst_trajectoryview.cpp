@@ -1,11 +1,9 @@
 // The trajectory plot of the Plots dock: after training, the current sequence's real AAM
 // parameter and each model's generation are drawn (their colours are on screen) over shaded
 // phoneme bands; the parameter spin box switches the parameter; the cursor follows the current
-// frame of the main window (the transport's next-frame action); the wheel zooms.
+// frame (the next-frame command); the wheel zooms. The panel on a studio context, without a window.
 #include "DemoWindow.h"
 
-#include "app/MainWindow.h"
-#include "app/ProjectFiles.h"
 #include "build/ModelsPanel.h"
 #include "context/ErrorReporter.h"
 #include "context/StudioActions.h"
@@ -18,14 +16,15 @@
 #include <QCheckBox>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QHBoxLayout>
 #include <QTabWidget>
 #include <QTest>
+#include <QTreeWidget>
 
 #include <cmath>
 
 using namespace lipsync;
 using namespace lipsync::studio;
-using lipsync::studio::testing::openDemoWindow;
 
 namespace {
 
@@ -55,20 +54,32 @@ public:
     static void initMain() { testing::initStudioTest(); }
 
 private:
-    MainWindow *m_window = nullptr;
+    StudioContext m_context;
+    QWidget m_host; // the Models panel beside the Plots tabs, as the window docks them
     ModelsPanel *m_panel = nullptr;
+    StudioActions *m_actions = nullptr;
 
 private slots:
     void initTestCase()
     {
-        openDemoWindow(m_window);
-        if (QTest::currentTestFailed())
-            return;
-        m_panel = m_window->findChild<ModelsPanel *>();
-        QVERIFY(m_panel);
+        ErrorReporter::setBatchMode(true);
+        auto *layout = new QHBoxLayout(&m_host);
+        auto *plots = new QTabWidget(&m_host);
+        m_panel = new ModelsPanel(&m_host);
+        m_panel->attach(&m_context, plots);
+        layout->addWidget(m_panel);
+        layout->addWidget(plots, 1);
+        m_actions = new StudioActions(&m_host, &m_context);
+        m_host.resize(1000, 400);
+        m_host.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&m_host));
+        testing::openDemo(m_context);
+        QCOMPARE(m_panel->list()->topLevelItemCount(), 1); // the demo's AAM: the panel follows the document
+        m_context.selectSequence(0);
+        QTRY_VERIFY_WITH_TIMEOUT(m_context.media() != nullptr, 60000);
     }
 
-    void cleanupTestCase() { delete m_window; }
+    void cleanupTestCase() { QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 60000); }
 
     void drawsRealFeaturesBeforeTraining()
     {
@@ -77,7 +88,7 @@ private slots:
         QTRY_VERIFY(view->isVisible());
         QCOMPARE(view->seriesCount(), 1);
         QVERIFY(view->phoneBandCount() > 6);
-        QCOMPARE(m_panel->parameterSpin()->maximum() + 1, int(m_window->context()->document()->sequence(0).features.cols()));
+        QCOMPARE(m_panel->parameterSpin()->maximum() + 1, int(m_context.document()->sequence(0).features.cols()));
         const QImage image = view->grab().toImage();
         QVERIFY2(countColour(image, kReal) > 30, "the real trajectory is not drawn");
         QVERIFY2(countColour(image, kBand, 4) > 500, "the phoneme bands are not drawn");
@@ -87,7 +98,7 @@ private slots:
         QVERIFY2(docked > 2 && docked < view->phoneBandCount(), qPrintable(QString::number(docked)));
         TrajectoryView wide;
         wide.resize(1800, 400);
-        const Sequence &first = m_window->context()->document()->sequence(0);
+        const Sequence &first = m_context.document()->sequence(0);
         QVector<double> values;
         for (Eigen::Index f = 0; f < first.features.rows(); ++f)
             values.append(first.features(f, 0));
@@ -104,7 +115,8 @@ private slots:
         for (const QString &k : {"dpds", "slds", "brand", "hmm"})
             m_panel->kindCheck(k)->setChecked(k == QLatin1String("dpds") || k == QLatin1String("hmm"));
         QTest::mouseClick(m_panel->trainButton(), Qt::LeftButton);
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 120000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 120000);
+        QCOMPARE(m_panel->list()->topLevelItemCount(), 3); // the AAM and the two trained models
         TrajectoryView *view = m_panel->trajectoryView();
         QCOMPARE(view->seriesCount(), 3); // real, DPDS, HMM
         m_panel->plotTabs()->setCurrentWidget(view->parentWidget());
@@ -114,7 +126,7 @@ private slots:
         QVERIFY2(countColour(image, kDpds) > 30, "DPDS");
         QVERIFY2(countColour(image, kHmm) > 30, "HMM");
         if (qEnvironmentVariableIsSet("LIPSYNC_SCREENSHOT"))
-            m_window->grab().save(qEnvironmentVariable("LIPSYNC_SCREENSHOT"));
+            m_host.grab().save(qEnvironmentVariable("LIPSYNC_SCREENSHOT"));
 
         // Another parameter: another picture, same series.
         const QImage before = image;
@@ -126,16 +138,16 @@ private slots:
     void cursorFollowsTheCurrentFrame()
     {
         TrajectoryView *view = m_panel->trajectoryView();
-        m_window->context()->setCurrentFrame(0);
+        m_context.setCurrentFrame(0);
         QCOMPARE(view->cursorTime(), 0.5 / 25.0);
         const QImage at0 = view->grab().toImage();
-        // Five frames on through the window's own next-frame action (what the arrow key does).
+        // Five frames on through the next-frame command (what the arrow key does).
         for (int i = 0; i < 5; ++i)
-            m_window->actions().nextFrame->trigger();
-        QCOMPARE(m_window->context()->currentFrame(), 5);
+            m_actions->nextFrame->trigger();
+        QCOMPARE(m_context.currentFrame(), 5);
         QVERIFY(std::abs(view->cursorTime() - 5.5 / 25.0) < 1e-12);
         QVERIFY(view->grab().toImage() != at0);
-        m_window->context()->setCurrentFrame(40);
+        m_context.setCurrentFrame(40);
         QVERIFY(std::abs(view->cursorTime() - 40.5 / 25.0) < 1e-12);
     }
 
