@@ -1,10 +1,11 @@
 // The blind study in the studio (paper §4, Table 1): set up a study on the demo project with a
 // model trained in the test, run participants through the full-screen participant mode with the
 // keys a participant uses, and check that every answer is in the project on disk right after its
-// trial, that participants are kept apart, and that the results view shows the tally.
+// trial, that participants are kept apart, and that the results view shows the tally. The Study
+// menu and the Models panel on a studio context, without the main window.
 #include "DemoWindow.h"
 
-#include "app/MainWindow.h"
+#include "app/ProjectFiles.h"
 #include "build/ModelsPanel.h"
 #include "compare/ParticipantSession.h"
 #include "compare/ParticipantView.h"
@@ -26,9 +27,11 @@
 #include <QFile>
 #include <QLabel>
 #include <QListWidget>
+#include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -37,7 +40,6 @@
 
 using namespace lipsync;
 using namespace lipsync::studio;
-using lipsync::studio::testing::openDemoWindow;
 
 class TestStudy : public QObject
 {
@@ -46,13 +48,16 @@ public:
     static void initMain() { testing::initStudioTest(); }
 
 private:
-    MainWindow *m_window = nullptr;
+    StudioContext m_context;
+    QWidget m_host; // the dialogs' parent, as the window is
+    QMenu m_recent;
+    ProjectFiles *m_files = nullptr;
     StudyController *m_study = nullptr;
     QTemporaryDir m_dir;
     QString m_folder;
 
-    void waitIdle() { testing::waitForTasks(m_window); }
-    const ForcedChoiceStudy &study() const { return *m_window->context()->document()->project().study; }
+    void waitIdle() { QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 120000); }
+    const ForcedChoiceStudy &study() const { return *m_context.document()->project().study; }
     ForcedChoiceStudy onDisk() const
     {
         return ForcedChoiceStudy::load(QDir(m_folder).filePath("study.json").toStdString());
@@ -61,7 +66,7 @@ private:
     QString taskReport() const
     {
         QStringList lines;
-        for (Task *t : m_window->context()->taskRunner()->tasks())
+        for (Task *t : m_context.taskRunner()->tasks())
             lines << QStringLiteral("%1: %2 %3").arg(t->title()).arg(int(t->state())).arg(t->errorMessage());
         return lines.join(QLatin1Char('\n'));
     }
@@ -80,29 +85,33 @@ private slots:
     void initTestCase()
     {
         QVERIFY(m_dir.isValid());
-        openDemoWindow(m_window);
-        if (QTest::currentTestFailed())
-            return;
-        m_study = m_window->findChild<StudyController *>();
-        QVERIFY(m_study);
+        QCoreApplication::setOrganizationName(QStringLiteral("lipsync-tests"));
+        ErrorReporter::setBatchMode(true);
+        m_files = new ProjectFiles(m_context.document(), &m_host, &m_recent, m_context.taskRunner());
+        m_study = new StudyController(&m_context, [this] { return m_files->save(); }, &m_host);
+        m_host.resize(800, 600);
+        m_host.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&m_host));
+        testing::openDemo(m_context);
         // A model to compare with the recordings: HMM-mean trains in a moment on the demo features.
-        auto *panel = m_window->findChild<ModelsPanel *>();
+        auto *panel = new ModelsPanel(&m_host);
+        panel->attach(&m_context, new QTabWidget(&m_host));
         for (const char *kind : {"dpds", "slds", "brand", "hmm"})
             panel->kindCheck(kind)->setChecked(QLatin1String(kind) == QLatin1String("hmm"));
         QTest::mouseClick(panel->trainButton(), Qt::LeftButton);
         waitIdle();
-        QVERIFY(m_window->context()->modelStore()->dynamicModel("hmm"));
+        QVERIFY(m_context.modelStore()->dynamicModel("hmm"));
         // Participants' answers go to the project on disk: work on a saved copy of the demo.
         m_folder = m_dir.filePath("demo-study");
-        m_window->context()->document()->saveTo(m_folder);
+        m_context.document()->saveTo(m_folder);
     }
 
-    void cleanupTestCase() { delete m_window; }
+    void cleanupTestCase() { waitIdle(); }
 
     void setUpIsAnUndoableEdit()
     {
         QVERIFY(!m_study->runAction()->isEnabled()); // nothing to run before a study exists
-        const int undoBefore = m_window->context()->undoStack()->count();
+        const int undoBefore = m_context.undoStack()->count();
         // Through the menu: the dialog lists real and the trained model; two utterances.
         QTimer::singleShot(0, this, [] {
             auto *dialog = qobject_cast<StudySetupDialog *>(QApplication::activeModalWidget());
@@ -128,18 +137,18 @@ private slots:
             dialog->accept();
         });
         m_study->setUpAction()->trigger();
-        QVERIFY(m_window->context()->document()->project().study);
+        QVERIFY(m_context.document()->project().study);
         QVERIFY(study().methods() == (std::vector<std::string>{"real", "hmm"}));
         QCOMPARE(study().utterances().size(), size_t(2));
         QVERIFY(study().holdsOutUtterances()); // the participants see HMM-mean retrained on the other 8
         QCOMPARE(study().trialsPerSession(), 2); // one pair, shown twice with sides swapped
-        QCOMPARE(m_window->context()->undoStack()->count(), undoBefore + 1);
+        QCOMPARE(m_context.undoStack()->count(), undoBefore + 1);
         QVERIFY(m_study->runAction()->isEnabled());
-        m_window->context()->undoStack()->undo();
-        QVERIFY(!m_window->context()->document()->project().study);
-        m_window->context()->undoStack()->redo();
-        QVERIFY(m_window->context()->document()->project().study);
-        QVERIFY(m_window->context()->document()->isModified());
+        m_context.undoStack()->undo();
+        QVERIFY(!m_context.document()->project().study);
+        m_context.undoStack()->redo();
+        QVERIFY(m_context.document()->project().study);
+        QVERIFY(m_context.document()->isModified());
     }
 
     void participantModeRecordsEveryAnswer()
@@ -147,7 +156,7 @@ private slots:
         // Starting saves the study with the project (answers are written after every trial).
         ParticipantSession *session = m_study->startParticipant(QStringLiteral("P01"));
         QVERIFY(session);
-        QVERIFY(!m_window->context()->document()->isModified());
+        QVERIFY(!m_context.document()->isModified());
         QVERIFY(QFile::exists(QDir(m_folder).filePath("study.json")));
         ParticipantView *view = session->view();
         view->setAudioEnabled(false);
@@ -172,7 +181,7 @@ private slots:
         QVERIFY(onDisk().sessions().at(0).trials[1].choice == StudyChoice::Undecided);
         QTest::keyClick(view, Qt::Key_Escape); // finished: leaves without asking
         QTRY_VERIFY(!m_study->participantSession());
-        QVERIFY(!m_window->context()->document()->isModified());
+        QVERIFY(!m_context.document()->isModified());
 
         // Reloading the project gives the same answers.
         const Project reloaded = Project::load(m_folder.toStdString());
@@ -244,8 +253,8 @@ private slots:
         QVERIFY(study().sessions()[1].complete());
         QVERIFY(onDisk() == study());
         // Answers are data, not edits: none is on the undo stack, and the project is saved.
-        QCOMPARE(m_window->context()->undoStack()->undoText(), QStringLiteral("Set up study"));
-        QVERIFY(!m_window->context()->document()->isModified());
+        QCOMPARE(m_context.undoStack()->undoText(), QStringLiteral("Set up study"));
+        QVERIFY(!m_context.document()->isModified());
     }
 
     void resultsShowTheTally()
@@ -280,7 +289,7 @@ private slots:
         QVERIFY(QFile::exists(StudyResultsView::rankingPath(csv)));
 
         // The table follows the document: a third participant's answer shows at once.
-        ProjectDocument *document = m_window->context()->document();
+        ProjectDocument *document = m_context.document();
         const int p03 = document->addStudyParticipant(QStringLiteral("P03"));
         document->recordStudyAnswer(p03, 0, StudyChoice::Left, 1.5);
         QVERIFY(results->summary()->text().startsWith(QStringLiteral("Participants: 3, answers: 5")));
@@ -288,9 +297,9 @@ private slots:
 
         // Undoing the set-up takes the study with its answers away; redo brings back both.
         const ForcedChoiceStudy answered = study();
-        m_window->context()->undoStack()->undo();
+        m_context.undoStack()->undo();
         QVERIFY(!document->project().study);
-        m_window->context()->undoStack()->redo();
+        m_context.undoStack()->redo();
         QVERIFY(document->project().study && *document->project().study == answered);
     }
 };
