@@ -16,7 +16,7 @@
 #include "tasks/TaskRunner.h"
 #include "timeline/AlignTask.h"
 #include "timeline/PronunciationsDialog.h"
-#include "timeline/SpeakerAlignerAdapter.h"
+#include "timeline/SpeakerAlignerTrainer.h"
 #include "timeline/WaveformView.h"
 #include "util/PhoneSet.h"
 
@@ -243,7 +243,7 @@ void TimelinePanel::attach(StudioContext *context)
 {
     m_context = context;
     m_document = context->document();
-    m_speakerAligner = new SpeakerAlignerAdapter(context, this);
+    m_speakerAligner = new SpeakerAlignerTrainer(context, this);
     m_alignerMenu->addSeparator();
     m_alignerMenu->addAction(m_speakerAligner->action());
     publishAlignerChoice();

@@ -37,7 +37,7 @@ class StudioContext;
 class ProjectDocument;
 class PlaybackController;
 class PronunciationsDialog;
-class SpeakerAlignerAdapter;
+class SpeakerAlignerTrainer;
 class IntervalLabelEditor;
 class WaveformView;
 struct AlignJob;
@@ -72,7 +72,7 @@ public:
     QAction *builtInAlignerAction() const { return m_builtInAlignerAction; }
     QAction *sphinxAlignerAction() const { return m_sphinxAlignerAction; }
     // Model ▸ Make the Speaker's Own Aligner… (null before attach()).
-    SpeakerAlignerAdapter *speakerAligner() const { return m_speakerAligner; }
+    SpeakerAlignerTrainer *speakerAligner() const { return m_speakerAligner; }
     QAction *splitAction() const { return m_split; }
     QAction *mergeAction() const { return m_merge; }
     QAction *relabelAction() const { return m_relabel; }
@@ -164,7 +164,7 @@ private:
     QAction *m_builtInAlignerAction;
     QAction *m_sphinxAlignerAction;
     QMenu *m_alignerMenu = nullptr;
-    SpeakerAlignerAdapter *m_speakerAligner = nullptr;
+    SpeakerAlignerTrainer *m_speakerAligner = nullptr;
     QAction *m_split;
     QAction *m_merge;
     QAction *m_relabel;
