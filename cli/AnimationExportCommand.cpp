@@ -70,9 +70,11 @@ AnimationSource readSource(const CommandLine &args)
     request.pronunciations = source.project.pronunciations;
     const SpeechAligner aligner(args);
     const Transcript transcript = readTranscript(request.transcriptPath);
-    const AlignerOutput aligned = aligner.align(args.value("media"), transcript.words, args.value("transcript"));
+    const RecordingSound sound(request.mediaPath); // decoded once for the aligner and the result
+    sound.own();
+    const AlignerOutput aligned = aligner.align(sound, transcript.words, args.value("transcript"));
     Feedback feedback;
-    source.track = mouthTrackOfGenerated(measurer, generateFromAlignment(request, aligned, feedback));
+    source.track = mouthTrackOfGenerated(measurer, generateFromAlignment(request, aligned, sound, feedback));
     return source;
 }
 

@@ -71,11 +71,13 @@ int runRender(const CommandLine &args)
     timer.start();
     const SpeechAligner aligner(args);
     const Transcript transcript = readTranscript(request.transcriptPath);
-    const AlignerOutput aligned =
-        aligner.align(args.value("media"), transcript.words, args.value("transcript"));
+    // The sound decoded once, at its own rate, for the video; the aligner resamples it.
+    const RecordingSound sound(request.mediaPath);
+    sound.own();
+    const AlignerOutput aligned = aligner.align(sound, transcript.words, args.value("transcript"));
     Feedback feedback;
     SpeechVideoReport report;
-    report.generated = generateFromAlignment(request, aligned, feedback);
+    report.generated = generateFromAlignment(request, aligned, sound, feedback);
     report.generated.alignerModelPath = aligner.modelName().toStdString();
     report.generated.seconds = timer.elapsed() / 1000.0;
     timer.restart();

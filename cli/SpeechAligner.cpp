@@ -80,4 +80,10 @@ AlignerOutput SpeechAligner::align(const QString &mediaPath, const std::vector<s
     return m_aligner->align(mediaPath.toStdString(), words, *m_lexicon, feedback, transcriptPath.toStdString());
 }
 
+AlignerOutput SpeechAligner::align(const RecordingSound &sound, const std::vector<std::string> &words,
+                                   const QString &transcriptPath, Feedback &feedback) const
+{
+    return m_aligner->align(sound, words, *m_lexicon, feedback, transcriptPath.toStdString());
+}
+
 } // namespace lipsync::cli

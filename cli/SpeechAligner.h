@@ -48,6 +48,9 @@ public:
     // `transcriptPath` when the words do not fit the audio).
     AlignerOutput align(const QString &mediaPath, const std::vector<std::string> &words,
                         const QString &transcriptPath, Feedback &feedback = Feedback::none()) const;
+    // The same for a recording whose sound the caller holds (decoded once for every step).
+    AlignerOutput align(const RecordingSound &sound, const std::vector<std::string> &words,
+                        const QString &transcriptPath, Feedback &feedback = Feedback::none()) const;
 
 private:
     std::unique_ptr<Aligner> m_aligner;

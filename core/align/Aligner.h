@@ -9,6 +9,7 @@
 #include "align/ForcedAligner.h"
 #include "align/SpeakerAdaptation.h"
 #include "audio/Mfcc.h"
+#include "io/RecordingSound.h"
 #include "tasks/Feedback.h"
 
 #include <limits>
@@ -87,12 +88,19 @@ public:
     // Our acoustic model, null for CMU Sphinx's.
     virtual const AcousticModel *acousticModel() const { return nullptr; }
 
-    // Aligns the recording at `mediaPath` to `words`, pronounced by `lexicon`. Errors name the
-    // media (and `transcriptPath`, when given, if the words do not fit the audio); `feedback` gets
-    // progress and is polled for cancel (Canceled). Thread-safe.
-    virtual AlignerOutput align(const std::string &mediaPath, const std::vector<std::string> &words,
+    // Aligns the recording of `sound` to `words`, pronounced by `lexicon`, taking its sound at
+    // the aligner's rate from `sound` (resampled from the recording's own when a job decoded that
+    // already). Errors name the media (and `transcriptPath`, when given, if the words do not fit
+    // the audio); `feedback` gets progress and is polled for cancel (Canceled). Thread-safe.
+    virtual AlignerOutput align(const RecordingSound &sound, const std::vector<std::string> &words,
                                 const Lexicon &lexicon, Feedback &feedback = Feedback::none(),
                                 const std::string &transcriptPath = {}) const = 0;
+    // The same for the recording at `mediaPath`, decoded at the aligner's rate.
+    AlignerOutput align(const std::string &mediaPath, const std::vector<std::string> &words, const Lexicon &lexicon,
+                        Feedback &feedback = Feedback::none(), const std::string &transcriptPath = {}) const
+    {
+        return align(RecordingSound(mediaPath), words, lexicon, feedback, transcriptPath);
+    }
     // Aligns the stretches of `realignment` again in the recording at `mediaPath`, everything
     // else kept. Errors as align().
     virtual AlignerOutput realign(const std::string &mediaPath, const Realignment &realignment,

@@ -15,7 +15,14 @@ PreparedUtterance prepareUtterance(const std::string &id, const std::string &med
                                    const std::vector<std::string> &words, const AcousticModel &model,
                                    const Lexicon &lexicon, const std::string &transcriptPath)
 {
-    const AudioBuffer audio = AudioDecoder::decode(mediaPath, model.featureOptions().sampleRate);
+    return prepareUtterance(id, mediaPath, AudioDecoder::decode(mediaPath, model.featureOptions().sampleRate), words,
+                            model, lexicon, transcriptPath);
+}
+
+PreparedUtterance prepareUtterance(const std::string &id, const std::string &mediaPath, const AudioBuffer &audio,
+                                   const std::vector<std::string> &words, const AcousticModel &model,
+                                   const Lexicon &lexicon, const std::string &transcriptPath)
+{
     PreparedUtterance u = pronounceUtterance(id, mediaPath, audio, words, model, lexicon, transcriptPath);
     u.features = model.features(audio);
     if (u.features.rows() == 0)

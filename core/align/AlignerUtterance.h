@@ -27,6 +27,10 @@ struct PreparedUtterance
 PreparedUtterance prepareUtterance(const std::string &id, const std::string &mediaPath,
                                    const std::vector<std::string> &words, const AcousticModel &model,
                                    const Lexicon &lexicon, const std::string &transcriptPath = {});
+// The same for sound already decoded at the model's rate (`mediaPath` names it in errors).
+PreparedUtterance prepareUtterance(const std::string &id, const std::string &mediaPath, const AudioBuffer &audio,
+                                   const std::vector<std::string> &words, const AcousticModel &model,
+                                   const Lexicon &lexicon, const std::string &transcriptPath = {});
 
 // The same from audio already decoded at the model's rate, without the features: the checks and
 // the pronunciations (a long recording's features are computed window by window, LongAlignment).

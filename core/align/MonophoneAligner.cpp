@@ -43,11 +43,12 @@ struct Prepared
     }
 };
 
-Prepared prepare(const std::string &mediaPath, const std::vector<std::string> &words, const AcousticModel &model,
+Prepared prepare(const RecordingSound &sound, const std::vector<std::string> &words, const AcousticModel &model,
                  const Lexicon &lexicon, bool adapt, Feedback &feedback, const std::string &transcriptPath = {})
 {
-    Prepared p{prepareUtterance(std::filesystem::path(mediaPath).stem().string(), mediaPath, words, model, lexicon,
-                                transcriptPath),
+    const std::string &mediaPath = sound.path();
+    Prepared p{prepareUtterance(std::filesystem::path(mediaPath).stem().string(), mediaPath,
+                                *sound.at(model.featureOptions().sampleRate), words, model, lexicon, transcriptPath),
                std::nullopt, {}};
     if (adapt) {
         try {
@@ -85,15 +86,16 @@ double transcriptFit(const AcousticModel &model, const Eigen::MatrixXf &features
     return (alignment.logLikelihood - best) / double(T);
 }
 
-AlignerOutput MonophoneAligner::align(const std::string &mediaPath, const std::vector<std::string> &words,
+AlignerOutput MonophoneAligner::align(const RecordingSound &sound, const std::vector<std::string> &words,
                                       const Lexicon &lexicon, Feedback &feedback,
                                       const std::string &transcriptPath) const
 {
+    const std::string &mediaPath = sound.path();
     if (words.empty())
         throw Error("the transcript has no words to align", transcriptPath.empty() ? mediaPath : transcriptPath);
     if (const double seconds = MediaInfo::probe(mediaPath).audioDuration; seconds > kLongRecordingSeconds)
-        return alignLong(mediaPath, seconds, words, lexicon, feedback, transcriptPath);
-    const Prepared p = prepare(mediaPath, words, m_model, lexicon, m_adapt, feedback, transcriptPath);
+        return alignLong(sound, seconds, words, lexicon, feedback, transcriptPath);
+    const Prepared p = prepare(sound, words, m_model, lexicon, m_adapt, feedback, transcriptPath);
     AlignerOutput out = p.output(m_model);
     try {
         out.alignment = ForcedAligner(p.modelOr(m_model))
@@ -108,11 +110,12 @@ AlignerOutput MonophoneAligner::align(const std::string &mediaPath, const std::v
     return out;
 }
 
-AlignerOutput MonophoneAligner::alignLong(const std::string &mediaPath, double seconds,
+AlignerOutput MonophoneAligner::alignLong(const RecordingSound &sound, double seconds,
                                           const std::vector<std::string> &words,
                                           const Lexicon &lexicon, Feedback &feedback,
                                           const std::string &transcriptPath) const
 {
+    const std::string &mediaPath = sound.path();
     if (seconds > kMaxRecordingSeconds)
         throw Error("the recording is " + std::to_string(int(seconds / 60)) + " min long; up to "
                         + std::to_string(int(kMaxRecordingSeconds / 60))
@@ -123,7 +126,8 @@ AlignerOutput MonophoneAligner::alignLong(const std::string &mediaPath, double s
                         + " min: align this one without it, or split it into utterances first (lipsync project "
                           "import-long) and adapt to those",
                     mediaPath);
-    const AudioBuffer audio = AudioDecoder::decode(mediaPath, m_model.featureOptions().sampleRate);
+    const std::shared_ptr<const AudioBuffer> sampled = sound.at(m_model.featureOptions().sampleRate);
+    const AudioBuffer &audio = *sampled;
     const PreparedUtterance u = pronounceUtterance(std::filesystem::path(mediaPath).stem().string(), mediaPath, audio,
                                                    words, m_model, lexicon, transcriptPath);
     // Subtitles' cue times choose the words of each window.
@@ -145,7 +149,7 @@ AlignerOutput MonophoneAligner::alignLong(const std::string &mediaPath, double s
 AlignerOutput MonophoneAligner::realign(const std::string &mediaPath, const Realignment &realignment,
                                         const Lexicon &lexicon, Feedback &feedback) const
 {
-    const Prepared p = prepare(mediaPath, realignment.words(), m_model, lexicon, m_adapt, feedback);
+    const Prepared p = prepare(RecordingSound(mediaPath), realignment.words(), m_model, lexicon, m_adapt, feedback);
     AlignerOutput out = p.output(m_model);
     try {
         out.alignment = realignment.run(ForcedAligner(p.modelOr(m_model)), p.utterance.features,

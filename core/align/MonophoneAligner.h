@@ -26,7 +26,8 @@ public:
 
     std::string name() const override { return m_path; }
     const AcousticModel *acousticModel() const override { return &m_model; }
-    AlignerOutput align(const std::string &mediaPath, const std::vector<std::string> &words, const Lexicon &lexicon,
+    using Aligner::align;
+    AlignerOutput align(const RecordingSound &sound, const std::vector<std::string> &words, const Lexicon &lexicon,
                         Feedback &feedback = Feedback::none(), const std::string &transcriptPath = {}) const override;
     AlignerOutput realign(const std::string &mediaPath, const Realignment &realignment, const Lexicon &lexicon,
                           Feedback &feedback = Feedback::none()) const override;
@@ -34,7 +35,7 @@ public:
 private:
     // Recordings longer than kLongRecordingSeconds (`seconds` of sound): window by window
     // (LongAlignment), without adaptation; longer than kMaxRecordingSeconds: refused.
-    AlignerOutput alignLong(const std::string &mediaPath, double seconds, const std::vector<std::string> &words,
+    AlignerOutput alignLong(const RecordingSound &sound, double seconds, const std::vector<std::string> &words,
                             const Lexicon &lexicon, Feedback &feedback, const std::string &transcriptPath) const;
 
     std::string m_path;

@@ -482,9 +482,10 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
     return result;
 }
 
-AlignerOutput SphinxAligner::align(const std::string &mediaPath, const std::vector<std::string> &words,
+AlignerOutput SphinxAligner::align(const RecordingSound &sound, const std::vector<std::string> &words,
                                    const Lexicon &lexicon, Feedback &feedback, const std::string &transcriptPath) const
 {
+    const std::string &mediaPath = sound.path();
     std::vector<std::vector<Pronunciation>> pronunciations;
     AudioBuffer audio;
     try {
@@ -494,7 +495,7 @@ AlignerOutput SphinxAligner::align(const std::string &mediaPath, const std::vect
                         + " min, this one has " + std::to_string(int(seconds / 60))
                         + " min: align it with our aligner (the default, any length), or split it into "
                           "utterances first (lipsync project import-long)");
-        audio = AudioDecoder::decode(mediaPath, kSampleRate);
+        audio = *sound.at(kSampleRate);
         checkWordsFitAudio(words, audio.duration(), SphinxDecoder::kFrameSeconds, mediaPath, transcriptPath);
         pronunciations = lexicon.pronounceAll(words);
     } catch (const Error &e) {

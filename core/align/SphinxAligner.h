@@ -79,7 +79,8 @@ public:
     // pronounced with `lexicon`; errors name the file. Re-alignment aligns each stretch's own
     // audio with its own words (Realignment::runPiecewise).
     std::string name() const override { return "sphinx:" + m_modelDir; }
-    AlignerOutput align(const std::string &mediaPath, const std::vector<std::string> &words, const Lexicon &lexicon,
+    using Aligner::align;
+    AlignerOutput align(const RecordingSound &sound, const std::vector<std::string> &words, const Lexicon &lexicon,
                         Feedback &feedback = Feedback::none(), const std::string &transcriptPath = {}) const override;
     AlignerOutput realign(const std::string &mediaPath, const Realignment &realignment, const Lexicon &lexicon,
                           Feedback &feedback = Feedback::none()) const override;

@@ -5,6 +5,7 @@
 #include "align/PronunciationDictionary.h"
 #include "dynamics/ModelFile.h"
 #include "io/MediaInfo.h"
+#include "io/RecordingSound.h"
 #include "io/Transcript.h"
 #include "io/VideoReader.h"
 #include "project/Project.h"
@@ -76,20 +77,22 @@ Loaded loadInputs(const SpeechToFaceRequest &request)
 // Labels by the voting rule of docs/models.md §0 (one per video frame: the clip's own frame count
 // when rendering into its frames at its rate, else as many frames as the sound lasts), the
 // generated trajectory, and the sound for export.
-void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, double audioDuration,
-                      const MfccOptions &audioFrames, SpeechToFaceResult &result, Feedback &feedback);
+void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, const RecordingSound &sound,
+                      double audioDuration, const MfccOptions &audioFrames, SpeechToFaceResult &result,
+                      Feedback &feedback);
 
 // The phones and words of an aligner's output, voted onto the frames with its own audio frames.
-void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, const AlignerOutput &aligned,
-                      SpeechToFaceResult &result, Feedback &feedback)
+void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, const RecordingSound &sound,
+                      const AlignerOutput &aligned, SpeechToFaceResult &result, Feedback &feedback)
 {
     result.words = aligned.alignment.words;
     result.phones = aligned.alignment.phones;
-    labelAndGenerate(request, in, aligned.duration, aligned.audioFrames, result, feedback);
+    labelAndGenerate(request, in, sound, aligned.duration, aligned.audioFrames, result, feedback);
 }
 
-void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, double audioDuration,
-                      const MfccOptions &audioFrames, SpeechToFaceResult &result, Feedback &feedback)
+void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, const RecordingSound &sound,
+                      double audioDuration, const MfccOptions &audioFrames, SpeechToFaceResult &result,
+                      Feedback &feedback)
 {
     result.mediaPath = request.mediaPath;
     result.aam = in.aam;
@@ -140,7 +143,7 @@ void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, doub
         result.features = BilabialClosure::closeOnPhones(*in.aam, result.features, result.phones, result.frames);
     feedback.throwIfCanceled();
     // The sound at its own rate, its first sample with the first frame.
-    result.audio = alignAudioToVideo(AudioDecoder::decode(request.mediaPath, 0), result.frames.startTime());
+    result.audio = alignAudioToVideo(*sound.own(), result.frames.startTime());
     feedback.setProgress(1.0);
 }
 
@@ -161,24 +164,26 @@ SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedba
     feedback.setProgress(0.1);
 
     const Lexicon lexicon(&PronunciationDictionary::cmu(), Lexicon::parseOverrides(request.pronunciations));
+    // Decoded once at its own rate, for the output; the aligner takes it resampled to its rate.
+    const RecordingSound sound(request.mediaPath);
+    sound.own();
     Feedback aligning(feedback, 0.1, 0.8);
-    const AlignerOutput aligned =
-        aligner->align(request.mediaPath, words, lexicon, aligning, request.transcriptPath);
+    const AlignerOutput aligned = aligner->align(sound, words, lexicon, aligning, request.transcriptPath);
     feedback.throwIfCanceled();
     feedback.setProgress(0.8);
-    labelAndGenerate(request, in, aligned, result, feedback);
+    labelAndGenerate(request, in, sound, aligned, result, feedback);
     result.seconds = secondsSince(start);
     return result;
 }
 
 SpeechToFaceResult generateFromAlignment(const SpeechToFaceRequest &request, const AlignerOutput &aligned,
-                                         Feedback &feedback)
+                                         const RecordingSound &sound, Feedback &feedback)
 {
     const auto start = std::chrono::steady_clock::now();
     feedback.setStatus("Generating for " + request.mediaPath);
     const Loaded in = loadInputs(request);
     SpeechToFaceResult result;
-    labelAndGenerate(request, in, aligned, result, feedback);
+    labelAndGenerate(request, in, sound, aligned, result, feedback);
     result.seconds = secondsSince(start);
     return result;
 }
@@ -194,7 +199,8 @@ SpeechToFaceResult generateFromPhones(const SpeechToFaceRequest &request, const 
     SpeechToFaceResult result;
     result.phones = phones;
     result.words = words;
-    labelAndGenerate(request, in, in.info.audioEndTime, MfccOptions{}, result, feedback);
+    labelAndGenerate(request, in, RecordingSound(request.mediaPath), in.info.audioEndTime, MfccOptions{}, result,
+                     feedback);
     result.seconds = secondsSince(start);
     return result;
 }

@@ -27,6 +27,8 @@
 
 namespace lipsync {
 
+class RecordingSound;
+
 class DynamicModel;
 class Feedback;
 
@@ -90,9 +92,10 @@ struct SpeechToFaceResult
 // Words are pronounced from request.pronunciations, then the CMU dictionary, espeak-ng for the rest.
 SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedback &feedback);
 // The same from an alignment the caller made (`lipsync render`, with the aligner options every
-// aligning command shares): its phones voted onto the frames with its own audio frames.
+// aligning command shares): its phones voted onto the frames with its own audio frames. `sound`
+// is the recording's (request.mediaPath): the one the caller aligned, so it is decoded once.
 SpeechToFaceResult generateFromAlignment(const SpeechToFaceRequest &request, const AlignerOutput &aligned,
-                                         Feedback &feedback);
+                                         const RecordingSound &sound, Feedback &feedback);
 // The same for a recording already aligned (a project sequence's phone tier, and its words if
 // any): no aligner; request.transcriptPath and the aligner are not used.
 SpeechToFaceResult generateFromPhones(const SpeechToFaceRequest &request, const Tier &phones,

@@ -91,6 +91,14 @@ private slots:
         const Lexicon lexicon(&PronunciationDictionary::cmu());
         const AlignerOutput out = aligner->align(kClip + ".mpg", transcript.words, lexicon);
         QCOMPARE(spokenWords(out.alignment.words), spokenWords(transcript.timing));
+        // From the recording's own sound decoded once (as speech to face does): resampled to the
+        // aligner's rate, the same words within a frame.
+        const RecordingSound sound(kClip + ".mpg");
+        sound.own();
+        const AlignerOutput fromOwn = aligner->align(sound, transcript.words, lexicon);
+        QCOMPARE(fromOwn.alignment.words.intervals.size(), out.alignment.words.intervals.size());
+        for (size_t w = 0; w < out.alignment.words.intervals.size(); ++w)
+            QVERIFY(std::abs(fromOwn.alignment.words.intervals[w].start - out.alignment.words.intervals[w].start) <= 0.0101);
         QVERIFY(std::abs(out.duration - 2.96) < 0.02);
         checkContiguous(out.alignment.words, out.duration);
         checkContiguous(out.alignment.phones, out.duration);
