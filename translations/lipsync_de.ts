@@ -15,6 +15,49 @@
     </message>
 </context>
 <context>
+    <name>AppCommands</name>
+    <message>
+        <location filename="../studio/app/AppCommands.cpp" line="26"/>
+        <source>&amp;New Project…</source>
+        <translation>&amp;Neues Projekt…</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/AppCommands.cpp" line="28"/>
+        <source>&amp;Open Project…</source>
+        <translation>Projekt &amp;öffnen …</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/AppCommands.cpp" line="30"/>
+        <source>Open &amp;Demo Project</source>
+        <translation>&amp;Demoprojekt öffnen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/AppCommands.cpp" line="35"/>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/AppCommands.cpp" line="37"/>
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter …</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/AppCommands.cpp" line="39"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/AppCommands.cpp" line="41"/>
+        <source>Fit Frame to View</source>
+        <translation>Bild einpassen</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/AppCommands.cpp" line="45"/>
+        <source>&amp;About LipSync Studio</source>
+        <translation>&amp;Über LipSync Studio</translation>
+    </message>
+</context>
+<context>
     <name>CommandLine</name>
     <message>
         <location filename="../studio/app/CommandLine.cpp" line="14"/>
@@ -116,22 +159,22 @@
 <context>
     <name>MouthShapesDialog</name>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="49"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="48"/>
         <source>Opening</source>
         <translation>Öffnung</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="50"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="49"/>
         <source>Width</source>
         <translation>Breite</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="51"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="50"/>
         <source>Rounding</source>
         <translation>Rundung</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="52"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="51"/>
         <source>Teeth</source>
         <translation>Zähne</translation>
     </message>
@@ -139,17 +182,17 @@
 <context>
     <name>SequenceLoader</name>
     <message>
-        <location filename="../studio/app/SequenceLoader.cpp" line="48"/>
+        <location filename="../studio/context/SequenceLoader.cpp" line="48"/>
         <source>Decoding audio</source>
         <translation>Audio wird dekodiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceLoader.cpp" line="77"/>
+        <location filename="../studio/context/SequenceLoader.cpp" line="77"/>
         <source>Reading video frames</source>
         <translation>Videobilder werden gelesen</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceLoader.cpp" line="103"/>
+        <location filename="../studio/context/SequenceLoader.cpp" line="103"/>
         <source>Loading %1</source>
         <translation>%1 wird geladen</translation>
     </message>
@@ -175,89 +218,49 @@
 <context>
     <name>StudioActions</name>
     <message>
-        <location filename="../studio/context/StudioActions.cpp" line="32"/>
-        <source>&amp;New Project…</source>
-        <translation>&amp;Neues Projekt…</translation>
-    </message>
-    <message>
-        <location filename="../studio/context/StudioActions.cpp" line="33"/>
-        <source>&amp;Open Project…</source>
-        <translation>Projekt &amp;öffnen …</translation>
-    </message>
-    <message>
-        <location filename="../studio/context/StudioActions.cpp" line="34"/>
-        <source>Open &amp;Demo Project</source>
-        <translation>&amp;Demoprojekt öffnen</translation>
-    </message>
-    <message>
-        <location filename="../studio/context/StudioActions.cpp" line="35"/>
-        <source>&amp;Save</source>
-        <translation>&amp;Speichern</translation>
-    </message>
-    <message>
-        <location filename="../studio/context/StudioActions.cpp" line="36"/>
-        <source>Save &amp;As…</source>
-        <translation>Speichern &amp;unter …</translation>
-    </message>
-    <message>
-        <location filename="../studio/context/StudioActions.cpp" line="37"/>
-        <source>&amp;Quit</source>
-        <translation>&amp;Beenden</translation>
-    </message>
-    <message>
-        <location filename="../studio/context/StudioActions.cpp" line="39"/>
+        <location filename="../studio/context/StudioActions.cpp" line="28"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../studio/context/StudioActions.cpp" line="42"/>
+        <location filename="../studio/context/StudioActions.cpp" line="31"/>
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../studio/context/StudioActions.cpp" line="48"/>
+        <location filename="../studio/context/StudioActions.cpp" line="37"/>
         <source>Previous Frame</source>
         <translation>Vorheriges Bild</translation>
     </message>
     <message>
-        <location filename="../studio/context/StudioActions.cpp" line="49"/>
+        <location filename="../studio/context/StudioActions.cpp" line="41"/>
         <source>Next Frame</source>
         <translation>Nächstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/context/StudioActions.cpp" line="50"/>
+        <location filename="../studio/context/StudioActions.cpp" line="45"/>
         <source>First Frame</source>
         <translation>Erstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/context/StudioActions.cpp" line="51"/>
+        <location filename="../studio/context/StudioActions.cpp" line="48"/>
         <source>Last Frame</source>
         <translation>Letztes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/context/StudioActions.cpp" line="52"/>
+        <location filename="../studio/context/StudioActions.cpp" line="51"/>
         <source>Play/Pause</source>
         <translation>Wiedergabe/Pause</translation>
     </message>
     <message>
-        <location filename="../studio/context/StudioActions.cpp" line="53"/>
+        <location filename="../studio/context/StudioActions.cpp" line="55"/>
         <source>Previous Sequence</source>
         <translation>Vorherige Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/context/StudioActions.cpp" line="54"/>
+        <location filename="../studio/context/StudioActions.cpp" line="59"/>
         <source>Next Sequence</source>
         <translation>Nächste Sequenz</translation>
-    </message>
-    <message>
-        <location filename="../studio/context/StudioActions.cpp" line="55"/>
-        <source>Fit Frame to View</source>
-        <translation>Bild einpassen</translation>
-    </message>
-    <message>
-        <location filename="../studio/context/StudioActions.cpp" line="56"/>
-        <source>&amp;About LipSync Studio</source>
-        <translation>&amp;Über LipSync Studio</translation>
     </message>
 </context>
 <context>
@@ -372,229 +375,229 @@
 <context>
     <name>lipsync::studio::ExportMenu</name>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="108"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="110"/>
         <source>E&amp;xport</source>
         <translation>E&amp;xportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="112"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="114"/>
         <source>F&amp;eatures (CSV)…</source>
         <translation>M&amp;erkmale (CSV)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="112"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="159"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="114"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="178"/>
         <source>Generated &amp;Frames%1 (PNG)…</source>
         <translation>Erzeugte &amp;Einzelbilder%1 (PNG)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="113"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="115"/>
         <source>&amp;Alignment (TextGrid)…</source>
         <translation>&amp;Alignierung (TextGrid)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="113"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="115"/>
         <source>&amp;Landmarks (.pts)…</source>
         <translation>&amp;Landmarken (.pts)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="114"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="116"/>
         <source>Active Appearance &amp;Model…</source>
         <translation>Active Appearance &amp;Model…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="114"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="116"/>
         <source>&amp;Trained Dynamic Model…</source>
         <translation>&amp;Trainiertes dynamisches Modell…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="115"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="169"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="117"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="179"/>
         <source>Mouth &amp;Cues%1 (Rhubarb, Moho)…</source>
         <translation>Mund&amp;formen%1 (Rhubarb, Moho)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="115"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="170"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="117"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="180"/>
         <source>Animation C&amp;ontrols%1 (JSON, CSV)…</source>
         <translation>Animations&amp;regler%1 (JSON, CSV)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="124"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="133"/>
         <source>Mouth S&amp;hapes…</source>
         <translation>&amp;Mundbilder…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="126"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="137"/>
         <source>The nine mouth shapes of the cues, learned from this person&apos;s frames: see them and set your own</source>
         <translation>Die neun Mundbilder der Mundformen, gelernt aus den Bildern dieser Person: ansehen und eigene festlegen</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="132"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="144"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="132"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="144"/>
         <source>Which trained model?</source>
         <translation>Welches trainierte Modell?</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="156"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="175"/>
         <source> of %1</source>
         <translation> von %1</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="213"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="214"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="249"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="250"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="216"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="252"/>
         <source>Feature tables (*.csv)</source>
         <translation>Merkmalstabellen (*.csv)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="217"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="253"/>
         <source>Praat TextGrid (*.TextGrid)</source>
         <translation>Praat-TextGrid (*.TextGrid)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="219"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="255"/>
         <source>Active appearance models (*.aam)</source>
         <translation>Active Appearance Models (*.aam)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="221"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="257"/>
         <source>Dynamic models (*.model)</source>
         <translation>Dynamische Modelle (*.model)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="222"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="258"/>
         <source>Rhubarb TSV (*.tsv);;Rhubarb JSON (*.json);;Rhubarb XML (*.xml);;Moho switch data (*.dat)</source>
         <translation>Rhubarb TSV (*.tsv);;Rhubarb JSON (*.json);;Rhubarb XML (*.xml);;Moho-Schaltdaten (*.dat)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="223"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="259"/>
         <source>Controls JSON (*.json);;Controls CSV (*.csv)</source>
         <translation>Regler JSON (*.json);;Regler CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="238"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="282"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="340"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="407"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="447"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="274"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="318"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="376"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="443"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="483"/>
         <source>Cannot export</source>
         <translation>Export nicht möglich</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="240"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="276"/>
         <source>no sequence is selected</source>
         <translation>keine Sequenz ausgewählt</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="291"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="327"/>
         <source>%1 has no video to put beside the generated face</source>
         <translation>%1 hat kein Video, neben das das erzeugte Gesicht gestellt werden könnte</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="305"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="341"/>
         <source>the project has no trained dynamic model and AAM (train one in the Models panel)</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell und kein AAM (im Bereich Modelle trainieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="452"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="488"/>
         <source>the project has no AAM (build one in the Models panel)</source>
         <translation>das Projekt hat kein AAM (im Modelle-Bereich erstellen)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="459"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="495"/>
         <source>%1 needs face features and a phone alignment (track and align it first)</source>
         <translation>%1 braucht Gesichtsmerkmale und eine Lautausrichtung (zuerst verfolgen und ausrichten)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="468"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="504"/>
         <source>Export the mouth cues of %1</source>
         <translation>Mundformen von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="468"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="504"/>
         <source>Export the animation controls of %1</source>
         <translation>Animationsregler von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="296"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="320"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="332"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="356"/>
         <source>Export the generated frames of %1</source>
         <translation>Erzeugte Einzelbilder von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="111"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="157"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="113"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="176"/>
         <source>Generated &amp;Video%1 (MP4)…</source>
         <translation>Erzeugtes &amp;Video%1 (MP4)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="111"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="158"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="113"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="177"/>
         <source>Real and Generated &amp;Side by Side%1 (MP4)…</source>
         <translation>Echt und erzeugt &amp;nebeneinander%1 (MP4)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="297"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="321"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="333"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="357"/>
         <source>Export the generated video of %1</source>
         <translation>Erzeugtes Video von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="346"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="382"/>
         <source>%1 has no face features (track it first)</source>
         <translation>%1 hat keine Gesichtsmerkmale (zuerst tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="349"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="385"/>
         <source>Export the features of %1</source>
         <translation>Merkmale von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="357"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="393"/>
         <source>%1 has no phone alignment (align it first)</source>
         <translation>%1 hat keine Phonem-Alignierung (zuerst alignieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="360"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="396"/>
         <source>Export the alignment of %1</source>
         <translation>Alignierung von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="373"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="409"/>
         <source>%1 has no landmarks</source>
         <translation>%1 hat keine Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="376"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="412"/>
         <source>Export the landmarks of %1</source>
         <translation>Landmarken von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="412"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="448"/>
         <source>the project has no AAM</source>
         <translation>das Projekt hat kein AAM</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="413"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="449"/>
         <source>the project has no trained dynamic model</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="417"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="453"/>
         <source>Export %1</source>
         <translation>%1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="263"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="299"/>
         <source>Exported to %1</source>
         <translation>Exportiert nach %1</translation>
     </message>
@@ -1546,218 +1549,213 @@
 <context>
     <name>lipsync::studio::MainWindow</name>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="82"/>
+        <location filename="../studio/app/MainWindow.cpp" line="83"/>
         <source>Annotate</source>
         <translation>Annotieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="83"/>
+        <location filename="../studio/app/MainWindow.cpp" line="84"/>
         <source>Preview &amp;&amp; Compare</source>
         <translation>Vorschau &amp;&amp; Vergleich</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="85"/>
+        <location filename="../studio/app/MainWindow.cpp" line="86"/>
         <source>Live</source>
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="113"/>
+        <location filename="../studio/app/MainWindow.cpp" line="121"/>
         <source>Models could not be written into the project&apos;s folder.</source>
         <translation>Modelle konnten nicht in den Projektordner geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="116"/>
+        <location filename="../studio/app/MainWindow.cpp" line="124"/>
         <source>%1 was not applied: it would leave the project unsaveable (%2).</source>
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="135"/>
+        <location filename="../studio/app/MainWindow.cpp" line="136"/>
         <source>Playing without sound: %1.</source>
         <translation>Wiedergabe ohne Ton: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="141"/>
         <location filename="../studio/app/MainWindow.cpp" line="142"/>
+        <location filename="../studio/app/MainWindow.cpp" line="143"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="163"/>
+        <location filename="../studio/app/MainWindow.cpp" line="164"/>
         <source>Generated &amp;Face</source>
         <translation>Generiertes &amp;Gesicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="169"/>
+        <location filename="../studio/app/MainWindow.cpp" line="170"/>
         <source>&amp;Whole Face (Eyes Included)</source>
         <translation>&amp;Ganzes Gesicht (mit Augen)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="171"/>
+        <location filename="../studio/app/MainWindow.cpp" line="172"/>
         <source>Synthesise the whole modelled face; otherwise the recording&apos;s own eyes and upper face are kept</source>
         <translation>Das ganze modellierte Gesicht synthetisieren; sonst bleiben die Augen und das Obergesicht der Aufnahme erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="165"/>
+        <location filename="../studio/app/MainWindow.cpp" line="166"/>
         <source>&amp;Synthesised Skin</source>
         <translation>&amp;Synthetisierte Haut</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="167"/>
+        <location filename="../studio/app/MainWindow.cpp" line="168"/>
         <source>Paste the AAM&apos;s synthesis of the lower face, skin included; otherwise the recording&apos;s own lower face is moved to the generated shape and only the inside of the mouth is synthesised</source>
         <translation>Die AAM-Synthese des unteren Gesichts samt Haut einsetzen; sonst wird das eigene untere Gesicht der Aufnahme in die erzeugte Form bewegt und nur das Mundinnere synthetisiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="173"/>
+        <location filename="../studio/app/MainWindow.cpp" line="174"/>
         <source>&amp;Detail from Training Images</source>
         <translation>&amp;Details aus Trainingsbildern</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="175"/>
+        <location filename="../studio/app/MainWindow.cpp" line="176"/>
         <source>Add the teeth, lip highlights and skin detail of the AAM&apos;s nearest training images to the model&apos;s smooth texture</source>
         <translation>Zähne, Glanzlichter der Lippen und Hautdetails der nächstgelegenen Trainingsbilder des AAM zur glatten Textur des Modells hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="177"/>
+        <location filename="../studio/app/MainWindow.cpp" line="178"/>
         <source>&amp;Match the Frame&apos;s Lighting</source>
         <translation>&amp;Beleuchtung an das Bild anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="194"/>
+        <location filename="../studio/app/MainWindow.cpp" line="195"/>
         <source>&amp;Close the Lips on /p b m/</source>
         <translation>&amp;Lippen bei /p b m/ schließen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="196"/>
+        <location filename="../studio/app/MainWindow.cpp" line="197"/>
         <source>Close the generated lips on the bilabials /p b m/, as speakers do; off: the model&apos;s trajectory as generated</source>
         <translation>Die erzeugten Lippen bei den Bilabialen /p b m/ schließen, wie Sprecher es tun; aus: die Trajektorie des Modells, wie sie erzeugt wurde</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="242"/>
+        <location filename="../studio/app/MainWindow.cpp" line="243"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="246"/>
+        <location filename="../studio/app/MainWindow.cpp" line="247"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="256"/>
+        <location filename="../studio/app/MainWindow.cpp" line="257"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="260"/>
+        <location filename="../studio/app/MainWindow.cpp" line="261"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="281"/>
+        <location filename="../studio/app/MainWindow.cpp" line="282"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="282"/>
+        <location filename="../studio/app/MainWindow.cpp" line="283"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="283"/>
+        <location filename="../studio/app/MainWindow.cpp" line="284"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="285"/>
+        <location filename="../studio/app/MainWindow.cpp" line="286"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="316"/>
+        <location filename="../studio/app/MainWindow.cpp" line="317"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="319"/>
+        <location filename="../studio/app/MainWindow.cpp" line="318"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="334"/>
+        <location filename="../studio/app/MainWindow.cpp" line="337"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="346"/>
+        <location filename="../studio/app/MainWindow.cpp" line="349"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="357"/>
+        <location filename="../studio/app/MainWindow.cpp" line="360"/>
         <source>&amp;Live: Speak and Watch the Face</source>
         <translation>&amp;Live: Sprechen und das Gesicht beobachten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="359"/>
+        <location filename="../studio/app/MainWindow.cpp" line="362"/>
         <source>Speak into the microphone and watch the face move</source>
         <translation>Ins Mikrofon sprechen und dem Gesicht beim Bewegen zusehen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="363"/>
+        <location filename="../studio/app/MainWindow.cpp" line="366"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="367"/>
+        <location filename="../studio/app/MainWindow.cpp" line="370"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="371"/>
+        <location filename="../studio/app/MainWindow.cpp" line="374"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="372"/>
+        <location filename="../studio/app/MainWindow.cpp" line="375"/>
         <source>&amp;User Guide</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="375"/>
+        <location filename="../studio/app/MainWindow.cpp" line="378"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="384"/>
+        <location filename="../studio/app/MainWindow.cpp" line="387"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="434"/>
+        <location filename="../studio/app/MainWindow.cpp" line="407"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="497"/>
-        <source>Loading %1…</source>
-        <translation>%1 wird geladen …</translation>
-    </message>
-    <message>
-        <location filename="../studio/app/MainWindow.cpp" line="505"/>
+        <location filename="../studio/app/MainWindow.cpp" line="118"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="534"/>
+        <location filename="../studio/app/MainWindow.cpp" line="454"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="536"/>
+        <location filename="../studio/app/MainWindow.cpp" line="456"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="540"/>
+        <location filename="../studio/app/MainWindow.cpp" line="460"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1765,43 +1763,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="551"/>
+        <location filename="../studio/app/MainWindow.cpp" line="469"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="552"/>
+        <location filename="../studio/app/MainWindow.cpp" line="470"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="552"/>
+        <location filename="../studio/app/MainWindow.cpp" line="470"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="558"/>
+        <location filename="../studio/app/MainWindow.cpp" line="476"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="576"/>
+        <location filename="../studio/app/MainWindow.cpp" line="489"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="589"/>
-        <location filename="../studio/app/MainWindow.cpp" line="597"/>
+        <location filename="../studio/app/MainWindow.cpp" line="497"/>
+        <location filename="../studio/app/MainWindow.cpp" line="505"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="596"/>
+        <location filename="../studio/app/MainWindow.cpp" line="504"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="255"/>
+        <location filename="../studio/app/MainWindow.cpp" line="256"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -1857,12 +1855,12 @@
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="278"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="281"/>
         <source>Made in this session; written when the project is saved</source>
         <translation>In dieser Sitzung erstellt; wird beim Speichern des Projekts geschrieben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="290"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="293"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
@@ -2043,38 +2041,38 @@
         <translation>Evaluation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="326"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="329"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter tracken und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="379"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="382"/>
         <source>%1 of %2 phones never occur in the footage: their face is guessed from the average</source>
         <translation>%1 von %2 Phonen kommen im Material nie vor: ihr Gesicht wird aus dem Durchschnitt geschätzt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="383"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="386"/>
         <source>%1 have fewer than %2 frames</source>
         <translation>%1 haben weniger als %2 Bilder</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="385"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="388"/>
         <source>Phones in context made no context states: too little footage for them</source>
         <translation>Phone im Kontext haben keine Kontextzustände gebildet: zu wenig Material dafür</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="389"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="392"/>
         <source>More footage of the person (%1 s of speech now) covers more.</source>
         <translation>Mehr Material der Person (jetzt %1 s Sprache) deckt mehr ab.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="420"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="455"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="423"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="458"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="422"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="425"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -2082,27 +2080,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="443"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="446"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="466"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="469"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="468"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="471"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="475"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="478"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="494"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="497"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds: mean and 95 % interval over the folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen: Mittelwert und 95-%-Intervall über die Teilmengen.</numerusform>
@@ -2110,17 +2108,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="553"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="556"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="554"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="557"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="489"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="492"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -2133,7 +2131,7 @@
         <translation>Brands Ausgabekovarianzen. Per KV: diagonal oder voll, je nachdem, welche der beiden zurückgehaltene Trainingssequenzen genauer erzeugt (Kreuzvalidierung). Diagonal: das Modell der Veröffentlichung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="522"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="525"/>
         <source>Realism of %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
@@ -2141,7 +2139,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="527"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="530"/>
         <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
         <translation>
             <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
@@ -2149,47 +2147,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="582"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="585"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="583"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="586"/>
         <source>Failed: %1.</source>
         <translation>Fehlgeschlagen: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="585"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="588"/>
         <source>Canceled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="615"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="619"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="620"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="624"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="452"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="455"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="644"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="648"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="654"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="658"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="668"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="672"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>
@@ -2235,137 +2233,137 @@
 <context>
     <name>lipsync::studio::MouthShapesDialog</name>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="59"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="58"/>
         <source>Closed, lips pressed: P, B, M</source>
         <translation>Geschlossen, Lippen aufeinander: P, B, M</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="60"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="59"/>
         <source>Slightly open, teeth clenched: K, S, T, EE</source>
         <translation>Leicht offen, Zähne zusammen: K, S, T, EE</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="61"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="60"/>
         <source>Open: EH as in men, AE as in bat</source>
         <translation>Offen: EH wie in men, AE wie in bat</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="62"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="61"/>
         <source>Wide open: AA as in father</source>
         <translation>Weit offen: AA wie in father</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="63"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="62"/>
         <source>Slightly rounded: AO as in off, ER as in bird</source>
         <translation>Leicht gerundet: AO wie in off, ER wie in bird</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="64"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="63"/>
         <source>Puckered: UW as in you, OW as in show, W</source>
         <translation>Gespitzt: UW wie in you, OW wie in show, W</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="65"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="64"/>
         <source>Upper teeth on the lower lip: F, V</source>
         <translation>Obere Zähne auf der Unterlippe: F, V</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="66"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="65"/>
         <source>Tongue raised behind the teeth: long L</source>
         <translation>Zunge hinter den Zähnen gehoben: langes L</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="67"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="66"/>
         <source>Rest, in every pause</source>
         <translation>Ruhe, in jeder Pause</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="77"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="76"/>
         <source>Mouth Shapes</source>
         <translation>Mundbilder</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="80"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="79"/>
         <source>&lt;b&gt;Shape&lt;/b&gt;</source>
         <translation>&lt;b&gt;Mundbild&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="81"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="80"/>
         <source>&lt;b&gt;Taught by&lt;/b&gt;</source>
         <translation>&lt;b&gt;Quelle&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="104"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="103"/>
         <source>%1 of shape %2, from 0 to 1 over this person&apos;s range</source>
         <translation>%1 von Mundbild %2, von 0 bis 1 über den Bereich dieser Person</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="111"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="110"/>
         <source>Set Mouth Shape %1</source>
         <translation>Mundbild %1 festlegen</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="116"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="115"/>
         <source>From Frame</source>
         <translation>Aus Bild</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="117"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="116"/>
         <source>Make shape %1 the mouth of the frame shown in the studio</source>
         <translation>Mundbild %1 als Mund des im Studio gezeigten Bildes festlegen</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="118"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="117"/>
         <source>Learned</source>
         <translation>Gelernt</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="119"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="118"/>
         <source>Use the shape learned from this person&apos;s frames again</source>
         <translation>Wieder das aus den Bildern dieser Person gelernte Mundbild verwenden</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="127"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="126"/>
         <source>Reset Mouth Shape %1</source>
         <translation>Mundbild %1 zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="134"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="133"/>
         <source>Learn Again</source>
         <translation>Neu lernen</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="135"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="134"/>
         <source>Measure the project&apos;s tracked, aligned frames again</source>
         <translation>Die verfolgten, ausgerichteten Bilder des Projekts neu messen</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="150"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="149"/>
         <source>Silence is always X and /p b m/ always A; the other frames take the shape they look most like, their phone&apos;s shape first. Shapes you set are kept with the project.</source>
         <translation>Stille ist immer X und /p b m/ immer A; die übrigen Bilder bekommen das Mundbild, dem sie am ähnlichsten sehen, das ihres Lauts zuerst. Festgelegte Mundbilder werden mit dem Projekt gespeichert.</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="195"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="194"/>
         <source>The project has no AAM yet: build one in the Models panel, then track and align its sequences.</source>
         <translation>Das Projekt hat noch kein AAM: im Modelle-Bereich erstellen, dann seine Sequenzen verfolgen und ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="202"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="201"/>
         <source>Learning this person&apos;s mouth shapes…</source>
         <translation>Die Mundbilder dieser Person werden gelernt…</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="205"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="204"/>
         <source>Learn the mouth shapes</source>
         <translation>Mundbilder lernen</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="219"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="217"/>
         <source>Not learned: %1. Track and align more of the project.</source>
         <translation>Nicht gelernt: %1. Mehr vom Projekt verfolgen und ausrichten.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="229"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="227"/>
         <source>Learned from %n frames</source>
         <translation>
             <numerusform>Gelernt aus %n Bild</numerusform>
@@ -2373,7 +2371,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="230"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="228"/>
         <source> of %n tracked, aligned sequences.</source>
         <translation>
             <numerusform> von %n verfolgten, ausgerichteten Sequenz.</numerusform>
@@ -2381,12 +2379,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="262"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="260"/>
         <source>you</source>
         <translation>von Ihnen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="263"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="261"/>
         <source>%n frames</source>
         <translation>
             <numerusform>%n Bild</numerusform>
@@ -2394,17 +2392,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="264"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="262"/>
         <source>a drawing (no frames)</source>
         <translation>eine Zeichnung (keine Bilder)</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="316"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="314"/>
         <source>The frame shown has no face features: choose a tracked sequence&apos;s frame first.</source>
         <translation>Das gezeigte Bild hat keine Gesichtsmerkmale: zuerst ein Bild einer verfolgten Sequenz wählen.</translation>
     </message>
     <message>
-        <location filename="../studio/export/MouthShapesDialog.cpp" line="321"/>
+        <location filename="../studio/export/MouthShapesDialog.cpp" line="319"/>
         <source>Mouth Shape %1 from Frame %2</source>
         <translation>Mundbild %1 aus Bild %2</translation>
     </message>
@@ -3126,55 +3124,55 @@
     </message>
 </context>
 <context>
-    <name>lipsync::studio::SpeakerAlignerAdapter</name>
+    <name>lipsync::studio::SpeakerAlignerTrainer</name>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="42"/>
-        <source>Make the Speaker&apos;s Own Aligner…</source>
-        <translation>Eigenes Ausrichtungsmodell des Sprechers erstellen…</translation>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="116"/>
+        <source>Train the Speaker&apos;s Own Aligner…</source>
+        <translation>Eigenes Ausrichtungsmodell des Sprechers trainieren…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="45"/>
-        <source>Adapt the built-in aligner model to this project&apos;s speaker from its transcribed sequences, and align the project with it from then on</source>
-        <translation>Das eingebaute Ausrichtungsmodell aus den transkribierten Sequenzen an den Sprecher dieses Projekts anpassen und das Projekt fortan damit ausrichten</translation>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="121"/>
+        <source>Train an aligner model on this project&apos;s transcribed speech (three minutes of words or more), and align the project with it from then on</source>
+        <translation>Ein Ausrichtungsmodell auf der transkribierten Sprache dieses Projekts trainieren (drei Minuten Wörter oder mehr) und das Projekt fortan damit ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="70"/>
-        <source> Its %1 s of transcribed speech can make the speaker&apos;s own aligner: Model ▸ Make the Speaker&apos;s Own Aligner…</source>
-        <translation> Seine %1 s transkribierter Sprache reichen für ein eigenes Ausrichtungsmodell des Sprechers: Modell ▸ Eigenes Ausrichtungsmodell des Sprechers erstellen…</translation>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="147"/>
+        <source> Its %1 min of words can train the speaker&apos;s own aligner: Model ▸ Train the Speaker&apos;s Own Aligner…</source>
+        <translation> Seine %1 min Wörter reichen, um ein eigenes Ausrichtungsmodell des Sprechers zu trainieren: Modell ▸ Eigenes Ausrichtungsmodell des Sprechers trainieren…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="78"/>
-        <source>Make the Speaker&apos;s Own Aligner</source>
-        <translation>Eigenes Ausrichtungsmodell des Sprechers erstellen</translation>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="155"/>
+        <source>Train the Speaker&apos;s Own Aligner</source>
+        <translation>Eigenes Ausrichtungsmodell des Sprechers trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="86"/>
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="132"/>
-        <source>The aligner could not be adapted.</source>
-        <translation>Das Ausrichtungsmodell konnte nicht angepasst werden.</translation>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="163"/>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="213"/>
+        <source>The aligner could not be trained.</source>
+        <translation>Das Ausrichtungsmodell konnte nicht trainiert werden.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="87"/>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="164"/>
         <source>The model is written into the project&apos;s folder, and the bundled demo is read-only: save the project in a folder of your own first.</source>
         <translation>Das Modell wird in den Projektordner geschrieben, und die mitgelieferte Demo ist schreibgeschützt: speichern Sie das Projekt zuerst in einem eigenen Ordner.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="136"/>
-        <source>Adapted to %1</source>
-        <translation>An %1 angepasst</translation>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="217"/>
+        <source>Trained on %1</source>
+        <translation>Auf %1 trainiert</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="139"/>
-        <source>The aligner is adapted to the speaker from %n sequences</source>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="220"/>
+        <source>The speaker&apos;s own aligner is trained on %n sequences</source>
         <translation>
-            <numerusform>Das Ausrichtungsmodell ist aus %n Sequenz an den Sprecher angepasst</numerusform>
-            <numerusform>Das Ausrichtungsmodell ist aus %n Sequenzen an den Sprecher angepasst</numerusform>
+            <numerusform>Das eigene Ausrichtungsmodell des Sprechers ist auf %n Sequenz trainiert</numerusform>
+            <numerusform>Das eigene Ausrichtungsmodell des Sprechers ist auf %n Sequenzen trainiert</numerusform>
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerAdapter.cpp" line="140"/>
-        <source> (%1 s of speech; log-likelihood per frame %2 → %3): the project is aligned with it from now on.</source>
-        <translation> (%1 s Sprache; Log-Likelihood je Rahmen %2 → %3): das Projekt wird fortan damit ausgerichtet.</translation>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="221"/>
+        <source> (%1 min of words). On %2 sequences it was not trained on, %3 % of its word boundaries are within 40 ms of the project&apos;s timings. The project is aligned with it from now on.</source>
+        <translation> (%1 min Wörter). Auf %2 Sequenzen, auf denen es nicht trainiert wurde, liegen %3 % seiner Wortgrenzen innerhalb von 40 ms der Zeiten des Projekts. Das Projekt wird fortan damit ausgerichtet.</translation>
     </message>
 </context>
 <context>
@@ -3258,6 +3256,14 @@
         <location filename="../studio/preview/SpeechDialog.cpp" line="131"/>
         <source>Type the words spoken (no transcript file was found beside it).</source>
         <translation>Geben Sie die gesprochenen Wörter ein (daneben wurde keine Transkriptdatei gefunden).</translation>
+    </message>
+</context>
+<context>
+    <name>lipsync::studio::StudioContext</name>
+    <message>
+        <location filename="../studio/context/StudioContext.cpp" line="73"/>
+        <source>Loading %1…</source>
+        <translation>%1 wird geladen …</translation>
     </message>
 </context>
 <context>
@@ -3979,67 +3985,67 @@
 <context>
     <name>lipsync::studio::TranscriptProposer</name>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="24"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="29"/>
         <source>&amp;Propose Transcript</source>
         <translation>Transkript &amp;vorschlagen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="25"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="41"/>
         <source>&amp;Accept Proposed Transcript</source>
         <translation>Vorgeschlagenes Transkript &amp;übernehmen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="30"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="38"/>
         <source>Propose a transcript of this sequence by speech recognition (CMU Sphinx&apos;s US-English models), marked as not checked until you edit or accept it</source>
         <translation>Ein Transkript dieser Sequenz per Spracherkennung vorschlagen (die US-englischen Modelle von CMU Sphinx), als nicht geprüft markiert, bis Sie es bearbeiten oder übernehmen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="32"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="40"/>
         <source>Needs CMU Sphinx&apos;s US-English model (Debian package pocketsphinx-en-us)</source>
         <translation>Benötigt das US-englische Modell von CMU Sphinx (Debian-Paket pocketsphinx-en-us)</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="34"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="48"/>
         <source>Take the proposed transcript of this sequence as checked, as it is</source>
         <translation>Das vorgeschlagene Transkript dieser Sequenz unverändert als geprüft übernehmen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="89"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="90"/>
         <source>Propose Transcript</source>
         <translation>Transkript vorschlagen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="90"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="91"/>
         <source>%1 has a transcript. Proposing one replaces it with the words speech recognition hears. Propose anyway?</source>
         <translation>%1 hat ein Transkript. Ein Vorschlag ersetzt es durch die Wörter, die die Spracherkennung hört. Trotzdem vorschlagen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="98"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="99"/>
         <source>Propose transcript of %1</source>
         <translation>Transkript von %1 vorschlagen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="118"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="119"/>
         <source>No transcript could be proposed.</source>
         <translation>Es konnte kein Transkript vorgeschlagen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="139"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="140"/>
         <source>The transcript of %1 changed while its speech was recognised: the proposal was not applied.</source>
         <translation>Das Transkript von %1 wurde geändert, während seine Sprache erkannt wurde: Der Vorschlag wurde nicht übernommen.</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="146"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="147"/>
         <source>Speech recognition proposes the transcript %1 has: nothing changed.</source>
         <translation>Die Spracherkennung schlägt das Transkript vor, das %1 schon hat: Nichts wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="153"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="154"/>
         <source>Transcript of %1 proposed: check it, then edit or accept it.</source>
         <translation>Transkript von %1 vorgeschlagen: Prüfen Sie es, dann bearbeiten oder übernehmen Sie es.</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="155"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="156"/>
         <source>Transcript of %1 proposed: check it, the most doubtful words first: %2.</source>
         <translation>Transkript von %1 vorgeschlagen: Prüfen Sie es, die unsichersten Wörter zuerst: %2.</translation>
     </message>
