@@ -8,7 +8,6 @@
 #include "app/ProjectFiles.h"
 #include "app/SequenceDetailsView.h"
 #include "app/SequenceListModel.h"
-#include "context/SequenceLoader.h"
 #include "app/ShortcutsDialog.h"
 #include "app/TranscriptProposer.h"
 #include "app/TransportBar.h"
@@ -112,7 +111,6 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_context, &StudioContext::sequenceLoadEnded, this, [this](bool loaded) {
         if (!loaded) // canceled or failed: the list shows the sequence the views still show
             showSequenceRow(m_context->currentSequence());
-        emit sequenceLoadEnded(loaded);
     });
     connect(m_context, &StudioContext::sequenceLoadFailed, this, [this](const QString &mediaPath, const QString &problem) {
         ErrorReporter::report(this, tr("The media of this sequence could not be read."), mediaPath, problem);

@@ -3,10 +3,7 @@
 // sequence list, Timeline, Plots and Models as docks), one view of the StudioContext (the
 // document with its undo stack, the task runner, the model store, the player, the current
 // sequence and frame).
-#include "tasks/Task.h"
-
 #include <QMainWindow>
-#include <QPointer>
 
 #include <memory>
 #include <utility>
@@ -81,11 +78,6 @@ public:
 public slots:
     // View > Panels > Reset Layout: every dock shown, docked where it starts, at its default size.
     void resetLayout();
-
-signals:
-    // The loading of a sequence's media ended: it reached the views (the context's
-    // sequenceLoaded was emitted) or not (canceled or failed).
-    void sequenceLoadEnded(bool loaded);
 
 protected:
     void closeEvent(QCloseEvent *event) override;

@@ -33,7 +33,8 @@ TranscriptProposer::TranscriptProposer(StudioContext *context, QWidget *window)
                                    return m_modelInstalled && currentRow(c) >= 0 && c.media() && c.media()->peaks
                                           && !isProposing();
                                },
-                               [this](StudioContext &) { proposeCurrent(); }});
+                               [this](StudioContext &) { proposeCurrent(); }},
+                              this);
     m_propose->setToolTip(m_modelInstalled
                               ? tr("Propose a transcript of this sequence by speech recognition (CMU Sphinx's US-English "
                                    "models), marked as not checked until you edit or accept it")
@@ -44,7 +45,8 @@ TranscriptProposer::TranscriptProposer(StudioContext *context, QWidget *window)
                                   const int row = currentRow(c);
                                   return row >= 0 && c.document()->sequence(row).transcriptProposed;
                               },
-                              [this](StudioContext &) { acceptCurrent(); }});
+                              [this](StudioContext &) { acceptCurrent(); }},
+                             this);
     m_accept->setToolTip(tr("Take the proposed transcript of this sequence as checked, as it is"));
 
     // Another project: the proposal was for the one before.

@@ -31,7 +31,7 @@ CommandRegistry::CommandRegistry(StudioContext *context)
     connect(context->undoStack(), &QUndoStack::cleanChanged, this, &CommandRegistry::revalidate);
 }
 
-QAction *CommandRegistry::add(StudioCommand command)
+QAction *CommandRegistry::add(StudioCommand command, QObject *owner)
 {
     if (m_commands.count(command.name))
         throw Error("command " + command.name.toStdString() + " registered twice");
@@ -52,6 +52,14 @@ QAction *CommandRegistry::add(StudioCommand command)
     if (command.validate)
         action->setEnabled(command.validate(*m_context));
     m_commands.emplace(name, Entry{std::move(command), action});
+    if (owner)
+        connect(owner, &QObject::destroyed, this, [this, name] {
+            const auto it = m_commands.find(name);
+            if (it == m_commands.end())
+                return;
+            delete it->second.action;
+            m_commands.erase(it);
+        });
     return action;
 }
 

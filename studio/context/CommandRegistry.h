@@ -22,8 +22,9 @@ class CommandRegistry : public QObject
 public:
     explicit CommandRegistry(StudioContext *context);
 
-    // Registers `command` (its name unique) and returns its action.
-    QAction *add(StudioCommand command);
+    // Registers `command` (its name unique) and returns its action. `owner`, when given, is the
+    // object the command's functions use: the command and its action go when it does.
+    QAction *add(StudioCommand command, QObject *owner = nullptr);
     // The action of the command called `name` (null: none).
     QAction *action(const QString &name) const;
     // Runs the command called `name` if it validates; false if it does not, or there is none.

@@ -125,14 +125,16 @@ ExportMenu::ExportMenu(StudioContext *context, QMenu *parentMenu, QWidget *dialo
         const Kind kind = Kind(i);
         QAction *action = commands->add({QLatin1String(names[i]), titles[i], {}, QStyle::SP_CustomBase,
                                          [this, kind](const StudioContext &) { return canExport(kind); },
-                                         [this, kind](StudioContext &) { trigger(kind); }});
+                                         [this, kind](StudioContext &) { trigger(kind); }},
+                                        this);
         m_menu->addAction(action);
         m_actions.append(action);
     }
     m_mouthShapesAction = commands->add(
         {QStringLiteral("export/mouth-shapes"), tr("Mouth S&hapes…"), {}, QStyle::SP_CustomBase,
          [](const StudioContext &c) { return c.document()->project().aam() != nullptr; },
-         [this](StudioContext &) { showMouthShapes(); }});
+         [this](StudioContext &) { showMouthShapes(); }},
+        this);
     m_menu->addAction(m_mouthShapesAction);
     m_mouthShapesAction->setToolTip(tr("The nine mouth shapes of the cues, learned from this person's frames: see "
                                        "them and set your own"));

@@ -117,7 +117,8 @@ SpeakerAlignerTrainer::SpeakerAlignerTrainer(StudioContext *context, QWidget *wi
          [this](const StudioContext &c) {
              return c.document()->isOpen() && !c.document()->isReadOnly() && !isTraining();
          },
-         [this](StudioContext &) { start(); }});
+         [this](StudioContext &) { start(); }},
+        this);
     m_action->setToolTip(tr("Train an aligner model on this project's transcribed speech (three minutes of words "
                             "or more), and align the project with it from then on"));
 }

@@ -2,7 +2,7 @@
 // exactly when it validates on the context, re-read as the sequence and frame change; running one
 // that does not validate does nothing; the sequence commands load the sequence through the context
 // (its media decoded in the background, the first frame shown), and a newer request supersedes a
-// pending one.
+// pending one; a command goes with the object it belongs to.
 #include "DemoWindow.h"
 
 #include "context/CommandRegistry.h"
@@ -106,6 +106,25 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(Error, m_actions->registry->add({QStringLiteral("frame/next"), QStringLiteral("Again"),
                                                                   {}, QStyle::SP_CustomBase, nullptr, nullptr}));
         QCOMPARE(m_actions->registry->action(QStringLiteral("frame/next")), m_actions->nextFrame);
+    }
+
+    // A command goes with the object whose functions it runs: no action left to call into it.
+    void aCommandGoesWithItsOwner()
+    {
+        auto *owner = new QObject;
+        int runs = 0;
+        QAction *action = m_actions->registry->add({QStringLiteral("test/owned"), QStringLiteral("Owned"), {},
+                                                    QStyle::SP_CustomBase, nullptr, [&runs](StudioContext &) { ++runs; }},
+                                                   owner);
+        QVERIFY(m_actions->registry->run(QStringLiteral("test/owned")));
+        QCOMPARE(runs, 1);
+        QSignalSpy gone(action, &QObject::destroyed);
+        delete owner;
+        QCOMPARE(gone.count(), 1);
+        QVERIFY(!m_actions->registry->action(QStringLiteral("test/owned")));
+        QVERIFY(!m_actions->registry->run(QStringLiteral("test/owned")));
+        m_actions->registry->revalidate();
+        QCOMPARE(runs, 1);
     }
 
     void cleanupTestCase()
