@@ -66,6 +66,8 @@ int runRealism(const CommandLine &args, const EvaluationOptions &evaluation)
     RealismOptions options;
     options.crossValidation = evaluation;
     options.maxLag = args.integer(QStringLiteral("max-lag"), 0);
+    if (args.isSet(QStringLiteral("observer-crf")))
+        options.observerCrf = args.integer(QStringLiteral("observer-crf"), 0, 51);
     options.dlibPredictor = args.value(QStringLiteral("dlib")).toStdString();
     const bool paper = args.isSet(QStringLiteral("paper"));
     if (paper)
@@ -110,7 +112,7 @@ int runEvaluate(const CommandLine &args)
     const bool realism = args.isSet(QStringLiteral("realism"));
     if (!realism) {
         QStringList realismOnly{QStringLiteral("max-lag"), QStringLiteral("dlib"), QStringLiteral("live"),
-                                QStringLiteral("exemplars")};
+                                QStringLiteral("exemplars"), QStringLiteral("observer-crf")};
         for (const CommandOption &option : Compositing::options())
             realismOnly << option.name;
         for (const QString &option : realismOnly)
@@ -194,6 +196,9 @@ const CommandRegistration registration{
           QStringLiteral("--realism: also every model driven live, its phones recognised from the sound as it "
                          "streams in (the shipped aligner model and phone bigram, as `lipsync live`), reported as "
                          "\"live KIND\"")},
+         {QStringLiteral("observer-crf"), QStringLiteral("N"),
+          QStringLiteral("--realism: the x264 quality (0 lossless ... 51) the machine observer's recording and renders "
+                         "are encoded at (default: the export's)")},
          {QStringLiteral("exemplars"), QStringLiteral("K,JOIN,CUT"),
           QStringLiteral("--realism: also every model's trajectory replaced by the training folds' recorded frames "
                          "nearest it (render/ExemplarSelection: K candidates a frame, the join and cut weights), "

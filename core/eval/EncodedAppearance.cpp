@@ -6,12 +6,13 @@
 
 namespace lipsync {
 
-EncodedAppearance::EncodedAppearance(int streams)
+EncodedAppearance::EncodedAppearance(int streams, int crf)
 {
     if (!m_folder.isValid())
         throw Error("no temporary folder for the machine observer's encodes");
+    m_options.crf = crf;
     for (int s = 0; s < streams; ++s)
-        m_exporters.push_back(std::make_unique<VideoExporter>(path(s)));
+        m_exporters.push_back(std::make_unique<VideoExporter>(path(s), m_options));
 }
 
 EncodedAppearance::~EncodedAppearance() = default;
@@ -54,7 +55,7 @@ EncodedAppearance::Result EncodedAppearance::appearance(const std::vector<std::v
     };
     Result result;
     const std::string second = m_folder.filePath(QStringLiteral("recording-again.mp4")).toStdString();
-    VideoExporter again(second);
+    VideoExporter again(second, m_options);
     for (size_t s = 0; s < m_exporters.size(); ++s)
         result.streams.push_back(read(path(int(s)), s, s == 0 ? &again : nullptr));
     again.finish();

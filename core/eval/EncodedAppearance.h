@@ -22,8 +22,9 @@ namespace lipsync {
 class EncodedAppearance
 {
 public:
-    // `streams` streams of frames of one size; stream 0 is the recording.
-    explicit EncodedAppearance(int streams);
+    // `streams` streams of frames of one size; stream 0 is the recording. Encoded at x264's
+    // constant rate factor `crf` (0: lossless).
+    EncodedAppearance(int streams, int crf);
     ~EncodedAppearance();
     EncodedAppearance(const EncodedAppearance &) = delete;
     EncodedAppearance &operator=(const EncodedAppearance &) = delete;
@@ -44,6 +45,7 @@ private:
 
     QTemporaryDir m_folder;
     std::vector<std::unique_ptr<VideoExporter>> m_exporters;
+    VideoExportOptions m_options;
 };
 
 } // namespace lipsync

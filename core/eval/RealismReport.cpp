@@ -130,7 +130,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
     // viewer has.
     std::vector<std::vector<std::optional<cv::Rect2d>>> boxes(methods + 1,
                                                               std::vector<std::optional<cv::Rect2d>>(size_t(frames)));
-    EncodedAppearance tapes(int(methods) + 1);
+    EncodedAppearance tapes(int(methods) + 1, options.observerCrf);
     cv::Mat generated;
     for (int t = 0; t < frames; ++t) {
         feedback.throwIfCanceled();

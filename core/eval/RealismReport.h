@@ -41,6 +41,7 @@
 #include "eval/Evaluation.h"
 #include "eval/RealismMetrics.h"
 #include "render/ExemplarSelection.h"
+#include "render/VideoExporter.h"
 
 #include <QJsonObject>
 
@@ -77,6 +78,9 @@ struct RealismOptions
     // Also every model's trajectory replaced by recorded frames of its training folds
     // (render/ExemplarSelection), reported as "<kind> exemplars". None: not measured.
     std::optional<ExemplarSelection::Options> exemplars;
+    // The x264 quality at which the machine observer's streams are encoded (EncodedAppearance):
+    // the export's by default.
+    int observerCrf = VideoExportOptions{}.crf;
 };
 
 struct RealismSequenceMethod
