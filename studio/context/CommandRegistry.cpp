@@ -52,15 +52,35 @@ QAction *CommandRegistry::add(StudioCommand command, QObject *owner)
     if (command.validate)
         action->setEnabled(command.validate(*m_context));
     m_commands.emplace(name, Entry{std::move(command), action});
-    if (owner)
-        connect(owner, &QObject::destroyed, this, [this, name] {
-            const auto it = m_commands.find(name);
-            if (it == m_commands.end())
-                return;
-            delete it->second.action;
-            m_commands.erase(it);
-        });
+    forgetWith(owner, name);
     return action;
+}
+
+void CommandRegistry::adopt(const QString &name, QAction *action, std::function<bool(const StudioContext &)> validate,
+                            QObject *owner)
+{
+    if (m_commands.count(name))
+        throw Error("command " + name.toStdString() + " registered twice");
+    action->setObjectName(name);
+    if (validate && m_context)
+        action->setEnabled(validate(*m_context));
+    StudioCommand command{name, action->text(), action->shortcuts(), QStyle::SP_CustomBase, std::move(validate), nullptr};
+    m_commands.emplace(name, Entry{std::move(command), action, true});
+    forgetWith(owner, name);
+}
+
+void CommandRegistry::forgetWith(QObject *owner, const QString &name)
+{
+    if (!owner)
+        return;
+    connect(owner, &QObject::destroyed, this, [this, name] {
+        const auto it = m_commands.find(name);
+        if (it == m_commands.end())
+            return;
+        if (!it->second.adopted) // an adopted action is its panel's, and goes with it
+            delete it->second.action;
+        m_commands.erase(it);
+    });
 }
 
 QAction *CommandRegistry::action(const QString &name) const
@@ -75,9 +95,16 @@ bool CommandRegistry::run(const QString &name)
     if (it == m_commands.end())
         return false;
     const StudioCommand &command = it->second.command;
-    if (!m_context || (command.validate && !command.validate(*m_context)) || !command.run)
+    if (!m_context || (command.validate && !command.validate(*m_context)))
         return false;
-    command.run(*m_context);
+    if (it->second.adopted) {
+        it->second.action->setEnabled(true); // it validates: a stale state must not swallow the trigger
+        it->second.action->trigger();
+    }
+    else if (command.run)
+        command.run(*m_context);
+    else
+        return false;
     return true;
 }
 

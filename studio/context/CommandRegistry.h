@@ -25,6 +25,10 @@ public:
     // Registers `command` (its name unique) and returns its action. `owner`, when given, is the
     // object the command's functions use: the command and its action go when it does.
     QAction *add(StudioCommand command, QObject *owner = nullptr);
+    // Registers a panel's own `action` (its keys, scope and triggers stay as the panel made them)
+    // as the command `name`: it is enabled when `validate` says so, as every command is.
+    void adopt(const QString &name, QAction *action, std::function<bool(const StudioContext &)> validate,
+               QObject *owner);
     // The action of the command called `name` (null: none).
     QAction *action(const QString &name) const;
     // Runs the command called `name` if it validates; false if it does not, or there is none.
@@ -39,7 +43,9 @@ private:
     {
         StudioCommand command;
         QAction *action;
+        bool adopted = false; // the action is a panel's: it runs what the panel connected
     };
+    void forgetWith(QObject *owner, const QString &name);
     // Cleared as the context dies: its undo stack, deleted after it, still signals (cleanChanged).
     QPointer<StudioContext> m_context;
     QPointer<QWidget> m_shortcutWidget;

@@ -6,6 +6,7 @@
 #include "align/ProjectAligner.h"
 #include "align/SphinxAligner.h"
 #include "audio/WaveformPeaks.h"
+#include "context/CommandRegistry.h"
 #include "context/ErrorReporter.h"
 #include "context/ModelStore.h"
 #include "context/PlaybackController.h"
@@ -47,7 +48,6 @@ namespace lipsync::studio {
 namespace {
 // The scroll bar counts milliseconds.
 constexpr double kUnitsPerSecond = 1000.0;
-
 } // namespace
 
 TimelinePanel::TimelinePanel(QWidget *parent)
@@ -70,7 +70,6 @@ TimelinePanel::TimelinePanel(QWidget *parent)
     layout->addLayout(createButtonBar());
     connectActions();
     syncScrollBar();
-    updateActions();
 }
 
 // Actions: buttons below the view, the editing ones in the view's context menu with keys that
@@ -204,19 +203,6 @@ QHBoxLayout *TimelinePanel::createButtonBar()
 
 void TimelinePanel::connectActions()
 {
-    connect(m_align, &QAction::triggered, this, &TimelinePanel::alignSequence);
-    connect(m_alignAll, &QAction::triggered, this, &TimelinePanel::alignAll);
-    connect(m_realign, &QAction::triggered, this, &TimelinePanel::realignSelection);
-    connect(m_split, &QAction::triggered, this, &TimelinePanel::splitAtCursor);
-    connect(m_merge, &QAction::triggered, this, &TimelinePanel::mergeWithNext);
-    connect(m_relabel, &QAction::triggered, this, &TimelinePanel::relabelSelected);
-    connect(m_insertSilence, &QAction::triggered, this, &TimelinePanel::insertSilence);
-    connect(m_insertBreath, &QAction::triggered, this, &TimelinePanel::insertBreath);
-    connect(m_playSelection, &QAction::triggered, this, &TimelinePanel::playSelection);
-    connect(m_playWord, &QAction::triggered, this, &TimelinePanel::playWord);
-    connect(m_playAll, &QAction::triggered, this, &TimelinePanel::playAll);
-    connect(m_pronunciationsAction, &QAction::triggered, this, &TimelinePanel::showPronunciations);
-
     connect(m_waveform, &WaveformView::boundaryDragStarted, this, &TimelinePanel::onDragStarted);
     connect(m_waveform, &WaveformView::boundaryDragged, this, &TimelinePanel::onDragged);
     connect(m_waveform, &WaveformView::boundaryDragFinished, this, [this] { m_dragKey = -1; });
@@ -243,6 +229,7 @@ void TimelinePanel::attach(StudioContext *context)
 {
     m_context = context;
     m_document = context->document();
+    adoptCommands();
     m_speakerAligner = new SpeakerAlignerTrainer(context, this);
     m_alignerMenu->addSeparator();
     m_alignerMenu->addAction(m_speakerAligner->action());
@@ -375,22 +362,41 @@ void TimelinePanel::refresh()
 
 void TimelinePanel::updateActions()
 {
-    const bool open = m_document && m_row >= 0;
-    const bool aligning = m_alignTask && m_alignTask->isRunning();
-    const bool transcript = open && !m_document->sequence(m_row).transcript.empty();
-    double a = 0, b = 0;
-    const bool selection = open && m_waveform->selection(&a, &b);
-    m_align->setEnabled(transcript && !aligning);
-    m_alignAll->setEnabled(m_document && m_document->sequenceCount() > 0 && !aligning);
-    m_realign->setEnabled(selection && !aligning && !m_waveform->words().isEmpty());
-    for (QAction *act : {m_split, m_merge, m_relabel})
-        act->setEnabled(open);
-    m_insertSilence->setEnabled(selection);
-    m_insertBreath->setEnabled(selection);
-    m_playSelection->setEnabled(open);
-    m_playWord->setEnabled(open);
-    m_playAll->setEnabled(open);
-    m_pronunciationsAction->setEnabled(m_document && m_document->isOpen());
+    if (m_context)
+        m_context->commands()->revalidate();
+}
+
+void TimelinePanel::adoptCommands()
+{
+    // The row shown may be gone already when the registry asks (it hears of a removal first).
+    auto open = [this] { return m_document && m_row >= 0 && m_row < m_document->sequenceCount(); };
+    auto aligning = [this] { return m_alignTask && m_alignTask->isRunning(); };
+    auto selection = [this, open] {
+        double a = 0, b = 0;
+        return open() && m_waveform->selection(&a, &b);
+    };
+    auto adopt = [this](const char *name, QAction *action, void (TimelinePanel::*run)(), std::function<bool()> can) {
+        connect(action, &QAction::triggered, this, run);
+        m_context->commands()->adopt(QLatin1String(name), action, [can](const StudioContext &) { return can(); }, this);
+    };
+    adopt("timeline/align", m_align, &TimelinePanel::alignSequence, [this, open, aligning] {
+        return open() && !m_document->sequence(m_row).transcript.empty() && !aligning();
+    });
+    adopt("timeline/align-all", m_alignAll, &TimelinePanel::alignAll,
+          [this, aligning] { return m_document->sequenceCount() > 0 && !aligning(); });
+    adopt("timeline/realign-selection", m_realign, &TimelinePanel::realignSelection, [this, selection, aligning] {
+        return selection() && !aligning() && !m_waveform->words().isEmpty();
+    });
+    adopt("timeline/split", m_split, &TimelinePanel::splitAtCursor, open);
+    adopt("timeline/merge", m_merge, &TimelinePanel::mergeWithNext, open);
+    adopt("timeline/relabel", m_relabel, &TimelinePanel::relabelSelected, open);
+    adopt("timeline/insert-silence", m_insertSilence, &TimelinePanel::insertSilence, selection);
+    adopt("timeline/insert-breath", m_insertBreath, &TimelinePanel::insertBreath, selection);
+    adopt("timeline/play-selection", m_playSelection, &TimelinePanel::playSelection, open);
+    adopt("timeline/play-word", m_playWord, &TimelinePanel::playWord, open);
+    adopt("timeline/play-all", m_playAll, &TimelinePanel::playAll, open);
+    adopt("timeline/pronunciations", m_pronunciationsAction, &TimelinePanel::showPronunciations,
+          [this] { return m_document->isOpen(); });
 }
 
 TierPair TimelinePanel::currentTiers() const

@@ -121,6 +121,9 @@ private:
     bool preparePlayer();
     void showSequence(int row);
     void refresh();
+    // Registers the timeline's own actions (their keys work in the timeline) as commands: what
+    // each does, and when it can (CommandRegistry::adopt).
+    void adoptCommands();
     void updateActions();
     // The Speech menu's aligner and adaptation, for every alignment of the studio (ModelStore).
     void applyProjectAligner();

@@ -2,13 +2,16 @@
 // exactly when it validates on the context, re-read as the sequence and frame change; running one
 // that does not validate does nothing; the sequence commands load the sequence through the context
 // (its media decoded in the background, the first frame shown), and a newer request supersedes a
-// pending one; a command goes with the object it belongs to.
+// pending one; a panel's own actions validate as commands; a command goes with the object it
+// belongs to.
 #include "DemoWindow.h"
 
 #include "context/CommandRegistry.h"
 #include "context/StudioActions.h"
 #include "context/StudioContext.h"
+#include "context/PlaybackController.h"
 #include "document/ProjectDocument.h"
+#include "timeline/TimelinePanel.h"
 #include "util/Error.h"
 
 #include <QAction>
@@ -106,6 +109,26 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(Error, m_actions->registry->add({QStringLiteral("frame/next"), QStringLiteral("Again"),
                                                                   {}, QStyle::SP_CustomBase, nullptr, nullptr}));
         QCOMPARE(m_actions->registry->action(QStringLiteral("frame/next")), m_actions->nextFrame);
+    }
+
+    // A panel's own actions are commands too: the timeline's Align validates on the sequence shown
+    // and the task running, and runs through the registry.
+    void thePanelsActionsValidateAsCommands()
+    {
+        TimelinePanel timeline;
+        timeline.attach(&m_context);
+        m_context.playback()->setAudioEnabled(false);
+        m_context.selectSequence(0);
+        QTRY_COMPARE_WITH_TIMEOUT(m_context.currentSequence(), 0, 60000);
+        QAction *align = m_actions->registry->action(QStringLiteral("timeline/align"));
+        QVERIFY(align);
+        QVERIFY(align->isEnabled()); // a transcript to align
+        QVERIFY(!m_actions->registry->action(QStringLiteral("timeline/realign-selection"))->isEnabled()); // no selection
+        QVERIFY(m_actions->registry->run(QStringLiteral("timeline/align")));
+        QVERIFY(!align->isEnabled()); // one alignment at a time
+        QVERIFY(!m_actions->registry->run(QStringLiteral("timeline/align")));
+        QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 60000);
+        QTRY_VERIFY(align->isEnabled());
     }
 
     // A command goes with the object whose functions it runs: no action left to call into it.
