@@ -9,6 +9,7 @@
 #include "aam/PtsFile.h"
 #include "annotate/FrameView.h"
 #include "build/ModesView.h"
+#include "context/CommandRegistry.h"
 #include "context/ErrorReporter.h"
 #include "context/ModelStore.h"
 #include "context/SequenceMedia.h"
@@ -160,29 +161,43 @@ FacesController::FacesController(StudioContext *context, FrameView *view, QWidge
     connect(doc, &ProjectDocument::sequenceChanged, this, &FacesController::onSequenceChanged);
     connect(doc, &ProjectDocument::modelsChanged, this, &FacesController::onModelsChanged);
     connect(context, &StudioContext::currentFrameChanged, this, &FacesController::refreshFrame);
-    connect(context, &StudioContext::sequenceLoaded, this, &FacesController::updateActions);
-    updateActions();
+    adoptCommands();
 }
 
 FacesController::~FacesController() = default;
 
 void FacesController::updateActions()
 {
-    const bool open = m_context->document()->isOpen();
-    for (QAction *a : {m_pickFrames, m_buildAam, m_trackAll})
-        a->setEnabled(open);
+    m_context->commands()->revalidate();
+}
+
+void FacesController::adoptCommands()
+{
+    CommandRegistry *commands = m_context->commands();
+    auto adopt = [&](const char *name, QAction *action, std::function<bool(const StudioContext &)> can) {
+        commands->adopt(QLatin1String(name), action, std::move(can), this);
+    };
+    auto open = [](const StudioContext &c) { return c.document()->isOpen(); };
     // A sequence of sound alone has no face to point at or track.
-    const auto media = m_context->media();
-    const bool video = open && !(media && media->audioOnly);
-    for (QAction *a : {m_detect, m_copyPrevious, m_nextUnlabelled, m_trackSequence})
-        a->setEnabled(video);
-    m_nextPicked->setEnabled(open && !m_review.empty());
-    const ProjectDocument *doc = m_context->document();
-    bool tracked = false;
-    for (int row = 0; open && !tracked && row < doc->sequenceCount(); ++row)
-        tracked = !doc->sequence(row).fitErrors.empty();
-    m_nextWorst->setEnabled(tracked);
-    m_modes->setEnabled(open);
+    auto video = [](const StudioContext &c) { return c.document()->isOpen() && !(c.media() && c.media()->audioOnly); };
+    adopt("faces/pick-frames", m_pickFrames, open);
+    adopt("faces/build-aam", m_buildAam, open);
+    adopt("faces/track-all", m_trackAll, open);
+    adopt("faces/modes", m_modes, open);
+    adopt("faces/detect", m_detect, video);
+    adopt("faces/copy-previous", m_copyPrevious, video);
+    adopt("faces/next-unlabelled", m_nextUnlabelled, video);
+    adopt("faces/track-sequence", m_trackSequence, video);
+    adopt("faces/next-picked", m_nextPicked, [this](const StudioContext &c) {
+        return c.document()->isOpen() && !m_review.empty();
+    });
+    adopt("faces/next-worst", m_nextWorst, [](const StudioContext &c) {
+        const ProjectDocument *doc = c.document();
+        for (int row = 0; doc->isOpen() && row < doc->sequenceCount(); ++row)
+            if (!doc->sequence(row).fitErrors.empty())
+                return true;
+        return false;
+    });
 }
 
 void FacesController::onDocumentReset()

@@ -92,6 +92,8 @@ private:
     // project's active reference everywhere (tracking, detection, Modes of Variation).
     void onModelsChanged();
     void refreshFrame();
+    // The Faces menu's actions as commands, each with when it can act (CommandRegistry::adopt).
+    void adoptCommands();
     void updateActions();
     void reportFailure(Task *task, const QString &what);
 
