@@ -20,6 +20,7 @@
 #include <QJsonObject>
 
 #include <cstdio>
+#include <tuple>
 
 using namespace lipsync;
 using namespace lipsync::cli;
@@ -50,15 +51,15 @@ AnimationSource readSource(const CommandLine &args)
     const std::string aamPath = source.project.resolve(aam->file);
     source.aam = std::make_shared<const AamModel>(AamModel::load(aamPath));
     const MouthMeasurer measurer(*source.aam);
-    source.mapping = projectMouthMapping(measurer, source.project);
     if (args.isSet("sequence")) {
         const Sequence *s = source.project.sequence(args.value("sequence").toStdString());
         if (!s)
             throw Error("no sequence '" + args.value("sequence").toStdString() + "' in the project",
                         source.project.manifestPath());
-        source.track = mouthTrackOfSequence(measurer, source.project, *s);
+        std::tie(source.mapping, source.track) = projectMouthMappingAndTrack(measurer, source.project, *s);
         return source;
     }
+    source.mapping = projectMouthMapping(measurer, source.project);
     if (!args.isSet("transcript") || !args.isSet("model"))
         throw UsageError(QStringLiteral("--media needs --transcript and --model"));
     SpeechToFaceRequest request;

@@ -45,7 +45,9 @@ MouthTrack mouthTrackOfSequence(const MouthMeasurer &measurer, const Project &pr
     std::vector<int> phones;
     for (const std::string &label : voteFrameLabels(sequence.phones, frames))
         phones.push_back(PhoneSet::index(label));
-    return makeMouthTrack(measurer, sequence.features, frames, std::move(phones), project.mediaPath(sequence));
+    MouthTrack track = makeMouthTrack(measurer, sequence.features, frames, std::move(phones), project.mediaPath(sequence));
+    track.sequenceId = sequence.id;
+    return track;
 }
 
 MouthTrack mouthTrackOfGenerated(const MouthMeasurer &measurer, const SpeechToFaceResult &result)
@@ -70,6 +72,17 @@ MouthMapping projectMouthMapping(const MouthMeasurer &measurer, const Project &p
     if (tracks)
         *tracks = std::move(own);
     return mapping;
+}
+
+std::pair<MouthMapping, MouthTrack> projectMouthMappingAndTrack(const MouthMeasurer &measurer, const Project &project,
+                                                                const Sequence &sequence)
+{
+    std::vector<MouthTrack> tracks;
+    MouthMapping mapping = projectMouthMapping(measurer, project, &tracks);
+    for (MouthTrack &track : tracks)
+        if (track.sequenceId == sequence.id)
+            return {std::move(mapping), std::move(track)};
+    return {std::move(mapping), mouthTrackOfSequence(measurer, project, sequence)}; // not learned from: says why
 }
 
 std::pair<int, int> nearestFrameOfShape(const std::vector<MouthTrack> &tracks, const MouthMapping &mapping,

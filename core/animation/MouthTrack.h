@@ -26,6 +26,7 @@ struct MouthTrack
     Eigen::MatrixXd points;             // frames x 46: the 23 points in the AAM's normalised frame
     Eigen::MatrixXd features;           // frames x combined modes: the AAM parameters measured
     std::string soundFile;              // the recording the cues and controls go with
+    std::string sequenceId;             // the project's sequence it was measured on (empty: generated)
 
     int frameCount() const { return frames.count(); }
 };
@@ -45,6 +46,10 @@ std::vector<MouthTrack> projectMouthTracks(const MouthMeasurer &measurer, const 
 // the user's own shapes (Project::mouthShapes) applied. MouthMapping::learn's errors.
 MouthMapping projectMouthMapping(const MouthMeasurer &measurer, const Project &project,
                                  std::vector<MouthTrack> *tracks = nullptr);
+// The mapping and the track of `sequence`, measured once: the track is the one the mapping learned
+// from. Errors as projectMouthMapping and mouthTrackOfSequence.
+std::pair<MouthMapping, MouthTrack> projectMouthMappingAndTrack(const MouthMeasurer &measurer, const Project &project,
+                                                                const Sequence &sequence);
 // The frame of `tracks` whose cue features are nearest shape `shape` of `mapping`, as
 // {track, frame}; {-1, -1} for no frames.
 std::pair<int, int> nearestFrameOfShape(const std::vector<MouthTrack> &tracks, const MouthMapping &mapping,

@@ -508,11 +508,12 @@ ExportMenu::Job ExportMenu::animationJob(Kind kind, const QString &path, const S
                        -> TaskRunner::Commit {
                 feedback.setStatus("learning this person's mouth shapes");
                 const MouthMeasurer measurer(*aam);
-                const MouthMapping mapping = projectMouthMapping(measurer, project);
+                // A sequence's track is one the mapping learns from: measured once.
+                const auto [mapping, track] = speech ? std::pair(projectMouthMapping(measurer, project),
+                                                                 mouthTrackOfGenerated(measurer, *speech))
+                                                     : projectMouthMappingAndTrack(measurer, project, sequence);
                 feedback.throwIfCanceled();
                 feedback.setProgress(0.8);
-                const MouthTrack track = speech ? mouthTrackOfGenerated(measurer, *speech)
-                                                : mouthTrackOfSequence(measurer, project, sequence);
                 if (cues)
                     writeMouthCues(mouthCues(track, mapping), target, dat);
                 else

@@ -49,6 +49,20 @@ private slots:
         QCOMPARE(m_tracks.size(), m_project.sequences.size());
     }
 
+    // One sequence's cues: its track is the one the mapping learned from (measured once), the
+    // same as measuring it alone.
+    void aSequencesTrackIsTheLearnedOne()
+    {
+        const Sequence &s = m_project.sequences[2];
+        const auto [mapping, track] = projectMouthMappingAndTrack(*m_measurer, m_project, s);
+        QCOMPARE(track.sequenceId, s.id);
+        QCOMPARE(mapping.shape(MouthShape::D), m_mapping.shape(MouthShape::D));
+        const MouthTrack alone = mouthTrackOfSequence(*m_measurer, m_project, s);
+        QCOMPARE(track.frameCount(), alone.frameCount());
+        QVERIFY(track.points.isApprox(alone.points));
+        QCOMPARE(track.phones, alone.phones);
+    }
+
     void rhubarbSemantics()
     {
         int speechFrames = 0, offSeed = 0;
