@@ -418,6 +418,10 @@ private slots:
         QCOMPARE(runLipsync({"evaluate", "--realism", "--project", m_dir.path(), "--csv", "x.csv"}).exitCode, 2);
         QCOMPARE(runLipsync({"evaluate", "--realism", "--project", m_dir.path(), "--max-lag", "-1"}).exitCode, 2);
         QCOMPARE(runLipsync({"evaluate", "--features", m_features, "--labels", m_labels, "--max-lag", "3"}).exitCode, 2);
+        QCOMPARE(runLipsync({"evaluate", "--features", m_features, "--labels", m_labels, "--observer-crf", "0"}).exitCode, 2);
+        realism = runLipsync({"evaluate", "--realism", "--project", m_dir.path(), "--observer-crf", "52"});
+        QCOMPARE(realism.exitCode, 2);
+        QVERIFY2(realism.err.contains("observer-crf"), realism.err.constData());
         realism = runLipsync({"evaluate", "--help"});
         QCOMPARE(realism.exitCode, 0);
         QVERIFY(realism.out.contains("--realism") && realism.out.contains("dlib"));
