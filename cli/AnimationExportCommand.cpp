@@ -45,10 +45,7 @@ AnimationSource readSource(const CommandLine &args)
                                         "and --model (new speech)"));
     AnimationSource source;
     source.project = Project::load(args.value("project").toStdString());
-    const ModelReference *aam = source.project.aam();
-    if (!aam)
-        throw Error("the project has no AAM: build one first (lipsync aam build)", source.project.manifestPath());
-    const std::string aamPath = source.project.resolve(aam->file);
+    const std::string aamPath = source.project.aamPath();
     source.aam = std::make_shared<const AamModel>(AamModel::load(aamPath));
     const MouthMeasurer measurer(*source.aam);
     if (args.isSet("sequence")) {

@@ -3,6 +3,7 @@
 #include "CommandLine.h"
 #include "Compositing.h"
 #include "DynamicModelOptions.h"
+#include "MouthPriorOptions.h"
 #include "TrainingData.h"
 
 #include "align/ShippedAlignerModel.h"
@@ -68,6 +69,7 @@ int runRealism(const CommandLine &args, const EvaluationOptions &evaluation)
     options.maxLag = args.integer(QStringLiteral("max-lag"), 0);
     if (args.isSet(QStringLiteral("observer-crf")))
         options.observerCrf = args.integer(QStringLiteral("observer-crf"), 0, 51);
+    options.mouthPrior = mouthPriorFrom(args, &options.mouthPriorWeight);
     options.dlibPredictor = args.value(QStringLiteral("dlib")).toStdString();
     const bool paper = args.isSet(QStringLiteral("paper"));
     if (paper)
@@ -112,7 +114,8 @@ int runEvaluate(const CommandLine &args)
     const bool realism = args.isSet(QStringLiteral("realism"));
     if (!realism) {
         QStringList realismOnly{QStringLiteral("max-lag"), QStringLiteral("dlib"), QStringLiteral("live"),
-                                QStringLiteral("exemplars"), QStringLiteral("observer-crf")};
+                                QStringLiteral("exemplars"), QStringLiteral("observer-crf"), QStringLiteral("prior"),
+                                QStringLiteral("prior-file"), QStringLiteral("prior-weight")};
         for (const CommandOption &option : Compositing::options())
             realismOnly << option.name;
         for (const QString &option : realismOnly)
@@ -206,7 +209,8 @@ const CommandRegistration registration{
         {}}
         .add(trainingDataOptions())
         .add(dynamicModelOptions())
-        .add(Compositing::options()),
+        .add(Compositing::options())
+        .add(mouthPriorOptions(QStringLiteral("--realism: "))),
     &runEvaluate};
 
 } // namespace

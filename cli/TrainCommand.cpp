@@ -1,14 +1,21 @@
 // lipsync train: fits one dynamic model (docs/models.md §1-4) to features + phone labels.
 #include "CommandLine.h"
 #include "DynamicModelOptions.h"
+#include "MouthPriorOptions.h"
 #include "TrainingData.h"
 
 #include "aam/AamModel.h"
+#include "animation/MouthMeasures.h"
+#include "animation/MouthShapePrior.h"
+#include "animation/MouthTrack.h"
 #include "dynamics/BrandModel.h"
 #include "dynamics/ContextDependentModel.h"
+#include "dynamics/HmmMeanModel.h"
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneCoverage.h"
+#include "project/Project.h"
 #include "tasks/Feedback.h"
+#include "util/Error.h"
 
 #include <QJsonArray>
 
@@ -20,6 +27,25 @@ using namespace lipsync::cli;
 
 namespace {
 
+// --prior: HMM-mean's phone means start from mouth shapes learnt on other speakers (the shipped
+// GRID s1 prior, or --prior-file), MAP-combined with the project's own frames of the sequences
+// trained on (animation/MouthShapePrior).
+void startFromPrior(const CommandLine &args, DynamicModel &model, const std::vector<LabelledSequence> &sequences,
+                    const MouthShapePrior &prior, double kappa)
+{
+    auto *hmm = dynamic_cast<HmmMeanModel *>(&model);
+    if (!hmm)
+        throw UsageError(QStringLiteral("--prior starts HMM-mean's phone means (--kind hmm, without --context-states)"));
+    const Project project = Project::load(args.value(QStringLiteral("project")).toStdString());
+    const AamModel aam = AamModel::load(project.aamPath());
+    const MouthMeasurer measurer(aam);
+    std::vector<MouthTrack> tracks;
+    for (const LabelledSequence &s : sequences)
+        if (const Sequence *sequence = project.sequence(s.name))
+            tracks.push_back(mouthTrackOfSequence(measurer, project, *sequence));
+    hmm->setMeans(prior.personMeans(tracks, kappa));
+}
+
 int runTrain(const CommandLine &args)
 {
     const QString kind = args.value(QStringLiteral("kind"));
@@ -27,6 +53,11 @@ int runTrain(const CommandLine &args)
     const ModelOptions options = dynamicModelOptionsFrom(args);
     if (!isDynamicModelKind(kind.toStdString()))
         throw UsageError(QStringLiteral("--kind must be %1").arg(QString::fromStdString(modelKindIdList())));
+    double priorWeight = 0;
+    const std::shared_ptr<const MouthShapePrior> prior = mouthPriorFrom(args, &priorWeight);
+    if (prior && (kind != QLatin1String("hmm") || !args.isSet(QStringLiteral("project"))))
+        throw UsageError(QStringLiteral("--prior starts HMM-mean's phone means from a project's mouths: --kind hmm "
+                                        "--project DIR"));
     std::string projectAam;
     const std::vector<LabelledSequence> sequences = loadTrainingData(args, &projectAam);
     // The model records the AAM whose parameters it generates: --aam, else the content identifier of
@@ -47,6 +78,8 @@ int runTrain(const CommandLine &args)
     };
     const auto start = std::chrono::steady_clock::now();
     model->train(sequences, feedback);
+    if (prior)
+        startFromPrior(args, *model, sequences, *prior, priorWeight);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     saveModel(*model, out.toStdString(), aam);
 
@@ -119,7 +152,8 @@ const CommandRegistration registration{
                                                "else unspecified)"))},
                 {}}
         .add(trainingDataOptions())
-        .add(dynamicModelOptions()),
+        .add(dynamicModelOptions())
+        .add(mouthPriorOptions()),
     &runTrain};
 
 } // namespace

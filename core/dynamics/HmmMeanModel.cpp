@@ -3,6 +3,7 @@
 #include "dynamics/GaussianMath.h"
 #include "dynamics/JsonEigen.h"
 #include "tasks/Feedback.h"
+#include "util/Error.h"
 
 namespace lipsync {
 
@@ -14,6 +15,15 @@ void HmmMeanModel::fit(const std::vector<LabelledSequence> &sequences, Feedback 
     m_variance = st.variance;
     m_dimension = int(st.mean.cols());
     feedback.setProgress(1.0);
+}
+
+void HmmMeanModel::setMeans(const Eigen::MatrixXd &means)
+{
+    checkTrained();
+    if (means.rows() != m_mean.rows() || means.cols() != m_mean.cols() || !means.allFinite())
+        throw Error("phone means of " + std::to_string(means.rows()) + " x " + std::to_string(means.cols())
+                    + " for a model of " + std::to_string(m_mean.rows()) + " x " + std::to_string(m_mean.cols()));
+    m_mean = means;
 }
 
 LinearRecursion HmmMeanModel::recursion() const

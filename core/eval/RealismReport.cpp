@@ -1,6 +1,9 @@
 #include "eval/RealismReport.h"
 
 #include "aam/AamModel.h"
+#include "animation/MouthMeasures.h"
+#include "animation/MouthTrack.h"
+#include "dynamics/HmmMeanModel.h"
 #include "aam/FaceDetectorPool.h"
 #include "align/FrameLabels.h"
 #include "align/StreamingPhoneRecognizer.h"
@@ -24,6 +27,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <numeric>
 #include <exception>
 #include <limits>
@@ -342,12 +346,15 @@ RealismMethod summariseMethod(const std::vector<std::vector<const RealismSequenc
 }
 
 // Every fold's models, trained on its training folds (or as much of their speech as
-// cv.trainingSpeechSeconds asks: result.trainingSpeechSeconds says how much each got).
-// Every fold's models; `exemplars`, when given, receives each fold's training trajectories.
+// cv.trainingSpeechSeconds asks: result.trainingSpeechSeconds says how much each got), then
+// `adjust`ed with that training set; `exemplars`, when given, receives each fold's training
+// trajectories.
+using FoldAdjustment = std::function<void(const std::vector<LabelledSequence> &, std::vector<std::shared_ptr<DynamicModel>> &)>;
 std::vector<std::vector<std::shared_ptr<DynamicModel>>> trainEveryFold(const std::vector<LabelledSequence> &sequences,
                                                                        const EvaluationOptions &cv,
                                                                        RealismResult &result, Feedback &feedback,
-                                                                       std::vector<std::vector<Eigen::MatrixXd>> *exemplars)
+                                                                       std::vector<std::vector<Eigen::MatrixXd>> *exemplars,
+                                                                       const FoldAdjustment &adjust)
 {
     std::vector<std::vector<std::shared_ptr<DynamicModel>>> models;
     for (int f = 0; f < cv.folds; ++f) {
@@ -364,6 +371,8 @@ std::vector<std::vector<std::shared_ptr<DynamicModel>>> trainEveryFold(const std
         }
         models.push_back(trainFoldModels(trainingSet, cv.kinds, cv.modelOptions, child,
                                          "fold " + std::to_string(f + 1) + "/" + std::to_string(cv.folds) + ": "));
+        if (adjust)
+            adjust(trainingSet, models.back());
     }
     return models;
 }
@@ -403,8 +412,21 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
     const AcousticModel liveAcoustic = live ? AcousticModel::load(options.liveAcousticModel) : AcousticModel();
     const PhoneBigram liveBigram = live ? PhoneBigram::load(options.liveBigram) : PhoneBigram();
     std::vector<std::vector<Eigen::MatrixXd>> trainingFrames;
+    // HMM-mean's phone means started from other speakers' mouths (MouthShapePrior), combined with
+    // the fold's own training frames.
+    FoldAdjustment fromPrior;
+    const MouthMeasurer measurer(aam);
+    if (options.mouthPrior)
+        fromPrior = [&](const std::vector<LabelledSequence> &trainingSet, std::vector<std::shared_ptr<DynamicModel>> &fold) {
+            std::vector<MouthTrack> tracks;
+            for (const LabelledSequence &t : trainingSet)
+                tracks.push_back(mouthTrackOfSequence(measurer, project, *project.sequence(t.name)));
+            for (const std::shared_ptr<DynamicModel> &model : fold)
+                if (auto *hmm = dynamic_cast<HmmMeanModel *>(model.get()))
+                    hmm->setMeans(options.mouthPrior->personMeans(tracks, options.mouthPriorWeight));
+        };
     const std::vector<std::vector<std::shared_ptr<DynamicModel>>> models
-        = trainEveryFold(sequences, cv, result, training, options.exemplars ? &trainingFrames : nullptr);
+        = trainEveryFold(sequences, cv, result, training, options.exemplars ? &trainingFrames : nullptr, fromPrior);
     std::vector<std::unique_ptr<ExemplarSelection>> selections;
     for (const std::vector<Eigen::MatrixXd> &frames : trainingFrames)
         selections.push_back(std::make_unique<ExemplarSelection>(frames, *options.exemplars));

@@ -37,6 +37,7 @@
 // Fold value = mean over the fold's sequences (those where the value is defined); reported as the
 // mean over folds with a 95 % t interval (§6.3).
 #include "aam/AamSynthesizer.h"
+#include "animation/MouthShapePrior.h"
 #include "dynamics/ModelFile.h"
 #include "eval/Evaluation.h"
 #include "eval/RealismMetrics.h"
@@ -47,6 +48,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -81,6 +83,10 @@ struct RealismOptions
     // The x264 quality at which the machine observer's streams are encoded (EncodedAppearance):
     // the export's by default.
     int observerCrf = VideoExportOptions{}.crf;
+    // HMM-mean's phone means started from other speakers' mouths, combined with each fold's own
+    // frames (animation/MouthShapePrior); null: the person's own means alone.
+    std::shared_ptr<const MouthShapePrior> mouthPrior;
+    double mouthPriorWeight = MouthShapePrior::kDefaultKappa;
 };
 
 struct RealismSequenceMethod

@@ -226,6 +226,14 @@ const ModelReference *Project::model(const std::string &kind) const
     return nullptr;
 }
 
+std::string Project::aamPath() const
+{
+    const ModelReference *reference = aam();
+    if (!reference)
+        throw Error("the project has no AAM: build one first (lipsync aam build, or Faces ▸ Build AAM)", manifestPath());
+    return resolve(reference->file);
+}
+
 bool Project::operator==(const Project &other) const
 {
     return name == other.name && sequences == other.sequences && models == other.models

@@ -127,6 +127,8 @@ public:
     const ModelReference *model(const std::string &kind) const;
     // The AAM the project uses (model("aam")): the one whose parameters its features are.
     const ModelReference *aam() const { return model(kAamKind); }
+    // The path of that AAM's file; throws lipsync::Error naming the manifest when there is none.
+    std::string aamPath() const;
     static constexpr const char *kAamKind = "aam";
 
     bool operator==(const Project &other) const; // content, not folder

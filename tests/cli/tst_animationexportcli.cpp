@@ -118,6 +118,36 @@ private slots:
         QVERIFY2(shapes.keys() == QStringList({"A", "B", "X"}), QJsonDocument(shapes).toJson().constData());
     }
 
+    // `export prior` learns a project's mouths; `train --kind hmm --prior-file` starts a person's
+    // phone means from them (here the demo's own, on the demo with a clip left out) and the
+    // shipped GRID s1 prior (`--prior`) is found; other kinds and bad weights are refused.
+    void mouthPriorForTraining()
+    {
+        QTemporaryDir dir;
+        const QString prior = dir.filePath("demo.mouthprior");
+        Run r = runLipsync({"export", "prior", "--project", kDemo, "--out", prior, "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QCOMPARE(parseJsonObject(r.out)["sequences"].toInt(), 10);
+        QVERIFY(parseJsonObject(r.out)["phones"].toInt() > 20);
+        const QString model = dir.filePath("hmm.model");
+        r = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--exclude", "bbaf2n", "--prior-file", prior,
+                        "--prior-weight", "20", "--out", model});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        r = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior", "--out", model});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        verifyOneLineError(runLipsync({"train", "--kind", "brand", "--project", kDemo, "--prior", "--out", model}), 2,
+                           "--kind hmm");
+        verifyOneLineError(runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior", "--prior-weight", "-1",
+                                       "--out", model}),
+                           2, "--prior-weight");
+        verifyOneLineError(runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior-weight", "5", "--out",
+                                       model}),
+                           2, "--prior-weight goes with");
+        verifyOneLineError(runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior-file",
+                                       dir.filePath("none.mouthprior"), "--out", model}),
+                           1, "none.mouthprior");
+    }
+
     void wrongUseIsNamed()
     {
         QTemporaryDir dir;

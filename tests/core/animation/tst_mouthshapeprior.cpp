@@ -1,0 +1,121 @@
+// Mouths learnt on other speakers as a starting point (animation/MouthShapePrior), on the demo:
+// learnt from its tracked, aligned frames, each phone's displacement from the mean shape; with no
+// prior weight a person's phone means are their own means (what HMM-mean trains); with a heavy
+// weight a phone's mean takes the prior's mouth on the person's face (a prior learnt on the same
+// person gives back that phone's own mouth shape); the file round-trips, and a damaged one is named.
+#include "aam/AamModel.h"
+#include "animation/MouthMeasures.h"
+#include "animation/MouthShapePrior.h"
+#include "animation/MouthTrack.h"
+#include "io/AtomicFile.h"
+#include "project/Project.h"
+#include "util/Error.h"
+#include "util/PhoneSet.h"
+
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <memory>
+
+using namespace lipsync;
+
+namespace {
+
+const std::string kDemo = LIPSYNC_SOURCE_DIR "/resources/demo";
+
+// Each phone's own mean of `points` (true) or `features` over the tracks; frames counted.
+Eigen::VectorXd ownMean(const std::vector<MouthTrack> &tracks, int phone, bool points, int *frames)
+{
+    Eigen::VectorXd sum;
+    *frames = 0;
+    for (const MouthTrack &t : tracks)
+        for (int f = 0; f < t.frameCount(); ++f)
+            if (t.phones[size_t(f)] == phone) {
+                const Eigen::VectorXd row = (points ? t.points : t.features).row(f).transpose();
+                sum = *frames == 0 ? row : Eigen::VectorXd(sum + row);
+                ++*frames;
+            }
+    return sum / double(std::max(1, *frames));
+}
+
+} // namespace
+
+class TestMouthShapePrior : public QObject
+{
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        m_project = Project::load(kDemo);
+        m_aam = std::make_unique<AamModel>(AamModel::load(m_project.resolve(m_project.aam()->file)));
+        m_measurer = std::make_unique<MouthMeasurer>(*m_aam);
+        m_tracks = projectMouthTracks(*m_measurer, m_project);
+        m_prior = MouthShapePrior::learn(m_tracks);
+        m_aa = PhoneSet::index("AW"); // "now", in most demo clips
+    }
+
+    void learnsEachPhonesDisplacement()
+    {
+        QCOMPARE(m_prior.meanShape().size(), 46);
+        QCOMPARE(m_prior.displacements().rows(), PhoneSet::kCount);
+        int frames = 0;
+        ownMean(m_tracks, m_aa, true, &frames);
+        QVERIFY(frames > 10);
+        QCOMPARE(int(m_prior.frames()(m_aa)), frames);
+        QVERIFY(m_prior.displacements().row(m_aa).norm() > 0);
+        QCOMPARE(m_prior.displacements().row(PhoneSet::index("ZH")).norm(), 0.0); // never said: no displacement
+        QVERIFY_THROWS_EXCEPTION(Error, MouthShapePrior::learn({}));
+    }
+
+    void withoutWeightAPersonKeepsTheirOwnMeans()
+    {
+        const Eigen::MatrixXd means = m_prior.personMeans(m_tracks, 0.0);
+        int frames = 0;
+        const Eigen::VectorXd own = ownMean(m_tracks, m_aa, false, &frames);
+        QVERIFY(means.row(m_aa).transpose().isApprox(own, 1e-9));
+    }
+
+    void aHeavyWeightGivesThePriorsMouthOnThePersonsFace()
+    {
+        // The prior learnt on this very person: its mouth for /AW/ is /AW/'s own mean shape.
+        const Eigen::MatrixXd means = m_prior.personMeans(m_tracks, 1e9);
+        int frames = 0;
+        const Eigen::VectorXd ownShape = ownMean(m_tracks, m_aa, true, &frames);
+        const Eigen::VectorXd shape = m_measurer->shape(means.row(m_aa).transpose());
+        const double error = (shape - ownShape).norm() / (ownShape - m_prior.meanShape()).norm();
+        QVERIFY2(error < 0.2, qPrintable(QString::number(error)));
+        // And it moves the mouth as the phone does, away from the mean.
+        QVERIFY((shape - m_prior.meanShape()).dot(ownShape - m_prior.meanShape()) > 0);
+    }
+
+    void roundTripsAndNamesADamagedFile()
+    {
+        QTemporaryDir dir;
+        const std::string path = dir.filePath("demo.mouthprior").toStdString();
+        m_prior.save(path);
+        const MouthShapePrior back = MouthShapePrior::load(path);
+        QVERIFY(back.meanShape().isApprox(m_prior.meanShape(), 1e-12));
+        QVERIFY(back.displacements().isApprox(m_prior.displacements(), 1e-12));
+        QCOMPARE(back.frames(), m_prior.frames());
+        const std::string broken = dir.filePath("broken.mouthprior").toStdString();
+        writeFileAtomically(broken, "{\"format\": \"lipsync-mouth-prior\", \"version\": 1, \"meanShape\": [1, 2]}");
+        try {
+            MouthShapePrior::load(broken);
+            QFAIL("no error");
+        } catch (const Error &e) {
+            QVERIFY2(QString::fromStdString(e.what()).contains(QStringLiteral("broken.mouthprior")), e.what());
+            QVERIFY2(QString::fromStdString(e.what()).contains(QStringLiteral("meanShape")), e.what());
+        }
+    }
+
+private:
+    Project m_project;
+    std::unique_ptr<AamModel> m_aam;
+    std::unique_ptr<MouthMeasurer> m_measurer;
+    std::vector<MouthTrack> m_tracks;
+    MouthShapePrior m_prior;
+    int m_aa = -1;
+};
+
+QTEST_MAIN(TestMouthShapePrior)
+#include "tst_mouthshapeprior.moc"
