@@ -377,14 +377,30 @@ std::vector<std::vector<std::shared_ptr<DynamicModel>>> trainEveryFold(const std
     return models;
 }
 
+// HMM-mean's phone means started from other speakers' mouths (options.mouthPrior), combined with
+// each fold's own training frames; none without a prior.
+FoldAdjustment startFromPrior(const Project &project, const AamModel &aam, const RealismOptions &options)
+{
+    if (!options.mouthPrior)
+        return {};
+    auto measurer = std::make_shared<const MouthMeasurer>(aam);
+    return [&project, &options, measurer](const std::vector<LabelledSequence> &trainingSet,
+                                          std::vector<std::shared_ptr<DynamicModel>> &fold) {
+        std::vector<MouthTrack> tracks;
+        for (const LabelledSequence &t : trainingSet)
+            tracks.push_back(mouthTrackOfSequence(*measurer, project, *project.sequence(t.name)));
+        for (const std::shared_ptr<DynamicModel> &model : fold)
+            if (auto *hmm = dynamic_cast<HmmMeanModel *>(model.get()))
+                hmm->setMeans(options.mouthPrior->personMeans(tracks, options.mouthPriorWeight));
+    };
+}
+
 } // namespace
 
 RealismResult evaluateRealism(const Project &project, const RealismOptions &options, Feedback &feedback)
 {
     const EvaluationOptions &cv = options.crossValidation;
-    const ModelReference *aamReference = project.aam();
-    if (!aamReference)
-        throw Error("the project has no AAM (build or import one first)", project.manifestPath());
+    const std::string aamPath = project.aamPath();
     for (const std::string &kind : cv.kinds)
         createDynamicModel(kind); // reject unknown kinds before any work
     FaceDetectorPaths paths;
@@ -398,7 +414,7 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
     std::vector<int> projectIndex;
     const std::vector<LabelledSequence> sequences = loadProjectSequences(project, &projectIndex);
     validateSequences(sequences);
-    const AamModel aam = AamModel::load(project.resolve(aamReference->file));
+    const AamModel aam = AamModel::load(aamPath);
 
     RealismResult result;
     result.folds = cv.folds;
@@ -412,21 +428,9 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
     const AcousticModel liveAcoustic = live ? AcousticModel::load(options.liveAcousticModel) : AcousticModel();
     const PhoneBigram liveBigram = live ? PhoneBigram::load(options.liveBigram) : PhoneBigram();
     std::vector<std::vector<Eigen::MatrixXd>> trainingFrames;
-    // HMM-mean's phone means started from other speakers' mouths (MouthShapePrior), combined with
-    // the fold's own training frames.
-    FoldAdjustment fromPrior;
-    const MouthMeasurer measurer(aam);
-    if (options.mouthPrior)
-        fromPrior = [&](const std::vector<LabelledSequence> &trainingSet, std::vector<std::shared_ptr<DynamicModel>> &fold) {
-            std::vector<MouthTrack> tracks;
-            for (const LabelledSequence &t : trainingSet)
-                tracks.push_back(mouthTrackOfSequence(measurer, project, *project.sequence(t.name)));
-            for (const std::shared_ptr<DynamicModel> &model : fold)
-                if (auto *hmm = dynamic_cast<HmmMeanModel *>(model.get()))
-                    hmm->setMeans(options.mouthPrior->personMeans(tracks, options.mouthPriorWeight));
-        };
     const std::vector<std::vector<std::shared_ptr<DynamicModel>>> models
-        = trainEveryFold(sequences, cv, result, training, options.exemplars ? &trainingFrames : nullptr, fromPrior);
+        = trainEveryFold(sequences, cv, result, training, options.exemplars ? &trainingFrames : nullptr,
+                         startFromPrior(project, aam, options));
     std::vector<std::unique_ptr<ExemplarSelection>> selections;
     for (const std::vector<Eigen::MatrixXd> &frames : trainingFrames)
         selections.push_back(std::make_unique<ExemplarSelection>(frames, *options.exemplars));
