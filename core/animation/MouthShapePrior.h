@@ -5,7 +5,7 @@
 // carried onto their mean shape (scaled to their face size), into their AAM by a linear map from
 // points to parameters fitted on their own frames, and combined with their own per-phone means by
 // MAP: a phone seen in n frames moves from the prior's mean towards its own by n / (n + kappa).
-// The shipped prior (resources/prior/grid-s1.mouthprior) was learnt on GRID s1's 400 clips.
+// The shipped prior (resources/prior/grid-s1.mouthprior) was learnt on 200 GRID s1 clips.
 #include <Eigen/Core>
 
 #include <string>

@@ -77,8 +77,10 @@ void StudioContext::applyLoadedMedia(int row, std::shared_ptr<const SequenceMedi
 {
     m_loadTask = nullptr; // done, not superseded
     m_pendingRow = -1;
-    if (row >= m_document->sequenceCount())
+    if (row >= m_document->sequenceCount()) { // removed while it loaded
+        emit sequenceLoadEnded(false);
         return;
+    }
     setCurrentSequence(row, std::move(media));
     m_playback->setSequence(m_media->mediaPath, m_media->clock);
     setCurrentFrame(0);

@@ -51,7 +51,7 @@ private slots:
         m_measurer = std::make_unique<MouthMeasurer>(*m_aam);
         m_tracks = projectMouthTracks(*m_measurer, m_project);
         m_prior = MouthShapePrior::learn(m_tracks);
-        m_aa = PhoneSet::index("AW"); // "now", in most demo clips
+        m_aw = PhoneSet::index("AW"); // "now", in most demo clips
     }
 
     void learnsEachPhonesDisplacement()
@@ -59,10 +59,10 @@ private slots:
         QCOMPARE(m_prior.meanShape().size(), 46);
         QCOMPARE(m_prior.displacements().rows(), PhoneSet::kCount);
         int frames = 0;
-        ownMean(m_tracks, m_aa, true, &frames);
+        ownMean(m_tracks, m_aw, true, &frames);
         QVERIFY(frames > 10);
-        QCOMPARE(int(m_prior.frames()(m_aa)), frames);
-        QVERIFY(m_prior.displacements().row(m_aa).norm() > 0);
+        QCOMPARE(int(m_prior.frames()(m_aw)), frames);
+        QVERIFY(m_prior.displacements().row(m_aw).norm() > 0);
         QCOMPARE(m_prior.displacements().row(PhoneSet::index("ZH")).norm(), 0.0); // never said: no displacement
         QVERIFY_THROWS_EXCEPTION(Error, MouthShapePrior::learn({}));
     }
@@ -71,8 +71,8 @@ private slots:
     {
         const Eigen::MatrixXd means = m_prior.personMeans(m_tracks, 0.0);
         int frames = 0;
-        const Eigen::VectorXd own = ownMean(m_tracks, m_aa, false, &frames);
-        QVERIFY(means.row(m_aa).transpose().isApprox(own, 1e-9));
+        const Eigen::VectorXd own = ownMean(m_tracks, m_aw, false, &frames);
+        QVERIFY(means.row(m_aw).transpose().isApprox(own, 1e-9));
     }
 
     void aHeavyWeightGivesThePriorsMouthOnThePersonsFace()
@@ -80,8 +80,8 @@ private slots:
         // The prior learnt on this very person: its mouth for /AW/ is /AW/'s own mean shape.
         const Eigen::MatrixXd means = m_prior.personMeans(m_tracks, 1e9);
         int frames = 0;
-        const Eigen::VectorXd ownShape = ownMean(m_tracks, m_aa, true, &frames);
-        const Eigen::VectorXd shape = m_measurer->shape(means.row(m_aa).transpose());
+        const Eigen::VectorXd ownShape = ownMean(m_tracks, m_aw, true, &frames);
+        const Eigen::VectorXd shape = m_measurer->shape(means.row(m_aw).transpose());
         const double error = (shape - ownShape).norm() / (ownShape - m_prior.meanShape()).norm();
         QVERIFY2(error < 0.2, qPrintable(QString::number(error)));
         // And it moves the mouth as the phone does, away from the mean.
@@ -114,7 +114,7 @@ private:
     std::unique_ptr<MouthMeasurer> m_measurer;
     std::vector<MouthTrack> m_tracks;
     MouthShapePrior m_prior;
-    int m_aa = -1;
+    int m_aw = -1;
 };
 
 QTEST_MAIN(TestMouthShapePrior)
