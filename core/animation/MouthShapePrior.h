@@ -4,7 +4,8 @@
 // learnt from a project's tracked, aligned sequences (MouthTrack::points). For a new person it is
 // carried onto their mean shape (scaled to their face size), into their AAM by a linear map from
 // points to parameters fitted on their own frames, and combined with their own per-phone means by
-// MAP: a phone seen in n frames moves from the prior's mean towards its own by n / (n + kappa).
+// MAP: a phone seen in n frames moves from the prior's mean towards its own by n / (n + kappa)
+// (docs/models.md §5.4).
 // The shipped prior (resources/prior/grid-s1.mouthprior) was learnt on 200 GRID s1 clips.
 #include <Eigen/Core>
 
