@@ -217,6 +217,10 @@ private slots:
         m_window->resetLayout();
         QCoreApplication::processEvents();
         QAction *spectrogram = m_window->findChild<TimelinePanel *>()->spectrogramAction();
+        bool inViewMenu = false; // View ▸ Show Spectrogram
+        for (QMenu *menu : m_window->menuBar()->findChildren<QMenu *>())
+            inViewMenu = inViewMenu || menu->actions().contains(spectrogram);
+        QVERIFY(inViewMenu);
         spectrogram->setChecked(true);
         QCoreApplication::processEvents();
         WaveformView *view = m_window->waveformView();

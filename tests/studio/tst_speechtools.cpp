@@ -1,4 +1,5 @@
-// The timeline's speech tools in the studio on the demo project.
+// The timeline's speech tools on the demo project, the panel on a studio context without the main
+// window.
 //  - Project pronunciations: aligning a transcript with a word outside the CMU dictionary lists
 //    it with espeak-ng's guess in the Pronunciations dialog; setting its phones there (validated
 //    against the 41 phones: a bad phone changes nothing) is one undo step, the next alignment uses
@@ -8,7 +9,6 @@
 #include "DemoWindow.h"
 
 #include "align/Aligner.h"
-#include "app/MainWindow.h"
 #include "app/SequenceListModel.h"
 #include "context/PlaybackController.h"
 #include "context/StudioContext.h"
@@ -32,12 +32,12 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
+#include <QVBoxLayout>
 
 #include <algorithm>
 
 using namespace lipsync;
 using namespace lipsync::studio;
-using lipsync::studio::testing::openDemoTimeline;
 
 class TestSpeechTools : public QObject
 {
@@ -48,10 +48,21 @@ public:
 private slots:
     void initTestCase()
     {
-        openDemoTimeline(m_window, m_panel);
+        ErrorReporter::setBatchMode(true);
+        auto *layout = new QVBoxLayout(&m_host);
+        m_panel = new TimelinePanel(&m_host);
+        layout->addWidget(m_panel);
+        m_panel->attach(&m_context);
+        m_context.playback()->setAudioEnabled(false);
+        m_host.resize(1280, 360);
+        m_host.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&m_host));
+        testing::openDemo(m_context);
+        m_context.selectSequence(0);
+        QTRY_VERIFY_WITH_TIMEOUT(m_context.media() != nullptr, 60000);
     }
 
-    void cleanupTestCase() { delete m_window; }
+    void cleanupTestCase() { QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 60000); }
 
     void canonicalInput()
     {
@@ -65,8 +76,8 @@ private slots:
 
     void guessedWordIsListedAndOverridden()
     {
-        ProjectDocument *doc = m_window->context()->document();
-        QCOMPARE(m_window->context()->currentSequence(), 0);
+        ProjectDocument *doc = m_context.document();
+        QCOMPARE(m_context.currentSequence(), 0);
         QVERIFY(doc->project().pronunciations.empty());
         // The demo clip says "bin blue at f two now"; "nowzy" is no English word.
         QVERIFY(doc->requestTranscriptChange(0, QStringLiteral("bin blue at f two nowzy")));
@@ -86,17 +97,17 @@ private slots:
         // Selecting the row fills the editor; a phone outside the set is refused.
         table->selectRow(0);
         QCOMPARE(dialog->wordEdit()->text(), QStringLiteral("nowzy"));
-        const int steps = m_window->context()->undoStack()->index();
+        const int steps = m_context.undoStack()->index();
         dialog->phonesEdit()->setText(QStringLiteral("N AW QQ"));
         QTest::mouseClick(dialog->setButton(), Qt::LeftButton);
         QVERIFY(dialog->messageLabel()->text().contains(QStringLiteral("QQ")));
-        QCOMPARE(m_window->context()->undoStack()->index(), steps);
+        QCOMPARE(m_context.undoStack()->index(), steps);
         QVERIFY(doc->project().pronunciations.empty());
 
         // A valid one: one undo step, shown as the project's.
         dialog->phonesEdit()->setText(QStringLiteral("n aw1"));
         QTest::mouseClick(dialog->setButton(), Qt::LeftButton);
-        QCOMPARE(m_window->context()->undoStack()->index(), steps + 1);
+        QCOMPARE(m_context.undoStack()->index(), steps + 1);
         QCOMPARE(doc->project().pronunciations, (std::map<std::string, std::string>{{"nowzy", "N AW"}}));
         QCOMPARE(table->rowCount(), 1);
         QCOMPARE(table->item(0, 1)->text(), QStringLiteral("N AW"));
@@ -107,18 +118,18 @@ private slots:
         QCOMPARE(lastSpokenPhones(2), (QStringList{"N", "AW"}));
 
         // Undo and redo of the override (the alignment first).
-        m_window->context()->undoStack()->undo();
-        m_window->context()->undoStack()->undo();
+        m_context.undoStack()->undo();
+        m_context.undoStack()->undo();
         QVERIFY(doc->project().pronunciations.empty());
         QCOMPARE(table->item(0, 2)->text(), QStringLiteral("espeak-ng guess"));
-        m_window->context()->undoStack()->redo();
+        m_context.undoStack()->redo();
         QCOMPARE(doc->project().pronunciations.at("nowzy"), std::string("N AW"));
 
         // Remove it again: one more step.
         dialog->wordEdit()->setText(QStringLiteral("nowzy"));
         QTest::mouseClick(dialog->removeButton(), Qt::LeftButton);
         QVERIFY(doc->project().pronunciations.empty());
-        m_window->context()->undoStack()->undo();
+        m_context.undoStack()->undo();
         QVERIFY(!doc->project().pronunciations.empty());
     }
 
@@ -128,8 +139,9 @@ private slots:
     // clip's own words are aligned again.
     void misfitTranscriptIsMarked()
     {
-        ProjectDocument *doc = m_window->context()->document();
-        QAbstractItemModel *list = m_window->sequenceView()->model();
+        ProjectDocument *doc = m_context.document();
+        SequenceListModel model(m_context.document()); // what the sequence list shows
+        QAbstractItemModel *list = &model;
         const QModelIndex cell = list->index(0, SequenceListModel::TranscriptColumn);
         auto marked = [&] { return !list->data(cell, Qt::DecorationRole).value<QIcon>().isNull(); };
         // The clip's own words fit.
@@ -143,9 +155,9 @@ private slots:
         const QString other = QString::fromStdString(doc->sequence(1).transcript);
         QVERIFY(!other.isEmpty() && other != QStringLiteral("bin blue at f two now"));
         QVERIFY(doc->requestTranscriptChange(0, other));
-        const int steps = m_window->context()->undoStack()->index();
+        const int steps = m_context.undoStack()->index();
         align();
-        QCOMPARE(m_window->context()->undoStack()->index(), steps + 1); // tiers and mark: one step
+        QCOMPARE(m_context.undoStack()->index(), steps + 1); // tiers and mark: one step
         QVERIFY(doc->sequence(0).transcriptFit);
         const double swapped = *doc->sequence(0).transcriptFit;
         qInfo("transcript fit: own words %.2f, another clip's %.2f nats per frame", own, swapped);
@@ -161,10 +173,10 @@ private slots:
         }());
         QCOMPARE(saved.sequences[0].transcriptFit, doc->sequence(0).transcriptFit);
         // Undo takes the alignment and its mark back together.
-        m_window->context()->undoStack()->undo();
+        m_context.undoStack()->undo();
         QCOMPARE(*doc->sequence(0).transcriptFit, own);
         QVERIFY(!marked());
-        m_window->context()->undoStack()->redo();
+        m_context.undoStack()->redo();
         QVERIFY(marked());
         // The right words aligned again: no mark.
         QVERIFY(doc->requestTranscriptChange(0, QStringLiteral("bin blue at f two now")));
@@ -174,13 +186,8 @@ private slots:
 
     void spectrogramFromTheViewMenu()
     {
-        WaveformView *view = m_window->waveformView();
-        QAction *toggle = m_panel->spectrogramAction();
-        // It is in the View menu.
-        bool inMenu = false;
-        for (QMenu *menu : m_window->menuBar()->findChildren<QMenu *>())
-            inMenu = inMenu || menu->actions().contains(toggle);
-        QVERIFY(inMenu);
+        WaveformView *view = m_panel->waveform();
+        QAction *toggle = m_panel->spectrogramAction(); // the View menu's (tst_mainwindow)
         toggle->setChecked(false);
         QCOMPARE(view->laneRect(WaveformView::Lane::Spectrogram).height(), 0);
         const int waveHeight = view->laneRect(WaveformView::Lane::Waveform).height();
@@ -214,19 +221,20 @@ private:
     {
         QVERIFY(m_panel->alignAction()->isEnabled());
         m_panel->alignAction()->trigger();
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 30000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 30000);
     }
 
     QStringList lastSpokenPhones(int n) const
     {
         QStringList phones;
-        for (const Interval &p : m_window->context()->document()->sequence(0).phones.intervals)
+        for (const Interval &p : m_context.document()->sequence(0).phones.intervals)
             if (p.label != "sil")
                 phones << QString::fromStdString(p.label);
         return phones.mid(phones.size() - n);
     }
 
-    MainWindow *m_window = nullptr;
+    StudioContext m_context;
+    QWidget m_host; // the timeline dock's place
     TimelinePanel *m_panel = nullptr;
 };
 
