@@ -4,14 +4,13 @@
 // undo step that restores the tiers exactly (redo re-applies); split (S), merge (M), relabel
 // (double-click, the phone combo, validation), insert silence (I), Tab and Space in the view;
 // re-aligning a selection keeps the edited boundary; "Align all" is one undo step and canceling
-// it changes nothing; a transcript that cannot fit is reported naming the clip.
+// it changes nothing; a transcript that cannot fit is reported naming the clip. The panel on a
+// studio context, without the main window.
 #include "DemoWindow.h"
 
 #include "align/Lexicon.h"
 #include "align/SphinxAligner.h"
 #include "app/DemoProject.h"
-#include "app/MainWindow.h"
-#include "app/ProjectFiles.h"
 #include "context/ErrorReporter.h"
 #include "context/ModelStore.h"
 #include "context/PlaybackController.h"
@@ -34,13 +33,13 @@
 #include <QTest>
 #include <QTimer>
 #include <QUndoStack>
+#include <QVBoxLayout>
 
 #include <algorithm>
 #include <cmath>
 
 using namespace lipsync;
 using namespace lipsync::studio;
-using lipsync::studio::testing::openDemoTimeline;
 
 namespace {
 
@@ -60,13 +59,25 @@ public:
 private slots:
     void initTestCase()
     {
-        openDemoTimeline(m_window, m_panel);
-        if (QTest::currentTestFailed())
-            return;
-        m_view = m_window->waveformView();
+        QCoreApplication::setOrganizationName(QStringLiteral("lipsync-tests"));
+        ErrorReporter::setBatchMode(true);
+        auto *layout = new QVBoxLayout(&m_host);
+        m_panel = new TimelinePanel(&m_host);
+        layout->addWidget(m_panel);
+        m_panel->attach(&m_context);
+        m_context.playback()->setAudioEnabled(false);
+        m_host.resize(1280, 360);
+        m_host.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&m_host));
+        m_host.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&m_host));
+        testing::openDemo(m_context);
+        m_context.selectSequence(0);
+        QTRY_VERIFY_WITH_TIMEOUT(m_context.media() != nullptr, 60000);
+        m_view = m_panel->waveform();
     }
 
-    void cleanupTestCase() { delete m_window; }
+    void cleanupTestCase() { QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 60000); }
 
     // The panel needs a context, not a window: on its own it shows the context's current
     // sequence and turns an edit into one undo step of the context's stack.
@@ -153,9 +164,9 @@ private slots:
 
     void alignSequenceFillsTiers()
     {
-        QCOMPARE(m_window->context()->currentSequence(), 0);
+        QCOMPARE(m_context.currentSequence(), 0);
         // Start from a sequence without tiers (the demo ships its alignment).
-        QVERIFY(m_window->context()->document()->requestTiersChange(0, Tier{"words", {}}, Tier{"phones", {}}, QStringLiteral("clear")));
+        QVERIFY(m_context.document()->requestTiersChange(0, Tier{"words", {}}, Tier{"phones", {}}, QStringLiteral("clear")));
         const TierPair before = tiers();
         QVERIFY(before.phones.isEmpty());
         QVERIFY(m_view->phones().isEmpty());
@@ -164,11 +175,11 @@ private slots:
         QElapsedTimer timer;
         timer.start();
         m_panel->alignAction()->trigger();
-        QCOMPARE(m_window->context()->taskRunner()->runningCount(), 1);
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 30000);
+        QCOMPARE(m_context.taskRunner()->runningCount(), 1);
+        QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 30000);
         qInfo("aligning one clip took %lld ms", timer.elapsed());
 
-        const Sequence &s = m_window->context()->document()->sequence(0);
+        const Sequence &s = m_context.document()->sequence(0);
         QVERIFY(s.phones.intervals.size() > 10);
         QVERIFY(!(s.phones == before.phones));
         for (const Interval &p : s.phones.intervals)
@@ -181,17 +192,17 @@ private slots:
         for (const std::string &w : Lexicon::splitWords(s.transcript))
             transcript << QString::fromStdString(w).toLower();
         QCOMPARE(spoken, transcript);
-        QCOMPARE(m_window->context()->undoStack()->index(), 2);
+        QCOMPARE(m_context.undoStack()->index(), 2);
         // The view shows them, with the per-video-frame labels (75 frames at 25 fps).
         QVERIFY(m_view->phones() == s.phones);
         QCOMPARE(int(m_view->frameLabels().size()), 75);
         QCOMPARE(m_view->frameLabels().front(), std::string("sil"));
         // Undo takes the alignment back, redo brings it again.
         const TierPair aligned = tiers();
-        m_window->context()->undoStack()->undo();
+        m_context.undoStack()->undo();
         QVERIFY(tiers() == before);
         QVERIFY(m_view->phones() == before.phones);
-        m_window->context()->undoStack()->redo();
+        m_context.undoStack()->redo();
         QVERIFY(tiers() == aligned);
         QCOMPARE(int(m_view->frameLabels().size()), 75);
     }
@@ -220,7 +231,7 @@ private slots:
         tieredit::boundaryLimits(before, TierKind::Phones, b, &lower, &upper);
         QVERIFY(expected > lower && expected < upper);
 
-        const int steps = m_window->context()->undoStack()->index();
+        const int steps = m_context.undoStack()->index();
         QTest::mousePress(m_view, Qt::LeftButton, {}, QPoint(x0, y));
         for (int x = x0 + 1; x <= x0 + dx; ++x)
             QTest::mouseMove(m_view, QPoint(x, y));
@@ -234,18 +245,18 @@ private slots:
         QVERIFY(after.phones.intervals[size_t(b)].userEdited);
         QVERIFY(after.phones.intervals[size_t(b - 1)].userEdited);
         QVERIFY(after.words == before.words);
-        QCOMPARE(m_window->context()->undoStack()->index(), steps + 1); // the whole drag: one step
+        QCOMPARE(m_context.undoStack()->index(), steps + 1); // the whole drag: one step
         QVERIFY(m_view->phones() == after.phones);          // the view follows
 
-        m_window->context()->undoStack()->undo();
+        m_context.undoStack()->undo();
         QVERIFY(tiers() == before);
         QVERIFY(m_view->phones() == before.phones);
-        m_window->context()->undoStack()->redo();
+        m_context.undoStack()->redo();
         QVERIFY(tiers() == after);
         // For looking at: the window with the aligned, edited tiers.
         const QString shots = qEnvironmentVariable("LIPSYNC_TEST_SCREENSHOTS");
         if (!shots.isEmpty()) {
-            m_window->grab().save(shots + QStringLiteral("/timeline-window.png"));
+            m_host.grab().save(shots + QStringLiteral("/timeline-window.png"));
             m_view->grab().save(shots + QStringLiteral("/timeline-view.png"));
             m_view->selectInterval(TierKind::Phones, b);
             m_view->zoomBy(3.0, m_view->xAt(expected));
@@ -269,7 +280,7 @@ private slots:
         const double moved = tiers().phones.intervals[size_t(b)].start;
         QVERIFY2(near(moved, upper), qPrintable(QStringLiteral("%1 vs limit %2").arg(moved).arg(upper)));
         QVERIFY(tiers().phones.intervals[size_t(b)].end - moved >= tieredit::kSnap - 1e-9);
-        m_window->context()->undoStack()->undo();
+        m_context.undoStack()->undo();
         QVERIFY(tiers() == before);
     }
 
@@ -306,7 +317,7 @@ private slots:
         QVERIFY(near(after.phones.intervals[size_t(p)].start, expected));
         QVERIFY(near(after.phones.intervals[size_t(p - 1)].end, expected));
         QVERIFY(after.words.intervals[size_t(w)].userEdited && after.phones.intervals[size_t(p)].userEdited);
-        m_window->context()->undoStack()->undo();
+        m_context.undoStack()->undo();
         QVERIFY(tiers() == before);
     }
 
@@ -315,7 +326,7 @@ private slots:
     void mergeAcrossAWordAsks()
     {
         const TierPair before = tiers();
-        const int steps = m_window->context()->undoStack()->index();
+        const int steps = m_context.undoStack()->index();
         int p = -1;
         for (int k = 0; k + 1 < int(before.phones.intervals.size()) && p < 0; ++k)
             if (tieredit::wordBetweenPhones(before, k) >= 0)
@@ -330,7 +341,12 @@ private slots:
         const std::string joined = before.words.intervals[size_t(w)].label + ' ' + before.words.intervals[size_t(w + 1)].label;
         auto answer = [this](bool merge, QString *text) {
             QTimer::singleShot(0, this, [merge, text] {
-                auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+                // The box shown (over a bare widget, with no window manager under Xvfb, it need
+                // not become the active modal widget).
+                QMessageBox *box = nullptr;
+                for (QWidget *w : QApplication::topLevelWidgets())
+                    if (auto *b = qobject_cast<QMessageBox *>(w); b && b->isVisible())
+                        box = b;
                 QVERIFY(box);
                 QVERIFY(QTest::qWaitForWindowExposed(box)); // Enter clicks a visible default button only
                 *text = box->text();
@@ -345,7 +361,7 @@ private slots:
         };
         // The box takes the focus while it is open: the view gets it back before each key.
         auto focusView = [this] {
-            m_window->activateWindow();
+            m_host.activateWindow();
             m_view->setFocus();
             QTRY_VERIFY(m_view->hasFocus());
         };
@@ -356,7 +372,7 @@ private slots:
         QTest::keyClick(m_view, Qt::Key_M);
         QVERIFY2(asked.contains(QString::fromStdString(before.words.intervals[size_t(w)].label)), qPrintable(asked));
         QVERIFY(tiers() == before);
-        QCOMPARE(m_window->context()->undoStack()->index(), steps);
+        QCOMPARE(m_context.undoStack()->index(), steps);
 
         m_view->selectInterval(TierKind::Phones, p);
         focusView();
@@ -367,8 +383,8 @@ private slots:
         QCOMPARE(after.words.intervals.size(), before.words.intervals.size() - 1);
         QCOMPARE(after.words.intervals[size_t(w)].label, joined);
         QVERIFY(near(after.words.intervals[size_t(w)].end, before.words.intervals[size_t(w + 1)].end));
-        QCOMPARE(m_window->context()->undoStack()->index(), steps + 1);
-        m_window->context()->undoStack()->undo();
+        QCOMPARE(m_context.undoStack()->index(), steps + 1);
+        m_context.undoStack()->undo();
         QVERIFY(tiers() == before);
         focusView();
     }
@@ -376,7 +392,7 @@ private slots:
     void splitMergeRelabelWithKeysAndUndo()
     {
         const TierPair before = tiers();
-        const int steps = m_window->context()->undoStack()->index();
+        const int steps = m_context.undoStack()->index();
         // Click the middle of a long phone: selects it and puts the cursor there.
         int i = 0;
         for (int k = 1; k < int(before.phones.intervals.size()); ++k)
@@ -400,7 +416,7 @@ private slots:
         QVERIFY(near(now.phones.intervals[size_t(i)].end, cut));
         QCOMPARE(now.phones.intervals[size_t(i + 1)].label, iv.label);
         QVERIFY(now.phones.intervals[size_t(i + 1)].userEdited);
-        QCOMPARE(m_window->context()->undoStack()->index(), steps + 1);
+        QCOMPARE(m_context.undoStack()->index(), steps + 1);
 
         // M: merge the selected interval with the next (the two halves again).
         m_view->selectInterval(TierKind::Phones, i);
@@ -408,10 +424,10 @@ private slots:
         now = tiers();
         QCOMPARE(now.phones.intervals.size(), before.phones.intervals.size());
         QVERIFY(near(now.phones.intervals[size_t(i)].end, iv.end));
-        QCOMPARE(m_window->context()->undoStack()->index(), steps + 2);
-        m_window->context()->undoStack()->undo();
+        QCOMPARE(m_context.undoStack()->index(), steps + 2);
+        m_context.undoStack()->undo();
         QCOMPARE(tiers().phones.intervals.size(), before.phones.intervals.size() + 1);
-        m_window->context()->undoStack()->undo();
+        m_context.undoStack()->undo();
         QVERIFY(tiers() == before);
 
         // Double-click: the phone combo; an unknown phone is refused, a valid one relabels.
@@ -431,7 +447,7 @@ private slots:
         now = tiers();
         QCOMPARE(now.phones.intervals[size_t(i)].label, target);
         QVERIFY(now.phones.intervals[size_t(i)].userEdited);
-        m_window->context()->undoStack()->undo();
+        m_context.undoStack()->undo();
         QVERIFY(tiers() == before);
 
         // Enter on the words tier: a line edit; one word only.
@@ -450,7 +466,7 @@ private slots:
         QTest::keyClick(line, Qt::Key_Return);
         QTRY_VERIFY(!m_panel->relabelEditor());
         QCOMPARE(tiers().words.intervals[size_t(w)].label, std::string("please"));
-        m_window->context()->undoStack()->undo();
+        m_context.undoStack()->undo();
         QVERIFY(tiers() == before);
     }
 
@@ -490,7 +506,7 @@ private slots:
         // Still contiguous.
         for (std::size_t j = 1; j < phones.intervals.size(); ++j)
             QVERIFY(near(phones.intervals[j].start, phones.intervals[j - 1].end));
-        m_window->context()->undoStack()->undo();
+        m_context.undoStack()->undo();
         QVERIFY(tiers() == before);
     }
 
@@ -510,13 +526,13 @@ private slots:
         const Interval iv = tiers().phones.intervals[1];
         QTest::keyClick(m_view, Qt::Key_Space);
         QVERIFY(m_panel->player()->isPlaying());
-        QCOMPARE(m_panel->player(), m_window->context()->playback()); // one player
-        QVERIFY(near(m_window->context()->playback()->rangeStart(), iv.start));
-        QVERIFY(near(m_window->context()->playback()->rangeEnd(), iv.end));
+        QCOMPARE(m_panel->player(), m_context.playback()); // one player
+        QVERIFY(near(m_context.playback()->rangeStart(), iv.start));
+        QVERIFY(near(m_context.playback()->rangeEnd(), iv.end));
         QTRY_VERIFY_WITH_TIMEOUT(!m_panel->player()->isPlaying(), 5000);
         QVERIFY(near(m_panel->player()->position(), iv.end));
         QVERIFY(near(m_view->cursorTime(), iv.end));
-        QCOMPARE(m_window->context()->currentFrame(), int(iv.end * 25.0));
+        QCOMPARE(m_context.currentFrame(), int(iv.end * 25.0));
     }
 
     void realignKeepsEditedWords()
@@ -532,25 +548,25 @@ private slots:
         QVERIFY(b > 0);
         TierPair edited = aligned;
         QVERIFY(tieredit::moveBoundary(edited, TierKind::Phones, b, aligned.phones.intervals[size_t(b)].start + 0.02));
-        QVERIFY(m_window->context()->document()->requestTiersChange(0, edited.words, edited.phones, QStringLiteral("edit")));
+        QVERIFY(m_context.document()->requestTiersChange(0, edited.words, edited.phones, QStringLiteral("edit")));
         const double moved = edited.phones.intervals[size_t(b)].start;
         m_view->setRange(0.0, m_view->duration());
         QVERIFY(m_panel->realignAction()->isEnabled());
-        const int steps = m_window->context()->undoStack()->index();
+        const int steps = m_context.undoStack()->index();
         m_panel->realignAction()->trigger();
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 30000);
-        QVERIFY(m_window->context()->undoStack()->index() <= steps + 1); // one step (none if nothing moved)
+        QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 30000);
+        QVERIFY(m_context.undoStack()->index() <= steps + 1); // one step (none if nothing moved)
         const TierPair now = tiers();
         QVERIFY(tieredit::boundaryNear(now.phones, moved, 1e-6) > 0); // the edited boundary stays
         QStringList spoken;
         for (const Interval &w : now.words.intervals)
             if (!PhoneSet::isSilence(w.label))
                 spoken << QString::fromStdString(w.label);
-        QCOMPARE(spoken.size(), int(Lexicon::splitWords(m_window->context()->document()->sequence(0).transcript).size()));
+        QCOMPARE(spoken.size(), int(Lexicon::splitWords(m_context.document()->sequence(0).transcript).size()));
         for (std::size_t j = 1; j < now.phones.intervals.size(); ++j)
             QVERIFY(near(now.phones.intervals[j].start, now.phones.intervals[j - 1].end, 1e-6));
-        if (m_window->context()->undoStack()->index() == steps + 1) {
-            m_window->context()->undoStack()->undo();
+        if (m_context.undoStack()->index() == steps + 1) {
+            m_context.undoStack()->undo();
             QVERIFY(tiers() == edited);
         }
     }
@@ -559,7 +575,7 @@ private slots:
     // the transcript changed since the edit are they replaced (after asking; batch mode: yes).
     void alignKeepsEditedBoundaries()
     {
-        ProjectDocument *doc = m_window->context()->document();
+        ProjectDocument *doc = m_context.document();
         const TierPair aligned = tiers();
         // An edited phone boundary inside the longest word.
         const Interval &word = *std::max_element(aligned.words.intervals.begin(), aligned.words.intervals.end(),
@@ -583,7 +599,7 @@ private slots:
 
         for (QAction *align : {m_panel->alignAction(), m_panel->alignAllAction()}) {
             align->trigger();
-            QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 60000);
+            QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 60000);
             const TierPair now = tiers();
             const int at = now.phones.indexAt((editedPhone.start + editedPhone.end) / 2);
             QVERIFY2(at >= 0 && now.phones.intervals[size_t(at)] == editedPhone, qPrintable(align->text()));
@@ -593,16 +609,16 @@ private slots:
         const QString transcript = QString::fromStdString(doc->sequence(0).transcript);
         QVERIFY(doc->requestTranscriptChange(0, transcript + QStringLiteral(" please")));
         m_panel->alignAction()->trigger();
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 60000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 60000);
         for (const Interval &p : tiers().phones.intervals)
             QVERIFY(!p.userEdited);
         QCOMPARE(tiers().words.intervals.back().label == "please"
                      || tiers().words.intervals[tiers().words.intervals.size() - 2].label == "please",
                  true);
         QVERIFY(doc->requestTranscriptChange(0, transcript));
-        m_window->context()->undoStack()->undo(); // the transcript
-        m_window->context()->undoStack()->undo(); // the alignment
-        m_window->context()->undoStack()->undo(); // the transcript change
+        m_context.undoStack()->undo(); // the transcript
+        m_context.undoStack()->undo(); // the alignment
+        m_context.undoStack()->undo(); // the transcript change
         QVERIFY(doc->requestTiersChange(0, aligned.words, aligned.phones, QStringLiteral("restore")));
     }
 
@@ -619,12 +635,12 @@ private slots:
         QVERIFY(!m_panel->builtInAlignerAction()->isChecked());
         QCOMPARE(QSettings().value(QStringLiteral("timeline/aligner")).toString(), QStringLiteral("sphinx"));
         QVERIFY(m_panel->adaptToSpeakerAction()->isEnabled());
-        const int steps = m_window->context()->undoStack()->index();
-        QVERIFY(m_window->context()->document()->requestTiersChange(0, Tier{"words", {}}, Tier{"phones", {}}, QStringLiteral("clear")));
+        const int steps = m_context.undoStack()->index();
+        QVERIFY(m_context.document()->requestTiersChange(0, Tier{"words", {}}, Tier{"phones", {}}, QStringLiteral("clear")));
         m_panel->alignAction()->trigger();
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 30000);
-        QCOMPARE(m_window->context()->undoStack()->index(), steps + 2);
-        const Sequence &s = m_window->context()->document()->sequence(0);
+        QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 30000);
+        QCOMPARE(m_context.undoStack()->index(), steps + 2);
+        const Sequence &s = m_context.document()->sequence(0);
         QStringList spoken;
         for (const Interval &w : s.words.intervals)
             if (!PhoneSet::isSilence(w.label))
@@ -632,19 +648,19 @@ private slots:
         QCOMPARE(spoken.size(), int(Lexicon::splitWords(s.transcript).size()));
         QVERIFY(s.phones.intervals.size() > 10);
         QVERIFY(m_view->phones() == s.phones);
-        m_window->context()->undoStack()->undo();
-        m_window->context()->undoStack()->undo();
+        m_context.undoStack()->undo();
+        m_context.undoStack()->undo();
         // Adapted to the speaker: the same words, through the same task and undo.
         m_panel->adaptToSpeakerAction()->setChecked(true);
         m_panel->alignAction()->trigger();
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 30000);
-        QCOMPARE(m_window->context()->undoStack()->index(), steps + 1);
+        QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 30000);
+        QCOMPARE(m_context.undoStack()->index(), steps + 1);
         QStringList adapted;
-        for (const Interval &w : m_window->context()->document()->sequence(0).words.intervals)
+        for (const Interval &w : m_context.document()->sequence(0).words.intervals)
             if (!PhoneSet::isSilence(w.label))
                 adapted << QString::fromStdString(w.label).toLower();
         QCOMPARE(adapted, spoken);
-        m_window->context()->undoStack()->undo();
+        m_context.undoStack()->undo();
         m_panel->adaptToSpeakerAction()->setChecked(false);
         m_panel->builtInAlignerAction()->trigger();
         QVERIFY(m_panel->adaptToSpeakerAction()->isEnabled());
@@ -653,25 +669,25 @@ private slots:
 
     void alignAllIsOneStepAndCancelChangesNothing()
     {
-        ProjectDocument *doc = m_window->context()->document();
+        ProjectDocument *doc = m_context.document();
         std::vector<TierPair> before;
         for (int row = 0; row < doc->sequenceCount(); ++row)
             before.push_back(TierPair{doc->sequence(row).words, doc->sequence(row).phones});
-        const int steps = m_window->context()->undoStack()->index();
+        const int steps = m_context.undoStack()->index();
 
         // Canceled at once: nothing reaches the document.
         m_panel->alignAllAction()->trigger();
-        QCOMPARE(m_window->context()->taskRunner()->runningCount(), 1);
-        m_window->context()->taskRunner()->cancelAll();
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 30000);
-        QCOMPARE(m_window->context()->undoStack()->index(), steps);
+        QCOMPARE(m_context.taskRunner()->runningCount(), 1);
+        m_context.taskRunner()->cancelAll();
+        QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 30000);
+        QCOMPARE(m_context.undoStack()->index(), steps);
         for (int row = 0; row < doc->sequenceCount(); ++row)
             QVERIFY(TierPair(TierPair{doc->sequence(row).words, doc->sequence(row).phones}) == before[size_t(row)]);
 
         // Run to the end: every sequence aligned to its transcript, one undo step for all.
         m_panel->alignAllAction()->trigger();
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 60000);
-        QCOMPARE(m_window->context()->undoStack()->index(), steps + 1);
+        QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 60000);
+        QCOMPARE(m_context.undoStack()->index(), steps + 1);
         for (int row = 0; row < doc->sequenceCount(); ++row) {
             const Sequence &s = doc->sequence(row);
             QStringList spoken;
@@ -681,7 +697,7 @@ private slots:
             QCOMPARE(spoken.size(), int(Lexicon::splitWords(s.transcript).size()));
             QVERIFY(!s.phones.isEmpty());
         }
-        m_window->context()->undoStack()->undo();
+        m_context.undoStack()->undo();
         for (int row = 0; row < doc->sequenceCount(); ++row)
             QVERIFY(TierPair(TierPair{doc->sequence(row).words, doc->sequence(row).phones}) == before[size_t(row)]);
     }
@@ -689,31 +705,32 @@ private slots:
     void failedAlignmentIsReportedAndChangesNothing()
     {
         // 300 words cannot fit 3 s of audio: the task fails, the error names the clip and why.
-        ProjectDocument *doc = m_window->context()->document();
+        ProjectDocument *doc = m_context.document();
         QStringList words;
         for (int i = 0; i < 150; ++i)
             words << QStringLiteral("bin blue");
         QVERIFY(doc->requestTranscriptChange(0, words.join(QLatin1Char(' '))));
         const TierPair before = tiers();
-        const int steps = m_window->context()->undoStack()->index();
+        const int steps = m_context.undoStack()->index();
         m_panel->alignAction()->trigger();
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->context()->taskRunner()->runningCount(), 0, 30000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 30000);
         const QString message = ErrorReporter::lastMessage();
         QVERIFY2(message.contains(QStringLiteral("bbaf2n.mpg")) && message.contains(QStringLiteral("does not fit")),
                  qPrintable(message));
         QVERIFY(tiers() == before);
-        QCOMPARE(m_window->context()->undoStack()->index(), steps);
-        m_window->context()->undoStack()->undo(); // the transcript
+        QCOMPARE(m_context.undoStack()->index(), steps);
+        m_context.undoStack()->undo(); // the transcript
     }
 
 private:
     TierPair tiers() const
     {
-        const Sequence &s = m_window->context()->document()->sequence(0);
+        const Sequence &s = m_context.document()->sequence(0);
         return TierPair{s.words, s.phones};
     }
 
-    MainWindow *m_window = nullptr;
+    StudioContext m_context;
+    QWidget m_host; // the timeline dock's place
     TimelinePanel *m_panel = nullptr;
     WaveformView *m_view = nullptr;
 };
