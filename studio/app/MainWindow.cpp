@@ -453,7 +453,12 @@ void MainWindow::onSequenceLoaded()
                                     : frames > 0      ? QString()
                                                       : tr("The video has no frames"));
     m_details->showSequence(s, shown->mediaPath, *shown);
-    showFrame(m_context->currentFrame());
+    // The frame is shown already (currentFrameChanged comes first); the transport's range and the
+    // chart's series came after it.
+    if (const int frame = m_context->currentFrame(); frame >= 0 && frame < frames) {
+        m_transport->setFrame(frame);
+        m_chart->setCursor(shown->clock.centre(frame));
+    }
     updateTitle();
     statusBar()->showMessage(tr("%1: %n frames at %2 fps", "", frames)
                                  .arg(shown->sequenceId, QLocale().toString(shown->frameRate, 'f', 2)),

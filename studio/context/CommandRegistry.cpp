@@ -20,7 +20,7 @@ CommandRegistry::CommandRegistry(StudioContext *context)
     connect(context, &StudioContext::sequenceRequested, this, &CommandRegistry::revalidate);
     connect(context, &StudioContext::sequenceLoadEnded, this, &CommandRegistry::revalidate);
     connect(context, &StudioContext::sequenceLoaded, this, &CommandRegistry::revalidate);
-    connect(context, &StudioContext::currentFrameChanged, this, &CommandRegistry::revalidate);
+    connect(context, &StudioContext::currentFrameChanged, this, [this] { validate(true); });
     connect(context, &StudioContext::shownSpeechChanged, this, &CommandRegistry::revalidate);
     connect(document, &ProjectDocument::documentReset, this, &CommandRegistry::revalidate);
     connect(document, &ProjectDocument::sequencesAdded, this, &CommandRegistry::revalidate);
@@ -117,10 +117,15 @@ void CommandRegistry::setShortcutWidget(QWidget *widget)
 
 void CommandRegistry::revalidate()
 {
+    validate(false);
+}
+
+void CommandRegistry::validate(bool frameOnly)
+{
     if (!m_context)
         return;
     for (auto &[name, entry] : m_commands)
-        if (entry.command.validate)
+        if (entry.command.validate && (entry.command.followsFrame || !frameOnly))
             entry.action->setEnabled(entry.command.validate(*m_context));
 }
 

@@ -2,8 +2,9 @@
 // The studio's commands by name (StudioCommand), each with the one QAction that menus, toolbars
 // and shortcuts share; the context owns it (StudioContext::commands()), every panel and menu adds
 // its commands to it. The actions' enabled state is their command's validate() on the context,
-// re-read whenever the context or its document changes (revalidate()), so no panel computes a
-// command's state itself. The keys work window-wide once setShortcutWidget() names the window.
+// re-read whenever the context or its document changes (revalidate(); as the frame moves, only
+// the commands that follow it), so no panel computes a command's state itself. The keys work
+// window-wide once setShortcutWidget() names the window.
 #include "context/StudioCommand.h"
 
 #include <QObject>
@@ -46,6 +47,8 @@ private:
         bool adopted = false; // the action is a panel's: it runs what the panel connected
     };
     void forgetWith(QObject *owner, const QString &name);
+    // Every command's action enabled as it validates; `frameOnly`: those that follow the frame.
+    void validate(bool frameOnly);
     // Cleared as the context dies: its undo stack, deleted after it, still signals (cleanChanged).
     QPointer<StudioContext> m_context;
     QPointer<QWidget> m_shortcutWidget;

@@ -37,11 +37,11 @@ StudioActions::StudioActions(QWidget *owner, StudioContext *context)
     previousFrame = registry->add({QStringLiteral("frame/previous"), tr("Previous Frame"), {Qt::Key_Left},
                                    QStyle::SP_MediaSeekBackward,
                                    [](const StudioContext &c) { return shownFrames(c) > 0 && c.currentFrame() > 0; },
-                                   [](StudioContext &c) { c.setCurrentFrame(c.currentFrame() - 1); }});
+                                   [](StudioContext &c) { c.setCurrentFrame(c.currentFrame() - 1); }, true});
     nextFrame = registry->add({QStringLiteral("frame/next"), tr("Next Frame"), {Qt::Key_Right},
                                QStyle::SP_MediaSeekForward,
                                [](const StudioContext &c) { return c.currentFrame() + 1 < shownFrames(c); },
-                               [](StudioContext &c) { c.setCurrentFrame(c.currentFrame() + 1); }});
+                               [](StudioContext &c) { c.setCurrentFrame(c.currentFrame() + 1); }, true});
     firstFrame = registry->add({QStringLiteral("frame/first"), tr("First Frame"), {Qt::Key_Home},
                                 QStyle::SP_MediaSkipBackward, [](const StudioContext &c) { return shownFrames(c) > 0; },
                                 [](StudioContext &c) { c.setCurrentFrame(0); }});

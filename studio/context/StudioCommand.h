@@ -22,6 +22,9 @@ struct StudioCommand
     QStyle::StandardPixmap icon = QStyle::SP_CustomBase; // SP_CustomBase: none
     std::function<bool(const StudioContext &)> validate; // null: always possible
     std::function<void(StudioContext &)> run;
+    // validate() reads the current frame: re-read as the frame moves (the others are not, so that
+    // playback does not validate every command 30 times a second).
+    bool followsFrame = false;
 };
 
 } // namespace lipsync::studio
