@@ -10,8 +10,8 @@
 #include "align/AlignerTrainer.h"
 #include "align/AlignerUtterance.h"
 #include "align/BoundaryCorrection.h"
+#include "align/ForcedAligner.h"
 #include "align/Lexicon.h"
-#include "align/MonophoneAligner.h"
 #include "align/ProjectAligner.h"
 #include "align/PronunciationDictionary.h"
 #include "tasks/Feedback.h"
@@ -23,12 +23,11 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QTemporaryDir>
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <memory>
+#include <numeric>
 #include <random>
 
 namespace lipsync::studio {
@@ -63,38 +62,34 @@ AcousticModel trainAndCalibrate(const std::vector<TrainingUtterance> &utterances
     return model;
 }
 
-// A model trained on four fifths of `utterances` (a seeded shuffle) aligns the other fifth's
-// recordings; their word boundaries are scored against the project's timings.
-void scoreHeldOut(const Project &project, const std::vector<TrainingUtterance> &utterances, const Lexicon &lexicon,
-                  Feedback &feedback, Trained &result)
+// A model trained on four fifths of `utterances` (a seeded shuffle) aligns the other fifth on the
+// features already computed; their word boundaries are scored against the project's timings
+// (TrainingUtterance::reference).
+void scoreHeldOut(const Project &project, const std::vector<TrainingUtterance> &utterances, Feedback &feedback,
+                  Trained &result)
 {
+    if (utterances.size() < 2)
+        return;
     std::vector<size_t> order(utterances.size());
-    for (size_t i = 0; i < order.size(); ++i)
-        order[i] = i;
+    std::iota(order.begin(), order.end(), size_t(0));
     std::mt19937 random(2007);
     std::shuffle(order.begin(), order.end(), random);
     const size_t held = std::max<size_t>(1, order.size() / 5);
-    if (order.size() < 2)
-        return;
     std::vector<TrainingUtterance> train;
     for (size_t k = held; k < order.size(); ++k)
         train.push_back(utterances[order[k]]);
     Feedback training(feedback, 0.0, 0.8);
     const AcousticModel model = trainAndCalibrate(train, training);
-    const QTemporaryDir dir;
-    const std::string path = QDir(dir.path()).filePath(QStringLiteral("held-out.aligner")).toStdString();
-    model.save(path);
-    const MonophoneAligner aligner(path, false);
+    const ForcedAligner aligner(model);
     int within = 0;
     for (size_t k = 0; k < held; ++k) {
         feedback.throwIfCanceled();
         const TrainingUtterance &u = utterances[order[k]];
-        const auto s = std::find_if(project.sequences.begin(), project.sequences.end(),
-                                    [&](const Sequence &q) { return q.id == u.id; });
         try {
-            const AlignerOutput out =
-                aligner.align(project.mediaPath(*s), Sequence::transcriptWords(s->transcript), lexicon);
-            for (const BoundaryError &b : BoundaryCorrection::errors(out.alignment, s->words))
+            AlignmentResult aligned = aligner.align(
+                u.features, Sequence::transcriptWords(project.sequence(u.id)->transcript), u.pronunciations);
+            model.boundaryCorrection().apply(aligned);
+            for (const BoundaryError &b : BoundaryCorrection::errors(aligned, u.reference))
                 for (double e : b.errors) {
                     within += std::abs(e) <= kTolerance + 1e-9;
                     ++result.boundaries;
@@ -179,12 +174,10 @@ Task *SpeakerAlignerTrainer::start()
             utterances = projectUtterances(project, featureModel(TrainerOptions{}), lexicon, part);
         }
         // The project's word timings are what the boundary correction learns from.
-        for (TrainingUtterance &u : utterances)
-            for (const Sequence &s : project.sequences)
-                if (s.id == u.id) {
-                    u.reference = s.words;
-                    result->speechSeconds += spokenSeconds(s.words);
-                }
+        for (TrainingUtterance &u : utterances) {
+            u.reference = project.sequence(u.id)->words;
+            result->speechSeconds += spokenSeconds(u.reference);
+        }
         result->utterances = int(utterances.size());
         if (result->speechSeconds < minimum)
             throw Error("the project has " + std::to_string(int(std::lround(result->speechSeconds)))
@@ -195,7 +188,7 @@ Task *SpeakerAlignerTrainer::start()
         feedback.setStatus("training on four fifths, scoring the rest");
         {
             Feedback part(feedback, 0.2, 0.55);
-            scoreHeldOut(project, utterances, lexicon, part, *result);
+            scoreHeldOut(project, utterances, part, *result);
         }
         feedback.setStatus("training the speaker's aligner");
         Feedback part(feedback, 0.55, 1.0);
