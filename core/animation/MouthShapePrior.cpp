@@ -2,6 +2,7 @@
 
 #include "aam/Procrustes.h"
 #include "animation/MouthTrack.h"
+#include "dynamics/LabelledSequence.h"
 #include "io/AtomicFile.h"
 #include "util/Error.h"
 #include "util/PhoneSet.h"
@@ -13,6 +14,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <numeric>
 
 namespace lipsync {
 
@@ -21,36 +23,39 @@ namespace {
 constexpr const char *kFormat = "lipsync-mouth-prior";
 constexpr int kPoints = 46;
 
-// Per-phone sums and counts of the rows of each track's `points` (or `features`).
-struct PhoneSums
+// The frames of `tracks` whose phone is known, as labelled sequences of their points (or their
+// features): what computeFrameStatistics takes the per-phone means (§1) of.
+std::vector<LabelledSequence> knownFrames(const std::vector<MouthTrack> &tracks, bool points)
 {
-    Eigen::MatrixXd sum;   // 41 x d
-    Eigen::VectorXd count; // 41
-    Eigen::VectorXd all;
-    double total = 0;
-
-    PhoneSums(const std::vector<MouthTrack> &tracks, bool points)
-    {
-        const Eigen::Index d = tracks.empty() ? 0 : (points ? tracks.front().points.cols() : tracks.front().features.cols());
-        sum = Eigen::MatrixXd::Zero(PhoneSet::kCount, d);
-        count = Eigen::VectorXd::Zero(PhoneSet::kCount);
-        all = Eigen::VectorXd::Zero(d);
-        for (const MouthTrack &t : tracks) {
-            const Eigen::MatrixXd &m = points ? t.points : t.features;
-            for (int f = 0; f < t.frameCount(); ++f) {
-                const int p = t.phones[size_t(f)];
-                if (p < 0 || p >= PhoneSet::kCount)
-                    continue;
-                sum.row(p) += m.row(f);
-                count(p) += 1;
-                all += m.row(f).transpose();
-                total += 1;
+    std::vector<LabelledSequence> out;
+    for (const MouthTrack &t : tracks) {
+        std::vector<Eigen::Index> rows;
+        LabelledSequence s;
+        s.name = t.sequenceId;
+        for (int f = 0; f < t.frameCount(); ++f)
+            if (const int p = t.phones[size_t(f)]; p >= 0 && p < PhoneSet::kCount) {
+                rows.push_back(f);
+                s.labels.push_back(p);
             }
-        }
+        if (rows.empty())
+            continue;
+        s.features = (points ? t.points : t.features)(rows, Eigen::all);
+        out.push_back(std::move(s));
     }
-    Eigen::VectorXd mean() const { return all / std::max(total, 1.0); }
-    Eigen::VectorXd mean(int p) const { return count(p) > 0 ? Eigen::VectorXd(sum.row(p).transpose() / count(p)) : mean(); }
-};
+    return out;
+}
+
+// Stacked rows of `sequences`, each minus `mean`.
+Eigen::MatrixXd centredRows(const std::vector<LabelledSequence> &sequences, const Eigen::VectorXd &mean, long long frames)
+{
+    Eigen::MatrixXd out(Eigen::Index(frames), mean.size());
+    Eigen::Index r = 0;
+    for (const LabelledSequence &s : sequences) {
+        out.middleRows(r, s.features.rows()) = s.features.rowwise() - mean.transpose();
+        r += s.features.rows();
+    }
+    return out;
+}
 
 QJsonArray toJson(const Eigen::VectorXd &v)
 {
@@ -78,50 +83,48 @@ Eigen::VectorXd fromJson(const QJsonValue &value, Eigen::Index size, const std::
 
 MouthShapePrior MouthShapePrior::learn(const std::vector<MouthTrack> &tracks)
 {
-    const PhoneSums points(tracks, true);
-    if (points.total == 0 || points.sum.cols() != kPoints)
+    const std::vector<LabelledSequence> frames = knownFrames(tracks, true);
+    if (frames.empty() || frames.front().features.cols() != kPoints)
         throw Error("no tracked, aligned frames to learn mouth shapes from");
+    const FrameStatistics points = computeFrameStatistics(frames);
     MouthShapePrior prior;
-    prior.m_mean = points.mean();
+    prior.m_mean = points.globalMean;
     const double size = shapeSize(prior.m_mean);
     if (!(size > 0))
         throw Error("the tracked frames' mean mouth shape is degenerate");
     prior.m_displacement = Eigen::MatrixXd::Zero(PhoneSet::kCount, kPoints);
     for (int p = 0; p < PhoneSet::kCount; ++p)
         if (points.count(p) > 0)
-            prior.m_displacement.row(p) = (points.mean(p) - prior.m_mean).transpose() / size;
-    prior.m_frames = points.count;
+            prior.m_displacement.row(p) = (points.mean.row(p) - prior.m_mean.transpose()) / size;
+    prior.m_frames = points.count.cast<double>();
     return prior;
 }
 
 Eigen::MatrixXd MouthShapePrior::personMeans(const std::vector<MouthTrack> &tracks, double kappa) const
 {
-    const PhoneSums points(tracks, true), features(tracks, false);
-    const Eigen::Index d = features.sum.cols();
-    if (points.total < double(kPoints) || d == 0)
-        throw Error("too few tracked, aligned frames to carry the mouth prior to this face (" +
-                    std::to_string(int(points.total)) + ")");
-    const Eigen::VectorXd mean = points.mean(), featureMean = features.mean();
+    const std::vector<LabelledSequence> pointFrames = knownFrames(tracks, true), featureFrames = knownFrames(tracks, false);
+    const long long total = std::accumulate(pointFrames.begin(), pointFrames.end(), 0LL,
+                                            [](long long n, const LabelledSequence &s) { return n + s.frameCount(); });
+    if (total < kPoints || featureFrames.front().features.cols() == 0)
+        throw Error("too few tracked, aligned frames to carry the mouth prior to this face (" + std::to_string(total) + ")");
+    const FrameStatistics points = computeFrameStatistics(pointFrames), features = computeFrameStatistics(featureFrames);
+    const Eigen::Index d = features.mean.cols();
     // Points to parameters on the person's own frames: least squares, centred, lightly regularised.
-    Eigen::MatrixXd X(Eigen::Index(points.total), kPoints), Y(Eigen::Index(points.total), d);
-    Eigen::Index r = 0;
-    for (const MouthTrack &t : tracks)
-        for (int f = 0; f < t.frameCount(); ++f)
-            if (t.phones[size_t(f)] >= 0 && t.phones[size_t(f)] < PhoneSet::kCount) {
-                X.row(r) = t.points.row(f) - mean.transpose();
-                Y.row(r++) = t.features.row(f) - featureMean.transpose();
-            }
+    const Eigen::MatrixXd X = centredRows(pointFrames, points.globalMean, total);
+    const Eigen::MatrixXd Y = centredRows(featureFrames, features.globalMean, total);
     const double ridge = 1e-6 * X.squaredNorm() / double(X.rows());
     const Eigen::MatrixXd W =
         (X.transpose() * X + ridge * Eigen::MatrixXd::Identity(kPoints, kPoints)).ldlt().solve(X.transpose() * Y);
-    const double size = shapeSize(mean);
+    const double size = shapeSize(points.globalMean);
     Eigen::MatrixXd out(PhoneSet::kCount, d);
     for (int p = 0; p < PhoneSet::kCount; ++p) {
-        const Eigen::VectorXd fromPrior = featureMean + W.transpose() * (size * m_displacement.row(p).transpose());
+        const Eigen::VectorXd fromPrior = features.globalMean + W.transpose() * (size * m_displacement.row(p).transpose());
+        // The person's own mean: HMM-mean's (the global mean for a phone without frames).
+        const Eigen::VectorXd own = features.mean.row(p).transpose();
         const double n = features.count(p);
         // No weight and no frames of the phone: the person's mean.
-        const Eigen::VectorXd mean = kappa + n > 0 ? Eigen::VectorXd((kappa * fromPrior + n * features.mean(p)) / (kappa + n))
-                                                   : featureMean;
+        const Eigen::VectorXd mean = kappa + n > 0 ? Eigen::VectorXd((kappa * fromPrior + n * own) / (kappa + n))
+                                                   : features.globalMean;
         out.row(p) = mean.transpose();
     }
     return out;
