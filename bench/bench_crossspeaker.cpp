@@ -8,6 +8,7 @@
 #include "animation/MouthMeasures.h"
 #include "animation/MouthShapePrior.h"
 #include "animation/MouthTrack.h"
+#include "eval/RealismMetrics.h"
 #include "project/Project.h"
 #include "util/PhoneSet.h"
 
@@ -38,7 +39,7 @@ std::unique_ptr<Speaker> loadSpeaker(const QString &folder)
 {
     auto s = std::make_unique<Speaker>();
     s->project = Project::load(folder.toStdString());
-    s->aam = std::make_unique<AamModel>(AamModel::load(s->project.resolve(s->project.aam()->file)));
+    s->aam = std::make_unique<AamModel>(AamModel::load(s->project.aamPath()));
     s->measurer = std::make_unique<MouthMeasurer>(*s->aam);
     s->tracks = projectMouthTracks(*s->measurer, s->project);
     return s;
@@ -49,21 +50,11 @@ bool speech(int phone)
     return phone != PhoneSet::kSilence && phone != PhoneSet::kBreath && phone >= 0;
 }
 
+// Pearson's r, 0 where it is undefined (a constant generation: no opening follows the speech).
 double correlation(const std::vector<double> &a, const std::vector<double> &b)
 {
-    const double n = double(a.size());
-    double ma = 0, mb = 0;
-    for (size_t i = 0; i < a.size(); ++i) {
-        ma += a[i] / n;
-        mb += b[i] / n;
-    }
-    double ab = 0, aa = 0, bb = 0;
-    for (size_t i = 0; i < a.size(); ++i) {
-        ab += (a[i] - ma) * (b[i] - mb);
-        aa += (a[i] - ma) * (a[i] - ma);
-        bb += (b[i] - mb) * (b[i] - mb);
-    }
-    return aa > 0 && bb > 0 ? ab / std::sqrt(aa * bb) : 0.0;
+    const double r = pearsonOverFrames(a, b);
+    return std::isfinite(r) ? r : 0.0;
 }
 
 void BM_CrossSpeakerPrior(benchmark::State &state)

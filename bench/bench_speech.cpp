@@ -348,10 +348,8 @@ void BM_EvalGridWordsKFold(benchmark::State &state)
     for (auto _ : state) {
         for (size_t f = 0; f < folds.size(); ++f) {
             std::vector<TrainingUtterance> train;
-            for (size_t g = 0; g < folds.size(); ++g)
-                if (g != f)
-                    for (int i : folds[g])
-                        train.push_back(trainingUtterance(clips[size_t(i)]));
+            for (int i : trainingMembers(folds, f))
+                train.push_back(trainingUtterance(clips[size_t(i)]));
             Feedback feedback;
             AcousticModel model = AlignerTrainer::train(train, benchOptions(), feedback);
             // The boundary correction learned on the same training part (aligner calibrate).
@@ -404,10 +402,7 @@ void BM_GridAlignerLearningCurve(benchmark::State &state)
     double speechSeconds = 0;
     for (auto _ : state) {
         for (size_t f = 0; f < folds.size(); ++f) {
-            std::vector<int> pool;
-            for (size_t g = 0; g < folds.size(); ++g)
-                if (g != f)
-                    pool.insert(pool.end(), folds[g].begin(), folds[g].end());
+            std::vector<int> pool = trainingMembers(folds, f);
             std::mt19937 random(2007 + unsigned(f));
             std::shuffle(pool.begin(), pool.end(), random);
             std::vector<TrainingUtterance> train;
@@ -465,14 +460,10 @@ void BM_LivePhonesKFold(benchmark::State &state)
     double errors = 0, referencePhones = 0, frames = 0, framesRight = 0, video = 0, videoRight = 0;
     for (auto _ : state) {
         for (size_t f = 0; f < foldCount; ++f) {
+            const std::vector<int> trainIds = trainingMembers(folds, f);
             std::vector<TrainingUtterance> train;
-            std::vector<int> trainIds;
-            for (size_t g = 0; g < folds.size(); ++g)
-                if (g != f)
-                    for (int i : folds[g]) {
-                        train.push_back(trainingUtterance(clips[size_t(i)]));
-                        trainIds.push_back(i);
-                    }
+            for (int i : trainIds)
+                train.push_back(trainingUtterance(clips[size_t(i)]));
             Feedback feedback;
             const AcousticModel model = AlignerTrainer::train(train, benchOptions(), feedback);
             std::vector<Tier> aligned(clips.size());

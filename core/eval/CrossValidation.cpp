@@ -28,4 +28,13 @@ std::vector<std::vector<int>> makeFolds(int sequenceCount, int folds, std::uint6
     return out;
 }
 
+std::vector<int> trainingMembers(const std::vector<std::vector<int>> &folds, size_t heldOut)
+{
+    std::vector<int> out;
+    for (size_t g = 0; g < folds.size(); ++g)
+        if (g != heldOut)
+            out.insert(out.end(), folds[g].begin(), folds[g].end());
+    return out;
+}
+
 } // namespace lipsync

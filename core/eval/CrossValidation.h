@@ -12,5 +12,7 @@ constexpr std::uint64_t kDefaultFoldSeed = 2007;
 // Throws lipsync::Error when folds < 2 or there are fewer sequences than folds.
 std::vector<std::vector<int>> makeFolds(int sequenceCount, int folds = 10,
                                         std::uint64_t seed = kDefaultFoldSeed);
+// What trains when fold `heldOut` is held out: the members of every other fold, fold by fold.
+std::vector<int> trainingMembers(const std::vector<std::vector<int>> &folds, size_t heldOut);
 
 } // namespace lipsync

@@ -134,6 +134,12 @@ private slots:
         QVERIFY(makeFolds(sequences, folds, 99) != split || sequences == folds);
         QVERIFY_THROWS_EXCEPTION(Error, makeFolds(5, 10));
         QVERIFY_THROWS_EXCEPTION(Error, makeFolds(5, 1));
+        // What trains with fold 1 held out: every other fold's members, fold by fold.
+        const std::vector<int> training = trainingMembers(split, 1);
+        QCOMPARE(int(training.size()), sequences - int(split[1].size()));
+        QCOMPARE(training.front(), split[0].front());
+        for (int i : split[1])
+            QVERIFY(std::find(training.begin(), training.end(), i) == training.end());
     }
 
     // A learning curve's training set (EvaluationOptions::trainingSpeechSeconds): only training
