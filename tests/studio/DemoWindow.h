@@ -11,6 +11,7 @@
 #include "context/SequenceMedia.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
+#include "tasks/Task.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/TimelinePanel.h"
 
@@ -19,8 +20,10 @@
 #include <QDirIterator>
 #include <QFile>
 #include <QFileInfo>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTest>
+#include <QVBoxLayout>
 
 namespace lipsync::studio::testing {
 
@@ -63,6 +66,17 @@ inline bool copyFolder(const QString &from, const QString &to)
         QFile::setPermissions(target, QFile::permissions(target) | QFileDevice::WriteOwner);
     }
     return true;
+}
+
+// Waits for `task` (null: none started) to end; true if it finished, not failed or canceled.
+inline bool waitFor(Task *task, int timeoutMs = 120000)
+{
+    if (!task)
+        return false;
+    QSignalSpy finished(task, &Task::finished);
+    if (task->isRunning() && !finished.wait(timeoutMs))
+        return false;
+    return task->state() == Task::State::Finished;
 }
 
 // Waits until the window's background tasks (training, tracking, export) have finished.
@@ -109,15 +123,26 @@ inline void openWindowOnProject(MainWindow *&window, const QString &folder)
     openProjectFolder(window, folder);
 }
 
-// The demo window with its timeline panel found and audio playback off (the speech tests).
-inline void openDemoTimeline(MainWindow *&window, TimelinePanel *&panel)
+// A Timeline panel made in `host` (shown, active) on `context`, the demo opened and its first
+// sequence loaded, audio playback off: the speech tests, without a window. Callers return when
+// QTest::currentTestFailed().
+inline void openDemoTimeline(StudioContext &context, QWidget &host, TimelinePanel *&panel)
 {
-    openDemoWindow(window);
-    if (QTest::currentTestFailed())
-        return;
-    panel = window->findChild<TimelinePanel *>();
-    QVERIFY(panel);
-    window->context()->playback()->setAudioEnabled(false);
+    QCoreApplication::setOrganizationName(QStringLiteral("lipsync-tests"));
+    ErrorReporter::setBatchMode(true);
+    auto *layout = new QVBoxLayout(&host);
+    panel = new TimelinePanel(&host);
+    layout->addWidget(panel);
+    panel->attach(&context);
+    context.playback()->setAudioEnabled(false);
+    host.resize(1280, 360);
+    host.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&host));
+    host.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&host));
+    openDemo(context);
+    context.selectSequence(0);
+    QTRY_VERIFY_WITH_TIMEOUT(context.media() != nullptr, 60000);
 }
 
 } // namespace lipsync::studio::testing

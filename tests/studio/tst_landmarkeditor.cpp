@@ -54,15 +54,6 @@ private:
         return it != s.landmarks.end() ? std::optional<LandmarkSet>(it->second) : std::nullopt;
     }
     QPoint widgetPoint(double x, double y) const { return view()->imageToWidget(QPointF(x, y)).toPoint(); }
-    bool waitFor(Task *task, int timeout = 120000)
-    {
-        if (!task)
-            return false;
-        QSignalSpy finished(task, &Task::finished);
-        if (task->isRunning() && !finished.wait(timeout))
-            return false;
-        return task->state() == Task::State::Finished;
-    }
 
 private slots:
     void initTestCase()
@@ -173,7 +164,7 @@ private slots:
     {
         m_window->context()->setCurrentFrame(10);
         const int index = m_window->context()->undoStack()->index();
-        QVERIFY(waitFor(m_window->faces()->detectLandmarks()));
+        QVERIFY(testing::waitFor(m_window->faces()->detectLandmarks()));
         QCOMPARE(m_window->context()->undoStack()->index(), index + 1);
         const std::optional<LandmarkSet> set = landmarksAt(10);
         QVERIFY(set);
@@ -230,7 +221,7 @@ private slots:
         QVERIFY(!m_window->faces()->nextPickedAction()->isEnabled());
         // Every 15th frame a candidate (5 per clip): enough to spread over the clips, a third of
         // the default's work.
-        QVERIFY(waitFor(m_window->faces()->pickFramesToLabel(12, 15), 300000));
+        QVERIFY(testing::waitFor(m_window->faces()->pickFramesToLabel(12, 15), 300000));
         QCOMPARE(m_window->context()->undoStack()->index(), index + 1);
         const auto &queue = m_window->faces()->reviewQueue();
         QCOMPARE(int(queue.size()), 12);
@@ -284,7 +275,7 @@ private slots:
             QSKIP("the demo ships no AAM");
         const std::vector<ModelReference> models = doc->project().models;
         const int index = m_window->context()->undoStack()->index();
-        QVERIFY(waitFor(m_window->faces()->trackSequences({4})));
+        QVERIFY(testing::waitFor(m_window->faces()->trackSequences({4})));
         QVERIFY(m_window->faces()->model());
         QVERIFY(doc->project().models == models); // no AAM was built
         const Sequence &s = doc->sequence(4);
@@ -309,7 +300,7 @@ private slots:
             QVERIFY(doc->requestLandmarks(1 + i % 3, 20 + 10 * i, set, QStringLiteral("label")));
         }
         Task *build = m_window->faces()->buildAam();
-        QVERIFY(waitFor(build));
+        QVERIFY(testing::waitFor(build));
         const auto model = m_window->faces()->model();
         QVERIFY(model);
         QVERIFY(model->combinedModes() >= 1);
@@ -318,7 +309,7 @@ private slots:
 
         const Eigen::MatrixXd featuresBefore = doc->sequence(0).features; // the demo ships some
         Task *track = m_window->faces()->trackSequences({0});
-        QVERIFY(waitFor(track));
+        QVERIFY(testing::waitFor(track));
         const Sequence &s = doc->sequence(0);
         QCOMPARE(int(s.features.rows()), 75);
         QCOMPARE(int(s.features.cols()), model->combinedModes());
@@ -389,7 +380,7 @@ private slots:
         // Building again gives the AAM a file of its own, so undoing the rebuild brings back the
         // first build (not the demo's, and not a file overwritten meanwhile).
         const std::string firstFile = doc->project().model("aam")->file;
-        QVERIFY(waitFor(m_window->faces()->buildAam()));
+        QVERIFY(testing::waitFor(m_window->faces()->buildAam()));
         const auto rebuilt = m_window->faces()->model();
         QVERIFY(rebuilt && rebuilt != model);
         QVERIFY(doc->project().model("aam")->file != firstFile);

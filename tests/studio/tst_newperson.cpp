@@ -41,16 +41,7 @@ const QString kClips = QStringLiteral(LIPSYNC_SOURCE_DIR "/tests/data/media/hd/"
 // New speech: a GRID clip's sound with the words a user types for it.
 const QString kNewSpeech = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg");
 const QString kNewWords = QStringLiteral("bin blue at f two now");
-
-bool waitFor(Task *task, int timeout = 300000)
-{
-    if (!task)
-        return false;
-    QSignalSpy finished(task, &Task::finished);
-    if (task->isRunning() && !finished.wait(timeout))
-        return false;
-    return task->state() == Task::State::Finished;
-}
+constexpr int kStepMs = 300000; // the longest a step may take on a slow machine
 
 QString failure(Task *task)
 {
@@ -94,7 +85,7 @@ private slots:
             QVERIFY(QFile::copy(kClips + QLatin1String(name), clips + QLatin1Char('/') + QLatin1String(name)));
         const QString folder = m_dir.filePath(QStringLiteral("project"));
         Task *create = m_window->files()->createFromMediaFolder(clips, folder);
-        QVERIFY2(waitFor(create), qPrintable(failure(create)));
+        QVERIFY2(testing::waitFor(create, kStepMs), qPrintable(failure(create)));
         QTRY_COMPARE_WITH_TIMEOUT(document()->sequenceCount(), 2, 30000);
         QVERIFY(!document()->isReadOnly());
         QVERIFY(document()->project().alignsGeneric()); // a speaker the shipped aligner never heard
@@ -104,7 +95,7 @@ private slots:
         // Edit ▸ Propose Transcript for each clip, then Accept: the words become checked.
         for (int row = 0; row < 2; ++row) {
             Task *propose = m_window->transcriptProposer()->propose(row);
-            QVERIFY2(waitFor(propose), qPrintable(failure(propose)));
+            QVERIFY2(testing::waitFor(propose, kStepMs), qPrintable(failure(propose)));
             QVERIFY(!document()->sequence(row).transcript.empty());
             QVERIFY(document()->sequence(row).transcriptProposed);
             QVERIFY(document()->requestAcceptTranscript(row));
@@ -116,16 +107,16 @@ private slots:
         m_window->context()->selectSequence(0);
         QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->media() && m_window->context()->currentSequence() == 0, 60000);
         Task *pick = m_window->faces()->pickFramesToLabel(16, 12);
-        QVERIFY2(waitFor(pick), qPrintable(failure(pick)));
+        QVERIFY2(testing::waitFor(pick, kStepMs), qPrintable(failure(pick)));
         int labelled = 0;
         for (int row = 0; row < 2; ++row)
             labelled += int(document()->sequence(row).landmarks.size());
         QVERIFY2(labelled >= 12, qPrintable(QString::number(labelled)));
         Task *build = m_window->faces()->buildAam();
-        QVERIFY2(waitFor(build), qPrintable(failure(build)));
+        QVERIFY2(testing::waitFor(build, kStepMs), qPrintable(failure(build)));
         QVERIFY(document()->project().aam());
         Task *track = m_window->faces()->trackSequences({0, 1});
-        QVERIFY2(waitFor(track), qPrintable(failure(track)));
+        QVERIFY2(testing::waitFor(track, kStepMs), qPrintable(failure(track)));
         for (int row = 0; row < 2; ++row) {
             const Sequence &s = document()->sequence(row);
             QCOMPARE(int(s.features.rows()), s.frameCount);
@@ -142,7 +133,7 @@ private slots:
             m_window->modelsPanel()->kindCheck(kind)->setChecked(kind == QLatin1String("brand"));
         const QList<Task *> training = m_window->modelsPanel()->train();
         QCOMPARE(training.size(), 1);
-        QVERIFY2(waitFor(training.front()), qPrintable(failure(training.front())));
+        QVERIFY2(testing::waitFor(training.front(), kStepMs), qPrintable(failure(training.front())));
         QVERIFY(m_window->context()->modelStore()->dynamicModel(QStringLiteral("brand")));
 
         // Preview & Compare: the clip's generated face beside the recording (this prepares the
@@ -156,7 +147,7 @@ private slots:
         // Generate from Speech: new words in a voice the project never had, drawn into this
         // person's own video (the current clip, re-timed to the speech).
         Task *speech = m_window->preview()->startSpeech(kNewSpeech, kNewWords, 0.0, QStringLiteral("brand"));
-        QVERIFY2(waitFor(speech), qPrintable(failure(speech)));
+        QVERIFY2(testing::waitFor(speech, kStepMs), qPrintable(failure(speech)));
         const auto shown = m_window->context()->shownSpeech();
         QVERIFY(shown);
         QCOMPARE(shown->backgroundPath, m_window->context()->media()->mediaPath.toStdString());
@@ -165,7 +156,7 @@ private slots:
         // File ▸ Export ▸ Generated Video: picture and the new sound, its length.
         const QString out = m_dir.filePath(QStringLiteral("new-utterance.mp4"));
         Task *exported = m_window->exportMenu()->exportTo(ExportMenu::Kind::Video, out);
-        QVERIFY2(waitFor(exported), qPrintable(failure(exported)));
+        QVERIFY2(testing::waitFor(exported, kStepMs), qPrintable(failure(exported)));
         const MediaInfo video = MediaInfo::probe(out.toStdString());
         const MediaInfo sound = MediaInfo::probe(kNewSpeech.toStdString());
         QVERIFY(video.hasVideo && video.hasAudio);

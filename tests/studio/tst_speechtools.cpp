@@ -32,7 +32,6 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
-#include <QVBoxLayout>
 
 #include <algorithm>
 
@@ -48,18 +47,7 @@ public:
 private slots:
     void initTestCase()
     {
-        ErrorReporter::setBatchMode(true);
-        auto *layout = new QVBoxLayout(&m_host);
-        m_panel = new TimelinePanel(&m_host);
-        layout->addWidget(m_panel);
-        m_panel->attach(&m_context);
-        m_context.playback()->setAudioEnabled(false);
-        m_host.resize(1280, 360);
-        m_host.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&m_host));
-        testing::openDemo(m_context);
-        m_context.selectSequence(0);
-        QTRY_VERIFY_WITH_TIMEOUT(m_context.media() != nullptr, 60000);
+        testing::openDemoTimeline(m_context, m_host, m_panel);
     }
 
     void cleanupTestCase() { QTRY_COMPARE_WITH_TIMEOUT(m_context.taskRunner()->runningCount(), 0, 60000); }

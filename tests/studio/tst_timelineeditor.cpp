@@ -33,7 +33,6 @@
 #include <QTest>
 #include <QTimer>
 #include <QUndoStack>
-#include <QVBoxLayout>
 
 #include <algorithm>
 #include <cmath>
@@ -59,21 +58,9 @@ public:
 private slots:
     void initTestCase()
     {
-        QCoreApplication::setOrganizationName(QStringLiteral("lipsync-tests"));
-        ErrorReporter::setBatchMode(true);
-        auto *layout = new QVBoxLayout(&m_host);
-        m_panel = new TimelinePanel(&m_host);
-        layout->addWidget(m_panel);
-        m_panel->attach(&m_context);
-        m_context.playback()->setAudioEnabled(false);
-        m_host.resize(1280, 360);
-        m_host.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&m_host));
-        m_host.activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(&m_host));
-        testing::openDemo(m_context);
-        m_context.selectSequence(0);
-        QTRY_VERIFY_WITH_TIMEOUT(m_context.media() != nullptr, 60000);
+        testing::openDemoTimeline(m_context, m_host, m_panel);
+        if (QTest::currentTestFailed())
+            return;
         m_view = m_panel->waveform();
     }
 
@@ -339,14 +326,21 @@ private slots:
         QVERIFY(before.phones.intervals[size_t(inside)].end < word.end - 1e-3); // "bin": B IH N
         QCOMPARE(tieredit::wordBetweenPhones(before, inside), -1);
         const std::string joined = before.words.intervals[size_t(w)].label + ' ' + before.words.intervals[size_t(w + 1)].label;
+        // Answers the question box once it shows: looked for every 10 ms (over a bare widget, with no
+        // window manager under Xvfb, it need not become the active modal widget, and the key that
+        // opens it may let a timer run before it is shown).
         auto answer = [this](bool merge, QString *text) {
-            QTimer::singleShot(0, this, [merge, text] {
-                // The box shown (over a bare widget, with no window manager under Xvfb, it need
-                // not become the active modal widget).
+            auto *poll = new QTimer(this);
+            poll->setInterval(10);
+            connect(poll, &QTimer::timeout, this, [poll, merge, text, tries = 0]() mutable {
                 QMessageBox *box = nullptr;
                 for (QWidget *w : QApplication::topLevelWidgets())
                     if (auto *b = qobject_cast<QMessageBox *>(w); b && b->isVisible())
                         box = b;
+                if (!box && ++tries < 1000)
+                    return;
+                poll->stop();
+                poll->deleteLater();
                 QVERIFY(box);
                 QVERIFY(QTest::qWaitForWindowExposed(box)); // Enter clicks a visible default button only
                 *text = box->text();
@@ -358,6 +352,7 @@ private slots:
                     if (box->buttonRole(b) == QMessageBox::AcceptRole)
                         b->click();
             });
+            poll->start();
         };
         // The box takes the focus while it is open: the view gets it back before each key.
         auto focusView = [this] {
