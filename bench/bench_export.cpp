@@ -1,6 +1,8 @@
 // Export speed (target: a 3 s clip well under a second). The demo GRID clip bbaf2n
 // (75 frames 360x288, 44.1 kHz sound) is decoded once; each iteration encodes H.264 + AAC and
-// muxes an MP4 into a temporary folder, including the atomic rename.
+// muxes an MP4 into a temporary folder, including the atomic rename. And decoding speed: every
+// frame of a clip read in order as BGR (GRID's MPEG-1 and the 720p H.264 of tests/data/media/hd),
+// the reader opened once (its timestamp scan cached) and each iteration a full pass.
 #include "io/AudioDecoder.h"
 #include "io/VideoReader.h"
 #include "render/VideoExporter.h"
@@ -67,3 +69,19 @@ BENCHMARK(BM_ExportMp4ThreeSeconds)
     ->UseRealTime();
 
 } // namespace
+
+void BM_DecodeVideo(benchmark::State &state)
+{
+    const std::string path = state.range(0) == 0
+                                 ? std::string(LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg")
+                                 : std::string(LIPSYNC_TEST_DATA "/media/hd/obama_weekly_address_closeup.mp4");
+    lipsync::VideoReader reader(path);
+    long frames = 0;
+    for (auto _ : state) {
+        for (int i = 0; i < reader.frameCount(); ++i)
+            benchmark::DoNotOptimize(reader.frame(i).data);
+        frames += reader.frameCount();
+    }
+    state.counters["frames/s"] = benchmark::Counter(double(frames), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_DecodeVideo)->ArgName("hd")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);

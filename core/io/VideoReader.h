@@ -1,6 +1,8 @@
 #pragma once
-// Video frames through OpenCV with real timestamps. Random access by frame index (seeks and
-// decodes forward; sequential reads are cheap). Frames are BGR 8-bit cv::Mat.
+// Video frames decoded by libavcodec with real timestamps. Random access by frame index (seeks and
+// decodes forward; sequential reads are cheap). Frames are BGR 8-bit cv::Mat, converted by
+// libswscale with the stream's own colour matrix and range and exact rounding, so that a frame
+// decoded, exported (VideoExporter) and decoded again keeps its colours.
 //
 // The frame count and the timestamps come from one full decode of the file at construction
 // (cached per file for the process), so frameCount() is what really decodes, not the
@@ -15,8 +17,6 @@
 #include <memory>
 #include <string>
 #include <vector>
-
-namespace cv { class VideoCapture; }
 
 namespace lipsync {
 
@@ -46,19 +46,20 @@ public:
     const FrameClock &clock() const { return m_clock; }
 
 private:
+    struct Decoder;
+
     void reopen();
-    bool seekTo(int index, cv::Mat &image);
-    cv::Mat readNext();
+    bool seekTo(int index);
 
     std::string m_path;
-    std::unique_ptr<cv::VideoCapture> m_capture;
+    std::unique_ptr<Decoder> m_decoder;
     int m_frameCount = 0;
     double m_frameRate = 0.0;
     int m_width = 0;
     int m_height = 0;
     int m_nextIndex = 0; // index of the frame the next read() returns
     FrameClock m_clock; // every frame's presentation time
-    double m_videoStart = 0.0; // video stream start, seconds from the file start (OpenCV's zero)
+    int m_videoStream = -1;
 };
 
 } // namespace lipsync

@@ -82,6 +82,10 @@ Eigen::Vector2d ThinPlateWarp::displacement(const Eigen::Vector2d &p) const
 
 namespace {
 
+// The resampled pixels reach full weight where a pixel keeps this share of its displacement
+// (apply()).
+constexpr float kResampleFade = 8.0f;
+
 // How much of the displacement a pixel keeps: 0 on the region's border and past it, rising
 // (smoothstep) to 1 at `falloff` pixels inside.
 float fadeAt(double x, double y, const cv::Rect &region, double falloff)
@@ -154,12 +158,12 @@ bool ThinPlateWarp::apply(cv::Mat &image, cv::Rect region, double falloff, doubl
         return false;
     const int gw = dx.cols, gh = dx.rows;
     // The displacement bilinear between grid nodes, faded per pixel (exactly 0 on the border).
-    cv::Mat mapX(region.size(), CV_32F), mapY(region.size(), CV_32F);
+    cv::Mat mapX(region.size(), CV_32F), mapY(region.size(), CV_32F), blend(region.size(), CV_32F);
     for (int y = 0; y < region.height; ++y) {
         const float fy = float(y) / kGridStep;
         const int y0 = std::min(int(fy), gh - 1), y1 = std::min(y0 + 1, gh - 1);
         const float ty = fy - float(y0);
-        float *mx = mapX.ptr<float>(y), *my = mapY.ptr<float>(y);
+        float *mx = mapX.ptr<float>(y), *my = mapY.ptr<float>(y), *mb = blend.ptr<float>(y);
         for (int x = 0; x < region.width; ++x) {
             const float fx = float(x) / kGridStep;
             const int x0 = std::min(int(fx), gw - 1), x1 = std::min(x0 + 1, gw - 1);
@@ -172,6 +176,7 @@ bool ThinPlateWarp::apply(cv::Mat &image, cv::Rect region, double falloff, doubl
             const float keep = fadeAt(region.x + x, region.y + y, region, falloff);
             mx[x] = float(region.x + x) - keep * lerp(dx);
             my[x] = float(region.y + y) - keep * lerp(dy);
+            mb[x] = std::min(1.0f, kResampleFade * keep);
         }
     }
     // Into a region-sized image first, so the input is read before any of it is written.
@@ -179,7 +184,13 @@ bool ThinPlateWarp::apply(cv::Mat &image, cv::Rect region, double falloff, doubl
     // recording's on 200 GRID clips, 0.94 with cubic interpolation).
     cv::Mat warped;
     cv::remap(image, warped, mapX, mapY, cv::INTER_LANCZOS4, cv::BORDER_REPLICATE);
-    warped.copyTo(image(region));
+    // Where the displacement fades to a fraction of a pixel, the filter's own ringing on sharp
+    // texture (a collar, stubble) would still change pixels by a few levels at the region's edge:
+    // the resampled pixels fade in over the same band, reaching full weight where the
+    // displacement is an eighth of its own (and so, near the edge, a fraction of a pixel: no
+    // double image).
+    cv::Mat target = image(region);
+    cv::blendLinear(warped, target.clone(), blend, 1.0f - blend, target);
     return true;
 }
 

@@ -7,8 +7,9 @@
 //
 // The spline is evaluated on a grid of `kGridStep` pixels and interpolated between (it is smooth
 // at that scale), and only inside `region`: outside it the image is unchanged, and over the
-// `falloff` pixels inside its border each pixel's displacement fades to zero (smoothstep), so the
-// warped region joins the untouched frame without a seam.
+// `falloff` pixels inside its border each pixel's displacement fades to zero (smoothstep), and the
+// resampled pixels fade into the untouched ones over the outer part of that band, so the warped
+// region joins the untouched frame without a seam.
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 

@@ -245,9 +245,11 @@ struct VideoExporter::Impl
         rc = av_frame_get_buffer(videoFrame, 0);
         if (rc < 0)
             fail("cannot allocate video frames", rc);
+        // Exact rounding: swscale's fast path darkens every pass by about one level, which an
+        // export of an export (or of a render beside its recording) would accumulate.
         sws = sws_getContext(videoCodec->width, videoCodec->height, AV_PIX_FMT_BGR24,
                              videoCodec->width, videoCodec->height, AV_PIX_FMT_YUV420P,
-                             SWS_BILINEAR, nullptr, nullptr, nullptr);
+                             SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr, nullptr, nullptr);
         if (!sws)
             throw Error("cannot create the colour converter", path);
     }

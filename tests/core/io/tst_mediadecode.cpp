@@ -1,11 +1,13 @@
-// Video frames (OpenCV) and audio PCM (libav) from a GRID demo clip and the small files in
+// Video frames and audio PCM (libav) (libav) from a GRID demo clip and the small files in
 // tests/data/media; every damaged file must give a lipsync::Error naming it.
 #include "io/AudioDecoder.h"
 #include "io/VideoReader.h"
 #include "util/Error.h"
 
+#include <QDir>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -83,6 +85,35 @@ private slots:
         // A second reader seeking straight to a far frame agrees too.
         VideoReader other(gridClip());
         QVERIFY(cv::norm(other.frame(66), sequential[66], cv::NORM_INF) == 0);
+    }
+
+    // Every clip of the demo and the HD footage: frames reached by seeking, backwards and far
+    // ahead, are the frames of the sequential decode (seeks land on key frames and are placed
+    // by their timestamps).
+    void randomAccessEqualsSequential_data()
+    {
+        QTest::addColumn<QString>("path");
+        const QDir demo(QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo/media"));
+        for (const QString &name : demo.entryList({QStringLiteral("*.mpg")}, QDir::Files, QDir::Name))
+            QTest::newRow(qPrintable(name)) << demo.filePath(name);
+        const QDir hd(QString::fromStdString(media("hd")));
+        for (const QString &name : hd.entryList({QStringLiteral("*.mp4")}, QDir::Files, QDir::Name))
+            QTest::newRow(qPrintable(name)) << hd.filePath(name);
+    }
+
+    void randomAccessEqualsSequential()
+    {
+        QFETCH(QString, path);
+        VideoReader reader(path.toStdString());
+        std::vector<cv::Mat> sequential;
+        for (int i = 0; i < reader.frameCount(); ++i)
+            sequential.push_back(reader.frame(i));
+        const int n = reader.frameCount();
+        for (int index : {n - 1, n / 2, 2, n - 30, 55, n / 3, n / 3 + 1, 0, n - 2}) {
+            index = std::clamp(index, 0, n - 1);
+            QVERIFY2(cv::norm(reader.frame(index), sequential[size_t(index)], cv::NORM_INF) == 0,
+                     qPrintable(QStringLiteral("frame %1 of %2 differs after random access").arg(index).arg(n)));
+        }
     }
 
     void frameOutOfRange()
