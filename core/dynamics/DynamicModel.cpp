@@ -3,6 +3,9 @@
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -25,17 +28,17 @@ Eigen::VectorXd slowPart(const Frame &frame, Eigen::Index t, Eigen::Index T, int
     return sum / double(window);
 }
 
-// One frame y with slow part s and fast-window mean f: y' = m + g (s - m) + h (f - s) + (y - f);
-// without a fast window y' = m + g (s - m) + h (y - s); window 0: y' = m + g (y - m) (§5.1).
+// One frame y with slow part s and fast-window mean f: y' = m + G (s - m) + H (f - s) + (y - f);
+// without a fast window y' = m + G (s - m) + H (y - s); window 0: y' = m + G (y - m) (§5.1).
 Eigen::VectorXd compensateFrame(const Eigen::VectorXd &y, const Eigen::VectorXd &slow, const Eigen::VectorXd &fast,
-                                const Eigen::VectorXd &mean, const Eigen::VectorXd &gain,
-                                const Eigen::VectorXd &detailGain)
+                                const Eigen::VectorXd &mean, const Eigen::MatrixXd &gain,
+                                const Eigen::MatrixXd &detailGain)
 {
     if (detailGain.size() == 0)
-        return mean + gain.cwiseProduct(y - mean);
+        return mean + gain * (y - mean);
     if (fast.size() == 0)
-        return mean + gain.cwiseProduct(slow - mean) + detailGain.cwiseProduct(y - slow);
-    return mean + gain.cwiseProduct(slow - mean) + detailGain.cwiseProduct(fast - slow) + (y - fast);
+        return mean + gain * (slow - mean) + detailGain * (y - slow);
+    return mean + gain * (slow - mean) + detailGain * (fast - slow) + (y - fast);
 }
 
 // The slow parts of every frame of `y` (T x d).
@@ -48,14 +51,33 @@ Eigen::MatrixXd slowParts(const Eigen::MatrixXd &y, int window)
     return s;
 }
 
-// s.d.(a) / s.d.(b) per dimension from their sums of squares, clipped to the gain bounds.
-Eigen::VectorXd gainOf(const Eigen::VectorXd &real, const Eigen::VectorXd &generated)
+// A symmetric matrix's function f of its eigenvalues.
+template<class F>
+Eigen::MatrixXd spectral(const Eigen::MatrixXd &a, F f)
 {
-    Eigen::VectorXd gain(real.size());
-    for (Eigen::Index k = 0; k < real.size(); ++k)
-        gain[k] = generated[k] > 0.0 ? std::sqrt(real[k] / generated[k]) : 1.0;
-    // A scale of the trajectory, not a new one: bounded both ways.
-    return gain.cwiseMax(DynamicModel::kMinCompensationGain).cwiseMin(DynamicModel::kMaxCompensationGain);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(a);
+    return eigen.eigenvectors() * eigen.eigenvalues().unaryExpr(f).asDiagonal() * eigen.eigenvectors().transpose();
+}
+
+// The optimal-transport map between N(0, generated) and N(0, real) (the scatter matrices of the
+// two trajectories' band about the training mean): A = G^-1/2 (G^1/2 R G^1/2)^1/2 G^-1/2, the
+// symmetric positive definite A with A G A = R; its eigenvalues bounded both ways, a scale of the
+// trajectory, not a new one. A direction the generated trajectories never move in (a dimension
+// they hold constant) keeps its value: G is regularised by a millionth of its mean variance.
+Eigen::MatrixXd gainOf(const Eigen::MatrixXd &real, const Eigen::MatrixXd &generated)
+{
+    const Eigen::Index d = real.rows();
+    const double floor = 1e-6 * std::max(generated.trace(), real.trace()) / double(std::max<Eigen::Index>(1, d)) + 1e-300;
+    Eigen::MatrixXd g = generated;
+    g.diagonal().array() += floor;
+    const Eigen::MatrixXd root = spectral(g, [](double l) { return std::sqrt(std::max(l, 0.0)); });
+    const Eigen::MatrixXd inverseRoot = spectral(g, [floor](double l) { return 1.0 / std::sqrt(std::max(l, floor)); });
+    const Eigen::MatrixXd middle = spectral(root * real * root, [](double l) { return std::sqrt(std::max(l, 0.0)); });
+    Eigen::MatrixXd a = inverseRoot * middle * inverseRoot;
+    a = 0.5 * (a + a.transpose());
+    return spectral(a, [](double l) {
+        return std::clamp(l, DynamicModel::kMinCompensationGain, DynamicModel::kMaxCompensationGain);
+    });
 }
 
 // The compensation applied to each frame another streamer emits. With a window, frame t leaves
@@ -63,8 +85,8 @@ Eigen::VectorXd gainOf(const Eigen::VectorXd &real, const Eigen::VectorXd &gener
 class CompensatedStreamer : public StreamingGenerator
 {
 public:
-    CompensatedStreamer(std::unique_ptr<StreamingGenerator> inner, Eigen::VectorXd mean, Eigen::VectorXd gain,
-                        Eigen::VectorXd detailGain, int window, int fastWindow)
+    CompensatedStreamer(std::unique_ptr<StreamingGenerator> inner, Eigen::VectorXd mean, Eigen::MatrixXd gain,
+                        Eigen::MatrixXd detailGain, int window, int fastWindow)
         : m_inner(std::move(inner)), m_mean(std::move(mean)), m_gain(std::move(gain)),
           m_detailGain(std::move(detailGain)), m_half(window / 2), m_window(window), m_fastWindow(fastWindow),
           m_frame(m_mean.size())
@@ -111,7 +133,8 @@ private:
     }
 
     std::unique_ptr<StreamingGenerator> m_inner;
-    Eigen::VectorXd m_mean, m_gain, m_detailGain;
+    Eigen::VectorXd m_mean;
+    Eigen::MatrixXd m_gain, m_detailGain;
     const int m_half, m_window, m_fastWindow;
     Eigen::VectorXd m_frame;
     std::deque<Eigen::VectorXd> m_frames; // inner frames m_first .. m_received - 1
@@ -138,13 +161,13 @@ void DynamicModel::train(const std::vector<LabelledSequence> &sequences, Feedbac
     fit(sequences, feedback);
     m_frameRate = rate;
     m_mean.resize(0);
-    m_gain.resize(0);
-    m_detailGain.resize(0);
+    m_gain.resize(0, 0);
+    m_detailGain.resize(0, 0);
     m_window = 0;
     m_fastWindow = 0;
     if (!m_compensate)
         return;
-    // The spreads of both bands, about the training mean, pooled over every training frame (§5.1).
+    // The scatter of both bands, about the training mean, pooled over every training frame (§5.1).
     const Eigen::Index d = m_dimension;
     Eigen::VectorXd mean = Eigen::VectorXd::Zero(d);
     double frames = 0.0;
@@ -154,18 +177,21 @@ void DynamicModel::train(const std::vector<LabelledSequence> &sequences, Feedbac
     }
     mean /= frames;
     const int window = kCompensationWindow, fastWindow = kCompensationFastWindow;
-    Eigen::VectorXd realSlow = Eigen::VectorXd::Zero(d), generatedSlow = realSlow, realDetail = realSlow,
+    Eigen::MatrixXd realSlow = Eigen::MatrixXd::Zero(d, d), generatedSlow = realSlow, realDetail = realSlow,
                     generatedDetail = realSlow;
+    auto scatter = [](Eigen::MatrixXd &sum, const Eigen::MatrixXd &x) { sum.selfadjointView<Eigen::Lower>().rankUpdate(x.transpose()); };
     for (const LabelledSequence &s : sequences) {
         feedback.throwIfCanceled();
         const Eigen::MatrixXd generated = generateMostLikely(s.labels);
         const Eigen::MatrixXd real = s.features;
         const Eigen::MatrixXd sr = slowParts(real, window), sg = slowParts(generated, window);
-        realSlow += (sr.rowwise() - mean.transpose()).colwise().squaredNorm().transpose();
-        generatedSlow += (sg.rowwise() - mean.transpose()).colwise().squaredNorm().transpose();
-        realDetail += (slowParts(real, fastWindow) - sr).colwise().squaredNorm().transpose();
-        generatedDetail += (slowParts(generated, fastWindow) - sg).colwise().squaredNorm().transpose();
+        scatter(realSlow, sr.rowwise() - mean.transpose());
+        scatter(generatedSlow, sg.rowwise() - mean.transpose());
+        scatter(realDetail, slowParts(real, fastWindow) - sr);
+        scatter(generatedDetail, slowParts(generated, fastWindow) - sg);
     }
+    for (Eigen::MatrixXd *m : {&realSlow, &generatedSlow, &realDetail, &generatedDetail})
+        *m = m->selfadjointView<Eigen::Lower>();
     m_mean = mean;
     m_gain = gainOf(realSlow, generatedSlow);
     m_detailGain = gainOf(realDetail, generatedDetail);
@@ -229,13 +255,13 @@ Eigen::MatrixXd DynamicModel::generateStreamed(const std::vector<int> &labels, b
     return Y;
 }
 
-void DynamicModel::setCompensation(const Eigen::VectorXd &mean, const Eigen::VectorXd &gain,
-                                   const Eigen::VectorXd &detailGain, int window, int fastWindow)
+void DynamicModel::setCompensation(const Eigen::VectorXd &mean, const Eigen::MatrixXd &gain,
+                                   const Eigen::MatrixXd &detailGain, int window, int fastWindow)
 {
     if (mean.size() == 0 && gain.size() == 0) {
         m_mean.resize(0);
-        m_gain.resize(0);
-        m_detailGain.resize(0);
+        m_gain.resize(0, 0);
+        m_detailGain.resize(0, 0);
         m_window = 0;
         m_fastWindow = 0;
         return;
@@ -246,13 +272,21 @@ void DynamicModel::setCompensation(const Eigen::VectorXd &mean, const Eigen::Vec
     if (fastWindow != 0 && (window == 0 || fastWindow < 3 || fastWindow % 2 == 0 || fastWindow >= window))
         throw Error("the variance compensation's fast window must be an odd number of frames from 3, shorter "
                     "than its window");
-    if (detailGain.size() != 0 && (detailGain.size() != m_dimension || !detailGain.allFinite() || (detailGain.array() <= 0.0).any()))
-        throw Error("the variance compensation's detail gains must be positive and finite, one per dimension");
-    if (mean.size() != m_dimension || gain.size() != m_dimension)
-        throw Error("the variance compensation has " + std::to_string(gain.size()) + " gains for "
+    // A gain is a scale: d x d, symmetric and positive definite.
+    auto scale = [this](const Eigen::MatrixXd &g) {
+        return g.rows() == m_dimension && g.cols() == m_dimension && g.allFinite()
+               && (g - g.transpose()).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + g.cwiseAbs().maxCoeff())
+               && Eigen::LLT<Eigen::MatrixXd>(g).info() == Eigen::Success;
+    };
+    if (detailGain.size() != 0 && !scale(detailGain))
+        throw Error("the variance compensation's detail gain must be a symmetric positive definite "
+                    + std::to_string(m_dimension) + " x " + std::to_string(m_dimension) + " matrix");
+    if (mean.size() != m_dimension || !mean.allFinite())
+        throw Error("the variance compensation's mean has " + std::to_string(mean.size()) + " values for "
                     + std::to_string(m_dimension) + " dimensions");
-    if (!mean.allFinite() || !gain.allFinite() || (gain.array() <= 0.0).any())
-        throw Error("the variance compensation's gains must be positive and finite");
+    if (!scale(gain))
+        throw Error("the variance compensation's gain must be a symmetric positive definite "
+                    + std::to_string(m_dimension) + " x " + std::to_string(m_dimension) + " matrix");
     m_mean = mean;
     m_gain = gain;
     m_detailGain = detailGain;

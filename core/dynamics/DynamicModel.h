@@ -67,14 +67,19 @@ public:
     // model is smoother than the recordings it was trained on. It is split into its slow part s
     // (the centred moving average over `window` frames, about a syllable), its detail f - s (f the
     // centred mean over `fastWindow` frames) and the fastest part y - f; the first two are scaled
-    // per dimension to the spread the training features have in that band, the fastest is kept
+    // to the spread the training features have in that band, the fastest is kept
     // as generated (in the training features it is mostly the tracker's frame-to-frame noise):
-    //   y' = m + g (s - m) + h (f - s) + (y - f),
-    // g = s.d.(slow part of the training features) / s.d.(slow part of the trajectories generated
-    // for the training labels), both about the training mean m, and h likewise for the detail.
-    // Streaming holds window / 2 frames back. Models read from files without a fast window
-    // (fastWindow 0) scale all of y - s by h, those without `h` (window 0) the whole trajectory by
-    // g. Off unless asked for before train(); the paper's models are the ones without it.
+    //   y' = m + G (s - m) + H (f - s) + (y - f),
+    // G the optimal-transport map (the symmetric positive definite matrix with minimal
+    // displacement) that takes the covariance of the slow parts of the trajectories generated for
+    // the training labels to the covariance of the training features' slow parts, both about the
+    // training mean m, its eigenvalues bounded to [kMinCompensationGain, kMaxCompensationGain];
+    // H likewise for the detail. Matching the whole scatter, not each dimension's spread,
+    // keeps the parameters the models move together (more than the recordings do) from adding up
+    // to more motion than recorded. Streaming holds window / 2 frames back. Models read from files
+    // with a gain per dimension use them as diagonal matrices; without a fast window (fastWindow
+    // 0) they scale all of y - s by H, without `H` (window 0) the whole trajectory by G. Off unless
+    // asked for before train(); the paper's models are the ones without it.
     static constexpr double kMinCompensationGain = 0.5;
     static constexpr double kMaxCompensationGain = 3.0;
     static constexpr int kCompensationWindow = 7; // frames: 0.28 s at 25 frames/s
@@ -82,16 +87,17 @@ public:
     void setVarianceCompensation(bool on) { m_compensate = on; }
     bool compensatesVariance() const { return m_gain.size() > 0; }
     const Eigen::VectorXd &compensationMean() const { return m_mean; }
-    const Eigen::VectorXd &compensationGain() const { return m_gain; }
-    const Eigen::VectorXd &compensationDetailGain() const { return m_detailGain; }
+    const Eigen::MatrixXd &compensationGain() const { return m_gain; }
+    const Eigen::MatrixXd &compensationDetailGain() const { return m_detailGain; }
     int compensationWindow() const { return m_window; }
     int compensationFastWindow() const { return m_fastWindow; }
-    // Restores a trained compensation (model files); empty vectors turn it off, an empty
+    // Restores a trained compensation (model files); empty arguments turn it off, an empty
     // `detailGain` with window 0 scales the whole trajectory by `gain`, fastWindow 0 scales all of
-    // the detail. Throws lipsync::Error for sizes other than dimension(), a non-positive gain, a
-    // window that is not odd and > 1 or a fast window that is not odd, > 1 and below the window.
-    void setCompensation(const Eigen::VectorXd &mean, const Eigen::VectorXd &gain,
-                         const Eigen::VectorXd &detailGain = {}, int window = 0, int fastWindow = 0);
+    // the detail. Throws lipsync::Error for gains that are not dimension() x dimension(),
+    // symmetric and positive definite, a window that is not odd and > 1 or a fast window that is
+    // not odd, > 1 and below the window.
+    void setCompensation(const Eigen::VectorXd &mean, const Eigen::MatrixXd &gain,
+                         const Eigen::MatrixXd &detailGain = {}, int window = 0, int fastWindow = 0);
     // The compensation applied to a trajectory (T x d); the identity without one.
     Eigen::MatrixXd compensate(const Eigen::MatrixXd &trajectory) const;
     // log p(features | labels) in nats, the model's own objective (for Brand: the density over
@@ -128,9 +134,9 @@ private:
     int m_stateCount = PhoneSet::kCount;
     double m_frameRate = 0.0;
     bool m_compensate = false;
-    Eigen::VectorXd m_mean; // compensation: training mean m and gain g (empty: none)
-    Eigen::VectorXd m_gain;
-    Eigen::VectorXd m_detailGain; // h, empty with m_window 0
+    Eigen::VectorXd m_mean; // compensation: training mean m and gain G (empty: none)
+    Eigen::MatrixXd m_gain;
+    Eigen::MatrixXd m_detailGain; // H, empty with m_window 0
     int m_window = 0;
     int m_fastWindow = 0; // 0: the detail band reaches to the frame rate
 };

@@ -16,6 +16,16 @@ namespace lipsync {
 
 namespace {
 
+// A compensation gain (docs/models.md §5.1): a d x d matrix, or from files that scaled each
+// dimension on its own a gain per dimension, read as the diagonal matrix.
+Eigen::MatrixXd compensationGain(const QJsonObject &c, const char *field, Eigen::Index d, const std::string &path)
+{
+    const QJsonArray values = c.value(QLatin1String(field)).toArray();
+    if (!values.isEmpty() && values.first().isArray())
+        return json::toMatrix(c, field, d, d, path);
+    return json::toVector(c, field, d, path).asDiagonal();
+}
+
 std::unique_ptr<DynamicModel> newModelOfKind(ModelKind kind, const ModelOptions &options)
 {
     switch (kind) {
@@ -107,10 +117,10 @@ void saveModel(const DynamicModel &model, const std::string &path, const std::st
         o[QStringLiteral("context")] = context->tree().toJson();
     if (model.compensatesVariance()) {
         QJsonObject c{{QStringLiteral("mean"), json::fromVector(model.compensationMean())},
-                      {QStringLiteral("gain"), json::fromVector(model.compensationGain())}};
+                      {QStringLiteral("gain"), json::fromMatrix(model.compensationGain())}};
         if (model.compensationWindow() > 0) {
             c[QStringLiteral("window")] = model.compensationWindow();
-            c[QStringLiteral("detailGain")] = json::fromVector(model.compensationDetailGain());
+            c[QStringLiteral("detailGain")] = json::fromMatrix(model.compensationDetailGain());
             if (model.compensationFastWindow() > 0)
                 c[QStringLiteral("fastWindow")] = model.compensationFastWindow();
         }
@@ -179,8 +189,8 @@ std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::str
         try {
             const bool bands = c.contains(QStringLiteral("window"));
             model->setCompensation(json::toVector(c, "mean", model->dimension(), path),
-                                   json::toVector(c, "gain", model->dimension(), path),
-                                   bands ? json::toVector(c, "detailGain", model->dimension(), path) : Eigen::VectorXd(),
+                                   compensationGain(c, "gain", model->dimension(), path),
+                                   bands ? compensationGain(c, "detailGain", model->dimension(), path) : Eigen::MatrixXd(),
                                    bands ? c.value(QStringLiteral("window")).toInt(0) : 0,
                                    c.contains(QStringLiteral("fastWindow"))
                                        ? c.value(QStringLiteral("fastWindow")).toInt(-1)

@@ -13,7 +13,10 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
+#include <tuple>
 
 using namespace lipsync;
 using namespace lipsync::test;
@@ -271,30 +274,35 @@ private slots:
             QVERIFY(compensated->generateMostLikely(labels) == plain->generateMostLikely(labels));
 
             const Eigen::VectorXd &m = compensated->compensationMean();
-            Eigen::VectorXd realSlow = Eigen::VectorXd::Zero(3), rawSlow = realSlow, realDetail = realSlow,
+            const Eigen::MatrixXd &g = compensated->compensationGain(), &h = compensated->compensationDetailGain();
+            Eigen::MatrixXd realSlow = Eigen::MatrixXd::Zero(3, 3), rawSlow = realSlow, realDetail = realSlow,
                             rawDetail = realSlow;
             for (const LabelledSequence &s : training) {
                 const Eigen::MatrixXd raw = plain->generate(s.labels);
                 const Eigen::MatrixXd sr = slow(s.features), sg = slow(raw), fr = fast(s.features), fg = fast(raw);
-                realSlow += (sr.rowwise() - m.transpose()).colwise().squaredNorm().transpose();
-                rawSlow += (sg.rowwise() - m.transpose()).colwise().squaredNorm().transpose();
-                realDetail += (fr - sr).colwise().squaredNorm().transpose();
-                rawDetail += (fg - sg).colwise().squaredNorm().transpose();
-                const Eigen::VectorXd &g = compensated->compensationGain(), &h = compensated->compensationDetailGain();
-                const Eigen::MatrixXd expected =
-                    (((sg.rowwise() - m.transpose()).array().rowwise() * g.transpose().array())
-                     + ((fg - sg).array().rowwise() * h.transpose().array()) + (raw - fg).array())
-                        .matrix()
-                        .rowwise()
-                    + m.transpose();
+                const Eigen::MatrixXd a = sr.rowwise() - m.transpose(), b = sg.rowwise() - m.transpose();
+                realSlow += a.transpose() * a;
+                rawSlow += b.transpose() * b;
+                realDetail += (fr - sr).transpose() * (fr - sr);
+                rawDetail += (fg - sg).transpose() * (fg - sg);
+                // y' = m + G (s - m) + H (f - s) + (y - f), frame by frame (G, H symmetric).
+                const Eigen::MatrixXd expected = ((b * g + (fg - sg) * h + (raw - fg)).rowwise() + m.transpose());
                 QVERIFY2((compensated->generate(s.labels) - expected).cwiseAbs().maxCoeff() < 1e-9, kind.c_str());
             }
-            for (int k = 0; k < 3; ++k) {
-                QVERIFY2(std::abs(compensated->compensationGain()[k] - bounded(std::sqrt(realSlow[k] / rawSlow[k]))) < 1e-9,
+            // G and H are the optimal-transport maps of the bands' scatter: symmetric, eigenvalues
+            // within the bounds, and where none is at a bound they carry the generated scatter to
+            // the recorded one (G S_generated G = S_real).
+            for (const auto &[gain, real, raw] : {std::tuple{&g, &realSlow, &rawSlow}, std::tuple{&h, &realDetail, &rawDetail}}) {
+                QVERIFY2(((*gain) - gain->transpose()).cwiseAbs().maxCoeff() < 1e-12, kind.c_str());
+                const Eigen::VectorXd l = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(*gain).eigenvalues();
+                QVERIFY2(l.minCoeff() >= DynamicModel::kMinCompensationGain - 1e-12
+                             && l.maxCoeff() <= DynamicModel::kMaxCompensationGain + 1e-12,
                          kind.c_str());
-                QVERIFY2(std::abs(compensated->compensationDetailGain()[k]
-                                  - bounded(std::sqrt(realDetail[k] / rawDetail[k]))) < 1e-9,
-                         kind.c_str());
+                if (l.minCoeff() > DynamicModel::kMinCompensationGain + 1e-9
+                    && l.maxCoeff() < DynamicModel::kMaxCompensationGain - 1e-9) {
+                    const double error = ((*gain) * (*raw) * (*gain) - *real).norm() / real->norm();
+                    QVERIFY2(error < 1e-5, qPrintable(QStringLiteral("%1: %2").arg(kind.c_str()).arg(error)));
+                }
             }
         }
         // A damaged compensation in a model file is refused, naming the field.
@@ -306,7 +314,7 @@ private slots:
         saveModel(*model, path, "aam");
         const std::string saved = readWholeFile(path);
         for (const auto &[field, damage] : std::vector<std::pair<std::string, std::string>>{
-                 {"\"gain\":[", "-"}, {"\"detailGain\":[", "-"}, {"\"window\":", "-"}, {"\"fastWindow\":", "-"},
+                 {"\"gain\":[[", "-"}, {"\"detailGain\":[[", "-"}, {"\"window\":", "-"}, {"\"fastWindow\":", "-"},
                  {"\"fastWindow\":", "1"}}) { // negative; 13, not below the window
             std::string text = saved;
             const size_t at = text.find(field);
@@ -327,13 +335,9 @@ private slots:
         QCOMPARE(twoBands->compensationFastWindow(), 0);
         {
             const Eigen::MatrixXd y = twoBands->generateMostLikely(labels), s = slow(y);
-            const Eigen::VectorXd &m = twoBands->compensationMean(), &g = twoBands->compensationGain(),
-                                  &h = twoBands->compensationDetailGain();
-            const Eigen::MatrixXd expected = (((s.rowwise() - m.transpose()).array().rowwise() * g.transpose().array())
-                                              + ((y - s).array().rowwise() * h.transpose().array()))
-                                                 .matrix()
-                                                 .rowwise()
-                                             + m.transpose();
+            const Eigen::VectorXd &m = twoBands->compensationMean();
+            const Eigen::MatrixXd &g = twoBands->compensationGain(), &h = twoBands->compensationDetailGain();
+            const Eigen::MatrixXd expected = ((s.rowwise() - m.transpose()) * g + (y - s) * h).rowwise() + m.transpose();
             QVERIFY((twoBands->generate(labels) - expected).cwiseAbs().maxCoeff() < 1e-12);
             QVERIFY((twoBands->generate(labels) - model->generate(labels)).cwiseAbs().maxCoeff() > 1e-6);
         }
@@ -345,13 +349,33 @@ private slots:
         const auto single = loadModel(path);
         QCOMPARE(single->compensationWindow(), 0);
         const Eigen::MatrixXd y = single->generateMostLikely(labels);
-        const Eigen::MatrixXd expected =
-            ((y.rowwise() - single->compensationMean().transpose()).array().rowwise()
-             * single->compensationGain().transpose().array())
-                .matrix()
-                .rowwise()
-            + single->compensationMean().transpose();
+        const Eigen::MatrixXd expected = ((y.rowwise() - single->compensationMean().transpose()) * single->compensationGain()).rowwise()
+                                         + single->compensationMean().transpose();
         QVERIFY((single->generate(labels) - expected).cwiseAbs().maxCoeff() < 1e-12);
+        // Files with a gain per dimension (each dimension scaled on its own) read them as the
+        // diagonal matrix: y' = m + g .* (y - m).
+        QJsonArray diagonal;
+        for (int k = 0; k < 3; ++k)
+            diagonal.append(0.8 + 0.3 * k);
+        c["gain"] = diagonal;
+        o["compensation"] = c;
+        writeFileAtomically(path, QJsonDocument(o).toJson().toStdString());
+        const auto perDimension = loadModel(path);
+        QVERIFY(perDimension->compensationGain().isApprox(Eigen::Vector3d(0.8, 1.1, 1.4).asDiagonal().toDenseMatrix()));
+        const Eigen::MatrixXd scaled = ((y.rowwise() - perDimension->compensationMean().transpose()).array().rowwise()
+                                        * Eigen::RowVector3d(0.8, 1.1, 1.4).array())
+                                           .matrix()
+                                           .rowwise()
+                                       + perDimension->compensationMean().transpose();
+        QVERIFY((perDimension->generate(labels) - scaled).cwiseAbs().maxCoeff() < 1e-12);
+        // A gain that is not symmetric is refused.
+        QJsonArray skew{QJsonArray{1.0, 0.5, 0.0}, QJsonArray{0.0, 1.0, 0.0}, QJsonArray{0.0, 0.0, 1.0}};
+        c["gain"] = skew;
+        o["compensation"] = c;
+        writeFileAtomically(path, QJsonDocument(o).toJson().toStdString());
+        const std::string skewError = errorOf([&] { loadModel(path); });
+        QVERIFY2(skewError.find("compensation") != std::string::npos && skewError.find("symmetric") != std::string::npos,
+                 skewError.c_str());
     }
 
     void streamingEqualsBatchForAllKinds()
