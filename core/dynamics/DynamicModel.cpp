@@ -59,19 +59,21 @@ Eigen::MatrixXd spectral(const Eigen::MatrixXd &a, F f)
     return eigen.eigenvectors() * eigen.eigenvalues().unaryExpr(f).asDiagonal() * eigen.eigenvectors().transpose();
 }
 
-// The optimal-transport map between N(0, generated) and N(0, real) (the scatter matrices of the
-// two trajectories' band about the training mean): A = G^-1/2 (G^1/2 R G^1/2)^1/2 G^-1/2, the
-// symmetric positive definite A with A G A = R; its eigenvalues bounded both ways, a scale of the
-// trajectory, not a new one. A direction the generated trajectories never move in (a dimension
-// they hold constant) keeps its value: G is regularised by a millionth of its mean variance.
+// The optimal-transport map between N(0, Rg) and N(0, Rr) (models.md §5.1), Rg the scatter of the
+// generated trajectories' band about the training mean and Rr the recordings':
+// A = Rg^(-1/2) (Rg^(1/2) Rr Rg^(1/2))^(1/2) Rg^(-1/2), the symmetric positive definite A with
+// A Rg A = Rr; its eigenvalues bounded both ways, a scale of the trajectory, not a new one. Rg is
+// regularised by a millionth of the mean variance, so that a direction the generated trajectories
+// never leave m in (where any gain keeps them at m) does not make it singular.
 Eigen::MatrixXd gainOf(const Eigen::MatrixXd &real, const Eigen::MatrixXd &generated)
 {
     const Eigen::Index d = real.rows();
     const double floor = 1e-6 * std::max(generated.trace(), real.trace()) / double(std::max<Eigen::Index>(1, d)) + 1e-300;
-    Eigen::MatrixXd g = generated;
-    g.diagonal().array() += floor;
-    const Eigen::MatrixXd root = spectral(g, [](double l) { return std::sqrt(std::max(l, 0.0)); });
-    const Eigen::MatrixXd inverseRoot = spectral(g, [floor](double l) { return 1.0 / std::sqrt(std::max(l, floor)); });
+    Eigen::MatrixXd regularised = generated;
+    regularised.diagonal().array() += floor;
+    const Eigen::MatrixXd root = spectral(regularised, [](double l) { return std::sqrt(std::max(l, 0.0)); });
+    const Eigen::MatrixXd inverseRoot
+        = spectral(regularised, [floor](double l) { return 1.0 / std::sqrt(std::max(l, floor)); });
     const Eigen::MatrixXd middle = spectral(root * real * root, [](double l) { return std::sqrt(std::max(l, 0.0)); });
     Eigen::MatrixXd a = inverseRoot * middle * inverseRoot;
     a = 0.5 * (a + a.transpose());
@@ -179,7 +181,9 @@ void DynamicModel::train(const std::vector<LabelledSequence> &sequences, Feedbac
     const int window = kCompensationWindow, fastWindow = kCompensationFastWindow;
     Eigen::MatrixXd realSlow = Eigen::MatrixXd::Zero(d, d), generatedSlow = realSlow, realDetail = realSlow,
                     generatedDetail = realSlow;
-    auto scatter = [](Eigen::MatrixXd &sum, const Eigen::MatrixXd &x) { sum.selfadjointView<Eigen::Lower>().rankUpdate(x.transpose()); };
+    auto scatter = [](Eigen::MatrixXd &sum, const Eigen::MatrixXd &x) {
+        sum.selfadjointView<Eigen::Lower>().rankUpdate(x.transpose()); // sum += x^T x, lower half
+    };
     for (const LabelledSequence &s : sequences) {
         feedback.throwIfCanceled();
         const Eigen::MatrixXd generated = generateMostLikely(s.labels);
