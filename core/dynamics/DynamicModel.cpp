@@ -71,9 +71,11 @@ Eigen::MatrixXd gainOf(const Eigen::MatrixXd &real, const Eigen::MatrixXd &gener
     const double floor = 1e-6 * std::max(generated.trace(), real.trace()) / double(std::max<Eigen::Index>(1, d)) + 1e-300;
     Eigen::MatrixXd regularised = generated;
     regularised.diagonal().array() += floor;
-    const Eigen::MatrixXd root = spectral(regularised, [](double l) { return std::sqrt(std::max(l, 0.0)); });
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(regularised);
+    const Eigen::VectorXd rootValues = eigen.eigenvalues().cwiseMax(floor).cwiseSqrt();
+    const Eigen::MatrixXd root = eigen.eigenvectors() * rootValues.asDiagonal() * eigen.eigenvectors().transpose();
     const Eigen::MatrixXd inverseRoot
-        = spectral(regularised, [floor](double l) { return 1.0 / std::sqrt(std::max(l, floor)); });
+        = eigen.eigenvectors() * rootValues.cwiseInverse().asDiagonal() * eigen.eigenvectors().transpose();
     const Eigen::MatrixXd middle = spectral(root * real * root, [](double l) { return std::sqrt(std::max(l, 0.0)); });
     Eigen::MatrixXd a = inverseRoot * middle * inverseRoot;
     a = 0.5 * (a + a.transpose());
@@ -277,20 +279,19 @@ void DynamicModel::setCompensation(const Eigen::VectorXd &mean, const Eigen::Mat
         throw Error("the variance compensation's fast window must be an odd number of frames from 3, shorter "
                     "than its window");
     // A gain is a scale: d x d, symmetric and positive definite.
-    auto scale = [this](const Eigen::MatrixXd &g) {
-        return g.rows() == m_dimension && g.cols() == m_dimension && g.allFinite()
-               && (g - g.transpose()).cwiseAbs().maxCoeff() <= 1e-9 * (1.0 + g.cwiseAbs().maxCoeff())
-               && Eigen::LLT<Eigen::MatrixXd>(g).info() == Eigen::Success;
+    auto requireScale = [this](const Eigen::MatrixXd &g, const char *name) {
+        if (g.rows() != m_dimension || g.cols() != m_dimension || !g.allFinite()
+            || (g - g.transpose()).cwiseAbs().maxCoeff() > 1e-9 * (1.0 + g.cwiseAbs().maxCoeff())
+            || Eigen::LLT<Eigen::MatrixXd>(g).info() != Eigen::Success)
+            throw Error(std::string("the variance compensation's ") + name + " must be a symmetric positive definite "
+                        + std::to_string(m_dimension) + " x " + std::to_string(m_dimension) + " matrix");
     };
-    if (detailGain.size() != 0 && !scale(detailGain))
-        throw Error("the variance compensation's detail gain must be a symmetric positive definite "
-                    + std::to_string(m_dimension) + " x " + std::to_string(m_dimension) + " matrix");
+    if (detailGain.size() != 0)
+        requireScale(detailGain, "detail gain");
     if (mean.size() != m_dimension || !mean.allFinite())
         throw Error("the variance compensation's mean has " + std::to_string(mean.size()) + " values for "
                     + std::to_string(m_dimension) + " dimensions");
-    if (!scale(gain))
-        throw Error("the variance compensation's gain must be a symmetric positive definite "
-                    + std::to_string(m_dimension) + " x " + std::to_string(m_dimension) + " matrix");
+    requireScale(gain, "gain");
     m_mean = mean;
     m_gain = gain;
     m_detailGain = detailGain;

@@ -178,9 +178,7 @@ int decodeStream(const std::string &path, int sampleRate, bool whole,
     auto receive = [&] {
         // Stops at EAGAIN/EOF, and at a decoding error: that packet is skipped.
         while (avcodec_receive_frame(decoder.get(), frame.get()) >= 0) {
-            const double pts = frame->best_effort_timestamp != AV_NOPTS_VALUE
-                                   ? double(frame->best_effort_timestamp) * av_q2d(timeBase) - fileStart
-                                   : NAN;
+            const double pts = libav::frameSeconds(frame.get(), timeBase, fileStart);
             const AudioTimeline::Placement p = timeline.place(pts, frame->nb_samples, frame->sample_rate);
             if (p.silenceBefore) {
                 resampler.flush(converted);

@@ -102,6 +102,13 @@ double fileStartSeconds(const AVFormatContext *format)
     return format->start_time != AV_NOPTS_VALUE ? double(format->start_time) / AV_TIME_BASE : 0.0;
 }
 
+double frameSeconds(const AVFrame *frame, AVRational timeBase, double fileStart)
+{
+    if (frame->best_effort_timestamp == AV_NOPTS_VALUE)
+        return NAN;
+    return double(frame->best_effort_timestamp) * av_q2d(timeBase) - fileStart;
+}
+
 CodecPtr openDecoder(const std::string &path, AVFormatContext *format, int index)
 {
     const AVCodecParameters *par = format->streams[index]->codecpar;
@@ -338,13 +345,11 @@ std::shared_ptr<MediaScan> scanUncached(const std::string &path)
     auto receiveVideo = [&] {
         while (avcodec_receive_frame(video.get(), frame.get()) >= 0) {
             const AVStream *st = fc->streams[scan->videoStream];
-            double t;
-            if (frame->best_effort_timestamp != AV_NOPTS_VALUE)
-                t = seconds(frame->best_effort_timestamp, st->time_base) - fileStart;
-            else if (!scan->frameTimes.empty() && scan->frameRate > 0)
-                t = scan->frameTimes.back() + 1.0 / scan->frameRate;
-            else
-                t = scan->frameRate > 0 ? double(scan->frameTimes.size()) / scan->frameRate : 0.0;
+            double t = frameSeconds(frame.get(), st->time_base, fileStart);
+            if (!std::isfinite(t)) // no timestamp: one period after the last frame
+                t = !scan->frameTimes.empty() && scan->frameRate > 0
+                        ? scan->frameTimes.back() + 1.0 / scan->frameRate
+                        : (scan->frameRate > 0 ? double(scan->frameTimes.size()) / scan->frameRate : 0.0);
             scan->frameTimes.push_back(t);
             lastVideoDamaged = damaged(frame.get());
             if (lastVideoDamaged)
@@ -355,9 +360,7 @@ std::shared_ptr<MediaScan> scanUncached(const std::string &path)
     auto receiveAudio = [&] {
         while (avcodec_receive_frame(audio.get(), frame.get()) >= 0) {
             const AVStream *st = fc->streams[scan->audioStream];
-            const double pts = frame->best_effort_timestamp != AV_NOPTS_VALUE
-                                   ? seconds(frame->best_effort_timestamp, st->time_base) - fileStart
-                                   : NAN;
+            const double pts = frameSeconds(frame.get(), st->time_base, fileStart);
             scan->audioTimeline.place(pts, frame->nb_samples, frame->sample_rate);
             scan->audioSamples += frame->nb_samples;
             if (frame->sample_rate > 0)

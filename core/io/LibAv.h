@@ -51,6 +51,11 @@ FormatPtr openInput(const std::string &path);
 // timestamps less this are seconds from the file's start.
 double fileStartSeconds(const AVFormatContext *format);
 
+// A decoded frame's presentation time in seconds from the file's start (its best-effort
+// timestamp in `timeBase`, less `fileStart`), NaN when it has none. One definition for the scan's
+// clock and every reader placed on it.
+double frameSeconds(const AVFrame *frame, AVRational timeBase, double fileStart);
+
 // Opens a decoder for stream `index`. Throws lipsync::Error naming the file.
 CodecPtr openDecoder(const std::string &path, AVFormatContext *format, int index);
 

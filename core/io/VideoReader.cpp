@@ -76,13 +76,8 @@ struct VideoReader::Decoder
     bool holdsPicture() const { return picture->data[0] != nullptr; }
 
     // The held picture's presentation time in seconds from the file's start (NaN if it has none),
-    // computed as libav::scanMedia computes the clock's times.
-    double time() const
-    {
-        if (picture->best_effort_timestamp == AV_NOPTS_VALUE)
-            return NAN;
-        return double(picture->best_effort_timestamp) * av_q2d(format->streams[stream]->time_base) - fileStart;
-    }
+    // as libav::scanMedia placed it on the clock.
+    double time() const { return libav::frameSeconds(picture.get(), format->streams[stream]->time_base, fileStart); }
 
     // Moves to the last key frame at or before `seconds` from the file's start.
     bool seek(double seconds)
