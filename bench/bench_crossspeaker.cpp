@@ -2,13 +2,19 @@
 // (animation/MouthShapePrior, learnt on a prior project such as GRID s1). Leave one clip of the
 // person out: generated from the held-out clip's phones (HMM-mean: per-frame phone means, here
 // smoothed over three frames), its inner-lip opening against the tracked one within the speech, for
-// the person's own means, the prior alone and the two combined (prior weight: kappa frames). LIPSYNC_BENCH_PRIOR_PROJECT and LIPSYNC_BENCH_PERSON_PROJECT name the two
-// projects (tracked and aligned, each with its AAM); skipped without them.
+// the person's own means, the prior alone and the two combined (prior weight: kappa frames). The same
+// for the studio's default Brand (phones in context, variance compensation, covariance by
+// cross-validation) trained on the other clips with and without the prior's shift
+// (ModelOptions::meanShift). LIPSYNC_BENCH_PRIOR_PROJECT and LIPSYNC_BENCH_PERSON_PROJECT name the
+// two projects (tracked and aligned, each with its AAM); skipped without them.
 #include "aam/AamModel.h"
 #include "animation/MouthMeasures.h"
 #include "animation/MouthShapePrior.h"
 #include "animation/MouthTrack.h"
+#include "dynamics/LabelledFolder.h"
+#include "dynamics/ModelFile.h"
 #include "eval/RealismMetrics.h"
+#include "tasks/Feedback.h"
 #include "project/Project.h"
 #include "util/PhoneSet.h"
 
@@ -57,18 +63,35 @@ double correlation(const std::vector<double> &a, const std::vector<double> &b)
     return std::isfinite(r) ? r : 0.0;
 }
 
-void BM_CrossSpeakerPrior(benchmark::State &state)
+// The person of LIPSYNC_BENCH_PERSON_PROJECT and the mouths learnt on LIPSYNC_BENCH_PRIOR_PROJECT's
+// speakers; null (the benchmark skipped) without them.
+struct PriorAndPerson
+{
+    std::unique_ptr<Speaker> person;
+    MouthShapePrior mouths;
+};
+std::unique_ptr<PriorAndPerson> loadPriorAndPerson(benchmark::State &state)
 {
     const QString priorFolder = qEnvironmentVariable("LIPSYNC_BENCH_PRIOR_PROJECT");
     const QString personFolder = qEnvironmentVariable("LIPSYNC_BENCH_PERSON_PROJECT");
     if (priorFolder.isEmpty() || personFolder.isEmpty()) {
         state.SkipWithError("LIPSYNC_BENCH_PRIOR_PROJECT and LIPSYNC_BENCH_PERSON_PROJECT not set");
-        return;
+        return nullptr;
     }
+    auto out = std::make_unique<PriorAndPerson>();
+    out->mouths = MouthShapePrior::learn(loadSpeaker(priorFolder)->tracks);
+    out->person = loadSpeaker(personFolder);
+    return out;
+}
+
+void BM_CrossSpeakerPrior(benchmark::State &state)
+{
+    const std::unique_ptr<PriorAndPerson> loaded = loadPriorAndPerson(state);
+    if (!loaded)
+        return;
     const double kappa = double(state.range(0));
-    const auto prior = loadSpeaker(priorFolder);
-    const auto person = loadSpeaker(personFolder);
-    const MouthShapePrior mouths = MouthShapePrior::learn(prior->tracks);
+    const auto &person = loaded->person;
+    const MouthShapePrior &mouths = loaded->mouths;
     double own = 0, priorOnly = 0, combined = 0;
     const int clips = int(person->tracks.size());
     for (auto _ : state) {
@@ -116,5 +139,62 @@ void BM_CrossSpeakerPrior(benchmark::State &state)
                 kappa, clips, own, priorOnly, combined);
 }
 BENCHMARK(BM_CrossSpeakerPrior)->Arg(5)->Arg(20)->Arg(80)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+void BM_CrossSpeakerPriorBrand(benchmark::State &state)
+{
+    const std::unique_ptr<PriorAndPerson> loaded = loadPriorAndPerson(state);
+    if (!loaded)
+        return;
+    const Speaker &person = *loaded->person;
+    const std::vector<LabelledSequence> sequences = loadProjectSequences(person.project);
+    ModelOptions options;
+    options.brand.covariance = BrandCovariance::CrossValidated;
+    options.compensateVariance = true;
+    options.contextStates = true;
+    double sums[3] = {0, 0, 0};
+    int counted = 0;
+    for (auto _ : state) {
+        for (size_t held = 0; held < sequences.size(); ++held) {
+            std::vector<LabelledSequence> training = sequences;
+            training.erase(training.begin() + std::ptrdiff_t(held));
+            const LabelledSequence &test = sequences[held];
+            std::vector<double> recorded;
+            std::vector<int> frames;
+            for (int f = 0; f < test.frameCount(); ++f)
+                if (speech(test.labels[size_t(f)])) {
+                    frames.push_back(f);
+                    recorded.push_back(person.measurer->measure(test.features.row(f).transpose()).opening);
+                }
+            if (frames.empty())
+                continue;
+            double r3[3];
+            const double weights[3] = {0.0, 1e12, double(state.range(0))}; // person only, prior alone, both
+            for (int mode = 0; mode < 3; ++mode) {
+                ModelOptions own = options;
+                if (mode > 0)
+                    own.meanShift = projectPriorShift(loaded->mouths, *person.measurer, person.project, training, weights[mode]);
+                const std::unique_ptr<DynamicModel> model = createDynamicModel(ModelKind::Brand, own);
+                Feedback quiet;
+                model->train(training, quiet);
+                const Eigen::MatrixXd generated = model->generate(test.labels);
+                std::vector<double> opening;
+                for (int f : frames)
+                    opening.push_back(person.measurer->measure(generated.row(f).transpose()).opening);
+                r3[mode] = correlation(opening, recorded);
+                sums[mode] += r3[mode];
+            }
+            ++counted;
+            std::printf("  held out %s: person-only %.3f, prior %.3f, MAP %.3f\n", test.name.c_str(), r3[0], r3[1], r3[2]);
+        }
+    }
+    const double n = std::max(1, counted);
+    state.counters["person_only"] = sums[0] / n;
+    state.counters["prior"] = sums[1] / n;
+    state.counters["map"] = sums[2] / n;
+    std::printf("cross-speaker prior, Brand (kappa %.0f frames), %d clips left out in turn: within-speech opening "
+                "correlation person-only %.3f, prior %.3f, MAP %.3f\n",
+                double(state.range(0)), counted, sums[0] / n, sums[1] / n, sums[2] / n);
+}
+BENCHMARK(BM_CrossSpeakerPriorBrand)->Arg(80)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 } // namespace

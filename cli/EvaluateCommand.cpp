@@ -200,8 +200,8 @@ const CommandRegistration registration{
                          "streams in (the shipped aligner model and phone bigram, as `lipsync live`), reported as "
                          "\"live KIND\"")},
          {QStringLiteral("observer-crf"), QStringLiteral("N"),
-          QStringLiteral("--realism: the x264 quality (0 lossless ... 51) the machine observer's recording and renders "
-                         "are encoded at (default: the export's)")},
+          QStringLiteral("--realism: the x264 quality the machine observer's recording and renders are encoded at "
+                         "(default 0: lossless, colour at full resolution; 20: the export's)")},
          {QStringLiteral("exemplars"), QStringLiteral("K,JOIN,CUT"),
           QStringLiteral("--realism: also every model's trajectory replaced by the training folds' recorded frames "
                          "nearest it (render/ExemplarSelection: K candidates a frame, the join and cut weights), "

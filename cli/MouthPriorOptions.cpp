@@ -9,7 +9,7 @@ namespace lipsync::cli {
 std::vector<CommandOption> mouthPriorOptions(const QString &prefix)
 {
     return {{QStringLiteral("prior"), {},
-             prefix + QStringLiteral("HMM-mean's phone means start from mouths learnt on other speakers (GRID s1), "
+             prefix + QStringLiteral("the phone means of HMM-mean or Brand start from mouths learnt on other speakers (GRID s1), "
                                      "combined with the person's own frames: for a person with little footage")},
             {QStringLiteral("prior-file"), QStringLiteral("FILE"),
              prefix + QStringLiteral("--prior from this mouth prior (lipsync export prior)")},

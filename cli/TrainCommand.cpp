@@ -7,10 +7,8 @@
 #include "aam/AamModel.h"
 #include "animation/MouthMeasures.h"
 #include "animation/MouthShapePrior.h"
-#include "animation/MouthTrack.h"
 #include "dynamics/BrandModel.h"
 #include "dynamics/ContextDependentModel.h"
-#include "dynamics/HmmMeanModel.h"
 #include "dynamics/ModelFile.h"
 #include "dynamics/PhoneCoverage.h"
 #include "project/Project.h"
@@ -27,37 +25,29 @@ using namespace lipsync::cli;
 
 namespace {
 
-// --prior: HMM-mean's phone means start from mouth shapes learnt on other speakers (the shipped
-// GRID s1 prior, or --prior-file), MAP-combined with the project's own frames of the sequences
-// trained on (animation/MouthShapePrior).
-void startFromPrior(const CommandLine &args, DynamicModel &model, const std::vector<LabelledSequence> &sequences,
-                    const MouthShapePrior &prior, double kappa)
+// --prior: the phone means of HMM-mean or Brand start from mouth shapes learnt on other speakers
+// (the shipped GRID s1 prior, or --prior-file), MAP-combined with the project's own frames of the
+// sequences trained on (animation/MouthShapePrior, docs/models.md §5.4).
+Eigen::MatrixXd priorShift(const CommandLine &args, const std::vector<LabelledSequence> &sequences,
+                           const MouthShapePrior &prior, double kappa)
 {
-    auto *hmm = dynamic_cast<HmmMeanModel *>(&model);
-    if (!hmm)
-        throw UsageError(QStringLiteral("--prior starts HMM-mean's phone means (--kind hmm, without --context-states)"));
     const Project project = Project::load(args.value(QStringLiteral("project")).toStdString());
     const AamModel aam = AamModel::load(project.aamPath());
-    const MouthMeasurer measurer(aam);
-    std::vector<MouthTrack> tracks;
-    for (const LabelledSequence &s : sequences)
-        if (const Sequence *sequence = project.sequence(s.name))
-            tracks.push_back(mouthTrackOfSequence(measurer, project, *sequence));
-    hmm->setMeans(prior.personMeans(tracks, kappa));
+    return projectPriorShift(prior, MouthMeasurer(aam), project, sequences, kappa);
 }
 
 int runTrain(const CommandLine &args)
 {
     const QString kind = args.value(QStringLiteral("kind"));
     const QString out = args.value(QStringLiteral("out"));
-    const ModelOptions options = dynamicModelOptionsFrom(args);
+    ModelOptions options = dynamicModelOptionsFrom(args);
     if (!isDynamicModelKind(kind.toStdString()))
         throw UsageError(QStringLiteral("--kind must be %1").arg(QString::fromStdString(modelKindIdList())));
     double priorWeight = 0;
     const std::shared_ptr<const MouthShapePrior> prior = mouthPriorFrom(args, &priorWeight);
-    if (prior && (kind != QLatin1String("hmm") || !args.isSet(QStringLiteral("project"))))
-        throw UsageError(QStringLiteral("--prior starts HMM-mean's phone means from a project's mouths: --kind hmm "
-                                        "--project DIR"));
+    if (prior && (!modelKindTakesPrior(*parseModelKind(kind.toStdString())) || !args.isSet(QStringLiteral("project"))))
+        throw UsageError(QStringLiteral("--prior starts the phone means of HMM-mean or Brand from a project's mouths: "
+                                        "--kind hmm or brand, --project DIR"));
     std::string projectAam;
     const std::vector<LabelledSequence> sequences = loadTrainingData(args, &projectAam);
     // The model records the AAM whose parameters it generates: --aam, else the content identifier of
@@ -68,6 +58,8 @@ int runTrain(const CommandLine &args)
         aam = modelAamIdentifier(args);
     else if (!projectAam.empty())
         aam = AamModel::load(projectAam).identifier;
+    if (prior)
+        options.meanShift = priorShift(args, sequences, *prior, priorWeight);
     auto model = createDynamicModel(kind.toStdString(), options);
     Feedback feedback;
     int iterations = 0;
@@ -78,8 +70,6 @@ int runTrain(const CommandLine &args)
     };
     const auto start = std::chrono::steady_clock::now();
     model->train(sequences, feedback);
-    if (prior)
-        startFromPrior(args, *model, sequences, *prior, priorWeight);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     saveModel(*model, out.toStdString(), aam);
 
@@ -96,6 +86,8 @@ int runTrain(const CommandLine &args)
     // What the footage covers, and what it lacks for these options (docs/models.md §0).
     PhoneCoverage coverage = PhoneCoverage::of(sequences);
     coverage.contextStates = context ? states : 0;
+    coverage.takesPrior = modelKindTakesPrior(*parseModelKind(kind.toStdString()));
+    coverage.prior = prior != nullptr;
     if (const std::string advice = coverage.advice(); !advice.empty())
         std::fprintf(stderr, "lipsync train: warning: %s\n", advice.c_str());
     // Brand: its covariance, and the held-out errors that chose it (docs/models.md §2.1).

@@ -22,37 +22,37 @@
         <translation>&amp;Neues Projekt…</translation>
     </message>
     <message>
-        <location filename="../studio/app/AppCommands.cpp" line="28"/>
+        <location filename="../studio/app/AppCommands.cpp" line="29"/>
         <source>&amp;Open Project…</source>
         <translation>Projekt &amp;öffnen …</translation>
     </message>
     <message>
-        <location filename="../studio/app/AppCommands.cpp" line="30"/>
+        <location filename="../studio/app/AppCommands.cpp" line="32"/>
         <source>Open &amp;Demo Project</source>
         <translation>&amp;Demoprojekt öffnen</translation>
     </message>
     <message>
-        <location filename="../studio/app/AppCommands.cpp" line="35"/>
+        <location filename="../studio/app/AppCommands.cpp" line="38"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../studio/app/AppCommands.cpp" line="37"/>
+        <location filename="../studio/app/AppCommands.cpp" line="41"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter …</translation>
     </message>
     <message>
-        <location filename="../studio/app/AppCommands.cpp" line="39"/>
+        <location filename="../studio/app/AppCommands.cpp" line="44"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../studio/app/AppCommands.cpp" line="41"/>
+        <location filename="../studio/app/AppCommands.cpp" line="47"/>
         <source>Fit Frame to View</source>
         <translation>Bild einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/AppCommands.cpp" line="45"/>
+        <location filename="../studio/app/AppCommands.cpp" line="52"/>
         <source>&amp;About LipSync Studio</source>
         <translation>&amp;Über LipSync Studio</translation>
     </message>
@@ -386,7 +386,7 @@
     </message>
     <message>
         <location filename="../studio/export/ExportMenu.cpp" line="114"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="178"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="180"/>
         <source>Generated &amp;Frames%1 (PNG)…</source>
         <translation>Erzeugte &amp;Einzelbilder%1 (PNG)…</translation>
     </message>
@@ -412,192 +412,192 @@
     </message>
     <message>
         <location filename="../studio/export/ExportMenu.cpp" line="117"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="179"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="181"/>
         <source>Mouth &amp;Cues%1 (Rhubarb, Moho)…</source>
         <translation>Mund&amp;formen%1 (Rhubarb, Moho)…</translation>
     </message>
     <message>
         <location filename="../studio/export/ExportMenu.cpp" line="117"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="180"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="182"/>
         <source>Animation C&amp;ontrols%1 (JSON, CSV)…</source>
         <translation>Animations&amp;regler%1 (JSON, CSV)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="133"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="134"/>
         <source>Mouth S&amp;hapes…</source>
         <translation>&amp;Mundbilder…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="137"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="139"/>
         <source>The nine mouth shapes of the cues, learned from this person&apos;s frames: see them and set your own</source>
         <translation>Die neun Mundbilder der Mundformen, gelernt aus den Bildern dieser Person: ansehen und eigene festlegen</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="144"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="146"/>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="144"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="146"/>
         <source>Which trained model?</source>
         <translation>Welches trainierte Modell?</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="175"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="177"/>
         <source> of %1</source>
         <translation> von %1</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="249"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="250"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="251"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="252"/>
         <source>MP4 video (*.mp4)</source>
         <translation>MP4-Video (*.mp4)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="252"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="254"/>
         <source>Feature tables (*.csv)</source>
         <translation>Merkmalstabellen (*.csv)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="253"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="255"/>
         <source>Praat TextGrid (*.TextGrid)</source>
         <translation>Praat-TextGrid (*.TextGrid)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="255"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="257"/>
         <source>Active appearance models (*.aam)</source>
         <translation>Active Appearance Models (*.aam)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="257"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="259"/>
         <source>Dynamic models (*.model)</source>
         <translation>Dynamische Modelle (*.model)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="258"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="260"/>
         <source>Rhubarb TSV (*.tsv);;Rhubarb JSON (*.json);;Rhubarb XML (*.xml);;Moho switch data (*.dat)</source>
         <translation>Rhubarb TSV (*.tsv);;Rhubarb JSON (*.json);;Rhubarb XML (*.xml);;Moho-Schaltdaten (*.dat)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="259"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="261"/>
         <source>Controls JSON (*.json);;Controls CSV (*.csv)</source>
         <translation>Regler JSON (*.json);;Regler CSV (*.csv)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="274"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="318"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="376"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="443"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="483"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="276"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="320"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="378"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="445"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="485"/>
         <source>Cannot export</source>
         <translation>Export nicht möglich</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="276"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="278"/>
         <source>no sequence is selected</source>
         <translation>keine Sequenz ausgewählt</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="327"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="329"/>
         <source>%1 has no video to put beside the generated face</source>
         <translation>%1 hat kein Video, neben das das erzeugte Gesicht gestellt werden könnte</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="341"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="343"/>
         <source>the project has no trained dynamic model and AAM (train one in the Models panel)</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell und kein AAM (im Bereich Modelle trainieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="488"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="490"/>
         <source>the project has no AAM (build one in the Models panel)</source>
         <translation>das Projekt hat kein AAM (im Modelle-Bereich erstellen)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="495"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="497"/>
         <source>%1 needs face features and a phone alignment (track and align it first)</source>
         <translation>%1 braucht Gesichtsmerkmale und eine Lautausrichtung (zuerst verfolgen und ausrichten)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="504"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="506"/>
         <source>Export the mouth cues of %1</source>
         <translation>Mundformen von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="504"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="506"/>
         <source>Export the animation controls of %1</source>
         <translation>Animationsregler von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="332"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="356"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="334"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="358"/>
         <source>Export the generated frames of %1</source>
         <translation>Erzeugte Einzelbilder von %1 exportieren</translation>
     </message>
     <message>
         <location filename="../studio/export/ExportMenu.cpp" line="113"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="176"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="178"/>
         <source>Generated &amp;Video%1 (MP4)…</source>
         <translation>Erzeugtes &amp;Video%1 (MP4)…</translation>
     </message>
     <message>
         <location filename="../studio/export/ExportMenu.cpp" line="113"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="177"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="179"/>
         <source>Real and Generated &amp;Side by Side%1 (MP4)…</source>
         <translation>Echt und erzeugt &amp;nebeneinander%1 (MP4)…</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="333"/>
-        <location filename="../studio/export/ExportMenu.cpp" line="357"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="335"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="359"/>
         <source>Export the generated video of %1</source>
         <translation>Erzeugtes Video von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="382"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="384"/>
         <source>%1 has no face features (track it first)</source>
         <translation>%1 hat keine Gesichtsmerkmale (zuerst tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="385"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="387"/>
         <source>Export the features of %1</source>
         <translation>Merkmale von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="393"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="395"/>
         <source>%1 has no phone alignment (align it first)</source>
         <translation>%1 hat keine Phonem-Alignierung (zuerst alignieren)</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="396"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="398"/>
         <source>Export the alignment of %1</source>
         <translation>Alignierung von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="409"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="411"/>
         <source>%1 has no landmarks</source>
         <translation>%1 hat keine Landmarken</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="412"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="414"/>
         <source>Export the landmarks of %1</source>
         <translation>Landmarken von %1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="448"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="450"/>
         <source>the project has no AAM</source>
         <translation>das Projekt hat kein AAM</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="449"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="451"/>
         <source>the project has no trained dynamic model</source>
         <translation>das Projekt hat kein trainiertes dynamisches Modell</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="453"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="455"/>
         <source>Export %1</source>
         <translation>%1 exportieren</translation>
     </message>
     <message>
-        <location filename="../studio/export/ExportMenu.cpp" line="299"/>
+        <location filename="../studio/export/ExportMenu.cpp" line="301"/>
         <source>Exported to %1</source>
         <translation>Exportiert nach %1</translation>
     </message>
@@ -605,72 +605,72 @@
 <context>
     <name>lipsync::studio::FacesController</name>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="83"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="84"/>
         <source>&amp;Detect Landmarks</source>
         <translation>Landmarken &amp;erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="84"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="85"/>
         <source>&amp;Copy Previous Frame&apos;s Points</source>
         <translation>Punkte des vorigen Bildes &amp;kopieren</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="85"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="86"/>
         <source>&amp;Onion Skin of Previous Frame</source>
         <translation>&amp;Onion-Skin (vorheriges Bild)</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="87"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="88"/>
         <source>Next &amp;Unlabelled Frame</source>
         <translation>Nächstes &amp;unbeschriftetes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="88"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="89"/>
         <source>Next &amp;Worst-Fitted Frame</source>
         <translation>Nächstes &amp;schlecht angepasstes Bild</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="89"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="90"/>
         <source>&amp;Pick Frames to Label…</source>
         <translation>Bilder zum &amp;Beschriften auswählen…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="90"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="91"/>
         <source>Next &amp;Picked Frame to Review</source>
         <translation>Nächstes ausgewähltes Bild &amp;prüfen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="91"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="92"/>
         <source>&amp;Build AAM</source>
         <translation>AAM e&amp;rstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="92"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="93"/>
         <source>&amp;Track Sequence</source>
         <translation>Sequenz &amp;tracken</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="93"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="94"/>
         <source>Track &amp;All Sequences</source>
         <translation>&amp;Alle Sequenzen tracken</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="94"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="95"/>
         <source>&amp;Modes of Variation…</source>
         <translation>&amp;Variationsmoden…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="96"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="97"/>
         <source>Fa&amp;ces</source>
         <translation>&amp;Gesichter</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="125"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="126"/>
         <source>Pick Frames to Label</source>
         <translation>Bilder zum Beschriften auswählen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="126"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="127"/>
         <source>Frames to pick from the %n clip(s) (an AAM with the paper&apos;s 32 parameters wants 100-200):</source>
         <translation>
             <numerusform>Anzahl der Bilder aus dem Clip (ein AAM mit den 32 Parametern des Artikels braucht 100–200):</numerusform>
@@ -678,38 +678,38 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="240"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="255"/>
         <source>Fit error %1</source>
         <translation>Anpassungsfehler %1</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="241"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="256"/>
         <source>No face found by the tracker</source>
         <translation>Der Tracker hat kein Gesicht gefunden</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="265"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="280"/>
         <source>Detect landmarks in %1, frame %2</source>
         <translation>Landmarken in %1, Bild %2 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="267"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="282"/>
         <source>Finding the face…</source>
         <translation>Gesicht wird gesucht…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="294"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="309"/>
         <source>Detect landmarks in frame %1</source>
         <translation>Landmarken in Bild %1 erkennen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="297"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="312"/>
         <source>No landmarks were detected.</source>
         <translation>Es wurden keine Landmarken erkannt.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="315"/>
-        <location filename="../studio/annotate/FacesController.cpp" line="353"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="330"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="368"/>
         <source>Pick %n frame(s) to label</source>
         <translation>
             <numerusform>%n Bild zum Beschriften auswählen</numerusform>
@@ -717,7 +717,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="361"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="376"/>
         <source>Picked %1 of %2 frames with a face from %n clip(s); Shift+W shows them, the most doubtful first, then Build AAM.</source>
         <translation>
             <numerusform>%1 von %2 Bildern mit Gesicht aus einem Clip ausgewählt; Umschalt+W zeigt sie, die zweifelhaftesten zuerst, danach AAM erstellen.</numerusform>
@@ -725,57 +725,57 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="369"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="384"/>
         <source>No frames could be picked.</source>
         <translation>Es konnten keine Bilder ausgewählt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="378"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="393"/>
         <source>Picked frame %1 of %2: %3, frame %4</source>
         <translation>Ausgewähltes Bild %1 von %2: %3, Bild %4</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="384"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="399"/>
         <source> (fit not measured)</source>
         <translation> (Anpassung nicht gemessen)</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="387"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="402"/>
         <source>; an AAM built without it moves its points by %1 % of the eye distance (most doubtful first)</source>
         <translation>; ein AAM ohne dieses Bild verschiebt seine Punkte um %1 % des Augenabstands (das zweifelhafteste zuerst)</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="431"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="446"/>
         <source>Copy points of frame %1 to frame %2</source>
         <translation>Punkte von Bild %1 nach Bild %2 kopieren</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="450"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="465"/>
         <source>Every frame of this sequence is labelled.</source>
         <translation>Alle Bilder dieser Sequenz sind beschriftet.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="460"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="475"/>
         <source>Track this sequence first to rank its frames by fit error.</source>
         <translation>Tracken Sie diese Sequenz zuerst, um ihre Bilder nach Anpassungsfehler zu ordnen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="489"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="504"/>
         <source>The project&apos;s AAM could not be loaded.</source>
         <translation>Das AAM des Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="513"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="528"/>
         <source>An AAM needs at least 3 frames with all 23 points; this project has %1.</source>
         <translation>Ein AAM braucht mindestens 3 Bilder mit allen 23 Punkten; dieses Projekt hat %1.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="515"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="530"/>
         <source>Label more frames (Detect Landmarks, then correct the points).</source>
         <translation>Beschriften Sie weitere Bilder (Landmarken erkennen, dann die Punkte korrigieren).</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="524"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="539"/>
         <source>Build AAM from %n frame(s)</source>
         <translation>
             <numerusform>AAM aus %n Bild erstellen</numerusform>
@@ -783,22 +783,22 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="526"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="541"/>
         <source>Reading the labelled frames…</source>
         <translation>Beschriftete Bilder werden gelesen…</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="554"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="569"/>
         <source>Build AAM %1</source>
         <translation>AAM %1 erstellen</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="556"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="571"/>
         <source>AAM %1 built from %2 frames: %3 combined modes%4</source>
         <translation>AAM %1 aus %2 Bildern erstellt: %3 kombinierte Moden%4</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="560"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="575"/>
         <source> (%n frame(s) skipped)</source>
         <translation>
             <numerusform> (%n Bild übersprungen)</numerusform>
@@ -806,27 +806,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="565"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="580"/>
         <source>The AAM could not be built.</source>
         <translation>Das AAM konnte nicht erstellt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="580"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="595"/>
         <source>Tracking needs an AAM.</source>
         <translation>Zum Tracken wird ein AAM benötigt.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="581"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="596"/>
         <source>Label a few frames and choose Faces ▸ Build AAM first.</source>
         <translation>Beschriften Sie einige Bilder und wählen Sie zuerst Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="599"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="614"/>
         <source>Track %1</source>
         <translation>%1 tracken</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/annotate/FacesController.cpp" line="599"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="614"/>
         <source>Track %n sequence(s)</source>
         <translation>
             <numerusform>%n Sequenz tracken</numerusform>
@@ -834,7 +834,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/annotate/FacesController.cpp" line="667"/>
+        <location filename="../studio/annotate/FacesController.cpp" line="682"/>
         <source>Tracking failed.</source>
         <translation>Das Tracking ist fehlgeschlagen.</translation>
     </message>
@@ -1549,213 +1549,213 @@
 <context>
     <name>lipsync::studio::MainWindow</name>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="83"/>
+        <location filename="../studio/app/MainWindow.cpp" line="82"/>
         <source>Annotate</source>
         <translation>Annotieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="84"/>
+        <location filename="../studio/app/MainWindow.cpp" line="83"/>
         <source>Preview &amp;&amp; Compare</source>
         <translation>Vorschau &amp;&amp; Vergleich</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="86"/>
+        <location filename="../studio/app/MainWindow.cpp" line="85"/>
         <source>Live</source>
         <translation>Live</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="121"/>
+        <location filename="../studio/app/MainWindow.cpp" line="119"/>
         <source>Models could not be written into the project&apos;s folder.</source>
         <translation>Modelle konnten nicht in den Projektordner geschrieben werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="124"/>
+        <location filename="../studio/app/MainWindow.cpp" line="122"/>
         <source>%1 was not applied: it would leave the project unsaveable (%2).</source>
         <translation>%1 wurde nicht ausgeführt: Das Projekt ließe sich danach nicht mehr speichern (%2).</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="136"/>
+        <location filename="../studio/app/MainWindow.cpp" line="134"/>
         <source>Playing without sound: %1.</source>
         <translation>Wiedergabe ohne Ton: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="142"/>
-        <location filename="../studio/app/MainWindow.cpp" line="143"/>
+        <location filename="../studio/app/MainWindow.cpp" line="140"/>
+        <location filename="../studio/app/MainWindow.cpp" line="141"/>
         <source>No project open</source>
         <translation>Kein Projekt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="164"/>
+        <location filename="../studio/app/MainWindow.cpp" line="162"/>
         <source>Generated &amp;Face</source>
         <translation>Generiertes &amp;Gesicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="170"/>
+        <location filename="../studio/app/MainWindow.cpp" line="168"/>
         <source>&amp;Whole Face (Eyes Included)</source>
         <translation>&amp;Ganzes Gesicht (mit Augen)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="172"/>
+        <location filename="../studio/app/MainWindow.cpp" line="170"/>
         <source>Synthesise the whole modelled face; otherwise the recording&apos;s own eyes and upper face are kept</source>
         <translation>Das ganze modellierte Gesicht synthetisieren; sonst bleiben die Augen und das Obergesicht der Aufnahme erhalten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="166"/>
+        <location filename="../studio/app/MainWindow.cpp" line="164"/>
         <source>&amp;Synthesised Skin</source>
         <translation>&amp;Synthetisierte Haut</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="168"/>
+        <location filename="../studio/app/MainWindow.cpp" line="166"/>
         <source>Paste the AAM&apos;s synthesis of the lower face, skin included; otherwise the recording&apos;s own lower face is moved to the generated shape and only the inside of the mouth is synthesised</source>
         <translation>Die AAM-Synthese des unteren Gesichts samt Haut einsetzen; sonst wird das eigene untere Gesicht der Aufnahme in die erzeugte Form bewegt und nur das Mundinnere synthetisiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="174"/>
+        <location filename="../studio/app/MainWindow.cpp" line="172"/>
         <source>&amp;Detail from Training Images</source>
         <translation>&amp;Details aus Trainingsbildern</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="176"/>
+        <location filename="../studio/app/MainWindow.cpp" line="174"/>
         <source>Add the teeth, lip highlights and skin detail of the AAM&apos;s nearest training images to the model&apos;s smooth texture</source>
         <translation>Zähne, Glanzlichter der Lippen und Hautdetails der nächstgelegenen Trainingsbilder des AAM zur glatten Textur des Modells hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="178"/>
+        <location filename="../studio/app/MainWindow.cpp" line="176"/>
         <source>&amp;Match the Frame&apos;s Lighting</source>
         <translation>&amp;Beleuchtung an das Bild anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="195"/>
+        <location filename="../studio/app/MainWindow.cpp" line="193"/>
         <source>&amp;Close the Lips on /p b m/</source>
         <translation>&amp;Lippen bei /p b m/ schließen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="197"/>
+        <location filename="../studio/app/MainWindow.cpp" line="195"/>
         <source>Close the generated lips on the bilabials /p b m/, as speakers do; off: the model&apos;s trajectory as generated</source>
         <translation>Die erzeugten Lippen bei den Bilabialen /p b m/ schließen, wie Sprecher es tun; aus: die Trajektorie des Modells, wie sie erzeugt wurde</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="243"/>
+        <location filename="../studio/app/MainWindow.cpp" line="241"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="247"/>
+        <location filename="../studio/app/MainWindow.cpp" line="245"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="257"/>
+        <location filename="../studio/app/MainWindow.cpp" line="255"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="261"/>
+        <location filename="../studio/app/MainWindow.cpp" line="259"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="282"/>
+        <location filename="../studio/app/MainWindow.cpp" line="280"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="283"/>
+        <location filename="../studio/app/MainWindow.cpp" line="281"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="284"/>
+        <location filename="../studio/app/MainWindow.cpp" line="282"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="286"/>
+        <location filename="../studio/app/MainWindow.cpp" line="284"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="317"/>
+        <location filename="../studio/app/MainWindow.cpp" line="315"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="318"/>
+        <location filename="../studio/app/MainWindow.cpp" line="316"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="337"/>
+        <location filename="../studio/app/MainWindow.cpp" line="335"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="349"/>
+        <location filename="../studio/app/MainWindow.cpp" line="347"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="360"/>
+        <location filename="../studio/app/MainWindow.cpp" line="358"/>
         <source>&amp;Live: Speak and Watch the Face</source>
         <translation>&amp;Live: Sprechen und das Gesicht beobachten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="362"/>
+        <location filename="../studio/app/MainWindow.cpp" line="360"/>
         <source>Speak into the microphone and watch the face move</source>
         <translation>Ins Mikrofon sprechen und dem Gesicht beim Bewegen zusehen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="366"/>
+        <location filename="../studio/app/MainWindow.cpp" line="364"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="370"/>
+        <location filename="../studio/app/MainWindow.cpp" line="368"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="374"/>
+        <location filename="../studio/app/MainWindow.cpp" line="372"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="375"/>
+        <location filename="../studio/app/MainWindow.cpp" line="373"/>
         <source>&amp;User Guide</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="378"/>
+        <location filename="../studio/app/MainWindow.cpp" line="376"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="387"/>
+        <location filename="../studio/app/MainWindow.cpp" line="385"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="407"/>
+        <location filename="../studio/app/MainWindow.cpp" line="405"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="118"/>
+        <location filename="../studio/app/MainWindow.cpp" line="116"/>
         <source>The media of this sequence could not be read.</source>
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="454"/>
+        <location filename="../studio/app/MainWindow.cpp" line="452"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="456"/>
+        <location filename="../studio/app/MainWindow.cpp" line="454"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="460"/>
+        <location filename="../studio/app/MainWindow.cpp" line="463"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1763,43 +1763,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="469"/>
+        <location filename="../studio/app/MainWindow.cpp" line="472"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="470"/>
+        <location filename="../studio/app/MainWindow.cpp" line="473"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="470"/>
+        <location filename="../studio/app/MainWindow.cpp" line="473"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="476"/>
+        <location filename="../studio/app/MainWindow.cpp" line="479"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="489"/>
+        <location filename="../studio/app/MainWindow.cpp" line="492"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="497"/>
-        <location filename="../studio/app/MainWindow.cpp" line="505"/>
+        <location filename="../studio/app/MainWindow.cpp" line="500"/>
+        <location filename="../studio/app/MainWindow.cpp" line="508"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="504"/>
+        <location filename="../studio/app/MainWindow.cpp" line="507"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="256"/>
+        <location filename="../studio/app/MainWindow.cpp" line="254"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -1825,254 +1825,284 @@
 <context>
     <name>lipsync::studio::ModelsPanel</name>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="56"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="59"/>
         <source>Appearance model</source>
         <translation>Erscheinungsmodell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="57"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="60"/>
         <source>Phoneme aligner</source>
         <translation>Phonem-Aligner</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="83"/>
         <source>Build AAM…</source>
         <translation>AAM erstellen …</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="102"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="106"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="102"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="106"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="102"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="106"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="281"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="292"/>
         <source>Made in this session; written when the project is saved</source>
         <translation>In dieser Sitzung erstellt; wird beim Speichern des Projekts geschrieben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="293"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="304"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="84"/>
         <source>Train</source>
         <translation>Trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="67"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="70"/>
         <source>%1 states for phones in context</source>
         <translation>%1 Zustände für Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="68"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="71"/>
         <source>one state per phone</source>
         <translation>ein Zustand je Phonem</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="71"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="74"/>
         <source>%1, full covariances</source>
         <translation>%1, volle Kovarianzen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="73"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="76"/>
         <source>%1 parameters, %2, variance compensation</source>
         <translation>%1 Parameter, %2, Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="74"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="77"/>
         <source>%1 parameters, %2</source>
         <translation>%1 Parameter, %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="81"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="84"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="82"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="85"/>
         <source>Evaluate (k-fold)</source>
         <translation>Evaluieren (k-fach)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="82"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="249"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="85"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="260"/>
         <source>Realism</source>
         <translation>Realismus</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="85"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="88"/>
         <source>Variance compensation</source>
         <translation>Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="86"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="89"/>
         <source>Phones in context</source>
         <translation>Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="86"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="90"/>
         <source>Paper&apos;s models</source>
         <translation>Modelle des Artikels</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="112"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="90"/>
+        <source>Start from other speakers</source>
+        <translation>Von anderen Sprechern ausgehen</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="116"/>
         <source>VarPro / Levenberg–Marquardt</source>
         <translation>VarPro / Levenberg–Marquardt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="113"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="117"/>
         <source>Gradient ascent (paper)</source>
         <translation>Gradientenaufstieg (Artikel)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="114"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
         <source>Diagonal A</source>
         <translation>Diagonales A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="115"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="119"/>
         <source>Full A</source>
         <translation>Volles A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="122"/>
         <source>Covariance by CV</source>
         <translation>Kovarianz per KV</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="119"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="123"/>
         <source>Diagonal covariance</source>
         <translation>Diagonale Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="120"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="124"/>
         <source>Full covariance</source>
         <translation>Volle Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="142"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="146"/>
         <source>Scale each model&apos;s generated trajectories to the spread of the training features: lips that open and close as much as the recording&apos;s, at the cost of a larger error per frame. Off: the paper&apos;s models exactly.</source>
         <translation>Skaliert die erzeugten Trajektorien jedes Modells auf die Streuung der Trainingsmerkmale: Lippen, die sich so weit öffnen und schließen wie in der Aufnahme, um den Preis eines größeren Fehlers je Bild. Aus: genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="150"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="154"/>
         <source>Train each model on states for phones in their context (the neighbouring phones and the part of the phone), tied by decision trees: lips that anticipate the next sound. Off: one state per phone, the paper&apos;s models exactly.</source>
         <translation>Jedes Modell auf Zuständen für Phoneme in ihrem Kontext trainieren (die benachbarten Phoneme und der Teil des Phonems), durch Entscheidungsbäume gebündelt: Lippen, die den nächsten Laut vorwegnehmen. Aus: ein Zustand je Phonem, genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="157"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="161"/>
+        <source>For a person with little footage: HMM-mean&apos;s and Brand&apos;s mouth for each sound starts from the mouths of other speakers (GRID s1), carried onto this face, and moves to the person&apos;s own as their frames of that sound add up. Used by Train and Realism.</source>
+        <translation>Für eine Person mit wenig Material: Der Mund von HMM-Mittelwert und Brand beginnt für jeden Laut bei den Mündern anderer Sprecher (GRID s1), übertragen auf dieses Gesicht, und geht zum eigenen Mund der Person über, je mehr Bilder sie von diesem Laut hat. Gilt für Trainieren und Realismus.</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="168"/>
         <source>Train and evaluate the paper&apos;s models exactly: no compensation or phones in context, Brand with diagonal covariances, the DPDS by the paper&apos;s Algorithm 1 and gradient ascent without the variance prior; Realism renders without lip closure, colour matching or exemplar detail.</source>
         <translation>Genau die Modelle des Artikels trainieren und evaluieren: keine Kompensation und keine Phone im Kontext, Brand mit diagonalen Kovarianzen, das DPDS mit Algorithmus 1 des Artikels und Gradientenanstieg ohne Varianz-Prior; Realismus rendert ohne Lippenschluss, Farbanpassung und Exemplar-Details.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="179"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="190"/>
         <source>folds: </source>
         <translation>Teilmengen (k-fach): </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="189"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="200"/>
         <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
         <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="190"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="201"/>
         <source>Train the checked models on every sequence with features and phonemes</source>
         <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="191"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="202"/>
         <source>Stop training or evaluation; the previous models stay</source>
         <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="192"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="203"/>
         <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
         <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="197"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="208"/>
         <source>Render the held-out sequences of the same folds into their recordings and measure the lips with dlib&apos;s landmarks: opening correlation, articulation, /p b m/ closures, lag, sharpness, seam</source>
         <translation>Die zurückgehaltenen Sequenzen derselben Folds in ihre Aufnahmen rendern und die Lippen mit dlibs Landmarken messen: Korrelation der Öffnung, Artikulation, Verschlüsse bei /p b m/, Versatz, Schärfe, Naht</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="225"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="236"/>
         <source>AAM parameter </source>
         <translation>AAM-Parameter </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="226"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="237"/>
         <source>Which AAM parameter to plot over time</source>
         <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="236"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="247"/>
         <source>Not evaluated yet: Evaluate (k-fold) in the Models panel draws the paper&apos;s Figure 4 for the checked models.</source>
         <translation>Noch nicht evaluiert: Evaluieren (k-fach) im Modelle-Panel zeichnet Abbildung 4 des Artikels für die gewählten Modelle.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="241"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="252"/>
         <source>Not measured yet: Realism in the Models panel renders held-out sequences and measures the lips on them.</source>
         <translation>Noch nicht gemessen: Realismus im Modelle-Panel rendert zurückgehaltene Sequenzen und misst die Lippen darauf.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="246"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="257"/>
         <source>Trajectory</source>
         <translation>Trajektorie</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="247"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="258"/>
         <source>Training</source>
         <translation>Training</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="248"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="259"/>
         <source>Evaluation</source>
         <translation>Evaluation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="329"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="340"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter tracken und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="382"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="401"/>
+        <source>Cannot start from other speakers: %1</source>
+        <translation>Kann nicht von anderen Sprechern ausgehen: %1</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="411"/>
+        <source>%1 of %2 phones never occur in the footage: their face comes from other speakers&apos; mouths</source>
+        <translation>%1 von %2 Phonen kommen im Material nie vor: ihr Gesicht stammt von den Mündern anderer Sprecher</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="413"/>
         <source>%1 of %2 phones never occur in the footage: their face is guessed from the average</source>
         <translation>%1 von %2 Phonen kommen im Material nie vor: ihr Gesicht wird aus dem Durchschnitt geschätzt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="386"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="417"/>
         <source>%1 have fewer than %2 frames</source>
         <translation>%1 haben weniger als %2 Bilder</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="388"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="419"/>
         <source>Phones in context made no context states: too little footage for them</source>
         <translation>Phone im Kontext haben keine Kontextzustände gebildet: zu wenig Material dafür</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="392"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="423"/>
         <source>More footage of the person (%1 s of speech now) covers more.</source>
         <translation>Mehr Material der Person (jetzt %1 s Sprache) deckt mehr ab.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="423"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="458"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="425"/>
+        <source>Tick Start from other speakers to take the phones it lacks from other people&apos;s mouths.</source>
+        <translation>Mit „Von anderen Sprechern ausgehen“ kommen die fehlenden Phone von den Mündern anderer Menschen.</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="449"/>
+        <source>Cannot start from other speakers without the project&apos;s AAM.</source>
+        <translation>Ohne das AAM des Projekts kann nicht von anderen Sprechern ausgegangen werden.</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="468"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="509"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="425"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="470"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -2080,27 +2110,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="446"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="497"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="469"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="520"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="471"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="522"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="478"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="529"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="497"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="548"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds: mean and 95 % interval over the folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen: Mittelwert und 95-%-Intervall über die Teilmengen.</numerusform>
@@ -2108,17 +2138,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="556"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="611"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="557"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="612"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="492"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="543"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -2126,12 +2156,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="122"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="126"/>
         <source>Brand&apos;s output covariances. By CV: diagonal or full, whichever of the two generates held-out training sequences more closely (cross-validation). Diagonal: the paper&apos;s model.</source>
         <translation>Brands Ausgabekovarianzen. Per KV: diagonal oder voll, je nachdem, welche der beiden zurückgehaltene Trainingssequenzen genauer erzeugt (Kreuzvalidierung). Diagonal: das Modell der Veröffentlichung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="525"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="580"/>
         <source>Realism of %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
@@ -2139,7 +2169,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="530"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="585"/>
         <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
         <translation>
             <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
@@ -2147,47 +2177,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="585"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="640"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="586"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="641"/>
         <source>Failed: %1.</source>
         <translation>Fehlgeschlagen: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="588"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="643"/>
         <source>Canceled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="619"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="674"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="624"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="679"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="455"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="506"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="648"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="703"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="658"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="713"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="672"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="727"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>
@@ -3126,43 +3156,43 @@
 <context>
     <name>lipsync::studio::SpeakerAlignerTrainer</name>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="116"/>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="111"/>
         <source>Train the Speaker&apos;s Own Aligner…</source>
         <translation>Eigenes Ausrichtungsmodell des Sprechers trainieren…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="121"/>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="117"/>
         <source>Train an aligner model on this project&apos;s transcribed speech (three minutes of words or more), and align the project with it from then on</source>
         <translation>Ein Ausrichtungsmodell auf der transkribierten Sprache dieses Projekts trainieren (drei Minuten Wörter oder mehr) und das Projekt fortan damit ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="147"/>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="143"/>
         <source> Its %1 min of words can train the speaker&apos;s own aligner: Model ▸ Train the Speaker&apos;s Own Aligner…</source>
         <translation> Seine %1 min Wörter reichen, um ein eigenes Ausrichtungsmodell des Sprechers zu trainieren: Modell ▸ Eigenes Ausrichtungsmodell des Sprechers trainieren…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="155"/>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="151"/>
         <source>Train the Speaker&apos;s Own Aligner</source>
         <translation>Eigenes Ausrichtungsmodell des Sprechers trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="163"/>
-        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="213"/>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="159"/>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="207"/>
         <source>The aligner could not be trained.</source>
         <translation>Das Ausrichtungsmodell konnte nicht trainiert werden.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="164"/>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="160"/>
         <source>The model is written into the project&apos;s folder, and the bundled demo is read-only: save the project in a folder of your own first.</source>
         <translation>Das Modell wird in den Projektordner geschrieben, und die mitgelieferte Demo ist schreibgeschützt: speichern Sie das Projekt zuerst in einem eigenen Ordner.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="217"/>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="211"/>
         <source>Trained on %1</source>
         <translation>Auf %1 trainiert</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="220"/>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="214"/>
         <source>The speaker&apos;s own aligner is trained on %n sequences</source>
         <translation>
             <numerusform>Das eigene Ausrichtungsmodell des Sprechers ist auf %n Sequenz trainiert</numerusform>
@@ -3170,7 +3200,7 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="221"/>
+        <location filename="../studio/timeline/SpeakerAlignerTrainer.cpp" line="215"/>
         <source> (%1 min of words). On %2 sequences it was not trained on, %3 % of its word boundaries are within 40 ms of the project&apos;s timings. The project is aligned with it from now on.</source>
         <translation> (%1 min Wörter). Auf %2 Sequenzen, auf denen es nicht trainiert wurde, liegen %3 % seiner Wortgrenzen innerhalb von 40 ms der Zeiten des Projekts. Das Projekt wird fortan damit ausgerichtet.</translation>
     </message>
@@ -3617,270 +3647,270 @@
 <context>
     <name>lipsync::studio::TimelinePanel</name>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="190"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="189"/>
         <source>Zoom out (wheel down)</source>
         <translation>Verkleinern (Mausrad nach unten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="191"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="190"/>
         <source>Zoom in (wheel up)</source>
         <translation>Vergrößern (Mausrad nach oben)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="192"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="191"/>
         <source>Fit</source>
         <translation>Einpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="192"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="191"/>
         <source>Show the whole sequence</source>
         <translation>Die ganze Sequenz zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="456"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="462"/>
         <source>Align</source>
         <translation>Ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="88"/>
         <source>Align this sequence&apos;s transcript to its audio (words and phones)</source>
         <translation>Das Transkript dieser Sequenz am Ton ausrichten (Wörter und Phone)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
         <source>Align All</source>
         <translation>Alle ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="89"/>
         <source>Align every sequence that has a transcript</source>
         <translation>Jede Sequenz mit Transkript ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="91"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="90"/>
         <source>Re-align Selection</source>
         <translation>Auswahl neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="92"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="91"/>
         <source>Align the selected stretch again, keeping the words whose timing you edited</source>
         <translation>Den ausgewählten Abschnitt neu ausrichten; Wörter mit bearbeitetem Timing bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="95"/>
         <source>Adapt to Speaker</source>
         <translation>An Sprecher anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="107"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="521"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="106"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="527"/>
         <source>Built-in Model (GRID Speaker)</source>
         <translation>Eingebautes Modell (GRID-Sprecher)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="108"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="107"/>
         <source>Align with the model shipped with the studio, trained on one GRID speaker</source>
         <translation>Mit dem mitgelieferten Modell ausrichten, trainiert auf einem GRID-Sprecher</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="109"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="108"/>
         <source>Generic US English (CMU Sphinx)</source>
         <translation>Allgemeines US-Englisch (CMU Sphinx)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="110"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="109"/>
         <source>Align with CMU Sphinx&apos;s US-English model trained on many speakers (Debian package pocketsphinx-en-us)</source>
         <translation>Mit dem US-englischen Modell von CMU Sphinx ausrichten, trainiert auf vielen Sprechern (Debian-Paket pocketsphinx-en-us)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
         <source>Split at Cursor</source>
         <translation>Am Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="126"/>
         <source>Split the interval under the cursor</source>
         <translation>Das Intervall unter dem Cursor teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="128"/>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="675"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="681"/>
         <source>Merge with Next</source>
         <translation>Mit nächstem verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="128"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="127"/>
         <source>Join the selected interval with the next one</source>
         <translation>Das ausgewählte Intervall mit dem nächsten verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
         <source>Relabel…</source>
         <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="130"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="129"/>
         <source>Change the label of the selected interval</source>
         <translation>Die Beschriftung des ausgewählten Intervalls ändern</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
         <source>Insert Silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="131"/>
         <source>Make the selection a silence</source>
         <translation>Die Auswahl zur Stille machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Insert Breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="132"/>
         <source>Make the selection a breath</source>
         <translation>Die Auswahl zum Atmer machen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
         <source>Play Selection</source>
         <translation>Auswahl abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="133"/>
         <source>Play the selected stretch (Space in the timeline)</source>
         <translation>Den ausgewählten Abschnitt abspielen (Leertaste in der Zeitleiste)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Play Word</source>
         <translation>Wort abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="134"/>
         <source>Play the word under the cursor</source>
         <translation>Das Wort unter dem Cursor abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
         <source>Play All</source>
         <translation>Alles abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="135"/>
         <source>Play the whole sequence</source>
         <translation>Die ganze Sequenz abspielen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="136"/>
         <source>Pronunciations…</source>
         <translation>Aussprachen…</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="138"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="137"/>
         <source>The project&apos;s pronunciations, and the words espeak-ng guessed</source>
         <translation>Die Aussprachen des Projekts und die von espeak-ng geschätzten Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="179"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="178"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="180"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="179"/>
         <source>The acoustic model the aligner uses</source>
         <translation>Das akustische Modell, das die Ausrichtung verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="144"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="143"/>
         <source>Show Spectrogram</source>
         <translation>Spektrogramm anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="145"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="144"/>
         <source>Show the spectrogram under the waveform in the timeline</source>
         <translation>Das Spektrogramm unter der Wellenform in der Zeitleiste anzeigen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="317"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="304"/>
         <source>No audio: %1</source>
         <translation>Kein Ton: %1</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="336"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="323"/>
         <source>Alignment of the speech in the Preview: %1 (read-only; Back to Sequence there to edit)</source>
         <translation>Alignierung der Sprache in der Vorschau: %1 (schreibgeschützt; dort „Zurück zur Sequenz“ zum Bearbeiten)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="350"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="337"/>
         <source>No audio</source>
         <translation>Kein Ton</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="420"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="426"/>
         <source>Align %1</source>
         <translation>%1 ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="433"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="439"/>
         <source>No sequence has a transcript to align.</source>
         <translation>Keine Sequenz hat ein Transkript zum Ausrichten.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="457"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="463"/>
         <source>The transcript of %1 changed since its boundaries were edited. Aligning it again replaces the edited boundaries. Align anyway?</source>
         <translation>Das Transkript von %1 wurde geändert, nachdem seine Grenzen bearbeitet wurden. Erneutes Alignieren ersetzt die bearbeiteten Grenzen. Trotzdem alignieren?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="468"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="474"/>
         <source>Every word of %1 is user-edited: nothing to align there.</source>
         <translation>Jedes Wort von %1 ist von Hand bearbeitet: Dort gibt es nichts zu alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="489"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="495"/>
         <source>Nothing to re-align: the selection holds no words, or only words you edited.</source>
         <translation>Nichts neu auszurichten: Die Auswahl enthält keine Wörter oder nur von Ihnen bearbeitete.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="492"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="498"/>
         <source>Re-align %1</source>
         <translation>%1 neu ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="438"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="444"/>
         <source>Align all sequences</source>
         <translation>Alle Sequenzen ausrichten</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="97"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="96"/>
         <source>Adapt the aligner to each recording&apos;s voice before aligning it (slower; better for voices unlike the model&apos;s training speakers)</source>
         <translation>Den Aligner vor dem Ausrichten an die Stimme jeder Aufnahme anpassen (langsamer; besser für Stimmen, die den Trainingssprechern des Modells unähnlich sind)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="275"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="262"/>
         <source>The timeline aligns with Generic US English, adapted to each recording&apos;s speaker (Model menu): the built-in model knows only GRID&apos;s speaker s1.</source>
         <translation>Die Zeitleiste aligniert mit Allgemeines US-Englisch, an den Sprecher jeder Aufnahme angepasst (Menü Modell): Das eingebaute Modell kennt nur GRIDs Sprecher s1.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="277"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="264"/>
         <source>The timeline aligns with the built-in model of GRID&apos;s speaker s1. For another speaker, choose Model ▸ Generic US English and Adapt to Speaker.</source>
         <translation>Die Zeitleiste richtet mit dem eingebauten Modell des GRID-Sprechers s1 aus. Für einen anderen Sprecher wählen Sie Modell ▸ Allgemeines US-Englisch und An Sprecher anpassen.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="522"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="528"/>
         <source>The Project&apos;s Aligner (%1)</source>
         <translation>Aligner des Projekts (%1)</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="547"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="553"/>
         <source>The alignment failed.</source>
         <translation>Die Ausrichtung ist fehlgeschlagen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="572"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="578"/>
         <source>espeak-ng guessed the pronunciation of %n word(s): check them in Pronunciations…</source>
         <translation>
             <numerusform>espeak-ng hat die Aussprache von %n Wort/Wörtern geschätzt: prüfen Sie sie unter Aussprachen…</numerusform>
@@ -3888,17 +3918,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="594"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="600"/>
         <source>%1: the alignment came out as it was; nothing changed.</source>
         <translation>%1: Die Alignierung ist unverändert geblieben.</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="601"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="607"/>
         <source>No transcript fits its sound by this aligner: its model probably does not know this speaker. Choose Model ▸ Generic US English and Adapt to Speaker, or train the project&apos;s own aligner.</source>
         <translation>Nach diesem Aligner passt kein Transkript zu seinem Ton: Sein Modell kennt diesen Sprecher vermutlich nicht. Wählen Sie Modell ▸ Allgemeines US-Englisch und An Sprecher anpassen, oder trainieren Sie den eigenen Aligner des Projekts.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="606"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="612"/>
         <source>%n transcript(s) do not fit the sound: %1. Check that they are the clips&apos; words (marked in the sequence list).</source>
         <translation>
             <numerusform>%n Transkript passt nicht zum Ton: %1. Prüfen Sie, ob es die Wörter des Clips sind (in der Sequenzliste markiert).</numerusform>
@@ -3906,7 +3936,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="612"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="618"/>
         <source>%n sequence(s) could not be aligned; the others were.</source>
         <translation>
             <numerusform>%n Sequenz konnte nicht ausgerichtet werden; die anderen wurden ausgerichtet.</numerusform>
@@ -3914,52 +3944,52 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="651"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="657"/>
         <source>Move word boundary</source>
         <translation>Wortgrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="651"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="657"/>
         <source>Move phone boundary</source>
         <translation>Phongrenze verschieben</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="659"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="665"/>
         <source>Split interval</source>
         <translation>Intervall teilen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="676"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="682"/>
         <source>These phones belong to two words, “%1” and “%2”. Merge the words as well?</source>
         <translation>Diese Phone gehören zu zwei Wörtern, „%1“ und „%2“. Die Wörter ebenfalls verbinden?</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="679"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="685"/>
         <source>Merge Phones and Words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="685"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="691"/>
         <source>Merge intervals</source>
         <translation>Intervalle verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="685"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="691"/>
         <source>Merge phones and words</source>
         <translation>Phone und Wörter verbinden</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="717"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="723"/>
         <source>Insert breath</source>
         <translation>Atmer einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="717"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="723"/>
         <source>Insert silence</source>
         <translation>Stille einfügen</translation>
     </message>
     <message>
-        <location filename="../studio/timeline/TimelinePanel.cpp" line="738"/>
+        <location filename="../studio/timeline/TimelinePanel.cpp" line="744"/>
         <source>Relabel as %1</source>
         <translation>Umbenennen in %1</translation>
     </message>
@@ -3990,62 +4020,62 @@
         <translation>Transkript &amp;vorschlagen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="41"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="42"/>
         <source>&amp;Accept Proposed Transcript</source>
         <translation>Vorgeschlagenes Transkript &amp;übernehmen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="38"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="39"/>
         <source>Propose a transcript of this sequence by speech recognition (CMU Sphinx&apos;s US-English models), marked as not checked until you edit or accept it</source>
         <translation>Ein Transkript dieser Sequenz per Spracherkennung vorschlagen (die US-englischen Modelle von CMU Sphinx), als nicht geprüft markiert, bis Sie es bearbeiten oder übernehmen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="40"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="41"/>
         <source>Needs CMU Sphinx&apos;s US-English model (Debian package pocketsphinx-en-us)</source>
         <translation>Benötigt das US-englische Modell von CMU Sphinx (Debian-Paket pocketsphinx-en-us)</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="48"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="50"/>
         <source>Take the proposed transcript of this sequence as checked, as it is</source>
         <translation>Das vorgeschlagene Transkript dieser Sequenz unverändert als geprüft übernehmen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="90"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="92"/>
         <source>Propose Transcript</source>
         <translation>Transkript vorschlagen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="91"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="93"/>
         <source>%1 has a transcript. Proposing one replaces it with the words speech recognition hears. Propose anyway?</source>
         <translation>%1 hat ein Transkript. Ein Vorschlag ersetzt es durch die Wörter, die die Spracherkennung hört. Trotzdem vorschlagen?</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="99"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="101"/>
         <source>Propose transcript of %1</source>
         <translation>Transkript von %1 vorschlagen</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="119"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="121"/>
         <source>No transcript could be proposed.</source>
         <translation>Es konnte kein Transkript vorgeschlagen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="140"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="142"/>
         <source>The transcript of %1 changed while its speech was recognised: the proposal was not applied.</source>
         <translation>Das Transkript von %1 wurde geändert, während seine Sprache erkannt wurde: Der Vorschlag wurde nicht übernommen.</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="147"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="149"/>
         <source>Speech recognition proposes the transcript %1 has: nothing changed.</source>
         <translation>Die Spracherkennung schlägt das Transkript vor, das %1 schon hat: Nichts wurde geändert.</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="154"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="156"/>
         <source>Transcript of %1 proposed: check it, then edit or accept it.</source>
         <translation>Transkript von %1 vorgeschlagen: Prüfen Sie es, dann bearbeiten oder übernehmen Sie es.</translation>
     </message>
     <message>
-        <location filename="../studio/app/TranscriptProposer.cpp" line="156"/>
+        <location filename="../studio/app/TranscriptProposer.cpp" line="158"/>
         <source>Transcript of %1 proposed: check it, the most doubtful words first: %2.</source>
         <translation>Transkript von %1 vorgeschlagen: Prüfen Sie es, die unsichersten Wörter zuerst: %2.</translation>
     </message>

@@ -4,6 +4,7 @@
 #include "animation/MouthTrack.h"
 #include "dynamics/LabelledSequence.h"
 #include "io/AtomicFile.h"
+#include "project/Project.h"
 #include "util/Error.h"
 #include "util/PhoneSet.h"
 
@@ -128,6 +129,21 @@ Eigen::MatrixXd MouthShapePrior::personMeans(const std::vector<MouthTrack> &trac
         out.row(p) = mean.transpose();
     }
     return out;
+}
+
+Eigen::MatrixXd MouthShapePrior::personShift(const std::vector<MouthTrack> &tracks, double kappa) const
+{
+    return personMeans(tracks, kappa) - personMeans(tracks, 0.0);
+}
+
+Eigen::MatrixXd projectPriorShift(const MouthShapePrior &prior, const MouthMeasurer &measurer, const Project &project,
+                                  const std::vector<LabelledSequence> &training, double kappa)
+{
+    std::vector<MouthTrack> tracks;
+    for (const LabelledSequence &t : training)
+        if (const Sequence *sequence = project.sequence(t.name))
+            tracks.push_back(mouthTrackOfSequence(measurer, project, *sequence));
+    return prior.personShift(tracks, kappa);
 }
 
 MouthShapePrior MouthShapePrior::load(const std::string &path)

@@ -14,7 +14,10 @@
 
 namespace lipsync {
 
+struct LabelledSequence;
+class MouthMeasurer;
 struct MouthTrack;
+class Project;
 
 class MouthShapePrior
 {
@@ -32,6 +35,9 @@ public:
     // the prior combined with their own frames (41 x d; PhoneSet order). Throws lipsync::Error when
     // the tracks have too few frames to map points to parameters.
     Eigen::MatrixXd personMeans(const std::vector<MouthTrack> &tracks, double kappa = kDefaultKappa) const;
+    // What the prior adds to the person's own per-phone means: personMeans(kappa) minus
+    // personMeans(0), for DynamicModel::setMeanShift (ModelOptions::meanShift).
+    Eigen::MatrixXd personShift(const std::vector<MouthTrack> &tracks, double kappa = kDefaultKappa) const;
 
     const Eigen::VectorXd &meanShape() const { return m_mean; }
     const Eigen::MatrixXd &displacements() const { return m_displacement; } // 41 x 46, face sizes
@@ -42,5 +48,10 @@ private:
     Eigen::MatrixXd m_displacement; // 41 x 46
     Eigen::VectorXd m_frames;       // 41: frames each phone was learnt from
 };
+
+// personShift() for the project's sequences named in `training` (each tracked and aligned), through
+// the project's AAM as `measurer` measures it. Errors as mouthTrackOfSequence and personMeans.
+Eigen::MatrixXd projectPriorShift(const MouthShapePrior &prior, const MouthMeasurer &measurer, const Project &project,
+                                  const std::vector<LabelledSequence> &training, double kappa);
 
 } // namespace lipsync

@@ -33,6 +33,14 @@ Eigen::MatrixXd floorCovariance(const Eigen::MatrixXd &C, const Eigen::VectorXd 
 
 } // namespace
 
+void BrandModel::shiftMeans(const Eigen::MatrixXd &shift)
+{
+    checkMeanShift(shift, staticMean.rows());
+    staticMean += shift;
+    if (fullCovariance())
+        jointMean.leftCols(shift.cols()) += shift;
+}
+
 void BrandModel::fit(const std::vector<LabelledSequence> &sequences, Feedback &feedback)
 {
     feedback.throwIfCanceled();

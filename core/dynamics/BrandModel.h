@@ -80,6 +80,9 @@ public:
     // diagonalL1, fullL1}), as in the model file's parameters.
     QJsonObject covarianceJson() const;
 
+    // The static means, and with full covariances the joint means' static half.
+    void shiftMeans(const Eigen::MatrixXd &shift) override;
+
     QJsonObject parametersToJson() const override;
     void parametersFromJson(const QJsonObject &json, const std::string &file) override;
 

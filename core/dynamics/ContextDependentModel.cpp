@@ -114,6 +114,15 @@ void ContextDependentModel::fit(const std::vector<LabelledSequence> &sequences, 
     m_dimension = m_inner->dimension();
 }
 
+void ContextDependentModel::shiftMeans(const Eigen::MatrixXd &shift)
+{
+    checkMeanShift(shift, PhoneSet::kCount);
+    Eigen::MatrixXd states(m_tree.stateCount(), shift.cols());
+    for (int s = 0; s < m_tree.stateCount(); ++s)
+        states.row(s) = shift.row(m_tree.phoneOf(s));
+    m_inner->shiftMeans(states);
+}
+
 Eigen::MatrixXd ContextDependentModel::generateMostLikely(const std::vector<int> &labels) const
 {
     checkGenerationInput(labels);

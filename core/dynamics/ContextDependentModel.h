@@ -34,6 +34,8 @@ public:
     double logLikelihood(const std::vector<int> &labels, const Eigen::MatrixXd &features) const override;
     double trajectoryLogLikelihood(const std::vector<int> &labels,
                                    const Eigen::MatrixXd &features) const override;
+    // `shift` per phone (41 x d): each state moves by its phone's row.
+    void shiftMeans(const Eigen::MatrixXd &shift) override;
     QJsonObject parametersToJson() const override { return m_inner->parametersToJson(); }
     void parametersFromJson(const QJsonObject &json, const std::string &file) override;
 

@@ -330,6 +330,15 @@ int ContextTree::state(const PhoneContext &context) const
     return nodes[size_t(i)].state;
 }
 
+int ContextTree::phoneOf(int state) const
+{
+    for (size_t p = 0; p < m_trees.size(); ++p)
+        for (const Node &node : m_trees[p])
+            if (node.question < 0 && node.state == state)
+                return int(p);
+    throw Error("no context state " + std::to_string(state) + " in the trees");
+}
+
 std::vector<int> ContextTree::states(const std::vector<int> &phoneLabels) const
 {
     const std::vector<PhoneContext> contexts = frameContexts(phoneLabels);

@@ -70,6 +70,9 @@ public:
     PhoneContext predicted(int phone, int left, int i) const;
     int predictedLength(int phone) const { return m_length.empty() ? 1 : std::max(1, m_length[size_t(phone)]); }
 
+    // The phone whose tree holds `state` (each phone's states are its own tree's leaves).
+    int phoneOf(int state) const;
+
     // "AA: L-bilabial, not pos-last" — the questions answered on the way to a state.
     std::string describe(int state) const;
 

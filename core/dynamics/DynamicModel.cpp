@@ -149,6 +149,20 @@ private:
 
 } // namespace
 
+void DynamicModel::shiftMeans(const Eigen::MatrixXd &)
+{
+    throw Error("a " + kind() + " model has no per-phone means to start from a prior");
+}
+
+void DynamicModel::checkMeanShift(const Eigen::MatrixXd &shift, Eigen::Index rows) const
+{
+    checkTrained();
+    if (shift.rows() != rows || shift.cols() != m_dimension || !shift.allFinite())
+        throw Error("a shift of the means of " + std::to_string(shift.rows()) + " x " + std::to_string(shift.cols())
+                    + (shift.allFinite() ? "" : " with values that are not finite") + " for a model of "
+                    + std::to_string(rows) + " x " + std::to_string(m_dimension));
+}
+
 void DynamicModel::train(const std::vector<LabelledSequence> &sequences, Feedback &feedback)
 {
     validateSequences(sequences, m_stateCount);
@@ -163,6 +177,8 @@ void DynamicModel::train(const std::vector<LabelledSequence> &sequences, Feedbac
         rate = s.frameRate > 0 ? s.frameRate : rate;
     }
     fit(sequences, feedback);
+    if (m_meanShift.size() > 0)
+        shiftMeans(m_meanShift);
     m_frameRate = rate;
     m_mean.resize(0);
     m_gain.resize(0, 0);

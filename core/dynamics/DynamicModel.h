@@ -36,6 +36,16 @@ public:
     void setStateCount(int states);
     bool isTrained() const { return m_dimension > 0; }
 
+    // A starting point learnt elsewhere (animation/MouthShapePrior::personShift, docs/models.md
+    // §5.4): train() moves each phone's mean by shift.row(phone) (41 x d) once the parameters are
+    // fitted, before the variance compensation is estimated. Empty: none. Only kinds for which
+    // modelKindTakesPrior() holds have per-phone means to move; train() throws for the others.
+    void setMeanShift(Eigen::MatrixXd shift) { m_meanShift = std::move(shift); }
+    // Moves each label's mean (static and, for Brand, the joint mean's static half) by
+    // shift.row(label): stateCount() x d of a trained model. Throws lipsync::Error for another
+    // shape, values that are not finite, or a kind without per-label means.
+    virtual void shiftMeans(const Eigen::MatrixXd &shift);
+
     // Validates (validateSequences) and fits the parameters. Reports progress and the objective
     // per iteration, polls cancel (throws Canceled; the model is then left unchanged). Records the
     // sequences' frame rate; sequences at different rates are an Error (the dynamics are per frame).
@@ -125,6 +135,8 @@ protected:
     void checkTrained() const;
     void checkGenerationInput(const std::vector<int> &labels) const;
     void checkScoringInput(const std::vector<int> &labels, const Eigen::MatrixXd &features) const;
+    // shiftMeans()'s checks: trained, `rows` x d, finite.
+    void checkMeanShift(const Eigen::MatrixXd &shift, Eigen::Index rows) const;
 
     int m_dimension = 0;
 
@@ -134,6 +146,7 @@ private:
     int m_stateCount = PhoneSet::kCount;
     double m_frameRate = 0.0;
     bool m_compensate = false;
+    Eigen::MatrixXd m_meanShift; // setMeanShift()
     Eigen::VectorXd m_mean; // compensation: training mean m and gain G (empty: none)
     Eigen::MatrixXd m_gain;
     Eigen::MatrixXd m_detailGain; // H, empty with m_window 0

@@ -17,13 +17,10 @@ void HmmMeanModel::fit(const std::vector<LabelledSequence> &sequences, Feedback 
     feedback.setProgress(1.0);
 }
 
-void HmmMeanModel::setMeans(const Eigen::MatrixXd &means)
+void HmmMeanModel::shiftMeans(const Eigen::MatrixXd &shift)
 {
-    checkTrained();
-    if (means.rows() != m_mean.rows() || means.cols() != m_mean.cols() || !means.allFinite())
-        throw Error("phone means of " + std::to_string(means.rows()) + " x " + std::to_string(means.cols())
-                    + " for a model of " + std::to_string(m_mean.rows()) + " x " + std::to_string(m_mean.cols()));
-    m_mean = means;
+    checkMeanShift(shift, m_mean.rows());
+    m_mean += shift;
 }
 
 LinearRecursion HmmMeanModel::recursion() const

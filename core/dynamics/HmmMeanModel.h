@@ -18,9 +18,7 @@ public:
     void parametersFromJson(const QJsonObject &json, const std::string &file) override;
 
     const Eigen::MatrixXd &means() const { return m_mean; }         // P x d
-    // Replaces the trained phone means (P x d, e.g. MAP-combined with a prior learnt from other
-    // speakers: animation/MouthShapePrior). Throws lipsync::Error for another shape.
-    void setMeans(const Eigen::MatrixXd &means);
+    void shiftMeans(const Eigen::MatrixXd &shift) override;
     const Eigen::MatrixXd &variances() const { return m_variance; } // P x d
 
 protected:

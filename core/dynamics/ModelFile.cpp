@@ -80,6 +80,8 @@ std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOpti
     if (options.contextStates)
         model = std::make_unique<ContextDependentModel>(std::move(model), options.context);
     model->setVarianceCompensation(options.compensateVariance);
+    if (modelKindTakesPrior(kind))
+        model->setMeanShift(options.meanShift);
     return model;
 }
 

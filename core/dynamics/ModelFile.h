@@ -31,6 +31,9 @@ struct ModelOptions
     // Every kind: context-dependent states tied by decision trees (ContextDependentModel, §5.2).
     bool contextStates = false;
     ContextTreeOptions context;
+    // Kinds that take a prior (modelKindTakesPrior): each phone's mean moves by this row once
+    // fitted (41 x d, DynamicModel::setMeanShift; MouthShapePrior::personShift). Empty: none.
+    Eigen::MatrixXd meanShift;
 
     // The paper's models exactly, as far as they are well defined (docs/models.md §8, the paper
     // preset): no variance compensation, no phones in context, Brand with diagonal covariances,

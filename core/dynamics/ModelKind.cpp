@@ -48,6 +48,11 @@ bool isDynamicModelKind(std::string_view id)
     return parseModelKind(id).has_value();
 }
 
+bool modelKindTakesPrior(ModelKind kind)
+{
+    return kind == ModelKind::HmmMean || kind == ModelKind::Brand;
+}
+
 std::string modelKindIdList(std::string_view lastSeparator, std::string_view separator)
 {
     const std::vector<ModelKind> &kinds = allModelKinds();

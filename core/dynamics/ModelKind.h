@@ -27,6 +27,9 @@ const char *modelKindId(ModelKind kind);
 // The kind of an id (exact, lower case), or nothing.
 std::optional<ModelKind> parseModelKind(std::string_view id);
 bool isDynamicModelKind(std::string_view id);
+// Whether the kind has per-phone means a prior learnt from other speakers can move
+// (DynamicModel::setMeanShift): HMM-mean and Brand.
+bool modelKindTakesPrior(ModelKind kind);
 // The ids for messages, the paper's model first: "dpds, slds, brand or hmm" (`lastSeparator`
 // " or "), "dpds, slds, brand, hmm" (", ") or "dpds|slds|brand|hmm" ("|" with `separator` "|").
 std::string modelKindIdList(std::string_view lastSeparator = " or ", std::string_view separator = ", ");

@@ -43,8 +43,8 @@ std::string PhoneCoverage::advice() const
     std::string out;
     if (!unseen.empty())
         out += std::to_string(unseen.size()) + " of " + std::to_string(kSpeechPhones)
-               + " phones never occur in the training footage (" + joined(unseen)
-               + "): the model guesses their face from the average.";
+               + " phones never occur in the training footage (" + joined(unseen) + "): "
+               + (prior ? "their face comes from other speakers' mouths." : "the model guesses their face from the average.");
     if (!rare.empty())
         out += std::string(out.empty() ? "" : " ") + std::to_string(rare.size()) + " have fewer than "
                + std::to_string(kMinimumVarianceFrames) + " frames (" + joined(rare)
@@ -56,6 +56,8 @@ std::string PhoneCoverage::advice() const
     if (!out.empty())
         out += " More footage of the person (" + std::to_string(int(speechSeconds + 0.5))
                + " s of speech now) covers more.";
+    if (takesPrior && !prior && (!unseen.empty() || !rare.empty()))
+        out += " Starting from other speakers' mouths (the prior) fills the phones this footage lacks.";
     return out;
 }
 

@@ -23,13 +23,17 @@ struct PhoneCoverage
     double speechSeconds = 0;        // frames labelled with a speech phone, in seconds
     // Phones in context: the tied states trained (0: not asked for).
     int contextStates = 0;
+    // Whether the model could start from other speakers' mouths (docs/models.md §5.4): false for
+    // kinds without per-phone means; `prior` whether it did.
+    bool takesPrior = false, prior = false;
 
     static PhoneCoverage of(const std::vector<LabelledSequence> &sequences);
     static constexpr int kSpeechPhones = PhoneSet::kCount - 2; // without silence and breath
 
     // What the footage lacks for these options, one or two sentences, or empty when it covers
     // them: phones never seen, phones too rare for a variance of their own, and phones in context
-    // that made no state beyond the phones themselves.
+    // that made no state beyond the phones themselves; for a model that could start from other
+    // speakers' mouths and did not, that it may.
     std::string advice() const;
     // {"speechSeconds", "unseen": [..], "rare": [..], "contextStates", "advice"}
     QJsonObject toJson() const;

@@ -11,6 +11,7 @@ EncodedAppearance::EncodedAppearance(int streams, int crf)
     if (!m_folder.isValid())
         throw Error("no temporary folder for the machine observer's encodes");
     m_options.crf = crf;
+    m_options.fullChroma = crf == 0; // lossless: colour not subsampled either
     for (int s = 0; s < streams; ++s)
         m_exporters.push_back(std::make_unique<VideoExporter>(path(s), m_options));
 }

@@ -1,8 +1,8 @@
 #pragma once
-// The frames the machine observer judges (MachineObserver), as a viewer gets them: each stream of
-// one sequence — the recording and each rendering — is encoded as `lipsync export video` and
-// `render` encode (VideoExporter: H.264, the export's quality), decoded back, and the mouth's
-// appearance read in the stream's own mouth box. The recording's stream is encoded a second time
+// The frames the machine observer judges (MachineObserver): each stream of one sequence — the
+// recording and each rendering — is encoded by the exporter of `lipsync export video` and `render`
+// (VideoExporter: H.264; losslessly with colour at full resolution, or at an export's quality),
+// decoded back, and the mouth's appearance read in the stream's own mouth box. The recording's stream is encoded a second time
 // for the control that compares a recording with its own re-encode. Streams are written as their
 // frames come (bounded memory) into a temporary folder that goes with the object.
 #include "render/VideoExporter.h"
@@ -23,7 +23,7 @@ class EncodedAppearance
 {
 public:
     // `streams` streams of frames of one size; stream 0 is the recording. Encoded at x264's
-    // constant rate factor `crf` (0: lossless).
+    // constant rate factor `crf` (0: lossless, and 4:4:4 so that the colour is not halved either).
     EncodedAppearance(int streams, int crf);
     ~EncodedAppearance();
     EncodedAppearance(const EncodedAppearance &) = delete;

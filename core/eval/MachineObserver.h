@@ -11,8 +11,9 @@
 // tell them apart; 1.0 that it always can.
 //
 // Both sides pass through the same encoder first (the renders are exported, the recording is
-// re-encoded by the same exporter), so that compression cannot give the render away; a control
-// compares the recording with its own second re-encode, which should read about 0.5.
+// re-encoded by the same exporter; by default losslessly at full colour resolution), so that
+// compression cannot give the render away; a control compares the recording with its own second
+// re-encode, which should read about 0.5.
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 

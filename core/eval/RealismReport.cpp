@@ -2,8 +2,6 @@
 
 #include "aam/AamModel.h"
 #include "animation/MouthMeasures.h"
-#include "animation/MouthTrack.h"
-#include "dynamics/HmmMeanModel.h"
 #include "aam/FaceDetectorPool.h"
 #include "align/FrameLabels.h"
 #include "align/StreamingPhoneRecognizer.h"
@@ -346,15 +344,15 @@ RealismMethod summariseMethod(const std::vector<std::vector<const RealismSequenc
 }
 
 // Every fold's models, trained on its training folds (or as much of their speech as
-// cv.trainingSpeechSeconds asks: result.trainingSpeechSeconds says how much each got), then
-// `adjust`ed with that training set; `exemplars`, when given, receives each fold's training
-// trajectories.
-using FoldAdjustment = std::function<void(const std::vector<LabelledSequence> &, std::vector<std::shared_ptr<DynamicModel>> &)>;
+// cv.trainingSpeechSeconds asks: result.trainingSpeechSeconds says how much each got), each phone's
+// mean moved by `prior` of that training set when given (ModelOptions::meanShift); `exemplars`,
+// when given, receives each fold's training trajectories.
+using FoldPrior = std::function<Eigen::MatrixXd(const std::vector<LabelledSequence> &)>;
 std::vector<std::vector<std::shared_ptr<DynamicModel>>> trainEveryFold(const std::vector<LabelledSequence> &sequences,
                                                                        const EvaluationOptions &cv,
                                                                        RealismResult &result, Feedback &feedback,
                                                                        std::vector<std::vector<Eigen::MatrixXd>> *exemplars,
-                                                                       const FoldAdjustment &adjust)
+                                                                       const FoldPrior &prior)
 {
     std::vector<std::vector<std::shared_ptr<DynamicModel>>> models;
     for (int f = 0; f < cv.folds; ++f) {
@@ -369,29 +367,24 @@ std::vector<std::vector<std::shared_ptr<DynamicModel>>> trainEveryFold(const std
             for (const LabelledSequence &t : trainingSet)
                 exemplars->back().push_back(t.features);
         }
-        models.push_back(trainFoldModels(trainingSet, cv.kinds, cv.modelOptions, child,
+        ModelOptions foldOptions = cv.modelOptions;
+        if (prior)
+            foldOptions.meanShift = prior(trainingSet);
+        models.push_back(trainFoldModels(trainingSet, cv.kinds, foldOptions, child,
                                          "fold " + std::to_string(f + 1) + "/" + std::to_string(cv.folds) + ": "));
-        if (adjust)
-            adjust(trainingSet, models.back());
     }
     return models;
 }
 
-// HMM-mean's phone means started from other speakers' mouths (options.mouthPrior), combined with
-// each fold's own training frames; none without a prior.
-FoldAdjustment startFromPrior(const Project &project, const AamModel &aam, const RealismOptions &options)
+// The phone means of HMM-mean and Brand started from other speakers' mouths (options.mouthPrior),
+// combined with each fold's own training frames; none without a prior.
+FoldPrior startFromPrior(const Project &project, const AamModel &aam, const RealismOptions &options)
 {
     if (!options.mouthPrior)
         return {};
     auto measurer = std::make_shared<const MouthMeasurer>(aam);
-    return [&project, &options, measurer](const std::vector<LabelledSequence> &trainingSet,
-                                          std::vector<std::shared_ptr<DynamicModel>> &fold) {
-        std::vector<MouthTrack> tracks;
-        for (const LabelledSequence &t : trainingSet)
-            tracks.push_back(mouthTrackOfSequence(*measurer, project, *project.sequence(t.name)));
-        for (const std::shared_ptr<DynamicModel> &model : fold)
-            if (auto *hmm = dynamic_cast<HmmMeanModel *>(model.get()))
-                hmm->setMeans(options.mouthPrior->personMeans(tracks, options.mouthPriorWeight));
+    return [&project, &options, measurer](const std::vector<LabelledSequence> &trainingSet) {
+        return projectPriorShift(*options.mouthPrior, *measurer, project, trainingSet, options.mouthPriorWeight);
     };
 }
 

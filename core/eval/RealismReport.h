@@ -42,7 +42,6 @@
 #include "eval/Evaluation.h"
 #include "eval/RealismMetrics.h"
 #include "render/ExemplarSelection.h"
-#include "render/VideoExporter.h"
 
 #include <QJsonObject>
 
@@ -81,10 +80,12 @@ struct RealismOptions
     // (render/ExemplarSelection), reported as "<kind> exemplars". None: not measured.
     std::optional<ExemplarSelection::Options> exemplars;
     // The x264 quality at which the machine observer's streams are encoded (EncodedAppearance):
-    // the export's by default.
-    int observerCrf = VideoExportOptions{}.crf;
-    // HMM-mean's phone means started from other speakers' mouths, combined with each fold's own
-    // frames (animation/MouthShapePrior); null: the person's own means alone.
+    // 0, lossless with colour at full resolution, by default, so that the encoder hides nothing
+    // and gives nothing away (the recording against its own re-encode reads 0.5); the export's
+    // quality (VideoExportOptions::crf) is what a viewer of an export gets.
+    int observerCrf = 0;
+    // The phone means of HMM-mean and Brand started from other speakers' mouths, combined with
+    // each fold's own frames (animation/MouthShapePrior); null: the person's own means alone.
     std::shared_ptr<const MouthShapePrior> mouthPrior;
     double mouthPriorWeight = MouthShapePrior::kDefaultKappa;
 };

@@ -214,7 +214,7 @@ struct VideoExporter::Impl
         videoCodec = avcodec_alloc_context3(codec);
         videoCodec->width = width + (width & 1);
         videoCodec->height = height + (height & 1);
-        videoCodec->pix_fmt = AV_PIX_FMT_YUV420P;
+        videoCodec->pix_fmt = options.fullChroma ? AV_PIX_FMT_YUV444P : AV_PIX_FMT_YUV420P;
         videoCodec->time_base = variable ? AVRational{1, kVariableTimeBase} : AVRational{frameRate.den, frameRate.num};
         videoCodec->framerate = frameRate;
         videoCodec->sample_aspect_ratio = AVRational{1, 1};
@@ -248,7 +248,7 @@ struct VideoExporter::Impl
         // Exact rounding: swscale's fast path darkens every pass by about one level, which an
         // export of an export (or of a render beside its recording) would accumulate.
         sws = sws_getContext(videoCodec->width, videoCodec->height, AV_PIX_FMT_BGR24,
-                             videoCodec->width, videoCodec->height, AV_PIX_FMT_YUV420P,
+                             videoCodec->width, videoCodec->height, videoCodec->pix_fmt,
                              SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr, nullptr, nullptr);
         if (!sws)
             throw Error("cannot create the colour converter", path);

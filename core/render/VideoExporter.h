@@ -35,6 +35,9 @@ struct VideoExportOptions
     // x264 constant rate factor (0 lossless ... 51; 18-23 look transparent) and speed preset.
     int crf = 20;
     std::string preset = "veryfast";
+    // Colour at the picture's full resolution (4:4:4, H.264's High 4:4:4 profile) instead of
+    // 4:2:0, which halves it and which every player decodes. With crf 0 the encode is lossless.
+    bool fullChroma = false;
     // Encoder threads (0: libx264 chooses, about 1.5 per core).
     int threads = 0;
     // Bits per second of the AAC stream.

@@ -1,6 +1,8 @@
 #include "build/ModelsPanel.h"
 
 #include "aam/AamModel.h"
+#include "animation/MouthMeasures.h"
+#include "animation/MouthShapePrior.h"
 #include "context/ErrorReporter.h"
 #include "context/ModelKinds.h"
 #include "context/ModelStore.h"
@@ -22,6 +24,7 @@
 #include "tasks/Feedback.h"
 #include "tasks/TaskRunner.h"
 #include "util/Error.h"
+#include "util/ResourceLocator.h"
 #include "widgets/ElidedLabel.h"
 
 #include <QAction>
@@ -76,37 +79,9 @@ QString modelSummary(const DynamicModel &model)
 
 } // namespace
 
-ModelsPanel::ModelsPanel(QWidget *parent)
-    : QWidget(parent), m_list(new QTreeWidget(this)), m_buildAam(new QPushButton(tr("Build AAM…"), this)),
-      m_train(new QPushButton(tr("Train"), this)), m_cancel(new QPushButton(tr("Cancel"), this)),
-      m_evaluate(new QPushButton(tr("Evaluate (k-fold)"), this)), m_realism(new QPushButton(tr("Realism"), this)),
-      m_dpdsOptimizer(new QComboBox(this)),
-      m_sldsA(new QComboBox(this)), m_brandCovariance(new QComboBox(this)),
-      m_compensateVariance(new QCheckBox(tr("Variance compensation"), this)),
-      m_contextStates(new QCheckBox(tr("Phones in context"), this)), m_paper(new QCheckBox(tr("Paper's models"), this)), m_folds(new QSpinBox(this)),
-      m_parameter(new QSpinBox(this)), m_status(new ElidedLabel(this))
+// The kinds with their options, one row each, then the options of every kind.
+QGridLayout *ModelsPanel::optionsGrid()
 {
-    // The models and their options scroll; the actions and the status below them hold still
-    // (always in view, never moved by models added or a longer status).
-    auto *layout = new QVBoxLayout(this);
-    layout->setContentsMargins(4, 4, 4, 4);
-    layout->setSpacing(3);
-    auto *scroll = new QScrollArea(this);
-    scroll->setObjectName(QStringLiteral("modelsScroll"));
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidgetResizable(true);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    auto *optionsPage = new QWidget(scroll);
-    auto *optionsLayout = new QVBoxLayout(optionsPage);
-    optionsLayout->setContentsMargins(0, 0, 0, 0);
-    m_list->setHeaderLabels({tr("Model"), tr("Kind"), tr("File")});
-    m_list->setRootIsDecorated(false);
-    m_list->header()->setSectionResizeMode(0, QHeaderView::Stretch);
-    m_list->header()->setStretchLastSection(false);
-    m_list->setMinimumHeight(3 * fontMetrics().height() + 8);
-    optionsLayout->addWidget(m_list, 1);
-
-    // Kinds with their options, one row each.
     auto *grid = new QGridLayout;
     grid->setContentsMargins(0, 0, 0, 0);
     m_dpdsOptimizer->addItem(tr("VarPro / Levenberg–Marquardt"), QStringLiteral("lm"));
@@ -151,15 +126,56 @@ ModelsPanel::ModelsPanel(QWidget *parent)
            "of the phone), tied by decision trees: lips that anticipate the next sound. Off: one state per "
            "phone, the paper's models exactly."));
     grid->addWidget(m_contextStates, int(kinds.size()), 1);
+    // HMM-mean and Brand: each phone's mouth learnt on other speakers, for little footage (§5.4).
+    m_prior->setObjectName(QStringLiteral("mouthPrior"));
+    m_prior->setToolTip(
+        tr("For a person with little footage: HMM-mean's and Brand's mouth for each sound starts from the "
+           "mouths of other speakers (GRID s1), carried onto this face, and moves to the person's own as their "
+           "frames of that sound add up. Used by Train and Realism."));
+    grid->addWidget(m_prior, int(kinds.size()) + 1, 0, 1, 2);
     // The paper preset (docs/models.md §8): every choice beyond the paper off, held off.
     m_paper->setObjectName(QStringLiteral("paperModels"));
     m_paper->setToolTip(
         tr("Train and evaluate the paper's models exactly: no compensation or phones in context, Brand with "
            "diagonal covariances, the DPDS by the paper's Algorithm 1 and gradient ascent without the variance "
            "prior; Realism renders without lip closure, colour matching or exemplar detail."));
-    grid->addWidget(m_paper, int(kinds.size()) + 1, 0, 1, 2);
+    grid->addWidget(m_paper, int(kinds.size()) + 2, 0, 1, 2);
     connect(m_paper, &QCheckBox::toggled, this, &ModelsPanel::applyPaperPreset);
-    optionsLayout->addLayout(grid);
+    return grid;
+}
+
+ModelsPanel::ModelsPanel(QWidget *parent)
+    : QWidget(parent), m_list(new QTreeWidget(this)), m_buildAam(new QPushButton(tr("Build AAM…"), this)),
+      m_train(new QPushButton(tr("Train"), this)), m_cancel(new QPushButton(tr("Cancel"), this)),
+      m_evaluate(new QPushButton(tr("Evaluate (k-fold)"), this)), m_realism(new QPushButton(tr("Realism"), this)),
+      m_dpdsOptimizer(new QComboBox(this)),
+      m_sldsA(new QComboBox(this)), m_brandCovariance(new QComboBox(this)),
+      m_compensateVariance(new QCheckBox(tr("Variance compensation"), this)),
+      m_contextStates(new QCheckBox(tr("Phones in context"), this)),
+      m_prior(new QCheckBox(tr("Start from other speakers"), this)), m_paper(new QCheckBox(tr("Paper's models"), this)), m_folds(new QSpinBox(this)),
+      m_parameter(new QSpinBox(this)), m_status(new ElidedLabel(this))
+{
+    // The models and their options scroll; the actions and the status below them hold still
+    // (always in view, never moved by models added or a longer status).
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->setSpacing(3);
+    auto *scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("modelsScroll"));
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    auto *optionsPage = new QWidget(scroll);
+    auto *optionsLayout = new QVBoxLayout(optionsPage);
+    optionsLayout->setContentsMargins(0, 0, 0, 0);
+    m_list->setHeaderLabels({tr("Model"), tr("Kind"), tr("File")});
+    m_list->setRootIsDecorated(false);
+    m_list->header()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_list->header()->setStretchLastSection(false);
+    m_list->setMinimumHeight(3 * fontMetrics().height() + 8);
+    optionsLayout->addWidget(m_list, 1);
+
+    optionsLayout->addLayout(optionsGrid());
     scroll->setWidget(optionsPage);
     // No least height of its own: a tall timeline (the spectrogram's) may squeeze the list away,
     // never the actions below it.
@@ -346,15 +362,16 @@ void ModelsPanel::applyPaperPreset(bool on)
 {
     // The controls show what the preset trains; unticked, the user's own settings come back.
     if (on)
-        m_beforePaper = {m_compensateVariance->isChecked(), m_contextStates->isChecked(),
+        m_beforePaper = {m_compensateVariance->isChecked(), m_contextStates->isChecked(), m_prior->isChecked(),
                          m_brandCovariance->currentIndex(), m_dpdsOptimizer->currentIndex()};
     m_compensateVariance->setChecked(on ? false : m_beforePaper.compensate);
     m_contextStates->setChecked(on ? false : m_beforePaper.context);
+    m_prior->setChecked(on ? false : m_beforePaper.prior);
     m_brandCovariance->setCurrentIndex(on ? m_brandCovariance->findData(int(BrandCovariance::Diagonal))
                                           : m_beforePaper.covariance);
     m_dpdsOptimizer->setCurrentIndex(on ? m_dpdsOptimizer->findData(QStringLiteral("gradient"))
                                         : m_beforePaper.optimizer);
-    for (QWidget *w : std::initializer_list<QWidget *>{m_compensateVariance, m_contextStates, m_brandCovariance,
+    for (QWidget *w : std::initializer_list<QWidget *>{m_compensateVariance, m_contextStates, m_prior, m_brandCovariance,
                                                        m_dpdsOptimizer})
         w->setEnabled(!on);
 }
@@ -374,12 +391,31 @@ ModelOptions ModelsPanel::modelOptions() const
     return options;
 }
 
+std::shared_ptr<const MouthShapePrior> ModelsPanel::mouthPrior(bool *failed)
+{
+    *failed = false;
+    if (!m_prior->isChecked())
+        return nullptr;
+    const std::string path = ResourceLocator::find("prior/grid-s1.mouthprior");
+    try {
+        if (path.empty())
+            throw Error("the shipped mouth prior (prior/grid-s1.mouthprior) was not found");
+        return std::make_shared<const MouthShapePrior>(MouthShapePrior::load(path));
+    } catch (const Error &e) {
+        *failed = true;
+        m_status->setText(tr("Cannot start from other speakers: %1").arg(QString::fromUtf8(e.what())));
+        return nullptr;
+    }
+}
+
 QString ModelsPanel::coverageAdvice(const PhoneCoverage &coverage)
 {
     // The footage's gaps for these options, in the user's language (PhoneCoverage::advice).
     QStringList said;
     if (!coverage.unseen.empty())
-        said << tr("%1 of %2 phones never occur in the footage: their face is guessed from the average")
+        said << (coverage.prior ? tr("%1 of %2 phones never occur in the footage: their face comes from other "
+                                     "speakers' mouths")
+                                : tr("%1 of %2 phones never occur in the footage: their face is guessed from the average"))
                     .arg(coverage.unseen.size())
                     .arg(PhoneCoverage::kSpeechPhones);
     if (!coverage.rare.empty())
@@ -389,7 +425,10 @@ QString ModelsPanel::coverageAdvice(const PhoneCoverage &coverage)
     if (said.isEmpty())
         return {};
     return said.join(QStringLiteral("; ")) + QLatin1Char('.') + QLatin1Char(' ')
-           + tr("More footage of the person (%1 s of speech now) covers more.").arg(qRound(coverage.speechSeconds));
+           + tr("More footage of the person (%1 s of speech now) covers more.").arg(qRound(coverage.speechSeconds))
+           + (coverage.takesPrior && !coverage.prior
+                  ? QLatin1Char(' ') + tr("Tick Start from other speakers to take the phones it lacks from other people's mouths.")
+                  : QString());
 }
 
 QList<Task *> ModelsPanel::train()
@@ -404,6 +443,17 @@ QList<Task *> ModelsPanel::train()
         return started;
     }
     const ModelOptions options = modelOptions();
+    bool priorFailed = false;
+    const std::shared_ptr<const MouthShapePrior> prior = mouthPrior(&priorFailed);
+    if (priorFailed)
+        return started;
+    // The prior is carried onto this face through the project's AAM and its tracked frames.
+    const auto project = prior ? std::make_shared<const Project>(m_context->document()->project()) : nullptr;
+    const std::shared_ptr<const AamModel> aam = prior ? m_context->modelStore()->aam() : nullptr;
+    if (prior && !aam) {
+        m_status->setText(tr("Cannot start from other speakers without the project's AAM."));
+        return started;
+    }
 
     // What a trained model records as its AAM: the content identifier of the project's AAM, which
     // `lipsync render` and the preview check against whichever AAM file they are given.
@@ -421,9 +471,13 @@ QList<Task *> ModelsPanel::train()
         QPointer<ModelsPanel> self(this);
         Task *task = m_context->taskRunner()->start(
             tr("Train %1").arg(name),
-            [self, kind, name, file, data, options, aamId](Feedback &feedback) -> TaskRunner::Commit {
+            [self, kind, name, file, data, options, aamId, prior, project, aam](Feedback &feedback) -> TaskRunner::Commit {
                 feedback.setStatus(tr("Training %1 on %n sequence(s)…", "", int(data->size())).arg(name).toStdString());
-                std::shared_ptr<DynamicModel> model = createDynamicModel(kind.toStdString(), options);
+                ModelOptions own = options;
+                if (prior && modelKindTakesPrior(*parseModelKind(kind.toStdString())))
+                    own.meanShift = projectPriorShift(*prior, MouthMeasurer(*aam), *project, *data,
+                                                      MouthShapePrior::kDefaultKappa);
+                std::shared_ptr<DynamicModel> model = createDynamicModel(kind.toStdString(), own);
                 const auto start = std::chrono::steady_clock::now();
                 model->train(*data, feedback);
                 const double seconds =
@@ -435,6 +489,8 @@ QList<Task *> ModelsPanel::train()
                     ll += model->trajectoryLogLikelihood(s.labels, s.features); // comparable (§6.2)
                 }
                 PhoneCoverage coverage = PhoneCoverage::of(*data);
+                coverage.takesPrior = modelKindTakesPrior(*parseModelKind(kind.toStdString()));
+                coverage.prior = own.meanShift.size() > 0;
                 if (const auto *context = dynamic_cast<const ContextDependentModel *>(model.get()))
                     coverage.contextStates = context->tree().stateCount();
                 // Written on the GUI thread by the commit (a small JSON file), so a canceled
@@ -514,6 +570,10 @@ Task *ModelsPanel::evaluateRealism()
         return nullptr;
     RealismOptions realism;
     realism.crossValidation = *options;
+    bool priorFailed = false;
+    realism.mouthPrior = mouthPrior(&priorFailed);
+    if (priorFailed)
+        return nullptr;
     realism.closeBilabials = m_context->closesLips(); // the models' faces as the studio renders them
     if (m_paper->isChecked()) {
         realism.closeBilabials = false;

@@ -21,6 +21,7 @@
 class QAction;
 class QCheckBox;
 class QComboBox;
+class QGridLayout;
 class QLabel;
 class QPushButton;
 class QSpinBox;
@@ -30,6 +31,7 @@ class QTreeWidget;
 namespace lipsync {
 class DynamicModel;
 struct ModelOptions;
+class MouthShapePrior;
 class Project;
 struct PhoneCoverage;
 struct LabelledSequence;
@@ -72,6 +74,7 @@ public:
     QComboBox *brandCovariance() const { return m_brandCovariance; }
     QCheckBox *compensateVarianceCheck() const { return m_compensateVariance; }
     QCheckBox *contextStatesCheck() const { return m_contextStates; }
+    QCheckBox *priorCheck() const { return m_prior; }
     QCheckBox *paperModelsCheck() const { return m_paper; }
     QSpinBox *foldsSpin() const { return m_folds; }
     QSpinBox *parameterSpin() const { return m_parameter; }
@@ -103,6 +106,9 @@ signals:
 private:
     std::vector<LabelledSequence> trainingData(QString *problem) const;
     ModelOptions modelOptions() const; // the options the controls choose
+    // The mouth prior when "Start from other speakers" is ticked, else null; a prior that cannot be
+    // read is said in the status and also null (`failed` set).
+    std::shared_ptr<const MouthShapePrior> mouthPrior(bool *failed);
     // The folds, kinds and model options of the controls for an evaluation of `data` (set to
     // trainingData()), or nothing when one cannot start (the reason shown in the panel).
     std::optional<EvaluationOptions> evaluationToStart(std::vector<LabelledSequence> *data);
@@ -113,6 +119,7 @@ private:
     void refreshTrajectory();
     void updateActions();
     void applyPaperPreset(bool on);
+    QGridLayout *optionsGrid(); // the kinds' and every kind's options (the constructor's)
     // What the training footage lacks for the options (PhoneCoverage), or empty.
     static QString coverageAdvice(const PhoneCoverage &coverage);
 
@@ -128,10 +135,11 @@ private:
     QComboBox *m_brandCovariance;
     QCheckBox *m_compensateVariance;
     QCheckBox *m_contextStates;
+    QCheckBox *m_prior; // HMM-mean's and Brand's phone means start from other speakers' mouths
     QCheckBox *m_paper;
     struct Settings
     {
-        bool compensate = true, context = true;
+        bool compensate = true, context = true, prior = false;
         int covariance = 0, optimizer = 0;
     } m_beforePaper; // the controls' settings before the paper preset was ticked
     QSpinBox *m_folds;

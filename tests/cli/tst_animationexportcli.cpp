@@ -120,7 +120,8 @@ private slots:
 
     // `export prior` learns a project's mouths; `train --kind hmm --prior-file` starts a person's
     // phone means from them (here the demo's own, on the demo with a clip left out) and the
-    // shipped GRID s1 prior (`--prior`) is found; other kinds and bad weights are refused.
+    // shipped GRID s1 prior (`--prior`) is found, for HMM-mean and Brand; the SLDS and bad weights
+    // are refused.
     void mouthPriorForTraining()
     {
         QTemporaryDir dir;
@@ -135,8 +136,24 @@ private slots:
         QVERIFY2(r.exitCode == 0, r.err.constData());
         r = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior", "--out", model});
         QVERIFY2(r.exitCode == 0, r.err.constData());
-        verifyOneLineError(runLipsync({"train", "--kind", "brand", "--project", kDemo, "--prior", "--out", model}), 2,
-                           "--kind hmm");
+        // Brand takes it too: its static means move, its delta means stay the person's own.
+        const QString brand = dir.filePath("brand.model"), brandPrior = dir.filePath("brand-prior.model");
+        QCOMPARE(runLipsync({"train", "--kind", "brand", "--project", kDemo, "--out", brand}).exitCode, 0);
+        r = runLipsync({"train", "--kind", "brand", "--project", kDemo, "--prior", "--out", brandPrior});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY2(!r.err.contains("Starting from other speakers"), r.err.constData()); // it did
+        const auto parameters = [](const QString &file) {
+            QFile f(file);
+            return f.open(QIODevice::ReadOnly) ? parseJsonObject(f.readAll())["parameters"].toObject() : QJsonObject();
+        };
+        const QJsonObject plain = parameters(brand), moved = parameters(brandPrior);
+        QVERIFY(!plain.isEmpty());
+        QVERIFY(plain["staticMean"] != moved["staticMean"]);
+        QCOMPARE(plain["deltaMean"], moved["deltaMean"]);
+        r = runLipsync({"train", "--kind", "brand", "--project", kDemo, "--out", brand});
+        QVERIFY2(r.err.contains("Starting from other speakers' mouths"), r.err.constData()); // offered for 30 s
+        verifyOneLineError(runLipsync({"train", "--kind", "slds", "--project", kDemo, "--prior", "--out", model}), 2,
+                           "--kind hmm or brand");
         verifyOneLineError(runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior", "--prior-weight", "-1",
                                        "--out", model}),
                            2, "--prior-weight");

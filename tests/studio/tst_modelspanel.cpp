@@ -14,7 +14,10 @@
 #include "context/ModelStore.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
+#include "animation/MouthMeasures.h"
+#include "animation/MouthShapePrior.h"
 #include "dynamics/ContextDependentModel.h"
+#include "dynamics/HmmMeanModel.h"
 #include "dynamics/DynamicModel.h"
 #include "dynamics/LabelledFolder.h"
 #include "dynamics/ModelFile.h"
@@ -25,7 +28,9 @@
 #include "plots/ObjectivePlot.h"
 #include "plots/ResultsPage.h"
 #include "plots/TrajectoryView.h"
+#include "tasks/Feedback.h"
 #include "tasks/TaskRunner.h"
+#include "util/ResourceLocator.h"
 #include "widgets/ElidedLabel.h"
 
 #include <QApplication>
@@ -118,6 +123,53 @@ private slots:
         QCOMPARE(panel.trajectoryView()->seriesCount(), 2); // the recording and HMM-mean
         context.setCurrentFrame(30);
         QVERIFY(std::abs(panel.trajectoryView()->cursorTime() - 30.5 / 25.0) < 1e-9);
+    }
+
+    // "Start from other speakers": HMM-mean's phone means (and Brand's) are the person's own moved by
+    // the shipped prior's shift (MouthShapePrior, docs/models.md §5.4) carried onto the demo's face.
+    void startsFromOtherSpeakers()
+    {
+        StudioContext context;
+        testing::openDemo(context);
+        QTabWidget plots;
+        ModelsPanel panel;
+        panel.attach(&context, &plots);
+        for (const QString &kind : ModelKinds::ids())
+            panel.kindCheck(kind)->setChecked(kind == QLatin1String("hmm"));
+        panel.compensateVarianceCheck()->setChecked(false);
+        panel.contextStatesCheck()->setChecked(false);
+        QVERIFY(!panel.priorCheck()->isChecked()); // the person's own means unless asked
+        // Trained without it on the demo's 30 s, the panel offers it for the phones they lack.
+        QCOMPARE(panel.train().size(), 1);
+        QTRY_COMPARE_WITH_TIMEOUT(context.taskRunner()->runningCount(), 0, 60000);
+        QVERIFY2(panel.statusLabel()->toolTip().contains(QStringLiteral("Tick Start from other speakers")),
+                 qPrintable(panel.statusLabel()->toolTip()));
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QTest::mouseClick(panel.priorCheck(), Qt::LeftButton, {}, QPoint(8, panel.priorCheck()->height() / 2));
+        QVERIFY(panel.priorCheck()->isChecked());
+        QCOMPARE(panel.train().size(), 1);
+        QTRY_COMPARE_WITH_TIMEOUT(context.taskRunner()->runningCount(), 0, 60000);
+        const auto trained = std::dynamic_pointer_cast<const HmmMeanModel>(context.modelStore()->dynamicModel(QStringLiteral("hmm")));
+        QVERIFY(trained);
+        const Project &project = context.document()->project();
+        const std::vector<LabelledSequence> sequences = loadProjectSequences(project);
+        auto plain = createDynamicModel("hmm");
+        Feedback quiet;
+        plain->train(sequences, quiet);
+        const MouthShapePrior prior = MouthShapePrior::load(ResourceLocator::find("prior/grid-s1.mouthprior"));
+        const Eigen::MatrixXd shift = projectPriorShift(prior, MouthMeasurer(*context.modelStore()->aam()), project,
+                                                        sequences, MouthShapePrior::kDefaultKappa);
+        QVERIFY(shift.norm() > 0);
+        QVERIFY2(panel.statusLabel()->toolTip().contains(QStringLiteral("their face comes from other speakers' mouths"))
+                     && !panel.statusLabel()->toolTip().contains(QStringLiteral("Tick Start")),
+                 qPrintable(panel.statusLabel()->toolTip()));
+        QVERIFY(trained->means().isApprox(dynamic_cast<HmmMeanModel &>(*plain).means() + shift, 1e-9));
+        // The paper's models hold it off.
+        panel.paperModelsCheck()->setChecked(true);
+        QVERIFY(!panel.priorCheck()->isChecked() && !panel.priorCheck()->isEnabled());
+        panel.paperModelsCheck()->setChecked(false);
+        QVERIFY(panel.priorCheck()->isChecked());
     }
 
     // The wheel over an unfocused spin box or combo box scrolls the panel and leaves the setting;

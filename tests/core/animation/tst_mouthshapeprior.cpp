@@ -2,11 +2,19 @@
 // learnt from its tracked, aligned frames, each phone's displacement from the mean shape; with no
 // prior weight a person's phone means are their own means (what HMM-mean trains); with a heavy
 // weight a phone's mean takes the prior's mouth on the person's face (a prior learnt on the same
-// person gives back that phone's own mouth shape); the file round-trips, and a damaged one is named.
+// person gives back that phone's own mouth shape); HMM-mean and Brand (over phones or phones in
+// context, either covariance) start from it: each phone's means move by the prior's shift before the
+// variance compensation; the file round-trips, and a damaged one is named.
 #include "aam/AamModel.h"
 #include "animation/MouthMeasures.h"
 #include "animation/MouthShapePrior.h"
 #include "animation/MouthTrack.h"
+#include "dynamics/BrandModel.h"
+#include "dynamics/ContextDependentModel.h"
+#include "dynamics/HmmMeanModel.h"
+#include "dynamics/LabelledFolder.h"
+#include "dynamics/ModelFile.h"
+#include "tasks/Feedback.h"
 #include "io/AtomicFile.h"
 #include "project/Project.h"
 #include "util/Error.h"
@@ -86,6 +94,72 @@ private slots:
         QVERIFY2(error < 0.2, qPrintable(QString::number(error)));
         // And it moves the mouth as the phone does, away from the mean.
         QVERIFY((shape - m_prior.meanShape()).dot(ownShape - m_prior.meanShape()) > 0);
+    }
+
+    void theShiftIsWhatThePriorAddsToTheOwnMeans()
+    {
+        QCOMPARE(m_prior.personShift(m_tracks, 0.0).norm(), 0.0);
+        const Eigen::MatrixXd shift = m_prior.personShift(m_tracks, 80.0);
+        QVERIFY(shift.isApprox(m_prior.personMeans(m_tracks, 80.0) - m_prior.personMeans(m_tracks, 0.0)));
+        const std::vector<LabelledSequence> sequences = loadProjectSequences(m_project);
+        QVERIFY(projectPriorShift(m_prior, *m_measurer, m_project, sequences, 80.0).isApprox(shift, 1e-9));
+    }
+
+    void hmmMeanAndBrandStartFromTheShift()
+    {
+        const std::vector<LabelledSequence> sequences = loadProjectSequences(m_project);
+        const Eigen::Index d = sequences.front().features.cols();
+        const Eigen::MatrixXd shift = 0.1 * Eigen::MatrixXd::Random(PhoneSet::kCount, d);
+        auto trained = [&](const std::string &kind, ModelOptions options, bool shifted) {
+            if (shifted)
+                options.meanShift = shift;
+            std::unique_ptr<DynamicModel> model = createDynamicModel(kind, options);
+            Feedback quiet;
+            model->train(sequences, quiet);
+            return model;
+        };
+        {
+            const auto plain = trained("hmm", {}, false), moved = trained("hmm", {}, true);
+            QVERIFY(dynamic_cast<HmmMeanModel &>(*moved).means().isApprox(
+                dynamic_cast<HmmMeanModel &>(*plain).means() + shift, 1e-12));
+        }
+        for (const BrandCovariance covariance : {BrandCovariance::Diagonal, BrandCovariance::Full}) {
+            ModelOptions options;
+            options.brand.covariance = covariance;
+            const auto plain = trained("brand", options, false), moved = trained("brand", options, true);
+            const auto &a = dynamic_cast<BrandModel &>(*plain), &b = dynamic_cast<BrandModel &>(*moved);
+            QVERIFY(b.staticMean.isApprox(a.staticMean + shift, 1e-12));
+            QVERIFY(b.deltaMean.isApprox(a.deltaMean, 1e-12));
+            if (covariance == BrandCovariance::Full) {
+                QVERIFY(b.jointMean.leftCols(d).isApprox(a.jointMean.leftCols(d) + shift, 1e-12));
+                QVERIFY(b.jointMean.rightCols(d).isApprox(a.jointMean.rightCols(d), 1e-12));
+            }
+        }
+        {
+            // Phones in context: every state by its own phone's row; the compensation is estimated on
+            // the moved means, so it differs from the plain model's.
+            ModelOptions options;
+            options.contextStates = true;
+            options.context.minOccupancy = 20;
+            options.compensateVariance = true;
+            const auto plain = trained("brand", options, false), moved = trained("brand", options, true);
+            const auto &a = dynamic_cast<ContextDependentModel &>(*plain), &b = dynamic_cast<ContextDependentModel &>(*moved);
+            QVERIFY(a.tree().stateCount() > PhoneSet::kCount); // the demo makes context states
+            const auto &innerA = dynamic_cast<const BrandModel &>(a.inner()), &innerB = dynamic_cast<const BrandModel &>(b.inner());
+            for (int s = 0; s < a.tree().stateCount(); ++s)
+                QVERIFY((innerB.staticMean.row(s) - innerA.staticMean.row(s) - shift.row(a.tree().phoneOf(s))).norm() < 1e-9);
+            QVERIFY(!b.compensationMean().isApprox(a.compensationMean()) || !b.compensationGain().isApprox(a.compensationGain()));
+        }
+        // Kinds without per-phone means: createDynamicModel leaves them alone, a shift set anyway is
+        // refused by train(); a shift of the wrong size is refused too.
+        QVERIFY(trained("slds", {}, true)->isTrained());
+        std::unique_ptr<DynamicModel> slds = createDynamicModel("slds");
+        slds->setMeanShift(shift);
+        Feedback quiet;
+        QVERIFY_THROWS_EXCEPTION(Error, slds->train(sequences, quiet));
+        std::unique_ptr<DynamicModel> brand = createDynamicModel("brand");
+        brand->setMeanShift(Eigen::MatrixXd::Zero(PhoneSet::kCount, d + 1));
+        QVERIFY_THROWS_EXCEPTION(Error, brand->train(sequences, quiet));
     }
 
     void roundTripsAndNamesADamagedFile()

@@ -39,6 +39,16 @@ private slots:
         const std::string advice = c.advice();
         QVERIFY2(advice.find("36 of 39 phones never occur") != std::string::npos, advice.c_str());
         QVERIFY2(advice.find("1 have fewer than 10 frames (AA)") != std::string::npos, advice.c_str());
+        QVERIFY2(advice.find("guesses their face from the average") != std::string::npos, advice.c_str());
+        QVERIFY2(advice.find("other speakers") == std::string::npos, advice.c_str()); // a kind without the prior
+        PhoneCoverage withPrior = c;
+        withPrior.takesPrior = true; // HMM-mean or Brand: the prior is offered ...
+        QVERIFY2(withPrior.advice().find("Starting from other speakers' mouths") != std::string::npos,
+                 withPrior.advice().c_str());
+        withPrior.prior = true; // ... and once taken, the unseen phones are the prior's
+        QVERIFY2(withPrior.advice().find("their face comes from other speakers' mouths") != std::string::npos
+                     && withPrior.advice().find("Starting from") == std::string::npos,
+                 withPrior.advice().c_str());
         const QJsonObject json = c.toJson();
         QCOMPARE(json.value("unseen").toArray().size(), 36);
         QCOMPARE(json.value("rare").toArray().first().toString(), QStringLiteral("AA"));

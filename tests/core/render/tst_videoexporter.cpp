@@ -180,6 +180,45 @@ private slots:
         }
     }
 
+    // Lossless with colour at full resolution (what the realism report's observer encodes): the
+    // first pass differs from the source only by the rounding of RGB to YUV and back, and a second
+    // pass of what the first gave back changes almost nothing (a level, in few values), so a
+    // recording and its own re-encode are, to the observer, the same frames.
+    void fullChromaLosslessIsIdempotent()
+    {
+        const std::string source = LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg";
+        QTemporaryDir dir;
+        VideoExportOptions options;
+        options.crf = 0;
+        options.fullChroma = true;
+        Feedback feedback;
+        std::vector<cv::Mat> passes{VideoReader(source).frame(40)};
+        std::string in = source;
+        for (int pass = 1; pass <= 2; ++pass) {
+            VideoReader reader(in);
+            const std::string out = dir.filePath(QStringLiteral("pass%1.mp4").arg(pass)).toStdString();
+            exportVideo(out, reader.frameCount(), [&](int i) { return reader.frame(i); }, nullptr, feedback, options);
+            passes.push_back(VideoReader(out).frame(40));
+            in = out;
+        }
+        double largest = 0;
+        cv::minMaxLoc(cv::abs(passes[1] - passes[0]) + cv::abs(passes[0] - passes[1]), nullptr, &largest);
+        // Rounding only: video-range YUV has 220 levels of luma and 225 of colour for RGB's 256.
+        QVERIFY2(largest <= 5, qPrintable(QString::number(largest)));
+        QVERIFY(cv::norm(passes[1], passes[0], cv::NORM_L1) / double(passes[0].total() * 3) < 1.0);
+        QVERIFY2(cv::norm(passes[2], passes[1], cv::NORM_INF) <= 1, qPrintable(QString::number(cv::norm(passes[2], passes[1], cv::NORM_INF))));
+        cv::Mat changed;
+        cv::compare(passes[2], passes[1], changed, cv::CMP_NE);
+        const double share = double(cv::countNonZero(changed.reshape(1))) / double(changed.total() * 3);
+        QVERIFY2(share < 0.01, qPrintable(QString::number(share)));
+        // 4:2:0 at crf 0 is not lossless: its colour is halved on every pass.
+        options.fullChroma = false;
+        VideoReader reader(dir.filePath(QStringLiteral("pass1.mp4")).toStdString());
+        const std::string subsampled = dir.filePath(QStringLiteral("subsampled.mp4")).toStdString();
+        exportVideo(subsampled, reader.frameCount(), [&](int i) { return reader.frame(i); }, nullptr, feedback, options);
+        QVERIFY(cv::norm(VideoReader(subsampled).frame(40), passes[1], cv::NORM_INF) > 5);
+    }
+
     // Sync measured on decoded content: the white flash starts on frame 30 (t = 1.2 s) and the
     // loud tone starts at 1.2 s; after encoding, muxing and decoding they must coincide within
     // one frame.
