@@ -117,9 +117,10 @@ int runTrain(const CommandLine &args)
                     "log-likelihood %.6f nats/frame; saved %s\n",
                     kind.toUtf8().constData(), sequences.size(), frames, model->dimension(), states, seconds,
                     ll / double(frames), out.toUtf8().constData());
-        std::printf("phones: %d of %d seen in %.0f s of speech, %zu with fewer than %d frames\n",
+        std::printf("phones: %d of %d seen in %.0f s of speech, %zu with fewer than %d frames%s\n",
                     PhoneCoverage::kSpeechPhones - int(coverage.unseen.size()), PhoneCoverage::kSpeechPhones,
-                    coverage.speechSeconds, coverage.rare.size(), kMinimumVarianceFrames);
+                    coverage.speechSeconds, coverage.rare.size(), kMinimumVarianceFrames,
+                    coverage.prior ? "; started from other speakers' mouths" : "");
         if (brand && brand->covarianceChoice().folds > 0)
             std::printf("covariance: %s (held-out L1 in %d folds: diagonal %.4g, full %.4g)\n",
                         brand->fullCovariance() ? "full" : "diagonal", brand->covarianceChoice().folds,

@@ -72,6 +72,7 @@ QJsonObject PhoneCoverage::toJson() const
                        {"unseen", u},
                        {"rare", r},
                        {"contextStates", contextStates},
+                       {"prior", prior},
                        {"advice", QString::fromStdString(advice())}};
 }
 

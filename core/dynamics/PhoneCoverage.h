@@ -35,7 +35,7 @@ struct PhoneCoverage
     // that made no state beyond the phones themselves; for a model that could start from other
     // speakers' mouths and did not, that it may.
     std::string advice() const;
-    // {"speechSeconds", "unseen": [..], "rare": [..], "contextStates", "advice"}
+    // {"speechSeconds", "unseen": [..], "rare": [..], "contextStates", "prior", "advice"}
     QJsonObject toJson() const;
 };
 

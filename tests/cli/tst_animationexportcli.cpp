@@ -134,14 +134,16 @@ private slots:
         r = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--exclude", "bbaf2n", "--prior-file", prior,
                         "--prior-weight", "20", "--out", model});
         QVERIFY2(r.exitCode == 0, r.err.constData());
-        r = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior", "--out", model});
+        r = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior", "--out", model, "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY(parseJsonObject(r.out)["coverage"].toObject()["prior"].toBool());
         // Brand takes it too: its static means move, its delta means stay the person's own.
         const QString brand = dir.filePath("brand.model"), brandPrior = dir.filePath("brand-prior.model");
         QCOMPARE(runLipsync({"train", "--kind", "brand", "--project", kDemo, "--out", brand}).exitCode, 0);
         r = runLipsync({"train", "--kind", "brand", "--project", kDemo, "--prior", "--out", brandPrior});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         QVERIFY2(!r.err.contains("Starting from other speakers"), r.err.constData()); // it did
+        QVERIFY2(r.out.contains("started from other speakers' mouths"), r.out.constData());
         const auto parameters = [](const QString &file) {
             QFile f(file);
             return f.open(QIODevice::ReadOnly) ? parseJsonObject(f.readAll())["parameters"].toObject() : QJsonObject();

@@ -49,7 +49,9 @@ private slots:
         QVERIFY2(withPrior.advice().find("their face comes from other speakers' mouths") != std::string::npos
                      && withPrior.advice().find("Starting from") == std::string::npos,
                  withPrior.advice().c_str());
+        QVERIFY(withPrior.toJson().value("prior").toBool());
         const QJsonObject json = c.toJson();
+        QVERIFY(!json.value("prior").toBool());
         QCOMPARE(json.value("unseen").toArray().size(), 36);
         QCOMPARE(json.value("rare").toArray().first().toString(), QStringLiteral("AA"));
     }
