@@ -19,20 +19,6 @@
 
 namespace lipsync {
 
-namespace {
-
-// Symmetric matrix with eigenvalues clamped below at the floor (the variance floor of §0 for a
-// full covariance).
-Eigen::MatrixXd floorCovariance(const Eigen::MatrixXd &C, const Eigen::VectorXd &floor)
-{
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (C + C.transpose()));
-    const double minimum = floor.minCoeff();
-    Eigen::VectorXd values = eig.eigenvalues().cwiseMax(minimum);
-    return eig.eigenvectors() * values.asDiagonal() * eig.eigenvectors().transpose();
-}
-
-} // namespace
-
 void BrandModel::shiftMeans(const Eigen::MatrixXd &shift)
 {
     checkMeanShift(shift, staticMean.rows());
@@ -178,7 +164,7 @@ void BrandModel::fitFull(const std::vector<LabelledSequence> &sequences,
             mean = sum.row(n).transpose() / double(count[n]);
             C = outer[size_t(n)].selfadjointView<Eigen::Lower>();
             C = C / double(count[n]) - mean * mean.transpose();
-            C = floorCovariance(C, jointFloor);
+            C = floorEigenvalues(C, jointFloor.minCoeff());
         } else {
             Eigen::VectorXd diag(D);
             diag << staticVariance.row(n).transpose(), deltaVariance.row(n).transpose();

@@ -1,5 +1,6 @@
 #include "dynamics/DynamicModel.h"
 
+#include "dynamics/GaussianMath.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
@@ -51,14 +52,6 @@ Eigen::MatrixXd slowParts(const Eigen::MatrixXd &y, int window)
     return s;
 }
 
-// A symmetric matrix's function f of its eigenvalues.
-template<class F>
-Eigen::MatrixXd spectral(const Eigen::MatrixXd &a, F f)
-{
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(a);
-    return eigen.eigenvectors() * eigen.eigenvalues().unaryExpr(f).asDiagonal() * eigen.eigenvectors().transpose();
-}
-
 // The optimal-transport map between N(0, Rg) and N(0, Rr) (models.md §5.1), Rg the scatter of the
 // generated trajectories' band about the training mean and Rr the recordings':
 // A = Rg^(-1/2) (Rg^(1/2) Rr Rg^(1/2))^(1/2) Rg^(-1/2), the symmetric positive definite A with
@@ -76,10 +69,11 @@ Eigen::MatrixXd gainOf(const Eigen::MatrixXd &real, const Eigen::MatrixXd &gener
     const Eigen::MatrixXd root = eigen.eigenvectors() * rootValues.asDiagonal() * eigen.eigenvectors().transpose();
     const Eigen::MatrixXd inverseRoot
         = eigen.eigenvectors() * rootValues.cwiseInverse().asDiagonal() * eigen.eigenvectors().transpose();
-    const Eigen::MatrixXd middle = spectral(root * real * root, [](double l) { return std::sqrt(std::max(l, 0.0)); });
+    const Eigen::MatrixXd middle
+        = symmetricMatrixFunction(root * real * root, [](double l) { return std::sqrt(std::max(l, 0.0)); });
     Eigen::MatrixXd a = inverseRoot * middle * inverseRoot;
     a = 0.5 * (a + a.transpose());
-    return spectral(a, [](double l) {
+    return symmetricMatrixFunction(a, [](double l) {
         return std::clamp(l, DynamicModel::kMinCompensationGain, DynamicModel::kMaxCompensationGain);
     });
 }

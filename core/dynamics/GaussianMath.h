@@ -1,7 +1,9 @@
 #pragma once
 // Small numeric helpers shared by the models.
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -16,6 +18,21 @@ inline double diagonalGaussianLogPdf(const Eigen::Ref<const Eigen::VectorXd> &z,
 {
     return -0.5 * (double(z.size()) * kLog2Pi + variance.array().log().sum()
                    + ((z - mean).array().square() / variance.array()).sum());
+}
+
+// f of a symmetric matrix: V f(L) V^T from its eigendecomposition a = V L V^T.
+template<class F>
+Eigen::MatrixXd symmetricMatrixFunction(const Eigen::MatrixXd &a, F f)
+{
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(a);
+    return eigen.eigenvectors() * eigen.eigenvalues().unaryExpr(f).asDiagonal() * eigen.eigenvectors().transpose();
+}
+
+// The symmetric part of C with its eigenvalues floored at `minimum`: a full covariance kept
+// positive definite (the variance floor of docs/models.md §0).
+inline Eigen::MatrixXd floorEigenvalues(const Eigen::MatrixXd &C, double minimum)
+{
+    return symmetricMatrixFunction(0.5 * (C + C.transpose()), [minimum](double l) { return std::max(l, minimum); });
 }
 
 // Sum of logarithms of positive values with one std::log per block of 8: the running product is

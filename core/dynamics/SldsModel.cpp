@@ -105,9 +105,7 @@ Eigen::MatrixXd floorCovariance(const Eigen::MatrixXd &C, const Eigen::VectorXd 
 {
     if (!full)
         return C.diagonal().cwiseMax(floor).asDiagonal();
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (C + C.transpose()));
-    const Eigen::VectorXd values = eig.eigenvalues().cwiseMax(floor.minCoeff());
-    return eig.eigenvectors() * values.asDiagonal() * eig.eigenvectors().transpose();
+    return floorEigenvalues(C, floor.minCoeff());
 }
 
 // The transition sums of one state (§3.3): S^xx, the augmented S^xz = [S^x- s^x] and
