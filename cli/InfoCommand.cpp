@@ -2,7 +2,7 @@
 //   media file:     frames, fps, duration, size, audio rate/channels/duration (decoded counts)
 //   project folder: its sequences (count, total frames and duration, per sequence id/frames/fps)
 //   AAM (.aam):     points, modes (shape, texture, combined), texture pixels, training images
-//   dynamic model:  kind, dimension, states, frame rate, compensation, the AAM it is for
+//   dynamic model:  kind, dimension, states, frame rate, compensation, prior, the AAM it is for
 // The kind of a file is read from its first bytes (an AAM's magic, a model's JSON), never
 // from its name: FFmpeg takes almost any bytes for some audio format. Bad input (missing, empty,
 // truncated, unsupported) exits 1 with one line naming the file.
@@ -207,6 +207,8 @@ int infoModel(const QString &path, bool json)
                        {QStringLiteral("states"), context ? context->inner().stateCount() : model->stateCount()},
                        {QStringLiteral("phones in context"), context != nullptr},
                        {QStringLiteral("variance compensation"), model->compensatesVariance()},
+                       // Whether its means started from other speakers' mouths (§5.4).
+                       {QStringLiteral("prior"), model->meanShift().size() > 0},
                        {QStringLiteral("fps"), model->frameRate() > 0 ? QJsonValue(model->frameRate()) : QJsonValue()},
                        {QStringLiteral("aam"), QString::fromStdString(aamId)}},
                       json);
@@ -340,7 +342,7 @@ const lipsync::cli::CommandRegistration registration{
                     "fps, duration, size, audio rate, channels and duration (decoded counts). A project folder (or "
                     "its project.json): its sequences, their frames and frame rates. An AAM: its points, shape, "
                     "texture and combined modes, texture pixels and training images. A model file: its kind, "
-                    "dimension, states, frame rate, compensation and the AAM it generates parameters of."),
+                    "dimension, states, frame rate, compensation, whether it started from other speakers (prior) and the AAM it generates parameters of."),
      {},
      {{QStringLiteral("PATH"), QStringLiteral("a media file, a project folder or its project.json, an AAM or a model "
                                               "file")}}},

@@ -41,6 +41,9 @@ public:
     // fitted, before the variance compensation is estimated. Empty: none. Only kinds for which
     // modelKindTakesPrior() holds have per-phone means to move; train() throws for the others.
     void setMeanShift(Eigen::MatrixXd shift) { m_meanShift = std::move(shift); }
+    // The shift train() applied (a model file records it: whether, and how far, the model started
+    // from other speakers); empty when it started from its own data alone.
+    const Eigen::MatrixXd &meanShift() const { return m_meanShift; }
     // Moves each label's mean (static and, for Brand, the joint mean's static half) by
     // shift.row(label): stateCount() x d of a trained model. Throws lipsync::Error for another
     // shape, values that are not finite, or a kind without per-label means.

@@ -65,6 +65,9 @@ ModelOptions retrainingOptions(const DynamicModel &trained)
         model = &context->inner();
     }
     o.compensateVariance = trained.compensatesVariance();
+    // The prior's shift as the file records it: fitted to all of the person's data, which leaving
+    // a few clips out hardly changes (MouthShapePrior::personShift).
+    o.meanShift = trained.meanShift();
     if (const auto *brand = dynamic_cast<const BrandModel *>(model))
         o.brand = brand->options();
     else if (const auto *dpds = dynamic_cast<const DpdsModel *>(model))
@@ -128,6 +131,8 @@ void saveModel(const DynamicModel &model, const std::string &path, const std::st
         }
         o[QStringLiteral("compensation")] = c;
     }
+    if (model.meanShift().size() > 0)
+        o[QStringLiteral("prior")] = QJsonObject{{QStringLiteral("meanShift"), json::fromMatrix(model.meanShift())}};
     writeFileAtomically(path, QJsonDocument(o).toJson(QJsonDocument::Compact).toStdString());
 }
 
@@ -199,6 +204,18 @@ std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::str
                                        : 0);
         } catch (const Error &e) {
             throw Error(e.reason(), path, "compensation");
+        }
+    }
+    if (o.contains(QStringLiteral("prior"))) {
+        // Recorded, not applied again: the parameters already hold it.
+        try {
+            const Eigen::MatrixXd shift = json::toMatrix(o.value(QStringLiteral("prior")).toObject(), "meanShift",
+                                                         PhoneSet::kCount, model->dimension(), path);
+            if (!shift.allFinite())
+                throw Error("holds values that are not finite", path, "meanShift");
+            model->setMeanShift(shift);
+        } catch (const Error &e) {
+            throw Error(e.reason(), path, "prior");
         }
     }
     if (aamId)

@@ -4,7 +4,8 @@
 //    "labels": ["AA", ..., "sil", "br"], "dimension": 32, "parameters": {...}}
 // "labels" records the phone set the integer labels refer to, "aam" the AAM whose parameters
 // the features are, "frameRate" (optional) the frames per second it was trained at. A model over context-dependent states (§5.2) adds "context" (ContextTree's
-// JSON); its parameters are then indexed by the tree's states. Loading rejects another format or version, an unknown kind, another label
+// JSON); its parameters are then indexed by the tree's states. A model started from other speakers
+// (§5.4) records the shift its means were moved by ("prior": {"meanShift": 41 x d}). Loading rejects another format or version, an unknown kind, another label
 // set, and (when an AAM id is expected) another AAM, with a lipsync::Error naming the file.
 #include "dynamics/BrandModel.h"
 #include "dynamics/ContextTree.h"
@@ -43,7 +44,7 @@ struct ModelOptions
 };
 
 // The options that train a model like `trained` on other data: its kind's options as the model
-// holds them (what its file records), its context states and variance compensation.
+// holds them (what its file records), its context states, variance compensation and prior shift.
 ModelOptions retrainingOptions(const DynamicModel &trained);
 
 std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOptions &options = {});

@@ -61,8 +61,8 @@ QString kindText(const std::string &kind)
     return ModelKinds::name(kind);
 }
 
-// What a trained dynamic model is beyond its kind: its states, Brand's full covariances and its
-// compensation.
+// What a trained dynamic model is beyond its kind: its states, Brand's full covariances, its
+// compensation and whether it started from other speakers (§5.4).
 QString modelSummary(const DynamicModel &model)
 {
     const auto *context = dynamic_cast<const ContextDependentModel *>(&model);
@@ -72,9 +72,10 @@ QString modelSummary(const DynamicModel &model)
     const auto *brand = dynamic_cast<const BrandModel *>(context ? &context->inner() : &model);
     if (brand && brand->fullCovariance())
         states = ModelsPanel::tr("%1, full covariances").arg(states);
-    return model.compensatesVariance()
-               ? ModelsPanel::tr("%1 parameters, %2, variance compensation").arg(model.dimension()).arg(states)
-               : ModelsPanel::tr("%1 parameters, %2").arg(model.dimension()).arg(states);
+    QString summary = model.compensatesVariance()
+                          ? ModelsPanel::tr("%1 parameters, %2, variance compensation").arg(model.dimension()).arg(states)
+                          : ModelsPanel::tr("%1 parameters, %2").arg(model.dimension()).arg(states);
+    return model.meanShift().size() > 0 ? ModelsPanel::tr("%1, started from other speakers").arg(summary) : summary;
 }
 
 } // namespace

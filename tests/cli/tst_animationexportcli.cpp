@@ -152,6 +152,12 @@ private slots:
         QVERIFY(!plain.isEmpty());
         QVERIFY(plain["staticMean"] != moved["staticMean"]);
         QCOMPARE(plain["deltaMean"], moved["deltaMean"]);
+        // The file says it started from other speakers; `info` reads it back.
+        for (const auto &[file, started] : {std::pair{brand, false}, std::pair{brandPrior, true}}) {
+            r = runLipsync({"info", file, "--json"});
+            QCOMPARE(r.exitCode, 0);
+            QCOMPARE(parseJsonObject(r.out)["prior"].toBool(), started);
+        }
         r = runLipsync({"train", "--kind", "brand", "--project", kDemo, "--out", brand});
         QVERIFY2(r.err.contains("Starting from other speakers' mouths"), r.err.constData()); // offered for 30 s
         verifyOneLineError(runLipsync({"train", "--kind", "slds", "--project", kDemo, "--prior", "--out", model}), 2,

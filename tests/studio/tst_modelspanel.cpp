@@ -165,6 +165,12 @@ private slots:
                      && !panel.statusLabel()->toolTip().contains(QStringLiteral("Tick Start")),
                  qPrintable(panel.statusLabel()->toolTip()));
         QVERIFY(trained->means().isApprox(dynamic_cast<HmmMeanModel &>(*plain).means() + shift, 1e-9));
+        // The model records it, and the list says so.
+        QVERIFY(trained->meanShift().isApprox(shift, 1e-12));
+        const QList<QTreeWidgetItem *> rows = panel.list()->findItems(ModelKinds::name(QStringLiteral("hmm")), Qt::MatchExactly, 1);
+        QCOMPARE(rows.size(), 1);
+        QVERIFY2(rows.front()->toolTip(1).endsWith(QStringLiteral("started from other speakers")),
+                 qPrintable(rows.front()->toolTip(1)));
         // The paper's models hold it off.
         panel.paperModelsCheck()->setChecked(true);
         QVERIFY(!panel.priorCheck()->isChecked() && !panel.priorCheck()->isEnabled());

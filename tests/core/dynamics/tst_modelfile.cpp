@@ -8,6 +8,7 @@
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
@@ -113,6 +114,44 @@ private slots:
         const std::string again = dir.filePath(QStringLiteral("again.json")).toStdString();
         saveModel(*loaded, again, aam);
         QCOMPARE(readWholeFile(again), readWholeFile(path));
+    }
+
+    // A model started from other speakers records the shift of its means: read back as it was
+    // written, not applied again, and carried into a retraining; a shift of the wrong size or not
+    // a matrix is named.
+    void priorShiftIsRecorded()
+    {
+        const auto training = data();
+        Feedback feedback;
+        for (const char *kind : {"hmm", "brand"}) {
+            ModelOptions options;
+            options.meanShift = Eigen::MatrixXd::Constant(PhoneSet::kCount, 3, 0.25);
+            options.meanShift(0, 1) = -0.5;
+            auto model = createDynamicModel(kind, options);
+            model->train(training, feedback);
+            QTemporaryDir dir;
+            const std::string path = dir.filePath(QStringLiteral("m.json")).toStdString();
+            saveModel(*model, path, "aam");
+            auto loaded = loadModel(path);
+            QCOMPARE(loaded->meanShift(), options.meanShift);
+            std::mt19937 rng(3);
+            const std::vector<int> labels = randomLabels(rng, 30, {0, 2, 6});
+            QVERIFY(loaded->generate(labels) == model->generate(labels)); // not shifted twice
+            QCOMPARE(retrainingOptions(*loaded).meanShift, options.meanShift);
+            // Without one, none is written.
+            auto own = createDynamicModel(kind);
+            own->train(training, feedback);
+            saveModel(*own, path, "aam");
+            QVERIFY(readWholeFile(path).find("\"prior\"") == std::string::npos);
+            QCOMPARE(loadModel(path)->meanShift().size(), Eigen::Index(0));
+            // A shift of another size.
+            saveModel(*model, path, "aam");
+            QJsonObject o = QJsonDocument::fromJson(QByteArray::fromStdString(readWholeFile(path))).object();
+            o[QStringLiteral("prior")] = QJsonObject{{QStringLiteral("meanShift"), QJsonArray{QJsonArray{1, 2, 3}}}};
+            writeFileAtomically(path, QJsonDocument(o).toJson().toStdString());
+            const std::string e = errorOf([&] { loadModel(path); });
+            QVERIFY2(e.find("prior") != std::string::npos && e.find(path) != std::string::npos, e.c_str());
+        }
     }
 
     // The model records the frame rate of its training sequences and keeps it through its file;
