@@ -17,6 +17,9 @@ std::vector<CommandOption> Compositing::options()
             {QStringLiteral("no-detail"), {},
              QStringLiteral("draw the model's smooth texture only, without the detail (teeth, lip highlights) "
                             "of the AAM's nearest training images")},
+            {QStringLiteral("drawn-closures"), {},
+             QStringLiteral("draw lips closed where the recording's are open with the AAM's synthesis, instead of "
+                            "the person's own closed lips from another moment of the video")},
             {QStringLiteral("no-lip-closure"), {},
              QStringLiteral("draw the model's trajectory as generated, without closing the lips on /p b m/")}};
 }
@@ -28,6 +31,7 @@ CompositeOptions Compositing::from(const CommandLine &args)
     options.synthesizeSkin = args.isSet(QStringLiteral("synthesize-skin"));
     options.matchColour = !args.isSet(QStringLiteral("no-colour-match"));
     options.detail = !args.isSet(QStringLiteral("no-detail"));
+    options.recordedClosures = !args.isSet(QStringLiteral("drawn-closures"));
     return options;
 }
 

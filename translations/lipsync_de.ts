@@ -1625,117 +1625,127 @@
         <translation>&amp;Beleuchtung an das Bild anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="193"/>
+        <location filename="../studio/app/MainWindow.cpp" line="178"/>
+        <source>Closed &amp;Lips from the Footage</source>
+        <translation>Geschlossene Lippen aus dem &amp;Video</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="180"/>
+        <source>Lips closed where the recording&apos;s are open are the person&apos;s own closed lips from another moment of the video; otherwise the AAM draws them</source>
+        <translation>Wo die Aufnahme die Lippen offen hat, sind geschlossene Lippen die eigenen der Person aus einem anderen Moment des Videos; sonst zeichnet sie das AAM</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="199"/>
         <source>&amp;Close the Lips on /p b m/</source>
         <translation>&amp;Lippen bei /p b m/ schließen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="195"/>
+        <location filename="../studio/app/MainWindow.cpp" line="201"/>
         <source>Close the generated lips on the bilabials /p b m/, as speakers do; off: the model&apos;s trajectory as generated</source>
         <translation>Die erzeugten Lippen bei den Bilabialen /p b m/ schließen, wie Sprecher es tun; aus: die Trajektorie des Modells, wie sie erzeugt wurde</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="241"/>
+        <location filename="../studio/app/MainWindow.cpp" line="247"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="245"/>
+        <location filename="../studio/app/MainWindow.cpp" line="251"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="255"/>
+        <location filename="../studio/app/MainWindow.cpp" line="261"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="259"/>
+        <location filename="../studio/app/MainWindow.cpp" line="265"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="280"/>
+        <location filename="../studio/app/MainWindow.cpp" line="286"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="281"/>
+        <location filename="../studio/app/MainWindow.cpp" line="287"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="282"/>
+        <location filename="../studio/app/MainWindow.cpp" line="288"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="284"/>
+        <location filename="../studio/app/MainWindow.cpp" line="290"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="315"/>
+        <location filename="../studio/app/MainWindow.cpp" line="321"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="316"/>
+        <location filename="../studio/app/MainWindow.cpp" line="322"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="335"/>
+        <location filename="../studio/app/MainWindow.cpp" line="341"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="347"/>
+        <location filename="../studio/app/MainWindow.cpp" line="353"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="358"/>
+        <location filename="../studio/app/MainWindow.cpp" line="364"/>
         <source>&amp;Live: Speak and Watch the Face</source>
         <translation>&amp;Live: Sprechen und das Gesicht beobachten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="360"/>
+        <location filename="../studio/app/MainWindow.cpp" line="366"/>
         <source>Speak into the microphone and watch the face move</source>
         <translation>Ins Mikrofon sprechen und dem Gesicht beim Bewegen zusehen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="364"/>
+        <location filename="../studio/app/MainWindow.cpp" line="370"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="368"/>
+        <location filename="../studio/app/MainWindow.cpp" line="374"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="372"/>
+        <location filename="../studio/app/MainWindow.cpp" line="378"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="373"/>
+        <location filename="../studio/app/MainWindow.cpp" line="379"/>
         <source>&amp;User Guide</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="376"/>
+        <location filename="../studio/app/MainWindow.cpp" line="382"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="385"/>
+        <location filename="../studio/app/MainWindow.cpp" line="391"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="405"/>
+        <location filename="../studio/app/MainWindow.cpp" line="411"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
@@ -1745,17 +1755,17 @@
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="452"/>
+        <location filename="../studio/app/MainWindow.cpp" line="458"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="454"/>
+        <location filename="../studio/app/MainWindow.cpp" line="460"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="463"/>
+        <location filename="../studio/app/MainWindow.cpp" line="469"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1763,43 +1773,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="472"/>
+        <location filename="../studio/app/MainWindow.cpp" line="478"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="473"/>
+        <location filename="../studio/app/MainWindow.cpp" line="479"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="473"/>
+        <location filename="../studio/app/MainWindow.cpp" line="479"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="479"/>
+        <location filename="../studio/app/MainWindow.cpp" line="485"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="492"/>
+        <location filename="../studio/app/MainWindow.cpp" line="498"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="500"/>
-        <location filename="../studio/app/MainWindow.cpp" line="508"/>
+        <location filename="../studio/app/MainWindow.cpp" line="506"/>
+        <location filename="../studio/app/MainWindow.cpp" line="514"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="507"/>
+        <location filename="../studio/app/MainWindow.cpp" line="513"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="254"/>
+        <location filename="../studio/app/MainWindow.cpp" line="260"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -1835,37 +1845,37 @@
         <translation>Phonem-Aligner</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="83"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="149"/>
         <source>Build AAM…</source>
         <translation>AAM erstellen …</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="106"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="172"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="106"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="172"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="106"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="172"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="292"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="298"/>
         <source>Made in this session; written when the project is saved</source>
         <translation>In dieser Sitzung erstellt; wird beim Speichern des Projekts geschrieben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="304"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="310"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="84"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="150"/>
         <source>Train</source>
         <translation>Trainieren</translation>
     </message>
@@ -1895,214 +1905,219 @@
         <translation>%1 Parameter, %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="84"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="150"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="85"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="151"/>
         <source>Evaluate (k-fold)</source>
         <translation>Evaluieren (k-fach)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="85"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="260"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="151"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="266"/>
         <source>Realism</source>
         <translation>Realismus</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="88"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="154"/>
         <source>Variance compensation</source>
         <translation>Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="89"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="155"/>
         <source>Phones in context</source>
         <translation>Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="90"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="156"/>
         <source>Paper&apos;s models</source>
         <translation>Modelle des Artikels</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="90"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="156"/>
         <source>Start from other speakers</source>
         <translation>Von anderen Sprechern ausgehen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="116"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="88"/>
         <source>VarPro / Levenberg–Marquardt</source>
         <translation>VarPro / Levenberg–Marquardt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="117"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="78"/>
+        <source>%1, started from other speakers</source>
+        <translation>%1, ausgehend von anderen Sprechern</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="89"/>
         <source>Gradient ascent (paper)</source>
         <translation>Gradientenaufstieg (Artikel)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="90"/>
         <source>Diagonal A</source>
         <translation>Diagonales A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="119"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="91"/>
         <source>Full A</source>
         <translation>Volles A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="122"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="94"/>
         <source>Covariance by CV</source>
         <translation>Kovarianz per KV</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="123"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="95"/>
         <source>Diagonal covariance</source>
         <translation>Diagonale Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="124"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="96"/>
         <source>Full covariance</source>
         <translation>Volle Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="146"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
         <source>Scale each model&apos;s generated trajectories to the spread of the training features: lips that open and close as much as the recording&apos;s, at the cost of a larger error per frame. Off: the paper&apos;s models exactly.</source>
         <translation>Skaliert die erzeugten Trajektorien jedes Modells auf die Streuung der Trainingsmerkmale: Lippen, die sich so weit öffnen und schließen wie in der Aufnahme, um den Preis eines größeren Fehlers je Bild. Aus: genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="154"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="126"/>
         <source>Train each model on states for phones in their context (the neighbouring phones and the part of the phone), tied by decision trees: lips that anticipate the next sound. Off: one state per phone, the paper&apos;s models exactly.</source>
         <translation>Jedes Modell auf Zuständen für Phoneme in ihrem Kontext trainieren (die benachbarten Phoneme und der Teil des Phonems), durch Entscheidungsbäume gebündelt: Lippen, die den nächsten Laut vorwegnehmen. Aus: ein Zustand je Phonem, genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="161"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="133"/>
         <source>For a person with little footage: HMM-mean&apos;s and Brand&apos;s mouth for each sound starts from the mouths of other speakers (GRID s1), carried onto this face, and moves to the person&apos;s own as their frames of that sound add up. Used by Train and Realism.</source>
         <translation>Für eine Person mit wenig Material: Der Mund von HMM-Mittelwert und Brand beginnt für jeden Laut bei den Mündern anderer Sprecher (GRID s1), übertragen auf dieses Gesicht, und geht zum eigenen Mund der Person über, je mehr Bilder sie von diesem Laut hat. Gilt für Trainieren und Realismus.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="168"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="140"/>
         <source>Train and evaluate the paper&apos;s models exactly: no compensation or phones in context, Brand with diagonal covariances, the DPDS by the paper&apos;s Algorithm 1 and gradient ascent without the variance prior; Realism renders without lip closure, colour matching or exemplar detail.</source>
         <translation>Genau die Modelle des Artikels trainieren und evaluieren: keine Kompensation und keine Phone im Kontext, Brand mit diagonalen Kovarianzen, das DPDS mit Algorithmus 1 des Artikels und Gradientenanstieg ohne Varianz-Prior; Realismus rendert ohne Lippenschluss, Farbanpassung und Exemplar-Details.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="190"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="196"/>
         <source>folds: </source>
         <translation>Teilmengen (k-fach): </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="200"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="206"/>
         <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
         <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="201"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="207"/>
         <source>Train the checked models on every sequence with features and phonemes</source>
         <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="202"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="208"/>
         <source>Stop training or evaluation; the previous models stay</source>
         <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="203"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="209"/>
         <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
         <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="208"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="214"/>
         <source>Render the held-out sequences of the same folds into their recordings and measure the lips with dlib&apos;s landmarks: opening correlation, articulation, /p b m/ closures, lag, sharpness, seam</source>
         <translation>Die zurückgehaltenen Sequenzen derselben Folds in ihre Aufnahmen rendern und die Lippen mit dlibs Landmarken messen: Korrelation der Öffnung, Artikulation, Verschlüsse bei /p b m/, Versatz, Schärfe, Naht</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="236"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="242"/>
         <source>AAM parameter </source>
         <translation>AAM-Parameter </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="237"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="243"/>
         <source>Which AAM parameter to plot over time</source>
         <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="247"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="253"/>
         <source>Not evaluated yet: Evaluate (k-fold) in the Models panel draws the paper&apos;s Figure 4 for the checked models.</source>
         <translation>Noch nicht evaluiert: Evaluieren (k-fach) im Modelle-Panel zeichnet Abbildung 4 des Artikels für die gewählten Modelle.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="252"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="258"/>
         <source>Not measured yet: Realism in the Models panel renders held-out sequences and measures the lips on them.</source>
         <translation>Noch nicht gemessen: Realismus im Modelle-Panel rendert zurückgehaltene Sequenzen und misst die Lippen darauf.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="257"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="263"/>
         <source>Trajectory</source>
         <translation>Trajektorie</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="258"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="264"/>
         <source>Training</source>
         <translation>Training</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="259"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="265"/>
         <source>Evaluation</source>
         <translation>Evaluation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="340"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="346"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter tracken und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="401"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="407"/>
         <source>Cannot start from other speakers: %1</source>
         <translation>Kann nicht von anderen Sprechern ausgehen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="411"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="417"/>
         <source>%1 of %2 phones never occur in the footage: their face comes from other speakers&apos; mouths</source>
         <translation>%1 von %2 Phonen kommen im Material nie vor: ihr Gesicht stammt von den Mündern anderer Sprecher</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="413"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="419"/>
         <source>%1 of %2 phones never occur in the footage: their face is guessed from the average</source>
         <translation>%1 von %2 Phonen kommen im Material nie vor: ihr Gesicht wird aus dem Durchschnitt geschätzt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="417"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="423"/>
         <source>%1 have fewer than %2 frames</source>
         <translation>%1 haben weniger als %2 Bilder</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="419"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="425"/>
         <source>Phones in context made no context states: too little footage for them</source>
         <translation>Phone im Kontext haben keine Kontextzustände gebildet: zu wenig Material dafür</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="423"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="429"/>
         <source>More footage of the person (%1 s of speech now) covers more.</source>
         <translation>Mehr Material der Person (jetzt %1 s Sprache) deckt mehr ab.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="425"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="431"/>
         <source>Tick Start from other speakers to take the phones it lacks from other people&apos;s mouths.</source>
         <translation>Mit „Von anderen Sprechern ausgehen“ kommen die fehlenden Phone von den Mündern anderer Menschen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="449"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="455"/>
         <source>Cannot start from other speakers without the project&apos;s AAM.</source>
         <translation>Ohne das AAM des Projekts kann nicht von anderen Sprechern ausgegangen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="468"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="509"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="474"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="515"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="470"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="476"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -2110,27 +2125,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="497"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="503"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="520"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="526"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="522"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="528"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="529"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="535"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="548"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="554"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds: mean and 95 % interval over the folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen: Mittelwert und 95-%-Intervall über die Teilmengen.</numerusform>
@@ -2138,17 +2153,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="611"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="617"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="612"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="618"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="543"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="549"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -2156,12 +2171,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="126"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="98"/>
         <source>Brand&apos;s output covariances. By CV: diagonal or full, whichever of the two generates held-out training sequences more closely (cross-validation). Diagonal: the paper&apos;s model.</source>
         <translation>Brands Ausgabekovarianzen. Per KV: diagonal oder voll, je nachdem, welche der beiden zurückgehaltene Trainingssequenzen genauer erzeugt (Kreuzvalidierung). Diagonal: das Modell der Veröffentlichung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="580"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="586"/>
         <source>Realism of %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
@@ -2169,7 +2184,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="585"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="591"/>
         <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
         <translation>
             <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
@@ -2177,47 +2192,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="640"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="646"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="641"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="647"/>
         <source>Failed: %1.</source>
         <translation>Fehlgeschlagen: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="643"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="649"/>
         <source>Canceled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="674"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="680"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="679"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="685"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="506"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="512"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="703"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="709"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="713"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="719"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="727"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="733"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>

@@ -48,6 +48,10 @@ struct CompositeOptions
     // over the recording's), instead of moving the recording's own lower face to the generated
     // shape and drawing only the inside of the mouth (render/LowerFaceWarp, FaceRenderer).
     bool synthesizeSkin = false;
+    // With the recording's own lower face: lips closed where the recording's are open are the
+    // person's own closed lips from another moment of the background video
+    // (render/ClosedLipExemplars), when it has any; otherwise, and when false, the AAM's synthesis.
+    bool recordedClosures = true;
 
     // The paper's rendering (docs/models.md §7): the AAM's synthesis alone, no colour matching
     // and no exemplar detail.
@@ -56,6 +60,7 @@ struct CompositeOptions
         CompositeOptions o;
         o.matchColour = false;
         o.detail = false;
+        o.recordedClosures = false;
         return o;
     }
 

@@ -107,6 +107,9 @@ FaceRenderer::FaceRenderer(const AamModel &aam, const std::string &videoPath, Fe
     for (int t : tracked.framesWithoutFace)
         if (t >= 0 && t < int(m_occluded.size()))
             m_occluded[size_t(t)] = true;
+    std::vector<bool> usable(m_occluded.size());
+    std::transform(m_occluded.begin(), m_occluded.end(), usable.begin(), [](bool o) { return !o; });
+    m_closedLips = ClosedLipExemplars(*m_video, tracked.shapes, usable);
 }
 
 std::vector<bool> FaceRenderer::occludedFrames(const Eigen::VectorXd &errors)
@@ -218,14 +221,22 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
     const Eigen::VectorXd generated = pose(index).apply(m_synthesizer.shape(features));
     const Eigen::VectorXd tracked = trackedShape(index);
     LowerFaceWarp::apply(frame, tracked, generated);
-    const cv::Mat alpha = mouthInteriorAlpha(generated, tracked);
+    bool closing = false;
+    const cv::Mat alpha = mouthInteriorAlpha(generated, tracked, &closing);
     cv::Rect box = cv::boundingRect(alpha > 0.f);
     if (box.empty())
         return;
     cv::Mat synthesised = frame.clone();
-    CompositeOptions whole = options;
-    whole.region = FaceRegion::Full;
-    m_synthesizer.composite(features, pose(index), synthesised, whole);
+    // Closed lips: the person's own from another moment of the video, where it has them.
+    const int exemplar = closing && options.recordedClosures && m_video
+                             ? m_closedLips.choose(m_video->timestamp(sourceFrame(index)))
+                             : -1;
+    cv::Mat patch = synthesised(box);
+    if (exemplar < 0 || !m_closedLips.draw(exemplar, generated, box, patch)) {
+        CompositeOptions whole = options;
+        whole.region = FaceRegion::Full;
+        m_synthesizer.composite(features, pose(index), synthesised, whole);
+    }
     // The synthesis's colour matched to the frame's where they meet: the mean difference over
     // the feathered band (alpha between 0.02 and 0.5: the edge of what is fully drawn, all of a
     // faint blend), added to what is drawn (the face-wide colour matching sees the face's
@@ -268,7 +279,8 @@ Eigen::VectorXd FaceRenderer::trackedShape(int index) const
     return pose(index).apply(m_synthesizer.shape(c));
 }
 
-cv::Mat FaceRenderer::mouthInteriorAlpha(const Eigen::VectorXd &generated, const Eigen::VectorXd &tracked) const
+cv::Mat FaceRenderer::mouthInteriorAlpha(const Eigen::VectorXd &generated, const Eigen::VectorXd &tracked,
+                                         bool *closing) const
 {
     cv::Mat alpha(m_size, CV_32F, cv::Scalar(0));
     const double wanted = LowerFaceWarp::opening(generated);
@@ -298,6 +310,8 @@ cv::Mat FaceRenderer::mouthInteriorAlpha(const Eigen::VectorXd &generated, const
         // closure grows from half the recorded opening to a tenth of it.
         const double u = std::clamp((kClosingRatio * recorded - wanted) / ((kClosingRatio - 0.1) * recorded), 0.0, 1.0);
         const double width = (LowerFaceWarp::mouthCorner(generated, true) - LowerFaceWarp::mouthCorner(generated, false)).norm();
+        if (closing)
+            *closing = true;
         fill(LowerFaceWarp::outerLips(generated, 0.12 * width), 0.06 * width, float(u * u * (3.0 - 2.0 * u)));
     }
     return alpha;

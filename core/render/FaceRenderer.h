@@ -4,6 +4,8 @@
 // shape tracked in the frame to the shape the parameters give (LowerFaceWarp, a thin-plate
 // spline), and only the inside of a mouth opened wider than recorded is synthesised from the AAM
 // (shape + texture + exemplar detail, AamSynthesizer), blended into the lips with a feathered edge.
+// Lips asked to close where the recording's are open are the person's own closed lips from another
+// moment of the video (ClosedLipExemplars; CompositeOptions::recordedClosures).
 // CompositeOptions::synthesizeSkin pastes the AAM's whole lower-face synthesis instead, and
 // FaceRegion::Full the whole modelled face, colour-matched to the frame along the seam.
 //
@@ -19,6 +21,7 @@
 #include "aam/AamModel.h"
 #include "aam/AamSynthesizer.h"
 #include "render/BackgroundRetiming.h"
+#include "render/ClosedLipExemplars.h"
 
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
@@ -111,7 +114,9 @@ private:
     // The synthesised inside of the mouth over the warped frame: its alpha (CV_32F, frame size),
     // zero where the recording's own mouth, moved, already shows as much opening.
     // `generated` and `tracked`: the generated and the tracked 23 points in the frame's pixels.
-    cv::Mat mouthInteriorAlpha(const Eigen::VectorXd &generated, const Eigen::VectorXd &tracked) const;
+    // `closing` (optional) is set when the alpha draws closed lips over an open recorded mouth.
+    cv::Mat mouthInteriorAlpha(const Eigen::VectorXd &generated, const Eigen::VectorXd &tracked,
+                               bool *closing = nullptr) const;
 
     const AamModel &m_aam;
     AamSynthesizer m_synthesizer;
@@ -124,6 +129,7 @@ private:
     std::vector<Similarity> m_poses;   // one per video frame, or one for the neutral frame
     Eigen::MatrixXd m_tracked;
     std::vector<bool> m_occluded;      // per video frame (occluded())
+    ClosedLipExemplars m_closedLips;   // the video's own closed lips
     CompositeOptions m_composite;
     BackgroundRetiming m_retiming;     // empty: frame i is the video's frame i
 };

@@ -175,17 +175,23 @@ void MainWindow::addGeneratedFaceMenu(QMenu *view)
                           "model's smooth texture"));
     QAction *colour = face->addAction(tr("&Match the Frame's Lighting"));
     colour->setObjectName(QStringLiteral("matchColourAction"));
+    QAction *closures = face->addAction(tr("Closed &Lips from the Footage"));
+    closures->setObjectName(QStringLiteral("recordedClosuresAction"));
+    closures->setToolTip(tr("Lips closed where the recording's are open are the person's own closed lips from another "
+                            "moment of the video; otherwise the AAM draws them"));
     const CompositeOptions &current = m_context->compositeOptions();
     for (auto [action, on] : {std::pair{skin, current.synthesizeSkin}, std::pair{whole, current.region == FaceRegion::Full},
-                              std::pair{detail, current.detail}, std::pair{colour, current.matchColour}}) {
+                              std::pair{detail, current.detail}, std::pair{colour, current.matchColour},
+                              std::pair{closures, current.recordedClosures}}) {
         action->setCheckable(true);
         action->setChecked(on);
-        connect(action, &QAction::toggled, this, [this, skin, whole, detail, colour] {
+        connect(action, &QAction::toggled, this, [this, skin, whole, detail, colour, closures] {
             CompositeOptions options;
             options.synthesizeSkin = skin->isChecked();
             options.region = whole->isChecked() ? FaceRegion::Full : FaceRegion::Lower;
             options.detail = detail->isChecked();
             options.matchColour = colour->isChecked();
+            options.recordedClosures = closures->isChecked();
             m_context->setCompositeOptions(options);
         });
     }

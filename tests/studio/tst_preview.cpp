@@ -256,7 +256,8 @@ private slots:
 
     // View > Generated Face > Close the Lips on /p b m/ (on by default) closes the generated lips
     // on the frames of bilabial phones; off, the preview shows the models' trajectories as
-    // generated, where the lips stay apart on some of those frames.
+    // generated, where the lips stay apart on some of those frames. Closed Lips from the Footage
+    // chooses whose closed lips are drawn.
     void lipClosureOptionClosesBilabials()
     {
         const auto aam = m_window->context()->modelStore()->aam();
@@ -309,6 +310,32 @@ private slots:
         QTRY_COMPARE(rebuilt.count(), 2);
         QVERIFY(m_preview->faces() && m_preview->faces()->tracks().size() == 2);
         QCOMPARE(openings(m_preview->faces()), closed);
+
+        // ... and Closed Lips from the Footage (on by default) draws lips closed where the
+        // recording's are open from the clip's own closed lips: off, the AAM draws them, and
+        // those frames look different.
+        QAction *footage = m_window->findChild<QAction *>(QStringLiteral("recordedClosuresAction"));
+        QVERIFY(footage && footage->isCheckable() && footage->isChecked());
+        QVERIFY(m_window->context()->compositeOptions().recordedClosures);
+        auto pictures = [&] {
+            std::vector<QImage> images;
+            for (int t = 0; t < m_preview->faces()->frameCount(); ++t) {
+                m_window->context()->setCurrentFrame(t);
+                images.push_back(m_preview->panel(1)->image());
+            }
+            return images;
+        };
+        const std::vector<QImage> own = pictures();
+        footage->trigger();
+        QVERIFY(!m_window->context()->compositeOptions().recordedClosures);
+        const std::vector<QImage> drawn = pictures();
+        int differing = 0;
+        for (size_t i = 0; i < own.size(); ++i)
+            differing += own[i] != drawn[i];
+        QVERIFY2(differing > 0, "no closure was drawn from the footage");
+        footage->trigger();
+        QVERIFY(m_window->context()->compositeOptions().recordedClosures);
+        QVERIFY(pictures() == own);
     }
 
     void frameStepAndScrubMoveTheSharedCursor()

@@ -5,12 +5,14 @@
 // only inside the warped region, the region's border shows no step beyond the recording's own
 // (the warp fades to nothing there), and the eyes are the recording's. And the mouth goes where
 // it is asked: an open mouth asked to close is closed in the render, as dlib's landmarker reads it
-// (at HD scale the spline's system must be solved well, or nothing moves).
+// (at HD scale the spline's system must be solved well, or nothing moves), with his own closed
+// lips from another moment of the clip.
 #include "aam/AamBuilder.h"
 #include "aam/FaceDetector.h"
 #include "aam/LandmarkScheme.h"
 #include "io/VideoReader.h"
 #include "render/BilabialClosure.h"
+#include "render/ClosedLipExemplars.h"
 #include "render/FaceRenderer.h"
 #include "render/LowerFaceWarp.h"
 #include "tasks/Feedback.h"
@@ -161,6 +163,78 @@ private slots:
         qInfo("%d of %d open mouths closed in the render (dlib's gap under half the recorded one)", closed, open);
         QVERIFY(open >= 5);
         QVERIFY2(closed >= open * 3 / 4, qPrintable(QStringLiteral("%1 of %2").arg(closed).arg(open)));
+    }
+
+    // The closed lips drawn over open ones are his own: their colour (CIELAB, inside the lips'
+    // outline) and their texture (the Laplacian's spread there) are those of the lips he closes
+    // in the recording; the AAM's synthesis of closed lips (an average over open and closed
+    // training frames, with its exemplar detail) has more than twice the recorded texture.
+    void closedLipsAreHisOwn()
+    {
+        Feedback feedback;
+        FaceRenderer renderer(m_aam, kClip, feedback);
+        const BilabialClosure closure(m_aam);
+        struct Look
+        {
+            cv::Vec3d lab{0, 0, 0};
+            double sharpness = 0;
+            int count = 0;
+            void add(const cv::Mat &frame, const Eigen::VectorXd &shape)
+            {
+                std::vector<cv::Point> outline;
+                for (const cv::Point2f &p : LowerFaceWarp::outerLips(shape, 0.0))
+                    outline.emplace_back(int(std::lround(p.x)), int(std::lround(p.y)));
+                cv::Mat mask(frame.size(), CV_8U, cv::Scalar(0));
+                cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{outline}, cv::Scalar(255));
+                cv::erode(mask, mask, cv::Mat(), cv::Point(-1, -1), 2); // inside the lips, off their edge
+                cv::Mat labImage, grey, laplacian;
+                cv::cvtColor(frame, labImage, cv::COLOR_BGR2Lab);
+                cv::cvtColor(frame, grey, cv::COLOR_BGR2GRAY);
+                cv::Laplacian(grey, laplacian, CV_64F);
+                const cv::Scalar m = cv::mean(labImage, mask);
+                cv::Scalar mean, sd;
+                cv::meanStdDev(laplacian, mean, sd, mask);
+                lab += cv::Vec3d(m[0], m[1], m[2]);
+                sharpness += sd[0];
+                ++count;
+            }
+            cv::Vec3d meanLab() const { return lab / std::max(1, count); }
+            double meanSharpness() const { return sharpness / std::max(1, count); }
+        };
+        Look recorded, own, drawn;
+        CompositeOptions aamClosures = renderer.compositeOptions();
+        aamClosures.recordedClosures = false;
+        for (int t = 0; t < renderer.videoFrameCount(); ++t) {
+            const Eigen::VectorXd shape = renderer.trackedShape(t);
+            const double width = (LowerFaceWarp::mouthCorner(shape, true) - LowerFaceWarp::mouthCorner(shape, false)).norm();
+            const double share = LowerFaceWarp::opening(shape) / width;
+            if (share < ClosedLipExemplars::kClosedShare) {
+                recorded.add(renderer.background(t), shape);
+                continue;
+            }
+            if (share < 0.15 || t % 2)
+                continue; // open mouths asked to close, every other frame
+            const Eigen::VectorXd shut = closure.apply(renderer.trackedFeatures().row(t), std::vector<double>{1.0}).row(0).transpose();
+            const Eigen::VectorXd generated = renderer.pose(t).apply(renderer.synthesizer().shape(shut));
+            own.add(renderer.render(t, shut), generated);
+            cv::Mat frame = renderer.background(t);
+            renderer.renderInto(t, shut, frame, aamClosures);
+            drawn.add(frame, generated);
+        }
+        QVERIFY(recorded.count >= 5 && own.count >= 5);
+        const double ownDistance = cv::norm(own.meanLab() - recorded.meanLab());
+        const double drawnDistance = cv::norm(drawn.meanLab() - recorded.meanLab());
+        qInfo("closed lips, CIELAB (8-bit) and Laplacian s.d.: recorded %.1f %.1f %.1f, %.1f (%d frames); "
+              "his own drawn in %.1f %.1f %.1f, %.1f (%d frames, %.1f from the recorded); the AAM's %.1f %.1f %.1f, %.1f "
+              "(%.1f from the recorded)",
+              recorded.meanLab()[0], recorded.meanLab()[1], recorded.meanLab()[2], recorded.meanSharpness(), recorded.count,
+              own.meanLab()[0], own.meanLab()[1], own.meanLab()[2], own.meanSharpness(), own.count, ownDistance,
+              drawn.meanLab()[0], drawn.meanLab()[1], drawn.meanLab()[2], drawn.meanSharpness(), drawnDistance);
+        // Within a few CIELAB units of his own (both are colour-matched to the skin around them)...
+        QVERIFY2(ownDistance < 3.0, qPrintable(QString::number(ownDistance)));
+        // ... and as sharp as his own, where the AAM's closed lips carry the lines of an average.
+        QVERIFY(std::abs(own.meanSharpness() - recorded.meanSharpness())
+                < std::abs(drawn.meanSharpness() - recorded.meanSharpness()));
     }
 };
 

@@ -1,0 +1,149 @@
+// ClosedLipExemplars on a real clip (resources/demo, GRID s1) with shapes of known openings: only
+// the closed frames are kept, one per closure, the most closed; a closure is never taken from
+// within half a second of the frame drawn into; drawn onto its own shape an exemplar gives back
+// the recording's pixels, moved with its shape it moves with it, and a degenerate map draws
+// nothing.
+#include "render/ClosedLipExemplars.h"
+
+#include "aam/LandmarkScheme.h"
+#include "io/VideoReader.h"
+#include "render/LowerFaceWarp.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <QTest>
+
+#include <cmath>
+
+using namespace lipsync;
+
+namespace {
+
+const std::string kClip = LIPSYNC_SOURCE_DIR "/resources/demo/media/bbaf2n.mpg";
+
+// The template face in the middle of a 360x288 frame, its inner lips `gap` pixels apart.
+Eigen::VectorXd face(double gap)
+{
+    const Eigen::VectorXd t = templateShape();
+    double top = 1e9, bottom = -1e9;
+    for (Eigen::Index i = 1; i < t.size(); i += 2) {
+        top = std::min(top, t[i]);
+        bottom = std::max(bottom, t[i]);
+    }
+    const double scale = 0.45 * 288 / (bottom - top);
+    Eigen::VectorXd s(t.size());
+    for (Eigen::Index i = 0; i < t.size(); i += 2) {
+        s[i] = 180.0 + scale * t[i];
+        s[i + 1] = 130.0 + scale * t[i + 1];
+    }
+    const double mid = 0.5 * (s[2 * 16 + 1] + s[2 * 17 + 1]);
+    s[2 * 16 + 1] = mid - 0.5 * gap;
+    s[2 * 17 + 1] = mid + 0.5 * gap;
+    return s;
+}
+
+double meanAbsDifference(const cv::Mat &a, const cv::Mat &b)
+{
+    cv::Mat d;
+    cv::absdiff(a, b, d);
+    const cv::Scalar m = cv::mean(d);
+    return (m[0] + m[1] + m[2]) / 3.0;
+}
+
+} // namespace
+
+class TestClosedLipExemplars : public QObject
+{
+    Q_OBJECT
+
+    // Frames 5, 30, 31 and 60 closed (30 and 31 one closure: 40 ms apart; 31 the more closed),
+    // frame 45 closed but not usable, the rest open.
+    Eigen::MatrixXd m_shapes;
+    std::vector<bool> m_usable;
+
+private slots:
+    void initTestCase()
+    {
+        VideoReader video(kClip);
+        QVERIFY(video.frameCount() >= 70);
+        m_shapes.resize(video.frameCount(), 2 * scheme23::kPointCount);
+        m_usable.assign(size_t(video.frameCount()), true);
+        for (int t = 0; t < video.frameCount(); ++t)
+            m_shapes.row(t) = face(t == 31 ? 0.0 : (t == 5 || t == 30 || t == 45 || t == 60) ? 0.5 : 12.0).transpose();
+        m_usable[45] = false;
+        QVERIFY(LowerFaceWarp::opening(face(0.5)) / (LowerFaceWarp::mouthCorner(face(0.5), true)
+                                                      - LowerFaceWarp::mouthCorner(face(0.5), false)).norm()
+                < ClosedLipExemplars::kClosedShare);
+    }
+
+    void keepsOneFramePerClosure()
+    {
+        VideoReader video(kClip);
+        const ClosedLipExemplars exemplars(video, m_shapes, m_usable);
+        QCOMPARE(exemplars.frames(), (std::vector<int>{5, 31, 60}));
+        // No closed frame at all: nothing kept.
+        std::vector<bool> none(m_usable.size(), false);
+        QVERIFY(ClosedLipExemplars(video, m_shapes, none).empty());
+    }
+
+    void neverFromBesideTheFrameDrawnInto()
+    {
+        VideoReader video(kClip);
+        const ClosedLipExemplars exemplars(video, m_shapes, m_usable);
+        const std::vector<int> frames = exemplars.frames();
+        for (int t = 0; t < video.frameCount(); ++t) {
+            const int which = exemplars.choose(video.timestamp(t));
+            QVERIFY(which >= 0);
+            const double away = std::abs(video.timestamp(frames[size_t(which)]) - video.timestamp(t));
+            QVERIFY2(away >= ClosedLipExemplars::kAwaySeconds, qPrintable(QString("frame %1").arg(t)));
+            // ... and the nearest such.
+            for (int f : frames) {
+                const double d = std::abs(video.timestamp(f) - video.timestamp(t));
+                QVERIFY(d < ClosedLipExemplars::kAwaySeconds || d >= away);
+            }
+        }
+        QCOMPARE(frames[size_t(exemplars.choose(video.timestamp(28)))], 5); // 31 is beside it, 5 nearer than 60
+    }
+
+    void drawsTheRecordingsLipsWhereTheShapePutsThem()
+    {
+        VideoReader video(kClip);
+        const ClosedLipExemplars exemplars(video, m_shapes, m_usable);
+        const int which = exemplars.choose(video.timestamp(40)); // frame 60
+        QCOMPARE(exemplars.frames()[size_t(which)], 60);
+        const cv::Mat recorded = video.frame(60);
+        const Eigen::VectorXd shape = m_shapes.row(60).transpose();
+        const cv::Rect box = cv::boundingRect(LowerFaceWarp::outerLips(shape, 5.0));
+        cv::Mat patch(box.size(), CV_8UC3, cv::Scalar(0, 0, 0));
+        // Onto its own shape: the recording's pixels.
+        QVERIFY(exemplars.draw(which, shape, box, patch));
+        QVERIFY2(meanAbsDifference(patch, recorded(box)) < 0.5, qPrintable(QString::number(meanAbsDifference(patch, recorded(box)))));
+        // Onto its shape moved 4 px right and 3 down: the recording's pixels moved so.
+        Eigen::VectorXd moved = shape;
+        for (Eigen::Index i = 0; i < moved.size(); i += 2) {
+            moved[i] += 4.0;
+            moved[i + 1] += 3.0;
+        }
+        const cv::Rect movedBox = box + cv::Point(4, 3);
+        QVERIFY(exemplars.draw(which, moved, movedBox, patch));
+        QVERIFY(meanAbsDifference(patch, recorded(box)) < 0.5);
+        // ... not left where it was.
+        cv::Mat unmoved(box.size(), CV_8UC3);
+        QVERIFY(exemplars.draw(which, moved, box, unmoved));
+        QVERIFY(meanAbsDifference(unmoved, recorded(box)) > 2.0);
+        // A mouth shrunk to a point: a degenerate map, nothing drawn.
+        Eigen::VectorXd point = shape;
+        for (Eigen::Index i = 0; i < point.size(); i += 2) {
+            point[i] = 180.0 + 0.01 * (shape[i] - 180.0);
+            point[i + 1] = 200.0 + 0.01 * (shape[i + 1] - 200.0);
+        }
+        patch.setTo(cv::Scalar(1, 2, 3));
+        QVERIFY(!exemplars.draw(which, point, box, patch));
+        QCOMPARE(cv::mean(patch)[2], 3.0);
+        QVERIFY(!exemplars.draw(-1, shape, box, patch));
+        QVERIFY(!exemplars.draw(which, shape, box + cv::Size(1, 0), patch)); // the patch not the box's size
+    }
+};
+
+QTEST_GUILESS_MAIN(TestClosedLipExemplars)
+#include "tst_closedlipexemplars.moc"
