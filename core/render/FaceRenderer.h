@@ -99,6 +99,8 @@ public:
     // How much of each pixel renderInto() replaces with synthesis for these features (CV_32F,
     // 0..1; what the warp moves is the recording's own and counts 0).
     cv::Mat synthesisedWeight(int index, const Eigen::VectorXd &features) const;
+    // The video's own closed lips the renderer draws closures with (empty without a video).
+    const ClosedLipExemplars &closedLips() const { return m_closedLips; }
     // The AAM's synthesis the renderer draws with (its shapes and textures of parameters).
     const AamSynthesizer &synthesizer() const { return m_synthesizer; }
     // The 23 points of the face tracked in frame `index`, in its pixels (the mean shape at the

@@ -6,7 +6,7 @@
 // (the warp fades to nothing there), and the eyes are the recording's. And the mouth goes where
 // it is asked: an open mouth asked to close is closed in the render, as dlib's landmarker reads it
 // (at HD scale the spline's system must be solved well, or nothing moves), with his own closed
-// lips from another moment of the clip.
+// lips from another moment of the clip; and nothing flickers from frame to frame.
 #include "aam/AamBuilder.h"
 #include "aam/FaceDetector.h"
 #include "aam/LandmarkScheme.h"
@@ -165,6 +165,58 @@ private slots:
         QVERIFY2(closed >= open * 3 / 4, qPrintable(QStringLiteral("%1 of %2").arg(closed).arg(open)));
     }
 
+    // No flicker: rendered through the clip with another mouth, closed over two runs of frames
+    // (his own closed lips drawn in), the mouth changes from frame to frame about as much as the
+    // recording's does, at the warped region's border and inside the mouth alike.
+    void steadyOverTime()
+    {
+        Feedback feedback;
+        FaceRenderer renderer(m_aam, kClip, feedback);
+        const int frames = renderer.videoFrameCount();
+        Eigen::MatrixXd trajectory = renderer.trackedFeatures().topRows(frames);
+        trajectory.col(0).array() += 2.0 * std::sqrt(m_aam.combinedVariances[0]);
+        std::vector<double> closed(size_t(frames), 0.0);
+        for (int t = 0; t < frames; ++t)
+            closed[size_t(t)] = (t >= 30 && t < 45) || (t >= 70 && t < 85) ? 1.0 : 0.0;
+        trajectory = BilabialClosure(m_aam).apply(trajectory, closed);
+        cv::Mat previousRendered, previousRecorded;
+        double mouthRendered = 0, mouthRecorded = 0, worstExcess = 0;
+        int pairs = 0;
+        for (int t = 0; t < frames; ++t) {
+            const cv::Mat recorded = renderer.background(t);
+            const cv::Mat rendered = renderer.render(t, trajectory.row(t).transpose());
+            cv::Mat greyRendered, greyRecorded;
+            cv::cvtColor(rendered, greyRendered, cv::COLOR_BGR2GRAY);
+            cv::cvtColor(recorded, greyRecorded, cv::COLOR_BGR2GRAY);
+            if (t > 0) {
+                // The mouth and its surroundings: the tracked outer lips grown by half the mouth's width.
+                const Eigen::VectorXd shape = renderer.trackedShape(t);
+                const double width = (LowerFaceWarp::mouthCorner(shape, true) - LowerFaceWarp::mouthCorner(shape, false)).norm();
+                const cv::Rect box = cv::boundingRect(LowerFaceWarp::outerLips(shape, 0.5 * width))
+                                     & cv::Rect(0, 0, rendered.cols, rendered.rows);
+                cv::Mat a, b;
+                cv::absdiff(greyRendered(box), previousRendered(box), a);
+                cv::absdiff(greyRecorded(box), previousRecorded(box), b);
+                const double changeRendered = cv::mean(a)[0], changeRecorded = cv::mean(b)[0];
+                mouthRendered += changeRendered;
+                mouthRecorded += changeRecorded;
+                // Not where the closure asked of it starts or ends: the mouth is meant to move there.
+                if (closed[size_t(t)] == closed[size_t(t - 1)])
+                    worstExcess = std::max(worstExcess, changeRendered - changeRecorded);
+                ++pairs;
+            }
+            previousRendered = greyRendered;
+            previousRecorded = greyRecorded;
+        }
+        qInfo("mean change of the mouth's box from frame to frame: rendered %.2f, recorded %.2f levels; the largest "
+              "excess of one frame over the recording's, away from the closures' start and end: %.2f levels (%d "
+              "frame pairs)",
+              mouthRendered / pairs, mouthRecorded / pairs, worstExcess, pairs);
+        QVERIFY(pairs > 100);
+        QVERIFY2(mouthRendered < 1.15 * mouthRecorded, qPrintable(QString::number(mouthRendered / mouthRecorded)));
+        QVERIFY2(worstExcess < 3.0, qPrintable(QString::number(worstExcess)));
+    }
+
     // The closed lips drawn over open ones are his own: their colour (CIELAB, inside the lips'
     // outline) and their texture (the Laplacian's spread there) are those of the lips he closes
     // in the recording; the AAM's synthesis of closed lips (an average over open and closed
@@ -201,6 +253,7 @@ private slots:
             cv::Vec3d meanLab() const { return lab / std::max(1, count); }
             double meanSharpness() const { return sharpness / std::max(1, count); }
         };
+        QVERIFY(!renderer.closedLips().empty()); // the clip has closed lips of its own
         Look recorded, own, drawn;
         CompositeOptions aamClosures = renderer.compositeOptions();
         aamClosures.recordedClosures = false;
