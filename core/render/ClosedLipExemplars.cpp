@@ -3,6 +3,7 @@
 #include "aam/LandmarkScheme.h"
 #include "io/VideoReader.h"
 #include "render/LowerFaceWarp.h"
+#include "util/Error.h"
 
 #include <Eigen/QR>
 #include <opencv2/imgproc.hpp>
@@ -69,7 +70,11 @@ ClosedLipExemplars::ClosedLipExemplars(VideoReader &video, const Eigen::MatrixXd
                              & image;
         if (box.width < 8 || box.height < 8)
             continue;
-        e.crop = video.frame(t)(box).clone();
+        try {
+            e.crop = video.frame(t)(box).clone();
+        } catch (const Error &) {
+            continue; // a frame the tracker read but that does not decode again: no exemplar from it
+        }
         e.offset = box.tl();
         m_exemplars.push_back(std::move(e));
     }
