@@ -208,7 +208,7 @@ int infoModel(const QString &path, bool json)
                        {QStringLiteral("phones in context"), context != nullptr},
                        {QStringLiteral("variance compensation"), model->compensatesVariance()},
                        // Whether its means started from other speakers' mouths (§5.4).
-                       {QStringLiteral("prior"), model->meanShift().size() > 0},
+                       {QStringLiteral("prior"), model->startedFromOtherSpeakers()},
                        {QStringLiteral("fps"), model->frameRate() > 0 ? QJsonValue(model->frameRate()) : QJsonValue()},
                        {QStringLiteral("aam"), QString::fromStdString(aamId)}},
                       json);

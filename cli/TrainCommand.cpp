@@ -84,10 +84,7 @@ int runTrain(const CommandLine &args)
     const auto *context = dynamic_cast<const ContextDependentModel *>(model.get());
     const int states = context ? context->tree().stateCount() : model->stateCount();
     // What the footage covers, and what it lacks for these options (docs/models.md §0).
-    PhoneCoverage coverage = PhoneCoverage::of(sequences);
-    coverage.contextStates = context ? states : 0;
-    coverage.takesPrior = modelKindTakesPrior(*parseModelKind(kind.toStdString()));
-    coverage.prior = prior != nullptr;
+    const PhoneCoverage coverage = PhoneCoverage::of(sequences, *model);
     if (const std::string advice = coverage.advice(); !advice.empty())
         std::fprintf(stderr, "lipsync train: warning: %s\n", advice.c_str());
     // Brand: its covariance, and the held-out errors that chose it (docs/models.md §2.1).

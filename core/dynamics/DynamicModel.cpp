@@ -171,7 +171,7 @@ void DynamicModel::train(const std::vector<LabelledSequence> &sequences, Feedbac
         rate = s.frameRate > 0 ? s.frameRate : rate;
     }
     fit(sequences, feedback);
-    if (m_meanShift.size() > 0)
+    if (startedFromOtherSpeakers())
         shiftMeans(m_meanShift);
     m_frameRate = rate;
     m_mean.resize(0);

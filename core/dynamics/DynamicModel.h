@@ -44,6 +44,7 @@ public:
     // The shift train() applied (a model file records it: whether, and how far, the model started
     // from other speakers); empty when it started from its own data alone.
     const Eigen::MatrixXd &meanShift() const { return m_meanShift; }
+    bool startedFromOtherSpeakers() const { return m_meanShift.size() > 0; }
     // Moves each label's mean (static and, for Brand, the joint mean's static half) by
     // shift.row(label): stateCount() x d of a trained model. Throws lipsync::Error for another
     // shape, values that are not finite, or a kind without per-label means.

@@ -131,7 +131,7 @@ void saveModel(const DynamicModel &model, const std::string &path, const std::st
         }
         o[QStringLiteral("compensation")] = c;
     }
-    if (model.meanShift().size() > 0)
+    if (model.startedFromOtherSpeakers())
         o[QStringLiteral("prior")] = QJsonObject{{QStringLiteral("meanShift"), json::fromMatrix(model.meanShift())}};
     writeFileAtomically(path, QJsonDocument(o).toJson(QJsonDocument::Compact).toStdString());
 }

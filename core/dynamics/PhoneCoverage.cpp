@@ -1,5 +1,7 @@
 #include "dynamics/PhoneCoverage.h"
 
+#include "dynamics/ContextDependentModel.h"
+
 #include <QJsonArray>
 
 namespace lipsync {
@@ -25,6 +27,17 @@ PhoneCoverage PhoneCoverage::of(const std::vector<LabelledSequence> &sequences)
         else if (c.frames[size_t(n)] < kMinimumVarianceFrames)
             c.rare.push_back(PhoneSet::label(n));
     }
+    return c;
+}
+
+PhoneCoverage PhoneCoverage::of(const std::vector<LabelledSequence> &sequences, const DynamicModel &trained)
+{
+    PhoneCoverage c = of(sequences);
+    if (const auto *context = dynamic_cast<const ContextDependentModel *>(&trained))
+        c.contextStates = context->tree().stateCount();
+    const std::optional<ModelKind> kind = parseModelKind(trained.kind());
+    c.takesPrior = kind && modelKindTakesPrior(*kind);
+    c.prior = trained.startedFromOtherSpeakers();
     return c;
 }
 

@@ -15,6 +15,8 @@
 
 namespace lipsync {
 
+class DynamicModel;
+
 struct PhoneCoverage
 {
     std::array<long long, PhoneSet::kCount> frames{};
@@ -28,6 +30,9 @@ struct PhoneCoverage
     bool takesPrior = false, prior = false;
 
     static PhoneCoverage of(const std::vector<LabelledSequence> &sequences);
+    // The same for a model trained on them: its context states, whether its kind takes a prior
+    // and whether it started from one.
+    static PhoneCoverage of(const std::vector<LabelledSequence> &sequences, const DynamicModel &trained);
     static constexpr int kSpeechPhones = PhoneSet::kCount - 2; // without silence and breath
 
     // What the footage lacks for these options, one or two sentences, or empty when it covers

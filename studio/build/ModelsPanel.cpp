@@ -75,7 +75,7 @@ QString modelSummary(const DynamicModel &model)
     QString summary = model.compensatesVariance()
                           ? ModelsPanel::tr("%1 parameters, %2, variance compensation").arg(model.dimension()).arg(states)
                           : ModelsPanel::tr("%1 parameters, %2").arg(model.dimension()).arg(states);
-    return model.meanShift().size() > 0 ? ModelsPanel::tr("%1, started from other speakers").arg(summary) : summary;
+    return model.startedFromOtherSpeakers() ? ModelsPanel::tr("%1, started from other speakers").arg(summary) : summary;
 }
 
 } // namespace
@@ -489,11 +489,7 @@ QList<Task *> ModelsPanel::train()
                     frames += s.frameCount();
                     ll += model->trajectoryLogLikelihood(s.labels, s.features); // comparable (§6.2)
                 }
-                PhoneCoverage coverage = PhoneCoverage::of(*data);
-                coverage.takesPrior = modelKindTakesPrior(*parseModelKind(kind.toStdString()));
-                coverage.prior = own.meanShift.size() > 0;
-                if (const auto *context = dynamic_cast<const ContextDependentModel *>(model.get()))
-                    coverage.contextStates = context->tree().stateCount();
+                const PhoneCoverage coverage = PhoneCoverage::of(*data, *model);
                 // Written on the GUI thread by the commit (a small JSON file), so a canceled
                 // training never replaces the model file either.
                 return [self, kind, name, file, model, seconds, ll, frames, aamId, coverage] {

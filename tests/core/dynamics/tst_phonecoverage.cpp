@@ -1,7 +1,11 @@
 // PhoneCoverage: the frames of each speech phone in a model's training footage, the phones
 // never seen and those too rare for a variance of their own, the speech's length, and the plain
-// advice when the footage is too short for the options (phones in context without states).
+// advice when the footage is too short for the options (phones in context without states), and
+// for a trained model what it did (its context states, whether it started from other speakers).
 #include "dynamics/PhoneCoverage.h"
+
+#include "dynamics/ModelFile.h"
+#include "tasks/Feedback.h"
 
 #include <QJsonArray>
 #include <QTest>
@@ -69,6 +73,36 @@ private slots:
         QVERIFY(c.advice().find("made no context states") != std::string::npos);
         c.contextStates = 120;
         QVERIFY(c.advice().empty());
+    }
+
+    // For a trained model the coverage reads what the model did: its context states, whether its
+    // kind takes a prior and whether it started from one.
+    void readsWhatTheModelDid()
+    {
+        std::vector<std::pair<const char *, int>> all;
+        for (int n = 0; n < PhoneSet::kCount; ++n)
+            all.push_back({PhoneSet::labels()[size_t(n)].data(), 12});
+        std::vector<LabelledSequence> data{sequence(all)};
+        data.front().features = Eigen::MatrixXd::Random(data.front().features.rows(), 2);
+        Feedback feedback;
+        ModelOptions options;
+        options.meanShift = Eigen::MatrixXd::Zero(PhoneSet::kCount, 2);
+        options.meanShift(0, 0) = 0.5;
+        auto shifted = createDynamicModel("hmm", options);
+        shifted->train(data, feedback);
+        PhoneCoverage c = PhoneCoverage::of(data, *shifted);
+        QVERIFY(c.takesPrior && c.prior);
+        QCOMPARE(c.contextStates, 0);
+        QCOMPARE(c.frames, PhoneCoverage::of(data).frames);
+        ModelOptions inContext;
+        inContext.contextStates = true;
+        auto context = createDynamicModel("brand", inContext);
+        context->train(data, feedback);
+        c = PhoneCoverage::of(data, *context);
+        QVERIFY(c.takesPrior && !c.prior);
+        QVERIFY(c.contextStates >= PhoneSet::kCount);
+        c = PhoneCoverage::of(data, *createDynamicModel("slds"));
+        QVERIFY(!c.takesPrior && !c.prior);
     }
 };
 
