@@ -21,11 +21,6 @@ constexpr int kMouthPoints = 10;
 // drawn lips' feathered band ends within 0.3 widths, FaceRenderer::mouthInteriorAlpha].
 constexpr double kCropMargin = 0.6;
 
-double mouthWidth(const Eigen::VectorXd &shape)
-{
-    return (LowerFaceWarp::mouthCorner(shape, true) - LowerFaceWarp::mouthCorner(shape, false)).norm();
-}
-
 } // namespace
 
 ClosedLipExemplars::ClosedLipExemplars(VideoReader &video, const Eigen::MatrixXd &shapes,
@@ -38,10 +33,9 @@ ClosedLipExemplars::ClosedLipExemplars(VideoReader &video, const Eigen::MatrixXd
         if ((size_t(t) < usable.size() && !usable[size_t(t)]) || shape.size() != 2 * scheme23::kPointCount
             || !shape.allFinite())
             continue;
-        const double width = mouthWidth(shape);
-        if (width < 4.0)
+        if (LowerFaceWarp::mouthWidth(shape) < 4.0)
             continue;
-        const double share = std::max(0.0, LowerFaceWarp::opening(shape)) / width;
+        const double share = openingShare(shape);
         if (share <= kClosedShare)
             closed.emplace_back(share, t);
     }
@@ -64,7 +58,7 @@ ClosedLipExemplars::ClosedLipExemplars(VideoReader &video, const Eigen::MatrixXd
         e.shape = shapes.row(t).transpose();
         const std::vector<cv::Point2f> lips = LowerFaceWarp::outerLips(e.shape, 0.0);
         const cv::Rect lipBox = cv::boundingRect(lips);
-        const int margin = int(std::ceil(kCropMargin * mouthWidth(e.shape)));
+        const int margin = int(std::ceil(kCropMargin * LowerFaceWarp::mouthWidth(e.shape)));
         const cv::Rect box = cv::Rect(lipBox.x - margin, lipBox.y - margin, lipBox.width + 2 * margin,
                                       lipBox.height + 2 * margin)
                              & image;
@@ -78,6 +72,11 @@ ClosedLipExemplars::ClosedLipExemplars(VideoReader &video, const Eigen::MatrixXd
         e.offset = box.tl();
         m_exemplars.push_back(std::move(e));
     }
+}
+
+double ClosedLipExemplars::openingShare(const Eigen::VectorXd &shape)
+{
+    return std::max(0.0, LowerFaceWarp::opening(shape)) / LowerFaceWarp::mouthWidth(shape);
 }
 
 std::vector<int> ClosedLipExemplars::frames() const

@@ -32,6 +32,8 @@ public:
     // Never a closure from within this time of the frame drawn into [choice: longer than a
     // bilabial closure and its neighbours' coarticulation].
     static constexpr double kAwaySeconds = 0.5;
+    // The inner-lip gap of `shape` over its mouth's width: closed at kClosedShare or less.
+    static double openingShare(const Eigen::VectorXd &shape);
 
     ClosedLipExemplars() = default;
     // `shapes`: the 23 points fitted to each of the video's first shapes.rows() frames, in its

@@ -309,7 +309,7 @@ cv::Mat FaceRenderer::mouthInteriorAlpha(const Eigen::VectorXd &generated, const
         // drawn, blended in over a feathered band beyond the generated lips' outline as the
         // closure grows from half the recorded opening to a tenth of it.
         const double u = std::clamp((kClosingRatio * recorded - wanted) / ((kClosingRatio - 0.1) * recorded), 0.0, 1.0);
-        const double width = (LowerFaceWarp::mouthCorner(generated, true) - LowerFaceWarp::mouthCorner(generated, false)).norm();
+        const double width = LowerFaceWarp::mouthWidth(generated);
         if (closing)
             *closing = true;
         fill(LowerFaceWarp::outerLips(generated, 0.12 * width), 0.06 * width, float(u * u * (3.0 - 2.0 * u)));

@@ -166,5 +166,10 @@ Eigen::Vector2d LowerFaceWarp::mouthCorner(const Eigen::VectorXd &shape, bool le
     return point(shape, left ? scheme23::kMouthLeft : scheme23::kMouthRight);
 }
 
+double LowerFaceWarp::mouthWidth(const Eigen::VectorXd &shape)
+{
+    return (point(shape, scheme23::kMouthRight) - point(shape, scheme23::kMouthLeft)).norm();
+}
+
 } // namespace lipsync
 

@@ -35,6 +35,8 @@ struct LowerFaceWarp
     static std::vector<cv::Point2f> outerLips(const Eigen::VectorXd &shape, double margin);
     // The image-left (`left`) or image-right mouth corner of `shape`.
     static Eigen::Vector2d mouthCorner(const Eigen::VectorXd &shape, bool left);
+    // The distance between the mouth corners of `shape`.
+    static double mouthWidth(const Eigen::VectorXd &shape);
 };
 
 } // namespace lipsync

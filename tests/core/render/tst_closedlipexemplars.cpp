@@ -71,9 +71,8 @@ private slots:
         for (int t = 0; t < video.frameCount(); ++t)
             m_shapes.row(t) = face(t == 31 ? 0.0 : (t == 5 || t == 30 || t == 45 || t == 60) ? 0.5 : 12.0).transpose();
         m_usable[45] = false;
-        QVERIFY(LowerFaceWarp::opening(face(0.5)) / (LowerFaceWarp::mouthCorner(face(0.5), true)
-                                                      - LowerFaceWarp::mouthCorner(face(0.5), false)).norm()
-                < ClosedLipExemplars::kClosedShare);
+        QVERIFY(ClosedLipExemplars::openingShare(face(0.5)) < ClosedLipExemplars::kClosedShare);
+        QVERIFY(ClosedLipExemplars::openingShare(face(12.0)) > ClosedLipExemplars::kClosedShare);
     }
 
     void keepsOneFramePerClosure()

@@ -191,8 +191,7 @@ private slots:
             if (t > 0) {
                 // The mouth and its surroundings: the tracked outer lips grown by half the mouth's width.
                 const Eigen::VectorXd shape = renderer.trackedShape(t);
-                const double width = (LowerFaceWarp::mouthCorner(shape, true) - LowerFaceWarp::mouthCorner(shape, false)).norm();
-                const cv::Rect box = cv::boundingRect(LowerFaceWarp::outerLips(shape, 0.5 * width))
+                const cv::Rect box = cv::boundingRect(LowerFaceWarp::outerLips(shape, 0.5 * LowerFaceWarp::mouthWidth(shape)))
                                      & cv::Rect(0, 0, rendered.cols, rendered.rows);
                 cv::Mat a, b;
                 cv::absdiff(greyRendered(box), previousRendered(box), a);
@@ -259,8 +258,7 @@ private slots:
         aamClosures.recordedClosures = false;
         for (int t = 0; t < renderer.videoFrameCount(); ++t) {
             const Eigen::VectorXd shape = renderer.trackedShape(t);
-            const double width = (LowerFaceWarp::mouthCorner(shape, true) - LowerFaceWarp::mouthCorner(shape, false)).norm();
-            const double share = LowerFaceWarp::opening(shape) / width;
+            const double share = ClosedLipExemplars::openingShare(shape);
             if (share < ClosedLipExemplars::kClosedShare) {
                 recorded.add(renderer.background(t), shape);
                 continue;
