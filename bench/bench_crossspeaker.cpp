@@ -51,11 +51,6 @@ std::unique_ptr<Speaker> loadSpeaker(const QString &folder)
     return s;
 }
 
-bool speech(int phone)
-{
-    return phone != PhoneSet::kSilence && phone != PhoneSet::kBreath && phone >= 0;
-}
-
 // Pearson's r, 0 where it is undefined (a constant generation: no opening follows the speech).
 double correlation(const std::vector<double> &a, const std::vector<double> &b)
 {
@@ -101,7 +96,7 @@ void BM_CrossSpeakerPrior(benchmark::State &state)
             const MouthTrack &track = person->tracks[size_t(held)];
             int first = -1, last = -1;
             for (int f = 0; f < track.frameCount(); ++f)
-                if (speech(track.phones[size_t(f)])) {
+                if (PhoneSet::isSpeech(track.phones[size_t(f)])) {
                     first = first < 0 ? f : first;
                     last = f;
                 }
@@ -161,7 +156,7 @@ void BM_CrossSpeakerPriorBrand(benchmark::State &state)
             std::vector<double> recorded;
             std::vector<int> frames;
             for (int f = 0; f < test.frameCount(); ++f)
-                if (speech(test.labels[size_t(f)])) {
+                if (PhoneSet::isSpeech(test.labels[size_t(f)])) {
                     frames.push_back(f);
                     recorded.push_back(person.measurer->measure(test.features.row(f).transpose()).opening);
                 }

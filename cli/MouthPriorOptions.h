@@ -15,8 +15,8 @@ namespace lipsync::cli {
 // The three options; `prefix` starts their help ("--realism: ", or empty).
 std::vector<CommandOption> mouthPriorOptions(const QString &prefix = {});
 // The prior the options ask for (the shipped GRID s1 prior for --prior, else --prior-file's), null
-// for neither; `weight` receives --prior-weight (default MouthShapePrior::kDefaultKappa). Errors
-// name the file; a negative weight is bad usage.
+// for neither; `weight` receives --prior-weight (cv, the default: MouthShapePrior::kCrossValidated).
+// Errors name the file; a negative weight is bad usage.
 std::shared_ptr<const MouthShapePrior> mouthPriorFrom(const CommandLine &args, double *weight);
 
 } // namespace lipsync::cli

@@ -27,13 +27,14 @@ namespace {
 
 // --prior: the phone means of HMM-mean or Brand start from mouth shapes learnt on other speakers
 // (the shipped GRID s1 prior, or --prior-file), MAP-combined with the project's own frames of the
-// sequences trained on (animation/MouthShapePrior, docs/models.md §5.4).
+// sequences trained on (animation/MouthShapePrior, docs/models.md §5.4); `used` receives the weight
+// taken (--prior-weight cv: the one chosen).
 Eigen::MatrixXd priorShift(const CommandLine &args, const std::vector<LabelledSequence> &sequences,
-                           const MouthShapePrior &prior, double kappa)
+                           const MouthShapePrior &prior, double kappa, double *used)
 {
     const Project project = Project::load(args.value(QStringLiteral("project")).toStdString());
     const AamModel aam = AamModel::load(project.aamPath());
-    return projectPriorShift(prior, MouthMeasurer(aam), project, sequences, kappa);
+    return projectPriorShift(prior, MouthMeasurer(aam), project, sequences, kappa, used);
 }
 
 int runTrain(const CommandLine &args)
@@ -59,7 +60,7 @@ int runTrain(const CommandLine &args)
     else if (!projectAam.empty())
         aam = AamModel::load(projectAam).identifier;
     if (prior)
-        options.meanShift = priorShift(args, sequences, *prior, priorWeight);
+        options.meanShift = priorShift(args, sequences, *prior, priorWeight, &priorWeight);
     auto model = createDynamicModel(kind.toStdString(), options);
     Feedback feedback;
     int iterations = 0;
@@ -103,6 +104,8 @@ int runTrain(const CommandLine &args)
         o[QStringLiteral("objective")] = objective;
         o[QStringLiteral("loglikPerFrame")] = ll / double(frames);
         o[QStringLiteral("coverage")] = coverage.toJson();
+        if (prior)
+            o[QStringLiteral("priorWeight")] = priorWeight;
         if (brand) {
             const QJsonObject covariance = brand->covarianceJson();
             for (auto it = covariance.begin(); it != covariance.end(); ++it)
@@ -117,7 +120,9 @@ int runTrain(const CommandLine &args)
         std::printf("phones: %d of %d seen in %.0f s of speech, %zu with fewer than %d frames%s\n",
                     PhoneCoverage::kSpeechPhones - int(coverage.unseen.size()), PhoneCoverage::kSpeechPhones,
                     coverage.speechSeconds, coverage.rare.size(), kMinimumVarianceFrames,
-                    coverage.prior ? "; started from other speakers' mouths" : "");
+                    coverage.prior ? qPrintable(QStringLiteral("; started from other speakers' mouths (weight %1 frames)")
+                                                    .arg(priorWeight))
+                                   : "");
         if (brand && brand->covarianceChoice().folds > 0)
             std::printf("covariance: %s (held-out L1 in %d folds: diagonal %.4g, full %.4g)\n",
                         brand->fullCovariance() ? "full" : "diagonal", brand->covarianceChoice().folds,

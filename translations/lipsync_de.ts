@@ -1845,37 +1845,37 @@
         <translation>Phonem-Aligner</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="149"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="150"/>
         <source>Build AAM…</source>
         <translation>AAM erstellen …</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="172"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="173"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="172"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="173"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="172"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="173"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="298"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="299"/>
         <source>Made in this session; written when the project is saved</source>
         <translation>In dieser Sitzung erstellt; wird beim Speichern des Projekts geschrieben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="310"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="311"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="150"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="151"/>
         <source>Train</source>
         <translation>Trainieren</translation>
     </message>
@@ -1905,38 +1905,43 @@
         <translation>%1 Parameter, %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="150"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="133"/>
+        <source>For a person with little footage: HMM-mean&apos;s and Brand&apos;s mouth for each sound starts from the mouths of other speakers (GRID s1), carried onto this face, and moves to the person&apos;s own as their frames of that sound add up; how much the other speakers weigh is chosen on the person&apos;s own clips. Used by Train and Realism.</source>
+        <translation>Für eine Person mit wenig Material: Der Mund von HMM-Mittelwert und Brand beginnt für jeden Laut bei den Mündern anderer Sprecher (GRID s1), übertragen auf dieses Gesicht, und geht zum eigenen Mund der Person über, je mehr Bilder sie von diesem Laut hat; wie viel die anderen Sprecher wiegen, wird an den eigenen Clips der Person gewählt. Gilt für Trainieren und Realismus.</translation>
+    </message>
+    <message>
+        <location filename="../studio/build/ModelsPanel.cpp" line="151"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="151"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="152"/>
         <source>Evaluate (k-fold)</source>
         <translation>Evaluieren (k-fach)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="151"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="266"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="152"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="267"/>
         <source>Realism</source>
         <translation>Realismus</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="154"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="155"/>
         <source>Variance compensation</source>
         <translation>Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="155"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="156"/>
         <source>Phones in context</source>
         <translation>Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="156"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="157"/>
         <source>Paper&apos;s models</source>
         <translation>Modelle des Artikels</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="156"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="157"/>
         <source>Start from other speakers</source>
         <translation>Von anderen Sprechern ausgehen</translation>
     </message>
@@ -1991,133 +1996,128 @@
         <translation>Jedes Modell auf Zuständen für Phoneme in ihrem Kontext trainieren (die benachbarten Phoneme und der Teil des Phonems), durch Entscheidungsbäume gebündelt: Lippen, die den nächsten Laut vorwegnehmen. Aus: ein Zustand je Phonem, genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="133"/>
-        <source>For a person with little footage: HMM-mean&apos;s and Brand&apos;s mouth for each sound starts from the mouths of other speakers (GRID s1), carried onto this face, and moves to the person&apos;s own as their frames of that sound add up. Used by Train and Realism.</source>
-        <translation>Für eine Person mit wenig Material: Der Mund von HMM-Mittelwert und Brand beginnt für jeden Laut bei den Mündern anderer Sprecher (GRID s1), übertragen auf dieses Gesicht, und geht zum eigenen Mund der Person über, je mehr Bilder sie von diesem Laut hat. Gilt für Trainieren und Realismus.</translation>
-    </message>
-    <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="140"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="141"/>
         <source>Train and evaluate the paper&apos;s models exactly: no compensation or phones in context, Brand with diagonal covariances, the DPDS by the paper&apos;s Algorithm 1 and gradient ascent without the variance prior; Realism renders without lip closure, colour matching or exemplar detail.</source>
         <translation>Genau die Modelle des Artikels trainieren und evaluieren: keine Kompensation und keine Phone im Kontext, Brand mit diagonalen Kovarianzen, das DPDS mit Algorithmus 1 des Artikels und Gradientenanstieg ohne Varianz-Prior; Realismus rendert ohne Lippenschluss, Farbanpassung und Exemplar-Details.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="196"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="197"/>
         <source>folds: </source>
         <translation>Teilmengen (k-fach): </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="206"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="207"/>
         <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
         <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="207"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="208"/>
         <source>Train the checked models on every sequence with features and phonemes</source>
         <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="208"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="209"/>
         <source>Stop training or evaluation; the previous models stay</source>
         <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="209"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="210"/>
         <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
         <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="214"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="215"/>
         <source>Render the held-out sequences of the same folds into their recordings and measure the lips with dlib&apos;s landmarks: opening correlation, articulation, /p b m/ closures, lag, sharpness, seam</source>
         <translation>Die zurückgehaltenen Sequenzen derselben Folds in ihre Aufnahmen rendern und die Lippen mit dlibs Landmarken messen: Korrelation der Öffnung, Artikulation, Verschlüsse bei /p b m/, Versatz, Schärfe, Naht</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="242"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="243"/>
         <source>AAM parameter </source>
         <translation>AAM-Parameter </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="243"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="244"/>
         <source>Which AAM parameter to plot over time</source>
         <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="253"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="254"/>
         <source>Not evaluated yet: Evaluate (k-fold) in the Models panel draws the paper&apos;s Figure 4 for the checked models.</source>
         <translation>Noch nicht evaluiert: Evaluieren (k-fach) im Modelle-Panel zeichnet Abbildung 4 des Artikels für die gewählten Modelle.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="258"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="259"/>
         <source>Not measured yet: Realism in the Models panel renders held-out sequences and measures the lips on them.</source>
         <translation>Noch nicht gemessen: Realismus im Modelle-Panel rendert zurückgehaltene Sequenzen und misst die Lippen darauf.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="263"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="264"/>
         <source>Trajectory</source>
         <translation>Trajektorie</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="264"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="265"/>
         <source>Training</source>
         <translation>Training</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="265"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="266"/>
         <source>Evaluation</source>
         <translation>Evaluation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="346"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="347"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter tracken und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="407"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="408"/>
         <source>Cannot start from other speakers: %1</source>
         <translation>Kann nicht von anderen Sprechern ausgehen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="417"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="418"/>
         <source>%1 of %2 phones never occur in the footage: their face comes from other speakers&apos; mouths</source>
         <translation>%1 von %2 Phonen kommen im Material nie vor: ihr Gesicht stammt von den Mündern anderer Sprecher</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="419"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="420"/>
         <source>%1 of %2 phones never occur in the footage: their face is guessed from the average</source>
         <translation>%1 von %2 Phonen kommen im Material nie vor: ihr Gesicht wird aus dem Durchschnitt geschätzt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="423"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="424"/>
         <source>%1 have fewer than %2 frames</source>
         <translation>%1 haben weniger als %2 Bilder</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="425"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="426"/>
         <source>Phones in context made no context states: too little footage for them</source>
         <translation>Phone im Kontext haben keine Kontextzustände gebildet: zu wenig Material dafür</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="429"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="430"/>
         <source>More footage of the person (%1 s of speech now) covers more.</source>
         <translation>Mehr Material der Person (jetzt %1 s Sprache) deckt mehr ab.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="431"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="432"/>
         <source>Tick Start from other speakers to take the phones it lacks from other people&apos;s mouths.</source>
         <translation>Mit „Von anderen Sprechern ausgehen“ kommen die fehlenden Phone von den Mündern anderer Menschen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="455"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="456"/>
         <source>Cannot start from other speakers without the project&apos;s AAM.</source>
         <translation>Ohne das AAM des Projekts kann nicht von anderen Sprechern ausgegangen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="474"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="515"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="475"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="512"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="476"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="477"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -2125,27 +2125,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="503"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="500"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="526"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="523"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="528"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="525"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="535"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="532"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="554"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="551"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds: mean and 95 % interval over the folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen: Mittelwert und 95-%-Intervall über die Teilmengen.</numerusform>
@@ -2153,17 +2153,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="617"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="614"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="618"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="615"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="549"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="546"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -2176,7 +2176,7 @@
         <translation>Brands Ausgabekovarianzen. Per KV: diagonal oder voll, je nachdem, welche der beiden zurückgehaltene Trainingssequenzen genauer erzeugt (Kreuzvalidierung). Diagonal: das Modell der Veröffentlichung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="586"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="583"/>
         <source>Realism of %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
@@ -2184,7 +2184,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="591"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="588"/>
         <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
         <translation>
             <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
@@ -2192,47 +2192,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="646"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="643"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="647"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="644"/>
         <source>Failed: %1.</source>
         <translation>Fehlgeschlagen: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="649"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="646"/>
         <source>Canceled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="680"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="677"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="685"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="682"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="512"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="509"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="709"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="706"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="719"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="716"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="733"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="730"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>

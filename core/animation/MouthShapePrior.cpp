@@ -14,8 +14,10 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <random>
 
 namespace lipsync {
 
@@ -133,16 +135,77 @@ Eigen::MatrixXd MouthShapePrior::personMeans(const std::vector<MouthTrack> &trac
 
 Eigen::MatrixXd MouthShapePrior::personShift(const std::vector<MouthTrack> &tracks, double kappa) const
 {
+    kappa = resolvedWeight(tracks, kappa);
     return personMeans(tracks, kappa) - personMeans(tracks, 0.0);
 }
 
+const std::vector<double> &MouthShapePrior::weightCandidates()
+{
+    static const std::vector<double> candidates{0.0, 5.0, 20.0, 80.0, 320.0};
+    return candidates;
+}
+
+MouthShapePrior::WeightChoice MouthShapePrior::chooseWeight(const std::vector<MouthTrack> &tracks, int folds) const
+{
+    WeightChoice choice;
+    const int k = std::min(folds, int(tracks.size()));
+    if (k < 2)
+        return choice;
+    std::vector<int> order(tracks.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), std::mt19937(2007));
+    const std::vector<double> &candidates = weightCandidates();
+    std::vector<double> squares(candidates.size(), 0.0);
+    long long heldFrames = 0;
+    for (int fold = 0; fold < k; ++fold) {
+        std::vector<MouthTrack> training;
+        std::vector<const MouthTrack *> held;
+        for (size_t i = 0; i < order.size(); ++i) {
+            const MouthTrack &t = tracks[size_t(order[i])];
+            if (int(i) % k == fold)
+                held.push_back(&t);
+            else
+                training.push_back(t);
+        }
+        std::vector<Eigen::MatrixXd> means;
+        try {
+            for (double kappa : candidates)
+                means.push_back(personMeans(training, kappa));
+        } catch (const Error &) {
+            continue; // too few frames left to map points to parameters: this fold says nothing
+        }
+        for (const MouthTrack *t : held)
+            for (int f = 0; f < t->frameCount(); ++f) {
+                const int phone = t->phones[size_t(f)];
+                if (!PhoneSet::isSpeech(phone) || f >= t->features.rows())
+                    continue;
+                for (size_t c = 0; c < candidates.size(); ++c)
+                    squares[c] += (t->features.row(f) - means[c].row(phone)).squaredNorm();
+                ++heldFrames;
+            }
+        ++choice.folds;
+    }
+    if (heldFrames == 0) {
+        choice.folds = 0;
+        return choice;
+    }
+    for (double &s : squares)
+        s /= double(heldFrames);
+    choice.errors = squares;
+    choice.kappa = candidates[size_t(std::min_element(squares.begin(), squares.end()) - squares.begin())];
+    return choice;
+}
+
 Eigen::MatrixXd projectPriorShift(const MouthShapePrior &prior, const MouthMeasurer &measurer, const Project &project,
-                                  const std::vector<LabelledSequence> &training, double kappa)
+                                  const std::vector<LabelledSequence> &training, double kappa, double *used)
 {
     std::vector<MouthTrack> tracks;
     for (const LabelledSequence &t : training)
         if (const Sequence *sequence = project.sequence(t.name))
             tracks.push_back(mouthTrackOfSequence(measurer, project, *sequence));
+    kappa = prior.resolvedWeight(tracks, kappa);
+    if (used)
+        *used = kappa;
     return prior.personShift(tracks, kappa);
 }
 

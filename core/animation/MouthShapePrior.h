@@ -22,9 +22,33 @@ class Project;
 class MouthShapePrior
 {
 public:
-    // Prior weight in frames (bench BM_CrossSpeakerPrior: 5, 20 and 80 measured; see
-    // docs/performance.md, "A starting point from other speakers").
+    // Prior weight in frames where chooseWeight cannot choose (fewer than two clips; bench
+    // BM_CrossSpeakerPrior: 5, 20 and 80 measured; see docs/performance.md, "A starting point from
+    // other speakers").
     static constexpr double kDefaultKappa = 80.0;
+    // As a weight: choose it by cross-validation on the person's own tracks (chooseWeight); what
+    // `train --prior`, `evaluate --realism --prior` and the Models panel take.
+    static constexpr double kCrossValidated = -1.0;
+    // The weights chooseWeight tries, in frames; 0 is the person's own means.
+    static const std::vector<double> &weightCandidates();
+
+    struct WeightChoice
+    {
+        double kappa = kDefaultKappa;
+        std::vector<double> errors; // per candidate: mean squared error per held-out speech frame
+        int folds = 0;              // 0: too few tracks to choose; kappa is the default
+    };
+    // The weight whose per-phone means (personMeans) best predict the person's own speech frames of
+    // tracks left out: k-fold by track (k = min(folds, tracks); a random split with a fixed
+    // seed), each held-out speech frame's AAM parameters against its phone's mean from the other
+    // folds, squared error averaged over all held-out frames. With a minute of footage whose
+    // phones the new speech shares the person's own means win; with seconds, the prior's.
+    WeightChoice chooseWeight(const std::vector<MouthTrack> &tracks, int folds = 5) const;
+    // `kappa`, or chooseWeight(tracks)'s for kCrossValidated.
+    double resolvedWeight(const std::vector<MouthTrack> &tracks, double kappa) const
+    {
+        return kappa == kCrossValidated ? chooseWeight(tracks).kappa : kappa;
+    }
 
     // Learnt from `tracks` (frames whose phone is known). Throws lipsync::Error for no frames.
     static MouthShapePrior learn(const std::vector<MouthTrack> &tracks);
@@ -36,7 +60,8 @@ public:
     // the tracks have too few frames to map points to parameters.
     Eigen::MatrixXd personMeans(const std::vector<MouthTrack> &tracks, double kappa = kDefaultKappa) const;
     // What the prior adds to the person's own per-phone means: personMeans(kappa) minus
-    // personMeans(0), for DynamicModel::setMeanShift (ModelOptions::meanShift).
+    // personMeans(0), for DynamicModel::setMeanShift (ModelOptions::meanShift); kCrossValidated
+    // takes chooseWeight(tracks)'s.
     Eigen::MatrixXd personShift(const std::vector<MouthTrack> &tracks, double kappa = kDefaultKappa) const;
 
     const Eigen::VectorXd &meanShape() const { return m_mean; }
@@ -50,8 +75,10 @@ private:
 };
 
 // personShift() for the project's sequences named in `training` (each tracked and aligned), through
-// the project's AAM as `measurer` measures it. Errors as mouthTrackOfSequence and personMeans.
+// the project's AAM as `measurer` measures it; `used`, when given, receives the weight taken (the
+// chosen one for kCrossValidated). Errors as mouthTrackOfSequence and personMeans.
 Eigen::MatrixXd projectPriorShift(const MouthShapePrior &prior, const MouthMeasurer &measurer, const Project &project,
-                                  const std::vector<LabelledSequence> &training, double kappa);
+                                  const std::vector<LabelledSequence> &training, double kappa,
+                                  double *used = nullptr);
 
 } // namespace lipsync

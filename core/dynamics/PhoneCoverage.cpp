@@ -14,7 +14,7 @@ PhoneCoverage PhoneCoverage::of(const std::vector<LabelledSequence> &sequences)
         for (int label : s.labels)
             if (label >= 0 && label < PhoneSet::kCount) {
                 ++c.frames[size_t(label)];
-                if (label != PhoneSet::kSilence && label != PhoneSet::kBreath)
+                if (PhoneSet::isSpeech(label))
                     frameSeconds += s.frameRate > 0 ? 1.0 / s.frameRate : 0.0;
             }
     }

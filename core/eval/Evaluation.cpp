@@ -95,9 +95,8 @@ std::vector<FoldOutcome> runFold(const std::vector<LabelledSequence> &sequences,
 
 double speechSeconds(const LabelledSequence &sequence)
 {
-    const auto speech = std::count_if(sequence.labels.begin(), sequence.labels.end(), [](int label) {
-        return label != PhoneSet::kSilence && label != PhoneSet::kBreath;
-    });
+    const auto speech = std::count_if(sequence.labels.begin(), sequence.labels.end(),
+                                      [](int label) { return PhoneSet::isSpeech(label); });
     return double(speech) / (sequence.frameRate > 0 ? sequence.frameRate : 25.0);
 }
 

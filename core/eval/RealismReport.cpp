@@ -347,7 +347,7 @@ RealismMethod summariseMethod(const std::vector<std::vector<const RealismSequenc
 // cv.trainingSpeechSeconds asks: result.trainingSpeechSeconds says how much each got), each phone's
 // mean moved by `prior` of that training set when given (ModelOptions::meanShift); `exemplars`,
 // when given, receives each fold's training trajectories.
-using FoldPrior = std::function<Eigen::MatrixXd(const std::vector<LabelledSequence> &)>;
+using FoldPrior = std::function<Eigen::MatrixXd(const std::vector<LabelledSequence> &, double *weight)>;
 std::vector<std::vector<std::shared_ptr<DynamicModel>>> trainEveryFold(const std::vector<LabelledSequence> &sequences,
                                                                        const EvaluationOptions &cv,
                                                                        RealismResult &result, Feedback &feedback,
@@ -368,8 +368,11 @@ std::vector<std::vector<std::shared_ptr<DynamicModel>>> trainEveryFold(const std
                 exemplars->back().push_back(t.features);
         }
         ModelOptions foldOptions = cv.modelOptions;
-        if (prior)
-            foldOptions.meanShift = prior(trainingSet);
+        if (prior) {
+            double weight = 0;
+            foldOptions.meanShift = prior(trainingSet, &weight);
+            result.priorWeights.push_back(weight);
+        }
         models.push_back(trainFoldModels(trainingSet, cv.kinds, foldOptions, child,
                                          "fold " + std::to_string(f + 1) + "/" + std::to_string(cv.folds) + ": "));
     }
@@ -383,8 +386,9 @@ FoldPrior startFromPrior(const Project &project, const AamModel &aam, const Real
     if (!options.mouthPrior)
         return {};
     auto measurer = std::make_shared<const MouthMeasurer>(aam);
-    return [&project, &options, measurer](const std::vector<LabelledSequence> &trainingSet) {
-        return projectPriorShift(*options.mouthPrior, *measurer, project, trainingSet, options.mouthPriorWeight);
+    return [&project, &options, measurer](const std::vector<LabelledSequence> &trainingSet, double *weight) {
+        return projectPriorShift(*options.mouthPrior, *measurer, project, trainingSet, options.mouthPriorWeight,
+                                 weight);
     };
 }
 
@@ -521,6 +525,8 @@ QJsonObject RealismResult::toJson() const
     o[QStringLiteral("frames")] = double(frames);
     o[QStringLiteral("skippedFrames")] = double(skippedFrames);
     o[QStringLiteral("trainingSpeechSeconds")] = jsonNumbers(trainingSpeechSeconds);
+    if (!priorWeights.empty())
+        o[QStringLiteral("priorWeights")] = jsonNumbers(priorWeights);
     o[QStringLiteral("bilabials")] = bilabials;
     o[QStringLiteral("closedRecorded")] = closedRecorded;
     QJsonObject methodsObject;

@@ -87,7 +87,7 @@ struct RealismOptions
     // The phone means of HMM-mean and Brand started from other speakers' mouths, combined with
     // each fold's own frames (animation/MouthShapePrior); null: the person's own means alone.
     std::shared_ptr<const MouthShapePrior> mouthPrior;
-    double mouthPriorWeight = MouthShapePrior::kDefaultKappa;
+    double mouthPriorWeight = MouthShapePrior::kCrossValidated; // or frames
 };
 
 struct RealismSequenceMethod
@@ -141,6 +141,7 @@ struct RealismResult
     int closedRecorded = 0; // of them closed in the recording
     std::vector<std::vector<int>> foldMembers;
     std::vector<double> trainingSpeechSeconds; // per fold: the speech its models were trained on
+    std::vector<double> priorWeights;          // per fold with a mouth prior: the weight taken (frames)
     std::vector<RealismMethod> methods; // tracked first, then the options' kinds
     std::vector<RealismSequence> perSequence;
 

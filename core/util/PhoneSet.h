@@ -31,6 +31,8 @@ public:
     static bool isSilence(std::string_view label) { return index(label) == kSilence; }
     // A breath or other non-speech noise: "br", "breath", "<br>", "spn", "noise".
     static bool isBreath(std::string_view label) { return index(label) == kBreath; }
+    // A phone of speech: a known index that is neither silence nor breath.
+    static bool isSpeech(int index) { return index >= 0 && index < kCount && index != kSilence && index != kBreath; }
     // /p b m/: the phones whose articulation closes the lips (BilabialClosure, the realism
     // report's closure measure).
     static bool isBilabial(int index) { return index == kB || index == kM || index == kP; }

@@ -132,7 +132,8 @@ QGridLayout *ModelsPanel::optionsGrid()
     m_prior->setToolTip(
         tr("For a person with little footage: HMM-mean's and Brand's mouth for each sound starts from the "
            "mouths of other speakers (GRID s1), carried onto this face, and moves to the person's own as their "
-           "frames of that sound add up. Used by Train and Realism."));
+           "frames of that sound add up; how much the other speakers weigh is chosen on the person's own clips. "
+           "Used by Train and Realism."));
     grid->addWidget(m_prior, int(kinds.size()) + 1, 0, 1, 2);
     // The paper preset (docs/models.md §8): every choice beyond the paper off, held off.
     m_paper->setObjectName(QStringLiteral("paperModels"));
@@ -477,7 +478,7 @@ QList<Task *> ModelsPanel::train()
                 ModelOptions own = options;
                 if (prior && modelKindTakesPrior(*parseModelKind(kind.toStdString())))
                     own.meanShift = projectPriorShift(*prior, MouthMeasurer(*aam), *project, *data,
-                                                      MouthShapePrior::kDefaultKappa);
+                                                      MouthShapePrior::kCrossValidated);
                 std::shared_ptr<DynamicModel> model = createDynamicModel(kind.toStdString(), own);
                 const auto start = std::chrono::steady_clock::now();
                 model->train(*data, feedback);

@@ -11,6 +11,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 
 using namespace lipsync;
@@ -137,6 +138,19 @@ private slots:
         r = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior", "--out", model, "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         QVERIFY(parseJsonObject(r.out)["coverage"].toObject()["prior"].toBool());
+        // The weight is chosen on the person's own clips (--prior-weight cv, the default) unless given.
+        // The demo's own mouths predict its clips left out better than its other clips do: a heavy
+        // weight.
+        r = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior-file", prior, "--out", model, "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY2(parseJsonObject(r.out)["priorWeight"].toDouble() >= 80.0, r.out.constData());
+        r = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior-file", prior, "--prior-weight", "5",
+                        "--out", model, "--json"});
+        QCOMPARE(parseJsonObject(r.out)["priorWeight"].toDouble(), 5.0);
+        r = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior-file", prior, "--prior-weight", "cv",
+                        "--out", model});
+        QVERIFY2(QString::fromUtf8(r.out).contains(QRegularExpression("started from other speakers' mouths \\(weight [0-9]+ frames\\)")),
+                 r.out.constData());
         // Brand takes it too: its static means move, its delta means stay the person's own.
         const QString brand = dir.filePath("brand.model"), brandPrior = dir.filePath("brand-prior.model");
         QCOMPARE(runLipsync({"train", "--kind", "brand", "--project", kDemo, "--out", brand}).exitCode, 0);

@@ -159,7 +159,7 @@ private slots:
         plain->train(sequences, quiet);
         const MouthShapePrior prior = MouthShapePrior::load(ResourceLocator::find("prior/grid-s1.mouthprior"));
         const Eigen::MatrixXd shift = projectPriorShift(prior, MouthMeasurer(*context.modelStore()->aam()), project,
-                                                        sequences, MouthShapePrior::kDefaultKappa);
+                                                        sequences, MouthShapePrior::kCrossValidated);
         QVERIFY(shift.norm() > 0);
         QVERIFY2(panel.statusLabel()->toolTip().contains(QStringLiteral("their face comes from other speakers' mouths"))
                      && !panel.statusLabel()->toolTip().contains(QStringLiteral("Tick Start")),

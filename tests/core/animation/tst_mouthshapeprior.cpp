@@ -162,6 +162,42 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(Error, brand->train(sequences, quiet));
     }
 
+    void crossValidationWeighsAPriorByWhatItPredicts()
+    {
+        // A prior that knows this person's mouths (learnt on all their clips, the held-out ones
+        // too) predicts held-out frames better than the other clips' own means: it gets weight.
+        const MouthShapePrior::WeightChoice right = m_prior.chooseWeight(m_tracks);
+        QCOMPARE(right.folds, 5);
+        QCOMPARE(right.errors.size(), MouthShapePrior::weightCandidates().size());
+        QVERIFY2(right.kappa >= 80, qPrintable(QString::number(right.kappa)));
+        QVERIFY(right.errors.back() < 0.9 * right.errors.front());
+        // Every speech phone's mouth given to another phone: wrong mouths, so little of it is taken
+        // (a light weight of any mouth still steadies a phone seen in a few frames), and taken
+        // heavily they predict worse than the person's own means.
+        std::vector<MouthTrack> relabelled = m_tracks;
+        for (MouthTrack &t : relabelled)
+            for (int &p : t.phones)
+                if (PhoneSet::isSpeech(p))
+                    p = (p + 7) % PhoneSet::kSilence;
+        const MouthShapePrior wrong = MouthShapePrior::learn(relabelled);
+        const MouthShapePrior::WeightChoice refused = wrong.chooseWeight(m_tracks);
+        QVERIFY2(refused.kappa <= 5, qPrintable(QString::number(refused.kappa)));
+        QVERIFY(refused.errors.back() > 1.1 * refused.errors.front());
+        // personShift(kCrossValidated) is the shift at the chosen weight.
+        QVERIFY(m_prior.personShift(m_tracks, MouthShapePrior::kCrossValidated)
+                    .isApprox(m_prior.personShift(m_tracks, right.kappa), 1e-12));
+        QVERIFY(wrong.personShift(m_tracks, MouthShapePrior::kCrossValidated)
+                    .isApprox(wrong.personShift(m_tracks, refused.kappa), 1e-12));
+        double used = -2;
+        const std::vector<LabelledSequence> sequences = loadProjectSequences(m_project);
+        projectPriorShift(m_prior, *m_measurer, m_project, sequences, MouthShapePrior::kCrossValidated, &used);
+        QCOMPARE(used, right.kappa);
+        // One clip cannot be split: the default weight, and no folds.
+        const MouthShapePrior::WeightChoice single = m_prior.chooseWeight({m_tracks.front()});
+        QCOMPARE(single.folds, 0);
+        QCOMPARE(single.kappa, MouthShapePrior::kDefaultKappa);
+    }
+
     void roundTripsAndNamesADamagedFile()
     {
         QTemporaryDir dir;
