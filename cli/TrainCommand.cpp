@@ -59,8 +59,12 @@ int runTrain(const CommandLine &args)
         aam = modelAamIdentifier(args);
     else if (!projectAam.empty())
         aam = AamModel::load(projectAam).identifier;
-    if (prior)
+    if (prior) {
         options.meanShift = priorShift(args, sequences, *prior, priorWeight, &priorWeight);
+        if (priorWeight == 0)
+            std::fprintf(stderr, "lipsync train: other speakers' mouths weigh 0 frames: this person's own clips "
+                                 "predict their lips better (--prior-weight FRAMES gives them a weight)\n");
+    }
     auto model = createDynamicModel(kind.toStdString(), options);
     Feedback feedback;
     int iterations = 0;
@@ -85,7 +89,9 @@ int runTrain(const CommandLine &args)
     const auto *context = dynamic_cast<const ContextDependentModel *>(model.get());
     const int states = context ? context->tree().stateCount() : model->stateCount();
     // What the footage covers, and what it lacks for these options (docs/models.md §0).
-    const PhoneCoverage coverage = PhoneCoverage::of(sequences, *model);
+    PhoneCoverage coverage = PhoneCoverage::of(sequences, *model);
+    if (prior)
+        coverage.takesPrior = false; // asked for and weighed (maybe at 0 frames): not offered again
     if (const std::string advice = coverage.advice(); !advice.empty())
         std::fprintf(stderr, "lipsync train: warning: %s\n", advice.c_str());
     // Brand: its covariance, and the held-out errors that chose it (docs/models.md §2.1).

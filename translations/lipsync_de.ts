@@ -2112,7 +2112,7 @@
     </message>
     <message>
         <location filename="../studio/build/ModelsPanel.cpp" line="475"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="512"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="513"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
@@ -2125,27 +2125,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="500"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="501"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="523"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="524"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="525"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="526"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="532"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="533"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="551"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="552"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds: mean and 95 % interval over the folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen: Mittelwert und 95-%-Intervall über die Teilmengen.</numerusform>
@@ -2153,17 +2153,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="614"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="615"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="615"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="616"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="546"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="547"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -2176,7 +2176,7 @@
         <translation>Brands Ausgabekovarianzen. Per KV: diagonal oder voll, je nachdem, welche der beiden zurückgehaltene Trainingssequenzen genauer erzeugt (Kreuzvalidierung). Diagonal: das Modell der Veröffentlichung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="583"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="584"/>
         <source>Realism of %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
@@ -2184,7 +2184,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="588"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="589"/>
         <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
         <translation>
             <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
@@ -2192,47 +2192,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="643"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="644"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="644"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="645"/>
         <source>Failed: %1.</source>
         <translation>Fehlgeschlagen: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="646"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="647"/>
         <source>Canceled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="677"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="678"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="682"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="683"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="509"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="510"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="706"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="707"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="716"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="717"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="730"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="731"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>

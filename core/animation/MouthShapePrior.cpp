@@ -206,7 +206,7 @@ Eigen::MatrixXd projectPriorShift(const MouthShapePrior &prior, const MouthMeasu
     kappa = prior.resolvedWeight(tracks, kappa);
     if (used)
         *used = kappa;
-    return prior.personShift(tracks, kappa);
+    return kappa > 0 ? prior.personShift(tracks, kappa) : Eigen::MatrixXd();
 }
 
 MouthShapePrior MouthShapePrior::load(const std::string &path)

@@ -76,7 +76,8 @@ private:
 
 // personShift() for the project's sequences named in `training` (each tracked and aligned), through
 // the project's AAM as `measurer` measures it; `used`, when given, receives the weight taken (the
-// chosen one for kCrossValidated). Errors as mouthTrackOfSequence and personMeans.
+// chosen one for kCrossValidated). Empty (no shift: the model starts from the person's own means
+// alone) when that weight is 0. Errors as mouthTrackOfSequence and personMeans.
 Eigen::MatrixXd projectPriorShift(const MouthShapePrior &prior, const MouthMeasurer &measurer, const Project &project,
                                   const std::vector<LabelledSequence> &training, double kappa,
                                   double *used = nullptr);

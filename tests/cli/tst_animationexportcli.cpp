@@ -147,6 +147,12 @@ private slots:
         r = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior-file", prior, "--prior-weight", "5",
                         "--out", model, "--json"});
         QCOMPARE(parseJsonObject(r.out)["priorWeight"].toDouble(), 5.0);
+        // Weighed at nothing: said so, the model is the person's own, and the prior is not offered again.
+        r = runLipsync({"train", "--kind", "brand", "--project", kDemo, "--prior-file", prior, "--prior-weight", "0",
+                        "--out", model});
+        QVERIFY2(r.exitCode == 0 && r.err.contains("weigh 0 frames") && !r.err.contains("Starting from other"),
+                 r.err.constData());
+        QCOMPARE(parseJsonObject(runLipsync({"info", model, "--json"}).out)["prior"].toBool(), false);
         r = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior-file", prior, "--prior-weight", "cv",
                         "--out", model});
         QVERIFY2(QString::fromUtf8(r.out).contains(QRegularExpression("started from other speakers' mouths \\(weight [0-9]+ frames\\)")),

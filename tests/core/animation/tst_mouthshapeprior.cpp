@@ -192,6 +192,9 @@ private slots:
         const std::vector<LabelledSequence> sequences = loadProjectSequences(m_project);
         projectPriorShift(m_prior, *m_measurer, m_project, sequences, MouthShapePrior::kCrossValidated, &used);
         QCOMPARE(used, right.kappa);
+        // Weighed at nothing: no shift at all, so the model says it started from its own frames.
+        QCOMPARE(projectPriorShift(m_prior, *m_measurer, m_project, sequences, 0.0, &used).size(), Eigen::Index(0));
+        QCOMPARE(used, 0.0);
         // One clip cannot be split: the default weight, and no folds.
         const MouthShapePrior::WeightChoice single = m_prior.chooseWeight({m_tracks.front()});
         QCOMPARE(single.folds, 0);
