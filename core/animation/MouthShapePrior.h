@@ -41,8 +41,9 @@ public:
     // The weight whose per-phone means (personMeans) best predict the person's own speech frames of
     // tracks left out: k-fold by track (k = min(folds, tracks); a random split with a fixed
     // seed), each held-out speech frame's AAM parameters against its phone's mean from the other
-    // folds, squared error averaged over all held-out frames. With a minute of footage whose
-    // phones the new speech shares the person's own means win; with seconds, the prior's.
+    // folds, squared error averaged over all held-out frames. A minute of footage that covers the
+    // speech's phones takes little of the prior; seconds of free speech take much
+    // (docs/performance.md, "A starting point from other speakers").
     WeightChoice chooseWeight(const std::vector<MouthTrack> &tracks, int folds = 5) const;
     // `kappa`, or chooseWeight(tracks)'s for kCrossValidated.
     double resolvedWeight(const std::vector<MouthTrack> &tracks, double kappa) const
