@@ -121,7 +121,8 @@ private slots:
 
     // `export prior` learns a project's mouths; `train --kind hmm --prior-file` starts a person's
     // phone means from them (here the demo's own, on the demo with a clip left out) and the
-    // shipped GRID s1 prior (`--prior`) is found, for HMM-mean and Brand; the SLDS and bad weights
+    // shipped GRID s1 prior (`--prior`) is found, for HMM-mean and Brand; the weight taken is
+    // reported (chosen on the person's clips unless given, none said so); the SLDS and bad weights
     // are refused.
     void mouthPriorForTraining()
     {
