@@ -209,6 +209,10 @@ int infoModel(const QString &path, bool json)
                        {QStringLiteral("variance compensation"), model->compensatesVariance()},
                        // Whether its means started from other speakers' mouths (§5.4).
                        {QStringLiteral("prior"), model->startedFromOtherSpeakers()},
+                       // And how much they weighed, in frames (0: not recorded).
+                       {QStringLiteral("prior weight"), model->startedFromOtherSpeakers()
+                                                            ? QJsonValue(model->priorWeight())
+                                                            : QJsonValue()},
                        {QStringLiteral("fps"), model->frameRate() > 0 ? QJsonValue(model->frameRate()) : QJsonValue()},
                        {QStringLiteral("aam"), QString::fromStdString(aamId)}},
                       json);

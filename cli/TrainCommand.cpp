@@ -61,6 +61,7 @@ int runTrain(const CommandLine &args)
         aam = AamModel::load(projectAam).identifier;
     if (prior) {
         options.meanShift = priorShift(args, sequences, *prior, priorWeight, &priorWeight);
+        options.priorWeight = priorWeight;
         if (priorWeight == 0)
             std::fprintf(stderr, "lipsync train: other speakers' mouths weigh 0 frames: this person's own clips "
                                  "predict their lips better (--prior-weight FRAMES gives them a weight)\n");

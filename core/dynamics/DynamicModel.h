@@ -40,11 +40,17 @@ public:
     // §5.4): train() moves each phone's mean by shift.row(phone) (41 x d) once the parameters are
     // fitted, before the variance compensation is estimated. Empty: none. Only kinds for which
     // modelKindTakesPrior() holds have per-phone means to move; train() throws for the others.
-    void setMeanShift(Eigen::MatrixXd shift) { m_meanShift = std::move(shift); }
+    // `weight`: the prior's weight in frames that made the shift (MouthShapePrior), recorded only.
+    void setMeanShift(Eigen::MatrixXd shift, double weight = 0.0)
+    {
+        m_meanShift = std::move(shift);
+        m_priorWeight = weight;
+    }
     // The shift train() applied (a model file records it: whether, and how far, the model started
     // from other speakers); empty when it started from its own data alone.
     const Eigen::MatrixXd &meanShift() const { return m_meanShift; }
     bool startedFromOtherSpeakers() const { return m_meanShift.size() > 0; }
+    double priorWeight() const { return m_priorWeight; } // 0: not recorded
     // Moves each label's mean (static and, for Brand, the joint mean's static half) by
     // shift.row(label): stateCount() x d of a trained model. Throws lipsync::Error for another
     // shape, values that are not finite, or a kind without per-label means.
@@ -151,6 +157,7 @@ private:
     double m_frameRate = 0.0;
     bool m_compensate = false;
     Eigen::MatrixXd m_meanShift; // setMeanShift()
+    double m_priorWeight = 0.0;
     Eigen::VectorXd m_mean; // compensation: training mean m and gain G (empty: none)
     Eigen::MatrixXd m_gain;
     Eigen::MatrixXd m_detailGain; // H, empty with m_window 0

@@ -68,6 +68,7 @@ ModelOptions retrainingOptions(const DynamicModel &trained)
     // The prior's shift as the file records it: fitted to all of the person's data, which leaving
     // a few clips out hardly changes (MouthShapePrior::personShift).
     o.meanShift = trained.meanShift();
+    o.priorWeight = trained.priorWeight();
     if (const auto *brand = dynamic_cast<const BrandModel *>(model))
         o.brand = brand->options();
     else if (const auto *dpds = dynamic_cast<const DpdsModel *>(model))
@@ -84,7 +85,7 @@ std::unique_ptr<DynamicModel> createDynamicModel(ModelKind kind, const ModelOpti
         model = std::make_unique<ContextDependentModel>(std::move(model), options.context);
     model->setVarianceCompensation(options.compensateVariance);
     if (modelKindTakesPrior(kind))
-        model->setMeanShift(options.meanShift);
+        model->setMeanShift(options.meanShift, options.priorWeight);
     return model;
 }
 
@@ -131,8 +132,12 @@ void saveModel(const DynamicModel &model, const std::string &path, const std::st
         }
         o[QStringLiteral("compensation")] = c;
     }
-    if (model.startedFromOtherSpeakers())
-        o[QStringLiteral("prior")] = QJsonObject{{QStringLiteral("meanShift"), json::fromMatrix(model.meanShift())}};
+    if (model.startedFromOtherSpeakers()) {
+        QJsonObject prior{{QStringLiteral("meanShift"), json::fromMatrix(model.meanShift())}};
+        if (model.priorWeight() > 0)
+            prior[QStringLiteral("weight")] = model.priorWeight();
+        o[QStringLiteral("prior")] = prior;
+    }
     writeFileAtomically(path, QJsonDocument(o).toJson(QJsonDocument::Compact).toStdString());
 }
 
@@ -209,11 +214,15 @@ std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::str
     if (o.contains(QStringLiteral("prior"))) {
         // Recorded, not applied again: the parameters already hold it.
         try {
-            const Eigen::MatrixXd shift = json::toMatrix(o.value(QStringLiteral("prior")).toObject(), "meanShift",
-                                                         PhoneSet::kCount, model->dimension(), path);
+            const QJsonObject prior = o.value(QStringLiteral("prior")).toObject();
+            const Eigen::MatrixXd shift =
+                json::toMatrix(prior, "meanShift", PhoneSet::kCount, model->dimension(), path);
             if (!shift.allFinite())
                 throw Error("holds values that are not finite", path, "meanShift");
-            model->setMeanShift(shift);
+            const QJsonValue weight = prior.value(QStringLiteral("weight"));
+            if (!weight.isUndefined() && !(weight.isDouble() && std::isfinite(weight.toDouble()) && weight.toDouble() >= 0))
+                throw Error("its weight is not a number of frames >= 0", path);
+            model->setMeanShift(shift, weight.toDouble(0.0));
         } catch (const Error &e) {
             throw Error(e.reason(), path, "prior");
         }

@@ -35,6 +35,7 @@ struct ModelOptions
     // Kinds that take a prior (modelKindTakesPrior): each phone's mean moves by this row once
     // fitted (41 x d, DynamicModel::setMeanShift; MouthShapePrior::personShift). Empty: none.
     Eigen::MatrixXd meanShift;
+    double priorWeight = 0; // the weight in frames that made meanShift, recorded in the file
 
     // The paper's models exactly, as far as they are well defined (docs/models.md §8, the paper
     // preset): no variance compensation, no phones in context, Brand with diagonal covariances,

@@ -371,6 +371,7 @@ std::vector<std::vector<std::shared_ptr<DynamicModel>>> trainEveryFold(const std
         if (prior) {
             double weight = 0;
             foldOptions.meanShift = prior(trainingSet, &weight);
+            foldOptions.priorWeight = weight;
             result.priorWeights.push_back(weight);
         }
         models.push_back(trainFoldModels(trainingSet, cv.kinds, foldOptions, child,

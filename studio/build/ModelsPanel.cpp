@@ -478,7 +478,7 @@ QList<Task *> ModelsPanel::train()
                 ModelOptions own = options;
                 if (prior && modelKindTakesPrior(*parseModelKind(kind.toStdString())))
                     own.meanShift = projectPriorShift(*prior, MouthMeasurer(*aam), *project, *data,
-                                                      MouthShapePrior::kCrossValidated);
+                                                      MouthShapePrior::kCrossValidated, &own.priorWeight);
                 std::shared_ptr<DynamicModel> model = createDynamicModel(kind.toStdString(), own);
                 const auto start = std::chrono::steady_clock::now();
                 model->train(*data, feedback);

@@ -145,6 +145,9 @@ private slots:
         r = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior-file", prior, "--out", model, "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         QVERIFY2(parseJsonObject(r.out)["priorWeight"].toDouble() >= 80.0, r.out.constData());
+        // The model file records it; `info` reads it back.
+        QCOMPARE(parseJsonObject(runLipsync({"info", model, "--json"}).out)["prior_weight"].toDouble(),
+                 parseJsonObject(r.out)["priorWeight"].toDouble());
         r = runLipsync({"train", "--kind", "hmm", "--project", kDemo, "--prior-file", prior, "--prior-weight", "5",
                         "--out", model, "--json"});
         QCOMPARE(parseJsonObject(r.out)["priorWeight"].toDouble(), 5.0);

@@ -127,6 +127,7 @@ private slots:
             ModelOptions options;
             options.meanShift = Eigen::MatrixXd::Constant(PhoneSet::kCount, 3, 0.25);
             options.meanShift(0, 1) = -0.5;
+            options.priorWeight = 20;
             auto model = createDynamicModel(kind, options);
             model->train(training, feedback);
             QTemporaryDir dir;
@@ -138,6 +139,8 @@ private slots:
             const std::vector<int> labels = randomLabels(rng, 30, {0, 2, 6});
             QVERIFY(loaded->generate(labels) == model->generate(labels)); // not shifted twice
             QCOMPARE(retrainingOptions(*loaded).meanShift, options.meanShift);
+            QCOMPARE(loaded->priorWeight(), 20.0); // how much the prior weighed, recorded
+            QCOMPARE(retrainingOptions(*loaded).priorWeight, 20.0);
             // Without one, none is written.
             auto own = createDynamicModel(kind);
             own->train(training, feedback);
@@ -151,6 +154,20 @@ private slots:
             writeFileAtomically(path, QJsonDocument(o).toJson().toStdString());
             const std::string e = errorOf([&] { loadModel(path); });
             QVERIFY2(e.find("prior") != std::string::npos && e.find(path) != std::string::npos, e.c_str());
+            // A weight that is no number of frames; none at all reads as not recorded.
+            saveModel(*model, path, "aam");
+            o = QJsonDocument::fromJson(QByteArray::fromStdString(readWholeFile(path))).object();
+            QJsonObject prior = o.value(QStringLiteral("prior")).toObject();
+            prior[QStringLiteral("weight")] = -3;
+            o[QStringLiteral("prior")] = prior;
+            writeFileAtomically(path, QJsonDocument(o).toJson().toStdString());
+            const std::string w = errorOf([&] { loadModel(path); });
+            QVERIFY2(w.find("weight") != std::string::npos && w.find(path) != std::string::npos, w.c_str());
+            prior.remove(QStringLiteral("weight"));
+            o[QStringLiteral("prior")] = prior;
+            writeFileAtomically(path, QJsonDocument(o).toJson().toStdString());
+            QCOMPARE(loadModel(path)->priorWeight(), 0.0);
+            QCOMPARE(loadModel(path)->meanShift(), options.meanShift);
         }
     }
 
