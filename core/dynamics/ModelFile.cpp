@@ -220,7 +220,8 @@ std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::str
             if (!shift.allFinite())
                 throw Error("holds values that are not finite", path, "meanShift");
             const QJsonValue weight = prior.value(QStringLiteral("weight"));
-            if (!weight.isUndefined() && !(weight.isDouble() && std::isfinite(weight.toDouble()) && weight.toDouble() >= 0))
+            const bool frames = weight.isDouble() && std::isfinite(weight.toDouble()) && weight.toDouble() >= 0;
+            if (!weight.isUndefined() && !frames)
                 throw Error("its weight is not a number of frames >= 0", path);
             model->setMeanShift(shift, weight.toDouble(0.0));
         } catch (const Error &e) {

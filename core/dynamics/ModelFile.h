@@ -5,7 +5,7 @@
 // "labels" records the phone set the integer labels refer to, "aam" the AAM whose parameters
 // the features are, "frameRate" (optional) the frames per second it was trained at. A model over context-dependent states (§5.2) adds "context" (ContextTree's
 // JSON); its parameters are then indexed by the tree's states. A model started from other speakers
-// (§5.4) records the shift its means were moved by ("prior": {"meanShift": 41 x d}). Loading rejects another format or version, an unknown kind, another label
+// (§5.4) records the shift its means were moved by and the weight that made it ("prior": {"meanShift": 41 x d, "weight"}). Loading rejects another format or version, an unknown kind, another label
 // set, and (when an AAM id is expected) another AAM, with a lipsync::Error naming the file.
 #include "dynamics/BrandModel.h"
 #include "dynamics/ContextTree.h"
