@@ -161,11 +161,6 @@ std::vector<cv::Point2f> LowerFaceWarp::outerLips(const Eigen::VectorXd &shape, 
     return out;
 }
 
-Eigen::Vector2d LowerFaceWarp::mouthCorner(const Eigen::VectorXd &shape, bool left)
-{
-    return point(shape, left ? scheme23::kMouthLeft : scheme23::kMouthRight);
-}
-
 double LowerFaceWarp::mouthWidth(const Eigen::VectorXd &shape)
 {
     return (point(shape, scheme23::kMouthRight) - point(shape, scheme23::kMouthLeft)).norm();

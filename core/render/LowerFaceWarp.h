@@ -33,8 +33,6 @@ struct LowerFaceWarp
     // The outer outline of the lips of `shape` (corners and outer-lip points), pushed out by
     // `margin` pixels from the mouth's centre.
     static std::vector<cv::Point2f> outerLips(const Eigen::VectorXd &shape, double margin);
-    // The image-left (`left`) or image-right mouth corner of `shape`.
-    static Eigen::Vector2d mouthCorner(const Eigen::VectorXd &shape, bool left);
     // The distance between the mouth corners of `shape`.
     static double mouthWidth(const Eigen::VectorXd &shape);
 };
