@@ -28,10 +28,11 @@ constexpr int kPoints = 46;
 
 // The frames of `tracks` whose phone is known, as labelled sequences of their points (or their
 // features): what computeFrameStatistics takes the per-phone means (§1) of.
-std::vector<LabelledSequence> knownFrames(const std::vector<MouthTrack> &tracks, bool points)
+std::vector<LabelledSequence> knownFrames(const std::vector<const MouthTrack *> &tracks, bool points)
 {
     std::vector<LabelledSequence> out;
-    for (const MouthTrack &t : tracks) {
+    for (const MouthTrack *track : tracks) {
+        const MouthTrack &t = *track;
         std::vector<Eigen::Index> rows;
         LabelledSequence s;
         s.name = t.sequenceId;
@@ -82,11 +83,39 @@ Eigen::VectorXd fromJson(const QJsonValue &value, Eigen::Index size, const std::
     return v;
 }
 
+std::vector<const MouthTrack *> pointersTo(const std::vector<MouthTrack> &tracks)
+{
+    std::vector<const MouthTrack *> out;
+    for (const MouthTrack &t : tracks)
+        out.push_back(&t);
+    return out;
+}
+
 } // namespace
+
+// What personMeans combines, fitted once for a person: each phone's mouth from the prior on their
+// face, their own mean (the global mean for a phone without frames) and its frames.
+struct MouthShapePrior::PersonPhones
+{
+    Eigen::MatrixXd fromPrior, own; // 41 x d
+    Eigen::VectorXd count, globalMean;
+
+    // MAP with a weight of `kappa` frames (41 x d); no weight and no frames: the person's mean.
+    Eigen::MatrixXd combined(double kappa) const
+    {
+        Eigen::MatrixXd out(own.rows(), own.cols());
+        for (Eigen::Index p = 0; p < own.rows(); ++p) {
+            const double n = count(p);
+            out.row(p) = kappa + n > 0 ? Eigen::RowVectorXd((kappa * fromPrior.row(p) + n * own.row(p)) / (kappa + n))
+                                       : Eigen::RowVectorXd(globalMean.transpose());
+        }
+        return out;
+    }
+};
 
 MouthShapePrior MouthShapePrior::learn(const std::vector<MouthTrack> &tracks)
 {
-    const std::vector<LabelledSequence> frames = knownFrames(tracks, true);
+    const std::vector<LabelledSequence> frames = knownFrames(pointersTo(tracks), true);
     if (frames.empty() || frames.front().features.cols() != kPoints)
         throw Error("no tracked, aligned frames to learn mouth shapes from");
     const FrameStatistics points = computeFrameStatistics(frames);
@@ -105,6 +134,11 @@ MouthShapePrior MouthShapePrior::learn(const std::vector<MouthTrack> &tracks)
 
 Eigen::MatrixXd MouthShapePrior::personMeans(const std::vector<MouthTrack> &tracks, double kappa) const
 {
+    return personPhones(pointersTo(tracks)).combined(kappa);
+}
+
+MouthShapePrior::PersonPhones MouthShapePrior::personPhones(const std::vector<const MouthTrack *> &tracks) const
+{
     const std::vector<LabelledSequence> pointFrames = knownFrames(tracks, true), featureFrames = knownFrames(tracks, false);
     const long long total = std::accumulate(pointFrames.begin(), pointFrames.end(), 0LL,
                                             [](long long n, const LabelledSequence &s) { return n + s.frameCount(); });
@@ -119,24 +153,22 @@ Eigen::MatrixXd MouthShapePrior::personMeans(const std::vector<MouthTrack> &trac
     const Eigen::MatrixXd W =
         (X.transpose() * X + ridge * Eigen::MatrixXd::Identity(kPoints, kPoints)).ldlt().solve(X.transpose() * Y);
     const double size = shapeSize(points.globalMean);
-    Eigen::MatrixXd out(PhoneSet::kCount, d);
-    for (int p = 0; p < PhoneSet::kCount; ++p) {
-        const Eigen::VectorXd fromPrior = features.globalMean + W.transpose() * (size * m_displacement.row(p).transpose());
-        // The person's own mean: HMM-mean's (the global mean for a phone without frames).
-        const Eigen::VectorXd own = features.mean.row(p).transpose();
-        const double n = features.count(p);
-        // No weight and no frames of the phone: the person's mean.
-        const Eigen::VectorXd mean = kappa + n > 0 ? Eigen::VectorXd((kappa * fromPrior + n * own) / (kappa + n))
-                                                   : features.globalMean;
-        out.row(p) = mean.transpose();
-    }
+    PersonPhones out;
+    out.fromPrior.resize(PhoneSet::kCount, d);
+    for (int p = 0; p < PhoneSet::kCount; ++p)
+        out.fromPrior.row(p) = (features.globalMean + W.transpose() * (size * m_displacement.row(p).transpose())).transpose();
+    // The person's own means: HMM-mean's (the global mean for a phone without frames).
+    out.own = features.mean;
+    out.count = features.count.cast<double>();
+    out.globalMean = features.globalMean;
     return out;
 }
 
 Eigen::MatrixXd MouthShapePrior::personShift(const std::vector<MouthTrack> &tracks, double kappa) const
 {
     kappa = resolvedWeight(tracks, kappa);
-    return personMeans(tracks, kappa) - personMeans(tracks, 0.0);
+    const PersonPhones phones = personPhones(pointersTo(tracks));
+    return phones.combined(kappa) - phones.combined(0.0);
 }
 
 const std::vector<double> &MouthShapePrior::weightCandidates()
@@ -158,19 +190,14 @@ MouthShapePrior::WeightChoice MouthShapePrior::chooseWeight(const std::vector<Mo
     std::vector<double> squares(candidates.size(), 0.0);
     long long heldFrames = 0;
     for (int fold = 0; fold < k; ++fold) {
-        std::vector<MouthTrack> training;
-        std::vector<const MouthTrack *> held;
-        for (size_t i = 0; i < order.size(); ++i) {
-            const MouthTrack &t = tracks[size_t(order[i])];
-            if (int(i) % k == fold)
-                held.push_back(&t);
-            else
-                training.push_back(t);
-        }
+        std::vector<const MouthTrack *> training, held;
+        for (size_t i = 0; i < order.size(); ++i)
+            (int(i) % k == fold ? held : training).push_back(&tracks[size_t(order[i])]);
         std::vector<Eigen::MatrixXd> means;
         try {
+            const PersonPhones phones = personPhones(training);
             for (double kappa : candidates)
-                means.push_back(personMeans(training, kappa));
+                means.push_back(phones.combined(kappa));
         } catch (const Error &) {
             continue; // too few frames left to map points to parameters: this fold says nothing
         }

@@ -70,6 +70,10 @@ public:
     const Eigen::VectorXd &frames() const { return m_frames; }              // per phone
 
 private:
+    struct PersonPhones;
+    // The prior's phones on the face of `tracks` and their own, fitted once (personMeans).
+    PersonPhones personPhones(const std::vector<const MouthTrack *> &tracks) const;
+
     Eigen::VectorXd m_mean;         // 46: the mean pose-free shape
     Eigen::MatrixXd m_displacement; // 41 x 46
     Eigen::VectorXd m_frames;       // 41: frames each phone was learnt from
