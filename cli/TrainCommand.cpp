@@ -91,8 +91,7 @@ int runTrain(const CommandLine &args)
     const int states = context ? context->tree().stateCount() : model->stateCount();
     // What the footage covers, and what it lacks for these options (docs/models.md §0).
     PhoneCoverage coverage = PhoneCoverage::of(sequences, *model);
-    if (prior)
-        coverage.takesPrior = false; // asked for and weighed (maybe at 0 frames): not offered again
+    coverage.priorTried = prior != nullptr;
     if (const std::string advice = coverage.advice(); !advice.empty())
         std::fprintf(stderr, "lipsync train: warning: %s\n", advice.c_str());
     // Brand: its covariance, and the held-out errors that chose it (docs/models.md §2.1).

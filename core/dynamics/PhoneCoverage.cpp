@@ -69,7 +69,7 @@ std::string PhoneCoverage::advice() const
     if (!out.empty())
         out += " More footage of the person (" + std::to_string(int(speechSeconds + 0.5))
                + " s of speech now) covers more.";
-    if (takesPrior && !prior && (!unseen.empty() || !rare.empty()))
+    if (takesPrior && !prior && !priorTried && (!unseen.empty() || !rare.empty()))
         out += " Starting from other speakers' mouths (the prior) fills the phones this footage lacks.";
     return out;
 }

@@ -26,8 +26,9 @@ struct PhoneCoverage
     // Phones in context: the tied states trained (0: not asked for).
     int contextStates = 0;
     // Whether the model could start from other speakers' mouths (docs/models.md §5.4): false for
-    // kinds without per-phone means; `prior` whether it did.
-    bool takesPrior = false, prior = false;
+    // kinds without per-phone means; `prior` whether it did; `priorTried` whether it was asked to
+    // (and weighed the prior, maybe at 0 frames: then it is not offered again).
+    bool takesPrior = false, prior = false, priorTried = false;
 
     static PhoneCoverage of(const std::vector<LabelledSequence> &sequences);
     // The same for a model trained on them: its context states, whether its kind takes a prior

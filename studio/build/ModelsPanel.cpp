@@ -410,7 +410,7 @@ std::shared_ptr<const MouthShapePrior> ModelsPanel::mouthPrior(bool *failed)
     }
 }
 
-QString ModelsPanel::coverageAdvice(const PhoneCoverage &coverage, bool priorTried)
+QString ModelsPanel::coverageAdvice(const PhoneCoverage &coverage)
 {
     // The footage's gaps for these options, in the user's language (PhoneCoverage::advice).
     QStringList said;
@@ -428,7 +428,7 @@ QString ModelsPanel::coverageAdvice(const PhoneCoverage &coverage, bool priorTri
         return {};
     return said.join(QStringLiteral("; ")) + QLatin1Char('.') + QLatin1Char(' ')
            + tr("More footage of the person (%1 s of speech now) covers more.").arg(qRound(coverage.speechSeconds))
-           + (coverage.takesPrior && !coverage.prior && !priorTried
+           + (coverage.takesPrior && !coverage.prior && !coverage.priorTried
                   ? QLatin1Char(' ') + tr("Tick Start from other speakers to take the phones it lacks from other people's mouths.")
                   : QString());
 }
@@ -490,14 +490,14 @@ QList<Task *> ModelsPanel::train()
                     frames += s.frameCount();
                     ll += model->trajectoryLogLikelihood(s.labels, s.features); // comparable (§6.2)
                 }
-                const PhoneCoverage coverage = PhoneCoverage::of(*data, *model);
-                const bool priorTried = prior != nullptr;
+                PhoneCoverage coverage = PhoneCoverage::of(*data, *model);
+                coverage.priorTried = prior != nullptr;
                 // Written on the GUI thread by the commit (a small JSON file), so a canceled
                 // training never replaces the model file either.
-                return [self, kind, name, file, model, seconds, ll, frames, aamId, coverage, priorTried] {
+                return [self, kind, name, file, model, seconds, ll, frames, aamId, coverage] {
                     if (!self)
                         return;
-                    const QString lacking = coverageAdvice(coverage, priorTried);
+                    const QString lacking = coverageAdvice(coverage);
                     self->m_status->setText(tr("%1 trained in %2 s: log-likelihood %3 nats/frame")
                                                 .arg(name)
                                                 .arg(seconds, 0, 'f', 2)

@@ -120,9 +120,8 @@ private:
     void updateActions();
     void applyPaperPreset(bool on);
     QGridLayout *optionsGrid(); // the kinds' and every kind's options (the constructor's)
-    // What the training footage lacks for the options (PhoneCoverage), or empty; offers the prior
-    // from other speakers unless the model had it or `priorTried` (it was weighed and took none).
-    static QString coverageAdvice(const PhoneCoverage &coverage, bool priorTried);
+    // What the training footage lacks for the options (PhoneCoverage), or empty.
+    static QString coverageAdvice(const PhoneCoverage &coverage);
 
     QTreeWidget *m_list;
     QPushButton *m_buildAam;

@@ -101,6 +101,11 @@ private slots:
         c = PhoneCoverage::of(data, *context);
         QVERIFY(c.takesPrior && !c.prior);
         QVERIFY(c.contextStates >= PhoneSet::kCount);
+        // Asked for and weighed at nothing, the prior is not offered again.
+        PhoneCoverage few = PhoneCoverage::of({sequence({{"AA", 3}})}, *context);
+        QVERIFY(few.advice().find("Starting from other speakers") != std::string::npos);
+        few.priorTried = true;
+        QVERIFY(few.advice().find("Starting from other speakers") == std::string::npos);
         c = PhoneCoverage::of(data, *createDynamicModel("slds"));
         QVERIFY(!c.takesPrior && !c.prior);
     }
