@@ -121,7 +121,9 @@ bool ClosedLipExemplars::draw(int which, const Eigen::VectorXd &generated, const
     if (!map.allFinite() || det < 1.0 / 16.0 || det > 16.0)
         return false;
     const cv::Matx23d affine(map(0, 0), map(1, 0), map(2, 0), map(0, 1), map(1, 1), map(2, 1));
-    cv::warpAffine(e.crop, patch, affine, box.size(), cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+    // Lanczos, as the lower face's warp (ThinPlateWarp): a bilinear lookup at sub-pixel offsets
+    // softens the recorded lips it moves.
+    cv::warpAffine(e.crop, patch, affine, box.size(), cv::INTER_LANCZOS4, cv::BORDER_REPLICATE);
     return true;
 }
 
