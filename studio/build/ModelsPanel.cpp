@@ -49,6 +49,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <mutex>
 
 namespace lipsync::studio {
 
@@ -456,6 +457,16 @@ QList<Task *> ModelsPanel::train()
         m_status->setText(tr("Cannot start from other speakers without the project's AAM."));
         return started;
     }
+    // The prior's shift is the same for every kind trained here (the same sequences, prior and
+    // AAM): the first task that needs it measures the tracks and cross-validates its weight, the
+    // others take what it found.
+    struct PriorShift
+    {
+        std::once_flag once;
+        Eigen::MatrixXd shift;
+        double weight = 0.0;
+    };
+    const auto priorShift = prior ? std::make_shared<PriorShift>() : nullptr;
 
     // What a trained model records as its AAM: the content identifier of the project's AAM, which
     // `lipsync render` and the preview check against whichever AAM file they are given.
@@ -473,12 +484,17 @@ QList<Task *> ModelsPanel::train()
         QPointer<ModelsPanel> self(this);
         Task *task = m_context->taskRunner()->start(
             tr("Train %1").arg(name),
-            [self, kind, name, file, data, options, aamId, prior, project, aam](Feedback &feedback) -> TaskRunner::Commit {
+            [self, kind, name, file, data, options, aamId, prior, project, aam, priorShift](Feedback &feedback) -> TaskRunner::Commit {
                 feedback.setStatus(tr("Training %1 on %n sequence(s)…", "", int(data->size())).arg(name).toStdString());
                 ModelOptions own = options;
-                if (prior && modelKindTakesPrior(*parseModelKind(kind.toStdString())))
-                    own.meanShift = projectPriorShift(*prior, MouthMeasurer(*aam), *project, *data,
-                                                      MouthShapePrior::kCrossValidated, &own.priorWeight);
+                if (prior && modelKindTakesPrior(*parseModelKind(kind.toStdString()))) {
+                    std::call_once(priorShift->once, [&] {
+                        priorShift->shift = projectPriorShift(*prior, MouthMeasurer(*aam), *project, *data,
+                                                              MouthShapePrior::kCrossValidated, &priorShift->weight);
+                    });
+                    own.meanShift = priorShift->shift;
+                    own.priorWeight = priorShift->weight;
+                }
                 std::shared_ptr<DynamicModel> model = createDynamicModel(kind.toStdString(), own);
                 const auto start = std::chrono::steady_clock::now();
                 model->train(*data, feedback);

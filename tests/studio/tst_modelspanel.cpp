@@ -148,7 +148,9 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
         QTest::mouseClick(panel.priorCheck(), Qt::LeftButton, {}, QPoint(8, panel.priorCheck()->height() / 2));
         QVERIFY(panel.priorCheck()->isChecked());
-        QCOMPARE(panel.train().size(), 1);
+        // HMM-mean and Brand at once: both moved by the one shift.
+        panel.kindCheck(QStringLiteral("brand"))->setChecked(true);
+        QCOMPARE(panel.train().size(), 2);
         QTRY_COMPARE_WITH_TIMEOUT(context.taskRunner()->runningCount(), 0, 60000);
         const auto trained = std::dynamic_pointer_cast<const HmmMeanModel>(context.modelStore()->dynamicModel(QStringLiteral("hmm")));
         QVERIFY(trained);
@@ -167,6 +169,9 @@ private slots:
         QVERIFY(trained->means().isApprox(dynamic_cast<HmmMeanModel &>(*plain).means() + shift, 1e-9));
         // The model records it, and the list says so.
         QVERIFY(trained->meanShift().isApprox(shift, 1e-12));
+        const auto brand = context.modelStore()->dynamicModel(QStringLiteral("brand"));
+        QVERIFY(brand && brand->meanShift().isApprox(shift, 1e-12));
+        QCOMPARE(brand->priorWeight(), trained->priorWeight());
         const QList<QTreeWidgetItem *> rows = panel.list()->findItems(ModelKinds::name(QStringLiteral("hmm")), Qt::MatchExactly, 1);
         QCOMPARE(rows.size(), 1);
         QVERIFY2(rows.front()->toolTip(1).endsWith(QStringLiteral("started from other speakers")),
