@@ -35,9 +35,10 @@ QString number(double value, int decimals)
 }
 
 // 25 -> "25", 29.97002997 -> "29.97"
+// Seven significant digits: NTSC's 30000/1001 (29.97003) apart from a container's rounded 29.97.
 QString rate(double fps)
 {
-    return QString::number(fps, 'g', 6);
+    return QString::number(fps, 'g', 7);
 }
 
 void printRows(const QList<QPair<QString, QString>> &rows)
@@ -239,7 +240,10 @@ int infoProject(const QString &path, bool json)
     long long totalFrames = 0;
     double totalDuration = 0.0;
     double commonRate = -1.0; // -1: none yet, 0: mixed
+    double lowestRate = 0.0, highestRate = 0.0;
     for (const lipsync::Sequence &s : project.sequences) {
+        lowestRate = lowestRate > 0 ? std::min(lowestRate, s.frameRate) : s.frameRate;
+        highestRate = std::max(highestRate, s.frameRate);
         totalFrames += s.frameCount;
         totalDuration += s.duration();
         if (commonRate < 0)
@@ -288,7 +292,7 @@ int infoProject(const QString &path, bool json)
     rows << qMakePair(QStringLiteral("frames"), QString::number(totalFrames));
     rows << qMakePair(QStringLiteral("fps"),
                       commonRate > 0 ? rate(commonRate)
-                                     : (commonRate == 0 ? QStringLiteral("mixed")
+                                     : (commonRate == 0 ? QStringLiteral("mixed, %1 to %2").arg(rate(lowestRate), rate(highestRate))
                                                         : QStringLiteral("-")));
     rows << qMakePair(QStringLiteral("duration"), number(totalDuration, 3) + QStringLiteral(" s"));
     printRows(rows);

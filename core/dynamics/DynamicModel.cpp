@@ -160,16 +160,25 @@ void DynamicModel::checkMeanShift(const Eigen::MatrixXd &shift, Eigen::Index row
 void DynamicModel::train(const std::vector<LabelledSequence> &sequences, Feedback &feedback)
 {
     validateSequences(sequences, m_stateCount);
-    double rate = 0.0;
+    // One rate for the dynamics, which are per frame: rates within kFrameRateTolerance of the
+    // first are that rate (NTSC's 30000/1001 and a container's rounded 29.97, or 29.97 and 30:
+    // a pace 0.1 % apart, where speakers' own pace varies by tens of percent), recorded as their
+    // mean over the frames.
+    double first = 0.0, frameSum = 0.0, offsetSum = 0.0;
     for (const LabelledSequence &s : sequences) {
-        if (s.frameRate > 0 && rate > 0 && std::abs(s.frameRate - rate) > 1e-6 * rate) {
+        if (s.frameRate <= 0)
+            continue;
+        if (first > 0 && std::abs(s.frameRate - first) > kFrameRateTolerance * first) {
             char rates[96];
-            std::snprintf(rates, sizeof rates, "%.6g and %.6g frames/s", rate, s.frameRate);
+            std::snprintf(rates, sizeof rates, "%.7g and %.7g frames/s", first, s.frameRate);
             throw Error(std::string("the training sequences have different frame rates (") + rates + ", " + s.name
                         + "): a model's dynamics are per frame, so train it on one rate");
         }
-        rate = s.frameRate > 0 ? s.frameRate : rate;
+        first = first > 0 ? first : s.frameRate;
+        frameSum += double(s.features.rows());
+        offsetSum += double(s.features.rows()) * (s.frameRate - first);
     }
+    const double rate = frameSum > 0 ? first + offsetSum / frameSum : first; // exactly `first` when all agree
     fit(sequences, feedback);
     if (startedFromOtherSpeakers())
         shiftMeans(m_meanShift);

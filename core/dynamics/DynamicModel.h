@@ -58,7 +58,9 @@ public:
 
     // Validates (validateSequences) and fits the parameters. Reports progress and the objective
     // per iteration, polls cancel (throws Canceled; the model is then left unchanged). Records the
-    // sequences' frame rate; sequences at different rates are an Error (the dynamics are per frame).
+    // sequences' frame rate; sequences whose rates differ by more than kFrameRateTolerance are an
+    // Error (the dynamics are per frame).
+    static constexpr double kFrameRateTolerance = 0.01;
     void train(const std::vector<LabelledSequence> &sequences, Feedback &feedback);
     // Frames per second of the features it was trained on, the rate it generates at (0: not
     // known, e.g. model files that record none).

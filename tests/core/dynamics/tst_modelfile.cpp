@@ -14,6 +14,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -172,7 +174,8 @@ private slots:
     }
 
     // The model records the frame rate of its training sequences and keeps it through its file;
-    // sequences at two rates are refused, a rate in the file that is not one too.
+    // sequences at two rates are refused (rates 1 % apart or less are one, recorded as their mean
+    // over the frames), a rate in the file that is not one too.
     void frameRate()
     {
         std::vector<LabelledSequence> training = data();
@@ -192,6 +195,20 @@ private slots:
         const std::string e = errorOf([&] { loadModel(path); });
         QVERIFY2(e.find("frameRate") != std::string::npos && e.find(path) != std::string::npos, e.c_str());
 
+        // NTSC's exact rate beside the container's rounded one, and 30: one rate.
+        const double ntsc = 30000.0 / 1001.0;
+        training.back().frameRate = ntsc;
+        HmmMeanModel nearly;
+        nearly.train(training, feedback);
+        double frames = 0, expected = 0;
+        for (const LabelledSequence &s : training) {
+            frames += double(s.features.rows());
+            expected += double(s.features.rows()) * s.frameRate;
+        }
+        QVERIFY(nearly.frameRate() > 29.97 && nearly.frameRate() < ntsc);
+        QVERIFY(std::abs(nearly.frameRate() - expected / frames) < 1e-12);
+        training.back().frameRate = 30.0;
+        HmmMeanModel().train(training, feedback);
         training.back().frameRate = 25.0;
         const std::string mixed = errorOf([&] { HmmMeanModel().train(training, feedback); });
         QVERIFY2(mixed.find("29.97 and 25 frames/s") != std::string::npos, mixed.c_str());
