@@ -31,18 +31,25 @@ using namespace lipsync;
 
 namespace {
 
-// --strict [--min-fit F]: the transcript fit a transcript must reach.
-std::optional<double> minimumFit(const cli::CommandLine &a)
+// How a transcript that does not fit its sound is met: a warning, or with --strict a refusal;
+// below the aligner's own threshold (TranscriptFit) or --min-fit F.
+struct FitCheck
 {
-    if (a.isSet("min-fit") && !a.isSet("strict"))
-        throw cli::UsageError(QStringLiteral("--min-fit goes with --strict"));
-    if (!a.isSet("strict"))
-        return std::nullopt;
+    bool strict = false;
+    std::optional<double> minimum;
+};
+
+FitCheck fitCheck(const cli::CommandLine &a)
+{
+    FitCheck check{a.isSet("strict"), std::nullopt};
+    if (!a.isSet("min-fit"))
+        return check;
     bool ok = false;
     const double fit = a.value("min-fit").toDouble(&ok);
     if (!ok || !(fit < 0))
         throw cli::UsageError(QStringLiteral("--min-fit must be a negative number (nats per frame)"));
-    return fit;
+    check.minimum = fit;
+    return check;
 }
 
 QJsonArray tierJson(const Tier &tier)
@@ -55,21 +62,28 @@ QJsonArray tierJson(const Tier &tier)
 }
 
 // Aligns `media` to `words` and writes the TextGrid `out`; the --json report of one recording.
-// With `minFit` (--strict: an aligner of the recording's speaker), a transcript whose fit to the
-// sound is below it is refused as not what the recording says, naming the file; nothing is written.
+// A transcript whose fit to the sound is below the threshold is taken not to be what the
+// recording says: a warning naming the file, or with --strict an Error, nothing written.
 QJsonObject alignOne(const cli::SpeechAligner &aligner, const QString &media, const std::vector<std::string> &words,
-                     const QString &transcriptPath, const QString &out, Feedback &feedback,
-                     std::optional<double> minFit)
+                     const QString &transcriptPath, const QString &out, Feedback &feedback, const FitCheck &check)
 {
     QElapsedTimer timer;
     timer.start();
     const AlignerOutput aligned = aligner.align(media, words, transcriptPath, feedback);
     const AlignmentResult &result = aligned.alignment;
-    if (minFit && aligned.transcriptFit < *minFit) // never for NaN (CMU Sphinx)
-        throw Error("the transcript does not seem to be what the recording says (fit "
-                        + QString::number(aligned.transcriptFit, 'f', 2).toStdString() + " nats per frame, below "
-                        + QString::number(*minFit, 'f', 2).toStdString() + ")",
-                    (transcriptPath.isEmpty() ? media : transcriptPath).toStdString());
+    std::optional<TranscriptFit> fit = aligned.transcriptFit;
+    if (fit && check.minimum)
+        fit->threshold = *check.minimum;
+    if (fit && fit->misfit()) {
+        const std::string file = (transcriptPath.isEmpty() ? media : transcriptPath).toStdString();
+        const std::string why = "the transcript does not seem to be what the recording says (fit "
+                                + QString::number(fit->value, 'f', 2).toStdString() + " nats per frame, below "
+                                + QString::number(fit->threshold, 'f', 2).toStdString() + ")";
+        if (check.strict)
+            throw Error(why, file);
+        std::fprintf(stderr, "lipsync: warning: %s: %s; check the words (--strict refuses it)\n", file.c_str(),
+                     why.c_str());
+    }
     // Per-video-frame phone labels (docs/models.md §0 voting) when the media has a readable video
     // stream (the sound of a damaged video may still align).
     QJsonArray frameLabels;
@@ -104,8 +118,8 @@ QJsonObject alignOne(const cli::SpeechAligner &aligner, const QString &media, co
         {QStringLiteral("duration"), aligned.duration},
         {QStringLiteral("frames"), result.frames},
         {QStringLiteral("logLikelihood"), result.logLikelihood},
-        {QStringLiteral("transcriptFit"), std::isfinite(aligned.transcriptFit) ? QJsonValue(aligned.transcriptFit)
-                                                                               : QJsonValue()},
+        {QStringLiteral("transcriptFit"), fit ? QJsonValue(fit->value) : QJsonValue()},
+        {QStringLiteral("transcriptFitThreshold"), fit ? QJsonValue(fit->threshold) : QJsonValue()},
         {QStringLiteral("seconds"), timer.elapsed() / 1000.0},
         {QStringLiteral("wordCount"), int(words.size())},
         {QStringLiteral("words"), tierJson(result.words)},
@@ -139,7 +153,7 @@ int alignFolder(const cli::CommandLine &a, const cli::SpeechAligner &aligner)
                                                    ? Lexicon::splitWords(r.transcript)
                                                    : readTranscript(r.transcriptFile.toStdString()).words;
         QJsonObject result =
-            alignOne(aligner, r.media, words, r.transcriptFile, job.output, feedback, minimumFit(a));
+            alignOne(aligner, r.media, words, r.transcriptFile, job.output, feedback, fitCheck(a));
         // The summary keeps what a project import needs, not every interval.
         for (const char *key : {"words", "phones", "frameLabels", "adaptationLogLikelihoodPerFrame"})
             result.remove(QLatin1String(key));
@@ -150,14 +164,12 @@ int alignFolder(const cli::CommandLine &a, const cli::SpeechAligner &aligner)
 
 int runAlign(const cli::CommandLine &a)
 {
-    // The transcript's fit costs a third of the alignment's time: measured when it is reported
-    // (--json) or checked (--strict).
+    // Every alignment's transcript is checked against its sound (TranscriptFit).
     // A project to align is also the project whose pronunciations and aligner are used, unless
     // --project names another.
     const QString input = a.positional().front();
     const bool isProject = !a.isSet("project") && QFileInfo::exists(QDir(input).filePath(Project::kManifestName));
-    const cli::SpeechAligner aligner(a, isProject ? input : a.value(QStringLiteral("project")),
-                                     a.isSet("json") || a.isSet("strict"));
+    const cli::SpeechAligner aligner(a, isProject ? input : a.value(QStringLiteral("project")), true);
     if (cli::isBatchInput(a.positional().front()))
         return alignFolder(a, aligner);
     const QString media = a.positional().front();
@@ -166,7 +178,7 @@ int runAlign(const cli::CommandLine &a)
     const Transcript transcript = readTranscript(a.value("transcript").toStdString());
     const QJsonObject result =
         alignOne(aligner, media, transcript.words, a.value("transcript"), a.value("out"), Feedback::none(),
-                 minimumFit(a));
+                 fitCheck(a));
     if (a.isSet("json")) {
         cli::printJson(result);
     } else {
@@ -196,11 +208,13 @@ const cli::CommandRegistration registration{
           QStringLiteral("the TextGrid to write; with a folder to align, the folder of the TextGrids"), {},
           cli::CommandOption::Required},
          {QStringLiteral("strict"), {},
-          QStringLiteral("refuse a transcript that does not fit the sound (our aligner's transcriptFit below --min-fit; "
-                         "for an aligner trained on the recording's speaker: docs/pipeline.md), nothing written")},
+          QStringLiteral("refuse a transcript that does not fit the sound (its transcriptFit below the aligner's "
+                         "threshold or --min-fit: docs/pipeline.md), nothing written; without it, a warning")},
          {QStringLiteral("min-fit"), QStringLiteral("F"),
-          QStringLiteral("with --strict: the least transcript fit, nats per frame"),
-          QString::number(kTranscriptFitThreshold)}},
+          QStringLiteral("the least transcript fit, nats per frame (default: the aligner's own, %1 for ours "
+                         "trained on the speaker, %2 for CMU Sphinx's)")
+              .arg(kTranscriptFitThreshold)
+              .arg(kSphinxTranscriptFitThreshold)}},
         {{QStringLiteral("MEDIA"), QStringLiteral("the recording (any audio or video file with speech), or a folder of "
                                                   "them, or a project folder")}}}
         .add(cli::SpeechAligner::options({QStringLiteral("model")}))

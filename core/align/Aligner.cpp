@@ -30,6 +30,7 @@ std::unique_ptr<Aligner> createAligner(const AlignerChoice &choice)
         SphinxAligner::Options options;
         options.modelDir = choice.sphinxModelDir();
         options.adaptationPasses = choice.adapt ? 1 : 0;
+        options.measureTranscriptFit = choice.transcriptFit;
         return std::make_unique<SphinxAligner>(options);
     }
     const std::string path = choice.model.empty() ? shippedAlignerModelPath() : choice.model;

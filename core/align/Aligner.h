@@ -10,6 +10,7 @@
 #include "align/SpeakerAdaptation.h"
 #include "audio/Mfcc.h"
 #include "io/RecordingSound.h"
+#include "project/TranscriptFit.h"
 #include "tasks/Feedback.h"
 
 #include <limits>
@@ -37,8 +38,9 @@ struct AlignerChoice
     // Our model's word-boundary correction (BoundaryCorrection), when it has one; false: the
     // HMM's own boundaries, as the paper's aligner (the paper preset, docs/models.md §8).
     bool boundaryCorrection = true;
-    // Measure AlignerOutput::transcriptFit (ours): a pass over every state for every frame, about
-    // a third more time than the alignment itself, so only when asked (`align --json`, `--strict`).
+    // Measure AlignerOutput::transcriptFit: a pass over every state for every frame (ours: about
+    // a third more time than the alignment itself; CMU Sphinx's: as long again), asked for by
+    // `lipsync align` and the studio's alignments.
     bool transcriptFit = false;
 
     bool isSphinx() const;
@@ -57,26 +59,10 @@ struct AlignerOutput
     double duration = 0;         // seconds of audio
     MfccOptions audioFrames;     // the aligner's audio frames (voteFrameLabels)
     AdaptationReport adaptation; // ours with adaptation: log-likelihood per frame per pass
-    // How well the transcript fits the sound (ours with AlignerChoice::transcriptFit; else NaN): the forced path's
-    // log-likelihood per audio frame minus that of the best-matching phone state of each frame
-    // on its own (a free phone recognition without a grammar), <= 0. Speech that says other
-    // words than the transcript pulls it far down; how far a true transcript sits depends on how
-    // well the model knows the speaker (kTranscriptFitThreshold).
-    double transcriptFit = std::numeric_limits<double>::quiet_NaN();
+    // How well the transcript fits the sound, with the aligner's threshold (TranscriptFit), when
+    // AlignerChoice::transcriptFit asked for it on a whole recording; none otherwise.
+    std::optional<TranscriptFit> transcriptFit;
 };
-
-// The transcript fit below which a transcript is taken not to be what the recording says, for an
-// aligner trained on the recording's speaker: chosen by cross-validation on GRID s1 with other
-// clips' transcripts swapped in (docs/performance.md, "Transcripts that do not match the sound":
-// 99.5 % of swaps below it, 1.25 % of true transcripts). With a model of another speaker true
-// transcripts fall below it too (-2.4 to -13 measured), so the check is asked for, not default.
-constexpr double kTranscriptFitThreshold = -2.2;
-
-// A measured fit below the threshold: the words are likely not the recording's.
-inline bool transcriptMisfit(const std::optional<double> &fit)
-{
-    return fit && *fit < kTranscriptFitThreshold;
-}
 
 class Aligner
 {

@@ -9,6 +9,7 @@
 #include "util/Error.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <limits>
 #include <optional>
@@ -105,7 +106,8 @@ AlignerOutput MonophoneAligner::align(const RecordingSound &sound, const std::ve
         throw misfit(e, mediaPath, transcriptPath);
     }
     if (m_measureFit)
-        out.transcriptFit = transcriptFit(p.modelOr(m_model), p.utterance.features, out.alignment);
+        if (const double fit = transcriptFit(p.modelOr(m_model), p.utterance.features, out.alignment); std::isfinite(fit))
+            out.transcriptFit = TranscriptFit{fit, kTranscriptFitThreshold};
     m_model.boundaryCorrection().apply(out.alignment);
     return out;
 }

@@ -18,6 +18,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
+#include <numeric>
 
 namespace lipsync {
 
@@ -192,7 +194,7 @@ SphinxModelDefinition readModelDefinition(const std::string &modelDir)
 SphinxAligner::SphinxAligner(Options options)
     : m_modelDir(resolveModelDir(options.modelDir)), m_mdef(readModelDefinition(m_modelDir)),
       m_extra(std::move(options.extraArguments)), m_adaptationPasses(std::max(0, options.adaptationPasses)),
-      m_decoders([this] {
+      m_measureFit(options.measureTranscriptFit), m_decoders([this] {
           std::vector<std::pair<std::string, std::string>> arguments = baseArguments();
           arguments.insert(arguments.end(), m_extra.begin(), m_extra.end());
           return std::make_unique<SphinxDecoder>(m_modelDir, arguments);
@@ -408,7 +410,7 @@ AlignmentResult tiersOfPath(const Graph &graph, int E, const std::vector<int> &p
 
 AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const std::vector<std::string> &words,
                                      const std::vector<std::vector<Pronunciation>> &pronunciations,
-                                     double audioDuration, Feedback &feedback) const
+                                     double audioDuration, Feedback &feedback, double *transcriptFit) const
 {
     if (words.empty() || pronunciations.size() != words.size())
         throw Error("the transcript has no words to align");
@@ -420,7 +422,7 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
                 spokenWords.push_back(words[w]);
                 spokenPronunciations.push_back(pronunciations[w]);
             }
-        return align(samples, spokenWords, spokenPronunciations, audioDuration, feedback);
+        return align(samples, spokenWords, spokenPronunciations, audioDuration, feedback, transcriptFit);
     }
     for (size_t w = 0; w < words.size(); ++w)
         if (pronunciations[w].empty() ||
@@ -476,8 +478,22 @@ AlignmentResult SphinxAligner::align(const std::vector<float> &samples, const st
     result.frames = utterance.frames();
     // Back to natural-log likelihood (costs are in the log base's units >> 10), relative to the
     // best senone scored in each frame.
-    result.logLikelihood =
-        -double(viterbi.cost(best)) * double(1 << SphinxDecoder::kScoreShift) * std::log(decoder->logBase());
+    const double natsPerCost = double(1 << SphinxDecoder::kScoreShift) * std::log(decoder->logBase());
+    result.logLikelihood = -double(viterbi.cost(best)) * natsPerCost;
+    if (transcriptFit) {
+        // As our aligner's fit (MonophoneAligner): the forced path against each frame's best
+        // state alone, a free recognition without a grammar. Scored over every senone, a frame's
+        // costs are relative to the best of all, so the path's own cost is the gap.
+        std::vector<int> all(size_t(m_mdef.senoneCount()));
+        std::iota(all.begin(), all.end(), 0);
+        double gap = 0;
+        for (int t = 0; t < utterance.frames(); ++t) {
+            if (t % 100 == 0)
+                feedback.throwIfCanceled();
+            gap += double(utterance.score(t, all)[viterbi.senoneOf(size_t(path[size_t(t)]))]);
+        }
+        *transcriptFit = -gap * natsPerCost / double(std::max(1, utterance.frames()));
+    }
     feedback.setProgress(1.0);
     return result;
 }
@@ -503,8 +519,12 @@ AlignerOutput SphinxAligner::align(const RecordingSound &sound, const std::vecto
     }
     AlignerOutput out;
     out.duration = audio.duration();
+    double fit = std::numeric_limits<double>::quiet_NaN();
     try {
-        out.alignment = align(audio.samples, words, pronunciations, audio.duration(), feedback);
+        out.alignment = align(audio.samples, words, pronunciations, audio.duration(), feedback,
+                              m_measureFit ? &fit : nullptr);
+        if (std::isfinite(fit))
+            out.transcriptFit = TranscriptFit{fit, kSphinxTranscriptFitThreshold};
     } catch (const Error &e) {
         throw Error(transcriptPath.empty() ? e.reason() : e.reason() + " (transcript " + transcriptPath + ")",
                     mediaPath, e.field());

@@ -35,9 +35,9 @@ class Project
 {
 public:
     // 2: sequences may carry per-frame fitErrors; 3: and transcriptProposed; 4: and transcriptFit,
-    // and the project its aligner; 5: and the user's mouth shapes for cue export.
-    // Older manifests still load.
-    static constexpr int kFormatVersion = 5;
+    // and the project its aligner; 5: and the user's mouth shapes for cue export; 6: and the
+    // threshold of the aligner that measured a transcriptFit. Older manifests still load.
+    static constexpr int kFormatVersion = 6;
     static constexpr const char *kManifestName = "project.json";
     static constexpr const char *kStudyFileName = "study.json";
 

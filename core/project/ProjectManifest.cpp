@@ -270,7 +270,7 @@ private:
     Sequence readSequence(const QJsonObject &o, const std::string &field) const
     {
         checkKeys(o, field, {"id", "mediaFile", "frameRate", "frameCount", "firstFrameTime", "frameTimes",
-                             "transcript", "transcriptProposed", "transcriptFit",
+                             "transcript", "transcriptProposed", "transcriptFit", "transcriptFitThreshold",
                              "transcriptConfidence", "features", "tiers", "landmarks", "fitErrors"});
         Sequence s;
         s.id = string(require(o, "id", field), member(field, "id"), false);
@@ -302,7 +302,17 @@ private:
             const QJsonValue fit = o.value("transcriptFit");
             if (!fit.isDouble() || !std::isfinite(fit.toDouble()))
                 fail(member(field, "transcriptFit"), "must be a number (nats per frame), found " + describe(fit));
-            s.transcriptFit = fit.toDouble();
+            // Fits measured before aligners gave their own thresholds are our aligner's.
+            double threshold = kTranscriptFitThreshold;
+            if (o.contains("transcriptFitThreshold")) {
+                const QJsonValue t = o.value("transcriptFitThreshold");
+                if (!t.isDouble() || !std::isfinite(t.toDouble()))
+                    fail(member(field, "transcriptFitThreshold"), "must be a number (nats per frame), found " + describe(t));
+                threshold = t.toDouble();
+            }
+            s.transcriptFit = TranscriptFit{fit.toDouble(), threshold};
+        } else if (o.contains("transcriptFitThreshold")) {
+            fail(member(field, "transcriptFitThreshold"), "is given without a transcriptFit");
         }
         if (o.contains("transcriptConfidence"))
             s.transcriptConfidence = readConfidence(o.value("transcriptConfidence"),
@@ -515,7 +525,8 @@ const QStringList &keyOrder()
                                    "sequences",  "models",    "pronunciations", "word",
                                    "id",         "mediaFile", "frameRate", "frameCount",
                                    "firstFrameTime", "frameTimes",
-                                   "transcript", "transcriptProposed", "transcriptFit", "transcriptConfidence", "features", "tiers", "words",
+                                   "transcript", "transcriptProposed", "transcriptFit", "transcriptFitThreshold",
+                                   "transcriptConfidence", "features", "tiers", "words",
                                    "phones",     "landmarks", "fitErrors", "frame",
                                    "points",     "start",     "end",       "label",
                                    "userEdited", "file",      "study", "mouthShapes"};
@@ -645,8 +656,10 @@ QJsonObject ProjectManifest::toJson(const Project &project, const std::string &t
                                             {"phones", tierToJson(s.phones)}}}};
         if (s.transcriptProposed)
             o.insert("transcriptProposed", true);
-        if (s.transcriptFit && std::isfinite(*s.transcriptFit))
-            o.insert("transcriptFit", *s.transcriptFit);
+        if (s.transcriptFit && std::isfinite(s.transcriptFit->value) && std::isfinite(s.transcriptFit->threshold)) {
+            o.insert("transcriptFit", s.transcriptFit->value);
+            o.insert("transcriptFitThreshold", s.transcriptFit->threshold);
+        }
         if (!s.transcriptConfidence.empty()) {
             QJsonArray confidence;
             for (double c : s.transcriptConfidence)

@@ -3,6 +3,7 @@
 #include "annotation/FrameClock.h"
 #include "annotation/LandmarkSet.h"
 #include "annotation/Tier.h"
+#include "project/TranscriptFit.h"
 
 #include <Eigen/Core>
 
@@ -32,10 +33,9 @@ struct Sequence
     // With a proposed transcript: the recogniser's posterior of each of its words (SpeechRecognizer,
     // one per word of `transcript`), for reviewing the doubtful ones first; empty otherwise.
     std::vector<double> transcriptConfidence;
-    // How well the transcript fits the sound, by the alignment that made the tiers (our
-    // aligner's AlignerOutput::transcriptFit, nats per frame; below kTranscriptFitThreshold the
-    // words are likely not this clip's); none when that aligner did not measure it.
-    std::optional<double> transcriptFit;
+    // How well the transcript fits the sound, by the alignment that made the tiers, with that
+    // aligner's threshold (AlignerOutput::transcriptFit); none when it was not measured.
+    std::optional<TranscriptFit> transcriptFit;
 
     std::map<int, LandmarkSet> landmarks; // video frame index -> 23 points
     Tier words{"words", {}};

@@ -2,7 +2,6 @@
 
 #include "widgets/ElidedLabel.h"
 
-#include "align/Aligner.h"
 #include "align/Lexicon.h"
 #include "context/SequenceMedia.h"
 #include "project/Sequence.h"
@@ -72,7 +71,7 @@ void SequenceDetailsView::showSequence(const Sequence &sequence, const QString &
         m_audio->setText(tr("none (%1)").arg(media.audioError));
     const std::size_t words = Lexicon::splitWords(sequence.transcript).size();
     const bool proposed = words > 0 && sequence.transcriptProposed;
-    const bool misfit = words > 0 && transcriptMisfit(sequence.transcriptFit);
+    const bool misfit = words > 0 && sequence.transcriptFit && sequence.transcriptFit->misfit();
     m_transcript->setText(words == 0 ? tr("none")
                           : misfit   ? tr("%1 words; does not fit the sound").arg(words)
                           : proposed ? tr("proposed, not checked")
@@ -82,8 +81,8 @@ void SequenceDetailsView::showSequence(const Sequence &sequence, const QString &
     m_transcript->setFont(font);
     m_transcript->setToolTip(misfit ? tr("Its alignment found other words in the sound (%1 nats per frame, below %2): "
                                          "check the transcript, then align the sequence again")
-                                          .arg(locale.toString(*sequence.transcriptFit, 'f', 2))
-                                          .arg(locale.toString(kTranscriptFitThreshold, 'f', 1))
+                                          .arg(locale.toString(sequence.transcriptFit->value, 'f', 2))
+                                          .arg(locale.toString(sequence.transcriptFit->threshold, 'f', 1))
                              : proposed ? tr("Proposed by speech recognition: edit it in the list's Transcript column, "
                                            "or accept it as it is")
                                       : QString());

@@ -1,6 +1,5 @@
 #include "app/SequenceListModel.h"
 
-#include "align/Aligner.h"
 #include "align/SpeechRecognizer.h"
 #include "document/ProjectDocument.h"
 
@@ -61,7 +60,7 @@ QVariant SequenceListModel::data(const QModelIndex &index, int role) const
     const bool proposed = index.column() == TranscriptColumn && s.transcriptProposed;
     // A transcript its alignment found not to fit the sound (Sequence::transcriptFit) is marked
     // until the sequence is aligned again.
-    const bool misfit = index.column() == TranscriptColumn && transcriptMisfit(s.transcriptFit);
+    const bool misfit = index.column() == TranscriptColumn && s.transcriptFit && s.transcriptFit->misfit();
     if (role == Qt::DecorationRole && misfit)
         return QApplication::style()->standardIcon(QStyle::SP_MessageBoxWarning);
     if (role == Qt::FontRole && proposed) {
@@ -77,8 +76,8 @@ QVariant SequenceListModel::data(const QModelIndex &index, int role) const
                       "below %2): these are likely not the clip's words. Check them, then align the sequence again. "
                       "An aligner that does not know the speaker scores every transcript low: then align with the "
                       "project's own aligner, or Generic US English with Adapt to Speaker.")
-                .arg(QLocale().toString(*s.transcriptFit, 'f', 2))
-                .arg(QLocale().toString(kTranscriptFitThreshold, 'f', 1));
+                .arg(QLocale().toString(s.transcriptFit->value, 'f', 2))
+                .arg(QLocale().toString(s.transcriptFit->threshold, 'f', 1));
         if (proposed) {
             QString tip = tr("Proposed by speech recognition and not checked yet: double-click to edit it, or accept "
                              "it as it is (Accept Proposed Transcript, in the Edit menu or on right-click)");

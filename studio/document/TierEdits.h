@@ -8,6 +8,7 @@
 // boundary never crosses its neighbours. Every interval an edit touches gets userEdited = true
 // (re-alignment keeps it, the view marks it).
 #include "annotation/Tier.h"
+#include "project/TranscriptFit.h"
 
 #include <QString>
 
@@ -24,7 +25,7 @@ struct TierPair
     Tier phones{"phones", {}};
     // How well the transcript fits the sound by the alignment that made these tiers
     // (Sequence::transcriptFit); none when not measured.
-    std::optional<double> transcriptFit;
+    std::optional<TranscriptFit> transcriptFit;
 
     Tier &operator[](TierKind kind) { return kind == TierKind::Words ? words : phones; }
     const Tier &operator[](TierKind kind) const { return kind == TierKind::Words ? words : phones; }

@@ -29,7 +29,7 @@ AlignOutcome alignSequence(const AlignJob &job, const Aligner &aligner, Feedback
             outcome.guessed.emplace_back(word, PronunciationDictionary::toString(phones));
     };
     AlignmentResult r;
-    std::optional<double> fit;
+    std::optional<TranscriptFit> fit;
     if (job.stretches.empty()) {
         const std::vector<std::string> words = Lexicon::splitWords(job.transcript);
         if (words.empty())
@@ -37,8 +37,7 @@ AlignOutcome alignSequence(const AlignJob &job, const Aligner &aligner, Feedback
         noteGuesses(words);
         const AlignerOutput aligned = aligner.align(path, words, lexicon, feedback);
         r = aligned.alignment;
-        if (std::isfinite(aligned.transcriptFit))
-            fit = aligned.transcriptFit;
+        fit = aligned.transcriptFit;
     } else {
         // Constrained re-alignment (core/align/Realignment): every boundary outside the
         // stretches kept exactly.

@@ -537,8 +537,8 @@ void TimelinePanel::startAlignment(const QString &title, std::vector<AlignJob> j
         return;
     for (AlignJob &job : jobs) {
         job.aligner = m_context->modelStore()->alignerChoice();
-        // Ours measures how well each transcript fits its sound, for the sequence list's mark.
-        job.aligner.transcriptFit = !job.aligner.isSphinx();
+        // How well each transcript fits its sound, for the sequence list's mark.
+        job.aligner.transcriptFit = true;
     }
     QPointer<TimelinePanel> self(this);
     Task *task = lipsync::studio::startAlignment(*m_context->taskRunner(), title, std::move(jobs),
@@ -591,7 +591,7 @@ void TimelinePanel::applyAlignment(const QString &title, std::vector<AlignOutcom
             || QString::fromStdString(m_document->sequence(row).id) != o.sequenceId)
             continue;
         changed += m_document->requestAlignedTiers(row, o.tiers, title) ? 1 : 0;
-        if (transcriptMisfit(o.tiers.transcriptFit))
+        if (o.tiers.transcriptFit && o.tiers.transcriptFit->misfit())
             misfits << o.sequenceId;
     }
     if (ok > 1)
@@ -599,7 +599,7 @@ void TimelinePanel::applyAlignment(const QString &title, std::vector<AlignOutcom
     if (ok > 0 && changed == 0 && m_context)
         m_context->showStatus(tr("%1: the alignment came out as it was; nothing changed.").arg(title),
                                            8000);
-    // A transcript that does not fit its sound (our aligner's transcriptFit): said now, marked in
+    // A transcript that does not fit its sound (TranscriptFit): said now, marked in
     // the sequence list until the sequence is aligned again. When none fits, the aligner's
     // model is more likely not the speaker's than every transcript wrong.
     if (!misfits.isEmpty() && m_context) {

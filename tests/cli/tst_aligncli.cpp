@@ -147,6 +147,11 @@ private slots:
         QVERIFY2(other.exitCode == 0, other.err.constData());
         const double swappedFit = QJsonDocument::fromJson(other.out).object().value("transcriptFit").toDouble();
         QVERIFY2(swappedFit < kTranscriptFitThreshold && swappedFit < fit - 2, qPrintable(QString::number(swappedFit)));
+        // Our aligner's threshold with it; without --strict, a warning naming the transcript.
+        QCOMPARE(QJsonDocument::fromJson(other.out).object().value("transcriptFitThreshold").toDouble(),
+                 kTranscriptFitThreshold);
+        QVERIFY2(other.err.contains("warning") && other.err.contains("bgin3a.align"), other.err.constData());
+        QVERIFY2(!r.err.contains("warning"), r.err.constData());
         QFile::remove(swapped);
         other = runLipsync({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bgin3a.align", "--out", swapped,
                             "--strict"});
@@ -158,6 +163,28 @@ private slots:
                              "--strict"})
                      .exitCode,
                  0);
+
+        // CMU Sphinx's generic model adapted to the speaker (the default for other speakers) measures
+        // the fit too, against its own threshold: this clip's words above it, those of a clip that
+        // shares none of its words below, refused by --strict.
+        const Run sphinx = runLipsync({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "bbaf2n.align", "--out",
+                                       swapped, "--aligner", "sphinx", "--adapt", "--json"});
+        QVERIFY2(sphinx.exitCode == 0, sphinx.err.constData());
+        const QJsonObject sphinxJson = QJsonDocument::fromJson(sphinx.out).object();
+        QCOMPARE(sphinxJson.value("transcriptFitThreshold").toDouble(), kSphinxTranscriptFitThreshold);
+        const double sphinxFit = sphinxJson.value("transcriptFit").toDouble();
+        QVERIFY2(sphinxFit > kSphinxTranscriptFitThreshold + 0.5, qPrintable(QString::number(sphinxFit)));
+        const Run sphinxOther = runLipsync({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "lrik4p.align",
+                                            "--out", swapped, "--aligner", "sphinx", "--adapt", "--json"});
+        const double sphinxOtherFit = QJsonDocument::fromJson(sphinxOther.out).object().value("transcriptFit").toDouble();
+        QVERIFY2(sphinxOtherFit < kSphinxTranscriptFitThreshold && sphinxOtherFit < sphinxFit - 1,
+                 qPrintable(QString::number(sphinxOtherFit)));
+        QFile::remove(swapped);
+        QCOMPARE(runLipsync({"align", kDemo + "bbaf2n.mpg", "--transcript", kDemo + "lrik4p.align", "--out", swapped,
+                             "--aligner", "sphinx", "--adapt", "--strict"})
+                     .exitCode,
+                 1);
+        QVERIFY(!QFile::exists(swapped));
 
         // --no-boundary-correction: the shipped model's calibrated correction left unapplied (the
         // paper's aligner): the same words, some boundaries elsewhere.

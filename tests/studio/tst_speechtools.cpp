@@ -10,6 +10,7 @@
 
 #include "align/Aligner.h"
 #include "app/SequenceListModel.h"
+#include "context/ModelStore.h"
 #include "context/PlaybackController.h"
 #include "context/StudioContext.h"
 #include "document/ProjectDocument.h"
@@ -23,6 +24,7 @@
 #include <QIcon>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSet>
@@ -122,7 +124,7 @@ private slots:
     }
 
     // A transcript that is not the clip's words is marked in the sequence list once aligned (the
-    // aligner's transcriptFit below kTranscriptFitThreshold), with a tooltip that says why; the
+    // aligner's transcriptFit below its threshold), with a tooltip that says why; the
     // mark is part of the alignment's undo step, is saved with the project, and goes when the
     // clip's own words are aligned again.
     void misfitTranscriptIsMarked()
@@ -136,7 +138,8 @@ private slots:
         QVERIFY(doc->requestTranscriptChange(0, QStringLiteral("bin blue at f two now")));
         align();
         QVERIFY(doc->sequence(0).transcriptFit);
-        const double own = *doc->sequence(0).transcriptFit;
+        const double own = doc->sequence(0).transcriptFit->value;
+        QCOMPARE(doc->sequence(0).transcriptFit->threshold, kTranscriptFitThreshold); // the shipped aligner's
         QVERIFY2(own >= kTranscriptFitThreshold, qPrintable(QString::number(own)));
         QVERIFY(!marked());
         // Another demo clip's words do not.
@@ -147,7 +150,7 @@ private slots:
         align();
         QCOMPARE(m_context.undoStack()->index(), steps + 1); // tiers and mark: one step
         QVERIFY(doc->sequence(0).transcriptFit);
-        const double swapped = *doc->sequence(0).transcriptFit;
+        const double swapped = doc->sequence(0).transcriptFit->value;
         qInfo("transcript fit: own words %.2f, another clip's %.2f nats per frame", own, swapped);
         QVERIFY2(swapped < kTranscriptFitThreshold, qPrintable(QString::number(swapped)));
         QVERIFY(marked());
@@ -162,11 +165,38 @@ private slots:
         QCOMPARE(saved.sequences[0].transcriptFit, doc->sequence(0).transcriptFit);
         // Undo takes the alignment and its mark back together.
         m_context.undoStack()->undo();
-        QCOMPARE(*doc->sequence(0).transcriptFit, own);
+        QCOMPARE(doc->sequence(0).transcriptFit->value, own);
         QVERIFY(!marked());
         m_context.undoStack()->redo();
         QVERIFY(marked());
         // The right words aligned again: no mark.
+        QVERIFY(doc->requestTranscriptChange(0, QStringLiteral("bin blue at f two now")));
+        align();
+        QVERIFY(!marked());
+    }
+
+    // With the generic model adapted to the speaker (the default for a speaker other than the
+    // shipped model's) the mark comes from its own fit and threshold.
+    void misfitIsMarkedWithTheGenericAligner()
+    {
+        ProjectDocument *doc = m_context.document();
+        SequenceListModel model(doc);
+        const QModelIndex cell = model.index(0, SequenceListModel::TranscriptColumn);
+        auto marked = [&] { return !model.data(cell, Qt::DecorationRole).value<QIcon>().isNull(); };
+        const AlignerChoice before = m_context.modelStore()->alignerChoice();
+        m_context.modelStore()->setAlignerChoice(AlignerChoice{"sphinx", true});
+        doc->requestTranscriptChange(0, QStringLiteral("bin blue at f two now")); // false: already so
+        align();
+        QVERIFY(doc->sequence(0).transcriptFit);
+        QCOMPARE(doc->sequence(0).transcriptFit->threshold, kSphinxTranscriptFitThreshold);
+        QVERIFY(!marked());
+        // Words of a clip that shares none of this one's.
+        QVERIFY(doc->requestTranscriptChange(0, QStringLiteral("lay red in k four please")));
+        align();
+        QVERIFY(doc->sequence(0).transcriptFit && doc->sequence(0).transcriptFit->misfit());
+        QVERIFY(marked());
+        QVERIFY(model.data(cell, Qt::ToolTipRole).toString().contains(QLocale().toString(kSphinxTranscriptFitThreshold, 'f', 1)));
+        m_context.modelStore()->setAlignerChoice(before);
         QVERIFY(doc->requestTranscriptChange(0, QStringLiteral("bin blue at f two now")));
         align();
         QVERIFY(!marked());

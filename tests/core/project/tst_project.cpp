@@ -79,7 +79,7 @@ Project makeProject()
     bare.frameCount = 0;
     bare.transcript = "set blue at a one please";
     bare.transcriptProposed = true;
-    bare.transcriptFit = -3.25;
+    bare.transcriptFit = TranscriptFit{-3.25, kSphinxTranscriptFitThreshold};
     bare.transcriptConfidence = {0.9, 0.25, 1.0, 0.5, 0.0625, 0.75};
     p.sequences.push_back(bare);
 
@@ -189,7 +189,7 @@ private slots:
         QVERIFY(!QFileInfo(dir.filePath("project.json.bak")).exists());
         const QByteArray text = readBytes(dir.filePath("project.json"));
         QVERIFY(text.contains("\"format\": \"lipsync-project\""));
-        QVERIFY(text.contains("\"version\": 5"));
+        QVERIFY(text.contains("\"version\": 6"));
         QVERIFY(text.contains("\"features\": \"features/s1.csv\""));
 
         const Project loaded = Project::load(dir.path().toStdString());
@@ -203,9 +203,13 @@ private slots:
         QVERIFY(loaded.sequences[1].fitErrors.empty());
         QVERIFY(loaded.sequences[1].transcriptProposed && !loaded.sequences[0].transcriptProposed);
         QCOMPARE(text.count("transcriptProposed"), 1); // written only when true
-        QCOMPARE(loaded.sequences[1].transcriptFit, std::optional<double>(-3.25));
+        QVERIFY(loaded.sequences[1].transcriptFit);
+        QCOMPARE(loaded.sequences[1].transcriptFit->value, -3.25);
+        QCOMPARE(loaded.sequences[1].transcriptFit->threshold, kSphinxTranscriptFitThreshold);
+        QVERIFY(loaded.sequences[1].transcriptFit->misfit());
         QVERIFY(!loaded.sequences[0].transcriptFit);
-        QCOMPARE(text.count("transcriptFit"), 1); // written only when measured
+        QCOMPARE(text.count("\"transcriptFit\""), 1); // written only when measured
+        QCOMPARE(text.count("\"transcriptFitThreshold\""), 1);
         QCOMPARE(loaded.sequences[1].transcriptConfidence, original.sequences[1].transcriptConfidence);
         QCOMPARE(text.count("transcriptConfidence"), 1);
         QCOMPARE(loaded.models, original.models);
@@ -227,6 +231,7 @@ private slots:
         QVERIFY(differs([](Project &p) { p.sequences[0].landmarks[3].points[22].state = PointState::Placed; }));
         QVERIFY(differs([](Project &p) { p.sequences[1].transcriptProposed = false; }));
         QVERIFY(differs([](Project &p) { p.sequences[1].transcriptFit.reset(); }));
+        QVERIFY(differs([](Project &p) { p.sequences[1].transcriptFit->threshold = kTranscriptFitThreshold; }));
         QVERIFY(differs([](Project &p) { p.sequences[1].transcriptConfidence[4] = 0.125; }));
         QVERIFY(differs([](Project &p) { p.aligner = Project::kBuiltinAligner; }));
         // A model of the project's own aligner wins over what the project says.
@@ -325,7 +330,7 @@ private slots:
         row("wrong_format", "format", "is 'praat-textgrid', expected 'lipsync-project'");
         row("missing_version", "version", "missing");
         row("version_not_integer", "version", "must be an integer, found 1.5");
-        row("future_version", "version", "version 6 is newer than this build");
+        row("future_version", "version", "version 7 is newer than this build");
         row("version_zero", "version", "must be at least 1");
         row("name_not_string", "name", "must be a string, found an array");
         row("unknown_field", "sequences[1].framerate", "unknown field");
@@ -349,6 +354,9 @@ private slots:
         row("mouth_shape_unknown", "mouthShapes.X", "must be a mouth shape A to H");
         row("mouth_shape_out_of_range", "mouthShapes.D", "must be numbers from 0 to 1, found 1.5");
         row("transcript_fit_not_number", "sequences[0].transcriptFit", "must be a number (nats per frame), found a string");
+        row("transcript_fit_threshold_not_number", "sequences[0].transcriptFitThreshold",
+            "must be a number (nats per frame), found null");
+        row("transcript_fit_threshold_alone", "sequences[0].transcriptFitThreshold", "is given without a transcriptFit");
         row("unknown_tier", "sequences[0].tiers.syllables", "unknown field");
         row("interval_end_before_start", "sequences[0].tiers.words[1].end", "is before start");
         row("interval_overlap", "sequences[0].tiers.words[1].start", "overlaps the previous interval");
@@ -403,6 +411,22 @@ private slots:
             QVERIFY2(message.startsWith(manifest + ": " + field + ": "), qPrintable(message));
             QVERIFY2(message.contains(reason), qPrintable(message));
         }
+    }
+
+    // A fit written before aligners gave their thresholds (version 4) is our aligner's.
+    void transcriptFitWithoutThresholdIsOurs()
+    {
+        QTemporaryDir dir;
+        QFile fixture(QStringLiteral(LIPSYNC_TEST_DATA "/project/transcript_fit_not_number/project.json"));
+        QVERIFY(fixture.open(QIODevice::ReadOnly));
+        QByteArray text = fixture.readAll();
+        text.replace("\"transcriptFit\": \"low\"", "\"transcriptFit\": -2.5");
+        writeBytes(dir.filePath(QStringLiteral("project.json")), text);
+        const Project loaded = Project::load(dir.path().toStdString());
+        QVERIFY(loaded.sequences[0].transcriptFit);
+        QCOMPARE(loaded.sequences[0].transcriptFit->value, -2.5);
+        QCOMPARE(loaded.sequences[0].transcriptFit->threshold, kTranscriptFitThreshold);
+        QVERIFY(loaded.sequences[0].transcriptFit->misfit());
     }
 
     void featureErrorsNameTheFile()
@@ -604,7 +628,7 @@ private slots:
         // A landmark frame is one line, and keys come in reading order.
         const QByteArray text =
             ProjectManifest::serialize(ProjectManifest::toJson(makeProject(), "/tmp/x"));
-        QVERIFY(text.startsWith("{\n  \"format\": \"lipsync-project\",\n  \"version\": 5,\n"));
+        QVERIFY(text.startsWith("{\n  \"format\": \"lipsync-project\",\n  \"version\": 6,\n"));
         const qsizetype points = text.indexOf("\"points\": [[");
         QVERIFY(points > 0);
         QVERIFY(text.indexOf('\n', points) > text.indexOf("]]", points));

@@ -1,0 +1,33 @@
+#pragma once
+// How well a transcript fits its recording's sound, as the aligner that made the recording's tiers
+// measured it (AlignerOutput::transcriptFit, kept in Sequence::transcriptFit): the forced path's
+// log-likelihood per audio frame minus that of each frame's best-matching state on its own (a
+// free recognition without a grammar), <= 0. Speech of other words pulls it far down; where a
+// true transcript sits depends on the aligner's model, so each aligner gives the threshold it was
+// calibrated at (docs/performance.md, "Transcripts that do not match the sound").
+namespace lipsync {
+
+// The transcript fit below which a transcript is taken not to be what the recording says, for an
+// aligner of ours trained on the recording's speaker: chosen by cross-validation on GRID s1 with
+// other clips' transcripts swapped in (docs/performance.md, "Transcripts that do not match the
+// sound": 99.5 % of swaps below it, 1.25 % of true transcripts). With a model of another speaker
+// true transcripts fall below it too (-2.4 to -13 measured): such speakers are aligned with CMU
+// Sphinx's generic model, whose fit has its own threshold (kSphinxTranscriptFitThreshold).
+constexpr double kTranscriptFitThreshold = -2.2;
+// The same for CMU Sphinx's generic model adapted to the recording (`--aligner sphinx --adapt`,
+// the default for a speaker other than the shipped model's), chosen the same way on GRID s1
+// (thresholds -3.07 to -3.14 in the five folds: 1.25 % of true transcripts below, 71 % of GRID's
+// swaps, which share half their words or more; on GRID s4, never tuned on, no true transcript
+// and 86 % of swaps below).
+constexpr double kSphinxTranscriptFitThreshold = -3.1;
+
+struct TranscriptFit
+{
+    double value = 0.0;     // nats per audio frame
+    double threshold = 0.0; // the measuring aligner's: below it the words are likely not the recording's
+
+    bool misfit() const { return value < threshold; }
+    bool operator==(const TranscriptFit &) const = default;
+};
+
+} // namespace lipsync
