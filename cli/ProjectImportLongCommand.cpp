@@ -86,7 +86,7 @@ int runImportLong(const CommandLine &a)
         Project project = loadOrCreate(projectFolder);
         // A recording longer than CMU Sphinx aligns is cut with the shipped model, window by
         // window; its utterances can be aligned again with the generic model once cut.
-        const SpeechAligner aligner(a, projectFolder, false, MediaInfo::probe(media.toStdString()).audioDuration);
+        const SpeechAligner aligner(a, projectFolder, true, MediaInfo::probe(media.toStdString()).audioDuration);
         if (aligner.usesShippedForLong())
             std::fprintf(stderr,
                          "lipsync: %s is longer than CMU Sphinx aligns (%d min): cut with the shipped model of GRID's "
@@ -104,6 +104,11 @@ int runImportLong(const CommandLine &a)
             importLongRecording(project, media.toStdString(), transcript.words, a.value("transcript").toStdString(),
                                 aligner.aligner(), aligner.lexicon(), options, feedback);
         const size_t imported = r.sequences.size();
+        if (r.transcriptFit && r.transcriptFit->misfit())
+            std::fprintf(stderr,
+                         "lipsync: warning: %s: the transcript does not seem to be what the recording says (fit %.2f "
+                         "nats per frame, below %.2f): check the words before training on its utterances\n",
+                         qPrintable(a.value("transcript")), r.transcriptFit->value, r.transcriptFit->threshold);
         QJsonArray ids;
         for (Sequence &s : r.sequences) {
             ids.append(QString::fromStdString(s.id));
@@ -118,6 +123,9 @@ int runImportLong(const CommandLine &a)
                                   {QStringLiteral("duration"), r.duration},
                                   {QStringLiteral("utteranceSeconds"), r.spokenSeconds},
                                   {QStringLiteral("words"), r.words},
+                                  {QStringLiteral("transcriptFit"), r.transcriptFit ? QJsonValue(r.transcriptFit->value) : QJsonValue()},
+                                  {QStringLiteral("transcriptFitThreshold"),
+                                   r.transcriptFit ? QJsonValue(r.transcriptFit->threshold) : QJsonValue()},
                                   {QStringLiteral("sequences"), ids},
                                   {QStringLiteral("seconds"), seconds}});
         } else {

@@ -97,6 +97,7 @@ LongRecordingImportResult importLongRecording(const Project &project, const std:
 
     LongRecordingImportResult result;
     result.duration = aligned.duration;
+    result.transcriptFit = aligned.transcriptFit;
     std::vector<QString> written;
     try {
         Feedback part(feedback, kAligningShare, 1.0);
@@ -130,6 +131,7 @@ LongRecordingImportResult importLongRecording(const Project &project, const std:
             s.transcript = span.transcript;
             s.words = span.words;
             s.phones = span.phones;
+            s.transcriptFit = aligned.transcriptFit;
             for (const Interval &i : span.words.intervals)
                 result.words += PhoneSet::isSilence(i.label) ? 0 : 1;
             result.spokenSeconds += span.end - span.start;

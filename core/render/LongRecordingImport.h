@@ -12,6 +12,7 @@
 #include "project/UtteranceSplit.h"
 #include "tasks/Feedback.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@ struct LongRecordingImportResult
     double duration = 0.0;                // seconds of audio aligned
     double spokenSeconds = 0.0;           // of it inside the utterances
     int words = 0;
+    // How well the whole transcript fits the recording's sound, when the aligner measured it
+    // (AlignerChoice::transcriptFit); each sequence carries it too, its words being the
+    // transcript's.
+    std::optional<TranscriptFit> transcriptFit;
 };
 
 // The utterances of `mediaPath` as sequences for `project` (the caller adds them) with ids

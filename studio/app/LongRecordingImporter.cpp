@@ -128,6 +128,7 @@ Task *LongRecordingImporter::start(const QString &recordingPath, const QString &
             // A recording longer than CMU Sphinx aligns is cut with the shipped model, window by
             // window (the utterances can be aligned again afterwards).
             AlignerChoice chosen = choice;
+            chosen.transcriptFit = true; // marks the utterances when the words do not fit the sound
             imported->shippedForLong =
                 fallBackForLongRecording(chosen, MediaInfo::probe(recordingPath.toStdString()).audioDuration);
             const std::shared_ptr<const Aligner> aligner = aligners->get(chosen);

@@ -177,6 +177,42 @@ private slots:
         }
     }
 
+    // Asked for, the whole transcript's fit to the sound comes with the import and with each
+    // utterance (the studio marks them): the recording's own words fit, the same words in another
+    // order of its sentences do not.
+    void transcriptFitCarried()
+    {
+        QTemporaryDir dir;
+        const std::vector<float> samples = demoSound(4);
+        const QString wav = dir.filePath(QStringLiteral("talk.wav"));
+        writeWav(wav.toStdString(), samples, 0, samples.size(), 16000);
+        AlignerChoice choice{kShippedModel, false};
+        choice.transcriptFit = true;
+        const std::unique_ptr<Aligner> aligner = createAligner(choice);
+        const Lexicon lexicon(&PronunciationDictionary::cmu());
+        const LongRecordingImportResult own = importLongRecording(
+            emptyProject(dir.filePath(QStringLiteral("own"))), wav.toStdString(), demoWords(4), {}, *aligner, lexicon,
+            sentenceOptions());
+        QVERIFY(own.transcriptFit && !own.transcriptFit->misfit());
+        QCOMPARE(own.transcriptFit->threshold, kTranscriptFitThreshold);
+        for (const Sequence &s : own.sequences)
+            QCOMPARE(s.transcriptFit, own.transcriptFit);
+        std::vector<std::string> shuffled;
+        for (int c : {2, 0, 3, 1})
+            for (const std::string &w : readTranscript(kDemo + kClips[c] + ".align").words)
+                shuffled.push_back(w);
+        const LongRecordingImportResult other = importLongRecording(
+            emptyProject(dir.filePath(QStringLiteral("other"))), wav.toStdString(), shuffled, {}, *aligner, lexicon,
+            sentenceOptions());
+        QVERIFY(other.transcriptFit && other.transcriptFit->misfit());
+        QVERIFY(!other.sequences.empty() && other.sequences.front().transcriptFit == other.transcriptFit);
+        // Not asked for: none.
+        const std::unique_ptr<Aligner> unmeasured = createAligner(AlignerChoice{kShippedModel, false});
+        QVERIFY(!importLongRecording(emptyProject(dir.filePath(QStringLiteral("plain"))), wav.toStdString(),
+                                     demoWords(4), {}, *unmeasured, lexicon, sentenceOptions())
+                     .transcriptFit);
+    }
+
     void cancelLeavesNothing()
     {
         QTemporaryDir dir;
