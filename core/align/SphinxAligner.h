@@ -76,7 +76,8 @@ public:
     // half second of audio (throws Canceled). Throws lipsync::Error for an empty transcript or
     // audio and when no path through the transcript reaches the end of the audio. With
     // `transcriptFit`, stores there the fit of the words to the sound (AlignerOutput::transcriptFit:
-    // the path's senone against the best of all senones in each frame, nats per 10 ms frame).
+    // the path's senone against the best of all senones in each frame of speech, nats per 10 ms
+    // frame; none when the path holds no speech).
     AlignmentResult align(const std::vector<float> &samples, const std::vector<std::string> &words,
                           const std::vector<std::vector<Pronunciation>> &pronunciations,
                           double audioDuration = 0.0, Feedback &feedback = Feedback::none(),

@@ -79,7 +79,7 @@ Project makeProject()
     bare.frameCount = 0;
     bare.transcript = "set blue at a one please";
     bare.transcriptProposed = true;
-    bare.transcriptFit = TranscriptFit{-3.25, kSphinxTranscriptFitThreshold};
+    bare.transcriptFit = TranscriptFit{-4.75, kSphinxTranscriptFitThreshold};
     bare.transcriptConfidence = {0.9, 0.25, 1.0, 0.5, 0.0625, 0.75};
     p.sequences.push_back(bare);
 
@@ -204,7 +204,7 @@ private slots:
         QVERIFY(loaded.sequences[1].transcriptProposed && !loaded.sequences[0].transcriptProposed);
         QCOMPARE(text.count("transcriptProposed"), 1); // written only when true
         QVERIFY(loaded.sequences[1].transcriptFit);
-        QCOMPARE(loaded.sequences[1].transcriptFit->value, -3.25);
+        QCOMPARE(loaded.sequences[1].transcriptFit->value, -4.75);
         QCOMPARE(loaded.sequences[1].transcriptFit->threshold, kSphinxTranscriptFitThreshold);
         QVERIFY(loaded.sequences[1].transcriptFit->misfit());
         QVERIFY(!loaded.sequences[0].transcriptFit);
