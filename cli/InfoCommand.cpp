@@ -34,8 +34,8 @@ QString number(double value, int decimals)
     return QString::number(value, 'f', decimals);
 }
 
-// 25 -> "25", 29.97002997 -> "29.97"
-// Seven significant digits: NTSC's 30000/1001 (29.97003) apart from a container's rounded 29.97.
+// Seven significant digits: 25 -> "25", NTSC's 30000/1001 -> "29.97003", told apart from a
+// container's rounded 29.97.
 QString rate(double fps)
 {
     return QString::number(fps, 'g', 7);
@@ -292,8 +292,9 @@ int infoProject(const QString &path, bool json)
     rows << qMakePair(QStringLiteral("frames"), QString::number(totalFrames));
     rows << qMakePair(QStringLiteral("fps"),
                       commonRate > 0 ? rate(commonRate)
-                                     : (commonRate == 0 ? QStringLiteral("mixed, %1 to %2").arg(rate(lowestRate), rate(highestRate))
-                                                        : QStringLiteral("-")));
+                                     : (commonRate == 0
+                                            ? QStringLiteral("mixed, %1 to %2").arg(rate(lowestRate), rate(highestRate))
+                                            : QStringLiteral("-")));
     rows << qMakePair(QStringLiteral("duration"), number(totalDuration, 3) + QStringLiteral(" s"));
     printRows(rows);
     if (project.sequences.empty())

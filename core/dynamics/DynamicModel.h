@@ -56,11 +56,12 @@ public:
     // shape, values that are not finite, or a kind without per-label means.
     virtual void shiftMeans(const Eigen::MatrixXd &shift);
 
+    // The share by which training sequences' frame rates may differ and still be one rate.
+    static constexpr double kFrameRateTolerance = 0.01;
     // Validates (validateSequences) and fits the parameters. Reports progress and the objective
     // per iteration, polls cancel (throws Canceled; the model is then left unchanged). Records the
     // sequences' frame rate; sequences whose rates differ by more than kFrameRateTolerance are an
     // Error (the dynamics are per frame).
-    static constexpr double kFrameRateTolerance = 0.01;
     void train(const std::vector<LabelledSequence> &sequences, Feedback &feedback);
     // Frames per second of the features it was trained on, the rate it generates at (0: not
     // known, e.g. model files that record none).

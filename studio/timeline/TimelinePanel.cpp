@@ -600,10 +600,10 @@ void TimelinePanel::applyAlignment(const QString &title, std::vector<AlignOutcom
         m_context->showStatus(tr("%1: the alignment came out as it was; nothing changed.").arg(title),
                                            8000);
     // A transcript that does not fit its sound (TranscriptFit): said now, marked in
-    // the sequence list until the sequence is aligned again. When none fits, the aligner's
-    // model is more likely not the speaker's than every transcript wrong.
+    // the sequence list until the sequence is aligned again. When none fits a model of ours, it is
+    // more likely not the speaker's than every transcript wrong (the generic one adapts to them).
     if (!misfits.isEmpty() && m_context) {
-        if (ok >= 3 && misfits.size() == ok)
+        if (ok >= 3 && misfits.size() == ok && !m_context->modelStore()->alignerChoice().isSphinx())
             m_context->showStatus(tr("No transcript fits its sound by this aligner: its model probably does not know "
                                      "this speaker. Choose Model ▸ Generic US English and Adapt to Speaker, or "
                                      "train the project's own aligner."),
