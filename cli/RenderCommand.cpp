@@ -69,12 +69,19 @@ int runRender(const CommandLine &args)
     // The shared aligner (the same choices as `lipsync align`), then generation from its phones.
     QElapsedTimer timer;
     timer.start();
-    const SpeechAligner aligner(args);
+    const SpeechAligner aligner(args, true);
     const Transcript transcript = readTranscript(request.transcriptPath);
     // The sound decoded once, at its own rate, for the video; the aligner resamples it.
     const RecordingSound sound(request.mediaPath);
     sound.own();
     const AlignerOutput aligned = aligner.align(sound, transcript.words, args.value("transcript"));
+    // Words that are not the sound's give lips that do not match it: said, the render still made.
+    if (aligned.transcriptFit && aligned.transcriptFit->misfit())
+        std::fprintf(stderr,
+                     "lipsync: warning: %s: the transcript does not seem to be what the recording says (fit %.2f "
+                     "nats per frame, below %.2f): the lips will not match the sound\n",
+                     qPrintable(args.value("transcript")), aligned.transcriptFit->value,
+                     aligned.transcriptFit->threshold);
     Feedback feedback;
     SpeechVideoReport report;
     report.generated = generateFromAlignment(request, aligned, sound, feedback);

@@ -33,6 +33,7 @@ namespace {
 const QString kDemo = QStringLiteral(LIPSYNC_SOURCE_DIR "/resources/demo");
 const QString kClip = kDemo + "/media/bbaf2n.mpg";
 const QString kTranscript = kDemo + "/media/bbaf2n.align";
+const QString kOtherTranscript = kDemo + "/media/lrik4p.align"; // shares none of bbaf2n's words
 const QString kAam = kDemo + "/aam/demo.aam";
 
 } // namespace
@@ -172,11 +173,19 @@ private slots:
         QStringList args = renderArgs(kClip, kTranscript, QString());
         args.removeLast();
         args.removeLast(); // no --out
-        const Run r = runLipsync(args << "--png-dir" << folder << "--json");
+        const Run r = runLipsync(QStringList(args) << "--png-dir" << folder << "--json");
         QVERIFY2(r.exitCode == 0, r.err.constData());
         const int frames = parseJsonObject(r.out).value("frames").toInt();
         QCOMPARE(frames, 75); // every generated frame (an MP4 is fitted to the sound instead)
         QCOMPARE(QDir(folder).entryList({"*.png"}, QDir::Files).size(), frames);
+        QVERIFY2(!r.err.contains("warning"), r.err.constData());
+        // Another clip's words: rendered, with a warning naming the transcript.
+        args[args.indexOf(kTranscript)] = kOtherTranscript;
+        const Run other = runLipsync(args << "--png-dir" << m_dir.filePath("other-frames"));
+        QVERIFY2(other.exitCode == 0, other.err.constData());
+        QVERIFY2(other.err.contains("warning") && other.err.contains("lrik4p.align")
+                     && other.err.contains("does not seem to be what the recording says"),
+                 other.err.constData());
     }
 
     // By default the recording keeps its own face: the mouth and jaw move, the eyes and everything
