@@ -74,15 +74,12 @@ QJsonObject alignOne(const cli::SpeechAligner &aligner, const QString &media, co
     std::optional<TranscriptFit> fit = aligned.transcriptFit;
     if (fit && check.minimum)
         fit->threshold = *check.minimum;
-    if (fit && fit->misfit()) {
+    if (transcriptMisfit(fit)) {
         const std::string file = (transcriptPath.isEmpty() ? media : transcriptPath).toStdString();
-        const std::string why = "the transcript does not seem to be what the recording says (fit "
-                                + QString::number(fit->value, 'f', 2).toStdString() + " nats per frame, below "
-                                + QString::number(fit->threshold, 'f', 2).toStdString() + ")";
         if (check.strict)
-            throw Error(why, file);
+            throw Error(fit->reason(), file);
         std::fprintf(stderr, "lipsync: warning: %s: %s; check the words (--strict refuses it)\n", file.c_str(),
-                     why.c_str());
+                     fit->reason().c_str());
     }
     // Per-video-frame phone labels (docs/models.md §0 voting) when the media has a readable video
     // stream (the sound of a damaged video may still align).

@@ -104,11 +104,9 @@ int runImportLong(const CommandLine &a)
             importLongRecording(project, media.toStdString(), transcript.words, a.value("transcript").toStdString(),
                                 aligner.aligner(), aligner.lexicon(), options, feedback);
         const size_t imported = r.sequences.size();
-        if (r.transcriptFit && r.transcriptFit->misfit())
-            std::fprintf(stderr,
-                         "lipsync: warning: %s: the transcript does not seem to be what the recording says (fit %.2f "
-                         "nats per frame, below %.2f): check the words before training on its utterances\n",
-                         qPrintable(a.value("transcript")), r.transcriptFit->value, r.transcriptFit->threshold);
+        if (transcriptMisfit(r.transcriptFit))
+            std::fprintf(stderr, "lipsync: warning: %s: %s: check the words before training on its utterances\n",
+                         qPrintable(a.value("transcript")), r.transcriptFit->reason().c_str());
         QJsonArray ids;
         for (Sequence &s : r.sequences) {
             ids.append(QString::fromStdString(s.id));

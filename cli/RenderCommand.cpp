@@ -76,12 +76,9 @@ int runRender(const CommandLine &args)
     sound.own();
     const AlignerOutput aligned = aligner.align(sound, transcript.words, args.value("transcript"));
     // Words that are not the sound's give lips that do not match it: said, the render still made.
-    if (aligned.transcriptFit && aligned.transcriptFit->misfit())
-        std::fprintf(stderr,
-                     "lipsync: warning: %s: the transcript does not seem to be what the recording says (fit %.2f "
-                     "nats per frame, below %.2f): the lips will not match the sound\n",
-                     qPrintable(args.value("transcript")), aligned.transcriptFit->value,
-                     aligned.transcriptFit->threshold);
+    if (transcriptMisfit(aligned.transcriptFit))
+        std::fprintf(stderr, "lipsync: warning: %s: %s: the lips will not match the sound\n",
+                     qPrintable(args.value("transcript")), aligned.transcriptFit->reason().c_str());
     Feedback feedback;
     SpeechVideoReport report;
     report.generated = generateFromAlignment(request, aligned, sound, feedback);

@@ -5,6 +5,10 @@
 // free recognition without a grammar), <= 0; CMU Sphinx's over the frames of speech only. Speech of other words pulls it far down; where a
 // true transcript sits depends on the aligner's model, so each aligner gives the threshold it was
 // calibrated at (docs/performance.md, "Transcripts that do not match the sound").
+#include <cstdio>
+#include <optional>
+#include <string>
+
 namespace lipsync {
 
 // The transcript fit below which a transcript is taken not to be what the recording says, for an
@@ -27,7 +31,23 @@ struct TranscriptFit
     double threshold = 0.0; // the measuring aligner's: below it the words are likely not the recording's
 
     bool misfit() const { return value < threshold; }
+    // What a misfit means, with both figures, for messages naming the transcript.
+    std::string reason() const
+    {
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      "the transcript does not seem to be what the recording says (fit %.2f nats per frame, "
+                      "below %.2f)",
+                      value, threshold);
+        return text;
+    }
     bool operator==(const TranscriptFit &) const = default;
 };
+
+// A measured fit below its threshold: the words are likely not the recording's.
+inline bool transcriptMisfit(const std::optional<TranscriptFit> &fit)
+{
+    return fit && fit->misfit();
+}
 
 } // namespace lipsync

@@ -71,7 +71,7 @@ void SequenceDetailsView::showSequence(const Sequence &sequence, const QString &
         m_audio->setText(tr("none (%1)").arg(media.audioError));
     const std::size_t words = Lexicon::splitWords(sequence.transcript).size();
     const bool proposed = words > 0 && sequence.transcriptProposed;
-    const bool misfit = words > 0 && sequence.transcriptFit && sequence.transcriptFit->misfit();
+    const bool misfit = words > 0 && transcriptMisfit(sequence.transcriptFit);
     m_transcript->setText(words == 0 ? tr("none")
                           : misfit   ? tr("%1 words; does not fit the sound").arg(words)
                           : proposed ? tr("proposed, not checked")

@@ -60,7 +60,7 @@ QVariant SequenceListModel::data(const QModelIndex &index, int role) const
     const bool proposed = index.column() == TranscriptColumn && s.transcriptProposed;
     // A transcript its alignment found not to fit the sound (Sequence::transcriptFit) is marked
     // until the sequence is aligned again.
-    const bool misfit = index.column() == TranscriptColumn && s.transcriptFit && s.transcriptFit->misfit();
+    const bool misfit = index.column() == TranscriptColumn && transcriptMisfit(s.transcriptFit);
     if (role == Qt::DecorationRole && misfit)
         return QApplication::style()->standardIcon(QStyle::SP_MessageBoxWarning);
     if (role == Qt::FontRole && proposed) {

@@ -591,7 +591,7 @@ void TimelinePanel::applyAlignment(const QString &title, std::vector<AlignOutcom
             || QString::fromStdString(m_document->sequence(row).id) != o.sequenceId)
             continue;
         changed += m_document->requestAlignedTiers(row, o.tiers, title) ? 1 : 0;
-        if (o.tiers.transcriptFit && o.tiers.transcriptFit->misfit())
+        if (transcriptMisfit(o.tiers.transcriptFit))
             misfits << o.sequenceId;
     }
     if (ok > 1)
