@@ -11,7 +11,7 @@ std::vector<CommandOption> Compositing::options()
                             "its lower face moved to the generated shape)")},
             {QStringLiteral("synthesize-skin"), {},
              QStringLiteral("paste the AAM's synthesis of the lower face (skin included) instead of moving the "
-                            "recording's own; only the inside of the mouth is synthesised by default")},
+                            "recording's own")},
             {QStringLiteral("no-colour-match"), {},
              QStringLiteral("keep the model's mean colour instead of matching the frame's lighting")},
             {QStringLiteral("no-detail"), {},
@@ -20,6 +20,9 @@ std::vector<CommandOption> Compositing::options()
             {QStringLiteral("drawn-closures"), {},
              QStringLiteral("draw lips closed where the recording's are open with the AAM's synthesis, instead of "
                             "the person's own closed lips from another moment of the video")},
+            {QStringLiteral("drawn-insides"), {},
+             QStringLiteral("draw the inside of a mouth opened wider than recorded with the AAM's synthesis, instead "
+                            "of the person's own open mouth from another moment of the video")},
             {QStringLiteral("no-lip-closure"), {},
              QStringLiteral("draw the model's trajectory as generated, without closing the lips on /p b m/")}};
 }
@@ -32,6 +35,7 @@ CompositeOptions Compositing::from(const CommandLine &args)
     options.matchColour = !args.isSet(QStringLiteral("no-colour-match"));
     options.detail = !args.isSet(QStringLiteral("no-detail"));
     options.recordedClosures = !args.isSet(QStringLiteral("drawn-closures"));
+    options.recordedInsides = !args.isSet(QStringLiteral("drawn-insides"));
     return options;
 }
 

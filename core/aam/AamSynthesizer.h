@@ -50,8 +50,12 @@ struct CompositeOptions
     bool synthesizeSkin = false;
     // With the recording's own lower face: lips closed where the recording's are open are the
     // person's own closed lips from another moment of the background video
-    // (render/ClosedLipExemplars), when it has any; otherwise, and when false, the AAM's synthesis.
+    // (render/MouthExemplars), when it has any; otherwise, and when false, the AAM's synthesis.
     bool recordedClosures = true;
+    // With the recording's own lower face: the inside of a mouth opened wider than recorded is
+    // the person's own open mouth from another moment of the background video, of about the
+    // generated opening (render/MouthExemplars); otherwise, and when false, the AAM's synthesis.
+    bool recordedInsides = true;
 
     // The paper's rendering (docs/models.md §7): the AAM's synthesis alone, no colour matching
     // and no exemplar detail.
@@ -61,6 +65,7 @@ struct CompositeOptions
         o.matchColour = false;
         o.detail = false;
         o.recordedClosures = false;
+        o.recordedInsides = false;
         return o;
     }
 

@@ -109,7 +109,7 @@ FaceRenderer::FaceRenderer(const AamModel &aam, const std::string &videoPath, Fe
             m_occluded[size_t(t)] = true;
     std::vector<bool> usable(m_occluded.size());
     std::transform(m_occluded.begin(), m_occluded.end(), usable.begin(), [](bool o) { return !o; });
-    m_closedLips = ClosedLipExemplars(*m_video, tracked.shapes, usable);
+    m_mouths = MouthExemplars(*m_video, tracked.shapes, usable);
 }
 
 std::vector<bool> FaceRenderer::occludedFrames(const Eigen::VectorXd &errors)
@@ -227,12 +227,21 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
     if (box.empty())
         return;
     cv::Mat synthesised = frame.clone();
-    // Closed lips: the person's own from another moment of the video, where it has them.
-    const int exemplar = closing && options.recordedClosures && m_video
-                             ? m_closedLips.choose(m_video->timestamp(sourceFrame(index)))
-                             : -1;
+    // Closed lips, or the inside of the mouth: the person's own from another moment of the video,
+    // where it has them.
+    int exemplar = -1;
+    if (m_video && (closing ? options.recordedClosures : options.recordedInsides)) {
+        const double time = m_video->timestamp(sourceFrame(index));
+        exemplar = closing ? m_mouths.chooseClosed(time)
+                           : m_mouths.chooseOpen(time, MouthExemplars::openingShare(generated));
+    }
+    // The person's own open mouth is drawn with its lips, moved onto the generated ones, around
+    // it: what its colour is matched on.
+    const bool ownInside = exemplar >= 0 && !closing;
+    if (ownInside)
+        box = (box | cv::boundingRect(LowerFaceWarp::outerLips(generated, 0.0))) & cv::Rect(cv::Point(0, 0), m_size);
     cv::Mat patch = synthesised(box);
-    if (exemplar < 0 || !m_closedLips.draw(exemplar, generated, box, patch)) {
+    if (exemplar < 0 || !m_mouths.draw(exemplar, generated, box, patch)) {
         CompositeOptions whole = options;
         whole.region = FaceRegion::Full;
         m_synthesizer.composite(features, pose(index), synthesised, whole);
@@ -240,16 +249,26 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
     // The synthesis's colour matched to the frame's where they meet: the mean difference over
     // the feathered band (alpha between 0.02 and 0.5: the edge of what is fully drawn, all of a
     // faint blend), added to what is drawn (the face-wide colour matching sees the face's
-    // outline, not the lips).
+    // outline, not the lips). For the person's own open mouth, over its lips instead, against the
+    // frame's moved lips (at the inside's edge its dark inside would meet the frame's lips).
     double shift[3] = {0, 0, 0};
     if (options.matchColour) {
+        cv::Mat lips;
+        if (ownInside) {
+            lips = cv::Mat(m_size, CV_8U, cv::Scalar(0));
+            std::vector<cv::Point> outline;
+            for (const cv::Point2f &p : LowerFaceWarp::outerLips(generated, 0.0))
+                outline.emplace_back(int(std::lround(p.x)), int(std::lround(p.y)));
+            cv::fillPoly(lips, std::vector<std::vector<cv::Point>>{outline}, cv::Scalar(255));
+        }
         double sum[3] = {0, 0, 0};
         long count = 0;
         for (int y = box.y; y < box.y + box.height; ++y) {
             const float *a = alpha.ptr<float>(y);
+            const uchar *onLips = ownInside ? lips.ptr<uchar>(y) : nullptr;
             const uchar *out = frame.ptr<uchar>(y), *in = synthesised.ptr<uchar>(y);
             for (int x = box.x; x < box.x + box.width; ++x)
-                if (a[x] > 0.02f && a[x] < 0.5f) {
+                if (onLips ? onLips[x] && a[x] < 0.02f : a[x] > 0.02f && a[x] < 0.5f) {
                     for (int ch = 0; ch < 3; ++ch)
                         sum[ch] += double(out[3 * x + ch]) - double(in[3 * x + ch]);
                     ++count;

@@ -2,10 +2,12 @@
 // Rendering AAM parameters (real or generated) as video frames, at the pose of the face in a
 // background frame. By default the recording keeps its own face: its lower face is moved from the
 // shape tracked in the frame to the shape the parameters give (LowerFaceWarp, a thin-plate
-// spline), and only the inside of a mouth opened wider than recorded is synthesised from the AAM
-// (shape + texture + exemplar detail, AamSynthesizer), blended into the lips with a feathered edge.
-// Lips asked to close where the recording's are open are the person's own closed lips from another
-// moment of the video (ClosedLipExemplars; CompositeOptions::recordedClosures).
+// spline), and only the inside of a mouth opened wider than recorded is drawn: the person's own
+// open mouth from another moment of the video (MouthExemplars;
+// CompositeOptions::recordedInsides) or, without one, from the AAM (shape + texture + exemplar
+// detail, AamSynthesizer), blended into the lips with a feathered edge. Lips asked to close where
+// the recording's are open are the person's own closed lips from another moment of the video
+// (MouthExemplars; CompositeOptions::recordedClosures).
 // CompositeOptions::synthesizeSkin pastes the AAM's whole lower-face synthesis instead, and
 // FaceRegion::Full the whole modelled face, colour-matched to the frame along the seam.
 //
@@ -21,7 +23,7 @@
 #include "aam/AamModel.h"
 #include "aam/AamSynthesizer.h"
 #include "render/BackgroundRetiming.h"
-#include "render/ClosedLipExemplars.h"
+#include "render/MouthExemplars.h"
 
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
@@ -99,8 +101,8 @@ public:
     // How much of each pixel renderInto() replaces with synthesis for these features (CV_32F,
     // 0..1; what the warp moves is the recording's own and counts 0).
     cv::Mat synthesisedWeight(int index, const Eigen::VectorXd &features) const;
-    // The video's own closed lips the renderer draws closures with (empty without a video).
-    const ClosedLipExemplars &closedLips() const { return m_closedLips; }
+    // The video's own mouths the renderer draws closures and insides with (empty without a video).
+    const MouthExemplars &mouths() const { return m_mouths; }
     // The AAM's synthesis the renderer draws with (its shapes and textures of parameters).
     const AamSynthesizer &synthesizer() const { return m_synthesizer; }
     // The 23 points of the face tracked in frame `index`, in its pixels (the mean shape at the
@@ -131,7 +133,7 @@ private:
     std::vector<Similarity> m_poses;   // one per video frame, or one for the neutral frame
     Eigen::MatrixXd m_tracked;
     std::vector<bool> m_occluded;      // per video frame (occluded())
-    ClosedLipExemplars m_closedLips;   // the video's own closed lips
+    MouthExemplars m_mouths;           // the video's own closed and open mouths
     CompositeOptions m_composite;
     BackgroundRetiming m_retiming;     // empty: frame i is the video's frame i
 };

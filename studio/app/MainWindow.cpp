@@ -179,19 +179,24 @@ void MainWindow::addGeneratedFaceMenu(QMenu *view)
     closures->setObjectName(QStringLiteral("recordedClosuresAction"));
     closures->setToolTip(tr("Lips closed where the recording's are open are the person's own closed lips from another "
                             "moment of the video; otherwise the AAM draws them"));
+    QAction *insides = face->addAction(tr("&Open Mouths from the Footage"));
+    insides->setObjectName(QStringLiteral("recordedInsidesAction"));
+    insides->setToolTip(tr("The inside of a mouth opened wider than recorded (teeth, tongue) is the person's own "
+                           "open mouth from another moment of the video; otherwise the AAM draws it"));
     const CompositeOptions &current = m_context->compositeOptions();
     for (auto [action, on] : {std::pair{skin, current.synthesizeSkin}, std::pair{whole, current.region == FaceRegion::Full},
                               std::pair{detail, current.detail}, std::pair{colour, current.matchColour},
-                              std::pair{closures, current.recordedClosures}}) {
+                              std::pair{closures, current.recordedClosures}, std::pair{insides, current.recordedInsides}}) {
         action->setCheckable(true);
         action->setChecked(on);
-        connect(action, &QAction::toggled, this, [this, skin, whole, detail, colour, closures] {
+        connect(action, &QAction::toggled, this, [this, skin, whole, detail, colour, closures, insides] {
             CompositeOptions options;
             options.synthesizeSkin = skin->isChecked();
             options.region = whole->isChecked() ? FaceRegion::Full : FaceRegion::Lower;
             options.detail = detail->isChecked();
             options.matchColour = colour->isChecked();
             options.recordedClosures = closures->isChecked();
+            options.recordedInsides = insides->isChecked();
             m_context->setCompositeOptions(options);
         });
     }

@@ -325,17 +325,28 @@ private slots:
             }
             return images;
         };
+        QAction *insides = m_window->findChild<QAction *>(QStringLiteral("recordedInsidesAction"));
+        QVERIFY(insides && insides->isCheckable() && insides->isChecked());
+        QVERIFY(m_window->context()->compositeOptions().recordedInsides);
+        // ... and Open Mouths from the Footage (on by default) does the same for the inside of
+        // mouths opened wider than recorded. Each turned off changes some frames, and only its
+        // own option; turned on again, the frames are as they were.
         const std::vector<QImage> own = pictures();
-        footage->trigger();
-        QVERIFY(!m_window->context()->compositeOptions().recordedClosures);
-        const std::vector<QImage> drawn = pictures();
-        int differing = 0;
-        for (size_t i = 0; i < own.size(); ++i)
-            differing += own[i] != drawn[i];
-        QVERIFY2(differing > 0, "no closure was drawn from the footage");
-        footage->trigger();
-        QVERIFY(m_window->context()->compositeOptions().recordedClosures);
-        QVERIFY(pictures() == own);
+        auto changesFrames = [&](QAction *action, bool CompositeOptions::*option, bool CompositeOptions::*other) {
+            action->trigger();
+            const CompositeOptions off = m_window->context()->compositeOptions();
+            const std::vector<QImage> drawn = pictures();
+            int differing = 0;
+            for (size_t i = 0; i < own.size(); ++i)
+                differing += own[i] != drawn[i];
+            action->trigger();
+            return !(off.*option) && off.*other && differing > 0 && m_window->context()->compositeOptions().*option
+                   && pictures() == own;
+        };
+        QVERIFY2(changesFrames(footage, &CompositeOptions::recordedClosures, &CompositeOptions::recordedInsides),
+                 "no closure was drawn from the footage");
+        QVERIFY2(changesFrames(insides, &CompositeOptions::recordedInsides, &CompositeOptions::recordedClosures),
+                 "no inside was drawn from the footage");
     }
 
     void frameStepAndScrubMoveTheSharedCursor()

@@ -6,13 +6,14 @@
 // (the warp fades to nothing there), and the eyes are the recording's. And the mouth goes where
 // it is asked: an open mouth asked to close is closed in the render, as dlib's landmarker reads it
 // (at HD scale the spline's system must be solved well, or nothing moves), with his own closed
-// lips from another moment of the clip; and nothing flickers from frame to frame.
+// lips from another moment of the clip, and a mouth opened wider shows his own teeth; and nothing
+// flickers from frame to frame.
 #include "aam/AamBuilder.h"
 #include "aam/FaceDetector.h"
 #include "aam/LandmarkScheme.h"
 #include "io/VideoReader.h"
 #include "render/BilabialClosure.h"
-#include "render/ClosedLipExemplars.h"
+#include "render/MouthExemplars.h"
 #include "render/FaceRenderer.h"
 #include "render/LowerFaceWarp.h"
 #include "tasks/Feedback.h"
@@ -27,6 +28,49 @@ using namespace lipsync;
 
 namespace {
 const std::string kClip = LIPSYNC_SOURCE_DIR "/tests/data/media/hd/obama_weekly_address_library.mp4";
+
+// The mean colour (CIELAB, 8-bit) and texture (the Laplacian's spread) of frames within an outline.
+struct Look
+{
+    cv::Vec3d lab{0, 0, 0};
+    double sharpness = 0;
+    int count = 0;
+    void add(const cv::Mat &frame, const std::vector<cv::Point2f> &within)
+    {
+        std::vector<cv::Point> outline;
+        for (const cv::Point2f &p : within)
+            outline.emplace_back(int(std::lround(p.x)), int(std::lround(p.y)));
+        cv::Mat mask(frame.size(), CV_8U, cv::Scalar(0));
+        cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{outline}, cv::Scalar(255));
+        cv::erode(mask, mask, cv::Mat(), cv::Point(-1, -1), 2); // off the outline's edge
+        cv::Mat labImage, grey, laplacian;
+        cv::cvtColor(frame, labImage, cv::COLOR_BGR2Lab);
+        cv::cvtColor(frame, grey, cv::COLOR_BGR2GRAY);
+        cv::Laplacian(grey, laplacian, CV_64F);
+        const cv::Scalar m = cv::mean(labImage, mask);
+        cv::Scalar mean, sd;
+        cv::meanStdDev(laplacian, mean, sd, mask);
+        lab += cv::Vec3d(m[0], m[1], m[2]);
+        sharpness += sd[0];
+        ++count;
+    }
+    cv::Vec3d meanLab() const { return lab / std::max(1, count); }
+    double meanSharpness() const { return sharpness / std::max(1, count); }
+};
+
+// Logs the looks of what the recording shows, his own mouths drawn in and the AAM's; returns the
+// colour distance of his own to the recording's.
+double compare(const char *what, const Look &recorded, const Look &own, const Look &drawn)
+{
+    const double ownDistance = cv::norm(own.meanLab() - recorded.meanLab());
+    const double drawnDistance = cv::norm(drawn.meanLab() - recorded.meanLab());
+    qInfo("%s, CIELAB (8-bit) and Laplacian s.d.: recorded %.1f %.1f %.1f, %.1f (%d frames); his own drawn in %.1f "
+          "%.1f %.1f, %.1f (%d frames, %.1f from the recorded); the AAM's %.1f %.1f %.1f, %.1f (%.1f from the recorded)",
+          what, recorded.meanLab()[0], recorded.meanLab()[1], recorded.meanLab()[2], recorded.meanSharpness(),
+          recorded.count, own.meanLab()[0], own.meanLab()[1], own.meanLab()[2], own.meanSharpness(), own.count,
+          ownDistance, drawn.meanLab()[0], drawn.meanLab()[1], drawn.meanLab()[2], drawn.meanSharpness(), drawnDistance);
+    return ownDistance;
+}
 } // namespace
 
 class TestHdRender : public QObject
@@ -225,67 +269,78 @@ private slots:
         Feedback feedback;
         FaceRenderer renderer(m_aam, kClip, feedback);
         const BilabialClosure closure(m_aam);
-        struct Look
-        {
-            cv::Vec3d lab{0, 0, 0};
-            double sharpness = 0;
-            int count = 0;
-            void add(const cv::Mat &frame, const Eigen::VectorXd &shape)
-            {
-                std::vector<cv::Point> outline;
-                for (const cv::Point2f &p : LowerFaceWarp::outerLips(shape, 0.0))
-                    outline.emplace_back(int(std::lround(p.x)), int(std::lround(p.y)));
-                cv::Mat mask(frame.size(), CV_8U, cv::Scalar(0));
-                cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{outline}, cv::Scalar(255));
-                cv::erode(mask, mask, cv::Mat(), cv::Point(-1, -1), 2); // inside the lips, off their edge
-                cv::Mat labImage, grey, laplacian;
-                cv::cvtColor(frame, labImage, cv::COLOR_BGR2Lab);
-                cv::cvtColor(frame, grey, cv::COLOR_BGR2GRAY);
-                cv::Laplacian(grey, laplacian, CV_64F);
-                const cv::Scalar m = cv::mean(labImage, mask);
-                cv::Scalar mean, sd;
-                cv::meanStdDev(laplacian, mean, sd, mask);
-                lab += cv::Vec3d(m[0], m[1], m[2]);
-                sharpness += sd[0];
-                ++count;
-            }
-            cv::Vec3d meanLab() const { return lab / std::max(1, count); }
-            double meanSharpness() const { return sharpness / std::max(1, count); }
-        };
-        QVERIFY(!renderer.closedLips().empty()); // the clip has closed lips of its own
+        QVERIFY(!renderer.mouths().empty()); // the clip has closed lips of its own
         Look recorded, own, drawn;
         CompositeOptions aamClosures = renderer.compositeOptions();
         aamClosures.recordedClosures = false;
         for (int t = 0; t < renderer.videoFrameCount(); ++t) {
             const Eigen::VectorXd shape = renderer.trackedShape(t);
-            const double share = ClosedLipExemplars::openingShare(shape);
-            if (share < ClosedLipExemplars::kClosedShare) {
-                recorded.add(renderer.background(t), shape);
+            const double share = MouthExemplars::openingShare(shape);
+            if (share < MouthExemplars::kClosedShare) {
+                recorded.add(renderer.background(t), LowerFaceWarp::outerLips(shape, 0.0));
                 continue;
             }
             if (share < 0.15 || t % 2)
                 continue; // open mouths asked to close, every other frame
             const Eigen::VectorXd shut = closure.apply(renderer.trackedFeatures().row(t), std::vector<double>{1.0}).row(0).transpose();
             const Eigen::VectorXd generated = renderer.pose(t).apply(renderer.synthesizer().shape(shut));
-            own.add(renderer.render(t, shut), generated);
+            own.add(renderer.render(t, shut), LowerFaceWarp::outerLips(generated, 0.0));
             cv::Mat frame = renderer.background(t);
             renderer.renderInto(t, shut, frame, aamClosures);
-            drawn.add(frame, generated);
+            drawn.add(frame, LowerFaceWarp::outerLips(generated, 0.0));
         }
         QVERIFY(recorded.count >= 5 && own.count >= 5);
-        const double ownDistance = cv::norm(own.meanLab() - recorded.meanLab());
-        const double drawnDistance = cv::norm(drawn.meanLab() - recorded.meanLab());
-        qInfo("closed lips, CIELAB (8-bit) and Laplacian s.d.: recorded %.1f %.1f %.1f, %.1f (%d frames); "
-              "his own drawn in %.1f %.1f %.1f, %.1f (%d frames, %.1f from the recorded); the AAM's %.1f %.1f %.1f, %.1f "
-              "(%.1f from the recorded)",
-              recorded.meanLab()[0], recorded.meanLab()[1], recorded.meanLab()[2], recorded.meanSharpness(), recorded.count,
-              own.meanLab()[0], own.meanLab()[1], own.meanLab()[2], own.meanSharpness(), own.count, ownDistance,
-              drawn.meanLab()[0], drawn.meanLab()[1], drawn.meanLab()[2], drawn.meanSharpness(), drawnDistance);
+        const double ownDistance = compare("closed lips", recorded, own, drawn);
         // Within a few CIELAB units of his own (both are colour-matched to the skin around them)...
         QVERIFY2(ownDistance < 3.0, qPrintable(QString::number(ownDistance)));
         // ... and as sharp as his own, where the AAM's closed lips carry the lines of an average.
         QVERIFY(std::abs(own.meanSharpness() - recorded.meanSharpness())
                 < std::abs(drawn.meanSharpness() - recorded.meanSharpness()));
+    }
+
+    // The inside of a mouth opened wider than recorded is his own: nearly closed mouths asked to
+    // open as wide as his widest, their inside (within the generated inner lips) has the texture
+    // of the widest mouths he makes in the recording; the AAM's inside, an average over its
+    // training frames sampled in a reference frame smaller than his face, is far smoother.
+    void openMouthsAreHisOwn()
+    {
+        Feedback feedback;
+        FaceRenderer renderer(m_aam, kClip, feedback);
+        QVERIFY(!renderer.mouths().openFrames().empty());
+        int widest = 0;
+        for (int t = 0; t < renderer.videoFrameCount(); ++t)
+            if (MouthExemplars::openingShare(renderer.trackedShape(t)) > MouthExemplars::openingShare(renderer.trackedShape(widest)))
+                widest = t;
+        const Eigen::VectorXd wide = renderer.trackedFeatures().row(widest).transpose();
+        const double widestShare = MouthExemplars::openingShare(renderer.trackedShape(widest));
+        Look recorded, own, drawn;
+        CompositeOptions aamInsides = renderer.compositeOptions();
+        aamInsides.recordedInsides = false;
+        for (int t = 0; t < renderer.videoFrameCount(); ++t) {
+            const Eigen::VectorXd shape = renderer.trackedShape(t);
+            const double share = MouthExemplars::openingShare(shape);
+            if (MouthExemplars::bandOf(share) >= MouthExemplars::bandOf(widestShare) - 2) {
+                recorded.add(renderer.background(t), LowerFaceWarp::mouthInterior(shape));
+                continue;
+            }
+            if (share > 0.1 || t % 2)
+                continue; // nearly closed mouths asked to open, every other frame
+            const Eigen::VectorXd generated = renderer.pose(t).apply(renderer.synthesizer().shape(wide));
+            own.add(renderer.render(t, wide), LowerFaceWarp::mouthInterior(generated));
+            cv::Mat frame = renderer.background(t);
+            renderer.renderInto(t, wide, frame, aamInsides);
+            drawn.add(frame, LowerFaceWarp::mouthInterior(generated));
+        }
+        QVERIFY(recorded.count >= 5 && own.count >= 5);
+        const double ownDistance = compare("open mouths' insides", recorded, own, drawn);
+        // His own teeth and inside: the texture of his open mouths, within a quarter (the AAM's has
+        // under half of it)...
+        QVERIFY2(std::abs(own.meanSharpness() / recorded.meanSharpness() - 1.0) < 0.25,
+                 qPrintable(QString::number(own.meanSharpness() / recorded.meanSharpness())));
+        QVERIFY(drawn.meanSharpness() < 0.5 * recorded.meanSharpness());
+        // ... and their colour, within what teeth showing more or less moves it (an inside from a
+        // narrower mouth, stretched, shows more of its teeth: 12 CIELAB units lighter here).
+        QVERIFY2(ownDistance < 15.0, qPrintable(QString::number(ownDistance)));
     }
 };
 

@@ -1,9 +1,10 @@
-// ClosedLipExemplars on a real clip (resources/demo, GRID s1) with shapes of known openings: only
-// the closed frames are kept, one per closure, the most closed; a closure is never taken from
-// within half a second of the frame drawn into; drawn onto its own shape an exemplar gives back
-// the recording's pixels, moved with its shape it moves with it, and a degenerate map draws
-// nothing.
-#include "render/ClosedLipExemplars.h"
+// MouthExemplars on a real clip (resources/demo, GRID s1) with shapes of known openings: the
+// closed frames are kept one per closure, the most closed; open mouths a few per band of
+// opening, the stillest first; a mouth is never taken from within half a second of the frame
+// drawn into, and an open one comes from the band of the opening asked for or the nearest that
+// has one; drawn onto its own shape an exemplar gives back the recording's pixels, moved with its
+// shape it moves with it, and a degenerate map draws nothing.
+#include "render/MouthExemplars.h"
 
 #include "aam/LandmarkScheme.h"
 #include "io/VideoReader.h"
@@ -52,7 +53,7 @@ double meanAbsDifference(const cv::Mat &a, const cv::Mat &b)
 
 } // namespace
 
-class TestClosedLipExemplars : public QObject
+class TestMouthExemplars : public QObject
 {
     Q_OBJECT
 
@@ -71,45 +72,96 @@ private slots:
         for (int t = 0; t < video.frameCount(); ++t)
             m_shapes.row(t) = face(t == 31 ? 0.0 : (t == 5 || t == 30 || t == 45 || t == 60) ? 0.5 : 12.0).transpose();
         m_usable[45] = false;
-        QVERIFY(ClosedLipExemplars::openingShare(face(0.5)) < ClosedLipExemplars::kClosedShare);
-        QVERIFY(ClosedLipExemplars::openingShare(face(12.0)) > ClosedLipExemplars::kClosedShare);
+        QVERIFY(MouthExemplars::openingShare(face(0.5)) < MouthExemplars::kClosedShare);
+        QVERIFY(MouthExemplars::openingShare(face(12.0)) > MouthExemplars::kClosedShare);
     }
 
     void keepsOneFramePerClosure()
     {
         VideoReader video(kClip);
-        const ClosedLipExemplars exemplars(video, m_shapes, m_usable);
-        QCOMPARE(exemplars.frames(), (std::vector<int>{5, 31, 60}));
-        // No closed frame at all: nothing kept.
+        const MouthExemplars exemplars(video, m_shapes, m_usable);
+        QCOMPARE(exemplars.closedFrames(), (std::vector<int>{5, 31, 60}));
+        // No usable frame at all: nothing kept.
         std::vector<bool> none(m_usable.size(), false);
-        QVERIFY(ClosedLipExemplars(video, m_shapes, none).empty());
+        QVERIFY(MouthExemplars(video, m_shapes, none).empty());
     }
 
     void neverFromBesideTheFrameDrawnInto()
     {
         VideoReader video(kClip);
-        const ClosedLipExemplars exemplars(video, m_shapes, m_usable);
-        const std::vector<int> frames = exemplars.frames();
+        const MouthExemplars exemplars(video, m_shapes, m_usable);
+        const std::vector<int> frames = exemplars.closedFrames();
         for (int t = 0; t < video.frameCount(); ++t) {
-            const int which = exemplars.choose(video.timestamp(t));
+            const int which = exemplars.chooseClosed(video.timestamp(t));
             QVERIFY(which >= 0);
-            const double away = std::abs(video.timestamp(frames[size_t(which)]) - video.timestamp(t));
-            QVERIFY2(away >= ClosedLipExemplars::kAwaySeconds, qPrintable(QString("frame %1").arg(t)));
+            const double away = std::abs(video.timestamp(exemplars.frame(which)) - video.timestamp(t));
+            QVERIFY2(away >= MouthExemplars::kAwaySeconds, qPrintable(QString("frame %1").arg(t)));
             // ... and the nearest such.
             for (int f : frames) {
                 const double d = std::abs(video.timestamp(f) - video.timestamp(t));
-                QVERIFY(d < ClosedLipExemplars::kAwaySeconds || d >= away);
+                QVERIFY(d < MouthExemplars::kAwaySeconds || d >= away);
             }
         }
-        QCOMPARE(frames[size_t(exemplars.choose(video.timestamp(28)))], 5); // 31 is beside it, 5 nearer than 60
+        QCOMPARE(exemplars.frame(exemplars.chooseClosed(video.timestamp(28))), 5); // 31 is beside it, 5 nearer than 60
+    }
+
+    // Three runs of open mouths, each in its own band of opening: frames 0-24 still; 25-49 moving
+    // within their band on every frame but 40-44; 50-74 still.
+    void keepsTheStillestOpenMouthsOfEachBand()
+    {
+        VideoReader video(kClip);
+        QVERIFY(video.frameCount() >= 75);
+        const double width = LowerFaceWarp::mouthWidth(face(0.0));
+        auto share = [](int band) { return MouthExemplars::kClosedShare + (band + 0.5) * MouthExemplars::kOpenStep; };
+        Eigen::MatrixXd shapes(75, 2 * scheme23::kPointCount);
+        for (int t = 0; t < 75; ++t) {
+            const double wobble = t >= 25 && t < 50 && (t < 40 || t >= 45) && t % 2 ? 0.2 * MouthExemplars::kOpenStep : 0.0;
+            shapes.row(t) = face(width * (share(t < 25 ? 2 : t < 50 ? 6 : 10) + wobble)).transpose();
+        }
+        QCOMPARE(MouthExemplars::bandOf(share(6)), 6);
+        QCOMPARE(MouthExemplars::bandOf(share(6) + 0.2 * MouthExemplars::kOpenStep), 6);
+        QCOMPARE(MouthExemplars::bandOf(0.0), 0);
+        const MouthExemplars exemplars(video, shapes, std::vector<bool>(75, true));
+        QVERIFY(exemplars.closedFrames().empty());
+        const std::vector<int> open = exemplars.openFrames();
+        QCOMPARE(int(open.size()), 3 * MouthExemplars::kOpenPerBand);
+        for (int band : {2, 6, 10}) {
+            std::vector<double> times;
+            for (int f : open)
+                if (MouthExemplars::bandOf(MouthExemplars::openingShare(shapes.row(f).transpose())) == band)
+                    times.push_back(video.timestamp(f));
+            QCOMPARE(int(times.size()), MouthExemplars::kOpenPerBand);
+            for (size_t i = 1; i < times.size(); ++i)
+                QVERIFY(times[i] - times[i - 1] > MouthExemplars::kSpacingSeconds - 1e-6);
+        }
+        // The moving band's first choice is its still frame, 41 (40 and 44 move to a neighbour).
+        const int still = exemplars.chooseOpen(video.timestamp(70), share(6));
+        QCOMPARE(exemplars.frame(still), 41);
+        QCOMPARE(exemplars.band(still), 6);
+        // Drawn into frame 42, it is another of that band, half a second away at least.
+        const int away = exemplars.chooseOpen(video.timestamp(42), share(6));
+        QCOMPARE(exemplars.band(away), 6);
+        QVERIFY(std::abs(video.timestamp(exemplars.frame(away)) - video.timestamp(42)) >= MouthExemplars::kAwaySeconds);
+        // A band with none: the nearest that has one; below every band, the lowest.
+        QCOMPARE(exemplars.band(exemplars.chooseOpen(video.timestamp(0), share(9))), 10);
+        // ... and one beside the frame drawn into counts as none: at frame 0, band 2's are all within half a second.
+        QCOMPARE(exemplars.band(exemplars.chooseOpen(video.timestamp(0), share(2))), 6);
+        QCOMPARE(exemplars.band(exemplars.chooseOpen(video.timestamp(70), 0.0)), 2);
+        // Never from beside the frame drawn into, whatever the opening.
+        for (int t = 0; t < 75; ++t)
+            for (double asked : {0.0, share(2), share(5), share(12)}) {
+                const int which = exemplars.chooseOpen(video.timestamp(t), asked);
+                QVERIFY(which >= 0);
+                QVERIFY(std::abs(video.timestamp(exemplars.frame(which)) - video.timestamp(t)) >= MouthExemplars::kAwaySeconds);
+            }
     }
 
     void drawsTheRecordingsLipsWhereTheShapePutsThem()
     {
         VideoReader video(kClip);
-        const ClosedLipExemplars exemplars(video, m_shapes, m_usable);
-        const int which = exemplars.choose(video.timestamp(40)); // frame 60
-        QCOMPARE(exemplars.frames()[size_t(which)], 60);
+        const MouthExemplars exemplars(video, m_shapes, m_usable);
+        const int which = exemplars.chooseClosed(video.timestamp(40)); // frame 60
+        QCOMPARE(exemplars.frame(which), 60);
         const cv::Mat recorded = video.frame(60);
         const Eigen::VectorXd shape = m_shapes.row(60).transpose();
         const cv::Rect box = cv::boundingRect(LowerFaceWarp::outerLips(shape, 5.0));
@@ -149,8 +201,8 @@ private slots:
         // Laplacian energy stays near the recording's (a bilinear lookup, which averages four
         // pixels there, keeps under half of it: 0.46 on this clip, Lanczos 0.89).
         VideoReader video(kClip);
-        const ClosedLipExemplars exemplars(video, m_shapes, m_usable);
-        const int which = exemplars.choose(video.timestamp(40)); // frame 60
+        const MouthExemplars exemplars(video, m_shapes, m_usable);
+        const int which = exemplars.chooseClosed(video.timestamp(40)); // frame 60
         const Eigen::VectorXd shape = m_shapes.row(60).transpose();
         Eigen::VectorXd moved = shape;
         for (Eigen::Index i = 0; i < moved.size(); ++i)
@@ -170,5 +222,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestClosedLipExemplars)
-#include "tst_closedlipexemplars.moc"
+QTEST_GUILESS_MAIN(TestMouthExemplars)
+#include "tst_mouthexemplars.moc"
