@@ -55,7 +55,9 @@ void printRealism(const RealismResult &result)
                 "minus recorded; seamDeltaE: CIE Lab dE across the synthesised region's edge (Recorded: the "
                 "recording at the same pixels); observer: a classifier's held-out accuracy telling the encoded "
                 "render from the encoded recording (0.5: it cannot); shapeCorrelation: the method's own inner-lip "
-                "gap (what the animation exports carry) against the opening on its render\n");
+                "gap (what the animation exports carry) against the opening on its render; "
+                "shiftedSpeechCorrelation: speech correlation with each frame drawn into the clip's footage half "
+                "its length away, whose mouth does not follow the recording (as new speech in other footage)\n");
 }
 
 int runRealism(const CommandLine &args, const EvaluationOptions &evaluation)

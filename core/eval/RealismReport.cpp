@@ -43,7 +43,8 @@ const std::vector<std::string> &realismMetrics()
                                                 "controlCorrelation", "controlSpeechCorrelation",
                                                 "closureRecall",      "falseClosures",
                                                 "falseClosuresRecorded", "observerFrames",
-                                                "observerVideos",     "shapeCorrelation"};
+                                                "observerVideos",     "shapeCorrelation",
+                                                "shiftedSpeechCorrelation"};
     return names;
 }
 
@@ -105,6 +106,33 @@ struct Rendering
     Eigen::MatrixXd features;
 };
 
+// The inner-lip opening dlib reads on each method's frame t drawn into background frame
+// t + frames / 2 (circularly) of the same footage, with that frame's face box (none: NaN).
+std::vector<std::vector<double>> shiftedOpenings(FaceRenderer &renderer, const std::vector<Rendering> &renderings,
+                                                 const std::vector<std::optional<cv::Rect2d>> &faceBoxes,
+                                                 FaceDetector &detector, Feedback &feedback)
+{
+    const int frames = int(faceBoxes.size());
+    std::vector<std::vector<double>> opening(renderings.size(), std::vector<double>(size_t(frames), kNoFigure));
+    cv::Mat drawn;
+    for (int k = 0; k < frames; ++k) {
+        feedback.throwIfCanceled();
+        const int b = (frames / 2 + k) % frames; // the background read forward, wrapping once
+        const int t = (b - frames / 2 + frames) % frames;
+        if (!faceBoxes[size_t(b)])
+            continue;
+        const cv::Mat background = renderer.background(b);
+        for (size_t m = 0; m < renderings.size(); ++m) {
+            background.copyTo(drawn);
+            renderer.renderInto(b, renderings[m].features.row(t).transpose(), drawn);
+            const Eigen::VectorXd points = detector.dlibLandmarksInBox(drawn, *faceBoxes[size_t(b)]);
+            if (points.size() == 136)
+                opening[m][size_t(t)] = innerLipOpening(points);
+        }
+    }
+    return opening;
+}
+
 // Renders and measures one held-out sequence (see the header).
 RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPath, const Sequence &sequence,
                                 const std::vector<Rendering> &renderings, FaceDetector &detector,
@@ -133,6 +161,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
     std::vector<std::vector<std::optional<cv::Rect2d>>> boxes(methods + 1,
                                                               std::vector<std::optional<cv::Rect2d>>(size_t(frames)));
     EncodedAppearance tapes(int(methods) + 1, options.observerCrf);
+    std::vector<std::optional<cv::Rect2d>> faceBoxes(static_cast<size_t>(frames));
     cv::Mat generated;
     for (int t = 0; t < frames; ++t) {
         feedback.throwIfCanceled();
@@ -152,6 +181,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
             continue;
         }
         const size_t ut = size_t(t);
+        faceBoxes[ut] = box;
         recordedOpening[ut] = innerLipOpening(points);
         const cv::Rect2d mouth = mouthBox(points);
         boxes[0][ut] = mouth;
@@ -197,6 +227,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
                             : 0.0;
     out.falseClosuresRecorded = closuresOutside(recordedOpening, bilabials, out.speech, out.closedLevel);
     out.recordedOpening = recordedOpening;
+    const std::vector<std::vector<double>> shifted = shiftedOpenings(renderer, renderings, faceBoxes, detector, feedback);
     EncodedAppearance::Result seen = tapes.appearance(boxes, kObserverStep);
     out.recordedAppearance = std::move(seen.streams[0]);
     out.reencodedAppearance = std::move(seen.reencoded);
@@ -204,6 +235,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
         RealismSequenceMethod r;
         r.correlation = pearsonOverFrames(opening[m], recordedOpening);
         r.speechCorrelation = pearsonOverFrames(onlyWithin(opening[m], out.speech), recordedOpening);
+        r.shiftedSpeechCorrelation = pearsonOverFrames(onlyWithin(shifted[m], out.speech), recordedOpening);
         r.shapeCorrelation = pearsonOverFrames(shapeOpening[m], opening[m]);
         r.shapeOpening = std::move(shapeOpening[m]);
         r.closedBoth = closedInBoth(opening[m], recordedOpening, bilabials, out.closedLevel);
@@ -263,6 +295,7 @@ double foldValue(const std::vector<const RealismSequence *> &fold, const std::st
         values.push_back(metric == "correlation"         ? r.correlation
                          : metric == "speechCorrelation" ? r.speechCorrelation
                          : metric == "shapeCorrelation"  ? r.shapeCorrelation
+                         : metric == "shiftedSpeechCorrelation" ? r.shiftedSpeechCorrelation
                          : metric == "articulation"      ? r.articulation
                          : metric == "lag"               ? r.lag
                          : metric == "sharpness"         ? r.sharpness
@@ -564,6 +597,7 @@ QJsonObject RealismResult::toJson() const
             ro[QStringLiteral("opening")] = jsonNumbers(r.opening);
             ro[QStringLiteral("shapeCorrelation")] = jsonNumber(r.shapeCorrelation);
             ro[QStringLiteral("shapeOpening")] = jsonNumbers(r.shapeOpening);
+            ro[QStringLiteral("shiftedSpeechCorrelation")] = jsonNumber(r.shiftedSpeechCorrelation);
             mo[QString::fromStdString(method)] = ro;
         }
         so[QStringLiteral("methods")] = mo;

@@ -33,7 +33,14 @@
 //                recording" comparing the recording with its own second encode;
 //   shapeCorrelation  Pearson correlation of the method's own inner-lip gap (the AAM shape of its
 //                parameters: what the animation exports carry) with the opening measured on its
-//                render: how faithfully the render draws the mouth it was given.
+//                render: how faithfully the render draws the mouth it was given;
+//   shiftedSpeechCorrelation  speechCorrelation with each frame t drawn into the footage half the
+//                clip away (background frame t + T/2, circularly), whose mouth moves but not as
+//                this recording's: drawn into its own frame, a render keeps some of the recorded
+//                lips' movement (the warp moves the recording's lips by generated - tracked, so
+//                where the tracker misfits them the misfit stays, and follows the recording);
+//                here it does not count. What new speech rendered into a person's other footage
+//                (render --background) shows.
 // Fold value = mean over the fold's sequences (those where the value is defined); reported as the
 // mean over folds with a 95 % t interval (§6.3).
 #include "aam/AamSynthesizer.h"
@@ -96,6 +103,7 @@ struct RealismSequenceMethod
     double seamDeltaE = 0, seamDeltaERecorded = 0;
     double speechCorrelation = 0;
     double shapeCorrelation = 0;
+    double shiftedSpeechCorrelation = 0;
     int closed = 0;         // bilabial segments closed in the render
     int closedBoth = 0;     // ... and in the recording
     int falseClosures = 0;  // closures in the speech outside /p b m/

@@ -48,6 +48,7 @@ QString EvaluationChart::metricTitle(const std::string &metric)
     if (metric == "closure") return EvaluationChart::tr("/p b m/ closures (ratio)");
     if (metric == "sharpness") return EvaluationChart::tr("mouth sharpness (ratio)");
     if (metric == "shapeCorrelation") return EvaluationChart::tr("mouth drawn as generated (correlation)");
+    if (metric == "shiftedSpeechCorrelation") return EvaluationChart::tr("lip-opening correlation in speech, other footage");
     return QString::fromStdString(metric);
 }
 
