@@ -153,6 +153,9 @@ HdSetup &hdSetup()
 void BM_RenderFrameHD(benchmark::State &state)
 {
     HdSetup &s = hdSetup();
+    lipsync::CompositeOptions options;
+    options.recordedInsides = state.range(0) != 0; // the person's own open mouths, or the AAM's
+    s.renderer->setCompositeOptions(options);
     const int frames = int(s.generated.rows());
     int i = 0;
     const std::clock_t start = std::clock();
@@ -163,8 +166,9 @@ void BM_RenderFrameHD(benchmark::State &state)
     }
     addCpu(state, start);
     state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+    s.renderer->setCompositeOptions({});
 }
-BENCHMARK(BM_RenderFrameHD)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderFrameHD)->ArgName("ownInsides")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_ExportRenderedHD(benchmark::State &state)
 {
