@@ -237,11 +237,12 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
     }
     // The person's own open mouth is drawn with its lips, moved onto the generated ones, around
     // it: what its colour is matched on.
-    const bool ownInside = exemplar >= 0 && !closing;
+    bool ownInside = exemplar >= 0 && !closing;
     if (ownInside)
         box = (box | cv::boundingRect(LowerFaceWarp::outerLips(generated, 0.0))) & cv::Rect(cv::Point(0, 0), m_size);
     cv::Mat patch = synthesised(box);
     if (exemplar < 0 || !m_mouths.draw(exemplar, generated, box, patch)) {
+        ownInside = false;
         CompositeOptions whole = options;
         whole.region = FaceRegion::Full;
         m_synthesizer.composite(features, pose(index), synthesised, whole);

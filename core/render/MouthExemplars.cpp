@@ -46,6 +46,8 @@ MouthExemplars::MouthExemplars(VideoReader &video, const Eigen::MatrixXd &shapes
             closed.emplace_back(share, t);
             continue;
         }
+        if (share > kMaxOpenShare)
+            continue;
         // How far the mouth points move to the neighbouring frames, in mouth widths.
         double motion = 0.0;
         int neighbours = 0;

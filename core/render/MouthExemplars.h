@@ -43,6 +43,9 @@ public:
     // let every frame find one at least kAwaySeconds away].
     static constexpr double kOpenStep = 0.025;
     static constexpr int kOpenPerBand = 3;
+    // Openings beyond the mouth's width are misfits, not mouths: none is kept, so at most
+    // kOpenPerBand x 38 open crops (and kMaxExemplars closed ones) are held, whatever the length.
+    static constexpr double kMaxOpenShare = 1.0;
     // Never a mouth from within this time of the frame drawn into [choice: longer than a
     // bilabial closure and its neighbours' coarticulation].
     static constexpr double kAwaySeconds = 0.5;

@@ -14,6 +14,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace lipsync;
@@ -106,7 +107,7 @@ private slots:
     }
 
     // Three runs of open mouths, each in its own band of opening: frames 0-24 still; 25-49 moving
-    // within their band on every frame but 40-44; 50-74 still.
+    // within their band on every frame but 40-44; 50-73 still; 74 opened wider than the mouth.
     void keepsTheStillestOpenMouthsOfEachBand()
     {
         VideoReader video(kClip);
@@ -118,6 +119,7 @@ private slots:
             const double wobble = t >= 25 && t < 50 && (t < 40 || t >= 45) && t % 2 ? 0.2 * MouthExemplars::kOpenStep : 0.0;
             shapes.row(t) = face(width * (share(t < 25 ? 2 : t < 50 ? 6 : 10) + wobble)).transpose();
         }
+        shapes.row(74) = face(1.5 * width).transpose(); // opened wider than the mouth: a misfit, never kept
         QCOMPARE(MouthExemplars::bandOf(share(6)), 6);
         QCOMPARE(MouthExemplars::bandOf(share(6) + 0.2 * MouthExemplars::kOpenStep), 6);
         QCOMPARE(MouthExemplars::bandOf(0.0), 0);
@@ -125,6 +127,7 @@ private slots:
         QVERIFY(exemplars.closedFrames().empty());
         const std::vector<int> open = exemplars.openFrames();
         QCOMPARE(int(open.size()), 3 * MouthExemplars::kOpenPerBand);
+        QVERIFY(std::find(open.begin(), open.end(), 74) == open.end());
         for (int band : {2, 6, 10}) {
             std::vector<double> times;
             for (int f : open)
