@@ -323,12 +323,16 @@ private slots:
         QVERIFY(!std::isfinite(reencoded.at("shapeCorrelation").mean));
         // Drawn into the footage half the clip away, the tracked parameters still show the
         // recording's mouth (the warp moves the other frame's lips to them), but less faithfully
-        // than into their own frame, where nothing moves at all.
+        // than into their own frame, where nothing moves at all; and a model's render there keeps
+        // none of the recording's movement, so it reads lower than in its own frames, though above
+        // another clip's render.
         qInfo("speech correlation in other footage: tracked %.3f, hmm %.3f", tracked.at("shiftedSpeechCorrelation").mean,
               hmm.at("shiftedSpeechCorrelation").mean);
         QVERIFY(tracked.at("shiftedSpeechCorrelation").mean > 0.5);
         QVERIFY(tracked.at("shiftedSpeechCorrelation").mean < tracked.at("speechCorrelation").mean);
-        QVERIFY(hmm.at("shiftedSpeechCorrelation").mean > hmm.at("controlSpeechCorrelation").mean);
+        QVERIFY(hmm.at("shiftedSpeechCorrelation").mean < hmm.at("speechCorrelation").mean);
+        if (n >= 4) // the control pairs sequences within a fold
+            QVERIFY(hmm.at("shiftedSpeechCorrelation").mean > hmm.at("controlSpeechCorrelation").mean);
         QVERIFY(!std::isfinite(reencoded.at("shiftedSpeechCorrelation").mean));
         const QJsonObject json = r.toJson();
         QVERIFY(json.contains(QStringLiteral("methods")));
