@@ -106,33 +106,6 @@ struct Rendering
     Eigen::MatrixXd features;
 };
 
-// The inner-lip opening dlib reads on each method's frame t drawn into background frame
-// t + frames / 2 (circularly) of the same footage, with that frame's face box (none: NaN).
-std::vector<std::vector<double>> shiftedOpenings(FaceRenderer &renderer, const std::vector<Rendering> &renderings,
-                                                 const std::vector<std::optional<cv::Rect2d>> &faceBoxes,
-                                                 FaceDetector &detector, Feedback &feedback)
-{
-    const int frames = int(faceBoxes.size());
-    std::vector<std::vector<double>> opening(renderings.size(), std::vector<double>(size_t(frames), kNoFigure));
-    cv::Mat drawn;
-    for (int k = 0; k < frames; ++k) {
-        feedback.throwIfCanceled();
-        const int b = (frames / 2 + k) % frames; // the background read forward, wrapping once
-        const int t = (b - frames / 2 + frames) % frames;
-        if (!faceBoxes[size_t(b)])
-            continue;
-        const cv::Mat background = renderer.background(b);
-        for (size_t m = 0; m < renderings.size(); ++m) {
-            background.copyTo(drawn);
-            renderer.renderInto(b, renderings[m].features.row(t).transpose(), drawn);
-            const Eigen::VectorXd points = detector.dlibLandmarksInBox(drawn, *faceBoxes[size_t(b)]);
-            if (points.size() == 136)
-                opening[m][size_t(t)] = innerLipOpening(points);
-        }
-    }
-    return opening;
-}
-
 // Renders and measures one held-out sequence (see the header).
 RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPath, const Sequence &sequence,
                                 const std::vector<Rendering> &renderings, FaceDetector &detector,
@@ -150,6 +123,8 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
     std::vector<double> recordedOpening(size_t(frames), kNoFigure), recordedSharpness(size_t(frames), kNoFigure);
     std::vector<std::vector<double>> opening(methods, recordedOpening), sharpness(methods, recordedOpening),
         seam(methods, recordedOpening), seamRecorded(methods, recordedOpening);
+    // Frame t - T/2 drawn into frame t, whose mouth does not follow it (shiftedSpeechCorrelation).
+    std::vector<std::vector<double>> shifted(methods, recordedOpening);
     std::vector<int> skipped(methods, 0);
     // The inner-lip gap of each method's own shape (the AAM's inner-lip centres, normalised frame):
     // the mouth the animation exports carry, to compare with what the render shows.
@@ -161,7 +136,6 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
     std::vector<std::vector<std::optional<cv::Rect2d>>> boxes(methods + 1,
                                                               std::vector<std::optional<cv::Rect2d>>(size_t(frames)));
     EncodedAppearance tapes(int(methods) + 1, options.observerCrf);
-    std::vector<std::optional<cv::Rect2d>> faceBoxes(static_cast<size_t>(frames));
     cv::Mat generated;
     for (int t = 0; t < frames; ++t) {
         feedback.throwIfCanceled();
@@ -181,7 +155,6 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
             continue;
         }
         const size_t ut = size_t(t);
-        faceBoxes[ut] = box;
         recordedOpening[ut] = innerLipOpening(points);
         const cv::Rect2d mouth = mouthBox(points);
         boxes[0][ut] = mouth;
@@ -205,6 +178,12 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
             const SeamDeltaE s = seamDeltaE(generated, recorded, weight);
             seam[m][ut] = s.frame;
             seamRecorded[m][ut] = s.reference;
+            const int away = (t + frames - frames / 2) % frames;
+            recorded.copyTo(generated);
+            renderer.renderInto(t, renderings[m].features.row(away).transpose(), generated);
+            const Eigen::VectorXd there = detector.dlibLandmarksInBox(generated, *box);
+            if (there.size() == 136)
+                shifted[m][size_t(away)] = innerLipOpening(there);
         }
         feedback.setProgress(double(t + 1) / frames);
     }
@@ -227,7 +206,6 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
                             : 0.0;
     out.falseClosuresRecorded = closuresOutside(recordedOpening, bilabials, out.speech, out.closedLevel);
     out.recordedOpening = recordedOpening;
-    const std::vector<std::vector<double>> shifted = shiftedOpenings(renderer, renderings, faceBoxes, detector, feedback);
     EncodedAppearance::Result seen = tapes.appearance(boxes, kObserverStep);
     out.recordedAppearance = std::move(seen.streams[0]);
     out.reencodedAppearance = std::move(seen.reencoded);

@@ -254,22 +254,22 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
     // frame's moved lips (at the inside's edge its dark inside would meet the frame's lips).
     double shift[3] = {0, 0, 0};
     if (options.matchColour) {
-        cv::Mat lips;
+        cv::Mat lips; // the box's pixels inside the generated outer lips
         if (ownInside) {
-            lips = cv::Mat(m_size, CV_8U, cv::Scalar(0));
+            lips = cv::Mat(box.size(), CV_8U, cv::Scalar(0));
             std::vector<cv::Point> outline;
             for (const cv::Point2f &p : LowerFaceWarp::outerLips(generated, 0.0))
-                outline.emplace_back(int(std::lround(p.x)), int(std::lround(p.y)));
+                outline.emplace_back(int(std::lround(p.x)) - box.x, int(std::lround(p.y)) - box.y);
             cv::fillPoly(lips, std::vector<std::vector<cv::Point>>{outline}, cv::Scalar(255));
         }
         double sum[3] = {0, 0, 0};
         long count = 0;
         for (int y = box.y; y < box.y + box.height; ++y) {
             const float *a = alpha.ptr<float>(y);
-            const uchar *onLips = ownInside ? lips.ptr<uchar>(y) : nullptr;
+            const uchar *onLips = ownInside ? lips.ptr<uchar>(y - box.y) : nullptr;
             const uchar *out = frame.ptr<uchar>(y), *in = synthesised.ptr<uchar>(y);
             for (int x = box.x; x < box.x + box.width; ++x)
-                if (onLips ? onLips[x] && a[x] < 0.02f : a[x] > 0.02f && a[x] < 0.5f) {
+                if (onLips ? onLips[x - box.x] && a[x] < 0.02f : a[x] > 0.02f && a[x] < 0.5f) {
                     for (int ch = 0; ch < 3; ++ch)
                         sum[ch] += double(out[3 * x + ch]) - double(in[3 * x + ch]);
                     ++count;
