@@ -94,13 +94,16 @@ struct VideoReader::Decoder
 
     // The held picture as BGR. The matrix is the stream's (BT.709 for unlabelled pictures 720
     // lines high or more, BT.601 below, as players assume); exact rounding and full chroma
-    // interpolation keep a decode-export-decode round trip at the same colours.
+    // interpolation keep a decode-export-decode round trip at the same colours. The chroma is
+    // interpolated bilinearly, as players' GPU paths do: a bicubic one costs twice as much (at
+    // 720p 7.3 against 3.7 ms a frame, a quarter of a render's time) for 0.4 levels' difference
+    // on average.
     cv::Mat bgr(const std::string &path)
     {
         const auto source = AVPixelFormat(picture->format);
         const int w = picture->width, h = picture->height;
         converter = sws_getCachedContext(converter, w, h, source, w, h, AV_PIX_FMT_BGR24,
-                                         SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr, nullptr,
+                                         SWS_BILINEAR | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr, nullptr,
                                          nullptr);
         if (!converter) {
             const char *name = av_get_pix_fmt_name(source);

@@ -206,14 +206,17 @@ bool MouthExemplars::draw(int which, const Eigen::VectorXd &generated, const cv:
         }
         const ThinPlateWarp spline(sources, targets);
         if (spline.valid()) {
-            cv::Mat mapX(box.size(), CV_32F), mapY(box.size(), CV_32F);
-            for (int y = 0; y < box.height; ++y)
-                for (int x = 0; x < box.width; ++x) {
-                    const Eigen::Vector2d p(x, y);
-                    const Eigen::Vector2d q = p - spline.displacement(p);
-                    mapX.at<float>(y, x) = float(q.x());
-                    mapY.at<float>(y, x) = float(q.y());
-                }
+            const Eigen::Index n = Eigen::Index(box.width) * box.height;
+            Eigen::ArrayXd px(n), py(n), dx, dy;
+            for (Eigen::Index k = 0; k < n; ++k) {
+                px[k] = double(k % box.width);
+                py[k] = double(k / box.width);
+            }
+            spline.displacements(px, py, dx, dy);
+            const Eigen::ArrayXf qx = (px - dx).cast<float>(), qy = (py - dy).cast<float>();
+            // Row-major, as cv::Mat: each map wraps its array.
+            const cv::Mat mapX(box.size(), CV_32F, const_cast<float *>(qx.data()));
+            const cv::Mat mapY(box.size(), CV_32F, const_cast<float *>(qy.data()));
             cv::remap(e.crop, patch, mapX, mapY, cv::INTER_LANCZOS4, cv::BORDER_REPLICATE);
             return true;
         }

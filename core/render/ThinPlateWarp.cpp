@@ -98,18 +98,43 @@ float fadeAt(double x, double y, const cv::Rect &region, double falloff)
 
 } // namespace
 
+void ThinPlateWarp::displacements(const Eigen::ArrayXd &x, const Eigen::ArrayXd &y, Eigen::ArrayXd &dx,
+                                  Eigen::ArrayXd &dy) const
+{
+    if (!m_valid) {
+        dx.setZero(x.size());
+        dy.setZero(x.size());
+        return;
+    }
+    dx = m_affine(0, 0) + m_affine(1, 0) * x + m_affine(2, 0) * y;
+    dy = m_affine(0, 1) + m_affine(1, 1) * x + m_affine(2, 1) * y;
+    // One control point at a time over every position, so Eigen's packet log does the kernel.
+    for (Eigen::Index i = 0; i < m_points.rows(); ++i) {
+        const Eigen::ArrayXd r2 = (x - m_points(i, 0)).square() + (y - m_points(i, 1)).square();
+        const Eigen::ArrayXd k = (r2 > 1e-12).select(r2 * r2.max(1e-12).log(), 0.0);
+        dx += m_weights(i, 0) * k;
+        dy += m_weights(i, 1) * k;
+    }
+}
+
 void ThinPlateWarp::gridDisplacement(cv::Rect region, cv::Mat &dx, cv::Mat &dy) const
 {
     // The spline on a coarse grid over the region (its last nodes at or past the far border).
     const int gw = (region.width - 1) / kGridStep + 2;
     const int gh = (region.height - 1) / kGridStep + 2;
+    Eigen::ArrayXd x(gw * gh), y(gw * gh), ex, ey;
+    for (int gy = 0; gy < gh; ++gy)
+        for (int gx = 0; gx < gw; ++gx) {
+            x[gy * gw + gx] = double(region.x + gx * kGridStep);
+            y[gy * gw + gx] = double(region.y + gy * kGridStep);
+        }
+    displacements(x, y, ex, ey);
     dx.create(gh, gw, CV_32F);
     dy.create(gh, gw, CV_32F);
     for (int gy = 0; gy < gh; ++gy)
         for (int gx = 0; gx < gw; ++gx) {
-            const Eigen::Vector2d d = displacement({double(region.x + gx * kGridStep), double(region.y + gy * kGridStep)});
-            dx.at<float>(gy, gx) = float(d.x());
-            dy.at<float>(gy, gx) = float(d.y());
+            dx.at<float>(gy, gx) = float(ex[gy * gw + gx]);
+            dy.at<float>(gy, gx) = float(ey[gy * gw + gx]);
         }
 }
 

@@ -28,6 +28,9 @@ public:
 
     // The displacement d(p) at a pixel (the input is read at p - d(p)).
     Eigen::Vector2d displacement(const Eigen::Vector2d &p) const;
+    // The same at many pixels at once (x[k], y[k]) -> (dx[k], dy[k]).
+    void displacements(const Eigen::ArrayXd &x, const Eigen::ArrayXd &y, Eigen::ArrayXd &dx,
+                       Eigen::ArrayXd &dy) const;
 
     // Warps `image` (any type cv::remap takes) inside `region` in place; returns false (and leaves
     // it) if the region is empty, the spline could not be fitted, or the warp's Jacobian falls

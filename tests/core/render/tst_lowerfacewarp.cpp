@@ -65,6 +65,16 @@ private slots:
             const Eigen::Vector2d d = warp.displacement(to.segment<2>(2 * i));
             QVERIFY2((d - (to - from).segment<2>(2 * i)).norm() < 1e-9, qPrintable(QString::number(i)));
         }
+        // Many pixels at once give what each gives alone, on the control points too (r = 0).
+        Eigen::ArrayXd x(7), y(7), dx, dy;
+        x << 10, 56, 0, 33.5, 120, -7, 90;
+        y << 10, 53, 0, 71.25, 40, 200, 90;
+        warp.displacements(x, y, dx, dy);
+        for (int k = 0; k < 7; ++k) {
+            const Eigen::Vector2d d = warp.displacement({x[k], y[k]});
+            QVERIFY2(std::abs(dx[k] - d.x()) < 1e-9 && std::abs(dy[k] - d.y()) < 1e-9, qPrintable(QString::number(k)));
+        }
+        QVERIFY(std::abs(dx[1] - 6.0) < 1e-9 && std::abs(dy[1] - 3.0) < 1e-9);
         // Coincident points cannot be fitted.
         Eigen::VectorXd same(6);
         same << 1, 1, 1, 1, 1, 1;
