@@ -29,8 +29,14 @@ constexpr double kOccludedFit = 25.0;
 // the speech itself, not covered.
 constexpr double kOccludedFitOverUpperQuartile = 4.0;
 // Below this share of the recorded inner-lip opening, a generated mouth is drawn closed by the
-// AAM (mouthInteriorAlpha) [choice: the warp squeezes at most 4 times, kMinJacobian].
+// AAM (mouthInteriorAlpha) [choice].
 constexpr double kClosingRatio = 0.5;
+// The drawn inside of a mouth opened wider than recorded reaches full weight where the recording
+// lacks this share of the generated opening (mouthInteriorAlpha). [choice: on 40 development GRID
+// clips, with 1 (the weight rising over the whole range) a mouth asked to open from a half-open
+// one read 57 % of the opening asked (dlib), with 1/3 75 %; the recording's stretched inside
+// reads as less open than the person's own inside at that opening.]
+constexpr double kInsideFullAt = 1.0 / 3.0;
 
 std::vector<Similarity> smoothPoses(const std::vector<Similarity> &poses)
 {
@@ -319,9 +325,10 @@ cv::Mat FaceRenderer::mouthInteriorAlpha(const Eigen::VectorXd &generated, const
     constexpr double kMinOpening = 1.5; // pixels: a closed mouth has no inside to draw
     if (wanted > kMinOpening && wanted > recorded) {
         // The warp stretches the recorded opening to the generated one: where that is a thin line
-        // pulled wide, the inside is drawn; where the recording was as open, it is its own. A
-        // feathered edge of about a pixel, inside the lips' inner outline.
-        const double u = std::clamp((wanted - recorded) / wanted, 0.0, 1.0);
+        // pulled wide, the inside is drawn; where the recording was as open, it is its own, and
+        // between, the drawn inside weighs fully from a recording a third short (kInsideFullAt).
+        // A feathered edge of about a pixel, inside the lips' inner outline.
+        const double u = std::clamp((wanted - recorded) / (kInsideFullAt * wanted), 0.0, 1.0);
         fill(LowerFaceWarp::mouthInterior(generated), 0.8, float(u * u * (3.0 - 2.0 * u)));
     } else if (recorded > 2.0 * kMinOpening && wanted < kClosingRatio * recorded) {
         // Lips asked to close far more than the recording's: no warp brings lips together that
