@@ -6,8 +6,8 @@
 // (the warp fades to nothing there), and the eyes are the recording's. And the mouth goes where
 // it is asked: an open mouth asked to close is closed in the render, as dlib's landmarker reads it
 // (at HD scale the spline's system must be solved well, or nothing moves), with his own closed
-// lips from another moment of the clip, and a mouth opened wider shows his own teeth; and nothing
-// flickers from frame to frame.
+// lips from another moment of the clip; a mouth asked to open opens most of the way, and shows his
+// own teeth; and nothing flickers from frame to frame.
 #include "aam/AamBuilder.h"
 #include "aam/FaceDetector.h"
 #include "aam/LandmarkScheme.h"
