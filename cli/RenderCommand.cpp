@@ -76,9 +76,13 @@ int runRender(const CommandLine &args)
     sound.own();
     const AlignerOutput aligned = aligner.align(sound, transcript.words, args.value("transcript"));
     // Words that are not the sound's give lips that do not match it: said, the render still made.
+    // With the default aligner, a speaker other than its own misfits as well: the way out is named.
     if (transcriptMisfit(aligned.transcriptFit))
-        std::fprintf(stderr, "lipsync: warning: %s: %s: the lips will not match the sound\n",
-                     qPrintable(args.value("transcript")), aligned.transcriptFit->reason().c_str());
+        std::fprintf(stderr, "lipsync: warning: %s: %s: the lips will not match the sound%s\n",
+                     qPrintable(args.value("transcript")), aligned.transcriptFit->reason().c_str(),
+                     args.isSet("aligner") ? ""
+                                           : " (if the speaker is not the default aligner's, GRID s1's, align with "
+                                             "--aligner sphinx --adapt)");
     Feedback feedback;
     SpeechVideoReport report;
     report.generated = generateFromAlignment(request, aligned, sound, feedback);

@@ -184,7 +184,8 @@ private slots:
         const Run other = runLipsync(args << "--png-dir" << m_dir.filePath("other-frames"));
         QVERIFY2(other.exitCode == 0, other.err.constData());
         QVERIFY2(other.err.contains("warning") && other.err.contains("lrik4p.align")
-                     && other.err.contains("does not seem to be what the recording says"),
+                     && other.err.contains("does not seem to be what the recording says")
+                     && other.err.contains("--aligner sphinx --adapt"), // the default aligner may be another speaker's
                  other.err.constData());
     }
 
