@@ -69,15 +69,9 @@ ThinPlateWarp::ThinPlateWarp(const Eigen::VectorXd &sources, const Eigen::Vector
 
 Eigen::Vector2d ThinPlateWarp::displacement(const Eigen::Vector2d &p) const
 {
-    if (!m_valid)
-        return Eigen::Vector2d::Zero();
-    Eigen::Vector2d d = m_affine.row(0).transpose() + p.x() * m_affine.row(1).transpose()
-                        + p.y() * m_affine.row(2).transpose();
-    for (Eigen::Index i = 0; i < m_points.rows(); ++i) {
-        const double dx = p.x() - m_points(i, 0), dy = p.y() - m_points(i, 1);
-        d += kernel(dx * dx + dy * dy) * m_weights.row(i).transpose();
-    }
-    return d;
+    Eigen::ArrayXd dx, dy;
+    displacements(Eigen::ArrayXd::Constant(1, p.x()), Eigen::ArrayXd::Constant(1, p.y()), dx, dy);
+    return {dx[0], dy[0]};
 }
 
 namespace {
@@ -129,13 +123,9 @@ void ThinPlateWarp::gridDisplacement(cv::Rect region, cv::Mat &dx, cv::Mat &dy) 
             y[gy * gw + gx] = double(region.y + gy * kGridStep);
         }
     displacements(x, y, ex, ey);
-    dx.create(gh, gw, CV_32F);
-    dy.create(gh, gw, CV_32F);
-    for (int gy = 0; gy < gh; ++gy)
-        for (int gx = 0; gx < gw; ++gx) {
-            dx.at<float>(gy, gx) = float(ex[gy * gw + gx]);
-            dy.at<float>(gy, gx) = float(ey[gy * gw + gx]);
-        }
+    // Row-major, as the nodes were laid out: each grid wraps its array.
+    cv::Mat(gh, gw, CV_64F, ex.data()).convertTo(dx, CV_32F);
+    cv::Mat(gh, gw, CV_64F, ey.data()).convertTo(dy, CV_32F);
 }
 
 double ThinPlateWarp::smallestJacobian(cv::Rect region, double falloff, const cv::Mat &dx, const cv::Mat &dy)
