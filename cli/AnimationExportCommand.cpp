@@ -10,6 +10,7 @@
 #include "animation/MouthCues.h"
 #include "animation/MouthMapping.h"
 #include "animation/MouthTrack.h"
+#include "dynamics/ModelFile.h"
 #include "io/Transcript.h"
 #include "project/Project.h"
 #include "render/SpeechToFace.h"
@@ -66,7 +67,7 @@ AnimationSource readSource(const CommandLine &args)
     request.aamPath = aamPath;
     request.aam = source.aam;
     request.pronunciations = source.project.pronunciations;
-    const SpeechAligner aligner(args);
+    const SpeechAligner aligner(args, args.value("project"), false, 0, modelTrainingAligner(request.modelPath));
     const Transcript transcript = readTranscript(request.transcriptPath);
     const RecordingSound sound(request.mediaPath); // decoded once for the aligner and the result
     sound.own();

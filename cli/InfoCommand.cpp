@@ -2,7 +2,8 @@
 //   media file:     frames, fps, duration, size, audio rate/channels/duration (decoded counts)
 //   project folder: its sequences (count, total frames and duration, per sequence id/frames/fps)
 //   AAM (.aam):     points, modes (shape, texture, combined), texture pixels, training images
-//   dynamic model:  kind, dimension, states, frame rate, compensation, prior, the AAM it is for
+//   dynamic model:  kind, dimension, states, frame rate, compensation, prior, the AAM it is for,
+//                   the aligner of its training phones
 // The kind of a file is read from its first bytes (an AAM's magic, a model's JSON), never
 // from its name: FFmpeg takes almost any bytes for some audio format. Bad input (missing, empty,
 // truncated, unsupported) exits 1 with one line naming the file.
@@ -196,6 +197,16 @@ int infoAam(const QString &path, bool json)
                       json);
 }
 
+// "sphinx", "shipped" (GRID s1's) or the aligner model's path, with " adapted"; null: not recorded.
+QJsonValue trainingAligner(const lipsync::DynamicModel &model)
+{
+    const std::optional<lipsync::AlignerChoice> &aligner = model.trainingAligner();
+    if (!aligner)
+        return {};
+    const QString name = aligner->model.empty() ? QStringLiteral("shipped") : QString::fromStdString(aligner->model);
+    return aligner->adapt ? name + QStringLiteral(" adapted") : name;
+}
+
 int infoModel(const QString &path, bool json)
 {
     std::string aamId;
@@ -215,7 +226,9 @@ int infoModel(const QString &path, bool json)
                                                             ? QJsonValue(model->priorWeight())
                                                             : QJsonValue()},
                        {QStringLiteral("fps"), model->frameRate() > 0 ? QJsonValue(model->frameRate()) : QJsonValue()},
-                       {QStringLiteral("aam"), QString::fromStdString(aamId)}},
+                       {QStringLiteral("aam"), QString::fromStdString(aamId)},
+                       // What aligned its training phones, and so new speech for it (render).
+                       {QStringLiteral("aligner"), trainingAligner(*model)}},
                       json);
 }
 

@@ -7,6 +7,7 @@
 #include "SpeechAligner.h"
 #include "VideoOutput.h"
 
+#include "dynamics/ModelFile.h"
 #include "io/MediaInfo.h"
 #include "io/Transcript.h"
 #include "project/Project.h"
@@ -69,7 +70,12 @@ int runRender(const CommandLine &args)
     // The shared aligner (the same choices as `lipsync align`), then generation from its phones.
     QElapsedTimer timer;
     timer.start();
-    const SpeechAligner aligner(args, true);
+    // The speaker's aligner: --aligner, else --project's or the --background project's, else the
+    // one the model was trained with.
+    const QString project = args.isSet("project") || !QFileInfo(args.value("background")).isDir()
+                                ? args.value("project")
+                                : args.value("background");
+    const SpeechAligner aligner(args, project, true, 0, modelTrainingAligner(request.modelPath));
     const Transcript transcript = readTranscript(request.transcriptPath);
     // The sound decoded once, at its own rate, for the video; the aligner resamples it.
     const RecordingSound sound(request.mediaPath);

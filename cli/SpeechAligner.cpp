@@ -6,7 +6,10 @@
 #include "align/ProjectAligner.h"
 #include "project/Project.h"
 
+#include <QFileInfo>
+
 #include <algorithm>
+#include <cstdio>
 
 namespace lipsync::cli {
 
@@ -14,10 +17,11 @@ std::vector<CommandOption> SpeechAligner::options(const QStringList &alignerAlia
 {
     std::vector<CommandOption> options{
         {QStringLiteral("aligner"), QStringLiteral("MODEL|sphinx[:DIR]"),
-         QStringLiteral("the forced aligner: an aligner model of ours (lipsync aligner train/adapt/calibrate; default: the "
-                        "shipped GRID s1 model, one speaker, or $LIPSYNC_ALIGNER_MODEL), or sphinx: CMU Sphinx's "
-                        "generic US-English triphone model (many speakers; Debian package pocketsphinx-en-us) at "
-                        "its Debian folder, or at DIR"),
+         QStringLiteral("the forced aligner: an aligner model of ours (lipsync aligner train/adapt/calibrate), or "
+                        "sphinx: CMU Sphinx's generic US-English triphone model (many speakers; Debian package "
+                        "pocketsphinx-en-us) at its Debian folder, or at DIR. Default: what --project says, else "
+                        "the one the dynamic model to render was trained with (its file records it), else the "
+                        "shipped GRID s1 model (one speaker) or $LIPSYNC_ALIGNER_MODEL"),
          {}, CommandOption::Optional, alignerAliases},
         {QStringLiteral("adapt"), {},
          QStringLiteral("adapt the aligner's model to the recording's speaker first (ours: MLLR + MAP of the "
@@ -44,19 +48,34 @@ SpeechAligner::SpeechAligner(const CommandLine &args, bool transcriptFit)
 }
 
 SpeechAligner::SpeechAligner(const CommandLine &args, const QString &projectFolder, bool transcriptFit,
-                             double recordingSeconds)
+                             double recordingSeconds, const std::optional<AlignerChoice> &modelsAligner)
 {
     AlignerChoice choice{args.value(QStringLiteral("aligner")).toStdString(), args.isSet(QStringLiteral("adapt"))};
     choice.boundaryCorrection = !args.isSet(QStringLiteral("no-boundary-correction"));
     choice.transcriptFit = transcriptFit;
+    bool said = !choice.model.empty(); // --aligner, then the project, then the model
     std::map<std::string, std::string> projectPronunciations;
     if (!projectFolder.isEmpty()) {
         const Project project = Project::load(projectFolder.toStdString());
         projectPronunciations = project.pronunciations;
         // The aligner the project says its speaker's speech is aligned with, unless --aligner names one.
-        if (const std::optional<AlignerChoice> own = projectAlignerChoice(project); own && choice.model.empty()) {
+        if (const std::optional<AlignerChoice> own = projectAlignerChoice(project); own && !said) {
             choice.model = own->model;
             choice.adapt = choice.adapt || own->adapt;
+            said = true;
+        }
+    }
+    // Else the aligner the model's training phones came from: the speaker's, not GRID s1's.
+    if (modelsAligner && !said) {
+        choice.model = modelsAligner->model;
+        choice.adapt = choice.adapt || modelsAligner->adapt;
+        if (!choice.model.empty() && !choice.isSphinx() && !QFileInfo::exists(QString::fromStdString(choice.model))) {
+            std::fprintf(stderr,
+                         "lipsync: note: the model was trained on phones of the aligner %s, which is not there: "
+                         "aligning with CMU Sphinx's generic model adapted to the speaker\n",
+                         choice.model.c_str());
+            choice.model = "sphinx";
+            choice.adapt = true;
         }
     }
     m_shippedForLong = fallBackForLongRecording(choice, recordingSeconds);

@@ -1,8 +1,9 @@
 #pragma once
 // The forced aligner of every command that aligns speech (`align`, `render`), chosen by one shared
 // set of options (options()) into an AlignerChoice (align/Aligner.h):
-//   --aligner MODEL | sphinx[:DIR]  an aligner model of ours (default: the shipped GRID s1 model),
-//                                   or CMU Sphinx's generic US-English model (SphinxAligner)
+//   --aligner MODEL | sphinx[:DIR]  an aligner model of ours, or CMU Sphinx's generic US-English
+//                                   model (SphinxAligner); default: what --project says, else what
+//                                   the dynamic model was trained with, else the shipped GRID s1 model
 //   --adapt                         adapt the model to the recording's speaker first
 //   --project DIR, --pronunciations DICT  pronunciations before the CMU dictionary and espeak-ng
 #include "Command.h"
@@ -11,6 +12,7 @@
 #include "align/Lexicon.h"
 
 #include <memory>
+#include <optional>
 
 namespace lipsync::cli {
 
@@ -31,8 +33,12 @@ public:
     // is an argument rather than --project). `recordingSeconds`: the length of what is aligned;
     // beyond what CMU Sphinx aligns, a Sphinx choice gives way to the shipped model
     // (fallBackForLongRecording; usesShippedForLong() says when it did).
+    // `modelsAligner`: the aligner the dynamic model to generate with was trained with
+    // (DynamicModel::trainingAligner), the default when neither --aligner nor the project says;
+    // an own aligner model of the speaker's that is gone gives way to CMU Sphinx adapted (a note
+    // on stderr says so).
     SpeechAligner(const CommandLine &args, const QString &projectFolder, bool transcriptFit = false,
-                  double recordingSeconds = 0);
+                  double recordingSeconds = 0, const std::optional<AlignerChoice> &modelsAligner = std::nullopt);
     ~SpeechAligner();
 
     // "sphinx:DIR" or the path of our model file.

@@ -5,6 +5,7 @@
 #include "TrainingData.h"
 
 #include "aam/AamModel.h"
+#include "align/ProjectAligner.h"
 #include "animation/MouthMeasures.h"
 #include "animation/MouthShapePrior.h"
 #include "dynamics/BrandModel.h"
@@ -77,6 +78,10 @@ int runTrain(const CommandLine &args)
     const auto start = std::chrono::steady_clock::now();
     model->train(sequences, feedback);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // New speech for this speaker is aligned as the phones it learnt from were (render, export).
+    if (args.isSet(QStringLiteral("project")))
+        model->setTrainingAligner(
+            projectAlignerChoice(Project::load(args.value(QStringLiteral("project")).toStdString())));
     saveModel(*model, out.toStdString(), aam);
 
     // log p(y | labels), comparable between the kinds (Brand: its trajectory density, §2.2).

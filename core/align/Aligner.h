@@ -6,6 +6,7 @@
 //   - CMU Sphinx's generic US-English triphone model (SphinxAligner), for other speakers.
 // Both can adapt to the recording's speaker first, and both re-align stretches of an alignment
 // while keeping the rest (Realignment).
+#include "align/AlignerChoice.h"
 #include "align/ForcedAligner.h"
 #include "align/SpeakerAdaptation.h"
 #include "audio/Mfcc.h"
@@ -19,7 +20,6 @@
 #include <mutex>
 #include <optional>
 #include <string>
-#include <tuple>
 #include <vector>
 
 namespace lipsync {
@@ -27,31 +27,6 @@ namespace lipsync {
 class AcousticModel;
 class Lexicon;
 class Realignment;
-
-// Which aligner: `model` is "sphinx" or "sphinx:DIR" (CMU Sphinx's model, at its Debian folder
-// or at DIR), the path of an aligner model of ours, or empty for the shipped one
-// ($LIPSYNC_ALIGNER_MODEL, else resources/aligner/grid-s1.aligner).
-struct AlignerChoice
-{
-    std::string model;
-    bool adapt = false; // adapt the model to the recording's speaker first
-    // Our model's word-boundary correction (BoundaryCorrection), when it has one; false: the
-    // HMM's own boundaries, as the paper's aligner (the paper preset, docs/models.md §8).
-    bool boundaryCorrection = true;
-    // Measure AlignerOutput::transcriptFit: a pass over every state for every frame (ours: about
-    // a third more time than the alignment itself; CMU Sphinx's: as long again), asked for by
-    // `lipsync align` and the studio's alignments.
-    bool transcriptFit = false;
-
-    bool isSphinx() const;
-    // With isSphinx(): DIR of "sphinx:DIR", empty for "sphinx" (Debian's folder).
-    std::string sphinxModelDir() const;
-    bool operator<(const AlignerChoice &o) const
-    {
-        return std::tie(model, adapt, boundaryCorrection, transcriptFit)
-               < std::tie(o.model, o.adapt, o.boundaryCorrection, o.transcriptFit);
-    }
-};
 
 struct AlignerOutput
 {

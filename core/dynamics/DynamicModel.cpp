@@ -325,6 +325,13 @@ void DynamicModel::setStateCount(int states)
     m_stateCount = states;
 }
 
+void DynamicModel::setTrainingAligner(std::optional<AlignerChoice> choice)
+{
+    if (choice) // what aligns the speaker, not how one run measured it
+        *choice = AlignerChoice{choice->model, choice->adapt};
+    m_trainingAligner = std::move(choice);
+}
+
 void DynamicModel::checkTrained() const
 {
     if (!isTrained())

@@ -3,6 +3,7 @@
 // labelled sequences, generate the most likely trajectory for a label sequence, stream it where
 // the model allows, and score sequences by their log-likelihood. Parameters are (de)serialised to
 // JSON; ModelFile.h wraps them in the versioned model file.
+#include "align/AlignerChoice.h"
 #include "dynamics/LabelledSequence.h"
 #include "dynamics/ModelKind.h"
 #include "dynamics/StreamingGenerator.h"
@@ -13,6 +14,7 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -67,6 +69,12 @@ public:
     // known, e.g. model files that record none).
     double frameRate() const { return m_frameRate; }
     void setFrameRate(double fps) { m_frameRate = fps > 0 && std::isfinite(fps) ? fps : 0.0; }
+    // The aligner whose phones it was trained on, as the training project chose it
+    // (align/ProjectAligner): new speech for this speaker is aligned the same way when nothing else
+    // says how (`lipsync render`, `export animation`). Only its model and adapt are kept; nullopt:
+    // not recorded (trained from feature files, or by a project that names no aligner).
+    const std::optional<AlignerChoice> &trainingAligner() const { return m_trainingAligner; }
+    void setTrainingAligner(std::optional<AlignerChoice> choice);
 
     // The trajectory for the labels: T x d — the model's most likely one, with the variance
     // compensation applied when the model was trained with it.
@@ -158,6 +166,7 @@ private:
     std::unique_ptr<StreamingGenerator> compensated(std::unique_ptr<StreamingGenerator> inner) const;
     int m_stateCount = PhoneSet::kCount;
     double m_frameRate = 0.0;
+    std::optional<AlignerChoice> m_trainingAligner;
     bool m_compensate = false;
     Eigen::MatrixXd m_meanShift; // setMeanShift()
     double m_priorWeight = 0.0;

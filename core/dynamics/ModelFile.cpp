@@ -118,6 +118,10 @@ void saveModel(const DynamicModel &model, const std::string &path, const std::st
     o[QStringLiteral("dimension")] = model.dimension();
     if (model.frameRate() > 0)
         o[QStringLiteral("frameRate")] = model.frameRate();
+    if (const std::optional<AlignerChoice> &aligner = model.trainingAligner())
+        o[QStringLiteral("aligner")] =
+            QJsonObject{{QStringLiteral("model"), QString::fromStdString(aligner->model)},
+                        {QStringLiteral("adapt"), aligner->adapt}};
     o[QStringLiteral("parameters")] = model.parametersToJson();
     if (const auto *context = dynamic_cast<const ContextDependentModel *>(&model))
         o[QStringLiteral("context")] = context->tree().toJson();
@@ -145,6 +149,11 @@ std::unique_ptr<DynamicModel> loadModel(const std::string &path, const std::stri
                                         std::string *aamId)
 {
     return parseModel(readWholeFile(path), path, expectedAamId, aamId);
+}
+
+std::optional<AlignerChoice> modelTrainingAligner(const std::string &path)
+{
+    return loadModel(path)->trainingAligner();
 }
 
 std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::string &path,
@@ -195,6 +204,15 @@ std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::str
         if (!(fps > 0) || !std::isfinite(fps) || fps > 1000)
             throw Error("must be a number of frames per second in (0, 1000]", path, "frameRate");
         model->setFrameRate(fps);
+    }
+    if (o.contains(QStringLiteral("aligner"))) {
+        const QJsonValue aligner = o.value(QStringLiteral("aligner"));
+        const QJsonValue name = aligner.toObject().value(QStringLiteral("model"));
+        const QJsonValue adapt = aligner.toObject().value(QStringLiteral("adapt"));
+        if (!aligner.isObject() || !name.isString() || !(adapt.isBool() || adapt.isUndefined()))
+            throw Error("must be {\"model\": the aligner's model (empty: the shipped one), \"adapt\": true or false}",
+                        path, "aligner");
+        model->setTrainingAligner(AlignerChoice{name.toString().toStdString(), adapt.toBool(false)});
     }
     if (o.contains(QStringLiteral("compensation"))) {
         const QJsonObject c = o.value(QStringLiteral("compensation")).toObject();

@@ -7,6 +7,8 @@
 // JSON); its parameters are then indexed by the tree's states. A model started from other speakers
 // (§5.4) records the shift its means were moved by and the weight that made it ("prior": {"meanShift": 41 x d, "weight"}). Loading rejects another format or version, an unknown kind, another label
 // set, and (when an AAM id is expected) another AAM, with a lipsync::Error naming the file.
+// "aligner" (optional): {"model", "adapt"}, the aligner whose phones it was trained on
+// (DynamicModel::trainingAligner).
 #include "dynamics/BrandModel.h"
 #include "dynamics/ContextTree.h"
 #include "dynamics/DpdsModel.h"
@@ -15,6 +17,7 @@
 #include "dynamics/SldsModel.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace lipsync {
@@ -69,6 +72,9 @@ void saveModel(const DynamicModel &model, const std::string &path, const std::st
 std::unique_ptr<DynamicModel> loadModel(const std::string &path,
                                         const std::string &expectedAamId = {},
                                         std::string *aamId = nullptr);
+// The aligner the model at `path` was trained with (DynamicModel::trainingAligner); throws as
+// loadModel.
+std::optional<AlignerChoice> modelTrainingAligner(const std::string &path);
 // The same from the file's text; `pathForErrors` only names the source in errors.
 std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::string &pathForErrors,
                                          const std::string &expectedAamId = {},

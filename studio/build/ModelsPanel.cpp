@@ -2,6 +2,7 @@
 
 #include "aam/AamModel.h"
 #include "animation/MouthMeasures.h"
+#include "align/ProjectAligner.h"
 #include "animation/MouthShapePrior.h"
 #include "context/ErrorReporter.h"
 #include "context/ModelKinds.h"
@@ -467,6 +468,8 @@ QList<Task *> ModelsPanel::train()
         double weight = 0.0;
     };
     const auto priorShift = prior ? std::make_shared<PriorShift>() : nullptr;
+    // Recorded in each model: new speech for this speaker is aligned as its phones were.
+    const std::optional<AlignerChoice> aligner = projectAlignerChoice(m_context->document()->project());
 
     // What a trained model records as its AAM: the content identifier of the project's AAM, which
     // `lipsync render` and the preview check against whichever AAM file they are given.
@@ -484,7 +487,7 @@ QList<Task *> ModelsPanel::train()
         QPointer<ModelsPanel> self(this);
         Task *task = m_context->taskRunner()->start(
             tr("Train %1").arg(name),
-            [self, kind, name, file, data, options, aamId, prior, project, aam, priorShift](Feedback &feedback) -> TaskRunner::Commit {
+            [self, kind, name, file, data, options, aamId, prior, project, aam, priorShift, aligner](Feedback &feedback) -> TaskRunner::Commit {
                 feedback.setStatus(tr("Training %1 on %n sequence(s)…", "", int(data->size())).arg(name).toStdString());
                 ModelOptions own = options;
                 if (prior && modelKindTakesPrior(*parseModelKind(kind.toStdString()))) {
@@ -498,6 +501,7 @@ QList<Task *> ModelsPanel::train()
                 std::shared_ptr<DynamicModel> model = createDynamicModel(kind.toStdString(), own);
                 const auto start = std::chrono::steady_clock::now();
                 model->train(*data, feedback);
+                model->setTrainingAligner(aligner);
                 const double seconds =
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 long long frames = 0;

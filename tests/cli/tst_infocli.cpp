@@ -207,6 +207,7 @@ private slots:
         QVERIFY(m[QStringLiteral("phones_in_context")].toBool());
         QVERIFY(m[QStringLiteral("states")].toInt() > 41); // the trees' tied states
         QCOMPARE(m[QStringLiteral("aam")].toString(), QString::fromStdString(model.identifier));
+        QCOMPARE(m[QStringLiteral("aligner")].toString(), QStringLiteral("shipped")); // the demo's, GRID s1's
         // A model file cut short is named, not probed as media.
         QFile whole(file), cut(dir.filePath(QStringLiteral("cut.model")));
         QVERIFY(whole.open(QIODevice::ReadOnly) && cut.open(QIODevice::WriteOnly));

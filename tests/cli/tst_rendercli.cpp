@@ -2,7 +2,8 @@
 // --project`), a demo clip and its transcript -> an MP4 read back with MediaInfo (H.264 + AAC,
 // frame count, duration within one frame of the sound); side by side; bad input (media without
 // sound, a transcript that cannot fit, an unwritable output) gives one line naming the file and
-// leaves no output file. The aligner is chosen as for `lipsync align` (--aligner sphinx).
+// leaves no output file. The aligner is chosen as for `lipsync align` (--aligner sphinx), else as
+// the model records its training phones were aligned.
 #include "CliRun.h"
 
 #include "aam/AamModel.h"
@@ -36,6 +37,12 @@ const QString kTranscript = kDemo + "/media/bbaf2n.align";
 const QString kOtherTranscript = kDemo + "/media/lrik4p.align"; // shares none of bbaf2n's words
 const QString kAam = kDemo + "/aam/demo.aam";
 
+QByteArray readFile(const QString &path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
 } // namespace
 
 class TestRenderCli : public QObject
@@ -61,6 +68,34 @@ private slots:
         // Trained from a project, the model records the content identifier of the project's AAM.
         QCOMPARE(parseJsonObject(train.out).value("aam").toString().toStdString(),
                  AamModel::load(kAam.toStdString()).identifier);
+        // ... and the aligner its phones came from: the demo project's, the shipped GRID s1 model.
+        QVERIFY(readFile(m_model).contains(R"("aligner":{"adapt":false,"model":""})"));
+    }
+
+    // Without --aligner, new speech is aligned as the model's training phones were (its file
+    // records it): the project's or the background project's choice wins, a recorded aligner model
+    // of the speaker's that is gone gives way to CMU Sphinx adapted, and a note says so.
+    void alignsAsTheModelWasTrained()
+    {
+        const QString gone = m_dir.filePath("gone.model");
+        QByteArray text = readFile(m_model);
+        text.replace(R"("aligner":{"adapt":false,"model":""})", R"("aligner":{"adapt":false,"model":"/gone/me.aligner"})");
+        QFile file(gone);
+        QVERIFY(file.open(QIODevice::WriteOnly) && file.write(text) == text.size());
+        file.close();
+        const QString out = m_dir.filePath("as-trained.mp4");
+        QStringList args = renderArgs(kClip, kTranscript, out) << "--json";
+        args[args.indexOf(m_model)] = gone;
+        const Run project = runLipsync(QStringList(args) << "--project" << kDemo);
+        QVERIFY2(project.exitCode == 0, project.err.constData());
+        QVERIFY(parseJsonObject(project.out).value("aligner").toString().endsWith("grid-s1.aligner"));
+        QVERIFY(!project.err.contains("note:"));
+        if (!lipsync::SphinxAligner::available())
+            QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");
+        const Run own = runLipsync(args);
+        QVERIFY2(own.exitCode == 0, own.err.constData());
+        QVERIFY2(own.err.contains("/gone/me.aligner, which is not there"), own.err.constData());
+        QVERIFY(parseJsonObject(own.out).value("aligner").toString().startsWith("sphinx:"));
     }
 
     // A model that names another AAM is refused, naming the model file.

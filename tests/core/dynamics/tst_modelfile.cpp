@@ -38,6 +38,16 @@ std::vector<LabelledSequence> data(unsigned seed = 1, int d = 3)
 class TestModelFile : public QObject
 {
     Q_OBJECT
+
+    // An HMM-mean model trained on the synthetic sequences.
+    static HmmMeanModel trainedHmm()
+    {
+        HmmMeanModel model;
+        Feedback feedback;
+        model.train(data(), feedback);
+        return model;
+    }
+
 private slots:
     // The ids are the model files' and the CLI's vocabulary: fixed, each parsed back to its kind,
     // and the factory builds a model that reports it.
@@ -220,11 +230,48 @@ private slots:
         QVERIFY(readWholeFile(path).find("frameRate") == std::string::npos);
     }
 
+    // The aligner a model's phones came from is read back as written (its model and adapt only),
+    // absent when not recorded, and a malformed record is named.
+    void trainingAlignerIsRecorded()
+    {
+        HmmMeanModel model = trainedHmm();
+        QTemporaryDir dir;
+        const std::string path = dir.filePath(QStringLiteral("m.json")).toStdString();
+        saveModel(model, path, "aam");
+        QVERIFY(!modelTrainingAligner(path));
+        QVERIFY(readWholeFile(path).find("aligner") == std::string::npos);
+
+        AlignerChoice generic{"sphinx", true};
+        generic.transcriptFit = true; // how one alignment measured, not whose aligner: not kept
+        model.setTrainingAligner(generic);
+        QVERIFY(!model.trainingAligner()->transcriptFit);
+        saveModel(model, path, "aam");
+        const std::optional<AlignerChoice> read = modelTrainingAligner(path);
+        QVERIFY(read && read->model == "sphinx" && read->adapt);
+        for (const std::string own : {std::string("/projects/me/aligner/me.aligner"), std::string()}) {
+            model.setTrainingAligner(AlignerChoice{own, false});
+            saveModel(model, path, "aam");
+            const std::optional<AlignerChoice> back = loadModel(path)->trainingAligner();
+            QVERIFY(back && back->model == own && !back->adapt);
+        }
+
+        const std::string text = readWholeFile(path);
+        for (const std::string bad : {std::string("\"aligner\":\"sphinx\""),
+                                      std::string("\"aligner\":{\"adapt\":true}"),
+                                      std::string("\"aligner\":{\"model\":\"sphinx\",\"adapt\":1}")}) {
+            std::string t = text;
+            const size_t from = t.find("\"aligner\":");
+            const size_t to = t.find('}', from) + 1;
+            t.replace(from, to - from, bad);
+            writeFileAtomically(path, t);
+            const std::string e = errorOf([&] { loadModel(path); });
+            QVERIFY2(e.find("aligner") != std::string::npos && e.find(path) != std::string::npos, e.c_str());
+        }
+    }
+
     void rejectsOtherVersionAamAndLabels()
     {
-        HmmMeanModel model;
-        Feedback feedback;
-        model.train(data(), feedback);
+        HmmMeanModel model = trainedHmm();
         QTemporaryDir dir;
         const std::string path = dir.filePath(QStringLiteral("m.json")).toStdString();
         saveModel(model, path, "aam-A");
