@@ -161,7 +161,7 @@ const CommandRegistration registration{
           QStringLiteral("the words spoken (.align, .lab, .txt, a TextGrid words tier, or .srt/.vtt subtitles)"), {}, CommandOption::Required},
          {QStringLiteral("background"), QStringLiteral("VIDEO|PROJECT"),
           QStringLiteral("a video of the person to render the new speech into (or a project: its longest "
-                         "recording), played in runs with cuts where the head's motion allows for as long as the "
+                         "recording, and its aligner and pronunciations unless --project), played in runs with cuts where the head's motion allows for as long as the "
                          "speech lasts (default: the media's own frames)")},
          {QStringLiteral("side-by-side"), {}, QStringLiteral("the real clip left, the generated face right")},
          {QStringLiteral("fps"), QStringLiteral("RATE"),

@@ -90,6 +90,9 @@ private slots:
         QVERIFY2(project.exitCode == 0, project.err.constData());
         QVERIFY(parseJsonObject(project.out).value("aligner").toString().endsWith("grid-s1.aligner"));
         QVERIFY(!project.err.contains("note:"));
+        const Run background = runLipsync(QStringList(args) << "--background" << kDemo);
+        QVERIFY2(background.exitCode == 0, background.err.constData());
+        QVERIFY(parseJsonObject(background.out).value("aligner").toString().endsWith("grid-s1.aligner"));
         if (!lipsync::SphinxAligner::available())
             QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");
         const Run own = runLipsync(args);
