@@ -57,6 +57,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <map>
 #include <memory>
 #include <random>
@@ -174,10 +175,12 @@ AlignmentResult alignUtterance(const AcousticModel &model, const Eigen::MatrixXf
                                const std::vector<std::string> &words,
                                const std::vector<std::vector<Pronunciation>> &pronunciations, double duration, bool adapt)
 {
-    AlignmentResult r = adapt ? ForcedAligner(SpeakerAdaptation::adapt(model, pronunciations, features))
-                                    .align(features, words, pronunciations, duration)
-                              : ForcedAligner(model).align(features, words, pronunciations, duration);
-    model.boundaryCorrection().apply(r); // as MonophoneAligner does
+    std::optional<AcousticModel> adapted;
+    if (adapt)
+        adapted = SpeakerAdaptation::adapt(model, pronunciations, features);
+    const AcousticModel &used = adapted ? *adapted : model;
+    AlignmentResult r = ForcedAligner(used).align(features, words, pronunciations, duration);
+    used.boundaryCorrection().apply(r); // as MonophoneAligner does: none once adapted
     return r;
 }
 

@@ -108,7 +108,8 @@ AlignerOutput MonophoneAligner::align(const RecordingSound &sound, const std::ve
     if (m_measureFit)
         if (const double fit = transcriptFit(p.modelOr(m_model), p.utterance.features, out.alignment); std::isfinite(fit))
             out.transcriptFit = TranscriptFit{fit, kTranscriptFitThreshold};
-    m_model.boundaryCorrection().apply(out.alignment);
+    // The model's correction, none once adapted to the recording's speaker (SpeakerAdaptation).
+    p.modelOr(m_model).boundaryCorrection().apply(out.alignment);
     return out;
 }
 
@@ -162,7 +163,7 @@ AlignerOutput MonophoneAligner::realign(const std::string &mediaPath, const Real
     std::vector<double> fixed;
     for (const FixedBoundary &b : realignment.fixed())
         fixed.push_back(b.time);
-    m_model.boundaryCorrection().apply(out.alignment, fixed);
+    p.modelOr(m_model).boundaryCorrection().apply(out.alignment, fixed);
     return out;
 }
 

