@@ -57,9 +57,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <optional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <random>
 #include <mutex>
 #include <numeric>

@@ -47,8 +47,8 @@ class SpeakerAdaptation
 public:
     // The model adapted to one utterance (`features` as the model computes them, the words'
     // pronunciations as for ForcedAligner), without the model's word-boundary correction (its
-    // own speaker's; `aligner calibrate` learns the adapted speaker's). Throws lipsync::Error if the transcript cannot fit;
-    // `feedback` (optional) is checked for cancel before every pass.
+    // own speaker's; `aligner calibrate` learns the adapted speaker's). Throws lipsync::Error if
+    // the transcript cannot fit; `feedback` (optional) is checked for cancel before every pass.
     static AcousticModel adapt(const AcousticModel &model, const std::vector<std::vector<Pronunciation>> &pronunciations,
                                const Eigen::MatrixXf &features, const AdaptationOptions &options = {},
                                Feedback &feedback = Feedback::none(), AdaptationReport *report = nullptr);
