@@ -6,7 +6,8 @@
 // the generic aligner the new project names (Align All), Brand is trained from other speakers'
 // mouths (Models ▸ Train, Start from other speakers), faces are generated for new speech into the
 // person's own video (Generate from Speech) and exported (File ▸ Export ▸ Generated Video): an MP4
-// with picture and the new sound, as long as that sound. Everything is saved and reads back.
+// with picture and the new sound, as long as that sound. Everything is saved and reads back, the
+// model recording the aligner of its phones.
 #include "DemoWindow.h"
 
 #include "align/ProjectAligner.h"
@@ -16,6 +17,7 @@
 #include "build/ModelsPanel.h"
 #include "context/ModelKinds.h"
 #include "context/ModelStore.h"
+#include "dynamics/ModelFile.h"
 #include "export/ExportMenu.h"
 #include "io/MediaInfo.h"
 #include "preview/PreviewPanel.h"
@@ -178,6 +180,10 @@ private slots:
         QCOMPARE(int(saved.sequences.size()), 2);
         QVERIFY(saved.aam());
         QVERIFY(saved.model("brand"));
+        // The model records whose aligner made its phones (the project's: CMU Sphinx adapted), so
+        // `lipsync render` given only the model aligns new speech for this person the same way.
+        const std::optional<AlignerChoice> aligner = modelTrainingAligner(saved.resolve(saved.model("brand")->file));
+        QVERIFY(aligner && aligner->model == "sphinx" && aligner->adapt);
     }
 };
 
