@@ -67,11 +67,12 @@ AnimationSource readSource(const CommandLine &args)
     request.aamPath = aamPath;
     request.aam = source.aam;
     request.pronunciations = source.project.pronunciations;
-    const SpeechAligner aligner(args, args.value("project"), false, 0, modelTrainingAligner(request.modelPath));
+    const SpeechAligner aligner(args, args.value("project"), true, 0, modelTrainingAligner(request.modelPath));
     const Transcript transcript = readTranscript(request.transcriptPath);
     const RecordingSound sound(request.mediaPath); // decoded once for the aligner and the result
     sound.own();
-    const AlignerOutput aligned = aligner.align(sound, transcript.words, args.value("transcript"));
+    QString alignerName; // in any voice, as render
+    const AlignerOutput aligned = aligner.alignAnyVoice(sound, transcript.words, args.value("transcript"), &alignerName);
     Feedback feedback;
     source.track = mouthTrackOfGenerated(measurer, generateFromAlignment(request, aligned, sound, feedback));
     return source;

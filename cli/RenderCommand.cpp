@@ -80,19 +80,14 @@ int runRender(const CommandLine &args)
     // The sound decoded once, at its own rate, for the video; the aligner resamples it.
     const RecordingSound sound(request.mediaPath);
     sound.own();
-    const AlignerOutput aligned = aligner.align(sound, transcript.words, args.value("transcript"));
-    // Words that are not the sound's give lips that do not match it: said, the render still made.
-    // With the default aligner, a speaker other than its own misfits as well: the way out is named.
-    if (transcriptMisfit(aligned.transcriptFit))
-        std::fprintf(stderr, "lipsync: warning: %s: %s: the lips will not match the sound%s\n",
-                     qPrintable(args.value("transcript")), aligned.transcriptFit->reason().c_str(),
-                     args.isSet("aligner") ? ""
-                                           : " (if the speaker is not the default aligner's, GRID s1's, align with "
-                                             "--aligner sphinx --adapt)");
+    // In any voice (another than the aligner's speaker's is aligned again by the generic model);
+    // words that are not the sound's give lips that do not match it: said, the render still made.
+    QString alignerName;
+    const AlignerOutput aligned = aligner.alignAnyVoice(sound, transcript.words, args.value("transcript"), &alignerName);
     Feedback feedback;
     SpeechVideoReport report;
     report.generated = generateFromAlignment(request, aligned, sound, feedback);
-    report.generated.alignerModelPath = aligner.modelName().toStdString();
+    report.generated.alignerModelPath = alignerName.toStdString();
     report.generated.seconds = timer.elapsed() / 1000.0;
     timer.restart();
     const auto renderer = makeRenderer(report.generated, request.mediaPath, feedback);

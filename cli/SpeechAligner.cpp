@@ -51,6 +51,7 @@ SpeechAligner::SpeechAligner(const CommandLine &args, const QString &projectFold
                              double recordingSeconds, const std::optional<AlignerChoice> &modelsAligner)
 {
     AlignerChoice choice{args.value(QStringLiteral("aligner")).toStdString(), args.isSet(QStringLiteral("adapt"))};
+    m_asked = args.isSet(QStringLiteral("aligner"));
     choice.boundaryCorrection = !args.isSet(QStringLiteral("no-boundary-correction"));
     choice.transcriptFit = transcriptFit;
     bool said = !choice.model.empty(); // --aligner, then the project, then the model
@@ -81,6 +82,7 @@ SpeechAligner::SpeechAligner(const CommandLine &args, const QString &projectFold
     m_shippedForLong = fallBackForLongRecording(choice, recordingSeconds);
     if (!choice.isSphinx())
         choice.model = alignerModelOrDefault(QString::fromStdString(choice.model), args.spec().name).toStdString();
+    m_choice = choice;
     m_aligner = createAligner(choice);
     m_lexicon = makeLexicon(args.value(QStringLiteral("pronunciations")), projectPronunciations);
 }
@@ -103,6 +105,25 @@ AlignerOutput SpeechAligner::align(const RecordingSound &sound, const std::vecto
                                    const QString &transcriptPath, Feedback &feedback) const
 {
     return m_aligner->align(sound, words, *m_lexicon, feedback, transcriptPath.toStdString());
+}
+
+AlignerOutput SpeechAligner::alignAnyVoice(const RecordingSound &sound, const std::vector<std::string> &words,
+                                           const QString &transcriptPath, QString *name) const
+{
+    VoiceAlignment aligned = lipsync::alignAnyVoice(*m_aligner, m_choice, m_asked, sound, words, *m_lexicon,
+                                                    Feedback::none(), transcriptPath.toStdString());
+    if (aligned.generic)
+        std::fprintf(stderr,
+                     "lipsync: note: %s: the words misfit the voice with %s (fit %.2f); CMU Sphinx's generic model "
+                     "adapted to the recording fits them (%.2f): aligned with it\n",
+                     qPrintable(transcriptPath), qPrintable(modelName()), aligned.chosenFit->value,
+                     aligned.output.transcriptFit->value);
+    else if (transcriptMisfit(aligned.output.transcriptFit))
+        std::fprintf(stderr, "lipsync: warning: %s: %s: the mouth will not match the sound%s\n",
+                     qPrintable(transcriptPath), aligned.output.transcriptFit->reason().c_str(),
+                     aligned.genericTried() ? " (with CMU Sphinx's generic model adapted to the voice too)" : "");
+    *name = QString::fromStdString(aligned.aligner);
+    return std::move(aligned.output);
 }
 
 } // namespace lipsync::cli

@@ -58,10 +58,21 @@ public:
     AlignerOutput align(const RecordingSound &sound, const std::vector<std::string> &words,
                         const QString &transcriptPath, Feedback &feedback = Feedback::none()) const;
 
+    // align() for new speech in any voice (render, export animation; with transcriptFit), as
+    // align/ProjectAligner's alignAnyVoice: the model --aligner did not name gives way to CMU
+    // Sphinx's generic model adapted to the recording when the words misfit the voice and fit that
+    // (a note on stderr says so). Words that fit neither are likely not the recording's: a warning
+    // on stderr says so, and the alignment is returned all the same. `name` receives the aligner
+    // used (Aligner::name).
+    AlignerOutput alignAnyVoice(const RecordingSound &sound, const std::vector<std::string> &words,
+                                const QString &transcriptPath, QString *name) const;
+
 private:
     std::unique_ptr<Aligner> m_aligner;
     std::unique_ptr<Lexicon> m_lexicon;
     bool m_shippedForLong = false;
+    AlignerChoice m_choice;
+    bool m_asked = false; // --aligner chose the model
 };
 
 } // namespace lipsync::cli

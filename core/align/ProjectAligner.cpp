@@ -2,6 +2,7 @@
 
 #include "align/AlignerUtterance.h"
 #include "align/LongAlignment.h"
+#include "align/SphinxAligner.h"
 #include "project/Project.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
@@ -29,6 +30,35 @@ std::optional<AlignerChoice> projectAlignerChoice(const Project &project)
     if (project.aligner == Project::kBuiltinAligner)
         return choice;
     return std::nullopt;
+}
+
+VoiceAlignment alignAnyVoice(const Aligner &chosen, const AlignerChoice &choice, bool named,
+                             const RecordingSound &sound, const std::vector<std::string> &words,
+                             const Lexicon &lexicon, Feedback &feedback, const std::string &transcriptPath)
+{
+    VoiceAlignment result;
+    result.output = chosen.align(sound, words, lexicon, feedback, transcriptPath);
+    result.aligner = chosen.name();
+    if (!transcriptMisfit(result.output.transcriptFit) || named || choice.isSphinx() || !SphinxAligner::available())
+        return result;
+    AlignerChoice generic{"sphinx", true};
+    generic.transcriptFit = true;
+    AlignerOutput again;
+    std::string name;
+    try {
+        const std::unique_ptr<Aligner> aligner = createAligner(generic);
+        again = aligner->align(sound, words, lexicon, feedback, transcriptPath);
+        name = aligner->name();
+    } catch (const Error &) {
+        return result; // beyond what it aligns (a recording too long for it): the first stands
+    }
+    result.chosenFit = result.output.transcriptFit;
+    if (again.transcriptFit && !again.transcriptFit->misfit()) {
+        result.output = std::move(again);
+        result.aligner = std::move(name);
+        result.generic = true;
+    }
+    return result;
 }
 
 bool fallBackForLongRecording(AlignerChoice &choice, double seconds)

@@ -30,6 +30,23 @@ std::string projectAlignerModel(const Project &project);
 // (alignLongRecording). True when `choice` was changed.
 bool fallBackForLongRecording(AlignerChoice &choice, double seconds);
 
+// New speech in any voice (render, export animation, the studio's Generate from Speech): aligned by
+// `chosen`, made from `choice` with its transcript fit measured. A model of one speaker's voice (ours;
+// the shipped one is GRID s1's) misfits another voice as it misfits other words: when the words
+// misfit it and the user did not name it (`named`), CMU Sphinx's generic model adapted to the
+// recording aligns them again, and that alignment is kept when they fit it.
+struct VoiceAlignment
+{
+    AlignerOutput output;
+    std::string aligner;                      // Aligner::name of the aligner kept
+    bool generic = false;                     // the generic model's alignment replaced the first
+    std::optional<TranscriptFit> chosenFit;   // the first alignment's fit, when the generic model was tried
+    bool genericTried() const { return chosenFit.has_value(); }
+};
+VoiceAlignment alignAnyVoice(const Aligner &chosen, const AlignerChoice &choice, bool named,
+                             const RecordingSound &sound, const std::vector<std::string> &words,
+                             const Lexicon &lexicon, Feedback &feedback, const std::string &transcriptPath = {});
+
 // The project's sequences with a transcript, as utterances to adapt or train an aligner of the
 // speaker's own on (SpeakerAdaptation, AlignerTrainer): decoded, their features as `model`
 // computes them and their words pronounced by `lexicon`. Those that cannot be used (no sound,

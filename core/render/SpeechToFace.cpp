@@ -2,6 +2,7 @@
 
 #include "align/FrameLabels.h"
 #include "align/Lexicon.h"
+#include "align/ProjectAligner.h"
 #include "align/PronunciationDictionary.h"
 #include "dynamics/ModelFile.h"
 #include "io/MediaInfo.h"
@@ -158,7 +159,6 @@ SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedba
     const std::shared_ptr<const Aligner> aligner =
         request.loadedAligner ? request.loadedAligner : std::shared_ptr<const Aligner>(createAligner(request.aligner));
     SpeechToFaceResult result;
-    result.alignerModelPath = aligner->name();
     const std::vector<std::string> words = request.words ? *request.words : readTranscript(request.transcriptPath).words;
     feedback.throwIfCanceled();
     feedback.setProgress(0.1);
@@ -168,7 +168,12 @@ SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedba
     const RecordingSound sound(request.mediaPath);
     sound.own();
     Feedback aligning(feedback, 0.1, 0.8);
-    const AlignerOutput aligned = aligner->align(sound, words, lexicon, aligning, request.transcriptPath);
+    // In any voice: the project's aligner gives way to the generic model where it misfits the voice.
+    const VoiceAlignment voice =
+        alignAnyVoice(*aligner, request.aligner, false, sound, words, lexicon, aligning, request.transcriptPath);
+    const AlignerOutput &aligned = voice.output;
+    result.alignerModelPath = voice.aligner;
+    result.voiceRealigned = voice.generic;
     feedback.throwIfCanceled();
     feedback.setProgress(0.8);
     labelAndGenerate(request, in, sound, aligned, result, feedback);

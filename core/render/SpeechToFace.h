@@ -70,6 +70,9 @@ struct SpeechToFaceResult
     std::shared_ptr<const AamModel> aam; // FaceRenderers made for this result refer to it
     std::string modelKind;        // the model's kind id (dynamics/ModelKind.h)
     std::string alignerModelPath; // the aligner used (Aligner::name)
+    // The request's aligner misfit the voice and CMU Sphinx's generic model aligned it instead
+    // (align/ProjectAligner's alignAnyVoice; generateFromSpeech).
+    bool voiceRealigned = false;
     Tier words{"words", {}};      // forced alignment
     Tier phones{"phones", {}};
     double frameRate = 25.0;

@@ -599,6 +599,7 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
     }
     // The aligner the timeline aligns with (ModelStore), loaded once for both.
     request.aligner = m_context->modelStore()->alignerChoice();
+    request.aligner.transcriptFit = true; // another voice than its speaker's is aligned again (alignAnyVoice)
     const std::shared_ptr<AlignerCache> aligners = m_context->modelStore()->aligners();
     const QString title = QFileInfo(mediaPath).fileName();
     const std::string words = transcript.toStdString();
@@ -639,6 +640,10 @@ void PreviewPanel::showSpeech(std::shared_ptr<GeneratedFaces> faces, std::shared
     m_speech = std::move(faces);
     m_speechFrame = 0;
     m_showingSpeech = true;
+    if (result->voiceRealigned)
+        m_context->showStatus(tr("The words did not fit this voice with the timeline's aligner: aligned with CMU "
+                                 "Sphinx's generic model adapted to the recording"),
+                              15000);
     // The context holds the result (what exports and the timeline show); the panel its faces.
     m_context->setShownSpeech(std::move(result), title);
     layoutPanels();

