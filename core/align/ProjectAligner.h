@@ -1,7 +1,8 @@
 #pragma once
 // Which forced aligner aligns a project's speech: one rule for the CLI (cli/SpeechAligner) and the
-// studio's Speech menu (TimelinePanel), and one rule for recordings longer than CMU Sphinx aligns
-// (`project import-long`, the studio's Import Long Recording).
+// studio's Speech menu (TimelinePanel), one rule for recordings longer than CMU Sphinx aligns
+// (`project import-long`, the studio's Import Long Recording), and one for new speech in another
+// voice than the aligner's speaker's (render, export animation, Generate from Speech).
 #include "align/Aligner.h"
 #include "align/AlignerTrainer.h"
 
