@@ -71,8 +71,7 @@ AnimationSource readSource(const CommandLine &args)
     const Transcript transcript = readTranscript(request.transcriptPath);
     const RecordingSound sound(request.mediaPath); // decoded once for the aligner and the result
     sound.own();
-    QString alignerName; // in any voice, as render
-    const AlignerOutput aligned = aligner.alignAnyVoice(sound, transcript.words, args.value("transcript"), &alignerName);
+    const AlignerOutput aligned = aligner.alignAnyVoice(sound, transcript.words, args.value("transcript")); // as render
     Feedback feedback;
     source.track = mouthTrackOfGenerated(measurer, generateFromAlignment(request, aligned, sound, feedback));
     return source;

@@ -122,7 +122,8 @@ AlignerOutput SpeechAligner::alignAnyVoice(const RecordingSound &sound, const st
         std::fprintf(stderr, "lipsync: warning: %s: %s: the mouth will not match the sound%s\n",
                      qPrintable(transcriptPath), aligned.output.transcriptFit->reason().c_str(),
                      aligned.genericTried() ? " (with CMU Sphinx's generic model adapted to the voice too)" : "");
-    *name = QString::fromStdString(aligned.aligner);
+    if (name)
+        *name = QString::fromStdString(aligned.aligner);
     return std::move(aligned.output);
 }
 

@@ -62,10 +62,10 @@ public:
     // align/ProjectAligner's alignAnyVoice: the model --aligner did not name gives way to CMU
     // Sphinx's generic model adapted to the recording when the words misfit the voice and fit that
     // (a note on stderr says so). Words that fit neither are likely not the recording's: a warning
-    // on stderr says so, and the alignment is returned all the same. `name` receives the aligner
-    // used (Aligner::name).
+    // on stderr says so, and the alignment is returned all the same. `name` (optional) receives
+    // the aligner used (Aligner::name).
     AlignerOutput alignAnyVoice(const RecordingSound &sound, const std::vector<std::string> &words,
-                                const QString &transcriptPath, QString *name) const;
+                                const QString &transcriptPath, QString *name = nullptr) const;
 
 private:
     std::unique_ptr<Aligner> m_aligner;

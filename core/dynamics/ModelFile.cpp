@@ -151,19 +151,16 @@ std::unique_ptr<DynamicModel> loadModel(const std::string &path, const std::stri
     return parseModel(readWholeFile(path), path, expectedAamId, aamId);
 }
 
-std::optional<AlignerChoice> modelTrainingAligner(const std::string &path)
-{
-    return loadModel(path)->trainingAligner();
-}
+namespace {
 
-std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::string &path,
-                                         const std::string &expectedAamId, std::string *aamId)
+// The file's JSON object, once it is a model file of this version.
+QJsonObject modelFileObject(const std::string &text, const std::string &path)
 {
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(QByteArray::fromStdString(text), &parseError);
     if (doc.isNull() || !doc.isObject())
         throw Error("not a model file (" + parseError.errorString().toStdString() + ")", path);
-    const QJsonObject o = doc.object();
+    QJsonObject o = doc.object();
     if (o.value(QStringLiteral("format")).toString() != QLatin1String(kModelFileFormat))
         throw Error("not a lipsync dynamic model file", path, "format");
     const QJsonValue version = o.value(QStringLiteral("version"));
@@ -172,6 +169,35 @@ std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::str
                         + " is not supported (this build reads version "
                         + std::to_string(kModelFileVersion) + ")",
                     path, "version");
+    return o;
+}
+
+// "aligner" of a model file's object; nullopt when it records none.
+std::optional<AlignerChoice> trainingAlignerOf(const QJsonObject &o, const std::string &path)
+{
+    if (!o.contains(QStringLiteral("aligner")))
+        return std::nullopt;
+    const QJsonValue aligner = o.value(QStringLiteral("aligner"));
+    const QJsonValue name = aligner.toObject().value(QStringLiteral("model"));
+    const QJsonValue adapt = aligner.toObject().value(QStringLiteral("adapt"));
+    if (!aligner.isObject() || !name.isString() || !(adapt.isBool() || adapt.isUndefined()))
+        throw Error("must be {\"model\": the aligner's model (empty: the shipped one), \"adapt\": true or false}",
+                    path, "aligner");
+    return AlignerChoice{name.toString().toStdString(), adapt.toBool(false)};
+}
+
+} // namespace
+
+std::optional<AlignerChoice> modelTrainingAligner(const std::string &path)
+{
+    // The record alone: the parameters are read where the model is used.
+    return trainingAlignerOf(modelFileObject(readWholeFile(path), path), path);
+}
+
+std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::string &path,
+                                         const std::string &expectedAamId, std::string *aamId)
+{
+    const QJsonObject o = modelFileObject(text, path);
     const std::string aam = o.value(QStringLiteral("aam")).toString().toStdString();
     if (!expectedAamId.empty() && !modelFitsAam(aam, expectedAamId))
         throw Error("the model was trained for AAM '" + aam + "', not for AAM '" + expectedAamId + "'",
@@ -205,15 +231,7 @@ std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::str
             throw Error("must be a number of frames per second in (0, 1000]", path, "frameRate");
         model->setFrameRate(fps);
     }
-    if (o.contains(QStringLiteral("aligner"))) {
-        const QJsonValue aligner = o.value(QStringLiteral("aligner"));
-        const QJsonValue name = aligner.toObject().value(QStringLiteral("model"));
-        const QJsonValue adapt = aligner.toObject().value(QStringLiteral("adapt"));
-        if (!aligner.isObject() || !name.isString() || !(adapt.isBool() || adapt.isUndefined()))
-            throw Error("must be {\"model\": the aligner's model (empty: the shipped one), \"adapt\": true or false}",
-                        path, "aligner");
-        model->setTrainingAligner(AlignerChoice{name.toString().toStdString(), adapt.toBool(false)});
-    }
+    model->setTrainingAligner(trainingAlignerOf(o, path));
     if (o.contains(QStringLiteral("compensation"))) {
         const QJsonObject c = o.value(QStringLiteral("compensation")).toObject();
         try {

@@ -72,8 +72,8 @@ void saveModel(const DynamicModel &model, const std::string &path, const std::st
 std::unique_ptr<DynamicModel> loadModel(const std::string &path,
                                         const std::string &expectedAamId = {},
                                         std::string *aamId = nullptr);
-// The aligner the model at `path` was trained with (DynamicModel::trainingAligner); throws as
-// loadModel.
+// The aligner the model at `path` was trained with (DynamicModel::trainingAligner), read without
+// the parameters; throws as loadModel for a file that is not a model file or a malformed record.
 std::optional<AlignerChoice> modelTrainingAligner(const std::string &path);
 // The same from the file's text; `pathForErrors` only names the source in errors.
 std::unique_ptr<DynamicModel> parseModel(const std::string &text, const std::string &pathForErrors,

@@ -1,8 +1,8 @@
 #include "build/ModelsPanel.h"
 
 #include "aam/AamModel.h"
-#include "animation/MouthMeasures.h"
 #include "align/ProjectAligner.h"
+#include "animation/MouthMeasures.h"
 #include "animation/MouthShapePrior.h"
 #include "context/ErrorReporter.h"
 #include "context/ModelKinds.h"
