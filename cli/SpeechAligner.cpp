@@ -75,8 +75,7 @@ SpeechAligner::SpeechAligner(const CommandLine &args, const QString &projectFold
                          "lipsync: note: the model was trained on phones of the aligner %s, which is not there: "
                          "aligning with CMU Sphinx's generic model adapted to the speaker\n",
                          choice.model.c_str());
-            choice.model = "sphinx";
-            choice.adapt = true;
+            choice.useGenericAdapted();
         }
     }
     m_shippedForLong = fallBackForLongRecording(choice, recordingSeconds);

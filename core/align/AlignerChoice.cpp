@@ -13,6 +13,12 @@ bool AlignerChoice::isSphinx() const
     return model == kSphinx || model.rfind(std::string(kSphinx) + ":", 0) == 0;
 }
 
+void AlignerChoice::useGenericAdapted()
+{
+    model = kSphinx;
+    adapt = true;
+}
+
 std::string AlignerChoice::sphinxModelDir() const
 {
     const size_t prefix = std::string(kSphinx).size() + 1; // "sphinx:"

@@ -22,6 +22,9 @@ struct AlignerChoice
     bool transcriptFit = false;
 
     bool isSphinx() const;
+    // CMU Sphinx's generic model at Debian's folder, adapted to the recording's speaker: the
+    // aligner for a speaker no model of ours knows. The other fields are kept.
+    void useGenericAdapted();
     // With isSphinx(): DIR of "sphinx:DIR", empty for "sphinx" (Debian's folder).
     std::string sphinxModelDir() const;
     bool operator<(const AlignerChoice &o) const

@@ -23,8 +23,7 @@ std::optional<AlignerChoice> projectAlignerChoice(const Project &project)
         return choice;
     }
     if (project.aligner == Project::kGenericAligner) {
-        choice.model = "sphinx";
-        choice.adapt = true;
+        choice.useGenericAdapted();
         return choice;
     }
     if (project.aligner == Project::kBuiltinAligner)
@@ -41,7 +40,8 @@ VoiceAlignment alignAnyVoice(const Aligner &chosen, const AlignerChoice &choice,
     result.aligner = chosen.name();
     if (!transcriptMisfit(result.output.transcriptFit) || named || choice.isSphinx() || !SphinxAligner::available())
         return result;
-    AlignerChoice generic{"sphinx", true};
+    AlignerChoice generic;
+    generic.useGenericAdapted();
     generic.transcriptFit = true;
     AlignerOutput again;
     std::string name;
