@@ -42,4 +42,10 @@ std::shared_ptr<const Aligner> AlignerCache::get(const AlignerChoice &choice)
     return slot;
 }
 
+bool AlignerCache::holds(const AlignerChoice &choice) const
+{
+    const std::lock_guard lock(m_mutex);
+    return m_aligners.count(choice) > 0;
+}
+
 } // namespace lipsync

@@ -80,9 +80,11 @@ public:
     // The aligner of `choice`, created on first use (createAligner's errors; a failed creation is
     // not kept, so a later call tries again).
     std::shared_ptr<const Aligner> get(const AlignerChoice &choice);
+    // Whether the aligner of `choice` is loaded.
+    bool holds(const AlignerChoice &choice) const;
 
 private:
-    std::mutex m_mutex;
+    mutable std::mutex m_mutex;
     std::map<AlignerChoice, std::shared_ptr<const Aligner>> m_aligners;
 };
 

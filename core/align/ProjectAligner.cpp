@@ -33,21 +33,31 @@ std::optional<AlignerChoice> projectAlignerChoice(const Project &project)
 
 VoiceAlignment alignAnyVoice(const Aligner &chosen, const AlignerChoice &choice, bool named,
                              const RecordingSound &sound, const std::vector<std::string> &words,
-                             const Lexicon &lexicon, Feedback &feedback, const std::string &transcriptPath)
+                             const Lexicon &lexicon, Feedback &feedback, const std::string &transcriptPath,
+                             AlignerCache *cache)
 {
+    // The share of the progress the first alignment reports over [choice: most alignments are the
+    // first alone; a second, only where the words misfit, reports over the rest].
+    constexpr double kFirstShare = 0.75;
     VoiceAlignment result;
-    result.output = chosen.align(sound, words, lexicon, feedback, transcriptPath);
+    Feedback first(feedback, 0.0, kFirstShare);
+    result.output = chosen.align(sound, words, lexicon, first, transcriptPath);
     result.aligner = chosen.name();
-    if (!transcriptMisfit(result.output.transcriptFit) || named || choice.isSphinx() || !SphinxAligner::available())
+    if (!transcriptMisfit(result.output.transcriptFit) || named || choice.isSphinx() || !SphinxAligner::available()) {
+        feedback.setProgress(1.0);
         return result;
+    }
     AlignerChoice generic;
     generic.useGenericAdapted();
     generic.transcriptFit = true;
     AlignerOutput again;
     std::string name;
     try {
-        const std::unique_ptr<Aligner> aligner = createAligner(generic);
-        again = aligner->align(sound, words, lexicon, feedback, transcriptPath);
+        const std::shared_ptr<const Aligner> aligner =
+            cache ? cache->get(generic) : std::shared_ptr<const Aligner>(createAligner(generic));
+        feedback.setStatus("The words misfit this voice: aligning them again with CMU Sphinx's generic model");
+        Feedback second(feedback, kFirstShare, 1.0);
+        again = aligner->align(sound, words, lexicon, second, transcriptPath);
         name = aligner->name();
     } catch (const Error &) {
         return result; // beyond what it aligns (a recording too long for it): the first stands
@@ -58,6 +68,7 @@ VoiceAlignment alignAnyVoice(const Aligner &chosen, const AlignerChoice &choice,
         result.aligner = std::move(name);
         result.generic = true;
     }
+    feedback.setProgress(1.0);
     return result;
 }
 

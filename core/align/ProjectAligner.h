@@ -35,7 +35,10 @@ bool fallBackForLongRecording(AlignerChoice &choice, double seconds);
 // `chosen`, made from `choice` with its transcript fit measured. A model of one speaker's voice (ours;
 // the shipped one is GRID s1's) misfits another voice as it misfits other words: when the words
 // misfit it and the user did not name it (`named`), CMU Sphinx's generic model adapted to the
-// recording aligns them again, and that alignment is kept when they fit it.
+// recording aligns them again, and that alignment is kept when they fit it. The generic aligner
+// comes from `cache` when given (loaded once a session, as the studio's other aligners). The first
+// alignment reports over the first three quarters of `feedback`'s range and a second, when there
+// is one, over the rest, so the progress never goes back.
 struct VoiceAlignment
 {
     AlignerOutput output;
@@ -46,7 +49,8 @@ struct VoiceAlignment
 };
 VoiceAlignment alignAnyVoice(const Aligner &chosen, const AlignerChoice &choice, bool named,
                              const RecordingSound &sound, const std::vector<std::string> &words,
-                             const Lexicon &lexicon, Feedback &feedback, const std::string &transcriptPath = {});
+                             const Lexicon &lexicon, Feedback &feedback, const std::string &transcriptPath = {},
+                             AlignerCache *cache = nullptr);
 
 // The project's sequences with a transcript, as utterances to adapt or train an aligner of the
 // speaker's own on (SpeakerAdaptation, AlignerTrainer): decoded, their features as `model`

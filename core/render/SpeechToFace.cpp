@@ -170,7 +170,8 @@ SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedba
     Feedback aligning(feedback, 0.1, 0.8);
     // In any voice: the project's aligner gives way to the generic model where it misfits the voice.
     const VoiceAlignment voice =
-        alignAnyVoice(*aligner, request.aligner, false, sound, words, lexicon, aligning, request.transcriptPath);
+        alignAnyVoice(*aligner, request.aligner, false, sound, words, lexicon, aligning, request.transcriptPath,
+                      request.aligners.get());
     const AlignerOutput &aligned = voice.output;
     result.alignerModelPath = voice.aligner;
     result.voiceRealigned = voice.generic;

