@@ -251,6 +251,8 @@ private slots:
         Project project = Project::load(LIPSYNC_SOURCE_DIR "/resources/demo");
 #ifdef LIPSYNC_SANITIZED_BUILD
         project.sequences.resize(2);
+#else
+        project.sequences.resize(6); // three a fold: the controls pair sequences within a fold
 #endif
         const int n = int(project.sequences.size());
         RealismOptions options;

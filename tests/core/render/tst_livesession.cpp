@@ -25,6 +25,8 @@
 #include <QTest>
 
 #include <cmath>
+#include <map>
+#include <memory>
 
 using namespace lipsync;
 
@@ -66,6 +68,7 @@ private:
     AamModel m_aam;
     std::vector<LabelledSequence> m_training;
     std::vector<float> m_sound;
+    std::map<std::string, std::unique_ptr<DynamicModel>> m_models; // trained()
 
 private slots:
     void initTestCase()
@@ -87,9 +90,7 @@ private slots:
     void framesInTimeAndAsGenerated()
     {
         QFETCH(QString, kind);
-        const auto model = createDynamicModel(kind.toStdString());
-        Feedback feedback;
-        model->train(m_training, feedback);
+        const DynamicModel *model = trained(kind.toStdString());
         QCOMPARE(model->frameRate(), 25.0);
         LiveSession session(m_acoustic, m_bigram, *model, nullptr);
         QCOMPARE(session.frameRate(), 25.0);
@@ -132,9 +133,7 @@ private slots:
 
     void rendersEveryFrame()
     {
-        const auto model = createDynamicModel("dpds");
-        Feedback feedback;
-        model->train(m_training, feedback);
+        const DynamicModel *model = trained("dpds");
         FaceRenderer renderer(m_aam);
         LiveOptions options;
         options.stillBackground = true;
@@ -177,6 +176,20 @@ private slots:
         model->train(smaller, feedback);
         FaceRenderer renderer(m_aam);
         QVERIFY_THROWS_EXCEPTION(Error, LiveSession(m_acoustic, m_bigram, *model, &renderer));
+    }
+
+private:
+    // A model of `kind` trained on the demo project, once for all the test functions (a DPDS takes
+    // long under the sanitizers).
+    const DynamicModel *trained(const std::string &kind)
+    {
+        std::unique_ptr<DynamicModel> &model = m_models[kind];
+        if (!model) {
+            model = createDynamicModel(kind);
+            Feedback feedback;
+            model->train(m_training, feedback);
+        }
+        return model.get();
     }
 };
 
