@@ -60,6 +60,7 @@ VoiceAlignment alignAnyVoice(const Aligner &chosen, const AlignerChoice &choice,
         again = aligner->align(sound, words, lexicon, second, transcriptPath);
         name = aligner->name();
     } catch (const Error &) {
+        feedback.setProgress(1.0);
         return result; // beyond what it aligns (a recording too long for it): the first stands
     }
     result.chosenFit = result.output.transcriptFit;
