@@ -39,35 +39,30 @@ VoiceAlignment alignAnyVoice(const Aligner &chosen, const AlignerChoice &choice,
     // The share of the progress the first alignment reports over [choice: most alignments are the
     // first alone; a second, only where the words misfit, reports over the rest].
     constexpr double kFirstShare = 0.75;
+    const bool mayRetry = !named && !choice.isSphinx() && SphinxAligner::available();
     VoiceAlignment result;
-    Feedback first(feedback, 0.0, kFirstShare);
+    Feedback first(feedback, 0.0, mayRetry ? kFirstShare : 1.0);
     result.output = chosen.align(sound, words, lexicon, first, transcriptPath);
     result.aligner = chosen.name();
-    if (!transcriptMisfit(result.output.transcriptFit) || named || choice.isSphinx() || !SphinxAligner::available()) {
-        feedback.setProgress(1.0);
-        return result;
-    }
-    AlignerChoice generic;
-    generic.useGenericAdapted();
-    generic.transcriptFit = true;
-    AlignerOutput again;
-    std::string name;
-    try {
-        const std::shared_ptr<const Aligner> aligner =
-            cache ? cache->get(generic) : std::shared_ptr<const Aligner>(createAligner(generic));
-        feedback.setStatus("The words misfit this voice: aligning them again with CMU Sphinx's generic model");
-        Feedback second(feedback, kFirstShare, 1.0);
-        again = aligner->align(sound, words, lexicon, second, transcriptPath);
-        name = aligner->name();
-    } catch (const Error &) {
-        feedback.setProgress(1.0);
-        return result; // beyond what it aligns (a recording too long for it): the first stands
-    }
-    result.chosenFit = result.output.transcriptFit;
-    if (again.transcriptFit && !again.transcriptFit->misfit()) {
-        result.output = std::move(again);
-        result.aligner = std::move(name);
-        result.generic = true;
+    if (mayRetry && transcriptMisfit(result.output.transcriptFit)) {
+        AlignerChoice generic;
+        generic.useGenericAdapted();
+        generic.transcriptFit = true;
+        try {
+            const std::shared_ptr<const Aligner> aligner =
+                cache ? cache->get(generic) : std::shared_ptr<const Aligner>(createAligner(generic));
+            feedback.setStatus("The words misfit this voice: aligning them again with CMU Sphinx's generic model");
+            Feedback second(feedback, kFirstShare, 1.0);
+            AlignerOutput again = aligner->align(sound, words, lexicon, second, transcriptPath);
+            result.chosenFit = result.output.transcriptFit;
+            if (again.transcriptFit && !again.transcriptFit->misfit()) {
+                result.output = std::move(again);
+                result.aligner = aligner->name();
+                result.generic = true;
+            }
+        } catch (const Error &) {
+            // beyond what it aligns (a recording too long for it): the first stands
+        }
     }
     feedback.setProgress(1.0);
     return result;

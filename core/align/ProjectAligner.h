@@ -36,9 +36,9 @@ bool fallBackForLongRecording(AlignerChoice &choice, double seconds);
 // the shipped one is GRID s1's) misfits another voice as it misfits other words: when the words
 // misfit it and the user did not name it (`named`), CMU Sphinx's generic model adapted to the
 // recording aligns them again, and that alignment is kept when they fit it. The generic aligner
-// comes from `cache` when given (loaded once a session, as the studio's other aligners). The first
-// alignment reports over the first three quarters of `feedback`'s range and a second, when there
-// is one, over the rest, so the progress never goes back.
+// comes from `cache` when given (loaded once a session, as the studio's other aligners). Where a
+// second alignment may follow, the first reports over the first three quarters of `feedback`'s
+// range and the second over the rest, so the progress never goes back.
 struct VoiceAlignment
 {
     AlignerOutput output;

@@ -157,7 +157,7 @@ SpeechToFaceResult generateFromSpeech(const SpeechToFaceRequest &request, Feedba
     // Models first: a wrong file fails before the (longer) alignment.
     const Loaded in = loadInputs(request);
     const std::shared_ptr<const Aligner> aligner =
-        request.loadedAligner ? request.loadedAligner : std::shared_ptr<const Aligner>(createAligner(request.aligner));
+        request.aligners ? request.aligners->get(request.aligner) : std::shared_ptr<const Aligner>(createAligner(request.aligner));
     SpeechToFaceResult result;
     const std::vector<std::string> words = request.words ? *request.words : readTranscript(request.transcriptPath).words;
     feedback.throwIfCanceled();

@@ -46,10 +46,9 @@ struct SpeechToFaceRequest
     std::shared_ptr<const AamModel> aam;
     std::shared_ptr<const DynamicModel> model;
     AlignerChoice aligner;          // default: the shipped aligner model (ShippedAlignerModel)
-    // The aligner already loaded (the studio's AlignerCache), used instead of `aligner` when set.
-    std::shared_ptr<const Aligner> loadedAligner;
-    // Where the generic aligner comes from when the words misfit the voice (the studio's
-    // AlignerCache; alignAnyVoice); null: made for this request.
+    // Where the aligners come from (the studio's AlignerCache, loaded once a session): `aligner`,
+    // and the generic one when the words misfit the voice (alignAnyVoice); null: made for this
+    // request.
     std::shared_ptr<AlignerCache> aligners;
     // Another video of the person to render the new speech into (BackgroundRetiming: played in
     // runs with cuts where the head's motion allows, for as long as the speech lasts); empty:

@@ -607,7 +607,6 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
         tr("Generate faces for %1").arg(title),
         [this, request, words, background, sequence, mediaPath, title, kind, aligners](Feedback &feedback) mutable
         -> TaskRunner::Commit {
-            request.loadedAligner = aligners->get(request.aligner);
             request.aligners = aligners;
             request.words = parsePlainTranscript(words).words; // the typed words, as typed
             Feedback sub(feedback, 0.0, 0.95);
