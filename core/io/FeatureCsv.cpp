@@ -6,7 +6,6 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 namespace lipsync {
 
@@ -139,31 +138,47 @@ FeatureTable parseFeatureCsv(const std::string &text, const std::string &path)
     return table;
 }
 
+std::string formatFeatureCsv(const Eigen::MatrixXd &values, const std::vector<int> &frames, double frameRate,
+                             const std::string &pathForErrors)
+{
+    if (!frames.empty() && frames.size() != size_t(values.rows()))
+        throw Error("frame list and feature rows differ in length", pathForErrors);
+    if (frameRate != 0.0 && !(frameRate > 0.0 && std::isfinite(frameRate)))
+        throw Error("frame rate " + std::to_string(frameRate) + " is not a positive number", pathForErrors);
+    std::string out;
+    // A row: the frame index and d values of at most 24 characters each.
+    out.reserve(size_t(values.rows()) * (12 + 25 * size_t(values.cols())) + 16 + 8 * size_t(values.cols()));
+    char number[32];
+    const auto append = [&](auto value) {
+        const auto [end, ec] = std::to_chars(number, number + sizeof number, value);
+        out.append(number, end);
+    };
+    if (frameRate > 0.0) {
+        out += kFpsKey;
+        append(frameRate);
+        out += '\n';
+    }
+    out += "frame";
+    for (Eigen::Index c = 0; c < values.cols(); ++c) {
+        out += ",p";
+        append(c);
+    }
+    out += '\n';
+    for (Eigen::Index r = 0; r < values.rows(); ++r) {
+        append(frames.empty() ? int(r) : frames[size_t(r)]);
+        for (Eigen::Index c = 0; c < values.cols(); ++c) {
+            out += ',';
+            append(values(r, c));
+        }
+        out += '\n';
+    }
+    return out;
+}
+
 void writeFeatureCsv(const std::string &path, const Eigen::MatrixXd &values,
                      const std::vector<int> &frames, double frameRate)
 {
-    if (!frames.empty() && frames.size() != size_t(values.rows()))
-        throw Error("frame list and feature rows differ in length", path);
-    if (frameRate != 0.0 && !(frameRate > 0.0 && std::isfinite(frameRate)))
-        throw Error("frame rate " + std::to_string(frameRate) + " is not a positive number", path);
-    std::ostringstream out;
-    if (frameRate > 0.0) {
-        char rate[32];
-        const auto [end, ec] = std::to_chars(rate, rate + sizeof rate, frameRate);
-        out << kFpsKey << std::string_view(rate, size_t(end - rate)) << '\n';
-    }
-    out.precision(17);
-    out << "frame";
-    for (Eigen::Index c = 0; c < values.cols(); ++c)
-        out << ",p" << c;
-    out << '\n';
-    for (Eigen::Index r = 0; r < values.rows(); ++r) {
-        out << (frames.empty() ? int(r) : frames[size_t(r)]);
-        for (Eigen::Index c = 0; c < values.cols(); ++c)
-            out << ',' << values(r, c);
-        out << '\n';
-    }
-    writeFileAtomically(path, out.str());
+    writeFileAtomically(path, formatFeatureCsv(values, frames, frameRate, path));
 }
 
 } // namespace lipsync

@@ -24,8 +24,12 @@ struct FeatureTable
 FeatureTable readFeatureCsv(const std::string &path);
 // The same from the file's text; `pathForErrors` only names the source in errors.
 FeatureTable parseFeatureCsv(const std::string &text, const std::string &pathForErrors = {});
-// Atomic (written to a temporary file, then renamed). Rows are numbered 0..rows-1 unless
-// `frames` is given. A frameRate > 0 is recorded as "# fps=RATE" (shortest exact decimal).
+// The file's text. Rows are numbered 0..rows-1 unless `frames` is given. Values, and a
+// frameRate > 0 recorded as "# fps=RATE", are written as the shortest decimal that reads back
+// exactly. `pathForErrors` only names the destination in errors.
+std::string formatFeatureCsv(const Eigen::MatrixXd &values, const std::vector<int> &frames = {},
+                             double frameRate = 0.0, const std::string &pathForErrors = {});
+// formatFeatureCsv's text, written atomically (a temporary file, then renamed).
 void writeFeatureCsv(const std::string &path, const Eigen::MatrixXd &values,
                      const std::vector<int> &frames = {}, double frameRate = 0.0);
 

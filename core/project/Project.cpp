@@ -120,19 +120,18 @@ void Project::save(const std::string &folderArgument) const
             continue;
         const std::string relative = ProjectManifest::featureFileName(s.id);
         const std::string path = dir.filePath(q(relative)).toStdString();
+        const std::string text = formatFeatureCsv(s.features, {}, 0.0, path);
         const auto used = current.find(s.id);
         if (used == current.end() || used->second != relative || !QFileInfo(q(path)).isFile()) {
             // The manifest on disk does not read this file (or it is gone): no version to keep.
-            writeFeatureCsv(path, s.features);
+            writeFileAtomically(path, text);
             continue;
         }
+        if (text == readWholeFile(path))
+            continue; // unchanged: nothing written
         const std::string stagedRelative = std::string(kStagingFolder) + "/" + s.id + ".csv";
         const std::string stagedPath = dir.filePath(q(stagedRelative)).toStdString();
-        writeFeatureCsv(stagedPath, s.features);
-        if (readWholeFile(stagedPath) == readWholeFile(path)) {
-            QFile::remove(q(stagedPath)); // unchanged
-            continue;
-        }
+        writeFileAtomically(stagedPath, text);
         setFeatureFile(staged, i, stagedRelative);
         moves.emplace_back(stagedPath, path);
     }

@@ -1,11 +1,15 @@
-// Feature CSV files (core/io/FeatureCsv.h): the frame rate recorded as "# fps=RATE", files
-// without it still read, comments, and the errors for a bad rate.
+// Feature CSV files (core/io/FeatureCsv.h): values as the shortest decimals that read back exactly,
+// the frame rate recorded as "# fps=RATE", files without it still read, comments, and the errors
+// for a bad rate.
 #include "io/AtomicFile.h"
 #include "io/FeatureCsv.h"
 #include "util/Error.h"
 
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <cmath>
+#include <random>
 
 using namespace lipsync;
 
@@ -35,6 +39,21 @@ private slots:
         QCOMPARE(readFeatureCsv(path).frameRate, 0.0);
         QVERIFY_THROWS_EXCEPTION(Error, writeFeatureCsv(path, values, {}, -25.0));
         QVERIFY_THROWS_EXCEPTION(Error, writeFeatureCsv(path, values, {}, std::nan("")));
+    }
+
+    void valuesAreTheShortestExactDecimals()
+    {
+        // Every value reads back to the same double, written as the shortest decimal that does.
+        Eigen::MatrixXd values(2, 3);
+        values << 0.1, 1.0 / 3.0, -2.5e-300, 1e300, std::nextafter(1.0, 2.0), 0.0;
+        const std::string text = formatFeatureCsv(values, {7, 8});
+        QCOMPARE(QByteArray::fromStdString(text).split('\n').at(1), QByteArray("7,0.1,0.3333333333333333,-2.5e-300"));
+        QCOMPARE(parseFeatureCsv(text).values, values);
+        std::mt19937_64 rng(11);
+        std::uniform_real_distribution<double> uniform(-1e3, 1e3);
+        const Eigen::MatrixXd random = Eigen::MatrixXd::NullaryExpr(40, 32, [&] { return uniform(rng); });
+        const Eigen::MatrixXd back = parseFeatureCsv(formatFeatureCsv(random)).values;
+        QVERIFY((back.array() == random.array()).all()); // bit for bit
     }
 
     void readsFilesWithoutARateAndComments()

@@ -4,6 +4,7 @@
 #include "project/ProjectManifest.h"
 #include "util/Error.h"
 
+#include <QDateTime>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -293,6 +294,32 @@ private slots:
         const QByteArray first = readBytes(dir.filePath("project.json"));
         Project::load(dir.path().toStdString()).save();
         QCOMPARE(readBytes(dir.filePath("project.json")), first);
+    }
+
+    void unchangedFeaturesAreNotRewritten()
+    {
+        // A save compares each sequence's features with its file in memory: the unchanged file
+        // is left as it was (its time in the past stays), the changed one is replaced.
+        QTemporaryDir dir;
+        Project p = makeProject();
+        Sequence copy = p.sequences.front();
+        copy.id = "s3";
+        p.sequences.push_back(copy);
+        p.save(dir.path().toStdString());
+        const QString kept = dir.filePath("features/s1.csv"), changed = dir.filePath("features/s3.csv");
+        const QDateTime past = QDateTime::currentDateTime().addSecs(-3600);
+        for (const QString &path : {kept, changed}) {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::ReadWrite) && f.setFileTime(past, QFileDevice::FileModificationTime));
+        }
+        p.sequences.back().features(1, 2) = 0.1;
+        p.save(dir.path().toStdString());
+        QVERIFY(QFileInfo(kept).lastModified() < past.addSecs(1));
+        QVERIFY(QFileInfo(changed).lastModified() > past.addSecs(1));
+        QVERIFY(!QFileInfo(dir.filePath("features/.saving")).exists());
+        const Project loaded = Project::load(dir.path().toStdString());
+        QCOMPARE(loaded.sequences.back().features, p.sequences.back().features);
+        QCOMPARE(loaded.sequences.front().features, p.sequences.front().features);
     }
 
     void backupKeptOnSecondSave()
