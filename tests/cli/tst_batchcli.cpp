@@ -223,6 +223,15 @@ private slots:
         for (const char *id : {"bbaf2n", "lrik4p", "bgin3a", "bwbg8n"})
             QVERIFY(copy(kDemo + "/media/" + id + ".mpg", clips.filePath(QString(id) + ".mpg"))
                     && copy(kDemo + "/media/" + id + ".align", clips.filePath(QString(id) + ".align")));
+#ifdef LIPSYNC_SANITIZED_BUILD
+        // The shard's choice in one process; the recipes below start 10 processes from shell
+        // scripts and run in the release build.
+        const QString half = dir.filePath("half");
+        QCOMPARE(runLipsync({"align", clips.path(), "--out", half, "--shard", "2/2"}).exitCode, 0);
+        QCOMPARE(QDir(half).entryList(QDir::Files).size(), 2);
+        QCOMPARE(runLipsync({"align", clips.path(), "--out", half, "--shard", "4/3"}).exitCode, 2);
+        QSKIP("the cluster recipes are process-bound: run in the release build");
+#endif
         const QString whole = dir.filePath("whole");
         QCOMPARE(runLipsync({"align", clips.path(), "--out", whole}).exitCode, 0);
         auto sameFiles = [&](const QString &folder) {
