@@ -21,8 +21,14 @@ function(lipsync_core_module name)
     target_compile_options(lipsync_${name} PRIVATE -Wall -Wextra)
     set_target_properties(lipsync_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON
                           UNITY_BUILD ${LIPSYNC_UNITY} UNITY_BUILD_BATCH_SIZE 8)
+    # A PCH pays for itself over many translation units; a unity build of a module has one per 8
+    # sources, and under three of them parse the headers in less time than the PCH takes to build.
     list(LENGTH cpp count)
-    if(count GREATER_EQUAL 4 AND "Eigen3::Eigen" IN_LIST ARG_DEPS)
+    set(units ${count})
+    if(LIPSYNC_UNITY)
+      math(EXPR units "(${count} + 7) / 8")
+    endif()
+    if(count GREATER_EQUAL 4 AND units GREATER_EQUAL 3 AND "Eigen3::Eigen" IN_LIST ARG_DEPS)
       lipsync_precompile(lipsync_${name})
     endif()
   endif()
