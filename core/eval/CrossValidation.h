@@ -2,6 +2,7 @@
 // k-fold cross-validation split by sequence count (docs/models.md §6.1): the sequence indices are
 // permuted with a fixed seed (Fisher-Yates driven by std::mt19937_64, so the split is the same on
 // every platform), then fold f gets the positions i with i mod k = f.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -13,6 +14,6 @@ constexpr std::uint64_t kDefaultFoldSeed = 2007;
 std::vector<std::vector<int>> makeFolds(int sequenceCount, int folds = 10,
                                         std::uint64_t seed = kDefaultFoldSeed);
 // What trains when fold `heldOut` is held out: the members of every other fold, fold by fold.
-std::vector<int> trainingMembers(const std::vector<std::vector<int>> &folds, size_t heldOut);
+std::vector<int> trainingMembers(const std::vector<std::vector<int>> &folds, std::size_t heldOut);
 
 } // namespace lipsync
