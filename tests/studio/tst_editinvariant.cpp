@@ -397,11 +397,11 @@ private slots:
     void randomEditSequencesKeepTheProjectValid()
     {
         // LIPSYNC_EDIT_SEQUENCES / LIPSYNC_EDIT_SEED run longer or other searches by hand. The
-        // sanitizer builds check memory on the first 10 of the release build's 25 sequences.
+        // sanitizer builds check memory on the first 8 of the release build's 16 sequences.
 #ifdef LIPSYNC_SANITIZED_BUILD
-        constexpr int kSequences = 10;
+        constexpr int kSequences = 8;
 #else
-        constexpr int kSequences = 25;
+        constexpr int kSequences = 16;
 #endif
         const int sequences = qEnvironmentVariableIntValue("LIPSYNC_EDIT_SEQUENCES") > 0
                                   ? qEnvironmentVariableIntValue("LIPSYNC_EDIT_SEQUENCES")
