@@ -18,6 +18,7 @@
 //    pocketsphinx-en-us.
 // LIPSYNC_PREVIEW_SHOT=DIR keeps pictures of the window with the Live view (at its 1280x800 and,
 // where the screen is large enough, at 1920x1080).
+#include "../SanitizedBuild.h"
 #include "DemoWindow.h"
 
 #include "annotate/FrameView.h"
@@ -218,7 +219,14 @@ private slots:
         const QRegularExpressionMatch m = latency.match(live()->latencyLabel()->text());
         QVERIFY2(m.hasMatch(), qPrintable(live()->latencyLabel()->text()));
         QVERIFY(m.captured(1).toInt() > 0 && m.captured(1).toInt() <= m.captured(2).toInt());
-        QVERIFY2(m.captured(1).toInt() < 2000, qPrintable(live()->latencyLabel()->text()));
+        // Under the sanitizers the recogniser runs several times slower than real time on a shared
+        // machine (3.2 s mean there), so the bound is only that of a number in milliseconds.
+#ifdef LIPSYNC_SANITIZED_BUILD
+        constexpr int kSaneMeanLatencyMs = 20000;
+#else
+        constexpr int kSaneMeanLatencyMs = 2000;
+#endif
+        QVERIFY2(m.captured(1).toInt() < kSaneMeanLatencyMs, qPrintable(live()->latencyLabel()->text()));
         QVERIFY(controller()->algorithmicLatency() > 0);
         qInfo("%s (of which %.0f ms algorithmic)", qPrintable(live()->latencyLabel()->text()),
               1000 * controller()->algorithmicLatency());

@@ -19,6 +19,8 @@
 #include <QTest>
 #include <QWidget>
 
+#include <memory>
+
 using namespace lipsync;
 using namespace lipsync::studio;
 
@@ -31,13 +33,13 @@ public:
 private:
     StudioContext m_context;
     QWidget m_owner;
-    StudioActions *m_actions = nullptr;
+    std::unique_ptr<StudioActions> m_actions;
 
 private slots:
     void initTestCase()
     {
         ErrorReporter::setBatchMode(true);
-        m_actions = new StudioActions(&m_owner, &m_context);
+        m_actions = std::make_unique<StudioActions>(&m_owner, &m_context);
     }
 
     void nothingToActOnWithoutADocument()

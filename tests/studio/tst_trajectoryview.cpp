@@ -22,6 +22,7 @@
 #include <QTreeWidget>
 
 #include <cmath>
+#include <memory>
 
 using namespace lipsync;
 using namespace lipsync::studio;
@@ -57,7 +58,7 @@ private:
     StudioContext m_context;
     QWidget m_host; // the Models panel beside the Plots tabs, as the window docks them
     ModelsPanel *m_panel = nullptr;
-    StudioActions *m_actions = nullptr;
+    std::unique_ptr<StudioActions> m_actions;
 
 private slots:
     void initTestCase()
@@ -69,7 +70,7 @@ private slots:
         m_panel->attach(&m_context, plots);
         layout->addWidget(m_panel);
         layout->addWidget(plots, 1);
-        m_actions = new StudioActions(&m_host, &m_context);
+        m_actions = std::make_unique<StudioActions>(&m_host, &m_context);
         m_host.resize(1000, 400);
         m_host.show();
         QVERIFY(QTest::qWaitForWindowExposed(&m_host));
