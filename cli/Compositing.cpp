@@ -24,7 +24,10 @@ std::vector<CommandOption> Compositing::options()
              QStringLiteral("draw the inside of a mouth opened wider than recorded with the AAM's synthesis, instead "
                             "of the person's own open mouth from another moment of the video")},
             {QStringLiteral("no-lip-closure"), {},
-             QStringLiteral("draw the model's trajectory as generated, without closing the lips on /p b m/")}};
+             QStringLiteral("draw the model's trajectory as generated, without closing the lips on /p b m/")},
+            {QStringLiteral("model-posture"), {},
+             QStringLiteral("draw the model's average posture outside the speech (head set, jaw, expression) instead "
+                            "of keeping the posture of the frames drawn into")}};
 }
 
 CompositeOptions Compositing::from(const CommandLine &args)
@@ -42,6 +45,11 @@ CompositeOptions Compositing::from(const CommandLine &args)
 bool Compositing::closesLips(const CommandLine &args)
 {
     return !args.isSet(QStringLiteral("no-lip-closure"));
+}
+
+bool Compositing::keepsPosture(const CommandLine &args)
+{
+    return !args.isSet(QStringLiteral("model-posture"));
 }
 
 } // namespace lipsync::cli

@@ -80,6 +80,7 @@ int runRealism(const CommandLine &args, const EvaluationOptions &evaluation)
                 throw UsageError(QStringLiteral("--paper cannot be combined with --%1").arg(option.name));
     options.composite = paper ? CompositeOptions::paper() : Compositing::from(args);
     options.closeBilabials = !paper && Compositing::closesLips(args);
+    options.keepPosture = !paper && Compositing::keepsPosture(args);
     if (args.isSet(QStringLiteral("live"))) {
         options.liveAcousticModel = alignerModelOrDefault({}, QStringLiteral("evaluate --live")).toStdString();
         options.liveBigram = shippedPhoneBigramPath();

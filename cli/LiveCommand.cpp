@@ -255,6 +255,7 @@ int runLive(const CommandLine &a)
     LiveOptions options;
     options.stillBackground = a.isSet("still");
     options.closeBilabials = Compositing::closesLips(a);
+    options.keepPosture = Compositing::keepsPosture(a);
     if (a.isSet("fps"))
         options.frameRate = a.positiveNumber("fps");
 

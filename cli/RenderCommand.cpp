@@ -58,6 +58,7 @@ int runRender(const CommandLine &args)
     options.sideBySide = args.isSet("side-by-side");
     options.composite = Compositing::from(args);
     request.closeBilabials = Compositing::closesLips(args);
+    request.keepPosture = Compositing::keepsPosture(args);
     const VideoOutput output = VideoOutput::from(args, options.sideBySide ? 2 : 1);
     const QString &out = output.out;
     const QString &pngDir = output.pngDir;

@@ -15,6 +15,7 @@
 #include "project/Project.h"
 #include "render/BilabialClosure.h"
 #include "render/FaceRenderer.h"
+#include "render/PostureTransfer.h"
 #include "render/LowerFaceWarp.h"
 #include "tasks/BlockingMap.h"
 #include "tasks/Feedback.h"
@@ -104,6 +105,15 @@ struct Rendering
 {
     std::string method;
     Eigen::MatrixXd features;
+    // Generated renderings keep the background's posture (render/PostureTransfer); null: drawn as given.
+    std::shared_ptr<const PostureTransfer> posture = nullptr;
+
+    // The parameters of frame `row` as drawn into background frame `t`.
+    Eigen::VectorXd drawn(int row, const FaceRenderer &renderer, int t) const
+    {
+        const Eigen::VectorXd c = features.row(row).transpose();
+        return posture ? posture->apply(c, renderer.posture(t)) : c;
+    }
 };
 
 // Renders and measures one held-out sequence (see the header).
@@ -149,7 +159,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
             ++out.skippedFrames;
             for (size_t m = 0; m < methods; ++m) {
                 recorded.copyTo(generated);
-                renderer.renderInto(t, renderings[m].features.row(t).transpose(), generated);
+                renderer.renderInto(t, renderings[m].drawn(t, renderer, t), generated);
                 tapes.add(int(m) + 1, generated);
             }
             continue;
@@ -160,7 +170,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
         boxes[0][ut] = mouth;
         recordedSharpness[ut] = gradientEnergy(recorded, mouth);
         for (size_t m = 0; m < methods; ++m) {
-            const Eigen::VectorXd c = renderings[m].features.row(t).transpose();
+            const Eigen::VectorXd c = renderings[m].drawn(t, renderer, t);
             recorded.copyTo(generated);
             renderer.renderInto(t, c, generated);
             tapes.add(int(m) + 1, generated);
@@ -180,7 +190,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
             seamRecorded[m][ut] = s.reference;
             const int away = (t + frames - frames / 2) % frames;
             recorded.copyTo(generated);
-            renderer.renderInto(t, renderings[m].features.row(away).transpose(), generated);
+            renderer.renderInto(t, renderings[m].drawn(away, renderer, t), generated);
             const Eigen::VectorXd there = detector.dlibLandmarksInBox(generated, *box);
             if (there.size() == 136)
                 shifted[m][size_t(away)] = innerLipOpening(there);
@@ -359,6 +369,32 @@ RealismMethod summariseMethod(const std::vector<std::vector<const RealismSequenc
 // mean moved by `prior` of that training set when given (ModelOptions::meanShift); `exemplars`,
 // when given, receives each fold's training trajectories.
 using FoldPrior = std::function<Eigen::MatrixXd(const std::vector<LabelledSequence> &, double *weight)>;
+// A result of `sequences` sequences split into the folds of `cv`, nothing measured yet.
+RealismResult foldedResult(const EvaluationOptions &cv, int sequences)
+{
+    RealismResult result;
+    result.folds = cv.folds;
+    result.seed = cv.seed;
+    result.sequences = sequences;
+    result.foldMembers = makeFolds(sequences, cv.folds, cv.seed);
+    return result;
+}
+
+// Each fold's models' posture transfers (render/PostureTransfer; null where none applies or
+// `keep` is false).
+std::vector<std::vector<std::shared_ptr<const PostureTransfer>>>
+posturesOf(const std::vector<std::vector<std::shared_ptr<DynamicModel>>> &models, const AamModel &aam, bool keep)
+{
+    std::vector<std::vector<std::shared_ptr<const PostureTransfer>>> out(models.size());
+    for (size_t f = 0; f < models.size(); ++f)
+        for (const std::shared_ptr<DynamicModel> &model : models[f]) {
+            std::optional<PostureTransfer> transfer
+                = keep && model ? PostureTransfer::forModel(*model, aam) : std::nullopt;
+            out[f].push_back(transfer ? std::make_shared<const PostureTransfer>(std::move(*transfer)) : nullptr);
+        }
+    return out;
+}
+
 std::vector<std::vector<std::shared_ptr<DynamicModel>>> trainEveryFold(const std::vector<LabelledSequence> &sequences,
                                                                        const EvaluationOptions &cv,
                                                                        RealismResult &result, Feedback &feedback,
@@ -425,11 +461,7 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
     validateSequences(sequences);
     const AamModel aam = AamModel::load(aamPath);
 
-    RealismResult result;
-    result.folds = cv.folds;
-    result.seed = cv.seed;
-    result.sequences = int(sequences.size());
-    result.foldMembers = makeFolds(int(sequences.size()), cv.folds, cv.seed);
+    RealismResult result = foldedResult(cv, int(sequences.size()));
 
     // Training takes a small share of the time next to rendering and landmarking.
     Feedback training(feedback, 0.0, 0.1);
@@ -456,6 +488,7 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
             items.push_back({i, f, {}});
     const std::optional<BilabialClosure> closure
         = options.closeBilabials ? BilabialClosure::forAam(aam) : std::nullopt;
+    const auto postures = posturesOf(models, aam, options.keepPosture);
     std::mutex mutex;
     std::atomic<int> done{0};
     std::atomic<bool> stop{false};
@@ -480,8 +513,8 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
                 return closure ? closure->apply(trajectory, weights) : trajectory;
             };
             for (size_t k = 0; k < cv.kinds.size(); ++k)
-                renderings.push_back(
-                    {cv.kinds[k], closed(models[size_t(item.fold)][k]->generate(s.labels), closing)});
+                renderings.push_back({cv.kinds[k], closed(models[size_t(item.fold)][k]->generate(s.labels), closing),
+                                      postures[size_t(item.fold)][k]});
             if (!selections.empty())
                 for (size_t k = 0; k < cv.kinds.size(); ++k)
                     renderings.push_back({cv.kinds[k] + " exemplars",
@@ -492,7 +525,8 @@ RealismResult evaluateRealism(const Project &project, const RealismOptions &opti
                 for (size_t k = 0; k < cv.kinds.size(); ++k)
                     renderings.push_back({kLive + cv.kinds[k],
                                           closed(models[size_t(item.fold)][k]->generateStreamed(heard, true),
-                                                 BilabialClosure::weights(heard))});
+                                                 BilabialClosure::weights(heard)),
+                                          postures[size_t(item.fold)][k]});
             }
             item.result = measureSequence(aam, project.mediaPath(sequence), sequence, renderings, *detector,
                                           options, own);

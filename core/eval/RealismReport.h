@@ -75,6 +75,9 @@ struct RealismOptions
     // Close the lips on /p b m/ in the models' trajectories (render/BilabialClosure), as renders
     // do by default; the tracked re-synthesis is never changed.
     bool closeBilabials = true;
+    // Generated faces keep the posture of the frames they are drawn into (render/PostureTransfer),
+    // as renders do by default.
+    bool keepPosture = true;
     // Also every model driven live (render/LiveSession): each held-out sequence's phones
     // recognised from its sound as it streams in (StreamingPhoneRecognizer with this aligner
     // model and phone bigram), not taken from its forced alignment, and the face generated from

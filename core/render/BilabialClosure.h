@@ -38,6 +38,8 @@ public:
 
     // o(c): the inner-lip opening of the shape of combined parameters c.
     double opening(const Eigen::VectorXd &c) const;
+    // a: the opening's gradient in c.
+    const Eigen::VectorXd &gradient() const { return m_gradient; }
 
     // w_t for the frames of `frames` from a phone tier (frame t shows [time(t), endTime(t))).
     static std::vector<double> weights(const Tier &phones, const FrameClock &frames);

@@ -5,6 +5,7 @@
 #include "io/VideoReader.h"
 #include "render/FrameComposition.h"
 #include "render/LowerFaceWarp.h"
+#include "render/PostureTransfer.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
@@ -116,6 +117,18 @@ FaceRenderer::FaceRenderer(const AamModel &aam, const std::string &videoPath, Fe
     std::vector<bool> usable(m_occluded.size());
     std::transform(m_occluded.begin(), m_occluded.end(), usable.begin(), [](bool o) { return !o; });
     m_mouths = MouthExemplars(*m_video, tracked.shapes, usable);
+    Eigen::MatrixXd seen = m_tracked;
+    for (Eigen::Index t = 0; t < seen.rows(); ++t)
+        if (t < Eigen::Index(m_occluded.size()) && m_occluded[size_t(t)])
+            seen.row(t).setConstant(std::nan(""));
+    m_posture = PostureTransfer::slowPosture(seen, m_video->timestamps());
+}
+
+Eigen::VectorXd FaceRenderer::posture(int index) const
+{
+    if (m_posture.rows() == 0)
+        return {};
+    return m_posture.row(std::clamp<Eigen::Index>(sourceFrame(index), 0, m_posture.rows() - 1)).transpose();
 }
 
 std::vector<bool> FaceRenderer::occludedFrames(const Eigen::VectorXd &errors)

@@ -76,6 +76,9 @@ public:
     const Eigen::MatrixXd &trackedFeatures() const { return m_tracked; }
     // Pose of the face in frame `index` (the last frame's beyond the end).
     const Similarity &pose(int index) const;
+    // The background's slow posture at frame `index`: its tracked parameters smoothed over time
+    // (PostureTransfer::slowPosture); empty for the neutral background, NaN where no face is near.
+    Eigen::VectorXd posture(int index) const;
 
     // How the face is composited (the lower face, colour-matched, unless set otherwise).
     void setCompositeOptions(const CompositeOptions &options) { m_composite = options; }
@@ -132,6 +135,7 @@ private:
     cv::Size m_size;
     std::vector<Similarity> m_poses;   // one per video frame, or one for the neutral frame
     Eigen::MatrixXd m_tracked;
+    Eigen::MatrixXd m_posture;         // PostureTransfer::slowPosture of m_tracked
     std::vector<bool> m_occluded;      // per video frame (occluded())
     MouthExemplars m_mouths;           // the video's own closed and open mouths
     CompositeOptions m_composite;

@@ -34,6 +34,8 @@ LiveSession::LiveSession(std::unique_ptr<PhoneStream> recognizer, const DynamicM
     m_still = options.stillBackground;
     if (renderer && options.closeBilabials)
         m_closure = BilabialClosure::forAam(renderer->aam());
+    if (renderer && options.keepPosture)
+        m_posture = PostureTransfer::forModel(model, renderer->aam());
 }
 
 LiveSession::~LiveSession() = default;
@@ -128,8 +130,12 @@ void LiveSession::drain(std::vector<LiveFrame> &out)
         frame.features = y;
         if (m_closure && PhoneSet::isBilabial(frame.label))
             frame.features = m_closure->apply(y.transpose(), {1.0}).transpose();
-        if (m_renderer)
-            frame.image = m_renderer->render(m_still ? 0 : frame.index, frame.features);
+        if (m_renderer) {
+            const int shown = m_still ? 0 : frame.index;
+            if (m_posture)
+                frame.features = m_posture->apply(frame.features, m_renderer->posture(shown));
+            frame.image = m_renderer->render(shown, frame.features);
+        }
         frame.soundEnd = (frame.index + 1) / m_frameRate;
         out.push_back(std::move(frame));
     }

@@ -15,6 +15,7 @@
 #include "align/StreamingPhoneRecognizer.h"
 #include "annotation/Tier.h"
 #include "render/BilabialClosure.h"
+#include "render/PostureTransfer.h"
 
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
@@ -38,6 +39,8 @@ struct LiveOptions
     // Close the lips on frames heard as /p b m/ (render/BilabialClosure, with the renderer's AAM;
     // features-only sessions have no AAM and are left as generated).
     bool closeBilabials = true;
+    // Draw the face in the background's own posture (render/PostureTransfer).
+    bool keepPosture = true;
     PhoneRecognizerOptions recognizer;
 };
 
@@ -45,7 +48,8 @@ struct LiveFrame
 {
     int index = 0;
     int label = 0;            // the frame's phone (PhoneSet index)
-    Eigen::VectorXd features; // generated AAM parameters (as rendered: lips closed on /p b m/)
+    Eigen::VectorXd features; // generated AAM parameters as rendered: lips closed on /p b m/, the
+                              // background's posture kept
     cv::Mat image;            // rendered (empty without a renderer)
     double soundEnd = 0.0;    // seconds: the newest sound the frame shows, (index + 1) / frameRate
 };
@@ -98,6 +102,7 @@ private:
     double m_frameRate = 25.0;
     bool m_still = false;
     std::optional<BilabialClosure> m_closure;
+    std::optional<PostureTransfer> m_posture;
     long m_samples = 0;
     std::deque<int> m_recent;   // decided audio frames not yet needed by every later frame's vote
     long m_recentFirst = 0;     // audio frame index of m_recent.front()

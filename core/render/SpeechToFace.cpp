@@ -142,6 +142,9 @@ void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, cons
     }
     if (request.closeBilabials)
         result.features = BilabialClosure::closeOnPhones(*in.aam, result.features, result.phones, result.frames);
+    if (request.keepPosture)
+        if (std::optional<PostureTransfer> transfer = PostureTransfer::forModel(*in.model, *in.aam))
+            result.posture = std::make_shared<const PostureTransfer>(std::move(*transfer));
     feedback.throwIfCanceled();
     // The sound at its own rate, its first sample with the first frame.
     result.audio = alignAudioToVideo(*sound.own(), result.frames.startTime());
@@ -229,8 +232,9 @@ std::unique_ptr<FaceRenderer> makeRenderer(const SpeechToFaceResult &result,
 cv::Mat renderFrame(const SpeechToFaceResult &result, FaceRenderer &renderer, int index,
                     const RenderOptions &options)
 {
-    const Eigen::VectorXd c = result.features.row(std::clamp<Eigen::Index>(index, 0, result.features.rows() - 1))
-                                  .transpose();
+    Eigen::VectorXd c = result.features.row(std::clamp<Eigen::Index>(index, 0, result.features.rows() - 1)).transpose();
+    if (result.posture)
+        c = result.posture->apply(c, renderer.posture(index));
     renderer.setCompositeOptions(options.composite);
     if (options.sideBySide)
         return renderer.renderSideBySide(index, c, options.leftLabel, options.rightLabel);

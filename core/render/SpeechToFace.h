@@ -14,7 +14,9 @@
 #include "align/Aligner.h"
 #include "io/AudioDecoder.h"
 #include "annotation/Tier.h"
+#include "render/BilabialClosure.h"
 #include "render/FaceRenderer.h"
+#include "render/PostureTransfer.h"
 #include "render/VideoExporter.h"
 
 #include <Eigen/Core>
@@ -64,6 +66,8 @@ struct SpeechToFaceRequest
     // Close the lips on /p b m/ (render/BilabialClosure, when it applies to the AAM); false: the
     // model's trajectory as it is.
     bool closeBilabials = true;
+    // Keep the posture of the frames drawn into (render/PostureTransfer); false: the model's.
+    bool keepPosture = true;
 };
 
 struct SpeechToFaceResult
@@ -83,6 +87,8 @@ struct SpeechToFaceResult
     FrameClock frames;
     std::vector<int> labels;      // PhoneSet index of every frame
     Eigen::MatrixXd features;     // generated parameters, frames x d (lips closed on /p b m/ if asked)
+    // The model's posture transfer (request.keepPosture), applied as each frame is drawn; null: none.
+    std::shared_ptr<const PostureTransfer> posture;
     AudioBuffer audio;            // the recording's sound (own rate), first sample with frame 0
                                   // (startTime = frames.startTime())
     bool hasVideo = false;        // the media has a video stream (render into its frames)

@@ -8,6 +8,7 @@
 #include "io/VideoReader.h"
 #include "render/BilabialClosure.h"
 #include "render/FaceRenderer.h"
+#include "render/PostureTransfer.h"
 #include "tasks/Feedback.h"
 #include "util/Error.h"
 
@@ -126,6 +127,7 @@ StudyClip StudyClipRenderer::render(const std::string &utterance, const std::str
     const int frames = reader.frameCount();
 
     Eigen::MatrixXd generated;
+    std::optional<PostureTransfer> posture;
     std::shared_ptr<const FaceRenderer> renderer;
     if (method != kRealMethod) {
         if (sequence->phones.isEmpty())
@@ -136,6 +138,7 @@ StudyClip StudyClipRenderer::render(const std::string &utterance, const std::str
         generated = dynamics->generate(frameLabelsFromTier(sequence->phones, reader.clock()));
         if (m_closeLips)
             generated = BilabialClosure::closeOnPhones(*aam(), generated, sequence->phones, reader.clock());
+        posture = PostureTransfer::forModel(*dynamics, *aam());
         Feedback tracking(feedback, 0.0, 0.7);
         renderer = faces(*sequence, tracking);
     }
@@ -143,8 +146,10 @@ StudyClip StudyClipRenderer::render(const std::string &utterance, const std::str
     for (int t = 0; t < frames; ++t) {
         feedback.throwIfCanceled();
         cv::Mat frame = reader.frame(t);
-        if (renderer && t < generated.rows())
-            renderer->renderInto(t, generated.row(t).transpose(), frame);
+        if (renderer && t < generated.rows()) {
+            const Eigen::VectorXd c = generated.row(t).transpose();
+            renderer->renderInto(t, posture ? posture->apply(c, renderer->posture(t)) : c, frame);
+        }
         clip.frames.push_back(toImage(frame));
         feedback.setProgress(from + (1.0 - from) * double(t + 1) / frames);
     }

@@ -13,6 +13,7 @@
 #include "dynamics/DynamicModel.h"
 #include "dynamics/PhoneLabels.h"
 #include "render/BilabialClosure.h"
+#include "render/PostureTransfer.h"
 #include "util/Error.h"
 
 #include <QUndoStack>
@@ -223,7 +224,11 @@ std::vector<StudioContext::GeneratedTrajectory> StudioContext::generatedTrajecto
             Eigen::MatrixXd generated = model->generate(labels);
             if (aam && m_closesLips)
                 generated = BilabialClosure::closeOnPhones(*aam, generated, s.phones, s.clock());
-            out.push_back({kind, std::move(generated)});
+            std::optional<PostureTransfer> posture;
+            if (aam)
+                posture = PostureTransfer::forModel(*model, *aam);
+            out.push_back({kind, std::move(generated),
+                           posture ? std::make_shared<const PostureTransfer>(std::move(*posture)) : nullptr});
         } catch (const Error &) {
         }
     }

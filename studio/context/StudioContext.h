@@ -18,6 +18,7 @@ class QUndoStack;
 
 namespace lipsync {
 class AamModel;
+class PostureTransfer;
 class Task;
 class TaskRunner;
 struct SpeechToFaceResult;
@@ -102,6 +103,8 @@ public:
     {
         QString kind;
         Eigen::MatrixXd features;
+        // How the model's face keeps the posture of the frames it is drawn into (with an AAM).
+        std::shared_ptr<const PostureTransfer> posture = nullptr;
     };
     std::vector<GeneratedTrajectory> generatedTrajectories(int row, const AamModel *aam) const;
 

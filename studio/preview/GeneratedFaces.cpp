@@ -39,8 +39,9 @@ int GeneratedFaces::frameCount() const
 
 Eigen::VectorXd GeneratedFaces::paramsAt(int track, int frame) const
 {
-    const Eigen::MatrixXd &p = m_tracks[std::size_t(track)].params;
-    return p.row(std::clamp(frame, 0, int(p.rows()) - 1)).transpose();
+    const Track &t = m_tracks[std::size_t(track)];
+    const Eigen::VectorXd c = t.params.row(std::clamp(frame, 0, int(t.params.rows()) - 1)).transpose();
+    return t.posture ? t.posture->apply(c, m_renderer->posture(poseFrame(frame))) : c;
 }
 
 QImage GeneratedFaces::render(int track, int frame, const CompositeOptions &options, const QImage &background) const

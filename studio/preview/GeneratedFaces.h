@@ -12,6 +12,7 @@
 #include "aam/AamModel.h"
 #include "annotation/LandmarkSet.h"
 #include "render/FaceRenderer.h"
+#include "render/PostureTransfer.h"
 
 #include <algorithm>
 #include <QVector>
@@ -36,6 +37,8 @@ public:
         QString name;            // shown above the panel
         QColor color;
         Eigen::MatrixXd params;  // frames x combined modes
+        // Drawn in the background's own posture (render/PostureTransfer); null: as generated.
+        std::shared_ptr<const PostureTransfer> posture = nullptr;
     };
 
     // `renderer` holds the poses (tracked in a clip, or the neutral frame's); it refers to `aam`.

@@ -318,7 +318,8 @@ void PreviewPanel::rebuild()
                 faces->setFixedFrame(r.fixedFrame, 0);
             // Lips closed on /p b m/ as exported videos close them (StudioContext).
             for (StudioContext::GeneratedTrajectory &g : m_context->generatedTrajectories(row, m_aam.get()))
-                faces->addTrack({g.kind, ModelKinds::name(g.kind), ModelKinds::colour(g.kind), std::move(g.features)});
+                faces->addTrack({g.kind, ModelKinds::name(g.kind), ModelKinds::colour(g.kind), std::move(g.features),
+                                 std::move(g.posture)});
             m_faces = std::move(faces);
             m_facesSequence = id;
         }
@@ -620,7 +621,7 @@ Task *PreviewPanel::startSpeech(const QString &mediaPath, const QString &transcr
                 faces = std::make_shared<GeneratedFaces>(result->aam, neutral, result->frames);
                 faces->setFixedFrame(neutralFrame(*neutral), 0);
             }
-            faces->addTrack({kind, ModelKinds::name(kind), ModelKinds::colour(kind), result->features});
+            faces->addTrack({kind, ModelKinds::name(kind), ModelKinds::colour(kind), result->features, result->posture});
             feedback.setProgress(1.0);
             return [this, faces, result, title] { showSpeech(faces, result, title); };
         });

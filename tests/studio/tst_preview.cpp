@@ -174,12 +174,17 @@ private slots:
             dpds.save(dir + QStringLiteral("/dpds.png"));
             hmm.save(dir + QStringLiteral("/hmm.png"));
         }
-        // The face was redrawn where the tracked face is; everything else is the recording.
+        // The face was redrawn where the tracked face and the drawn one are; everything else is the
+        // recording.
         const auto tracked = m_preview->faces()->trackedLandmarks(40);
         QVERIFY(tracked && tracked->isComplete());
+        QCOMPARE(m_preview->faces()->tracks().front().kind, QStringLiteral("dpds"));
+        const LandmarkSet drawn = m_preview->faces()->landmarks(0, 40);
+        QVERIFY(drawn.isComplete());
         QRectF face;
-        for (const LandmarkPoint &p : tracked->points)
-            face = face.isNull() ? QRectF(p.x, p.y, 1, 1) : face.united(QRectF(p.x, p.y, 1, 1));
+        for (const LandmarkSet *set : {&*tracked, &drawn})
+            for (const LandmarkPoint &p : set->points)
+                face = face.isNull() ? QRectF(p.x, p.y, 1, 1) : face.united(QRectF(p.x, p.y, 1, 1));
         // The lower face moves with the neck below the chin and the cheeks beside the jaw (the
         // recording's own face, warped): the face's box widened by half its width either side
         // and by 60 % of its height downwards.
@@ -194,6 +199,7 @@ private slots:
                     d = std::max(d, std::abs(int(x.constScanLine(r)[3 * c + k]) - int(y.constScanLine(r)[3 * c + k])));
                 if (d > 8)
                     (box.contains(c, r) ? inside : outside) += 1;
+
             }
         qInfo("recorded vs DPDS at frame 40: %d pixels differ by more than 8 inside the face box, %d outside", inside, outside);
         QVERIFY2(inside > 200, qPrintable(QString::number(inside)));

@@ -27,6 +27,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include <cmath>
+#include <functional>
 
 using namespace lipsync;
 
@@ -63,6 +64,16 @@ private:
         r.aamPath = kAam;
         r.aligner.model = kAligner;
         return r;
+    }
+
+    // request() generated as it is, and with `change` made to it.
+    std::pair<SpeechToFaceResult, SpeechToFaceResult>
+    generatedBothWays(const std::function<void(SpeechToFaceRequest &)> &change) const
+    {
+        Feedback feedback;
+        SpeechToFaceRequest changed = request();
+        change(changed);
+        return {generateFromSpeech(request(), feedback), generateFromSpeech(changed, feedback)};
     }
 
 private slots:
@@ -313,11 +324,7 @@ private slots:
     // only there; without closure the model's own trajectory leaves them apart.
     void closesTheLipsOnBilabials()
     {
-        Feedback feedback;
-        const SpeechToFaceResult closed = generateFromSpeech(request(), feedback);
-        SpeechToFaceRequest off = request();
-        off.closeBilabials = false;
-        const SpeechToFaceResult open = generateFromSpeech(off, feedback);
+        const auto [closed, open] = generatedBothWays([](SpeechToFaceRequest &r) { r.closeBilabials = false; });
         QCOMPARE(closed.phones, open.phones);
         const BilabialClosure closure(m_aam);
         const std::vector<double> w = BilabialClosure::weights(closed.phones, closed.frames);
@@ -336,6 +343,35 @@ private slots:
         }
         QVERIFY2(full >= 2, qPrintable(QString::number(full)));
         QVERIFY2(wereOpen >= 1, qPrintable(QString::number(wereOpen)));
+    }
+
+    // The generated face keeps the clip's own posture (PostureTransfer) unless asked not to: the
+    // model's trajectory is the same, the frames drawn differ, and the 23 points drawn lie nearer
+    // the ones tracked there.
+    void keepsTheClipsPosture()
+    {
+        const auto [kept, average] = generatedBothWays([](SpeechToFaceRequest &r) { r.keepPosture = false; });
+        QVERIFY(kept.posture);
+        Feedback feedback;
+        QVERIFY(!average.posture);
+        QCOMPARE(kept.features, average.features);
+        auto renderer = makeRenderer(kept, kClip, feedback);
+        const AamSynthesizer &synthesizer = renderer->synthesizer();
+        double nearKept = 0, nearAverage = 0;
+        int differ = 0;
+        for (int t = 0; t < kept.frameCount(); t += 5) {
+            const Eigen::VectorXd posture = renderer->posture(t);
+            QCOMPARE(posture.size(), Eigen::Index(m_aam.combinedModes()));
+            QVERIFY(posture.allFinite());
+            const Eigen::VectorXd c = kept.features.row(t).transpose();
+            const Eigen::VectorXd tracked = synthesizer.shape(renderer->trackedFeatures().row(t).transpose());
+            nearKept += (synthesizer.shape(kept.posture->apply(c, posture)) - tracked).squaredNorm();
+            nearAverage += (synthesizer.shape(c) - tracked).squaredNorm();
+            differ += cv::norm(renderFrame(kept, *renderer, t, {}), renderFrame(average, *renderer, t, {}),
+                               cv::NORM_INF) > 0;
+        }
+        QVERIFY2(nearKept < 0.8 * nearAverage, qPrintable(QStringLiteral("%1 %2").arg(nearKept).arg(nearAverage)));
+        QVERIFY2(differ >= 10, qPrintable(QString::number(differ)));
     }
 
     void audioOnlyRendersOntoANeutralFrame()
