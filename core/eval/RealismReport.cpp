@@ -387,11 +387,8 @@ posturesOf(const std::vector<std::vector<std::shared_ptr<DynamicModel>>> &models
 {
     std::vector<std::vector<std::shared_ptr<const PostureTransfer>>> out(models.size());
     for (size_t f = 0; f < models.size(); ++f)
-        for (const std::shared_ptr<DynamicModel> &model : models[f]) {
-            std::optional<PostureTransfer> transfer
-                = keep && model ? PostureTransfer::forModel(*model, aam) : std::nullopt;
-            out[f].push_back(transfer ? std::make_shared<const PostureTransfer>(std::move(*transfer)) : nullptr);
-        }
+        for (const std::shared_ptr<DynamicModel> &model : models[f])
+            out[f].push_back(keep && model ? PostureTransfer::forModel(*model, aam) : nullptr);
     return out;
 }
 

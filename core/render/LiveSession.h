@@ -102,7 +102,7 @@ private:
     double m_frameRate = 25.0;
     bool m_still = false;
     std::optional<BilabialClosure> m_closure;
-    std::optional<PostureTransfer> m_posture;
+    std::shared_ptr<const PostureTransfer> m_posture;
     long m_samples = 0;
     std::deque<int> m_recent;   // decided audio frames not yet needed by every later frame's vote
     long m_recentFirst = 0;     // audio frame index of m_recent.front()

@@ -9,6 +9,7 @@
 #include <Eigen/SVD>
 
 #include <cmath>
+#include <optional>
 
 namespace lipsync {
 
@@ -43,11 +44,11 @@ PostureTransfer::PostureTransfer(const Eigen::MatrixXd &phoneTargets, const Eige
     m_outside = root.asDiagonal() * outside * root.cwiseInverse().asDiagonal();
 }
 
-std::optional<PostureTransfer> PostureTransfer::forModel(const DynamicModel &model, const AamModel &aam)
+std::shared_ptr<const PostureTransfer> PostureTransfer::forModel(const DynamicModel &model, const AamModel &aam)
 {
     const int d = aam.combinedModes();
     if (d == 0 || model.dimension() != d || aam.combinedVariances.size() != d)
-        return std::nullopt;
+        return nullptr;
     // Each phone alone for a third of a second: its target, free of its neighbours.
     const int frames = std::max(3, int(std::lround((model.frameRate() > 0 ? model.frameRate() : 25.0) / 3.0)));
     const std::optional<BilabialClosure> closure = BilabialClosure::forAam(aam);
@@ -55,9 +56,10 @@ std::optional<PostureTransfer> PostureTransfer::forModel(const DynamicModel &mod
         Eigen::MatrixXd targets(PhoneSet::kCount, d);
         for (int p = 0; p < PhoneSet::kCount; ++p)
             targets.row(p) = model.generate(std::vector<int>(size_t(frames), p)).row(frames / 2);
-        return PostureTransfer(targets, aam.combinedVariances, closure ? closure->gradient() : Eigen::VectorXd());
+        return std::make_shared<const PostureTransfer>(targets, aam.combinedVariances,
+                                                       closure ? closure->gradient() : Eigen::VectorXd());
     } catch (const Error &) {
-        return std::nullopt;
+        return nullptr;
     }
 }
 

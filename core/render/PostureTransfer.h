@@ -24,7 +24,7 @@
 
 #include <Eigen/Core>
 
-#include <optional>
+#include <memory>
 #include <vector>
 
 namespace lipsync {
@@ -47,8 +47,9 @@ public:
                     const Eigen::VectorXd &opening);
     // The phone targets of `model` (each of the 41 phones held alone for a third of a second),
     // with the AAM's variances and inner-lip opening. None when the model's dimension is not the
-    // AAM's combined model's, or it cannot generate them.
-    static std::optional<PostureTransfer> forModel(const DynamicModel &model, const AamModel &aam);
+    // AAM's combined model's, or it cannot generate them (null). Shared: every frame drawn with
+    // the model reads it.
+    static std::shared_ptr<const PostureTransfer> forModel(const DynamicModel &model, const AamModel &aam);
 
     // c' for generated parameters and the background frame's slow posture.
     Eigen::VectorXd apply(const Eigen::VectorXd &generated, const Eigen::VectorXd &posture) const;

@@ -143,8 +143,7 @@ void labelAndGenerate(const SpeechToFaceRequest &request, const Loaded &in, cons
     if (request.closeBilabials)
         result.features = BilabialClosure::closeOnPhones(*in.aam, result.features, result.phones, result.frames);
     if (request.keepPosture)
-        if (std::optional<PostureTransfer> transfer = PostureTransfer::forModel(*in.model, *in.aam))
-            result.posture = std::make_shared<const PostureTransfer>(std::move(*transfer));
+        result.posture = PostureTransfer::forModel(*in.model, *in.aam);
     feedback.throwIfCanceled();
     // The sound at its own rate, its first sample with the first frame.
     result.audio = alignAudioToVideo(*sound.own(), result.frames.startTime());

@@ -127,7 +127,7 @@ StudyClip StudyClipRenderer::render(const std::string &utterance, const std::str
     const int frames = reader.frameCount();
 
     Eigen::MatrixXd generated;
-    std::optional<PostureTransfer> posture;
+    std::shared_ptr<const PostureTransfer> posture;
     std::shared_ptr<const FaceRenderer> renderer;
     if (method != kRealMethod) {
         if (sequence->phones.isEmpty())

@@ -224,11 +224,7 @@ std::vector<StudioContext::GeneratedTrajectory> StudioContext::generatedTrajecto
             Eigen::MatrixXd generated = model->generate(labels);
             if (aam && m_closesLips)
                 generated = BilabialClosure::closeOnPhones(*aam, generated, s.phones, s.clock());
-            std::optional<PostureTransfer> posture;
-            if (aam)
-                posture = PostureTransfer::forModel(*model, *aam);
-            out.push_back({kind, std::move(generated),
-                           posture ? std::make_shared<const PostureTransfer>(std::move(*posture)) : nullptr});
+            out.push_back({kind, std::move(generated), aam ? PostureTransfer::forModel(*model, *aam) : nullptr});
         } catch (const Error &) {
         }
     }

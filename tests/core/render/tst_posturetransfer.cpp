@@ -85,7 +85,7 @@ private slots:
         std::unique_ptr<DynamicModel> model = createDynamicModel("hmm");
         Feedback feedback;
         model->train(training, feedback);
-        const std::optional<PostureTransfer> transfer = PostureTransfer::forModel(*model, aam);
+        const std::shared_ptr<const PostureTransfer> transfer = PostureTransfer::forModel(*model, aam);
         QVERIFY(transfer);
         QVERIFY(transfer->speechDimension() > 1);
         QVERIFY(transfer->speechDimension() < aam.combinedModes());
