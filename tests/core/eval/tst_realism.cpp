@@ -10,12 +10,14 @@
 #include "util/Error.h"
 
 #include <Eigen/Geometry>
+#include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QTest>
 
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -140,8 +142,8 @@ private slots:
         std::vector<double> level;
         for (int i = 0; i <= 100; ++i)
             level.push_back(i);
-        // 10th percentile 10, 90th 90: closed at 10 + 0.3 * 80 by default.
-        QVERIFY(std::abs(closedLevel(level) - 34.0) < 1e-12);
+        // 10th percentile 10, 90th 90: closed at 10 + 0.4 * 80 by default.
+        QVERIFY(std::abs(closedLevel(level) - 42.0) < 1e-12);
         QVERIFY(std::abs(closedLevel(level, 0.1) - 18.0) < 1e-12);
 
         Tier phones{"phones",
@@ -178,6 +180,36 @@ private slots:
         opening[7] = 0.02;
         QCOMPARE(closedSegments(opening, segments, 0.05), 1);
         QCOMPARE(closedSegments(opening, widened, 0.05), 2);
+    }
+
+    // The default closed level is the one that agrees best with eye labels of recorded frames
+    // (docs/closure-labels.tsv): on a clip whose 10th-90th percentile spread runs from 0 to 1, a
+    // frame of relative opening r reads closed when r <= the level.
+    void closedLevelAgreesWithTheEye()
+    {
+        QFile file(LIPSYNC_SOURCE_DIR "/docs/closure-labels.tsv");
+        QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
+        std::vector<std::pair<double, bool>> labels; // r, closed by eye
+        for (const QByteArray &line : file.readAll().split('\n')) {
+            const QList<QByteArray> f = line.split('\t');
+            if (line.startsWith('#') || f.size() != 4 || f[0] == "clip")
+                continue;
+            QVERIFY(f[3] == "closed" || f[3] == "open");
+            labels.emplace_back(f[2].toDouble(), f[3] == "closed");
+        }
+        QCOMPARE(labels.size(), size_t(59));
+        std::vector<double> unitSpread;
+        for (int i = 0; i <= 100; ++i)
+            unitSpread.push_back((i - 10) / 80.0); // 10th percentile 0, 90th 1
+        const auto agreeing = [&](double level) {
+            return std::count_if(labels.begin(), labels.end(),
+                                 [&](const auto &l) { return (l.first <= level) == l.second; });
+        };
+        const double level = closedLevel(unitSpread);
+        QCOMPARE(agreeing(level), 49L);
+        for (int percent = 10; percent <= 70; percent += 5)
+            QVERIFY2(agreeing(percent / 100.0) <= agreeing(level), qPrintable(QString::number(percent)));
+        QCOMPARE(agreeing(0.3), 42L); // 30 % of the spread
     }
 
     void sharpness()
