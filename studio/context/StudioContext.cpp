@@ -203,6 +203,17 @@ void StudioContext::showStatus(const QString &message, int milliseconds)
     emit statusMessage(message, milliseconds);
 }
 
+std::shared_ptr<const PostureTransfer> StudioContext::postureFor(const QString &kind,
+                                                                 const std::shared_ptr<const DynamicModel> &model,
+                                                                 const AamModel &aam) const
+{
+    CachedPosture &cached = m_postures[kind];
+    // An AAM without an identifier cannot be told from another: built afresh each time.
+    if (aam.identifier.empty() || cached.model.lock() != model || cached.aam != aam.identifier)
+        cached = {model, aam.identifier, PostureTransfer::forModel(*model, aam)};
+    return cached.posture;
+}
+
 std::vector<StudioContext::GeneratedTrajectory> StudioContext::generatedTrajectories(int row, const AamModel *aam) const
 {
     std::vector<GeneratedTrajectory> out;
@@ -224,7 +235,7 @@ std::vector<StudioContext::GeneratedTrajectory> StudioContext::generatedTrajecto
             Eigen::MatrixXd generated = model->generate(labels);
             if (aam && m_closesLips)
                 generated = BilabialClosure::closeOnPhones(*aam, generated, s.phones, s.clock());
-            out.push_back({kind, std::move(generated), aam ? PostureTransfer::forModel(*model, *aam) : nullptr});
+            out.push_back({kind, std::move(generated), aam ? postureFor(kind, model, *aam) : nullptr});
         } catch (const Error &) {
         }
     }

@@ -11,13 +11,16 @@
 
 #include <Eigen/Core>
 
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 class QUndoStack;
 
 namespace lipsync {
 class AamModel;
+class DynamicModel;
 class PostureTransfer;
 class Task;
 class TaskRunner;
@@ -148,6 +151,18 @@ private:
     QString m_speechTitle;
     CompositeOptions m_composite;
     bool m_closesLips = true;
+
+    // Each model kind's posture transfer for the AAM it was made with: built once per trained
+    // model and AAM (about a millisecond of generation per model), not at every listing.
+    struct CachedPosture
+    {
+        std::weak_ptr<const DynamicModel> model;
+        std::string aam; // AamModel::identifier
+        std::shared_ptr<const PostureTransfer> posture;
+    };
+    mutable std::map<QString, CachedPosture> m_postures;
+    std::shared_ptr<const PostureTransfer> postureFor(const QString &kind, const std::shared_ptr<const DynamicModel> &model,
+                                                      const AamModel &aam) const;
 };
 
 } // namespace lipsync::studio

@@ -322,6 +322,28 @@ private slots:
         QVERIFY(listed(QStringLiteral("hmm")) && listed(QStringLiteral("dpds")));
     }
 
+    // The posture transfer each generated trajectory carries is built once per trained model and
+    // AAM: listing the trajectories again hands back the same one.
+    void postureTransferBuiltOncePerModel()
+    {
+        StudioContext *context = m_window->context();
+        const std::shared_ptr<const AamModel> aam = context->modelStore()->aam();
+        QVERIFY(aam);
+        const auto first = context->generatedTrajectories(0, aam.get());
+        const auto second = context->generatedTrajectories(0, aam.get());
+        QCOMPARE(first.size(), second.size());
+        int withPosture = 0;
+        for (size_t i = 0; i < first.size(); ++i) {
+            QCOMPARE(first[i].kind, second[i].kind);
+            QCOMPARE(first[i].posture.get(), second[i].posture.get());
+            withPosture += first[i].posture != nullptr;
+        }
+        QVERIFY(withPosture >= 1); // the DPDS trained above
+        const auto withoutAam = context->generatedTrajectories(0, nullptr);
+        QVERIFY(!withoutAam.empty());
+        QVERIFY(withoutAam.front().posture == nullptr); // no AAM: none
+    }
+
     void cancelKeepsThePreviousModel()
     {
         const std::shared_ptr<const DynamicModel> before = m_window->context()->modelStore()->dynamicModel("dpds");
