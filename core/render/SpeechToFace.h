@@ -14,7 +14,6 @@
 #include "align/Aligner.h"
 #include "io/AudioDecoder.h"
 #include "annotation/Tier.h"
-#include "render/BilabialClosure.h"
 #include "render/FaceRenderer.h"
 #include "render/PostureTransfer.h"
 #include "render/VideoExporter.h"
