@@ -53,7 +53,8 @@ void printRealism(const RealismResult &result)
                 "closure, sharpness: generated / recorded; closureRecall: /p b m/ closed in both / in the "
                 "recording; falseClosures: closures outside /p b m/ per second of speech; lag: frames, generated "
                 "minus recorded; seamDeltaE: CIE Lab dE across the synthesised region's edge (Recorded: the "
-                "recording at the same pixels); observer: a classifier's held-out accuracy telling the encoded "
+                "recording at the same pixels; Natural: a real edge there, for a drawn inside the recording's own "
+                "inner-lip edge at that opening); observer: a classifier's held-out accuracy telling the encoded "
                 "render from the encoded recording (0.5: it cannot); shapeCorrelation: the method's own inner-lip "
                 "gap (what the animation exports carry) against the opening on its render; "
                 "shiftedSpeechCorrelation: speech correlation with each frame drawn into the clip's footage half "
@@ -181,9 +182,9 @@ const CommandRegistration registration{
             "re-synthesis, \"tracked\") into the recording's frames and compare the lips measured by dlib's "
             "68-point predictor with the recording's: opening correlation, articulation (s.d. ratio), /p b m/ "
             "closures (ratio), audio-visual lag (frames, generated minus recorded, searched within --max-lag), "
-            "mouth sharpness (ratio) and the colour step across the seam (CIE Lab dE; the recording's at the same "
-            "pixels beside it). Needs --project with its media and AAM, and Debian's libdlib-data (or --dlib "
-            "FILE). docs/models.md 6.5"),
+            "mouth sharpness (ratio) and the colour step across the seam (CIE Lab dE; beside it the recording's at the "
+            "same pixels, and a real edge's: for a drawn inside, the recording's own inner-lip edge). Needs --project "
+            "with its media and AAM, and Debian's libdlib-data (or --dlib FILE). docs/models.md 6.5"),
         {{QStringLiteral("folds"), QStringLiteral("K"), QStringLiteral("the number of folds (>= 2)"), QStringLiteral("10")},
          {QStringLiteral("seed"), QStringLiteral("S"), QStringLiteral("the seed of the random split into folds"),
           QStringLiteral("2007")},

@@ -323,4 +323,32 @@ SeamDeltaE seamDeltaE(const cv::Mat &frameIn, const cv::Mat &referenceIn, const 
     return out;
 }
 
+std::vector<double> naturalSeamDeltaE(const std::vector<double> &samePixels, const std::vector<double> &insideAsked,
+                                      const std::vector<double> &trackedOpening, const std::vector<double> &ownEdge)
+{
+    std::vector<std::pair<double, double>> edges; // (opening, own edge) of the recording's open frames
+    for (size_t t = 0; t < ownEdge.size(); ++t)
+        if (std::isfinite(ownEdge[t]) && std::isfinite(trackedOpening[t]))
+            edges.emplace_back(trackedOpening[t], ownEdge[t]);
+    std::vector<double> out = samePixels;
+    for (size_t t = 0; t < out.size(); ++t) {
+        if (t >= insideAsked.size() || !std::isfinite(insideAsked[t]))
+            continue;
+        out[t] = kNoMeasure;
+        if (edges.empty())
+            continue;
+        const double asked = insideAsked[t];
+        const size_t k = std::min(kNaturalNeighbours, edges.size());
+        std::partial_sort(edges.begin(), edges.begin() + std::ptrdiff_t(k), edges.end(),
+                          [asked](const auto &a, const auto &b) {
+                              return std::abs(a.first - asked) < std::abs(b.first - asked);
+                          });
+        double sum = 0;
+        for (size_t i = 0; i < k; ++i)
+            sum += edges[i].second;
+        out[t] = sum / double(k);
+    }
+    return out;
+}
+
 } // namespace lipsync

@@ -90,4 +90,14 @@ struct SeamDeltaE
 SeamDeltaE seamDeltaE(const cv::Mat &frame, const cv::Mat &reference, const cv::Mat &weight,
                       int band = 3);
 
+// The step a real edge shows where each frame's seam was measured (seamDeltaENatural): the
+// recording at the same pixels (`samePixels`), except in frames where an inside was drawn
+// (`insideAsked` finite: the inner-lip opening asked, pixels). There the same pixels of the
+// recording hold its lips, closer together, with no edge between them; the real counterpart is the
+// recording's own inner-lip edge (`ownEdge`, per frame) in the kNaturalNeighbours frames whose
+// `trackedOpening` is nearest the one asked. NaN for such a frame when no frame has an own edge.
+constexpr size_t kNaturalNeighbours = 5;
+std::vector<double> naturalSeamDeltaE(const std::vector<double> &samePixels, const std::vector<double> &insideAsked,
+                                      const std::vector<double> &trackedOpening, const std::vector<double> &ownEdge);
+
 } // namespace lipsync

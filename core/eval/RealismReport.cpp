@@ -24,6 +24,7 @@
 
 #include <QJsonArray>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <functional>
@@ -40,7 +41,8 @@ const std::vector<std::string> &realismMetrics()
     static const std::vector<std::string> names{"correlation",        "articulation",
                                                 "closure",            "lag",
                                                 "sharpness",          "seamDeltaE",
-                                                "seamDeltaERecorded", "speechCorrelation",
+                                                "seamDeltaERecorded", "seamDeltaENatural",
+                                                "speechCorrelation",
                                                 "controlCorrelation", "controlSpeechCorrelation",
                                                 "closureRecall",      "falseClosures",
                                                 "falseClosuresRecorded", "observerFrames",
@@ -116,6 +118,55 @@ struct Rendering
     }
 };
 
+// The colour step across the edge of what each method's render synthesised, per frame
+// (seamDeltaE, seamDeltaERecorded, seamDeltaENatural).
+class SeamSeries
+{
+public:
+    SeamSeries(size_t methods, size_t frames)
+        : m_seam(methods, std::vector<double>(frames, kNoFigure)), m_samePixels(m_seam), m_insideAsked(m_seam),
+          m_trackedOpening(frames, kNoFigure), m_ownEdge(frames, kNoFigure)
+    {}
+
+    // Recorded frame t: its tracked opening and the step across its own inner-lip edge.
+    void addRecorded(const FaceRenderer &renderer, int t, const cv::Mat &recorded)
+    {
+        const Eigen::VectorXd tracked = renderer.trackedShape(t);
+        m_trackedOpening[size_t(t)] = LowerFaceWarp::opening(tracked);
+        cv::Mat inside;
+        renderer.insideWeight(tracked).convertTo(inside, CV_8U, 255.0);
+        m_ownEdge[size_t(t)] = seamDeltaE(recorded, recorded, inside).frame;
+    }
+
+    // Method m's render `generated` of parameters c into recorded frame t (after addRecorded).
+    void addRendered(size_t m, const FaceRenderer &renderer, int t, const Eigen::VectorXd &c, const cv::Mat &generated,
+                     const cv::Mat &recorded)
+    {
+        const size_t ut = size_t(t);
+        cv::Mat weight;
+        renderer.synthesisedWeight(t, c).convertTo(weight, CV_8U, 255.0);
+        const SeamDeltaE s = seamDeltaE(generated, recorded, weight);
+        m_seam[m][ut] = s.frame;
+        m_samePixels[m][ut] = s.reference;
+        // An inside was drawn where the mouth was asked wider than recorded (mouthInteriorAlpha).
+        const double asked = LowerFaceWarp::opening(renderer.pose(t).apply(renderer.synthesizer().shape(c)));
+        if (std::isfinite(s.frame) && asked > m_trackedOpening[ut])
+            m_insideAsked[m][ut] = asked;
+    }
+
+    void summarise(size_t m, RealismSequenceMethod &r) const
+    {
+        r.seamDeltaE = meanOfFinite(m_seam[m]);
+        r.seamDeltaERecorded = meanOfFinite(m_samePixels[m]);
+        r.seamDeltaENatural = meanOfFinite(naturalSeamDeltaE(m_samePixels[m], m_insideAsked[m], m_trackedOpening, m_ownEdge));
+    }
+
+private:
+    std::vector<std::vector<double>> m_seam, m_samePixels; // per method and frame: render, recording
+    std::vector<std::vector<double>> m_insideAsked;       // the opening asked where an inside was drawn
+    std::vector<double> m_trackedOpening, m_ownEdge;      // per recorded frame
+};
+
 // Renders and measures one held-out sequence (see the header).
 RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPath, const Sequence &sequence,
                                 const std::vector<Rendering> &renderings, FaceDetector &detector,
@@ -131,8 +182,8 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
     out.frames = frames;
     const size_t methods = renderings.size();
     std::vector<double> recordedOpening(size_t(frames), kNoFigure), recordedSharpness(size_t(frames), kNoFigure);
-    std::vector<std::vector<double>> opening(methods, recordedOpening), sharpness(methods, recordedOpening),
-        seam(methods, recordedOpening), seamRecorded(methods, recordedOpening);
+    std::vector<std::vector<double>> opening(methods, recordedOpening), sharpness(methods, recordedOpening);
+    SeamSeries seams(methods, size_t(frames));
     // Frame t - T/2 drawn into frame t, whose mouth does not follow it (shiftedSpeechCorrelation).
     std::vector<std::vector<double>> shifted(methods, recordedOpening);
     std::vector<int> skipped(methods, 0);
@@ -169,6 +220,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
         const cv::Rect2d mouth = mouthBox(points);
         boxes[0][ut] = mouth;
         recordedSharpness[ut] = gradientEnergy(recorded, mouth);
+        seams.addRecorded(renderer, t, recorded);
         for (size_t m = 0; m < methods; ++m) {
             const Eigen::VectorXd c = renderings[m].drawn(t, renderer, t);
             recorded.copyTo(generated);
@@ -183,11 +235,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
                 boxes[m + 1][ut] = mouthBox(rendered);
             }
             sharpness[m][ut] = gradientEnergy(generated, mouth);
-            cv::Mat weight;
-            renderer.synthesisedWeight(t, c).convertTo(weight, CV_8U, 255.0);
-            const SeamDeltaE s = seamDeltaE(generated, recorded, weight);
-            seam[m][ut] = s.frame;
-            seamRecorded[m][ut] = s.reference;
+            seams.addRendered(m, renderer, t, c, generated, recorded);
             const int away = (t + frames - frames / 2) % frames;
             recorded.copyTo(generated);
             renderer.renderInto(t, renderings[m].drawn(away, renderer, t), generated);
@@ -232,8 +280,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
         r.articulation = articulationRatio(opening[m], recordedOpening);
         r.lag = avLag(opening[m], energy, options.maxLag) - out.lagRecorded;
         r.sharpness = ratioOfMeans(sharpness[m], recordedSharpness);
-        r.seamDeltaE = meanOfFinite(seam[m]);
-        r.seamDeltaERecorded = meanOfFinite(seamRecorded[m]);
+        seams.summarise(m, r);
         r.closed = closedSegments(opening[m], bilabials, out.closedLevel);
         r.skippedFrames = skipped[m];
         r.opening = std::move(opening[m]);
@@ -289,6 +336,7 @@ double foldValue(const std::vector<const RealismSequence *> &fold, const std::st
                          : metric == "sharpness"         ? r.sharpness
                          : metric == "seamDeltaE"        ? r.seamDeltaE
                          : metric == "seamDeltaERecorded" ? r.seamDeltaERecorded
+                         : metric == "seamDeltaENatural" ? r.seamDeltaENatural
                                                           : kNoFigure);
     }
     return meanOfFinite(values);
@@ -601,6 +649,7 @@ QJsonObject RealismResult::toJson() const
             ro[QStringLiteral("sharpness")] = jsonNumber(r.sharpness);
             ro[QStringLiteral("seamDeltaE")] = jsonNumber(r.seamDeltaE);
             ro[QStringLiteral("seamDeltaERecorded")] = jsonNumber(r.seamDeltaERecorded);
+            ro[QStringLiteral("seamDeltaENatural")] = jsonNumber(r.seamDeltaENatural);
             ro[QStringLiteral("closed")] = r.closed;
             ro[QStringLiteral("skippedFrames")] = r.skippedFrames;
             ro[QStringLiteral("opening")] = jsonNumbers(r.opening);

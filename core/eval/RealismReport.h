@@ -19,7 +19,10 @@
 //   lag          the audio-visual lag (frames) of the generated opening minus the recording's;
 //   sharpness    mean squared Laplacian in the mouth box, generated / recorded;
 //   seamDeltaE   mean CIE Lab ΔE across the edge of the synthesised region in the render, and
-//                seamDeltaERecorded the same pixel pairs in the recording (its natural contrast);
+//                seamDeltaERecorded the same pixel pairs in the recording; seamDeltaENatural the
+//                step a real edge shows there: the same pixels of the recording where closed lips
+//                were drawn, and where an inside was drawn the recording's own inner-lip edge in
+//                its frames opened as wide (the same pixels of the recording hold its lips there);
 //   speechCorrelation  the correlation over the speech frames alone (first to last spoken
 //                phone), without the silence-speech-silence shape every clip shares;
 //   controlCorrelation, controlSpeechCorrelation  the same with each recording paired with the
@@ -103,7 +106,7 @@ struct RealismOptions
 struct RealismSequenceMethod
 {
     double correlation = 0, articulation = 0, lag = 0, sharpness = 0;
-    double seamDeltaE = 0, seamDeltaERecorded = 0;
+    double seamDeltaE = 0, seamDeltaERecorded = 0, seamDeltaENatural = 0;
     double speechCorrelation = 0;
     double shapeCorrelation = 0;
     double shiftedSpeechCorrelation = 0;
@@ -159,7 +162,7 @@ struct RealismResult
     QJsonObject toJson() const;
 };
 
-// correlation, articulation, closure, lag, sharpness, seamDeltaE, seamDeltaERecorded,
+// correlation, articulation, closure, lag, sharpness, seamDeltaE, seamDeltaERecorded, seamDeltaENatural,
 // speechCorrelation, controlCorrelation, controlSpeechCorrelation, closureRecall, falseClosures,
 // falseClosuresRecorded, observerFrames, observerVideos.
 const std::vector<std::string> &realismMetrics();

@@ -38,6 +38,8 @@ constexpr double kClosingRatio = 0.5;
 // one read 57 % of the opening asked (dlib), with 1/3 75 %; the recording's stretched inside
 // reads as less open than the person's own inside at that opening.]
 constexpr double kInsideFullAt = 1.0 / 3.0;
+// The drawn inside's feather (pixels): an edge of about a pixel, inside the lips' inner outline.
+constexpr double kInsideFeather = 0.8;
 
 std::vector<Similarity> smoothPoses(const std::vector<Similarity> &poses)
 {
@@ -318,31 +320,40 @@ Eigen::VectorXd FaceRenderer::trackedShape(int index) const
     return pose(index).apply(m_synthesizer.shape(c));
 }
 
+cv::Mat FaceRenderer::featheredPolygon(const std::vector<cv::Point2f> &outline, double feather, float weight) const
+{
+    constexpr int kShift = 4; // fillPoly's sub-pixel bits
+    std::vector<cv::Point> polygon;
+    for (const cv::Point2f &p : outline)
+        polygon.emplace_back(int(std::lround(p.x * (1 << kShift))), int(std::lround(p.y * (1 << kShift))));
+    cv::Mat mask(m_size, CV_8U, cv::Scalar(0));
+    cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{polygon}, cv::Scalar(255), cv::LINE_AA, kShift);
+    const int k = 2 * int(std::ceil(2.0 * feather)) + 1;
+    cv::GaussianBlur(mask, mask, cv::Size(k, k), feather);
+    cv::Mat alpha;
+    mask.convertTo(alpha, CV_32F, weight / 255.0);
+    return alpha;
+}
+
+cv::Mat FaceRenderer::insideWeight(const Eigen::VectorXd &shape) const
+{
+    return featheredPolygon(LowerFaceWarp::mouthInterior(shape), kInsideFeather, 1.f);
+}
+
 cv::Mat FaceRenderer::mouthInteriorAlpha(const Eigen::VectorXd &generated, const Eigen::VectorXd &tracked,
                                          bool *closing) const
 {
     cv::Mat alpha(m_size, CV_32F, cv::Scalar(0));
     const double wanted = LowerFaceWarp::opening(generated);
     const double recorded = LowerFaceWarp::opening(tracked);
-    constexpr int kShift = 4; // fillPoly's sub-pixel bits
-    auto fill = [&](const std::vector<cv::Point2f> &outline, double feather, float weight) {
-        std::vector<cv::Point> polygon;
-        for (const cv::Point2f &p : outline)
-            polygon.emplace_back(int(std::lround(p.x * (1 << kShift))), int(std::lround(p.y * (1 << kShift))));
-        cv::Mat mask(m_size, CV_8U, cv::Scalar(0));
-        cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{polygon}, cv::Scalar(255), cv::LINE_AA, kShift);
-        const int k = 2 * int(std::ceil(2.0 * feather)) + 1;
-        cv::GaussianBlur(mask, mask, cv::Size(k, k), feather);
-        mask.convertTo(alpha, CV_32F, weight / 255.0);
-    };
     constexpr double kMinOpening = 1.5; // pixels: a closed mouth has no inside to draw
     if (wanted > kMinOpening && wanted > recorded) {
         // The warp stretches the recorded opening to the generated one: where that is a thin line
         // pulled wide, the inside is drawn; where the recording was as open, it is its own, and
         // between, the drawn inside weighs fully from a recording a third short (kInsideFullAt).
-        // A feathered edge of about a pixel, inside the lips' inner outline.
         const double u = std::clamp((wanted - recorded) / (kInsideFullAt * wanted), 0.0, 1.0);
-        fill(LowerFaceWarp::mouthInterior(generated), 0.8, float(u * u * (3.0 - 2.0 * u)));
+        alpha = featheredPolygon(LowerFaceWarp::mouthInterior(generated), kInsideFeather,
+                                 float(u * u * (3.0 - 2.0 * u)));
     } else if (recorded > 2.0 * kMinOpening && wanted < kClosingRatio * recorded) {
         // Lips asked to close far more than the recording's: no warp brings lips together that
         // were apart (it would squeeze the open mouth to a line, or fold), so the closed lips are
@@ -352,7 +363,8 @@ cv::Mat FaceRenderer::mouthInteriorAlpha(const Eigen::VectorXd &generated, const
         const double width = LowerFaceWarp::mouthWidth(generated);
         if (closing)
             *closing = true;
-        fill(LowerFaceWarp::outerLips(generated, 0.12 * width), 0.06 * width, float(u * u * (3.0 - 2.0 * u)));
+        alpha = featheredPolygon(LowerFaceWarp::outerLips(generated, 0.12 * width), 0.06 * width,
+                                 float(u * u * (3.0 - 2.0 * u)));
     }
     return alpha;
 }

@@ -104,6 +104,10 @@ public:
     // How much of each pixel renderInto() replaces with synthesis for these features (CV_32F,
     // 0..1; what the warp moves is the recording's own and counts 0).
     cv::Mat synthesisedWeight(int index, const Eigen::VectorXd &features) const;
+    // The inside of the mouth of `shape` (23 points in the frame's pixels) at full weight, feathered
+    // as a drawn inside is (CV_32F, frame size): where a recorded mouth's own inner-lip edge lies,
+    // the real counterpart of a drawn inside's edge (RealismReport's seamDeltaENatural).
+    cv::Mat insideWeight(const Eigen::VectorXd &shape) const;
     // The video's own mouths the renderer draws closures and insides with (empty without a video).
     const MouthExemplars &mouths() const { return m_mouths; }
     // The AAM's synthesis the renderer draws with (its shapes and textures of parameters).
@@ -124,6 +128,8 @@ private:
     // `closing` (optional) is set when the alpha draws closed lips over an open recorded mouth.
     cv::Mat mouthInteriorAlpha(const Eigen::VectorXd &generated, const Eigen::VectorXd &tracked,
                                bool *closing = nullptr) const;
+    // `outline` filled at `weight` over the frame (CV_32F), its edge blurred by `feather` pixels.
+    cv::Mat featheredPolygon(const std::vector<cv::Point2f> &outline, double feather, float weight) const;
 
     const AamModel &m_aam;
     AamSynthesizer m_synthesizer;

@@ -271,6 +271,31 @@ private slots:
         QVERIFY(std::isnan(seamDeltaE(recording, recording, cv::Mat(size, CV_8U, cv::Scalar(0))).frame));
     }
 
+    void naturalSeamOfDrawnInsides()
+    {
+        const double nan = std::nan("");
+        // Frames 0-1 drew closed lips (the same pixels of the recording stand), 2-3 drew insides
+        // opened to 10 and 31 px; the recording's own inner-lip edge in its open frames 4-10.
+        const std::vector<double> samePixels{7, 8, 3, 4, 9, 9, 9, 9, 9, 9, 9};
+        const std::vector<double> asked{nan, nan, 10, 31, nan, nan, nan, nan, nan, nan, nan};
+        const std::vector<double> opening{20, 22, 2, 3, 4, 9, 10, 11, 12, 30, 40};
+        const std::vector<double> ownEdge{nan, nan, nan, nan, 1, 10, 20, 30, 40, 50, 60};
+        const std::vector<double> natural = naturalSeamDeltaE(samePixels, asked, opening, ownEdge);
+        QCOMPARE(natural.size(), samePixels.size());
+        QCOMPARE(natural[0], 7.0);
+        QCOMPARE(natural[1], 8.0);
+        // 10 px: the five frames opened most nearly as wide (9, 10, 11, 12 and 4 px).
+        QCOMPARE(natural[2], (10.0 + 20 + 30 + 40 + 1) / 5);
+        // 31 px: 30, 40, 22 px have no own edge; 12, 11 and 10 px follow.
+        QCOMPARE(natural[3], (50.0 + 60 + 40 + 30 + 20) / 5);
+        QCOMPARE(natural[4], 9.0);
+        // No open recorded frame: no real edge to compare a drawn inside with.
+        const std::vector<double> none(ownEdge.size(), nan);
+        const std::vector<double> undefined = naturalSeamDeltaE(samePixels, asked, opening, none);
+        QVERIFY(std::isnan(undefined[2]) && std::isnan(undefined[3]));
+        QCOMPARE(undefined[0], 7.0);
+    }
+
     // One small run on the bundled demo: 2 folds, the HMM-mean model besides the tracked
     // re-synthesis, and driven live (phones recognised from the sound). The tracked parameters
     // re-synthesised by the AAM must follow the recorded lips closely; generation from phones
@@ -324,6 +349,11 @@ private slots:
         // The tracked parameters render the recording itself (its own face, moved nowhere): nothing
         // is synthesised, so there is no seam to measure.
         QVERIFY(!std::isfinite(tracked.at("seamDeltaE").mean));
+        QVERIFY(!std::isfinite(tracked.at("seamDeltaENatural").mean));
+        // A model's mouth is drawn where it differs: its seam, and the real edge it is judged by.
+        qInfo("hmm: seam %.2f, recording at the same pixels %.2f, a real edge there %.2f",
+              hmm.at("seamDeltaE").mean, hmm.at("seamDeltaERecorded").mean, hmm.at("seamDeltaENatural").mean);
+        QVERIFY(std::isfinite(hmm.at("seamDeltaE").mean) && std::isfinite(hmm.at("seamDeltaENatural").mean));
         // The new measures: the tracked render is the recording itself, so in speech too it
         // correlates fully, closes every /p b m/ the recording closes, and no observer can tell it
         // from the recording (nor the recording from its own re-encode); another sequence's render
