@@ -22,6 +22,8 @@ constexpr int kMouthPoints = 10;
 // The crop reaches this many mouth widths beyond the outer lips on every side [choice: the
 // drawn lips' feathered band ends within 0.3 widths, FaceRenderer::mouthInteriorAlpha].
 constexpr double kCropMargin = 0.6;
+// The motion of a frame without a usable neighbour: unknown, kept last.
+constexpr double kUnknownMotion = 1e9;
 
 } // namespace
 
@@ -33,7 +35,7 @@ MouthExemplars::MouthExemplars(VideoReader &video, const Eigen::MatrixXd &shapes
                && shapes.cols() == 2 * scheme23::kPointCount && shapes.row(t).allFinite();
     };
     std::vector<std::pair<double, int>> closed;          // (gap over width, frame)
-    std::vector<std::tuple<int, double, int>> open;      // (band, motion, frame)
+    std::vector<std::tuple<int, double, int>> open;      // (band, motion, then its distance from the typical; frame)
     for (int t = 0; t < frames; ++t) {
         if (!valid(t))
             continue;
@@ -56,9 +58,23 @@ MouthExemplars::MouthExemplars(VideoReader &video, const Eigen::MatrixXd &shapes
                 motion += (shapes.row(n) - shapes.row(t)).segment(2 * kFirstMouthPoint, 2 * kMouthPoints).norm() / width;
                 ++neighbours;
             }
-        open.emplace_back(bandOf(share), neighbours ? motion / neighbours : 1e9, t);
+        open.emplace_back(bandOf(share), neighbours ? motion / neighbours : kUnknownMotion, t);
     }
     std::sort(closed.begin(), closed.end());
+    // Of each band, the mouths whose motion is nearest the open mouths' median first: as sharp as
+    // the person's speech usually is, neither the stillest (crisper than any moving mouth of the
+    // recording) nor the most blurred.
+    std::vector<double> motions;
+    for (const auto &[band, motion, t] : open)
+        if (motion < kUnknownMotion)
+            motions.push_back(motion);
+    if (!motions.empty()) {
+        std::nth_element(motions.begin(), motions.begin() + std::ptrdiff_t(motions.size() / 2), motions.end());
+        const double typical = motions[motions.size() / 2];
+        for (auto &[band, motion, t] : open)
+            if (motion < kUnknownMotion)
+                motion = std::abs(motion - typical);
+    }
     std::sort(open.begin(), open.end());
     std::vector<std::pair<int, int>> chosen; // (frame, band)
     auto spaced = [&](int t, int band) {

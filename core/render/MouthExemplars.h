@@ -10,9 +10,11 @@
 // video's own resolution):
 //  - closed: the frames whose tracked lips are closed, the most closed first; a closure is drawn
 //    from the one nearest in time;
-//  - open: a few frames for each band of opening (kOpenStep wide), those whose mouth moves least
-//    between its neighbouring frames first (motion blurs teeth); an inside is drawn from the band
-//    of the generated opening, so it changes only where the opening crosses a band's edge.
+//  - open: a few frames for each band of opening (kOpenStep wide), those whose mouth moves between
+//    its neighbouring frames as much as the video's open mouths typically do first (their median
+//    motion): motion blurs lips and teeth, and a mouth stiller than the speech around it draws an
+//    inside crisper than any the recording shows; an inside is drawn from the band of the
+//    generated opening, so it changes only where the opening crosses a band's edge.
 // Closed lips are moved onto the generated lips by the affine map that fits the ten mouth points
 // best (least squares); an open mouth by the thin-plate spline through them, which puts its inner
 // lips exactly on the generated ones. Never from within kAwaySeconds of the frame drawn into: the mouth comes from
