@@ -143,15 +143,14 @@ public:
                      const cv::Mat &recorded)
     {
         const size_t ut = size_t(t);
+        bool inside = false;
         cv::Mat weight;
-        renderer.synthesisedWeight(t, c).convertTo(weight, CV_8U, 255.0);
+        renderer.synthesisedWeight(t, c, &inside).convertTo(weight, CV_8U, 255.0);
         const SeamDeltaE s = seamDeltaE(generated, recorded, weight);
         m_seam[m][ut] = s.frame;
         m_samePixels[m][ut] = s.reference;
-        // An inside was drawn where the mouth was asked wider than recorded (mouthInteriorAlpha).
-        const double asked = LowerFaceWarp::opening(renderer.pose(t).apply(renderer.synthesizer().shape(c)));
-        if (std::isfinite(s.frame) && asked > m_trackedOpening[ut])
-            m_insideAsked[m][ut] = asked;
+        if (inside && std::isfinite(s.frame))
+            m_insideAsked[m][ut] = LowerFaceWarp::opening(renderer.drawnShape(t, c));
     }
 
     void summarise(size_t m, RealismSequenceMethod &r) const

@@ -239,7 +239,7 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
     }
     // The recording's own lower face moved to the generated shape, then the inside of the mouth
     // where the recording had less of it.
-    const Eigen::VectorXd generated = pose(index).apply(m_synthesizer.shape(features));
+    const Eigen::VectorXd generated = drawnShape(index, features);
     const Eigen::VectorXd tracked = trackedShape(index);
     LowerFaceWarp::apply(frame, tracked, generated);
     bool closing = false;
@@ -317,7 +317,12 @@ Eigen::VectorXd FaceRenderer::trackedShape(int index) const
     const Eigen::VectorXd c = m_tracked.rows() > 0
                                   ? Eigen::VectorXd(m_tracked.row(std::clamp<Eigen::Index>(sourceFrame(index), 0, m_tracked.rows() - 1)).transpose())
                                   : Eigen::VectorXd::Zero(m_aam.combinedModes());
-    return pose(index).apply(m_synthesizer.shape(c));
+    return drawnShape(index, c);
+}
+
+Eigen::VectorXd FaceRenderer::drawnShape(int index, const Eigen::VectorXd &features) const
+{
+    return pose(index).apply(m_synthesizer.shape(features));
 }
 
 cv::Mat FaceRenderer::featheredPolygon(const std::vector<cv::Point2f> &outline, double feather, float weight) const
@@ -369,8 +374,10 @@ cv::Mat FaceRenderer::mouthInteriorAlpha(const Eigen::VectorXd &generated, const
     return alpha;
 }
 
-cv::Mat FaceRenderer::synthesisedWeight(int index, const Eigen::VectorXd &features) const
+cv::Mat FaceRenderer::synthesisedWeight(int index, const Eigen::VectorXd &features, bool *inside) const
 {
+    if (inside)
+        *inside = false;
     if (features.size() != m_aam.combinedModes())
         throw Error("cannot render: " + std::to_string(features.size())
                     + " parameters given, the AAM has " + std::to_string(m_aam.combinedModes()));
@@ -378,7 +385,11 @@ cv::Mat FaceRenderer::synthesisedWeight(int index, const Eigen::VectorXd &featur
         return cv::Mat(m_size, CV_32F, cv::Scalar(0));
     if (m_composite.region == FaceRegion::Full || m_composite.synthesizeSkin)
         return m_synthesizer.compositeWeight(features, pose(index), m_size, m_composite.region);
-    return mouthInteriorAlpha(pose(index).apply(m_synthesizer.shape(features)), trackedShape(index));
+    bool closing = false;
+    cv::Mat alpha = mouthInteriorAlpha(drawnShape(index, features), trackedShape(index), &closing);
+    if (inside)
+        *inside = !closing && cv::countNonZero(alpha) > 0;
+    return alpha;
 }
 
 cv::Mat FaceRenderer::render(int index, const Eigen::VectorXd &features)

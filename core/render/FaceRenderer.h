@@ -103,7 +103,9 @@ public:
                     const CompositeOptions &options) const;
     // How much of each pixel renderInto() replaces with synthesis for these features (CV_32F,
     // 0..1; what the warp moves is the recording's own and counts 0).
-    cv::Mat synthesisedWeight(int index, const Eigen::VectorXd &features) const;
+    // `inside` (optional) is set when that is the drawn inside of a mouth opened wider than
+    // recorded (the default composite), not closed lips or a synthesised face.
+    cv::Mat synthesisedWeight(int index, const Eigen::VectorXd &features, bool *inside = nullptr) const;
     // The inside of the mouth of `shape` (23 points in the frame's pixels) at full weight, feathered
     // as a drawn inside is (CV_32F, frame size): where a recorded mouth's own inner-lip edge lies,
     // the real counterpart of a drawn inside's edge (RealismReport's seamDeltaENatural).
@@ -115,6 +117,9 @@ public:
     // The 23 points of the face tracked in frame `index`, in its pixels (the mean shape at the
     // neutral frame's pose without a video).
     Eigen::VectorXd trackedShape(int index) const;
+    // The 23 points of parameters `features` drawn into frame `index`, in its pixels (at the
+    // frame's pose).
+    Eigen::VectorXd drawnShape(int index, const Eigen::VectorXd &features) const;
     // The real frame on the left and the rendered one on the right, one frame (optional labels).
     cv::Mat renderSideBySide(int index, const Eigen::VectorXd &features,
                              const std::string &leftLabel = {}, const std::string &rightLabel = {});

@@ -327,8 +327,11 @@ private slots:
             if (share < 0.15 || t % 2)
                 continue; // open mouths asked to close, every other frame
             const Eigen::VectorXd shut = closure.apply(renderer.trackedFeatures().row(t), std::vector<double>{1.0}).row(0).transpose();
-            const Eigen::VectorXd generated = renderer.pose(t).apply(renderer.synthesizer().shape(shut));
+            const Eigen::VectorXd generated = renderer.drawnShape(t, shut);
             own.add(renderer.render(t, shut), LowerFaceWarp::outerLips(generated, 0.0));
+            bool inside = true;
+            renderer.synthesisedWeight(t, shut, &inside);
+            QVERIFY(!inside); // closed lips, not an inside
             cv::Mat frame = renderer.background(t);
             renderer.renderInto(t, shut, frame, aamClosures);
             drawn.add(frame, LowerFaceWarp::outerLips(generated, 0.0));
@@ -370,13 +373,23 @@ private slots:
             }
             if (share > 0.1 || t % 2)
                 continue; // nearly closed mouths asked to open, every other frame
-            const Eigen::VectorXd generated = renderer.pose(t).apply(renderer.synthesizer().shape(wide));
+            const Eigen::VectorXd generated = renderer.drawnShape(t, wide);
             own.add(renderer.render(t, wide), LowerFaceWarp::mouthInterior(generated));
+            bool inside = false;
+            renderer.synthesisedWeight(t, wide, &inside);
+            QVERIFY(inside);
             cv::Mat frame = renderer.background(t);
             renderer.renderInto(t, wide, frame, aamInsides);
             drawn.add(frame, LowerFaceWarp::mouthInterior(generated));
         }
         QVERIFY2(recorded.count >= 5 && own.count >= 5, qPrintable(QStringLiteral("%1 recorded, %2 own").arg(recorded.count).arg(own.count)));
+        // A synthesised face is no inside, however wide its mouth.
+        CompositeOptions fullFace = renderer.compositeOptions();
+        fullFace.region = FaceRegion::Full;
+        renderer.setCompositeOptions(fullFace);
+        bool inside = true;
+        QVERIFY(cv::countNonZero(renderer.synthesisedWeight(widest, wide, &inside)) > 0);
+        QVERIFY(!inside);
         const double ownDistance = compare("open mouths' insides", recorded, own, drawn);
         // His own teeth and inside: the texture of his open mouths, within a quarter (the AAM's has
         // under half of it)...

@@ -1,8 +1,8 @@
 // MouthExemplars on a real clip (resources/demo, GRID s1) with shapes of known openings: the
 // closed frames are kept one per closure, the most closed; open mouths a few per band of
-// opening, those moving as the video's open mouths typically do first; a mouth is never taken from within half a second of the frame
-// drawn into, and an open one comes from the band of the opening asked for or the nearest that
-// has one; drawn onto its own shape an exemplar gives back the recording's pixels, moved with its
+// opening, those moving as the video's open mouths typically do first; a mouth is never taken
+// from within half a second of the frame drawn into, and an open one comes from the band of the
+// opening asked for or the nearest that has one; drawn onto its own shape an exemplar gives back the recording's pixels, moved with its
 // shape it moves with it, and a degenerate map draws nothing.
 #include "render/MouthExemplars.h"
 
