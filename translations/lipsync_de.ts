@@ -338,38 +338,244 @@
     </message>
     <message>
         <location filename="../studio/plots/EvaluationChart.cpp" line="45"/>
+        <source>lip-opening correlation, control</source>
+        <translation>Korrelation der Lippenöffnung, Kontrolle</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="46"/>
         <source>lip-opening correlation in speech</source>
         <translation>Korrelation der Lippenöffnung beim Sprechen</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="46"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="47"/>
+        <source>lip-opening correlation in speech, control</source>
+        <translation>Korrelation der Lippenöffnung beim Sprechen, Kontrolle</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="48"/>
+        <source>lip-opening correlation in speech, other footage</source>
+        <translation>Korrelation der Lippenöffnung beim Sprechen, anderes Filmmaterial</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="49"/>
         <source>machine observer (0.5: fooled)</source>
         <translation>Maschineller Beobachter (0,5: getäuscht)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="47"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="50"/>
+        <source>machine observer per video</source>
+        <translation>maschineller Beobachter je Video</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="51"/>
         <source>articulation (s.d. ratio)</source>
         <translation>Artikulation (Verhältnis der Standardabweichungen)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="48"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="52"/>
         <source>/p b m/ closures (ratio)</source>
         <translation>Verschlüsse bei /p b m/ (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="49"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="53"/>
+        <source>/p b m/ closure recall</source>
+        <translation>/p b m/-Verschlüsse getroffen</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="54"/>
+        <source>false closures per s of speech</source>
+        <translation>falsche Verschlüsse je s Sprache</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="55"/>
+        <source>false closures per s, recording</source>
+        <translation>falsche Verschlüsse je s, Aufnahme</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="56"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="83"/>
+        <source>lag (frames)</source>
+        <translation>Verzögerung (Bilder)</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="57"/>
         <source>mouth sharpness (ratio)</source>
         <translation>Schärfe des Mundes (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="50"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="58"/>
+        <source>seam: colour step at the drawn edge (ΔE)</source>
+        <translation>Naht: Farbsprung am gezeichneten Rand (ΔE)</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="59"/>
+        <source>seam: the recording&apos;s same pixels (ΔE)</source>
+        <translation>Naht: dieselben Pixel der Aufnahme (ΔE)</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="60"/>
+        <source>seam: a real edge there (ΔE)</source>
+        <translation>Naht: eine echte Kante dort (ΔE)</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="61"/>
         <source>mouth drawn as generated (correlation)</source>
         <translation>Mund wie erzeugt gezeichnet (Korrelation)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="141"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="67"/>
+        <source>speech r</source>
+        <translation>Sprache r</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="68"/>
+        <source>speech r, control</source>
+        <translation>Sprache r, Kontrolle</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="69"/>
+        <source>speech r, other footage</source>
+        <translation>Sprache r, anderes Material</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="70"/>
+        <source>r</source>
+        <translation>r</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="71"/>
+        <source>r, control</source>
+        <translation>r, Kontrolle</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="72"/>
+        <source>articulation</source>
+        <translation>Artikulation</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="73"/>
+        <source>closures</source>
+        <translation>Verschlüsse</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="74"/>
+        <source>closure recall</source>
+        <translation>Verschlüsse getroffen</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="75"/>
+        <source>false closures /s</source>
+        <translation>falsche Verschlüsse /s</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="76"/>
+        <source>… recording</source>
+        <translation>… Aufnahme</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="77"/>
+        <source>observer</source>
+        <translation>Beobachter</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="78"/>
+        <source>observer, videos</source>
+        <translation>Beobachter, Videos</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="79"/>
+        <source>sharpness</source>
+        <translation>Schärfe</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="80"/>
+        <source>seam ΔE</source>
+        <translation>Naht ΔE</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="81"/>
+        <source>… same pixels</source>
+        <translation>… dieselben Pixel</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="82"/>
+        <source>… a real edge</source>
+        <translation>… eine echte Kante</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="84"/>
+        <source>drawn as generated r</source>
+        <translation>gezeichnet wie erzeugt r</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="91"/>
+        <source>Pearson correlation of the rendered lip opening, read by dlib on the rendered frames, with the recording&apos;s; in speech: from the first to the last spoken phone, leaving out the silences every clip shares.</source>
+        <translation>Pearson-Korrelation der gerenderten Lippenöffnung, von dlib auf den gerenderten Bildern gelesen, mit der der Aufnahme; beim Sprechen: vom ersten bis zum letzten gesprochenen Phon, ohne die Stille, die jeder Clip hat.</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="95"/>
+        <source>The same correlation of each recording with another clip&apos;s render: a control that cannot be good. A method is only as good as its lead over this.</source>
+        <translation>Dieselbe Korrelation jeder Aufnahme mit dem Rendering eines anderen Clips: eine Kontrolle, die nicht gut sein kann. Ein Verfahren ist nur so gut wie sein Vorsprung davor.</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="98"/>
+        <source>Correlation in speech with each frame drawn into the clip&apos;s footage half its length away, whose mouth does not follow the recording: new speech put into other footage.</source>
+        <translation>Korrelation beim Sprechen, wenn jedes Bild in das Material des Clips eine halbe Cliplänge entfernt gezeichnet wird, dessen Mund der Aufnahme nicht folgt: neue Sprache in anderem Filmmaterial.</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="101"/>
+        <source>Held-out accuracy of a classifier on the mouth crop telling the render from the recording, both encoded by the same encoder. 0.5: it cannot tell them apart; the re-encoded recording shows the floor.</source>
+        <translation>Genauigkeit eines Klassifikators auf zurückgehaltenen Daten, der am Mundausschnitt Rendering und Aufnahme unterscheidet, beide mit demselben Encoder kodiert. 0,5: er kann sie nicht unterscheiden; die neu kodierte Aufnahme zeigt die Untergrenze.</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="105"/>
+        <source>Standard deviation of the rendered lip opening over the recording&apos;s: 1 articulates as much as the speaker.</source>
+        <translation>Standardabweichung der gerenderten Lippenöffnung durch die der Aufnahme: 1 artikuliert so stark wie der Sprecher.</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="108"/>
+        <source>/p b m/ segments the render closes over those the recording closes: 1 closes as often as the speaker does.</source>
+        <translation>/p b m/-Abschnitte, die das Rendering schließt, durch die, die die Aufnahme schließt: 1 schließt so oft wie der Sprecher.</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="111"/>
+        <source>Of the /p b m/ segments the recording closes, the share the render closes too.</source>
+        <translation>Von den /p b m/-Abschnitten, die die Aufnahme schließt, der Anteil, den auch das Rendering schließt.</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="113"/>
+        <source>Lip closures outside /p b m/, per second of speech (the recording&apos;s own count beside it).</source>
+        <translation>Lippenverschlüsse außerhalb von /p b m/ je Sekunde Sprache (daneben die Zahl der Aufnahme selbst).</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="115"/>
+        <source>Frames by which the opening lags the sound&apos;s energy, render minus recording (negative: the render leads).</source>
+        <translation>Bilder, um die die Öffnung der Energie des Tons nachläuft, Rendering minus Aufnahme (negativ: das Rendering läuft vor).</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="118"/>
+        <source>Mean squared Laplacian of the mouth box over the recording&apos;s: above 1 is crisper than the video.</source>
+        <translation>Mittleres Quadrat des Laplace-Filters im Mundbereich durch das der Aufnahme: über 1 ist schärfer als das Video.</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="121"/>
+        <source>CIE Lab ΔE across the edge of what the renderer drew: on the render, on the recording at the same pixels, and across a real edge there (for a drawn mouth inside: the recording&apos;s own inner-lip edge at that opening). A seam shows where the render&apos;s step exceeds a real one.</source>
+        <translation>CIE-Lab-ΔE über den Rand dessen, was der Renderer zeichnete: im Rendering, in der Aufnahme an denselben Pixeln und über eine echte Kante dort (für ein gezeichnetes Mundinneres: die eigene Innenlippenkante der Aufnahme bei dieser Öffnung). Eine Naht ist sichtbar, wo der Sprung des Renderings den einer echten Kante übersteigt.</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="125"/>
+        <source>The method&apos;s own inner-lip gap, as the animation exports carry it, against the opening read on its render.</source>
+        <translation>Der eigene Innenlippenabstand des Verfahrens, wie ihn die Animationsexporte tragen, gegen die auf seinem Rendering gelesene Öffnung.</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="217"/>
         <source>tracked</source>
         <translation>verfolgt</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="219"/>
+        <source>recording, re-encoded</source>
+        <translation>Aufnahme, neu kodiert</translation>
     </message>
 </context>
 <context>
@@ -1520,7 +1726,7 @@
     </message>
     <message>
         <location filename="../studio/app/LongRecordingImporter.cpp" line="97"/>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="173"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="174"/>
         <source>The long recording could not be imported.</source>
         <translation>Die lange Aufnahme konnte nicht importiert werden.</translation>
     </message>
@@ -1531,17 +1737,17 @@
     </message>
     <message>
         <location filename="../studio/app/LongRecordingImporter.cpp" line="122"/>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="154"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="155"/>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="158"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="159"/>
         <source>Imported from %1: %2 sequences, %3 words, cut with the built-in model (the recording is longer than Generic US English aligns): Align All aligns them again with it.</source>
         <translation>Aus %1 importiert: %2 Sequenzen, %3 Wörter, geschnitten mit dem eingebauten Modell (die Aufnahme ist länger, als Allgemeines US-Englisch aligniert): „Alle ausrichten“ richtet sie damit neu aus.</translation>
     </message>
     <message>
-        <location filename="../studio/app/LongRecordingImporter.cpp" line="166"/>
+        <location filename="../studio/app/LongRecordingImporter.cpp" line="167"/>
         <source>Imported from %1: %2 sequences, %3 words.</source>
         <translation>Aus %1 importiert: %2 Sequenzen, %3 Wörter.</translation>
     </message>
@@ -1635,117 +1841,127 @@
         <translation>Wo die Aufnahme die Lippen offen hat, sind geschlossene Lippen die eigenen der Person aus einem anderen Moment des Videos; sonst zeichnet sie das AAM</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="199"/>
+        <location filename="../studio/app/MainWindow.cpp" line="182"/>
+        <source>&amp;Open Mouths from the Footage</source>
+        <translation>&amp;Offene Münder aus dem Filmmaterial</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="184"/>
+        <source>The inside of a mouth opened wider than recorded (teeth, tongue) is the person&apos;s own open mouth from another moment of the video; otherwise the AAM draws it</source>
+        <translation>Das Innere eines weiter als aufgenommen geöffneten Mundes (Zähne, Zunge) ist der eigene offene Mund der Person aus einem anderen Moment des Videos; sonst zeichnet es das AAM</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="204"/>
         <source>&amp;Close the Lips on /p b m/</source>
         <translation>&amp;Lippen bei /p b m/ schließen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="201"/>
+        <location filename="../studio/app/MainWindow.cpp" line="206"/>
         <source>Close the generated lips on the bilabials /p b m/, as speakers do; off: the model&apos;s trajectory as generated</source>
         <translation>Die erzeugten Lippen bei den Bilabialen /p b m/ schließen, wie Sprecher es tun; aus: die Trajektorie des Modells, wie sie erzeugt wurde</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="247"/>
+        <location filename="../studio/app/MainWindow.cpp" line="252"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="251"/>
+        <location filename="../studio/app/MainWindow.cpp" line="256"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="261"/>
+        <location filename="../studio/app/MainWindow.cpp" line="266"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="265"/>
+        <location filename="../studio/app/MainWindow.cpp" line="270"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="286"/>
+        <location filename="../studio/app/MainWindow.cpp" line="291"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="287"/>
+        <location filename="../studio/app/MainWindow.cpp" line="292"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="288"/>
+        <location filename="../studio/app/MainWindow.cpp" line="293"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="290"/>
+        <location filename="../studio/app/MainWindow.cpp" line="295"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="321"/>
+        <location filename="../studio/app/MainWindow.cpp" line="326"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="322"/>
+        <location filename="../studio/app/MainWindow.cpp" line="327"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="341"/>
+        <location filename="../studio/app/MainWindow.cpp" line="346"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="353"/>
+        <location filename="../studio/app/MainWindow.cpp" line="358"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="364"/>
+        <location filename="../studio/app/MainWindow.cpp" line="369"/>
         <source>&amp;Live: Speak and Watch the Face</source>
         <translation>&amp;Live: Sprechen und das Gesicht beobachten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="366"/>
+        <location filename="../studio/app/MainWindow.cpp" line="371"/>
         <source>Speak into the microphone and watch the face move</source>
         <translation>Ins Mikrofon sprechen und dem Gesicht beim Bewegen zusehen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="370"/>
+        <location filename="../studio/app/MainWindow.cpp" line="375"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="374"/>
+        <location filename="../studio/app/MainWindow.cpp" line="379"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="378"/>
+        <location filename="../studio/app/MainWindow.cpp" line="383"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="379"/>
+        <location filename="../studio/app/MainWindow.cpp" line="384"/>
         <source>&amp;User Guide</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="382"/>
+        <location filename="../studio/app/MainWindow.cpp" line="387"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="391"/>
+        <location filename="../studio/app/MainWindow.cpp" line="396"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="411"/>
+        <location filename="../studio/app/MainWindow.cpp" line="416"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
@@ -1755,17 +1971,17 @@
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="458"/>
+        <location filename="../studio/app/MainWindow.cpp" line="463"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="460"/>
+        <location filename="../studio/app/MainWindow.cpp" line="465"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="469"/>
+        <location filename="../studio/app/MainWindow.cpp" line="474"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -1773,43 +1989,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="478"/>
+        <location filename="../studio/app/MainWindow.cpp" line="483"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="479"/>
+        <location filename="../studio/app/MainWindow.cpp" line="484"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="479"/>
+        <location filename="../studio/app/MainWindow.cpp" line="484"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="485"/>
+        <location filename="../studio/app/MainWindow.cpp" line="490"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="498"/>
+        <location filename="../studio/app/MainWindow.cpp" line="503"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="506"/>
-        <location filename="../studio/app/MainWindow.cpp" line="514"/>
+        <location filename="../studio/app/MainWindow.cpp" line="511"/>
+        <location filename="../studio/app/MainWindow.cpp" line="519"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="513"/>
+        <location filename="../studio/app/MainWindow.cpp" line="518"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="260"/>
+        <location filename="../studio/app/MainWindow.cpp" line="265"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>
@@ -1835,289 +2051,289 @@
 <context>
     <name>lipsync::studio::ModelsPanel</name>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="59"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="61"/>
         <source>Appearance model</source>
         <translation>Erscheinungsmodell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="60"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="62"/>
         <source>Phoneme aligner</source>
         <translation>Phonem-Aligner</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="150"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="152"/>
         <source>Build AAM…</source>
         <translation>AAM erstellen …</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="173"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="175"/>
         <source>Model</source>
         <translation>Modell</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="173"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="175"/>
         <source>Kind</source>
         <translation>Art</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="173"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="175"/>
         <source>File</source>
         <translation>Datei</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="299"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="301"/>
         <source>Made in this session; written when the project is saved</source>
         <translation>In dieser Sitzung erstellt; wird beim Speichern des Projekts geschrieben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="311"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="313"/>
         <source>No models yet</source>
         <translation>Noch keine Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="151"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="153"/>
         <source>Train</source>
         <translation>Trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="70"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="72"/>
         <source>%1 states for phones in context</source>
         <translation>%1 Zustände für Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="71"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="73"/>
         <source>one state per phone</source>
         <translation>ein Zustand je Phonem</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="74"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="76"/>
         <source>%1, full covariances</source>
         <translation>%1, volle Kovarianzen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="76"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="78"/>
         <source>%1 parameters, %2, variance compensation</source>
         <translation>%1 Parameter, %2, Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="77"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="79"/>
         <source>%1 parameters, %2</source>
         <translation>%1 Parameter, %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="133"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="135"/>
         <source>For a person with little footage: HMM-mean&apos;s and Brand&apos;s mouth for each sound starts from the mouths of other speakers (GRID s1), carried onto this face, and moves to the person&apos;s own as their frames of that sound add up; how much the other speakers weigh is chosen on the person&apos;s own clips. Used by Train and Realism.</source>
         <translation>Für eine Person mit wenig Material: Der Mund von HMM-Mittelwert und Brand beginnt für jeden Laut bei den Mündern anderer Sprecher (GRID s1), übertragen auf dieses Gesicht, und geht zum eigenen Mund der Person über, je mehr Bilder sie von diesem Laut hat; wie viel die anderen Sprecher wiegen, wird an den eigenen Clips der Person gewählt. Gilt für Trainieren und Realismus.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="151"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="153"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="152"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="154"/>
         <source>Evaluate (k-fold)</source>
         <translation>Evaluieren (k-fach)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="152"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="267"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="154"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="269"/>
         <source>Realism</source>
         <translation>Realismus</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="155"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="157"/>
         <source>Variance compensation</source>
         <translation>Varianzkompensation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="156"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="158"/>
         <source>Phones in context</source>
         <translation>Phoneme im Kontext</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="157"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="159"/>
         <source>Paper&apos;s models</source>
         <translation>Modelle des Artikels</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="157"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="159"/>
         <source>Start from other speakers</source>
         <translation>Von anderen Sprechern ausgehen</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="88"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="90"/>
         <source>VarPro / Levenberg–Marquardt</source>
         <translation>VarPro / Levenberg–Marquardt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="78"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="80"/>
         <source>%1, started from other speakers</source>
         <translation>%1, ausgehend von anderen Sprechern</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="89"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="91"/>
         <source>Gradient ascent (paper)</source>
         <translation>Gradientenaufstieg (Artikel)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="90"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="92"/>
         <source>Diagonal A</source>
         <translation>Diagonales A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="91"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="93"/>
         <source>Full A</source>
         <translation>Volles A</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="94"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="96"/>
         <source>Covariance by CV</source>
         <translation>Kovarianz per KV</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="95"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="97"/>
         <source>Diagonal covariance</source>
         <translation>Diagonale Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="96"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="98"/>
         <source>Full covariance</source>
         <translation>Volle Kovarianz</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="118"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="120"/>
         <source>Scale each model&apos;s generated trajectories to the spread of the training features: lips that open and close as much as the recording&apos;s, at the cost of a larger error per frame. Off: the paper&apos;s models exactly.</source>
         <translation>Skaliert die erzeugten Trajektorien jedes Modells auf die Streuung der Trainingsmerkmale: Lippen, die sich so weit öffnen und schließen wie in der Aufnahme, um den Preis eines größeren Fehlers je Bild. Aus: genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="126"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="128"/>
         <source>Train each model on states for phones in their context (the neighbouring phones and the part of the phone), tied by decision trees: lips that anticipate the next sound. Off: one state per phone, the paper&apos;s models exactly.</source>
         <translation>Jedes Modell auf Zuständen für Phoneme in ihrem Kontext trainieren (die benachbarten Phoneme und der Teil des Phonems), durch Entscheidungsbäume gebündelt: Lippen, die den nächsten Laut vorwegnehmen. Aus: ein Zustand je Phonem, genau die Modelle des Artikels.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="141"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="143"/>
         <source>Train and evaluate the paper&apos;s models exactly: no compensation or phones in context, Brand with diagonal covariances, the DPDS by the paper&apos;s Algorithm 1 and gradient ascent without the variance prior; Realism renders without lip closure, colour matching or exemplar detail.</source>
         <translation>Genau die Modelle des Artikels trainieren und evaluieren: keine Kompensation und keine Phone im Kontext, Brand mit diagonalen Kovarianzen, das DPDS mit Algorithmus 1 des Artikels und Gradientenanstieg ohne Varianz-Prior; Realismus rendert ohne Lippenschluss, Farbanpassung und Exemplar-Details.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="197"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="199"/>
         <source>folds: </source>
         <translation>Teilmengen (k-fach): </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="207"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="209"/>
         <source>Build an Active Appearance Model from the labelled frames (Faces menu).</source>
         <translation>Ein Active Appearance Model aus den beschrifteten Bildern erstellen (Menü Gesichter).</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="208"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="210"/>
         <source>Train the checked models on every sequence with features and phonemes</source>
         <translation>Die angekreuzten Modelle auf allen Sequenzen mit Merkmalen und Phonemen trainieren</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="209"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="211"/>
         <source>Stop training or evaluation; the previous models stay</source>
         <translation>Training oder Evaluation abbrechen; die bisherigen Modelle bleiben</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="210"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="212"/>
         <source>k-fold cross-validation of the checked models (the paper&apos;s Figure 4)</source>
         <translation>k-fache Kreuzvalidierung der angekreuzten Modelle (Abbildung 4 des Artikels)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="215"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="217"/>
         <source>Render the held-out sequences of the same folds into their recordings and measure the lips with dlib&apos;s landmarks: opening correlation, articulation, /p b m/ closures, lag, sharpness, seam</source>
         <translation>Die zurückgehaltenen Sequenzen derselben Folds in ihre Aufnahmen rendern und die Lippen mit dlibs Landmarken messen: Korrelation der Öffnung, Artikulation, Verschlüsse bei /p b m/, Versatz, Schärfe, Naht</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="243"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="245"/>
         <source>AAM parameter </source>
         <translation>AAM-Parameter </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="244"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="246"/>
         <source>Which AAM parameter to plot over time</source>
         <translation>Welcher AAM-Parameter über die Zeit gezeigt wird</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="254"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="256"/>
         <source>Not evaluated yet: Evaluate (k-fold) in the Models panel draws the paper&apos;s Figure 4 for the checked models.</source>
         <translation>Noch nicht evaluiert: Evaluieren (k-fach) im Modelle-Panel zeichnet Abbildung 4 des Artikels für die gewählten Modelle.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="259"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="261"/>
         <source>Not measured yet: Realism in the Models panel renders held-out sequences and measures the lips on them.</source>
         <translation>Noch nicht gemessen: Realismus im Modelle-Panel rendert zurückgehaltene Sequenzen und misst die Lippen darauf.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="264"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="266"/>
         <source>Trajectory</source>
         <translation>Trajektorie</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="265"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="267"/>
         <source>Training</source>
         <translation>Training</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="266"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="268"/>
         <source>Evaluation</source>
         <translation>Evaluation</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="347"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="349"/>
         <source>No sequence has both features and phonemes (%1 without features, %2 without phonemes): track the faces and align the speech first.</source>
         <translation>Keine Sequenz hat sowohl Merkmale als auch Phoneme (%1 ohne Merkmale, %2 ohne Phoneme): zuerst die Gesichter tracken und die Sprache alignieren.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="408"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="410"/>
         <source>Cannot start from other speakers: %1</source>
         <translation>Kann nicht von anderen Sprechern ausgehen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="418"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="420"/>
         <source>%1 of %2 phones never occur in the footage: their face comes from other speakers&apos; mouths</source>
         <translation>%1 von %2 Phonen kommen im Material nie vor: ihr Gesicht stammt von den Mündern anderer Sprecher</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="420"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="422"/>
         <source>%1 of %2 phones never occur in the footage: their face is guessed from the average</source>
         <translation>%1 von %2 Phonen kommen im Material nie vor: ihr Gesicht wird aus dem Durchschnitt geschätzt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="424"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="426"/>
         <source>%1 have fewer than %2 frames</source>
         <translation>%1 haben weniger als %2 Bilder</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="426"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="428"/>
         <source>Phones in context made no context states: too little footage for them</source>
         <translation>Phone im Kontext haben keine Kontextzustände gebildet: zu wenig Material dafür</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="430"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="432"/>
         <source>More footage of the person (%1 s of speech now) covers more.</source>
         <translation>Mehr Material der Person (jetzt %1 s Sprache) deckt mehr ab.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="432"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="434"/>
         <source>Tick Start from other speakers to take the phones it lacks from other people&apos;s mouths.</source>
         <translation>Mit „Von anderen Sprechern ausgehen“ kommen die fehlenden Phone von den Mündern anderer Menschen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="456"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="458"/>
         <source>Cannot start from other speakers without the project&apos;s AAM.</source>
         <translation>Ohne das AAM des Projekts kann nicht von anderen Sprechern ausgegangen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="475"/>
-        <location filename="../studio/build/ModelsPanel.cpp" line="513"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="489"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="533"/>
         <source>Train %1</source>
         <translation>%1 trainieren</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="477"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="491"/>
         <source>Training %1 on %n sequence(s)…</source>
         <translation>
             <numerusform>%1 wird auf %n Sequenz trainiert …</numerusform>
@@ -2125,27 +2341,27 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="501"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="521"/>
         <source>%1 trained in %2 s: log-likelihood %3 nats/frame</source>
         <translation>%1 in %2 s trainiert: Log-Likelihood %3 nats/Bild</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="524"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="544"/>
         <source>Training %1 canceled: the previous model stays.</source>
         <translation>Training von %1 abgebrochen: das bisherige Modell bleibt.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="526"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="546"/>
         <source>Training %1 failed: %2</source>
         <translation>Training von %1 fehlgeschlagen: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="533"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="553"/>
         <source>Check at least one model kind to train.</source>
         <translation>Mindestens eine Modellart zum Trainieren ankreuzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="552"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="572"/>
         <source>Evaluated %n model(s) on %1 sequences, %2 folds: mean and 95 % interval over the folds.</source>
         <translation>
             <numerusform>%n Modell auf %1 Sequenzen evaluiert, %2 Teilmengen: Mittelwert und 95-%-Intervall über die Teilmengen.</numerusform>
@@ -2153,17 +2369,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="615"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="635"/>
         <source>Check at least one model kind to evaluate.</source>
         <translation>Mindestens eine Modellart zum Evaluieren ankreuzen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="616"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="636"/>
         <source>Cross-validation needs at least two sequences.</source>
         <translation>Die Kreuzvalidierung braucht mindestens zwei Sequenzen.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="547"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="567"/>
         <source>Evaluate %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>%n Modell evaluieren (%1-fach)</numerusform>
@@ -2171,12 +2387,12 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="98"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="100"/>
         <source>Brand&apos;s output covariances. By CV: diagonal or full, whichever of the two generates held-out training sequences more closely (cross-validation). Diagonal: the paper&apos;s model.</source>
         <translation>Brands Ausgabekovarianzen. Per KV: diagonal oder voll, je nachdem, welche der beiden zurückgehaltene Trainingssequenzen genauer erzeugt (Kreuzvalidierung). Diagonal: das Modell der Veröffentlichung.</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="584"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="604"/>
         <source>Realism of %n model(s) (%1-fold)</source>
         <translation>
             <numerusform>Realismus von %n Modell (%1 Folds)</numerusform>
@@ -2184,7 +2400,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/build/ModelsPanel.cpp" line="589"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="609"/>
         <source>Rendered %1 held-out sequences (%2 folds) and measured the lips with dlib&apos;s landmarks: the AAM&apos;s re-synthesis and %n model(s).</source>
         <translation>
             <numerusform>%1 zurückgehaltene Sequenzen (%2 Folds) gerendert und die Lippen mit dlibs Landmarken gemessen: die Resynthese des AAM und %n Modell.</numerusform>
@@ -2192,47 +2408,47 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="644"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="664"/>
         <source>Evaluation failed: %1</source>
         <translation>Evaluation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="645"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="665"/>
         <source>Failed: %1.</source>
         <translation>Fehlgeschlagen: %1.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="647"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="667"/>
         <source>Canceled.</source>
         <translation>Abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="678"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="698"/>
         <source>A model of this project could not be loaded.</source>
         <translation>Ein Modell dieses Projekts konnte nicht geladen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="683"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="703"/>
         <source>Some models could not be loaded: %1</source>
         <translation>Einige Modelle konnten nicht geladen werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="510"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="530"/>
         <source>The %1 model could not be saved: %2</source>
         <translation>Das Modell %1 konnte nicht gespeichert werden: %2</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="707"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="727"/>
         <source>%1: no features yet (track the faces first)</source>
         <translation>%1: noch keine Merkmale (zuerst die Gesichter tracken)</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="717"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="737"/>
         <source>real</source>
         <translation>echt</translation>
     </message>
     <message>
-        <location filename="../studio/build/ModelsPanel.cpp" line="731"/>
+        <location filename="../studio/build/ModelsPanel.cpp" line="751"/>
         <source>%1 — AAM parameter %2</source>
         <translation>%1 — AAM-Parameter %2</translation>
     </message>
@@ -2649,75 +2865,80 @@
         <translation>Der Kopf konnte nicht getrackt werden: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="340"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="341"/>
         <source>Recorded video (landmarks: tracked)</source>
         <translation>Aufgenommenes Video (Landmarken: getrackt)</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="345"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="346"/>
         <source>Generated: %1</source>
         <translation>Erzeugt: %1</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="349"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="350"/>
         <source>Generated</source>
         <translation>Erzeugt</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="400"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="401"/>
         <source>The project has no appearance model (Faces ▸ Build AAM).</source>
         <translation>Das Projekt hat kein Erscheinungsmodell (Gesichter ▸ AAM erstellen).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="402"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="403"/>
         <source>Tracking the head pose…</source>
         <translation>Kopfhaltung wird getrackt…</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="404"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="405"/>
         <source>This sequence has no phones (align it in the Timeline).</source>
         <translation>Diese Sequenz hat keine Phoneme (in der Zeitleiste alignieren).</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="406"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="407"/>
         <source>Train a dynamic model in the Models panel to see the faces it generates.</source>
         <translation>Trainieren Sie ein dynamisches Modell im Bereich „Modelle“, um die erzeugten Gesichter zu sehen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="412"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="413"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="460"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="461"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 — Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="569"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="570"/>
         <source>Faces for new speech need the project&apos;s appearance model.</source>
         <translation>Gesichter für neue Sprache brauchen das Erscheinungsmodell des Projekts.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="570"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="571"/>
         <source>Build one with Faces ▸ Build AAM.</source>
         <translation>Erstellen Sie eines mit Gesichter ▸ AAM erstellen.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="575"/>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="628"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="576"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="630"/>
         <source>No faces could be generated for this speech.</source>
         <translation>Für diese Sprachaufnahme konnten keine Gesichter erzeugt werden.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="576"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="577"/>
         <source>Train a dynamic model in the Models panel first.</source>
         <translation>Trainieren Sie zuerst ein dynamisches Modell im Bereich „Modelle“.</translation>
     </message>
     <message>
-        <location filename="../studio/preview/PreviewPanel.cpp" line="606"/>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="608"/>
         <source>Generate faces for %1</source>
         <translation>Gesichter für %1 erzeugen</translation>
+    </message>
+    <message>
+        <location filename="../studio/preview/PreviewPanel.cpp" line="645"/>
+        <source>The words did not fit this voice with the timeline&apos;s aligner: aligned with CMU Sphinx&apos;s generic model adapted to the recording</source>
+        <translation>Die Wörter passten mit dem Aligner der Zeitleiste nicht zu dieser Stimme: mit dem an die Aufnahme angepassten allgemeinen Modell von CMU Sphinx aligniert</translation>
     </message>
 </context>
 <context>
@@ -2966,22 +3187,22 @@
 <context>
     <name>lipsync::studio::ResultsPage</name>
     <message>
-        <location filename="../studio/plots/ResultsPage.cpp" line="62"/>
+        <location filename="../studio/plots/ResultsPage.cpp" line="63"/>
         <source>Computing: %1…</source>
         <translation>Berechnung: %1…</translation>
     </message>
     <message>
-        <location filename="../studio/plots/ResultsPage.cpp" line="63"/>
+        <location filename="../studio/plots/ResultsPage.cpp" line="64"/>
         <source>Computing: %1… (shown until then: %2)</source>
         <translation>Berechnung: %1… (bis dahin angezeigt: %2)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/ResultsPage.cpp" line="69"/>
+        <location filename="../studio/plots/ResultsPage.cpp" line="70"/>
         <source>%1 Shown: %2</source>
         <translation>%1 Angezeigt: %2</translation>
     </message>
     <message>
-        <location filename="../studio/plots/ResultsPage.cpp" line="116"/>
+        <location filename="../studio/plots/ResultsPage.cpp" line="167"/>
         <source>%1, %2: mean %3 over %4 folds, 95 % interval ± %5</source>
         <translation>%1, %2: Mittelwert %3 über %4 Teilmengen, 95-%-Intervall ± %5</translation>
     </message>
@@ -3002,97 +3223,97 @@
 <context>
     <name>lipsync::studio::SequenceDetailsView</name>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="32"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="31"/>
         <source>Media:</source>
         <translation>Medien:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="33"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="32"/>
         <source>Video:</source>
         <translation>Video:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="34"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="33"/>
         <source>Audio:</source>
         <translation>Audio:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="36"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="35"/>
         <source>Transcript:</source>
         <translation>Transkript:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="37"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="36"/>
         <source>Words:</source>
         <translation>Wörter:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="38"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="37"/>
         <source>Landmarks:</source>
         <translation>Landmarken:</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="44"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="43"/>
         <source>No sequence</source>
         <translation>Keine Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="58"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="57"/>
         <source>sound only, %1 frames at %2 fps</source>
         <translation>nur Ton, %1 Bilder mit %2 fps</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="62"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="61"/>
         <source>%1 frames, %2 fps, %3×%4</source>
         <translation>%1 Bilder, %2 fps, %3×%4</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="68"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="67"/>
         <source>%1 s, decoded at %2 Hz mono</source>
         <translation>%1 s, dekodiert mit %2 Hz mono</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="72"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="71"/>
         <source>none (%1)</source>
         <translation>keiner (%1)</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="76"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="75"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="77"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="76"/>
         <source>%1 words; does not fit the sound</source>
         <translation>%1 Wörter; passt nicht zum Ton</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="78"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="77"/>
         <source>proposed, not checked</source>
         <translation>vorgeschlagen, nicht geprüft</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="79"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="78"/>
         <source>%1 words</source>
         <translation>%1 Wörter</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="83"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="82"/>
         <source>Its alignment found other words in the sound (%1 nats per frame, below %2): check the transcript, then align the sequence again</source>
         <translation>Die Alignierung hat andere Wörter im Ton gefunden (%1 nats pro Frame, unter %2): Transkript prüfen, dann die Sequenz neu alignieren</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="87"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="86"/>
         <source>Proposed by speech recognition: edit it in the list&apos;s Transcript column, or accept it as it is</source>
         <translation>Von der Spracherkennung vorgeschlagen: in der Spalte Transkript der Liste bearbeiten oder so übernehmen, wie es ist</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="93"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="92"/>
         <source>%1 timed words</source>
         <translation>%1 Wörter mit Zeitangaben</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceDetailsView.cpp" line="94"/>
+        <location filename="../studio/app/SequenceDetailsView.cpp" line="93"/>
         <source>%1 of %2 frames</source>
         <translation>%1 von %2 Bildern</translation>
     </message>
@@ -3100,52 +3321,52 @@
 <context>
     <name>lipsync::studio::SequenceListModel</name>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="55"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="54"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="76"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="75"/>
         <source>The transcript does not fit the sound (%1 nats per frame against the aligner&apos;s best phones, below %2): these are likely not the clip&apos;s words. Check them, then align the sequence again. An aligner that does not know the speaker scores every transcript low: then align with the project&apos;s own aligner, or Generic US English with Adapt to Speaker.</source>
         <translation>Das Transkript passt nicht zum Ton (%1 nats pro Frame gegenüber den besten Phonen des Aligners, unter %2): Vermutlich sind es nicht die Wörter dieses Clips. Prüfen Sie sie und alignieren Sie die Sequenz neu. Ein Aligner, der den Sprecher nicht kennt, bewertet jedes Transkript niedrig: Alignieren Sie dann mit dem eigenen Aligner des Projekts oder mit Allgemeines US-Englisch und An Sprecher anpassen.</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="83"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="82"/>
         <source>Proposed by speech recognition and not checked yet: double-click to edit it, or accept it as it is (Accept Proposed Transcript, in the Edit menu or on right-click)</source>
         <translation>Von der Spracherkennung vorgeschlagen und noch nicht geprüft: doppelklicken, um es zu bearbeiten, oder so übernehmen, wie es ist (Vorgeschlagenes Transkript übernehmen, im Menü Bearbeiten oder per Rechtsklick)</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="87"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="86"/>
         <source>Doubtful words, the most doubtful first: %1</source>
         <translation>Unsichere Wörter, die unsichersten zuerst: %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="91"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="90"/>
         <source>Double-click to edit the transcript</source>
         <translation>Doppelklicken, um das Transkript zu bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="92"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="91"/>
         <source>%1 — %2 frames at %3 fps</source>
         <translation>%1 – %2 Bilder mit %3 fps</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="132"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="131"/>
         <source>Sequence</source>
         <translation>Sequenz</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="133"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="132"/>
         <source>Frames</source>
         <translation>Bilder</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="134"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="133"/>
         <source>Duration</source>
         <translation>Dauer</translation>
     </message>
     <message>
-        <location filename="../studio/app/SequenceListModel.cpp" line="135"/>
+        <location filename="../studio/app/SequenceListModel.cpp" line="134"/>
         <source>Transcript</source>
         <translation>Transkript</translation>
     </message>
@@ -3306,7 +3527,7 @@
 <context>
     <name>lipsync::studio::StudioContext</name>
     <message>
-        <location filename="../studio/context/StudioContext.cpp" line="73"/>
+        <location filename="../studio/context/StudioContext.cpp" line="74"/>
         <source>Loading %1…</source>
         <translation>%1 wird geladen …</translation>
     </message>

@@ -167,4 +167,14 @@ double normalisedMeanError(const Eigen::VectorXd &shape, const Eigen::VectorXd &
     return eyes > 0 ? sum / n / eyes : std::numeric_limits<double>::infinity();
 }
 
+Similarity alignByEyes(const Eigen::VectorXd &from, const Eigen::VectorXd &to)
+{
+    if (from.size() != 2 * scheme23::kPointCount || to.size() != from.size())
+        return alignSimilarity(from, to);
+    Eigen::VectorXd corners = Eigen::VectorXd::Zero(scheme23::kPointCount);
+    for (int i : {scheme23::kLeftEyeOuter, 2, 4, scheme23::kRightEyeOuter}) // outer and inner corners
+        corners[i] = 1.0;
+    return alignSimilarity(from, to, corners);
+}
+
 } // namespace lipsync

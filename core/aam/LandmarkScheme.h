@@ -7,6 +7,8 @@
 //   mouth (10): the corners, three points on each outer lip, the inner-lip centres,
 //   jaw   (5): iBUG 2, 5, 8 (chin), 11, 14 — the lower face below the eyes.
 // "left"/"right" are as seen in the image (iBUG 36 is the image-left eye's outer corner).
+#include "aam/Procrustes.h"
+
 #include <Eigen/Core>
 
 #include <array>
@@ -55,6 +57,14 @@ int mirroredLandmark(int index);
 // same width is the identity. imageWidth 0 mirrors about x = -0.5 (for centred, normalised shapes
 // use mirrorShape(shape, 0) and translate).
 Eigen::VectorXd mirrorShape(const Eigen::VectorXd &shape, int imageWidth);
+
+// The similarity laying the eye corners of 23-point shape `from` on those of `to` (least squares;
+// speech does not move them): how a generated face's shape is drawn into a frame whose tracked
+// shape is `to` (FaceRenderer::drawnPose, CameraCompositor). The model's shapes are aligned on
+// all their points, so placed at the tracked face's pose a mouth opened or closed more than
+// recorded would move their eyes, and the lips and chin with them, off the recording's.
+// Falls back on all points for shapes of another scheme.
+Similarity alignByEyes(const Eigen::VectorXd &from, const Eigen::VectorXd &to);
 
 // Maps 68 iBUG points (flat, 136 values) to the 23-point scheme (46 values).
 Eigen::VectorXd mapIbug68To23(const Eigen::VectorXd &ibug68);

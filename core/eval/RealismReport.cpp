@@ -38,16 +38,16 @@ namespace lipsync {
 
 const std::vector<std::string> &realismMetrics()
 {
-    static const std::vector<std::string> names{"correlation",        "articulation",
-                                                "closure",            "lag",
-                                                "sharpness",          "seamDeltaE",
-                                                "seamDeltaERecorded", "seamDeltaENatural",
-                                                "speechCorrelation",
-                                                "controlCorrelation", "controlSpeechCorrelation",
-                                                "closureRecall",      "falseClosures",
-                                                "falseClosuresRecorded", "observerFrames",
-                                                "observerVideos",     "shapeCorrelation",
-                                                "shiftedSpeechCorrelation"};
+    // In the order a reader of the report takes them: does the mouth follow the speech (beside
+    // the control that cannot be good), how much it moves and closes, can it be told from the
+    // recording, then the picture's detail.
+    static const std::vector<std::string> names{
+        "speechCorrelation", "controlSpeechCorrelation", "shiftedSpeechCorrelation",
+        "correlation",       "controlCorrelation",       "articulation",
+        "closure",           "closureRecall",            "falseClosures",
+        "falseClosuresRecorded", "observerFrames",       "observerVideos",
+        "sharpness",         "seamDeltaE",               "seamDeltaERecorded",
+        "seamDeltaENatural", "lag",                      "shapeCorrelation"};
     return names;
 }
 
@@ -55,7 +55,7 @@ namespace {
 
 constexpr double kNoFigure = std::numeric_limits<double>::quiet_NaN();
 const std::string kTracked = "tracked";
-const std::string kReencoded = "re-encoded recording";
+const std::string kReencoded = RealismMethod::kReencoded;
 // The machine observer reads every other frame: neighbouring frames look alike, and memory stays
 // small over hundreds of sequences.
 constexpr int kObserverStep = 2;
@@ -166,13 +166,26 @@ private:
     std::vector<double> m_trackedOpening, m_ownEdge;      // per recorded frame
 };
 
+// "tracked" drawn with the parameters `renderer` tracked in its video, so that it is the recording
+// itself (or, synthesising, its re-synthesis): the project's features come from another run of the
+// tracker and differ by hundredths of a pixel, which the placement by the eyes
+// (FaceRenderer::drawnPose) would turn into a warp, resampling the recorded face.
+void drawTrackedAsTracked(const FaceRenderer &renderer, std::vector<Rendering> &renderings)
+{
+    const Eigen::MatrixXd &own = renderer.trackedFeatures();
+    for (Rendering &r : renderings)
+        if (r.method == kTracked && own.cols() == r.features.cols() && own.rows() >= r.features.rows())
+            r.features = own.topRows(r.features.rows());
+}
+
 // Renders and measures one held-out sequence (see the header).
 RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPath, const Sequence &sequence,
-                                const std::vector<Rendering> &renderings, FaceDetector &detector,
+                                std::vector<Rendering> renderings, FaceDetector &detector,
                                 const RealismOptions &options, Feedback &feedback)
 {
     FaceRenderer renderer(aam, mediaPath, feedback, &detector);
     renderer.setCompositeOptions(options.composite);
+    drawTrackedAsTracked(renderer, renderings);
     int frames = renderer.videoFrameCount();
     for (const Rendering &r : renderings)
         frames = std::min(frames, int(r.features.rows()));

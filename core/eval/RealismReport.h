@@ -140,6 +140,9 @@ struct RealismSequence
 
 struct RealismMethod
 {
+    // The machine observer's control: the recording told from its own second encode (no lips of
+    // its own, only the observer's figures).
+    static constexpr const char *kReencoded = "re-encoded recording";
     std::string kind;
     std::map<std::string, MetricSummary> metrics; // realismMetrics()
 };
@@ -162,9 +165,11 @@ struct RealismResult
     QJsonObject toJson() const;
 };
 
-// correlation, articulation, closure, lag, sharpness, seamDeltaE, seamDeltaERecorded, seamDeltaENatural,
-// speechCorrelation, controlCorrelation, controlSpeechCorrelation, closureRecall, falseClosures,
-// falseClosuresRecorded, observerFrames, observerVideos.
+// Every measure's name (docs/models.md §6.5), in the order the CLI's table and the studio's list
+// them: speechCorrelation, controlSpeechCorrelation, shiftedSpeechCorrelation, correlation,
+// controlCorrelation, articulation, closure, closureRecall, falseClosures, falseClosuresRecorded,
+// observerFrames, observerVideos, sharpness, seamDeltaE, seamDeltaERecorded, seamDeltaENatural,
+// lag, shapeCorrelation.
 const std::vector<std::string> &realismMetrics();
 
 // Throws lipsync::Error naming the project when it has no AAM, no sequence with features and

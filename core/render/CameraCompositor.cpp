@@ -2,6 +2,7 @@
 
 #include "aam/AamModel.h"
 #include "aam/FaceDetector.h"
+#include "aam/LandmarkScheme.h"
 #include "util/Error.h"
 
 #include <algorithm>
@@ -63,7 +64,9 @@ bool CameraCompositor::compose(cv::Mat &frame, const Eigen::VectorXd &features, 
         m_pose = Similarity{(1 - w) * m_pose->a + w * measured.a, (1 - w) * m_pose->b + w * measured.b,
                             (1 - w) * m_pose->tx + w * measured.tx, (1 - w) * m_pose->ty + w * measured.ty};
     }
-    m_synthesizer.composite(features, *m_pose, frame, options);
+    // Laid by the eye corners on the tracked face at that pose, as FaceRenderer draws.
+    const Similarity drawn = alignByEyes(m_synthesizer.shape(features), m_pose->apply(m_synthesizer.shape(tracked.features)));
+    m_synthesizer.composite(features, drawn, frame, options);
     return true;
 }
 

@@ -5,8 +5,9 @@
 // similarity from the shape of the tracked parameters to the fitted points — what FaceRenderer
 // computes for a recorded video — smoothed causally, since later frames are not there yet; the
 // detector checks every few frames that the tracked face is still there; and
-// the generated face is composited at that pose (AamSynthesizer: by default the lower face,
-// colour-matched to the frame along the seam).
+// the generated face is composited at that pose, laid on the tracked face by the eye corners
+// (alignByEyes; AamSynthesizer: by default the lower face, colour-matched to the frame along the
+// seam).
 #include "aam/AamSynthesizer.h"
 #include "aam/FaceTracker.h"
 

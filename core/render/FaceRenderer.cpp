@@ -1,6 +1,7 @@
 #include "render/FaceRenderer.h"
 
 #include "aam/FaceDetector.h"
+#include "aam/LandmarkScheme.h"
 #include "aam/VideoTracking.h"
 #include "io/VideoReader.h"
 #include "render/FrameComposition.h"
@@ -234,7 +235,7 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
     if (occluded(index))
         return; // what covers the face stays in front of it
     if (options.region == FaceRegion::Full || options.synthesizeSkin) {
-        m_synthesizer.composite(features, pose(index), frame, options);
+        m_synthesizer.composite(features, drawnPose(index, features), frame, options);
         return;
     }
     // The recording's own lower face moved to the generated shape, then the inside of the mouth
@@ -266,7 +267,7 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
         ownInside = false;
         CompositeOptions whole = options;
         whole.region = FaceRegion::Full;
-        m_synthesizer.composite(features, pose(index), synthesised, whole);
+        m_synthesizer.composite(features, drawnPose(index, features), synthesised, whole);
     }
     // The synthesis's colour matched to the frame's where they meet: the mean difference over
     // the feathered band (alpha between 0.02 and 0.5: the edge of what is fully drawn, all of a
@@ -317,12 +318,17 @@ Eigen::VectorXd FaceRenderer::trackedShape(int index) const
     const Eigen::VectorXd c = m_tracked.rows() > 0
                                   ? Eigen::VectorXd(m_tracked.row(std::clamp<Eigen::Index>(sourceFrame(index), 0, m_tracked.rows() - 1)).transpose())
                                   : Eigen::VectorXd::Zero(m_aam.combinedModes());
-    return drawnShape(index, c);
+    return pose(index).apply(m_synthesizer.shape(c));
+}
+
+Similarity FaceRenderer::drawnPose(int index, const Eigen::VectorXd &features) const
+{
+    return alignByEyes(m_synthesizer.shape(features), trackedShape(index));
 }
 
 Eigen::VectorXd FaceRenderer::drawnShape(int index, const Eigen::VectorXd &features) const
 {
-    return pose(index).apply(m_synthesizer.shape(features));
+    return drawnPose(index, features).apply(m_synthesizer.shape(features));
 }
 
 cv::Mat FaceRenderer::featheredPolygon(const std::vector<cv::Point2f> &outline, double feather, float weight) const
@@ -384,7 +390,7 @@ cv::Mat FaceRenderer::synthesisedWeight(int index, const Eigen::VectorXd &featur
     if (occluded(index))
         return cv::Mat(m_size, CV_32F, cv::Scalar(0));
     if (m_composite.region == FaceRegion::Full || m_composite.synthesizeSkin)
-        return m_synthesizer.compositeWeight(features, pose(index), m_size, m_composite.region);
+        return m_synthesizer.compositeWeight(features, drawnPose(index, features), m_size, m_composite.region);
     bool closing = false;
     cv::Mat alpha = mouthInteriorAlpha(drawnShape(index, features), trackedShape(index), &closing);
     if (inside)

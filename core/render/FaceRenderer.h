@@ -117,8 +117,12 @@ public:
     // The 23 points of the face tracked in frame `index`, in its pixels (the mean shape at the
     // neutral frame's pose without a video).
     Eigen::VectorXd trackedShape(int index) const;
-    // The 23 points of parameters `features` drawn into frame `index`, in its pixels (at the
-    // frame's pose).
+    // Where parameters `features` are drawn into frame `index` (model coordinates -> its pixels):
+    // their shape laid on the tracked face by the eye corners (alignByEyes), so the mouth opens
+    // and closes about eyes that stay where the recording has them (pose(index) for the tracked
+    // parameters themselves).
+    Similarity drawnPose(int index, const Eigen::VectorXd &features) const;
+    // The 23 points of parameters `features` drawn into frame `index`, in its pixels.
     Eigen::VectorXd drawnShape(int index, const Eigen::VectorXd &features) const;
     // The real frame on the left and the rendered one on the right, one frame (optional labels).
     cv::Mat renderSideBySide(int index, const Eigen::VectorXd &features,

@@ -42,14 +42,89 @@ QString EvaluationChart::metricTitle(const std::string &metric)
     if (metric == "linf") return EvaluationChart::tr("L-inf error");
     if (metric == "loglik") return EvaluationChart::tr("log-likelihood per frame");
     if (metric == "correlation") return EvaluationChart::tr("lip-opening correlation");
+    if (metric == "controlCorrelation") return EvaluationChart::tr("lip-opening correlation, control");
     if (metric == "speechCorrelation") return EvaluationChart::tr("lip-opening correlation in speech");
+    if (metric == "controlSpeechCorrelation") return EvaluationChart::tr("lip-opening correlation in speech, control");
+    if (metric == "shiftedSpeechCorrelation") return EvaluationChart::tr("lip-opening correlation in speech, other footage");
     if (metric == "observerFrames") return EvaluationChart::tr("machine observer (0.5: fooled)");
+    if (metric == "observerVideos") return EvaluationChart::tr("machine observer per video");
     if (metric == "articulation") return EvaluationChart::tr("articulation (s.d. ratio)");
     if (metric == "closure") return EvaluationChart::tr("/p b m/ closures (ratio)");
+    if (metric == "closureRecall") return EvaluationChart::tr("/p b m/ closure recall");
+    if (metric == "falseClosures") return EvaluationChart::tr("false closures per s of speech");
+    if (metric == "falseClosuresRecorded") return EvaluationChart::tr("false closures per s, recording");
+    if (metric == "lag") return EvaluationChart::tr("lag (frames)");
     if (metric == "sharpness") return EvaluationChart::tr("mouth sharpness (ratio)");
+    if (metric == "seamDeltaE") return EvaluationChart::tr("seam: colour step at the drawn edge (ΔE)");
+    if (metric == "seamDeltaERecorded") return EvaluationChart::tr("seam: the recording's same pixels (ΔE)");
+    if (metric == "seamDeltaENatural") return EvaluationChart::tr("seam: a real edge there (ΔE)");
     if (metric == "shapeCorrelation") return EvaluationChart::tr("mouth drawn as generated (correlation)");
-    if (metric == "shiftedSpeechCorrelation") return EvaluationChart::tr("lip-opening correlation in speech, other footage");
     return QString::fromStdString(metric);
+}
+
+QString EvaluationChart::metricLabel(const std::string &metric)
+{
+    if (metric == "speechCorrelation") return tr("speech r");
+    if (metric == "controlSpeechCorrelation") return tr("speech r, control");
+    if (metric == "shiftedSpeechCorrelation") return tr("speech r, other footage");
+    if (metric == "correlation") return tr("r");
+    if (metric == "controlCorrelation") return tr("r, control");
+    if (metric == "articulation") return tr("articulation");
+    if (metric == "closure") return tr("closures");
+    if (metric == "closureRecall") return tr("closure recall");
+    if (metric == "falseClosures") return tr("false closures /s");
+    if (metric == "falseClosuresRecorded") return tr("… recording");
+    if (metric == "observerFrames") return tr("observer");
+    if (metric == "observerVideos") return tr("observer, videos");
+    if (metric == "sharpness") return tr("sharpness");
+    if (metric == "seamDeltaE") return tr("seam ΔE");
+    if (metric == "seamDeltaERecorded") return tr("… same pixels");
+    if (metric == "seamDeltaENatural") return tr("… a real edge");
+    if (metric == "lag") return tr("lag (frames)");
+    if (metric == "shapeCorrelation") return tr("drawn as generated r");
+    return metricTitle(metric);
+}
+
+QString EvaluationChart::metricDescription(const std::string &metric)
+{
+    if (metric == "correlation" || metric == "speechCorrelation")
+        return tr("Pearson correlation of the rendered lip opening, read by dlib on the rendered frames, with the "
+                  "recording's; in speech: from the first to the last spoken phone, leaving out the silences every "
+                  "clip shares.");
+    if (metric == "controlCorrelation" || metric == "controlSpeechCorrelation")
+        return tr("The same correlation of each recording with another clip's render: a control that cannot be "
+                  "good. A method is only as good as its lead over this.");
+    if (metric == "shiftedSpeechCorrelation")
+        return tr("Correlation in speech with each frame drawn into the clip's footage half its length away, whose "
+                  "mouth does not follow the recording: new speech put into other footage.");
+    if (metric == "observerFrames" || metric == "observerVideos")
+        return tr("Held-out accuracy of a classifier on the mouth crop telling the render from the recording, both "
+                  "encoded by the same encoder. 0.5: it cannot tell them apart; the re-encoded recording shows the "
+                  "floor.");
+    if (metric == "articulation")
+        return tr("Standard deviation of the rendered lip opening over the recording's: 1 articulates as much as "
+                  "the speaker.");
+    if (metric == "closure")
+        return tr("/p b m/ segments the render closes over those the recording closes: 1 closes as often as the "
+                  "speaker does.");
+    if (metric == "closureRecall")
+        return tr("Of the /p b m/ segments the recording closes, the share the render closes too.");
+    if (metric == "falseClosures" || metric == "falseClosuresRecorded")
+        return tr("Lip closures outside /p b m/, per second of speech (the recording's own count beside it).");
+    if (metric == "lag")
+        return tr("Frames by which the opening lags the sound's energy, render minus recording (negative: the "
+                  "render leads).");
+    if (metric == "sharpness")
+        return tr("Mean squared Laplacian of the mouth box over the recording's: above 1 is crisper than the "
+                  "video.");
+    if (metric == "seamDeltaE" || metric == "seamDeltaERecorded" || metric == "seamDeltaENatural")
+        return tr("CIE Lab ΔE across the edge of what the renderer drew: on the render, on the recording at the "
+                  "same pixels, and across a real edge there (for a drawn mouth inside: the recording's own "
+                  "inner-lip edge at that opening). A seam shows where the render's step exceeds a real one.");
+    if (metric == "shapeCorrelation")
+        return tr("The method's own inner-lip gap, as the animation exports carry it, against the opening read on "
+                  "its render.");
+    return {};
 }
 
 struct EvaluationChart::Impl
@@ -132,19 +207,27 @@ void EvaluationChart::setResult(const EvaluationResult &result)
     draw(bars, evaluationMetrics());
 }
 
+std::vector<EvaluationChart::Bars> EvaluationChart::realismColumns(const RealismResult &result, bool withReencoded)
+{
+    std::vector<Bars> columns;
+    for (const RealismMethod &method : result.methods) {
+        if (method.kind == RealismMethod::kReencoded) {
+            if (withReencoded)
+                columns.push_back({tr("recording, re-encoded"), QColor(0x30, 0x30, 0x30), method.metrics});
+        } else if (method.kind == "tracked") {
+            columns.push_back({tr("tracked"), QColor(0x75, 0x75, 0x75), method.metrics});
+        } else {
+            columns.push_back({ModelKinds::name(method.kind), ModelKinds::colour(method.kind), method.metrics});
+        }
+    }
+    return columns;
+}
+
 void EvaluationChart::setRealism(const RealismResult &result)
 {
-    std::vector<Bars> bars;
-    for (const RealismMethod &method : result.methods) {
-        if (!method.metrics.count("articulation") || !std::isfinite(method.metrics.at("articulation").mean))
-            continue; // the re-encoded recording: the observer's control, no lips of its own
-        const bool tracked = method.kind == "tracked";
-        bars.push_back({tracked ? tr("tracked") : ModelKinds::name(method.kind),
-                        tracked ? QColor(0x75, 0x75, 0x75) : ModelKinds::colour(method.kind), method.metrics});
-    }
-    // The four a viewer sees first (the rest stay in `lipsync evaluate --realism`): four charts
-    // stay legible in a docked panel, as Figure 4's do.
-    draw(bars, {"speechCorrelation", "articulation", "closure", "observerFrames"});
+    // The four a viewer sees first (ResultsPage's table lists every measure): four charts stay
+    // legible in a docked panel, as Figure 4's do. The re-encoded recording has no lips to chart.
+    draw(realismColumns(result, false), {"speechCorrelation", "articulation", "closure", "observerFrames"});
 }
 
 void EvaluationChart::draw(const std::vector<Bars> &bars, const std::vector<std::string> &metrics)

@@ -50,6 +50,13 @@ public:
     QString hoverText(int metric, int bar) const;
     const std::vector<std::string> &metrics() const;
     static QString metricTitle(const std::string &metric);
+    // A measure's name in a few words, for a table's row in a docked panel ("speech r").
+    static QString metricLabel(const std::string &metric);
+    // What a measure means, in a sentence (the tables' tooltips; empty when unknown).
+    static QString metricDescription(const std::string &metric);
+    // Every method of a realism report as a column: "tracked", the models, and with
+    // `withReencoded` the recording re-encoded (the machine observer's floor, no lips of its own).
+    static std::vector<Bars> realismColumns(const RealismResult &result, bool withReencoded);
 
 private:
     void draw(const std::vector<Bars> &bars, const std::vector<std::string> &metrics);

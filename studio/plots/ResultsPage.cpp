@@ -50,6 +50,7 @@ QString ResultsPage::stateText() const
 void ResultsPage::clear()
 {
     m_chart->clear();
+    m_realism.clear();
     m_shownState.clear();
     m_computing = false;
     fillTable();
@@ -72,12 +73,14 @@ void ResultsPage::setStopped(const QString &why)
 void ResultsPage::setResult(const EvaluationResult &result, const QString &state)
 {
     m_chart->setResult(result);
+    m_realism.clear();
     showDrawn(state);
 }
 
 void ResultsPage::setRealism(const RealismResult &result, const QString &state)
 {
     m_chart->setRealism(result);
+    m_realism = EvaluationChart::realismColumns(result, true);
     showDrawn(state);
 }
 
@@ -91,6 +94,10 @@ void ResultsPage::showDrawn(const QString &state)
 
 void ResultsPage::fillTable()
 {
+    if (!m_realism.empty()) {
+        fillMeasuresTable();
+        return;
+    }
     // Rows: the charts' methods; columns: their metrics; "mean ± 95 % interval" as drawn.
     const auto &bars = m_chart->bars();
     const auto &metrics = m_chart->metrics();
@@ -107,24 +114,66 @@ void ResultsPage::fillTable()
         m_table->setVerticalHeaderItem(r, name);
         for (int c = 0; c < int(metrics.size()); ++c) {
             const auto found = bars[size_t(r)].metrics.find(metrics[size_t(c)]);
-            QString text = QStringLiteral("–");
-            QString tip;
-            if (found != bars[size_t(r)].metrics.end() && std::isfinite(found->second.mean)) {
-                const MetricSummary &s = found->second;
-                text = std::isfinite(s.ci95) ? QStringLiteral("%1 ± %2").arg(s.mean, 0, 'g', 4).arg(s.ci95, 0, 'g', 2)
-                                             : QString::number(s.mean, 'g', 4);
-                tip = tr("%1, %2: mean %3 over %4 folds, 95 % interval ± %5")
-                          .arg(bars[size_t(r)].name, columns[c])
-                          .arg(s.mean, 0, 'g', 6)
-                          .arg(s.folds.size())
-                          .arg(s.ci95, 0, 'g', 3);
-            }
-            auto *item = new QTableWidgetItem(text);
-            item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-            item->setToolTip(tip);
-            m_table->setItem(r, c, item);
+            m_table->setItem(r, c, cell(bars[size_t(r)].name, columns[c],
+                                        found == bars[size_t(r)].metrics.end() ? nullptr : &found->second));
         }
     }
+}
+
+void ResultsPage::fillMeasuresTable()
+{
+    // The measures some method has a figure for (the seam's only where something was drawn, the
+    // exports' shape only for models), in the report's order.
+    std::vector<std::string> measures;
+    for (const std::string &measure : realismMetrics())
+        for (const EvaluationChart::Bars &method : m_realism) {
+            const auto found = method.metrics.find(measure);
+            if (found != method.metrics.end() && std::isfinite(found->second.mean)) {
+                measures.push_back(measure);
+                break;
+            }
+        }
+    m_table->clear();
+    m_table->setRowCount(int(measures.size()));
+    m_table->setColumnCount(int(m_realism.size()));
+    for (int c = 0; c < int(m_realism.size()); ++c) {
+        auto *name = new QTableWidgetItem(m_realism[size_t(c)].name);
+        name->setForeground(m_realism[size_t(c)].colour.darker(120));
+        m_table->setHorizontalHeaderItem(c, name);
+    }
+    for (int r = 0; r < int(measures.size()); ++r) {
+        const QString title = EvaluationChart::metricTitle(measures[size_t(r)]);
+        auto *header = new QTableWidgetItem(EvaluationChart::metricLabel(measures[size_t(r)]));
+        header->setToolTip(QStringLiteral("<b>%1</b><br>%2").arg(title.toHtmlEscaped(),
+                                                            EvaluationChart::metricDescription(measures[size_t(r)]).toHtmlEscaped()));
+        m_table->setVerticalHeaderItem(r, header);
+        for (int c = 0; c < int(m_realism.size()); ++c) {
+            const auto &metrics = m_realism[size_t(c)].metrics;
+            const auto found = metrics.find(measures[size_t(r)]);
+            m_table->setItem(r, c, cell(m_realism[size_t(c)].name, title, found == metrics.end() ? nullptr : &found->second));
+        }
+    }
+}
+
+// "mean ± 95 % interval" (or "–" without a figure), its folds in the tooltip.
+QTableWidgetItem *ResultsPage::cell(const QString &method, const QString &measure, const MetricSummary *summary) const
+{
+    QString text = QStringLiteral("–");
+    QString tip;
+    if (summary && std::isfinite(summary->mean)) {
+        const MetricSummary &s = *summary;
+        text = std::isfinite(s.ci95) ? QStringLiteral("%1 ± %2").arg(s.mean, 0, 'g', 4).arg(s.ci95, 0, 'g', 2)
+                                     : QString::number(s.mean, 'g', 4);
+        tip = tr("%1, %2: mean %3 over %4 folds, 95 % interval ± %5")
+                  .arg(method, measure)
+                  .arg(s.mean, 0, 'g', 6)
+                  .arg(s.folds.size())
+                  .arg(s.ci95, 0, 'g', 3);
+    }
+    auto *item = new QTableWidgetItem(text);
+    item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    item->setToolTip(tip);
+    return item;
 }
 
 } // namespace lipsync::studio

@@ -10,7 +10,7 @@ namespace lipsync::studio {
 
 GeneratedFaces::GeneratedFaces(std::shared_ptr<const AamModel> aam, std::shared_ptr<const FaceRenderer> renderer,
                                const FrameClock &frames)
-    : m_aam(std::move(aam)), m_renderer(std::move(renderer)), m_synth(*m_aam),
+    : m_aam(std::move(aam)), m_renderer(std::move(renderer)),
       m_frames(frames.rate() > 0 ? frames : FrameClock::uniform(25.0, frames.count()))
 {
 }
@@ -73,8 +73,7 @@ LandmarkSet GeneratedFaces::landmarks(int track, int frame) const
 {
     if (track < 0 || track >= int(m_tracks.size()) || m_tracks[std::size_t(track)].params.rows() == 0)
         return {};
-    const Eigen::VectorXd shape = m_renderer->pose(poseFrame(frame)).apply(m_synth.shape(paramsAt(track, frame)));
-    return landmarkSetFromShape(shape, PointState::Automatic);
+    return landmarkSetFromShape(m_renderer->drawnShape(poseFrame(frame), paramsAt(track, frame)), PointState::Automatic);
 }
 
 std::optional<LandmarkSet> GeneratedFaces::trackedLandmarks(int frame) const
@@ -83,8 +82,7 @@ std::optional<LandmarkSet> GeneratedFaces::trackedLandmarks(int frame) const
     if (m_fixedPose >= 0 || !m_retimed.empty() || tracked.rows() == 0 || frame < 0)
         return std::nullopt;
     const int row = std::min(frame, int(tracked.rows()) - 1);
-    return landmarkSetFromShape(m_renderer->pose(row).apply(m_synth.shape(tracked.row(row).transpose())),
-                                PointState::Automatic);
+    return landmarkSetFromShape(m_renderer->trackedShape(row), PointState::Automatic);
 }
 
 } // namespace lipsync::studio

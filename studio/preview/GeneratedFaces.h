@@ -78,7 +78,6 @@ private:
 
     std::shared_ptr<const AamModel> m_aam;
     std::shared_ptr<const FaceRenderer> m_renderer;
-    AamSynthesizer m_synth; // shapes for the landmarks overlay
     FrameClock m_frames;
     QImage m_fixed;
     int m_fixedPose = -1;

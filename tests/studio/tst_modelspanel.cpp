@@ -40,6 +40,7 @@
 #include <QFileInfo>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QSet>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTabWidget>
@@ -51,6 +52,7 @@
 #include <QWheelEvent>
 
 #include <algorithm>
+#include <limits>
 
 using namespace lipsync;
 using namespace lipsync::studio;
@@ -434,12 +436,46 @@ private slots:
                 method.metrics[metric] = MetricSummary{{0.4, 0.6}, 0.5, 0.1};
             result.methods.push_back(method);
         }
+        // The recording re-encoded: the observer's floor, no lips of its own.
+        RealismMethod reencoded;
+        reencoded.kind = RealismMethod::kReencoded;
+        const double none = std::numeric_limits<double>::quiet_NaN();
+        for (const std::string &metric : realismMetrics())
+            reencoded.metrics[metric] = MetricSummary{{none, none}, none, none};
+        reencoded.metrics["observerFrames"] = MetricSummary{{0.49, 0.51}, 0.5, 0.02};
+        result.methods.push_back(reencoded);
+        result.methods[1].metrics["lag"] = MetricSummary{{1, 2}, 1.5, 0.25};
+        result.methods[0].metrics["shapeCorrelation"] = MetricSummary{{none, none}, none, none};
+        result.methods[1].metrics["shapeCorrelation"] = MetricSummary{{none, none}, none, none};
+        result.methods[2].metrics["shapeCorrelation"] = MetricSummary{{none, none}, none, none};
         ResultsPage *page = m_panel->realismPage();
         page->setRealism(result, QStringLiteral("test"));
         QCOMPARE(page->chart()->modelCount(), 3);
         QCOMPARE(page->chart()->metricCount(), 4);
-        QCOMPARE(page->table()->rowCount(), 3);
-        QCOMPARE(page->table()->item(1, 0)->text(), QStringLiteral("0.5 ± 0.1"));
+        // The table holds every measure with a figure (a row each, explained in its tooltip) for
+        // every method, the re-encoded recording included, in the report's order.
+        QTableWidget *table = page->table();
+        QCOMPARE(table->columnCount(), 4);
+        QCOMPARE(table->horizontalHeaderItem(3)->text(), QStringLiteral("recording, re-encoded"));
+        QCOMPARE(table->rowCount(), int(realismMetrics().size()) - 1); // shapeCorrelation: no figure
+        QStringList rows;
+        for (int r = 0; r < table->rowCount(); ++r) {
+            rows << table->verticalHeaderItem(r)->text();
+            QVERIFY2(!table->verticalHeaderItem(r)->toolTip().isEmpty(), qPrintable(rows.last()));
+        }
+        QCOMPARE(rows.first(), EvaluationChart::metricLabel("speechCorrelation"));
+        QCOMPARE(rows[1], EvaluationChart::metricLabel("controlSpeechCorrelation"));
+        QVERIFY(table->verticalHeaderItem(1)->toolTip().contains(QStringLiteral("another clip's render")));
+        for (const char *measure : {"seamDeltaE", "seamDeltaENatural", "falseClosures", "closureRecall"})
+            QVERIFY2(rows.contains(EvaluationChart::metricLabel(measure)), measure);
+        QCOMPARE(QSet<QString>(rows.begin(), rows.end()).size(), rows.size()); // no two rows alike
+        const int lag = int(rows.indexOf(EvaluationChart::metricLabel("lag")));
+        const int observer = int(rows.indexOf(EvaluationChart::metricLabel("observerFrames")));
+        QCOMPARE(table->item(lag, 1)->text(), QStringLiteral("1.5 ± 0.25"));
+        QCOMPARE(table->item(lag, 0)->text(), QStringLiteral("0.5 ± 0.1"));
+        QCOMPARE(table->item(lag, 3)->text(), QStringLiteral("–"));
+        QCOMPARE(table->item(observer, 3)->text(), QStringLiteral("0.5 ± 0.02"));
+        QVERIFY(table->item(observer, 3)->toolTip().contains(QStringLiteral("2 folds")));
         QCOMPARE(page->chart()->hoverText(0, 1), ModelKinds::name(QStringLiteral("brand")) + QStringLiteral(": 0.5"));
         if (qEnvironmentVariableIsSet("LIPSYNC_REALISM_SCREENSHOT"))
             page->grab().toImage().save(qEnvironmentVariable("LIPSYNC_REALISM_SCREENSHOT"));

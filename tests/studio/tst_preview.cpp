@@ -25,7 +25,9 @@
 #include "preview/GeneratedFaces.h"
 #include "preview/PreviewPanel.h"
 #include "preview/SpeechDialog.h"
+#include "aam/PtsFile.h"
 #include "render/BilabialClosure.h"
+#include "render/LowerFaceWarp.h"
 #include "render/SpeechToFace.h"
 #include "tasks/TaskRunner.h"
 #include "timeline/TimelinePanel.h"
@@ -186,9 +188,16 @@ private slots:
             for (const LandmarkPoint &p : set->points)
                 face = face.isNull() ? QRectF(p.x, p.y, 1, 1) : face.united(QRectF(p.x, p.y, 1, 1));
         // The lower face moves with the neck below the chin and the cheeks beside the jaw (the
-        // recording's own face, warped): the face's box widened by half its width either side
-        // and by 60 % of its height downwards.
-        const QRect box = face.adjusted(-0.5 * face.width(), -12, 0.5 * face.width(), 0.6 * face.height()).toAlignedRect();
+        // recording's own face, warped): nothing changes beyond the region the warp moves
+        // (LowerFaceWarp: within its fixed ring of anchors, 1.4 eye spans either side and 0.4
+        // face lengths below the chin), which holds the face's surroundings, not the whole frame.
+        QImage copy = recorded.convertToFormat(QImage::Format_RGB888);
+        cv::Mat pixels(copy.height(), copy.width(), CV_8UC3, copy.bits(), size_t(copy.bytesPerLine()));
+        const cv::Rect warped = LowerFaceWarp::apply(pixels, shapeFromLandmarkSet(*tracked), shapeFromLandmarkSet(drawn));
+        const QRect box(warped.x, warped.y, warped.width, warped.height);
+        QVERIFY(box.contains(face.toAlignedRect()));
+        QVERIFY2(box.width() < 0.75 * recorded.width() && box.height() < 0.9 * recorded.height(),
+                 qPrintable(QStringLiteral("%1x%2").arg(box.width()).arg(box.height())));
         int inside = 0, outside = 0;
         const QImage x = recorded.convertToFormat(QImage::Format_RGB888);
         const QImage y = dpds.convertToFormat(QImage::Format_RGB888);

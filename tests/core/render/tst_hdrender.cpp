@@ -215,6 +215,70 @@ private slots:
         QVERIFY2(closed >= open * 3 / 4, qPrintable(QStringLiteral("%1 of %2").arg(closed).arg(open)));
     }
 
+    // A mouth asked to close closes about the eyes, as his own does: the generated shape is laid
+    // on the tracked face by its eye corners (FaceRenderer::drawnPose), which stay where the
+    // recording has them, and of each pixel the lips close the upper lip takes the share his own
+    // recorded mouth gives it (the slope of its height on the opening, in eye-line coordinates).
+    // Placed at the tracked face's pose, the model's shape (aligned on all its points) puts its
+    // eyes lower and lets the upper lip take more: the nose is drawn down with it.
+    void mouthClosesAboutTheEyes()
+    {
+        Feedback feedback;
+        FaceRenderer renderer(m_aam, kClip, feedback);
+        const BilabialClosure closure(m_aam);
+        // Heights below the eyes' midpoint of `eyes` (the recording's, which the render keeps) along
+        // the face's vertical, in eye-corner distances.
+        auto height = [](const Eigen::VectorXd &shape, int point, const Eigen::VectorXd &eyes) {
+            const Eigen::Vector2d left = eyes.segment<2>(2 * scheme23::kLeftEyeOuter);
+            const Eigen::Vector2d right = eyes.segment<2>(2 * scheme23::kRightEyeOuter);
+            const Eigen::Vector2d across = right - left;
+            const Eigen::Vector2d down(-across.y(), across.x());
+            return (shape.segment<2>(2 * point) - 0.5 * (left + right)).dot(down) / across.squaredNorm();
+        };
+        constexpr int kUpperLip = 16, kLowerLip = 17; // inner-lip centres
+        auto opening = [&](const Eigen::VectorXd &shape, const Eigen::VectorXd &eyes) {
+            return height(shape, kLowerLip, eyes) - height(shape, kUpperLip, eyes);
+        };
+        // His own: the upper lip's height against the opening over the recorded frames.
+        double so = 0, su = 0, soo = 0, sou = 0;
+        const int frames = renderer.videoFrameCount();
+        for (int t = 0; t < frames; ++t) {
+            const Eigen::VectorXd shape = renderer.trackedShape(t);
+            const double o = opening(shape, shape), u = height(shape, kUpperLip, shape);
+            so += o, su += u, soo += o * o, sou += o * u;
+        }
+        const double recorded = (sou - so * su / frames) / (soo - so * so / frames);
+        double closedBy = 0, upperDrawn = 0, upperAtPose = 0, eyes = 0, eyesAtPose = 0;
+        int asked = 0;
+        for (int t = 0; t < frames; t += 3) {
+            const Eigen::VectorXd tracked = renderer.trackedShape(t);
+            if (LowerFaceWarp::opening(tracked) < 12.0)
+                continue; // open mouths only
+            const Eigen::VectorXd shut = closure.apply(renderer.trackedFeatures().row(t), std::vector<double>{1.0}).row(0).transpose();
+            const Eigen::VectorXd drawn = renderer.drawnShape(t, shut);
+            const Eigen::VectorXd atPose = renderer.pose(t).apply(renderer.synthesizer().shape(shut));
+            for (int corner : {0, 2, 4, 6}) {
+                eyes += (drawn.segment<2>(2 * corner) - tracked.segment<2>(2 * corner)).norm();
+                eyesAtPose += (atPose.segment<2>(2 * corner) - tracked.segment<2>(2 * corner)).norm();
+            }
+            closedBy += opening(tracked, tracked) - opening(drawn, tracked);
+            upperDrawn += height(drawn, kUpperLip, tracked) - height(tracked, kUpperLip, tracked);
+            upperAtPose += height(atPose, kUpperLip, tracked) - height(tracked, kUpperLip, tracked);
+            ++asked;
+        }
+        QVERIFY(asked >= 10);
+        eyes /= 4 * asked;
+        eyesAtPose /= 4 * asked;
+        // Shares of the closing the upper lip takes (a lowered upper lip closes: the slope's sign flipped).
+        const double drawnShare = upperDrawn / closedBy, atPoseShare = upperAtPose / closedBy;
+        qInfo("%d open mouths closed: eye corners moved %.2f px (%.2f px at the tracked pose); upper lip's share "
+              "%.2f (%.2f at the tracked pose), his own %.2f",
+              asked, eyes, eyesAtPose, drawnShare, atPoseShare, -recorded);
+        QVERIFY2(eyes < 0.5 && eyes < 0.25 * eyesAtPose, qPrintable(QString::number(eyes)));
+        QVERIFY2(std::abs(drawnShare + recorded) < 0.1, qPrintable(QString::number(drawnShare)));
+        QVERIFY(std::abs(drawnShare + recorded) < std::abs(atPoseShare + recorded));
+    }
+
     // The other way: each frame drawn with the mouth of the frame half the clip away (new speech
     // in his own video), where that mouth is open wider, opens most of the way to that frame's, as
     // dlib reads both: the warp may stretch the thin line between the lips as far as asked (his own
