@@ -172,7 +172,7 @@ Similarity alignByEyes(const Eigen::VectorXd &from, const Eigen::VectorXd &to)
     if (from.size() != 2 * scheme23::kPointCount || to.size() != from.size())
         return alignSimilarity(from, to);
     Eigen::VectorXd corners = Eigen::VectorXd::Zero(scheme23::kPointCount);
-    for (int i : {scheme23::kLeftEyeOuter, 2, 4, scheme23::kRightEyeOuter}) // outer and inner corners
+    for (int i : scheme23::kEyeCorners)
         corners[i] = 1.0;
     return alignSimilarity(from, to, corners);
 }

@@ -35,6 +35,10 @@ namespace scheme23 {
 constexpr int kPointCount = 23;
 constexpr int kLeftEyeOuter = 0;  // outer eye corners: the NME normaliser
 constexpr int kRightEyeOuter = 6;
+constexpr int kLeftEyeInner = 2;
+constexpr int kRightEyeInner = 4;
+// The four eye corners, which speech does not move (alignByEyes).
+constexpr int kEyeCorners[] = {kLeftEyeOuter, kLeftEyeInner, kRightEyeInner, kRightEyeOuter};
 constexpr int kMouthLeft = 8;
 constexpr int kMouthRight = 12;
 constexpr int kIbugPointCount = 68;

@@ -328,7 +328,8 @@ Similarity FaceRenderer::drawnPose(int index, const Eigen::VectorXd &features) c
 
 Eigen::VectorXd FaceRenderer::drawnShape(int index, const Eigen::VectorXd &features) const
 {
-    return drawnPose(index, features).apply(m_synthesizer.shape(features));
+    const Eigen::VectorXd shape = m_synthesizer.shape(features);
+    return alignByEyes(shape, trackedShape(index)).apply(shape);
 }
 
 cv::Mat FaceRenderer::featheredPolygon(const std::vector<cv::Point2f> &outline, double feather, float weight) const

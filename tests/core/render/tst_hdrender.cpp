@@ -257,7 +257,7 @@ private slots:
             const Eigen::VectorXd shut = closure.apply(renderer.trackedFeatures().row(t), std::vector<double>{1.0}).row(0).transpose();
             const Eigen::VectorXd drawn = renderer.drawnShape(t, shut);
             const Eigen::VectorXd atPose = renderer.pose(t).apply(renderer.synthesizer().shape(shut));
-            for (int corner : {0, 2, 4, 6}) {
+            for (int corner : scheme23::kEyeCorners) {
                 eyes += (drawn.segment<2>(2 * corner) - tracked.segment<2>(2 * corner)).norm();
                 eyesAtPose += (atPose.segment<2>(2 * corner) - tracked.segment<2>(2 * corner)).norm();
             }
