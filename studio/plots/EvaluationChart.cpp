@@ -35,96 +35,87 @@
 
 namespace lipsync::studio {
 
+// Each measure's texts (title, short label, description; null where it has none), marked for
+// translation in this class's context.
+const EvaluationChart::MetricText *EvaluationChart::metricText(const std::string &metric)
+{
+    static const char *const correlation = QT_TR_NOOP(
+        "Pearson correlation of the rendered lip opening, read by dlib on the rendered frames, with the recording's; "
+        "in speech: from the first to the last spoken phone, leaving out the silences every clip shares.");
+    static const char *const control = QT_TR_NOOP(
+        "The same correlation of each recording with another clip's render: a control that cannot be good. A "
+        "method is only as good as its lead over this.");
+    static const char *const observer = QT_TR_NOOP(
+        "Held-out accuracy of a classifier on the mouth crop telling the render from the recording, both encoded by "
+        "the same encoder. 0.5: it cannot tell them apart; the re-encoded recording shows the floor.");
+    static const char *const falseClosures = QT_TR_NOOP(
+        "Lip closures outside /p b m/, per second of speech (the recording's own count beside it).");
+    static const char *const seam = QT_TR_NOOP(
+        "CIE Lab ΔE across the edge of what the renderer drew: on the render, on the recording at the same pixels, "
+        "and across a real edge there (for a drawn mouth inside: the recording's own inner-lip edge at that "
+        "opening). A seam shows where the render's step exceeds a real one.");
+    static const MetricText texts[] = {
+        {"l1", QT_TR_NOOP("L1 error"), nullptr, nullptr},
+        {"rms", QT_TR_NOOP("RMS error"), nullptr, nullptr},
+        {"linf", QT_TR_NOOP("L-inf error"), nullptr, nullptr},
+        {"loglik", QT_TR_NOOP("log-likelihood per frame"), nullptr, nullptr},
+        {"correlation", QT_TR_NOOP("lip-opening correlation"), QT_TR_NOOP("r"), correlation},
+        {"controlCorrelation", QT_TR_NOOP("lip-opening correlation, control"), QT_TR_NOOP("r, control"), control},
+        {"speechCorrelation", QT_TR_NOOP("lip-opening correlation in speech"), QT_TR_NOOP("speech r"), correlation},
+        {"controlSpeechCorrelation", QT_TR_NOOP("lip-opening correlation in speech, control"),
+         QT_TR_NOOP("speech r, control"), control},
+        {"shiftedSpeechCorrelation", QT_TR_NOOP("lip-opening correlation in speech, other footage"),
+         QT_TR_NOOP("speech r, other footage"),
+         QT_TR_NOOP("Correlation in speech with each frame drawn into the clip's footage half its length away, whose "
+                    "mouth does not follow the recording: new speech put into other footage.")},
+        {"observerFrames", QT_TR_NOOP("machine observer (0.5: fooled)"), QT_TR_NOOP("observer"), observer},
+        {"observerVideos", QT_TR_NOOP("machine observer per video"), QT_TR_NOOP("observer, videos"), observer},
+        {"articulation", QT_TR_NOOP("articulation (s.d. ratio)"), QT_TR_NOOP("articulation"),
+         QT_TR_NOOP("Standard deviation of the rendered lip opening over the recording's: 1 articulates as much as "
+                    "the speaker.")},
+        {"closure", QT_TR_NOOP("/p b m/ closures (ratio)"), QT_TR_NOOP("closures"),
+         QT_TR_NOOP("/p b m/ segments the render closes over those the recording closes: 1 closes as often as the "
+                    "speaker does.")},
+        {"closureRecall", QT_TR_NOOP("/p b m/ closure recall"), QT_TR_NOOP("closure recall"),
+         QT_TR_NOOP("Of the /p b m/ segments the recording closes, the share the render closes too.")},
+        {"falseClosures", QT_TR_NOOP("false closures per s of speech"), QT_TR_NOOP("false closures /s"), falseClosures},
+        {"falseClosuresRecorded", QT_TR_NOOP("false closures per s, recording"), QT_TR_NOOP("… recording"),
+         falseClosures},
+        {"lag", QT_TR_NOOP("lag (frames)"), QT_TR_NOOP("lag (frames)"),
+         QT_TR_NOOP("Frames by which the opening lags the sound's energy, render minus recording (negative: the "
+                    "render leads).")},
+        {"sharpness", QT_TR_NOOP("mouth sharpness (ratio)"), QT_TR_NOOP("sharpness"),
+         QT_TR_NOOP("Mean squared Laplacian of the mouth box over the recording's: above 1 is crisper than the "
+                    "video.")},
+        {"seamDeltaE", QT_TR_NOOP("seam: colour step at the drawn edge (ΔE)"), QT_TR_NOOP("seam ΔE"), seam},
+        {"seamDeltaERecorded", QT_TR_NOOP("seam: the recording's same pixels (ΔE)"), QT_TR_NOOP("… same pixels"), seam},
+        {"seamDeltaENatural", QT_TR_NOOP("seam: a real edge there (ΔE)"), QT_TR_NOOP("… a real edge"), seam},
+        {"shapeCorrelation", QT_TR_NOOP("mouth drawn as generated (correlation)"), QT_TR_NOOP("drawn as generated r"),
+         QT_TR_NOOP("The method's own inner-lip gap, as the animation exports carry it, against the opening read on "
+                    "its render.")},
+    };
+    for (const MetricText &t : texts)
+        if (metric == t.id)
+            return &t;
+    return nullptr;
+}
+
 QString EvaluationChart::metricTitle(const std::string &metric)
 {
-    if (metric == "l1") return EvaluationChart::tr("L1 error");
-    if (metric == "rms") return EvaluationChart::tr("RMS error");
-    if (metric == "linf") return EvaluationChart::tr("L-inf error");
-    if (metric == "loglik") return EvaluationChart::tr("log-likelihood per frame");
-    if (metric == "correlation") return EvaluationChart::tr("lip-opening correlation");
-    if (metric == "controlCorrelation") return EvaluationChart::tr("lip-opening correlation, control");
-    if (metric == "speechCorrelation") return EvaluationChart::tr("lip-opening correlation in speech");
-    if (metric == "controlSpeechCorrelation") return EvaluationChart::tr("lip-opening correlation in speech, control");
-    if (metric == "shiftedSpeechCorrelation") return EvaluationChart::tr("lip-opening correlation in speech, other footage");
-    if (metric == "observerFrames") return EvaluationChart::tr("machine observer (0.5: fooled)");
-    if (metric == "observerVideos") return EvaluationChart::tr("machine observer per video");
-    if (metric == "articulation") return EvaluationChart::tr("articulation (s.d. ratio)");
-    if (metric == "closure") return EvaluationChart::tr("/p b m/ closures (ratio)");
-    if (metric == "closureRecall") return EvaluationChart::tr("/p b m/ closure recall");
-    if (metric == "falseClosures") return EvaluationChart::tr("false closures per s of speech");
-    if (metric == "falseClosuresRecorded") return EvaluationChart::tr("false closures per s, recording");
-    if (metric == "lag") return EvaluationChart::tr("lag (frames)");
-    if (metric == "sharpness") return EvaluationChart::tr("mouth sharpness (ratio)");
-    if (metric == "seamDeltaE") return EvaluationChart::tr("seam: colour step at the drawn edge (ΔE)");
-    if (metric == "seamDeltaERecorded") return EvaluationChart::tr("seam: the recording's same pixels (ΔE)");
-    if (metric == "seamDeltaENatural") return EvaluationChart::tr("seam: a real edge there (ΔE)");
-    if (metric == "shapeCorrelation") return EvaluationChart::tr("mouth drawn as generated (correlation)");
-    return QString::fromStdString(metric);
+    const MetricText *t = metricText(metric);
+    return t ? tr(t->title) : QString::fromStdString(metric);
 }
 
 QString EvaluationChart::metricLabel(const std::string &metric)
 {
-    if (metric == "speechCorrelation") return tr("speech r");
-    if (metric == "controlSpeechCorrelation") return tr("speech r, control");
-    if (metric == "shiftedSpeechCorrelation") return tr("speech r, other footage");
-    if (metric == "correlation") return tr("r");
-    if (metric == "controlCorrelation") return tr("r, control");
-    if (metric == "articulation") return tr("articulation");
-    if (metric == "closure") return tr("closures");
-    if (metric == "closureRecall") return tr("closure recall");
-    if (metric == "falseClosures") return tr("false closures /s");
-    if (metric == "falseClosuresRecorded") return tr("… recording");
-    if (metric == "observerFrames") return tr("observer");
-    if (metric == "observerVideos") return tr("observer, videos");
-    if (metric == "sharpness") return tr("sharpness");
-    if (metric == "seamDeltaE") return tr("seam ΔE");
-    if (metric == "seamDeltaERecorded") return tr("… same pixels");
-    if (metric == "seamDeltaENatural") return tr("… a real edge");
-    if (metric == "lag") return tr("lag (frames)");
-    if (metric == "shapeCorrelation") return tr("drawn as generated r");
-    return metricTitle(metric);
+    const MetricText *t = metricText(metric);
+    return t && t->label ? tr(t->label) : metricTitle(metric);
 }
 
 QString EvaluationChart::metricDescription(const std::string &metric)
 {
-    if (metric == "correlation" || metric == "speechCorrelation")
-        return tr("Pearson correlation of the rendered lip opening, read by dlib on the rendered frames, with the "
-                  "recording's; in speech: from the first to the last spoken phone, leaving out the silences every "
-                  "clip shares.");
-    if (metric == "controlCorrelation" || metric == "controlSpeechCorrelation")
-        return tr("The same correlation of each recording with another clip's render: a control that cannot be "
-                  "good. A method is only as good as its lead over this.");
-    if (metric == "shiftedSpeechCorrelation")
-        return tr("Correlation in speech with each frame drawn into the clip's footage half its length away, whose "
-                  "mouth does not follow the recording: new speech put into other footage.");
-    if (metric == "observerFrames" || metric == "observerVideos")
-        return tr("Held-out accuracy of a classifier on the mouth crop telling the render from the recording, both "
-                  "encoded by the same encoder. 0.5: it cannot tell them apart; the re-encoded recording shows the "
-                  "floor.");
-    if (metric == "articulation")
-        return tr("Standard deviation of the rendered lip opening over the recording's: 1 articulates as much as "
-                  "the speaker.");
-    if (metric == "closure")
-        return tr("/p b m/ segments the render closes over those the recording closes: 1 closes as often as the "
-                  "speaker does.");
-    if (metric == "closureRecall")
-        return tr("Of the /p b m/ segments the recording closes, the share the render closes too.");
-    if (metric == "falseClosures" || metric == "falseClosuresRecorded")
-        return tr("Lip closures outside /p b m/, per second of speech (the recording's own count beside it).");
-    if (metric == "lag")
-        return tr("Frames by which the opening lags the sound's energy, render minus recording (negative: the "
-                  "render leads).");
-    if (metric == "sharpness")
-        return tr("Mean squared Laplacian of the mouth box over the recording's: above 1 is crisper than the "
-                  "video.");
-    if (metric == "seamDeltaE" || metric == "seamDeltaERecorded" || metric == "seamDeltaENatural")
-        return tr("CIE Lab ΔE across the edge of what the renderer drew: on the render, on the recording at the "
-                  "same pixels, and across a real edge there (for a drawn mouth inside: the recording's own "
-                  "inner-lip edge at that opening). A seam shows where the render's step exceeds a real one.");
-    if (metric == "shapeCorrelation")
-        return tr("The method's own inner-lip gap, as the animation exports carry it, against the opening read on "
-                  "its render.");
-    return {};
+    const MetricText *t = metricText(metric);
+    return t && t->description ? tr(t->description) : QString();
 }
 
 struct EvaluationChart::Impl

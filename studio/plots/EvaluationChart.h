@@ -59,6 +59,11 @@ public:
     static std::vector<Bars> realismColumns(const RealismResult &result, bool withReencoded);
 
 private:
+    struct MetricText
+    {
+        const char *id, *title, *label, *description;
+    };
+    static const MetricText *metricText(const std::string &metric);
     void draw(const std::vector<Bars> &bars, const std::vector<std::string> &metrics);
     struct Impl;
     std::unique_ptr<Impl> e;
