@@ -24,6 +24,7 @@
 
 #include <cmath>
 #include <map>
+#include <memory>
 
 using namespace lipsync;
 
@@ -92,6 +93,10 @@ class TestHdRender : public QObject
     Q_OBJECT
 
     AamModel m_aam;
+    // The clip's face tracked once with m_aam, shared by every test (each starts from its default
+    // compositing, init()).
+    std::unique_ptr<FaceRenderer> m_renderer;
+    CompositeOptions m_defaults;
 
 private slots:
     void initTestCase()
@@ -115,12 +120,19 @@ private slots:
         Feedback feedback;
         m_aam = buildAam(examples, {}, feedback);
         QVERIFY(m_aam.combinedModes() > 2);
+        m_renderer = std::make_unique<FaceRenderer>(m_aam, kClip, feedback);
+        m_defaults = m_renderer->compositeOptions();
+    }
+
+    void init()
+    {
+        if (m_renderer)
+            m_renderer->setCompositeOptions(m_defaults);
     }
 
     void movingHeadWithoutEdges()
     {
-        Feedback feedback;
-        FaceRenderer renderer(m_aam, kClip, feedback);
+        FaceRenderer &renderer = *m_renderer;
         const int frames = renderer.videoFrameCount();
         QVERIFY(frames > 100);
         // The head moves in this clip: its pose turns and shifts across the frames.
@@ -193,8 +205,7 @@ private slots:
     void openMouthAskedToCloseCloses()
     {
         FaceDetector detector;
-        Feedback feedback;
-        FaceRenderer renderer(m_aam, kClip, feedback);
+        FaceRenderer &renderer = *m_renderer;
         const BilabialClosure closure(m_aam);
         auto gap = [&](const cv::Mat &frame) { return dlibGap(detector, frame); };
         int open = 0, closed = 0;
@@ -223,8 +234,7 @@ private slots:
     // eyes lower and lets the upper lip take more: the nose is drawn down with it.
     void mouthClosesAboutTheEyes()
     {
-        Feedback feedback;
-        FaceRenderer renderer(m_aam, kClip, feedback);
+        FaceRenderer &renderer = *m_renderer;
         const BilabialClosure closure(m_aam);
         // Heights below the eyes' midpoint of `eyes` (the recording's, which the render keeps) along
         // the face's vertical, in eye-corner distances.
@@ -288,8 +298,7 @@ private slots:
     void closedMouthAskedToOpenOpens()
     {
         FaceDetector detector;
-        Feedback feedback;
-        FaceRenderer renderer(m_aam, kClip, feedback);
+        FaceRenderer &renderer = *m_renderer;
         const int frames = renderer.videoFrameCount();
         std::map<int, double> gaps; // dlib's gap of the recorded frames asked about
         auto recorded = [&](int t) {
@@ -322,8 +331,7 @@ private slots:
     // recording's does, at the warped region's border and inside the mouth alike.
     void steadyOverTime()
     {
-        Feedback feedback;
-        FaceRenderer renderer(m_aam, kClip, feedback);
+        FaceRenderer &renderer = *m_renderer;
         const int frames = renderer.videoFrameCount();
         Eigen::MatrixXd trajectory = renderer.trackedFeatures().topRows(frames);
         trajectory.col(0).array() += 2.0 * std::sqrt(m_aam.combinedVariances[0]);
@@ -374,8 +382,7 @@ private slots:
     // training frames, with its exemplar detail) has more than twice the recorded texture.
     void closedLipsAreHisOwn()
     {
-        Feedback feedback;
-        FaceRenderer renderer(m_aam, kClip, feedback);
+        FaceRenderer &renderer = *m_renderer;
         const BilabialClosure closure(m_aam);
         QVERIFY(!renderer.mouths().empty()); // the clip has closed lips of its own
         Look recorded, own, drawn;
@@ -416,8 +423,7 @@ private slots:
     // training frames sampled in a reference frame smaller than his face, is far smoother.
     void openMouthsAreHisOwn()
     {
-        Feedback feedback;
-        FaceRenderer renderer(m_aam, kClip, feedback);
+        FaceRenderer &renderer = *m_renderer;
         QVERIFY(!renderer.mouths().openFrames().empty());
         int widest = 0;
         for (int t = 0; t < renderer.videoFrameCount(); ++t)
