@@ -102,8 +102,7 @@ double LinearObserver::score(const Eigen::VectorXf &appearance) const
 
 std::vector<ObserverAccuracy> observeByFold(const std::vector<ObservedClip> &clips, int folds)
 {
-    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-    std::vector<ObserverAccuracy> out(size_t(std::max(0, folds)), ObserverAccuracy{kNaN, kNaN});
+    std::vector<ObserverAccuracy> out(size_t(std::max(0, folds)));
     for (int f = 0; f < folds; ++f) {
         Eigen::Index realRows = 0, renderedRows = 0, d = 0;
         int tested = 0;
@@ -133,9 +132,12 @@ std::vector<ObserverAccuracy> observeByFold(const std::vector<ObservedClip> &cli
         LinearObserver observer;
         observer.fit(real, rendered);
         double rightFrames = 0, frames = 0, rightVideos = 0, videos = 0;
+        // Frames judged rendered and frames seen: the recording's, then each kind of drawing.
+        std::array<double, kFrameDrawings + 1> called{}, seen{};
         for (const ObservedClip &c : clips) {
             if (c.fold != f)
                 continue;
+            const bool split = c.drawing.size() == size_t(c.rendered.rows());
             auto judge = [&](const Eigen::MatrixXf &rows, bool isRendered) {
                 if (rows.rows() == 0)
                     return;
@@ -145,6 +147,11 @@ std::vector<ObserverAccuracy> observeByFold(const std::vector<ObservedClip> &cli
                     sum += s;
                     rightFrames += (s > 0) == isRendered;
                     frames += 1;
+                    if (!isRendered || split) {
+                        const size_t k = isRendered ? 1 + size_t(c.drawing[size_t(i)]) : 0;
+                        called[k] += s > 0;
+                        seen[k] += 1;
+                    }
                 }
                 rightVideos += (sum / double(rows.rows()) > 0) == isRendered;
                 videos += 1;
@@ -152,8 +159,15 @@ std::vector<ObserverAccuracy> observeByFold(const std::vector<ObservedClip> &cli
             judge(c.real, false);
             judge(c.rendered, true);
         }
-        if (frames > 0)
-            out[size_t(f)] = {rightFrames / frames, rightVideos / videos};
+        ObserverAccuracy &a = out[size_t(f)];
+        if (frames > 0) {
+            a.frames = rightFrames / frames;
+            a.videos = rightVideos / videos;
+        }
+        auto share = [&](size_t k) { return seen[k] > 0 ? called[k] / seen[k] : ObserverAccuracy::kNone; };
+        a.recordedJudgedRendered = share(0);
+        for (size_t k = 0; k < a.drawnJudgedRendered.size(); ++k)
+            a.drawnJudgedRendered[k] = share(k + 1);
     }
     return out;
 }

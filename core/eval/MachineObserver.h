@@ -17,6 +17,8 @@
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
+#include <array>
+#include <limits>
 #include <vector>
 
 namespace lipsync {
@@ -37,17 +39,30 @@ private:
     double m_bias = 0.0;
 };
 
+// What the renderer did to a rendered frame: moved the recording's own face only, or also drew an
+// inside into a mouth opened wider than recorded, or closed lips over an open recorded mouth
+// (FaceRenderer::synthesisedWeight).
+enum class FrameDrawing { Warped = 0, Inside = 1, Closed = 2 };
+constexpr int kFrameDrawings = 3;
+
 struct ObservedClip
 {
     int fold = 0;
     Eigen::MatrixXf real;     // appearance of the recording's frames (re-encoded)
     Eigen::MatrixXf rendered; // of the render's frames (encoded the same way)
+    // What was drawn in each row of `rendered` (empty, or of another length: not split).
+    std::vector<FrameDrawing> drawing;
 };
 
 struct ObserverAccuracy
 {
-    double frames = 0.0; // fraction of held-out frames judged right
-    double videos = 0.0; // fraction of held-out videos (each clip's real and rendered) judged right
+    static constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+    double frames = kNone; // fraction of held-out frames judged right
+    double videos = kNone; // fraction of held-out videos (each clip's real and rendered) judged right
+    double recordedJudgedRendered = kNone; // held-out recorded frames judged rendered (false alarms)
+    // Held-out rendered frames judged rendered, by what was drawn in them (FrameDrawing; NaN
+    // where the fold has none).
+    std::array<double, kFrameDrawings> drawnJudgedRendered{kNone, kNone, kNone};
 };
 
 // The accuracy on each fold's clips of an observer trained on the other folds' (NaN for a fold

@@ -25,6 +25,7 @@
 #include <QJsonArray>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <functional>
@@ -46,8 +47,10 @@ const std::vector<std::string> &realismMetrics()
         "correlation",       "controlCorrelation",       "articulation",
         "closure",           "closureRecall",            "falseClosures",
         "falseClosuresRecorded", "observerFrames",       "observerVideos",
-        "sharpness",         "seamDeltaE",               "seamDeltaERecorded",
-        "seamDeltaENatural", "lag",                      "shapeCorrelation"};
+        "observerRecorded",  "observerWarped",           "observerInsides",
+        "observerClosures",  "sharpness",                "seamDeltaE",
+        "seamDeltaERecorded", "seamDeltaENatural",       "lag",
+        "shapeCorrelation"};
     return names;
 }
 
@@ -138,9 +141,10 @@ public:
         m_ownEdge[size_t(t)] = seamDeltaE(recorded, recorded, inside).frame;
     }
 
-    // Method m's render `generated` of parameters c into recorded frame t (after addRecorded).
-    void addRendered(size_t m, const FaceRenderer &renderer, int t, const Eigen::VectorXd &c, const cv::Mat &generated,
-                     const cv::Mat &recorded)
+    // Method m's render `generated` of parameters c into recorded frame t (after addRecorded);
+    // returns what the render drew there beyond moving the recording's face.
+    FrameDrawing addRendered(size_t m, const FaceRenderer &renderer, int t, const Eigen::VectorXd &c,
+                             const cv::Mat &generated, const cv::Mat &recorded)
     {
         const size_t ut = size_t(t);
         bool inside = false;
@@ -151,6 +155,7 @@ public:
         m_samePixels[m][ut] = s.reference;
         if (inside && std::isfinite(s.frame))
             m_insideAsked[m][ut] = LowerFaceWarp::opening(renderer.drawnShape(t, c));
+        return inside ? FrameDrawing::Inside : cv::countNonZero(weight) > 0 ? FrameDrawing::Closed : FrameDrawing::Warped;
     }
 
     void summarise(size_t m, RealismSequenceMethod &r) const
@@ -178,6 +183,22 @@ void drawTrackedAsTracked(const FaceRenderer &renderer, std::vector<Rendering> &
             r.features = own.topRows(r.features.rows());
 }
 
+// What was drawn in the frames the machine observer reads (EncodedAppearance::appearance: every
+// kObserverStep-th frame with a mouth box in the recording), where the renderer moves the
+// recording's face; empty for a synthesised face, which is drawn whole.
+std::vector<FrameDrawing> observedDrawing(const std::vector<FrameDrawing> &drawing,
+                                          const std::vector<std::optional<cv::Rect2d>> &recordedBoxes,
+                                          const CompositeOptions &composite)
+{
+    std::vector<FrameDrawing> out;
+    if (composite.region == FaceRegion::Full || composite.synthesizeSkin)
+        return out;
+    for (size_t t = 0; t < drawing.size() && t < recordedBoxes.size(); t += kObserverStep)
+        if (recordedBoxes[t])
+            out.push_back(drawing[t]);
+    return out;
+}
+
 // Renders and measures one held-out sequence (see the header).
 RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPath, const Sequence &sequence,
                                 std::vector<Rendering> renderings, FaceDetector &detector,
@@ -199,6 +220,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
     // Frame t - T/2 drawn into frame t, whose mouth does not follow it (shiftedSpeechCorrelation).
     std::vector<std::vector<double>> shifted(methods, recordedOpening);
     std::vector<int> skipped(methods, 0);
+    std::vector<std::vector<FrameDrawing>> drawing(methods, std::vector<FrameDrawing>(size_t(frames), FrameDrawing::Warped));
     // The inner-lip gap of each method's own shape (the AAM's inner-lip centres, normalised frame):
     // the mouth the animation exports carry, to compare with what the render shows.
     std::vector<std::vector<double>> shapeOpening(methods, recordedOpening);
@@ -247,7 +269,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
                 boxes[m + 1][ut] = mouthBox(rendered);
             }
             sharpness[m][ut] = gradientEnergy(generated, mouth);
-            seams.addRendered(m, renderer, t, c, generated, recorded);
+            drawing[m][ut] = seams.addRendered(m, renderer, t, c, generated, recorded);
             const int away = (t + frames - frames / 2) % frames;
             recorded.copyTo(generated);
             renderer.renderInto(t, renderings[m].drawn(away, renderer, t), generated);
@@ -289,6 +311,7 @@ RealismSequence measureSequence(const AamModel &aam, const std::string &mediaPat
         r.closedBoth = closedInBoth(opening[m], recordedOpening, bilabials, out.closedLevel);
         r.falseClosures = closuresOutside(opening[m], bilabials, out.speech, out.closedLevel);
         r.appearance = std::move(seen.streams[m + 1]);
+        r.drawing = observedDrawing(drawing[m], boxes[0], options.composite);
         r.articulation = articulationRatio(opening[m], recordedOpening);
         r.lag = avLag(opening[m], energy, options.maxLag) - out.lagRecorded;
         r.sharpness = ratioOfMeans(sharpness[m], recordedSharpness);
@@ -364,8 +387,11 @@ std::vector<ObserverAccuracy> observerFolds(const std::vector<std::vector<const 
         for (const RealismSequence *s : byFold[f]) {
             if (method != kReencoded && !s->methods.count(method))
                 continue;
-            clips.push_back({int(f), s->recordedAppearance,
-                             method == kReencoded ? s->reencodedAppearance : s->methods.at(method).appearance});
+            if (method == kReencoded)
+                clips.push_back({int(f), s->recordedAppearance, s->reencodedAppearance, {}});
+            else
+                clips.push_back({int(f), s->recordedAppearance, s->methods.at(method).appearance,
+                                 s->methods.at(method).drawing});
         }
     return observeByFold(clips, int(byFold.size()));
 }
@@ -406,13 +432,21 @@ RealismMethod summariseMethod(const std::vector<std::vector<const RealismSequenc
 {
     RealismMethod m;
     m.kind = method;
-    std::vector<double> frameAccuracy, videoAccuracy;
+    std::vector<double> frameAccuracy, videoAccuracy, recorded;
+    std::array<std::vector<double>, kFrameDrawings> drawn;
     for (const ObserverAccuracy &a : observerFolds(byFold, method)) {
         frameAccuracy.push_back(a.frames);
         videoAccuracy.push_back(a.videos);
+        recorded.push_back(a.recordedJudgedRendered);
+        for (size_t k = 0; k < drawn.size(); ++k)
+            drawn[k].push_back(a.drawnJudgedRendered[k]);
     }
     m.metrics["observerFrames"] = summarise(frameAccuracy);
     m.metrics["observerVideos"] = summarise(videoAccuracy);
+    m.metrics["observerRecorded"] = summarise(recorded);
+    m.metrics["observerWarped"] = summarise(drawn[size_t(FrameDrawing::Warped)]);
+    m.metrics["observerInsides"] = summarise(drawn[size_t(FrameDrawing::Inside)]);
+    m.metrics["observerClosures"] = summarise(drawn[size_t(FrameDrawing::Closed)]);
     for (const std::string &metric : realismMetrics()) {
         if (m.metrics.count(metric))
             continue;

@@ -34,6 +34,12 @@
 //   observerFrames, observerVideos  the machine observer's held-out accuracy (MachineObserver:
 //                0.5 cannot tell the render from the recording), with the row "re-encoded
 //                recording" comparing the recording with its own second encode;
+//   observerRecorded  the share of the recording's held-out frames the observer calls rendered
+//                (its false alarms), beside which the next three read;
+//   observerWarped, observerInsides, observerClosures  the share of rendered frames it calls
+//                rendered among those where the recording's face was only moved, where an inside
+//                was drawn, and where closed lips were drawn (FrameDrawing; the default
+//                composite only): which of the renderer's steps give a frame away;
 //   shapeCorrelation  Pearson correlation of the method's own inner-lip gap (the AAM shape of its
 //                parameters: what the animation exports carry) with the opening measured on its
 //                render: how faithfully the render draws the mouth it was given;
@@ -50,6 +56,7 @@
 #include "animation/MouthShapePrior.h"
 #include "dynamics/ModelFile.h"
 #include "eval/Evaluation.h"
+#include "eval/MachineObserver.h"
 #include "eval/RealismMetrics.h"
 #include "render/ExemplarSelection.h"
 
@@ -114,6 +121,7 @@ struct RealismSequenceMethod
     int closedBoth = 0;     // ... and in the recording
     int falseClosures = 0;  // closures in the speech outside /p b m/
     Eigen::MatrixXf appearance; // the machine observer's view of the encoded render's frames
+    std::vector<FrameDrawing> drawing; // what was drawn in each of them (empty: not split)
     int skippedFrames = 0;  // frames the predictor found no lips in the render
     std::vector<double> opening; // per frame (NaN: not measured)
     std::vector<double> shapeOpening; // the inner-lip gap of the method's own shape, per frame
@@ -168,8 +176,9 @@ struct RealismResult
 // Every measure's name (docs/models.md §6.5), in the order the CLI's table and the studio's list
 // them: speechCorrelation, controlSpeechCorrelation, shiftedSpeechCorrelation, correlation,
 // controlCorrelation, articulation, closure, closureRecall, falseClosures, falseClosuresRecorded,
-// observerFrames, observerVideos, sharpness, seamDeltaE, seamDeltaERecorded, seamDeltaENatural,
-// lag, shapeCorrelation.
+// observerFrames, observerVideos, observerRecorded, observerWarped, observerInsides,
+// observerClosures, sharpness, seamDeltaE, seamDeltaERecorded, seamDeltaENatural, lag,
+// shapeCorrelation.
 const std::vector<std::string> &realismMetrics();
 
 // Throws lipsync::Error naming the project when it has no AAM, no sequence with features and

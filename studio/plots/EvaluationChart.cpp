@@ -48,6 +48,10 @@ const EvaluationChart::MetricText *EvaluationChart::metricText(const std::string
     static const char *const observer = QT_TR_NOOP(
         "Held-out accuracy of a classifier on the mouth crop telling the render from the recording, both encoded by "
         "the same encoder. 0.5: it cannot tell them apart; the re-encoded recording shows the floor.");
+    static const char *const observed = QT_TR_NOOP(
+        "The share of frames the machine observer calls rendered: among the recording's (its false alarms), and "
+        "among the render's where the recording's face was only moved, where a mouth's inside was drawn, and "
+        "where closed lips were drawn. Well above the recording's share: that step gives frames away.");
     static const char *const falseClosures = QT_TR_NOOP(
         "Lip closures outside /p b m/, per second of speech (the recording's own count beside it).");
     static const char *const seam = QT_TR_NOOP(
@@ -70,6 +74,12 @@ const EvaluationChart::MetricText *EvaluationChart::metricText(const std::string
                     "mouth does not follow the recording: new speech put into other footage.")},
         {"observerFrames", QT_TR_NOOP("machine observer (0.5: fooled)"), QT_TR_NOOP("observer"), observer},
         {"observerVideos", QT_TR_NOOP("machine observer per video"), QT_TR_NOOP("observer, videos"), observer},
+        {"observerRecorded", QT_TR_NOOP("called rendered: recorded frames"), QT_TR_NOOP("called rendered: recording"),
+         observed},
+        {"observerWarped", QT_TR_NOOP("called rendered: face moved only"), QT_TR_NOOP("… face moved"), observed},
+        {"observerInsides", QT_TR_NOOP("called rendered: inside drawn"), QT_TR_NOOP("… inside drawn"), observed},
+        {"observerClosures", QT_TR_NOOP("called rendered: closed lips drawn"), QT_TR_NOOP("… closed lips drawn"),
+         observed},
         {"articulation", QT_TR_NOOP("articulation (s.d. ratio)"), QT_TR_NOOP("articulation"),
          QT_TR_NOOP("Standard deviation of the rendered lip opening over the recording's: 1 articulates as much as "
                     "the speaker.")},

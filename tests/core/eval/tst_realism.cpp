@@ -301,6 +301,56 @@ private slots:
     // re-synthesised by the AAM must follow the recorded lips closely; generation from phones
     // alone follows them less, and from recognised phones it still follows them. Sanitizer builds render
     // and run dlib many times slower (over 300 s for the ten clips): they check memory on two.
+    // The observer's judgements split by what was drawn: rendered frames that differ from the
+    // recording only where closed lips were drawn are called rendered, those moved like the
+    // recording are called rendered about as often as the recording itself, and a kind never
+    // drawn has no figure; a clip whose drawing does not match its frames is left out of the split.
+    void observerSplitsByDrawing()
+    {
+        std::mt19937 random(2007);
+        std::normal_distribution<float> normal;
+        auto rows = [&](int n, float shift) {
+            Eigen::MatrixXf m(n, 6);
+            for (Eigen::Index i = 0; i < m.size(); ++i)
+                m.data()[i] = normal(random);
+            m.col(2).array() += shift;
+            return m;
+        };
+        std::vector<ObservedClip> clips;
+        for (int c = 0; c < 12; ++c) {
+            ObservedClip clip;
+            clip.fold = c % 4;
+            clip.real = rows(40, 0.0f);
+            clip.rendered = rows(40, 0.0f);
+            clip.drawing.assign(40, FrameDrawing::Warped);
+            for (int i = 0; i < 10; ++i) { // a quarter of the frames: closed lips, plain to see
+                clip.rendered(i, 2) += 4.0f;
+                clip.drawing[size_t(i)] = FrameDrawing::Closed;
+            }
+            clips.push_back(clip);
+        }
+        clips.back().drawing.pop_back(); // not matching its frames: not split
+        const std::vector<ObserverAccuracy> folds = observeByFold(clips, 4);
+        QCOMPARE(folds.size(), size_t(4));
+        double warpedSum = 0, recordedSum = 0;
+        for (const ObserverAccuracy &a : folds) {
+            const double closed = a.drawnJudgedRendered[size_t(FrameDrawing::Closed)];
+            const double warped = a.drawnJudgedRendered[size_t(FrameDrawing::Warped)];
+            qInfo("called rendered: recorded %.2f, warped %.2f, closed lips %.2f", a.recordedJudgedRendered, warped,
+                  closed);
+            QVERIFY2(closed > 0.9, qPrintable(QString::number(closed)));
+            warpedSum += warped;
+            recordedSum += a.recordedJudgedRendered;
+            QVERIFY(!std::isfinite(a.drawnJudgedRendered[size_t(FrameDrawing::Inside)]));
+            // Accuracy is the two sides' shares averaged (as many recorded as rendered frames).
+            const double hits = (closed * 30 + warped * 90) / 120; // the fold's 3 clips: 30 closed, 90 warped
+            if (&a != &folds.back())
+                QVERIFY(std::abs(a.frames - 0.5 * (1.0 - a.recordedJudgedRendered + hits)) < 1e-9);
+        }
+        // Over the folds, the moved frames are called rendered about as often as the recording's.
+        QVERIFY2(std::abs(warpedSum - recordedSum) / 4 < 0.1, qPrintable(QString::number((warpedSum - recordedSum) / 4)));
+    }
+
     void demoProject()
     {
         if (!QFileInfo::exists(QStringLiteral("/usr/share/dlib/shape_predictor_68_face_landmarks.dat")))
@@ -372,6 +422,12 @@ private slots:
             QVERIFY2(hmm.at("controlCorrelation").mean < hmm.at("correlation").mean,
                      qPrintable(QString("%1 vs %2").arg(hmm.at("controlCorrelation").mean).arg(hmm.at("correlation").mean)));
         QVERIFY(hmm.at("observerFrames").mean >= 0.0 && hmm.at("observerFrames").mean <= 1.0);
+        // Its judgements split by what the renderer drew: a model's frames are moved at least; the
+        // re-encoded recording has nothing drawn to split by.
+        for (const char *share : {"observerRecorded", "observerWarped"})
+            QVERIFY2(hmm.at(share).mean >= 0.0 && hmm.at(share).mean <= 1.0, share);
+        QVERIFY(std::isfinite(reencoded.at("observerRecorded").mean));
+        QVERIFY(!std::isfinite(reencoded.at("observerWarped").mean));
         QVERIFY(std::isfinite(hmm.at("falseClosuresRecorded").mean));
         qInfo("hmm: speech correlation %.3f (control %.3f), closure recall %.2f, false closures %.2f/s "
               "(recorded %.2f/s), observer %.2f per frame, %.2f per video; re-encode %.2f",
