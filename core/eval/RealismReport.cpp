@@ -147,15 +147,15 @@ public:
                              const cv::Mat &generated, const cv::Mat &recorded)
     {
         const size_t ut = size_t(t);
-        bool inside = false;
+        bool inside = false, closing = false;
         cv::Mat weight;
-        renderer.synthesisedWeight(t, c, &inside).convertTo(weight, CV_8U, 255.0);
+        renderer.synthesisedWeight(t, c, &inside, &closing).convertTo(weight, CV_8U, 255.0);
         const SeamDeltaE s = seamDeltaE(generated, recorded, weight);
         m_seam[m][ut] = s.frame;
         m_samePixels[m][ut] = s.reference;
         if (inside && std::isfinite(s.frame))
             m_insideAsked[m][ut] = LowerFaceWarp::opening(renderer.drawnShape(t, c));
-        return inside ? FrameDrawing::Inside : cv::countNonZero(weight) > 0 ? FrameDrawing::Closed : FrameDrawing::Warped;
+        return inside ? FrameDrawing::Inside : closing ? FrameDrawing::Closed : FrameDrawing::Warped;
     }
 
     void summarise(size_t m, RealismSequenceMethod &r) const

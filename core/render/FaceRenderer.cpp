@@ -381,10 +381,12 @@ cv::Mat FaceRenderer::mouthInteriorAlpha(const Eigen::VectorXd &generated, const
     return alpha;
 }
 
-cv::Mat FaceRenderer::synthesisedWeight(int index, const Eigen::VectorXd &features, bool *inside) const
+cv::Mat FaceRenderer::synthesisedWeight(int index, const Eigen::VectorXd &features, bool *inside, bool *closing) const
 {
     if (inside)
         *inside = false;
+    if (closing)
+        *closing = false;
     if (features.size() != m_aam.combinedModes())
         throw Error("cannot render: " + std::to_string(features.size())
                     + " parameters given, the AAM has " + std::to_string(m_aam.combinedModes()));
@@ -392,10 +394,12 @@ cv::Mat FaceRenderer::synthesisedWeight(int index, const Eigen::VectorXd &featur
         return cv::Mat(m_size, CV_32F, cv::Scalar(0));
     if (m_composite.region == FaceRegion::Full || m_composite.synthesizeSkin)
         return m_synthesizer.compositeWeight(features, drawnPose(index, features), m_size, m_composite.region);
-    bool closing = false;
-    cv::Mat alpha = mouthInteriorAlpha(drawnShape(index, features), trackedShape(index), &closing);
+    bool closed = false;
+    cv::Mat alpha = mouthInteriorAlpha(drawnShape(index, features), trackedShape(index), &closed);
     if (inside)
-        *inside = !closing && cv::countNonZero(alpha) > 0;
+        *inside = !closed && cv::countNonZero(alpha) > 0;
+    if (closing)
+        *closing = closed;
     return alpha;
 }
 

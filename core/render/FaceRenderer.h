@@ -104,8 +104,10 @@ public:
     // How much of each pixel renderInto() replaces with synthesis for these features (CV_32F,
     // 0..1; what the warp moves is the recording's own and counts 0).
     // `inside` (optional) is set when that is the drawn inside of a mouth opened wider than
-    // recorded (the default composite), not closed lips or a synthesised face.
-    cv::Mat synthesisedWeight(int index, const Eigen::VectorXd &features, bool *inside = nullptr) const;
+    // recorded (the default composite), not closed lips or a synthesised face; `closing`
+    // (optional) when it is closed lips drawn over an open recorded mouth.
+    cv::Mat synthesisedWeight(int index, const Eigen::VectorXd &features, bool *inside = nullptr,
+                              bool *closing = nullptr) const;
     // The inside of the mouth of `shape` (23 points in the frame's pixels) at full weight, feathered
     // as a drawn inside is (CV_32F, frame size): where a recorded mouth's own inner-lip edge lies,
     // the real counterpart of a drawn inside's edge (RealismReport's seamDeltaENatural).

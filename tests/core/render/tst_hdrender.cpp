@@ -400,9 +400,9 @@ private slots:
             const Eigen::VectorXd shut = closure.apply(renderer.trackedFeatures().row(t), std::vector<double>{1.0}).row(0).transpose();
             const Eigen::VectorXd generated = renderer.drawnShape(t, shut);
             own.add(renderer.render(t, shut), LowerFaceWarp::outerLips(generated, 0.0));
-            bool inside = true;
-            renderer.synthesisedWeight(t, shut, &inside);
-            QVERIFY(!inside); // closed lips, not an inside
+            bool inside = true, closing = false;
+            renderer.synthesisedWeight(t, shut, &inside, &closing);
+            QVERIFY(!inside && closing); // closed lips, not an inside
             cv::Mat frame = renderer.background(t);
             renderer.renderInto(t, shut, frame, aamClosures);
             drawn.add(frame, LowerFaceWarp::outerLips(generated, 0.0));
@@ -445,9 +445,9 @@ private slots:
                 continue; // nearly closed mouths asked to open, every other frame
             const Eigen::VectorXd generated = renderer.drawnShape(t, wide);
             own.add(renderer.render(t, wide), LowerFaceWarp::mouthInterior(generated));
-            bool inside = false;
-            renderer.synthesisedWeight(t, wide, &inside);
-            QVERIFY(inside);
+            bool inside = false, closing = true;
+            renderer.synthesisedWeight(t, wide, &inside, &closing);
+            QVERIFY(inside && !closing);
             cv::Mat frame = renderer.background(t);
             renderer.renderInto(t, wide, frame, aamInsides);
             drawn.add(frame, LowerFaceWarp::mouthInterior(generated));
