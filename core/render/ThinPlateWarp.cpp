@@ -34,8 +34,8 @@ ThinPlateWarp::ThinPlateWarp(const Eigen::VectorXd &sources, const Eigen::Vector
     // [K + λI  P; Pᵀ 0] [w; a] = [d; 0], P = [1 x y] (Bookstein 1989), with P's columns
     // equilibrated to the kernel's magnitude — [α, α (x - cx) / L, α (y - cy) / L] — and the
     // affine part mapped back after: the same spline, but the rank test and the solve see columns
-    // of one scale. (In a 1280 x 720 frame the kernel reaches 10^7 against P's 1: the system was
-    // judged rank-deficient and no HD frame was ever warped.)
+    // of one scale. (In a 1280 x 720 frame the kernel reaches 10^7 against P's 1: unequilibrated,
+    // the rank test calls the system deficient and no HD frame would be warped.)
     const Eigen::RowVector2d centre = m_points.colwise().mean();
     const double extent = std::max(1.0, (m_points.rowwise() - centre).cwiseAbs().maxCoeff());
     Eigen::MatrixXd system = Eigen::MatrixXd::Zero(n + 3, n + 3);
