@@ -388,76 +388,86 @@
     </message>
     <message>
         <location filename="../studio/plots/EvaluationChart.cpp" line="80"/>
+        <source>called rendered: open mouth squeezed narrower</source>
+        <translation>für erzeugt gehalten: offener Mund enger gedrückt</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="81"/>
+        <source>… mouth squeezed</source>
+        <translation>… Mund gedrückt</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="82"/>
         <source>called rendered: inside drawn</source>
         <translation>für erzeugt gehalten: Mundinneres gezeichnet</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="80"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="82"/>
         <source>… inside drawn</source>
         <translation>… Mundinneres gezeichnet</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="81"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="83"/>
         <source>called rendered: closed lips drawn</source>
         <translation>für erzeugt gehalten: geschlossene Lippen gezeichnet</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="81"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="83"/>
         <source>… closed lips drawn</source>
         <translation>… geschlossene Lippen gezeichnet</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="83"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="85"/>
         <source>articulation (s.d. ratio)</source>
         <translation>Artikulation (Verhältnis der Standardabweichungen)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="86"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="88"/>
         <source>/p b m/ closures (ratio)</source>
         <translation>Verschlüsse bei /p b m/ (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="89"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="91"/>
         <source>/p b m/ closure recall</source>
         <translation>/p b m/-Verschlüsse getroffen</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="91"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="93"/>
         <source>false closures per s of speech</source>
         <translation>falsche Verschlüsse je s Sprache</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="92"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="94"/>
         <source>false closures per s, recording</source>
         <translation>falsche Verschlüsse je s, Aufnahme</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="94"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="96"/>
         <source>lag (frames)</source>
         <translation>Verzögerung (Bilder)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="97"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="99"/>
         <source>mouth sharpness (ratio)</source>
         <translation>Schärfe des Mundes (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="100"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="102"/>
         <source>seam: colour step at the drawn edge (ΔE)</source>
         <translation>Naht: Farbsprung am gezeichneten Rand (ΔE)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="101"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="103"/>
         <source>seam: the recording&apos;s same pixels (ΔE)</source>
         <translation>Naht: dieselben Pixel der Aufnahme (ΔE)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="102"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="104"/>
         <source>seam: a real edge there (ΔE)</source>
         <translation>Naht: eine echte Kante dort (ΔE)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="103"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="105"/>
         <source>mouth drawn as generated (correlation)</source>
         <translation>Mund wie erzeugt gezeichnet (Korrelation)</translation>
     </message>
@@ -492,27 +502,27 @@
         <translation>r, Kontrolle</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="83"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="85"/>
         <source>articulation</source>
         <translation>Artikulation</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="86"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="88"/>
         <source>closures</source>
         <translation>Verschlüsse</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="89"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="91"/>
         <source>closure recall</source>
         <translation>Verschlüsse getroffen</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="91"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="93"/>
         <source>false closures /s</source>
         <translation>falsche Verschlüsse /s</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="92"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="94"/>
         <source>… recording</source>
         <translation>… Aufnahme</translation>
     </message>
@@ -527,27 +537,27 @@
         <translation>Beobachter, Videos</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="97"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="99"/>
         <source>sharpness</source>
         <translation>Schärfe</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="100"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="102"/>
         <source>seam ΔE</source>
         <translation>Naht ΔE</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="101"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="103"/>
         <source>… same pixels</source>
         <translation>… dieselben Pixel</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="102"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="104"/>
         <source>… a real edge</source>
         <translation>… eine echte Kante</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="103"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="105"/>
         <source>drawn as generated r</source>
         <translation>gezeichnet wie erzeugt r</translation>
     </message>
@@ -572,17 +582,17 @@
         <translation>Genauigkeit eines Klassifikators auf zurückgehaltenen Daten, der am Mundausschnitt Rendering und Aufnahme unterscheidet, beide mit demselben Encoder kodiert. 0,5: er kann sie nicht unterscheiden; die neu kodierte Aufnahme zeigt die Untergrenze.</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="84"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="86"/>
         <source>Standard deviation of the rendered lip opening over the recording&apos;s: 1 articulates as much as the speaker.</source>
         <translation>Standardabweichung der gerenderten Lippenöffnung durch die der Aufnahme: 1 artikuliert so stark wie der Sprecher.</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="87"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="89"/>
         <source>/p b m/ segments the render closes over those the recording closes: 1 closes as often as the speaker does.</source>
         <translation>/p b m/-Abschnitte, die das Rendering schließt, durch die, die die Aufnahme schließt: 1 schließt so oft wie der Sprecher.</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="90"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="92"/>
         <source>Of the /p b m/ segments the recording closes, the share the render closes too.</source>
         <translation>Von den /p b m/-Abschnitten, die die Aufnahme schließt, der Anteil, den auch das Rendering schließt.</translation>
     </message>
@@ -592,12 +602,12 @@
         <translation>Lippenverschlüsse außerhalb von /p b m/ je Sekunde Sprache (daneben die Zahl der Aufnahme selbst).</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="95"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="97"/>
         <source>Frames by which the opening lags the sound&apos;s energy, render minus recording (negative: the render leads).</source>
         <translation>Bilder, um die die Öffnung der Energie des Tons nachläuft, Rendering minus Aufnahme (negativ: das Rendering läuft vor).</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="98"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="100"/>
         <source>Mean squared Laplacian of the mouth box over the recording&apos;s: above 1 is crisper than the video.</source>
         <translation>Mittleres Quadrat des Laplace-Filters im Mundbereich durch das der Aufnahme: über 1 ist schärfer als das Video.</translation>
     </message>
@@ -607,17 +617,17 @@
         <translation>CIE-Lab-ΔE über den Rand dessen, was der Renderer zeichnete: im Rendering, in der Aufnahme an denselben Pixeln und über eine echte Kante dort (für ein gezeichnetes Mundinneres: die eigene Innenlippenkante der Aufnahme bei dieser Öffnung). Eine Naht ist sichtbar, wo der Sprung des Renderings den einer echten Kante übersteigt.</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="104"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="106"/>
         <source>The method&apos;s own inner-lip gap, as the animation exports carry it, against the opening read on its render.</source>
         <translation>Der eigene Innenlippenabstand des Verfahrens, wie ihn die Animationsexporte tragen, gegen die auf seinem Rendering gelesene Öffnung.</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="219"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="221"/>
         <source>tracked</source>
         <translation>verfolgt</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="217"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="219"/>
         <source>recording, re-encoded</source>
         <translation>Aufnahme, neu kodiert</translation>
     </message>

@@ -41,9 +41,10 @@ private:
 
 // What the renderer did to a rendered frame: moved the recording's own face only, or also drew an
 // inside into a mouth opened wider than recorded, or closed lips over an open recorded mouth
-// (FaceRenderer::synthesisedWeight).
-enum class FrameDrawing { Warped = 0, Inside = 1, Closed = 2 };
-constexpr int kFrameDrawings = 3;
+// (FaceRenderer::synthesisedWeight); or moved the face only, squeezing the recorded mouth's
+// opening narrower (the frames the observer tells most often, docs/performance.md).
+enum class FrameDrawing { Warped = 0, Inside = 1, Closed = 2, Narrowed = 3 };
+constexpr int kFrameDrawings = 4;
 
 struct ObservedClip
 {
@@ -62,7 +63,7 @@ struct ObserverAccuracy
     double recordedJudgedRendered = kNone; // held-out recorded frames judged rendered (false alarms)
     // Held-out rendered frames judged rendered, by what was drawn in them (FrameDrawing; NaN
     // where the fold has none).
-    std::array<double, kFrameDrawings> drawnJudgedRendered{kNone, kNone, kNone};
+    std::array<double, kFrameDrawings> drawnJudgedRendered{kNone, kNone, kNone, kNone};
 };
 
 // The accuracy on each fold's clips of an observer trained on the other folds' (NaN for a fold

@@ -47,10 +47,10 @@ const std::vector<std::string> &realismMetrics()
         "correlation",       "controlCorrelation",       "articulation",
         "closure",           "closureRecall",            "falseClosures",
         "falseClosuresRecorded", "observerFrames",       "observerVideos",
-        "observerRecorded",  "observerWarped",           "observerInsides",
-        "observerClosures",  "sharpness",                "seamDeltaE",
-        "seamDeltaERecorded", "seamDeltaENatural",       "lag",
-        "shapeCorrelation"};
+        "observerRecorded",  "observerWarped",           "observerNarrowed",
+        "observerInsides",   "observerClosures",         "sharpness",
+        "seamDeltaE",        "seamDeltaERecorded",       "seamDeltaENatural",
+        "lag",               "shapeCorrelation"};
     return names;
 }
 
@@ -62,6 +62,10 @@ const std::string kReencoded = RealismMethod::kReencoded;
 // The machine observer reads every other frame: neighbouring frames look alike, and memory stays
 // small over hundreds of sequences.
 constexpr int kObserverStep = 2;
+// A moved-only frame counts as narrowed (FrameDrawing::Narrowed) where the warp took more than
+// this share of the mouth's width, and at least a pixel, off the recorded inner-lip opening
+// [choice: a pixel at GRID's mouth width].
+constexpr double kNarrowedShare = 0.02;
 const std::string kLive = "live ";
 
 // The phone of each of `frames` video frames as live recognition hears the sequence's sound.
@@ -155,7 +159,12 @@ public:
         m_samePixels[m][ut] = s.reference;
         if (inside && std::isfinite(s.frame))
             m_insideAsked[m][ut] = LowerFaceWarp::opening(renderer.drawnShape(t, c));
-        return inside ? FrameDrawing::Inside : closing ? FrameDrawing::Closed : FrameDrawing::Warped;
+        if (inside || closing)
+            return inside ? FrameDrawing::Inside : FrameDrawing::Closed;
+        const Eigen::VectorXd tracked = renderer.trackedShape(t);
+        const double narrowing = LowerFaceWarp::opening(tracked) - LowerFaceWarp::opening(renderer.drawnShape(t, c));
+        return narrowing > std::max(1.0, kNarrowedShare * LowerFaceWarp::mouthWidth(tracked)) ? FrameDrawing::Narrowed
+                                                                                            : FrameDrawing::Warped;
     }
 
     void summarise(size_t m, RealismSequenceMethod &r) const
@@ -445,6 +454,7 @@ RealismMethod summariseMethod(const std::vector<std::vector<const RealismSequenc
     m.metrics["observerVideos"] = summarise(videoAccuracy);
     m.metrics["observerRecorded"] = summarise(recorded);
     m.metrics["observerWarped"] = summarise(drawn[size_t(FrameDrawing::Warped)]);
+    m.metrics["observerNarrowed"] = summarise(drawn[size_t(FrameDrawing::Narrowed)]);
     m.metrics["observerInsides"] = summarise(drawn[size_t(FrameDrawing::Inside)]);
     m.metrics["observerClosures"] = summarise(drawn[size_t(FrameDrawing::Closed)]);
     for (const std::string &metric : realismMetrics()) {

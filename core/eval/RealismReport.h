@@ -35,11 +35,13 @@
 //                0.5 cannot tell the render from the recording), with the row "re-encoded
 //                recording" comparing the recording with its own second encode;
 //   observerRecorded  the share of the recording's held-out frames the observer calls rendered
-//                (its false alarms), beside which the next three read;
-//   observerWarped, observerInsides, observerClosures  the share of rendered frames it calls
-//                rendered among those where the recording's face was only moved, where an inside
-//                was drawn, and where closed lips were drawn (FrameDrawing; the default
-//                composite only): which of the renderer's steps give a frame away;
+//                (its false alarms), beside which the next four read;
+//   observerWarped, observerNarrowed, observerInsides, observerClosures  the share of rendered
+//                frames it calls rendered among those where the recording's face was only moved
+//                (its mouth not squeezed narrower), where it was only moved and its mouth squeezed
+//                narrower (over 2 % of the mouth's width, at least a pixel), where an inside was
+//                drawn, and where closed lips were drawn (FrameDrawing; the default composite
+//                only): which of the renderer's steps give a frame away;
 //   shapeCorrelation  Pearson correlation of the method's own inner-lip gap (the AAM shape of its
 //                parameters: what the animation exports carry) with the opening measured on its
 //                render: how faithfully the render draws the mouth it was given;
@@ -176,8 +178,8 @@ struct RealismResult
 // Every measure's name (docs/models.md §6.5), in the order the CLI's table and the studio's list
 // them: speechCorrelation, controlSpeechCorrelation, shiftedSpeechCorrelation, correlation,
 // controlCorrelation, articulation, closure, closureRecall, falseClosures, falseClosuresRecorded,
-// observerFrames, observerVideos, observerRecorded, observerWarped, observerInsides,
-// observerClosures, sharpness, seamDeltaE, seamDeltaERecorded, seamDeltaENatural, lag,
+// observerFrames, observerVideos, observerRecorded, observerWarped, observerNarrowed,
+// observerInsides, observerClosures, sharpness, seamDeltaE, seamDeltaERecorded, seamDeltaENatural, lag,
 // shapeCorrelation.
 const std::vector<std::string> &realismMetrics();
 

@@ -77,6 +77,8 @@ const EvaluationChart::MetricText *EvaluationChart::metricText(const std::string
         {"observerRecorded", QT_TR_NOOP("called rendered: recorded frames"), QT_TR_NOOP("called rendered: recording"),
          observed},
         {"observerWarped", QT_TR_NOOP("called rendered: face moved only"), QT_TR_NOOP("… face moved"), observed},
+        {"observerNarrowed", QT_TR_NOOP("called rendered: open mouth squeezed narrower"),
+         QT_TR_NOOP("… mouth squeezed"), observed},
         {"observerInsides", QT_TR_NOOP("called rendered: inside drawn"), QT_TR_NOOP("… inside drawn"), observed},
         {"observerClosures", QT_TR_NOOP("called rendered: closed lips drawn"), QT_TR_NOOP("… closed lips drawn"),
          observed},

@@ -342,6 +342,7 @@ private slots:
             warpedSum += warped;
             recordedSum += a.recordedJudgedRendered;
             QVERIFY(!std::isfinite(a.drawnJudgedRendered[size_t(FrameDrawing::Inside)]));
+            QVERIFY(!std::isfinite(a.drawnJudgedRendered[size_t(FrameDrawing::Narrowed)]));
             // Accuracy is the two sides' shares averaged (as many recorded as rendered frames).
             const double hits = (closed * 30 + warped * 90) / 120; // the fold's 3 clips: 30 closed, 90 warped
             if (&a != &folds.back())
@@ -428,6 +429,9 @@ private slots:
             QVERIFY2(hmm.at(share).mean >= 0.0 && hmm.at(share).mean <= 1.0, share);
         QVERIFY(std::isfinite(reencoded.at("observerRecorded").mean));
         QVERIFY(!std::isfinite(reencoded.at("observerWarped").mean));
+        QVERIFY(hmm.count("observerNarrowed") && !std::isfinite(reencoded.at("observerNarrowed").mean));
+        const double narrowed = hmm.at("observerNarrowed").mean;
+        QVERIFY2(!std::isfinite(narrowed) || (narrowed >= 0.0 && narrowed <= 1.0), qPrintable(QString::number(narrowed)));
         QVERIFY(std::isfinite(hmm.at("falseClosuresRecorded").mean));
         qInfo("hmm: speech correlation %.3f (control %.3f), closure recall %.2f, false closures %.2f/s "
               "(recorded %.2f/s), observer %.2f per frame, %.2f per video; re-encode %.2f",
