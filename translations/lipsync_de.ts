@@ -312,252 +312,252 @@
 <context>
     <name>lipsync::studio::EvaluationChart</name>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="62"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="63"/>
         <source>L1 error</source>
         <translation>L1-Fehler</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="63"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="64"/>
         <source>RMS error</source>
         <translation>RMS-Fehler</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="64"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="65"/>
         <source>L-inf error</source>
         <translation>L-inf-Fehler</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="65"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="66"/>
         <source>log-likelihood per frame</source>
         <translation>Log-Likelihood pro Bild</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="66"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="67"/>
         <source>lip-opening correlation</source>
         <translation>Korrelation der Lippenöffnung</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="67"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="68"/>
         <source>lip-opening correlation, control</source>
         <translation>Korrelation der Lippenöffnung, Kontrolle</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="68"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="69"/>
         <source>lip-opening correlation in speech</source>
         <translation>Korrelation der Lippenöffnung beim Sprechen</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="69"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="70"/>
         <source>lip-opening correlation in speech, control</source>
         <translation>Korrelation der Lippenöffnung beim Sprechen, Kontrolle</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="71"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="72"/>
         <source>lip-opening correlation in speech, other footage</source>
         <translation>Korrelation der Lippenöffnung beim Sprechen, anderes Filmmaterial</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="75"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="76"/>
         <source>machine observer (0.5: fooled)</source>
         <translation>Maschineller Beobachter (0,5: getäuscht)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="76"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="77"/>
         <source>machine observer per video</source>
         <translation>maschineller Beobachter je Video</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="77"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="78"/>
         <source>called rendered: recorded frames</source>
         <translation>für erzeugt gehalten: aufgenommene Bilder</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="77"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="78"/>
         <source>called rendered: recording</source>
         <translation>für erzeugt gehalten: Aufnahme</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="79"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="80"/>
         <source>called rendered: face moved only</source>
         <translation>für erzeugt gehalten: nur Gesicht bewegt</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="79"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="80"/>
         <source>… face moved</source>
         <translation>… Gesicht bewegt</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="80"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="81"/>
         <source>called rendered: open mouth squeezed narrower</source>
         <translation>für erzeugt gehalten: offener Mund enger gedrückt</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="81"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="82"/>
         <source>… mouth squeezed</source>
         <translation>… Mund gedrückt</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="82"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="83"/>
         <source>called rendered: inside drawn</source>
         <translation>für erzeugt gehalten: Mundinneres gezeichnet</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="82"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="83"/>
         <source>… inside drawn</source>
         <translation>… Mundinneres gezeichnet</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="83"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="84"/>
         <source>called rendered: closed lips drawn</source>
         <translation>für erzeugt gehalten: geschlossene Lippen gezeichnet</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="83"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="84"/>
         <source>… closed lips drawn</source>
         <translation>… geschlossene Lippen gezeichnet</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="85"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="86"/>
         <source>articulation (s.d. ratio)</source>
         <translation>Artikulation (Verhältnis der Standardabweichungen)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="88"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="89"/>
         <source>/p b m/ closures (ratio)</source>
         <translation>Verschlüsse bei /p b m/ (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="91"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="92"/>
         <source>/p b m/ closure recall</source>
         <translation>/p b m/-Verschlüsse getroffen</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="93"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="94"/>
         <source>false closures per s of speech</source>
         <translation>falsche Verschlüsse je s Sprache</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="94"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="95"/>
         <source>false closures per s, recording</source>
         <translation>falsche Verschlüsse je s, Aufnahme</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="96"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="97"/>
         <source>lag (frames)</source>
         <translation>Verzögerung (Bilder)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="99"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="100"/>
         <source>mouth sharpness (ratio)</source>
         <translation>Schärfe des Mundes (Verhältnis)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="102"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="103"/>
         <source>seam: colour step at the drawn edge (ΔE)</source>
         <translation>Naht: Farbsprung am gezeichneten Rand (ΔE)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="103"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="104"/>
         <source>seam: the recording&apos;s same pixels (ΔE)</source>
         <translation>Naht: dieselben Pixel der Aufnahme (ΔE)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="104"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="105"/>
         <source>seam: a real edge there (ΔE)</source>
         <translation>Naht: eine echte Kante dort (ΔE)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="105"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="106"/>
         <source>mouth drawn as generated (correlation)</source>
         <translation>Mund wie erzeugt gezeichnet (Korrelation)</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="68"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="69"/>
         <source>speech r</source>
         <translation>Sprache r</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="70"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="71"/>
         <source>speech r, control</source>
         <translation>Sprache r, Kontrolle</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="72"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="73"/>
         <source>speech r, other footage</source>
         <translation>Sprache r, anderes Material</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="66"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="67"/>
         <source>r</source>
         <translation>r</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="51"/>
-        <source>The share of frames the machine observer calls rendered: among the recording&apos;s (its false alarms), and among the render&apos;s where the recording&apos;s face was only moved, where a mouth&apos;s inside was drawn, and where closed lips were drawn. Well above the recording&apos;s share: that step gives frames away.</source>
-        <translation>Der Anteil der Bilder, die der maschinelle Beobachter für erzeugt hält: unter denen der Aufnahme (seine Fehlalarme) und unter denen des Renderings, in denen das Gesicht der Aufnahme nur bewegt, ein Mundinneres gezeichnet oder geschlossene Lippen gezeichnet wurden. Deutlich über dem Anteil der Aufnahme: dieser Schritt verrät Bilder.</translation>
-    </message>
-    <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="67"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="68"/>
         <source>r, control</source>
         <translation>r, Kontrolle</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="85"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="86"/>
         <source>articulation</source>
         <translation>Artikulation</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="88"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="89"/>
         <source>closures</source>
         <translation>Verschlüsse</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="91"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="92"/>
         <source>closure recall</source>
         <translation>Verschlüsse getroffen</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="93"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="94"/>
         <source>false closures /s</source>
         <translation>falsche Verschlüsse /s</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="94"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="95"/>
         <source>… recording</source>
         <translation>… Aufnahme</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="75"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="76"/>
         <source>observer</source>
         <translation>Beobachter</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="76"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="51"/>
+        <source>The share of frames the machine observer calls rendered: among the recording&apos;s (its false alarms), and among the render&apos;s where the recording&apos;s face was only moved, where it was only moved and its open mouth squeezed narrower, where a mouth&apos;s inside was drawn, and where closed lips were drawn. Well above the recording&apos;s share: that step gives frames away.</source>
+        <translation>Der Anteil der Bilder, die der maschinelle Beobachter für erzeugt hält: unter denen der Aufnahme (seine Fehlalarme) und unter denen des Renderings, in denen das Gesicht der Aufnahme nur bewegt, nur bewegt und sein offener Mund enger gedrückt, ein Mundinneres gezeichnet oder geschlossene Lippen gezeichnet wurden. Deutlich über dem Anteil der Aufnahme: dieser Schritt verrät Bilder.</translation>
+    </message>
+    <message>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="77"/>
         <source>observer, videos</source>
         <translation>Beobachter, Videos</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="99"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="100"/>
         <source>sharpness</source>
         <translation>Schärfe</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="102"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="103"/>
         <source>seam ΔE</source>
         <translation>Naht ΔE</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="103"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="104"/>
         <source>… same pixels</source>
         <translation>… dieselben Pixel</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="104"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="105"/>
         <source>… a real edge</source>
         <translation>… eine echte Kante</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="105"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="106"/>
         <source>drawn as generated r</source>
         <translation>gezeichnet wie erzeugt r</translation>
     </message>
@@ -572,7 +572,7 @@
         <translation>Dieselbe Korrelation jeder Aufnahme mit dem Rendering eines anderen Clips: eine Kontrolle, die nicht gut sein kann. Ein Verfahren ist nur so gut wie sein Vorsprung davor.</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="73"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="74"/>
         <source>Correlation in speech with each frame drawn into the clip&apos;s footage half its length away, whose mouth does not follow the recording: new speech put into other footage.</source>
         <translation>Korrelation beim Sprechen, wenn jedes Bild in das Material des Clips eine halbe Cliplänge entfernt gezeichnet wird, dessen Mund der Aufnahme nicht folgt: neue Sprache in anderem Filmmaterial.</translation>
     </message>
@@ -582,52 +582,52 @@
         <translation>Genauigkeit eines Klassifikators auf zurückgehaltenen Daten, der am Mundausschnitt Rendering und Aufnahme unterscheidet, beide mit demselben Encoder kodiert. 0,5: er kann sie nicht unterscheiden; die neu kodierte Aufnahme zeigt die Untergrenze.</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="86"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="87"/>
         <source>Standard deviation of the rendered lip opening over the recording&apos;s: 1 articulates as much as the speaker.</source>
         <translation>Standardabweichung der gerenderten Lippenöffnung durch die der Aufnahme: 1 artikuliert so stark wie der Sprecher.</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="89"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="90"/>
         <source>/p b m/ segments the render closes over those the recording closes: 1 closes as often as the speaker does.</source>
         <translation>/p b m/-Abschnitte, die das Rendering schließt, durch die, die die Aufnahme schließt: 1 schließt so oft wie der Sprecher.</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="92"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="93"/>
         <source>Of the /p b m/ segments the recording closes, the share the render closes too.</source>
         <translation>Von den /p b m/-Abschnitten, die die Aufnahme schließt, der Anteil, den auch das Rendering schließt.</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="55"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="56"/>
         <source>Lip closures outside /p b m/, per second of speech (the recording&apos;s own count beside it).</source>
         <translation>Lippenverschlüsse außerhalb von /p b m/ je Sekunde Sprache (daneben die Zahl der Aufnahme selbst).</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="97"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="98"/>
         <source>Frames by which the opening lags the sound&apos;s energy, render minus recording (negative: the render leads).</source>
         <translation>Bilder, um die die Öffnung der Energie des Tons nachläuft, Rendering minus Aufnahme (negativ: das Rendering läuft vor).</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="100"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="101"/>
         <source>Mean squared Laplacian of the mouth box over the recording&apos;s: above 1 is crisper than the video.</source>
         <translation>Mittleres Quadrat des Laplace-Filters im Mundbereich durch das der Aufnahme: über 1 ist schärfer als das Video.</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="57"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="58"/>
         <source>CIE Lab ΔE across the edge of what the renderer drew: on the render, on the recording at the same pixels, and across a real edge there (for a drawn mouth inside: the recording&apos;s own inner-lip edge at that opening). A seam shows where the render&apos;s step exceeds a real one.</source>
         <translation>CIE-Lab-ΔE über den Rand dessen, was der Renderer zeichnete: im Rendering, in der Aufnahme an denselben Pixeln und über eine echte Kante dort (für ein gezeichnetes Mundinneres: die eigene Innenlippenkante der Aufnahme bei dieser Öffnung). Eine Naht ist sichtbar, wo der Sprung des Renderings den einer echten Kante übersteigt.</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="106"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="107"/>
         <source>The method&apos;s own inner-lip gap, as the animation exports carry it, against the opening read on its render.</source>
         <translation>Der eigene Innenlippenabstand des Verfahrens, wie ihn die Animationsexporte tragen, gegen die auf seinem Rendering gelesene Öffnung.</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="221"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="222"/>
         <source>tracked</source>
         <translation>verfolgt</translation>
     </message>
     <message>
-        <location filename="../studio/plots/EvaluationChart.cpp" line="219"/>
+        <location filename="../studio/plots/EvaluationChart.cpp" line="220"/>
         <source>recording, re-encoded</source>
         <translation>Aufnahme, neu kodiert</translation>
     </message>

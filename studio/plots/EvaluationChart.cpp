@@ -50,8 +50,9 @@ const EvaluationChart::MetricText *EvaluationChart::metricText(const std::string
         "the same encoder. 0.5: it cannot tell them apart; the re-encoded recording shows the floor.");
     static const char *const observed = QT_TR_NOOP(
         "The share of frames the machine observer calls rendered: among the recording's (its false alarms), and "
-        "among the render's where the recording's face was only moved, where a mouth's inside was drawn, and "
-        "where closed lips were drawn. Well above the recording's share: that step gives frames away.");
+        "among the render's where the recording's face was only moved, where it was only moved and its open mouth "
+        "squeezed narrower, where a mouth's inside was drawn, and where closed lips were drawn. Well above the "
+        "recording's share: that step gives frames away.");
     static const char *const falseClosures = QT_TR_NOOP(
         "Lip closures outside /p b m/, per second of speech (the recording's own count beside it).");
     static const char *const seam = QT_TR_NOOP(
