@@ -8,7 +8,7 @@ std::vector<CommandOption> Compositing::options()
 {
     return {{QStringLiteral("full-face"), {},
              QStringLiteral("synthesise the whole modelled face, eyes included (default: the recording's own face, "
-                            "its lower face moved to the generated shape)")},
+                            "its lips moved to the generated opening and width)")},
             {QStringLiteral("synthesize-skin"), {},
              QStringLiteral("paste the AAM's synthesis of the lower face (skin included) instead of moving the "
                             "recording's own")},

@@ -1850,12 +1850,12 @@
         <translation>Generiertes &amp;Gesicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="168"/>
+        <location filename="../studio/app/MainWindow.cpp" line="169"/>
         <source>&amp;Whole Face (Eyes Included)</source>
         <translation>&amp;Ganzes Gesicht (mit Augen)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="170"/>
+        <location filename="../studio/app/MainWindow.cpp" line="171"/>
         <source>Synthesise the whole modelled face; otherwise the recording&apos;s own eyes and upper face are kept</source>
         <translation>Das ganze modellierte Gesicht synthetisieren; sonst bleiben die Augen und das Obergesicht der Aufnahme erhalten</translation>
     </message>
@@ -1865,157 +1865,152 @@
         <translation>&amp;Synthetisierte Haut</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="166"/>
-        <source>Paste the AAM&apos;s synthesis of the lower face, skin included; otherwise the recording&apos;s own lower face is moved to the generated shape and only the inside of the mouth is synthesised</source>
-        <translation>Die AAM-Synthese des unteren Gesichts samt Haut einsetzen; sonst wird das eigene untere Gesicht der Aufnahme in die erzeugte Form bewegt und nur das Mundinnere synthetisiert</translation>
-    </message>
-    <message>
-        <location filename="../studio/app/MainWindow.cpp" line="172"/>
+        <location filename="../studio/app/MainWindow.cpp" line="173"/>
         <source>&amp;Detail from Training Images</source>
         <translation>&amp;Details aus Trainingsbildern</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="174"/>
+        <location filename="../studio/app/MainWindow.cpp" line="175"/>
         <source>Add the teeth, lip highlights and skin detail of the AAM&apos;s nearest training images to the model&apos;s smooth texture</source>
         <translation>Zähne, Glanzlichter der Lippen und Hautdetails der nächstgelegenen Trainingsbilder des AAM zur glatten Textur des Modells hinzufügen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="176"/>
+        <location filename="../studio/app/MainWindow.cpp" line="177"/>
         <source>&amp;Match the Frame&apos;s Lighting</source>
         <translation>&amp;Beleuchtung an das Bild anpassen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="178"/>
+        <location filename="../studio/app/MainWindow.cpp" line="179"/>
         <source>Closed &amp;Lips from the Footage</source>
         <translation>Geschlossene Lippen aus dem &amp;Video</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="180"/>
+        <location filename="../studio/app/MainWindow.cpp" line="181"/>
         <source>Lips closed where the recording&apos;s are open are the person&apos;s own closed lips from another moment of the video; otherwise the AAM draws them</source>
         <translation>Wo die Aufnahme die Lippen offen hat, sind geschlossene Lippen die eigenen der Person aus einem anderen Moment des Videos; sonst zeichnet sie das AAM</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="182"/>
+        <location filename="../studio/app/MainWindow.cpp" line="183"/>
         <source>&amp;Open Mouths from the Footage</source>
         <translation>&amp;Offene Münder aus dem Filmmaterial</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="184"/>
+        <location filename="../studio/app/MainWindow.cpp" line="185"/>
         <source>The inside of a mouth opened wider than recorded (teeth, tongue) is the person&apos;s own open mouth from another moment of the video; otherwise the AAM draws it</source>
         <translation>Das Innere eines weiter als aufgenommen geöffneten Mundes (Zähne, Zunge) ist der eigene offene Mund der Person aus einem anderen Moment des Videos; sonst zeichnet es das AAM</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="204"/>
+        <location filename="../studio/app/MainWindow.cpp" line="205"/>
         <source>&amp;Close the Lips on /p b m/</source>
         <translation>&amp;Lippen bei /p b m/ schließen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="206"/>
+        <location filename="../studio/app/MainWindow.cpp" line="207"/>
         <source>Close the generated lips on the bilabials /p b m/, as speakers do; off: the model&apos;s trajectory as generated</source>
         <translation>Die erzeugten Lippen bei den Bilabialen /p b m/ schließen, wie Sprecher es tun; aus: die Trajektorie des Modells, wie sie erzeugt wurde</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="252"/>
+        <location filename="../studio/app/MainWindow.cpp" line="253"/>
         <source>Sequences</source>
         <translation>Sequenzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="256"/>
+        <location filename="../studio/app/MainWindow.cpp" line="257"/>
         <source>Timeline</source>
         <translation>Zeitleiste</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="266"/>
+        <location filename="../studio/app/MainWindow.cpp" line="267"/>
         <source>Plots</source>
         <translation>Diagramme</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="270"/>
+        <location filename="../studio/app/MainWindow.cpp" line="271"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="291"/>
+        <location filename="../studio/app/MainWindow.cpp" line="292"/>
         <source>AAM: %1 · Models: %2</source>
         <translation>AAM: %1 · Modelle: %2</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="292"/>
+        <location filename="../studio/app/MainWindow.cpp" line="293"/>
         <source>none</source>
         <translation>keines</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="293"/>
+        <location filename="../studio/app/MainWindow.cpp" line="294"/>
         <source>none trained</source>
         <translation>keine trainiert</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="295"/>
+        <location filename="../studio/app/MainWindow.cpp" line="296"/>
         <source>The appearance model and the dynamic models the project uses now</source>
         <translation>Das Erscheinungsmodell und die dynamischen Modelle, die das Projekt jetzt verwendet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="326"/>
+        <location filename="../studio/app/MainWindow.cpp" line="327"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="327"/>
+        <location filename="../studio/app/MainWindow.cpp" line="328"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="346"/>
+        <location filename="../studio/app/MainWindow.cpp" line="347"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="358"/>
+        <location filename="../studio/app/MainWindow.cpp" line="359"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="369"/>
+        <location filename="../studio/app/MainWindow.cpp" line="370"/>
         <source>&amp;Live: Speak and Watch the Face</source>
         <translation>&amp;Live: Sprechen und das Gesicht beobachten</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="371"/>
+        <location filename="../studio/app/MainWindow.cpp" line="372"/>
         <source>Speak into the microphone and watch the face move</source>
         <translation>Ins Mikrofon sprechen und dem Gesicht beim Bewegen zusehen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="375"/>
+        <location filename="../studio/app/MainWindow.cpp" line="376"/>
         <source>&amp;Panels</source>
         <translation>&amp;Bereiche</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="379"/>
+        <location filename="../studio/app/MainWindow.cpp" line="380"/>
         <source>&amp;Reset Layout</source>
         <translation>Layout &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="383"/>
+        <location filename="../studio/app/MainWindow.cpp" line="384"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="384"/>
+        <location filename="../studio/app/MainWindow.cpp" line="385"/>
         <source>&amp;User Guide</source>
         <translation>&amp;Benutzerhandbuch</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="387"/>
+        <location filename="../studio/app/MainWindow.cpp" line="388"/>
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="396"/>
+        <location filename="../studio/app/MainWindow.cpp" line="397"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="416"/>
+        <location filename="../studio/app/MainWindow.cpp" line="417"/>
         <source>Select a sequence</source>
         <translation>Wählen Sie eine Sequenz</translation>
     </message>
@@ -2025,17 +2020,22 @@
         <translation>Die Mediendatei dieser Sequenz konnte nicht gelesen werden.</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="463"/>
+        <location filename="../studio/app/MainWindow.cpp" line="166"/>
+        <source>Paste the AAM&apos;s synthesis of the lower face, skin included; otherwise the recording&apos;s own lower face is moved to the generated lips&apos; opening and width and only the inside of the mouth is drawn</source>
+        <translation>Die AAM-Synthese des unteren Gesichts samt Haut einsetzen; sonst wird das eigene untere Gesicht der Aufnahme auf die erzeugte Öffnung und Breite der Lippen bewegt und nur das Mundinnere gezeichnet</translation>
+    </message>
+    <message>
+        <location filename="../studio/app/MainWindow.cpp" line="464"/>
         <source>Sound only: no video to show</source>
         <translation>Nur Ton: kein Video zu zeigen</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="465"/>
+        <location filename="../studio/app/MainWindow.cpp" line="466"/>
         <source>The video has no frames</source>
         <translation>Das Video enthält keine Bilder</translation>
     </message>
     <message numerus="yes">
-        <location filename="../studio/app/MainWindow.cpp" line="474"/>
+        <location filename="../studio/app/MainWindow.cpp" line="475"/>
         <source>%1: %n frames at %2 fps</source>
         <translation>
             <numerusform>%1: %n Bild mit %2 fps</numerusform>
@@ -2043,43 +2043,43 @@
         </translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="483"/>
+        <location filename="../studio/app/MainWindow.cpp" line="484"/>
         <source>Audio energy of %1</source>
         <translation>Audioenergie von %1</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="484"/>
+        <location filename="../studio/app/MainWindow.cpp" line="485"/>
         <source>time (s)</source>
         <translation>Zeit (s)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="484"/>
+        <location filename="../studio/app/MainWindow.cpp" line="485"/>
         <source>RMS per video frame</source>
         <translation>RMS je Videobild</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="490"/>
+        <location filename="../studio/app/MainWindow.cpp" line="491"/>
         <source>RMS</source>
         <translation>RMS</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="503"/>
+        <location filename="../studio/app/MainWindow.cpp" line="504"/>
         <source>%1 — frame %2 of %3</source>
         <translation>%1 – Bild %2 von %3</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="511"/>
-        <location filename="../studio/app/MainWindow.cpp" line="519"/>
+        <location filename="../studio/app/MainWindow.cpp" line="512"/>
+        <location filename="../studio/app/MainWindow.cpp" line="520"/>
         <source>LipSync Studio</source>
         <translation>LipSync Studio</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="518"/>
+        <location filename="../studio/app/MainWindow.cpp" line="519"/>
         <source> (bundled demo, read-only)</source>
         <translation> (mitgeliefertes Demo, schreibgeschützt)</translation>
     </message>
     <message>
-        <location filename="../studio/app/MainWindow.cpp" line="265"/>
+        <location filename="../studio/app/MainWindow.cpp" line="266"/>
         <source>Audio</source>
         <translation>Audio</translation>
     </message>

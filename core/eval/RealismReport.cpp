@@ -158,11 +158,11 @@ public:
         m_seam[m][ut] = s.frame;
         m_samePixels[m][ut] = s.reference;
         if (inside && std::isfinite(s.frame))
-            m_insideAsked[m][ut] = LowerFaceWarp::opening(renderer.drawnShape(t, c));
+            m_insideAsked[m][ut] = LowerFaceWarp::opening(renderer.warpedShape(t, c));
         if (inside || closing)
             return inside ? FrameDrawing::Inside : FrameDrawing::Closed;
         const Eigen::VectorXd tracked = renderer.trackedShape(t);
-        const double narrowing = LowerFaceWarp::opening(tracked) - LowerFaceWarp::opening(renderer.drawnShape(t, c));
+        const double narrowing = LowerFaceWarp::opening(tracked) - LowerFaceWarp::opening(renderer.warpedShape(t, c));
         return narrowing > std::max(1.0, kNarrowedShare * LowerFaceWarp::mouthWidth(tracked)) ? FrameDrawing::Narrowed
                                                                                             : FrameDrawing::Warped;
     }

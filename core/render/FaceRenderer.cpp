@@ -238,10 +238,10 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
         m_synthesizer.composite(features, drawnPose(index, features), frame, options);
         return;
     }
-    // The recording's own lower face moved to the generated shape, then the inside of the mouth
-    // where the recording had less of it.
-    const Eigen::VectorXd generated = drawnShape(index, features);
+    // The recording's own lower face moved to the generated lips' opening and width, then the
+    // inside of the mouth where the recording had less of it.
     const Eigen::VectorXd tracked = trackedShape(index);
+    const Eigen::VectorXd generated = warpedShape(index, features);
     LowerFaceWarp::apply(frame, tracked, generated);
     bool closing = false;
     const cv::Mat alpha = mouthInteriorAlpha(generated, tracked, &closing);
@@ -332,6 +332,17 @@ Eigen::VectorXd FaceRenderer::drawnShape(int index, const Eigen::VectorXd &featu
     return alignByEyes(shape, trackedShape(index)).apply(shape);
 }
 
+Eigen::VectorXd FaceRenderer::warpedShape(int index, const Eigen::VectorXd &features) const
+{
+    return LowerFaceWarp::speechShape(trackedShape(index), drawnShape(index, features));
+}
+
+Eigen::VectorXd FaceRenderer::renderedShape(int index, const Eigen::VectorXd &features, const CompositeOptions &options) const
+{
+    return options.region == FaceRegion::Full || options.synthesizeSkin ? drawnShape(index, features)
+                                                                         : warpedShape(index, features);
+}
+
 cv::Mat FaceRenderer::featheredPolygon(const std::vector<cv::Point2f> &outline, double feather, float weight) const
 {
     constexpr int kShift = 4; // fillPoly's sub-pixel bits
@@ -395,7 +406,7 @@ cv::Mat FaceRenderer::synthesisedWeight(int index, const Eigen::VectorXd &featur
     if (m_composite.region == FaceRegion::Full || m_composite.synthesizeSkin)
         return m_synthesizer.compositeWeight(features, drawnPose(index, features), m_size, m_composite.region);
     bool closed = false;
-    cv::Mat alpha = mouthInteriorAlpha(drawnShape(index, features), trackedShape(index), &closed);
+    cv::Mat alpha = mouthInteriorAlpha(warpedShape(index, features), trackedShape(index), &closed);
     if (inside)
         *inside = !closed && cv::countNonZero(alpha) > 0;
     if (closing)

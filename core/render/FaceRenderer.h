@@ -1,9 +1,10 @@
 #pragma once
 // Rendering AAM parameters (real or generated) as video frames, at the pose of the face in a
 // background frame. By default the recording keeps its own face: its lower face is moved from the
-// shape tracked in the frame to the shape the parameters give (LowerFaceWarp, a thin-plate
-// spline), and only the inside of a mouth opened wider than recorded is drawn: the person's own
-// open mouth from another moment of the video (MouthExemplars;
+// shape tracked in the frame to that shape with the lips' opening and width the parameters give
+// (warpedShape: LowerFaceWarp::speechShape, then its thin-plate spline), and only the inside of a
+// mouth opened wider than recorded is drawn: the person's own open mouth from another moment of
+// the video (MouthExemplars;
 // CompositeOptions::recordedInsides) or, without one, from the AAM (shape + texture + exemplar
 // detail, AamSynthesizer), blended into the lips with a feathered edge. Lips asked to close where
 // the recording's are open are the person's own closed lips from another moment of the video
@@ -126,6 +127,13 @@ public:
     Similarity drawnPose(int index, const Eigen::VectorXd &features) const;
     // The 23 points of parameters `features` drawn into frame `index`, in its pixels.
     Eigen::VectorXd drawnShape(int index, const Eigen::VectorXd &features) const;
+    // The 23 points the default composite moves the recording's face in frame `index` to for
+    // `features`: its tracked shape with the lips' opening and width of drawnShape()
+    // (LowerFaceWarp::speechShape).
+    Eigen::VectorXd warpedShape(int index, const Eigen::VectorXd &features) const;
+    // Where a render composited as `options` says puts the face's 23 points: warpedShape() for the
+    // default composite, drawnShape() for a synthesised face.
+    Eigen::VectorXd renderedShape(int index, const Eigen::VectorXd &features, const CompositeOptions &options) const;
     // The real frame on the left and the rendered one on the right, one frame (optional labels).
     cv::Mat renderSideBySide(int index, const Eigen::VectorXd &features,
                              const std::string &leftLabel = {}, const std::string &rightLabel = {});

@@ -28,7 +28,45 @@ Eigen::Vector2d point(const Eigen::VectorXd &shape, int i)
     return shape.segment<2>(2 * i);
 }
 
+// The eyes' midpoint of a 23-point shape.
+Eigen::Vector2d eyesCentre(const Eigen::VectorXd &shape)
+{
+    using namespace scheme23;
+    Eigen::Vector2d eyes = Eigen::Vector2d::Zero();
+    for (int i : landmarkIndices(LandmarkFeature::Eyes))
+        eyes += point(shape, i);
+    return eyes / double(landmarkIndices(LandmarkFeature::Eyes).size());
+}
+
 } // namespace
+
+Eigen::VectorXd LowerFaceWarp::speechShape(const Eigen::VectorXd &tracked, const Eigen::VectorXd &generated)
+{
+    using namespace scheme23;
+    if (tracked.size() != 2 * kPointCount || generated.size() != tracked.size())
+        return generated;
+    constexpr int kUpperLip[] = {9, 10, 11, kInnerTop};     // outer lip left to right, inner centre
+    constexpr int kLowerLip[] = {13, 14, 15, kInnerBottom}; // outer lip right to left, inner centre
+    constexpr int kJawBeside[] = {kJawUpperLeft + 1, kJawUpperRight - 1}; // either side of the chin
+    const Eigen::Vector2d down = (point(tracked, kChin) - eyesCentre(tracked)).normalized();
+    const Eigen::Vector2d across = (point(tracked, kMouthRight) - point(tracked, kMouthLeft)).normalized();
+    // Each lip's move along the face, as far as its generated inner-lip centre is from the tracked one.
+    const Eigen::Vector2d upper = (point(generated, kInnerTop) - point(tracked, kInnerTop)).dot(down) * down;
+    const Eigen::Vector2d lower = (point(generated, kInnerBottom) - point(tracked, kInnerBottom)).dot(down) * down;
+    const double widen = 0.5 * (mouthWidth(generated) - mouthWidth(tracked));
+    Eigen::VectorXd out = tracked;
+    auto move = [&out, &tracked](int i, const Eigen::Vector2d &by) { out.segment<2>(2 * i) = point(tracked, i) + by; };
+    for (int i : kUpperLip)
+        move(i, upper);
+    for (int i : kLowerLip)
+        move(i, lower);
+    move(kChin, lower);
+    for (int i : kJawBeside)
+        move(i, 0.5 * lower);
+    move(kMouthLeft, 0.5 * (upper + lower) - widen * across);
+    move(kMouthRight, 0.5 * (upper + lower) + widen * across);
+    return out;
+}
 
 void LowerFaceWarp::controlPoints(const Eigen::VectorXd &tracked, const Eigen::VectorXd &generated,
                                   Eigen::VectorXd &sources, Eigen::VectorXd &targets, cv::Rect2d &region)
@@ -45,10 +83,7 @@ void LowerFaceWarp::controlPoints(const Eigen::VectorXd &tracked, const Eigen::V
     }
     // The face's frame from the tracked shape: the eyes' midpoint, the axis down to the chin and
     // the eyes' span across.
-    Eigen::Vector2d eyes = Eigen::Vector2d::Zero();
-    for (int i : landmarkIndices(LandmarkFeature::Eyes))
-        eyes += point(tracked, i);
-    eyes /= double(landmarkIndices(LandmarkFeature::Eyes).size());
+    const Eigen::Vector2d eyes = eyesCentre(tracked);
     const Eigen::Vector2d down = point(tracked, kChin) - eyes;
     const double length = std::max(1.0, down.norm());
     const Eigen::Vector2d axis = down / length, across(-axis.y(), axis.x());

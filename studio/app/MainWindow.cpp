@@ -164,7 +164,8 @@ void MainWindow::addGeneratedFaceMenu(QMenu *view)
     QAction *skin = face->addAction(tr("&Synthesised Skin"));
     skin->setObjectName(QStringLiteral("synthesizeSkinAction"));
     skin->setToolTip(tr("Paste the AAM's synthesis of the lower face, skin included; otherwise the recording's own "
-                        "lower face is moved to the generated shape and only the inside of the mouth is synthesised"));
+                        "lower face is moved to the generated lips' opening and width and only the inside of the mouth is "
+                        "drawn"));
     QAction *whole = face->addAction(tr("&Whole Face (Eyes Included)"));
     whole->setObjectName(QStringLiteral("wholeFaceAction"));
     whole->setToolTip(tr("Synthesise the whole modelled face; otherwise the recording's own eyes and upper face are "

@@ -69,11 +69,11 @@ QImage GeneratedFaces::render(int track, int frame, const CompositeOptions &opti
     return out;
 }
 
-LandmarkSet GeneratedFaces::landmarks(int track, int frame) const
+LandmarkSet GeneratedFaces::landmarks(int track, int frame, const CompositeOptions &options) const
 {
     if (track < 0 || track >= int(m_tracks.size()) || m_tracks[std::size_t(track)].params.rows() == 0)
         return {};
-    return landmarkSetFromShape(m_renderer->drawnShape(poseFrame(frame), paramsAt(track, frame)), PointState::Automatic);
+    return landmarkSetFromShape(m_renderer->renderedShape(poseFrame(frame), paramsAt(track, frame), options), PointState::Automatic);
 }
 
 std::optional<LandmarkSet> GeneratedFaces::trackedLandmarks(int frame) const

@@ -62,8 +62,8 @@ public:
     // Track `track`'s face at `frame` drawn into `background` (the recorded frame; ignored with a
     // fixed frame) as `options` say. Frames past a track's end hold its last frame.
     QImage render(int track, int frame, const CompositeOptions &options, const QImage &background = {}) const;
-    // Where the generated face's 23 points are in the rendered frame.
-    LandmarkSet landmarks(int track, int frame) const;
+    // Where the generated face's 23 points are in the frame rendered as `options` say.
+    LandmarkSet landmarks(int track, int frame, const CompositeOptions &options) const;
     // The points tracked in the recorded frame (none for new speech).
     std::optional<LandmarkSet> trackedLandmarks(int frame) const;
 

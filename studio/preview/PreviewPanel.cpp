@@ -425,7 +425,7 @@ void PreviewPanel::showCurrent()
         for (int i = 0; i < int(m_panels.size()) && shown && i < int(shown->tracks().size()); ++i) {
             FrameView *view = m_panels[std::size_t(i)].view;
             view->setImage(shown->render(i, m_speechFrame, composite));
-            view->setLandmarks(overlay ? std::optional<LandmarkSet>(shown->landmarks(i, m_speechFrame)) : std::nullopt);
+            view->setLandmarks(overlay ? std::optional<LandmarkSet>(shown->landmarks(i, m_speechFrame, composite)) : std::nullopt);
         }
         return;
     }
@@ -447,7 +447,7 @@ void PreviewPanel::showCurrent()
     for (int k = 0; k < int(shown->tracks().size()) && k + 1 < int(m_panels.size()); ++k) {
         FrameView *view = m_panels[std::size_t(k + 1)].view;
         view->setImage(shown->render(k, frame, composite, *m_recorded));
-        view->setLandmarks(overlay ? std::optional<LandmarkSet>(shown->landmarks(k, frame)) : std::nullopt);
+        view->setLandmarks(overlay ? std::optional<LandmarkSet>(shown->landmarks(k, frame, composite)) : std::nullopt);
     }
 }
 

@@ -181,7 +181,7 @@ private slots:
         const auto tracked = m_preview->faces()->trackedLandmarks(40);
         QVERIFY(tracked && tracked->isComplete());
         QCOMPARE(m_preview->faces()->tracks().front().kind, QStringLiteral("dpds"));
-        const LandmarkSet drawn = m_preview->faces()->landmarks(0, 40);
+        const LandmarkSet drawn = m_preview->faces()->landmarks(0, 40, m_window->context()->compositeOptions());
         QVERIFY(drawn.isComplete());
         QRectF face;
         for (const LandmarkSet *set : {&*tracked, &drawn})

@@ -2,7 +2,7 @@
 // fades to nothing at its region's border, and leaves an image unchanged when nothing moves; the
 // lower-face warp moves the pixels at the mouth to where the generated shape puts the mouth,
 // keeps the eyes and everything outside the face, and the mouth's inside is the lens between the
-// inner-lip points.
+// inner-lip points; the shape it moves to takes the lips' opening and width from a generated one.
 #include "render/LowerFaceWarp.h"
 #include "render/ThinPlateWarp.h"
 
@@ -133,6 +133,54 @@ private slots:
         QVERIFY(cv::pointPolygonTest(lens, cv::Point2f(float(0.5 * (generated[32] + generated[34])),
                                                           float(0.5 * (generated[33] + generated[35]))), false) > 0);
         QVERIFY(std::abs(LowerFaceWarp::opening(generated) - (generated[35] - generated[33])) < 1.0);
+    }
+
+    // The shape the recording's face is moved to takes from the generated one only the lips'
+    // moves along the face (eyes to chin) and the mouth's width, on a tilted head: the model's
+    // sideways drift of the lips, its outline of them, its eyes and the jaw's upper ends are not
+    // drawn.
+    void speechShapeTakesOpeningAndWidthOnly()
+    {
+        Eigen::VectorXd tracked = face(360, 288);
+        const double tilt = 20.0 * M_PI / 180.0, c = std::cos(tilt), s = std::sin(tilt);
+        for (Eigen::Index i = 0; i < tracked.size(); i += 2) {
+            const double x = tracked[i] - 180.0, y = tracked[i + 1] - 144.0;
+            tracked[i] = 180.0 + c * x - s * y;
+            tracked[i + 1] = 144.0 + s * x + c * y;
+        }
+        QVERIFY((LowerFaceWarp::speechShape(tracked, tracked) - tracked).cwiseAbs().maxCoeff() < 1e-12);
+        auto at = [](const Eigen::VectorXd &shape, int i) { return Eigen::Vector2d(shape.segment<2>(2 * i)); };
+        Eigen::Vector2d eyes = Eigen::Vector2d::Zero();
+        for (int i = 0; i < 8; ++i)
+            eyes += at(tracked, i) / 8.0;
+        const Eigen::Vector2d down = (at(tracked, 20) - eyes).normalized(), across(down.y(), -down.x()); // to the right
+        Eigen::VectorXd generated = tracked;
+        auto shift = [&generated](int i, const Eigen::Vector2d &by) { generated.segment<2>(2 * i) += by; };
+        shift(16, 2.0 * down + 3.0 * across); // the upper lip down 2 px and 3 px sideways
+        shift(17, 5.0 * down + 3.0 * across); // the lower lip down 5 px
+        shift(10, -3.0 * down);               // the model's thicker upper lip
+        shift(14, 1.0 * across);
+        shift(8, -2.0 * across);              // the corners 2 px further apart each
+        shift(12, 2.0 * across);
+        for (int i : {0, 3, 6, 18, 22})
+            shift(i, Eigen::Vector2d(1.0, -1.0)); // eyes and jaw ends off by a pixel
+        const Eigen::VectorXd speech = LowerFaceWarp::speechShape(tracked, generated);
+        for (int i : {0, 1, 2, 3, 4, 5, 6, 7, 18, 22})
+            QVERIFY2((at(speech, i) - at(tracked, i)).norm() < 1e-9, qPrintable(QString::number(i)));
+        for (int i : {9, 10, 11, 16})
+            QVERIFY2((at(speech, i) - at(tracked, i) - 2.0 * down).norm() < 1e-9, qPrintable(QString::number(i)));
+        for (int i : {13, 14, 15, 17, 20})
+            QVERIFY2((at(speech, i) - at(tracked, i) - 5.0 * down).norm() < 1e-9, qPrintable(QString::number(i)));
+        for (int i : {19, 21})
+            QVERIFY((at(speech, i) - at(tracked, i) - 2.5 * down).norm() < 1e-9);
+        QVERIFY(std::abs(LowerFaceWarp::mouthWidth(speech) - LowerFaceWarp::mouthWidth(generated)) < 1e-9);
+        QVERIFY(std::abs((at(speech, 17) - at(speech, 16)).dot(down) - (at(tracked, 17) - at(tracked, 16)).dot(down) - 3.0) < 1e-9);
+        // The corners midway between the lips' moves, apart along the line between them.
+        const Eigen::Vector2d corners = (at(tracked, 12) - at(tracked, 8)).normalized();
+        const double widen = 0.5 * (LowerFaceWarp::mouthWidth(generated) - LowerFaceWarp::mouthWidth(tracked));
+        QVERIFY(widen > 1.5);
+        QVERIFY((at(speech, 8) - at(tracked, 8) - 3.5 * down + widen * corners).norm() < 1e-9);
+        QVERIFY((at(speech, 12) - at(tracked, 12) - 3.5 * down - widen * corners).norm() < 1e-9);
     }
 
     // An open mouth asked to close past itself (the inner lips 12 px through each other, the
