@@ -69,6 +69,10 @@ struct CompositeOptions
         return o;
     }
 
+    // Whether the face is the AAM's synthesis (the whole face, or the lower face's skin) rather
+    // than the recording's own lower face moved (render/LowerFaceWarp).
+    bool synthesisesFace() const { return region == FaceRegion::Full || synthesizeSkin; }
+
     bool operator==(const CompositeOptions &) const = default;
 };
 

@@ -200,7 +200,7 @@ std::vector<FrameDrawing> observedDrawing(const std::vector<FrameDrawing> &drawi
                                           const CompositeOptions &composite)
 {
     std::vector<FrameDrawing> out;
-    if (composite.region == FaceRegion::Full || composite.synthesizeSkin)
+    if (composite.synthesisesFace())
         return out;
     for (size_t t = 0; t < drawing.size() && t < recordedBoxes.size(); t += kObserverStep)
         if (recordedBoxes[t])

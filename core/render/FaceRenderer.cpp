@@ -234,7 +234,7 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
                     + std::to_string(m_size.height) + " BGR image");
     if (occluded(index))
         return; // what covers the face stays in front of it
-    if (options.region == FaceRegion::Full || options.synthesizeSkin) {
+    if (options.synthesisesFace()) {
         m_synthesizer.composite(features, drawnPose(index, features), frame, options);
         return;
     }
@@ -339,8 +339,7 @@ Eigen::VectorXd FaceRenderer::warpedShape(int index, const Eigen::VectorXd &feat
 
 Eigen::VectorXd FaceRenderer::renderedShape(int index, const Eigen::VectorXd &features, const CompositeOptions &options) const
 {
-    return options.region == FaceRegion::Full || options.synthesizeSkin ? drawnShape(index, features)
-                                                                         : warpedShape(index, features);
+    return options.synthesisesFace() ? drawnShape(index, features) : warpedShape(index, features);
 }
 
 cv::Mat FaceRenderer::featheredPolygon(const std::vector<cv::Point2f> &outline, double feather, float weight) const
@@ -403,7 +402,7 @@ cv::Mat FaceRenderer::synthesisedWeight(int index, const Eigen::VectorXd &featur
                     + " parameters given, the AAM has " + std::to_string(m_aam.combinedModes()));
     if (occluded(index))
         return cv::Mat(m_size, CV_32F, cv::Scalar(0));
-    if (m_composite.region == FaceRegion::Full || m_composite.synthesizeSkin)
+    if (m_composite.synthesisesFace())
         return m_synthesizer.compositeWeight(features, drawnPose(index, features), m_size, m_composite.region);
     bool closed = false;
     cv::Mat alpha = mouthInteriorAlpha(warpedShape(index, features), trackedShape(index), &closed);
