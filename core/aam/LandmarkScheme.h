@@ -39,8 +39,22 @@ constexpr int kLeftEyeInner = 2;
 constexpr int kRightEyeInner = 4;
 // The four eye corners, which speech does not move (alignByEyes).
 constexpr int kEyeCorners[] = {kLeftEyeOuter, kLeftEyeInner, kRightEyeInner, kRightEyeOuter};
+// The mouth: its corners, three points on each outer lip (the upper left to right, the lower
+// right to left) and the inner lips' centres.
 constexpr int kMouthLeft = 8;
+constexpr int kUpperLipLeft = 9;
+constexpr int kUpperLipCentre = 10;
+constexpr int kUpperLipRight = 11;
 constexpr int kMouthRight = 12;
+constexpr int kLowerLipRight = 13;
+constexpr int kLowerLipCentre = 14;
+constexpr int kLowerLipLeft = 15;
+constexpr int kInnerLipTop = 16;
+constexpr int kInnerLipBottom = 17;
+// The jaw line, image left to right: its upper ends (iBUG 2 and 14) and the chin (iBUG 8).
+constexpr int kJawLeft = 18;
+constexpr int kChin = 20;
+constexpr int kJawRight = 22;
 constexpr int kIbugPointCount = 68;
 } // namespace scheme23
 

@@ -12,10 +12,7 @@ namespace lipsync {
 
 namespace {
 
-// The scheme's mouth and jaw points (aam/LandmarkScheme.cpp).
-constexpr int kMouthLeft = scheme23::kMouthLeft, kUpperLeft = 9, kUpperCentre = 10, kUpperRight = 11,
-              kMouthRight = scheme23::kMouthRight, kLowerRight = 13, kLowerCentre = 14, kLowerLeft = 15,
-              kInnerTop = 16, kInnerBottom = 17, kChin = 20;
+using namespace scheme23;
 constexpr int kEyePoints = 8;
 
 Eigen::Vector2d point(const Eigen::VectorXd &shape, int i)
@@ -48,7 +45,7 @@ MouthMeasurer::MouthMeasurer(const AamModel &aam) : m_synth(aam)
     const PiecewiseAffineWarp &warp = aam.warp(0);
     const Eigen::VectorXd &ref = warp.referenceShape();
     std::vector<cv::Point2f> outline;
-    for (int i : {kMouthLeft, kInnerTop, kMouthRight, kInnerBottom})
+    for (int i : {kMouthLeft, kInnerLipTop, kMouthRight, kInnerLipBottom})
         outline.emplace_back(float(ref[2 * i]), float(ref[2 * i + 1]));
     std::vector<int> mouth;
     for (int p = 0; p < warp.pixelCount(); ++p)
@@ -86,13 +83,13 @@ MouthMeasures MouthMeasurer::measure(const Eigen::VectorXd &combined, Eigen::Vec
     m.width = (right - left).norm();
     m.leftCorner = eyes.x() - left.x();
     m.rightCorner = right.x() - eyes.x();
-    m.rounding = (point(s, kLowerCentre) - point(s, kUpperCentre)).norm() / std::max(m.width, 1e-9);
+    m.rounding = (point(s, kLowerLipCentre) - point(s, kUpperLipCentre)).norm() / std::max(m.width, 1e-9);
     m.jaw = point(s, kChin).y() - eyes.y();
     // Image y grows downwards: above the corners' line is a smaller y.
-    m.upperLeft = corners.y() - s[2 * kUpperLeft + 1];
-    m.upperRight = corners.y() - s[2 * kUpperRight + 1];
-    m.lowerLeft = s[2 * kLowerLeft + 1] - corners.y();
-    m.lowerRight = s[2 * kLowerRight + 1] - corners.y();
+    m.upperLeft = corners.y() - s[2 * kUpperLipLeft + 1];
+    m.upperRight = corners.y() - s[2 * kUpperLipRight + 1];
+    m.lowerLeft = s[2 * kLowerLipLeft + 1] - corners.y();
+    m.lowerRight = s[2 * kLowerLipRight + 1] - corners.y();
     m.teeth = m_teethBase + m_teethGain.dot(combined);
     return m;
 }

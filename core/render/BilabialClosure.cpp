@@ -9,11 +9,6 @@
 
 namespace lipsync {
 
-namespace {
-constexpr int kInnerLipTop = 16;    // scheme23: iBUG 62
-constexpr int kInnerLipBottom = 17; // scheme23: iBUG 66
-} // namespace
-
 std::optional<BilabialClosure> BilabialClosure::forAam(const AamModel &aam)
 {
     try {
@@ -37,7 +32,7 @@ BilabialClosure::BilabialClosure(const AamModel &aam)
     // The face's vertical: perpendicular to the eye line, pointing down the image.
     const Eigen::Vector2d down(-eyes.y() / interocular, eyes.x() / interocular);
     auto openingOfShape = [&](const Eigen::VectorXd &shape) {
-        return (shape.segment<2>(2 * kInnerLipBottom) - shape.segment<2>(2 * kInnerLipTop)).dot(down) / interocular;
+        return (shape.segment<2>(2 * scheme23::kInnerLipBottom) - shape.segment<2>(2 * scheme23::kInnerLipTop)).dot(down) / interocular;
     };
     // o(c) is linear: its value at 0 and its change along each combined mode.
     auto shapeOf = [&](const Eigen::VectorXd &c) {

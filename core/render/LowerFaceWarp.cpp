@@ -9,11 +9,6 @@ namespace lipsync {
 
 namespace {
 
-constexpr int kInnerTop = 16;    // inner_lip_top
-constexpr int kInnerBottom = 17; // inner_lip_bottom
-constexpr int kJawUpperLeft = 18;  // jaw_left (iBUG 2)
-constexpr int kChin = 20;
-constexpr int kJawUpperRight = 22; // jaw_right (iBUG 14)
 constexpr int kRingPoints = 16;
 // The smallest Jacobian determinant of the backward map (output pixel -> where it reads the
 // frame): at or below 0 the image folds over itself; near 0 a small part of the frame is stretched
@@ -45,14 +40,14 @@ Eigen::VectorXd LowerFaceWarp::speechShape(const Eigen::VectorXd &tracked, const
     using namespace scheme23;
     if (tracked.size() != 2 * kPointCount || generated.size() != tracked.size())
         return generated;
-    constexpr int kUpperLip[] = {9, 10, 11, kInnerTop};     // outer lip left to right, inner centre
-    constexpr int kLowerLip[] = {13, 14, 15, kInnerBottom}; // outer lip right to left, inner centre
-    constexpr int kJawBeside[] = {kJawUpperLeft + 1, kJawUpperRight - 1}; // either side of the chin
+    constexpr int kUpperLip[] = {kUpperLipLeft, kUpperLipCentre, kUpperLipRight, kInnerLipTop};
+    constexpr int kLowerLip[] = {kLowerLipRight, kLowerLipCentre, kLowerLipLeft, kInnerLipBottom};
+    constexpr int kJawBeside[] = {kJawLeft + 1, kJawRight - 1}; // either side of the chin
     const Eigen::Vector2d down = (point(tracked, kChin) - eyesCentre(tracked)).normalized();
     const Eigen::Vector2d across = (point(tracked, kMouthRight) - point(tracked, kMouthLeft)).normalized();
     // Each lip's move along the face, as far as its generated inner-lip centre is from the tracked one.
-    const Eigen::Vector2d upper = (point(generated, kInnerTop) - point(tracked, kInnerTop)).dot(down) * down;
-    const Eigen::Vector2d lower = (point(generated, kInnerBottom) - point(tracked, kInnerBottom)).dot(down) * down;
+    const Eigen::Vector2d upper = (point(generated, kInnerLipTop) - point(tracked, kInnerLipTop)).dot(down) * down;
+    const Eigen::Vector2d lower = (point(generated, kInnerLipBottom) - point(tracked, kInnerLipBottom)).dot(down) * down;
     const double widen = 0.5 * (mouthWidth(generated) - mouthWidth(tracked));
     Eigen::VectorXd out = tracked;
     auto move = [&out, &tracked](int i, const Eigen::Vector2d &by) { out.segment<2>(2 * i) = point(tracked, i) + by; };
@@ -77,7 +72,7 @@ void LowerFaceWarp::controlPoints(const Eigen::VectorXd &tracked, const Eigen::V
         // The mouth and the lower jaw move; the eyes and the jaw's upper ends, level with the
         // nose, where speech hardly moves the face, stay.
         const bool moves = landmarkDefinitions()[size_t(i)].feature == LandmarkFeature::Mouth
-                           || (i > kJawUpperLeft && i < kJawUpperRight);
+                           || (i > kJawLeft && i < kJawRight);
         from.push_back(point(tracked, i));
         to.push_back(moves ? point(generated, i) : point(tracked, i));
     }
@@ -90,10 +85,10 @@ void LowerFaceWarp::controlPoints(const Eigen::VectorXd &tracked, const Eigen::V
     const double span = std::max(1.0, (point(tracked, kRightEyeOuter) - point(tracked, kLeftEyeOuter)).norm());
     // Lips that a closure or a model pulled through each other meet instead (half a pixel apart:
     // the spline needs distinct points).
-    if ((to[size_t(kInnerBottom)] - to[size_t(kInnerTop)]).dot(axis) < 0.5) {
-        const Eigen::Vector2d mid = 0.5 * (to[size_t(kInnerBottom)] + to[size_t(kInnerTop)]);
-        to[size_t(kInnerTop)] = mid - 0.25 * axis;
-        to[size_t(kInnerBottom)] = mid + 0.25 * axis;
+    if ((to[size_t(kInnerLipBottom)] - to[size_t(kInnerLipTop)]).dot(axis) < 0.5) {
+        const Eigen::Vector2d mid = 0.5 * (to[size_t(kInnerLipBottom)] + to[size_t(kInnerLipTop)]);
+        to[size_t(kInnerLipTop)] = mid - 0.25 * axis;
+        to[size_t(kInnerLipBottom)] = mid + 0.25 * axis;
     }
     // The brows and forehead held too: every eye point's copy a quarter of the face length up.
     for (int i : landmarkIndices(LandmarkFeature::Eyes)) {
@@ -158,7 +153,7 @@ std::vector<cv::Point2f> LowerFaceWarp::mouthInterior(const Eigen::VectorXd &sha
 {
     using namespace scheme23;
     const Eigen::Vector2d left = point(shape, kMouthLeft), right = point(shape, kMouthRight);
-    const Eigen::Vector2d top = point(shape, kInnerTop), bottom = point(shape, kInnerBottom);
+    const Eigen::Vector2d top = point(shape, kInnerLipTop), bottom = point(shape, kInnerLipBottom);
     // The quadratic Bézier through the corners whose midpoint is the inner-lip point: control
     // point 2 m - (l + r) / 2.
     auto curve = [&](const Eigen::Vector2d &mid, bool forward, std::vector<cv::Point2f> &out) {
@@ -178,7 +173,7 @@ std::vector<cv::Point2f> LowerFaceWarp::mouthInterior(const Eigen::VectorXd &sha
 
 double LowerFaceWarp::opening(const Eigen::VectorXd &shape)
 {
-    return (point(shape, kInnerBottom) - point(shape, kInnerTop)).norm();
+    return (point(shape, scheme23::kInnerLipBottom) - point(shape, scheme23::kInnerLipTop)).norm();
 }
 
 std::vector<cv::Point2f> LowerFaceWarp::outerLips(const Eigen::VectorXd &shape, double margin)
@@ -186,7 +181,8 @@ std::vector<cv::Point2f> LowerFaceWarp::outerLips(const Eigen::VectorXd &shape, 
     using namespace scheme23;
     // Around the mouth: the left corner, the upper lip left to right, the right corner, the lower
     // lip right to left (the scheme's order, aam/LandmarkScheme.cpp).
-    constexpr int kOutline[] = {kMouthLeft, 9, 10, 11, kMouthRight, 13, 14, 15};
+    constexpr int kOutline[] = {kMouthLeft,  kUpperLipLeft,   kUpperLipCentre, kUpperLipRight,
+                                kMouthRight, kLowerLipRight, kLowerLipCentre, kLowerLipLeft};
     Eigen::Vector2d centre = Eigen::Vector2d::Zero();
     for (int i : kOutline)
         centre += point(shape, i);

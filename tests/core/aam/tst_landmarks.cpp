@@ -31,6 +31,19 @@ private slots:
         QCOMPARE(int(landmarkIndices(LandmarkFeature::Jaw).size()), 5);
         QCOMPARE(std::string(defs[scheme23::kLeftEyeOuter].name), std::string("left_eye_outer"));
         QCOMPARE(std::string(defs[scheme23::kRightEyeOuter].name), std::string("right_eye_outer"));
+        // The named points are the table's.
+        using namespace scheme23;
+        const std::pair<int, const char *> named[] = {
+            {kLeftEyeInner, "left_eye_inner"},      {kRightEyeInner, "right_eye_inner"},
+            {kMouthLeft, "mouth_left"},             {kUpperLipLeft, "upper_lip_left"},
+            {kUpperLipCentre, "upper_lip_centre"},  {kUpperLipRight, "upper_lip_right"},
+            {kMouthRight, "mouth_right"},           {kLowerLipRight, "lower_lip_right"},
+            {kLowerLipCentre, "lower_lip_centre"},  {kLowerLipLeft, "lower_lip_left"},
+            {kInnerLipTop, "inner_lip_top"},        {kInnerLipBottom, "inner_lip_bottom"},
+            {kJawLeft, "jaw_left"},                 {kChin, "chin"},
+            {kJawRight, "jaw_right"}};
+        for (const auto &[index, name] : named)
+            QCOMPARE(std::string(defs[size_t(index)].name), std::string(name));
         for (const auto &[a, b] : landmarkConnections()) {
             QVERIFY(a >= 0 && a < 23 && b >= 0 && b < 23 && a != b);
             // Connections stay within one feature.
