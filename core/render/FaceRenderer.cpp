@@ -41,6 +41,13 @@ constexpr double kClosingRatio = 0.5;
 constexpr double kInsideFullAt = 1.0 / 3.0;
 // The drawn inside's feather (pixels): an edge of about a pixel, inside the lips' inner outline.
 constexpr double kInsideFeather = 0.8;
+// The drawn inside fades out toward the mouth's corners over this outer share of each half of the
+// mouth's width, to nothing at the corner (insideAlpha). [choice: where the lips meet, the
+// recording's own lips moved apart are the person's; a tracked corner a few pixels off the
+// visible one (rounded lips on HD) would put the drawn inside's dark tip on the lips beside it.
+// With 0.4 no such tip shows in the HD frames looked at, and the GRID figures hold
+// (docs/performance.md).]
+constexpr double kInsideCornerTaper = 0.4;
 
 std::vector<Similarity> smoothPoses(const std::vector<Similarity> &poses)
 {
@@ -279,10 +286,15 @@ void FaceRenderer::renderInto(int index, const Eigen::VectorXd &features, cv::Ma
         cv::Mat lips; // the box's pixels inside the generated outer lips
         if (ownInside) {
             lips = cv::Mat(box.size(), CV_8U, cv::Scalar(0));
-            std::vector<cv::Point> outline;
-            for (const cv::Point2f &p : LowerFaceWarp::outerLips(generated, 0.0))
-                outline.emplace_back(int(std::lround(p.x)) - box.x, int(std::lround(p.y)) - box.y);
-            cv::fillPoly(lips, std::vector<std::vector<cv::Point>>{outline}, cv::Scalar(255));
+            auto fill = [&lips, &box](const std::vector<cv::Point2f> &polygon, double value) {
+                std::vector<cv::Point> outline;
+                for (const cv::Point2f &p : polygon)
+                    outline.emplace_back(int(std::lround(p.x)) - box.x, int(std::lround(p.y)) - box.y);
+                cv::fillPoly(lips, std::vector<std::vector<cv::Point>>{outline}, cv::Scalar(value));
+            };
+            // The lips only: not the inside, faint toward the corners, which is no lip.
+            fill(LowerFaceWarp::outerLips(generated, 0.0), 255);
+            fill(LowerFaceWarp::mouthInterior(generated), 0);
         }
         double sum[3] = {0, 0, 0};
         long count = 0;
@@ -359,7 +371,30 @@ cv::Mat FaceRenderer::featheredPolygon(const std::vector<cv::Point2f> &outline, 
 
 cv::Mat FaceRenderer::insideWeight(const Eigen::VectorXd &shape) const
 {
-    return featheredPolygon(LowerFaceWarp::mouthInterior(shape), kInsideFeather, 1.f);
+    return insideAlpha(shape, 1.f);
+}
+
+cv::Mat FaceRenderer::insideAlpha(const Eigen::VectorXd &shape, float weight) const
+{
+    cv::Mat alpha = featheredPolygon(LowerFaceWarp::mouthInterior(shape), kInsideFeather, weight);
+    // Faded toward the corners: s is a pixel's place along the mouth, 0 midway between the
+    // corners and 1 at either; the weight falls smoothly from 1 at 1 - kInsideCornerTaper to 0.
+    using namespace scheme23;
+    const Eigen::Vector2d left = shape.segment<2>(2 * kMouthLeft), right = shape.segment<2>(2 * kMouthRight);
+    const Eigen::Vector2d centre = 0.5 * (left + right), half = 0.5 * (right - left);
+    const double halfSquared = half.squaredNorm();
+    if (halfSquared < 1.0)
+        return alpha;
+    const cv::Rect box = cv::boundingRect(alpha > 0.f);
+    for (int y = box.y; y < box.y + box.height; ++y) {
+        float *a = alpha.ptr<float>(y);
+        for (int x = box.x; x < box.x + box.width; ++x) {
+            const double s = std::abs((Eigen::Vector2d(x, y) - centre).dot(half)) / halfSquared;
+            const double u = std::clamp((1.0 - s) / kInsideCornerTaper, 0.0, 1.0);
+            a[x] *= float(u * u * (3.0 - 2.0 * u));
+        }
+    }
+    return alpha;
 }
 
 cv::Mat FaceRenderer::mouthInteriorAlpha(const Eigen::VectorXd &generated, const Eigen::VectorXd &tracked,
@@ -374,8 +409,7 @@ cv::Mat FaceRenderer::mouthInteriorAlpha(const Eigen::VectorXd &generated, const
         // pulled wide, the inside is drawn; where the recording was as open, it is its own, and
         // between, the drawn inside weighs fully from a recording a third short (kInsideFullAt).
         const double u = std::clamp((wanted - recorded) / (kInsideFullAt * wanted), 0.0, 1.0);
-        alpha = featheredPolygon(LowerFaceWarp::mouthInterior(generated), kInsideFeather,
-                                 float(u * u * (3.0 - 2.0 * u)));
+        alpha = insideAlpha(generated, float(u * u * (3.0 - 2.0 * u)));
     } else if (recorded > 2.0 * kMinOpening && wanted < kClosingRatio * recorded) {
         // Lips asked to close far more than the recording's: no warp brings lips together that
         // were apart (it would squeeze the open mouth to a line, or fold), so the closed lips are

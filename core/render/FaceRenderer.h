@@ -110,8 +110,9 @@ public:
     cv::Mat synthesisedWeight(int index, const Eigen::VectorXd &features, bool *inside = nullptr,
                               bool *closing = nullptr) const;
     // The inside of the mouth of `shape` (23 points in the frame's pixels) at full weight, feathered
-    // as a drawn inside is (CV_32F, frame size): where a recorded mouth's own inner-lip edge lies,
-    // the real counterpart of a drawn inside's edge (RealismReport's seamDeltaENatural).
+    // and faded toward the corners as a drawn inside is (CV_32F, frame size): where a recorded
+    // mouth's own inner-lip edge lies, the real counterpart of a drawn inside's edge
+    // (RealismReport's seamDeltaENatural).
     cv::Mat insideWeight(const Eigen::VectorXd &shape) const;
     // The video's own mouths the renderer draws closures and insides with (empty without a video).
     const MouthExemplars &mouths() const { return m_mouths; }
@@ -149,6 +150,8 @@ private:
                                bool *closing = nullptr) const;
     // `outline` filled at `weight` over the frame (CV_32F), its edge blurred by `feather` pixels.
     cv::Mat featheredPolygon(const std::vector<cv::Point2f> &outline, double feather, float weight) const;
+    // The inside of the mouth of `shape` at `weight`, feathered and faded toward its corners.
+    cv::Mat insideAlpha(const Eigen::VectorXd &shape, float weight) const;
 
     const AamModel &m_aam;
     AamSynthesizer m_synthesizer;

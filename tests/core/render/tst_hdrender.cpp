@@ -470,6 +470,40 @@ private slots:
         // narrower mouth, stretched, shows more of its teeth: 12 CIELAB units lighter here).
         QVERIFY2(ownDistance < 15.0, qPrintable(QString::number(ownDistance)));
     }
+
+    // Where the lips meet, the drawn inside gives way to his own lips moved apart: nearly closed
+    // mouths asked to open as wide as his widest, the inside is drawn fully midway between the
+    // corners and fades to nothing toward them (a tracked corner a few pixels off the visible one
+    // would otherwise put the inside's dark tip on his lips).
+    void insideFadesAtTheCorners()
+    {
+        using namespace scheme23;
+        FaceRenderer &renderer = *m_renderer;
+        int widest = 0;
+        for (int t = 0; t < renderer.videoFrameCount(); ++t)
+            if (MouthExemplars::openingShare(renderer.trackedShape(t)) > MouthExemplars::openingShare(renderer.trackedShape(widest)))
+                widest = t;
+        const Eigen::VectorXd wide = renderer.trackedFeatures().row(widest).transpose();
+        int checked = 0;
+        for (int t = 0; t < renderer.videoFrameCount(); t += 3) {
+            if (MouthExemplars::openingShare(renderer.trackedShape(t)) > 0.1)
+                continue;
+            const Eigen::VectorXd shape = renderer.warpedShape(t, wide);
+            const cv::Mat weight = renderer.synthesisedWeight(t, wide);
+            // Points on the line midway between the generated inner lips, from corner to corner.
+            const Eigen::Vector2d left = shape.segment<2>(2 * kMouthLeft), right = shape.segment<2>(2 * kMouthRight);
+            const Eigen::Vector2d middle = 0.5 * (shape.segment<2>(2 * kInnerLipTop) + shape.segment<2>(2 * kInnerLipBottom));
+            auto at = [&](double s) { // s: -1 the left corner, 0 the middle, 1 the right corner
+                const Eigen::Vector2d p = s < 0 ? middle + (-s) * (left - middle) : middle + s * (right - middle);
+                return weight.at<float>(int(std::lround(p.y())), int(std::lround(p.x())));
+            };
+            QVERIFY2(at(0.0) > 0.95f, qPrintable(QStringLiteral("frame %1: %2 midway").arg(t).arg(at(0.0))));
+            for (double s : {-0.9, 0.9})
+                QVERIFY2(at(s) < 0.25f, qPrintable(QStringLiteral("frame %1: %2 near a corner").arg(t).arg(at(s))));
+            ++checked;
+        }
+        QVERIFY(checked >= 5);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestHdRender)
