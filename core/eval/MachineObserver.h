@@ -42,7 +42,8 @@ private:
 // What the renderer did to a rendered frame: moved the recording's own face only, or also drew an
 // inside into a mouth opened wider than recorded, or closed lips over an open recorded mouth
 // (FaceRenderer::synthesisedWeight); or moved the face only, squeezing the recorded mouth's
-// opening narrower (the frames the observer tells most often, docs/performance.md).
+// opening narrower (of the frames where only the face moved, those the observer tells most often;
+// closed lips drawn in are told more often still, docs/performance.md).
 enum class FrameDrawing { Warped = 0, Inside = 1, Closed = 2, Narrowed = 3 };
 constexpr int kFrameDrawings = 4;
 
