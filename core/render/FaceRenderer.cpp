@@ -354,7 +354,8 @@ Eigen::VectorXd FaceRenderer::renderedShape(int index, const Eigen::VectorXd &fe
     return options.synthesisesFace() ? drawnShape(index, features) : warpedShape(index, features);
 }
 
-cv::Mat FaceRenderer::featheredPolygon(const std::vector<cv::Point2f> &outline, double feather, float weight) const
+cv::Mat FaceRenderer::featheredPolygon(const std::vector<cv::Point2f> &outline, double feather, float weight,
+                                       cv::Rect *reach) const
 {
     constexpr int kShift = 4; // fillPoly's sub-pixel bits
     std::vector<cv::Point> polygon;
@@ -362,8 +363,16 @@ cv::Mat FaceRenderer::featheredPolygon(const std::vector<cv::Point2f> &outline, 
         polygon.emplace_back(int(std::lround(p.x * (1 << kShift))), int(std::lround(p.y * (1 << kShift))));
     cv::Mat mask(m_size, CV_8U, cv::Scalar(0));
     cv::fillPoly(mask, std::vector<std::vector<cv::Point>>{polygon}, cv::Scalar(255), cv::LINE_AA, kShift);
-    const int k = 2 * int(std::ceil(2.0 * feather)) + 1;
-    cv::GaussianBlur(mask, mask, cv::Size(k, k), feather);
+    const int radius = int(std::ceil(2.0 * feather));
+    cv::GaussianBlur(mask, mask, cv::Size(2 * radius + 1, 2 * radius + 1), feather);
+    if (reach) {
+        // The outline's box, grown by the blur's radius and a pixel each for the anti-aliased edge
+        // and the rounding.
+        const int grow = radius + 2;
+        const cv::Rect box = cv::boundingRect(outline);
+        *reach = cv::Rect(box.x - grow, box.y - grow, box.width + 2 * grow, box.height + 2 * grow)
+                 & cv::Rect(cv::Point(0, 0), m_size);
+    }
     cv::Mat alpha;
     mask.convertTo(alpha, CV_32F, weight / 255.0);
     return alpha;
@@ -376,7 +385,8 @@ cv::Mat FaceRenderer::insideWeight(const Eigen::VectorXd &shape) const
 
 cv::Mat FaceRenderer::insideAlpha(const Eigen::VectorXd &shape, float weight) const
 {
-    cv::Mat alpha = featheredPolygon(LowerFaceWarp::mouthInterior(shape), kInsideFeather, weight);
+    cv::Rect box;
+    cv::Mat alpha = featheredPolygon(LowerFaceWarp::mouthInterior(shape), kInsideFeather, weight, &box);
     // Faded toward the corners: s is a pixel's place along the mouth, 0 midway between the
     // corners and 1 at either; the weight falls smoothly from 1 at 1 - kInsideCornerTaper to 0.
     using namespace scheme23;
@@ -385,7 +395,6 @@ cv::Mat FaceRenderer::insideAlpha(const Eigen::VectorXd &shape, float weight) co
     const double halfSquared = half.squaredNorm();
     if (halfSquared < 1.0)
         return alpha;
-    const cv::Rect box = cv::boundingRect(alpha > 0.f);
     for (int y = box.y; y < box.y + box.height; ++y) {
         float *a = alpha.ptr<float>(y);
         for (int x = box.x; x < box.x + box.width; ++x) {

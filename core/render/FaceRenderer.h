@@ -148,8 +148,10 @@ private:
     // `closing` (optional) is set when the alpha draws closed lips over an open recorded mouth.
     cv::Mat mouthInteriorAlpha(const Eigen::VectorXd &generated, const Eigen::VectorXd &tracked,
                                bool *closing = nullptr) const;
-    // `outline` filled at `weight` over the frame (CV_32F), its edge blurred by `feather` pixels.
-    cv::Mat featheredPolygon(const std::vector<cv::Point2f> &outline, double feather, float weight) const;
+    // `outline` filled at `weight` over the frame (CV_32F), its edge blurred by `feather` pixels;
+    // `reach` (optional) is set to a box outside which the result is zero.
+    cv::Mat featheredPolygon(const std::vector<cv::Point2f> &outline, double feather, float weight,
+                             cv::Rect *reach = nullptr) const;
     // The inside of the mouth of `shape` at `weight`, feathered and faded toward its corners.
     cv::Mat insideAlpha(const Eigen::VectorXd &shape, float weight) const;
 
